@@ -1,0 +1,262 @@
+//! Vertex-array state: client array pointers (glVertexPointer …) and buffer objects
+//! (glGenBuffers, glBufferData …). While a buffer is bound to GL_ARRAY_BUFFER, a pointer
+//! given to gl*Pointer is an offset into that buffer.
+
+use super::error::{GlError, GlResult};
+use super::state::MAX_TEXTURE_UNITS;
+use crate::ffi::enums::*;
+use crate::ffi::types::GLenum;
+use std::collections::HashMap;
+
+/// The component type of an array or index buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DataType {
+    /// GL_BYTE
+    Byte,
+    /// GL_UNSIGNED_BYTE
+    UByte,
+    /// GL_SHORT
+    Short,
+    /// GL_UNSIGNED_SHORT
+    UShort,
+    /// GL_INT
+    Int,
+    /// GL_UNSIGNED_INT
+    UInt,
+    /// GL_FLOAT
+    Float,
+    /// GL_DOUBLE
+    Double,
+}
+
+impl DataType {
+    /// Converts a GL type token.
+    pub fn from_gl(e: GLenum) -> GlResult<Self> {
+        Ok(match e {
+            GL_BYTE => Self::Byte,
+            GL_UNSIGNED_BYTE => Self::UByte,
+            GL_SHORT => Self::Short,
+            GL_UNSIGNED_SHORT => Self::UShort,
+            GL_INT => Self::Int,
+            GL_UNSIGNED_INT => Self::UInt,
+            GL_FLOAT => Self::Float,
+            GL_DOUBLE => Self::Double,
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+    /// The GL token.
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            Self::Byte => GL_BYTE,
+            Self::UByte => GL_UNSIGNED_BYTE,
+            Self::Short => GL_SHORT,
+            Self::UShort => GL_UNSIGNED_SHORT,
+            Self::Int => GL_INT,
+            Self::UInt => GL_UNSIGNED_INT,
+            Self::Float => GL_FLOAT,
+            Self::Double => GL_DOUBLE,
+        }
+    }
+    /// Size in bytes.
+    pub fn size(self) -> usize {
+        match self {
+            Self::Byte | Self::UByte => 1,
+            Self::Short | Self::UShort => 2,
+            Self::Int | Self::UInt | Self::Float => 4,
+            Self::Double => 8,
+        }
+    }
+}
+
+/// One client array (gl*Pointer plus its enable bit).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArrayPointer {
+    /// glEnableClientState.
+    pub enabled: bool,
+    /// Components per element (1-4).
+    pub size: i32,
+    /// Component type.
+    pub ty: DataType,
+    /// The stride the user gave (0 = tightly packed).
+    pub stride: i32,
+    /// The pointer, or the offset into `buffer`.
+    pub ptr: usize,
+    /// The GL_ARRAY_BUFFER bound when the pointer was set (0 = client memory).
+    pub buffer: u32,
+}
+
+impl ArrayPointer {
+    fn new(size: i32, ty: DataType) -> Self {
+        ArrayPointer {
+            enabled: false,
+            size,
+            ty,
+            stride: 0,
+            ptr: 0,
+            buffer: 0,
+        }
+    }
+    /// The effective stride in bytes.
+    pub fn byte_stride(&self) -> usize {
+        if self.stride > 0 {
+            self.stride as usize
+        } else {
+            self.size as usize * self.ty.size()
+        }
+    }
+}
+
+/// A buffer object's store.
+#[derive(Clone, Debug, Default)]
+pub struct BufferObject {
+    /// The bytes.
+    pub data: Vec<u8>,
+    /// GL_BUFFER_USAGE.
+    pub usage: GLenum,
+    /// GL_BUFFER_ACCESS of the current mapping, if mapped.
+    pub mapped: Option<GLenum>,
+    /// GL_BUFFER_ACCESS as last requested (GL_READ_WRITE initially).
+    pub access: GLenum,
+}
+
+/// Which binding point a buffer call names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BufferTarget {
+    /// GL_ARRAY_BUFFER
+    Array,
+    /// GL_ELEMENT_ARRAY_BUFFER
+    ElementArray,
+}
+
+impl BufferTarget {
+    /// Converts a target token (GL 1.5 and the ARB names share values).
+    pub fn from_gl(e: GLenum) -> GlResult<Self> {
+        use crate::ffi::glext_enums::*;
+        match e {
+            GL_ARRAY_BUFFER => Ok(Self::Array),
+            GL_ELEMENT_ARRAY_BUFFER => Ok(Self::ElementArray),
+            _ => Err(GlError::InvalidEnum),
+        }
+    }
+}
+
+/// All vertex-array state of a context.
+#[derive(Clone, Debug)]
+pub struct ArrayState {
+    /// GL_VERTEX_ARRAY.
+    pub vertex: ArrayPointer,
+    /// GL_COLOR_ARRAY.
+    pub color: ArrayPointer,
+    /// GL_NORMAL_ARRAY.
+    pub normal: ArrayPointer,
+    /// GL_TEXTURE_COORD_ARRAY per unit.
+    pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    /// GL_ARRAY_BUFFER binding.
+    pub array_buffer: u32,
+    /// GL_ELEMENT_ARRAY_BUFFER binding.
+    pub element_buffer: u32,
+    /// Buffer objects by name; a generated but never bound name maps to `None`.
+    pub buffers: HashMap<u32, Option<BufferObject>>,
+}
+
+impl Default for ArrayState {
+    fn default() -> Self {
+        ArrayState {
+            vertex: ArrayPointer::new(4, DataType::Float),
+            color: ArrayPointer::new(4, DataType::Float),
+            normal: ArrayPointer::new(3, DataType::Float),
+            texcoord: [ArrayPointer::new(4, DataType::Float); MAX_TEXTURE_UNITS],
+            array_buffer: 0,
+            element_buffer: 0,
+            buffers: HashMap::new(),
+        }
+    }
+}
+
+impl ArrayState {
+    /// The buffer bound to `target` (0 = none).
+    pub fn binding(&self, target: BufferTarget) -> u32 {
+        match target {
+            BufferTarget::Array => self.array_buffer,
+            BufferTarget::ElementArray => self.element_buffer,
+        }
+    }
+
+    /// The object bound to `target`, or GL_INVALID_OPERATION when none is.
+    pub fn bound_mut(&mut self, target: BufferTarget) -> GlResult<&mut BufferObject> {
+        let name = self.binding(target);
+        if name == 0 {
+            return Err(GlError::InvalidOperation);
+        }
+        self.buffers
+            .get_mut(&name)
+            .and_then(|b| b.as_mut())
+            .ok_or(GlError::InvalidOperation)
+    }
+
+    /// The store of buffer `name`, if it exists.
+    pub fn buffer_data(&self, name: u32) -> Option<&[u8]> {
+        self.buffers
+            .get(&name)
+            .and_then(|b| b.as_ref())
+            .map(|b| b.data.as_slice())
+    }
+
+    /// glGenBuffers: `n` unused names (reserved, no object yet).
+    pub fn gen_buffers(&mut self, n: usize) -> Vec<u32> {
+        let mut out = Vec::with_capacity(n);
+        let mut next = 1u32;
+        while out.len() < n {
+            if !self.buffers.contains_key(&next) {
+                self.buffers.insert(next, None);
+                out.push(next);
+            }
+            next += 1;
+        }
+        out
+    }
+
+    /// glDeleteBuffers for one name: unbinds it everywhere in this context. Arrays that
+    /// sourced it become null pointers (never a dangling offset read as an address).
+    pub fn delete_buffer(&mut self, name: u32) {
+        if name == 0 || self.buffers.remove(&name).is_none() {
+            return;
+        }
+        if self.array_buffer == name {
+            self.array_buffer = 0;
+        }
+        if self.element_buffer == name {
+            self.element_buffer = 0;
+        }
+        for a in self.all_arrays_mut() {
+            if a.buffer == name {
+                a.buffer = 0;
+                a.ptr = 0;
+            }
+        }
+    }
+
+    /// glBindBuffer.
+    pub fn bind_buffer(&mut self, target: BufferTarget, name: u32) {
+        if name != 0 {
+            let e = self.buffers.entry(name).or_insert(None);
+            if e.is_none() {
+                *e = Some(BufferObject {
+                    usage: crate::ffi::glext_enums::GL_STATIC_DRAW,
+                    access: crate::ffi::glext_enums::GL_READ_WRITE,
+                    ..Default::default()
+                });
+            }
+        }
+        match target {
+            BufferTarget::Array => self.array_buffer = name,
+            BufferTarget::ElementArray => self.element_buffer = name,
+        }
+    }
+
+    fn all_arrays_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
+        [&mut self.vertex, &mut self.color, &mut self.normal]
+            .into_iter()
+            .chain(self.texcoord.iter_mut())
+    }
+}

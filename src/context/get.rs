@@ -1,0 +1,223 @@
+//! glGet*: every queryable state value, with the GL type conversions between boolean,
+//! integer, float and double queries (GL 1.5 §6.1.2; normalised values such as colours map
+//! [-1,1] onto the integer range, as Mesa does).
+
+use super::error::{GlError, GlResult};
+use super::state::{Cap, MatrixMode, ShadeModel};
+use super::{Context, MAX_VIEWPORT};
+use crate::ffi::enums::*;
+use crate::ffi::glext_enums::*;
+use crate::fixed_function::matrix::Mat4;
+
+/// How a state value is typed, which decides the conversions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// Booleans.
+    Bool,
+    /// Integers or enums.
+    Int,
+    /// Floats (rounded to the nearest integer for glGetIntegerv).
+    Float,
+    /// Normalised floats (colours, normals, depth values): scaled for glGetIntegerv.
+    Normalized,
+}
+
+/// A queried value: up to 16 components.
+#[derive(Clone, Copy, Debug)]
+pub struct Value {
+    /// The type of the state.
+    pub kind: Kind,
+    /// Components.
+    pub vals: [f64; 16],
+    /// Number of components.
+    pub len: usize,
+}
+
+impl Value {
+    fn new(kind: Kind, v: &[f64]) -> Self {
+        let mut vals = [0.0; 16];
+        vals[..v.len()].copy_from_slice(v);
+        Value {
+            kind,
+            vals,
+            len: v.len(),
+        }
+    }
+    /// Components as booleans.
+    pub fn as_bools(&self) -> impl Iterator<Item = bool> + '_ {
+        self.vals[..self.len].iter().map(|&v| v != 0.0)
+    }
+    /// Components as glGetIntegerv returns them.
+    pub fn as_ints(&self) -> impl Iterator<Item = i32> + '_ {
+        self.vals[..self.len].iter().map(move |&v| match self.kind {
+            Kind::Bool | Kind::Int => v as i32,
+            Kind::Float => {
+                let r = if v >= 0.0 {
+                    (v + 0.5).floor()
+                } else {
+                    (v - 0.5).ceil()
+                };
+                r.clamp(i32::MIN as f64, i32::MAX as f64) as i32
+            }
+            Kind::Normalized => (v * 2147483647.0).clamp(i32::MIN as f64, i32::MAX as f64) as i32,
+        })
+    }
+    /// Components as doubles.
+    pub fn as_doubles(&self) -> impl Iterator<Item = f64> + '_ {
+        self.vals[..self.len].iter().copied()
+    }
+}
+
+fn b(v: bool) -> Value {
+    Value::new(Kind::Bool, &[v as u8 as f64])
+}
+fn i(v: &[i64]) -> Value {
+    let f: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    Value::new(Kind::Int, &f)
+}
+fn e(v: u32) -> Value {
+    Value::new(Kind::Int, &[v as f64])
+}
+fn f(v: &[f32]) -> Value {
+    let d: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    Value::new(Kind::Float, &d)
+}
+fn n(v: &[f32]) -> Value {
+    let d: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    Value::new(Kind::Normalized, &d)
+}
+fn m(mat: &Mat4) -> Value {
+    f(&mat.0)
+}
+
+/// The value of `pname`, or GL_INVALID_ENUM.
+pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
+    let st = &c.state;
+    let mx = &c.matrices;
+    let bits = c.visual.format.channel_bits();
+    let depth_bits = c.visual.depth.bits() as i64;
+    let stencil_bits = if c.visual.stencil { 8 } else { 0 };
+    let a = &c.arrays;
+    let tc = &a.texcoord[st.client_active_texture];
+    Ok(match pname {
+        GL_VIEWPORT => i(&st.viewport.map(|v| v as i64)),
+        GL_SCISSOR_BOX => i(&st.scissor.map(|v| v as i64)),
+        GL_DEPTH_RANGE => Value::new(Kind::Normalized, &st.depth_range),
+        GL_MODELVIEW_MATRIX => m(mx.modelview.top()),
+        GL_PROJECTION_MATRIX => m(mx.projection.top()),
+        GL_TEXTURE_MATRIX => m(mx.texture[st.active_texture].top()),
+        GL_COLOR_MATRIX => m(mx.color.top()),
+        GL_TRANSPOSE_MODELVIEW_MATRIX => m(&mx.modelview.top().transpose()),
+        GL_TRANSPOSE_PROJECTION_MATRIX => m(&mx.projection.top().transpose()),
+        GL_TRANSPOSE_TEXTURE_MATRIX => m(&mx.texture[st.active_texture].top().transpose()),
+        GL_TRANSPOSE_COLOR_MATRIX => m(&mx.color.top().transpose()),
+        GL_MATRIX_MODE => e(match st.matrix_mode {
+            MatrixMode::ModelView => GL_MODELVIEW,
+            MatrixMode::Projection => GL_PROJECTION,
+            MatrixMode::Texture => GL_TEXTURE,
+            MatrixMode::Color => GL_COLOR,
+        }),
+        GL_MODELVIEW_STACK_DEPTH => i(&[mx.modelview.depth() as i64]),
+        GL_PROJECTION_STACK_DEPTH => i(&[mx.projection.depth() as i64]),
+        GL_TEXTURE_STACK_DEPTH => i(&[mx.texture[st.active_texture].depth() as i64]),
+        GL_COLOR_MATRIX_STACK_DEPTH => i(&[mx.color.depth() as i64]),
+        GL_MAX_MODELVIEW_STACK_DEPTH => i(&[mx.modelview.max_depth() as i64]),
+        GL_MAX_PROJECTION_STACK_DEPTH => i(&[mx.projection.max_depth() as i64]),
+        GL_MAX_TEXTURE_STACK_DEPTH => i(&[mx.texture[0].max_depth() as i64]),
+        GL_MAX_COLOR_MATRIX_STACK_DEPTH => i(&[mx.color.max_depth() as i64]),
+        GL_MAX_VIEWPORT_DIMS => i(&[MAX_VIEWPORT as i64, MAX_VIEWPORT as i64]),
+        GL_MAX_TEXTURE_SIZE => i(&[16384]),
+        GL_MAX_LIGHTS => i(&[8]),
+        GL_MAX_CLIP_PLANES => i(&[8]),
+        GL_MAX_TEXTURE_UNITS => i(&[super::state::MAX_TEXTURE_UNITS as i64]),
+        GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => i(&[16]),
+        GL_MAX_NAME_STACK_DEPTH => i(&[64]),
+        GL_MAX_LIST_NESTING => i(&[64]),
+        GL_MAX_EVAL_ORDER => i(&[30]),
+        GL_SUBPIXEL_BITS => i(&[8]),
+        GL_DEPTH_FUNC => e(st.depth_func.to_gl()),
+        GL_DEPTH_WRITEMASK => b(st.depth_mask),
+        GL_COLOR_WRITEMASK => Value::new(Kind::Bool, &st.color_mask.map(|v| v as u8 as f64)),
+        GL_STENCIL_WRITEMASK => i(&[st.stencil_writemask as i64]),
+        GL_CULL_FACE_MODE => e(st.cull_face.to_gl()),
+        GL_FRONT_FACE => e(if st.front_ccw { GL_CCW } else { GL_CW }),
+        GL_SHADE_MODEL => e(if st.shade_model == ShadeModel::Flat {
+            GL_FLAT
+        } else {
+            GL_SMOOTH
+        }),
+        GL_COLOR_CLEAR_VALUE => n(&st.clear_color),
+        GL_DEPTH_CLEAR_VALUE => Value::new(Kind::Normalized, &[st.clear_depth]),
+        GL_STENCIL_CLEAR_VALUE => i(&[st.clear_stencil as i64]),
+        GL_CURRENT_COLOR => n(&st.current.color),
+        GL_CURRENT_SECONDARY_COLOR => n(&st.current.secondary_color),
+        GL_CURRENT_NORMAL => n(&st.current.normal),
+        GL_CURRENT_TEXTURE_COORDS => f(&st.current.texcoord[st.active_texture]),
+        GL_CURRENT_FOG_COORD => f(&[st.current.fog_coord]),
+        GL_EDGE_FLAG => b(st.current.edge_flag),
+        GL_RED_BITS => i(&[bits[0] as i64]),
+        GL_GREEN_BITS => i(&[bits[1] as i64]),
+        GL_BLUE_BITS => i(&[bits[2] as i64]),
+        GL_ALPHA_BITS => i(&[bits[3] as i64]),
+        GL_DEPTH_BITS => i(&[depth_bits]),
+        GL_STENCIL_BITS => i(&[stencil_bits]),
+        GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
+            i(&[0])
+        }
+        GL_INDEX_BITS => i(&[0]),
+        GL_RGBA_MODE => b(true),
+        GL_INDEX_MODE | GL_DOUBLEBUFFER | GL_STEREO => b(false),
+        GL_AUX_BUFFERS => i(&[0]),
+        GL_DRAW_BUFFER | GL_READ_BUFFER => e(GL_FRONT),
+        GL_PERSPECTIVE_CORRECTION_HINT => e(st.hints.perspective_correction),
+        GL_POINT_SMOOTH_HINT => e(st.hints.point_smooth),
+        GL_LINE_SMOOTH_HINT => e(st.hints.line_smooth),
+        GL_POLYGON_SMOOTH_HINT => e(st.hints.polygon_smooth),
+        GL_FOG_HINT => e(st.hints.fog),
+        GL_GENERATE_MIPMAP_HINT => e(st.hints.generate_mipmap),
+        GL_TEXTURE_COMPRESSION_HINT => e(st.hints.texture_compression),
+        GL_PACK_SWAP_BYTES => b(st.pack.swap_bytes),
+        GL_PACK_LSB_FIRST => b(st.pack.lsb_first),
+        GL_PACK_ROW_LENGTH => i(&[st.pack.row_length as i64]),
+        GL_PACK_SKIP_ROWS => i(&[st.pack.skip_rows as i64]),
+        GL_PACK_SKIP_PIXELS => i(&[st.pack.skip_pixels as i64]),
+        GL_PACK_ALIGNMENT => i(&[st.pack.alignment as i64]),
+        GL_PACK_IMAGE_HEIGHT => i(&[st.pack.image_height as i64]),
+        GL_PACK_SKIP_IMAGES => i(&[st.pack.skip_images as i64]),
+        GL_UNPACK_SWAP_BYTES => b(st.unpack.swap_bytes),
+        GL_UNPACK_LSB_FIRST => b(st.unpack.lsb_first),
+        GL_UNPACK_ROW_LENGTH => i(&[st.unpack.row_length as i64]),
+        GL_UNPACK_SKIP_ROWS => i(&[st.unpack.skip_rows as i64]),
+        GL_UNPACK_SKIP_PIXELS => i(&[st.unpack.skip_pixels as i64]),
+        GL_UNPACK_ALIGNMENT => i(&[st.unpack.alignment as i64]),
+        GL_UNPACK_IMAGE_HEIGHT => i(&[st.unpack.image_height as i64]),
+        GL_UNPACK_SKIP_IMAGES => i(&[st.unpack.skip_images as i64]),
+        GL_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.active_texture as u32),
+        GL_CLIENT_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.client_active_texture as u32),
+        GL_VERTEX_ARRAY => b(a.vertex.enabled),
+        GL_VERTEX_ARRAY_SIZE => i(&[a.vertex.size as i64]),
+        GL_VERTEX_ARRAY_TYPE => e(a.vertex.ty.to_gl()),
+        GL_VERTEX_ARRAY_STRIDE => i(&[a.vertex.stride as i64]),
+        GL_COLOR_ARRAY => b(a.color.enabled),
+        GL_COLOR_ARRAY_SIZE => i(&[a.color.size as i64]),
+        GL_COLOR_ARRAY_TYPE => e(a.color.ty.to_gl()),
+        GL_COLOR_ARRAY_STRIDE => i(&[a.color.stride as i64]),
+        GL_NORMAL_ARRAY => b(a.normal.enabled),
+        GL_NORMAL_ARRAY_TYPE => e(a.normal.ty.to_gl()),
+        GL_NORMAL_ARRAY_STRIDE => i(&[a.normal.stride as i64]),
+        GL_TEXTURE_COORD_ARRAY => b(tc.enabled),
+        GL_TEXTURE_COORD_ARRAY_SIZE => i(&[tc.size as i64]),
+        GL_TEXTURE_COORD_ARRAY_TYPE => e(tc.ty.to_gl()),
+        GL_TEXTURE_COORD_ARRAY_STRIDE => i(&[tc.stride as i64]),
+        GL_ARRAY_BUFFER_BINDING => i(&[a.array_buffer as i64]),
+        GL_ELEMENT_ARRAY_BUFFER_BINDING => i(&[a.element_buffer as i64]),
+        GL_VERTEX_ARRAY_BUFFER_BINDING => i(&[a.vertex.buffer as i64]),
+        GL_COLOR_ARRAY_BUFFER_BINDING => i(&[a.color.buffer as i64]),
+        GL_NORMAL_ARRAY_BUFFER_BINDING => i(&[a.normal.buffer as i64]),
+        GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => i(&[tc.buffer as i64]),
+        _ => match Cap::from_gl(pname) {
+            Ok(cap) => b(st.caps.get(cap)),
+            Err(_) => return Err(GlError::InvalidEnum),
+        },
+    })
+}

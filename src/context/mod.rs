@@ -1,0 +1,381 @@
+//! The GL state machine: one [`Context`] per OSMesa context, holding plain state data,
+//! matrix stacks, named objects, the vertex-input state and the framebuffer.
+//!
+//! Every method validates its arguments first and returns a [`GlError`] without touching
+//! state when they are wrong; the C boundary records the error for glGetError.
+
+pub mod arrays;
+pub mod error;
+pub mod get;
+pub mod immediate;
+pub mod state;
+
+use crate::fixed_function::matrix::{Mat4, MatrixStack};
+use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
+use crate::stats::Stats;
+pub use error::{GlError, GlResult};
+use state::{Cap, MatrixMode, State, MAX_TEXTURE_UNITS};
+
+/// GL_MAX_MODELVIEW_STACK_DEPTH (Mesa's value).
+pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+/// GL_MAX_PROJECTION_STACK_DEPTH (Mesa's value).
+pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
+/// GL_MAX_TEXTURE_STACK_DEPTH (Mesa's value).
+pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
+/// GL_MAX_COLOR_MATRIX_STACK_DEPTH (Mesa's value).
+pub const MAX_COLOR_STACK_DEPTH: usize = 4;
+/// GL_MAX_VIEWPORT_DIMS and the largest OSMesa buffer (llvmpipe's limit).
+pub const MAX_VIEWPORT: i32 = 16384;
+
+/// The buffers an OSMesa context was created with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Visual {
+    /// Colour layout.
+    pub format: ColorFormat,
+    /// Depth layout.
+    pub depth: DepthFormat,
+    /// Whether there is an 8-bit stencil buffer.
+    pub stencil: bool,
+    /// Accumulation bits requested (kept for glGet; no accumulation buffer yet).
+    pub accum_bits: i32,
+}
+
+/// All matrix stacks.
+#[derive(Clone, Debug)]
+pub struct Matrices {
+    /// GL_MODELVIEW.
+    pub modelview: MatrixStack,
+    /// GL_PROJECTION.
+    pub projection: MatrixStack,
+    /// GL_TEXTURE, one per unit.
+    pub texture: Vec<MatrixStack>,
+    /// GL_COLOR.
+    pub color: MatrixStack,
+}
+
+impl Default for Matrices {
+    fn default() -> Self {
+        Matrices {
+            modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
+            projection: MatrixStack::new(MAX_PROJECTION_STACK_DEPTH),
+            texture: (0..MAX_TEXTURE_UNITS)
+                .map(|_| MatrixStack::new(MAX_TEXTURE_STACK_DEPTH))
+                .collect(),
+            color: MatrixStack::new(MAX_COLOR_STACK_DEPTH),
+        }
+    }
+}
+
+/// One GL context.
+pub struct Context {
+    /// Plain GL state.
+    pub state: State,
+    /// Matrix stacks.
+    pub matrices: Matrices,
+    /// Client arrays and buffer objects.
+    pub arrays: arrays::ArrayState,
+    /// glBegin/glEnd in progress.
+    pub immediate: immediate::Immediate,
+    /// The first error not yet read by glGetError.
+    pub error: Option<GlError>,
+    /// The buffers this context was created with.
+    pub visual: Visual,
+    /// Colour/depth/stencil storage; `None` until the first OSMesaMakeCurrent.
+    pub fb: Option<Framebuffer>,
+    /// Whether something was drawn or cleared since the last copy to the user buffer.
+    pub dirty: bool,
+    /// Work counters.
+    pub stats: Stats,
+    /// Where glFlush/glFinish copy the colour buffer (the OSMesa user buffer).
+    pub target: UserTarget,
+    /// The copy OSMesaGetDepthBuffer hands out, refreshed at each flush once requested.
+    pub depth_copy: Option<Vec<u8>>,
+}
+
+/// The OSMesa user buffer and its layout parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UserTarget {
+    /// The user's buffer (0 when none).
+    pub ptr: usize,
+    /// Its component type (GL_UNSIGNED_BYTE …).
+    pub ty: u32,
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// OSMESA_ROW_LENGTH in pixels (0 = width).
+    pub row_length: i32,
+    /// OSMESA_Y_UP: row 0 of the user buffer is the bottom row.
+    pub y_up: bool,
+}
+
+impl Default for UserTarget {
+    fn default() -> Self {
+        UserTarget {
+            ptr: 0,
+            ty: 0,
+            width: 0,
+            height: 0,
+            row_length: 0,
+            y_up: true,
+        }
+    }
+}
+
+impl Context {
+    /// A context with GL's initial state and no framebuffer yet.
+    pub fn new(visual: Visual) -> Self {
+        Context {
+            state: State::default(),
+            matrices: Matrices::default(),
+            arrays: arrays::ArrayState::default(),
+            immediate: immediate::Immediate::default(),
+            error: None,
+            visual,
+            fb: None,
+            dirty: false,
+            stats: Stats::default(),
+            target: UserTarget::default(),
+            depth_copy: None,
+        }
+    }
+
+    /// Records `e` unless an earlier error is still unread.
+    pub fn record_error(&mut self, e: GlError) {
+        if self.error.is_none() {
+            self.error = Some(e);
+        }
+    }
+
+    /// glGetError: returns and clears the recorded error.
+    pub fn take_error(&mut self) -> Option<GlError> {
+        self.error.take()
+    }
+
+    /// Fails with GL_INVALID_OPERATION between glBegin and glEnd.
+    #[inline]
+    pub fn check_outside_begin(&self) -> GlResult<()> {
+        if self.immediate.active.is_some() {
+            Err(GlError::InvalidOperation)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Binds (or resizes) the framebuffer for a user buffer of `w` x `h`. A new size or
+    /// format gives a new, zeroed framebuffer, as Mesa does; the first binding sets the
+    /// viewport and scissor to the buffer size.
+    pub fn bind_framebuffer(&mut self, w: usize, h: usize) {
+        let first = self.fb.is_none();
+        let same = self
+            .fb
+            .as_ref()
+            .is_some_and(|fb| fb.width == w && fb.height == h);
+        if !same {
+            self.fb = Some(Framebuffer::new(
+                w,
+                h,
+                self.visual.format,
+                self.visual.depth,
+                self.visual.stencil,
+            ));
+            self.dirty = false;
+        }
+        if first {
+            self.state.viewport = [0, 0, w as i32, h as i32];
+            self.state.scissor = [0, 0, w as i32, h as i32];
+        }
+    }
+
+    /// glFlush/glFinish: copies the colour buffer into the user buffer if anything was drawn
+    /// or cleared since the last copy (Mesa's `rb->defined`), and refreshes the depth copy.
+    pub fn flush(&mut self) {
+        let Some(fb) = self.fb.as_ref() else { return };
+        if !self.dirty || self.target.ptr == 0 {
+            return;
+        }
+        let bpp = fb.format.bytes_per_pixel();
+        let row_px = if self.target.row_length > 0 {
+            self.target.row_length as usize
+        } else {
+            fb.width
+        };
+        // SAFETY: OSMesaMakeCurrent's contract: the buffer holds at least
+        // row_length * height pixels of the format (the program promised it to Mesa too).
+        unsafe { fb.copy_to_user(self.target.ptr as *mut u8, row_px * bpp, self.target.y_up) };
+        self.dirty = false;
+        if self.depth_copy.is_some() {
+            self.depth_copy = Some(self.depth_snapshot());
+        }
+    }
+
+    /// The depth (and stencil) buffer as OSMesaGetDepthBuffer presents it: bottom-up rows,
+    /// 4 bytes per value for Z24 (stencil in the high byte), 2 for Z16.
+    pub fn depth_snapshot(&self) -> Vec<u8> {
+        let Some(fb) = self.fb.as_ref() else {
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for row in (0..fb.height).rev() {
+            for x in 0..fb.width {
+                let i = row * fb.width + x;
+                match fb.depth_format {
+                    DepthFormat::Z16 => out.extend_from_slice(&(fb.depth[i] as u16).to_ne_bytes()),
+                    DepthFormat::Z24 => {
+                        let s = fb.stencil.get(i).copied().unwrap_or(0) as u32;
+                        out.extend_from_slice(&(fb.depth[i] | (s << 24)).to_ne_bytes());
+                    }
+                    DepthFormat::None => {}
+                }
+            }
+        }
+        out
+    }
+
+    /// glEnable / glDisable.
+    pub fn set_cap(&mut self, cap: Cap, on: bool) -> GlResult<()> {
+        self.check_outside_begin()?;
+        self.state.caps.set(cap, on);
+        Ok(())
+    }
+
+    /// The matrix stack glMatrixMode selects.
+    pub fn current_stack(&mut self) -> &mut MatrixStack {
+        match self.state.matrix_mode {
+            MatrixMode::ModelView => &mut self.matrices.modelview,
+            MatrixMode::Projection => &mut self.matrices.projection,
+            MatrixMode::Texture => &mut self.matrices.texture[self.state.active_texture],
+            MatrixMode::Color => &mut self.matrices.color,
+        }
+    }
+
+    /// Applies `f` to the current matrix (outside glBegin/glEnd).
+    pub fn with_matrix(&mut self, f: impl FnOnce(&mut Mat4)) -> GlResult<()> {
+        self.check_outside_begin()?;
+        f(self.current_stack().top_mut());
+        Ok(())
+    }
+
+    /// glViewport.
+    pub fn viewport(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
+        self.check_outside_begin()?;
+        if w < 0 || h < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.state.viewport = [x, y, w.min(MAX_VIEWPORT), h.min(MAX_VIEWPORT)];
+        Ok(())
+    }
+
+    /// glScissor.
+    pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
+        self.check_outside_begin()?;
+        if w < 0 || h < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.state.scissor = [x, y, w, h];
+        Ok(())
+    }
+
+    /// glDepthRange (clamped to [0,1]).
+    pub fn depth_range(&mut self, n: f64, f: f64) -> GlResult<()> {
+        self.check_outside_begin()?;
+        self.state.depth_range = [clamp01(n), clamp01(f)];
+        Ok(())
+    }
+
+    /// The drawable rectangle in y-down pixels: framebuffer ∩ scissor, as (x0, y0, x1, y1)
+    /// exclusive at the high end; `None` when empty.
+    pub fn draw_region(&self) -> Option<[i64; 4]> {
+        let fb = self.fb.as_ref()?;
+        let (w, h) = (fb.width as i64, fb.height as i64);
+        let mut r = [0, 0, w, h];
+        if self.state.caps.get(Cap::ScissorTest) {
+            let [sx, sy, sw, sh] = self.state.scissor.map(|v| v as i64);
+            // GL y-up rows [sy, sy+sh) are y-down rows [h-sy-sh, h-sy).
+            r = [
+                r[0].max(sx),
+                r[1].max(h - sy - sh),
+                r[2].min(sx + sw),
+                r[3].min(h - sy),
+            ];
+        }
+        (r[0] < r[2] && r[1] < r[3]).then_some(r)
+    }
+
+    /// glClear.
+    pub fn clear(&mut self, mask: u32) -> GlResult<()> {
+        use crate::ffi::enums::*;
+        self.check_outside_begin()?;
+        let all =
+            GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+        if mask & !all != 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let Some(region) = self.draw_region() else {
+            return Ok(());
+        };
+        let st = &self.state;
+        let Some(fb) = self.fb.as_mut() else {
+            return Ok(());
+        };
+        let [x0, y0, x1, y1] = region.map(|v| v as usize);
+        let w = fb.width;
+        // Mesa clears with pipe->clear only for full-buffer, full-mask clears; otherwise it
+        // draws a quad, whose colour and depth go through the shader's conversions.
+        let quad_path = region != [0, 0, fb.width as i64, fb.height as i64]
+            || st.color_mask != [true; 4]
+            || (st.stencil_writemask & 0xFF) != 0xFF;
+        if mask & GL_COLOR_BUFFER_BIT != 0 && st.color_mask.iter().any(|&m| m) {
+            let v = if quad_path {
+                fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte))
+            } else {
+                fb.clear_value(st.clear_color)
+            };
+            let m = st.color_mask;
+            for y in y0..y1 {
+                let row = &mut fb.color[y * w + x0..y * w + x1];
+                if m == [true; 4] {
+                    row.fill(v);
+                } else {
+                    for p in row {
+                        for c in 0..4 {
+                            if m[c] {
+                                p[c] = v[c];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask && !fb.depth.is_empty() {
+            let v = if quad_path {
+                fb.depth_format.quantize(st.clear_depth as f32)
+            } else {
+                fb.depth_format.quantize_clear(st.clear_depth)
+            };
+            for y in y0..y1 {
+                fb.depth[y * w + x0..y * w + x1].fill(v);
+            }
+        }
+        if mask & GL_STENCIL_BUFFER_BIT != 0 && !fb.stencil.is_empty() {
+            let wm = (st.stencil_writemask & 0xFF) as u8;
+            let v = (st.clear_stencil & 0xFF) as u8;
+            for y in y0..y1 {
+                for s in &mut fb.stencil[y * w + x0..y * w + x1] {
+                    *s = (*s & !wm) | (v & wm);
+                }
+            }
+        }
+        self.dirty = true;
+        Ok(())
+    }
+}
+
+/// Clamps to [0,1] (NaN becomes 0).
+pub fn clamp01(v: f64) -> f64 {
+    if v > 0.0 {
+        v.min(1.0)
+    } else {
+        0.0
+    }
+}

@@ -1,0 +1,106 @@
+//! A draw call, stage by stage: vertex stage → assembly → clipping → setup → raster.
+//!
+//! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
+//! the clip volume the whole draw takes the clipping path, which also changes the
+//! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
+
+use crate::context::state::{Cap, Face, Primitive};
+use crate::context::Context;
+use crate::fixed_function::transform::VertexStage;
+use crate::fragment::FragPlan;
+use crate::geometry::assemble::{self, DrawPath};
+use crate::geometry::clip::clip_triangle;
+use crate::geometry::fetch::VertexIn;
+use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
+use crate::raster::raster_triangle;
+
+/// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
+pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
+    let Some(fb) = ctx.fb.as_ref() else { return };
+    let n = indices.map_or(verts.len(), |i| i.len());
+    if n == 0 {
+        return;
+    }
+    ctx.stats.draws += 1;
+    ctx.dirty = true;
+    let fma = cpu_has_fma();
+    let st = &ctx.state;
+    let viewport = Viewport::new(st.viewport, st.depth_range, fb.height);
+    let mvp = ctx
+        .matrices
+        .projection
+        .top()
+        .mul(ctx.matrices.modelview.top());
+    let stage = VertexStage { mvp, viewport, fma };
+    let plan = FragPlan::new(st, fb.depth_format, fma);
+    let Some(region) = ctx.draw_region() else {
+        return;
+    };
+    if !plan.writes_anything() {
+        return;
+    }
+    let cull_on = st.caps.get(Cap::CullFace);
+    let cull = CullMode {
+        front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
+        back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
+        front_ccw: st.front_ccw,
+    };
+
+    let cv: Vec<ClipVertex> = verts.iter().map(|v| stage.run(v)).collect();
+    ctx.stats.vertices += cv.len() as u64;
+    let any_outside = match indices {
+        Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
+        None => cv.iter().any(|v| v.mask != 0),
+    };
+    let path = if any_outside {
+        DrawPath::Clip
+    } else if indices.is_some() {
+        DrawPath::ElementsNoClip
+    } else {
+        DrawPath::ArraysNoClip
+    };
+    let at = |k: usize| -> &ClipVertex {
+        match indices {
+            Some(ix) => &cv[ix[k] as usize],
+            None => &cv[k],
+        }
+    };
+    let nvary = 4;
+    let stats = &mut ctx.stats;
+    let Some(fb) = ctx.fb.as_mut() else { return };
+    let mut tri = SetupTriangle::default();
+    let mut one =
+        |a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, stats: &mut crate::stats::Stats| {
+            match setup_triangle([a, b, c], nvary, cull, &mut tri) {
+                SetupResult::Draw => raster_triangle(&tri, region, &plan, fb, stats),
+                SetupResult::Degenerate => stats.tris_degenerate += 1,
+                SetupResult::Culled => stats.tris_culled += 1,
+            }
+        };
+    match mode {
+        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
+            // Lines and points get llvmpipe's exact rules in a later issue; they are
+            // accepted (and counted) but not rasterized yet.
+        }
+        _ => assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
+            let (va, vb, vc) = (at(a), at(b), at(c));
+            stats.triangles += 1;
+            let or = va.mask | vb.mask | vc.mask;
+            if va.mask & vb.mask & vc.mask != 0 {
+                stats.tris_clip_rejected += 1;
+            } else if or != 0 {
+                stats.tris_clipped += 1;
+                let mut out: Vec<[ClipVertex; 3]> = Vec::new();
+                clip_triangle([va, vb, vc], or, &viewport, nvary, plan.flat, |p, q, r| {
+                    out.push([*p, *q, *r])
+                });
+                for [p, q, r] in &out {
+                    one(p, q, r, stats);
+                }
+            } else {
+                one(va, vb, vc, stats);
+            }
+        }),
+    }
+}

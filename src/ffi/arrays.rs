@@ -1,0 +1,250 @@
+//! Client vertex arrays: gl*Pointer, glEnable/DisableClientState, glInterleavedArrays and
+//! glArrayElement. A pointer given while a buffer is bound to GL_ARRAY_BUFFER is an offset.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::glext_enums::*;
+use super::types::*;
+use super::with_ctx;
+use crate::context::arrays::{ArrayPointer, DataType};
+use crate::context::error::{GlError, GlResult};
+use crate::context::Context;
+use crate::geometry::fetch::fetch_attr;
+use libc::c_void;
+
+/// Which client array a call names.
+#[derive(Clone, Copy)]
+enum Which {
+    Vertex,
+    Color,
+    Normal,
+    TexCoord,
+}
+
+fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
+    match w {
+        Which::Vertex => &mut c.arrays.vertex,
+        Which::Color => &mut c.arrays.color,
+        Which::Normal => &mut c.arrays.normal,
+        Which::TexCoord => &mut c.arrays.texcoord[c.state.client_active_texture],
+    }
+}
+
+fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_ctx(|c| {
+        let t = DataType::from_gl(ty)?;
+        let type_ok = match w {
+            Which::Vertex | Which::TexCoord => matches!(
+                t,
+                DataType::Short | DataType::Int | DataType::Float | DataType::Double
+            ),
+            Which::Normal => matches!(
+                t,
+                DataType::Byte
+                    | DataType::Short
+                    | DataType::Int
+                    | DataType::Float
+                    | DataType::Double
+            ),
+            Which::Color => true,
+        };
+        if !type_ok {
+            return Err(GlError::InvalidEnum);
+        }
+        let size_ok = match w {
+            Which::Vertex => (2..=4).contains(&size),
+            Which::Color => (3..=4).contains(&size),
+            Which::TexCoord => (1..=4).contains(&size),
+            Which::Normal => size == 3,
+        };
+        if !size_ok || stride < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        c.check_outside_begin()?;
+        let buffer = c.arrays.array_buffer;
+        let a = array_mut(c, w);
+        a.size = size;
+        a.ty = t;
+        a.stride = stride;
+        a.ptr = ptr as usize;
+        a.buffer = buffer;
+        Ok(())
+    })
+}
+
+/// glVertexPointer.
+#[no_mangle]
+pub extern "C" fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    set_pointer(Which::Vertex, size, type_, stride, ptr)
+}
+
+/// glColorPointer.
+#[no_mangle]
+pub extern "C" fn glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    set_pointer(Which::Color, size, type_, stride, ptr)
+}
+
+/// glTexCoordPointer (for the client-active texture unit).
+#[no_mangle]
+pub extern "C" fn glTexCoordPointer(
+    size: GLint,
+    type_: GLenum,
+    stride: GLsizei,
+    ptr: *const GLvoid,
+) {
+    set_pointer(Which::TexCoord, size, type_, stride, ptr)
+}
+
+/// glNormalPointer.
+#[no_mangle]
+pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    set_pointer(Which::Normal, 3, type_, stride, ptr)
+}
+
+fn client_state(cap: GLenum, on: bool) {
+    with_ctx(|c| {
+        let w = match cap {
+            GL_VERTEX_ARRAY => Which::Vertex,
+            GL_COLOR_ARRAY => Which::Color,
+            GL_NORMAL_ARRAY => Which::Normal,
+            GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
+            // Arrays the fixed-function pipeline does not read yet are accepted.
+            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => {
+                return Ok(())
+            }
+            _ => return Err(GlError::InvalidEnum),
+        };
+        c.check_outside_begin()?;
+        array_mut(c, w).enabled = on;
+        Ok(())
+    })
+}
+
+/// glEnableClientState.
+#[no_mangle]
+pub extern "C" fn glEnableClientState(cap: GLenum) {
+    client_state(cap, true)
+}
+
+/// glDisableClientState.
+#[no_mangle]
+pub extern "C" fn glDisableClientState(cap: GLenum) {
+    client_state(cap, false)
+}
+
+/// glInterleavedArrays: sets and enables the arrays of one of the 14 fixed layouts.
+#[no_mangle]
+pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const GLvoid) {
+    const F: i32 = 4;
+    const C: i32 = 4;
+    // (tex size, colour size, colour type, normal?, vertex size, colour off, normal off, vertex off, stride)
+    let layout: Option<(i32, i32, GLenum, bool, i32, i32, i32, i32, i32)> = match format {
+        GL_V2F => Some((0, 0, 0, false, 2, 0, 0, 0, 2 * F)),
+        GL_V3F => Some((0, 0, 0, false, 3, 0, 0, 0, 3 * F)),
+        GL_C4UB_V2F => Some((0, 4, GL_UNSIGNED_BYTE, false, 2, 0, 0, C, C + 2 * F)),
+        GL_C4UB_V3F => Some((0, 4, GL_UNSIGNED_BYTE, false, 3, 0, 0, C, C + 3 * F)),
+        GL_C3F_V3F => Some((0, 3, GL_FLOAT, false, 3, 0, 0, 3 * F, 6 * F)),
+        GL_N3F_V3F => Some((0, 0, 0, true, 3, 0, 0, 3 * F, 6 * F)),
+        GL_C4F_N3F_V3F => Some((0, 4, GL_FLOAT, true, 3, 0, 4 * F, 7 * F, 10 * F)),
+        GL_T2F_V3F => Some((2, 0, 0, false, 3, 0, 0, 2 * F, 5 * F)),
+        GL_T4F_V4F => Some((4, 0, 0, false, 4, 0, 0, 4 * F, 8 * F)),
+        GL_T2F_C4UB_V3F => Some((
+            2,
+            4,
+            GL_UNSIGNED_BYTE,
+            false,
+            3,
+            2 * F,
+            0,
+            C + 2 * F,
+            C + 5 * F,
+        )),
+        GL_T2F_C3F_V3F => Some((2, 3, GL_FLOAT, false, 3, 2 * F, 0, 5 * F, 8 * F)),
+        GL_T2F_N3F_V3F => Some((2, 0, 0, true, 3, 0, 2 * F, 5 * F, 8 * F)),
+        GL_T2F_C4F_N3F_V3F => Some((2, 4, GL_FLOAT, true, 3, 2 * F, 6 * F, 9 * F, 12 * F)),
+        GL_T4F_C4F_N3F_V4F => Some((4, 4, GL_FLOAT, true, 4, 4 * F, 8 * F, 11 * F, 15 * F)),
+        _ => None,
+    };
+    let Some((tc, cc, ctype, norm, vc, pc, pn, pv, s)) = layout else {
+        with_ctx(|_| Err::<(), _>(GlError::InvalidEnum));
+        return;
+    };
+    if stride < 0 {
+        with_ctx(|_| Err::<(), _>(GlError::InvalidValue));
+        return;
+    }
+    let in_begin = with_ctx(|c| Ok(c.immediate.active.is_some()));
+    if in_begin {
+        with_ctx(|_| Err::<(), _>(GlError::InvalidOperation));
+        return;
+    }
+    let stride = if stride == 0 { s } else { stride };
+    let base = pointer as usize;
+    let at = |off: i32| (base + off as usize) as *const c_void;
+    client_state(GL_EDGE_FLAG_ARRAY, false);
+    client_state(GL_INDEX_ARRAY, false);
+    client_state(GL_TEXTURE_COORD_ARRAY, tc > 0);
+    if tc > 0 {
+        glTexCoordPointer(tc, GL_FLOAT, stride, at(0));
+    }
+    client_state(GL_COLOR_ARRAY, cc > 0);
+    if cc > 0 {
+        glColorPointer(cc, ctype, stride, at(pc));
+    }
+    client_state(GL_NORMAL_ARRAY, norm);
+    if norm {
+        glNormalPointer(GL_FLOAT, stride, at(pn));
+    }
+    client_state(GL_VERTEX_ARRAY, true);
+    glVertexPointer(vc, GL_FLOAT, stride, at(pv));
+}
+
+/// glArrayElement: inside glBegin/glEnd, specifies vertex `i` from the enabled arrays.
+#[no_mangle]
+pub extern "C" fn glArrayElement(i: GLint) {
+    let r: GlResult<Option<[f32; 4]>> = (|| {
+        if i < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        Ok(with_ctx(|c| {
+            let a = &c.arrays;
+            let cur = &mut c.state.current;
+            // SAFETY: the program promised that enabled client arrays cover element `i`;
+            // buffer-object arrays are bounds-checked.
+            unsafe {
+                if a.color.enabled {
+                    if let Some(v) = fetch_attr(a, &a.color, i as u32, true, [0.0, 0.0, 0.0, 1.0]) {
+                        cur.color = v;
+                    }
+                }
+                if a.normal.enabled {
+                    if let Some(n) = fetch_attr(a, &a.normal, i as u32, true, [0.0; 4]) {
+                        cur.normal = [n[0], n[1], n[2]];
+                    }
+                }
+                if a.texcoord[0].enabled {
+                    if let Some(t) =
+                        fetch_attr(a, &a.texcoord[0], i as u32, false, [0.0, 0.0, 0.0, 1.0])
+                    {
+                        cur.texcoord[0] = t;
+                    }
+                }
+                if a.vertex.enabled {
+                    return Ok(fetch_attr(
+                        a,
+                        &a.vertex,
+                        i as u32,
+                        false,
+                        [0.0, 0.0, 0.0, 1.0],
+                    ));
+                }
+            }
+            Ok(None)
+        }))
+    })();
+    match r {
+        Ok(Some(p)) => super::immediate::vertex(p),
+        Ok(None) => {}
+        Err(e) => with_ctx(|_| Err::<(), _>(e)),
+    }
+}

@@ -1,0 +1,183 @@
+//! Draw calls from arrays: glDrawArrays, glDrawElements, glDrawRangeElements.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::types::*;
+use super::{non_negative, with_ctx};
+use crate::context::arrays::DataType;
+use crate::context::error::{GlError, GlResult};
+use crate::context::state::Primitive;
+use crate::context::Context;
+use crate::geometry::fetch::{fetch_vertex, VertexIn};
+use std::collections::HashMap;
+
+/// GL_INVALID_OPERATION when an array or index buffer the draw reads is mapped.
+fn check_unmapped(c: &Context, indexed: bool) -> GlResult<()> {
+    let a = &c.arrays;
+    let mapped = |name: u32| {
+        name != 0
+            && a.buffers
+                .get(&name)
+                .and_then(|b| b.as_ref())
+                .is_some_and(|b| b.mapped.is_some())
+    };
+    let arrays = [&a.vertex, &a.color, &a.normal, &a.texcoord[0]];
+    if arrays.iter().any(|p| p.enabled && mapped(p.buffer)) || (indexed && mapped(a.element_buffer))
+    {
+        return Err(GlError::InvalidOperation);
+    }
+    Ok(())
+}
+
+/// glDrawArrays on the current context (shared by the multi-draw call).
+pub(crate) fn draw_arrays(
+    c: &mut Context,
+    mode: GLenum,
+    first: GLint,
+    count: GLsizei,
+) -> GlResult<()> {
+    let mode = Primitive::from_gl(mode)?;
+    let count = non_negative(count)?;
+    if first < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    c.check_outside_begin()?;
+    check_unmapped(c, false)?;
+    if !c.arrays.vertex.enabled || count == 0 {
+        return Ok(());
+    }
+    let mut verts = Vec::new();
+    verts
+        .try_reserve_exact(count)
+        .map_err(|_| GlError::OutOfMemory)?;
+    let first = first as u32;
+    for i in 0..count as u32 {
+        let Some(idx) = first.checked_add(i) else {
+            break;
+        };
+        // SAFETY: enabled client arrays are the program's promise; buffers are bounds-checked.
+        verts.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, idx) });
+    }
+    crate::draw::draw(c, mode, &verts, None);
+    Ok(())
+}
+
+/// Reads `count` indices of `ty` from the bound element buffer (offset `ptr`) or client
+/// memory; indices beyond the end of a buffer are dropped.
+fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult<Vec<u32>> {
+    let size = ty.size();
+    let read = |bytes: &[u8]| -> u32 {
+        match ty {
+            DataType::UByte => bytes[0] as u32,
+            DataType::UShort => u16::from_ne_bytes([bytes[0], bytes[1]]) as u32,
+            _ => u32::from_ne_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]),
+        }
+    };
+    let mut out = Vec::new();
+    if c.arrays.element_buffer != 0 {
+        let data = c.arrays.buffer_data(c.arrays.element_buffer).unwrap_or(&[]);
+        let avail = data.len().saturating_sub(ptr) / size;
+        let n = count.min(avail);
+        out.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
+        out.extend(data[ptr..ptr + n * size].chunks_exact(size).map(read));
+    } else {
+        if ptr == 0 {
+            return Ok(out);
+        }
+        out.try_reserve_exact(count)
+            .map_err(|_| GlError::OutOfMemory)?;
+        // SAFETY: the program promises `count` indices at a non-null client pointer.
+        let bytes = unsafe { std::slice::from_raw_parts(ptr as *const u8, count * size) };
+        out.extend(bytes.chunks_exact(size).map(read));
+    }
+    Ok(out)
+}
+
+/// glDrawElements on the current context (shared by the range and multi-draw calls).
+pub(crate) fn draw_elements(
+    c: &mut Context,
+    mode: GLenum,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const GLvoid,
+) -> GlResult<()> {
+    let mode = Primitive::from_gl(mode)?;
+    let count = non_negative(count)?;
+    let ty = match type_ {
+        GL_UNSIGNED_BYTE => DataType::UByte,
+        GL_UNSIGNED_SHORT => DataType::UShort,
+        GL_UNSIGNED_INT => DataType::UInt,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    c.check_outside_begin()?;
+    check_unmapped(c, true)?;
+    if !c.arrays.vertex.enabled || count == 0 {
+        return Ok(());
+    }
+    let idx = read_indices(c, count, ty, indices as usize)?;
+    let (Some(&lo), Some(&hi)) = (idx.iter().min(), idx.iter().max()) else {
+        return Ok(());
+    };
+    // Transform each distinct index once: a dense range when it is compact, a map otherwise.
+    let range = (hi - lo) as usize + 1;
+    let (verts, local): (Vec<VertexIn>, Vec<u32>) = if range <= idx.len() * 4 + 1024 {
+        let mut v = Vec::new();
+        v.try_reserve_exact(range)
+            .map_err(|_| GlError::OutOfMemory)?;
+        for i in lo..=hi {
+            // SAFETY: as in draw_arrays.
+            v.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, i) });
+        }
+        (v, idx.iter().map(|&i| i - lo).collect())
+    } else {
+        let mut map: HashMap<u32, u32> = HashMap::new();
+        let mut v = Vec::new();
+        let mut local = Vec::with_capacity(idx.len());
+        for &i in &idx {
+            let k = *map.entry(i).or_insert_with(|| {
+                // SAFETY: as in draw_arrays.
+                v.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, i) });
+                (v.len() - 1) as u32
+            });
+            local.push(k);
+        }
+        (v, local)
+    };
+    crate::draw::draw(c, mode, &verts, Some(&local));
+    Ok(())
+}
+
+/// glDrawArrays.
+#[no_mangle]
+pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
+    with_ctx(|c| draw_arrays(c, mode, first, count))
+}
+
+/// glDrawElements.
+#[no_mangle]
+pub extern "C" fn glDrawElements(
+    mode: GLenum,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const GLvoid,
+) {
+    with_ctx(|c| draw_elements(c, mode, count, type_, indices))
+}
+
+/// glDrawRangeElements (the range is a hint; indices outside it are still drawn).
+#[no_mangle]
+pub extern "C" fn glDrawRangeElements(
+    mode: GLenum,
+    start: GLuint,
+    end: GLuint,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const GLvoid,
+) {
+    with_ctx(|c| {
+        if end < start {
+            return Err(GlError::InvalidValue);
+        }
+        draw_elements(c, mode, count, type_, indices)
+    })
+}

@@ -1,0 +1,57 @@
+//! GL 1.4 multi-draw calls (`GL/glext.h`): several glDrawArrays/glDrawElements in one call.
+#![allow(non_snake_case)]
+
+use super::draw::{draw_arrays, draw_elements};
+use super::types::*;
+use super::{non_negative, with_ctx};
+
+/// glMultiDrawArrays.
+///
+/// # Safety
+/// `first` and `count` must be readable for `drawcount` entries.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiDrawArrays(
+    mode: GLenum,
+    first: *const GLint,
+    count: *const GLsizei,
+    drawcount: GLsizei,
+) {
+    with_ctx(|c| {
+        let n = non_negative(drawcount)?;
+        if first.is_null() || count.is_null() {
+            return Ok(());
+        }
+        for i in 0..n {
+            // SAFETY: the caller promises `drawcount` entries in each array.
+            let (f, k) = unsafe { (*first.add(i), *count.add(i)) };
+            draw_arrays(c, mode, f, k)?;
+        }
+        Ok(())
+    })
+}
+
+/// glMultiDrawElements.
+///
+/// # Safety
+/// `count` and `indices` must be readable for `drawcount` entries.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiDrawElements(
+    mode: GLenum,
+    count: *const GLsizei,
+    type_: GLenum,
+    indices: *const *const GLvoid,
+    drawcount: GLsizei,
+) {
+    with_ctx(|c| {
+        let n = non_negative(drawcount)?;
+        if count.is_null() || indices.is_null() {
+            return Ok(());
+        }
+        for i in 0..n {
+            // SAFETY: the caller promises `drawcount` entries in each array.
+            let (k, p) = unsafe { (*count.add(i), *indices.add(i)) };
+            draw_elements(c, mode, k, type_, p)?;
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,538 @@
+//! The OSMesa API (`GL/osmesa.h`): contexts, binding a user buffer, and reading it back.
+//!
+//! A context handle is a heap object registered in a process-wide list, so a stale or
+//! foreign handle is rejected instead of dereferenced. A context is claimed by the thread
+//! that makes it current; another thread cannot make it current until it is released.
+
+#![allow(non_camel_case_types, non_snake_case)]
+
+use super::enums::*;
+use super::types::*;
+use crate::context::{Context, Visual};
+use crate::framebuffer::{ColorFormat, DepthFormat};
+use libc::{c_char, c_int, c_void};
+use std::cell::{Cell, UnsafeCell};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+
+/// OSMESA_COLOR_INDEX
+pub const OSMESA_COLOR_INDEX: GLenum = GL_COLOR_INDEX;
+/// OSMESA_RGBA
+pub const OSMESA_RGBA: GLenum = GL_RGBA;
+/// OSMESA_BGRA
+pub const OSMESA_BGRA: GLenum = 0x1;
+/// OSMESA_ARGB
+pub const OSMESA_ARGB: GLenum = 0x2;
+/// OSMESA_RGB
+pub const OSMESA_RGB: GLenum = GL_RGB;
+/// OSMESA_BGR
+pub const OSMESA_BGR: GLenum = 0x4;
+/// OSMESA_RGB_565
+pub const OSMESA_RGB_565: GLenum = 0x5;
+/// OSMESA_ROW_LENGTH
+pub const OSMESA_ROW_LENGTH: c_int = 0x10;
+/// OSMESA_Y_UP
+pub const OSMESA_Y_UP: c_int = 0x11;
+/// OSMESA_WIDTH
+pub const OSMESA_WIDTH: c_int = 0x20;
+/// OSMESA_HEIGHT
+pub const OSMESA_HEIGHT: c_int = 0x21;
+/// OSMESA_FORMAT
+pub const OSMESA_FORMAT: c_int = 0x22;
+/// OSMESA_TYPE
+pub const OSMESA_TYPE: c_int = 0x23;
+/// OSMESA_MAX_WIDTH
+pub const OSMESA_MAX_WIDTH: c_int = 0x24;
+/// OSMESA_MAX_HEIGHT
+pub const OSMESA_MAX_HEIGHT: c_int = 0x25;
+/// OSMESA_DEPTH_BITS
+pub const OSMESA_DEPTH_BITS: c_int = 0x30;
+/// OSMESA_STENCIL_BITS
+pub const OSMESA_STENCIL_BITS: c_int = 0x31;
+/// OSMESA_ACCUM_BITS
+pub const OSMESA_ACCUM_BITS: c_int = 0x32;
+/// OSMESA_PROFILE
+pub const OSMESA_PROFILE: c_int = 0x33;
+/// OSMESA_CORE_PROFILE
+pub const OSMESA_CORE_PROFILE: c_int = 0x34;
+/// OSMESA_COMPAT_PROFILE
+pub const OSMESA_COMPAT_PROFILE: c_int = 0x35;
+/// OSMESA_CONTEXT_MAJOR_VERSION
+pub const OSMESA_CONTEXT_MAJOR_VERSION: c_int = 0x36;
+/// OSMESA_CONTEXT_MINOR_VERSION
+pub const OSMESA_CONTEXT_MINOR_VERSION: c_int = 0x37;
+/// OSMESA_MAJOR_VERSION (the OSMesa API version we mirror)
+pub const OSMESA_MAJOR_VERSION: c_int = 11;
+/// OSMESA_MINOR_VERSION
+pub const OSMESA_MINOR_VERSION: c_int = 2;
+/// OSMESA_PATCH_VERSION
+pub const OSMESA_PATCH_VERSION: c_int = 0;
+
+/// The largest buffer side OSMesa accepts (llvmpipe's 16384).
+const MAX_SIZE: GLsizei = 16384;
+
+/// An OSMesa context (opaque to C).
+pub struct osmesa_context {
+    /// The thread id (see [`thread_id`]) that has it current, or 0.
+    owner: AtomicU64,
+    /// The GL context.
+    ctx: UnsafeCell<Context>,
+    /// The colour format requested at creation (OSMESA_RGBA …).
+    format: GLenum,
+}
+
+/// The handle type of `GL/osmesa.h`.
+pub type OSMesaContext = *mut osmesa_context;
+
+/// The function-pointer type OSMesaGetProcAddress returns.
+pub type OSMESAproc = Option<unsafe extern "C" fn()>;
+
+/// Live context handles, so that stale handles are rejected.
+static LIVE: Mutex<Vec<usize>> = Mutex::new(Vec::new());
+
+thread_local! {
+    static CURRENT_HANDLE: Cell<OSMesaContext> = const { Cell::new(std::ptr::null_mut()) };
+    static THREAD_ID: u64 = {
+        static NEXT: AtomicU64 = AtomicU64::new(1);
+        NEXT.fetch_add(1, Ordering::Relaxed)
+    };
+}
+
+/// A small non-zero id of the calling thread.
+fn thread_id() -> u64 {
+    THREAD_ID.with(|t| *t)
+}
+
+fn is_live(c: OSMesaContext) -> bool {
+    !c.is_null()
+        && LIVE
+            .lock()
+            .map(|l| l.contains(&(c as usize)))
+            .unwrap_or(false)
+}
+
+fn color_format(format: GLenum) -> Option<ColorFormat> {
+    match format {
+        OSMESA_RGBA => Some(ColorFormat::Rgba),
+        OSMESA_BGRA => Some(ColorFormat::Bgra),
+        OSMESA_ARGB => Some(ColorFormat::Argb),
+        OSMESA_RGB => Some(ColorFormat::Rgb),
+        OSMESA_RGB_565 => Some(ColorFormat::Rgb565),
+        _ => None,
+    }
+}
+
+/// Creates a context from parsed attributes (Mesa's `OSMesaCreateContextAttribs` rules).
+fn create(format: GLenum, depth: c_int, stencil: c_int, accum: c_int) -> OSMesaContext {
+    if depth < 0 || stencil < 0 || accum < 0 {
+        return std::ptr::null_mut();
+    }
+    if !matches!(
+        format,
+        OSMESA_RGBA
+            | OSMESA_BGRA
+            | OSMESA_ARGB
+            | OSMESA_RGB
+            | OSMESA_RGB_565
+            | OSMESA_BGR
+            | OSMESA_COLOR_INDEX
+    ) {
+        return std::ptr::null_mut();
+    }
+    let depth_format = if depth > 0 && stencil > 0 || depth >= 24 {
+        DepthFormat::Z24
+    } else if depth >= 16 {
+        DepthFormat::Z16
+    } else {
+        DepthFormat::None
+    };
+    let visual = Visual {
+        format: color_format(format).unwrap_or(ColorFormat::Rgba),
+        depth: depth_format,
+        stencil: stencil > 0,
+        accum_bits: accum,
+    };
+    let c = Box::into_raw(Box::new(osmesa_context {
+        owner: AtomicU64::new(0),
+        ctx: UnsafeCell::new(Context::new(visual)),
+        format,
+    }));
+    match LIVE.lock() {
+        Ok(mut l) => l.push(c as usize),
+        Err(_) => {
+            // SAFETY: `c` was just made by Box::into_raw and is not shared.
+            drop(unsafe { Box::from_raw(c) });
+            return std::ptr::null_mut();
+        }
+    }
+    c
+}
+
+/// OSMesaCreateContext: `Ext(format, 24, 8, 0, sharelist)`.
+#[no_mangle]
+pub extern "C" fn OSMesaCreateContext(format: GLenum, sharelist: OSMesaContext) -> OSMesaContext {
+    OSMesaCreateContextExt(format, 24, 8, 0, sharelist)
+}
+
+/// OSMesaCreateContextExt: a context with the given depth, stencil and accumulation bits.
+#[no_mangle]
+pub extern "C" fn OSMesaCreateContextExt(
+    format: GLenum,
+    depthBits: GLint,
+    stencilBits: GLint,
+    accumBits: GLint,
+    _sharelist: OSMesaContext,
+) -> OSMesaContext {
+    std::panic::catch_unwind(|| create(format, depthBits, stencilBits, accumBits))
+        .unwrap_or(std::ptr::null_mut())
+}
+
+/// OSMesaCreateContextAttribs: a zero-terminated key/value list. softgl implements the GL
+/// 1.5 compatibility profile, so a core profile or a version above 1.5 gives NULL.
+///
+/// # Safety
+/// `attribList` must be NULL or point to a zero-terminated list of int pairs.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaCreateContextAttribs(
+    attribList: *const c_int,
+    _sharelist: OSMesaContext,
+) -> OSMesaContext {
+    let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 0, 0, 0);
+    let (mut major, mut minor) = (1, 0);
+    if !attribList.is_null() {
+        let mut i = 0usize;
+        loop {
+            // SAFETY: the list is zero-terminated (caller contract); we stop at the key 0.
+            let key = unsafe { *attribList.add(i) };
+            if key == 0 {
+                break;
+            }
+            // SAFETY: every non-zero key is followed by its value.
+            let val = unsafe { *attribList.add(i + 1) };
+            match key {
+                OSMESA_FORMAT => format = val as GLenum,
+                OSMESA_DEPTH_BITS => depth = val,
+                OSMESA_STENCIL_BITS => stencil = val,
+                OSMESA_ACCUM_BITS => accum = val,
+                OSMESA_PROFILE => {
+                    if val != OSMESA_COMPAT_PROFILE {
+                        return std::ptr::null_mut();
+                    }
+                }
+                OSMESA_CONTEXT_MAJOR_VERSION => major = val,
+                OSMESA_CONTEXT_MINOR_VERSION => minor = val,
+                _ => return std::ptr::null_mut(),
+            }
+            i += 2;
+        }
+    }
+    if (major, minor) > (1, 5) {
+        return std::ptr::null_mut();
+    }
+    OSMesaCreateContextExt(format, depth, stencil, accum, std::ptr::null_mut())
+}
+
+/// OSMesaDestroyContext. A context current on another thread is not freed (that would
+/// leave the other thread a dangling context); it is only unregistered.
+#[no_mangle]
+pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
+    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let Ok(mut live) = LIVE.lock() else { return };
+        let Some(pos) = live.iter().position(|&p| p == ctx as usize) else {
+            return;
+        };
+        live.swap_remove(pos);
+        drop(live);
+        // SAFETY: `ctx` was registered in LIVE, so it is a valid, not yet freed context.
+        let c = unsafe { &*ctx };
+        let me = thread_id();
+        if CURRENT_HANDLE.with(|h| h.get()) == ctx {
+            CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
+            super::set_current(std::ptr::null_mut());
+            c.owner.store(0, Ordering::Release);
+        }
+        if c.owner.load(Ordering::Acquire) == 0 || c.owner.load(Ordering::Acquire) == me {
+            if std::env::var_os("SOFTGL_STATS").is_some_and(|v| v != "0") {
+                // SAFETY: no thread has this context current (checked above).
+                eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
+            }
+            // SAFETY: unregistered above and current on no thread: nobody else can reach it.
+            drop(unsafe { Box::from_raw(ctx) });
+        }
+    }));
+}
+
+/// OSMesaMakeCurrent: binds `ctx` to this thread and `buffer` as its colour buffer.
+/// `(NULL, NULL, …)` unbinds. Returns GL_FALSE for bad arguments, an unsupported
+/// format/type pair, or a context current on another thread.
+///
+/// # Safety
+/// `buffer` must hold `width * height` pixels of the context's format and `type`
+/// (or OSMESA_ROW_LENGTH rows), and stay valid while the context draws into it.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaMakeCurrent(
+    ctx: OSMesaContext,
+    buffer: *mut c_void,
+    type_: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+) -> GLboolean {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        make_current(ctx, buffer, type_, width, height)
+    }))
+    .unwrap_or(GL_FALSE as GLboolean)
+}
+
+fn release_current() {
+    let old = CURRENT_HANDLE.with(|h| h.get());
+    if !old.is_null() {
+        // SAFETY: a current handle is live (destroy unbinds it before freeing).
+        unsafe { &*old }.owner.store(0, Ordering::Release);
+    }
+    CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
+    super::set_current(std::ptr::null_mut());
+}
+
+fn make_current(
+    ctx: OSMesaContext,
+    buffer: *mut c_void,
+    type_: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+) -> GLboolean {
+    const FALSE: GLboolean = GL_FALSE as GLboolean;
+    if ctx.is_null() && buffer.is_null() {
+        release_current();
+        return GL_TRUE as GLboolean;
+    }
+    if !is_live(ctx)
+        || buffer.is_null()
+        || width < 1
+        || height < 1
+        || width > MAX_SIZE
+        || height > MAX_SIZE
+    {
+        return FALSE;
+    }
+    // SAFETY: `ctx` is registered in LIVE, hence valid.
+    let c = unsafe { &*ctx };
+    let type_ok = match c.format {
+        OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB | OSMESA_RGB => type_ == GL_UNSIGNED_BYTE,
+        OSMESA_RGB_565 => type_ == GL_UNSIGNED_SHORT_5_6_5,
+        _ => false,
+    };
+    if !type_ok {
+        return FALSE;
+    }
+    let me = thread_id();
+    let prev = CURRENT_HANDLE.with(|h| h.get());
+    if prev != ctx {
+        if c.owner
+            .compare_exchange(0, me, Ordering::AcqRel, Ordering::Acquire)
+            .is_err()
+        {
+            return FALSE;
+        }
+        if !prev.is_null() {
+            // SAFETY: a current handle is live.
+            unsafe { &*prev }.owner.store(0, Ordering::Release);
+        }
+    }
+    CURRENT_HANDLE.with(|h| h.set(ctx));
+    let gl = c.ctx.get();
+    super::set_current(gl);
+    // SAFETY: this thread now owns the context (claimed above), so no other reference exists.
+    let gl = unsafe { &mut *gl };
+    gl.bind_framebuffer(width as usize, height as usize);
+    gl.target.ptr = buffer as usize;
+    gl.target.ty = type_;
+    gl.target.width = width as usize;
+    gl.target.height = height as usize;
+    GL_TRUE as GLboolean
+}
+
+/// OSMesaGetCurrentContext.
+#[no_mangle]
+pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
+    CURRENT_HANDLE.with(|h| h.get())
+}
+
+/// OSMesaPixelStore: OSMESA_ROW_LENGTH (pixels, 0 = width) and OSMESA_Y_UP for the current
+/// context.
+#[no_mangle]
+pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
+    super::with_ctx(|c| {
+        match pname {
+            OSMESA_ROW_LENGTH => {
+                if value < 0 {
+                    return Err(crate::context::GlError::InvalidValue);
+                }
+                c.target.row_length = value;
+            }
+            OSMESA_Y_UP => c.target.y_up = value != 0,
+            _ => return Err(crate::context::GlError::InvalidEnum),
+        }
+        Ok(())
+    })
+}
+
+/// OSMesaGetIntegerv: the current context's buffer parameters.
+///
+/// # Safety
+/// `value` must be NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
+    if value.is_null() {
+        return;
+    }
+    let handle = OSMesaGetCurrentContext();
+    let v = super::with_ctx(|c| {
+        Ok(Some(match pname {
+            OSMESA_WIDTH => c.target.width as GLint,
+            OSMESA_HEIGHT => c.target.height as GLint,
+            // SAFETY: the current handle is live while its context is current.
+            OSMESA_FORMAT => unsafe { &*handle }.format as GLint,
+            OSMESA_TYPE => c.target.ty as GLint,
+            OSMESA_ROW_LENGTH => c.target.row_length,
+            OSMESA_Y_UP => c.target.y_up as GLint,
+            OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => MAX_SIZE,
+            _ => return Err(crate::context::GlError::InvalidEnum),
+        }))
+    });
+    if let Some(v) = v {
+        // SAFETY: checked non-null; the caller promises it is writable.
+        unsafe { *value = v };
+    }
+}
+
+/// OSMesaGetDepthBuffer: a copy of the depth buffer (bottom-up rows; 4 bytes per value
+/// for 24-bit depth with stencil in the high byte, 2 for 16-bit), refreshed at each flush.
+///
+/// # Safety
+/// The out pointers must be NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetDepthBuffer(
+    c: OSMesaContext,
+    width: *mut GLint,
+    height: *mut GLint,
+    bytesPerValue: *mut GLint,
+    buffer: *mut *mut c_void,
+) -> GLboolean {
+    let mut out = (0, 0, 0, std::ptr::null_mut::<c_void>());
+    let ok = is_live(c) && {
+        // SAFETY: live handle. Reading the context from another thread while it draws would
+        // race; Mesa has the same contract (call it from the rendering thread).
+        let gl = unsafe { &mut *(*c).ctx.get() };
+        match gl.fb.as_ref() {
+            Some(fb) if fb.depth_format != DepthFormat::None => {
+                let (w, h) = (fb.width as GLint, fb.height as GLint);
+                let bpv = if fb.depth_format == DepthFormat::Z16 {
+                    2
+                } else {
+                    4
+                };
+                if gl.depth_copy.is_none() {
+                    gl.depth_copy = Some(gl.depth_snapshot());
+                }
+                let p = gl
+                    .depth_copy
+                    .as_mut()
+                    .map_or(std::ptr::null_mut(), |v| v.as_mut_ptr() as *mut c_void);
+                out = (w, h, bpv, p);
+                true
+            }
+            _ => false,
+        }
+    };
+    // SAFETY: each out pointer is checked for NULL; the caller promises writability.
+    unsafe {
+        if !width.is_null() {
+            *width = out.0;
+        }
+        if !height.is_null() {
+            *height = out.1;
+        }
+        if !bytesPerValue.is_null() {
+            *bytesPerValue = out.2;
+        }
+        if !buffer.is_null() {
+            *buffer = out.3;
+        }
+    }
+    ok as GLboolean
+}
+
+/// OSMesaGetColorBuffer: the user buffer bound by OSMesaMakeCurrent.
+///
+/// # Safety
+/// The out pointers must be NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetColorBuffer(
+    c: OSMesaContext,
+    width: *mut GLint,
+    height: *mut GLint,
+    format: *mut GLint,
+    buffer: *mut *mut c_void,
+) -> GLboolean {
+    let mut out = (0, 0, 0, std::ptr::null_mut::<c_void>());
+    let ok = is_live(c) && {
+        // SAFETY: live handle; only plain fields are read.
+        let h = unsafe { &*c };
+        // SAFETY: as above.
+        let t = unsafe { &*h.ctx.get() }.target;
+        out = (
+            t.width as GLint,
+            t.height as GLint,
+            h.format as GLint,
+            t.ptr as *mut c_void,
+        );
+        t.ptr != 0
+    };
+    // SAFETY: each out pointer is checked for NULL; the caller promises writability.
+    unsafe {
+        if !width.is_null() {
+            *width = out.0;
+        }
+        if !height.is_null() {
+            *height = out.1;
+        }
+        if !format.is_null() {
+            *format = out.2;
+        }
+        if !buffer.is_null() {
+            *buffer = out.3;
+        }
+    }
+    ok as GLboolean
+}
+
+/// OSMesaColorClamp: accepted; fragment colours are always clamped for the 8-bit buffers
+/// softgl supports, which is what both settings give there.
+#[no_mangle]
+pub extern "C" fn OSMesaColorClamp(_enable: GLboolean) {}
+
+/// OSMesaPostprocess: accepted; no post-processing filters are implemented.
+///
+/// # Safety
+/// `filter` is not read.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaPostprocess(
+    _osmesa: OSMesaContext,
+    _filter: *const c_char,
+    _enable_value: libc::c_uint,
+) {
+}
+
+/// OSMesaGetProcAddress: the address of an exported OSMesa or GL function, NULL otherwise.
+///
+/// # Safety
+/// `funcName` must be NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetProcAddress(funcName: *const c_char) -> OSMESAproc {
+    if funcName.is_null() {
+        return None;
+    }
+    // SAFETY: caller contract: a NUL-terminated string.
+    let name = unsafe { std::ffi::CStr::from_ptr(funcName) }.to_bytes();
+    super::proc_table::lookup(name)
+}

@@ -1,0 +1,335 @@
+//! Queries: glGet{Boolean,Integer,Float,Double}v, glGetString, glGetPointerv and
+//! glReadPixels.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::types::*;
+use super::with_ctx;
+use crate::context::error::{GlError, GlResult};
+use crate::context::get::get;
+use crate::context::state::PixelStore;
+use crate::context::Context;
+use crate::framebuffer::DepthFormat;
+use libc::c_void;
+
+/// Writes the value of `pname` through `out` using `conv`.
+fn get_into<T>(
+    pname: GLenum,
+    out: *mut T,
+    conv: impl Fn(&crate::context::get::Value, &mut dyn FnMut(usize, T)),
+) {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        let v = get(c, pname)?;
+        if out.is_null() {
+            return Ok(());
+        }
+        conv(&v, &mut |i, x| {
+            // SAFETY: the program promises room for the value's components, as GL requires.
+            unsafe { *out.add(i) = x }
+        });
+        Ok(())
+    })
+}
+
+/// glGetBooleanv.
+///
+/// # Safety
+/// `params` must be writable for the value's components.
+#[no_mangle]
+pub unsafe extern "C" fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) {
+    get_into(pname, params, |v, put| {
+        v.as_bools()
+            .enumerate()
+            .for_each(|(i, x)| put(i, x as GLboolean))
+    })
+}
+
+/// glGetIntegerv.
+///
+/// # Safety
+/// `params` must be writable for the value's components.
+#[no_mangle]
+pub unsafe extern "C" fn glGetIntegerv(pname: GLenum, params: *mut GLint) {
+    get_into(pname, params, |v, put| {
+        v.as_ints().enumerate().for_each(|(i, x)| put(i, x))
+    })
+}
+
+/// glGetFloatv.
+///
+/// # Safety
+/// `params` must be writable for the value's components.
+#[no_mangle]
+pub unsafe extern "C" fn glGetFloatv(pname: GLenum, params: *mut GLfloat) {
+    get_into(pname, params, |v, put| {
+        v.as_doubles()
+            .enumerate()
+            .for_each(|(i, x)| put(i, x as f32))
+    })
+}
+
+/// glGetDoublev.
+///
+/// # Safety
+/// `params` must be writable for the value's components.
+#[no_mangle]
+pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
+    get_into(pname, params, |v, put| {
+        v.as_doubles().enumerate().for_each(|(i, x)| put(i, x))
+    })
+}
+
+/// The extensions that work, as GL_EXTENSIONS lists them.
+pub const EXTENSIONS: &str = "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
+
+/// glGetString: vendor, renderer, version ("1.5 …") and the extension list.
+#[no_mangle]
+pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
+    let s: &'static [u8] = match name {
+        GL_VENDOR => b"softgl\0",
+        GL_RENDERER => b"softgl software rasterizer\0",
+        GL_VERSION => concat!("1.5 softgl ", env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+        GL_EXTENSIONS => concat!(
+            "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays",
+            "\0"
+        )
+        .as_bytes(),
+        _ => {
+            with_ctx(|_| Err::<(), _>(GlError::InvalidEnum));
+            return std::ptr::null();
+        }
+    };
+    let inside = with_ctx(|c| Ok(c.immediate.active.is_some()));
+    if inside {
+        with_ctx(|_| Err::<(), _>(GlError::InvalidOperation));
+        return std::ptr::null();
+    }
+    s.as_ptr()
+}
+
+/// glGetPointerv: the client array pointers.
+///
+/// # Safety
+/// `params` must be writable.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) {
+    with_ctx(|c| {
+        let a = &c.arrays;
+        let p = match pname {
+            GL_VERTEX_ARRAY_POINTER => a.vertex.ptr,
+            GL_COLOR_ARRAY_POINTER => a.color.ptr,
+            GL_NORMAL_ARRAY_POINTER => a.normal.ptr,
+            GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[c.state.client_active_texture].ptr,
+            GL_INDEX_ARRAY_POINTER
+            | GL_EDGE_FLAG_ARRAY_POINTER
+            | GL_FEEDBACK_BUFFER_POINTER
+            | GL_SELECTION_BUFFER_POINTER => 0,
+            _ => return Err(GlError::InvalidEnum),
+        };
+        if !params.is_null() {
+            // SAFETY: checked non-null; the caller promises it is writable.
+            unsafe { *params = p as *mut c_void };
+        }
+        Ok(())
+    })
+}
+
+/// What one packed pixel holds.
+#[derive(Clone, Copy, PartialEq)]
+enum ReadKind {
+    /// Colour channels as indices into RGBA (`usize::MAX` = luminance sum), count.
+    Color([usize; 4], usize),
+    Depth,
+    Stencil,
+}
+
+/// Byte layout of a packed image (GL 1.5 §4.3.2 with the pack parameters).
+pub(crate) fn packed_layout(
+    ps: &PixelStore,
+    width: usize,
+    bytes_per_pixel: usize,
+    type_size: usize,
+) -> (usize, usize) {
+    let row_px = if ps.row_length > 0 {
+        ps.row_length as usize
+    } else {
+        width
+    };
+    let align = ps.alignment as usize;
+    let raw = row_px * bytes_per_pixel;
+    let stride = if type_size >= align {
+        raw
+    } else {
+        raw.div_ceil(align) * align
+    };
+    let start = ps.skip_rows as usize * stride + ps.skip_pixels as usize * bytes_per_pixel;
+    (start, stride)
+}
+
+fn read_pixels(
+    c: &mut Context,
+    x: i32,
+    y: i32,
+    w: i32,
+    h: i32,
+    format: GLenum,
+    ty: GLenum,
+    out: *mut u8,
+) -> GlResult<()> {
+    let kind = match format {
+        GL_RGBA => ReadKind::Color([0, 1, 2, 3], 4),
+        GL_RGB => ReadKind::Color([0, 1, 2, 0], 3),
+        GL_BGRA => ReadKind::Color([2, 1, 0, 3], 4),
+        GL_BGR => ReadKind::Color([2, 1, 0, 0], 3),
+        GL_RED => ReadKind::Color([0, 0, 0, 0], 1),
+        GL_GREEN => ReadKind::Color([1, 0, 0, 0], 1),
+        GL_BLUE => ReadKind::Color([2, 0, 0, 0], 1),
+        GL_ALPHA => ReadKind::Color([3, 0, 0, 0], 1),
+        GL_LUMINANCE => ReadKind::Color([usize::MAX, 0, 0, 0], 1),
+        GL_LUMINANCE_ALPHA => ReadKind::Color([usize::MAX, 3, 0, 0], 2),
+        GL_DEPTH_COMPONENT => ReadKind::Depth,
+        GL_STENCIL_INDEX => ReadKind::Stencil,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    let tsize = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => 1,
+        GL_UNSIGNED_SHORT | GL_SHORT => 2,
+        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    if w < 0 || h < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    c.check_outside_begin()?;
+    let Some(fb) = c.fb.as_ref() else {
+        return Ok(());
+    };
+    match kind {
+        ReadKind::Depth if fb.depth.is_empty() => return Err(GlError::InvalidOperation),
+        ReadKind::Stencil if fb.stencil.is_empty() => return Err(GlError::InvalidOperation),
+        _ => {}
+    }
+    if out.is_null() {
+        return Ok(());
+    }
+    let comps = match kind {
+        ReadKind::Color(_, n) => n,
+        _ => 1,
+    };
+    let bpp = comps * tsize;
+    let (start, stride) = packed_layout(&c.state.pack, w as usize, bpp, tsize);
+    let put = |p: *mut u8, v: f64, norm: bool| {
+        // SAFETY: the program promises a destination large enough for the packed image.
+        unsafe {
+            match ty {
+                GL_UNSIGNED_BYTE => {
+                    *p = if norm {
+                        (v.clamp(0.0, 1.0) * 255.0).round() as u8
+                    } else {
+                        v as u8
+                    }
+                }
+                GL_BYTE => {
+                    *(p as *mut i8) = if norm {
+                        (v.clamp(-1.0, 1.0) * 127.0).round() as i8
+                    } else {
+                        v as i8
+                    }
+                }
+                GL_UNSIGNED_SHORT => (p as *mut u16).write_unaligned(if norm {
+                    (v.clamp(0.0, 1.0) * 65535.0).round() as u16
+                } else {
+                    v as u16
+                }),
+                GL_SHORT => (p as *mut i16).write_unaligned(if norm {
+                    (v.clamp(-1.0, 1.0) * 32767.0).round() as i16
+                } else {
+                    v as i16
+                }),
+                GL_UNSIGNED_INT => (p as *mut u32).write_unaligned(if norm {
+                    (v.clamp(0.0, 1.0) * 4294967295.0).round() as u32
+                } else {
+                    v as u32
+                }),
+                GL_INT => (p as *mut i32).write_unaligned(if norm {
+                    (v.clamp(-1.0, 1.0) * 2147483647.0).round() as i32
+                } else {
+                    v as i32
+                }),
+                _ => (p as *mut f32).write_unaligned(v as f32),
+            }
+        }
+    };
+    for row in 0..h as usize {
+        let gy = y as i64 + row as i64;
+        if gy < 0 || gy >= fb.height as i64 {
+            continue;
+        }
+        let fy = fb.height - 1 - gy as usize;
+        for col in 0..w as usize {
+            let gx = x as i64 + col as i64;
+            if gx < 0 || gx >= fb.width as i64 {
+                continue;
+            }
+            let idx = fy * fb.width + gx as usize;
+            // SAFETY: pointer arithmetic within the packed image the program provided.
+            let p = unsafe { out.add(start + row * stride + col * bpp) };
+            match kind {
+                ReadKind::Color(map, n) => {
+                    let px = fb.color[idx];
+                    for (k, &ch) in map.iter().take(n).enumerate() {
+                        // SAFETY: k * tsize < bpp.
+                        let q = unsafe { p.add(k * tsize) };
+                        if ty == GL_UNSIGNED_BYTE && ch != usize::MAX {
+                            // SAFETY: as above.
+                            unsafe { *q = px[ch] };
+                        } else {
+                            let v = if ch == usize::MAX {
+                                ((px[0] as f64 + px[1] as f64 + px[2] as f64) / 255.0).min(1.0)
+                            } else {
+                                px[ch] as f64 / 255.0
+                            };
+                            put(q, v, true);
+                        }
+                    }
+                }
+                ReadKind::Depth => {
+                    let z = fb.depth[idx];
+                    match (ty, fb.depth_format) {
+                        (GL_UNSIGNED_INT, DepthFormat::Z24) => {
+                            put(p, ((z << 8) | (z >> 16)) as f64, false)
+                        }
+                        (GL_UNSIGNED_INT, _) => put(p, ((z << 16) | z) as f64, false),
+                        (GL_UNSIGNED_SHORT, DepthFormat::Z16) => put(p, z as f64, false),
+                        (GL_UNSIGNED_SHORT, _) => put(p, (z >> 8) as f64, false),
+                        _ => {
+                            let max = fb.depth_format.max_value() as f64;
+                            put(p, (z as f64 / max) as f32 as f64, true)
+                        }
+                    }
+                }
+                ReadKind::Stencil => put(p, fb.stencil[idx] as f64, false),
+            }
+        }
+    }
+    Ok(())
+}
+
+/// glReadPixels: reads a rectangle of the framebuffer (bottom row first) with the pack
+/// parameters; pixels outside the framebuffer are left unwritten.
+///
+/// # Safety
+/// `pixels` must be writable for the packed image.
+#[no_mangle]
+pub unsafe extern "C" fn glReadPixels(
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *mut GLvoid,
+) {
+    with_ctx(|c| read_pixels(c, x, y, width, height, format, type_, pixels as *mut u8))
+}

@@ -1,0 +1,283 @@
+//! The framebuffer: colour (8-bit RGBA per pixel), depth and stencil, stored in y-down rows
+//! as llvmpipe keeps OSMesa's window buffer, and the copy into the user's OSMesa buffer.
+//!
+//! The user buffer is written only by [`Framebuffer::copy_to_user`] (glFlush/glFinish), as
+//! Mesa does: a new buffer starts zeroed, colour (0,0,0,0) and depth 0.
+
+/// The colour layout of the OSMesa user buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorFormat {
+    /// OSMESA_RGBA: bytes R, G, B, A.
+    Rgba,
+    /// OSMESA_BGRA: bytes B, G, R, A.
+    Bgra,
+    /// OSMESA_ARGB: bytes A, R, G, B.
+    Argb,
+    /// OSMESA_RGB: bytes R, G, B (no alpha: alpha reads as 1).
+    Rgb,
+    /// OSMESA_RGB_565: native-endian u16, R in the high 5 bits (no alpha).
+    Rgb565,
+}
+
+impl ColorFormat {
+    /// Bytes per pixel in the user buffer.
+    pub fn bytes_per_pixel(self) -> usize {
+        match self {
+            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb => 4,
+            ColorFormat::Rgb => 3,
+            ColorFormat::Rgb565 => 2,
+        }
+    }
+    /// Bits per colour channel (r, g, b, a) for glGet(GL_RED_BITS …).
+    pub fn channel_bits(self) -> [i32; 4] {
+        match self {
+            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb => [8, 8, 8, 8],
+            ColorFormat::Rgb => [8, 8, 8, 0],
+            ColorFormat::Rgb565 => [5, 6, 5, 0],
+        }
+    }
+    /// Whether the format stores alpha.
+    pub fn has_alpha(self) -> bool {
+        self.channel_bits()[3] > 0
+    }
+}
+
+/// The depth buffer layout OSMesa chose (llvmpipe-rules §8).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthFormat {
+    /// No depth buffer.
+    None,
+    /// 16-bit unorm.
+    Z16,
+    /// 24-bit unorm (Z24X8 or Z24S8).
+    Z24,
+}
+
+impl DepthFormat {
+    /// Depth bits.
+    pub fn bits(self) -> i32 {
+        match self {
+            DepthFormat::None => 0,
+            DepthFormat::Z16 => 16,
+            DepthFormat::Z24 => 24,
+        }
+    }
+    /// The largest stored value (1.0).
+    pub fn max_value(self) -> u32 {
+        match self {
+            DepthFormat::None => 0,
+            DepthFormat::Z16 => 0xFFFF,
+            DepthFormat::Z24 => 0xFF_FFFF,
+        }
+    }
+    /// A fragment depth (already clamped to [0,1]) quantised as llvmpipe's shader does.
+    #[inline(always)]
+    pub fn quantize(self, z: f32) -> u32 {
+        match self {
+            DepthFormat::Z24 => (z * 16_777_215.0f32).round_ties_even() as u32,
+            DepthFormat::Z16 => {
+                let t = z * (65535.0f32 / 65536.0f32) + 128.0f32;
+                t.to_bits() & 0xFFFF
+            }
+            DepthFormat::None => 0,
+        }
+    }
+    /// A clear value quantised as gallium's `util_pack_z` (double precision, lrint).
+    pub fn quantize_clear(self, z: f64) -> u32 {
+        let max = self.max_value();
+        if z <= 0.0 {
+            0
+        } else if z >= 1.0 {
+            max
+        } else {
+            (z * max as f64).round_ties_even() as u32
+        }
+    }
+}
+
+/// Colour, depth and stencil storage of one context.
+#[derive(Clone, Debug)]
+pub struct Framebuffer {
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// The user buffer's colour layout (decides quantisation on store).
+    pub format: ColorFormat,
+    /// RGBA8 colour, row 0 = top row.
+    pub color: Vec<[u8; 4]>,
+    /// Depth layout.
+    pub depth_format: DepthFormat,
+    /// Depth values (empty without a depth buffer), row 0 = top row.
+    pub depth: Vec<u32>,
+    /// Stencil values (empty without a stencil buffer), row 0 = top row.
+    pub stencil: Vec<u8>,
+}
+
+impl Framebuffer {
+    /// A zero-filled framebuffer (Mesa's initial contents).
+    pub fn new(
+        width: usize,
+        height: usize,
+        format: ColorFormat,
+        depth_format: DepthFormat,
+        stencil: bool,
+    ) -> Self {
+        let n = width * height;
+        Framebuffer {
+            width,
+            height,
+            format,
+            color: vec![[0, 0, 0, if format.has_alpha() { 0 } else { 255 }]; n],
+            depth_format,
+            depth: if depth_format == DepthFormat::None {
+                Vec::new()
+            } else {
+                vec![0; n]
+            },
+            stencil: if stencil { vec![0; n] } else { Vec::new() },
+        }
+    }
+
+    /// Stencil bits (0 or 8).
+    pub fn stencil_bits(&self) -> i32 {
+        if self.stencil.is_empty() {
+            0
+        } else {
+            8
+        }
+    }
+
+    /// Converts an RGBA8 value to what the buffer stores (RGB565 truncates and replicates
+    /// bits, formats without alpha store 255).
+    #[inline(always)]
+    pub fn store_rgba8(&self, c: [u8; 4]) -> [u8; 4] {
+        match self.format {
+            ColorFormat::Rgb565 => {
+                let (r, g, b) = (c[0] >> 3, c[1] >> 2, c[2] >> 3);
+                [
+                    (r << 3) | (r >> 2),
+                    (g << 2) | (g >> 4),
+                    (b << 3) | (b >> 2),
+                    255,
+                ]
+            }
+            ColorFormat::Rgb => [c[0], c[1], c[2], 255],
+            _ => c,
+        }
+    }
+
+    /// The stored colour of a glClear value (already clamped to [0,1]).
+    pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
+        match self.format {
+            ColorFormat::Rgb565 => {
+                let q = |v: f32, max: f32| (v * max).round() as u8;
+                let (r, g, b) = (q(c[0], 31.0), q(c[1], 63.0), q(c[2], 31.0));
+                [
+                    (r << 3) | (r >> 2),
+                    (g << 2) | (g >> 4),
+                    (b << 3) | (b >> 2),
+                    255,
+                ]
+            }
+            _ => {
+                let q = clear_float_to_ubyte;
+                self.store_rgba8([q(c[0]), q(c[1]), q(c[2]), q(c[3])])
+            }
+        }
+    }
+
+    /// Copies the whole buffer into the user's memory (bottom-up when `y_up`).
+    ///
+    /// # Safety
+    /// `dst` must be valid for writes of `stride * (height - 1) + width * bpp` bytes.
+    pub unsafe fn copy_to_user(&self, dst: *mut u8, stride: usize, y_up: bool) {
+        let bpp = self.format.bytes_per_pixel();
+        let mut row_buf = vec![0u8; self.width * bpp];
+        for row in 0..self.height {
+            let src = &self.color[row * self.width..(row + 1) * self.width];
+            for (x, c) in src.iter().enumerate() {
+                let o = &mut row_buf[x * bpp..(x + 1) * bpp];
+                match self.format {
+                    ColorFormat::Rgba => o.copy_from_slice(c),
+                    ColorFormat::Bgra => o.copy_from_slice(&[c[2], c[1], c[0], c[3]]),
+                    ColorFormat::Argb => o.copy_from_slice(&[c[3], c[0], c[1], c[2]]),
+                    ColorFormat::Rgb => o.copy_from_slice(&c[..3]),
+                    ColorFormat::Rgb565 => {
+                        let v = ((c[0] as u16 >> 3) << 11)
+                            | ((c[1] as u16 >> 2) << 5)
+                            | (c[2] as u16 >> 3);
+                        o.copy_from_slice(&v.to_ne_bytes());
+                    }
+                }
+            }
+            let dst_row = if y_up { self.height - 1 - row } else { row };
+            // SAFETY: the caller guarantees the buffer holds `height` rows of `stride` bytes
+            // (the last one at least `width * bpp`), and row_buf is exactly one row.
+            unsafe {
+                std::ptr::copy_nonoverlapping(
+                    row_buf.as_ptr(),
+                    dst.add(dst_row * stride),
+                    row_buf.len(),
+                );
+            }
+        }
+    }
+}
+
+/// Float colour to unorm8 as llvmpipe's shader output does: clamp to [0,1] (NaN gives 0),
+/// then `round_half_even(f32(c * 255))`.
+#[inline(always)]
+pub fn float_to_ubyte(c: f32) -> u8 {
+    let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
+    (c * 255.0f32).round_ties_even() as u8
+}
+
+/// Float to unorm8 as gallium's fast clear packs it (`util` float_to_ubyte): scale by
+/// 255/256, add 2^15 and keep the low mantissa byte.
+pub fn clear_float_to_ubyte(f: f32) -> u8 {
+    if !(f > 0.0) {
+        0
+    } else if f >= 1.0 {
+        255
+    } else {
+        let t = f * (255.0f32 / 256.0f32) + 32768.0f32;
+        t.to_bits() as u8
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ubyte_rounds_half_to_even() {
+        // f32(c*255) = k + 0.5 exactly: 0.5 -> 0, 1.5 -> 2, 2.5 -> 2.
+        assert_eq!(float_to_ubyte(0.5 / 255.0), 0);
+        assert_eq!(float_to_ubyte(1.5 / 255.0), 2);
+        assert_eq!(float_to_ubyte(2.5 / 255.0), 2);
+        assert_eq!(float_to_ubyte(f32::NAN), 0);
+        assert_eq!(float_to_ubyte(2.0), 255);
+    }
+
+    #[test]
+    fn z16_is_round_of_z_times_65535() {
+        for z in [0.0f32, 1.0, 0.5, 0.25, 0.123_456] {
+            let q = DepthFormat::Z16.quantize(z);
+            assert!(
+                (q as f64 - z as f64 * 65535.0).abs() <= 0.5 + 1e-3,
+                "{z} {q}"
+            );
+        }
+        assert_eq!(DepthFormat::Z24.quantize(1.0), 0xFF_FFFF);
+    }
+
+    #[test]
+    fn rgb565_store_truncates_and_replicates() {
+        let fb = Framebuffer::new(1, 1, ColorFormat::Rgb565, DepthFormat::None, false);
+        assert_eq!(
+            fb.store_rgba8([8 * 3 + 7, 255, 0, 9]),
+            [(3 << 3) | (3 >> 2), 255, 0, 255]
+        );
+    }
+}

@@ -1,0 +1,188 @@
+//! Homogeneous clipping of triangles against the six view-volume planes.
+//!
+//! Sutherland–Hodgman, one plane at a time in llvmpipe's bit order (right, left, top,
+//! bottom, near, far), only for the planes some vertex is outside of. A new vertex is
+//! interpolated in clip space from the end nearer to the plane, and its window position is
+//! computed without FMA, exactly as Mesa's draw module does (`draw_pipe_clip.c`). There is
+//! no guard band: every triangle that crosses a plane is cut, so window coordinates stay
+//! inside the viewport and the fixed-point rasterizer never overflows.
+
+use super::{ClipVertex, Viewport};
+
+/// The view-volume planes as (a, b, c, d) with `dot(clip, plane) >= 0` inside.
+const PLANES: [[f32; 4]; 6] = [
+    [-1.0, 0.0, 0.0, 1.0],
+    [1.0, 0.0, 0.0, 1.0],
+    [0.0, -1.0, 0.0, 1.0],
+    [0.0, 1.0, 0.0, 1.0],
+    [0.0, 0.0, 1.0, 1.0],
+    [0.0, 0.0, -1.0, 1.0],
+];
+
+/// The most vertices a triangle clipped by six planes can have, plus room for scratch.
+const MAX_POLY: usize = 12;
+
+#[inline]
+fn dot4(a: [f32; 4], b: [f32; 4]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]
+}
+
+#[inline]
+fn lerp(t: f32, out: f32, inn: f32) -> f32 {
+    out + t * (inn - out)
+}
+
+fn interp(t: f32, out: &ClipVertex, inn: &ClipVertex, vp: &Viewport, nvary: usize) -> ClipVertex {
+    let mut d = ClipVertex::default();
+    for i in 0..4 {
+        d.clip[i] = lerp(t, out.clip[i], inn.clip[i]);
+    }
+    d.win = vp.apply_clipper(d.clip);
+    for i in 0..nvary {
+        d.vary[i] = lerp(t, out.vary[i], inn.vary[i]);
+    }
+    d
+}
+
+/// Clips triangle `v` (whose vertices' masks OR to `mask`, and AND to zero) and calls `emit`
+/// for each resulting triangle, ordered `(P[i-1], P[i], P[0])` so that P[0], which carries
+/// the provoking vertex's flat attributes, comes last. `flat` copies `v[2]`'s varyings
+/// into P[0] when it is a new vertex. Returns the number of triangles emitted.
+pub fn clip_triangle(
+    v: [&ClipVertex; 3],
+    mask: u8,
+    vp: &Viewport,
+    nvary: usize,
+    flat: bool,
+    mut emit: impl FnMut(&ClipVertex, &ClipVertex, &ClipVertex),
+) -> usize {
+    let mut a: [ClipVertex; MAX_POLY] = [ClipVertex::default(); MAX_POLY];
+    let mut b: [ClipVertex; MAX_POLY] = [ClipVertex::default(); MAX_POLY];
+    // Whether each polygon vertex is one of the original three (index) or new (usize::MAX).
+    let mut a_orig = [usize::MAX; MAX_POLY];
+    let mut b_orig = [usize::MAX; MAX_POLY];
+    for i in 0..3 {
+        a[i] = *v[i];
+        a_orig[i] = i;
+    }
+    let (mut inl, mut outl) = (&mut a, &mut b);
+    let (mut in_o, mut out_o) = (&mut a_orig, &mut b_orig);
+    let mut n = 3usize;
+    let mut planes = mask;
+    while planes != 0 && n >= 3 {
+        let p = planes.trailing_zeros() as usize;
+        planes &= planes - 1;
+        let plane = PLANES[p];
+        let mut dp_prev = dot4(inl[0].clip, plane);
+        if !dp_prev.is_finite() {
+            return 0;
+        }
+        if n + 1 > MAX_POLY {
+            return 0;
+        }
+        inl[n] = inl[0];
+        in_o[n] = in_o[0];
+        let mut cnt = 0usize;
+        for i in 1..=n {
+            let dp = dot4(inl[i].clip, plane);
+            if !dp.is_finite() {
+                return 0;
+            }
+            let different_sign = if dp_prev >= 0.0 {
+                if cnt >= MAX_POLY {
+                    return 0;
+                }
+                outl[cnt] = inl[i - 1];
+                out_o[cnt] = in_o[i - 1];
+                cnt += 1;
+                dp < 0.0
+            } else {
+                !(dp < 0.0)
+            };
+            if different_sign {
+                if cnt >= MAX_POLY {
+                    return 0;
+                }
+                let (prev, cur) = (&inl[i - 1], &inl[i]);
+                let denom = dp - dp_prev;
+                let nv = if dp < 0.0 {
+                    if -dp < dp_prev {
+                        interp(dp / denom, cur, prev, vp, nvary)
+                    } else {
+                        interp(-dp_prev / denom, prev, cur, vp, nvary)
+                    }
+                } else if -dp_prev < dp {
+                    interp(-dp_prev / denom, prev, cur, vp, nvary)
+                } else {
+                    interp(dp / denom, cur, prev, vp, nvary)
+                };
+                outl[cnt] = nv;
+                out_o[cnt] = usize::MAX;
+                cnt += 1;
+            }
+            dp_prev = dp;
+        }
+        std::mem::swap(&mut inl, &mut outl);
+        std::mem::swap(&mut in_o, &mut out_o);
+        n = cnt;
+    }
+    if n < 3 {
+        return 0;
+    }
+    if flat && in_o[0] != 2 {
+        inl[0].vary = v[2].vary;
+    }
+    for i in 2..n {
+        emit(&inl[i - 1], &inl[i], &inl[0]);
+    }
+    n - 2
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::clip_mask;
+
+    fn vert(c: [f32; 4]) -> ClipVertex {
+        ClipVertex {
+            clip: c,
+            mask: clip_mask(c),
+            ..Default::default()
+        }
+    }
+
+    #[test]
+    fn triangle_crossing_right_plane_becomes_quad() {
+        let vp = Viewport::new([0, 0, 100, 100], [0.0, 1.0], 100);
+        let v = [
+            vert([0.0, 0.0, 0.0, 1.0]),
+            vert([2.0, 0.0, 0.0, 1.0]),
+            vert([0.0, 0.5, 0.0, 1.0]),
+        ];
+        let mask = v[0].mask | v[1].mask | v[2].mask;
+        let mut tris = vec![];
+        let n = clip_triangle([&v[0], &v[1], &v[2]], mask, &vp, 0, false, |a, b, c| {
+            tris.push([a.clip, b.clip, c.clip])
+        });
+        assert_eq!(n, 2);
+        for t in &tris {
+            for c in t {
+                assert!(c[0] <= c[3], "{c:?} outside");
+            }
+        }
+    }
+
+    #[test]
+    fn nan_discards() {
+        let vp = Viewport::new([0, 0, 10, 10], [0.0, 1.0], 10);
+        let v = [
+            vert([f32::NAN, 0.0, 0.0, 1.0]),
+            vert([2.0, 0.0, 0.0, 1.0]),
+            vert([0.0, 0.5, 0.0, 1.0]),
+        ];
+        assert_eq!(
+            clip_triangle([&v[0], &v[1], &v[2]], 1, &vp, 0, false, |_, _, _| {}),
+            0
+        );
+    }
+}

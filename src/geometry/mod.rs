@@ -1,0 +1,119 @@
+//! Geometry: vertex fetch, primitive assembly, homogeneous clipping and triangle setup.
+//!
+//! Vertices travel as [`ClipVertex`]: clip-space position, window position (x, y in
+//! y-down raster space, z, 1/w) and up to [`MAX_VARY`] floats of varyings (colour first).
+
+pub mod assemble;
+pub mod clip;
+pub mod fetch;
+pub mod setup;
+
+/// The number of varying floats a vertex carries (colour, later texture coordinates).
+pub const MAX_VARY: usize = 4;
+
+/// A vertex after the vertex stage: what clipping, setup and interpolation read.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ClipVertex {
+    /// Clip-space position.
+    pub clip: [f32; 4],
+    /// Window position: x, y (y-down raster space), z in [0,1] before clamping, and 1/w.
+    pub win: [f32; 4],
+    /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w, 5 z>w (llvmpipe's order).
+    pub mask: u8,
+    /// Varyings: [0..4] = primary colour.
+    pub vary: [f32; MAX_VARY],
+}
+
+/// The viewport transform as llvmpipe's vertex stage holds it (y flipped for the
+/// bottom-up OSMesa buffer, so window y is in y-down raster space).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Viewport {
+    /// x, y, z scale.
+    pub scale: [f32; 3],
+    /// x, y, z translate.
+    pub translate: [f32; 3],
+}
+
+impl Viewport {
+    /// Builds the transform from glViewport/glDepthRange and the framebuffer height.
+    pub fn new(vp: [i32; 4], depth_range: [f64; 2], fb_height: usize) -> Self {
+        let (x, y, w, h) = (vp[0] as f32, vp[1] as f32, vp[2] as f32, vp[3] as f32);
+        let (n, f) = (depth_range[0], depth_range[1]);
+        let half_h = 0.5f32 * h;
+        Viewport {
+            scale: [0.5 * w, -half_h, (0.5 * (f - n)) as f32],
+            translate: [
+                0.5 * w + x,
+                fb_height as f32 - (half_h + y),
+                (0.5 * (n + f)) as f32,
+            ],
+        }
+    }
+
+    /// Window coordinates of an unclipped vertex, as llvmpipe's vertex shader computes them:
+    /// `fmuladd(clip * (1/w), scale, translate)`, fused where the CPU has FMA.
+    #[inline]
+    pub fn apply_shader(&self, clip: [f32; 4], fma: bool) -> [f32; 4] {
+        let inv_w = 1.0f32 / clip[3];
+        let mut out = [0f32; 4];
+        for i in 0..3 {
+            out[i] = madd(clip[i] * inv_w, self.scale[i], self.translate[i], fma);
+        }
+        out[3] = inv_w;
+        out
+    }
+
+    /// Window coordinates of a vertex made by the clipper (plain C arithmetic, never fused).
+    #[inline]
+    pub fn apply_clipper(&self, clip: [f32; 4]) -> [f32; 4] {
+        let oow = 1.0f32 / clip[3];
+        let mut out = [0f32; 4];
+        for i in 0..3 {
+            out[i] = clip[i] * oow * self.scale[i] + self.translate[i];
+        }
+        out[3] = oow;
+        out
+    }
+}
+
+/// `a * b + c`, fused (one rounding) when `fma`, else two roundings: llvmpipe's
+/// `llvm.fmuladd`, whose fusing depends on the host CPU.
+#[inline(always)]
+pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
+    if fma {
+        a.mul_add(b, c)
+    } else {
+        a * b + c
+    }
+}
+
+/// Whether this CPU fuses multiply-adds (then llvmpipe does too).
+pub fn cpu_has_fma() -> bool {
+    use std::sync::OnceLock;
+    static FMA: OnceLock<bool> = OnceLock::new();
+    *FMA.get_or_init(|| {
+        if let Ok(v) = std::env::var("SOFTGL_FMA") {
+            return v != "0";
+        }
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            std::arch::is_x86_feature_detected!("fma")
+        }
+        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+        {
+            false
+        }
+    })
+}
+
+/// The clip mask of a clip-space position (strict tests: on the plane is inside).
+#[inline]
+pub fn clip_mask(c: [f32; 4]) -> u8 {
+    let [x, y, z, w] = c;
+    (x > w) as u8
+        | ((x + w < 0.0) as u8) << 1
+        | ((y > w) as u8) << 2
+        | ((y + w < 0.0) as u8) << 3
+        | ((z + w < 0.0) as u8) << 4
+        | ((z > w) as u8) << 5
+}

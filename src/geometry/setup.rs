@@ -1,0 +1,321 @@
+//! Triangle setup: snapping to 1/256 pixel, orientation and culling, exact integer edge
+//! functions with llvmpipe's fill rule, and float plane equations for the attributes.
+//!
+//! Numbers (llvmpipe-rules §6–§7): a window position is snapped as
+//! `round_half_even(256 * f32(x - 0.5))`, so integer coordinate 256·p is the centre of
+//! pixel p. Edge functions are 64-bit integers; a pixel exactly on an edge belongs to the
+//! triangle only for left edges and bottom edges (in GL's y-up sense). Plane equations are
+//! computed in f32 from the unsnapped positions, in Mesa's operation order, and give the
+//! value at pixel (0,0)'s centre plus per-pixel steps.
+
+use super::ClipVertex;
+
+/// Sub-pixel bits of the snapped positions.
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+
+/// A linear function of the pixel position: `a0 + dadx * px + dady * py`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Plane {
+    /// Value at pixel (0,0)'s centre.
+    pub a0: f32,
+    /// Step per pixel in x.
+    pub dadx: f32,
+    /// Step per pixel in y (y-down).
+    pub dady: f32,
+}
+
+/// One integer edge function: inside where `c - a*256*px + b*256*py > 0`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Edge {
+    /// y_i - y_{i+1} (snapped).
+    pub a: i64,
+    /// x_i - x_{i+1} (snapped).
+    pub b: i64,
+    /// Constant term including the fill-rule bias.
+    pub c: i64,
+}
+
+impl Edge {
+    /// The range of pixel x on row `py` where this edge is positive, as (min, max) with
+    /// `i64::MIN`/`i64::MAX` for "unbounded"; `None` when no pixel on the row qualifies.
+    #[inline]
+    pub fn span(&self, py: i64) -> Option<(i64, i64)> {
+        let e = self.c + self.b * ONE * py;
+        let s = self.a * ONE;
+        if s > 0 {
+            Some((i64::MIN, (e - 1).div_euclid(s)))
+        } else if s < 0 {
+            Some(((-e).div_euclid(-s) + 1, i64::MAX))
+        } else if e > 0 {
+            Some((i64::MIN, i64::MAX))
+        } else {
+            None
+        }
+    }
+}
+
+/// A set-up triangle, ready for the rasterizer.
+#[derive(Clone, Debug)]
+pub struct SetupTriangle {
+    /// The three edge functions.
+    pub edges: [Edge; 3],
+    /// Inclusive pixel bounding box (x0, y0, x1, y1) in y-down pixels, not yet clipped.
+    pub bbox: [i64; 4],
+    /// Whether the triangle faces front.
+    pub front: bool,
+    /// Window z.
+    pub z: Plane,
+    /// 1/w (only meaningful when `persp`).
+    pub w: Plane,
+    /// Whether 1/w varies (or is not 1): attributes need the perspective divide.
+    pub persp: bool,
+    /// Varying planes (pre-multiplied by 1/w when `persp`).
+    pub vary: [Plane; super::MAX_VARY],
+    /// The provoking vertex's varyings, for flat shading.
+    pub flat: [f32; super::MAX_VARY],
+}
+
+/// `round_half_even(256 * f32(v - 0.5))` as llvmpipe's SSE path snaps.
+#[inline]
+pub fn snap(v: f32) -> i64 {
+    ((v - 0.5) * 256.0).round_ties_even() as i64
+}
+
+/// The largest snapped coordinate we accept; beyond it a triangle is dropped (clipping keeps
+/// real geometry far inside this; only garbage such as NaN reaches it).
+const MAX_SNAPPED: f32 = (1u64 << 40) as f32;
+
+/// What setup decided about a triangle.
+pub enum SetupResult {
+    /// Draw it: the output triangle was filled in.
+    Draw,
+    /// Zero area after snapping, or not finite.
+    Degenerate,
+    /// Removed by face culling.
+    Culled,
+}
+
+/// Face-culling inputs for setup.
+#[derive(Clone, Copy, Debug)]
+pub struct CullMode {
+    /// Cull front faces.
+    pub front: bool,
+    /// Cull back faces.
+    pub back: bool,
+    /// glFrontFace is GL_CCW.
+    pub front_ccw: bool,
+}
+
+/// Sets up triangle (v0, v1, v2) with `nvary` varyings into `fill` (v2 is the provoking
+/// vertex whose varyings flat shading uses).
+pub fn setup_triangle(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    for vx in v {
+        if !(vx.win[0].abs() < MAX_SNAPPED / 256.0 && vx.win[1].abs() < MAX_SNAPPED / 256.0) {
+            return SetupResult::Degenerate;
+        }
+    }
+    let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
+    let (mut x0, mut y0) = (snap(p0.win[0]), snap(p0.win[1]));
+    let (mut x1, mut y1) = (snap(p1.win[0]), snap(p1.win[1]));
+    let (x2, y2) = (snap(p2.win[0]), snap(p2.win[1]));
+    let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
+    if area == 0 {
+        return SetupResult::Degenerate;
+    }
+    let ccw = area > 0;
+    let front = ccw == cull.front_ccw;
+    if (front && cull.front) || (!front && cull.back) {
+        return SetupResult::Culled;
+    }
+    if !ccw {
+        std::mem::swap(&mut p0, &mut p1);
+        std::mem::swap(&mut x0, &mut x1);
+        std::mem::swap(&mut y0, &mut y1);
+    }
+    let xs = [x0, x1, x2];
+    let ys = [y0, y1, y2];
+    let mut edges = [Edge { a: 0, b: 0, c: 0 }; 3];
+    for i in 0..3 {
+        let j = (i + 1) % 3;
+        let a = ys[i] - ys[j];
+        let b = xs[i] - xs[j];
+        let mut c = a * xs[i] - b * ys[i];
+        // Left edges (a < 0) and, for the bottom-up OSMesa buffer, bottom edges include the
+        // pixel centres on them.
+        if a < 0 || (a == 0 && b < 0) {
+            c += 1;
+        }
+        edges[i] = Edge { a, b, c };
+    }
+    let minx = xs.iter().min().copied().unwrap_or(0);
+    let maxx = xs.iter().max().copied().unwrap_or(0);
+    let miny = ys.iter().min().copied().unwrap_or(0);
+    let maxy = ys.iter().max().copied().unwrap_or(0);
+    let bbox = [
+        (minx + ONE - 1).div_euclid(ONE),
+        (miny + ONE - 1).div_euclid(ONE),
+        maxx.div_euclid(ONE),
+        maxy.div_euclid(ONE),
+    ];
+
+    // Plane equations in f32, Mesa's order (lp_state_setup.c), no FMA.
+    let (fx0, fy0) = (p0.win[0], p0.win[1]);
+    let (fx1, fy1) = (p1.win[0], p1.win[1]);
+    let (fx2, fy2) = (p2.win[0], p2.win[1]);
+    let x0c = fx0 - 0.5;
+    let y0c = fy0 - 0.5;
+    let dx01 = fx0 - fx1;
+    let dy01 = fy0 - fy1;
+    let dx20 = fx2 - fx0;
+    let dy20 = fy2 - fy0;
+    let ooa = 1.0f32 / (dx01 * dy20 - dy01 * dx20);
+    let dx20o = dx20 * ooa;
+    let dy20o = dy20 * ooa;
+    let dx01o = dx01 * ooa;
+    let dy01o = dy01 * ooa;
+    let plane = |a0: f32, a1: f32, a2: f32| -> Plane {
+        let da01 = a0 - a1;
+        let da20 = a2 - a0;
+        let dadx = da01 * dy20o - da20 * dy01o;
+        let dady = da20 * dx01o - da01 * dx20o;
+        Plane {
+            a0: a0 - (dadx * x0c + dady * y0c),
+            dadx,
+            dady,
+        }
+    };
+    fill.edges = edges;
+    fill.bbox = bbox;
+    fill.front = front;
+    fill.z = plane(p0.win[2], p1.win[2], p2.win[2]);
+    let (w0, w1, w2) = (p0.win[3], p1.win[3], p2.win[3]);
+    fill.persp = !(w0 == 1.0 && w1 == 1.0 && w2 == 1.0);
+    fill.w = plane(w0, w1, w2);
+    for i in 0..nvary {
+        fill.vary[i] = if fill.persp {
+            plane(p0.vary[i] * w0, p1.vary[i] * w1, p2.vary[i] * w2)
+        } else {
+            plane(p0.vary[i], p1.vary[i], p2.vary[i])
+        };
+    }
+    fill.flat = p2.vary;
+    SetupResult::Draw
+}
+
+impl Default for SetupTriangle {
+    fn default() -> Self {
+        SetupTriangle {
+            edges: [Edge { a: 0, b: 0, c: 0 }; 3],
+            bbox: [0; 4],
+            front: true,
+            z: Plane::default(),
+            w: Plane::default(),
+            persp: false,
+            vary: [Plane::default(); super::MAX_VARY],
+            flat: [0.0; super::MAX_VARY],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f32, y: f32) -> ClipVertex {
+        ClipVertex {
+            win: [x, y, 0.5, 1.0],
+            ..Default::default()
+        }
+    }
+
+    /// Covered pixels of a triangle, by brute force over the edges.
+    fn coverage(t: &SetupTriangle) -> Vec<(i64, i64)> {
+        let mut out = vec![];
+        for py in t.bbox[1]..=t.bbox[3] {
+            for px in t.bbox[0]..=t.bbox[2] {
+                if t.edges
+                    .iter()
+                    .all(|e| e.c - e.a * ONE * px + e.b * ONE * py > 0)
+                {
+                    out.push((px, py));
+                }
+            }
+        }
+        out
+    }
+
+    const NOCULL: CullMode = CullMode {
+        front: false,
+        back: false,
+        front_ccw: true,
+    };
+
+    #[test]
+    fn fill_rule_matches_llvmpipe_example() {
+        // GL (0.5,0.5),(2.5,0.5),(0.5,2.5) in an 8-high buffer covers GL pixels (0,0),(1,0),(0,1).
+        let h = 8.0;
+        let tri = [v(0.5, h - 0.5), v(2.5, h - 0.5), v(0.5, h - 2.5)];
+        let mut t = SetupTriangle::default();
+        assert!(matches!(
+            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, &mut t),
+            SetupResult::Draw
+        ));
+        let mut c = coverage(&t);
+        c.sort();
+        assert_eq!(c, vec![(0, 6), (0, 7), (1, 7)]);
+    }
+
+    #[test]
+    fn span_agrees_with_brute_force() {
+        let tri = [v(1.3, 2.7), v(17.9, 5.1), v(6.2, 19.4)];
+        let mut t = SetupTriangle::default();
+        assert!(matches!(
+            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, &mut t),
+            SetupResult::Draw
+        ));
+        let brute = coverage(&t);
+        let mut spans = vec![];
+        for py in t.bbox[1]..=t.bbox[3] {
+            let mut lo = t.bbox[0];
+            let mut hi = t.bbox[2];
+            for e in &t.edges {
+                match e.span(py) {
+                    Some((a, b)) => {
+                        lo = lo.max(a);
+                        hi = hi.min(b);
+                    }
+                    None => hi = lo - 1,
+                }
+            }
+            for px in lo..=hi {
+                spans.push((px, py));
+            }
+        }
+        assert_eq!(brute, spans);
+        assert!(brute.len() > 50);
+    }
+
+    #[test]
+    fn square_shares_diagonal_without_overlap() {
+        // Two triangles of a square: each covered pixel exactly once.
+        let q = [v(1.5, 1.5), v(4.5, 1.5), v(4.5, 4.5), v(1.5, 4.5)];
+        let mut all = vec![];
+        for (a, b, c) in [(0, 1, 2), (0, 2, 3)] {
+            let mut t = SetupTriangle::default();
+            if let SetupResult::Draw = setup_triangle([&q[a], &q[b], &q[c]], 0, NOCULL, &mut t) {
+                all.extend(coverage(&t));
+            }
+        }
+        let n = all.len();
+        all.sort();
+        all.dedup();
+        assert_eq!(n, all.len(), "double-covered pixel");
+        assert_eq!(n, 9);
+    }
+}

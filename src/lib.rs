@@ -1,0 +1,26 @@
+//! softgl: a software OpenGL 1.5 implementation with Mesa's OSMesa API.
+//!
+//! A GL call enters at the C boundary ([`ffi`]), which validates and converts raw GL values
+//! into Rust types and calls a safe method of the thread's current [`context::Context`]. The
+//! context is the GL state machine: plain state data, named objects (buffers) and the
+//! [`framebuffer`] the OSMesa user buffer is copied from on glFlush/glFinish.
+//!
+//! A draw call flows through the stages in lecture order: [`geometry::fetch`] reads vertices
+//! (immediate mode, client arrays, buffer objects), [`fixed_function`] transforms them into
+//! clip space, [`geometry::assemble`] builds triangles in llvmpipe's vertex order,
+//! [`geometry::clip`] clips them homogeneously, [`geometry::setup`] snaps them to 1/256 pixel
+//! and builds integer edge functions and float plane equations, [`raster`] walks the covered
+//! pixels and [`fragment`] runs the per-fragment operations chosen by a per-draw plan.
+//!
+//! The arithmetic follows Mesa's llvmpipe (the reference the C tests compare against) so
+//! that images are bit-identical: see `shared/docs/llvmpipe-rules.md`.
+
+pub mod context;
+pub mod draw;
+pub mod ffi;
+pub mod fixed_function;
+pub mod fragment;
+pub mod framebuffer;
+pub mod geometry;
+pub mod raster;
+pub mod stats;

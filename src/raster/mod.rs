@@ -1,0 +1,109 @@
+//! Rasterization: walks the rows of a set-up triangle, computes each row's exact covered
+//! span from the integer edge functions (no per-pixel edge test), and hands spans to the
+//! fragment stage's span shader chosen once per triangle.
+
+use crate::fragment::span::{shade_span, Madd, Unfused};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Framebuffer;
+use crate::geometry::setup::SetupTriangle;
+use crate::stats::Stats;
+
+/// Rasterizes `t` inside `region` (y-down pixels, exclusive high end).
+pub fn raster_triangle(
+    t: &SetupTriangle,
+    region: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    let x_lo = t.bbox[0].max(region[0]);
+    let x_hi = t.bbox[2].min(region[2] - 1);
+    let y_lo = t.bbox[1].max(region[1]);
+    let y_hi = t.bbox[3].min(region[3] - 1);
+    if x_lo > x_hi || y_lo > y_hi {
+        stats.tris_offscreen += 1;
+        return;
+    }
+    stats.tris_rasterized += 1;
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    if plan.fma {
+        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma) or
+        // when forced by SOFTGL_FMA for testing on such a CPU.
+        unsafe { raster_fma(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats) };
+        return;
+    }
+    if plan.fma {
+        raster_rows::<crate::fragment::span::Fused>(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats);
+    } else {
+        raster_rows::<Unfused>(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats);
+    }
+}
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[target_feature(enable = "fma")]
+unsafe fn raster_fma(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    raster_rows::<crate::fragment::span::Fused>(t, b, plan, fb, stats)
+}
+
+#[inline(always)]
+fn raster_rows<M: Madd>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    match (plan.depth.is_some(), plan.flat, t.persp) {
+        (false, false, false) => rows::<M, false, false, false>(t, b, plan, fb, stats),
+        (false, false, true) => rows::<M, false, false, true>(t, b, plan, fb, stats),
+        (false, true, _) => rows::<M, false, true, false>(t, b, plan, fb, stats),
+        (true, false, false) => rows::<M, true, false, false>(t, b, plan, fb, stats),
+        (true, false, true) => rows::<M, true, false, true>(t, b, plan, fb, stats),
+        (true, true, _) => rows::<M, true, true, false>(t, b, plan, fb, stats),
+    }
+}
+
+/// The row walk, specialised like the span shader it calls (everything inlines into the
+/// FMA or non-FMA entry point).
+#[inline(always)]
+fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    for py in b[1]..=b[3] {
+        let mut lo = b[0];
+        let mut hi = b[2];
+        for e in &t.edges {
+            match e.span(py) {
+                Some((a, z)) => {
+                    lo = lo.max(a);
+                    hi = hi.min(z);
+                }
+                None => {
+                    hi = lo - 1;
+                    break;
+                }
+            }
+        }
+        if lo <= hi {
+            shade_span::<M, DEPTH, FLAT, PERSP>(
+                t,
+                plan,
+                fb,
+                py as usize,
+                lo as usize,
+                hi as usize,
+                stats,
+            );
+        }
+    }
+}

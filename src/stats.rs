@@ -1,0 +1,42 @@
+//! Counters of the work the pipeline did and skipped, readable by tests and printed at
+//! context destruction when `SOFTGL_STATS=1`.
+
+/// Work counters of one context (cumulative since creation or the last reset).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Draw calls that reached the pipeline.
+    pub draws: u64,
+    /// Vertices through the vertex stage.
+    pub vertices: u64,
+    /// Triangles assembled.
+    pub triangles: u64,
+    /// Triangles rejected whole because all vertices are outside one clip plane.
+    pub tris_clip_rejected: u64,
+    /// Triangles cut by the clipper.
+    pub tris_clipped: u64,
+    /// Triangles removed by face culling.
+    pub tris_culled: u64,
+    /// Triangles with zero area after snapping (or non-finite).
+    pub tris_degenerate: u64,
+    /// Triangles that reached the rasterizer.
+    pub tris_rasterized: u64,
+    /// Triangles whose bounding box missed the drawable region.
+    pub tris_offscreen: u64,
+    /// Fragments (covered pixels) generated.
+    pub fragments: u64,
+    /// Fragments that failed the depth test.
+    pub depth_failed: u64,
+    /// Depth buffer reads.
+    pub depth_reads: u64,
+    /// Colour buffer reads (blending, logic op).
+    pub color_reads: u64,
+    /// Colour buffer writes.
+    pub color_writes: u64,
+}
+
+impl Stats {
+    /// A multi-line human-readable report.
+    pub fn report(&self) -> String {
+        format!("{self:#?}")
+    }
+}
