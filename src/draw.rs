@@ -9,10 +9,11 @@ use crate::context::Context;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
-use crate::geometry::clip::clip_triangle;
+use crate::geometry::clip::{clip_line, clip_triangle};
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
+use crate::raster::lines::{raster_line, raster_point};
 use crate::raster::raster_triangle;
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
@@ -79,9 +80,31 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             }
         };
     match mode {
-        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
-            // Lines and points get llvmpipe's exact rules in a later issue; they are
-            // accepted (and counted) but not rasterized yet.
+        Primitive::Points => {
+            for k in 0..n {
+                let v = at(k);
+                if v.mask == 0 {
+                    raster_point(v, region, &plan, fb, stats);
+                }
+            }
+        }
+        Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
+            let mut scratch = Vec::new();
+            assemble::lines(mode, n, |a, b| {
+                let (va, vb) = (at(a), at(b));
+                if va.mask & vb.mask != 0 {
+                    return;
+                }
+                let (p, q) = if va.mask | vb.mask != 0 {
+                    match clip_line(va, vb, va.mask | vb.mask, &viewport, nvary, plan.flat) {
+                        Some(pq) => pq,
+                        None => return,
+                    }
+                } else {
+                    (*va, *vb)
+                };
+                raster_line(&p, &q, &vb.vary, region, &plan, fb, stats, &mut scratch);
+            });
         }
         _ => assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
             let (va, vb, vc) = (at(a), at(b), at(c));

@@ -207,8 +207,8 @@ impl ArrayState {
         let mut out = Vec::with_capacity(n);
         let mut next = 1u32;
         while out.len() < n {
-            if !self.buffers.contains_key(&next) {
-                self.buffers.insert(next, None);
+            if let std::collections::hash_map::Entry::Vacant(e) = self.buffers.entry(next) {
+                e.insert(None);
                 out.push(next);
             }
             next += 1;

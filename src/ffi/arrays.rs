@@ -132,13 +132,17 @@ pub extern "C" fn glDisableClientState(cap: GLenum) {
     client_state(cap, false)
 }
 
+/// (tex size, colour size, colour type, normal?, vertex size, colour/normal/vertex offsets,
+/// stride) of one glInterleavedArrays format.
+type Layout = (i32, i32, GLenum, bool, i32, i32, i32, i32, i32);
+
 /// glInterleavedArrays: sets and enables the arrays of one of the 14 fixed layouts.
 #[no_mangle]
 pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const GLvoid) {
     const F: i32 = 4;
     const C: i32 = 4;
     // (tex size, colour size, colour type, normal?, vertex size, colour off, normal off, vertex off, stride)
-    let layout: Option<(i32, i32, GLenum, bool, i32, i32, i32, i32, i32)> = match format {
+    let layout: Option<Layout> = match format {
         GL_V2F => Some((0, 0, 0, false, 2, 0, 0, 0, 2 * F)),
         GL_V3F => Some((0, 0, 0, false, 3, 0, 0, 0, 3 * F)),
         GL_C4UB_V2F => Some((0, 4, GL_UNSIGNED_BYTE, false, 2, 0, 0, C, C + 2 * F)),

@@ -235,6 +235,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
 /// OSMesaDestroyContext. A context current on another thread is not freed (that would
 /// leave the other thread a dangling context); it is only unregistered.
 #[no_mangle]
+#[allow(clippy::not_unsafe_ptr_arg_deref)] // the handle is checked against LIVE first
 pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
     let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let Ok(mut live) = LIVE.lock() else { return };

@@ -167,6 +167,7 @@ pub(crate) fn packed_layout(
     (start, stride)
 }
 
+#[allow(clippy::too_many_arguments)]
 fn read_pixels(
     c: &mut Context,
     x: i32,

@@ -53,6 +53,7 @@ impl Mat4 {
     }
 
     /// glTranslate: updates column 3 in place, left to right.
+    #[allow(clippy::assign_op_pattern)] // `m12 += …` would add in another order
     pub fn translate(&mut self, x: f32, y: f32, z: f32) {
         let m = &mut self.0;
         for r in 0..4 {

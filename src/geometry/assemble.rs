@@ -92,13 +92,11 @@ pub fn lines(mode: Primitive, n: usize, mut line: impl FnMut(usize, usize)) {
                 line(i - 1, i);
             }
         }
-        Primitive::LineLoop => {
-            if n >= 2 {
-                for i in 1..n {
-                    line(i - 1, i);
-                }
-                line(n - 1, 0);
+        Primitive::LineLoop if n >= 2 => {
+            for i in 1..n {
+                line(i - 1, i);
             }
+            line(n - 1, 0);
         }
         _ => {}
     }

@@ -97,7 +97,7 @@ pub fn clip_triangle(
                 cnt += 1;
                 dp < 0.0
             } else {
-                !(dp < 0.0)
+                dp >= 0.0 || dp.is_nan()
             };
             if different_sign {
                 if cnt >= MAX_POLY {
@@ -136,6 +136,54 @@ pub fn clip_triangle(
         emit(&inl[i - 1], &inl[i], &inl[0]);
     }
     n - 2
+}
+
+/// Clips segment `v0`–`v1` against the planes in `mask` (Mesa's `do_clip_line`: the
+/// largest entry parameter from each end). Returns the clipped endpoints, or `None` when
+/// nothing is left. `flat` copies the provoking vertex `v1`'s varyings to a new `v0`.
+pub fn clip_line(
+    v0: &ClipVertex,
+    v1: &ClipVertex,
+    mask: u8,
+    vp: &Viewport,
+    nvary: usize,
+    flat: bool,
+) -> Option<(ClipVertex, ClipVertex)> {
+    let (mut t0, mut t1) = (0.0f32, 0.0f32);
+    let mut planes = mask;
+    while planes != 0 {
+        let p = planes.trailing_zeros() as usize;
+        planes &= planes - 1;
+        let dp0 = dot4(v0.clip, PLANES[p]);
+        let dp1 = dot4(v1.clip, PLANES[p]);
+        if !dp0.is_finite() || !dp1.is_finite() {
+            return None;
+        }
+        if dp1 < 0.0 {
+            t1 = t1.max(dp1 / (dp1 - dp0));
+        }
+        if dp0 < 0.0 {
+            t0 = t0.max(dp0 / (dp0 - dp1));
+        }
+        if t0 + t1 >= 1.0 {
+            return None;
+        }
+    }
+    let mut a = *v0;
+    let mut b = *v1;
+    if v0.mask != 0 {
+        a = interp(t0, v0, v1, vp, nvary);
+        if flat {
+            a.vary = v1.vary;
+        }
+    }
+    if v1.mask != 0 {
+        b = interp(t1, v1, v0, vp, nvary);
+        if flat {
+            b.vary = v1.vary;
+        }
+    }
+    Some((a, b))
 }
 
 #[cfg(test)]

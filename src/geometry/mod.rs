@@ -92,8 +92,9 @@ pub fn cpu_has_fma() -> bool {
     use std::sync::OnceLock;
     static FMA: OnceLock<bool> = OnceLock::new();
     *FMA.get_or_init(|| {
-        if let Ok(v) = std::env::var("SOFTGL_FMA") {
-            return v != "0";
+        // SOFTGL_FMA=0 reproduces a reference run with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1.
+        if std::env::var("SOFTGL_FMA").is_ok_and(|v| v == "0") {
+            return false;
         }
         #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
         {

@@ -8,6 +8,8 @@ use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::SetupTriangle;
 use crate::stats::Stats;
 
+pub mod lines;
+
 /// Rasterizes `t` inside `region` (y-down pixels, exclusive high end).
 pub fn raster_triangle(
     t: &SetupTriangle,
@@ -27,8 +29,7 @@ pub fn raster_triangle(
     stats.tris_rasterized += 1;
     #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
     if plan.fma {
-        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma) or
-        // when forced by SOFTGL_FMA for testing on such a CPU.
+        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma).
         unsafe { raster_fma(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats) };
         return;
     }
@@ -104,6 +105,58 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
                 hi as usize,
                 stats,
             );
+        }
+    }
+}
+
+/// Shades single pixels `(x, y)` (y-down, inside the framebuffer) with the planes of `t`:
+/// the entry for lines and points, which compute their own coverage.
+pub fn shade_pixels(
+    t: &SetupTriangle,
+    pixels: &[(usize, usize)],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    if plan.fma {
+        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma).
+        unsafe { pixels_fma(t, pixels, plan, fb, stats) };
+        return;
+    }
+    if plan.fma {
+        pixels_any::<crate::fragment::span::Fused>(t, pixels, plan, fb, stats);
+    } else {
+        pixels_any::<Unfused>(t, pixels, plan, fb, stats);
+    }
+}
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[target_feature(enable = "fma")]
+unsafe fn pixels_fma(
+    t: &SetupTriangle,
+    pixels: &[(usize, usize)],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    pixels_any::<crate::fragment::span::Fused>(t, pixels, plan, fb, stats)
+}
+
+#[inline(always)]
+fn pixels_any<M: Madd>(
+    t: &SetupTriangle,
+    pixels: &[(usize, usize)],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    for &(x, y) in pixels {
+        match (plan.depth.is_some(), plan.flat) {
+            (false, false) => shade_span::<M, false, false, false>(t, plan, fb, y, x, x, stats),
+            (false, true) => shade_span::<M, false, true, false>(t, plan, fb, y, x, x, stats),
+            (true, false) => shade_span::<M, true, false, false>(t, plan, fb, y, x, x, stats),
+            (true, true) => shade_span::<M, true, true, false>(t, plan, fb, y, x, x, stats),
         }
     }
 }
