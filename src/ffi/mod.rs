@@ -79,3 +79,11 @@ pub(crate) fn gl_bool(b: types::GLboolean) -> bool {
 pub(crate) fn non_negative(n: i32) -> GlResult<usize> {
     usize::try_from(n).map_err(|_| GlError::InvalidValue)
 }
+
+/// The work counters of the thread's current context (a Rust-side API for tests and tools;
+/// not exported to C).
+pub fn current_stats() -> Option<crate::stats::Stats> {
+    let p = current();
+    // SAFETY: as in `with_ctx`: the pointer is this thread's current, live context.
+    (!p.is_null()).then(|| unsafe { (*p).stats })
+}

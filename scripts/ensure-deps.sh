@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what the tests and the demo need on a fresh Debian machine: a C compiler,
+# binutils (nm) and Mesa's OSMesa (the reference the C scenes are compared against).
+set -euo pipefail
+need=()
+command -v cc >/dev/null 2>&1 || need+=(gcc libc6-dev)
+command -v nm >/dev/null 2>&1 || need+=(binutils)
+[ -f /usr/include/GL/osmesa.h ] || need+=(libosmesa6-dev)
+if [ ${#need[@]} -gt 0 ]; then
+  echo "ensure-deps: installing ${need[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${need[@]}"
+fi

@@ -1,0 +1,221 @@
+//! GL API semantics through the exported C functions: errors leave state unchanged, the
+//! first error is kept until read, OSMesa behaviour, and the work counters.
+
+use softgl::ffi::buffers::*;
+use softgl::ffi::draw::*;
+use softgl::ffi::enums::*;
+use softgl::ffi::glext_enums::*;
+use softgl::ffi::immediate::*;
+use softgl::ffi::matrix::*;
+use softgl::ffi::osmesa::*;
+use softgl::ffi::query::*;
+use softgl::ffi::state::*;
+
+/// A current 64x64 RGBA context with depth and stencil; the buffer lives as long as it.
+struct Ctx {
+    ctx: OSMesaContext,
+    buf: Vec<u8>,
+}
+
+impl Ctx {
+    fn new(w: i32, h: i32) -> Ctx {
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, std::ptr::null_mut());
+        assert!(!ctx.is_null());
+        let mut buf = vec![0xAAu8; (w * h * 4) as usize];
+        // SAFETY: the buffer holds w*h RGBA pixels and outlives the binding (Drop unbinds).
+        let ok = unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, w, h) };
+        assert_eq!(ok, GL_TRUE as u8);
+        Ctx { ctx, buf }
+    }
+}
+
+impl Drop for Ctx {
+    fn drop(&mut self) {
+        OSMesaDestroyContext(self.ctx);
+    }
+}
+
+fn viewport() -> [i32; 4] {
+    let mut v = [0i32; 4];
+    // SAFETY: GL_VIEWPORT has 4 components.
+    unsafe { glGetIntegerv(GL_VIEWPORT, v.as_mut_ptr()) };
+    v
+}
+
+#[test]
+fn errors_leave_state_unchanged() {
+    let _c = Ctx::new(64, 64);
+    assert_eq!(glGetError(), GL_NO_ERROR);
+
+    glEnable(0x1234);
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    assert_eq!(glGetError(), GL_NO_ERROR, "an error is reported once");
+
+    glViewport(1, 2, 30, 40);
+    glViewport(0, 0, -1, 5);
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    assert_eq!(viewport(), [1, 2, 30, 40]);
+
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+
+    let mut depth = 0;
+    // SAFETY: one component.
+    unsafe { glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, &mut depth) };
+    glPopMatrix();
+    assert_eq!(glGetError(), GL_STACK_UNDERFLOW);
+    let mut after = 0;
+    // SAFETY: one component.
+    unsafe { glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, &mut after) };
+    assert_eq!((depth, after), (1, 1));
+
+    let mut buf = 0u32;
+    // SAFETY: room for one name; data pointers valid for the sizes given.
+    unsafe {
+        glGenBuffers(1, &mut buf);
+        glBindBuffer(GL_ARRAY_BUFFER, buf);
+        glBufferData(GL_ARRAY_BUFFER, 16, std::ptr::null(), GL_STATIC_DRAW);
+        glBufferData(GL_ARRAY_BUFFER, -1, std::ptr::null(), GL_STATIC_DRAW);
+    }
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    let mut size = 0;
+    // SAFETY: one component.
+    unsafe { glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &mut size) };
+    assert_eq!(size, 16, "failed glBufferData kept the old store");
+
+    glDrawArrays(0x1234, 0, 3);
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+}
+
+#[test]
+fn first_error_is_kept_until_read() {
+    let _c = Ctx::new(8, 8);
+    glEnable(0x1234);
+    glViewport(0, 0, -1, -1);
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    assert_eq!(glGetError(), GL_NO_ERROR);
+}
+
+#[test]
+fn calls_not_allowed_inside_begin_end() {
+    let _c = Ctx::new(8, 8);
+    glBegin(GL_TRIANGLES);
+    glViewport(0, 0, 4, 4);
+    glBegin(GL_TRIANGLES);
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    assert_eq!(viewport(), [0, 0, 8, 8]);
+    glBegin(0x77);
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+}
+
+#[test]
+fn matrix_stack_overflow_at_mesa_depth() {
+    let _c = Ctx::new(8, 8);
+    let mut max = 0;
+    // SAFETY: one component.
+    unsafe { glGetIntegerv(GL_MAX_MODELVIEW_STACK_DEPTH, &mut max) };
+    assert_eq!(max, 32);
+    for _ in 0..31 {
+        glPushMatrix();
+    }
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    glPushMatrix();
+    assert_eq!(glGetError(), GL_STACK_OVERFLOW);
+}
+
+#[test]
+fn user_buffer_written_only_on_flush_and_bottom_up() {
+    let c = Ctx::new(4, 4);
+    glClearColor(1.0, 0.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert!(c.buf.iter().all(|&b| b == 0xAA), "glClear alone does not write the user buffer");
+    glFinish();
+    assert_eq!(&c.buf[..4], &[255, 0, 0, 255]);
+    // Bottom-left triangle only: the first row of the buffer (bottom) gets it.
+    glClearColor(0.0, 0.0, 0.0, 0.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0.0, 4.0, 0.0, 4.0, -1.0, 1.0);
+    glBegin(GL_TRIANGLES);
+    glColor3f(0.0, 1.0, 0.0);
+    glVertex2f(0.0, 0.0);
+    glVertex2f(4.0, 0.0);
+    glVertex2f(0.0, 1.0);
+    glEnd();
+    glFinish();
+    assert_eq!(&c.buf[..4], &[0, 255, 0, 255], "row 0 is the bottom row");
+    assert_eq!(&c.buf[12 * 4..12 * 4 + 4], &[0, 0, 0, 0], "row 3 is the top row");
+}
+
+#[test]
+fn get_proc_address_finds_exports_only() {
+    let f = |n: &str| {
+        let s = std::ffi::CString::new(n).unwrap();
+        // SAFETY: NUL-terminated name.
+        unsafe { OSMesaGetProcAddress(s.as_ptr()) }
+    };
+    assert!(f("glBegin").is_some());
+    assert!(f("glBufferData").is_some());
+    assert!(f("OSMesaMakeCurrent").is_some());
+    assert!(f("glNoSuchFunction").is_none());
+    let p = f("glGetError").unwrap();
+    // SAFETY: glGetError's real signature.
+    let get_error: extern "C" fn() -> u32 = unsafe { std::mem::transmute(p) };
+    assert_eq!(get_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn make_current_rejects_bad_arguments() {
+    let ctx = OSMesaCreateContext(OSMESA_RGBA, std::ptr::null_mut());
+    let mut buf = vec![0u8; 16];
+    // SAFETY: the calls are expected to fail before touching the buffer.
+    unsafe {
+        assert_eq!(OSMesaMakeCurrent(ctx, std::ptr::null_mut(), GL_UNSIGNED_BYTE, 2, 2), 0);
+        assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 0, 2), 0);
+        assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_FLOAT + 7, 2, 2), 0);
+        assert_eq!(OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0), 1);
+    }
+    OSMesaDestroyContext(ctx);
+    OSMesaDestroyContext(ctx); // a second destroy of the same handle is ignored
+    assert!(OSMesaGetCurrentContext().is_null());
+}
+
+fn tri(z: f32) {
+    glBegin(GL_TRIANGLES);
+    glVertex3f(-1.0, -1.0, z);
+    glVertex3f(1.0, -1.0, z);
+    glVertex3f(0.0, 1.0, z);
+    glEnd();
+}
+
+#[test]
+fn counters_show_skipped_work() {
+    let _c = Ctx::new(32, 32);
+    let s0 = softgl::ffi::current_stats().unwrap();
+    tri(0.0);
+    let s1 = softgl::ffi::current_stats().unwrap();
+    assert!(s1.fragments > 0 && s1.color_writes > 0);
+    assert_eq!(s1.depth_reads, s0.depth_reads, "depth off: no depth read");
+    assert_eq!(s1.color_reads, 0, "no blending: no colour read");
+
+    glEnable(GL_DEPTH_TEST);
+    tri(0.0);
+    let s2 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s2.depth_reads - s1.depth_reads, s2.fragments - s1.fragments);
+
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    tri(0.0);
+    let s3 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s3.tris_culled, s2.tris_culled + 1);
+    assert_eq!(s3.tris_rasterized, s2.tris_rasterized, "a culled triangle is not rasterized");
+    assert_eq!(s3.fragments, s2.fragments);
+
+    glDisable(GL_CULL_FACE);
+    glTranslatef(10.0, 0.0, 0.0);
+    tri(0.0);
+    let s4 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s4.tris_clip_rejected, s3.tris_clip_rejected + 1, "off-screen: rejected before setup");
+    assert_eq!(s4.fragments, s3.fragments);
+}
