@@ -129,7 +129,10 @@ fn user_buffer_written_only_on_flush_and_bottom_up() {
     let c = Ctx::new(4, 4);
     glClearColor(1.0, 0.0, 0.0, 1.0);
     glClear(GL_COLOR_BUFFER_BIT);
-    assert!(c.buf.iter().all(|&b| b == 0xAA), "glClear alone does not write the user buffer");
+    assert!(
+        c.buf.iter().all(|&b| b == 0xAA),
+        "glClear alone does not write the user buffer"
+    );
     glFinish();
     assert_eq!(&c.buf[..4], &[255, 0, 0, 255]);
     // Bottom-left triangle only: the first row of the buffer (bottom) gets it.
@@ -145,7 +148,11 @@ fn user_buffer_written_only_on_flush_and_bottom_up() {
     glEnd();
     glFinish();
     assert_eq!(&c.buf[..4], &[0, 255, 0, 255], "row 0 is the bottom row");
-    assert_eq!(&c.buf[12 * 4..12 * 4 + 4], &[0, 0, 0, 0], "row 3 is the top row");
+    assert_eq!(
+        &c.buf[12 * 4..12 * 4 + 4],
+        &[0, 0, 0, 0],
+        "row 3 is the top row"
+    );
 }
 
 #[test]
@@ -171,10 +178,22 @@ fn make_current_rejects_bad_arguments() {
     let mut buf = vec![0u8; 16];
     // SAFETY: the calls are expected to fail before touching the buffer.
     unsafe {
-        assert_eq!(OSMesaMakeCurrent(ctx, std::ptr::null_mut(), GL_UNSIGNED_BYTE, 2, 2), 0);
-        assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 0, 2), 0);
-        assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_FLOAT + 7, 2, 2), 0);
-        assert_eq!(OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0), 1);
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, std::ptr::null_mut(), GL_UNSIGNED_BYTE, 2, 2),
+            0
+        );
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 0, 2),
+            0
+        );
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_FLOAT + 7, 2, 2),
+            0
+        );
+        assert_eq!(
+            OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0),
+            1
+        );
     }
     OSMesaDestroyContext(ctx);
     OSMesaDestroyContext(ctx); // a second destroy of the same handle is ignored
@@ -209,13 +228,20 @@ fn counters_show_skipped_work() {
     tri(0.0);
     let s3 = softgl::ffi::current_stats().unwrap();
     assert_eq!(s3.tris_culled, s2.tris_culled + 1);
-    assert_eq!(s3.tris_rasterized, s2.tris_rasterized, "a culled triangle is not rasterized");
+    assert_eq!(
+        s3.tris_rasterized, s2.tris_rasterized,
+        "a culled triangle is not rasterized"
+    );
     assert_eq!(s3.fragments, s2.fragments);
 
     glDisable(GL_CULL_FACE);
     glTranslatef(10.0, 0.0, 0.0);
     tri(0.0);
     let s4 = softgl::ffi::current_stats().unwrap();
-    assert_eq!(s4.tris_clip_rejected, s3.tris_clip_rejected + 1, "off-screen: rejected before setup");
+    assert_eq!(
+        s4.tris_clip_rejected,
+        s3.tris_clip_rejected + 1,
+        "off-screen: rejected before setup"
+    );
     assert_eq!(s4.fragments, s3.fragments);
 }

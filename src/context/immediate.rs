@@ -10,4 +10,19 @@ pub struct Immediate {
     pub active: Option<Primitive>,
     /// Vertices given since glBegin.
     pub verts: Vec<VertexIn>,
+    /// A finished glBegin/glEnd of this mode whose drawing is deferred, so that the next
+    /// glBegin of the same mode can extend it: Mesa's vbo module merges such draws (which
+    /// decides, for GL_QUADS, whether the merged draw takes the clipping path).
+    pub pending: Option<Primitive>,
+}
+
+impl Immediate {
+    /// Whether glBegin/glEnd pairs of `mode` are merged when nothing happens in between
+    /// (modes whose primitives are independent of each other).
+    pub fn mergeable(mode: Primitive) -> bool {
+        matches!(
+            mode,
+            Primitive::Points | Primitive::Lines | Primitive::Triangles | Primitive::Quads
+        )
+    }
 }

@@ -140,6 +140,18 @@ impl Context {
         }
     }
 
+    /// Draws a deferred glBegin/glEnd batch, if any. Every GL call except the vertex
+    /// attribute calls and glBegin does this first, as Mesa flushes its vertex buffer.
+    #[inline]
+    pub fn flush_pending(&mut self) {
+        if let Some(mode) = self.immediate.pending.take() {
+            let verts = std::mem::take(&mut self.immediate.verts);
+            crate::draw::draw(self, mode, &verts, None);
+            self.immediate.verts = verts;
+            self.immediate.verts.clear();
+        }
+    }
+
     /// Records `e` unless an earlier error is still unread.
     pub fn record_error(&mut self, e: GlError) {
         if self.error.is_none() {
@@ -279,7 +291,8 @@ impl Context {
     /// glDepthRange (clamped to [0,1]).
     pub fn depth_range(&mut self, n: f64, f: f64) -> GlResult<()> {
         self.check_outside_begin()?;
-        self.state.depth_range = [clamp01(n), clamp01(f)];
+        // Mesa keeps the range as f32 (it is then widened again for the viewport transform).
+        self.state.depth_range = [clamp01(n) as f32 as f64, clamp01(f) as f32 as f64];
         Ok(())
     }
 

@@ -4,19 +4,23 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::with_ctx;
+use super::with_ctx_raw;
 use crate::context::error::GlError;
+use crate::context::immediate::Immediate;
 use crate::context::state::Primitive;
 use crate::geometry::fetch::VertexIn;
 
 /// glBegin.
 #[no_mangle]
 pub extern "C" fn glBegin(mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         let m = Primitive::from_gl(mode)?;
         c.check_outside_begin()?;
+        if c.immediate.pending != Some(m) {
+            c.flush_pending();
+        }
+        c.immediate.pending = None;
         c.immediate.active = Some(m);
-        c.immediate.verts.clear();
         Ok(())
     })
 }
@@ -24,14 +28,23 @@ pub extern "C" fn glBegin(mode: GLenum) {
 /// glEnd: draws the vertices given since glBegin.
 #[no_mangle]
 pub extern "C" fn glEnd() {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         let Some(mode) = c.immediate.active.take() else {
             return Err(GlError::InvalidOperation);
         };
-        let verts = std::mem::take(&mut c.immediate.verts);
-        crate::draw::draw(c, mode, &verts, None);
-        c.immediate.verts = verts;
-        c.immediate.verts.clear();
+        // Drop an incomplete trailing primitive so a merged batch stays aligned.
+        let per = match mode {
+            Primitive::Lines => 2,
+            Primitive::Triangles => 3,
+            Primitive::Quads => 4,
+            _ => 1,
+        };
+        let whole = c.immediate.verts.len() - c.immediate.verts.len() % per;
+        c.immediate.verts.truncate(whole);
+        c.immediate.pending = Some(mode);
+        if !Immediate::mergeable(mode) {
+            c.flush_pending();
+        }
         Ok(())
     })
 }
@@ -39,7 +52,7 @@ pub extern "C" fn glEnd() {
 /// Adds a vertex inside glBegin/glEnd (outside it, GL leaves the effect undefined; we
 /// ignore it, as Mesa does).
 pub(crate) fn vertex(p: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         if c.immediate.active.is_some() {
             let v = VertexIn::with_current(p, &c.state.current);
             if c.immediate.verts.try_reserve(1).is_err() {
@@ -53,7 +66,7 @@ pub(crate) fn vertex(p: [f32; 4]) {
 
 /// Sets the current colour.
 pub(crate) fn color(v: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         c.state.current.color = v;
         Ok(())
     })
@@ -61,7 +74,7 @@ pub(crate) fn color(v: [f32; 4]) {
 
 /// Sets the current texture coordinate of unit 0.
 pub(crate) fn texcoord(v: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         c.state.current.texcoord[0] = v;
         Ok(())
     })
@@ -69,7 +82,7 @@ pub(crate) fn texcoord(v: [f32; 4]) {
 
 /// Sets the current normal.
 pub(crate) fn normal(v: [f32; 3]) {
-    with_ctx(|c| {
+    with_ctx_raw(|c| {
         c.state.current.normal = v;
         Ok(())
     })

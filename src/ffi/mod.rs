@@ -42,10 +42,21 @@ pub(crate) fn current() -> *mut Context {
     CURRENT.with(|c| c.get())
 }
 
-/// Runs `f` on the current context; records its error, and turns a panic into
-/// GL_OUT_OF_MEMORY. Returns `R::default()` without a context or on error.
+/// Runs `f` on the current context after drawing any deferred glBegin/glEnd batch;
+/// records its error, and turns a panic into GL_OUT_OF_MEMORY. Returns `R::default()`
+/// without a context or on error.
 #[inline]
 pub(crate) fn with_ctx<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
+    with_ctx_raw(|c| {
+        c.flush_pending();
+        f(c)
+    })
+}
+
+/// As [`with_ctx`] but without flushing the deferred batch: for glBegin and the vertex
+/// attribute calls, which Mesa records into the same vertex buffer.
+#[inline]
+pub(crate) fn with_ctx_raw<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
     let p = current();
     if p.is_null() {
         return R::default();

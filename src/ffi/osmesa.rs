@@ -248,6 +248,7 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
         let c = unsafe { &*ctx };
         let me = thread_id();
         if CURRENT_HANDLE.with(|h| h.get()) == ctx {
+            flush_current();
             CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
             super::set_current(std::ptr::null_mut());
             c.owner.store(0, Ordering::Release);
@@ -284,7 +285,19 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     .unwrap_or(GL_FALSE as GLboolean)
 }
 
+/// Draws the deferred immediate-mode batch of the context current on this thread.
+fn flush_current() {
+    let p = super::current();
+    if !p.is_null() {
+        // SAFETY: the current context is live and owned by this thread.
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            unsafe { &mut *p }.flush_pending()
+        }));
+    }
+}
+
 fn release_current() {
+    flush_current();
     let old = CURRENT_HANDLE.with(|h| h.get());
     if !old.is_null() {
         // SAFETY: a current handle is live (destroy unbinds it before freeing).
@@ -327,6 +340,7 @@ fn make_current(
     }
     let me = thread_id();
     let prev = CURRENT_HANDLE.with(|h| h.get());
+    flush_current();
     if prev != ctx {
         if c.owner
             .compare_exchange(0, me, Ordering::AcqRel, Ordering::Acquire)

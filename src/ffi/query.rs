@@ -286,10 +286,12 @@ fn read_pixels(
                             // SAFETY: as above.
                             unsafe { *q = px[ch] };
                         } else {
+                            // unorm8 to float as Mesa's unpack does: u * f32(1/255).
+                            let f = |u: u8| u as f32 * (1.0f32 / 255.0);
                             let v = if ch == usize::MAX {
-                                ((px[0] as f64 + px[1] as f64 + px[2] as f64) / 255.0).min(1.0)
+                                (f(px[0]) + f(px[1]) + f(px[2])).min(1.0) as f64
                             } else {
-                                px[ch] as f64 / 255.0
+                                f(px[ch]) as f64
                             };
                             put(q, v, true);
                         }
