@@ -91,10 +91,12 @@ pub(crate) fn non_negative(n: i32) -> GlResult<usize> {
     usize::try_from(n).map_err(|_| GlError::InvalidValue)
 }
 
-/// The work counters of the thread's current context (a Rust-side API for tests and tools;
-/// not exported to C).
+/// The work counters of the thread's current context, after drawing any deferred
+/// immediate-mode batch (a Rust-side API for tests and tools; not exported to C).
 pub fn current_stats() -> Option<crate::stats::Stats> {
     let p = current();
-    // SAFETY: as in `with_ctx`: the pointer is this thread's current, live context.
-    (!p.is_null()).then(|| unsafe { (*p).stats })
+    if p.is_null() {
+        return None;
+    }
+    Some(with_ctx(|c| Ok(c.stats)))
 }
