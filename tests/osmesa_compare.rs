@@ -1,0 +1,897 @@
+//! Pixel-exact comparison of softgl against Mesa's OSMesa (llvmpipe).
+//!
+//! Every C program `c_tests/NAME.c` (see `c_tests/README.md` for the output
+//! protocol) is compiled twice: once against our headers and
+//! `target/<profile>/libsoftgl.so`, once against the system headers and
+//! `-lOSMesa`. Both binaries are run, and their output files are compared
+//! byte for byte. A scene may be given a tolerance in [`TOLERANCES`], with a
+//! reason naming the llvmpipe rule it cannot reproduce; the default is zero.
+//!
+//! On a mismatch (or always, with `SOFTGL_SAVE_IMAGES=1`) the images are
+//! written to `target/compare/` as `NAME.softgl.png`, `NAME.osmesa.png` and
+//! `NAME.diff.png` (black = equal, dim red to white = larger difference).
+//! Each scene prints a one-line summary and writes a row to
+//! `target/compare/summary/NAME.md`; `target/compare/summary.md` collects them.
+//!
+//! Environment variables:
+//! - `SOFTGL_SAVE_IMAGES=1`: write the PNGs even when the scene matches.
+//! - `SOFTGL_REF_DRIVER`: Gallium driver of the reference (default `llvmpipe`;
+//!   `softpipe` gives Mesa's second opinion).
+//! - `SOFTGL_REF_CPU_CAPS`: passed to the reference as
+//!   `GALLIUM_OVERRIDE_CPU_CAPS` (e.g. `sse4.1` to turn off FMA).
+//! - `SOFTGL_LIB_DIR`: folder holding `libsoftgl.so` (default: the profile
+//!   folder of this test executable, e.g. `target/release`, or its `deps/`
+//!   when that copy is newer, as after `cargo test`).
+//! - `SOFTGL_CTEST_TIMEOUT`: seconds a scene may run (default 120).
+//! - `SOFTGL_CTEST_REBUILD=1`: recompile the scenes even when up to date.
+//! - `CC`: the C compiler (default `cc`).
+
+use std::fmt::Write as _;
+use std::fs;
+use std::io::Read as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant, SystemTime};
+
+/// A per-scene tolerance for image blocks (text and data blocks are always exact).
+#[derive(Clone, Copy, Debug)]
+struct Tolerance {
+    /// Largest allowed difference of one channel, 0..=255.
+    max_channel_diff: u32,
+    /// Largest allowed share of differing pixels, in percent.
+    max_percent_off: f64,
+    /// Why the scene cannot be exact: the llvmpipe rule we do not reproduce.
+    reason: &'static str,
+}
+
+/// Scenes that may differ from OSMesa, with the reason. Empty: all exact.
+const TOLERANCES: &[(&str, Tolerance)] = &[];
+
+/// Exactness: the default tolerance of every scene.
+const EXACT: Tolerance = Tolerance {
+    max_channel_diff: 0,
+    max_percent_off: 0.0,
+    reason: "",
+};
+
+/// Every scene in `c_tests/`; a test checks that this list is complete.
+const SCENES: &[&str] = &[
+    "smooth_triangles",
+    "flat_triangles",
+    "prim_modes",
+    "depth_funcs",
+    "cull_face",
+    "vbo_indexed",
+    "client_arrays",
+    "immediate_hierarchy",
+    "near_clip",
+    "big_mesh",
+    "read_pixels",
+    "y_down",
+    "format_bgra",
+    "format_rgb",
+    "format_argb",
+    "format_bgr",
+    "format_rgb565",
+    "errors",
+    "quad_diagonal",
+    "get_state",
+];
+
+macro_rules! scene_tests {
+    ($($name:ident),* $(,)?) => {
+        $(
+            #[test]
+            fn $name() {
+                run_scene(stringify!($name));
+            }
+        )*
+    };
+}
+
+scene_tests!(
+    smooth_triangles,
+    flat_triangles,
+    prim_modes,
+    depth_funcs,
+    cull_face,
+    vbo_indexed,
+    client_arrays,
+    immediate_hierarchy,
+    near_clip,
+    big_mesh,
+    read_pixels,
+    y_down,
+    format_bgra,
+    format_rgb,
+    format_argb,
+    format_bgr,
+    format_rgb565,
+    errors,
+    quad_diagonal,
+    get_state,
+);
+
+/// `examples/demo.c` writes a PNG; it must match OSMesa's too.
+#[test]
+fn demo() {
+    run_program("demo", &root().join("examples/demo.c"));
+}
+
+/// Every `c_tests/*.c` has a test above, so no scene is forgotten.
+#[test]
+fn all_scenes_listed() {
+    let mut on_disk: Vec<String> = fs::read_dir(root().join("c_tests"))
+        .expect("read c_tests/")
+        .filter_map(|e| e.ok())
+        .filter_map(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            name.strip_suffix(".c").map(str::to_owned)
+        })
+        .collect();
+    on_disk.sort();
+    let mut listed: Vec<String> = SCENES.iter().map(|s| s.to_string()).collect();
+    listed.sort();
+    assert_eq!(
+        on_disk, listed,
+        "c_tests/*.c and SCENES in tests/osmesa_compare.rs disagree: add a scene_tests! entry"
+    );
+    for (name, tol) in TOLERANCES {
+        assert!(SCENES.contains(name), "tolerance for unknown scene {name}");
+        assert!(
+            !tol.reason.is_empty(),
+            "tolerance for {name} needs a reason"
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Paths and environment
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `target/<profile>`: the test executable lives in `target/<profile>/deps/`.
+fn profile_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("current_exe");
+    let deps = exe.parent().expect("exe folder");
+    deps.parent().expect("profile folder").to_path_buf()
+}
+
+/// `target/`, the parent of the profile folder.
+fn target_dir() -> PathBuf {
+    profile_dir()
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_else(|| root().join("target"))
+}
+
+/// Folder of the `libsoftgl.so` to test: `SOFTGL_LIB_DIR`, else the newer of
+/// `target/<profile>/` (written by `cargo build`) and `target/<profile>/deps/`
+/// (written by `cargo test`, which does not copy the cdylib up).
+fn lib_dir() -> PathBuf {
+    if let Some(d) = std::env::var_os("SOFTGL_LIB_DIR") {
+        return fs::canonicalize(&d).unwrap_or_else(|_| PathBuf::from(d));
+    }
+    let profile = profile_dir();
+    let deps = profile.join("deps");
+    match (
+        mtime(&profile.join("libsoftgl.so")),
+        mtime(&deps.join("libsoftgl.so")),
+    ) {
+        (Some(up), Some(dep)) if dep > up => deps,
+        (None, Some(_)) => deps,
+        _ => profile,
+    }
+}
+
+fn env_flag(name: &str) -> bool {
+    std::env::var(name).is_ok_and(|v| !v.is_empty() && v != "0")
+}
+
+/// Makes sure Mesa's OSMesa headers are installed (once per test run).
+fn ensure_reference() {
+    static DONE: OnceLock<Result<(), String>> = OnceLock::new();
+    let result = DONE.get_or_init(|| {
+        let header = Path::new("/usr/include/GL/osmesa.h");
+        if header.exists() {
+            return Ok(());
+        }
+        let script = root().join("scripts/ensure-deps.sh");
+        let out = Command::new("sh").arg(&script).output();
+        if header.exists() {
+            return Ok(());
+        }
+        Err(match out {
+            Ok(o) => format!(
+                "{} did not install /usr/include/GL/osmesa.h:\n{}{}",
+                script.display(),
+                String::from_utf8_lossy(&o.stdout),
+                String::from_utf8_lossy(&o.stderr)
+            ),
+            Err(e) => format!("could not run {}: {e}", script.display()),
+        })
+    });
+    if let Err(msg) = result {
+        panic!("the reference (Mesa OSMesa, libosmesa6-dev) is missing: {msg}");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Building and running
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Side {
+    Softgl,
+    Osmesa,
+}
+
+impl Side {
+    fn label(self) -> &'static str {
+        match self {
+            Side::Softgl => "softgl",
+            Side::Osmesa => "osmesa",
+        }
+    }
+}
+
+fn mtime(p: &Path) -> Option<SystemTime> {
+    fs::metadata(p).and_then(|m| m.modified()).ok()
+}
+
+/// Newest modification time of the files a binary depends on.
+fn newest_input(source: &Path, side: Side) -> Option<SystemTime> {
+    let mut inputs = vec![source.to_path_buf()];
+    for dir in [root().join("c_tests"), root().join("include/GL")] {
+        if side == Side::Osmesa && dir.ends_with("include/GL") {
+            continue;
+        }
+        if let Ok(rd) = fs::read_dir(&dir) {
+            inputs.extend(
+                rd.filter_map(|e| e.ok())
+                    .map(|e| e.path())
+                    .filter(|p| p.extension().is_some_and(|x| x == "h")),
+            );
+        }
+    }
+    inputs.iter().filter_map(|p| mtime(p)).max()
+}
+
+/// Compiles `source` for one side unless the binary is newer than its inputs.
+fn build(name: &str, source: &Path, side: Side) -> Result<PathBuf, String> {
+    let out_dir = match side {
+        // The rpath differs per profile, so softgl binaries are per profile.
+        Side::Softgl => {
+            let profile = profile_dir();
+            let profile = profile.file_name().unwrap_or_default().to_string_lossy();
+            target_dir()
+                .join("ctests")
+                .join(format!("softgl-{profile}"))
+        }
+        Side::Osmesa => target_dir().join("ctests").join("osmesa"),
+    };
+    fs::create_dir_all(&out_dir).map_err(|e| format!("mkdir {}: {e}", out_dir.display()))?;
+    let bin = out_dir.join(name);
+    // The softgl binary's rpath names the library folder: rebuild if it moved.
+    let stamp = out_dir.join(format!("{name}.libdir"));
+    let lib = lib_dir();
+    let stamp_ok = side == Side::Osmesa
+        || fs::read_to_string(&stamp).is_ok_and(|s| s == lib.to_string_lossy());
+    if stamp_ok && !env_flag("SOFTGL_CTEST_REBUILD") {
+        if let (Some(b), Some(i)) = (mtime(&bin), newest_input(source, side)) {
+            if b > i {
+                return Ok(bin);
+            }
+        }
+    }
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_owned());
+    let tmp = out_dir.join(format!("{name}.tmp{}", std::process::id()));
+    let mut cmd = Command::new(&cc);
+    cmd.current_dir(root()).arg("-O1").arg("-Wall");
+    match side {
+        Side::Softgl => {
+            if !lib.join("libsoftgl.so").exists() {
+                return Err(format!(
+                    "{} does not exist: build the library first \
+                     (cargo build --release, or run the tests with --release)",
+                    lib.join("libsoftgl.so").display()
+                ));
+            }
+            cmd.arg("-Werror")
+                .arg(format!("-I{}", root().join("include").display()))
+                .arg(source)
+                .arg("-o")
+                .arg(&tmp)
+                .arg(format!("-L{}", lib.display()))
+                .arg("-lsoftgl")
+                .arg(format!("-Wl,-rpath,{}", lib.display()))
+                .arg("-lm");
+        }
+        Side::Osmesa => {
+            // Lets a scene work around a Mesa bug on the reference side only.
+            cmd.arg("-DSGL_REFERENCE_OSMESA=1")
+                .arg(source)
+                .arg("-o")
+                .arg(&tmp)
+                .arg("-lOSMesa")
+                .arg("-lm");
+        }
+    }
+    let out = cmd
+        .output()
+        .map_err(|e| format!("could not run the C compiler `{cc}`: {e}"))?;
+    if !out.status.success() {
+        let _ = fs::remove_file(&tmp);
+        return Err(format!(
+            "compiling {} against {} failed ({}):\n{:?}\n{}{}",
+            source.display(),
+            side.label(),
+            out.status,
+            cmd,
+            String::from_utf8_lossy(&out.stdout),
+            head_lines(&String::from_utf8_lossy(&out.stderr), 60)
+        ));
+    }
+    fs::rename(&tmp, &bin).map_err(|e| format!("rename to {}: {e}", bin.display()))?;
+    if side == Side::Softgl {
+        let _ = fs::write(&stamp, lib.to_string_lossy().as_bytes());
+    }
+    Ok(bin)
+}
+
+/// The first `n` lines of `s`, and how many were left out.
+fn head_lines(s: &str, n: usize) -> String {
+    let lines: Vec<&str> = s.lines().collect();
+    if lines.len() <= n {
+        return s.to_owned();
+    }
+    format!(
+        "{}\n... ({} more lines)\n",
+        lines[..n].join("\n"),
+        lines.len() - n
+    )
+}
+
+/// Runs a scene binary with the output path as argv[1]; returns the output bytes.
+fn run(name: &str, bin: &Path, side: Side) -> Result<Vec<u8>, String> {
+    let out_dir = target_dir().join("ctests").join("out");
+    fs::create_dir_all(&out_dir).map_err(|e| format!("mkdir {}: {e}", out_dir.display()))?;
+    let out_file = out_dir.join(format!("{name}.{}.out", side.label()));
+    let _ = fs::remove_file(&out_file);
+    let mut cmd = Command::new(bin);
+    cmd.arg(&out_file)
+        .current_dir(&out_dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    if side == Side::Osmesa {
+        let driver = std::env::var("SOFTGL_REF_DRIVER").unwrap_or_else(|_| "llvmpipe".into());
+        cmd.env("GALLIUM_DRIVER", driver).env("LP_NUM_THREADS", "1");
+        if let Ok(caps) = std::env::var("SOFTGL_REF_CPU_CAPS") {
+            cmd.env("GALLIUM_OVERRIDE_CPU_CAPS", caps);
+        }
+    }
+    let timeout = std::env::var("SOFTGL_CTEST_TIMEOUT")
+        .ok()
+        .and_then(|s| s.parse::<u64>().ok())
+        .unwrap_or(120);
+    let mut child = cmd
+        .spawn()
+        .map_err(|e| format!("could not start {}: {e}", bin.display()))?;
+    // Drain the pipes in threads so a chatty program cannot block.
+    let mut so = child.stdout.take().expect("stdout");
+    let mut se = child.stderr.take().expect("stderr");
+    let t_out = std::thread::spawn(move || {
+        let mut v = Vec::new();
+        let _ = so.read_to_end(&mut v);
+        v
+    });
+    let t_err = std::thread::spawn(move || {
+        let mut v = Vec::new();
+        let _ = se.read_to_end(&mut v);
+        v
+    });
+    let start = Instant::now();
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(s)) => break s,
+            Ok(None) if start.elapsed() > Duration::from_secs(timeout) => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(format!(
+                    "{} ({}) did not finish within {timeout} s (SOFTGL_CTEST_TIMEOUT)",
+                    bin.display(),
+                    side.label()
+                ));
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(5)),
+            Err(e) => return Err(format!("waiting for {}: {e}", bin.display())),
+        }
+    };
+    let stdout = t_out.join().unwrap_or_default();
+    let stderr = t_err.join().unwrap_or_default();
+    if !status.success() {
+        return Err(format!(
+            "{} ({}) failed: {status}\nstdout:\n{}\nstderr:\n{}",
+            bin.display(),
+            side.label(),
+            String::from_utf8_lossy(&stdout),
+            String::from_utf8_lossy(&stderr)
+        ));
+    }
+    fs::read(&out_file).map_err(|e| {
+        format!(
+            "{} ({}) exited 0 but wrote no output {}: {e}\nstderr:\n{}",
+            bin.display(),
+            side.label(),
+            out_file.display(),
+            String::from_utf8_lossy(&stderr)
+        )
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Output parsing
+
+#[derive(Clone, Debug, PartialEq)]
+enum Block {
+    Image(ImageBlock),
+    Data { name: String, bytes: Vec<u8> },
+    Text { name: String, text: Vec<u8> },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+struct ImageBlock {
+    name: String,
+    width: usize,
+    height: usize,
+    bpp: usize,
+    format: String,
+    rowbytes: usize,
+    y_up: bool,
+    bytes: Vec<u8>,
+}
+
+impl Block {
+    fn name(&self) -> &str {
+        match self {
+            Block::Image(i) => &i.name,
+            Block::Data { name, .. } | Block::Text { name, .. } => name,
+        }
+    }
+    fn kind(&self) -> &'static str {
+        match self {
+            Block::Image(_) => "SGLIMG",
+            Block::Data { .. } => "SGLDATA",
+            Block::Text { .. } => "SGLTEXT",
+        }
+    }
+}
+
+fn parse_output(bytes: &[u8]) -> Result<Vec<Block>, String> {
+    if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
+        let img = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
+            .map_err(|e| format!("bad PNG: {e}"))?
+            .to_rgba8();
+        let (w, h) = (img.width() as usize, img.height() as usize);
+        return Ok(vec![Block::Image(ImageBlock {
+            name: "png".into(),
+            width: w,
+            height: h,
+            bpp: 4,
+            format: "RGBA".into(),
+            rowbytes: w * 4,
+            y_up: false,
+            bytes: img.into_raw(),
+        })]);
+    }
+    let mut blocks = Vec::new();
+    let mut pos = 0;
+    while pos < bytes.len() {
+        let nl = bytes[pos..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .ok_or_else(|| format!("unterminated header at byte {pos}"))?;
+        let header = std::str::from_utf8(&bytes[pos..pos + nl])
+            .map_err(|_| format!("non-UTF-8 header at byte {pos}"))?;
+        pos += nl + 1;
+        let f: Vec<&str> = header.split(' ').collect();
+        let num = |i: usize| -> Result<usize, String> {
+            f.get(i)
+                .and_then(|s| s.parse().ok())
+                .ok_or_else(|| format!("bad header {header:?}"))
+        };
+        let len = match f[0] {
+            "SGLIMG" if f.len() == 8 => num(3)? * num(6)?,
+            "SGLDATA" | "SGLTEXT" if f.len() == 3 => num(2)?,
+            _ => return Err(format!("unknown block header {header:?}")),
+        };
+        if pos + len + 1 > bytes.len() || bytes[pos + len] != b'\n' {
+            return Err(format!("block {header:?} is truncated"));
+        }
+        let body = bytes[pos..pos + len].to_vec();
+        pos += len + 1;
+        let name = f[1].to_owned();
+        blocks.push(match f[0] {
+            "SGLIMG" => {
+                let (width, bpp, rowbytes) = (num(2)?, num(4)?, num(6)?);
+                if width * bpp > rowbytes || bpp == 0 || bpp > 16 {
+                    return Err(format!("inconsistent image header {header:?}"));
+                }
+                Block::Image(ImageBlock {
+                    name,
+                    width,
+                    height: num(3)?,
+                    bpp,
+                    format: f[5].to_owned(),
+                    rowbytes,
+                    y_up: f[7] == "up",
+                    bytes: body,
+                })
+            }
+            "SGLDATA" => Block::Data { name, bytes: body },
+            _ => Block::Text { name, text: body },
+        });
+    }
+    Ok(blocks)
+}
+
+impl ImageBlock {
+    /// Channel values of pixel (x, row) in memory order; RGB565 is unpacked to 8-bit.
+    fn channels(&self, x: usize, row: usize) -> Vec<u8> {
+        let off = row * self.rowbytes + x * self.bpp;
+        let px = &self.bytes[off..off + self.bpp];
+        if self.format == "RGB565" && self.bpp == 2 {
+            let v = u16::from_ne_bytes([px[0], px[1]]);
+            let r = ((v >> 11) & 31) as u8;
+            let g = ((v >> 5) & 63) as u8;
+            let b = (v & 31) as u8;
+            return vec![
+                (r << 3) | (r >> 2),
+                (g << 2) | (g >> 4),
+                (b << 3) | (b >> 2),
+            ];
+        }
+        px.to_vec()
+    }
+
+    /// RGB of pixel (x, row) for viewing.
+    fn rgb(&self, x: usize, row: usize) -> [u8; 3] {
+        let c = self.channels(x, row);
+        let fmt: Vec<char> = if self.format == "RGB565" {
+            vec!['R', 'G', 'B']
+        } else {
+            self.format.chars().collect()
+        };
+        let pick = |ch: char| {
+            fmt.iter()
+                .position(|&f| f == ch)
+                .and_then(|i| c.get(i).copied())
+        };
+        match (pick('R'), pick('G'), pick('B')) {
+            (Some(r), Some(g), Some(b)) => [r, g, b],
+            _ => [c[0], c[0], c[0]],
+        }
+    }
+
+    /// Memory row holding the image row `y` counted from the top.
+    fn row_from_top(&self, y: usize) -> usize {
+        if self.y_up {
+            self.height - 1 - y
+        } else {
+            y
+        }
+    }
+
+    fn to_png(&self, path: &Path) -> Result<(), String> {
+        let img = image::RgbImage::from_fn(self.width as u32, self.height as u32, |x, y| {
+            image::Rgb(self.rgb(x as usize, self.row_from_top(y as usize)))
+        });
+        img.save(path)
+            .map_err(|e| format!("writing {}: {e}", path.display()))
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Comparison
+
+/// The result of comparing one image block.
+#[derive(Default, Clone, Copy, Debug)]
+struct ImageStats {
+    pixels: u64,
+    off: u64,
+    max_diff: u32,
+    padding_bytes_off: u64,
+}
+
+impl ImageStats {
+    fn percent_identical(&self) -> f64 {
+        if self.pixels == 0 {
+            100.0
+        } else {
+            100.0 * (self.pixels - self.off) as f64 / self.pixels as f64
+        }
+    }
+}
+
+fn compare_images(a: &ImageBlock, b: &ImageBlock) -> ImageStats {
+    let mut s = ImageStats {
+        pixels: (a.width * a.height) as u64,
+        ..Default::default()
+    };
+    for row in 0..a.height {
+        for x in 0..a.width {
+            let d = a
+                .channels(x, row)
+                .iter()
+                .zip(b.channels(x, row))
+                .map(|(&p, q)| (p as i32 - q as i32).unsigned_abs())
+                .max()
+                .unwrap_or(0);
+            if d > 0 {
+                s.off += 1;
+                s.max_diff = s.max_diff.max(d);
+            }
+        }
+        let pad = row * a.rowbytes + a.width * a.bpp..(row + 1) * a.rowbytes;
+        s.padding_bytes_off += a.bytes[pad.clone()]
+            .iter()
+            .zip(&b.bytes[pad])
+            .filter(|(p, q)| p != q)
+            .count() as u64;
+    }
+    s
+}
+
+/// Heat map: black where equal, dim red for 1, up to white for 255.
+fn write_diff_png(a: &ImageBlock, b: &ImageBlock, path: &Path) -> Result<(), String> {
+    let img = image::RgbImage::from_fn(a.width as u32, a.height as u32, |x, y| {
+        let row = a.row_from_top(y as usize);
+        let d = a
+            .channels(x as usize, row)
+            .iter()
+            .zip(b.channels(x as usize, row))
+            .map(|(&p, q)| (p as i32 - q as i32).unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        if d == 0 {
+            image::Rgb([0, 0, 0])
+        } else {
+            let t = (d as f32 / 255.0).sqrt();
+            image::Rgb([
+                (110.0 + 145.0 * t) as u8,
+                (255.0 * t * t) as u8,
+                (255.0 * t * t * t) as u8,
+            ])
+        }
+    });
+    img.save(path)
+        .map_err(|e| format!("writing {}: {e}", path.display()))
+}
+
+/// First differing lines of two text blocks, for the failure message.
+fn text_diff(a: &[u8], b: &[u8]) -> String {
+    let (a, b) = (String::from_utf8_lossy(a), String::from_utf8_lossy(b));
+    let (al, bl): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    let mut out = String::new();
+    let mut shown = 0;
+    for i in 0..al.len().max(bl.len()) {
+        let (x, y) = (al.get(i).copied(), bl.get(i).copied());
+        if x != y && shown < 8 {
+            let _ = writeln!(out, "      softgl: {}", x.unwrap_or("<none>"));
+            let _ = writeln!(out, "      osmesa: {}", y.unwrap_or("<none>"));
+            shown += 1;
+        }
+    }
+    out
+}
+
+fn tolerance(name: &str) -> Tolerance {
+    TOLERANCES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, t)| *t)
+        .unwrap_or(EXACT)
+}
+
+fn write_summary_row(name: &str, row: &str) {
+    let dir = target_dir().join("compare").join("summary");
+    if fs::create_dir_all(&dir).is_err() {
+        return;
+    }
+    let _ = fs::write(dir.join(format!("{name}.md")), row);
+    // Rebuild the combined table from all rows; write-then-rename keeps it whole.
+    let mut rows: Vec<(String, String)> = fs::read_dir(&dir)
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .filter_map(|e| {
+                    let p = e.path();
+                    let n = p.file_stem()?.to_string_lossy().into_owned();
+                    Some((n, fs::read_to_string(&p).ok()?))
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    rows.sort();
+    let mut table = String::from(
+        "| scene | identical % | max diff | pixels off | text/data blocks off | result |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    for (_, r) in rows {
+        table.push_str(r.trim_end());
+        table.push('\n');
+    }
+    let combined = target_dir().join("compare").join("summary.md");
+    let tmp = combined.with_extension(format!("md.{}", std::process::id()));
+    if fs::write(&tmp, table).is_ok() {
+        let _ = fs::rename(&tmp, &combined);
+    }
+}
+
+fn run_scene(name: &str) {
+    run_program(name, &root().join("c_tests").join(format!("{name}.c")));
+}
+
+fn run_program(name: &str, source: &Path) {
+    ensure_reference();
+    let fail = |msg: String| -> ! {
+        write_summary_row(name, &format!("| {name} | - | - | - | - | ERROR |\n"));
+        panic!("scene {name}: {msg}");
+    };
+    let ref_bin = build(name, source, Side::Osmesa).unwrap_or_else(|e| fail(e));
+    let ref_out = run(name, &ref_bin, Side::Osmesa).unwrap_or_else(|e| fail(e));
+    let our_bin = build(name, source, Side::Softgl).unwrap_or_else(|e| {
+        fail(format!(
+            "the softgl build failed (expected while libsoftgl lacks symbols):\n{e}"
+        ))
+    });
+    let our_out = run(name, &our_bin, Side::Softgl).unwrap_or_else(|e| fail(e));
+
+    let ref_blocks = parse_output(&ref_out).unwrap_or_else(|e| fail(format!("OSMesa output: {e}")));
+    let our_blocks = parse_output(&our_out).unwrap_or_else(|e| fail(format!("softgl output: {e}")));
+
+    let tol = tolerance(name);
+    let save = env_flag("SOFTGL_SAVE_IMAGES") || our_out != ref_out;
+    let compare_dir = target_dir().join("compare");
+    let _ = fs::create_dir_all(&compare_dir);
+
+    let mut problems = String::new();
+    let mut total = ImageStats::default();
+    let mut first_image = true;
+    let mut other_off = 0;
+    if our_blocks.len() != ref_blocks.len() {
+        let _ = writeln!(
+            problems,
+            "  softgl wrote {} blocks, OSMesa {}",
+            our_blocks.len(),
+            ref_blocks.len()
+        );
+    }
+    for (ours, theirs) in our_blocks.iter().zip(&ref_blocks) {
+        let label = format!("{} {}", theirs.kind(), theirs.name());
+        if ours.kind() != theirs.kind() || ours.name() != theirs.name() {
+            let _ = writeln!(
+                problems,
+                "  block order differs: softgl has {} {}, OSMesa {label}",
+                ours.kind(),
+                ours.name()
+            );
+            break;
+        }
+        match (ours, theirs) {
+            (Block::Image(a), Block::Image(b)) => {
+                if (a.width, a.height, a.bpp, &a.format, a.rowbytes, a.y_up)
+                    != (b.width, b.height, b.bpp, &b.format, b.rowbytes, b.y_up)
+                {
+                    let _ = writeln!(problems, "  {label}: image headers differ");
+                    continue;
+                }
+                let s = compare_images(a, b);
+                total.pixels += s.pixels;
+                total.off += s.off;
+                total.max_diff = total.max_diff.max(s.max_diff);
+                total.padding_bytes_off += s.padding_bytes_off;
+                let pct_off = 100.0 - s.percent_identical();
+                if s.max_diff > tol.max_channel_diff
+                    || pct_off > tol.max_percent_off
+                    || s.padding_bytes_off > 0
+                {
+                    let _ = writeln!(
+                        problems,
+                        "  {label}: {:.3}% identical pixels, max channel difference {}, \
+                         {} of {} pixels differ, {} row padding bytes differ",
+                        s.percent_identical(),
+                        s.max_diff,
+                        s.off,
+                        s.pixels,
+                        s.padding_bytes_off
+                    );
+                }
+                if save {
+                    let stem = if first_image {
+                        name.to_owned()
+                    } else {
+                        format!("{name}-{}", a.name)
+                    };
+                    first_image = false;
+                    for (img, side) in [(a, "softgl"), (b, "osmesa")] {
+                        if let Err(e) = img.to_png(&compare_dir.join(format!("{stem}.{side}.png")))
+                        {
+                            let _ = writeln!(problems, "  {e}");
+                        }
+                    }
+                    if let Err(e) =
+                        write_diff_png(a, b, &compare_dir.join(format!("{stem}.diff.png")))
+                    {
+                        let _ = writeln!(problems, "  {e}");
+                    }
+                }
+            }
+            (Block::Data { bytes: a, .. }, Block::Data { bytes: b, .. }) => {
+                if a != b {
+                    other_off += 1;
+                    let n = a.iter().zip(b).filter(|(p, q)| p != q).count();
+                    let first = a.iter().zip(b).position(|(p, q)| p != q);
+                    let _ = writeln!(
+                        problems,
+                        "  {label}: {n} of {} bytes differ (first at byte {}; sizes {} vs {})",
+                        b.len(),
+                        first.map_or_else(|| "-".to_owned(), |f| f.to_string()),
+                        a.len(),
+                        b.len()
+                    );
+                }
+            }
+            (Block::Text { text: a, .. }, Block::Text { text: b, .. }) => {
+                if a != b {
+                    other_off += 1;
+                    let _ = writeln!(problems, "  {label} differs:\n{}", text_diff(a, b));
+                }
+            }
+            _ => unreachable!("kinds checked above"),
+        }
+    }
+
+    let result = if problems.is_empty() { "ok" } else { "FAIL" };
+    let line = format!(
+        "{name}: {:.3}% identical, maxdiff {}, {} of {} pixels off, {other_off} text/data blocks off{}",
+        total.percent_identical(),
+        total.max_diff,
+        total.off,
+        total.pixels,
+        if our_out == ref_out {
+            ", output byte-identical".to_owned()
+        } else if problems.is_empty() {
+            format!(" (within tolerance: {})", tol.reason)
+        } else {
+            String::new()
+        }
+    );
+    println!("{line}");
+    write_summary_row(
+        name,
+        &format!(
+            "| {name} | {:.3} | {} | {} / {} | {other_off} | {result} |\n",
+            total.percent_identical(),
+            total.max_diff,
+            total.off,
+            total.pixels
+        ),
+    );
+    if !problems.is_empty() {
+        let images = if first_image {
+            String::new()
+        } else {
+            format!(
+                "images: {}/{name}*.{{softgl,osmesa,diff}}.png\n",
+                compare_dir.display()
+            )
+        };
+        panic!(
+            "scene {name} differs from OSMesa:\n{problems}{line}\n{images}outputs: {}",
+            target_dir().join("ctests/out").display()
+        );
+    }
+}
