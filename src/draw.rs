@@ -34,7 +34,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         .top()
         .mul(ctx.matrices.modelview.top());
     let stage = VertexStage { mvp, viewport, fma };
-    let plan = FragPlan::new(st, fb.depth_format, fma);
+    let plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     let Some(region) = ctx.draw_region() else {
         return;
     };

@@ -26,6 +26,12 @@ pub struct Stats {
     pub fragments: u64,
     /// Fragments that failed the depth test.
     pub depth_failed: u64,
+    /// Fragments killed by the alpha test.
+    pub alpha_failed: u64,
+    /// Fragments killed by the stencil test.
+    pub stencil_failed: u64,
+    /// Stencil buffer reads.
+    pub stencil_reads: u64,
     /// Depth buffer reads.
     pub depth_reads: u64,
     /// Colour buffer reads (blending, logic op).

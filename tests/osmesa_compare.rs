@@ -200,7 +200,7 @@ fn ensure_reference() {
             return Ok(());
         }
         let script = root().join("scripts/ensure-deps.sh");
-        let out = Command::new("sh").arg(&script).output();
+        let out = Command::new("bash").arg(&script).output();
         if header.exists() {
             return Ok(());
         }

@@ -24,6 +24,12 @@ GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotro
 GL_EXT_texture_lod_bias GL_NV_blend_square GL_SGIS_generate_mipmap
 GL_SGIS_texture_edge_clamp GL_ARB_texture_cube_map""".split()
 
+# Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports
+# (separate blend equation and separate stencil state are GL 2.0).
+EXTRA_TOKENS = """GL_BLEND_EQUATION_RGB GL_BLEND_EQUATION_ALPHA GL_STENCIL_BACK_FUNC GL_STENCIL_BACK_FAIL
+GL_STENCIL_BACK_PASS_DEPTH_FAIL GL_STENCIL_BACK_PASS_DEPTH_PASS GL_STENCIL_BACK_REF
+GL_STENCIL_BACK_VALUE_MASK GL_STENCIL_BACK_WRITEMASK""".split()
+
 DEF = re.compile(r"^#define\s+(GL_\w+)\s+(0x[0-9A-Fa-f]+|\d+)u?\s*$")
 
 
@@ -81,6 +87,12 @@ def main():
             continue
         m = DEF.match(s)
         if m and m.group(1) not in seen:
+            seen.add(m.group(1))
+            body.append(rust(m.group(1), m.group(2)))
+    body.append("\n// Single GL 2.0 tokens")
+    for line in ext:
+        m = DEF.match(line.strip())
+        if m and m.group(1) in EXTRA_TOKENS and m.group(1) not in seen:
             seen.add(m.group(1))
             body.append(rust(m.group(1), m.group(2)))
     with open("src/ffi/glext_enums.rs", "w") as f:

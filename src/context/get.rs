@@ -97,6 +97,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let bits = c.visual.format.channel_bits();
     let depth_bits = c.visual.depth.bits() as i64;
     let stencil_bits = if c.visual.stencil { 8 } else { 0 };
+    let stencil_max = (1i32 << stencil_bits) - 1;
     let a = &c.arrays;
     let tc = &a.texcoord[st.client_active_texture];
     Ok(match pname {
@@ -138,8 +139,32 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_DEPTH_FUNC => e(st.depth_func.to_gl()),
         GL_DEPTH_WRITEMASK => b(st.depth_mask),
         GL_COLOR_WRITEMASK => Value::new(Kind::Bool, &st.color_mask.map(|v| v as u8 as f64)),
-        GL_STENCIL_WRITEMASK => i(&[st.stencil_writemask as i64]),
+
         GL_CULL_FACE_MODE => e(st.cull_face.to_gl()),
+        GL_BLEND_SRC | GL_BLEND_SRC_RGB => e(st.frag.blend.src_rgb.to_gl()),
+        GL_BLEND_DST | GL_BLEND_DST_RGB => e(st.frag.blend.dst_rgb.to_gl()),
+        GL_BLEND_SRC_ALPHA => e(st.frag.blend.src_a.to_gl()),
+        GL_BLEND_DST_ALPHA => e(st.frag.blend.dst_a.to_gl()),
+        GL_BLEND_EQUATION => e(st.frag.blend.eq_rgb.to_gl()),
+        GL_BLEND_EQUATION_ALPHA => e(st.frag.blend.eq_a.to_gl()),
+        GL_BLEND_COLOR => n(&st.frag.blend.color),
+        GL_ALPHA_TEST_FUNC => e(st.frag.alpha_func.to_gl()),
+        GL_ALPHA_TEST_REF => n(&[st.frag.alpha_ref.clamp(0.0, 1.0)]),
+        GL_LOGIC_OP_MODE => e(st.frag.logic_op.to_gl()),
+        GL_STENCIL_FUNC => e(st.frag.stencil_front.func.to_gl()),
+        GL_STENCIL_REF => i(&[st.frag.stencil_front.reference.clamp(0, stencil_max) as i64]),
+        GL_STENCIL_VALUE_MASK => i(&[st.frag.stencil_front.value_mask as i32 as i64]),
+        GL_STENCIL_WRITEMASK => i(&[st.frag.stencil_front.writemask as i32 as i64]),
+        GL_STENCIL_FAIL => e(st.frag.stencil_front.fail.to_gl()),
+        GL_STENCIL_PASS_DEPTH_FAIL => e(st.frag.stencil_front.zfail.to_gl()),
+        GL_STENCIL_PASS_DEPTH_PASS => e(st.frag.stencil_front.zpass.to_gl()),
+        GL_STENCIL_BACK_FUNC => e(st.frag.stencil_back.func.to_gl()),
+        GL_STENCIL_BACK_REF => i(&[st.frag.stencil_back.reference.clamp(0, stencil_max) as i64]),
+        GL_STENCIL_BACK_VALUE_MASK => i(&[st.frag.stencil_back.value_mask as i32 as i64]),
+        GL_STENCIL_BACK_WRITEMASK => i(&[st.frag.stencil_back.writemask as i32 as i64]),
+        GL_STENCIL_BACK_FAIL => e(st.frag.stencil_back.fail.to_gl()),
+        GL_STENCIL_BACK_PASS_DEPTH_FAIL => e(st.frag.stencil_back.zfail.to_gl()),
+        GL_STENCIL_BACK_PASS_DEPTH_PASS => e(st.frag.stencil_back.zpass.to_gl()),
         GL_FRONT_FACE => e(if st.front_ccw { GL_CCW } else { GL_CW }),
         GL_SHADE_MODEL => e(if st.shade_model == ShadeModel::Flat {
             GL_FLAT

@@ -6,6 +6,7 @@
 
 pub mod arrays;
 pub mod error;
+pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod state;
@@ -337,7 +338,7 @@ impl Context {
         // draws a quad, whose colour and depth go through the shader's conversions.
         let quad_path = region != [0, 0, fb.width as i64, fb.height as i64]
             || st.color_mask != [true; 4]
-            || (st.stencil_writemask & 0xFF) != 0xFF;
+            || (st.frag.stencil_front.writemask & 0xFF) != 0xFF;
         if mask & GL_COLOR_BUFFER_BIT != 0 && st.color_mask.iter().any(|&m| m) {
             let v = if quad_path {
                 fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte))
@@ -371,7 +372,7 @@ impl Context {
             }
         }
         if mask & GL_STENCIL_BUFFER_BIT != 0 && !fb.stencil.is_empty() {
-            let wm = (st.stencil_writemask & 0xFF) as u8;
+            let wm = (st.frag.stencil_front.writemask & 0xFF) as u8;
             let v = (st.clear_stencil & 0xFF) as u8;
             for y in y0..y1 {
                 for s in &mut fb.stencil[y * w + x0..y * w + x1] {

@@ -470,8 +470,8 @@ pub struct State {
     pub depth_mask: bool,
     /// glColorMask r, g, b, a.
     pub color_mask: [bool; 4],
-    /// glStencilMask (front).
-    pub stencil_writemask: u32,
+    /// Blending, alpha test, stencil and logic op.
+    pub frag: super::fragment_state::FragmentOps,
     /// glScissor x, y, width, height.
     pub scissor: [i32; 4],
     /// glShadeModel.
@@ -508,7 +508,7 @@ impl Default for State {
             depth_func: CompareFunc::Less,
             depth_mask: true,
             color_mask: [true; 4],
-            stencil_writemask: !0,
+            frag: Default::default(),
             scissor: [0; 4],
             shade_model: ShadeModel::Smooth,
             cull_face: Face::Back,

@@ -387,3 +387,14 @@ pub const GL_GENERATE_MIPMAP_HINT_SGIS: GLenum = 0x8192;
 // GL_SGIS_texture_edge_clamp
 pub const GL_SGIS_texture_edge_clamp: GLenum = 1;
 pub const GL_CLAMP_TO_EDGE_SGIS: GLenum = 0x812F;
+
+// Single GL 2.0 tokens
+pub const GL_BLEND_EQUATION_RGB: GLenum = 0x8009;
+pub const GL_STENCIL_BACK_FUNC: GLenum = 0x8800;
+pub const GL_STENCIL_BACK_FAIL: GLenum = 0x8801;
+pub const GL_STENCIL_BACK_PASS_DEPTH_FAIL: GLenum = 0x8802;
+pub const GL_STENCIL_BACK_PASS_DEPTH_PASS: GLenum = 0x8803;
+pub const GL_BLEND_EQUATION_ALPHA: GLenum = 0x883D;
+pub const GL_STENCIL_BACK_REF: GLenum = 0x8CA3;
+pub const GL_STENCIL_BACK_VALUE_MASK: GLenum = 0x8CA4;
+pub const GL_STENCIL_BACK_WRITEMASK: GLenum = 0x8CA5;

@@ -1092,3 +1092,113 @@ pub unsafe extern "C" fn glNormal3dv(v: *const GLdouble) {
     let v = unsafe { std::slice::from_raw_parts(v, 3) };
     normal([v[0] as f32, v[1] as f32, v[2] as f32])
 }
+
+/// glRect as Mesa draws it: a GL_QUADS quad (x1,y1), (x2,y1), (x2,y2), (x1,y2) at z = 0.
+fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
+    glBegin(crate::ffi::enums::GL_QUADS);
+    vertex([x1, y1, 0.0, 1.0]);
+    vertex([x2, y1, 0.0, 1.0]);
+    vertex([x2, y2, 0.0, 1.0]);
+    vertex([x1, y2, 0.0, 1.0]);
+    glEnd();
+}
+
+/// glRects.
+#[no_mangle]
+pub extern "C" fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
+    rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+}
+
+/// glRectsv.
+///
+/// # Safety
+/// `v1` and `v2` must point to 2 values each.
+#[no_mangle]
+pub unsafe extern "C" fn glRectsv(v1: *const GLshort, v2: *const GLshort) {
+    if v1.is_null() || v2.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises two readable values at each pointer.
+    let (a, b) = unsafe {
+        (
+            std::slice::from_raw_parts(v1, 2),
+            std::slice::from_raw_parts(v2, 2),
+        )
+    };
+    rect(a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32)
+}
+
+/// glRecti.
+#[no_mangle]
+pub extern "C" fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
+    rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+}
+
+/// glRectiv.
+///
+/// # Safety
+/// `v1` and `v2` must point to 2 values each.
+#[no_mangle]
+pub unsafe extern "C" fn glRectiv(v1: *const GLint, v2: *const GLint) {
+    if v1.is_null() || v2.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises two readable values at each pointer.
+    let (a, b) = unsafe {
+        (
+            std::slice::from_raw_parts(v1, 2),
+            std::slice::from_raw_parts(v2, 2),
+        )
+    };
+    rect(a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32)
+}
+
+/// glRectf.
+#[no_mangle]
+pub extern "C" fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
+    rect(x1, y1, x2, y2)
+}
+
+/// glRectfv.
+///
+/// # Safety
+/// `v1` and `v2` must point to 2 values each.
+#[no_mangle]
+pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
+    if v1.is_null() || v2.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises two readable values at each pointer.
+    let (a, b) = unsafe {
+        (
+            std::slice::from_raw_parts(v1, 2),
+            std::slice::from_raw_parts(v2, 2),
+        )
+    };
+    rect(a[0], a[1], b[0], b[1])
+}
+
+/// glRectd.
+#[no_mangle]
+pub extern "C" fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
+    rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+}
+
+/// glRectdv.
+///
+/// # Safety
+/// `v1` and `v2` must point to 2 values each.
+#[no_mangle]
+pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
+    if v1.is_null() || v2.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises two readable values at each pointer.
+    let (a, b) = unsafe {
+        (
+            std::slice::from_raw_parts(v1, 2),
+            std::slice::from_raw_parts(v2, 2),
+        )
+    };
+    rect(a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32)
+}

@@ -13,6 +13,8 @@ pub mod arrays;
 pub mod buffers;
 pub mod draw;
 pub mod enums;
+pub mod fragment;
+pub mod fragment_ext;
 pub mod glext_enums;
 pub mod immediate;
 pub mod matrix;

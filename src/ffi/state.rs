@@ -142,16 +142,6 @@ pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean,
     })
 }
 
-/// glStencilMask (front and back).
-#[no_mangle]
-pub extern "C" fn glStencilMask(mask: GLuint) {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.state.stencil_writemask = mask;
-        Ok(())
-    })
-}
-
 /// glShadeModel.
 #[no_mangle]
 pub extern "C" fn glShadeModel(mode: GLenum) {

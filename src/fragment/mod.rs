@@ -1,15 +1,20 @@
-//! Per-fragment work: interpolation of the varyings, the depth test and the colour write,
-//! specialised per draw by a small [`FragPlan`] derived from the GL state.
+//! Per-fragment work: interpolation of the varyings and the fragment operations in GL
+//! order (alpha test, stencil, depth, blend or logic op, colour mask), specialised per draw
+//! by a small [`FragPlan`] derived from the GL state once.
 //!
-//! Numbers (llvmpipe-rules §7, §8, §13): every attribute is a plane evaluated per pixel
-//! as `fmuladd(dady, py, fmuladd(dadx, px, a0))`; perspective attributes are multiplied by
-//! `1 / w_plane`; z is clamped to [0,1] and quantised with round-half-even; colours are
-//! clamped to [0,1] and converted with `round_half_even(c * 255)`.
+//! Numbers (llvmpipe-rules §7, §8, §12, §13): every attribute is a plane evaluated per
+//! pixel as `fmuladd(dady, py, fmuladd(dadx, px, a0))`; perspective attributes are
+//! multiplied by `1 / w_plane`; z is clamped to [0,1] and quantised with round-half-even;
+//! colours are clamped to [0,1] and converted with `round_half_even(c * 255)`; the alpha
+//! test compares 8-bit integers; blending is 8-bit fixed point with
+//! `mul(a, b) = (t + (t >> 8) + 128) >> 8`, `t = a·b`.
 
+pub mod blend;
 pub mod span;
 
+use crate::context::fragment_state::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};
 use crate::context::state::{Cap, CompareFunc, ShadeModel, State};
-use crate::framebuffer::DepthFormat;
+use crate::framebuffer::{float_to_ubyte, DepthFormat};
 
 /// What the fragment stage does for one draw, derived once from the state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -22,6 +27,14 @@ pub struct FragPlan {
     pub color_mask: [bool; 4],
     /// Whether the host fuses multiply-adds.
     pub fma: bool,
+    /// The alpha test: function and the 8-bit reference.
+    pub alpha: Option<(CompareFunc, u8)>,
+    /// The stencil test, when enabled and a stencil buffer exists.
+    pub stencil: Option<StencilPlan>,
+    /// Blending (None when disabled, or replaced by a logic op).
+    pub blend: Option<BlendPlan>,
+    /// The logic op, when GL_COLOR_LOGIC_OP is on and it is not COPY.
+    pub logic: Option<LogicOp>,
 }
 
 /// The depth test of a draw.
@@ -35,25 +48,157 @@ pub struct DepthPlan {
     pub format: DepthFormat,
 }
 
+/// One face's stencil test and updates, with the reference clamped to 8 bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StencilFacePlan {
+    /// Function.
+    pub func: CompareFunc,
+    /// `ref & mask`.
+    pub masked_ref: u8,
+    /// The reference (for REPLACE).
+    pub reference: u8,
+    /// Comparison mask.
+    pub mask: u8,
+    /// Operation on stencil fail.
+    pub fail: StencilOp,
+    /// Operation on depth fail.
+    pub zfail: StencilOp,
+    /// Operation on pass.
+    pub zpass: StencilOp,
+    /// Write mask.
+    pub write: u8,
+}
+
+impl StencilFacePlan {
+    fn new(f: &StencilFace) -> Self {
+        let reference = f.reference.clamp(0, 255) as u8;
+        let mask = (f.value_mask & 0xFF) as u8;
+        StencilFacePlan {
+            func: f.func,
+            masked_ref: reference & mask,
+            reference,
+            mask,
+            fail: f.fail,
+            zfail: f.zfail,
+            zpass: f.zpass,
+            write: (f.writemask & 0xFF) as u8,
+        }
+    }
+    /// Whether stencil value `s` passes.
+    #[inline(always)]
+    pub fn test(&self, s: u8) -> bool {
+        self.func.test(self.masked_ref, s & self.mask)
+    }
+    /// The stored value after `op`, through the write mask.
+    #[inline(always)]
+    pub fn update(&self, op: StencilOp, s: u8) -> u8 {
+        (s & !self.write) | (op.apply(s, self.reference) & self.write)
+    }
+}
+
+/// The stencil state of a draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StencilPlan {
+    /// For front-facing primitives (and lines/points).
+    pub front: StencilFacePlan,
+    /// For back-facing triangles.
+    pub back: StencilFacePlan,
+}
+
+/// Blending of a draw, in 8-bit terms.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlendPlan {
+    /// RGB source factor.
+    pub src_rgb: BlendFactor,
+    /// RGB destination factor.
+    pub dst_rgb: BlendFactor,
+    /// Alpha source factor.
+    pub src_a: BlendFactor,
+    /// Alpha destination factor.
+    pub dst_a: BlendFactor,
+    /// RGB equation.
+    pub eq_rgb: BlendEquation,
+    /// Alpha equation.
+    pub eq_a: BlendEquation,
+    /// The constant colour converted like a fragment colour.
+    pub color: [u8; 4],
+}
+
 impl FragPlan {
     /// Derives the plan from the state and the framebuffer's buffers.
-    pub fn new(state: &State, depth_format: DepthFormat, fma: bool) -> Self {
-        let depth = (state.caps.get(Cap::DepthTest) && depth_format != DepthFormat::None)
-            .then_some(DepthPlan {
+    pub fn new(state: &State, depth_format: DepthFormat, has_stencil: bool, fma: bool) -> Self {
+        let caps = &state.caps;
+        let fr = &state.frag;
+        let depth =
+            (caps.get(Cap::DepthTest) && depth_format != DepthFormat::None).then_some(DepthPlan {
                 func: state.depth_func,
                 write: state.depth_mask,
                 format: depth_format,
             });
+        let alpha = (caps.get(Cap::AlphaTest) && fr.alpha_func != CompareFunc::Always)
+            .then(|| (fr.alpha_func, float_to_ubyte(fr.alpha_ref)));
+        let stencil = (caps.get(Cap::StencilTest) && has_stencil).then(|| StencilPlan {
+            front: StencilFacePlan::new(&fr.stencil_front),
+            back: StencilFacePlan::new(&fr.stencil_back),
+        });
+        let logic =
+            (caps.get(Cap::ColorLogicOp) && fr.logic_op != LogicOp::Copy).then_some(fr.logic_op);
+        let b = &fr.blend;
+        let blend = (caps.get(Cap::Blend) && !caps.get(Cap::ColorLogicOp)).then(|| {
+            // The state tracker forces ONE, ONE for MIN and MAX.
+            let fix = |eq: BlendEquation, f: BlendFactor| {
+                if matches!(eq, BlendEquation::Min | BlendEquation::Max) {
+                    BlendFactor::One
+                } else {
+                    f
+                }
+            };
+            BlendPlan {
+                src_rgb: fix(b.eq_rgb, b.src_rgb),
+                dst_rgb: fix(b.eq_rgb, b.dst_rgb),
+                src_a: fix(b.eq_a, b.src_a),
+                dst_a: fix(b.eq_a, b.dst_a),
+                eq_rgb: b.eq_rgb,
+                eq_a: b.eq_a,
+                color: b.color.map(float_to_ubyte),
+            }
+        });
+        // Blending that leaves the source unchanged (ONE, ZERO, ADD) is no blending.
+        let blend = blend.filter(|p| {
+            !(p.src_rgb == BlendFactor::One
+                && p.src_a == BlendFactor::One
+                && p.dst_rgb == BlendFactor::Zero
+                && p.dst_a == BlendFactor::Zero
+                && p.eq_rgb == BlendEquation::Add
+                && p.eq_a == BlendEquation::Add)
+        });
         FragPlan {
             depth,
             flat: state.shade_model == ShadeModel::Flat,
             color_mask: state.color_mask,
             fma,
+            alpha,
+            stencil,
+            blend,
+            logic,
         }
     }
 
     /// Whether fragments of this plan can change anything.
     pub fn writes_anything(&self) -> bool {
-        self.color_mask.iter().any(|&m| m) || self.depth.is_some_and(|d| d.write)
+        self.color_mask.iter().any(|&m| m)
+            || self.depth.is_some_and(|d| d.write)
+            || self
+                .stencil
+                .is_some_and(|s| s.front.write != 0 || s.back.write != 0)
+    }
+
+    /// Whether the plan needs the general fragment path (alpha test, stencil, blending or a
+    /// logic op); otherwise the plain depth-and-write path runs.
+    pub fn needs_full_path(&self) -> bool {
+        self.alpha.is_some()
+            || self.stencil.is_some()
+            || self.blend.is_some()
+            || self.logic.is_some()
     }
 }

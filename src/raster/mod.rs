@@ -60,20 +60,35 @@ fn raster_rows<M: Madd>(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
+    if plan.needs_full_path() {
+        rows_full::<M, true>(t, b, plan, fb, stats)
+    } else {
+        rows_full::<M, false>(t, b, plan, fb, stats)
+    }
+}
+
+#[inline(always)]
+fn rows_full<M: Madd, const FULL: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
     match (plan.depth.is_some(), plan.flat, t.persp) {
-        (false, false, false) => rows::<M, false, false, false>(t, b, plan, fb, stats),
-        (false, false, true) => rows::<M, false, false, true>(t, b, plan, fb, stats),
-        (false, true, _) => rows::<M, false, true, false>(t, b, plan, fb, stats),
-        (true, false, false) => rows::<M, true, false, false>(t, b, plan, fb, stats),
-        (true, false, true) => rows::<M, true, false, true>(t, b, plan, fb, stats),
-        (true, true, _) => rows::<M, true, true, false>(t, b, plan, fb, stats),
+        (false, false, false) => rows::<M, false, false, false, FULL>(t, b, plan, fb, stats),
+        (false, false, true) => rows::<M, false, false, true, FULL>(t, b, plan, fb, stats),
+        (false, true, _) => rows::<M, false, true, false, FULL>(t, b, plan, fb, stats),
+        (true, false, false) => rows::<M, true, false, false, FULL>(t, b, plan, fb, stats),
+        (true, false, true) => rows::<M, true, false, true, FULL>(t, b, plan, fb, stats),
+        (true, true, _) => rows::<M, true, true, false, FULL>(t, b, plan, fb, stats),
     }
 }
 
 /// The row walk, specialised like the span shader it calls (everything inlines into the
 /// FMA or non-FMA entry point).
 #[inline(always)]
-fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -96,7 +111,7 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
             }
         }
         if lo <= hi {
-            shade_span::<M, DEPTH, FLAT, PERSP>(
+            shade_span::<M, DEPTH, FLAT, PERSP, FULL>(
                 t,
                 plan,
                 fb,
@@ -151,12 +166,15 @@ fn pixels_any<M: Madd>(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
+    // Lines and points are few pixels: the general path serves every plan.
     for &(x, y) in pixels {
         match (plan.depth.is_some(), plan.flat) {
-            (false, false) => shade_span::<M, false, false, false>(t, plan, fb, y, x, x, stats),
-            (false, true) => shade_span::<M, false, true, false>(t, plan, fb, y, x, x, stats),
-            (true, false) => shade_span::<M, true, false, false>(t, plan, fb, y, x, x, stats),
-            (true, true) => shade_span::<M, true, true, false>(t, plan, fb, y, x, x, stats),
+            (false, false) => {
+                shade_span::<M, false, false, false, true>(t, plan, fb, y, x, x, stats)
+            }
+            (false, true) => shade_span::<M, false, true, false, true>(t, plan, fb, y, x, x, stats),
+            (true, false) => shade_span::<M, true, false, false, true>(t, plan, fb, y, x, x, stats),
+            (true, true) => shade_span::<M, true, true, false, true>(t, plan, fb, y, x, x, stats),
         }
     }
 }

@@ -1,0 +1,58 @@
+//! Per-fragment calls of GL 1.4 and 2.0 (`GL/glext.h`): separate blend functions and
+//! equations, and separate front/back stencil state.
+#![allow(non_snake_case)]
+
+use super::fragment::{blend_equation, blend_func, stencil_func, stencil_mask, stencil_op, Faces};
+use super::types::*;
+use super::with_ctx;
+
+/// glBlendFuncSeparate (GL 1.4).
+#[no_mangle]
+pub extern "C" fn glBlendFuncSeparate(
+    sfactorRGB: GLenum,
+    dfactorRGB: GLenum,
+    sfactorAlpha: GLenum,
+    dfactorAlpha: GLenum,
+) {
+    blend_func(sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha)
+}
+
+/// glBlendEquationSeparate (GL 2.0).
+#[no_mangle]
+pub extern "C" fn glBlendEquationSeparate(modeRGB: GLenum, modeAlpha: GLenum) {
+    blend_equation(modeRGB, modeAlpha)
+}
+
+fn faces_or_error(face: GLenum) -> Option<Faces> {
+    match Faces::from_gl(face) {
+        Ok(f) => Some(f),
+        Err(e) => {
+            with_ctx(|_| Err::<(), _>(e));
+            None
+        }
+    }
+}
+
+/// glStencilFuncSeparate (GL 2.0).
+#[no_mangle]
+pub extern "C" fn glStencilFuncSeparate(face: GLenum, func: GLenum, ref_: GLint, mask: GLuint) {
+    if let Some(f) = faces_or_error(face) {
+        stencil_func(f, func, ref_, mask)
+    }
+}
+
+/// glStencilOpSeparate (GL 2.0).
+#[no_mangle]
+pub extern "C" fn glStencilOpSeparate(face: GLenum, sfail: GLenum, dpfail: GLenum, dppass: GLenum) {
+    if let Some(f) = faces_or_error(face) {
+        stencil_op(f, sfail, dpfail, dppass)
+    }
+}
+
+/// glStencilMaskSeparate (GL 2.0).
+#[no_mangle]
+pub extern "C" fn glStencilMaskSeparate(face: GLenum, mask: GLuint) {
+    if let Some(f) = faces_or_error(face) {
+        stencil_mask(f, mask)
+    }
+}
