@@ -16,6 +16,7 @@
 //! that images are bit-identical: see `shared/docs/llvmpipe-rules.md`.
 
 pub mod context;
+pub mod cpu;
 pub mod draw;
 pub mod ffi;
 pub mod fixed_function;

@@ -1,6 +1,8 @@
 //! 8-bit fixed-point blending exactly as llvmpipe does it for unorm8 colour buffers
 //! (llvmpipe-rules §13): factors are 8-bit, `mul(a, b) = (t + (t >> 8) + 128) >> 8` with
 //! `t = a·b`, ADD saturates at 255, SUBTRACT clamps at 0, MIN/MAX ignore the factors.
+// Lane loops index several arrays in step; iterators would hide that.
+#![allow(clippy::needless_range_loop)]
 
 use super::BlendPlan;
 use crate::context::fragment_state::{BlendEquation, BlendFactor};
@@ -71,6 +73,102 @@ pub fn blend(p: &BlendPlan, s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
         d[3],
         factor(p.dst_a, s, d, k, 3),
     );
+    out
+}
+
+/// [`LANES`](super::span::LANES) pixels' channels, channel-major (`[channel][lane]`).
+pub type Lanes = [[u8; super::span::LANES]; 4];
+
+#[inline(always)]
+fn factor_lanes(
+    f: BlendFactor,
+    s: &Lanes,
+    d: &Lanes,
+    k: [u8; 4],
+    ch: usize,
+) -> [u8; super::span::LANES] {
+    let inv = |v: [u8; super::span::LANES]| v.map(|x| 255 - x);
+    match f {
+        BlendFactor::Zero => [0; super::span::LANES],
+        BlendFactor::One => [255; super::span::LANES],
+        BlendFactor::SrcColor => s[ch],
+        BlendFactor::OneMinusSrcColor => inv(s[ch]),
+        BlendFactor::DstColor => d[ch],
+        BlendFactor::OneMinusDstColor => inv(d[ch]),
+        BlendFactor::SrcAlpha => s[3],
+        BlendFactor::OneMinusSrcAlpha => inv(s[3]),
+        BlendFactor::DstAlpha => d[3],
+        BlendFactor::OneMinusDstAlpha => inv(d[3]),
+        BlendFactor::ConstantColor => [k[ch]; super::span::LANES],
+        BlendFactor::OneMinusConstantColor => [255 - k[ch]; super::span::LANES],
+        BlendFactor::ConstantAlpha => [k[3]; super::span::LANES],
+        BlendFactor::OneMinusConstantAlpha => [255 - k[3]; super::span::LANES],
+        BlendFactor::SrcAlphaSaturate => {
+            if ch == 3 {
+                [255; super::span::LANES]
+            } else {
+                let mut o = [0; super::span::LANES];
+                for i in 0..super::span::LANES {
+                    o[i] = s[3][i].min(255 - d[3][i]);
+                }
+                o
+            }
+        }
+    }
+}
+
+#[inline(always)]
+fn equation_lanes(
+    eq: BlendEquation,
+    s: &[u8; super::span::LANES],
+    sf: &[u8; super::span::LANES],
+    d: &[u8; super::span::LANES],
+    df: &[u8; super::span::LANES],
+) -> [u8; super::span::LANES] {
+    let mut o = [0u8; super::span::LANES];
+    match eq {
+        BlendEquation::Add => {
+            for i in 0..super::span::LANES {
+                o[i] = (mul8(s[i], sf[i]) as u16 + mul8(d[i], df[i]) as u16).min(255) as u8;
+            }
+        }
+        BlendEquation::Subtract => {
+            for i in 0..super::span::LANES {
+                o[i] = mul8(s[i], sf[i]).saturating_sub(mul8(d[i], df[i]));
+            }
+        }
+        BlendEquation::ReverseSubtract => {
+            for i in 0..super::span::LANES {
+                o[i] = mul8(d[i], df[i]).saturating_sub(mul8(s[i], sf[i]));
+            }
+        }
+        BlendEquation::Min => {
+            for i in 0..super::span::LANES {
+                o[i] = s[i].min(d[i]);
+            }
+        }
+        BlendEquation::Max => {
+            for i in 0..super::span::LANES {
+                o[i] = s[i].max(d[i]);
+            }
+        }
+    }
+    o
+}
+
+/// [`blend`] for a chunk of pixels, with every state branch outside the lane loops.
+#[inline(always)]
+pub fn blend_lanes(p: &BlendPlan, s: &Lanes, d: &Lanes) -> Lanes {
+    let k = p.color;
+    let mut out = [[0u8; super::span::LANES]; 4];
+    for ch in 0..3 {
+        let sf = factor_lanes(p.src_rgb, s, d, k, ch);
+        let df = factor_lanes(p.dst_rgb, s, d, k, ch);
+        out[ch] = equation_lanes(p.eq_rgb, &s[ch], &sf, &d[ch], &df);
+    }
+    let sf = factor_lanes(p.src_a, s, d, k, 3);
+    let df = factor_lanes(p.dst_a, s, d, k, 3);
+    out[3] = equation_lanes(p.eq_a, &s[3], &sf, &d[3], &df);
     out
 }
 

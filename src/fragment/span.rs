@@ -1,8 +1,11 @@
 //! The span shader: shades the covered pixels `x0..=x1` of one row, monomorphised over the
 //! multiply-add flavour and the plan's booleans so the per-pixel loop has no state branches.
+// Lane loops index several arrays in step; iterators would hide that.
+#![allow(clippy::needless_range_loop)]
 
+use super::blend::Lanes;
 use super::FragPlan;
-use crate::framebuffer::{float_to_ubyte, Framebuffer};
+use crate::framebuffer::{float_to_ubyte, DepthFormat, Framebuffer};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::stats::Stats;
 
@@ -37,7 +40,72 @@ pub fn eval<M: Madd>(p: &Plane, fx: f32, fy: f32) -> f32 {
     M::madd(p.dady, fy, M::madd(p.dadx, fx, p.a0))
 }
 
-/// Shades pixels `x0..=x1` of row `py` (y-down) of triangle `t`.
+/// Pixels shaded together: one AVX2 register of f32.
+pub const LANES: usize = 8;
+
+/// `round_half_even(v)` for 0 <= v < 2^23 as an integer, without a rounding instruction:
+/// adding 2^23 leaves the rounded value in the low mantissa bits (vectorises everywhere).
+#[inline(always)]
+fn round_small(v: f32) -> u32 {
+    (v + 8_388_608.0).to_bits() & 0x7F_FFFF
+}
+
+/// [`float_to_ubyte`] in a form the compiler vectorises: clamp (NaN → 0), scale, round.
+#[inline(always)]
+pub fn unorm8(c: f32) -> u8 {
+    let c = if c > 0.0 { c } else { 0.0 };
+    let c = if c < 1.0 { c } else { 1.0 };
+    round_small(c * 255.0) as u8
+}
+
+/// A clamped depth quantised as [`DepthFormat::quantize`] does, vectorisable.
+#[inline(always)]
+fn quantize_depth(format: DepthFormat, z: f32) -> u32 {
+    let z = if z > 0.0 { z } else { 0.0 };
+    let z = if z < 1.0 { z } else { 1.0 };
+    match format {
+        DepthFormat::Z24 => {
+            let q = z * 16_777_215.0f32;
+            if q < 8_388_608.0 {
+                round_small(q)
+            } else {
+                q as u32
+            }
+        }
+        _ => format.quantize(z),
+    }
+}
+
+/// The 8-bit colours of [`LANES`] pixels at `fx`, row `fy` (a function, not a closure, so
+/// that it inlines into the CPU-specific entry points).
+#[inline(always)]
+fn colors<M: Madd, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    fx: &[f32; LANES],
+    fy: f32,
+    flat_color: [u8; 4],
+) -> Lanes {
+    if FLAT {
+        return flat_color.map(|v| [v; LANES]);
+    }
+    let mut c = [[0u8; LANES]; 4];
+    let mut oow = [1f32; LANES];
+    if PERSP {
+        for i in 0..LANES {
+            oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
+        }
+    }
+    for ch in 0..4 {
+        let p = &t.vary[ch];
+        for i in 0..LANES {
+            let a = eval::<M>(p, fx[i], fy);
+            c[ch][i] = unorm8(if PERSP { a * oow[i] } else { a });
+        }
+    }
+    c
+}
+
+/// Shades pixels `x0..=x1` of row `py` (y-down) of triangle `t`, [`LANES`] at a time.
 ///
 /// `FULL` selects the general path (alpha test, stencil, blending, logic op, read from
 /// the plan at run time); without it only the depth test and the colour write run.
@@ -60,106 +128,152 @@ pub fn shade_span<
 ) {
     let w = fb.width;
     let fy = py as f32;
-    let depth_plan = plan.depth;
     let mask = plan.color_mask;
     let full_mask = mask == [true; 4];
+    let no_color = mask == [false; 4];
     let flat_color = [0, 1, 2, 3].map(|i| float_to_ubyte(t.flat[i]));
     let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
+    let store_plain =
+        fb.format.has_alpha() && !matches!(fb.format, crate::framebuffer::ColorFormat::Rgb565);
     stats.fragments += (x1 + 1 - x0) as u64;
-    for x in x0..=x1 {
-        let fx = x as f32;
-        let idx = py * w + x;
-        let color = || -> [u8; 4] {
-            if FLAT {
-                flat_color
-            } else {
-                let oow = if PERSP {
-                    1.0f32 / eval::<M>(&t.w, fx, fy)
-                } else {
-                    1.0
-                };
-                let mut c = [0u8; 4];
-                for (i, out) in c.iter_mut().enumerate() {
-                    let a = eval::<M>(&t.vary[i], fx, fy);
-                    *out = float_to_ubyte(if PERSP { a * oow } else { a });
-                }
-                c
-            }
-        };
-        let mut c = [0u8; 4];
+    let mut x = x0;
+    while x <= x1 {
+        let n = LANES.min(x1 + 1 - x);
+        let row = py * w + x;
+        let mut fx = [0f32; LANES];
+        for (i, f) in fx.iter_mut().enumerate() {
+            *f = (x + i) as f32;
+        }
+        let mut live = [false; LANES];
+        for (i, l) in live.iter_mut().enumerate() {
+            *l = i < n;
+        }
+        let mut c: Lanes = [[0u8; LANES]; 4];
         if FULL {
-            c = color();
+            c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
             if let Some((func, reference)) = plan.alpha {
-                if !func.test(c[3], reference) {
-                    stats.alpha_failed += 1;
-                    continue;
+                for i in 0..n {
+                    if live[i] && !func.test(c[3][i], reference) {
+                        live[i] = false;
+                        stats.alpha_failed += 1;
+                    }
                 }
             }
             if let Some(sp) = &stencil {
-                stats.stencil_reads += 1;
-                let s = fb.stencil[idx];
-                if !sp.test(s) {
-                    fb.stencil[idx] = sp.update(sp.fail, s);
-                    stats.stencil_failed += 1;
-                    continue;
+                for i in 0..n {
+                    if live[i] {
+                        stats.stencil_reads += 1;
+                        let s = fb.stencil[row + i];
+                        if !sp.test(s) {
+                            fb.stencil[row + i] = sp.update(sp.fail, s);
+                            live[i] = false;
+                            stats.stencil_failed += 1;
+                        }
+                    }
                 }
             }
         }
         if DEPTH {
-            let d = depth_plan.expect("DEPTH implies a depth plan");
-            let z = eval::<M>(&t.z, fx, fy);
-            let z = if z > 0.0 { z.min(1.0) } else { 0.0 };
-            let q = d.format.quantize(z);
-            stats.depth_reads += 1;
-            let stored = fb.depth[idx];
-            if !d.func.test(q, stored) {
-                stats.depth_failed += 1;
-                if FULL {
-                    if let Some(sp) = &stencil {
-                        let s = fb.stencil[idx];
-                        fb.stencil[idx] = sp.update(sp.zfail, s);
+            let d = plan.depth.expect("DEPTH implies a depth plan");
+            let mut q = [0u32; LANES];
+            for i in 0..LANES {
+                q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx[i], fy));
+            }
+            let dst = &mut fb.depth[row..row + n];
+            for i in 0..n {
+                if !live[i] {
+                    continue;
+                }
+                stats.depth_reads += 1;
+                if d.func.test(q[i], dst[i]) {
+                    if d.write {
+                        dst[i] = q[i];
+                    }
+                } else {
+                    live[i] = false;
+                    stats.depth_failed += 1;
+                    if FULL {
+                        if let Some(sp) = &stencil {
+                            let s = fb.stencil[row + i];
+                            fb.stencil[row + i] = sp.update(sp.zfail, s);
+                        }
                     }
                 }
-                continue;
-            }
-            if d.write {
-                fb.depth[idx] = q;
             }
         }
         if FULL {
             if let Some(sp) = &stencil {
-                let s = fb.stencil[idx];
-                fb.stencil[idx] = sp.update(sp.zpass, s);
-            }
-        } else {
-            c = color();
-        }
-        if mask == [false; 4] {
-            continue;
-        }
-        let mut stored = fb.store_rgba8(c);
-        if FULL && (plan.blend.is_some() || plan.logic.is_some()) {
-            stats.color_reads += 1;
-            let d = fb.color[idx];
-            let v = if let Some(b) = &plan.blend {
-                super::blend::blend(b, c, d)
-            } else if let Some(op) = plan.logic {
-                [0, 1, 2, 3].map(|i| op.apply(c[i], d[i]))
-            } else {
-                c
-            };
-            stored = fb.store_rgba8(v);
-        }
-        let dst = &mut fb.color[idx];
-        if full_mask {
-            *dst = stored;
-        } else {
-            for i in 0..4 {
-                if mask[i] {
-                    dst[i] = stored[i];
+                for i in 0..n {
+                    if live[i] {
+                        let s = fb.stencil[row + i];
+                        fb.stencil[row + i] = sp.update(sp.zpass, s);
+                    }
                 }
             }
         }
-        stats.color_writes += 1;
+        x += n;
+        if no_color || !live[..n].iter().any(|&l| l) {
+            continue;
+        }
+        if !FULL {
+            c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
+        }
+        let dst = &mut fb.color[row..row + n];
+        if FULL && (plan.blend.is_some() || plan.logic.is_some()) {
+            let mut d: Lanes = [[0u8; LANES]; 4];
+            for i in 0..n {
+                for k in 0..4 {
+                    d[k][i] = dst[i][k];
+                }
+            }
+            stats.color_reads += n as u64;
+            if let Some(b) = &plan.blend {
+                c = super::blend::blend_lanes(b, &c, &d);
+            } else if let Some(op) = plan.logic {
+                for k in 0..4 {
+                    for i in 0..LANES {
+                        c[k][i] = op.apply(c[k][i], d[k][i]);
+                    }
+                }
+            }
+        }
+        for i in 0..n {
+            if !live[i] {
+                continue;
+            }
+            let mut v = [c[0][i], c[1][i], c[2][i], c[3][i]];
+            if !store_plain {
+                v = store_rgba8(fb.format, v);
+            }
+            if full_mask {
+                dst[i] = v;
+            } else {
+                for k in 0..4 {
+                    if mask[k] {
+                        dst[i][k] = v[k];
+                    }
+                }
+            }
+            stats.color_writes += 1;
+        }
+    }
+}
+
+/// What a colour buffer of `format` stores for `c` (see [`Framebuffer::store_rgba8`]).
+#[inline(always)]
+fn store_rgba8(format: crate::framebuffer::ColorFormat, c: [u8; 4]) -> [u8; 4] {
+    use crate::framebuffer::ColorFormat;
+    match format {
+        ColorFormat::Rgb565 => {
+            let (r, g, b) = (c[0] >> 3, c[1] >> 2, c[2] >> 3);
+            [
+                (r << 3) | (r >> 2),
+                (g << 2) | (g >> 4),
+                (b << 3) | (b >> 2),
+                255,
+            ]
+        }
+        ColorFormat::Rgb => [c[0], c[1], c[2], 255],
+        _ => c,
     }
 }

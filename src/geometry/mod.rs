@@ -89,22 +89,7 @@ pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
 
 /// Whether this CPU fuses multiply-adds (then llvmpipe does too).
 pub fn cpu_has_fma() -> bool {
-    use std::sync::OnceLock;
-    static FMA: OnceLock<bool> = OnceLock::new();
-    *FMA.get_or_init(|| {
-        // SOFTGL_FMA=0 reproduces a reference run with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1.
-        if std::env::var("SOFTGL_FMA").is_ok_and(|v| v == "0") {
-            return false;
-        }
-        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-        {
-            std::arch::is_x86_feature_detected!("fma")
-        }
-        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
-        {
-            false
-        }
-    })
+    crate::cpu::isa().fused()
 }
 
 /// The clip mask of a clip-space position (strict tests: on the plane is inside).

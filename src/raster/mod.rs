@@ -2,7 +2,8 @@
 //! span from the integer edge functions (no per-pixel edge test), and hands spans to the
 //! fragment stage's span shader chosen once per triangle.
 
-use crate::fragment::span::{shade_span, Madd, Unfused};
+use crate::cpu::Isa;
+use crate::fragment::span::{shade_span, Fused, Madd, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::SetupTriangle;
@@ -27,29 +28,53 @@ pub fn raster_triangle(
         return;
     }
     stats.tris_rasterized += 1;
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-    if plan.fma {
-        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma).
-        unsafe { raster_fma(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats) };
-        return;
-    }
-    if plan.fma {
-        raster_rows::<crate::fragment::span::Fused>(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats);
-    } else {
-        raster_rows::<Unfused>(t, [x_lo, y_lo, x_hi, y_hi], plan, fb, stats);
+    let b = [x_lo, y_lo, x_hi, y_hi];
+    match crate::cpu::isa() {
+        // SAFETY (all three): `cpu::isa` only reports a variant whose features the CPU has.
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma => unsafe { tri_avx2_fma(t, b, plan, fb, stats) },
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2 => unsafe { tri_avx2(t, b, plan, fb, stats) },
+        #[cfg(target_arch = "x86_64")]
+        Isa::Fma => unsafe { tri_fma(t, b, plan, fb, stats) },
+        _ => raster_rows::<Unfused>(t, b, plan, fb, stats),
     }
 }
 
-#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-#[target_feature(enable = "fma")]
-unsafe fn raster_fma(
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn tri_avx2_fma(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<crate::fragment::span::Fused>(t, b, plan, fb, stats)
+    raster_rows::<Fused>(t, b, plan, fb, stats)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn tri_avx2(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    raster_rows::<Unfused>(t, b, plan, fb, stats)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn tri_fma(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    raster_rows::<Fused>(t, b, plan, fb, stats)
 }
 
 #[inline(always)]
@@ -133,20 +158,15 @@ pub fn shade_pixels(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-    if plan.fma {
-        // SAFETY: plan.fma is only true when the CPU reports FMA (geometry::cpu_has_fma).
-        unsafe { pixels_fma(t, pixels, plan, fb, stats) };
-        return;
-    }
-    if plan.fma {
-        pixels_any::<crate::fragment::span::Fused>(t, pixels, plan, fb, stats);
-    } else {
-        pixels_any::<Unfused>(t, pixels, plan, fb, stats);
+    match crate::cpu::isa() {
+        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma | Isa::Fma => unsafe { pixels_fma(t, pixels, plan, fb, stats) },
+        _ => pixels_any::<Unfused>(t, pixels, plan, fb, stats),
     }
 }
 
-#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
 unsafe fn pixels_fma(
     t: &SetupTriangle,
@@ -155,7 +175,7 @@ unsafe fn pixels_fma(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    pixels_any::<crate::fragment::span::Fused>(t, pixels, plan, fb, stats)
+    pixels_any::<Fused>(t, pixels, plan, fb, stats)
 }
 
 #[inline(always)]

@@ -1,0 +1,49 @@
+//! Which instruction set the hot loops are compiled for, chosen once at run time, and
+//! whether multiply-adds fuse (which must follow the host CPU to match llvmpipe).
+
+use std::sync::OnceLock;
+
+/// The code variant the rasterizer runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Isa {
+    /// AVX2 with fused multiply-add (llvmpipe fuses `fmuladd` on such CPUs).
+    Avx2Fma,
+    /// AVX2 without fusing (FMA absent or disabled with `SOFTGL_FMA=0`).
+    Avx2,
+    /// FMA without AVX2 (rare); fused, 128-bit.
+    Fma,
+    /// Baseline x86-64 (SSE2) or another architecture; not fused.
+    Base,
+}
+
+impl Isa {
+    /// Whether multiply-adds are fused in this variant.
+    pub fn fused(self) -> bool {
+        matches!(self, Isa::Avx2Fma | Isa::Fma)
+    }
+}
+
+/// The variant for this CPU. `SOFTGL_FMA=0` turns fusing off, to compare against a
+/// reference run with `GALLIUM_OVERRIDE_CPU_CAPS=sse4.1`.
+pub fn isa() -> Isa {
+    static ISA: OnceLock<Isa> = OnceLock::new();
+    *ISA.get_or_init(|| {
+        let no_fma = std::env::var("SOFTGL_FMA").is_ok_and(|v| v == "0");
+        #[cfg(target_arch = "x86_64")]
+        {
+            let avx2 = std::arch::is_x86_feature_detected!("avx2");
+            let fma = std::arch::is_x86_feature_detected!("fma") && !no_fma;
+            match (avx2, fma) {
+                (true, true) => Isa::Avx2Fma,
+                (true, false) => Isa::Avx2,
+                (false, true) => Isa::Fma,
+                (false, false) => Isa::Base,
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = no_fma;
+            Isa::Base
+        }
+    })
+}
