@@ -495,3 +495,35 @@ fn library_exports_every_declared_function() {
         missing.join("\n")
     );
 }
+
+#[test]
+fn declarations_are_compatible_with_mesas() {
+    // Redeclaring each of our prototypes and PFN typedefs after Mesa's headers is an error
+    // ("conflicting types") unless the C types agree exactly, const-ness included.
+    let mesa = ["/usr/include/GL/gl.h", "/usr/include/GL/osmesa.h"];
+    if !have("cc") || !mesa.iter().all(|h| Path::new(h).exists()) {
+        eprintln!("note: no `cc` or no Mesa headers; compatibility check skipped");
+        return;
+    }
+    let mut code = String::from("#define GL_GLEXT_PROTOTYPES\n");
+    for h in mesa {
+        code.push_str(&format!("#include \"{h}\"\n"));
+    }
+    let mut n = 0;
+    for h in generator::Header::ALL {
+        for line in read_header(h).lines() {
+            if line.starts_with("GLAPI ") || line.starts_with("typedef ") && line.contains("PFN") {
+                code.push_str(line);
+                code.push('\n');
+                n += 1;
+            }
+        }
+    }
+    let dir = scratch("mesa-compat");
+    let src = dir.join("compat.c");
+    std::fs::write(&src, &code).expect("write compat.c");
+    run(Command::new("cc")
+        .args(["-std=c11", "-fsyntax-only"])
+        .arg(&src));
+    assert!(n > 100, "only {n} declarations found");
+}

@@ -67,7 +67,13 @@ pub const SOURCES: &[(&str, Header)] = &[
 pub const NOT_IN_HEADERS: &[&str] = &["mod.rs", "proc_table.rs"];
 
 /// Typedefs of `types.rs` that Mesa declares in glext.h rather than gl.h.
-pub const GLEXT_TYPES: &[&str] = &["GLsizeiptr", "GLintptr", "GLchar"];
+pub const GLEXT_TYPES: &[&str] = &[
+    "GLsizeiptr",
+    "GLintptr",
+    "GLchar",
+    "GLsizeiptrARB",
+    "GLintptrARB",
+];
 
 /// The gl.h functions for which Mesa's gl.h declares a `PFNGL…PROC` typedef (its GL 1.2
 /// and 1.3 sections). Functions ending in `ARB` (GL_ARB_multitexture) get one as well.
