@@ -57,9 +57,11 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("arrays.rs", Header::Gl),
     ("draw.rs", Header::Gl),
     ("query.rs", Header::Gl),
+    ("fragment.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
+    ("fragment_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 
@@ -124,6 +126,9 @@ struct Proto {
 struct Fragment {
     /// `#define` name and value, in source order.
     defines: Vec<(String, String)>,
+    /// The feature section (`GL_ARB_shadow`) of each constant in the Rust source: a
+    /// constant `GL_<feature> = 1` opens one, the next plain `//` comment closes it.
+    sections: HashMap<String, String>,
     /// Typedef name and full line.
     typedefs: Vec<(String, String)>,
     /// Opaque struct declarations (`struct osmesa_context;`).
@@ -235,7 +240,10 @@ fn run_cbindgen(path: &Path) -> Result<Fragment, String> {
     bindings.write(&mut bytes);
     let text = String::from_utf8(bytes).map_err(|e| e.to_string())?;
     let literals = const_literals(&source);
-    let mut frag = Fragment::default();
+    let mut frag = Fragment {
+        sections: const_sections(&source),
+        ..Default::default()
+    };
     for line in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
         if let Some(rest) = line.strip_prefix("#define ") {
             let (name, value) = rest
@@ -296,6 +304,27 @@ fn const_literals(source: &str) -> Vec<(String, String)> {
             Some((name.trim().to_string(), value.trim().to_string()))
         })
         .collect()
+}
+
+/// Maps each one-line `pub const` to the feature section it is in (see
+/// [`Fragment::sections`]); constants outside any section are not listed.
+fn const_sections(source: &str) -> HashMap<String, String> {
+    let mut out = HashMap::new();
+    let mut current: Option<String> = None;
+    for line in source.lines().map(str::trim_start) {
+        if line.starts_with("//") && !line.starts_with("///") && !line.starts_with("//!") {
+            current = None;
+        }
+        if let Some((name, value)) = const_literals(line).pop() {
+            if is_feature_macro(&name) && value == "1" {
+                current = Some(name.clone());
+            }
+            if let Some(section) = &current {
+                out.insert(name, section.clone());
+            }
+        }
+    }
+    out
 }
 
 /// The value of a plain decimal or `0x` integer literal.
@@ -609,19 +638,21 @@ fn glext_h(files: &[(&str, &Fragment)], all: &HashMap<&str, Fragment>) -> Result
             continue;
         }
         let _ = writeln!(out, "/* Tokens: src/ffi/{file} */");
-        // One `#ifndef FEATURE` section per feature macro, as in Mesa's glext.h.
-        let mut open: Option<&str> = None;
+        // One `#ifndef FEATURE` section per feature of the Rust source, as in Mesa's glext.h.
+        let mut open: Option<&String> = None;
         for (n, v) in &f.defines {
-            if is_feature_macro(n) && v == "1" {
+            let section = f.sections.get(n);
+            if section != open {
                 if let Some(prev) = open {
                     let _ = writeln!(out, "#endif /* {prev} */\n");
                 }
-                let _ = writeln!(out, "#ifndef {n}\n{}", define(n, v));
-                open = Some(n);
-            } else {
-                out.push_str(&define(n, v));
-                out.push('\n');
+                if let Some(feature) = section {
+                    let _ = writeln!(out, "#ifndef {feature}");
+                }
+                open = section;
             }
+            out.push_str(&define(n, v));
+            out.push('\n');
         }
         if let Some(prev) = open {
             let _ = writeln!(out, "#endif /* {prev} */");
