@@ -867,7 +867,6 @@ GLAPI void GLAPIENTRY glDepthRange(GLclampd near_val, GLclampd far_val);
 GLAPI void GLAPIENTRY glDepthFunc(GLenum func);
 GLAPI void GLAPIENTRY glDepthMask(GLboolean flag);
 GLAPI void GLAPIENTRY glColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
-GLAPI void GLAPIENTRY glStencilMask(GLuint mask);
 GLAPI void GLAPIENTRY glShadeModel(GLenum mode);
 GLAPI void GLAPIENTRY glCullFace(GLenum mode);
 GLAPI void GLAPIENTRY glFrontFace(GLenum mode);
@@ -1000,6 +999,14 @@ GLAPI void GLAPIENTRY glNormal3f(GLfloat nx, GLfloat ny, GLfloat nz);
 GLAPI void GLAPIENTRY glNormal3fv(const GLfloat *v);
 GLAPI void GLAPIENTRY glNormal3d(GLdouble nx, GLdouble ny, GLdouble nz);
 GLAPI void GLAPIENTRY glNormal3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+GLAPI void GLAPIENTRY glRectsv(const GLshort *v1, const GLshort *v2);
+GLAPI void GLAPIENTRY glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
+GLAPI void GLAPIENTRY glRectiv(const GLint *v1, const GLint *v2);
+GLAPI void GLAPIENTRY glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
+GLAPI void GLAPIENTRY glRectfv(const GLfloat *v1, const GLfloat *v2);
+GLAPI void GLAPIENTRY glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
+GLAPI void GLAPIENTRY glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 /* Functions: src/ffi/arrays.rs */
 GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
@@ -1024,6 +1031,16 @@ GLAPI void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble *params);
 GLAPI const GLubyte *GLAPIENTRY glGetString(GLenum name);
 GLAPI void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params);
 GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid *pixels);
+
+/* Functions: src/ffi/fragment.rs */
+GLAPI void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor);
+GLAPI void GLAPIENTRY glBlendEquation(GLenum mode);
+GLAPI void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+GLAPI void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref);
+GLAPI void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask);
+GLAPI void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+GLAPI void GLAPIENTRY glStencilMask(GLuint mask);
+GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
 
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);

@@ -458,6 +458,16 @@ typedef ptrdiff_t GLintptr;
 #define GL_CLAMP_TO_EDGE_SGIS                    0x812F
 #endif /* GL_SGIS_texture_edge_clamp */
 
+#define GL_BLEND_EQUATION_RGB                    0x8009
+#define GL_STENCIL_BACK_FUNC                     0x8800
+#define GL_STENCIL_BACK_FAIL                     0x8801
+#define GL_STENCIL_BACK_PASS_DEPTH_FAIL          0x8802
+#define GL_STENCIL_BACK_PASS_DEPTH_PASS          0x8803
+#define GL_BLEND_EQUATION_ALPHA                  0x883D
+#define GL_STENCIL_BACK_REF                      0x8CA3
+#define GL_STENCIL_BACK_VALUE_MASK               0x8CA4
+#define GL_STENCIL_BACK_WRITEMASK                0x8CA5
+
 /* Function-pointer types: src/ffi/multidraw.rs */
 typedef void (APIENTRYP PFNGLMULTIDRAWARRAYSPROC) (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
 typedef void (APIENTRYP PFNGLMULTIDRAWELEMENTSPROC) (GLenum mode, const GLsizei *count, GLenum type, const GLvoid *const *indices, GLsizei drawcount);
@@ -474,6 +484,13 @@ typedef GLvoid *(APIENTRYP PFNGLMAPBUFFERPROC) (GLenum target, GLenum access);
 typedef GLboolean (APIENTRYP PFNGLUNMAPBUFFERPROC) (GLenum target);
 typedef void (APIENTRYP PFNGLGETBUFFERPARAMETERIVPROC) (GLenum target, GLenum pname, GLint *params);
 typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname, GLvoid **params);
+
+/* Function-pointer types: src/ffi/fragment_ext.rs */
+typedef void (APIENTRYP PFNGLBLENDFUNCSEPARATEPROC) (GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+typedef void (APIENTRYP PFNGLBLENDEQUATIONSEPARATEPROC) (GLenum modeRGB, GLenum modeAlpha);
+typedef void (APIENTRYP PFNGLSTENCILFUNCSEPARATEPROC) (GLenum face, GLenum func, GLint ref, GLuint mask);
+typedef void (APIENTRYP PFNGLSTENCILOPSEPARATEPROC) (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+typedef void (APIENTRYP PFNGLSTENCILMASKSEPARATEPROC) (GLenum face, GLuint mask);
 
 #ifdef GL_GLEXT_PROTOTYPES
 
@@ -493,6 +510,13 @@ GLAPI GLvoid *APIENTRY glMapBuffer (GLenum target, GLenum access);
 GLAPI GLboolean APIENTRY glUnmapBuffer (GLenum target);
 GLAPI void APIENTRY glGetBufferParameteriv (GLenum target, GLenum pname, GLint *params);
 GLAPI void APIENTRY glGetBufferPointerv (GLenum target, GLenum pname, GLvoid **params);
+
+/* Functions: src/ffi/fragment_ext.rs */
+GLAPI void APIENTRY glBlendFuncSeparate (GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+GLAPI void APIENTRY glBlendEquationSeparate (GLenum modeRGB, GLenum modeAlpha);
+GLAPI void APIENTRY glStencilFuncSeparate (GLenum face, GLenum func, GLint ref, GLuint mask);
+GLAPI void APIENTRY glStencilOpSeparate (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+GLAPI void APIENTRY glStencilMaskSeparate (GLenum face, GLuint mask);
 
 #endif /* GL_GLEXT_PROTOTYPES */
 
