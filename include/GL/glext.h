@@ -1,0 +1,527 @@
+/*
+ * GL/glext.h — OpenGL 1.4/1.5 and extensions
+ *
+ * softgl: a software OpenGL 1.5 implementation with Mesa's OSMesa API.
+ *
+ * GENERATED FILE, DO NOT EDIT. Produced by cbindgen from the files in src/ffi with
+ *   cargo run --example gen_headers
+ * (tests/headers.rs fails when this file is stale).
+ */
+
+#ifndef __gl_glext_h_
+#define __gl_glext_h_ 1
+/* The include guard of older Mesa glext.h versions. */
+#define __glext_h_ 1
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifndef APIENTRY
+#define APIENTRY
+#endif
+#ifndef APIENTRYP
+#define APIENTRYP APIENTRY *
+#endif
+#ifndef GLAPI
+#define GLAPI extern
+#endif
+
+/* Types: src/ffi/types.rs */
+typedef char GLchar;
+typedef ptrdiff_t GLsizeiptr;
+typedef ptrdiff_t GLintptr;
+
+/* Tokens: src/ffi/glext_enums.rs */
+#ifndef GL_VERSION_1_4
+#define GL_VERSION_1_4                           1
+#define GL_BLEND_DST_RGB                         0x80C8
+#define GL_BLEND_SRC_RGB                         0x80C9
+#define GL_BLEND_DST_ALPHA                       0x80CA
+#define GL_BLEND_SRC_ALPHA                       0x80CB
+#define GL_POINT_FADE_THRESHOLD_SIZE             0x8128
+#define GL_DEPTH_COMPONENT16                     0x81A5
+#define GL_DEPTH_COMPONENT24                     0x81A6
+#define GL_DEPTH_COMPONENT32                     0x81A7
+#define GL_MIRRORED_REPEAT                       0x8370
+#define GL_MAX_TEXTURE_LOD_BIAS                  0x84FD
+#define GL_TEXTURE_LOD_BIAS                      0x8501
+#define GL_INCR_WRAP                             0x8507
+#define GL_DECR_WRAP                             0x8508
+#define GL_TEXTURE_DEPTH_SIZE                    0x884A
+#define GL_TEXTURE_COMPARE_MODE                  0x884C
+#define GL_TEXTURE_COMPARE_FUNC                  0x884D
+#define GL_POINT_SIZE_MIN                        0x8126
+#define GL_POINT_SIZE_MAX                        0x8127
+#define GL_POINT_DISTANCE_ATTENUATION            0x8129
+#define GL_GENERATE_MIPMAP                       0x8191
+#define GL_GENERATE_MIPMAP_HINT                  0x8192
+#define GL_FOG_COORDINATE_SOURCE                 0x8450
+#define GL_FOG_COORDINATE                        0x8451
+#define GL_FRAGMENT_DEPTH                        0x8452
+#define GL_CURRENT_FOG_COORDINATE                0x8453
+#define GL_FOG_COORDINATE_ARRAY_TYPE             0x8454
+#define GL_FOG_COORDINATE_ARRAY_STRIDE           0x8455
+#define GL_FOG_COORDINATE_ARRAY_POINTER          0x8456
+#define GL_FOG_COORDINATE_ARRAY                  0x8457
+#define GL_COLOR_SUM                             0x8458
+#define GL_CURRENT_SECONDARY_COLOR               0x8459
+#define GL_SECONDARY_COLOR_ARRAY_SIZE            0x845A
+#define GL_SECONDARY_COLOR_ARRAY_TYPE            0x845B
+#define GL_SECONDARY_COLOR_ARRAY_STRIDE          0x845C
+#define GL_SECONDARY_COLOR_ARRAY_POINTER         0x845D
+#define GL_SECONDARY_COLOR_ARRAY                 0x845E
+#define GL_TEXTURE_FILTER_CONTROL                0x8500
+#define GL_DEPTH_TEXTURE_MODE                    0x884B
+#define GL_COMPARE_R_TO_TEXTURE                  0x884E
+#endif /* GL_VERSION_1_4 */
+
+#ifndef GL_VERSION_1_5
+#define GL_VERSION_1_5                           1
+#define GL_BUFFER_SIZE                           0x8764
+#define GL_BUFFER_USAGE                          0x8765
+#define GL_QUERY_COUNTER_BITS                    0x8864
+#define GL_CURRENT_QUERY                         0x8865
+#define GL_QUERY_RESULT                          0x8866
+#define GL_QUERY_RESULT_AVAILABLE                0x8867
+#define GL_ARRAY_BUFFER                          0x8892
+#define GL_ELEMENT_ARRAY_BUFFER                  0x8893
+#define GL_ARRAY_BUFFER_BINDING                  0x8894
+#define GL_ELEMENT_ARRAY_BUFFER_BINDING          0x8895
+#define GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING    0x889F
+#define GL_READ_ONLY                             0x88B8
+#define GL_WRITE_ONLY                            0x88B9
+#define GL_READ_WRITE                            0x88BA
+#define GL_BUFFER_ACCESS                         0x88BB
+#define GL_BUFFER_MAPPED                         0x88BC
+#define GL_BUFFER_MAP_POINTER                    0x88BD
+#define GL_STREAM_DRAW                           0x88E0
+#define GL_STREAM_READ                           0x88E1
+#define GL_STREAM_COPY                           0x88E2
+#define GL_STATIC_DRAW                           0x88E4
+#define GL_STATIC_READ                           0x88E5
+#define GL_STATIC_COPY                           0x88E6
+#define GL_DYNAMIC_DRAW                          0x88E8
+#define GL_DYNAMIC_READ                          0x88E9
+#define GL_DYNAMIC_COPY                          0x88EA
+#define GL_SAMPLES_PASSED                        0x8914
+#define GL_SRC1_ALPHA                            0x8589
+#define GL_VERTEX_ARRAY_BUFFER_BINDING           0x8896
+#define GL_NORMAL_ARRAY_BUFFER_BINDING           0x8897
+#define GL_COLOR_ARRAY_BUFFER_BINDING            0x8898
+#define GL_INDEX_ARRAY_BUFFER_BINDING            0x8899
+#define GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING    0x889A
+#define GL_EDGE_FLAG_ARRAY_BUFFER_BINDING        0x889B
+#define GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING  0x889C
+#define GL_FOG_COORDINATE_ARRAY_BUFFER_BINDING   0x889D
+#define GL_WEIGHT_ARRAY_BUFFER_BINDING           0x889E
+#define GL_FOG_COORD_SRC                         0x8450
+#define GL_FOG_COORD                             0x8451
+#define GL_CURRENT_FOG_COORD                     0x8453
+#define GL_FOG_COORD_ARRAY_TYPE                  0x8454
+#define GL_FOG_COORD_ARRAY_STRIDE                0x8455
+#define GL_FOG_COORD_ARRAY_POINTER               0x8456
+#define GL_FOG_COORD_ARRAY                       0x8457
+#define GL_FOG_COORD_ARRAY_BUFFER_BINDING        0x889D
+#define GL_SRC0_RGB                              0x8580
+#define GL_SRC1_RGB                              0x8581
+#define GL_SRC2_RGB                              0x8582
+#define GL_SRC0_ALPHA                            0x8588
+#define GL_SRC2_ALPHA                            0x858A
+#endif /* GL_VERSION_1_5 */
+
+#ifndef GL_ARB_depth_texture
+#define GL_ARB_depth_texture                     1
+#define GL_DEPTH_COMPONENT16_ARB                 0x81A5
+#define GL_DEPTH_COMPONENT24_ARB                 0x81A6
+#define GL_DEPTH_COMPONENT32_ARB                 0x81A7
+#define GL_TEXTURE_DEPTH_SIZE_ARB                0x884A
+#define GL_DEPTH_TEXTURE_MODE_ARB                0x884B
+#endif /* GL_ARB_depth_texture */
+
+#ifndef GL_ARB_occlusion_query
+#define GL_ARB_occlusion_query                   1
+#define GL_QUERY_COUNTER_BITS_ARB                0x8864
+#define GL_CURRENT_QUERY_ARB                     0x8865
+#define GL_QUERY_RESULT_ARB                      0x8866
+#define GL_QUERY_RESULT_AVAILABLE_ARB            0x8867
+#define GL_SAMPLES_PASSED_ARB                    0x8914
+#endif /* GL_ARB_occlusion_query */
+
+#ifndef GL_ARB_point_parameters
+#define GL_ARB_point_parameters                  1
+#define GL_POINT_SIZE_MIN_ARB                    0x8126
+#define GL_POINT_SIZE_MAX_ARB                    0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE_ARB         0x8128
+#define GL_POINT_DISTANCE_ATTENUATION_ARB        0x8129
+#endif /* GL_ARB_point_parameters */
+
+#ifndef GL_ARB_shadow
+#define GL_ARB_shadow                            1
+#define GL_TEXTURE_COMPARE_MODE_ARB              0x884C
+#define GL_TEXTURE_COMPARE_FUNC_ARB              0x884D
+#define GL_COMPARE_R_TO_TEXTURE_ARB              0x884E
+#endif /* GL_ARB_shadow */
+
+#ifndef GL_ARB_texture_border_clamp
+#define GL_ARB_texture_border_clamp              1
+#define GL_CLAMP_TO_BORDER_ARB                   0x812D
+#endif /* GL_ARB_texture_border_clamp */
+
+#ifndef GL_ARB_texture_cube_map
+#define GL_ARB_texture_cube_map                  1
+#define GL_NORMAL_MAP_ARB                        0x8511
+#define GL_REFLECTION_MAP_ARB                    0x8512
+#define GL_TEXTURE_CUBE_MAP_ARB                  0x8513
+#define GL_TEXTURE_BINDING_CUBE_MAP_ARB          0x8514
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_X_ARB       0x8515
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_X_ARB       0x8516
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_Y_ARB       0x8517
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_Y_ARB       0x8518
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_Z_ARB       0x8519
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_ARB       0x851A
+#define GL_PROXY_TEXTURE_CUBE_MAP_ARB            0x851B
+#define GL_MAX_CUBE_MAP_TEXTURE_SIZE_ARB         0x851C
+#endif /* GL_ARB_texture_cube_map */
+
+#ifndef GL_ARB_texture_env_add
+#define GL_ARB_texture_env_add                   1
+#endif /* GL_ARB_texture_env_add */
+
+#ifndef GL_ARB_texture_env_combine
+#define GL_ARB_texture_env_combine               1
+#define GL_COMBINE_ARB                           0x8570
+#define GL_COMBINE_RGB_ARB                       0x8571
+#define GL_COMBINE_ALPHA_ARB                     0x8572
+#define GL_SOURCE0_RGB_ARB                       0x8580
+#define GL_SOURCE1_RGB_ARB                       0x8581
+#define GL_SOURCE2_RGB_ARB                       0x8582
+#define GL_SOURCE0_ALPHA_ARB                     0x8588
+#define GL_SOURCE1_ALPHA_ARB                     0x8589
+#define GL_SOURCE2_ALPHA_ARB                     0x858A
+#define GL_OPERAND0_RGB_ARB                      0x8590
+#define GL_OPERAND1_RGB_ARB                      0x8591
+#define GL_OPERAND2_RGB_ARB                      0x8592
+#define GL_OPERAND0_ALPHA_ARB                    0x8598
+#define GL_OPERAND1_ALPHA_ARB                    0x8599
+#define GL_OPERAND2_ALPHA_ARB                    0x859A
+#define GL_RGB_SCALE_ARB                         0x8573
+#define GL_ADD_SIGNED_ARB                        0x8574
+#define GL_INTERPOLATE_ARB                       0x8575
+#define GL_SUBTRACT_ARB                          0x84E7
+#define GL_CONSTANT_ARB                          0x8576
+#define GL_PRIMARY_COLOR_ARB                     0x8577
+#define GL_PREVIOUS_ARB                          0x8578
+#endif /* GL_ARB_texture_env_combine */
+
+#ifndef GL_ARB_texture_env_crossbar
+#define GL_ARB_texture_env_crossbar              1
+#endif /* GL_ARB_texture_env_crossbar */
+
+#ifndef GL_ARB_texture_env_dot3
+#define GL_ARB_texture_env_dot3                  1
+#define GL_DOT3_RGB_ARB                          0x86AE
+#define GL_DOT3_RGBA_ARB                         0x86AF
+#endif /* GL_ARB_texture_env_dot3 */
+
+#ifndef GL_ARB_texture_mirrored_repeat
+#define GL_ARB_texture_mirrored_repeat           1
+#define GL_MIRRORED_REPEAT_ARB                   0x8370
+#endif /* GL_ARB_texture_mirrored_repeat */
+
+#ifndef GL_ARB_transpose_matrix
+#define GL_ARB_transpose_matrix                  1
+#define GL_TRANSPOSE_MODELVIEW_MATRIX_ARB        0x84E3
+#define GL_TRANSPOSE_PROJECTION_MATRIX_ARB       0x84E4
+#define GL_TRANSPOSE_TEXTURE_MATRIX_ARB          0x84E5
+#define GL_TRANSPOSE_COLOR_MATRIX_ARB            0x84E6
+#endif /* GL_ARB_transpose_matrix */
+
+#ifndef GL_ARB_vertex_buffer_object
+#define GL_ARB_vertex_buffer_object              1
+#define GL_BUFFER_SIZE_ARB                       0x8764
+#define GL_BUFFER_USAGE_ARB                      0x8765
+#define GL_ARRAY_BUFFER_ARB                      0x8892
+#define GL_ELEMENT_ARRAY_BUFFER_ARB              0x8893
+#define GL_ARRAY_BUFFER_BINDING_ARB              0x8894
+#define GL_ELEMENT_ARRAY_BUFFER_BINDING_ARB      0x8895
+#define GL_VERTEX_ARRAY_BUFFER_BINDING_ARB       0x8896
+#define GL_NORMAL_ARRAY_BUFFER_BINDING_ARB       0x8897
+#define GL_COLOR_ARRAY_BUFFER_BINDING_ARB        0x8898
+#define GL_INDEX_ARRAY_BUFFER_BINDING_ARB        0x8899
+#define GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING_ARB 0x889A
+#define GL_EDGE_FLAG_ARRAY_BUFFER_BINDING_ARB    0x889B
+#define GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING_ARB 0x889C
+#define GL_FOG_COORDINATE_ARRAY_BUFFER_BINDING_ARB 0x889D
+#define GL_WEIGHT_ARRAY_BUFFER_BINDING_ARB       0x889E
+#define GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING_ARB 0x889F
+#define GL_READ_ONLY_ARB                         0x88B8
+#define GL_WRITE_ONLY_ARB                        0x88B9
+#define GL_READ_WRITE_ARB                        0x88BA
+#define GL_BUFFER_ACCESS_ARB                     0x88BB
+#define GL_BUFFER_MAPPED_ARB                     0x88BC
+#define GL_BUFFER_MAP_POINTER_ARB                0x88BD
+#define GL_STREAM_DRAW_ARB                       0x88E0
+#define GL_STREAM_READ_ARB                       0x88E1
+#define GL_STREAM_COPY_ARB                       0x88E2
+#define GL_STATIC_DRAW_ARB                       0x88E4
+#define GL_STATIC_READ_ARB                       0x88E5
+#define GL_STATIC_COPY_ARB                       0x88E6
+#define GL_DYNAMIC_DRAW_ARB                      0x88E8
+#define GL_DYNAMIC_READ_ARB                      0x88E9
+#define GL_DYNAMIC_COPY_ARB                      0x88EA
+#endif /* GL_ARB_vertex_buffer_object */
+
+#ifndef GL_ARB_window_pos
+#define GL_ARB_window_pos                        1
+#endif /* GL_ARB_window_pos */
+
+#ifndef GL_EXT_abgr
+#define GL_EXT_abgr                              1
+#define GL_ABGR_EXT                              0x8000
+#endif /* GL_EXT_abgr */
+
+#ifndef GL_EXT_bgra
+#define GL_EXT_bgra                              1
+#define GL_BGR_EXT                               0x80E0
+#define GL_BGRA_EXT                              0x80E1
+#endif /* GL_EXT_bgra */
+
+#ifndef GL_EXT_blend_color
+#define GL_EXT_blend_color                       1
+#define GL_CONSTANT_COLOR_EXT                    0x8001
+#define GL_ONE_MINUS_CONSTANT_COLOR_EXT          0x8002
+#define GL_CONSTANT_ALPHA_EXT                    0x8003
+#define GL_ONE_MINUS_CONSTANT_ALPHA_EXT          0x8004
+#define GL_BLEND_COLOR_EXT                       0x8005
+#endif /* GL_EXT_blend_color */
+
+#ifndef GL_EXT_blend_func_separate
+#define GL_EXT_blend_func_separate               1
+#define GL_BLEND_DST_RGB_EXT                     0x80C8
+#define GL_BLEND_SRC_RGB_EXT                     0x80C9
+#define GL_BLEND_DST_ALPHA_EXT                   0x80CA
+#define GL_BLEND_SRC_ALPHA_EXT                   0x80CB
+#endif /* GL_EXT_blend_func_separate */
+
+#ifndef GL_EXT_blend_minmax
+#define GL_EXT_blend_minmax                      1
+#define GL_MIN_EXT                               0x8007
+#define GL_MAX_EXT                               0x8008
+#define GL_FUNC_ADD_EXT                          0x8006
+#define GL_BLEND_EQUATION_EXT                    0x8009
+#endif /* GL_EXT_blend_minmax */
+
+#ifndef GL_EXT_blend_subtract
+#define GL_EXT_blend_subtract                    1
+#define GL_FUNC_SUBTRACT_EXT                     0x800A
+#define GL_FUNC_REVERSE_SUBTRACT_EXT             0x800B
+#endif /* GL_EXT_blend_subtract */
+
+#ifndef GL_EXT_draw_range_elements
+#define GL_EXT_draw_range_elements               1
+#define GL_MAX_ELEMENTS_VERTICES_EXT             0x80E8
+#define GL_MAX_ELEMENTS_INDICES_EXT              0x80E9
+#endif /* GL_EXT_draw_range_elements */
+
+#ifndef GL_EXT_fog_coord
+#define GL_EXT_fog_coord                         1
+#define GL_FOG_COORDINATE_SOURCE_EXT             0x8450
+#define GL_FOG_COORDINATE_EXT                    0x8451
+#define GL_FRAGMENT_DEPTH_EXT                    0x8452
+#define GL_CURRENT_FOG_COORDINATE_EXT            0x8453
+#define GL_FOG_COORDINATE_ARRAY_TYPE_EXT         0x8454
+#define GL_FOG_COORDINATE_ARRAY_STRIDE_EXT       0x8455
+#define GL_FOG_COORDINATE_ARRAY_POINTER_EXT      0x8456
+#define GL_FOG_COORDINATE_ARRAY_EXT              0x8457
+#endif /* GL_EXT_fog_coord */
+
+#ifndef GL_EXT_multi_draw_arrays
+#define GL_EXT_multi_draw_arrays                 1
+#endif /* GL_EXT_multi_draw_arrays */
+
+#ifndef GL_EXT_packed_pixels
+#define GL_EXT_packed_pixels                     1
+#define GL_UNSIGNED_BYTE_3_3_2_EXT               0x8032
+#define GL_UNSIGNED_SHORT_4_4_4_4_EXT            0x8033
+#define GL_UNSIGNED_SHORT_5_5_5_1_EXT            0x8034
+#define GL_UNSIGNED_INT_8_8_8_8_EXT              0x8035
+#define GL_UNSIGNED_INT_10_10_10_2_EXT           0x8036
+#endif /* GL_EXT_packed_pixels */
+
+#ifndef GL_EXT_point_parameters
+#define GL_EXT_point_parameters                  1
+#define GL_POINT_SIZE_MIN_EXT                    0x8126
+#define GL_POINT_SIZE_MAX_EXT                    0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE_EXT         0x8128
+#define GL_DISTANCE_ATTENUATION_EXT              0x8129
+#endif /* GL_EXT_point_parameters */
+
+#ifndef GL_EXT_rescale_normal
+#define GL_EXT_rescale_normal                    1
+#define GL_RESCALE_NORMAL_EXT                    0x803A
+#endif /* GL_EXT_rescale_normal */
+
+#ifndef GL_EXT_secondary_color
+#define GL_EXT_secondary_color                   1
+#define GL_COLOR_SUM_EXT                         0x8458
+#define GL_CURRENT_SECONDARY_COLOR_EXT           0x8459
+#define GL_SECONDARY_COLOR_ARRAY_SIZE_EXT        0x845A
+#define GL_SECONDARY_COLOR_ARRAY_TYPE_EXT        0x845B
+#define GL_SECONDARY_COLOR_ARRAY_STRIDE_EXT      0x845C
+#define GL_SECONDARY_COLOR_ARRAY_POINTER_EXT     0x845D
+#define GL_SECONDARY_COLOR_ARRAY_EXT             0x845E
+#endif /* GL_EXT_secondary_color */
+
+#ifndef GL_EXT_separate_specular_color
+#define GL_EXT_separate_specular_color           1
+#define GL_LIGHT_MODEL_COLOR_CONTROL_EXT         0x81F8
+#define GL_SINGLE_COLOR_EXT                      0x81F9
+#define GL_SEPARATE_SPECULAR_COLOR_EXT           0x81FA
+#endif /* GL_EXT_separate_specular_color */
+
+#ifndef GL_EXT_stencil_wrap
+#define GL_EXT_stencil_wrap                      1
+#define GL_INCR_WRAP_EXT                         0x8507
+#define GL_DECR_WRAP_EXT                         0x8508
+#endif /* GL_EXT_stencil_wrap */
+
+#ifndef GL_EXT_texture3D
+#define GL_EXT_texture3D                         1
+#define GL_PACK_SKIP_IMAGES_EXT                  0x806B
+#define GL_PACK_IMAGE_HEIGHT_EXT                 0x806C
+#define GL_UNPACK_SKIP_IMAGES_EXT                0x806D
+#define GL_UNPACK_IMAGE_HEIGHT_EXT               0x806E
+#define GL_TEXTURE_3D_EXT                        0x806F
+#define GL_PROXY_TEXTURE_3D_EXT                  0x8070
+#define GL_TEXTURE_DEPTH_EXT                     0x8071
+#define GL_TEXTURE_WRAP_R_EXT                    0x8072
+#define GL_MAX_3D_TEXTURE_SIZE_EXT               0x8073
+#endif /* GL_EXT_texture3D */
+
+#ifndef GL_EXT_texture_env_add
+#define GL_EXT_texture_env_add                   1
+#endif /* GL_EXT_texture_env_add */
+
+#ifndef GL_EXT_texture_env_combine
+#define GL_EXT_texture_env_combine               1
+#define GL_COMBINE_EXT                           0x8570
+#define GL_COMBINE_RGB_EXT                       0x8571
+#define GL_COMBINE_ALPHA_EXT                     0x8572
+#define GL_RGB_SCALE_EXT                         0x8573
+#define GL_ADD_SIGNED_EXT                        0x8574
+#define GL_INTERPOLATE_EXT                       0x8575
+#define GL_CONSTANT_EXT                          0x8576
+#define GL_PRIMARY_COLOR_EXT                     0x8577
+#define GL_PREVIOUS_EXT                          0x8578
+#define GL_SOURCE0_RGB_EXT                       0x8580
+#define GL_SOURCE1_RGB_EXT                       0x8581
+#define GL_SOURCE2_RGB_EXT                       0x8582
+#define GL_SOURCE0_ALPHA_EXT                     0x8588
+#define GL_SOURCE1_ALPHA_EXT                     0x8589
+#define GL_SOURCE2_ALPHA_EXT                     0x858A
+#define GL_OPERAND0_RGB_EXT                      0x8590
+#define GL_OPERAND1_RGB_EXT                      0x8591
+#define GL_OPERAND2_RGB_EXT                      0x8592
+#define GL_OPERAND0_ALPHA_EXT                    0x8598
+#define GL_OPERAND1_ALPHA_EXT                    0x8599
+#define GL_OPERAND2_ALPHA_EXT                    0x859A
+#endif /* GL_EXT_texture_env_combine */
+
+#ifndef GL_EXT_texture_filter_anisotropic
+#define GL_EXT_texture_filter_anisotropic        1
+#define GL_TEXTURE_MAX_ANISOTROPY_EXT            0x84FE
+#define GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT        0x84FF
+#endif /* GL_EXT_texture_filter_anisotropic */
+
+#ifndef GL_EXT_texture_lod_bias
+#define GL_EXT_texture_lod_bias                  1
+#define GL_MAX_TEXTURE_LOD_BIAS_EXT              0x84FD
+#define GL_TEXTURE_FILTER_CONTROL_EXT            0x8500
+#define GL_TEXTURE_LOD_BIAS_EXT                  0x8501
+#endif /* GL_EXT_texture_lod_bias */
+
+#ifndef GL_NV_blend_square
+#define GL_NV_blend_square                       1
+#endif /* GL_NV_blend_square */
+
+#ifndef GL_SGIS_generate_mipmap
+#define GL_SGIS_generate_mipmap                  1
+#define GL_GENERATE_MIPMAP_SGIS                  0x8191
+#define GL_GENERATE_MIPMAP_HINT_SGIS             0x8192
+#endif /* GL_SGIS_generate_mipmap */
+
+#ifndef GL_SGIS_texture_edge_clamp
+#define GL_SGIS_texture_edge_clamp               1
+#define GL_CLAMP_TO_EDGE_SGIS                    0x812F
+#endif /* GL_SGIS_texture_edge_clamp */
+
+#define GL_BLEND_EQUATION_RGB                    0x8009
+#define GL_STENCIL_BACK_FUNC                     0x8800
+#define GL_STENCIL_BACK_FAIL                     0x8801
+#define GL_STENCIL_BACK_PASS_DEPTH_FAIL          0x8802
+#define GL_STENCIL_BACK_PASS_DEPTH_PASS          0x8803
+#define GL_BLEND_EQUATION_ALPHA                  0x883D
+#define GL_STENCIL_BACK_REF                      0x8CA3
+#define GL_STENCIL_BACK_VALUE_MASK               0x8CA4
+#define GL_STENCIL_BACK_WRITEMASK                0x8CA5
+
+/* Function-pointer types: src/ffi/multidraw.rs */
+typedef void (APIENTRYP PFNGLMULTIDRAWARRAYSPROC) (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
+typedef void (APIENTRYP PFNGLMULTIDRAWELEMENTSPROC) (GLenum mode, const GLsizei *count, GLenum type, const GLvoid *const *indices, GLsizei drawcount);
+
+/* Function-pointer types: src/ffi/buffers.rs */
+typedef void (APIENTRYP PFNGLGENBUFFERSPROC) (GLsizei n, GLuint *buffers);
+typedef void (APIENTRYP PFNGLDELETEBUFFERSPROC) (GLsizei n, const GLuint *buffers);
+typedef GLboolean (APIENTRYP PFNGLISBUFFERPROC) (GLuint buffer);
+typedef void (APIENTRYP PFNGLBINDBUFFERPROC) (GLenum target, GLuint buffer);
+typedef void (APIENTRYP PFNGLBUFFERDATAPROC) (GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
+typedef void (APIENTRYP PFNGLBUFFERSUBDATAPROC) (GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+typedef void (APIENTRYP PFNGLGETBUFFERSUBDATAPROC) (GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
+typedef GLvoid *(APIENTRYP PFNGLMAPBUFFERPROC) (GLenum target, GLenum access);
+typedef GLboolean (APIENTRYP PFNGLUNMAPBUFFERPROC) (GLenum target);
+typedef void (APIENTRYP PFNGLGETBUFFERPARAMETERIVPROC) (GLenum target, GLenum pname, GLint *params);
+typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname, GLvoid **params);
+
+/* Function-pointer types: src/ffi/fragment_ext.rs */
+typedef void (APIENTRYP PFNGLBLENDFUNCSEPARATEPROC) (GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+typedef void (APIENTRYP PFNGLBLENDEQUATIONSEPARATEPROC) (GLenum modeRGB, GLenum modeAlpha);
+typedef void (APIENTRYP PFNGLSTENCILFUNCSEPARATEPROC) (GLenum face, GLenum func, GLint ref, GLuint mask);
+typedef void (APIENTRYP PFNGLSTENCILOPSEPARATEPROC) (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+typedef void (APIENTRYP PFNGLSTENCILMASKSEPARATEPROC) (GLenum face, GLuint mask);
+
+#ifdef GL_GLEXT_PROTOTYPES
+
+/* Functions: src/ffi/multidraw.rs */
+GLAPI void APIENTRY glMultiDrawArrays (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
+GLAPI void APIENTRY glMultiDrawElements (GLenum mode, const GLsizei *count, GLenum type, const GLvoid *const *indices, GLsizei drawcount);
+
+/* Functions: src/ffi/buffers.rs */
+GLAPI void APIENTRY glGenBuffers (GLsizei n, GLuint *buffers);
+GLAPI void APIENTRY glDeleteBuffers (GLsizei n, const GLuint *buffers);
+GLAPI GLboolean APIENTRY glIsBuffer (GLuint buffer);
+GLAPI void APIENTRY glBindBuffer (GLenum target, GLuint buffer);
+GLAPI void APIENTRY glBufferData (GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
+GLAPI void APIENTRY glBufferSubData (GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+GLAPI void APIENTRY glGetBufferSubData (GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
+GLAPI GLvoid *APIENTRY glMapBuffer (GLenum target, GLenum access);
+GLAPI GLboolean APIENTRY glUnmapBuffer (GLenum target);
+GLAPI void APIENTRY glGetBufferParameteriv (GLenum target, GLenum pname, GLint *params);
+GLAPI void APIENTRY glGetBufferPointerv (GLenum target, GLenum pname, GLvoid **params);
+
+/* Functions: src/ffi/fragment_ext.rs */
+GLAPI void APIENTRY glBlendFuncSeparate (GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+GLAPI void APIENTRY glBlendEquationSeparate (GLenum modeRGB, GLenum modeAlpha);
+GLAPI void APIENTRY glStencilFuncSeparate (GLenum face, GLenum func, GLint ref, GLuint mask);
+GLAPI void APIENTRY glStencilOpSeparate (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+GLAPI void APIENTRY glStencilMaskSeparate (GLenum face, GLuint mask);
+
+#endif /* GL_GLEXT_PROTOTYPES */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* __gl_glext_h_ */
