@@ -77,6 +77,13 @@ const SCENES: &[&str] = &[
     "errors",
     "quad_diagonal",
     "get_state",
+    "blend_over",
+    "blend_premultiplied",
+    "blend_equations",
+    "blend_factors",
+    "blend_separate",
+    "alpha_test",
+    "stencil_portal",
 ];
 
 macro_rules! scene_tests {
@@ -111,6 +118,13 @@ scene_tests!(
     errors,
     quad_diagonal,
     get_state,
+    blend_over,
+    blend_premultiplied,
+    blend_equations,
+    blend_factors,
+    blend_separate,
+    alpha_test,
+    stencil_portal,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
