@@ -84,6 +84,9 @@ const SCENES: &[&str] = &[
     "blend_separate",
     "alpha_test",
     "stencil_portal",
+    "stencil_ops",
+    "scissor_mask",
+    "logic_ops",
 ];
 
 macro_rules! scene_tests {
@@ -125,6 +128,9 @@ scene_tests!(
     blend_separate,
     alpha_test,
     stencil_portal,
+    stencil_ops,
+    scissor_mask,
+    logic_ops,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
