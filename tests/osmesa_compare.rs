@@ -87,6 +87,10 @@ const SCENES: &[&str] = &[
     "stencil_ops",
     "scissor_mask",
     "logic_ops",
+    "blend_bgra",
+    "blend_rgb",
+    "blend_40_quads",
+    "depth_stencil_interplay",
 ];
 
 macro_rules! scene_tests {
@@ -131,6 +135,10 @@ scene_tests!(
     stencil_ops,
     scissor_mask,
     logic_ops,
+    blend_bgra,
+    blend_rgb,
+    blend_40_quads,
+    depth_stencil_interplay,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
