@@ -91,6 +91,7 @@ const SCENES: &[&str] = &[
     "blend_rgb",
     "blend_40_quads",
     "depth_stencil_interplay",
+    "fragment_state",
 ];
 
 macro_rules! scene_tests {
@@ -139,6 +140,7 @@ scene_tests!(
     blend_rgb,
     blend_40_quads,
     depth_stencil_interplay,
+    fragment_state,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
