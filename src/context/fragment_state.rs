@@ -220,11 +220,12 @@ impl Default for StencilFace {
         StencilFace {
             func: CompareFunc::Always,
             reference: 0,
-            value_mask: !0,
+            // Mesa starts both masks at the 8-bit buffer's all-ones, 0xFF.
+            value_mask: 0xFF,
             fail: StencilOp::Keep,
             zfail: StencilOp::Keep,
             zpass: StencilOp::Keep,
-            writemask: !0,
+            writemask: 0xFF,
         }
     }
 }

@@ -16,6 +16,8 @@ pub enum Kind {
     Bool,
     /// Integers or enums.
     Int,
+    /// Unsigned integers (stencil masks): glGetIntegerv clamps them to INT_MAX.
+    UInt,
     /// Floats (rounded to the nearest integer for glGetIntegerv).
     Float,
     /// Normalised floats (colours, normals, depth values): scaled for glGetIntegerv.
@@ -51,6 +53,7 @@ impl Value {
     pub fn as_ints(&self) -> impl Iterator<Item = i32> + '_ {
         self.vals[..self.len].iter().map(move |&v| match self.kind {
             Kind::Bool | Kind::Int => v as i32,
+            Kind::UInt => v.min(i32::MAX as f64) as i32,
             Kind::Float => {
                 let r = if v >= 0.0 {
                     (v + 0.5).floor()
@@ -74,6 +77,9 @@ fn b(v: bool) -> Value {
 fn i(v: &[i64]) -> Value {
     let f: Vec<f64> = v.iter().map(|&x| x as f64).collect();
     Value::new(Kind::Int, &f)
+}
+fn u(v: u32) -> Value {
+    Value::new(Kind::UInt, &[v as f64])
 }
 fn e(v: u32) -> Value {
     Value::new(Kind::Int, &[v as f64])
@@ -153,15 +159,15 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_LOGIC_OP_MODE => e(st.frag.logic_op.to_gl()),
         GL_STENCIL_FUNC => e(st.frag.stencil_front.func.to_gl()),
         GL_STENCIL_REF => i(&[st.frag.stencil_front.reference.clamp(0, stencil_max) as i64]),
-        GL_STENCIL_VALUE_MASK => i(&[st.frag.stencil_front.value_mask as i32 as i64]),
-        GL_STENCIL_WRITEMASK => i(&[st.frag.stencil_front.writemask as i32 as i64]),
+        GL_STENCIL_VALUE_MASK => u(st.frag.stencil_front.value_mask),
+        GL_STENCIL_WRITEMASK => u(st.frag.stencil_front.writemask),
         GL_STENCIL_FAIL => e(st.frag.stencil_front.fail.to_gl()),
         GL_STENCIL_PASS_DEPTH_FAIL => e(st.frag.stencil_front.zfail.to_gl()),
         GL_STENCIL_PASS_DEPTH_PASS => e(st.frag.stencil_front.zpass.to_gl()),
         GL_STENCIL_BACK_FUNC => e(st.frag.stencil_back.func.to_gl()),
         GL_STENCIL_BACK_REF => i(&[st.frag.stencil_back.reference.clamp(0, stencil_max) as i64]),
-        GL_STENCIL_BACK_VALUE_MASK => i(&[st.frag.stencil_back.value_mask as i32 as i64]),
-        GL_STENCIL_BACK_WRITEMASK => i(&[st.frag.stencil_back.writemask as i32 as i64]),
+        GL_STENCIL_BACK_VALUE_MASK => u(st.frag.stencil_back.value_mask),
+        GL_STENCIL_BACK_WRITEMASK => u(st.frag.stencil_back.writemask),
         GL_STENCIL_BACK_FAIL => e(st.frag.stencil_back.fail.to_gl()),
         GL_STENCIL_BACK_PASS_DEPTH_FAIL => e(st.frag.stencil_back.zfail.to_gl()),
         GL_STENCIL_BACK_PASS_DEPTH_PASS => e(st.frag.stencil_back.zpass.to_gl()),

@@ -56,3 +56,32 @@ pub extern "C" fn glStencilMaskSeparate(face: GLenum, mask: GLuint) {
         stencil_mask(f, mask)
     }
 }
+
+/// glBlendFuncSeparateEXT (GL_EXT_blend_func_separate alias).
+#[no_mangle]
+pub extern "C" fn glBlendFuncSeparateEXT(
+    sfactorRGB: GLenum,
+    dfactorRGB: GLenum,
+    sfactorAlpha: GLenum,
+    dfactorAlpha: GLenum,
+) {
+    blend_func(sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha)
+}
+
+/// glBlendEquationSeparateEXT (GL_EXT_blend_equation_separate alias).
+#[no_mangle]
+pub extern "C" fn glBlendEquationSeparateEXT(modeRGB: GLenum, modeAlpha: GLenum) {
+    blend_equation(modeRGB, modeAlpha)
+}
+
+/// glBlendEquationEXT (GL_EXT_blend_minmax alias).
+#[no_mangle]
+pub extern "C" fn glBlendEquationEXT(mode: GLenum) {
+    blend_equation(mode, mode)
+}
+
+/// glBlendColorEXT (GL_EXT_blend_color alias).
+#[no_mangle]
+pub extern "C" fn glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
+    super::fragment::glBlendColor(red, green, blue, alpha)
+}

@@ -80,8 +80,13 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
     })
 }
 
-/// The extensions that work, as GL_EXTENSIONS lists them.
-pub const EXTENSIONS: &str = "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
+/// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
+pub const EXTENSIONS: &str = concat!(
+    "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_blend_color ",
+    "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate ",
+    "GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements ",
+    "GL_EXT_multi_draw_arrays GL_EXT_stencil_wrap GL_NV_blend_square\0"
+);
 
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list.
 #[no_mangle]
@@ -90,11 +95,7 @@ pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
         GL_VENDOR => b"softgl\0",
         GL_RENDERER => b"softgl software rasterizer\0",
         GL_VERSION => concat!("1.5 softgl ", env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
-        GL_EXTENSIONS => concat!(
-            "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays",
-            "\0"
-        )
-        .as_bytes(),
+        GL_EXTENSIONS => EXTENSIONS.as_bytes(),
         _ => {
             with_ctx(|_| Err::<(), _>(GlError::InvalidEnum));
             return std::ptr::null();

@@ -43,8 +43,9 @@ pub fn eval<M: Madd>(p: &Plane, fx: f32, fy: f32) -> f32 {
 /// Pixels shaded together: one AVX2 register of f32.
 pub const LANES: usize = 8;
 
-/// `round_half_even(v)` for 0 <= v < 2^23 as an integer, without a rounding instruction:
-/// adding 2^23 leaves the rounded value in the low mantissa bits (vectorises everywhere).
+/// `round_half_even(v)` for 0 <= v < 2^23 - 1 as an integer, without a rounding
+/// instruction: adding 2^23 leaves the rounded value in the low mantissa bits (vectorises
+/// everywhere). Only for values whose rounding cannot reach 2^23.
 #[inline(always)]
 fn round_small(v: f32) -> u32 {
     (v + 8_388_608.0).to_bits() & 0x7F_FFFF
@@ -65,12 +66,15 @@ fn quantize_depth(format: DepthFormat, z: f32) -> u32 {
     let z = if z < 1.0 { z } else { 1.0 };
     match format {
         DepthFormat::Z24 => {
+            // Below 2^23, adding and subtracting 2^23 rounds half to even (and may give
+            // exactly 2^23); above it every f32 is already an integer.
             let q = z * 16_777_215.0f32;
-            if q < 8_388_608.0 {
-                round_small(q)
+            let r = if q < 8_388_608.0 {
+                (q + 8_388_608.0) - 8_388_608.0
             } else {
-                q as u32
-            }
+                q
+            };
+            r as u32
         }
         _ => format.quantize(z),
     }
@@ -275,5 +279,33 @@ fn store_rgba8(format: crate::framebuffer::ColorFormat, c: [u8; 4]) -> [u8; 4] {
         }
         ColorFormat::Rgb => [c[0], c[1], c[2], 255],
         _ => c,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vector_conversions_match_scalar_rules() {
+        let mut z = 0.0f32;
+        while z <= 1.0 {
+            assert_eq!(
+                quantize_depth(DepthFormat::Z24, z),
+                DepthFormat::Z24.quantize(z),
+                "z = {z}"
+            );
+            assert_eq!(unorm8(z), float_to_ubyte(z), "c = {z}");
+            z += 1.0 / 8191.0;
+        }
+        for z in [0.5f32, 0.25, 0.75, 1.0, 0.0, 0.499_999_97, 0.500_000_06] {
+            assert_eq!(
+                quantize_depth(DepthFormat::Z24, z),
+                DepthFormat::Z24.quantize(z),
+                "z = {z}"
+            );
+        }
+        assert_eq!(unorm8(f32::NAN), 0);
+        assert_eq!(quantize_depth(DepthFormat::Z24, f32::NAN), 0);
     }
 }
