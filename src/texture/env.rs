@@ -434,8 +434,8 @@ impl Combine {
             out[3] = v;
         }
         if shift {
-            for c in 0..3 {
-                out[c] = sat(out[c] * self.scale_rgb);
+            for o in out.iter_mut().take(3) {
+                *o = sat(*o * self.scale_rgb);
             }
             out[3] = sat(out[3] * self.scale_a);
         }

@@ -321,6 +321,8 @@ pub struct TextureState {
     pub units: [TexUnit; MAX_TEXTURE_UNITS],
     /// The next name glGenTextures tries.
     pub next_name: u32,
+    /// The proxy textures (GL_PROXY_TEXTURE_1D/2D): level sizes only, no texels.
+    pub proxies: [TextureObject; 2],
 }
 
 impl Default for TextureState {
@@ -333,6 +335,10 @@ impl Default for TextureState {
             ],
             units: std::array::from_fn(|_| TexUnit::default()),
             next_name: 1,
+            proxies: [
+                TextureObject::new(Some(Target::Tex1D)),
+                TextureObject::new(Some(Target::Tex2D)),
+            ],
         }
     }
 }

@@ -9,6 +9,7 @@
 //! - packed fields of fewer than 8 bits: bit replication (`EXTEND_NORMALIZED_INT`), which is
 //!   also what llvmpipe samples from a 565/4444/5551 texture; 10-bit fields round down as
 //!   the 16-bit rule does.
+//!
 //! The client colour is first expanded to RGBA (missing colour 0, missing alpha 1, L to
 //! R=G=B), then reduced to the base internal format (L and I take R), then stored after the
 //! base-format swizzle (see the module root).
@@ -441,7 +442,7 @@ mod tests {
             alignment: 4,
             ..Default::default()
         };
-        let mut data = vec![0u8; 24];
+        let mut data = [0u8; 24];
         for (i, b) in data.iter_mut().enumerate() {
             *b = i as u8;
         }
