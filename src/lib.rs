@@ -25,3 +25,4 @@ pub mod framebuffer;
 pub mod geometry;
 pub mod raster;
 pub mod stats;
+pub mod texture;

@@ -58,6 +58,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("draw.rs", Header::Gl),
     ("query.rs", Header::Gl),
     ("fragment.rs", Header::Gl),
+    ("textures.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),

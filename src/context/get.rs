@@ -246,6 +246,13 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_COLOR_ARRAY_BUFFER_BINDING => i(&[a.color.buffer as i64]),
         GL_NORMAL_ARRAY_BUFFER_BINDING => i(&[a.normal.buffer as i64]),
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => i(&[tc.buffer as i64]),
+        // texturing (per active unit)
+        GL_TEXTURE_BINDING_1D => i(&[c.textures.units[st.active_texture].bound[0] as i64]),
+        GL_TEXTURE_BINDING_2D => i(&[c.textures.units[st.active_texture].bound[1] as i64]),
+        GL_TEXTURE_1D => b(c.textures.units[st.active_texture].enabled_1d),
+        GL_TEXTURE_2D => b(c.textures.units[st.active_texture].enabled_2d),
+        GL_MAX_TEXTURE_LOD_BIAS => f(&[crate::texture::MAX_LOD_BIAS]),
+        GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => f(&[crate::texture::MAX_ANISOTROPY]),
         _ => match Cap::from_gl(pname) {
             Ok(cap) => b(st.caps.get(cap)),
             Err(_) => return Err(GlError::InvalidEnum),

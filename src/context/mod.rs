@@ -91,6 +91,8 @@ pub struct Context {
     pub target: UserTarget,
     /// The copy OSMesaGetDepthBuffer hands out, refreshed at each flush once requested.
     pub depth_copy: Option<Vec<u8>>,
+    /// Texture objects and texture units.
+    pub textures: crate::texture::TextureState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -138,6 +140,7 @@ impl Context {
             stats: Stats::default(),
             target: UserTarget::default(),
             depth_copy: None,
+            textures: crate::texture::TextureState::default(),
         }
     }
 
@@ -249,6 +252,13 @@ impl Context {
     pub fn set_cap(&mut self, cap: Cap, on: bool) -> GlResult<()> {
         self.check_outside_begin()?;
         self.state.caps.set(cap, on);
+        // GL_TEXTURE_1D/2D are per texture unit; `state.caps` mirrors the active unit.
+        let unit = &mut self.textures.units[self.state.active_texture];
+        match cap {
+            Cap::Texture1D => unit.enabled_1d = on,
+            Cap::Texture2D => unit.enabled_2d = on,
+            _ => {}
+        }
         Ok(())
     }
 

@@ -23,6 +23,7 @@ pub mod osmesa;
 pub mod proc_table;
 pub mod query;
 pub mod state;
+pub mod textures;
 pub mod types;
 
 use crate::context::{Context, GlError, GlResult};

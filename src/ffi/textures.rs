@@ -1,0 +1,1536 @@
+//! Texture calls (GL 1.1–1.3): objects, images, parameters, environment, texture units and
+//! glMultiTexCoord*. Every function validates all arguments before changing any state.
+//!
+//! Borders: Mesa's gallium front end strips texture borders (`StripTextureBorder`), and so
+//! do we: border 1 is accepted and the outer ring of texels is dropped; other borders are
+//! GL_INVALID_VALUE.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::glext_enums::*;
+use super::types::*;
+use super::{non_negative, with_ctx, with_ctx_raw};
+use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
+use crate::context::{Context, GlError, GlResult};
+use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
+use crate::texture::upload::{self, ClientFormat, Layout};
+use crate::texture::{
+    mipmap, BaseFormat, Filter, Level, MipFilter, Target, TextureObject, Wrap, MAX_ANISOTROPY,
+    MAX_LEVELS, MAX_TEXTURE_SIZE,
+};
+use libc::c_void;
+
+/// (target, is proxy) of a texture-image target.
+fn image_target(target: GLenum) -> GlResult<(Target, bool)> {
+    Ok(match target {
+        GL_TEXTURE_1D => (Target::Tex1D, false),
+        GL_TEXTURE_2D => (Target::Tex2D, false),
+        GL_PROXY_TEXTURE_1D => (Target::Tex1D, true),
+        GL_PROXY_TEXTURE_2D => (Target::Tex2D, true),
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// A bindable target.
+fn bind_target(target: GLenum) -> GlResult<Target> {
+    match image_target(target)? {
+        (t, false) => Ok(t),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+fn check_level(level: GLint) -> GlResult<usize> {
+    if level < 0 || level as usize >= MAX_LEVELS {
+        Err(GlError::InvalidValue)
+    } else {
+        Ok(level as usize)
+    }
+}
+
+fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObject {
+    if proxy {
+        &mut c.textures.proxies[target.index()]
+    } else {
+        let unit = c.state.active_texture;
+        c.textures.bound_mut(unit, target)
+    }
+}
+
+fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
+    if proxy {
+        &c.textures.proxies[target.index()]
+    } else {
+        c.textures.bound(c.state.active_texture, target)
+    }
+}
+
+/// Regenerates the mipmaps after the base level changed, if GL_GENERATE_MIPMAP is set.
+fn maybe_generate(obj: &mut TextureObject, level: usize) {
+    let p = obj.params;
+    if p.generate_mipmap && p.base_level >= 0 && level == p.base_level as usize {
+        mipmap::generate(&mut obj.levels, level, p.max_level.max(0) as usize);
+    }
+}
+
+/// Validated sizes of a glTexImage/glCopyTexImage: (width, height) after border stripping,
+/// or `None` when a proxy query should answer "does not fit".
+fn image_size(
+    target: Target,
+    level: usize,
+    w: GLsizei,
+    h: GLsizei,
+    border: GLint,
+) -> GlResult<Option<(usize, usize)>> {
+    if border != 0 && border != 1 {
+        return Err(GlError::InvalidValue);
+    }
+    let h = if target == Target::Tex1D {
+        1 + 2 * border
+    } else {
+        h
+    };
+    let (w, h) = (non_negative(w)?, non_negative(h)?);
+    let b = 2 * border as usize;
+    if w < b || h < b {
+        return Err(GlError::InvalidValue);
+    }
+    let max = (MAX_TEXTURE_SIZE >> level).max(1);
+    let (w, h) = (w - b, if target == Target::Tex1D { 1 } else { h - b });
+    if w > max || h > max {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(Some((w, h)))
+}
+
+#[allow(clippy::too_many_arguments)]
+unsafe fn tex_image(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    internal: GLint,
+    w: GLsizei,
+    h: GLsizei,
+    border: GLint,
+    format: GLenum,
+    ty: GLenum,
+    data: *const c_void,
+    dims: u8,
+) -> GlResult<()> {
+    let (t, proxy) = image_target(target)?;
+    if (t == Target::Tex1D) != (dims == 1) {
+        return Err(GlError::InvalidEnum);
+    }
+    let cf = ClientFormat::new(format, ty)?;
+    let level = check_level(level)?;
+    let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
+    c.check_outside_begin()?;
+    let size = image_size(t, level, w, h, border);
+    if proxy {
+        let obj = object_mut(c, t, true);
+        obj.levels[level] = match size {
+            Ok(Some((w, h))) => Some(Level {
+                width: w,
+                height: h,
+                internal_format: internal as u32,
+                base,
+                texels: Vec::new(),
+            }),
+            _ => None,
+        };
+        return Ok(());
+    }
+    let Some((tw, th)) = size? else {
+        return Ok(());
+    };
+    // Border stripping: skip the first border pixel and row of the client image.
+    let mut ps = c.state.unpack;
+    let (fw, _fh) = (tw + 2 * border as usize, th + 2 * border as usize);
+    if border == 1 {
+        if ps.row_length == 0 {
+            ps.row_length = fw as i32;
+        }
+        ps.skip_pixels += 1;
+        if t == Target::Tex2D {
+            ps.skip_rows += 1;
+        }
+    }
+    // SAFETY: GL's contract: `data` (when not null) holds the described image.
+    let texels = unsafe { upload::unpack(&ps, &cf, base, tw, th, data as *const u8) };
+    let obj = object_mut(c, t, false);
+    obj.levels[level] = Some(Level {
+        width: tw,
+        height: th,
+        internal_format: internal as u32,
+        base,
+        texels,
+    });
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)]
+unsafe fn tex_sub_image(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    xoff: GLint,
+    yoff: GLint,
+    w: GLsizei,
+    h: GLsizei,
+    format: GLenum,
+    ty: GLenum,
+    data: *const c_void,
+    dims: u8,
+) -> GlResult<()> {
+    let t = bind_target(target)?;
+    if (t == Target::Tex1D) != (dims == 1) {
+        return Err(GlError::InvalidEnum);
+    }
+    let cf = ClientFormat::new(format, ty)?;
+    let level = check_level(level)?;
+    let (w, h) = (non_negative(w)?, non_negative(h)?);
+    c.check_outside_begin()?;
+    let ps = c.state.unpack;
+    let obj = object_mut(c, t, false);
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
+    let yoff = if dims == 1 { 0 } else { yoff };
+    if xoff < 0 || yoff < 0 || xoff as usize + w > img.width || yoff as usize + h > img.height {
+        return Err(GlError::InvalidValue);
+    }
+    // SAFETY: GL's contract: `data` holds the described image.
+    let texels = unsafe { upload::unpack(&ps, &cf, img.base, w, h, data as *const u8) };
+    for y in 0..h {
+        let dst = (yoff as usize + y) * img.width + xoff as usize;
+        img.texels[dst..dst + w].copy_from_slice(&texels[y * w..(y + 1) * w]);
+    }
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+/// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
+fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
+    let mut out = vec![[0u8; 4]; w * h];
+    let Some(fb) = c.fb.as_ref() else { return out };
+    for row in 0..h {
+        let gy = y as i64 + row as i64;
+        if gy < 0 || gy >= fb.height as i64 {
+            continue;
+        }
+        let fy = fb.height - 1 - gy as usize;
+        for col in 0..w {
+            let gx = x as i64 + col as i64;
+            if gx < 0 || gx >= fb.width as i64 {
+                continue;
+            }
+            out[row * w + col] = fb.color[fy * fb.width + gx as usize];
+        }
+    }
+    out
+}
+
+#[allow(clippy::too_many_arguments)]
+fn copy_tex_image(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    internal: GLenum,
+    x: GLint,
+    y: GLint,
+    w: GLsizei,
+    h: GLsizei,
+    border: GLint,
+    dims: u8,
+) -> GlResult<()> {
+    let t = bind_target(target)?;
+    if (t == Target::Tex1D) != (dims == 1) {
+        return Err(GlError::InvalidEnum);
+    }
+    let level = check_level(level)?;
+    let base = upload::base_format(internal as i32).ok_or(GlError::InvalidValue)?;
+    let Some((tw, th)) = image_size(t, level, w, h, border)? else {
+        return Ok(());
+    };
+    c.check_outside_begin()?;
+    let b = border;
+    let src = read_fb(c, x + b, y + if dims == 2 { b } else { 0 }, tw, th);
+    let texels = src.into_iter().map(|p| upload::to_texel(base, p)).collect();
+    let obj = object_mut(c, t, false);
+    obj.levels[level] = Some(Level {
+        width: tw,
+        height: th,
+        internal_format: internal,
+        base,
+        texels,
+    });
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn copy_tex_sub_image(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    xoff: GLint,
+    yoff: GLint,
+    x: GLint,
+    y: GLint,
+    w: GLsizei,
+    h: GLsizei,
+    dims: u8,
+) -> GlResult<()> {
+    let t = bind_target(target)?;
+    if (t == Target::Tex1D) != (dims == 1) {
+        return Err(GlError::InvalidEnum);
+    }
+    let level = check_level(level)?;
+    let (w, h) = (non_negative(w)?, non_negative(h)?);
+    c.check_outside_begin()?;
+    let src = read_fb(c, x, y, w, h);
+    let obj = object_mut(c, t, false);
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
+    if xoff < 0 || yoff < 0 || xoff as usize + w > img.width || yoff as usize + h > img.height {
+        return Err(GlError::InvalidValue);
+    }
+    for row in 0..h {
+        for col in 0..w {
+            let d = (yoff as usize + row) * img.width + xoff as usize + col;
+            img.texels[d] = upload::to_texel(img.base, src[row * w + col]);
+        }
+    }
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+/// glGenTextures.
+///
+/// # Safety
+/// `textures` must be writable for `n` names.
+#[no_mangle]
+pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
+    with_ctx(|c| {
+        let n = non_negative(n)?;
+        c.check_outside_begin()?;
+        if textures.is_null() {
+            return Ok(());
+        }
+        for (i, name) in c.textures.gen(n).into_iter().enumerate() {
+            // SAFETY: the caller promises room for n names.
+            unsafe { *textures.add(i) = name };
+        }
+        Ok(())
+    })
+}
+
+/// glDeleteTextures (bindings of deleted names revert to 0).
+///
+/// # Safety
+/// `textures` must be readable for `n` names.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
+    with_ctx(|c| {
+        let n = non_negative(n)?;
+        c.check_outside_begin()?;
+        if textures.is_null() {
+            return Ok(());
+        }
+        // SAFETY: the caller promises n readable names.
+        let names = unsafe { std::slice::from_raw_parts(textures, n) };
+        c.textures.delete(names);
+        Ok(())
+    })
+}
+
+/// glBindTexture (a name first bound to another target: GL_INVALID_OPERATION).
+#[no_mangle]
+pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
+    with_ctx(|c| {
+        let t = bind_target(target)?;
+        c.check_outside_begin()?;
+        let unit = c.state.active_texture;
+        c.textures.bind(unit, t, texture)
+    })
+}
+
+/// glIsTexture.
+#[no_mangle]
+pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        Ok(c.textures.is_texture(texture) as GLboolean)
+    })
+}
+
+/// glTexImage1D.
+///
+/// # Safety
+/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexImage1D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLint,
+    width: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        tex_image(
+            c,
+            target,
+            level,
+            internalformat,
+            width,
+            1,
+            border,
+            format,
+            type_,
+            pixels,
+            1,
+        )
+    })
+}
+
+/// glTexImage2D.
+///
+/// # Safety
+/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexImage2D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        tex_image(
+            c,
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            format,
+            type_,
+            pixels,
+            2,
+        )
+    })
+}
+
+/// glTexSubImage1D.
+///
+/// # Safety
+/// `pixels` must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage1D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    width: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        tex_sub_image(
+            c, target, level, xoffset, 0, width, 1, format, type_, pixels, 1,
+        )
+    })
+}
+
+/// glTexSubImage2D.
+///
+/// # Safety
+/// `pixels` must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage2D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        tex_sub_image(
+            c, target, level, xoffset, yoffset, width, height, format, type_, pixels, 2,
+        )
+    })
+}
+
+/// glCopyTexImage1D.
+#[no_mangle]
+pub extern "C" fn glCopyTexImage1D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    border: GLint,
+) {
+    with_ctx(|c| copy_tex_image(c, target, level, internalformat, x, y, width, 1, border, 1))
+}
+
+/// glCopyTexImage2D.
+#[no_mangle]
+pub extern "C" fn glCopyTexImage2D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    border: GLint,
+) {
+    with_ctx(|c| {
+        copy_tex_image(
+            c,
+            target,
+            level,
+            internalformat,
+            x,
+            y,
+            width,
+            height,
+            border,
+            2,
+        )
+    })
+}
+
+/// glCopyTexSubImage1D.
+#[no_mangle]
+pub extern "C" fn glCopyTexSubImage1D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+) {
+    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, 0, x, y, width, 1, 1))
+}
+
+/// glCopyTexSubImage2D.
+#[no_mangle]
+pub extern "C" fn glCopyTexSubImage2D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, yoffset, x, y, width, height, 2))
+}
+
+/// glGetTexImage.
+///
+/// # Safety
+/// `pixels` must be writable for the packed image of the level.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexImage(
+    target: GLenum,
+    level: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *mut GLvoid,
+) {
+    with_ctx(|c| {
+        let t = bind_target(target)?;
+        let level = check_level(level)?;
+        let cf = ClientFormat::new(format, type_)?;
+        c.check_outside_begin()?;
+        let ps = c.state.pack;
+        let Some(img) = object(c, t, false).level(level) else {
+            return Ok(());
+        };
+        let _ = Layout::new(&ps, img.width, &cf);
+        // SAFETY: the caller promises room for the packed image.
+        unsafe { upload::pack(&ps, &cf, img, pixels as *mut u8) };
+        Ok(())
+    })
+}
+
+fn wrap_from_gl(v: u32) -> GlResult<Wrap> {
+    Ok(match v {
+        GL_REPEAT => Wrap::Repeat,
+        GL_CLAMP => Wrap::Clamp,
+        GL_CLAMP_TO_EDGE => Wrap::ClampToEdge,
+        GL_CLAMP_TO_BORDER => Wrap::ClampToBorder,
+        GL_MIRRORED_REPEAT => Wrap::MirroredRepeat,
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+fn wrap_to_gl(w: Wrap) -> u32 {
+    match w {
+        Wrap::Repeat => GL_REPEAT,
+        Wrap::Clamp => GL_CLAMP,
+        Wrap::ClampToEdge => GL_CLAMP_TO_EDGE,
+        Wrap::ClampToBorder => GL_CLAMP_TO_BORDER,
+        Wrap::MirroredRepeat => GL_MIRRORED_REPEAT,
+    }
+}
+
+fn min_filter_to_gl(f: Filter, m: MipFilter) -> u32 {
+    match (f, m) {
+        (Filter::Nearest, MipFilter::None) => GL_NEAREST,
+        (Filter::Linear, MipFilter::None) => GL_LINEAR,
+        (Filter::Nearest, MipFilter::Nearest) => GL_NEAREST_MIPMAP_NEAREST,
+        (Filter::Linear, MipFilter::Nearest) => GL_LINEAR_MIPMAP_NEAREST,
+        (Filter::Nearest, MipFilter::Linear) => GL_NEAREST_MIPMAP_LINEAR,
+        (Filter::Linear, MipFilter::Linear) => GL_LINEAR_MIPMAP_LINEAR,
+    }
+}
+
+/// glTexParameter*: `v` holds the values as floats; `ints` says they came from an integer
+/// call (GL_TEXTURE_BORDER_COLOR is then normalised).
+fn tex_parameter(
+    c: &mut Context,
+    target: GLenum,
+    pname: GLenum,
+    v: &[f64],
+    ints: bool,
+) -> GlResult<()> {
+    let t = bind_target(target)?;
+    let mut p = object(c, t, false).params;
+    let e = v[0] as i64 as u32;
+    match pname {
+        GL_TEXTURE_MIN_FILTER => {
+            (p.min_filter, p.mip_filter) = match e {
+                GL_NEAREST => (Filter::Nearest, MipFilter::None),
+                GL_LINEAR => (Filter::Linear, MipFilter::None),
+                GL_NEAREST_MIPMAP_NEAREST => (Filter::Nearest, MipFilter::Nearest),
+                GL_LINEAR_MIPMAP_NEAREST => (Filter::Linear, MipFilter::Nearest),
+                GL_NEAREST_MIPMAP_LINEAR => (Filter::Nearest, MipFilter::Linear),
+                GL_LINEAR_MIPMAP_LINEAR => (Filter::Linear, MipFilter::Linear),
+                _ => return Err(GlError::InvalidEnum),
+            }
+        }
+        GL_TEXTURE_MAG_FILTER => {
+            p.mag_filter = match e {
+                GL_NEAREST => Filter::Nearest,
+                GL_LINEAR => Filter::Linear,
+                _ => return Err(GlError::InvalidEnum),
+            }
+        }
+        GL_TEXTURE_WRAP_S => p.wrap_s = wrap_from_gl(e)?,
+        GL_TEXTURE_WRAP_T => p.wrap_t = wrap_from_gl(e)?,
+        GL_TEXTURE_WRAP_R => {
+            wrap_from_gl(e)?;
+        }
+        GL_TEXTURE_BORDER_COLOR => {
+            if v.len() < 4 {
+                return Err(GlError::InvalidEnum);
+            }
+            p.border_color = std::array::from_fn(|i| {
+                let x = if ints {
+                    (2.0 * v[i] + 1.0) / 4294967295.0
+                } else {
+                    v[i]
+                };
+                crate::context::clamp01(x) as f32
+            });
+        }
+        GL_TEXTURE_MIN_LOD => p.min_lod = v[0] as f32,
+        GL_TEXTURE_MAX_LOD => p.max_lod = v[0] as f32,
+        GL_TEXTURE_BASE_LEVEL => {
+            if v[0] < 0.0 {
+                return Err(GlError::InvalidValue);
+            }
+            p.base_level = v[0] as i32;
+        }
+        GL_TEXTURE_MAX_LEVEL => {
+            if v[0] < 0.0 {
+                return Err(GlError::InvalidValue);
+            }
+            p.max_level = v[0] as i32;
+        }
+        GL_TEXTURE_LOD_BIAS => p.lod_bias = v[0] as f32,
+        GL_GENERATE_MIPMAP => p.generate_mipmap = v[0] != 0.0,
+        GL_TEXTURE_MAX_ANISOTROPY_EXT => {
+            if v[0] < 1.0 {
+                return Err(GlError::InvalidValue);
+            }
+            p.max_anisotropy = (v[0] as f32).min(MAX_ANISOTROPY);
+        }
+        GL_TEXTURE_PRIORITY => p.priority = crate::context::clamp01(v[0]) as f32,
+        _ => return Err(GlError::InvalidEnum),
+    }
+    c.check_outside_begin()?;
+    object_mut(c, t, false).params = p;
+    Ok(())
+}
+
+fn get_tex_parameter(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
+    let t = bind_target(target)?;
+    c.check_outside_begin()?;
+    let p = &object(c, t, false).params;
+    let one = |x: f64| Ok((vec![x], false));
+    match pname {
+        GL_TEXTURE_MIN_FILTER => one(min_filter_to_gl(p.min_filter, p.mip_filter) as f64),
+        GL_TEXTURE_MAG_FILTER => one(match p.mag_filter {
+            Filter::Nearest => GL_NEAREST,
+            Filter::Linear => GL_LINEAR,
+        } as f64),
+        GL_TEXTURE_WRAP_S => one(wrap_to_gl(p.wrap_s) as f64),
+        GL_TEXTURE_WRAP_T => one(wrap_to_gl(p.wrap_t) as f64),
+        GL_TEXTURE_BORDER_COLOR => Ok((p.border_color.map(|x| x as f64).to_vec(), true)),
+        GL_TEXTURE_MIN_LOD => one(p.min_lod as f64),
+        GL_TEXTURE_MAX_LOD => one(p.max_lod as f64),
+        GL_TEXTURE_BASE_LEVEL => one(p.base_level as f64),
+        GL_TEXTURE_MAX_LEVEL => one(p.max_level as f64),
+        GL_TEXTURE_LOD_BIAS => one(p.lod_bias as f64),
+        GL_GENERATE_MIPMAP => one(p.generate_mipmap as u8 as f64),
+        GL_TEXTURE_MAX_ANISOTROPY_EXT => one(p.max_anisotropy as f64),
+        GL_TEXTURE_PRIORITY => one(p.priority as f64),
+        GL_TEXTURE_RESIDENT => one(1.0),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+fn get_level_parameter(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    pname: GLenum,
+) -> GlResult<f64> {
+    let (t, proxy) = image_target(target)?;
+    let level = check_level(level)?;
+    c.check_outside_begin()?;
+    let img = object(c, t, proxy).level(level);
+    let has =
+        |bases: &[BaseFormat]| img.is_some_and(|i| bases.contains(&i.base)) as u8 as f64 * 8.0;
+    use BaseFormat as B;
+    Ok(match pname {
+        GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,
+        GL_TEXTURE_HEIGHT => img.map_or(0, |i| i.height) as f64,
+        GL_TEXTURE_DEPTH => img.map_or(0, |_| 1) as f64,
+        GL_TEXTURE_BORDER => 0.0,
+        GL_TEXTURE_INTERNAL_FORMAT => img.map_or(1, |i| i.internal_format) as f64,
+        GL_TEXTURE_RED_SIZE | GL_TEXTURE_GREEN_SIZE | GL_TEXTURE_BLUE_SIZE => {
+            has(&[B::Rgb, B::Rgba])
+        }
+        GL_TEXTURE_ALPHA_SIZE => has(&[B::Alpha, B::LuminanceAlpha, B::Rgba]),
+        GL_TEXTURE_LUMINANCE_SIZE => has(&[B::Luminance, B::LuminanceAlpha]),
+        GL_TEXTURE_INTENSITY_SIZE => has(&[B::Intensity]),
+        GL_TEXTURE_COMPRESSED => 0.0,
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// glTexParameterf.
+#[no_mangle]
+pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_ctx(|c| {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            return Err(GlError::InvalidEnum);
+        }
+        tex_parameter(c, target, pname, &[param as f64], false)
+    })
+}
+
+/// glTexParameteri.
+#[no_mangle]
+pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    with_ctx(|c| {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            return Err(GlError::InvalidEnum);
+        }
+        tex_parameter(c, target, pname, &[param as f64], true)
+    })
+}
+
+/// glTexParameterfv.
+///
+/// # Safety
+/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
+#[no_mangle]
+pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_ctx(|c| {
+        if params.is_null() {
+            return Ok(());
+        }
+        let n = if pname == GL_TEXTURE_BORDER_COLOR {
+            4
+        } else {
+            1
+        };
+        // SAFETY: the caller promises n readable values.
+        let v = unsafe { std::slice::from_raw_parts(params, n) };
+        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+        tex_parameter(c, target, pname, &v, false)
+    })
+}
+
+/// glTexParameteriv.
+///
+/// # Safety
+/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
+#[no_mangle]
+pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_ctx(|c| {
+        if params.is_null() {
+            return Ok(());
+        }
+        let n = if pname == GL_TEXTURE_BORDER_COLOR {
+            4
+        } else {
+            1
+        };
+        // SAFETY: the caller promises n readable values.
+        let v = unsafe { std::slice::from_raw_parts(params, n) };
+        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+        tex_parameter(c, target, pname, &v, true)
+    })
+}
+
+/// glGetTexParameterfv.
+///
+/// # Safety
+/// `params` must be writable for the parameter's values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_ctx(|c| {
+        let (v, _) = get_tex_parameter(c, target, pname)?;
+        if !params.is_null() {
+            for (i, x) in v.iter().enumerate() {
+                // SAFETY: the caller promises room for the values.
+                unsafe { *params.add(i) = *x as f32 };
+            }
+        }
+        Ok(())
+    })
+}
+
+/// glGetTexParameteriv.
+///
+/// # Safety
+/// `params` must be writable for the parameter's values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_ctx(|c| {
+        let (v, normalized) = get_tex_parameter(c, target, pname)?;
+        if !params.is_null() {
+            for (i, x) in v.iter().enumerate() {
+                let iv = if normalized {
+                    (x * 2147483647.0).round() as i32
+                } else {
+                    x.round() as i32
+                };
+                // SAFETY: the caller promises room for the values.
+                unsafe { *params.add(i) = iv };
+            }
+        }
+        Ok(())
+    })
+}
+
+/// glGetTexLevelParameterfv.
+///
+/// # Safety
+/// `params` must be writable.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameterfv(
+    target: GLenum,
+    level: GLint,
+    pname: GLenum,
+    params: *mut GLfloat,
+) {
+    with_ctx(|c| {
+        let v = get_level_parameter(c, target, level, pname)?;
+        if !params.is_null() {
+            // SAFETY: the caller promises a writable value.
+            unsafe { *params = v as f32 };
+        }
+        Ok(())
+    })
+}
+
+/// glGetTexLevelParameteriv.
+///
+/// # Safety
+/// `params` must be writable.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameteriv(
+    target: GLenum,
+    level: GLint,
+    pname: GLenum,
+    params: *mut GLint,
+) {
+    with_ctx(|c| {
+        let v = get_level_parameter(c, target, level, pname)?;
+        if !params.is_null() {
+            // SAFETY: the caller promises a writable value.
+            unsafe { *params = v as i32 };
+        }
+        Ok(())
+    })
+}
+
+fn scale_from(v: f64) -> GlResult<f32> {
+    if v == 1.0 || v == 2.0 || v == 4.0 {
+        Ok(v as f32)
+    } else {
+        Err(GlError::InvalidValue)
+    }
+}
+
+/// glTexEnv*: `v` holds the values (4 for GL_TEXTURE_ENV_COLOR); `ints` normalises colours.
+fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool) -> GlResult<()> {
+    let unit = c.state.active_texture;
+    match target {
+        GL_TEXTURE_FILTER_CONTROL => {
+            if pname != GL_TEXTURE_LOD_BIAS {
+                return Err(GlError::InvalidEnum);
+            }
+            c.check_outside_begin()?;
+            c.textures.units[unit].lod_bias = v[0] as f32;
+            return Ok(());
+        }
+        GL_TEXTURE_ENV => {}
+        _ => return Err(GlError::InvalidEnum),
+    }
+    let mut env = c.textures.units[unit].env;
+    let e = v[0] as i64 as u32;
+    let idx = |base: u32| (pname - base) as usize;
+    match pname {
+        GL_TEXTURE_ENV_MODE => env.mode = EnvMode::from_gl(e).ok_or(GlError::InvalidEnum)?,
+        GL_TEXTURE_ENV_COLOR => {
+            if v.len() < 4 {
+                return Err(GlError::InvalidEnum);
+            }
+            env.color = std::array::from_fn(|i| {
+                let x = if ints {
+                    (2.0 * v[i] + 1.0) / 4294967295.0
+                } else {
+                    v[i]
+                };
+                crate::context::clamp01(x) as f32
+            });
+        }
+        GL_COMBINE_RGB => {
+            env.combine_rgb = CombineFn::from_gl(e, true).ok_or(GlError::InvalidEnum)?
+        }
+        GL_COMBINE_ALPHA => {
+            env.combine_alpha = CombineFn::from_gl(e, false).ok_or(GlError::InvalidEnum)?
+        }
+        GL_SOURCE0_RGB..=GL_SOURCE2_RGB => {
+            env.source_rgb[idx(GL_SOURCE0_RGB)] =
+                Source::from_gl(e, MAX_TEXTURE_UNITS).ok_or(GlError::InvalidEnum)?
+        }
+        GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA => {
+            env.source_alpha[idx(GL_SOURCE0_ALPHA)] =
+                Source::from_gl(e, MAX_TEXTURE_UNITS).ok_or(GlError::InvalidEnum)?
+        }
+        GL_OPERAND0_RGB..=GL_OPERAND2_RGB => {
+            env.operand_rgb[idx(GL_OPERAND0_RGB)] =
+                Operand::from_gl(e, false).ok_or(GlError::InvalidEnum)?
+        }
+        GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA => {
+            env.operand_alpha[idx(GL_OPERAND0_ALPHA)] =
+                Operand::from_gl(e, true).ok_or(GlError::InvalidEnum)?
+        }
+        GL_RGB_SCALE => env.rgb_scale = scale_from(v[0])?,
+        GL_ALPHA_SCALE => env.alpha_scale = scale_from(v[0])?,
+        _ => return Err(GlError::InvalidEnum),
+    }
+    c.check_outside_begin()?;
+    c.textures.units[unit].env = env;
+    Ok(())
+}
+
+fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
+    c.check_outside_begin()?;
+    let u = &c.textures.units[c.state.active_texture];
+    let one = |x: u32| Ok((vec![x as f64], false));
+    match target {
+        GL_TEXTURE_FILTER_CONTROL if pname == GL_TEXTURE_LOD_BIAS => {
+            return Ok((vec![u.lod_bias as f64], false))
+        }
+        GL_TEXTURE_ENV => {}
+        _ => return Err(GlError::InvalidEnum),
+    }
+    let env = &u.env;
+    let idx = |base: u32| (pname - base) as usize;
+    match pname {
+        GL_TEXTURE_ENV_MODE => one(env.mode.to_gl()),
+        GL_TEXTURE_ENV_COLOR => Ok((env.color.map(|x| x as f64).to_vec(), true)),
+        GL_COMBINE_RGB => one(env.combine_rgb.to_gl()),
+        GL_COMBINE_ALPHA => one(env.combine_alpha.to_gl()),
+        GL_SOURCE0_RGB..=GL_SOURCE2_RGB => one(env.source_rgb[idx(GL_SOURCE0_RGB)].to_gl()),
+        GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA => one(env.source_alpha[idx(GL_SOURCE0_ALPHA)].to_gl()),
+        GL_OPERAND0_RGB..=GL_OPERAND2_RGB => one(env.operand_rgb[idx(GL_OPERAND0_RGB)].to_gl()),
+        GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA => {
+            one(env.operand_alpha[idx(GL_OPERAND0_ALPHA)].to_gl())
+        }
+        GL_RGB_SCALE => Ok((vec![env.rgb_scale as f64], false)),
+        GL_ALPHA_SCALE => Ok((vec![env.alpha_scale as f64], false)),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// glTexEnvf.
+#[no_mangle]
+pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_ctx(|c| {
+        if pname == GL_TEXTURE_ENV_COLOR {
+            return Err(GlError::InvalidEnum);
+        }
+        tex_env(c, target, pname, &[param as f64], false)
+    })
+}
+
+/// glTexEnvi.
+#[no_mangle]
+pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
+    with_ctx(|c| {
+        if pname == GL_TEXTURE_ENV_COLOR {
+            return Err(GlError::InvalidEnum);
+        }
+        tex_env(c, target, pname, &[param as f64], true)
+    })
+}
+
+/// glTexEnvfv.
+///
+/// # Safety
+/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
+#[no_mangle]
+pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_ctx(|c| {
+        if params.is_null() {
+            return Ok(());
+        }
+        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        // SAFETY: the caller promises n readable values.
+        let v = unsafe { std::slice::from_raw_parts(params, n) };
+        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+        tex_env(c, target, pname, &v, false)
+    })
+}
+
+/// glTexEnviv.
+///
+/// # Safety
+/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
+#[no_mangle]
+pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_ctx(|c| {
+        if params.is_null() {
+            return Ok(());
+        }
+        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        // SAFETY: the caller promises n readable values.
+        let v = unsafe { std::slice::from_raw_parts(params, n) };
+        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+        tex_env(c, target, pname, &v, true)
+    })
+}
+
+/// glGetTexEnvfv.
+///
+/// # Safety
+/// `params` must be writable for the parameter's values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_ctx(|c| {
+        let (v, _) = get_tex_env(c, target, pname)?;
+        if !params.is_null() {
+            for (i, x) in v.iter().enumerate() {
+                // SAFETY: the caller promises room for the values.
+                unsafe { *params.add(i) = *x as f32 };
+            }
+        }
+        Ok(())
+    })
+}
+
+/// glGetTexEnviv.
+///
+/// # Safety
+/// `params` must be writable for the parameter's values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_ctx(|c| {
+        let (v, normalized) = get_tex_env(c, target, pname)?;
+        if !params.is_null() {
+            for (i, x) in v.iter().enumerate() {
+                let iv = if normalized {
+                    (x * 2147483647.0).round() as i32
+                } else {
+                    x.round() as i32
+                };
+                // SAFETY: the caller promises room for the values.
+                unsafe { *params.add(i) = iv };
+            }
+        }
+        Ok(())
+    })
+}
+
+/// glActiveTexture (GL_TEXTUREi, i < 8). `state.caps` for GL_TEXTURE_1D/2D follows the unit.
+#[no_mangle]
+pub extern "C" fn glActiveTexture(texture: GLenum) {
+    with_ctx(|c| {
+        let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
+        if u >= MAX_TEXTURE_UNITS {
+            return Err(GlError::InvalidEnum);
+        }
+        c.check_outside_begin()?;
+        c.state.active_texture = u;
+        let unit = &c.textures.units[u];
+        let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
+        c.state.caps.set(Cap::Texture1D, e1);
+        c.state.caps.set(Cap::Texture2D, e2);
+        Ok(())
+    })
+}
+
+/// glClientActiveTexture.
+#[no_mangle]
+pub extern "C" fn glClientActiveTexture(texture: GLenum) {
+    with_ctx(|c| {
+        let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
+        if u >= MAX_TEXTURE_UNITS {
+            return Err(GlError::InvalidEnum);
+        }
+        c.check_outside_begin()?;
+        c.state.client_active_texture = u;
+        Ok(())
+    })
+}
+
+/// glPrioritizeTextures (priorities are stored; residency is always true).
+///
+/// # Safety
+/// `textures` and `priorities` must be readable for `n` values.
+#[no_mangle]
+pub unsafe extern "C" fn glPrioritizeTextures(
+    n: GLsizei,
+    textures: *const GLuint,
+    priorities: *const GLclampf,
+) {
+    with_ctx(|c| {
+        let n = non_negative(n)?;
+        c.check_outside_begin()?;
+        if textures.is_null() || priorities.is_null() {
+            return Ok(());
+        }
+        // SAFETY: the caller promises n readable values in each array.
+        let (names, prios) = unsafe {
+            (
+                std::slice::from_raw_parts(textures, n),
+                std::slice::from_raw_parts(priorities, n),
+            )
+        };
+        for (&name, &p) in names.iter().zip(prios) {
+            if let Some(o) = c.textures.objects.get_mut(&name) {
+                o.params.priority = crate::context::clamp01(p as f64) as f32;
+            }
+        }
+        Ok(())
+    })
+}
+
+/// glAreTexturesResident: GL_TRUE for valid names (software textures are always resident);
+/// GL_INVALID_VALUE for 0 or an unknown name.
+///
+/// # Safety
+/// `textures` must be readable for `n` names; `residences` writable for `n` values.
+#[no_mangle]
+pub unsafe extern "C" fn glAreTexturesResident(
+    n: GLsizei,
+    textures: *const GLuint,
+    residences: *mut GLboolean,
+) -> GLboolean {
+    with_ctx(|c| {
+        let n = non_negative(n)?;
+        c.check_outside_begin()?;
+        if textures.is_null() {
+            return Ok(GL_TRUE as GLboolean);
+        }
+        // SAFETY: the caller promises n readable names.
+        let names = unsafe { std::slice::from_raw_parts(textures, n) };
+        if names.iter().any(|&t| !c.textures.is_texture(t)) {
+            return Err(GlError::InvalidValue);
+        }
+        let _ = residences;
+        Ok(GL_TRUE as GLboolean)
+    })
+}
+
+/// Sets the current texture coordinate of unit `target - GL_TEXTURE0`.
+fn multi_texcoord(target: GLenum, v: [f32; 4]) {
+    with_ctx_raw(|c| {
+        let u = target.wrapping_sub(GL_TEXTURE0) as usize;
+        if u >= MAX_TEXTURE_UNITS {
+            return Err(GlError::InvalidEnum);
+        }
+        c.state.current.texcoord[u] = v;
+        Ok(())
+    })
+}
+
+/// glMultiTexCoord1s.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord1s(target: GLenum, s: GLshort) {
+    multi_texcoord(target, [s as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1sv.
+///
+/// # Safety
+/// `v` must point to 1 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 1 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 1) };
+    multi_texcoord(target, [v[0] as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1i.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord1i(target: GLenum, s: GLint) {
+    multi_texcoord(target, [s as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1iv.
+///
+/// # Safety
+/// `v` must point to 1 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 1 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 1) };
+    multi_texcoord(target, [v[0] as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1f.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord1f(target: GLenum, s: GLfloat) {
+    multi_texcoord(target, [s, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1fv.
+///
+/// # Safety
+/// `v` must point to 1 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 1 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 1) };
+    multi_texcoord(target, [v[0], 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1d.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord1d(target: GLenum, s: GLdouble) {
+    multi_texcoord(target, [s as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord1dv.
+///
+/// # Safety
+/// `v` must point to 1 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 1 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 1) };
+    multi_texcoord(target, [v[0] as f32, 0.0, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2s.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort) {
+    multi_texcoord(target, [s as f32, t as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2sv.
+///
+/// # Safety
+/// `v` must point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 2 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 2) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2i.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint) {
+    multi_texcoord(target, [s as f32, t as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2iv.
+///
+/// # Safety
+/// `v` must point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 2 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 2) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2f.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) {
+    multi_texcoord(target, [s, t, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2fv.
+///
+/// # Safety
+/// `v` must point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 2 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 2) };
+    multi_texcoord(target, [v[0], v[1], 0.0, 1.0])
+}
+
+/// glMultiTexCoord2d.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble) {
+    multi_texcoord(target, [s as f32, t as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord2dv.
+///
+/// # Safety
+/// `v` must point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 2 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 2) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, 0.0, 1.0])
+}
+
+/// glMultiTexCoord3s.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, 1.0])
+}
+
+/// glMultiTexCoord3sv.
+///
+/// # Safety
+/// `v` must point to 3 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 3 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 3) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, 1.0])
+}
+
+/// glMultiTexCoord3i.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, 1.0])
+}
+
+/// glMultiTexCoord3iv.
+///
+/// # Safety
+/// `v` must point to 3 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 3 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 3) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, 1.0])
+}
+
+/// glMultiTexCoord3f.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) {
+    multi_texcoord(target, [s, t, r, 1.0])
+}
+
+/// glMultiTexCoord3fv.
+///
+/// # Safety
+/// `v` must point to 3 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 3 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 3) };
+    multi_texcoord(target, [v[0], v[1], v[2], 1.0])
+}
+
+/// glMultiTexCoord3d.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, 1.0])
+}
+
+/// glMultiTexCoord3dv.
+///
+/// # Safety
+/// `v` must point to 3 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 3 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 3) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, 1.0])
+}
+
+/// glMultiTexCoord4s.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord4s(
+    target: GLenum,
+    s: GLshort,
+    t: GLshort,
+    r: GLshort,
+    q: GLshort,
+) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, q as f32])
+}
+
+/// glMultiTexCoord4sv.
+///
+/// # Safety
+/// `v` must point to 4 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 4 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 4) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32])
+}
+
+/// glMultiTexCoord4i.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, q as f32])
+}
+
+/// glMultiTexCoord4iv.
+///
+/// # Safety
+/// `v` must point to 4 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 4 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 4) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32])
+}
+
+/// glMultiTexCoord4f.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord4f(
+    target: GLenum,
+    s: GLfloat,
+    t: GLfloat,
+    r: GLfloat,
+    q: GLfloat,
+) {
+    multi_texcoord(target, [s, t, r, q])
+}
+
+/// glMultiTexCoord4fv.
+///
+/// # Safety
+/// `v` must point to 4 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 4 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 4) };
+    multi_texcoord(target, [v[0], v[1], v[2], v[3]])
+}
+
+/// glMultiTexCoord4d.
+#[no_mangle]
+pub extern "C" fn glMultiTexCoord4d(
+    target: GLenum,
+    s: GLdouble,
+    t: GLdouble,
+    r: GLdouble,
+    q: GLdouble,
+) {
+    multi_texcoord(target, [s as f32, t as f32, r as f32, q as f32])
+}
+
+/// glMultiTexCoord4dv.
+///
+/// # Safety
+/// `v` must point to 4 values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: the caller promises 4 readable values.
+    let v = unsafe { std::slice::from_raw_parts(v, 4) };
+    multi_texcoord(target, [v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32])
+}

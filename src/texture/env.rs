@@ -1,0 +1,562 @@
+//! The fixed-function texture environment (GL 1.5 §3.8.13, ARB_texture_env_combine,
+//! _crossbar, _dot3) computed as Mesa's generated fragment shader does
+//! (llvmpipe-rules §10.2).
+//!
+//! [`TexEnv`] is the GL state of one unit as Rust enums. [`Combine::derive`] turns it into
+//! Mesa's combiner form once per draw: legacy modes become combiner states exactly as
+//! `calculate_derived_texenv` (`mesa/main/texstate.c`) builds them, so REPLACE on an ALPHA
+//! texture is REPLACE(PREVIOUS) for RGB and so on. [`Combine::apply`] then evaluates the
+//! combiner like `emit_texenv`/`emit_combine` (`ff_fragment_shader.cpp`): f32 arithmetic
+//! with separate multiplies and adds, INTERPOLATE as `s0·s2 + s1·(1 − s2)`, saturation only
+//! for ADD, ADD_SIGNED, SUBTRACT and DOT3 (and after a scale, which then saturates all four
+//! channels).
+
+use crate::ffi::enums::*;
+
+/// GL_TEXTURE_ENV_MODE.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EnvMode {
+    /// GL_REPLACE.
+    Replace,
+    /// GL_MODULATE.
+    Modulate,
+    /// GL_DECAL.
+    Decal,
+    /// GL_BLEND.
+    Blend,
+    /// GL_ADD.
+    Add,
+    /// GL_COMBINE.
+    Combine,
+}
+
+impl EnvMode {
+    /// From a GL enum.
+    pub fn from_gl(e: u32) -> Option<EnvMode> {
+        Some(match e {
+            GL_REPLACE => EnvMode::Replace,
+            GL_MODULATE => EnvMode::Modulate,
+            GL_DECAL => EnvMode::Decal,
+            GL_BLEND => EnvMode::Blend,
+            GL_ADD => EnvMode::Add,
+            GL_COMBINE => EnvMode::Combine,
+            _ => return None,
+        })
+    }
+    /// To the GL enum.
+    pub fn to_gl(self) -> u32 {
+        match self {
+            EnvMode::Replace => GL_REPLACE,
+            EnvMode::Modulate => GL_MODULATE,
+            EnvMode::Decal => GL_DECAL,
+            EnvMode::Blend => GL_BLEND,
+            EnvMode::Add => GL_ADD,
+            EnvMode::Combine => GL_COMBINE,
+        }
+    }
+}
+
+/// GL_COMBINE_RGB / GL_COMBINE_ALPHA function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CombineFn {
+    /// Arg0.
+    Replace,
+    /// Arg0·Arg1.
+    Modulate,
+    /// Arg0 + Arg1.
+    Add,
+    /// Arg0 + Arg1 − 0.5.
+    AddSigned,
+    /// Arg0·Arg2 + Arg1·(1 − Arg2).
+    Interpolate,
+    /// Arg0 − Arg1.
+    Subtract,
+    /// 4·((r0−.5)(r1−.5) + …) into RGB (RGB only).
+    Dot3Rgb,
+    /// The same into RGBA (RGB only).
+    Dot3Rgba,
+}
+
+impl CombineFn {
+    /// From a GL enum; the DOT3 functions only for RGB.
+    pub fn from_gl(e: u32, rgb: bool) -> Option<CombineFn> {
+        Some(match e {
+            GL_REPLACE => CombineFn::Replace,
+            GL_MODULATE => CombineFn::Modulate,
+            GL_ADD => CombineFn::Add,
+            GL_ADD_SIGNED => CombineFn::AddSigned,
+            GL_INTERPOLATE => CombineFn::Interpolate,
+            GL_SUBTRACT => CombineFn::Subtract,
+            GL_DOT3_RGB if rgb => CombineFn::Dot3Rgb,
+            GL_DOT3_RGBA if rgb => CombineFn::Dot3Rgba,
+            _ => return None,
+        })
+    }
+    /// To the GL enum.
+    pub fn to_gl(self) -> u32 {
+        match self {
+            CombineFn::Replace => GL_REPLACE,
+            CombineFn::Modulate => GL_MODULATE,
+            CombineFn::Add => GL_ADD,
+            CombineFn::AddSigned => GL_ADD_SIGNED,
+            CombineFn::Interpolate => GL_INTERPOLATE,
+            CombineFn::Subtract => GL_SUBTRACT,
+            CombineFn::Dot3Rgb => GL_DOT3_RGB,
+            CombineFn::Dot3Rgba => GL_DOT3_RGBA,
+        }
+    }
+    fn num_args(self) -> usize {
+        match self {
+            CombineFn::Replace => 1,
+            CombineFn::Interpolate => 3,
+            _ => 2,
+        }
+    }
+    fn saturates(self) -> bool {
+        !matches!(
+            self,
+            CombineFn::Replace | CombineFn::Modulate | CombineFn::Interpolate
+        )
+    }
+}
+
+/// GL_SOURCEn_RGB / GL_SOURCEn_ALPHA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// GL_TEXTURE: this unit's texture.
+    Texture,
+    /// GL_TEXTUREn (crossbar).
+    TextureN(u8),
+    /// GL_CONSTANT: the env colour.
+    Constant,
+    /// GL_PRIMARY_COLOR: the fragment's primary colour.
+    PrimaryColor,
+    /// GL_PREVIOUS: the previous unit's result.
+    Previous,
+}
+
+impl Source {
+    /// From a GL enum (`units` = number of texture units for GL_TEXTUREn).
+    pub fn from_gl(e: u32, units: usize) -> Option<Source> {
+        Some(match e {
+            GL_TEXTURE => Source::Texture,
+            GL_CONSTANT => Source::Constant,
+            GL_PRIMARY_COLOR => Source::PrimaryColor,
+            GL_PREVIOUS => Source::Previous,
+            _ if e >= GL_TEXTURE0 && ((e - GL_TEXTURE0) as usize) < units => {
+                Source::TextureN((e - GL_TEXTURE0) as u8)
+            }
+            _ => return None,
+        })
+    }
+    /// To the GL enum.
+    pub fn to_gl(self) -> u32 {
+        match self {
+            Source::Texture => GL_TEXTURE,
+            Source::TextureN(n) => GL_TEXTURE0 + n as u32,
+            Source::Constant => GL_CONSTANT,
+            Source::PrimaryColor => GL_PRIMARY_COLOR,
+            Source::Previous => GL_PREVIOUS,
+        }
+    }
+}
+
+/// GL_OPERANDn_RGB / GL_OPERANDn_ALPHA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operand {
+    /// GL_SRC_COLOR.
+    SrcColor,
+    /// GL_ONE_MINUS_SRC_COLOR.
+    OneMinusSrcColor,
+    /// GL_SRC_ALPHA.
+    SrcAlpha,
+    /// GL_ONE_MINUS_SRC_ALPHA.
+    OneMinusSrcAlpha,
+}
+
+impl Operand {
+    /// From a GL enum; alpha operands may only be the alpha ones.
+    pub fn from_gl(e: u32, alpha: bool) -> Option<Operand> {
+        Some(match e {
+            GL_SRC_COLOR if !alpha => Operand::SrcColor,
+            GL_ONE_MINUS_SRC_COLOR if !alpha => Operand::OneMinusSrcColor,
+            GL_SRC_ALPHA => Operand::SrcAlpha,
+            GL_ONE_MINUS_SRC_ALPHA => Operand::OneMinusSrcAlpha,
+            _ => return None,
+        })
+    }
+    /// To the GL enum.
+    pub fn to_gl(self) -> u32 {
+        match self {
+            Operand::SrcColor => GL_SRC_COLOR,
+            Operand::OneMinusSrcColor => GL_ONE_MINUS_SRC_COLOR,
+            Operand::SrcAlpha => GL_SRC_ALPHA,
+            Operand::OneMinusSrcAlpha => GL_ONE_MINUS_SRC_ALPHA,
+        }
+    }
+}
+
+/// The GL texture-environment state of one unit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexEnv {
+    /// GL_TEXTURE_ENV_MODE.
+    pub mode: EnvMode,
+    /// GL_COMBINE_RGB.
+    pub combine_rgb: CombineFn,
+    /// GL_COMBINE_ALPHA.
+    pub combine_alpha: CombineFn,
+    /// GL_SOURCE0..2_RGB.
+    pub source_rgb: [Source; 3],
+    /// GL_SOURCE0..2_ALPHA.
+    pub source_alpha: [Source; 3],
+    /// GL_OPERAND0..2_RGB.
+    pub operand_rgb: [Operand; 3],
+    /// GL_OPERAND0..2_ALPHA.
+    pub operand_alpha: [Operand; 3],
+    /// GL_RGB_SCALE (1, 2 or 4).
+    pub rgb_scale: f32,
+    /// GL_ALPHA_SCALE (1, 2 or 4).
+    pub alpha_scale: f32,
+    /// GL_TEXTURE_ENV_COLOR (clamped to [0,1]).
+    pub color: [f32; 4],
+}
+
+impl Default for TexEnv {
+    fn default() -> Self {
+        TexEnv {
+            mode: EnvMode::Modulate,
+            combine_rgb: CombineFn::Modulate,
+            combine_alpha: CombineFn::Modulate,
+            source_rgb: [Source::Texture, Source::Previous, Source::Constant],
+            source_alpha: [Source::Texture, Source::Previous, Source::Constant],
+            operand_rgb: [Operand::SrcColor, Operand::SrcColor, Operand::SrcAlpha],
+            operand_alpha: [Operand::SrcAlpha; 3],
+            rgb_scale: 1.0,
+            alpha_scale: 1.0,
+            color: [0.0; 4],
+        }
+    }
+}
+
+/// One combiner argument.
+pub type Arg = (Source, Operand);
+
+/// The derived combiner of a unit (Mesa's `_CurrentCombine`), evaluated per fragment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Combine {
+    /// RGB function.
+    pub mode_rgb: CombineFn,
+    /// Alpha function.
+    pub mode_a: CombineFn,
+    /// RGB arguments.
+    pub args_rgb: [Arg; 3],
+    /// Alpha arguments.
+    pub args_a: [Arg; 3],
+    /// RGB scale factor (1, 2, 4).
+    pub scale_rgb: f32,
+    /// Alpha scale factor (1, 2, 4).
+    pub scale_a: f32,
+    /// The env colour.
+    pub color: [f32; 4],
+}
+
+impl Combine {
+    /// Mesa's combiner form of `env` for a texture of base format `base`.
+    pub fn derive(env: &TexEnv, base: super::BaseFormat) -> Combine {
+        use super::BaseFormat as B;
+        use CombineFn as F;
+        use Source as S;
+        let zip = |s: [Source; 3], o: [Operand; 3]| [(s[0], o[0]), (s[1], o[1]), (s[2], o[2])];
+        if env.mode == EnvMode::Combine {
+            return Combine {
+                mode_rgb: env.combine_rgb,
+                mode_a: env.combine_alpha,
+                args_rgb: zip(env.source_rgb, env.operand_rgb),
+                args_a: zip(env.source_alpha, env.operand_alpha),
+                scale_rgb: env.rgb_scale,
+                scale_a: env.alpha_scale,
+                color: env.color,
+            };
+        }
+        let d = TexEnv::default();
+        let mut src_rgb = d.source_rgb;
+        let mut src_a = d.source_alpha;
+        let mut op_rgb = d.operand_rgb;
+        let mut op_a = d.operand_alpha;
+        match base {
+            B::Alpha => src_rgb[0] = S::Previous,
+            B::Luminance | B::Rgb => src_a[0] = S::Previous,
+            _ => {}
+        }
+        let (mut mode_rgb, mut mode_a);
+        match env.mode {
+            EnvMode::Replace | EnvMode::Modulate => {
+                let m = if env.mode == EnvMode::Replace {
+                    F::Replace
+                } else {
+                    F::Modulate
+                };
+                mode_rgb = if src_rgb[0] == S::Previous {
+                    F::Replace
+                } else {
+                    m
+                };
+                mode_a = if src_a[0] == S::Previous {
+                    F::Replace
+                } else {
+                    m
+                };
+            }
+            EnvMode::Decal => {
+                mode_rgb = F::Interpolate;
+                mode_a = F::Replace;
+                src_a[0] = S::Previous;
+                match base {
+                    B::Alpha | B::Luminance | B::LuminanceAlpha | B::Intensity => {
+                        src_rgb[0] = S::Previous
+                    }
+                    B::Rgb => mode_rgb = F::Replace,
+                    B::Rgba => src_rgb[2] = S::Texture,
+                }
+            }
+            EnvMode::Blend => {
+                mode_rgb = F::Interpolate;
+                mode_a = F::Modulate;
+                if base == B::Alpha {
+                    mode_rgb = F::Replace;
+                } else {
+                    if base == B::Intensity {
+                        mode_a = F::Interpolate;
+                        src_a[0] = S::Constant;
+                        op_a[2] = Operand::SrcAlpha;
+                    }
+                    src_rgb[2] = S::Texture;
+                    src_a[2] = S::Texture;
+                    src_rgb[0] = S::Constant;
+                    op_rgb[2] = Operand::SrcColor;
+                }
+            }
+            EnvMode::Add | EnvMode::Combine => {
+                mode_rgb = if src_rgb[0] == S::Previous {
+                    F::Replace
+                } else {
+                    F::Add
+                };
+                mode_a = if base == B::Intensity {
+                    F::Add
+                } else if src_a[0] == S::Previous {
+                    F::Replace
+                } else {
+                    F::Modulate
+                };
+            }
+        }
+        if src_rgb[0] == S::Previous {
+            mode_rgb = F::Replace;
+        }
+        if src_a[0] == S::Previous {
+            mode_a = F::Replace;
+        }
+        Combine {
+            mode_rgb,
+            mode_a,
+            args_rgb: zip(src_rgb, op_rgb),
+            args_a: zip(src_a, op_a),
+            scale_rgb: 1.0,
+            scale_a: 1.0,
+            color: env.color,
+        }
+    }
+
+    /// Evaluates the combiner. `textures` holds every unit's texture value for GL_TEXTUREn
+    /// sources (missing entries read as zero, as Mesa's shader does for disabled units).
+    pub fn apply(
+        &self,
+        frag: [f32; 4],
+        tex: [f32; 4],
+        prev: [f32; 4],
+        textures: &[[f32; 4]],
+    ) -> [f32; 4] {
+        let value = |s: Source| -> [f32; 4] {
+            match s {
+                Source::Texture => tex,
+                Source::TextureN(n) => textures.get(n as usize).copied().unwrap_or([0.0; 4]),
+                Source::Constant => self.color,
+                Source::PrimaryColor => frag,
+                Source::Previous => prev,
+            }
+        };
+        let arg = |a: Arg, ch: usize| -> f32 {
+            let v = value(a.0);
+            match a.1 {
+                Operand::SrcColor => v[ch],
+                Operand::OneMinusSrcColor => 1.0 - v[ch],
+                Operand::SrcAlpha => v[3],
+                Operand::OneMinusSrcAlpha => 1.0 - v[3],
+            }
+        };
+        let shift = self.scale_rgb != 1.0 || self.scale_a != 1.0;
+        let mut out = [0.0f32; 4];
+        let dot3 = matches!(self.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
+        if dot3 {
+            let t0: [f32; 3] = std::array::from_fn(|c| arg(self.args_rgb[0], c) * 2.0 + -1.0);
+            let t1: [f32; 3] = std::array::from_fn(|c| arg(self.args_rgb[1], c) * 2.0 + -1.0);
+            let mut d = t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2];
+            if self.scale_rgb == 1.0 {
+                d = sat(d);
+            }
+            out[0] = d;
+            out[1] = d;
+            out[2] = d;
+            if self.mode_rgb == CombineFn::Dot3Rgba {
+                out[3] = d;
+            }
+        } else {
+            let n = self.mode_rgb.num_args();
+            for (c, o) in out.iter_mut().enumerate().take(3) {
+                let a: [f32; 3] =
+                    std::array::from_fn(|i| if i < n { arg(self.args_rgb[i], c) } else { 0.0 });
+                let mut v = combine(self.mode_rgb, a);
+                if !shift && self.mode_rgb.saturates() {
+                    v = sat(v);
+                }
+                *o = v;
+            }
+        }
+        if self.mode_rgb != CombineFn::Dot3Rgba {
+            let n = self.mode_a.num_args();
+            let a: [f32; 3] =
+                std::array::from_fn(|i| if i < n { arg(self.args_a[i], 3) } else { 0.0 });
+            let mut v = combine(self.mode_a, a);
+            if !shift && self.mode_a.saturates() {
+                v = sat(v);
+            }
+            out[3] = v;
+        }
+        if shift {
+            for o in out.iter_mut().take(3) {
+                *o = sat(*o * self.scale_rgb);
+            }
+            out[3] = sat(out[3] * self.scale_a);
+        }
+        out
+    }
+}
+
+/// Clamp to [0,1], NaN → 0 (llvmpipe's fsat).
+#[inline]
+pub fn sat(v: f32) -> f32 {
+    if v > 0.0 {
+        v.min(1.0)
+    } else {
+        0.0
+    }
+}
+
+#[inline]
+fn combine(f: CombineFn, a: [f32; 3]) -> f32 {
+    match f {
+        CombineFn::Replace => a[0],
+        CombineFn::Modulate => a[0] * a[1],
+        CombineFn::Add => a[0] + a[1],
+        CombineFn::AddSigned => (a[0] + a[1]) + -0.5,
+        CombineFn::Interpolate => a[0] * a[2] + a[1] * (1.0 - a[2]),
+        CombineFn::Subtract => a[0] - a[1],
+        CombineFn::Dot3Rgb | CombineFn::Dot3Rgba => unreachable!("handled by the caller"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::BaseFormat as B;
+    use super::*;
+
+    fn run(mode: EnvMode, base: B, f: [f32; 4], t: [f32; 4]) -> [f32; 4] {
+        let env = TexEnv {
+            mode,
+            color: [0.25, 0.5, 0.75, 0.125],
+            ..Default::default()
+        };
+        let t = base.swizzle(t, 0.0, 1.0);
+        Combine::derive(&env, base).apply(f, t, f, &[])
+    }
+
+    const F: [f32; 4] = [0.2, 0.4, 0.6, 0.8];
+    const T: [f32; 4] = [0.9, 0.5, 0.1, 0.3];
+
+    #[test]
+    fn gl_table_replace_modulate() {
+        assert_eq!(run(EnvMode::Replace, B::Alpha, F, T), [0.2, 0.4, 0.6, 0.3]);
+        assert_eq!(
+            run(EnvMode::Replace, B::Luminance, F, T),
+            [0.9, 0.9, 0.9, 0.8]
+        );
+        assert_eq!(run(EnvMode::Replace, B::Intensity, F, T), [0.9; 4]);
+        assert_eq!(run(EnvMode::Replace, B::Rgb, F, T), [0.9, 0.5, 0.1, 0.8]);
+        assert_eq!(
+            run(EnvMode::Modulate, B::Rgba, F, T),
+            [0.9 * 0.2, 0.5 * 0.4, 0.1 * 0.6, 0.3 * 0.8]
+        );
+        assert_eq!(
+            run(EnvMode::Modulate, B::Luminance, F, T),
+            [0.9 * 0.2, 0.9 * 0.4, 0.9 * 0.6, 0.8]
+        );
+        assert_eq!(
+            run(EnvMode::Modulate, B::Alpha, F, T),
+            [0.2, 0.4, 0.6, 0.3 * 0.8]
+        );
+    }
+
+    #[test]
+    fn decal_blend_add() {
+        // DECAL RGBA: Ct·At + Cf·(1 − At)
+        let d = run(EnvMode::Decal, B::Rgba, F, T);
+        assert_eq!(d[0], 0.9f32 * 0.3 + 0.2 * (1.0 - 0.3));
+        assert_eq!(d[3], 0.8);
+        assert_eq!(run(EnvMode::Decal, B::Luminance, F, T), F);
+        assert_eq!(run(EnvMode::Decal, B::Rgb, F, T), [0.9, 0.5, 0.1, 0.8]);
+        // BLEND RGB: Cc·Ct + Cf·(1 − Ct); A = Af
+        let b = run(EnvMode::Blend, B::Rgb, F, T);
+        assert_eq!(b[0], 0.25f32 * 0.9 + 0.2 * (1.0 - 0.9));
+        assert_eq!(b[3], 0.8);
+        // BLEND INTENSITY alpha: Ac·It + Af·(1 − It)
+        let bi = run(EnvMode::Blend, B::Intensity, F, T);
+        assert_eq!(bi[3], 0.125f32 * 0.9 + 0.8 * (1.0 - 0.9));
+        assert_eq!(
+            run(EnvMode::Blend, B::Alpha, F, T),
+            [0.2, 0.4, 0.6, 0.3 * 0.8]
+        );
+        // ADD saturates; INTENSITY adds alpha
+        let a = run(EnvMode::Add, B::Rgba, F, T);
+        assert_eq!(a, [1.0, 0.5f32 + 0.4, 0.1f32 + 0.6, 0.3f32 * 0.8]);
+        assert_eq!(run(EnvMode::Add, B::Intensity, F, T)[3], 1.0);
+        assert_eq!(run(EnvMode::Add, B::Luminance, F, T)[3], 0.8);
+    }
+
+    #[test]
+    fn combine_functions_and_scale() {
+        let mut env = TexEnv {
+            mode: EnvMode::Combine,
+            combine_rgb: CombineFn::Subtract,
+            combine_alpha: CombineFn::AddSigned,
+            rgb_scale: 2.0,
+            ..Default::default()
+        };
+        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
+        assert_eq!(c[0], sat((0.9f32 - 0.2) * 2.0));
+        assert_eq!(c[2], 0.0);
+        assert_eq!(c[3], sat((0.3f32 + 0.8) + -0.5));
+        env.combine_rgb = CombineFn::Dot3Rgba;
+        env.rgb_scale = 1.0;
+        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
+        let t0 = [0.9f32, 0.5, 0.1].map(|v| v * 2.0 - 1.0);
+        let t1 = [0.2f32, 0.4, 0.6].map(|v| v * 2.0 - 1.0);
+        let d = sat(t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2]);
+        assert_eq!(c, [d; 4]);
+        // crossbar source
+        env.combine_rgb = CombineFn::Replace;
+        env.source_rgb[0] = Source::TextureN(1);
+        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[[0.0; 4], [0.7; 4]]);
+        assert_eq!(c[0], 0.7);
+    }
+}

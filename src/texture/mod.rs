@@ -1,0 +1,645 @@
+//! Texturing: texture objects and units, image upload, mipmap generation, sampling with
+//! llvmpipe's arithmetic, and the fixed-function texture environment.
+//!
+//! # Shape
+//! GL values are converted into Rust enums at the C boundary (`ffi/textures.rs`); this module
+//! holds plain data. [`TextureState`] owns every texture object and the eight texture units.
+//! Texels are stored as RGBA8 *after* the base-format swizzle Mesa's sampler view applies
+//! (L→(L,L,L,1), A→(0,0,0,A), I→(I,I,I,I), LA→(L,L,L,A), RGB→(R,G,B,1)), so sampling never
+//! looks at the format; the base format is kept for the texture environment.
+//!
+//! # Interface for the rasterizer
+//! - [`TextureState::unit_plan`]`(unit) -> Option<UnitPlan>`: `None` when the unit is
+//!   disabled or its texture incomplete (Mesa then disables the unit, llvmpipe-rules §9.2).
+//!   Build it once per draw; it borrows the levels and holds the sampler state as enums,
+//!   the precomputed LOD parameters, whether the LOD is needed at all
+//!   ([`UnitPlan::needs_lod`]) and the texture environment in combiner form.
+//! - [`UnitPlan::sample_quad`]`(s, t)` samples a 2x2 quad (TL, TR, BL, BR, y-down) with one
+//!   LOD from TL/TR/BL, as llvmpipe does; [`UnitPlan::sample_one`] samples with a given
+//!   [`Lod`].
+//! - [`UnitPlan::env`]`(frag, tex, prev)` applies the unit's environment (f32, Mesa's order).
+//!
+//! Coordinates are already divided by q (`s * (1/q)`). Returned colours are what the
+//! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.
+
+pub mod env;
+pub mod lod;
+pub mod mipmap;
+pub mod sample;
+pub mod upload;
+pub mod wrap;
+
+use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::context::{GlError, GlResult};
+use env::{Combine, TexEnv};
+use lod::LodParams;
+use std::collections::HashMap;
+
+/// GL_MAX_TEXTURE_SIZE (llvmpipe's 2D limit).
+pub const MAX_TEXTURE_SIZE: usize = 16384;
+/// Number of mipmap levels of the largest texture (log2(16384) + 1).
+pub const MAX_LEVELS: usize = 15;
+/// GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT (llvmpipe's value).
+pub const MAX_ANISOTROPY: f32 = 16.0;
+/// GL_MAX_TEXTURE_LOD_BIAS (llvmpipe's value).
+pub const MAX_LOD_BIAS: f32 = 16.0;
+
+/// A texture target this implementation supports.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Target {
+    /// GL_TEXTURE_1D.
+    Tex1D,
+    /// GL_TEXTURE_2D.
+    Tex2D,
+}
+
+impl Target {
+    /// Index into per-target arrays.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// The base internal format of a texture image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BaseFormat {
+    /// GL_ALPHA.
+    Alpha,
+    /// GL_LUMINANCE.
+    Luminance,
+    /// GL_LUMINANCE_ALPHA.
+    LuminanceAlpha,
+    /// GL_INTENSITY.
+    Intensity,
+    /// GL_RGB.
+    Rgb,
+    /// GL_RGBA.
+    Rgba,
+}
+
+impl BaseFormat {
+    /// Applies the sampler-view swizzle of this base format to an RGBA value (also used for
+    /// the border colour, as Mesa's `st_translate_color` does).
+    pub fn swizzle<T: Copy>(self, v: [T; 4], zero: T, one: T) -> [T; 4] {
+        match self {
+            BaseFormat::Alpha => [zero, zero, zero, v[3]],
+            BaseFormat::Luminance => [v[0], v[0], v[0], one],
+            BaseFormat::LuminanceAlpha => [v[0], v[0], v[0], v[3]],
+            BaseFormat::Intensity => [v[0], v[0], v[0], v[0]],
+            BaseFormat::Rgb => [v[0], v[1], v[2], one],
+            BaseFormat::Rgba => v,
+        }
+    }
+}
+
+/// One mipmap image: RGBA8 texels, row 0 first (GL's t = 0 row), after the base swizzle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Level {
+    /// Width in texels.
+    pub width: usize,
+    /// Height in texels (1 for 1D).
+    pub height: usize,
+    /// The internal format as the program gave it (for GL_TEXTURE_INTERNAL_FORMAT).
+    pub internal_format: u32,
+    /// Base internal format.
+    pub base: BaseFormat,
+    /// `width * height` texels.
+    pub texels: Vec<[u8; 4]>,
+}
+
+impl Level {
+    /// The texel at (x, y), which must be in range.
+    #[inline]
+    pub fn texel(&self, x: usize, y: usize) -> [u8; 4] {
+        self.texels[y * self.width + x]
+    }
+}
+
+/// Magnification / minification image filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    /// GL_NEAREST.
+    Nearest,
+    /// GL_LINEAR.
+    Linear,
+}
+
+/// Mipmap filter of the minification filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MipFilter {
+    /// No mipmapping (GL_NEAREST / GL_LINEAR).
+    None,
+    /// GL_*_MIPMAP_NEAREST.
+    Nearest,
+    /// GL_*_MIPMAP_LINEAR.
+    Linear,
+}
+
+/// Texture wrap mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wrap {
+    /// GL_REPEAT.
+    Repeat,
+    /// GL_CLAMP.
+    Clamp,
+    /// GL_CLAMP_TO_EDGE.
+    ClampToEdge,
+    /// GL_CLAMP_TO_BORDER.
+    ClampToBorder,
+    /// GL_MIRRORED_REPEAT.
+    MirroredRepeat,
+}
+
+impl Wrap {
+    /// Whether llvmpipe's 8-bit AoS path handles this mode (`lp_is_simple_wrap_mode`).
+    pub fn is_simple(self) -> bool {
+        matches!(self, Wrap::Repeat | Wrap::ClampToEdge)
+    }
+}
+
+/// Sampler parameters of a texture object (glTexParameter).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SamplerParams {
+    /// GL_TEXTURE_MIN_FILTER: image filter part.
+    pub min_filter: Filter,
+    /// GL_TEXTURE_MIN_FILTER: mipmap part.
+    pub mip_filter: MipFilter,
+    /// GL_TEXTURE_MAG_FILTER.
+    pub mag_filter: Filter,
+    /// GL_TEXTURE_WRAP_S.
+    pub wrap_s: Wrap,
+    /// GL_TEXTURE_WRAP_T.
+    pub wrap_t: Wrap,
+    /// GL_TEXTURE_BORDER_COLOR (clamped to [0,1] when set, GL 1.5).
+    pub border_color: [f32; 4],
+    /// GL_TEXTURE_MIN_LOD.
+    pub min_lod: f32,
+    /// GL_TEXTURE_MAX_LOD.
+    pub max_lod: f32,
+    /// GL_TEXTURE_BASE_LEVEL.
+    pub base_level: i32,
+    /// GL_TEXTURE_MAX_LEVEL.
+    pub max_level: i32,
+    /// GL_TEXTURE_LOD_BIAS (texture object part).
+    pub lod_bias: f32,
+    /// GL_GENERATE_MIPMAP.
+    pub generate_mipmap: bool,
+    /// GL_TEXTURE_MAX_ANISOTROPY_EXT.
+    pub max_anisotropy: f32,
+    /// GL_TEXTURE_PRIORITY.
+    pub priority: f32,
+}
+
+impl Default for SamplerParams {
+    fn default() -> Self {
+        SamplerParams {
+            min_filter: Filter::Nearest,
+            mip_filter: MipFilter::Linear,
+            mag_filter: Filter::Linear,
+            wrap_s: Wrap::Repeat,
+            wrap_t: Wrap::Repeat,
+            border_color: [0.0; 4],
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            base_level: 0,
+            max_level: 1000,
+            lod_bias: 0.0,
+            generate_mipmap: false,
+            max_anisotropy: 1.0,
+            priority: 1.0,
+        }
+    }
+}
+
+/// A texture object.
+#[derive(Clone, Debug, Default)]
+pub struct TextureObject {
+    /// The target it was first bound to (`None`: generated but never bound).
+    pub target: Option<Target>,
+    /// Mipmap images, indexed by level.
+    pub levels: Vec<Option<Level>>,
+    /// Sampler parameters.
+    pub params: SamplerParams,
+}
+
+impl TextureObject {
+    /// A new object for `target`.
+    pub fn new(target: Option<Target>) -> Self {
+        TextureObject {
+            target,
+            levels: vec![None; MAX_LEVELS],
+            params: SamplerParams::default(),
+        }
+    }
+
+    /// The image of `level`, if specified with a non-zero size.
+    pub fn level(&self, level: usize) -> Option<&Level> {
+        self.levels.get(level).and_then(|l| l.as_ref())
+    }
+
+    /// The range of levels sampling uses, `(base, last)`, when the texture is complete
+    /// (GL 1.5 §3.8.10); `None` when incomplete. `last` is Mesa's `_MaxLevel`.
+    pub fn complete_range(&self) -> Option<(usize, usize)> {
+        let p = &self.params;
+        if p.base_level < 0 || p.base_level > p.max_level || p.base_level as usize >= MAX_LEVELS {
+            return None;
+        }
+        let base = p.base_level as usize;
+        let b = self.level(base)?;
+        if b.width == 0 || b.height == 0 {
+            return None;
+        }
+        let log2 = usize::BITS - 1 - b.width.max(b.height).leading_zeros();
+        let last = (base + log2 as usize)
+            .min(p.max_level as usize)
+            .min(MAX_LEVELS - 1);
+        if p.mip_filter == MipFilter::None {
+            return Some((base, base));
+        }
+        for l in base + 1..=last {
+            let img = self.level(l)?;
+            let k = l - base;
+            if img.width != (b.width >> k).max(1)
+                || img.height != (b.height >> k).max(1)
+                || img.base != b.base
+            {
+                return None;
+            }
+        }
+        Some((base, last))
+    }
+}
+
+/// One texture unit's server-side state.
+#[derive(Clone, Debug)]
+pub struct TexUnit {
+    /// glEnable(GL_TEXTURE_1D) on this unit.
+    pub enabled_1d: bool,
+    /// glEnable(GL_TEXTURE_2D) on this unit.
+    pub enabled_2d: bool,
+    /// Bound texture names per target (0 = the default texture).
+    pub bound: [u32; 2],
+    /// Texture environment (glTexEnv).
+    pub env: TexEnv,
+    /// GL_TEXTURE_LOD_BIAS of the texture environment (GL_TEXTURE_FILTER_CONTROL).
+    pub lod_bias: f32,
+}
+
+impl Default for TexUnit {
+    fn default() -> Self {
+        TexUnit {
+            enabled_1d: false,
+            enabled_2d: false,
+            bound: [0; 2],
+            env: TexEnv::default(),
+            lod_bias: 0.0,
+        }
+    }
+}
+
+impl TexUnit {
+    /// The target texturing uses on this unit (2D wins over 1D, GL 1.5 §3.8.15).
+    pub fn active_target(&self) -> Option<Target> {
+        if self.enabled_2d {
+            Some(Target::Tex2D)
+        } else if self.enabled_1d {
+            Some(Target::Tex1D)
+        } else {
+            None
+        }
+    }
+}
+
+/// All texture objects and units of a context.
+#[derive(Clone, Debug)]
+pub struct TextureState {
+    /// Named objects (name > 0).
+    pub objects: HashMap<u32, TextureObject>,
+    /// The default textures (name 0) of GL_TEXTURE_1D and GL_TEXTURE_2D.
+    pub defaults: [TextureObject; 2],
+    /// The texture units.
+    pub units: [TexUnit; MAX_TEXTURE_UNITS],
+    /// The next name glGenTextures tries.
+    pub next_name: u32,
+    /// The proxy textures (GL_PROXY_TEXTURE_1D/2D): level sizes only, no texels.
+    pub proxies: [TextureObject; 2],
+}
+
+impl Default for TextureState {
+    fn default() -> Self {
+        TextureState {
+            objects: HashMap::new(),
+            defaults: [
+                TextureObject::new(Some(Target::Tex1D)),
+                TextureObject::new(Some(Target::Tex2D)),
+            ],
+            units: std::array::from_fn(|_| TexUnit::default()),
+            next_name: 1,
+            proxies: [
+                TextureObject::new(Some(Target::Tex1D)),
+                TextureObject::new(Some(Target::Tex2D)),
+            ],
+        }
+    }
+}
+
+impl TextureState {
+    /// The object bound to `target` on `unit`.
+    pub fn bound(&self, unit: usize, target: Target) -> &TextureObject {
+        let name = self.units[unit].bound[target.index()];
+        if name == 0 {
+            &self.defaults[target.index()]
+        } else {
+            self.objects
+                .get(&name)
+                .unwrap_or(&self.defaults[target.index()])
+        }
+    }
+
+    /// The object bound to `target` on `unit`, mutably.
+    pub fn bound_mut(&mut self, unit: usize, target: Target) -> &mut TextureObject {
+        let name = self.units[unit].bound[target.index()];
+        if name == 0 || !self.objects.contains_key(&name) {
+            &mut self.defaults[target.index()]
+        } else {
+            self.objects.get_mut(&name).expect("checked")
+        }
+    }
+
+    /// glGenTextures: `n` unused names, reserved (they are not textures until bound).
+    pub fn gen(&mut self, n: usize) -> Vec<u32> {
+        let mut out = Vec::with_capacity(n);
+        while out.len() < n {
+            let name = self.next_name;
+            self.next_name = self.next_name.wrapping_add(1).max(1);
+            if name != 0 && !self.objects.contains_key(&name) {
+                self.objects.insert(name, TextureObject::new(None));
+                out.push(name);
+            }
+        }
+        out
+    }
+
+    /// glBindTexture on `unit`.
+    pub fn bind(&mut self, unit: usize, target: Target, name: u32) -> GlResult<()> {
+        if name != 0 {
+            match self.objects.get(&name).map(|o| o.target) {
+                Some(Some(t)) if t != target => return Err(GlError::InvalidOperation),
+                Some(Some(_)) => {}
+                Some(None) => {
+                    self.objects.get_mut(&name).expect("present").target = Some(target);
+                }
+                None => {
+                    self.objects.insert(name, TextureObject::new(Some(target)));
+                }
+            }
+        }
+        self.units[unit].bound[target.index()] = name;
+        Ok(())
+    }
+
+    /// glDeleteTextures: deletes the objects and rebinds 0 wherever they were bound.
+    pub fn delete(&mut self, names: &[u32]) {
+        for &name in names {
+            if name == 0 || self.objects.remove(&name).is_none() {
+                continue;
+            }
+            for u in &mut self.units {
+                for b in &mut u.bound {
+                    if *b == name {
+                        *b = 0;
+                    }
+                }
+            }
+        }
+    }
+
+    /// glIsTexture: a name that has been bound at least once and not deleted.
+    pub fn is_texture(&self, name: u32) -> bool {
+        name != 0 && self.objects.get(&name).is_some_and(|o| o.target.is_some())
+    }
+
+    /// The sampling plan of `unit` for one draw; `None` when the unit is disabled or its
+    /// texture incomplete.
+    pub fn unit_plan(&self, unit: usize) -> Option<UnitPlan<'_>> {
+        let u = self.units.get(unit)?;
+        let target = u.active_target()?;
+        let obj = self.bound(unit, target);
+        let (first, last) = obj.complete_range()?;
+        let p = &obj.params;
+        let base_img = obj.level(first)?;
+        let base = base_img.base;
+        let dims = if target == Target::Tex2D { 2 } else { 1 };
+        // GL_CLAMP with nearest-only filtering never reads the border: llvmpipe treats it as
+        // CLAMP_TO_EDGE (derived sampler state).
+        let nearest_only = p.min_filter == Filter::Nearest && p.mag_filter == Filter::Nearest;
+        let fix = |w: Wrap| {
+            if nearest_only && w == Wrap::Clamp {
+                Wrap::ClampToEdge
+            } else {
+                w
+            }
+        };
+        let wrap_s = fix(p.wrap_s);
+        let wrap_t = if dims == 2 {
+            fix(p.wrap_t)
+        } else {
+            Wrap::Repeat
+        };
+        let aniso = p.max_anisotropy > 1.0;
+        let aos = wrap_s.is_simple() && wrap_t.is_simple() && !aniso;
+        let lod = LodParams::new(p, u.lod_bias, dims == 1);
+        let border = base.swizzle(p.border_color, 0.0, 1.0);
+        let needs_lod = !(p.min_filter == p.mag_filter && p.mip_filter == MipFilter::None);
+        // llvmpipe chooses the REPEAT code from the resource's level-0 size.
+        let l0 = obj.level(0).filter(|l| l.base == base).unwrap_or(base_img);
+        let pot = [l0.width.is_power_of_two(), l0.height.is_power_of_two()];
+        Some(UnitPlan {
+            levels: &obj.levels,
+            first,
+            last,
+            dims,
+            min_filter: p.min_filter,
+            mag_filter: p.mag_filter,
+            mip_filter: p.mip_filter,
+            wrap_s,
+            wrap_t,
+            border,
+            aos,
+            pot,
+            max_anisotropy: if aniso { p.max_anisotropy } else { 1.0 },
+            lod,
+            needs_lod,
+            base_format: base,
+            env: Combine::derive(&u.env, base),
+            fma: sample::has_fma(),
+        })
+    }
+}
+
+/// Everything sampling and the environment of one unit need for one draw.
+#[derive(Clone, Debug)]
+pub struct UnitPlan<'a> {
+    /// All level slots of the texture; `first..=last` are present and consistent.
+    pub levels: &'a [Option<Level>],
+    /// Base level.
+    pub first: usize,
+    /// Last level sampling may use.
+    pub last: usize,
+    /// 1 for GL_TEXTURE_1D, 2 for GL_TEXTURE_2D.
+    pub dims: u8,
+    /// Minification image filter.
+    pub min_filter: Filter,
+    /// Magnification filter.
+    pub mag_filter: Filter,
+    /// Mipmap filter.
+    pub mip_filter: MipFilter,
+    /// Wrap mode of s (after llvmpipe's GL_CLAMP→CLAMP_TO_EDGE for nearest-only sampling).
+    pub wrap_s: Wrap,
+    /// Wrap mode of t (REPEAT for 1D, unused).
+    pub wrap_t: Wrap,
+    /// Border colour after the base-format swizzle.
+    pub border: [f32; 4],
+    /// llvmpipe's 8-bit fixed-point AoS path (else the float SoA path).
+    pub aos: bool,
+    /// Whether the level-0 width and height are powers of two (selects the REPEAT code).
+    pub pot: [bool; 2],
+    /// Max anisotropy (1 = off).
+    pub max_anisotropy: f32,
+    /// LOD bias/clamp parameters.
+    pub lod: LodParams,
+    /// Whether a LOD must be computed at all (false: min == mag and no mipmapping).
+    pub needs_lod: bool,
+    /// Base internal format of the base level.
+    pub base_format: BaseFormat,
+    /// The texture environment in combiner form.
+    pub env: Combine,
+    /// Whether float lerps fuse (llvmpipe uses `llvm.fmuladd`, fused on FMA CPUs).
+    pub fma: bool,
+}
+
+impl UnitPlan<'_> {
+    /// The image of `level` (which must be in `first..=last`).
+    #[inline]
+    pub fn image(&self, level: usize) -> &Level {
+        self.levels[level].as_ref().expect("complete texture")
+    }
+
+    /// Samples a 2x2 quad (TL, TR, BL, BR in y-down order) with one LOD computed from
+    /// TL/TR/BL, as llvmpipe does.
+    pub fn sample_quad(&self, s: [f32; 4], t: [f32; 4]) -> [[f32; 4]; 4] {
+        if self.max_anisotropy > 1.0 {
+            return sample::sample_quad_aniso(self, s, t);
+        }
+        let lod = if self.needs_lod {
+            let b = self.image(self.first);
+            lod::compute(
+                &self.lod,
+                self.mip_filter,
+                self.dims,
+                b.width as f32,
+                b.height as f32,
+                s,
+                t,
+            )
+        } else {
+            Lod::MAG
+        };
+        std::array::from_fn(|i| self.sample_one(s[i], t[i], lod))
+    }
+
+    /// Samples one coordinate with a given LOD.
+    pub fn sample_one(&self, s: f32, t: f32, lod: Lod) -> [f32; 4] {
+        sample::sample(self, s, t, lod)
+    }
+
+    /// Applies the unit's texture environment: `frag` is the primary colour, `tex` this
+    /// unit's texture value, `prev` the previous unit's output (the primary colour on the
+    /// first enabled unit).
+    #[inline]
+    pub fn env(&self, frag: [f32; 4], tex: [f32; 4], prev: [f32; 4]) -> [f32; 4] {
+        self.env.apply(frag, tex, prev, &[])
+    }
+
+    /// As [`UnitPlan::env`] with the values of all units for GL_TEXTUREn sources
+    /// (ARB_texture_env_crossbar); `textures[n]` of a disabled unit should be zero.
+    #[inline]
+    pub fn env_crossbar(
+        &self,
+        frag: [f32; 4],
+        tex: [f32; 4],
+        prev: [f32; 4],
+        textures: &[[f32; 4]],
+    ) -> [f32; 4] {
+        self.env.apply(frag, tex, prev, textures)
+    }
+}
+
+pub use lod::Lod;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn level(w: usize, h: usize) -> Option<Level> {
+        Some(Level {
+            width: w,
+            height: h,
+            internal_format: 0x1908,
+            base: BaseFormat::Rgba,
+            texels: vec![[0; 4]; w * h],
+        })
+    }
+
+    #[test]
+    fn default_min_filter_makes_single_level_incomplete() {
+        let mut o = TextureObject::new(Some(Target::Tex2D));
+        o.levels[0] = level(4, 4);
+        assert_eq!(o.complete_range(), None);
+        o.params.mip_filter = MipFilter::None;
+        assert_eq!(o.complete_range(), Some((0, 0)));
+    }
+
+    #[test]
+    fn full_chain_is_complete_and_npot_halves_floor() {
+        let mut o = TextureObject::new(Some(Target::Tex2D));
+        o.levels[0] = level(5, 3);
+        o.levels[1] = level(2, 1);
+        assert_eq!(o.complete_range(), None);
+        o.levels[2] = level(1, 1);
+        assert_eq!(o.complete_range(), Some((0, 2)));
+        o.params.max_level = 1;
+        assert_eq!(o.complete_range(), Some((0, 1)));
+        o.params.base_level = 2;
+        assert_eq!(o.complete_range(), None);
+        o.params.max_level = 5;
+        assert_eq!(o.complete_range(), Some((2, 2)));
+    }
+
+    #[test]
+    fn wrong_level_size_is_incomplete() {
+        let mut o = TextureObject::new(Some(Target::Tex2D));
+        o.levels[0] = level(4, 4);
+        o.levels[1] = level(2, 2);
+        o.levels[2] = level(2, 1);
+        assert_eq!(o.complete_range(), None);
+    }
+
+    #[test]
+    fn bind_target_mismatch_and_delete_unbinds() {
+        let mut ts = TextureState::default();
+        let n = ts.gen(2);
+        assert!(!ts.is_texture(n[0]));
+        ts.bind(0, Target::Tex2D, n[0]).unwrap();
+        assert!(ts.is_texture(n[0]));
+        assert_eq!(
+            ts.bind(1, Target::Tex1D, n[0]),
+            Err(GlError::InvalidOperation)
+        );
+        ts.bind(3, Target::Tex2D, n[0]).unwrap();
+        ts.delete(&[n[0]]);
+        assert_eq!(ts.units[0].bound[1], 0);
+        assert_eq!(ts.units[3].bound[1], 0);
+        assert!(!ts.is_texture(n[0]));
+    }
+}

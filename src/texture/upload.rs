@@ -1,0 +1,547 @@
+//! Texture image upload and readback: client formats and types into RGBA8 texels, and back.
+//!
+//! Every component becomes an 8-bit unorm value the way Mesa's `_mesa_format_convert`
+//! (`main/format_utils.h`) does it; verified against Mesa 22.3 with glGetTexImage:
+//! - GL_FLOAT: clamp to [0,1], `round_half_even(v·255)` (`_mesa_float_to_unorm`);
+//! - GL_UNSIGNED_SHORT/INT: `(v·255 + 2^(n−1) − 1) / (2^n − 1)` (`_mesa_unorm_to_unorm`);
+//! - GL_BYTE/SHORT/INT: negative → 0, else the unsigned rule with n−1 bits
+//!   (`_mesa_snorm_to_unorm`, so a byte 1 becomes 2 by bit replication);
+//! - packed fields of fewer than 8 bits: bit replication (`EXTEND_NORMALIZED_INT`), which is
+//!   also what llvmpipe samples from a 565/4444/5551 texture; 10-bit fields round down as
+//!   the 16-bit rule does.
+//!
+//! The client colour is first expanded to RGBA (missing colour 0, missing alpha 1, L to
+//! R=G=B), then reduced to the base internal format (L and I take R), then stored after the
+//! base-format swizzle (see the module root).
+
+use super::{BaseFormat, Level};
+use crate::context::state::PixelStore;
+use crate::context::{GlError, GlResult};
+use crate::ffi::enums::*;
+
+/// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
+pub fn base_format(internal: i32) -> Option<BaseFormat> {
+    use BaseFormat as B;
+    Some(match internal as u32 {
+        1 | GL_LUMINANCE | GL_LUMINANCE4 | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 => {
+            B::Luminance
+        }
+        2
+        | GL_LUMINANCE_ALPHA
+        | GL_LUMINANCE4_ALPHA4
+        | GL_LUMINANCE6_ALPHA2
+        | GL_LUMINANCE8_ALPHA8
+        | GL_LUMINANCE12_ALPHA4
+        | GL_LUMINANCE12_ALPHA12
+        | GL_LUMINANCE16_ALPHA16 => B::LuminanceAlpha,
+        3 | GL_RGB | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 => {
+            B::Rgb
+        }
+        4 | GL_RGBA | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGBA8 | GL_RGB10_A2 | GL_RGBA12
+        | GL_RGBA16 => B::Rgba,
+        GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => B::Alpha,
+        GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => {
+            B::Intensity
+        }
+        _ => return None,
+    })
+}
+
+/// Which RGBA channel each client component is (`4` = luminance, i.e. R=G=B).
+fn format_components(format: u32) -> Option<&'static [usize]> {
+    Some(match format {
+        GL_RGBA => &[0, 1, 2, 3],
+        GL_RGB => &[0, 1, 2],
+        GL_BGRA => &[2, 1, 0, 3],
+        GL_BGR => &[2, 1, 0],
+        GL_LUMINANCE => &[4],
+        GL_LUMINANCE_ALPHA => &[4, 3],
+        GL_ALPHA => &[3],
+        GL_RED => &[0],
+        GL_GREEN => &[1],
+        GL_BLUE => &[2],
+        _ => return None,
+    })
+}
+
+/// A client pixel type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Ty {
+    /// One value per component of this many bytes (signed?, float?).
+    Plain {
+        size: usize,
+        signed: bool,
+        float: bool,
+    },
+    /// A packed pixel: total bytes, fields as (shift, bits) in component order.
+    Packed {
+        size: usize,
+        fields: &'static [(u32, u32)],
+    },
+}
+
+fn pixel_type(ty: u32) -> Option<Ty> {
+    let plain = |size, signed, float| Ty::Plain {
+        size,
+        signed,
+        float,
+    };
+    let packed = |size, fields| Ty::Packed { size, fields };
+    Some(match ty {
+        GL_UNSIGNED_BYTE => plain(1, false, false),
+        GL_BYTE => plain(1, true, false),
+        GL_UNSIGNED_SHORT => plain(2, false, false),
+        GL_SHORT => plain(2, true, false),
+        GL_UNSIGNED_INT => plain(4, false, false),
+        GL_INT => plain(4, true, false),
+        GL_FLOAT => plain(4, false, true),
+        GL_UNSIGNED_BYTE_3_3_2 => packed(1, &[(5, 3), (2, 3), (0, 2)]),
+        GL_UNSIGNED_BYTE_2_3_3_REV => packed(1, &[(0, 3), (3, 3), (6, 2)]),
+        GL_UNSIGNED_SHORT_5_6_5 => packed(2, &[(11, 5), (5, 6), (0, 5)]),
+        GL_UNSIGNED_SHORT_5_6_5_REV => packed(2, &[(0, 5), (5, 6), (11, 5)]),
+        GL_UNSIGNED_SHORT_4_4_4_4 => packed(2, &[(12, 4), (8, 4), (4, 4), (0, 4)]),
+        GL_UNSIGNED_SHORT_4_4_4_4_REV => packed(2, &[(0, 4), (4, 4), (8, 4), (12, 4)]),
+        GL_UNSIGNED_SHORT_5_5_5_1 => packed(2, &[(11, 5), (6, 5), (1, 5), (0, 1)]),
+        GL_UNSIGNED_SHORT_1_5_5_5_REV => packed(2, &[(0, 5), (5, 5), (10, 5), (15, 1)]),
+        GL_UNSIGNED_INT_8_8_8_8 => packed(4, &[(24, 8), (16, 8), (8, 8), (0, 8)]),
+        GL_UNSIGNED_INT_8_8_8_8_REV => packed(4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
+        GL_UNSIGNED_INT_10_10_10_2 => packed(4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
+        GL_UNSIGNED_INT_2_10_10_10_REV => packed(4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+        _ => return None,
+    })
+}
+
+/// A validated client pixel layout.
+#[derive(Clone, Copy, Debug)]
+pub struct ClientFormat {
+    comps: &'static [usize],
+    ty: Ty,
+}
+
+impl ClientFormat {
+    /// Validates `format`/`type`: unknown → GL_INVALID_ENUM, a packed type whose component
+    /// count does not match the format → GL_INVALID_OPERATION.
+    pub fn new(format: u32, ty: u32) -> GlResult<ClientFormat> {
+        let comps = format_components(format).ok_or(GlError::InvalidEnum)?;
+        let t = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
+        if let Ty::Packed { fields, .. } = t {
+            if fields.len() != comps.len() || (fields.len() == 3 && format != GL_RGB) {
+                return Err(GlError::InvalidOperation);
+            }
+        }
+        Ok(ClientFormat { comps, ty: t })
+    }
+
+    /// Bytes per pixel and bytes per element (for the alignment rule).
+    pub fn sizes(&self) -> (usize, usize) {
+        match self.ty {
+            Ty::Plain { size, .. } => (size * self.comps.len(), size),
+            Ty::Packed { size, .. } => (size, size),
+        }
+    }
+}
+
+/// Mesa's `_mesa_unorm_to_unorm` from `bits` to 8 bits.
+#[inline]
+pub fn unorm_to_u8(x: u64, bits: u32) -> u8 {
+    if bits == 8 {
+        x as u8
+    } else if bits < 8 {
+        // EXTEND_NORMALIZED_INT
+        let max = (1u64 << bits) - 1;
+        let r = x * (255 / max)
+            + if 8 % bits != 0 {
+                x >> (bits - 8 % bits)
+            } else {
+                0
+            };
+        r.min(255) as u8
+    } else {
+        let max = (1u64 << bits) - 1;
+        let half = (1u64 << (bits - 1)) - 1;
+        ((x * 255 + half) / max) as u8
+    }
+}
+
+/// Mesa's `_mesa_float_to_unorm(x, 8)`.
+#[inline]
+pub fn float_to_u8(x: f32) -> u8 {
+    if x > 1.0 {
+        255
+    } else if x > 0.0 {
+        (x * 255.0).round_ties_even() as u8
+    } else {
+        0
+    }
+}
+
+fn read_uint(bytes: &[u8], swap: bool) -> u64 {
+    let mut b = [0u8; 8];
+    b[..bytes.len()].copy_from_slice(bytes);
+    if swap {
+        b[..bytes.len()].reverse();
+    }
+    let v = u64::from_ne_bytes(b);
+    if cfg!(target_endian = "big") {
+        v >> (64 - 8 * bytes.len())
+    } else {
+        v
+    }
+}
+
+/// Decodes one client pixel into RGBA8 (missing colour 0, alpha 255).
+fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool) -> [u8; 4] {
+    let mut rgba = [0u8, 0, 0, 255];
+    let mut put = |comp: usize, v: u8| {
+        if comp == 4 {
+            rgba[0] = v;
+            rgba[1] = v;
+            rgba[2] = v;
+        } else {
+            rgba[comp] = v;
+        }
+    };
+    match cf.ty {
+        Ty::Plain {
+            size,
+            signed,
+            float,
+        } => {
+            for (i, &comp) in cf.comps.iter().enumerate() {
+                let raw = read_uint(&px[i * size..(i + 1) * size], swap && size > 1);
+                let bits = 8 * size as u32;
+                let v = if float {
+                    float_to_u8(f32::from_bits(raw as u32))
+                } else if signed {
+                    let sv = ((raw << (64 - bits)) as i64) >> (64 - bits);
+                    if sv <= 0 {
+                        0
+                    } else {
+                        unorm_to_u8(sv as u64, bits - 1)
+                    }
+                } else {
+                    unorm_to_u8(raw, bits)
+                };
+                put(comp, v);
+            }
+        }
+        Ty::Packed { size, fields } => {
+            let raw = read_uint(&px[..size], swap && size > 1);
+            for (&comp, &(shift, bits)) in cf.comps.iter().zip(fields) {
+                let x = (raw >> shift) & ((1 << bits) - 1);
+                put(comp, unorm_to_u8(x, bits));
+            }
+        }
+    }
+    rgba
+}
+
+/// Reduces client RGBA to the base format's stored (swizzled) texel.
+#[inline]
+pub fn to_texel(base: BaseFormat, rgba: [u8; 4]) -> [u8; 4] {
+    base.swizzle(rgba, 0, 255)
+}
+
+/// Where a client image's bytes are: the byte offset of pixel (x, y) of a `width`-wide image.
+#[derive(Clone, Copy, Debug)]
+pub struct Layout {
+    /// Offset of the first pixel.
+    pub start: usize,
+    /// Bytes between rows.
+    pub stride: usize,
+    /// Bytes per pixel.
+    pub bpp: usize,
+}
+
+impl Layout {
+    /// The layout of a `width`-wide image under `ps` (GL 1.5 §3.6.4).
+    pub fn new(ps: &PixelStore, width: usize, cf: &ClientFormat) -> Layout {
+        let (bpp, elem) = cf.sizes();
+        let (start, stride) = crate::ffi::query::packed_layout(ps, width, bpp, elem);
+        Layout { start, stride, bpp }
+    }
+    /// Bytes from the first byte read to one past the last, for `w` x `h` pixels.
+    pub fn span(&self, w: usize, h: usize) -> usize {
+        if w == 0 || h == 0 {
+            0
+        } else {
+            self.start + (h - 1) * self.stride + w * self.bpp
+        }
+    }
+}
+
+/// Unpacks a `w` x `h` client image into texels of `base`.
+///
+/// # Safety
+/// `data` must be readable for `Layout::span(w, h)` bytes (GL's contract with the program).
+pub unsafe fn unpack(
+    ps: &PixelStore,
+    cf: &ClientFormat,
+    base: BaseFormat,
+    w: usize,
+    h: usize,
+    data: *const u8,
+) -> Vec<[u8; 4]> {
+    let lay = Layout::new(ps, w, cf);
+    let mut out = Vec::with_capacity(w * h);
+    if data.is_null() || w == 0 || h == 0 {
+        out.resize(w * h, to_texel(base, [0, 0, 0, 0]));
+        return out;
+    }
+    // SAFETY: the caller guarantees `span` readable bytes.
+    let bytes = unsafe { std::slice::from_raw_parts(data, lay.span(w, h)) };
+    for y in 0..h {
+        let row = lay.start + y * lay.stride;
+        for x in 0..w {
+            let o = row + x * lay.bpp;
+            out.push(to_texel(
+                base,
+                decode_pixel(cf, &bytes[o..o + lay.bpp], ps.swap_bytes),
+            ));
+        }
+    }
+    out
+}
+
+/// The RGBA value glGetTexImage starts from (GL 1.5 table 6.1: L and I go to R, with G = B
+/// = 0; A = 1 where the format has none).
+fn readback_rgba(base: BaseFormat, t: [u8; 4]) -> [u8; 4] {
+    match base {
+        BaseFormat::Alpha => [0, 0, 0, t[3]],
+        BaseFormat::Luminance => [t[0], 0, 0, 255],
+        BaseFormat::LuminanceAlpha => [t[0], 0, 0, t[3]],
+        BaseFormat::Intensity => [t[0], 0, 0, t[0]],
+        BaseFormat::Rgb => [t[0], t[1], t[2], 255],
+        BaseFormat::Rgba => t,
+    }
+}
+
+fn encode_u8(v: u8, ty: Ty, out: &mut [u8], swap: bool) {
+    let put = |out: &mut [u8], raw: u64, size: usize| {
+        let b = raw.to_ne_bytes();
+        let bytes = if cfg!(target_endian = "big") {
+            &b[8 - size..]
+        } else {
+            &b[..size]
+        };
+        out[..size].copy_from_slice(bytes);
+        if swap && size > 1 {
+            out[..size].reverse();
+        }
+    };
+    if let Ty::Plain {
+        size,
+        signed,
+        float,
+    } = ty
+    {
+        let raw: u64 = if float {
+            (v as f32 * (1.0 / 255.0)).to_bits() as u64
+        } else if signed {
+            // unorm → snorm: v · (2^(n−1) − 1) / 255, rounded
+            let max = (1u64 << (8 * size - 1)) - 1;
+            (v as u64 * max + 127) / 255
+        } else {
+            let max = if size == 8 {
+                u64::MAX
+            } else {
+                (1u64 << (8 * size)) - 1
+            };
+            v as u64 * (max / 255)
+        };
+        put(out, raw, size);
+    }
+}
+
+/// Packs texels of a level into client memory (glGetTexImage).
+///
+/// # Safety
+/// `dst` must be writable for `Layout::span(w, h)` bytes.
+pub unsafe fn pack(ps: &PixelStore, cf: &ClientFormat, img: &Level, dst: *mut u8) {
+    let (w, h) = (img.width, img.height);
+    let lay = Layout::new(ps, w, cf);
+    if dst.is_null() || w == 0 || h == 0 {
+        return;
+    }
+    // SAFETY: the caller guarantees `span` writable bytes.
+    let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
+    for y in 0..h {
+        for x in 0..w {
+            let rgba = readback_rgba(img.base, img.texel(x, y));
+            let o = lay.start + y * lay.stride + x * lay.bpp;
+            let px = &mut bytes[o..o + lay.bpp];
+            match cf.ty {
+                Ty::Plain { size, .. } => {
+                    for (i, &comp) in cf.comps.iter().enumerate() {
+                        let v = if comp == 4 { rgba[0] } else { rgba[comp] };
+                        encode_u8(v, cf.ty, &mut px[i * size..(i + 1) * size], ps.swap_bytes);
+                    }
+                }
+                Ty::Packed { size, fields } => {
+                    let mut raw = 0u64;
+                    for (&comp, &(shift, bits)) in cf.comps.iter().zip(fields) {
+                        let v = if comp == 4 { rgba[0] } else { rgba[comp] } as u64;
+                        let max = (1u64 << bits) - 1;
+                        raw |= ((v * max + 127) / 255) << shift;
+                    }
+                    let b = raw.to_ne_bytes();
+                    let bytes = if cfg!(target_endian = "big") {
+                        &b[8 - size..]
+                    } else {
+                        &b[..size]
+                    };
+                    px[..size].copy_from_slice(bytes);
+                    if ps.swap_bytes && size > 1 {
+                        px[..size].reverse();
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn conversions_match_mesa_probe() {
+        // values measured with Mesa 22.3 (glTexImage2D GL_RGBA8 + glGetTexImage)
+        assert_eq!(float_to_u8(1.5 / 255.0), 2);
+        assert_eq!(float_to_u8(2.5 / 255.0), 2);
+        assert_eq!(float_to_u8(5.5 / 255.0), 6);
+        assert_eq!(float_to_u8(-0.5), 0);
+        assert_eq!(float_to_u8(f32::NAN), 0);
+        assert_eq!(unorm_to_u8(128, 16), 0);
+        assert_eq!(unorm_to_u8(129, 16), 1);
+        assert_eq!(unorm_to_u8(385, 16), 1);
+        assert_eq!(unorm_to_u8(774, 16), 3);
+        assert_eq!(unorm_to_u8(127, 15), 1); // GL_SHORT 127
+        assert_eq!(unorm_to_u8(385, 15), 3);
+        assert_eq!(unorm_to_u8(8400953, 32), 0);
+        assert_eq!(unorm_to_u8(16801906, 32), 1);
+        assert_eq!(unorm_to_u8(11561273, 31), 1); // GL_INT
+        assert_eq!(unorm_to_u8(1, 7), 2); // GL_BYTE 1
+        assert_eq!(unorm_to_u8(64, 7), 129);
+        assert_eq!(unorm_to_u8(127, 7), 255);
+        // bit replication of packed fields
+        assert_eq!(unorm_to_u8(3, 5), 24);
+        assert_eq!(unorm_to_u8(4, 5), 33);
+        assert_eq!(unorm_to_u8(1, 6), 4);
+        assert_eq!(unorm_to_u8(5, 4), 85);
+        assert_eq!(unorm_to_u8(1, 1), 255);
+        assert_eq!(unorm_to_u8(7, 3), 255);
+        assert_eq!(unorm_to_u8(1, 3), 36);
+    }
+
+    #[test]
+    fn unpack_alignment_row_length_skip() {
+        let cf = ClientFormat::new(GL_RGB, GL_UNSIGNED_BYTE).unwrap();
+        // 3 px wide RGB, alignment 4 → stride 12 (9 bytes + 3 padding)
+        let ps = PixelStore {
+            alignment: 4,
+            ..Default::default()
+        };
+        let mut data = [0u8; 24];
+        for (i, b) in data.iter_mut().enumerate() {
+            *b = i as u8;
+        }
+        let t = unsafe { unpack(&ps, &cf, BaseFormat::Rgb, 3, 2, data.as_ptr()) };
+        assert_eq!(t[2], [6, 7, 8, 255]);
+        assert_eq!(t[3], [12, 13, 14, 255]);
+        // alignment 1: tight rows
+        let ps1 = PixelStore {
+            alignment: 1,
+            ..Default::default()
+        };
+        let t = unsafe { unpack(&ps1, &cf, BaseFormat::Rgb, 3, 2, data.as_ptr()) };
+        assert_eq!(t[3], [9, 10, 11, 255]);
+        // row length 4, skip 1 pixel and 1 row, alignment 1
+        let ps2 = PixelStore {
+            alignment: 1,
+            row_length: 4,
+            skip_pixels: 1,
+            skip_rows: 1,
+            ..Default::default()
+        };
+        let data = (0..36u8).collect::<Vec<_>>();
+        let t = unsafe { unpack(&ps2, &cf, BaseFormat::Rgb, 2, 2, data.as_ptr()) };
+        assert_eq!(t[0], [15, 16, 17, 255]);
+        assert_eq!(t[2], [27, 28, 29, 255]);
+    }
+
+    #[test]
+    fn base_format_reduction_and_swizzle() {
+        let cf = ClientFormat::new(GL_RGBA, GL_UNSIGNED_BYTE).unwrap();
+        let ps = PixelStore {
+            alignment: 1,
+            ..Default::default()
+        };
+        let px = [10u8, 20, 30, 40];
+        let get = |b| unsafe { unpack(&ps, &cf, b, 1, 1, px.as_ptr()) }[0];
+        assert_eq!(get(BaseFormat::Luminance), [10, 10, 10, 255]);
+        assert_eq!(get(BaseFormat::Alpha), [0, 0, 0, 40]);
+        assert_eq!(get(BaseFormat::Intensity), [10, 10, 10, 10]);
+        assert_eq!(get(BaseFormat::LuminanceAlpha), [10, 10, 10, 40]);
+        assert_eq!(get(BaseFormat::Rgb), [10, 20, 30, 255]);
+        let la = ClientFormat::new(GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE).unwrap();
+        let t = unsafe { unpack(&ps, &la, BaseFormat::Rgba, 1, 1, px.as_ptr()) }[0];
+        assert_eq!(t, [10, 10, 10, 20]);
+    }
+
+    #[test]
+    fn packed_and_swapped() {
+        let ps = PixelStore {
+            alignment: 1,
+            swap_bytes: true,
+            ..Default::default()
+        };
+        let cf = ClientFormat::new(GL_RGB, GL_UNSIGNED_SHORT_5_6_5).unwrap();
+        let v: u16 = (3 << 11) | (1 << 5) | 31;
+        let b = v.swap_bytes().to_ne_bytes();
+        let t = unsafe { unpack(&ps, &cf, BaseFormat::Rgb, 1, 1, b.as_ptr()) }[0];
+        assert_eq!(t, [24, 4, 255, 255]);
+        assert_eq!(
+            ClientFormat::new(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5).err(),
+            Some(GlError::InvalidOperation)
+        );
+        assert_eq!(
+            ClientFormat::new(GL_INTENSITY, GL_UNSIGNED_BYTE).err(),
+            Some(GlError::InvalidEnum)
+        );
+        let bgra = ClientFormat::new(GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV).unwrap();
+        let ps = PixelStore {
+            alignment: 1,
+            ..Default::default()
+        };
+        let px = 0x4411_2233u32.to_ne_bytes();
+        let t = unsafe { unpack(&ps, &bgra, BaseFormat::Rgba, 1, 1, px.as_ptr()) }[0];
+        assert_eq!(t, [0x11, 0x22, 0x33, 0x44]);
+    }
+
+    #[test]
+    fn pack_round_trip() {
+        let ps = PixelStore {
+            alignment: 1,
+            ..Default::default()
+        };
+        let img = Level {
+            width: 3,
+            height: 1,
+            internal_format: GL_RGBA,
+            base: BaseFormat::Rgba,
+            texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]],
+        };
+        let cf = ClientFormat::new(GL_BGRA, GL_UNSIGNED_BYTE).unwrap();
+        let mut out = vec![0u8; 12];
+        unsafe { pack(&ps, &cf, &img, out.as_mut_ptr()) };
+        assert_eq!(&out[..4], &[3, 2, 1, 4]);
+        let back = unsafe { unpack(&ps, &cf, BaseFormat::Rgba, 3, 1, out.as_ptr()) };
+        assert_eq!(back, img.texels);
+        let f = ClientFormat::new(GL_RGBA, GL_FLOAT).unwrap();
+        let mut outf = vec![0f32; 12];
+        unsafe { pack(&ps, &f, &img, outf.as_mut_ptr() as *mut u8) };
+        let back = unsafe { unpack(&ps, &f, BaseFormat::Rgba, 3, 1, outf.as_ptr() as *const u8) };
+        assert_eq!(back, img.texels);
+    }
+}
