@@ -33,7 +33,15 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         .projection
         .top()
         .mul(ctx.matrices.modelview.top());
-    let stage = VertexStage { mvp, viewport, fma };
+    let mut stage = VertexStage::new(mvp, viewport, fma);
+    let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
+        ..crate::context::state::MAX_TEXTURE_UNITS)
+        .filter_map(|u| {
+            let p = ctx.textures.unit_plan(u)?;
+            stage.add_texture_unit(u, ctx.matrices.texture[u].top());
+            Some(p)
+        })
+        .collect();
     let plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     let Some(region) = ctx.draw_region() else {
         return;
@@ -67,14 +75,14 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             None => &cv[k],
         }
     };
-    let nvary = 4;
+    let nvary = stage.nvary();
     let stats = &mut ctx.stats;
     let Some(fb) = ctx.fb.as_mut() else { return };
     let mut tri = SetupTriangle::default();
     let mut one =
         |a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, stats: &mut crate::stats::Stats| {
             match setup_triangle([a, b, c], nvary, cull, &mut tri) {
-                SetupResult::Draw => raster_triangle(&tri, region, &plan, fb, stats),
+                SetupResult::Draw => raster_triangle(&tri, region, &plan, &tex_plans, fb, stats),
                 SetupResult::Degenerate => stats.tris_degenerate += 1,
                 SetupResult::Culled => stats.tris_culled += 1,
             }

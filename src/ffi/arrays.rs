@@ -226,11 +226,11 @@ pub extern "C" fn glArrayElement(i: GLint) {
                         cur.normal = [n[0], n[1], n[2]];
                     }
                 }
-                if a.texcoord[0].enabled {
-                    if let Some(t) =
-                        fetch_attr(a, &a.texcoord[0], i as u32, false, [0.0, 0.0, 0.0, 1.0])
-                    {
-                        cur.texcoord[0] = t;
+                for (u, arr) in a.texcoord.iter().enumerate() {
+                    if arr.enabled {
+                        if let Some(t) = fetch_attr(a, arr, i as u32, false, [0.0, 0.0, 0.0, 1.0]) {
+                            cur.texcoord[u] = t;
+                        }
                     }
                 }
                 if a.vertex.enabled {

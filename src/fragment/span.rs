@@ -5,9 +5,11 @@
 
 use super::blend::Lanes;
 use super::FragPlan;
+use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::framebuffer::{float_to_ubyte, DepthFormat, Framebuffer};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
 /// How `a * b + c` rounds: llvmpipe fuses it exactly when the CPU has FMA.
 pub trait Madd {
@@ -109,6 +111,91 @@ fn colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     c
 }
 
+/// The texture values of one chunk: per enabled unit, per lane, RGBA as the sampler
+/// returns it.
+pub type TexLanes = [[[f32; 4]; LANES]; MAX_TEXTURE_UNITS];
+
+/// Perspective-correct, projected texture coordinates (s, t) of one unit at [`LANES`]
+/// pixels of row `fy`: `a_plane * (1 / w_plane)`, then `coord * (1 / q)` as llvmpipe's
+/// lowered projective sampling does.
+#[inline(always)]
+pub fn tex_coords<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    base: usize,
+    fx: &[f32; LANES],
+    fy: f32,
+) -> ([f32; LANES], [f32; LANES]) {
+    let mut oow = [1f32; LANES];
+    if PERSP {
+        for i in 0..LANES {
+            oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
+        }
+    }
+    let (mut s, mut tt, mut q) = ([0f32; LANES], [0f32; LANES], [0f32; LANES]);
+    for i in 0..LANES {
+        let e = |k: usize| {
+            let a = eval::<M>(&t.vary[base + k], fx[i], fy);
+            if PERSP {
+                a * oow[i]
+            } else {
+                a
+            }
+        };
+        s[i] = e(0);
+        tt[i] = e(1);
+        q[i] = e(3);
+    }
+    for i in 0..LANES {
+        let r = 1.0f32 / q[i];
+        s[i] *= r;
+        tt[i] *= r;
+    }
+    (s, tt)
+}
+
+/// The colours of [`LANES`] pixels with the texture environment of every enabled unit
+/// applied (f32 as Mesa's fixed-function fragment shader computes it), converted to 8 bits.
+#[inline(always)]
+fn textured_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    fx: &[f32; LANES],
+    fy: f32,
+    units: &[UnitPlan<'_>],
+    texels: &TexLanes,
+) -> Lanes {
+    let mut frag = [[0f32; LANES]; 4];
+    if FLAT {
+        for ch in 0..4 {
+            frag[ch] = [t.flat[ch]; LANES];
+        }
+    } else {
+        let mut oow = [1f32; LANES];
+        if PERSP {
+            for i in 0..LANES {
+                oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
+            }
+        }
+        for ch in 0..4 {
+            for i in 0..LANES {
+                let a = eval::<M>(&t.vary[ch], fx[i], fy);
+                frag[ch][i] = if PERSP { a * oow[i] } else { a };
+            }
+        }
+    }
+    let mut c = [[0u8; LANES]; 4];
+    for i in 0..LANES {
+        let f = [frag[0][i], frag[1][i], frag[2][i], frag[3][i]];
+        let mut prev = f;
+        for (k, u) in units.iter().enumerate() {
+            prev = u.env(f, texels[k][i], prev);
+        }
+        for ch in 0..4 {
+            c[ch][i] = unorm8(prev[ch]);
+        }
+    }
+    c
+}
+
 /// Shades pixels `x0..=x1` of row `py` (y-down) of triangle `t`, [`LANES`] at a time.
 ///
 /// `FULL` selects the general path (alpha test, stencil, blending, logic op, read from
@@ -130,6 +217,40 @@ pub fn shade_span<
     x1: usize,
     stats: &mut Stats,
 ) {
+    let mut x = x0;
+    while x <= x1 {
+        let n = LANES.min(x1 + 1 - x);
+        let mut live = [false; LANES];
+        for (i, l) in live.iter_mut().enumerate() {
+            *l = i < n;
+        }
+        shade_chunk::<M, DEPTH, FLAT, PERSP, FULL>(t, plan, &[], None, fb, py, x, live, stats);
+        x += n;
+    }
+}
+
+/// Shades the `live` lanes of the chunk of [`LANES`] pixels starting at `x` in row `py`.
+/// `units` and `texels` are the enabled texture units and their sampled values (textured
+/// draws always take the `FULL` path).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub fn shade_chunk<
+    M: Madd,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+    const FULL: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    texels: Option<&TexLanes>,
+    fb: &mut Framebuffer,
+    py: usize,
+    x: usize,
+    mut live: [bool; LANES],
+    stats: &mut Stats,
+) {
     let w = fb.width;
     let fy = py as f32;
     let mask = plan.color_mask;
@@ -139,127 +260,123 @@ pub fn shade_span<
     let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
     let store_plain =
         fb.format.has_alpha() && !matches!(fb.format, crate::framebuffer::ColorFormat::Rgb565);
-    stats.fragments += (x1 + 1 - x0) as u64;
-    let mut x = x0;
-    while x <= x1 {
-        let n = LANES.min(x1 + 1 - x);
-        let row = py * w + x;
-        let mut fx = [0f32; LANES];
-        for (i, f) in fx.iter_mut().enumerate() {
-            *f = (x + i) as f32;
-        }
-        let mut live = [false; LANES];
-        for (i, l) in live.iter_mut().enumerate() {
-            *l = i < n;
-        }
-        let mut c: Lanes = [[0u8; LANES]; 4];
-        if FULL {
-            c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
-            if let Some((func, reference)) = plan.alpha {
-                for i in 0..n {
-                    if live[i] && !func.test(c[3][i], reference) {
-                        live[i] = false;
-                        stats.alpha_failed += 1;
-                    }
-                }
-            }
-            if let Some(sp) = &stencil {
-                for i in 0..n {
-                    if live[i] {
-                        stats.stencil_reads += 1;
-                        let s = fb.stencil[row + i];
-                        if !sp.test(s) {
-                            fb.stencil[row + i] = sp.update(sp.fail, s);
-                            live[i] = false;
-                            stats.stencil_failed += 1;
-                        }
-                    }
-                }
-            }
-        }
-        if DEPTH {
-            let d = plan.depth.expect("DEPTH implies a depth plan");
-            let mut q = [0u32; LANES];
-            for i in 0..LANES {
-                q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx[i], fy));
-            }
-            let dst = &mut fb.depth[row..row + n];
+    // Lanes that address pixels inside the row (lanes past the right edge are never live).
+    let n = LANES.min(w - x);
+    stats.fragments += live.iter().filter(|&&l| l).count() as u64;
+    let row = py * w + x;
+    let mut fx = [0f32; LANES];
+    for (i, f) in fx.iter_mut().enumerate() {
+        *f = (x + i) as f32;
+    }
+    let mut c: Lanes = [[0u8; LANES]; 4];
+    if FULL {
+        c = match texels {
+            Some(tx) => textured_colors::<M, FLAT, PERSP>(t, &fx, fy, units, tx),
+            None => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
+        };
+        if let Some((func, reference)) = plan.alpha {
             for i in 0..n {
-                if !live[i] {
-                    continue;
-                }
-                stats.depth_reads += 1;
-                if d.func.test(q[i], dst[i]) {
-                    if d.write {
-                        dst[i] = q[i];
-                    }
-                } else {
+                if live[i] && !func.test(c[3][i], reference) {
                     live[i] = false;
-                    stats.depth_failed += 1;
-                    if FULL {
-                        if let Some(sp) = &stencil {
-                            let s = fb.stencil[row + i];
-                            fb.stencil[row + i] = sp.update(sp.zfail, s);
-                        }
-                    }
+                    stats.alpha_failed += 1;
                 }
             }
         }
-        if FULL {
-            if let Some(sp) = &stencil {
-                for i in 0..n {
-                    if live[i] {
-                        let s = fb.stencil[row + i];
-                        fb.stencil[row + i] = sp.update(sp.zpass, s);
-                    }
-                }
-            }
-        }
-        x += n;
-        if no_color || !live[..n].iter().any(|&l| l) {
-            continue;
-        }
-        if !FULL {
-            c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
-        }
-        let dst = &mut fb.color[row..row + n];
-        if FULL && (plan.blend.is_some() || plan.logic.is_some()) {
-            let mut d: Lanes = [[0u8; LANES]; 4];
+        if let Some(sp) = &stencil {
             for i in 0..n {
-                for k in 0..4 {
-                    d[k][i] = dst[i][k];
-                }
-            }
-            stats.color_reads += n as u64;
-            if let Some(b) = &plan.blend {
-                c = super::blend::blend_lanes(b, &c, &d);
-            } else if let Some(op) = plan.logic {
-                for k in 0..4 {
-                    for i in 0..LANES {
-                        c[k][i] = op.apply(c[k][i], d[k][i]);
+                if live[i] {
+                    stats.stencil_reads += 1;
+                    let s = fb.stencil[row + i];
+                    if !sp.test(s) {
+                        fb.stencil[row + i] = sp.update(sp.fail, s);
+                        live[i] = false;
+                        stats.stencil_failed += 1;
                     }
                 }
             }
         }
+    }
+    if DEPTH {
+        let d = plan.depth.expect("DEPTH implies a depth plan");
+        let mut q = [0u32; LANES];
+        for i in 0..LANES {
+            q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx[i], fy));
+        }
+        let dst = &mut fb.depth[row..row + n];
         for i in 0..n {
             if !live[i] {
                 continue;
             }
-            let mut v = [c[0][i], c[1][i], c[2][i], c[3][i]];
-            if !store_plain {
-                v = store_rgba8(fb.format, v);
-            }
-            if full_mask {
-                dst[i] = v;
+            stats.depth_reads += 1;
+            if d.func.test(q[i], dst[i]) {
+                if d.write {
+                    dst[i] = q[i];
+                }
             } else {
-                for k in 0..4 {
-                    if mask[k] {
-                        dst[i][k] = v[k];
+                live[i] = false;
+                stats.depth_failed += 1;
+                if FULL {
+                    if let Some(sp) = &stencil {
+                        let s = fb.stencil[row + i];
+                        fb.stencil[row + i] = sp.update(sp.zfail, s);
                     }
                 }
             }
-            stats.color_writes += 1;
         }
+    }
+    if FULL {
+        if let Some(sp) = &stencil {
+            for i in 0..n {
+                if live[i] {
+                    let s = fb.stencil[row + i];
+                    fb.stencil[row + i] = sp.update(sp.zpass, s);
+                }
+            }
+        }
+    }
+    if no_color || !live[..n].iter().any(|&l| l) {
+        return;
+    }
+    if !FULL {
+        c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
+    }
+    let dst = &mut fb.color[row..row + n];
+    if FULL && (plan.blend.is_some() || plan.logic.is_some()) {
+        let mut d: Lanes = [[0u8; LANES]; 4];
+        for i in 0..n {
+            for k in 0..4 {
+                d[k][i] = dst[i][k];
+            }
+        }
+        stats.color_reads += n as u64;
+        if let Some(b) = &plan.blend {
+            c = super::blend::blend_lanes(b, &c, &d);
+        } else if let Some(op) = plan.logic {
+            for k in 0..4 {
+                for i in 0..LANES {
+                    c[k][i] = op.apply(c[k][i], d[k][i]);
+                }
+            }
+        }
+    }
+    for i in 0..n {
+        if !live[i] {
+            continue;
+        }
+        let mut v = [c[0][i], c[1][i], c[2][i], c[3][i]];
+        if !store_plain {
+            v = store_rgba8(fb.format, v);
+        }
+        if full_mask {
+            dst[i] = v;
+        } else {
+            for k in 0..4 {
+                if mask[k] {
+                    dst[i][k] = v[k];
+                }
+            }
+        }
+        stats.color_writes += 1;
     }
 }
 

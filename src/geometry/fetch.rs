@@ -6,7 +6,7 @@
 //! reads as (0, 0, 0, 1) rather than outside the store.
 
 use crate::context::arrays::{ArrayPointer, ArrayState, DataType};
-use crate::context::state::CurrentAttribs;
+use crate::context::state::{CurrentAttribs, MAX_TEXTURE_UNITS};
 
 /// One vertex as the vertex stage receives it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -17,8 +17,8 @@ pub struct VertexIn {
     pub color: [f32; 4],
     /// Normal.
     pub normal: [f32; 3],
-    /// Texture coordinate of unit 0.
-    pub texcoord: [f32; 4],
+    /// Texture coordinates, per texture unit.
+    pub texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
 }
 
 impl VertexIn {
@@ -28,7 +28,7 @@ impl VertexIn {
             pos,
             color: cur.color,
             normal: cur.normal,
-            texcoord: cur.texcoord[0],
+            texcoord: cur.texcoord,
         }
     }
 }
@@ -155,15 +155,11 @@ pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32
                 v.normal = [n[0], n[1], n[2]];
             }
         }
-        if arrays.texcoord[0].enabled {
-            v.texcoord = fetch_attr(
-                arrays,
-                &arrays.texcoord[0],
-                index,
-                false,
-                [0.0, 0.0, 0.0, 1.0],
-            )
-            .unwrap_or([0.0, 0.0, 0.0, 1.0]);
+        for (u, arr) in arrays.texcoord.iter().enumerate() {
+            if arr.enabled {
+                v.texcoord[u] = fetch_attr(arrays, arr, index, false, [0.0, 0.0, 0.0, 1.0])
+                    .unwrap_or([0.0, 0.0, 0.0, 1.0]);
+            }
         }
     }
     v

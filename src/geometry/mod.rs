@@ -8,11 +8,15 @@ pub mod clip;
 pub mod fetch;
 pub mod setup;
 
-/// The number of varying floats a vertex carries (colour, later texture coordinates).
-pub const MAX_VARY: usize = 4;
+/// The number of varying floats a vertex carries: primary colour (0..4), secondary colour
+/// (4..8), then the texture coordinates (s, t, r, q) of each enabled unit, compacted.
+pub const MAX_VARY: usize = VARY_TEX + 4 * crate::context::state::MAX_TEXTURE_UNITS;
+
+/// Where the first enabled texture unit's coordinates start among the varyings.
+pub const VARY_TEX: usize = 8;
 
 /// A vertex after the vertex stage: what clipping, setup and interpolation read.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
     /// Clip-space position.
     pub clip: [f32; 4],
@@ -20,8 +24,19 @@ pub struct ClipVertex {
     pub win: [f32; 4],
     /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w, 5 z>w (llvmpipe's order).
     pub mask: u8,
-    /// Varyings: [0..4] = primary colour.
+    /// Varyings: [0..4] primary colour, [4..8] secondary colour, then texture coordinates.
     pub vary: [f32; MAX_VARY],
+}
+
+impl Default for ClipVertex {
+    fn default() -> Self {
+        ClipVertex {
+            clip: [0.0; 4],
+            win: [0.0; 4],
+            mask: 0,
+            vary: [0.0; MAX_VARY],
+        }
+    }
 }
 
 /// The viewport transform as llvmpipe's vertex stage holds it (y flipped for the

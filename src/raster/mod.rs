@@ -2,12 +2,17 @@
 //! span from the integer edge functions (no per-pixel edge test), and hands spans to the
 //! fragment stage's span shader chosen once per triangle.
 
+use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
-use crate::fragment::span::{shade_span, Fused, Madd, Unfused};
+use crate::fragment::span::{
+    shade_chunk, shade_span, tex_coords, Fused, Madd, TexLanes, Unfused, LANES,
+};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::SetupTriangle;
+use crate::geometry::VARY_TEX;
 use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
 pub mod lines;
 
@@ -16,6 +21,7 @@ pub fn raster_triangle(
     t: &SetupTriangle,
     region: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
@@ -32,12 +38,12 @@ pub fn raster_triangle(
     match crate::cpu::isa() {
         // SAFETY (all three): `cpu::isa` only reports a variant whose features the CPU has.
         #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma => unsafe { tri_avx2_fma(t, b, plan, fb, stats) },
+        Isa::Avx2Fma => unsafe { tri_avx2_fma(t, b, plan, units, fb, stats) },
         #[cfg(target_arch = "x86_64")]
-        Isa::Avx2 => unsafe { tri_avx2(t, b, plan, fb, stats) },
+        Isa::Avx2 => unsafe { tri_avx2(t, b, plan, units, fb, stats) },
         #[cfg(target_arch = "x86_64")]
-        Isa::Fma => unsafe { tri_fma(t, b, plan, fb, stats) },
-        _ => raster_rows::<Unfused>(t, b, plan, fb, stats),
+        Isa::Fma => unsafe { tri_fma(t, b, plan, units, fb, stats) },
+        _ => raster_rows::<Unfused>(t, b, plan, units, fb, stats),
     }
 }
 
@@ -47,10 +53,11 @@ unsafe fn tri_avx2_fma(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<Fused>(t, b, plan, fb, stats)
+    raster_rows::<Fused>(t, b, plan, units, fb, stats)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -59,10 +66,11 @@ unsafe fn tri_avx2(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<Unfused>(t, b, plan, fb, stats)
+    raster_rows::<Unfused>(t, b, plan, units, fb, stats)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -71,10 +79,11 @@ unsafe fn tri_fma(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<Fused>(t, b, plan, fb, stats)
+    raster_rows::<Fused>(t, b, plan, units, fb, stats)
 }
 
 #[inline(always)]
@@ -82,10 +91,38 @@ fn raster_rows<M: Madd>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    if plan.needs_full_path() {
+    if !units.is_empty() {
+        match (plan.depth.is_some(), plan.flat, t.persp) {
+            (false, false, false) => {
+                rows_textured::<M, false, false, false>(t, b, plan, units, fb, stats)
+            }
+            (false, false, true) => {
+                rows_textured::<M, false, false, true>(t, b, plan, units, fb, stats)
+            }
+            (false, true, false) => {
+                rows_textured::<M, false, true, false>(t, b, plan, units, fb, stats)
+            }
+            (false, true, true) => {
+                rows_textured::<M, false, true, true>(t, b, plan, units, fb, stats)
+            }
+            (true, false, false) => {
+                rows_textured::<M, true, false, false>(t, b, plan, units, fb, stats)
+            }
+            (true, false, true) => {
+                rows_textured::<M, true, false, true>(t, b, plan, units, fb, stats)
+            }
+            (true, true, false) => {
+                rows_textured::<M, true, true, false>(t, b, plan, units, fb, stats)
+            }
+            (true, true, true) => {
+                rows_textured::<M, true, true, true>(t, b, plan, units, fb, stats)
+            }
+        }
+    } else if plan.needs_full_path() {
         rows_full::<M, true>(t, b, plan, fb, stats)
     } else {
         rows_full::<M, false>(t, b, plan, fb, stats)
@@ -110,8 +147,24 @@ fn rows_full<M: Madd, const FULL: bool>(
     }
 }
 
+/// The covered pixels of row `py` within `b`, or `None`.
+#[inline(always)]
+fn row_span(t: &SetupTriangle, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
+    if py < b[1] || py > b[3] {
+        return None;
+    }
+    let mut lo = b[0];
+    let mut hi = b[2];
+    for e in &t.edges {
+        let (a, z) = e.span(py)?;
+        lo = lo.max(a);
+        hi = hi.min(z);
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
 /// The row walk, specialised like the span shader it calls (everything inlines into the
-/// FMA or non-FMA entry point).
+/// CPU-specific entry points).
 #[inline(always)]
 fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool>(
     t: &SetupTriangle,
@@ -121,21 +174,7 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
     stats: &mut Stats,
 ) {
     for py in b[1]..=b[3] {
-        let mut lo = b[0];
-        let mut hi = b[2];
-        for e in &t.edges {
-            match e.span(py) {
-                Some((a, z)) => {
-                    lo = lo.max(a);
-                    hi = hi.min(z);
-                }
-                None => {
-                    hi = lo - 1;
-                    break;
-                }
-            }
-        }
-        if lo <= hi {
+        if let Some((lo, hi)) = row_span(t, b, py) {
             shade_span::<M, DEPTH, FLAT, PERSP, FULL>(
                 t,
                 plan,
@@ -146,6 +185,82 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
                 stats,
             );
         }
+    }
+}
+
+/// Textured triangles walk pairs of rows, so that every 2x2 quad (aligned to even pixel
+/// coordinates, as llvmpipe's quads are) gets one level of detail from its TL, TR and BL
+/// texture coordinates; helper pixels outside the triangle are evaluated on the planes.
+#[inline(always)]
+fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    let mut qy = b[1] & !1;
+    while qy <= b[3] {
+        let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
+        let lo = spans.iter().flatten().map(|s| s.0).min();
+        let hi = spans.iter().flatten().map(|s| s.1).max();
+        let (Some(lo), Some(hi)) = (lo, hi) else {
+            qy += 2;
+            continue;
+        };
+        let fy = [qy as f32, (qy + 1) as f32];
+        let mut x = lo & !1;
+        while x <= hi {
+            let mut live = [[false; LANES]; 2];
+            for (r, span) in spans.iter().enumerate() {
+                if let Some((a, z)) = span {
+                    for (i, l) in live[r].iter_mut().enumerate() {
+                        let px = x + i as i64;
+                        *l = px >= *a && px <= *z;
+                    }
+                }
+            }
+            let mut fx = [0f32; LANES];
+            for (i, f) in fx.iter_mut().enumerate() {
+                *f = (x + i as i64) as f32;
+            }
+            let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+            for (k, u) in units.iter().enumerate() {
+                let base = VARY_TEX + 4 * k;
+                let (s0, t0) = tex_coords::<M, PERSP>(t, base, &fx, fy[0]);
+                let (s1, t1) = tex_coords::<M, PERSP>(t, base, &fx, fy[1]);
+                for j in 0..LANES / 2 {
+                    let (l, r) = (2 * j, 2 * j + 1);
+                    if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                        continue;
+                    }
+                    let v =
+                        u.sample_quad([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+                    texels[0][k][l] = v[0];
+                    texels[0][k][r] = v[1];
+                    texels[1][k][l] = v[2];
+                    texels[1][k][r] = v[3];
+                }
+            }
+            for r in 0..2 {
+                if live[r].iter().any(|&l| l) {
+                    shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                        t,
+                        plan,
+                        units,
+                        Some(&texels[r]),
+                        fb,
+                        (qy + r as i64) as usize,
+                        x as usize,
+                        live[r],
+                        stats,
+                    );
+                }
+            }
+            x += LANES as i64;
+        }
+        qy += 2;
     }
 }
 
