@@ -10,6 +10,7 @@
 //! `mul(a, b) = (t + (t >> 8) + 128) >> 8`, `t = a·b`.
 
 pub mod blend;
+pub mod simd;
 pub mod span;
 
 use crate::context::fragment_state::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};

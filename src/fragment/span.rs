@@ -6,7 +6,7 @@
 use super::blend::Lanes;
 use super::FragPlan;
 use crate::context::state::MAX_TEXTURE_UNITS;
-use crate::framebuffer::{float_to_ubyte, DepthFormat, Framebuffer};
+use crate::framebuffer::{DepthFormat, Framebuffer};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
@@ -53,7 +53,7 @@ fn round_small(v: f32) -> u32 {
     (v + 8_388_608.0).to_bits() & 0x7F_FFFF
 }
 
-/// [`float_to_ubyte`] in a form the compiler vectorises: clamp (NaN → 0), scale, round.
+/// [`crate::framebuffer::float_to_ubyte`] in a form the compiler vectorises: clamp (NaN → 0), scale, round.
 #[inline(always)]
 pub fn unorm8(c: f32) -> u8 {
     let c = if c > 0.0 { c } else { 0.0 };
@@ -92,7 +92,11 @@ fn colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     flat_color: [u8; 4],
 ) -> Lanes {
     if FLAT {
-        return flat_color.map(|v| [v; LANES]);
+        let mut c = [[0u8; LANES]; 4];
+        for ch in 0..4 {
+            c[ch] = [flat_color[ch]; LANES];
+        }
+        return c;
     }
     let mut c = [[0u8; LANES]; 4];
     let mut oow = [1f32; LANES];
@@ -256,7 +260,7 @@ pub fn shade_chunk<
     let mask = plan.color_mask;
     let full_mask = mask == [true; 4];
     let no_color = mask == [false; 4];
-    let flat_color = [0, 1, 2, 3].map(|i| float_to_ubyte(t.flat[i]));
+    let flat_color = t.flat_u8;
     let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
     let store_plain =
         fb.format.has_alpha() && !matches!(fb.format, crate::framebuffer::ColorFormat::Rgb565);
@@ -412,7 +416,7 @@ mod tests {
                 DepthFormat::Z24.quantize(z),
                 "z = {z}"
             );
-            assert_eq!(unorm8(z), float_to_ubyte(z), "c = {z}");
+            assert_eq!(unorm8(z), crate::framebuffer::float_to_ubyte(z), "c = {z}");
             z += 1.0 / 8191.0;
         }
         for z in [0.5f32, 0.25, 0.75, 1.0, 0.0, 0.499_999_97, 0.500_000_06] {

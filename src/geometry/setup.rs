@@ -74,6 +74,8 @@ pub struct SetupTriangle {
     pub vary: [Plane; super::MAX_VARY],
     /// The provoking vertex's varyings, for flat shading.
     pub flat: [f32; super::MAX_VARY],
+    /// The provoking vertex's colour as 8-bit values (computed once per triangle).
+    pub flat_u8: [u8; 4],
 }
 
 /// `round_half_even(256 * f32(v - 0.5))` as llvmpipe's SSE path snaps.
@@ -205,6 +207,7 @@ pub fn setup_triangle(
         };
     }
     fill.flat = p2.vary;
+    fill.flat_u8 = [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(p2.vary[i]));
     SetupResult::Draw
 }
 
@@ -219,6 +222,7 @@ impl Default for SetupTriangle {
             persp: false,
             vary: [Plane::default(); super::MAX_VARY],
             flat: [0.0; super::MAX_VARY],
+            flat_u8: [0; 4],
         }
     }
 }

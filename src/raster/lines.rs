@@ -53,6 +53,7 @@ pub fn raster_line(
         z: line_plane(v0.win[2], v1.win[2], len, x_major, x0, y0),
         vary: std::array::from_fn(|i| line_plane(v0.vary[i], v1.vary[i], len, x_major, x0, y0)),
         flat: *flat,
+        flat_u8: [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(flat[i])),
         ..Default::default()
     };
     scratch.clear();
@@ -118,6 +119,7 @@ pub fn raster_point(
             dady: 0.0,
         }),
         flat: v.vary,
+        flat_u8: [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(v.vary[i])),
         ..Default::default()
     };
     shade_pixels(&t, &[(px as usize, py as usize)], plan, fb, stats);

@@ -57,7 +57,12 @@ unsafe fn tri_avx2_fma(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<Fused>(t, b, plan, units, fb, stats)
+    if simd_ok(plan, units, fb) {
+        // SAFETY: this function is compiled with AVX2 and FMA.
+        unsafe { rows_simd::<true>(t, b, plan, fb, stats) }
+    } else {
+        raster_rows::<Fused>(t, b, plan, units, fb, stats)
+    }
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -70,7 +75,67 @@ unsafe fn tri_avx2(
     fb: &mut Framebuffer,
     stats: &mut Stats,
 ) {
-    raster_rows::<Unfused>(t, b, plan, units, fb, stats)
+    if simd_ok(plan, units, fb) {
+        // SAFETY: this function is compiled with AVX2.
+        unsafe { rows_simd::<false>(t, b, plan, fb, stats) }
+    } else {
+        raster_rows::<Unfused>(t, b, plan, units, fb, stats)
+    }
+}
+
+/// Whether the AVX2 span shader covers this plan (see `fragment::simd`).
+#[cfg(target_arch = "x86_64")]
+fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Framebuffer) -> bool {
+    use crate::framebuffer::ColorFormat;
+    units.is_empty()
+        && !plan.needs_full_path()
+        && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
+        && matches!(
+            fb.format,
+            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
+        )
+}
+
+/// The row walk for the AVX2 span shader.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows_simd<const FMA: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    stats: &mut Stats,
+) {
+    use crate::fragment::simd::shade_span as s;
+    for py in b[1]..=b[3] {
+        if let Some((lo, hi)) = row_span(t, b, py) {
+            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
+            // SAFETY: forwarded from the caller.
+            unsafe {
+                match (plan.depth.is_some(), plan.flat, t.persp) {
+                    (false, false, false) => {
+                        s::<FMA, false, false, false>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (false, false, true) => {
+                        s::<FMA, false, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (false, true, _) => {
+                        s::<FMA, false, true, false>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, false, false) => {
+                        s::<FMA, true, false, false>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, false, true) => {
+                        s::<FMA, true, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, true, _) => s::<FMA, true, true, false>(t, plan, fb, py, lo, hi, stats),
+                }
+            }
+        }
+    }
 }
 
 #[cfg(target_arch = "x86_64")]

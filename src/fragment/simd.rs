@@ -1,0 +1,177 @@
+//! The AVX2 span shader for the most common plan: smooth or flat colour, optional
+//! perspective, optional depth test, plain colour write (no alpha test, stencil, blending,
+//! logic op or texture). Eight pixels per iteration in 256-bit registers.
+//!
+//! It computes exactly what [`super::span::shade_chunk`] computes: the plane evaluation
+//! `fmuladd(dady, py, fmuladd(dadx, px, a0))` (fused only in the FMA variant), the exact
+//! reciprocal of the 1/w plane, and `cvtps2dq` (round half to even under the default
+//! MXCSR) for the colour and Z24 conversions, which is the instruction llvmpipe uses.
+
+#![cfg(target_arch = "x86_64")]
+
+use super::FragPlan;
+use crate::context::state::CompareFunc;
+use crate::framebuffer::{DepthFormat, Framebuffer};
+use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::stats::Stats;
+use std::arch::x86_64::*;
+
+/// Evaluates `p` at lanes `fx`, row `fy`.
+#[inline(always)]
+unsafe fn eval<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
+    // SAFETY: called only from functions compiled with AVX2 (and FMA when FMA is set).
+    unsafe {
+        let (a0, dx, dy) = (
+            _mm256_set1_ps(p.a0),
+            _mm256_set1_ps(p.dadx),
+            _mm256_set1_ps(p.dady),
+        );
+        if FMA {
+            _mm256_fmadd_ps(dy, fy, _mm256_fmadd_ps(dx, fx, a0))
+        } else {
+            _mm256_add_ps(
+                _mm256_mul_ps(dy, fy),
+                _mm256_add_ps(_mm256_mul_ps(dx, fx), a0),
+            )
+        }
+    }
+}
+
+/// Clamps to [0,1] with NaN → 0 (`maxps` returns its second operand for NaN).
+#[inline(always)]
+unsafe fn sat(v: __m256) -> __m256 {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe { _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0)) }
+}
+
+/// `d FUNC q` as a lane mask, for unsigned values below 2^31.
+#[inline(always)]
+unsafe fn depth_pass(func: CompareFunc, q: __m256i, d: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let ones = _mm256_set1_epi32(-1);
+        let gt = _mm256_cmpgt_epi32(q, d);
+        let lt = _mm256_cmpgt_epi32(d, q);
+        let eq = _mm256_cmpeq_epi32(q, d);
+        match func {
+            CompareFunc::Never => _mm256_setzero_si256(),
+            CompareFunc::Less => lt,
+            CompareFunc::Equal => eq,
+            CompareFunc::LEqual => _mm256_xor_si256(gt, ones),
+            CompareFunc::Greater => gt,
+            CompareFunc::NotEqual => _mm256_xor_si256(eq, ones),
+            CompareFunc::GEqual => _mm256_xor_si256(lt, ones),
+            CompareFunc::Always => ones,
+        }
+    }
+}
+
+/// Shades pixels `x0..=x1` of row `py`. The caller guarantees the plan has no alpha test,
+/// stencil, blending or logic op, no textures, a colour format with 8-bit alpha layout
+/// that stores values unchanged (RGBA, BGRA, ARGB), and a full colour mask or none.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn shade_span<
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Framebuffer,
+    py: usize,
+    x0: usize,
+    x1: usize,
+    stats: &mut Stats,
+) {
+    let w = fb.width;
+    let write_color = plan.color_mask[0];
+    let count = x1 + 1 - x0;
+    stats.fragments += count as u64;
+    // SAFETY (whole body): AVX2 (+FMA) context guaranteed by the caller; every load and
+    // store covers lanes `x..x + n` with `x + n <= x1 + 1 <= w`, inside row `py`.
+    unsafe {
+        let lane = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        let fy = _mm256_set1_ps(py as f32);
+        let scale255 = _mm256_set1_ps(255.0);
+        let flat = {
+            let c = t.flat_u8;
+            _mm256_set1_epi32(u32::from_le_bytes(c) as i32)
+        };
+        let depth = plan.depth;
+        let mut x = x0;
+        while x <= x1 {
+            let n = 8.min(x1 + 1 - x);
+            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
+            let fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
+            let idx = py * w + x;
+            let mut pass = live;
+            if DEPTH {
+                let d = depth.expect("DEPTH implies a depth plan");
+                let z = sat(eval::<FMA>(&t.z, fx, fy));
+                let q = match d.format {
+                    DepthFormat::Z24 => {
+                        _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0)))
+                    }
+                    _ => {
+                        // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
+                        let v = _mm256_add_ps(
+                            _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
+                            _mm256_set1_ps(128.0),
+                        );
+                        _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
+                    }
+                };
+                let dptr = fb.depth.as_mut_ptr().add(idx) as *mut __m256i;
+                let old = _mm256_maskload_epi32(dptr as *const i32, live);
+                pass = _mm256_and_si256(live, depth_pass(d.func, q, old));
+                let np = _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+                stats.depth_reads += n as u64;
+                stats.depth_failed += n as u64 - np;
+                if d.write {
+                    _mm256_maskstore_epi32(dptr as *mut i32, pass, q);
+                }
+                if np == 0 {
+                    x += n;
+                    continue;
+                }
+            }
+            if write_color {
+                let px = if FLAT {
+                    flat
+                } else {
+                    let oow = if PERSP {
+                        _mm256_div_ps(_mm256_set1_ps(1.0), eval::<FMA>(&t.w, fx, fy))
+                    } else {
+                        _mm256_set1_ps(1.0)
+                    };
+                    let mut acc = _mm256_setzero_si256();
+                    for ch in 0..4 {
+                        let mut a = eval::<FMA>(&t.vary[ch], fx, fy);
+                        if PERSP {
+                            a = _mm256_mul_ps(a, oow);
+                        }
+                        let u = _mm256_cvtps_epi32(_mm256_mul_ps(sat(a), scale255));
+                        acc = _mm256_or_si256(
+                            acc,
+                            _mm256_sllv_epi32(u, _mm256_set1_epi32(8 * ch as i32)),
+                        );
+                    }
+                    acc
+                };
+                // The framebuffer is RGBA in memory for every user format (converted at
+                // flush time), so the packed lanes are stored as they are.
+                let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+                _mm256_maskstore_epi32(cptr, pass, px);
+                stats.color_writes +=
+                    _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+            }
+            x += n;
+        }
+    }
+}
