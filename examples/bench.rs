@@ -189,7 +189,14 @@ fn find_scenes(filter: &Option<Vec<String>>) -> Result<Vec<Scene>, String> {
         let about = src
             .lines()
             .find_map(|l| l.split_once(&format!("{name}.c - ")).map(|x| x.1))
-            .map(|s| s.trim().trim_end_matches('.').to_owned())
+            .map(|s| {
+                // Drop the "(a) " id prefix of the header line: the id has its own column.
+                let s = s.trim().trim_end_matches('.');
+                match s.split_once(") ") {
+                    Some((id, rest)) if id.starts_with('(') && id.len() <= 4 => rest.to_owned(),
+                    _ => s.to_owned(),
+                }
+            })
             .unwrap_or_default();
         scenes.push(Scene {
             name,

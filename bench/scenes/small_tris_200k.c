@@ -37,13 +37,14 @@ static void scene_setup(int w, int h)
         for (i = 0; i < N; i++) {
             float x = -1.5f + 3.0f * (float)i / (N - 1);
             float z = -1.5f + 3.0f * (float)j / (N - 1);
-            float y = 0.25f * sinf(5.0f * x) * cosf(4.0f * z) + 0.1f * sinf(17.0f * x + 11.0f * z);
+            float g, y = 0.25f * sinf(5.0f * x) * cosf(4.0f * z) + 0.1f * sinf(17.0f * x + 11.0f * z);
             struct vert *p = &v[j * N + i];
             p->x = x;
             p->y = y;
             p->z = z;
             p->r = (unsigned char)(127.0f + 120.0f * sinf(9.0f * x));
-            p->g = (unsigned char)(127.0f + 500.0f * y);
+            g = 127.0f + 400.0f * y;
+            p->g = (unsigned char)(g < 0.0f ? 0.0f : g > 255.0f ? 255.0f : g);
             p->b = (unsigned char)(127.0f + 120.0f * cosf(7.0f * z));
             p->a = 255;
         }
