@@ -429,6 +429,7 @@ fn read_frame(path: &Path) -> Result<Frame, String> {
 #[derive(Clone, Copy)]
 struct ErrorStats {
     identical_pct: f64,
+    pixels_off: usize,
     max_diff: u8,
     psnr_db: f64,
 }
@@ -462,6 +463,7 @@ fn compare(ours: &Frame, reference: &Frame) -> Result<ErrorStats, String> {
     let mse = sq / (pixels * 4) as f64;
     Ok(ErrorStats {
         identical_pct: 100.0 * identical as f64 / pixels as f64,
+        pixels_off: pixels - identical,
         max_diff,
         psnr_db: if mse == 0.0 {
             f64::INFINITY
@@ -565,6 +567,16 @@ fn fmt_ratio(a: Option<f64>, b: Option<f64>) -> String {
     match (a, b) {
         (Some(a), Some(b)) if b > 0.0 => format!("{:.2}", a / b),
         _ => "—".into(),
+    }
+}
+
+/// A percentage of identical pixels that never rounds up to "100.00" when pixels differ.
+fn fmt_pct(pct: f64, off: usize) -> String {
+    let s = format!("{pct:.2}");
+    if off > 0 && s == "100.00" {
+        "99.99+".into()
+    } else {
+        s
     }
 }
 
@@ -748,15 +760,15 @@ fn real_main() -> Result<(), String> {
     let _ = writeln!(
         md,
         "| id | scene | size | softgl ms | llvmpipe-1 ms | llvmpipe ms | softgl/lp-1 | \
-         softgl/lp | identical % | max diff | PSNR dB | note |"
+         softgl/lp | identical % | px off | max diff | PSNR dB | note |"
     );
     let _ = writeln!(
         md,
-        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
     );
     let mut csv = String::from(
         "scene,id,width,height,softgl_ms,llvmpipe1_ms,llvmpipe_ms,ratio_softgl_llvmpipe1,\
-         ratio_softgl_llvmpipe,identical_pct,max_diff,psnr_db,llvmpipe_vs_llvmpipe1_identical_pct,\
+         ratio_softgl_llvmpipe,identical_pct,pixels_off,max_diff,psnr_db,llvmpipe_vs_llvmpipe1_identical_pct,\
          softgl_runs,llvmpipe1_runs,llvmpipe_runs,status,pending_feature\n",
     );
     for (cell, sum) in cells.iter().zip(&summaries) {
@@ -792,17 +804,18 @@ fn real_main() -> Result<(), String> {
                 ));
             }
         }
-        let (ident, maxd, psnr) = match &sum.ours {
+        let (ident, off, maxd, psnr) = match &sum.ours {
             Ok(e) => (
-                format!("{:.2}", e.identical_pct),
+                fmt_pct(e.identical_pct, e.pixels_off),
+                e.pixels_off.to_string(),
                 e.max_diff.to_string(),
                 fmt_psnr(e.psnr_db),
             ),
-            Err(_) => ("—".into(), "—".into(), "—".into()),
+            Err(_) => ("—".into(), "—".into(), "—".into(), "—".into()),
         };
         let _ = writeln!(
             md,
-            "| {} | {} | {}² | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {}² | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             scene.id,
             scene.name,
             cell.size,
@@ -812,6 +825,7 @@ fn real_main() -> Result<(), String> {
             fmt_ratio(sum.ms[0], sum.ms[1]),
             fmt_ratio(sum.ms[0], sum.ms[2]),
             ident,
+            off,
             maxd,
             psnr,
             notes.join("; ").replace('|', "/")
@@ -825,7 +839,7 @@ fn real_main() -> Result<(), String> {
         };
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\"",
             scene.name,
             scene.id,
             cell.size,
@@ -838,6 +852,9 @@ fn real_main() -> Result<(), String> {
             sum.ours
                 .as_ref()
                 .map_or(String::new(), |e| format!("{:.4}", e.identical_pct)),
+            sum.ours
+                .as_ref()
+                .map_or(String::new(), |e| e.pixels_off.to_string()),
             sum.ours
                 .as_ref()
                 .map_or(String::new(), |e| e.max_diff.to_string()),
