@@ -193,33 +193,45 @@ impl Framebuffer {
     /// `dst` must be valid for writes of `stride * (height - 1) + width * bpp` bytes.
     pub unsafe fn copy_to_user(&self, dst: *mut u8, stride: usize, y_up: bool) {
         let bpp = self.format.bytes_per_pixel();
-        let mut row_buf = vec![0u8; self.width * bpp];
+        let w = self.width;
         for row in 0..self.height {
-            let src = &self.color[row * self.width..(row + 1) * self.width];
-            for (x, c) in src.iter().enumerate() {
-                let o = &mut row_buf[x * bpp..(x + 1) * bpp];
-                match self.format {
-                    ColorFormat::Rgba => o.copy_from_slice(c),
-                    ColorFormat::Bgra => o.copy_from_slice(&[c[2], c[1], c[0], c[3]]),
-                    ColorFormat::Argb => o.copy_from_slice(&[c[3], c[0], c[1], c[2]]),
-                    ColorFormat::Rgb => o.copy_from_slice(&c[..3]),
-                    ColorFormat::Rgb565 => {
+            let src = &self.color[row * w..(row + 1) * w];
+            let dst_row = if y_up { self.height - 1 - row } else { row };
+            // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
+            // least `width * bpp` bytes; `out` is exactly that row's first `width * bpp` bytes.
+            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
+            match self.format {
+                ColorFormat::Rgba => {
+                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
+                        o.copy_from_slice(c);
+                    }
+                }
+                ColorFormat::Bgra => {
+                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
+                        let v = u32::from_le_bytes(*c);
+                        let v = (v & 0xFF00_FF00) | ((v >> 16) & 0xFF) | ((v & 0xFF) << 16);
+                        o.copy_from_slice(&v.to_le_bytes());
+                    }
+                }
+                ColorFormat::Argb => {
+                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
+                        let v = u32::from_le_bytes(*c).rotate_left(8);
+                        o.copy_from_slice(&v.to_le_bytes());
+                    }
+                }
+                ColorFormat::Rgb => {
+                    for (o, c) in out.chunks_exact_mut(3).zip(src) {
+                        o.copy_from_slice(&c[..3]);
+                    }
+                }
+                ColorFormat::Rgb565 => {
+                    for (o, c) in out.chunks_exact_mut(2).zip(src) {
                         let v = ((c[0] as u16 >> 3) << 11)
                             | ((c[1] as u16 >> 2) << 5)
                             | (c[2] as u16 >> 3);
                         o.copy_from_slice(&v.to_ne_bytes());
                     }
                 }
-            }
-            let dst_row = if y_up { self.height - 1 - row } else { row };
-            // SAFETY: the caller guarantees the buffer holds `height` rows of `stride` bytes
-            // (the last one at least `width * bpp`), and row_buf is exactly one row.
-            unsafe {
-                std::ptr::copy_nonoverlapping(
-                    row_buf.as_ptr(),
-                    dst.add(dst_row * stride),
-                    row_buf.len(),
-                );
             }
         }
     }

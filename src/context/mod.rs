@@ -356,10 +356,15 @@ impl Context {
                 fb.clear_value(st.clear_color)
             };
             let m = st.color_mask;
+            if m == [true; 4] && x0 == 0 && x1 == w {
+                fb.color[y0 * w..y1 * w].fill(v);
+            }
             for y in y0..y1 {
                 let row = &mut fb.color[y * w + x0..y * w + x1];
                 if m == [true; 4] {
-                    row.fill(v);
+                    if x0 != 0 || x1 != w {
+                        row.fill(v);
+                    }
                 } else {
                     for p in row {
                         for c in 0..4 {
@@ -377,8 +382,12 @@ impl Context {
             } else {
                 fb.depth_format.quantize_clear(st.clear_depth)
             };
-            for y in y0..y1 {
-                fb.depth[y * w + x0..y * w + x1].fill(v);
+            if x0 == 0 && x1 == w {
+                fb.depth[y0 * w..y1 * w].fill(v);
+            } else {
+                for y in y0..y1 {
+                    fb.depth[y * w + x0..y * w + x1].fill(v);
+                }
             }
         }
         if mask & GL_STENCIL_BUFFER_BIT != 0 && !fb.stencil.is_empty() {

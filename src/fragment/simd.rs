@@ -9,7 +9,8 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::FragPlan;
+use super::{BlendPlan, FragPlan};
+use crate::context::fragment_state::{BlendEquation, BlendFactor};
 use crate::context::state::CompareFunc;
 use crate::framebuffer::{DepthFormat, Framebuffer};
 use crate::geometry::setup::{Plane, SetupTriangle};
@@ -79,6 +80,7 @@ pub unsafe fn shade_span<
     const DEPTH: bool,
     const FLAT: bool,
     const PERSP: bool,
+    const BLEND: bool,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -167,11 +169,171 @@ pub unsafe fn shade_span<
                 // The framebuffer is RGBA in memory for every user format (converted at
                 // flush time), so the packed lanes are stored as they are.
                 let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+                let px = if BLEND {
+                    let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
+                    let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
+                    stats.color_reads += n as u64;
+                    blend8(b, px, dst)
+                } else {
+                    px
+                };
                 _mm256_maskstore_epi32(cptr, pass, px);
                 stats.color_writes +=
                     _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
             }
             x += n;
         }
+    }
+}
+
+/// Broadcasts each pixel's alpha word to its four channel words (16-bit lanes).
+#[inline(always)]
+unsafe fn alpha_words(v: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe { _mm256_shufflehi_epi16(_mm256_shufflelo_epi16(v, 0xFF), 0xFF) }
+}
+
+/// A blend factor for four pixels in 16-bit lanes (`rgb` selects the RGB factor rules).
+#[inline(always)]
+unsafe fn factor16(f: BlendFactor, s: __m256i, d: __m256i, k: __m256i, rgb: bool) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let c255 = _mm256_set1_epi16(255);
+        let inv = |v: __m256i| _mm256_sub_epi16(c255, v);
+        match f {
+            BlendFactor::Zero => _mm256_setzero_si256(),
+            BlendFactor::One => c255,
+            BlendFactor::SrcColor => s,
+            BlendFactor::OneMinusSrcColor => inv(s),
+            BlendFactor::DstColor => d,
+            BlendFactor::OneMinusDstColor => inv(d),
+            BlendFactor::SrcAlpha => alpha_words(s),
+            BlendFactor::OneMinusSrcAlpha => inv(alpha_words(s)),
+            BlendFactor::DstAlpha => alpha_words(d),
+            BlendFactor::OneMinusDstAlpha => inv(alpha_words(d)),
+            BlendFactor::ConstantColor => k,
+            BlendFactor::OneMinusConstantColor => inv(k),
+            BlendFactor::ConstantAlpha => alpha_words(k),
+            BlendFactor::OneMinusConstantAlpha => inv(alpha_words(k)),
+            BlendFactor::SrcAlphaSaturate => {
+                if rgb {
+                    _mm256_min_epu16(alpha_words(s), inv(alpha_words(d)))
+                } else {
+                    c255
+                }
+            }
+        }
+    }
+}
+
+/// llvmpipe's unorm8 multiply on 16-bit lanes: `(t + (t >> 8) + 128) >> 8`, `t = a·b`.
+#[inline(always)]
+unsafe fn mul8x16(a: __m256i, b: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let t = _mm256_mullo_epi16(a, b);
+        _mm256_srli_epi16(
+            _mm256_add_epi16(
+                _mm256_add_epi16(t, _mm256_srli_epi16(t, 8)),
+                _mm256_set1_epi16(128),
+            ),
+            8,
+        )
+    }
+}
+
+#[inline(always)]
+unsafe fn equation16(
+    eq: BlendEquation,
+    s: __m256i,
+    sf: __m256i,
+    d: __m256i,
+    df: __m256i,
+) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        match eq {
+            BlendEquation::Add => _mm256_min_epu16(
+                _mm256_add_epi16(mul8x16(s, sf), mul8x16(d, df)),
+                _mm256_set1_epi16(255),
+            ),
+            BlendEquation::Subtract => _mm256_subs_epu16(mul8x16(s, sf), mul8x16(d, df)),
+            BlendEquation::ReverseSubtract => _mm256_subs_epu16(mul8x16(d, df), mul8x16(s, sf)),
+            BlendEquation::Min => _mm256_min_epu16(s, d),
+            BlendEquation::Max => _mm256_max_epu16(s, d),
+        }
+    }
+}
+
+/// Blends four pixels held as 16-bit channel words.
+#[inline(always)]
+unsafe fn blend16(p: &BlendPlan, s: __m256i, d: __m256i, k: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let rgb = equation16(
+            p.eq_rgb,
+            s,
+            factor16(p.src_rgb, s, d, k, true),
+            d,
+            factor16(p.dst_rgb, s, d, k, true),
+        );
+        let same_alpha = p.src_a == p.src_rgb
+            && p.dst_a == p.dst_rgb
+            && p.eq_a == p.eq_rgb
+            && !matches!(p.src_rgb, BlendFactor::SrcAlphaSaturate)
+            && !matches!(p.dst_rgb, BlendFactor::SrcAlphaSaturate);
+        if same_alpha {
+            return rgb;
+        }
+        let a = equation16(
+            p.eq_a,
+            s,
+            factor16(p.src_a, s, d, k, false),
+            d,
+            factor16(p.dst_a, s, d, k, false),
+        );
+        _mm256_blend_epi16(rgb, a, 0b1000_1000)
+    }
+}
+
+/// Blends eight packed RGBA8 source pixels over eight destination pixels exactly as
+/// [`super::blend::blend`] does.
+#[inline(always)]
+unsafe fn blend8(p: &BlendPlan, src: __m256i, dst: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let z = _mm256_setzero_si256();
+        let kc = p.color;
+        let k = _mm256_set_epi16(
+            kc[3] as i16,
+            kc[2] as i16,
+            kc[1] as i16,
+            kc[0] as i16,
+            kc[3] as i16,
+            kc[2] as i16,
+            kc[1] as i16,
+            kc[0] as i16,
+            kc[3] as i16,
+            kc[2] as i16,
+            kc[1] as i16,
+            kc[0] as i16,
+            kc[3] as i16,
+            kc[2] as i16,
+            kc[1] as i16,
+            kc[0] as i16,
+        );
+        let lo = blend16(
+            p,
+            _mm256_unpacklo_epi8(src, z),
+            _mm256_unpacklo_epi8(dst, z),
+            k,
+        );
+        let hi = blend16(
+            p,
+            _mm256_unpackhi_epi8(src, z),
+            _mm256_unpackhi_epi8(dst, z),
+            k,
+        );
+        _mm256_packus_epi16(lo, hi)
     }
 }

@@ -88,7 +88,9 @@ unsafe fn tri_avx2(
 fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Framebuffer) -> bool {
     use crate::framebuffer::ColorFormat;
     units.is_empty()
-        && !plan.needs_full_path()
+        && plan.alpha.is_none()
+        && plan.stencil.is_none()
+        && plan.logic.is_none()
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             fb.format,
@@ -110,28 +112,54 @@ unsafe fn rows_simd<const FMA: bool>(
     stats: &mut Stats,
 ) {
     use crate::fragment::simd::shade_span as s;
+    let key = (
+        plan.depth.is_some(),
+        plan.flat,
+        t.persp && !plan.flat,
+        plan.blend.is_some(),
+    );
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
             let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
             // SAFETY: forwarded from the caller.
             unsafe {
-                match (plan.depth.is_some(), plan.flat, t.persp) {
-                    (false, false, false) => {
-                        s::<FMA, false, false, false>(t, plan, fb, py, lo, hi, stats)
+                match key {
+                    (false, false, false, false) => {
+                        s::<FMA, false, false, false, false>(t, plan, fb, py, lo, hi, stats)
                     }
-                    (false, false, true) => {
-                        s::<FMA, false, false, true>(t, plan, fb, py, lo, hi, stats)
+                    (false, false, true, false) => {
+                        s::<FMA, false, false, true, false>(t, plan, fb, py, lo, hi, stats)
                     }
-                    (false, true, _) => {
-                        s::<FMA, false, true, false>(t, plan, fb, py, lo, hi, stats)
+                    (false, true, _, false) => {
+                        s::<FMA, false, true, false, false>(t, plan, fb, py, lo, hi, stats)
                     }
-                    (true, false, false) => {
-                        s::<FMA, true, false, false>(t, plan, fb, py, lo, hi, stats)
+                    (true, false, false, false) => {
+                        s::<FMA, true, false, false, false>(t, plan, fb, py, lo, hi, stats)
                     }
-                    (true, false, true) => {
-                        s::<FMA, true, false, true>(t, plan, fb, py, lo, hi, stats)
+                    (true, false, true, false) => {
+                        s::<FMA, true, false, true, false>(t, plan, fb, py, lo, hi, stats)
                     }
-                    (true, true, _) => s::<FMA, true, true, false>(t, plan, fb, py, lo, hi, stats),
+                    (true, true, _, false) => {
+                        s::<FMA, true, true, false, false>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (false, false, false, true) => {
+                        s::<FMA, false, false, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (false, false, true, true) => {
+                        s::<FMA, false, false, true, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (false, true, _, true) => {
+                        s::<FMA, false, true, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, false, false, true) => {
+                        s::<FMA, true, false, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, false, true, true) => {
+                        s::<FMA, true, false, true, true>(t, plan, fb, py, lo, hi, stats)
+                    }
+                    (true, true, _, true) => {
+                        s::<FMA, true, true, false, true>(t, plan, fb, py, lo, hi, stats)
+                    }
                 }
             }
         }
