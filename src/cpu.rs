@@ -23,6 +23,20 @@ impl Isa {
     }
 }
 
+/// How many threads rasterize large draws: `SOFTGL_THREADS` (1 turns threading off), else
+/// the machine's cores. Images are byte-identical either way: every pixel is shaded by one
+/// thread, in primitive order.
+pub fn threads() -> usize {
+    static N: OnceLock<usize> = OnceLock::new();
+    *N.get_or_init(|| {
+        std::env::var("SOFTGL_THREADS")
+            .ok()
+            .and_then(|v| v.parse::<usize>().ok())
+            .filter(|&n| n >= 1)
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+    })
+}
+
 /// The variant for this CPU. `SOFTGL_FMA=0` turns fusing off, to compare against a
 /// reference run with `GALLIUM_OVERRIDE_CPU_CAPS=sse4.1`.
 pub fn isa() -> Isa {

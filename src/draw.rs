@@ -13,8 +13,8 @@ use crate::geometry::clip::{clip_line, clip_triangle};
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
+use crate::raster::batch::Rasterizer;
 use crate::raster::lines::{raster_line, raster_point};
-use crate::raster::raster_triangle;
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
@@ -78,26 +78,32 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let nvary = stage.nvary();
     let stats = &mut ctx.stats;
     let Some(fb) = ctx.fb.as_mut() else { return };
+    let mut rast = Rasterizer::new(fb, &plan, &tex_plans, region);
     let mut tri = SetupTriangle::default();
-    let mut one =
-        |a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, stats: &mut crate::stats::Stats| {
-            match setup_triangle([a, b, c], nvary, cull, &mut tri) {
-                SetupResult::Draw => raster_triangle(&tri, region, &plan, &tex_plans, fb, stats),
-                SetupResult::Degenerate => stats.tris_degenerate += 1,
-                SetupResult::Culled => stats.tris_culled += 1,
-            }
-        };
+    let mut one = |a: &ClipVertex,
+                   b: &ClipVertex,
+                   c: &ClipVertex,
+                   rast: &mut Rasterizer<'_, '_>,
+                   stats: &mut crate::stats::Stats| {
+        match setup_triangle([a, b, c], nvary, cull, &mut tri) {
+            SetupResult::Draw => rast.triangle(&tri, stats),
+            SetupResult::Degenerate => stats.tris_degenerate += 1,
+            SetupResult::Culled => stats.tris_culled += 1,
+        }
+    };
     match mode {
         Primitive::Points => {
+            let mut target = rast.target(stats).target();
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(v, region, &plan, fb, stats);
+                    raster_point(v, region, &plan, &mut target, stats);
                 }
             }
         }
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
             let mut scratch = Vec::new();
+            let mut target = rast.target(stats).target();
             assemble::lines(mode, n, |a, b| {
                 let (va, vb) = (at(a), at(b));
                 if va.mask & vb.mask != 0 {
@@ -111,7 +117,16 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                 } else {
                     (*va, *vb)
                 };
-                raster_line(&p, &q, &vb.vary, region, &plan, fb, stats, &mut scratch);
+                raster_line(
+                    &p,
+                    &q,
+                    &vb.vary,
+                    region,
+                    &plan,
+                    &mut target,
+                    stats,
+                    &mut scratch,
+                );
             });
         }
         _ => assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
@@ -127,11 +142,12 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                     out.push([*p, *q, *r])
                 });
                 for [p, q, r] in &out {
-                    one(p, q, r, stats);
+                    one(p, q, r, &mut rast, stats);
                 }
             } else {
-                one(va, vb, vc, stats);
+                one(va, vb, vc, &mut rast, stats);
             }
         }),
     }
+    rast.flush(stats);
 }

@@ -237,6 +237,71 @@ impl Framebuffer {
     }
 }
 
+/// A band of framebuffer rows that one thread rasterizes into: rows `y0..y0 + rows` of the
+/// colour, depth and stencil buffers (indices inside are relative to row `y0`).
+pub struct Target<'a> {
+    /// Framebuffer width.
+    pub width: usize,
+    /// Framebuffer height (all rows, for y flips).
+    pub height: usize,
+    /// First row of the band.
+    pub y0: usize,
+    /// Number of rows in the band.
+    pub rows: usize,
+    /// Colour layout.
+    pub format: ColorFormat,
+    /// The band's colour rows.
+    pub color: &'a mut [[u8; 4]],
+    /// The band's depth rows (empty without a depth buffer).
+    pub depth: &'a mut [u32],
+    /// The band's stencil rows (empty without a stencil buffer).
+    pub stencil: &'a mut [u8],
+}
+
+impl Framebuffer {
+    /// The whole framebuffer as one band.
+    pub fn target(&mut self) -> Target<'_> {
+        Target {
+            width: self.width,
+            height: self.height,
+            y0: 0,
+            rows: self.height,
+            format: self.format,
+            color: &mut self.color,
+            depth: &mut self.depth,
+            stencil: &mut self.stencil,
+        }
+    }
+
+    /// The framebuffer split into bands of `band_rows` rows (an even number, so 2x2 quads
+    /// never straddle two bands), for threads that each own some bands.
+    pub fn bands(&mut self, band_rows: usize) -> Vec<Target<'_>> {
+        let (w, h, format) = (self.width, self.height, self.format);
+        let band_rows = band_rows.max(2) & !1;
+        let n = w * band_rows;
+        let mut color = self.color.chunks_mut(n);
+        let mut depth = (!self.depth.is_empty()).then(|| self.depth.chunks_mut(n));
+        let mut stencil = (!self.stencil.is_empty()).then(|| self.stencil.chunks_mut(n));
+        let mut out = Vec::new();
+        let mut y0 = 0;
+        while y0 < h {
+            let rows = band_rows.min(h - y0);
+            out.push(Target {
+                width: w,
+                height: h,
+                y0,
+                rows,
+                format,
+                color: color.next().unwrap_or_default(),
+                depth: depth.as_mut().and_then(|d| d.next()).unwrap_or_default(),
+                stencil: stencil.as_mut().and_then(|s| s.next()).unwrap_or_default(),
+            });
+            y0 += rows;
+        }
+        out
+    }
+}
+
 /// Float colour to unorm8 as llvmpipe's shader output does: clamp to [0,1] (NaN gives 0),
 /// then `round_half_even(f32(c * 255))`.
 #[inline(always)]

@@ -41,6 +41,18 @@ pub struct Stats {
 }
 
 impl Stats {
+    /// Adds the per-pixel counters of a band rendered on another thread.
+    pub fn add_pixels(&mut self, o: &Stats) {
+        self.fragments += o.fragments;
+        self.depth_failed += o.depth_failed;
+        self.alpha_failed += o.alpha_failed;
+        self.stencil_failed += o.stencil_failed;
+        self.stencil_reads += o.stencil_reads;
+        self.depth_reads += o.depth_reads;
+        self.color_reads += o.color_reads;
+        self.color_writes += o.color_writes;
+    }
+
     /// A multi-line human-readable report.
     pub fn report(&self) -> String {
         format!("{self:#?}")

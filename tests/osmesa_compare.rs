@@ -386,11 +386,26 @@ fn head_lines(s: &str, n: usize) -> String {
 
 /// Runs a scene binary with the output path as argv[1]; returns the output bytes.
 fn run(name: &str, bin: &Path, side: Side) -> Result<Vec<u8>, String> {
+    run_with(name, bin, side, None)
+}
+
+/// As [`run`], with one extra environment variable for the program (e.g. softgl's thread
+/// count) and a distinct output file.
+fn run_with(
+    name: &str,
+    bin: &Path,
+    side: Side,
+    env: Option<(&str, &str)>,
+) -> Result<Vec<u8>, String> {
     let out_dir = target_dir().join("ctests").join("out");
     fs::create_dir_all(&out_dir).map_err(|e| format!("mkdir {}: {e}", out_dir.display()))?;
-    let out_file = out_dir.join(format!("{name}.{}.out", side.label()));
+    let suffix = env.map(|(k, v)| format!(".{k}={v}")).unwrap_or_default();
+    let out_file = out_dir.join(format!("{name}.{}{suffix}.out", side.label()));
     let _ = fs::remove_file(&out_file);
     let mut cmd = Command::new(bin);
+    if let Some((k, v)) = env {
+        cmd.env(k, v);
+    }
     cmd.arg(&out_file)
         .current_dir(&out_dir)
         .stdin(Stdio::null())
@@ -778,6 +793,12 @@ fn run_program(name: &str, source: &Path) {
         ))
     });
     let our_out = run(name, &our_bin, Side::Softgl).unwrap_or_else(|e| fail(e));
+    // softgl splits large draws over threads; one thread must give the same bytes.
+    let single = run_with(name, &our_bin, Side::Softgl, Some(("SOFTGL_THREADS", "1")))
+        .unwrap_or_else(|e| fail(e));
+    if single != our_out {
+        fail("output with SOFTGL_THREADS=1 differs from the multi-threaded output".into());
+    }
 
     let ref_blocks = parse_output(&ref_out).unwrap_or_else(|e| fail(format!("OSMesa output: {e}")));
     let our_blocks = parse_output(&our_out).unwrap_or_else(|e| fail(format!("softgl output: {e}")));

@@ -12,7 +12,7 @@
 use super::{BlendPlan, FragPlan};
 use crate::context::fragment_state::{BlendEquation, BlendFactor};
 use crate::context::state::CompareFunc;
-use crate::framebuffer::{DepthFormat, Framebuffer};
+use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::stats::Stats;
 use std::arch::x86_64::*;
@@ -84,7 +84,7 @@ pub unsafe fn shade_span<
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     py: usize,
     x0: usize,
     x1: usize,
@@ -111,7 +111,7 @@ pub unsafe fn shade_span<
             let n = 8.min(x1 + 1 - x);
             let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
             let fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
-            let idx = py * w + x;
+            let idx = (py - fb.y0) * w + x;
             let mut pass = live;
             if DEPTH {
                 let d = depth.expect("DEPTH implies a depth plan");

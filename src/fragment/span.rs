@@ -6,7 +6,7 @@
 use super::blend::Lanes;
 use super::FragPlan;
 use crate::context::state::MAX_TEXTURE_UNITS;
-use crate::framebuffer::{DepthFormat, Framebuffer};
+use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
@@ -215,7 +215,7 @@ pub fn shade_span<
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     py: usize,
     x0: usize,
     x1: usize,
@@ -249,7 +249,7 @@ pub fn shade_chunk<
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
     texels: Option<&TexLanes>,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     py: usize,
     x: usize,
     mut live: [bool; LANES],
@@ -267,7 +267,7 @@ pub fn shade_chunk<
     // Lanes that address pixels inside the row (lanes past the right edge are never live).
     let n = LANES.min(w - x);
     stats.fragments += live.iter().filter(|&&l| l).count() as u64;
-    let row = py * w + x;
+    let row = (py - fb.y0) * w + x;
     let mut fx = [0f32; LANES];
     for (i, f) in fx.iter_mut().enumerate() {
         *f = (x + i) as f32;

@@ -10,7 +10,7 @@
 
 use super::shade_pixels;
 use crate::fragment::FragPlan;
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::Target;
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
 use crate::stats::Stats;
@@ -35,7 +35,7 @@ pub fn raster_line(
     flat: &[f32; MAX_VARY],
     region: [i64; 4],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
     scratch: &mut Vec<(usize, usize)>,
 ) {
@@ -94,7 +94,7 @@ pub fn raster_point(
     v: &ClipVertex,
     region: [i64; 4],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     let (x, y) = (v.win[0], v.win[1]);

@@ -8,32 +8,34 @@ use crate::fragment::span::{
     shade_chunk, shade_span, tex_coords, Fused, Madd, TexLanes, Unfused, LANES,
 };
 use crate::fragment::FragPlan;
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
 use crate::geometry::VARY_TEX;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
+pub mod batch;
 pub mod lines;
 
-/// Rasterizes `t` inside `region` (y-down pixels, exclusive high end).
+/// Rasterizes `t` inside `region` (y-down pixels, exclusive high end) and the target's
+/// rows; returns whether any row of the triangle's box was inside them.
 pub fn raster_triangle(
     t: &SetupTriangle,
     region: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
-) {
+) -> bool {
     let x_lo = t.bbox[0].max(region[0]);
     let x_hi = t.bbox[2].min(region[2] - 1);
-    let y_lo = t.bbox[1].max(region[1]);
-    let y_hi = t.bbox[3].min(region[3] - 1);
+    let y_lo = t.bbox[1].max(region[1]).max(fb.y0 as i64);
+    let y_hi = t.bbox[3]
+        .min(region[3] - 1)
+        .min((fb.y0 + fb.rows) as i64 - 1);
     if x_lo > x_hi || y_lo > y_hi {
-        stats.tris_offscreen += 1;
-        return;
+        return false;
     }
-    stats.tris_rasterized += 1;
     let b = [x_lo, y_lo, x_hi, y_hi];
     match crate::cpu::isa() {
         // SAFETY (all three): `cpu::isa` only reports a variant whose features the CPU has.
@@ -45,6 +47,7 @@ pub fn raster_triangle(
         Isa::Fma => unsafe { tri_fma(t, b, plan, units, fb, stats) },
         _ => raster_rows::<Unfused>(t, b, plan, units, fb, stats),
     }
+    true
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -54,7 +57,7 @@ unsafe fn tri_avx2_fma(
     b: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     if simd_ok(plan, units, fb) {
@@ -72,7 +75,7 @@ unsafe fn tri_avx2(
     b: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     if simd_ok(plan, units, fb) {
@@ -85,7 +88,7 @@ unsafe fn tri_avx2(
 
 /// Whether the AVX2 span shader covers this plan (see `fragment::simd`).
 #[cfg(target_arch = "x86_64")]
-fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Framebuffer) -> bool {
+fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
     use crate::framebuffer::ColorFormat;
     units.is_empty()
         && plan.alpha.is_none()
@@ -108,7 +111,7 @@ unsafe fn rows_simd<const FMA: bool>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     use crate::fragment::simd::shade_span as s;
@@ -173,7 +176,7 @@ unsafe fn tri_fma(
     b: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     raster_rows::<Fused>(t, b, plan, units, fb, stats)
@@ -185,7 +188,7 @@ fn raster_rows<M: Madd>(
     b: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     if !units.is_empty() {
@@ -227,7 +230,7 @@ fn rows_full<M: Madd, const FULL: bool>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     match (plan.depth.is_some(), plan.flat, t.persp) {
@@ -263,7 +266,7 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     for py in b[1]..=b[3] {
@@ -290,7 +293,7 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     b: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     let mut qy = b[1] & !1;
@@ -363,7 +366,7 @@ pub fn shade_pixels(
     t: &SetupTriangle,
     pixels: &[(usize, usize)],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     match crate::cpu::isa() {
@@ -380,7 +383,7 @@ unsafe fn pixels_fma(
     t: &SetupTriangle,
     pixels: &[(usize, usize)],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     pixels_any::<Fused>(t, pixels, plan, fb, stats)
@@ -391,7 +394,7 @@ fn pixels_any<M: Madd>(
     t: &SetupTriangle,
     pixels: &[(usize, usize)],
     plan: &FragPlan,
-    fb: &mut Framebuffer,
+    fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     // Lines and points are few pixels: the general path serves every plan.
