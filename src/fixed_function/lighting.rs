@@ -18,8 +18,10 @@
 //!
 //! Quirks reproduced on purpose: with all shininesses 0 and an attenuated or spot light,
 //! Mesa's program feeds `n·L` into LIT's exponent, so the specular factor is
-//! `pow(n·L, n·L)` (not 1); `pow(0, 0)` is 0; distance attenuation builds `(r·d, d, d²)`
-//! with `r = rsq(VP·VP)` and `d = 1/r`, so its first component is not exactly 1.
+//! `pow(n·L, n·L)` (not 1); `pow(0, 0)` is 0; distance attenuation builds `(r·d, d, q)`
+//! with `q = VP·VP`, `r = rsq(q)` and `d = sqrt(q)` (NIR rewrites `rcp(rsq(q))` into
+//! `sqrt(q)` and `sqrt(q)·sqrt(q)` into `|q|`), so its first component is not exactly 1.
+//! Measured bit-exact in f32 against OSMesa (tests/lighting_osmesa.rs, float buffer).
 //!
 //! The outputs are not clamped; the vertex stage clamps colours to [0,1] as llvmpipe's
 //! draw module does.
@@ -434,8 +436,9 @@ pub fn light_vertex(
     for l in &plan.lights {
         let (vp, dist) = if l.positional {
             let d = [l.pos[0] - v[0], l.pos[1] - v[1], l.pos[2] - v[2]];
-            let r = rsq(dp3(d, d));
-            (scale3(d, r), Some(r))
+            let q = dp3(d, d);
+            let r = rsq(q);
+            (scale3(d, r), Some((r, q)))
         } else {
             (l.pos, None)
         };
@@ -445,10 +448,12 @@ pub fn light_vertex(
             let slt = if cos_cutoff < s { 1.0 } else { 0.0 };
             att = Some(slt * pow(s.abs(), exponent, fma));
         }
-        if let (Some(k), Some(r)) = (l.atten, dist) {
+        if let (Some(k), Some((r, q))) = (l.atten, dist) {
             // dist = (r, r, r, r); RCP → yz = 1/r; MUL xz by y → (r·d, d, d·d).
-            let d = 1.0 / r;
-            let dv = [r * d, d, d * d];
+            // NIR's `~frcp(frsq(a)) → fsqrt(a)` turns the RCP of the RSQ into a sqrt.
+            // and `~fmul(fsqrt(a), fsqrt(a)) → fabs(a)` makes d·d the squared distance itself.
+            let d = q.abs().sqrt();
+            let dv = [r * d, d, q.abs()];
             let q = 1.0 / dp3(k, dv);
             att = Some(match att {
                 Some(a) => q * a,
