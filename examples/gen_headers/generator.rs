@@ -59,10 +59,12 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("query.rs", Header::Gl),
     ("fragment.rs", Header::Gl),
     ("textures.rs", Header::Gl),
+    ("lighting.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
     ("fragment_ext.rs", Header::Glext),
+    ("lighting_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 

@@ -1107,6 +1107,29 @@ GLAPI void GLAPIENTRY glMultiTexCoord4fv(GLenum target, const GLfloat *v);
 GLAPI void GLAPIENTRY glMultiTexCoord4d(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q);
 GLAPI void GLAPIENTRY glMultiTexCoord4dv(GLenum target, const GLdouble *v);
 
+/* Functions: src/ffi/lighting.rs */
+GLAPI void GLAPIENTRY glLightf(GLenum light, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glLighti(GLenum light, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glLightiv(GLenum light, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glLightModelf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glLightModeli(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glLightModeliv(GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode);
+GLAPI void GLAPIENTRY glFogf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glFogiv(GLenum pname, const GLint *params);
+
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLACTIVETEXTUREPROC) (GLenum texture);

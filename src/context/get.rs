@@ -253,6 +253,27 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_TEXTURE_2D => b(c.textures.units[st.active_texture].enabled_2d),
         GL_MAX_TEXTURE_LOD_BIAS => f(&[crate::texture::MAX_LOD_BIAS]),
         GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => f(&[crate::texture::MAX_ANISOTROPY]),
+        GL_LIGHT_MODEL_AMBIENT => n(&c.light.model.ambient),
+        GL_LIGHT_MODEL_LOCAL_VIEWER => b(c.light.model.local_viewer),
+        GL_LIGHT_MODEL_TWO_SIDE => b(c.light.model.two_side),
+        GL_LIGHT_MODEL_COLOR_CONTROL => e(if c.light.model.separate_specular {
+            GL_SEPARATE_SPECULAR_COLOR
+        } else {
+            GL_SINGLE_COLOR
+        }),
+        GL_COLOR_MATERIAL_FACE => e(c.light.color_material.face),
+        GL_COLOR_MATERIAL_PARAMETER => e(c.light.color_material.mode.to_gl()),
+        GL_FOG_MODE => e(c.light.fog.mode.to_gl()),
+        GL_FOG_DENSITY => f(&[c.light.fog.density]),
+        GL_FOG_START => f(&[c.light.fog.start]),
+        GL_FOG_END => f(&[c.light.fog.end]),
+        GL_FOG_INDEX => f(&[c.light.fog.index]),
+        GL_FOG_COLOR => n(&c.light.fog.color),
+        GL_FOG_COORD_SRC => e(if c.light.fog.coord_from_attrib {
+            GL_FOG_COORD
+        } else {
+            GL_FRAGMENT_DEPTH
+        }),
         _ => match Cap::from_gl(pname) {
             Ok(cap) => b(st.caps.get(cap)),
             Err(_) => return Err(GlError::InvalidEnum),

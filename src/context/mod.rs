@@ -9,6 +9,7 @@ pub mod error;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
+pub mod lighting_state;
 pub mod state;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
@@ -93,6 +94,8 @@ pub struct Context {
     pub depth_copy: Option<Vec<u8>>,
     /// Texture objects and texture units.
     pub textures: crate::texture::TextureState,
+    /// Lights, materials, colour material and fog.
+    pub light: crate::context::lighting_state::LightingState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -141,6 +144,7 @@ impl Context {
             target: UserTarget::default(),
             depth_copy: None,
             textures: crate::texture::TextureState::default(),
+            light: Default::default(),
         }
     }
 

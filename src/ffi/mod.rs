@@ -17,6 +17,8 @@ pub mod fragment;
 pub mod fragment_ext;
 pub mod glext_enums;
 pub mod immediate;
+pub mod lighting;
+pub mod lighting_ext;
 pub mod matrix;
 pub mod multidraw;
 pub mod osmesa;

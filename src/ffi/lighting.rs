@@ -1,0 +1,384 @@
+//! Lighting and fog calls of GL 1.0–1.3 (`GL/gl.h`): glLight, glLightModel, glMaterial,
+//! glColorMaterial, glFog and their queries. Integer colours convert with Mesa's
+//! `INT_TO_FLOAT`; integer scalars convert directly; queries of colours as integers use
+//! `FLOAT_TO_INT`, as Mesa's `light.c` and `fog.c` do.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::types::*;
+use super::with_ctx;
+use crate::context::lighting_state::{float_to_int, int_to_float};
+use crate::context::state::Cap;
+use crate::context::Context;
+
+/// Reads `n` values from a GL pointer argument, padding to 4 with zeros.
+///
+/// # Safety
+/// `p` must be null or readable for `n` values.
+unsafe fn read4<T: Copy + Default>(p: *const T, n: usize) -> Option<[T; 4]> {
+    if p.is_null() {
+        return None;
+    }
+    let mut out = [T::default(); 4];
+    for (i, o) in out.iter_mut().enumerate().take(n) {
+        // SAFETY: the caller guarantees `n` readable values.
+        *o = unsafe { p.add(i).read_unaligned() };
+    }
+    Some(out)
+}
+
+/// How many values a glLight pname takes (0 for an unknown pname).
+fn light_count(pname: GLenum) -> usize {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+        GL_SPOT_DIRECTION => 3,
+        GL_SPOT_EXPONENT
+        | GL_SPOT_CUTOFF
+        | GL_CONSTANT_ATTENUATION
+        | GL_LINEAR_ATTENUATION
+        | GL_QUADRATIC_ATTENUATION => 1,
+        _ => 0,
+    }
+}
+
+/// How many values a glMaterial pname takes.
+fn material_count(pname: GLenum) -> usize {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
+        GL_COLOR_INDEXES => 3,
+        GL_SHININESS => 1,
+        _ => 0,
+    }
+}
+
+/// How many values a glLightModel pname takes.
+fn light_model_count(pname: GLenum) -> usize {
+    if pname == GL_LIGHT_MODEL_AMBIENT {
+        4
+    } else {
+        1
+    }
+}
+
+/// How many values a glFog pname takes.
+fn fog_count(pname: GLenum) -> usize {
+    if pname == GL_FOG_COLOR {
+        4
+    } else {
+        1
+    }
+}
+
+fn is_color(pname: GLenum) -> bool {
+    matches!(
+        pname,
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE
+    )
+}
+
+fn light(light: GLenum, pname: GLenum, p: [f32; 4]) {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        let mv = c.matrices.modelview.top().0;
+        c.light.set_light(light, pname, &p, &mv)
+    })
+}
+
+fn light_model(pname: GLenum, p: [f32; 4]) {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        c.light.set_light_model(pname, &p)
+    })
+}
+
+fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
+    // glMaterial is allowed between glBegin and glEnd.
+    with_ctx(|c| {
+        let cm = c.state.caps.get(Cap::ColorMaterial);
+        c.light.set_material(face, pname, &p, cm)
+    })
+}
+
+fn fog(pname: GLenum, p: [f32; 4]) {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        c.light.set_fog(pname, &p)
+    })
+}
+
+/// Copies the current colour into the tracked material terms when GL_COLOR_MATERIAL is on
+/// (what Mesa's FLUSH_CURRENT does before material queries).
+pub(crate) fn sync_color_material(c: &mut Context) {
+    if c.state.caps.get(Cap::ColorMaterial) {
+        let col = c.state.current.color;
+        c.light.sync_color_material(col);
+    }
+}
+
+/// glLightf.
+#[no_mangle]
+pub extern "C" fn glLightf(light_: GLenum, pname: GLenum, param: GLfloat) {
+    light(light_, pname, [param, 0.0, 0.0, 0.0])
+}
+
+/// glLighti.
+#[no_mangle]
+pub extern "C" fn glLighti(light_: GLenum, pname: GLenum, param: GLint) {
+    light(light_, pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glLightfv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightfv(light_: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, light_count(pname)) } {
+        light(light_, pname, p)
+    }
+}
+
+/// glLightiv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightiv(light_: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, light_count(pname)) } {
+        let f = if is_color(pname) {
+            p.map(int_to_float)
+        } else {
+            p.map(|v| v as f32)
+        };
+        light(light_, pname, f)
+    }
+}
+
+/// Shared by glGetLightfv/iv: the values, or an error.
+fn get_light(light_: GLenum, pname: GLenum) -> Option<Vec<f32>> {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        c.light.get_light(light_, pname).map(Some)
+    })
+}
+
+/// glGetLightfv.
+///
+/// # Safety
+/// `params` must be writable for as many values as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetLightfv(light_: GLenum, pname: GLenum, params: *mut GLfloat) {
+    if let Some(v) = get_light(light_, pname) {
+        if params.is_null() {
+            return;
+        }
+        for (i, x) in v.into_iter().enumerate() {
+            // SAFETY: the caller promises room for the values.
+            unsafe { params.add(i).write_unaligned(x) };
+        }
+    }
+}
+
+/// glGetLightiv.
+///
+/// # Safety
+/// `params` must be writable for as many values as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetLightiv(light_: GLenum, pname: GLenum, params: *mut GLint) {
+    if let Some(v) = get_light(light_, pname) {
+        if params.is_null() {
+            return;
+        }
+        let color = matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR);
+        for (i, x) in v.into_iter().enumerate() {
+            let n = if color { float_to_int(x) } else { x as i32 };
+            // SAFETY: the caller promises room for the values.
+            unsafe { params.add(i).write_unaligned(n) };
+        }
+    }
+}
+
+/// glLightModelf.
+#[no_mangle]
+pub extern "C" fn glLightModelf(pname: GLenum, param: GLfloat) {
+    light_model(pname, [param, 0.0, 0.0, 0.0])
+}
+
+/// glLightModeli.
+#[no_mangle]
+pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
+    light_model(pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glLightModelfv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, light_model_count(pname)) } {
+        light_model(pname, p)
+    }
+}
+
+/// glLightModeliv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, light_model_count(pname)) } {
+        let f = if pname == GL_LIGHT_MODEL_AMBIENT {
+            p.map(int_to_float)
+        } else {
+            p.map(|v| v as f32)
+        };
+        light_model(pname, f)
+    }
+}
+
+/// glMaterialf.
+#[no_mangle]
+pub extern "C" fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) {
+    material(face, pname, [param, 0.0, 0.0, 0.0])
+}
+
+/// glMateriali.
+#[no_mangle]
+pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
+    material(face, pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glMaterialfv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, material_count(pname)) } {
+        material(face, pname, p)
+    }
+}
+
+/// glMaterialiv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, material_count(pname)) } {
+        let f = if is_color(pname) {
+            p.map(int_to_float)
+        } else {
+            p.map(|v| v as f32)
+        };
+        material(face, pname, f)
+    }
+}
+
+/// Shared by glGetMaterialfv/iv.
+fn get_material(face: GLenum, pname: GLenum) -> Option<Vec<f32>> {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        sync_color_material(c);
+        c.light.get_material(face, pname).map(Some)
+    })
+}
+
+/// glGetMaterialfv.
+///
+/// # Safety
+/// `params` must be writable for as many values as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) {
+    if let Some(v) = get_material(face, pname) {
+        if params.is_null() {
+            return;
+        }
+        for (i, x) in v.into_iter().enumerate() {
+            // SAFETY: the caller promises room for the values.
+            unsafe { params.add(i).write_unaligned(x) };
+        }
+    }
+}
+
+/// glGetMaterialiv.
+///
+/// # Safety
+/// `params` must be writable for as many values as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) {
+    if let Some(v) = get_material(face, pname) {
+        if params.is_null() {
+            return;
+        }
+        let color = is_color(pname);
+        for (i, x) in v.into_iter().enumerate() {
+            let n = if color {
+                float_to_int(x)
+            } else {
+                x.round() as i32 // lroundf
+            };
+            // SAFETY: the caller promises room for the values.
+            unsafe { params.add(i).write_unaligned(n) };
+        }
+    }
+}
+
+/// glColorMaterial.
+#[no_mangle]
+pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        c.light.set_color_material(face, mode)?;
+        sync_color_material(c);
+        Ok(())
+    })
+}
+
+/// glFogf.
+#[no_mangle]
+pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
+    fog(pname, [param, 0.0, 0.0, 0.0])
+}
+
+/// glFogi.
+#[no_mangle]
+pub extern "C" fn glFogi(pname: GLenum, param: GLint) {
+    fog(pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glFogfv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, fog_count(pname)) } {
+        fog(pname, p)
+    }
+}
+
+/// glFogiv.
+///
+/// # Safety
+/// `params` must point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glFogiv(pname: GLenum, params: *const GLint) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, fog_count(pname)) } {
+        let f = if pname == GL_FOG_COLOR {
+            p.map(int_to_float)
+        } else {
+            p.map(|v| v as f32)
+        };
+        fog(pname, f)
+    }
+}
