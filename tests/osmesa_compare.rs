@@ -92,6 +92,9 @@ const SCENES: &[&str] = &[
     "blend_40_quads",
     "depth_stencil_interplay",
     "fragment_state",
+    "tex_filters_ground",
+    "tex_wrap_modes",
+    "tex_env_modes",
 ];
 
 macro_rules! scene_tests {
@@ -141,6 +144,9 @@ scene_tests!(
     blend_40_quads,
     depth_stencil_interplay,
     fragment_state,
+    tex_filters_ground,
+    tex_wrap_modes,
+    tex_env_modes,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
