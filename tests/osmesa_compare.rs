@@ -95,6 +95,8 @@ const SCENES: &[&str] = &[
     "tex_filters_ground",
     "tex_wrap_modes",
     "tex_env_modes",
+    "tex_combine",
+    "tex_multitexture",
 ];
 
 macro_rules! scene_tests {
@@ -147,6 +149,8 @@ scene_tests!(
     tex_filters_ground,
     tex_wrap_modes,
     tex_env_modes,
+    tex_combine,
+    tex_multitexture,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
