@@ -97,6 +97,13 @@ const SCENES: &[&str] = &[
     "tex_env_modes",
     "tex_combine",
     "tex_multitexture",
+    "tex_subimage",
+    "tex_npot",
+    "tex_unpack",
+    "tex_matrix",
+    "tex_mipmap_generate",
+    "tex_1d",
+    "tex_lod_params",
 ];
 
 macro_rules! scene_tests {
@@ -151,6 +158,13 @@ scene_tests!(
     tex_env_modes,
     tex_combine,
     tex_multitexture,
+    tex_subimage,
+    tex_npot,
+    tex_unpack,
+    tex_matrix,
+    tex_mipmap_generate,
+    tex_1d,
+    tex_lod_params,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
