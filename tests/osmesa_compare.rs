@@ -104,6 +104,7 @@ const SCENES: &[&str] = &[
     "tex_mipmap_generate",
     "tex_1d",
     "tex_lod_params",
+    "tex_state",
 ];
 
 macro_rules! scene_tests {
@@ -165,6 +166,7 @@ scene_tests!(
     tex_mipmap_generate,
     tex_1d,
     tex_lod_params,
+    tex_state,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -1,5 +1,10 @@
-/* ADD_SIGNED(a, 1-a) - 0.5 for alpha a = k/255, one column per k; also the
- * two-unit variant (PREVIOUS = unit0 MODULATE of RGB texture). */
+/* combine_add_signed: GL_COMBINE_ALPHA = GL_ADD_SIGNED with
+ * row 0: arg0 = PRIMARY alpha (SRC_ALPHA), arg1 = PRIMARY (ONE_MINUS_SRC_ALPHA)
+ * row 1: the same operands swapped,
+ * for primary alpha a = k/255 in column k (256x4 buffer, prints alphas != 128).
+ * Real result is exactly 0.5 -> 127.5 -> 128 (round half even).
+ * llvmpipe row 0: 127 for odd k in 65..127 (as if f32 a + ((1-a) - 0.5));
+ * llvmpipe row 1: 128 everywhere.  softgl: 128 everywhere in both rows. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
