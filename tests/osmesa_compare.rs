@@ -92,6 +92,19 @@ const SCENES: &[&str] = &[
     "blend_40_quads",
     "depth_stencil_interplay",
     "fragment_state",
+    "tex_filters_ground",
+    "tex_wrap_modes",
+    "tex_env_modes",
+    "tex_combine",
+    "tex_multitexture",
+    "tex_subimage",
+    "tex_npot",
+    "tex_unpack",
+    "tex_matrix",
+    "tex_mipmap_generate",
+    "tex_1d",
+    "tex_lod_params",
+    "tex_state",
 ];
 
 macro_rules! scene_tests {
@@ -141,6 +154,19 @@ scene_tests!(
     blend_40_quads,
     depth_stencil_interplay,
     fragment_state,
+    tex_filters_ground,
+    tex_wrap_modes,
+    tex_env_modes,
+    tex_combine,
+    tex_multitexture,
+    tex_subimage,
+    tex_npot,
+    tex_unpack,
+    tex_matrix,
+    tex_mipmap_generate,
+    tex_1d,
+    tex_lod_params,
+    tex_state,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
