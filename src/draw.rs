@@ -6,6 +6,8 @@
 
 use crate::context::state::{Cap, Face, Primitive};
 use crate::context::Context;
+use crate::fixed_function::fog::FogPlan;
+use crate::fixed_function::lighting::LightPlan;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
@@ -28,12 +30,19 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let fma = cpu_has_fma();
     let st = &ctx.state;
     let viewport = Viewport::new(st.viewport, st.depth_range, fb.height);
-    let mvp = ctx
-        .matrices
-        .projection
-        .top()
-        .mul(ctx.matrices.modelview.top());
-    let mut stage = VertexStage::new(mvp, viewport, fma);
+    let modelview = *ctx.matrices.modelview.top();
+    let mvp = ctx.matrices.projection.top().mul(&modelview);
+    let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
+    stage.light = LightPlan::new(
+        &ctx.light,
+        &st.caps,
+        st.current.color,
+        &modelview,
+        Some(ctx.matrices.modelview.top_flags()),
+        false,
+        fma,
+    );
+    stage.fog = st.caps.get(Cap::Fog).then_some(ctx.light.fog);
     let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
         ..crate::context::state::MAX_TEXTURE_UNITS)
         .filter_map(|u| {
@@ -42,7 +51,9 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             Some(p)
         })
         .collect();
-    let plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
+    let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
+    plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
+    plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     let Some(region) = ctx.draw_region() else {
         return;
     };
@@ -76,6 +87,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         }
     };
     let nvary = stage.nvary();
+    let back = stage.two_side().then(|| stage.back_offset());
     let stats = &mut ctx.stats;
     let Some(fb) = ctx.fb.as_mut() else { return };
     let mut rast = Rasterizer::new(fb, &plan, &tex_plans, region);
@@ -85,7 +97,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                    c: &ClipVertex,
                    rast: &mut Rasterizer<'_, '_>,
                    stats: &mut crate::stats::Stats| {
-        match setup_triangle([a, b, c], nvary, cull, &mut tri) {
+        match setup_triangle([a, b, c], nvary, cull, back, &mut tri) {
             SetupResult::Draw => rast.triangle(&tri, stats),
             SetupResult::Degenerate => stats.tris_degenerate += 1,
             SetupResult::Culled => stats.tris_culled += 1,
@@ -150,4 +162,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         }),
     }
     rast.flush(stats);
+    if ctx.state.caps.get(Cap::ColorMaterial) {
+        ctx.light.sync_color_material(ctx.state.current.color);
+    }
 }

@@ -261,6 +261,9 @@ impl Context {
         match cap {
             Cap::Texture1D => unit.enabled_1d = on,
             Cap::Texture2D => unit.enabled_2d = on,
+            // Mesa copies the current colour into the tracked material when colour material
+            // is switched (and whenever the colour changes while it is on).
+            Cap::ColorMaterial => self.light.sync_color_material(self.state.current.color),
             _ => {}
         }
         Ok(())
@@ -278,8 +281,17 @@ impl Context {
 
     /// Applies `f` to the current matrix (outside glBegin/glEnd).
     pub fn with_matrix(&mut self, f: impl FnOnce(&mut Mat4)) -> GlResult<()> {
+        self.with_matrix_flags(|m, _| f(m))
+    }
+
+    /// Applies `f` to the current matrix and its Mesa flags (outside glBegin/glEnd).
+    pub fn with_matrix_flags(
+        &mut self,
+        f: impl FnOnce(&mut Mat4, &mut crate::fixed_function::mesa_matrix::MatFlags),
+    ) -> GlResult<()> {
         self.check_outside_begin()?;
-        f(self.current_stack().top_mut());
+        let (m, fl) = self.current_stack().top_both_mut();
+        f(m, fl);
         Ok(())
     }
 

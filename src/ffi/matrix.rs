@@ -28,7 +28,12 @@ pub extern "C" fn glMatrixMode(mode: GLenum) {
 /// glLoadIdentity.
 #[no_mangle]
 pub extern "C" fn glLoadIdentity() {
-    with_ctx(|c| c.with_matrix(|m| *m = IDENTITY))
+    with_ctx(|c| {
+        c.with_matrix_flags(|m, f| {
+            *m = IDENTITY;
+            f.on_load_identity();
+        })
+    })
 }
 
 /// Reads 16 values through `p`, or None for NULL.
@@ -51,7 +56,17 @@ fn load(m: Option<Mat4>, transpose: bool, multiply: bool) {
     with_ctx(|c| {
         let Some(m) = m else { return Ok(()) };
         let m = if transpose { m.transpose() } else { m };
-        c.with_matrix(|cur| *cur = if multiply { cur.mul(&m) } else { m })
+        c.with_matrix_flags(|cur, f| {
+            if multiply {
+                if m != IDENTITY {
+                    *cur = cur.mul(&m);
+                    f.on_mult();
+                }
+            } else if *cur != m {
+                *cur = m;
+                f.on_load();
+            }
+        })
     })
 }
 
@@ -138,7 +153,12 @@ pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
 /// glTranslatef.
 #[no_mangle]
 pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| c.with_matrix(|m| m.translate(x, y, z)))
+    with_ctx(|c| {
+        c.with_matrix_flags(|m, f| {
+            m.translate(x, y, z);
+            f.on_translate();
+        })
+    })
 }
 
 /// glTranslated.
@@ -150,7 +170,12 @@ pub extern "C" fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glScalef.
 #[no_mangle]
 pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| c.with_matrix(|m| m.scale(x, y, z)))
+    with_ctx(|c| {
+        c.with_matrix_flags(|m, f| {
+            m.scale(x, y, z);
+            f.on_scale(x, y, z);
+        })
+    })
 }
 
 /// glScaled.
@@ -162,7 +187,14 @@ pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glRotatef.
 #[no_mangle]
 pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| c.with_matrix(|m| m.rotate(angle, x, y, z)))
+    with_ctx(|c| {
+        c.with_matrix_flags(|m, f| {
+            // Mesa skips a zero angle, and a degenerate axis leaves the matrix alone.
+            if angle != 0.0 && m.rotate(angle, x, y, z) {
+                f.on_rotate();
+            }
+        })
+    })
 }
 
 /// glRotated.
@@ -194,7 +226,10 @@ pub extern "C" fn glFrustum(
             zNear as f32,
             zFar as f32,
         );
-        c.with_matrix(|m| *m = m.mul(&f))
+        c.with_matrix_flags(|m, fl| {
+            *m = m.mul(&f);
+            fl.on_frustum();
+        })
     })
 }
 
@@ -221,7 +256,10 @@ pub extern "C" fn glOrtho(
             zNear as f32,
             zFar as f32,
         );
-        c.with_matrix(|m| *m = m.mul(&o))
+        c.with_matrix_flags(|m, fl| {
+            *m = m.mul(&o);
+            fl.on_ortho();
+        })
     })
 }
 

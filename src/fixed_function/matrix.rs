@@ -4,6 +4,7 @@
 //! the evaluation order of Mesa's `math/m_matrix.c`, because the reference rounds each f32
 //! multiply and add separately and a different order changes the last bit of a vertex.
 
+use super::mesa_matrix::MatFlags;
 use crate::context::error::{GlError, GlResult};
 
 /// A column-major 4x4 f32 matrix.
@@ -72,7 +73,8 @@ impl Mat4 {
     }
 
     /// glRotate (degrees), with Mesa's single-axis shortcuts and axis normalisation.
-    pub fn rotate(&mut self, angle: f32, x: f32, y: f32, z: f32) {
+    /// Returns whether the matrix was multiplied (false for a degenerate axis).
+    pub fn rotate(&mut self, angle: f32, x: f32, y: f32, z: f32) -> bool {
         let rad = (angle as f64 * std::f64::consts::PI / 180.0) as f32;
         let (s, c) = (rad.sin(), rad.cos());
         let mut m = IDENTITY.0;
@@ -107,7 +109,7 @@ impl Mat4 {
         if !optimized {
             let mag = (x * x + y * y + z * z).sqrt();
             if mag <= 1.0e-4 || mag.is_nan() {
-                return;
+                return false;
             }
             let (x, y, z) = (x / mag, y / mag, z / mag);
             let (xx, yy, zz) = (x * x, y * y, z * z);
@@ -125,6 +127,7 @@ impl Mat4 {
             set(&mut m, 2, 2, one_c * zz + c);
         }
         *self = self.mul(&Mat4(m));
+        true
     }
 
     /// The glFrustum matrix (arguments already converted to f32).
@@ -165,10 +168,12 @@ impl Mat4 {
     }
 }
 
-/// A matrix stack with a fixed maximum depth (GL_MAX_*_STACK_DEPTH).
+/// A matrix stack with a fixed maximum depth (GL_MAX_*_STACK_DEPTH). Each entry also
+/// carries Mesa's matrix flags, which choose the inverse routine lighting uses.
 #[derive(Clone, Debug)]
 pub struct MatrixStack {
     stack: Vec<Mat4>,
+    flags: Vec<MatFlags>,
     max_depth: usize,
 }
 
@@ -177,6 +182,7 @@ impl MatrixStack {
     pub fn new(max_depth: usize) -> Self {
         MatrixStack {
             stack: vec![IDENTITY],
+            flags: vec![MatFlags::IDENTITY],
             max_depth,
         }
     }
@@ -192,6 +198,22 @@ impl MatrixStack {
             .last_mut()
             .expect("a matrix stack is never empty")
     }
+    /// The top matrix's Mesa flags.
+    pub fn top_flags(&self) -> MatFlags {
+        self.flags.last().copied().unwrap_or(MatFlags::IDENTITY)
+    }
+    /// The top matrix and its flags, for modification.
+    pub fn top_both_mut(&mut self) -> (&mut Mat4, &mut MatFlags) {
+        let m = self
+            .stack
+            .last_mut()
+            .expect("a matrix stack is never empty");
+        let f = self
+            .flags
+            .last_mut()
+            .expect("a matrix stack is never empty");
+        (m, f)
+    }
     /// glPushMatrix.
     pub fn push(&mut self) -> GlResult<()> {
         if self.stack.len() >= self.max_depth {
@@ -199,6 +221,7 @@ impl MatrixStack {
         }
         let top = *self.top();
         self.stack.push(top);
+        self.flags.push(self.top_flags());
         Ok(())
     }
     /// glPopMatrix.
@@ -207,6 +230,7 @@ impl MatrixStack {
             return Err(GlError::StackUnderflow);
         }
         self.stack.pop();
+        self.flags.pop();
         Ok(())
     }
     /// The number of entries (GL_*_STACK_DEPTH).

@@ -1,18 +1,23 @@
 //! The fixed-function vertex stage: object position to clip space with the combined
-//! projection × modelview matrix, colour clamping, texture coordinates through the texture
-//! matrices, clip mask and window position. (Lighting and texture-coordinate generation
-//! plug in here.)
+//! projection × modelview matrix, lighting (or the vertex colour), llvmpipe's colour clamp,
+//! the fog coordinate, texture coordinates through the texture matrices, clip mask and
+//! window position.
 
+use super::fog::vertex_fog_coord;
+use super::lighting::{eye_normal, eye_position, light_vertex, LightPlan};
 use super::matrix::{Mat4, IDENTITY};
+use crate::context::lighting_state::FogState;
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::geometry::fetch::VertexIn;
-use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_TEX};
+use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX};
 
 /// Per-draw constants of the vertex stage.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct VertexStage {
     /// Projection × modelview, multiplied as Mesa does.
     pub mvp: Mat4,
+    /// The modelview (for eye coordinates).
+    pub modelview: Mat4,
     /// The viewport transform.
     pub viewport: Viewport,
     /// Whether the host fuses multiply-adds (as llvmpipe then does).
@@ -21,26 +26,31 @@ pub struct VertexStage {
     pub tex_units: [(usize, Option<Mat4>); MAX_TEXTURE_UNITS],
     /// How many entries of `tex_units` are used.
     pub n_tex: usize,
+    /// Lighting, when GL_LIGHTING is on.
+    pub light: Option<LightPlan>,
+    /// Fog, when GL_FOG is on.
+    pub fog: Option<FogState>,
 }
 
+/// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1.
 #[inline]
-fn clamp01(v: f32) -> f32 {
-    if v > 0.0 {
-        v.min(1.0)
-    } else {
-        0.0
-    }
+#[allow(clippy::manual_clamp)] // f32::clamp keeps NaN; llvmpipe's min-then-max gives 1
+fn clamp_color(v: f32) -> f32 {
+    v.min(1.0).max(0.0)
 }
 
 impl VertexStage {
-    /// A stage without texturing.
-    pub fn new(mvp: Mat4, viewport: Viewport, fma: bool) -> Self {
+    /// A stage without texturing, lighting or fog.
+    pub fn new(mvp: Mat4, modelview: Mat4, viewport: Viewport, fma: bool) -> Self {
         VertexStage {
             mvp,
+            modelview,
             viewport,
             fma,
             tex_units: [(0, None); MAX_TEXTURE_UNITS],
             n_tex: 0,
+            light: None,
+            fog: None,
         }
     }
 
@@ -53,12 +63,28 @@ impl VertexStage {
         }
     }
 
+    /// Whether back-face colours are computed (two-sided lighting).
+    pub fn two_side(&self) -> bool {
+        self.light.as_ref().is_some_and(|l| l.two_side())
+    }
+
+    /// Where the back colours start among the varyings (with two-sided lighting).
+    pub fn back_offset(&self) -> usize {
+        VARY_TEX + 4 * self.n_tex
+    }
+
     /// The number of varying floats this stage writes.
     pub fn nvary(&self) -> usize {
-        if self.n_tex == 0 {
-            4
-        } else {
+        if self.two_side() {
+            self.back_offset() + 8
+        } else if self.n_tex > 0 {
             VARY_TEX + 4 * self.n_tex
+        } else if self.fog.is_some() {
+            VARY_FOG + 1
+        } else if self.light.as_ref().is_some_and(|l| l.separate_specular()) {
+            VARY_SPEC + 4
+        } else {
+            4
         }
     }
 
@@ -73,8 +99,29 @@ impl VertexStage {
             mask,
             ..Default::default()
         };
-        let c = v.color.map(clamp01);
-        out.vary[..4].copy_from_slice(&c);
+        let mut eye = None;
+        match &self.light {
+            Some(lp) => {
+                let e = lp
+                    .needs_eye_position()
+                    .then(|| eye_position(&self.modelview, v.pos));
+                eye = e;
+                let n = eye_normal(lp, v.normal);
+                let lit = light_vertex(lp, e.unwrap_or([0.0, 0.0, 0.0, 1.0]), n, v.color);
+                out.vary[..4].copy_from_slice(&lit.front.map(clamp_color));
+                out.vary[VARY_SPEC..VARY_SPEC + 4]
+                    .copy_from_slice(&lit.front_spec.map(clamp_color));
+                if lp.two_side() {
+                    let b = self.back_offset();
+                    out.vary[b..b + 4].copy_from_slice(&lit.back.map(clamp_color));
+                    out.vary[b + 4..b + 8].copy_from_slice(&lit.back_spec.map(clamp_color));
+                }
+            }
+            None => out.vary[..4].copy_from_slice(&v.color.map(clamp_color)),
+        }
+        if let Some(f) = &self.fog {
+            out.vary[VARY_FOG] = vertex_fog_coord(f, &self.modelview, v.pos, eye, v.fog_coord);
+        }
         for (k, (unit, m)) in self.tex_units[..self.n_tex].iter().enumerate() {
             let tc = v.texcoord[*unit];
             let tc = match m {

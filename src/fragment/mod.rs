@@ -36,6 +36,10 @@ pub struct FragPlan {
     pub blend: Option<BlendPlan>,
     /// The logic op, when GL_COLOR_LOGIC_OP is on and it is not COPY.
     pub logic: Option<LogicOp>,
+    /// GL_SEPARATE_SPECULAR_COLOR: the secondary colour is added after texturing.
+    pub separate_specular: bool,
+    /// Fog, when GL_FOG is on.
+    pub fog: Option<crate::fixed_function::fog::FogPlan>,
 }
 
 /// The depth test of a draw.
@@ -182,6 +186,8 @@ impl FragPlan {
             stencil,
             blend,
             logic,
+            separate_specular: false,
+            fog: None,
         }
     }
 
@@ -201,5 +207,7 @@ impl FragPlan {
             || self.stencil.is_some()
             || self.blend.is_some()
             || self.logic.is_some()
+            || self.separate_specular
+            || self.fog.is_some()
     }
 }

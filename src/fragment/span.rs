@@ -8,6 +8,7 @@ use super::FragPlan;
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::geometry::{VARY_FOG, VARY_SPEC};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
@@ -157,15 +158,17 @@ pub fn tex_coords<M: Madd, const PERSP: bool>(
     (s, tt)
 }
 
-/// The colours of [`LANES`] pixels with the texture environment of every enabled unit
-/// applied (f32 as Mesa's fixed-function fragment shader computes it), converted to 8 bits.
+/// The colours of [`LANES`] pixels as Mesa's fixed-function fragment shader computes them
+/// in f32: the texture environment of every enabled unit, then the separate specular
+/// colour, then fog; converted to 8 bits.
 #[inline(always)]
-fn textured_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
+fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
+    plan: &FragPlan,
     fx: &[f32; LANES],
     fy: f32,
     units: &[UnitPlan<'_>],
-    texels: &TexLanes,
+    texels: Option<&TexLanes>,
 ) -> Lanes {
     let mut frag = [[0f32; LANES]; 4];
     if FLAT {
@@ -186,12 +189,35 @@ fn textured_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
             }
         }
     }
+    // Secondary colour and fog coordinate (perspective-correct like every varying).
+    let extra = |k: usize, i: usize| -> f32 {
+        if FLAT && k < VARY_FOG {
+            return t.flat[k];
+        }
+        let a = eval::<M>(&t.vary[k], fx[i], fy);
+        if PERSP {
+            a * (1.0f32 / eval::<M>(&t.w, fx[i], fy))
+        } else {
+            a
+        }
+    };
     let mut c = [[0u8; LANES]; 4];
     for i in 0..LANES {
         let f = [frag[0][i], frag[1][i], frag[2][i], frag[3][i]];
         let mut prev = f;
-        for (k, u) in units.iter().enumerate() {
-            prev = u.env(f, texels[k][i], prev);
+        if let Some(tx) = texels {
+            for (k, u) in units.iter().enumerate() {
+                prev = u.env(f, tx[k][i], prev);
+            }
+        }
+        if plan.separate_specular {
+            for ch in 0..3 {
+                prev[ch] += extra(VARY_SPEC + ch, i);
+            }
+        }
+        if let Some(fog) = &plan.fog {
+            let factor = fog.factor(extra(VARY_FOG, i));
+            prev = fog.apply(prev, factor);
         }
         for ch in 0..4 {
             c[ch][i] = unorm8(prev[ch]);
@@ -274,9 +300,10 @@ pub fn shade_chunk<
     }
     let mut c: Lanes = [[0u8; LANES]; 4];
     if FULL {
-        c = match texels {
-            Some(tx) => textured_colors::<M, FLAT, PERSP>(t, &fx, fy, units, tx),
-            None => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
+        c = if texels.is_some() || plan.separate_specular || plan.fog.is_some() {
+            shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, texels)
+        } else {
+            colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color)
         };
         if let Some((func, reference)) = plan.alpha {
             for i in 0..n {

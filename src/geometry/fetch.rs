@@ -19,6 +19,8 @@ pub struct VertexIn {
     pub normal: [f32; 3],
     /// Texture coordinates, per texture unit.
     pub texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
+    /// Fog coordinate (GL_FOG_COORD).
+    pub fog_coord: f32,
 }
 
 impl VertexIn {
@@ -29,6 +31,7 @@ impl VertexIn {
             color: cur.color,
             normal: cur.normal,
             texcoord: cur.texcoord,
+            fog_coord: cur.fog_coord,
         }
     }
 }

@@ -9,11 +9,17 @@ pub mod fetch;
 pub mod setup;
 
 /// The number of varying floats a vertex carries: primary colour (0..4), secondary colour
-/// (4..8), then the texture coordinates (s, t, r, q) of each enabled unit, compacted.
-pub const MAX_VARY: usize = VARY_TEX + 4 * crate::context::state::MAX_TEXTURE_UNITS;
+/// (4..8), the fog coordinate (8), the texture coordinates (s, t, r, q) of each enabled
+/// unit from [`VARY_TEX`], compacted, and with two-sided lighting the back colours (8
+/// floats) after the last texture unit.
+pub const MAX_VARY: usize = VARY_TEX + 4 * crate::context::state::MAX_TEXTURE_UNITS + 8;
 
+/// Where the secondary (specular) colour starts among the varyings.
+pub const VARY_SPEC: usize = 4;
+/// The fog coordinate's varying.
+pub const VARY_FOG: usize = 8;
 /// Where the first enabled texture unit's coordinates start among the varyings.
-pub const VARY_TEX: usize = 8;
+pub const VARY_TEX: usize = 12;
 
 /// A vertex after the vertex stage: what clipping, setup and interpolation read.
 #[derive(Clone, Copy, Debug, PartialEq)]

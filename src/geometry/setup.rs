@@ -115,6 +115,7 @@ pub fn setup_triangle(
     v: [&ClipVertex; 3],
     nvary: usize,
     cull: CullMode,
+    back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     for vx in v {
@@ -123,8 +124,8 @@ pub fn setup_triangle(
         }
     }
     let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
-    let (mut x0, mut y0) = (snap(p0.win[0]), snap(p0.win[1]));
-    let (mut x1, mut y1) = (snap(p1.win[0]), snap(p1.win[1]));
+    let (x0, y0) = (snap(p0.win[0]), snap(p0.win[1]));
+    let (x1, y1) = (snap(p1.win[0]), snap(p1.win[1]));
     let (x2, y2) = (snap(p2.win[0]), snap(p2.win[1]));
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     if area == 0 {
@@ -135,6 +136,56 @@ pub fn setup_triangle(
     if (front && cull.front) || (!front && cull.back) {
         return SetupResult::Culled;
     }
+    // Two-sided lighting: a back-facing triangle takes the back colours (llvmpipe's
+    // `lp_twoside` setup step).
+    let swapped: [ClipVertex; 3];
+    if let (false, Some(o)) = (front, back) {
+        swapped = [p0, p1, p2].map(|p| {
+            let mut q = *p;
+            q.vary.copy_within(o..o + 8, 0);
+            q
+        });
+        (p0, p1) = (&swapped[0], &swapped[1]);
+        return setup_rest(
+            p0,
+            p1,
+            &swapped[2],
+            [x0, x1, x2],
+            [y0, y1, y2],
+            ccw,
+            front,
+            nvary,
+            fill,
+        );
+    }
+    setup_rest(
+        p0,
+        p1,
+        p2,
+        [x0, x1, x2],
+        [y0, y1, y2],
+        ccw,
+        front,
+        nvary,
+        fill,
+    )
+}
+
+/// The part of setup after culling: edges and planes of (p0, p1, p2), reordered when
+/// clockwise.
+#[allow(clippy::too_many_arguments)]
+fn setup_rest<'v>(
+    mut p0: &'v ClipVertex,
+    mut p1: &'v ClipVertex,
+    p2: &'v ClipVertex,
+    xs: [i64; 3],
+    ys: [i64; 3],
+    ccw: bool,
+    front: bool,
+    nvary: usize,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
     if !ccw {
         std::mem::swap(&mut p0, &mut p1);
         std::mem::swap(&mut x0, &mut x1);
@@ -267,7 +318,7 @@ mod tests {
         let tri = [v(0.5, h - 0.5), v(2.5, h - 0.5), v(0.5, h - 2.5)];
         let mut t = SetupTriangle::default();
         assert!(matches!(
-            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, &mut t),
+            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, &mut t),
             SetupResult::Draw
         ));
         let mut c = coverage(&t);
@@ -280,7 +331,7 @@ mod tests {
         let tri = [v(1.3, 2.7), v(17.9, 5.1), v(6.2, 19.4)];
         let mut t = SetupTriangle::default();
         assert!(matches!(
-            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, &mut t),
+            setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, &mut t),
             SetupResult::Draw
         ));
         let brute = coverage(&t);
@@ -312,7 +363,9 @@ mod tests {
         let mut all = vec![];
         for (a, b, c) in [(0, 1, 2), (0, 2, 3)] {
             let mut t = SetupTriangle::default();
-            if let SetupResult::Draw = setup_triangle([&q[a], &q[b], &q[c]], 0, NOCULL, &mut t) {
+            if let SetupResult::Draw =
+                setup_triangle([&q[a], &q[b], &q[c]], 0, NOCULL, None, &mut t)
+            {
                 all.extend(coverage(&t));
             }
         }

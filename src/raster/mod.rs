@@ -94,6 +94,8 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         && plan.alpha.is_none()
         && plan.stencil.is_none()
         && plan.logic.is_none()
+        && !plan.separate_specular
+        && plan.fog.is_none()
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             fb.format,
