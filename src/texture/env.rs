@@ -370,6 +370,7 @@ impl Combine {
 
     /// Evaluates the combiner. `textures` holds every unit's texture value for GL_TEXTUREn
     /// sources (missing entries read as zero, as Mesa's shader does for disabled units).
+    #[inline(always)]
     pub fn apply(
         &self,
         frag: [f32; 4],
@@ -414,8 +415,10 @@ impl Combine {
         } else {
             let n = self.mode_rgb.num_args();
             for (c, o) in out.iter_mut().enumerate().take(3) {
-                let a: [f32; 3] =
-                    std::array::from_fn(|i| if i < n { arg(self.args_rgb[i], c) } else { 0.0 });
+                let mut a = [0.0f32; 3];
+                for (i, ai) in a.iter_mut().enumerate().take(n) {
+                    *ai = arg(self.args_rgb[i], c);
+                }
                 let mut v = combine(self.mode_rgb, a);
                 if !shift && self.mode_rgb.saturates() {
                     v = sat(v);
@@ -425,8 +428,10 @@ impl Combine {
         }
         if self.mode_rgb != CombineFn::Dot3Rgba {
             let n = self.mode_a.num_args();
-            let a: [f32; 3] =
-                std::array::from_fn(|i| if i < n { arg(self.args_a[i], 3) } else { 0.0 });
+            let mut a = [0.0f32; 3];
+            for (i, ai) in a.iter_mut().enumerate().take(n) {
+                *ai = arg(self.args_a[i], 3);
+            }
             let mut v = combine(self.mode_a, a);
             if !shift && self.mode_a.saturates() {
                 v = sat(v);
@@ -453,7 +458,7 @@ pub fn sat(v: f32) -> f32 {
     }
 }
 
-#[inline]
+#[inline(always)]
 fn combine(f: CombineFn, a: [f32; 3]) -> f32 {
     match f {
         CombineFn::Replace => a[0],

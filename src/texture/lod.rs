@@ -34,6 +34,7 @@ impl Lod {
     };
 
     /// A LOD from a float value, as the general path turns it into level parts.
+    #[inline(always)]
     pub fn from_value(lod: f32, mip: MipFilter) -> Lod {
         let positive = lod > 0.0;
         match mip {
@@ -106,7 +107,7 @@ impl LodParams {
 }
 
 /// `lp_build_fast_log2`: exponent plus the linear mantissa fraction.
-#[inline]
+#[inline(always)]
 pub fn fast_log2(x: f32) -> f32 {
     let bits = x.to_bits();
     let e = ((bits >> 23) & 0xff) as i32 - 127;
@@ -115,13 +116,13 @@ pub fn fast_log2(x: f32) -> f32 {
 }
 
 /// The unbiased float exponent (`lp_build_extract_exponent`).
-#[inline]
+#[inline(always)]
 fn exponent(x: f32) -> i32 {
     ((x.to_bits() >> 23) & 0xff) as i32 - 127
 }
 
 /// rho (1D) or rho² (2D) of a quad, NaN/Inf → 0.
-#[inline]
+#[inline(always)]
 pub fn rho(dims: u8, w: f32, h: f32, s: [f32; 4], t: [f32; 4]) -> f32 {
     let dsdx = s[1] - s[0];
     let dsdy = s[2] - s[0];
@@ -144,6 +145,7 @@ pub fn rho(dims: u8, w: f32, h: f32, s: [f32; 4], t: [f32; 4]) -> f32 {
 }
 
 /// The LOD of a quad (`s`, `t` in TL, TR, BL, BR order); `w`, `h` the base level size.
+#[inline(always)]
 pub fn compute(
     p: &LodParams,
     mip: MipFilter,

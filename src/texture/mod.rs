@@ -527,6 +527,8 @@ impl UnitPlan<'_> {
 
     /// Samples a 2x2 quad (TL, TR, BL, BR in y-down order) with one LOD computed from
     /// TL/TR/BL, as llvmpipe does.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)]
     pub fn sample_quad(&self, s: [f32; 4], t: [f32; 4]) -> [[f32; 4]; 4] {
         if self.max_anisotropy > 1.0 {
             return sample::sample_quad_aniso(self, s, t);
@@ -545,10 +547,15 @@ impl UnitPlan<'_> {
         } else {
             Lod::MAG
         };
-        std::array::from_fn(|i| self.sample_one(s[i], t[i], lod))
+        let mut out = [[0.0f32; 4]; 4];
+        for i in 0..4 {
+            out[i] = self.sample_one(s[i], t[i], lod);
+        }
+        out
     }
 
     /// Samples one coordinate with a given LOD.
+    #[inline(always)]
     pub fn sample_one(&self, s: f32, t: f32, lod: Lod) -> [f32; 4] {
         sample::sample(self, s, t, lod)
     }

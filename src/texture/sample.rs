@@ -29,13 +29,13 @@ pub fn has_fma() -> bool {
 }
 
 /// The 8.8 fixed-point lerp of the AoS path.
-#[inline]
+#[inline(always)]
 pub fn lerp8(a: u8, b: u8, w: i32) -> u8 {
     (a as i32 + ((w * (b as i32 - a as i32) + 128) >> 8)) as u8
 }
 
 /// The float lerp of the SoA path: `fmuladd(w, b − a, a)`.
-#[inline]
+#[inline(always)]
 pub fn lerpf(fma: bool, w: f32, a: f32, b: f32) -> f32 {
     if fma {
         w.mul_add(b - a, a)
@@ -44,23 +44,23 @@ pub fn lerpf(fma: bool, w: f32, a: f32, b: f32) -> f32 {
     }
 }
 
-#[inline]
+#[inline(always)]
 fn lerp8x4(a: [u8; 4], b: [u8; 4], w: i32) -> [u8; 4] {
     std::array::from_fn(|c| lerp8(a[c], b[c], w))
 }
 
-#[inline]
+#[inline(always)]
 fn lerpfx4(fma: bool, w: f32, a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
     std::array::from_fn(|c| lerpf(fma, w, a[c], b[c]))
 }
 
-#[inline]
+#[inline(always)]
 fn to_float(v: [u8; 4]) -> [f32; 4] {
     v.map(|u| u as f32 * INV_255)
 }
 
 /// Which filter and levels a LOD selects: `(filter, level0, level1, fraction)`.
-#[inline]
+#[inline(always)]
 pub fn select_levels(p: &UnitPlan<'_>, lod: Lod) -> (Filter, usize, usize, f32) {
     if !lod.positive {
         return (p.mag_filter, p.first, p.first, 0.0);
@@ -86,6 +86,7 @@ pub fn select_levels(p: &UnitPlan<'_>, lod: Lod) -> (Filter, usize, usize, f32) 
 }
 
 /// One level, AoS (8-bit) filtering.
+#[inline(always)]
 fn aos_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) -> [u8; 4] {
     let img = p.image(level);
     let (w, h) = (img.width, img.height);
@@ -113,6 +114,7 @@ fn aos_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) ->
 }
 
 /// One level, SoA (float) filtering with the border colour.
+#[inline(always)]
 fn soa_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) -> [f32; 4] {
     let img = p.image(level);
     let (w, h) = (img.width, img.height);
@@ -144,6 +146,7 @@ fn soa_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) ->
 }
 
 /// Samples one coordinate pair with a given LOD.
+#[inline(always)]
 pub fn sample(p: &UnitPlan<'_>, s: f32, t: f32, lod: Lod) -> [f32; 4] {
     let (filter, l0, l1, frac) = select_levels(p, lod);
     if p.aos {

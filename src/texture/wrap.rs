@@ -10,26 +10,26 @@
 use super::Wrap;
 
 /// `x - floor(x)` clamped below 1 (`lp_build_fract_safe`).
-#[inline]
+#[inline(always)]
 pub fn fract_safe(x: f32) -> f32 {
     (x - x.floor()).min(f32::from_bits(0x3f7f_ffff))
 }
 
 /// `x - floor(x)` (`lp_build_fract`).
-#[inline]
+#[inline(always)]
 pub fn fract(x: f32) -> f32 {
     x - x.floor()
 }
 
 /// f32 → i32 as cvttps2dq/cvtps2dq would for in-range values (NaN and overflow give 0 or
 /// saturate; the callers wrap or clamp the result, so any value is safe).
-#[inline]
+#[inline(always)]
 fn to_i32(x: f32) -> i32 {
     x as i32
 }
 
 /// AoS NEAREST (`lp_build_sample_wrap_nearest_int`): the texel index.
-#[inline]
+#[inline(always)]
 pub fn aos_nearest(s: f32, size: usize, pot: bool, wrap: Wrap) -> usize {
     let len = size as i32;
     match wrap {
@@ -41,7 +41,7 @@ pub fn aos_nearest(s: f32, size: usize, pot: bool, wrap: Wrap) -> usize {
 
 /// AoS LINEAR (`lp_build_sample_wrap_linear_int`): `(i0, i1, w)` with an 8-bit weight:
 /// `fx = round_half_even(s·size·256) − 128`, `i0 = fx >> 8`, `w = fx & 255`.
-#[inline]
+#[inline(always)]
 pub fn aos_linear(s: f32, size: usize, pot: bool, wrap: Wrap) -> (usize, usize, i32) {
     let len = size as i32;
     match wrap {
@@ -78,7 +78,7 @@ pub fn aos_linear(s: f32, size: usize, pot: bool, wrap: Wrap) -> (usize, usize, 
 }
 
 /// `2·(x/2 − round(x/2))`, then `abs`, NaN → 0 (`lp_build_coord_mirror` with posOnly).
-#[inline]
+#[inline(always)]
 pub fn mirror(s: f32) -> f32 {
     let h = s * 0.5;
     let f = h - h.round_ties_even();
@@ -91,7 +91,7 @@ pub fn mirror(s: f32) -> f32 {
 }
 
 /// SoA NEAREST (`lp_build_sample_wrap_nearest`); `None` = border.
-#[inline]
+#[inline(always)]
 pub fn soa_nearest(s: f32, size: usize, pot: bool, wrap: Wrap) -> Option<usize> {
     let len = size as i32;
     let sz = size as f32;
@@ -112,7 +112,7 @@ pub fn soa_nearest(s: f32, size: usize, pot: bool, wrap: Wrap) -> Option<usize> 
 
 /// SoA LINEAR (`lp_build_sample_wrap_linear`): `(i0, i1, weight)` with float weight;
 /// `None` indices read the border colour.
-#[inline]
+#[inline(always)]
 pub fn soa_linear(
     s: f32,
     size: usize,
