@@ -80,7 +80,9 @@ fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult
         let avail = data.len().saturating_sub(ptr) / size;
         let n = count.min(avail);
         out.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
-        out.extend(data[ptr..ptr + n * size].chunks_exact(size).map(read));
+        // An offset at or past the end gives no indices (n == 0), not a slice panic.
+        let start = ptr.min(data.len());
+        out.extend(data[start..start + n * size].chunks_exact(size).map(read));
     } else {
         if ptr == 0 {
             return Ok(out);
