@@ -84,7 +84,9 @@ fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult
         let start = ptr.min(data.len());
         out.extend(data[start..start + n * size].chunks_exact(size).map(read));
     } else {
-        if ptr == 0 {
+        // Null, or an element-buffer offset given with no buffer bound (null + offset):
+        // never client memory.
+        if ptr < 4096 {
             return Ok(out);
         }
         out.try_reserve_exact(count)
