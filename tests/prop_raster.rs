@@ -263,11 +263,9 @@ fn mesh() -> impl Strategy<Value = Vec<[[f32; 3]; 3]>> {
 /// Draws `tris` with per-vertex colours `cols` (RGBA8) through client arrays.
 fn draw(tris: &[[[f32; 3]; 3]], cols: &[[u8; 4]]) {
     let v: Vec<f32> = tris.iter().flatten().flatten().copied().collect();
-    // SAFETY: the arrays hold 3 vertices per triangle and outlive the draw call.
-    unsafe {
-        glVertexPointer(3, GL_FLOAT, 0, v.as_ptr().cast());
-        glColorPointer(4, GL_UNSIGNED_BYTE, 0, cols.as_ptr().cast());
-    }
+    // The arrays hold 3 vertices per triangle and outlive the draw call below.
+    glVertexPointer(3, GL_FLOAT, 0, v.as_ptr().cast());
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, cols.as_ptr().cast());
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
     glDrawArrays(GL_TRIANGLES, 0, 3 * tris.len() as i32);
@@ -556,7 +554,8 @@ fn d_whole_pixel_translation_shifts_the_image() {
         proptest::collection::vec(tri(), 1..12),
         (-20i32..20, -20i32..20),
     );
-    let render = |tris: &[((f32, f32), (f32, f32), (f32, f32), [u8; 3])], dx: i32, dy: i32| {
+    type Tri = ((f32, f32), (f32, f32), (f32, f32), [u8; 3]);
+    let render = |tris: &[Tri], dx: i32, dy: i32| {
         glClearColor(0.0, 0.0, 0.0, 0.0);
         glClear(GL_COLOR_BUFFER_BIT);
         glMatrixMode(GL_PROJECTION);
@@ -706,12 +705,32 @@ fn g_non_finite_inputs_draw_nothing_unexpected() {
             if e != GL_NO_ERROR {
                 return Err(fail(format!("GL error {e:#x}")));
             }
-            for (i, (&n, &r)) in counts.iter().zip(&reference).enumerate() {
-                if n > 1 {
-                    return Err(fail(format!("pixel {i} covered {n} times")));
+            let finite = v.is_finite();
+            let full = || coverage_counts(&c, &x, &tris);
+            let expect: Option<Vec<u8>> = match place {
+                // A non-finite vertex drops its triangle: exactly the rest is drawn.
+                0 if !finite => Some(reference.clone()),
+                // A non-finite matrix entry reaches a whole row of P*MV, so a coordinate
+                // of every vertex (0 * NaN is NaN): nothing is drawn.
+                1 | 2 if !finite => Some(vec![0; counts.len()]),
+                // The depth range does not change coverage (depth test off).
+                3 => Some(full()),
+                _ => None,
+            };
+            if let Some(expect) = expect {
+                if let Some(i) = (0..counts.len()).find(|&i| counts[i] != expect[i]) {
+                    return Err(fail(format!(
+                        "pixel {i}: {} instead of {} (value {v})",
+                        counts[i], expect[i]
+                    )));
                 }
-                if place == 0 && n > r && !covered_by(&x, &tris[k], i) {
-                    return Err(fail(format!("pixel {i} drawn by the poisoned triangle")));
+            }
+            for (i, (&n, &r)) in counts.iter().zip(&reference).enumerate() {
+                // A huge but finite vertex legitimately moves its triangle over the others:
+                // one extra layer at most. Everything else stays a single layer.
+                let limit = if place == 0 { r + 1 } else { 1 };
+                if n > limit {
+                    return Err(fail(format!("pixel {i} covered {n} times (value {v})")));
                 }
             }
             Ok(())
@@ -745,19 +764,4 @@ fn g_non_finite_inputs_draw_nothing_unexpected() {
         }
     }
     assert_eq!(panics(), p0);
-}
-
-/// Whether pixel `i` is near (within 1 px of) the ray-cast image of `t`.
-fn covered_by(x: &Xform, t: &[[f32; 3]; 3], i: usize) -> bool {
-    let m = x.m();
-    let (px, py) = ((i % W as usize) as f64 + 0.5, (i / W as usize) as f64 + 0.5);
-    [
-        (0.0, 0.0),
-        (-1.0, -1.0),
-        (1.0, -1.0),
-        (-1.0, 1.0),
-        (1.0, 1.0),
-    ]
-    .iter()
-    .any(|(dx, dy)| hits(&m, t, px + dx, py + dy))
 }
