@@ -534,17 +534,16 @@ impl Fuzzer {
             }
         };
         let stride = r.pick(&[0, 4, 12, 16, 32, 64]);
-        // SAFETY: client pointers stay in `vmem`, which covers 128 vertices at stride
+        // Client pointers stay in `vmem`, which covers 128 vertices at stride
         // <= 64 (or the default stride of at most 4 doubles) from any offset used here.
-        unsafe {
-            glVertexPointer(r.pick(&[2, 3, 4]), r.pick(TYPES), stride, ptr(r));
-            if r.chance(0.5) {
-                glColorPointer(r.pick(&[3, 4]), r.pick(TYPES), stride, ptr(r));
-            }
-            if r.chance(0.2) {
-                glNormalPointer(r.pick(&[GL_FLOAT, GL_BYTE]), stride, ptr(r));
-            }
+        glVertexPointer(r.pick(&[2, 3, 4]), r.pick(TYPES), stride, ptr(r));
+        if r.chance(0.5) {
+            glColorPointer(r.pick(&[3, 4]), r.pick(TYPES), stride, ptr(r));
         }
+        if r.chance(0.2) {
+            glNormalPointer(r.pick(&[GL_FLOAT, GL_BYTE]), stride, ptr(r));
+        }
+
         if r.chance(0.8) {
             glEnableClientState(GL_VERTEX_ARRAY);
         }
@@ -564,29 +563,28 @@ impl Fuzzer {
         let r = &mut self.rng;
         let idx: Vec<u32> = (0..count).map(|_| r.below(128) as u32).collect();
         let idx16: Vec<u16> = idx.iter().map(|&i| i as u16).collect();
-        // SAFETY: client indices are < 128 (vertices inside `vmem`); element-buffer offsets
+        // Client indices are < 128 (vertices inside `vmem`); element-buffer offsets
         // are bounds-checked by the library.
-        unsafe {
-            match r.below(4) {
-                0 | 1 => glDrawArrays(mode, first, count),
-                2 if eb != 0 => glDrawElements(
-                    mode,
-                    count,
-                    r.pick(&[GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT]),
-                    r.below(64) as *const _,
-                ),
-                2 => glDrawElements(mode, count, GL_UNSIGNED_INT, idx.as_ptr().cast()),
-                _ if eb == 0 => glDrawRangeElements(
-                    mode,
-                    0,
-                    127,
-                    count,
-                    GL_UNSIGNED_SHORT,
-                    idx16.as_ptr().cast(),
-                ),
-                _ => glDrawArrays(mode, first, count),
-            }
+        match r.below(4) {
+            0 | 1 => glDrawArrays(mode, first, count),
+            2 if eb != 0 => glDrawElements(
+                mode,
+                count,
+                r.pick(&[GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT]),
+                r.below(64) as *const _,
+            ),
+            2 => glDrawElements(mode, count, GL_UNSIGNED_INT, idx.as_ptr().cast()),
+            _ if eb == 0 => glDrawRangeElements(
+                mode,
+                0,
+                127,
+                count,
+                GL_UNSIGNED_SHORT,
+                idx16.as_ptr().cast(),
+            ),
+            _ => glDrawArrays(mode, first, count),
         }
+
         self.check("draw arrays", p0, false);
     }
 

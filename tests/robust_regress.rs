@@ -14,16 +14,14 @@ use softgl::ffi::state::*;
 #[test]
 fn null_plus_offset_client_arrays_read_nothing() {
     let c = Ctx::new(16, 16);
-    // SAFETY: the pointers are null plus offsets; the library must not dereference them.
-    unsafe {
-        glInterleavedArrays(GL_T4F_C4F_N3F_V4F, 0, std::ptr::null());
-        glDrawArrays(GL_TRIANGLES, 0, 30);
-        glVertexPointer(3, GL_FLOAT, 0, 16 as *const _);
-        glEnableClientState(GL_VERTEX_ARRAY);
-        glDrawArrays(GL_TRIANGLES, 0, 30);
-        // Indices as a VBO offset with no element buffer bound.
-        glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, 12 as *const _);
-    }
+    // The pointers are null plus offsets; the library must not dereference them.
+    glInterleavedArrays(GL_T4F_C4F_N3F_V4F, 0, std::ptr::null());
+    glDrawArrays(GL_TRIANGLES, 0, 30);
+    glVertexPointer(3, GL_FLOAT, 0, 16 as *const _);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glDrawArrays(GL_TRIANGLES, 0, 30);
+    // Indices as a VBO offset with no element buffer bound.
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, 12 as *const _);
     assert_eq!(take_error(), GL_NO_ERROR);
     glFinish();
     assert!(c.buf.iter().all(|&b| b == 0), "nothing is drawn");
