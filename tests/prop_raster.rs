@@ -523,18 +523,26 @@ fn c_degenerate_triangles_draw_nothing() {
                         0
                     };
                     let tri = [p(0), p(k), p(2 * k + 1)];
+                    let f0 = softgl::ffi::current_stats().unwrap().fragments;
                     draw(&[tri], &[[255; 4]; 3]);
-                    return check_blank(&c, &tri);
+                    return check_blank(&c, &tri, f0);
                 }
             };
             x.load();
+            let f0 = softgl::ffi::current_stats().unwrap().fragments;
             draw(&[tri], &[[255; 4]; 3]);
-            check_blank(&c, &tri)
+            check_blank(&c, &tri, f0)
         })
         .unwrap();
 }
 
-fn check_blank(c: &Ctx, tri: &[[f32; 3]; 3]) -> Result<(), TestCaseError> {
+fn check_blank(c: &Ctx, tri: &[[f32; 3]; 3], frags_before: u64) -> Result<(), TestCaseError> {
+    // Fragments, not just pixels: a degenerate triangle's colour planes are NaN, so a
+    // wrongly drawn one could be black on black.
+    let frags = softgl::ffi::current_stats().unwrap().fragments - frags_before;
+    if frags != 0 {
+        return Err(fail(format!("degenerate {tri:?} made {frags} fragments")));
+    }
     match c.read().iter().position(|&v| v != 0) {
         Some(i) => Err(fail(format!("degenerate {tri:?} drew pixel {}", i / 4))),
         None => Ok(()),
