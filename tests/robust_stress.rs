@@ -180,7 +180,7 @@ fn depth_fighting_planes_resolve_in_order() {
             for (zz, col) in [(z * 1.001, [255u8, 0, 0, 255]), (z, [0, 255, 0, 255])] {
                 let v3 = quad(zz, 2.0);
                 glVertexPointer(3, GL_FLOAT, 0, v3.as_ptr().cast());
-                let cols = vec![col; 6];
+                let cols = [col; 6];
                 glColorPointer(4, GL_UNSIGNED_BYTE, 0, cols.as_ptr().cast());
                 glEnableClientState(GL_VERTEX_ARRAY);
                 glEnableClientState(GL_COLOR_ARRAY);
