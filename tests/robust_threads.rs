@@ -28,7 +28,12 @@ fn scene(k: u64) -> Vec<u8> {
         glRotatef(r.range(0.0, 360.0) as f32, 0.3, 1.0, 0.2);
         glBegin(GL_TRIANGLES);
         for _ in 0..3 {
-            glColor4f(r.unit() as f32, r.unit() as f32, r.unit() as f32, r.unit() as f32);
+            glColor4f(
+                r.unit() as f32,
+                r.unit() as f32,
+                r.unit() as f32,
+                r.unit() as f32,
+            );
             glVertex3f(
                 r.range(-3.0, 3.0) as f32,
                 r.range(-3.0, 3.0) as f32,
@@ -52,8 +57,14 @@ fn threads_render_the_same_images_as_one_at_a_time() {
             .collect();
         for (k, h) in handles.into_iter().enumerate() {
             let img = h.join().expect("render thread panicked");
-            assert!(img == sequential[k], "round {round}: scene {k} differs when threaded");
+            assert!(
+                img == sequential[k],
+                "round {round}: scene {k} differs when threaded"
+            );
         }
     }
-    assert!(sequential.windows(2).all(|w| w[0] != w[1]), "scenes should differ");
+    assert!(
+        sequential.windows(2).all(|w| w[0] != w[1]),
+        "scenes should differ"
+    );
 }
