@@ -80,9 +80,13 @@ fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult
         let avail = data.len().saturating_sub(ptr) / size;
         let n = count.min(avail);
         out.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
-        out.extend(data[ptr..ptr + n * size].chunks_exact(size).map(read));
+        // An offset at or past the end gives no indices (n == 0), not a slice panic.
+        let start = ptr.min(data.len());
+        out.extend(data[start..start + n * size].chunks_exact(size).map(read));
     } else {
-        if ptr == 0 {
+        // Null, or an element-buffer offset given with no buffer bound (null + offset):
+        // never client memory.
+        if ptr < 4096 {
             return Ok(out);
         }
         out.try_reserve_exact(count)

@@ -4,6 +4,7 @@
 use super::draw::{draw_arrays, draw_elements};
 use super::types::*;
 use super::{non_negative, with_ctx};
+use crate::context::error::GlError;
 
 /// glMultiDrawArrays.
 ///
@@ -18,8 +19,15 @@ pub unsafe extern "C" fn glMultiDrawArrays(
 ) {
     with_ctx(|c| {
         let n = non_negative(drawcount)?;
+        // Validate everything before drawing anything, so an error leaves no partial
+        // draw: a zero-count draw checks mode, glBegin and mapped buffers.
+        draw_arrays(c, mode, 0, 0)?;
         if first.is_null() || count.is_null() {
             return Ok(());
+        }
+        // SAFETY: the caller promises `drawcount` entries in each array.
+        if (0..n).any(|i| unsafe { *count.add(i) < 0 || *first.add(i) < 0 }) {
+            return Err(GlError::InvalidValue);
         }
         for i in 0..n {
             // SAFETY: the caller promises `drawcount` entries in each array.
@@ -44,8 +52,14 @@ pub unsafe extern "C" fn glMultiDrawElements(
 ) {
     with_ctx(|c| {
         let n = non_negative(drawcount)?;
+        // As in glMultiDrawArrays: validate mode and type before any draw.
+        draw_elements(c, mode, 0, type_, std::ptr::null())?;
         if count.is_null() || indices.is_null() {
             return Ok(());
+        }
+        // SAFETY: the caller promises `drawcount` entries.
+        if (0..n).any(|i| unsafe { *count.add(i) } < 0) {
+            return Err(GlError::InvalidValue);
         }
         for i in 0..n {
             // SAFETY: the caller promises `drawcount` entries in each array.

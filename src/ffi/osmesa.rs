@@ -71,9 +71,13 @@ pub const OSMESA_PATCH_VERSION: c_int = 0;
 /// The largest buffer side OSMesa accepts (llvmpipe's 16384).
 const MAX_SIZE: GLsizei = 16384;
 
+/// Set in `owner` by OSMesaDestroyContext: the thread that has the context current frees
+/// it when it lets go (or the destroyer does, when no thread had it).
+const ORPHAN: u64 = 1 << 63;
+
 /// An OSMesa context (opaque to C).
 pub struct osmesa_context {
-    /// The thread id (see [`thread_id`]) that has it current, or 0.
+    /// The thread id (see [`thread_id`]) that has it current, or 0; plus [`ORPHAN`].
     owner: AtomicU64,
     /// The GL context.
     ctx: UnsafeCell<Context>,
@@ -244,16 +248,18 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
         };
         live.swap_remove(pos);
         drop(live);
-        // SAFETY: `ctx` was registered in LIVE, so it is a valid, not yet freed context.
+        // SAFETY: `ctx` was registered in LIVE, so it is a valid, not yet freed context (only
+        // this call, which removed it, or its owner after ORPHAN is set, frees it).
         let c = unsafe { &*ctx };
-        let me = thread_id();
         if CURRENT_HANDLE.with(|h| h.get()) == ctx {
             flush_current();
             CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
             super::set_current(std::ptr::null_mut());
             c.owner.store(0, Ordering::Release);
         }
-        if c.owner.load(Ordering::Acquire) == 0 || c.owner.load(Ordering::Acquire) == me {
+        // Claims (made under the LIVE lock) are over; if another thread has it current,
+        // that thread frees it when it lets go. Do not touch `c` after this otherwise.
+        if c.owner.fetch_or(ORPHAN, Ordering::AcqRel) == 0 {
             if std::env::var_os("SOFTGL_STATS").is_some_and(|v| v != "0") {
                 // SAFETY: no thread has this context current (checked above).
                 eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
@@ -296,12 +302,24 @@ fn flush_current() {
     }
 }
 
+/// Gives up this thread's claim on `h` (current here), freeing it when
+/// OSMesaDestroyContext was called for it meanwhile from another thread.
+fn let_go(h: OSMesaContext) {
+    // SAFETY: a handle current on this thread is not freed by anyone else (destroy on
+    // another thread only sets ORPHAN).
+    let prev = unsafe { &*h }.owner.swap(0, Ordering::AcqRel);
+    if prev & ORPHAN != 0 {
+        // SAFETY: unregistered (ORPHAN is set after removal from LIVE) and no longer
+        // current anywhere: this thread holds the last reference.
+        drop(unsafe { Box::from_raw(h) });
+    }
+}
+
 fn release_current() {
     flush_current();
     let old = CURRENT_HANDLE.with(|h| h.get());
     if !old.is_null() {
-        // SAFETY: a current handle is live (destroy unbinds it before freeing).
-        unsafe { &*old }.owner.store(0, Ordering::Release);
+        let_go(old);
     }
     CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
     super::set_current(std::ptr::null_mut());
@@ -319,16 +337,20 @@ fn make_current(
         release_current();
         return GL_TRUE as GLboolean;
     }
-    if !is_live(ctx)
-        || buffer.is_null()
-        || width < 1
-        || height < 1
-        || width > MAX_SIZE
-        || height > MAX_SIZE
-    {
+    if buffer.is_null() || width < 1 || height < 1 || width > MAX_SIZE || height > MAX_SIZE {
         return FALSE;
     }
-    // SAFETY: `ctx` is registered in LIVE, hence valid.
+    let me = thread_id();
+    let prev = CURRENT_HANDLE.with(|h| h.get());
+    // Check the handle and claim it under the LIVE lock, so that a concurrent
+    // OSMesaDestroyContext either sees our claim or makes us see a stale handle.
+    let Ok(live) = LIVE.lock() else {
+        return FALSE;
+    };
+    if !live.contains(&(ctx as usize)) {
+        return FALSE;
+    }
+    // SAFETY: `ctx` is registered in LIVE (and cannot be freed while we hold the lock).
     let c = unsafe { &*ctx };
     let type_ok = match c.format {
         OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB | OSMESA_RGB => type_ == GL_UNSIGNED_BYTE,
@@ -338,20 +360,17 @@ fn make_current(
     if !type_ok {
         return FALSE;
     }
-    let me = thread_id();
-    let prev = CURRENT_HANDLE.with(|h| h.get());
-    flush_current();
-    if prev != ctx {
-        if c.owner
+    if prev != ctx
+        && c.owner
             .compare_exchange(0, me, Ordering::AcqRel, Ordering::Acquire)
             .is_err()
-        {
-            return FALSE;
-        }
-        if !prev.is_null() {
-            // SAFETY: a current handle is live.
-            unsafe { &*prev }.owner.store(0, Ordering::Release);
-        }
+    {
+        return FALSE;
+    }
+    drop(live);
+    flush_current();
+    if prev != ctx && !prev.is_null() {
+        let_go(prev);
     }
     CURRENT_HANDLE.with(|h| h.set(ctx));
     let gl = c.ctx.get();

@@ -100,6 +100,9 @@ unsafe fn read_component(p: *const u8, ty: DataType, normalized: bool) -> f32 {
     }
 }
 
+/// Client "pointers" below this address are null plus an offset, never real memory.
+const NULL_PAGE: usize = 4096;
+
 /// Reads element `index` of `arr` into a vec4 whose missing components come from `fill`.
 /// Returns `None` when the array has no data (null pointer, deleted buffer, past the end).
 ///
@@ -124,7 +127,9 @@ pub unsafe fn fetch_attr(
         // SAFETY: start + esize <= data.len() was checked above.
         unsafe { data.as_ptr().add(start) }
     } else {
-        if arr.ptr == 0 {
+        // A null pointer plus a small offset (glInterleavedArrays(fmt, 0, NULL), or a VBO
+        // offset given with no buffer bound) is never client memory: treat it as null.
+        if arr.ptr < NULL_PAGE {
             return None;
         }
         arr.ptr.checked_add(off)? as *const u8

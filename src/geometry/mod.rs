@@ -113,14 +113,17 @@ pub fn cpu_has_fma() -> bool {
     crate::cpu::isa().fused()
 }
 
-/// The clip mask of a clip-space position (strict tests: on the plane is inside).
+/// The clip mask of a clip-space position (strict tests: on the plane is inside). The
+/// tests are written negated so that a NaN coordinate counts as outside (the clipper then
+/// drops the primitive); for every non-NaN input they equal the plain `x > w` tests.
 #[inline]
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // deliberate: NaN must count as outside
 pub fn clip_mask(c: [f32; 4]) -> u8 {
     let [x, y, z, w] = c;
-    (x > w) as u8
-        | ((x + w < 0.0) as u8) << 1
-        | ((y > w) as u8) << 2
-        | ((y + w < 0.0) as u8) << 3
-        | ((z + w < 0.0) as u8) << 4
-        | ((z > w) as u8) << 5
+    (!(x <= w)) as u8
+        | ((!(x + w >= 0.0)) as u8) << 1
+        | ((!(y <= w)) as u8) << 2
+        | ((!(y + w >= 0.0)) as u8) << 3
+        | ((!(z + w >= 0.0)) as u8) << 4
+        | ((!(z <= w)) as u8) << 5
 }

@@ -69,7 +69,14 @@ pub fn raster_line(
     } else {
         ((lo - 0.5).floor() as i64 + 1, (hi - 0.5).floor() as i64)
     };
-    for p in first..=last {
+    // Only positions inside the region can produce pixels: a line far outside the
+    // framebuffer (a viewport offset of 2^30, say) must not walk a billion columns.
+    let (r_lo, r_hi) = if x_major {
+        (region[0], region[2] - 1)
+    } else {
+        (region[1], region[3] - 1)
+    };
+    for p in first.max(r_lo)..=last.min(r_hi) {
         let c = p as f32 + 0.5;
         let f = (c - a) / (b - a);
         let (px, py) = if x_major {
