@@ -245,3 +245,58 @@ fn counters_show_skipped_work() {
     );
     assert_eq!(s4.fragments, s3.fragments);
 }
+
+#[test]
+fn counters_show_skipped_fragment_work() {
+    use softgl::ffi::fragment::*;
+    let _c = Ctx::new(32, 32);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    let s0 = softgl::ffi::current_stats().unwrap();
+    tri(0.0);
+    let s1 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(
+        s1.stencil_reads, s0.stencil_reads,
+        "stencil test off: no stencil read"
+    );
+    assert!(
+        s1.color_reads > s0.color_reads,
+        "blending reads the destination"
+    );
+
+    glDisable(GL_BLEND);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    tri(0.0);
+    let s2 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(
+        s2.stencil_reads - s1.stencil_reads,
+        s2.fragments - s1.fragments,
+        "stencil test on: one read per fragment"
+    );
+    assert_eq!(
+        s2.color_reads, s1.color_reads,
+        "no blending: no colour read"
+    );
+    glDisable(GL_STENCIL_TEST);
+
+    // An all-false colour mask with no depth or stencil writes: nothing is rasterized.
+    glColorMask(0, 0, 0, 0);
+    tri(0.0);
+    let s3 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(
+        s3.fragments, s2.fragments,
+        "nothing can change: no fragments"
+    );
+    assert_eq!(s3.color_writes, s2.color_writes);
+    // With the depth test writing depth, fragments run but no colour is written.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    tri(0.0);
+    let s4 = softgl::ffi::current_stats().unwrap();
+    assert!(s4.fragments > s3.fragments);
+    assert_eq!(
+        s4.color_writes, s3.color_writes,
+        "all-false colour mask: no colour written"
+    );
+}
