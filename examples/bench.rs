@@ -9,9 +9,17 @@
 //! peak memory (`wait4` rusage) of one-frame runs. It writes `target/bench/results.md`,
 //! `results.csv`, `process.csv`, `clear_memset.csv` and `time_vs_error.png`. See
 //! `bench/README.md`.
+//!
+//! With `--filter-study` it runs the filter study instead (`bench/runner/filter_study.rs`):
+//! the ground plane of `bench/scenes/filter_study.c` with every minification filter and
+//! anisotropy level, timed the same way and judged against the analytic ground truth.
 
 #[path = "../bench/runner/chart.rs"]
 mod chart;
+#[path = "../bench/runner/filter_study.rs"]
+mod filter_study;
+#[path = "../bench/runner/ground_truth.rs"]
+mod ground_truth;
 
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -56,6 +64,7 @@ impl Renderer {
 }
 
 struct Config {
+    filter_study: bool,
     reps: usize,
     frames: usize,
     sizes: Vec<u32>,
@@ -75,9 +84,14 @@ impl Config {
         let mut timeout = env("BENCH_TIMEOUT").unwrap_or_else(|| "120".into());
         let mut wall_reps = env("BENCH_WALL_REPS");
         let mut wall_size = env("BENCH_WALL_SIZE").unwrap_or_else(|| "512".into());
+        let mut filter_study = false;
         let mut args = std::env::args().skip(1);
         while let Some(a) = args.next() {
             let slot = match a.as_str() {
+                "--filter-study" => {
+                    filter_study = true;
+                    continue;
+                }
                 "--reps" => &mut reps,
                 "--frames" => &mut frames,
                 "--sizes" => &mut sizes,
@@ -93,7 +107,8 @@ impl Config {
                 }
                 "-h" | "--help" => {
                     return Err("usage: bench [--reps N] [--frames N] [--sizes 512,1024] \
-                         [--scenes a,b] [--timeout S] [--wall-reps N] [--wall-size N]\n\
+                         [--scenes a,b] [--timeout S] [--wall-reps N] [--wall-size N] \
+                         [--filter-study]\n\
                          (or the env vars BENCH_REPS, BENCH_FRAMES, BENCH_SIZES, \
                          BENCH_SCENES, BENCH_TIMEOUT, BENCH_WALL_REPS, BENCH_WALL_SIZE)"
                         .into())
@@ -109,6 +124,7 @@ impl Config {
         };
         let reps = num("reps", &reps)?.max(1);
         Ok(Config {
+            filter_study,
             reps,
             frames: num("frames", &frames)?.max(1),
             sizes: sizes
@@ -158,6 +174,8 @@ fn find_scenes(filter: &Option<Vec<String>>) -> Result<Vec<Scene>, String> {
             }
             Some(p.file_stem()?.to_string_lossy().into_owned())
         })
+        // The filter study's scene is run only by --filter-study.
+        .filter(|n| n != filter_study::SCENE)
         .collect();
     names.sort_by_key(|n| {
         KNOWN_SCENES
@@ -294,7 +312,8 @@ struct RunOutcome {
     max_rss_kb: i64,
 }
 
-/// Runs a scene binary; `Err` carries a short reason (crash, exit code, timeout).
+/// Runs a scene binary with extra environment variables `env`; `Err` carries a short
+/// reason (crash, exit code, timeout).
 fn run_scene(
     bin: &Path,
     renderer: Renderer,
@@ -302,6 +321,7 @@ fn run_scene(
     size: u32,
     frames: usize,
     timeout: Duration,
+    env: &[(&str, &str)],
 ) -> Result<RunOutcome, String> {
     let log_dir = out_dir().join("logs");
     fs::create_dir_all(&log_dir).map_err(|e| format!("mkdir: {e}"))?;
@@ -320,7 +340,8 @@ fn run_scene(
         .stdin(Stdio::null())
         .stdout(fs::File::create(&stdout_path).map_err(|e| format!("log: {e}"))?)
         .stderr(fs::File::create(&stderr_path).map_err(|e| format!("log: {e}"))?)
-        .env_remove("LP_NUM_THREADS");
+        .env_remove("LP_NUM_THREADS")
+        .envs(env.iter().copied());
     match renderer {
         Renderer::Softgl => {}
         Renderer::Lp1 => {
@@ -617,6 +638,9 @@ fn real_main() -> Result<(), String> {
     }
     let out = out_dir();
     fs::create_dir_all(out.join("runs")).map_err(|e| format!("mkdir: {e}"))?;
+    if cfg.filter_study {
+        return filter_study::run(&cfg);
+    }
     let mut scenes = find_scenes(&cfg.scenes)?;
     if scenes.is_empty() {
         return Err("no scenes selected".into());
@@ -683,7 +707,7 @@ fn real_main() -> Result<(), String> {
                     cell.size,
                     r.label()
                 ));
-                match run_scene(bin, r, &output, cell.size, cfg.frames, cfg.timeout) {
+                match run_scene(bin, r, &output, cell.size, cfg.frames, cfg.timeout, &[]) {
                     Ok(o) => {
                         if let Some(m) = median(&o.frame_ms) {
                             cell.run_medians[ri].push(m);
@@ -732,7 +756,7 @@ fn real_main() -> Result<(), String> {
                 let output =
                     out.join("runs")
                         .join(format!("{}-oneframe.{}.out", scene.name, r.label()));
-                match run_scene(bin, r, &output, cfg.wall_size, 0, cfg.timeout) {
+                match run_scene(bin, r, &output, cfg.wall_size, 0, cfg.timeout, &[]) {
                     Ok(o) => {
                         slot.wall_ms.push(o.wall.as_secs_f64() * 1e3);
                         slot.rss_mib.push(o.max_rss_kb as f64 / 1024.0);

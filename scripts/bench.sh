@@ -8,6 +8,7 @@
 # Options are passed to the runner: --reps N (default 9), --frames N (10),
 # --sizes 512,1024, --scenes a,c,big_triangles, --timeout S (120), --wall-reps N,
 # --wall-size N (512); or the env vars BENCH_REPS, BENCH_FRAMES, ... of the same names.
+# --filter-study runs the filter study instead (bench/filter_study.md, docs/filter_study.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh

@@ -6,18 +6,42 @@
 //! (100 − % identical pixels against llvmpipe with one thread) on a log scale
 //! from 0.0001 % to 100 %, with 0 drawn on its own line below it. Each point is one (scene, size, renderer); its label is the
 //! scene's short id and the size, placed greedily where it overlaps no other
-//! label.
+//! label. [`draw_with`] takes another y axis (the filter study plots the mean absolute
+//! error against a ground truth).
 
 use image::{Rgb, RgbImage};
 
-/// The smallest error the y axis shows apart from 0, in percent.
-const Y_MIN: f64 = 1e-4;
+/// A logarithmic y axis: its label, its range, and whether 0 gets its own line below it.
+pub struct YAxis {
+    /// Text along the axis.
+    pub label: String,
+    /// Smallest value shown apart from 0: a power of ten.
+    pub min: f64,
+    /// Largest value shown: a power of ten.
+    pub max: f64,
+    /// Whether values ≤ 0 are drawn on their own line at the bottom.
+    pub zero_line: bool,
+}
+
+/// The benchmark's y axis: % of pixels not identical to llvmpipe with one thread, from
+/// 0.0001 % (about one pixel of a 1024x1024 frame) to 100 %, with 0 at the bottom.
+pub fn percent_off_axis() -> YAxis {
+    YAxis {
+        label: "error: % of pixels not identical to llvmpipe, 1 thread (log scale; 0 at the \
+                bottom)"
+            .into(),
+        min: 1e-4,
+        max: 100.0,
+        zero_line: true,
+    }
+}
 
 /// One point of the chart.
 pub struct Point {
     /// Median frame time in milliseconds (x, log scale); must be > 0.
     pub ms: f64,
-    /// Error in percent of pixels not identical to the reference (y).
+    /// The error (y), in the unit of the chart's [`YAxis`]: percent of pixels not
+    /// identical to the reference for [`draw`].
     pub error_pct: f64,
     /// Index into the series (renderer) list: decides colour and marker.
     pub series: usize,
@@ -199,8 +223,20 @@ impl Canvas {
     }
 }
 
-/// Renders the chart and returns it as an image of `width` x `height`.
+/// Renders the benchmark chart (y: [`percent_off_axis`]) as a 1500x950 image.
 pub fn draw(title: &str, series: &[Series], points: &[Point], legend: &[String]) -> RgbImage {
+    draw_with(title, series, points, legend, &percent_off_axis(), true)
+}
+
+/// Renders a chart with the y axis `y`; `size_legend` adds the filled/hollow size legend.
+pub fn draw_with(
+    title: &str,
+    series: &[Series],
+    points: &[Point],
+    legend: &[String],
+    y: &YAxis,
+    size_legend: bool,
+) -> RgbImage {
     let (width, height) = (1500i32, 950i32);
     let mut cv = Canvas {
         img: RgbImage::from_pixel(width as u32, height as u32, Rgb([255, 255, 255])),
@@ -223,14 +259,14 @@ pub fn draw(title: &str, series: &[Series], points: &[Point], legend: &[String])
     }
     let (lo, hi) = (lo.floor(), hi.ceil().max(lo.floor() + 1.0));
     let xs = |ms: f64| left + ((ms.log10() - lo) / (hi - lo) * (right - left) as f64) as i32;
-    // y: 0 on its own line at the bottom, then log10 from 1e-4 % (about one pixel of a
-    // 1024x1024 frame) to 100 %.
-    let zero_gap = 36;
+    // y: optionally 0 on its own line at the bottom, then log10 from y.min to y.max.
+    let zero_gap = if y.zero_line { 36 } else { 0 };
+    let (ylo, yhi) = (y.min.log10().round() as i32, y.max.log10().round() as i32);
     let ys = |e: f64| {
         if e <= 0.0 || !e.is_finite() {
             return bottom;
         }
-        let t = (e.clamp(Y_MIN, 100.0).log10() - Y_MIN.log10()) / (2.0 - Y_MIN.log10());
+        let t = (e.clamp(y.min, y.max).log10() - ylo as f64) / (yhi - ylo).max(1) as f64;
         bottom - zero_gap - (t * (bottom - zero_gap - top) as f64) as i32
     };
 
@@ -250,16 +286,24 @@ pub fn draw(title: &str, series: &[Series], points: &[Point], legend: &[String])
             }
         }
     }
-    for e in ["0", "0.0001", "0.001", "0.01", "0.1", "1", "10", "100"] {
-        let y = ys(e.parse().unwrap_or(0.0));
-        cv.hline(left, right, y, grid_major);
-        let w = cv.font.width(e);
-        cv.text(left - 8 - w, y - fh / 2 - 2, e, black, 1);
+    let decades = (ylo..=yhi).map(|d| {
+        if d < 0 {
+            format!("0.{}1", "0".repeat((-d - 1) as usize))
+        } else {
+            format!("1{}", "0".repeat(d as usize))
+        }
+    });
+    let zero = y.zero_line.then(|| "0".to_owned());
+    for e in zero.into_iter().chain(decades) {
+        let yy = ys(e.parse().unwrap_or(0.0));
+        cv.hline(left, right, yy, grid_major);
+        let w = cv.font.width(&e);
+        cv.text(left - 8 - w, yy - fh / 2 - 2, &e, black, 1);
     }
-    for decade in -4..2 {
+    for decade in ylo..yhi {
         for m in 2..10 {
-            let y = ys(10f64.powi(decade) * m as f64);
-            cv.hline(left, right, y, grid);
+            let yy = ys(10f64.powi(decade) * m as f64);
+            cv.hline(left, right, yy, grid);
         }
     }
     cv.hline(left, right, bottom, black);
@@ -270,9 +314,8 @@ pub fn draw(title: &str, series: &[Series], points: &[Point], legend: &[String])
     let xl = "median frame time, ms (log scale)";
     let w = cv.font.width(xl);
     cv.text((left + right) / 2 - w / 2, bottom + 30, xl, black, 1);
-    let yl = "error: % of pixels not identical to llvmpipe, 1 thread (log scale; 0 at the bottom)";
-    let w = cv.font.width(yl);
-    cv.text_vertical(18, (top + bottom) / 2 + w / 2, yl, black);
+    let w = cv.font.width(&y.label);
+    cv.text_vertical(18, (top + bottom) / 2 + w / 2, &y.label, black);
 
     // Points first, then labels placed greedily so they do not overlap.
     let mut taken: Vec<(i32, i32, i32, i32)> = Vec::new();
@@ -326,14 +369,16 @@ pub fn draw(title: &str, series: &[Series], points: &[Point], legend: &[String])
         ly += fh + 2;
     }
     ly += 8;
-    cv.marker(lx + 6, ly + fh / 2, 0, false, [90, 90, 90]);
-    cv.text(lx + 18, ly, "filled: smaller size", black, 1);
-    ly += fh + 2;
-    cv.marker(lx + 6, ly + fh / 2, 0, true, [90, 90, 90]);
-    cv.text(lx + 18, ly, "hollow: larger size", black, 1);
-    ly += fh + 12;
-    cv.text(lx, ly, "scenes", black, 1);
-    ly += fh + 4;
+    if size_legend {
+        cv.marker(lx + 6, ly + fh / 2, 0, false, [90, 90, 90]);
+        cv.text(lx + 18, ly, "filled: smaller size", black, 1);
+        ly += fh + 2;
+        cv.marker(lx + 6, ly + fh / 2, 0, true, [90, 90, 90]);
+        cv.text(lx + 18, ly, "hollow: larger size", black, 1);
+        ly += fh + 12;
+        cv.text(lx, ly, "scenes", black, 1);
+        ly += fh + 4;
+    }
     for line in legend {
         cv.text(lx, ly, line, black, 1);
         ly += fh;
