@@ -37,7 +37,7 @@ const SAMPLES: usize = 16;
 /// 0.05 of an 8-bit step (0.02 % of full scale) is an order of magnitude below anything
 /// visible and above the truth's own sampling noise: with 256 jittered samples a checker
 /// edge pixel's truth has a standard error of up to 255·0.5/16 ≈ 8 levels, which averages
-/// over the ~30 000 judged pixels (of which a few thousand hold edges) to a mean shift of
+/// over the ~38 000 judged pixels (of which a few thousand hold edges) to a mean shift of
 /// well under 0.05. A difference below this margin is a tie, not a win for llvmpipe.
 const MAE_MARGIN: f64 = 0.05;
 
