@@ -115,6 +115,10 @@ const SCENES: &[&str] = &[
     "tex_lod_params",
     "tex_state",
     "tex_aniso",
+    "stress_huge_coords",
+    "stress_thin_fans",
+    "stress_depth_fight",
+    "stress_degenerate",
 ];
 
 macro_rules! scene_tests {
@@ -178,6 +182,10 @@ scene_tests!(
     tex_lod_params,
     tex_state,
     tex_aniso,
+    stress_huge_coords,
+    stress_thin_fans,
+    stress_depth_fight,
+    stress_degenerate,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
