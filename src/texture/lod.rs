@@ -59,7 +59,8 @@ impl Lod {
 /// sampler state do.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LodParams {
-    /// Texture + unit bias, clamped to ±16 and quantised to 1/256.
+    /// Texture bias plus unit bias, each clamped to ±16 and quantised to 1/256 on its
+    /// own (the sum is neither clamped nor re-quantised).
     pub bias: f32,
     /// gallium min_lod (`max(GL min_lod, 0)`, swapped with max_lod if greater).
     pub min_lod: f32,
@@ -86,8 +87,14 @@ pub fn quantize_bias(b: f32) -> f32 {
 impl LodParams {
     /// From the texture's parameters and the unit's bias. `one_d` is unused by the
     /// parameters themselves but kept for symmetry with the sampler key.
+    ///
+    /// Mesa quantises each bias when it is set (`glTexParameter` stores
+    /// `util_quantize_lod_bias(b)` in the texture's sampler state, `glTexEnv` of
+    /// GL_TEXTURE_FILTER_CONTROL in `texUnit->LodBiasQuantized`); `st_convert_sampler`
+    /// then adds the two (`sampler->lod_bias += tex_unit_lod_bias`) and llvmpipe copies
+    /// the sum into its jit sampler unchanged, so |bias| can reach 32.
     pub fn new(p: &SamplerParams, unit_bias: f32, _one_d: bool) -> LodParams {
-        let bias = quantize_bias(p.lod_bias + unit_bias);
+        let bias = quantize_bias(p.lod_bias) + quantize_bias(unit_bias);
         let mut min_lod = p.min_lod.max(0.0);
         let mut max_lod = p.max_lod;
         if max_lod < min_lod {
@@ -233,6 +240,23 @@ mod tests {
         assert_eq!(quantize_bias(0.3), 77.0 / 256.0);
         assert_eq!(quantize_bias(100.0), 16.0);
         assert_eq!(quantize_bias(-100.0), -16.0);
+    }
+
+    #[test]
+    fn texture_and_unit_bias_quantised_separately() {
+        let sp = SamplerParams {
+            mip_filter: MipFilter::Linear,
+            lod_bias: -0.9,
+            ..Default::default()
+        };
+        // −0.9 → −230/256, 0.6 → 154/256: −76/256 (the sum −0.3 would give −77/256)
+        assert_eq!(LodParams::new(&sp, 0.6, false).bias, -76.0 / 256.0);
+        // each is clamped to ±16 on its own, the sum is not
+        let sp = SamplerParams {
+            lod_bias: 100.0,
+            ..sp
+        };
+        assert_eq!(LodParams::new(&sp, 20.0, false).bias, 32.0);
     }
 
     #[test]
