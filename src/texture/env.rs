@@ -10,6 +10,13 @@
 //! with separate multiplies and adds, INTERPOLATE as `s0·s2 + s1·(1 − s2)`, saturation only
 //! for ADD, ADD_SIGNED, SUBTRACT and DOT3 (and after a scale, which then saturates all four
 //! channels).
+//!
+//! Two of NIR's algebraic rewrites change the rounding and are reproduced: ADD_SIGNED
+//! becomes `(arg0 + −0.5) + arg1` (or `(0.5 − x) + arg1` when arg0 is `1 − x`) unless CSE
+//! has shared its sums (`Combine::add_signed_reassociates`), and INTERPOLATE's `1 − arg2`
+//! with arg2 = `1 − x` is x. Checked against llvmpipe on all two-argument operand/source/
+//! scale combinations of ADD, ADD_SIGNED, SUBTRACT, INTERPOLATE and MODULATE on one unit;
+//! a few two-unit chains where PREVIOUS feeds ADD_SIGNED still round differently.
 
 use crate::ffi::enums::*;
 
@@ -258,9 +265,26 @@ pub struct Combine {
     pub scale_a: f32,
     /// The env colour.
     pub color: [f32; 4],
+    /// `emit_texenv` builds one vec4 combine for RGB and alpha (equal functions and
+    /// Mesa's `args_match` on the sources as set, before [`Combine::canonicalise`]).
+    pub one_vec4: bool,
 }
 
 impl Combine {
+    /// Mesa's `args_match` and equal functions: RGB and alpha are one vec4 combine.
+    fn compute_one_vec4(&self) -> bool {
+        self.mode_rgb == self.mode_a
+            && (0..self.mode_rgb.num_args()).all(|i| {
+                let (rs, ro) = self.args_rgb[i];
+                let (as_, ao) = self.args_a[i];
+                rs == as_
+                    && match ao {
+                        Operand::SrcAlpha => matches!(ro, Operand::SrcColor | Operand::SrcAlpha),
+                        _ => matches!(ro, Operand::OneMinusSrcColor | Operand::OneMinusSrcAlpha),
+                    }
+            })
+    }
+
     /// Mesa's combiner form of `env` for a texture of base format `base`.
     pub fn derive(env: &TexEnv, base: super::BaseFormat) -> Combine {
         use super::BaseFormat as B;
@@ -268,7 +292,7 @@ impl Combine {
         use Source as S;
         let zip = |s: [Source; 3], o: [Operand; 3]| [(s[0], o[0]), (s[1], o[1]), (s[2], o[2])];
         if env.mode == EnvMode::Combine {
-            return Combine {
+            let mut c = Combine {
                 mode_rgb: env.combine_rgb,
                 mode_a: env.combine_alpha,
                 args_rgb: zip(env.source_rgb, env.operand_rgb),
@@ -276,7 +300,10 @@ impl Combine {
                 scale_rgb: env.rgb_scale,
                 scale_a: env.alpha_scale,
                 color: env.color,
+                one_vec4: false,
             };
+            c.one_vec4 = c.compute_one_vec4();
+            return c;
         }
         let d = TexEnv::default();
         let mut src_rgb = d.source_rgb;
@@ -357,7 +384,7 @@ impl Combine {
         if src_a[0] == S::Previous {
             mode_a = F::Replace;
         }
-        Combine {
+        let mut c = Combine {
             mode_rgb,
             mode_a,
             args_rgb: zip(src_rgb, op_rgb),
@@ -365,6 +392,66 @@ impl Combine {
             scale_rgb: 1.0,
             scale_a: 1.0,
             color: env.color,
+            one_vec4: false,
+        };
+        c.one_vec4 = c.compute_one_vec4();
+        c
+    }
+
+    /// Whether NIR reassociates the ADD_SIGNED of RGB and of alpha (see [`add_signed`]).
+    ///
+    /// llvmpipe's NIR is scalar, and the rule wants both the inner `arg0 + arg1` and the
+    /// outer `+ -0.5` used once after CSE. A per-channel (vector) ADD_SIGNED always
+    /// qualifies. When both RGB arguments are alpha operands, the RGB function is one
+    /// scalar; if the alpha function's first two arguments are the same two scalars (in
+    /// any order), CSE merges the two:
+    /// - ADD_SIGNED with ADD: the ADD's sum is the ADD_SIGNED's inner sum, used twice;
+    /// - ADD_SIGNED with ADD_SIGNED: one value. `emit_texenv` saturates it (when that
+    ///   side has no scale) and then multiplies by the scale (a scale of 1 folds away,
+    ///   `fsat(fsat(x))` is `fsat(x)`), so its users are `fsat(v)` and/or `v·scale`:
+    ///   two different users keep it as it is. With one vec4 combine (equal functions
+    ///   and `args_match`) the RGB saturation decides for alpha too.
+    fn add_signed_reassociates(&self) -> (bool, bool) {
+        use CombineFn as F;
+        let alpha_op = |o: Operand| matches!(o, Operand::SrcAlpha | Operand::OneMinusSrcAlpha);
+        let [r0, r1, _] = self.args_rgb;
+        let [a0, a1, _] = self.args_a;
+        let shared = matches!(self.mode_rgb, F::AddSigned | F::Add)
+            && matches!(self.mode_a, F::AddSigned | F::Add)
+            && alpha_op(r0.1)
+            && alpha_op(r1.1)
+            && ((r0 == a0 && r1 == a1) || (r0 == a1 && r1 == a0));
+        if !shared {
+            return (true, true);
+        }
+        if self.mode_rgb != self.mode_a {
+            return (false, false);
+        }
+        let rgb_sat = self.scale_rgb == 1.0;
+        let a_sat = if self.one_vec4 {
+            rgb_sat
+        } else {
+            self.scale_a == 1.0
+        };
+        // the user of v: None = fsat(v), Some(s) = v·s
+        let user = |sat: bool, scale: f32| (!sat && scale != 1.0).then_some(scale);
+        let ok = user(rgb_sat, self.scale_rgb) == user(a_sat, self.scale_a);
+        (ok, ok)
+    }
+
+    /// Sources as the generated shader sees them on unit `unit`: GL_TEXTUREn of the
+    /// unit's own number is its GL_TEXTURE, and GL_PREVIOUS is the primary colour when
+    /// no earlier unit is enabled (`prev_is_primary`). The values are the same either
+    /// way; this only matters where identical expressions merge (ADD_SIGNED).
+    pub fn canonicalise(&mut self, unit: usize, prev_is_primary: bool) {
+        for args in [&mut self.args_rgb, &mut self.args_a] {
+            for a in args.iter_mut() {
+                match a.0 {
+                    Source::TextureN(n) if n as usize == unit => a.0 = Source::Texture,
+                    Source::Previous if prev_is_primary => a.0 = Source::PrimaryColor,
+                    _ => {}
+                }
+            }
         }
     }
 
@@ -396,6 +483,32 @@ impl Combine {
                 Operand::OneMinusSrcAlpha => 1.0 - v[3],
             }
         };
+        // The value x of a ONE_MINUS operand (its argument is `1 − x`).
+        let minus_of = |a: Arg, ch: usize| -> Option<f32> {
+            let v = value(a.0);
+            match a.1 {
+                Operand::OneMinusSrcColor => Some(v[ch]),
+                Operand::OneMinusSrcAlpha => Some(v[3]),
+                _ => None,
+            }
+        };
+        let (reassoc_rgb, reassoc_a) = self.add_signed_reassociates();
+        let eval = |f: CombineFn, args: &[Arg; 3], ch: usize, reassoc: bool| -> f32 {
+            let mut a = [0.0f32; 3];
+            for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
+                *ai = arg(args[i], ch);
+            }
+            match f {
+                CombineFn::AddSigned if reassoc => add_signed(a[0], a[1], minus_of(args[0], ch)),
+                // `1 − arg2` with arg2 = `1 − x` folds to x (`#a + −(b + #c)` →
+                // `(#a − #c) + −b`, then `0 + x` → x).
+                CombineFn::Interpolate => match minus_of(args[2], ch) {
+                    Some(x) => a[0] * a[2] + a[1] * x,
+                    None => combine(f, a),
+                },
+                _ => combine(f, a),
+            }
+        };
         let shift = self.scale_rgb != 1.0 || self.scale_a != 1.0;
         let mut out = [0.0f32; 4];
         let dot3 = matches!(self.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
@@ -413,13 +526,8 @@ impl Combine {
                 out[3] = d;
             }
         } else {
-            let n = self.mode_rgb.num_args();
             for (c, o) in out.iter_mut().enumerate().take(3) {
-                let mut a = [0.0f32; 3];
-                for (i, ai) in a.iter_mut().enumerate().take(n) {
-                    *ai = arg(self.args_rgb[i], c);
-                }
-                let mut v = combine(self.mode_rgb, a);
+                let mut v = eval(self.mode_rgb, &self.args_rgb, c, reassoc_rgb);
                 if !shift && self.mode_rgb.saturates() {
                     v = sat(v);
                 }
@@ -427,12 +535,7 @@ impl Combine {
             }
         }
         if self.mode_rgb != CombineFn::Dot3Rgba {
-            let n = self.mode_a.num_args();
-            let mut a = [0.0f32; 3];
-            for (i, ai) in a.iter_mut().enumerate().take(n) {
-                *ai = arg(self.args_a[i], 3);
-            }
-            let mut v = combine(self.mode_a, a);
+            let mut v = eval(self.mode_a, &self.args_a, 3, reassoc_a);
             if !shift && self.mode_a.saturates() {
                 v = sat(v);
             }
@@ -455,6 +558,22 @@ pub fn sat(v: f32) -> f32 {
         v.min(1.0)
     } else {
         0.0
+    }
+}
+
+/// ADD_SIGNED as llvmpipe evaluates Mesa's `(arg0 + arg1) + -0.5`.
+///
+/// NIR's `nir_opt_algebraic` rewrites it before llvmpipe sees it: "propagate constants up
+/// addition chains", `(a + b) + #c → (a + #c) + b` (a, b not constants, both adds used
+/// once; the first match keeps the operand order, so the constant goes to arg0), gives
+/// `(arg0 + -0.5) + arg1`. When arg0 is a ONE_MINUS operand, `1 − x` is `1 + (−x)`, and
+/// the constant-reassociation rule `#a + (b + #c) → (#a + #c) + b` folds it further into
+/// `(0.5 − x) + arg1`. `minus0` is that x.
+#[inline(always)]
+fn add_signed(a0: f32, a1: f32, minus0: Option<f32>) -> f32 {
+    match minus0 {
+        Some(x) => (0.5 + -x) + a1,
+        None => (a0 + -0.5) + a1,
     }
 }
 
@@ -550,7 +669,7 @@ mod tests {
         let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
         assert_eq!(c[0], sat((0.9f32 - 0.2) * 2.0));
         assert_eq!(c[2], 0.0);
-        assert_eq!(c[3], sat((0.3f32 + 0.8) + -0.5));
+        assert_eq!(c[3], sat((0.3f32 + -0.5) + 0.8));
         env.combine_rgb = CombineFn::Dot3Rgba;
         env.rgb_scale = 1.0;
         let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
@@ -563,5 +682,93 @@ mod tests {
         env.source_rgb[0] = Source::TextureN(1);
         let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[[0.0; 4], [0.7; 4]]);
         assert_eq!(c[0], 0.7);
+    }
+
+    fn add_signed_alpha(op0: Operand, op1: Operand, a: f32, rgb_scale: f32) -> f32 {
+        let env = TexEnv {
+            mode: EnvMode::Combine,
+            combine_rgb: CombineFn::Replace,
+            combine_alpha: CombineFn::AddSigned,
+            source_alpha: [Source::PrimaryColor; 3],
+            operand_alpha: [op0, op1, Operand::SrcAlpha],
+            rgb_scale,
+            ..Default::default()
+        };
+        let f = [0.2, 0.4, 0.6, a];
+        Combine::derive(&env, B::Rgba).apply(f, T, f, &[])[3]
+    }
+
+    #[test]
+    fn add_signed_reassociated_like_nir() {
+        use Operand::*;
+        // llvmpipe (c_tests/repro/combine_add_signed.c): (a, 1 − a) gives 127 for odd k
+        // in 65..127, (1 − a, a) gives 128 everywhere.
+        for k in 0..=255u32 {
+            let a = k as f32 / 255.0;
+            let q = |v: f32| (v * 255.0).round_ties_even() as u32;
+            let row0 = q(add_signed_alpha(SrcAlpha, OneMinusSrcAlpha, a, 1.0));
+            let row1 = q(add_signed_alpha(OneMinusSrcAlpha, SrcAlpha, a, 1.0));
+            let expect0 = if (65..=127).contains(&k) && k % 2 == 1 {
+                127
+            } else {
+                128
+            };
+            assert_eq!((k, row0, row1), (k, expect0, 128));
+        }
+        // (a + −0.5) + (1 − a) against the plain (a + (1 − a)) + −0.5
+        let a = 65.0f32 / 255.0;
+        assert_eq!(
+            add_signed_alpha(SrcAlpha, OneMinusSrcAlpha, a, 1.0),
+            (a + -0.5) + (1.0 - a)
+        );
+    }
+
+    #[test]
+    fn add_signed_shared_with_alpha_is_not_reassociated() {
+        let pr = (Source::PrimaryColor, Operand::SrcAlpha);
+        let tx = (Source::Texture, Operand::OneMinusSrcAlpha);
+        let mut c = Combine::derive(
+            &TexEnv {
+                mode: EnvMode::Combine,
+                combine_rgb: CombineFn::AddSigned,
+                combine_alpha: CombineFn::AddSigned,
+                ..Default::default()
+            },
+            B::Rgba,
+        );
+        c.args_rgb = [pr, tx, pr];
+        c.args_a = [tx, pr, pr];
+        c.one_vec4 = false;
+        // no scale: both sides saturate the one merged value → reassociated
+        assert_eq!(c.add_signed_reassociates(), (true, true));
+        // RGB ×2, alpha saturated: two users → left as (arg0 + arg1) − 0.5
+        c.scale_rgb = 2.0;
+        assert_eq!(c.add_signed_reassociates(), (false, false));
+        // alpha ADD of the same two scalars shares the inner sum
+        c.scale_rgb = 1.0;
+        c.mode_a = CombineFn::Add;
+        assert_eq!(c.add_signed_reassociates(), (false, false));
+        // RGB colour operands: per-channel sums, always reassociated
+        c.args_rgb[1].1 = Operand::OneMinusSrcColor;
+        assert_eq!(c.add_signed_reassociates(), (true, true));
+    }
+
+    #[test]
+    fn interpolate_one_minus_arg2_folds() {
+        let env = TexEnv {
+            mode: EnvMode::Combine,
+            combine_rgb: CombineFn::Interpolate,
+            combine_alpha: CombineFn::Interpolate,
+            source_rgb: [Source::Texture, Source::PrimaryColor, Source::Texture],
+            operand_rgb: [
+                Operand::SrcColor,
+                Operand::SrcColor,
+                Operand::OneMinusSrcAlpha,
+            ],
+            ..Default::default()
+        };
+        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
+        // 1 − (1 − x) is x itself
+        assert_eq!(c[0], 0.9f32 * (1.0 - 0.3) + 0.2 * 0.3);
     }
 }

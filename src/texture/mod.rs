@@ -419,6 +419,15 @@ impl TextureState {
         name != 0 && self.objects.get(&name).is_some_and(|o| o.target.is_some())
     }
 
+    /// Whether `unit` has an enabled target with a complete texture (`unit_plan` is
+    /// `Some`).
+    fn unit_active(&self, unit: usize) -> bool {
+        self.units.get(unit).is_some_and(|u| {
+            u.active_target()
+                .is_some_and(|t| self.bound(unit, t).complete_range().is_some())
+        })
+    }
+
     /// The sampling plan of `unit` for one draw; `None` when the unit is disabled or its
     /// texture incomplete.
     pub fn unit_plan(&self, unit: usize) -> Option<UnitPlan<'_>> {
@@ -454,6 +463,8 @@ impl TextureState {
         // llvmpipe chooses the REPEAT code from the resource's level-0 size.
         let l0 = obj.level(0).filter(|l| l.base == base).unwrap_or(base_img);
         let pot = [l0.width.is_power_of_two(), l0.height.is_power_of_two()];
+        let mut env = Combine::derive(&u.env, base);
+        env.canonicalise(unit, !(0..unit).any(|j| self.unit_active(j)));
         Some(UnitPlan {
             levels: &obj.levels,
             first,
@@ -471,7 +482,7 @@ impl TextureState {
             lod,
             needs_lod,
             base_format: base,
-            env: Combine::derive(&u.env, base),
+            env,
             fma: sample::has_fma(),
         })
     }
