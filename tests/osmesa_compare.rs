@@ -119,6 +119,7 @@ const SCENES: &[&str] = &[
     "stress_thin_fans",
     "stress_depth_fight",
     "stress_degenerate",
+    "tex_sized_formats",
 ];
 
 macro_rules! scene_tests {
@@ -186,6 +187,7 @@ scene_tests!(
     stress_thin_fans,
     stress_depth_fight,
     stress_degenerate,
+    tex_sized_formats,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

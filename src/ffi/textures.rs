@@ -15,8 +15,8 @@ use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
 use crate::texture::upload::{self, ClientFormat, Layout};
 use crate::texture::{
-    mipmap, BaseFormat, Filter, Level, MipFilter, Target, TextureObject, Wrap, MAX_ANISOTROPY,
-    MAX_LEVELS, MAX_TEXTURE_SIZE,
+    mipmap, Filter, Level, MipFilter, Target, TextureObject, Wrap, MAX_ANISOTROPY, MAX_LEVELS,
+    MAX_TEXTURE_SIZE,
 };
 use libc::c_void;
 
@@ -124,6 +124,7 @@ unsafe fn tex_image(
     let level = check_level(level)?;
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     c.check_outside_begin()?;
+    let storage = upload::choose_storage(internal, base, format, ty);
     let size = image_size(t, level, w, h, border);
     if proxy {
         let obj = object_mut(c, t, true);
@@ -133,6 +134,7 @@ unsafe fn tex_image(
                 height: h,
                 internal_format: internal as u32,
                 base,
+                storage,
                 texels: Vec::new(),
             }),
             _ => None,
@@ -155,13 +157,14 @@ unsafe fn tex_image(
         }
     }
     // SAFETY: GL's contract: `data` (when not null) holds the described image.
-    let texels = unsafe { upload::unpack(&ps, &cf, base, tw, th, data as *const u8) };
+    let texels = unsafe { upload::unpack(&ps, &cf, base, storage, tw, th, data as *const u8) };
     let obj = object_mut(c, t, false);
     obj.levels[level] = Some(Level {
         width: tw,
         height: th,
         internal_format: internal as u32,
         base,
+        storage,
         texels,
     });
     maybe_generate(obj, level);
@@ -200,7 +203,8 @@ unsafe fn tex_sub_image(
         return Err(GlError::InvalidValue);
     }
     // SAFETY: GL's contract: `data` holds the described image.
-    let texels = unsafe { upload::unpack(&ps, &cf, img.base, w, h, data as *const u8) };
+    let texels =
+        unsafe { upload::unpack(&ps, &cf, img.base, img.storage, w, h, data as *const u8) };
     for y in 0..h {
         let dst = (yoff as usize + y) * img.width + xoff as usize;
         img.texels[dst..dst + w].copy_from_slice(&texels[y * w..(y + 1) * w]);
@@ -255,13 +259,18 @@ fn copy_tex_image(
     c.check_outside_begin()?;
     let b = border;
     let src = read_fb(c, x + b, y + if dims == 2 { b } else { 0 }, tw, th);
-    let texels = src.into_iter().map(|p| upload::to_texel(base, p)).collect();
+    let storage = upload::choose_storage(internal as i32, base, 0, 0);
+    let texels = src
+        .into_iter()
+        .map(|p| upload::to_texel(base, upload::quantise_rgba(p, &storage)))
+        .collect();
     let obj = object_mut(c, t, false);
     obj.levels[level] = Some(Level {
         width: tw,
         height: th,
         internal_format: internal,
         base,
+        storage,
         texels,
     });
     maybe_generate(obj, level);
@@ -299,7 +308,10 @@ fn copy_tex_sub_image(
     for row in 0..h {
         for col in 0..w {
             let d = (yoff as usize + row) * img.width + xoff as usize + col;
-            img.texels[d] = upload::to_texel(img.base, src[row * w + col]);
+            img.texels[d] = upload::to_texel(
+                img.base,
+                upload::quantise_rgba(src[row * w + col], &img.storage),
+            );
         }
     }
     maybe_generate(obj, level);
@@ -724,21 +736,20 @@ fn get_level_parameter(
     let level = check_level(level)?;
     c.check_outside_begin()?;
     let img = object(c, t, proxy).level(level);
-    let has =
-        |bases: &[BaseFormat]| img.is_some_and(|i| bases.contains(&i.base)) as u8 as f64 * 8.0;
-    use BaseFormat as B;
+    // the sizes of the storage format Mesa chose (upload::choose_storage)
+    let size = |k: usize| img.map_or(0, |i| i.storage.sizes[k]) as f64;
     Ok(match pname {
         GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,
         GL_TEXTURE_HEIGHT => img.map_or(0, |i| i.height) as f64,
         GL_TEXTURE_DEPTH => img.map_or(0, |_| 1) as f64,
         GL_TEXTURE_BORDER => 0.0,
         GL_TEXTURE_INTERNAL_FORMAT => img.map_or(1, |i| i.internal_format) as f64,
-        GL_TEXTURE_RED_SIZE | GL_TEXTURE_GREEN_SIZE | GL_TEXTURE_BLUE_SIZE => {
-            has(&[B::Rgb, B::Rgba])
-        }
-        GL_TEXTURE_ALPHA_SIZE => has(&[B::Alpha, B::LuminanceAlpha, B::Rgba]),
-        GL_TEXTURE_LUMINANCE_SIZE => has(&[B::Luminance, B::LuminanceAlpha]),
-        GL_TEXTURE_INTENSITY_SIZE => has(&[B::Intensity]),
+        GL_TEXTURE_RED_SIZE => size(0),
+        GL_TEXTURE_GREEN_SIZE => size(1),
+        GL_TEXTURE_BLUE_SIZE => size(2),
+        GL_TEXTURE_ALPHA_SIZE => size(3),
+        GL_TEXTURE_LUMINANCE_SIZE => size(4),
+        GL_TEXTURE_INTENSITY_SIZE => size(5),
         GL_TEXTURE_COMPRESSED => 0.0,
         _ => return Err(GlError::InvalidEnum),
     })

@@ -48,11 +48,13 @@ pub fn downsample(src: &Level) -> Level {
             let b = src.texel(x1, y0);
             let c = src.texel(x0, y1);
             let d = src.texel(x1, y1);
-            texels.push(std::array::from_fn(|ch| {
+            let v = std::array::from_fn(|ch| {
                 let r0 = lerp8(a[ch], b[ch], wx);
                 let r1 = lerp8(c[ch], d[ch], wx);
                 lerp8(r0, r1, wy)
-            }));
+            });
+            // the blit writes into the level's own storage format (e.g. RGBA4)
+            texels.push(super::upload::quantise_rgba(v, &src.storage));
         }
     }
     Level {
@@ -60,6 +62,7 @@ pub fn downsample(src: &Level) -> Level {
         height: dh,
         internal_format: src.internal_format,
         base: src.base,
+        storage: src.storage,
         texels,
     }
 }
@@ -91,6 +94,7 @@ mod tests {
             height: h,
             internal_format: 0x8058,
             base: BaseFormat::Rgba,
+            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: data.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect(),
         }
     }

@@ -92,6 +92,45 @@ impl BaseFormat {
     }
 }
 
+/// The storage format Mesa chose for an image, as the component sizes
+/// glGetTexLevelParameter reports (see [`upload::choose_storage`]). Texels are still kept
+/// as RGBA8; components of fewer than 8 bits are quantised on upload and expanded back by
+/// bit replication, which is what llvmpipe samples and glGetTexImage returns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Storage {
+    /// GL_TEXTURE_RED_SIZE, GREEN, BLUE, ALPHA, LUMINANCE, INTENSITY.
+    pub sizes: [u8; 6],
+}
+
+impl Storage {
+    /// 8 bits for every component of `base`.
+    pub fn of_base(base: BaseFormat) -> Storage {
+        use BaseFormat as B;
+        let sizes = match base {
+            B::Alpha => [0, 0, 0, 8, 0, 0],
+            B::Luminance => [0, 0, 0, 0, 8, 0],
+            B::LuminanceAlpha => [0, 0, 0, 8, 8, 0],
+            B::Intensity => [0, 0, 0, 0, 0, 8],
+            B::Rgb => [8, 8, 8, 0, 0, 0],
+            B::Rgba => [8, 8, 8, 8, 0, 0],
+        };
+        Storage { sizes }
+    }
+    /// Bits kept of each client RGBA component before the base swizzle (luminance and
+    /// intensity are taken from red); 8 or more means no quantisation.
+    pub fn bits(&self) -> [u32; 4] {
+        let [r, g, b, a, l, i] = self.sizes.map(|x| x as u32);
+        let c = |x: u32| if x == 0 { 8 } else { x };
+        if l != 0 {
+            [l, l, l, c(a)]
+        } else if i != 0 {
+            [i; 4]
+        } else {
+            [c(r), c(g), c(b), c(a)]
+        }
+    }
+}
+
 /// One mipmap image: RGBA8 texels, row 0 first (GL's t = 0 row), after the base swizzle.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Level {
@@ -103,6 +142,8 @@ pub struct Level {
     pub internal_format: u32,
     /// Base internal format.
     pub base: BaseFormat,
+    /// The storage format (reported component sizes, upload precision).
+    pub storage: Storage,
     /// `width * height` texels.
     pub texels: Vec<[u8; 4]>,
 }
@@ -605,6 +646,7 @@ mod tests {
             height: h,
             internal_format: 0x1908,
             base: BaseFormat::Rgba,
+            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: vec![[0; 4]; w * h],
         })
     }

@@ -272,6 +272,7 @@ mod tests {
             height: h,
             internal_format: 0x1908,
             base: BaseFormat::Rgba,
+            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: (0..w * h).map(|i| f(i % w, i / w)).collect(),
         })
     }

@@ -14,7 +14,7 @@
 //! R=G=B), then reduced to the base internal format (L and I take R), then stored after the
 //! base-format swizzle (see the module root).
 
-use super::{BaseFormat, Level};
+use super::{BaseFormat, Level, Storage};
 use crate::context::state::PixelStore;
 use crate::context::{GlError, GlResult};
 use crate::ffi::enums::*;
@@ -45,6 +45,99 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
         }
         _ => return None,
     })
+}
+
+/// The storage format Mesa 22.3 (llvmpipe) picks for a glTexImage, as component sizes.
+///
+/// Measured with glGetTexLevelParameter over every internal format × client format/type:
+/// - unsized GL_RGB/GL_RGBA/GL_LUMINANCE/... (not 1–4) take the format matching the
+///   client type when there is one (`st_ChooseTextureFormat` → `st_choose_matching_format`
+///   for unsigned types): RGB + 5_6_5(_REV) → R5G6B5, RGB + 3_3_2/2_3_3_REV → R3G3B2,
+///   RGB + RGBA/BGRA 5_5_5_1 → RGB5, RGB + 2_10_10_10_REV → RGB10, RGBA + 4_4_4_4(_REV) →
+///   RGBA4, RGBA + 5_5_5_1/1_5_5_5_REV → RGB5_A1, RGBA + 10_10_10_2(_REV) → RGB10_A2,
+///   RGBA/L/A/LA + GL_UNSIGNED_SHORT → 16 bits; everything else 8 bits;
+/// - sized formats: R3_G3_B2 3/3/2, RGB4 4, RGB5 5, RGB10 10, RGB12/16 16, RGBA2/RGBA4 4,
+///   RGB5_A1 5/1, RGB10_A2 10/2, RGBA12/16 16, *12/*16 16, LUMINANCE4_ALPHA4 4/4 (other
+///   4-bit and 6/2 formats are stored with 8 bits).
+///
+/// `format`/`ty` are 0 when there is no client image (glCopyTexImage).
+pub fn choose_storage(internal: i32, base: BaseFormat, format: u32, ty: u32) -> Storage {
+    let rgb = |r: u8, g: u8, b: u8| Storage {
+        sizes: [r, g, b, 0, 0, 0],
+    };
+    let rgba = |r: u8, g: u8, b: u8, a: u8| Storage {
+        sizes: [r, g, b, a, 0, 0],
+    };
+    let la = |l: u8, a: u8| Storage {
+        sizes: [0, 0, 0, a, l, 0],
+    };
+    let rgba_fmt = format == GL_RGBA || format == GL_BGRA;
+    match internal as u32 {
+        GL_RGB => match ty {
+            GL_UNSIGNED_SHORT_5_6_5 | GL_UNSIGNED_SHORT_5_6_5_REV => rgb(5, 6, 5),
+            GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV => rgb(3, 3, 2),
+            GL_UNSIGNED_SHORT_5_5_5_1 if rgba_fmt => rgb(5, 5, 5),
+            GL_UNSIGNED_INT_2_10_10_10_REV if format == GL_RGBA => rgb(10, 10, 10),
+            _ => Storage::of_base(base),
+        },
+        GL_RGBA => match ty {
+            GL_UNSIGNED_SHORT_4_4_4_4 | GL_UNSIGNED_SHORT_4_4_4_4_REV => rgba(4, 4, 4, 4),
+            GL_UNSIGNED_SHORT_5_5_5_1 | GL_UNSIGNED_SHORT_1_5_5_5_REV => rgba(5, 5, 5, 1),
+            GL_UNSIGNED_INT_10_10_10_2 | GL_UNSIGNED_INT_2_10_10_10_REV if format == GL_RGBA => {
+                rgba(10, 10, 10, 2)
+            }
+            GL_UNSIGNED_SHORT if format == GL_RGBA => rgba(16, 16, 16, 16),
+            _ => Storage::of_base(base),
+        },
+        GL_LUMINANCE if ty == GL_UNSIGNED_SHORT && format == GL_LUMINANCE => la(16, 0),
+        GL_ALPHA if ty == GL_UNSIGNED_SHORT && format == GL_ALPHA => la(0, 16),
+        GL_LUMINANCE_ALPHA if ty == GL_UNSIGNED_SHORT && format == GL_LUMINANCE_ALPHA => la(16, 16),
+        GL_R3_G3_B2 => rgb(3, 3, 2),
+        GL_RGB4 => rgb(4, 4, 4),
+        GL_RGB5 => rgb(5, 5, 5),
+        GL_RGB10 => rgb(10, 10, 10),
+        GL_RGB12 | GL_RGB16 => rgb(16, 16, 16),
+        GL_RGBA2 | GL_RGBA4 => rgba(4, 4, 4, 4),
+        GL_RGB5_A1 => rgba(5, 5, 5, 1),
+        GL_RGB10_A2 => rgba(10, 10, 10, 2),
+        GL_RGBA12 | GL_RGBA16 => rgba(16, 16, 16, 16),
+        GL_ALPHA12 | GL_ALPHA16 => la(0, 16),
+        GL_LUMINANCE12 | GL_LUMINANCE16 => la(16, 0),
+        GL_LUMINANCE4_ALPHA4 => la(4, 4),
+        GL_LUMINANCE12_ALPHA4 | GL_LUMINANCE12_ALPHA12 | GL_LUMINANCE16_ALPHA16 => la(16, 16),
+        GL_INTENSITY12 | GL_INTENSITY16 => Storage {
+            sizes: [0, 0, 0, 0, 0, 16],
+        },
+        _ => Storage::of_base(base),
+    }
+}
+
+/// Reduces an 8-bit component to `bits` bits as Mesa's texstore packs it
+/// (`_mesa_unorm_to_unorm(x, 8, bits)`, rounding) and expands it back by bit replication.
+#[inline]
+pub fn quantise_u8(x: u8, bits: u32) -> u8 {
+    if bits >= 8 {
+        return x;
+    }
+    let max = (1u32 << bits) - 1;
+    unorm_to_u8(((x as u32 * max + 127) / 255) as u64, bits)
+}
+
+/// A float component stored with `bits` bits (`_mesa_float_to_unorm`), as 8 bits.
+#[inline]
+fn float_to_bits_u8(x: f32, bits: u32) -> u8 {
+    if bits >= 8 {
+        return float_to_u8(x);
+    }
+    let max = ((1u32 << bits) - 1) as f32;
+    let q = if x > 1.0 {
+        max
+    } else if x > 0.0 {
+        (x * max).round_ties_even()
+    } else {
+        0.0
+    };
+    unorm_to_u8(q as u64, bits)
 }
 
 /// Which RGBA channel each client component is (`4` = luminance, i.e. R=G=B).
@@ -189,10 +282,13 @@ fn read_uint(bytes: &[u8], swap: bool) -> u64 {
     }
 }
 
-/// Decodes one client pixel into RGBA8 (missing colour 0, alpha 255).
-fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool) -> [u8; 4] {
+/// Decodes one client pixel into RGBA8 (missing colour 0, alpha 255), each component kept
+/// with `bits[channel]` bits (see [`Storage::bits`]).
+fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool, bits: [u32; 4]) -> [u8; 4] {
     let mut rgba = [0u8, 0, 0, 255];
+    let chan_bits = |comp: usize| bits[if comp == 4 { 0 } else { comp }];
     let mut put = |comp: usize, v: u8| {
+        let v = quantise_u8(v, chan_bits(comp));
         if comp == 4 {
             rgba[0] = v;
             rgba[1] = v;
@@ -211,7 +307,8 @@ fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool) -> [u8; 4] {
                 let raw = read_uint(&px[i * size..(i + 1) * size], swap && size > 1);
                 let bits = 8 * size as u32;
                 let v = if float {
-                    float_to_u8(f32::from_bits(raw as u32))
+                    // straight to the stored precision (then `put` keeps it)
+                    float_to_bits_u8(f32::from_bits(raw as u32), chan_bits(comp))
                 } else if signed {
                     let sv = ((raw << (64 - bits)) as i64) >> (64 - bits);
                     if sv <= 0 {
@@ -234,6 +331,13 @@ fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool) -> [u8; 4] {
         }
     }
     rgba
+}
+
+/// Quantises an RGBA8 value to the storage precision (glCopyTexImage, mipmaps).
+#[inline]
+pub fn quantise_rgba(rgba: [u8; 4], storage: &Storage) -> [u8; 4] {
+    let bits = storage.bits();
+    std::array::from_fn(|c| quantise_u8(rgba[c], bits[c]))
 }
 
 /// Reduces client RGBA to the base format's stored (swizzled) texel.
@@ -278,6 +382,7 @@ pub unsafe fn unpack(
     ps: &PixelStore,
     cf: &ClientFormat,
     base: BaseFormat,
+    storage: Storage,
     w: usize,
     h: usize,
     data: *const u8,
@@ -290,13 +395,14 @@ pub unsafe fn unpack(
     }
     // SAFETY: the caller guarantees `span` readable bytes.
     let bytes = unsafe { std::slice::from_raw_parts(data, lay.span(w, h)) };
+    let bits = storage.bits();
     for y in 0..h {
         let row = lay.start + y * lay.stride;
         for x in 0..w {
             let o = row + x * lay.bpp;
             out.push(to_texel(
                 base,
-                decode_pixel(cf, &bytes[o..o + lay.bpp], ps.swap_bytes),
+                decode_pixel(cf, &bytes[o..o + lay.bpp], ps.swap_bytes, bits),
             ));
         }
     }
@@ -446,7 +552,17 @@ mod tests {
         for (i, b) in data.iter_mut().enumerate() {
             *b = i as u8;
         }
-        let t = unsafe { unpack(&ps, &cf, BaseFormat::Rgb, 3, 2, data.as_ptr()) };
+        let t = unsafe {
+            unpack(
+                &ps,
+                &cf,
+                BaseFormat::Rgb,
+                Storage::of_base(BaseFormat::Rgb),
+                3,
+                2,
+                data.as_ptr(),
+            )
+        };
         assert_eq!(t[2], [6, 7, 8, 255]);
         assert_eq!(t[3], [12, 13, 14, 255]);
         // alignment 1: tight rows
@@ -454,7 +570,17 @@ mod tests {
             alignment: 1,
             ..Default::default()
         };
-        let t = unsafe { unpack(&ps1, &cf, BaseFormat::Rgb, 3, 2, data.as_ptr()) };
+        let t = unsafe {
+            unpack(
+                &ps1,
+                &cf,
+                BaseFormat::Rgb,
+                Storage::of_base(BaseFormat::Rgb),
+                3,
+                2,
+                data.as_ptr(),
+            )
+        };
         assert_eq!(t[3], [9, 10, 11, 255]);
         // row length 4, skip 1 pixel and 1 row, alignment 1
         let ps2 = PixelStore {
@@ -465,7 +591,17 @@ mod tests {
             ..Default::default()
         };
         let data = (0..36u8).collect::<Vec<_>>();
-        let t = unsafe { unpack(&ps2, &cf, BaseFormat::Rgb, 2, 2, data.as_ptr()) };
+        let t = unsafe {
+            unpack(
+                &ps2,
+                &cf,
+                BaseFormat::Rgb,
+                Storage::of_base(BaseFormat::Rgb),
+                2,
+                2,
+                data.as_ptr(),
+            )
+        };
         assert_eq!(t[0], [15, 16, 17, 255]);
         assert_eq!(t[2], [27, 28, 29, 255]);
     }
@@ -478,14 +614,24 @@ mod tests {
             ..Default::default()
         };
         let px = [10u8, 20, 30, 40];
-        let get = |b| unsafe { unpack(&ps, &cf, b, 1, 1, px.as_ptr()) }[0];
+        let get = |b| unsafe { unpack(&ps, &cf, b, Storage::of_base(b), 1, 1, px.as_ptr()) }[0];
         assert_eq!(get(BaseFormat::Luminance), [10, 10, 10, 255]);
         assert_eq!(get(BaseFormat::Alpha), [0, 0, 0, 40]);
         assert_eq!(get(BaseFormat::Intensity), [10, 10, 10, 10]);
         assert_eq!(get(BaseFormat::LuminanceAlpha), [10, 10, 10, 40]);
         assert_eq!(get(BaseFormat::Rgb), [10, 20, 30, 255]);
         let la = ClientFormat::new(GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE).unwrap();
-        let t = unsafe { unpack(&ps, &la, BaseFormat::Rgba, 1, 1, px.as_ptr()) }[0];
+        let t = unsafe {
+            unpack(
+                &ps,
+                &la,
+                BaseFormat::Rgba,
+                Storage::of_base(BaseFormat::Rgba),
+                1,
+                1,
+                px.as_ptr(),
+            )
+        }[0];
         assert_eq!(t, [10, 10, 10, 20]);
     }
 
@@ -499,7 +645,17 @@ mod tests {
         let cf = ClientFormat::new(GL_RGB, GL_UNSIGNED_SHORT_5_6_5).unwrap();
         let v: u16 = (3 << 11) | (1 << 5) | 31;
         let b = v.swap_bytes().to_ne_bytes();
-        let t = unsafe { unpack(&ps, &cf, BaseFormat::Rgb, 1, 1, b.as_ptr()) }[0];
+        let t = unsafe {
+            unpack(
+                &ps,
+                &cf,
+                BaseFormat::Rgb,
+                Storage::of_base(BaseFormat::Rgb),
+                1,
+                1,
+                b.as_ptr(),
+            )
+        }[0];
         assert_eq!(t, [24, 4, 255, 255]);
         assert_eq!(
             ClientFormat::new(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5).err(),
@@ -515,7 +671,17 @@ mod tests {
             ..Default::default()
         };
         let px = 0x4411_2233u32.to_ne_bytes();
-        let t = unsafe { unpack(&ps, &bgra, BaseFormat::Rgba, 1, 1, px.as_ptr()) }[0];
+        let t = unsafe {
+            unpack(
+                &ps,
+                &bgra,
+                BaseFormat::Rgba,
+                Storage::of_base(BaseFormat::Rgba),
+                1,
+                1,
+                px.as_ptr(),
+            )
+        }[0];
         assert_eq!(t, [0x11, 0x22, 0x33, 0x44]);
     }
 
@@ -530,18 +696,120 @@ mod tests {
             height: 1,
             internal_format: GL_RGBA,
             base: BaseFormat::Rgba,
+            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]],
         };
         let cf = ClientFormat::new(GL_BGRA, GL_UNSIGNED_BYTE).unwrap();
         let mut out = vec![0u8; 12];
         unsafe { pack(&ps, &cf, &img, out.as_mut_ptr()) };
         assert_eq!(&out[..4], &[3, 2, 1, 4]);
-        let back = unsafe { unpack(&ps, &cf, BaseFormat::Rgba, 3, 1, out.as_ptr()) };
+        let back = unsafe {
+            unpack(
+                &ps,
+                &cf,
+                BaseFormat::Rgba,
+                Storage::of_base(BaseFormat::Rgba),
+                3,
+                1,
+                out.as_ptr(),
+            )
+        };
         assert_eq!(back, img.texels);
         let f = ClientFormat::new(GL_RGBA, GL_FLOAT).unwrap();
         let mut outf = vec![0f32; 12];
         unsafe { pack(&ps, &f, &img, outf.as_mut_ptr() as *mut u8) };
-        let back = unsafe { unpack(&ps, &f, BaseFormat::Rgba, 3, 1, outf.as_ptr() as *const u8) };
+        let back = unsafe {
+            unpack(
+                &ps,
+                &f,
+                BaseFormat::Rgba,
+                Storage::of_base(BaseFormat::Rgba),
+                3,
+                1,
+                outf.as_ptr() as *const u8,
+            )
+        };
         assert_eq!(back, img.texels);
+    }
+
+    #[test]
+    fn storage_choice_matches_mesa() {
+        let sz = |i: u32, f: u32, t: u32| {
+            choose_storage(i as i32, base_format(i as i32).unwrap(), f, t).sizes
+        };
+        assert_eq!(
+            sz(GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV),
+            [5, 6, 5, 0, 0, 0]
+        );
+        assert_eq!(
+            sz(GL_RGBA, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4),
+            [4, 4, 4, 4, 0, 0]
+        );
+        assert_eq!(
+            sz(GL_RGBA, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV),
+            [5, 5, 5, 1, 0, 0]
+        );
+        assert_eq!(
+            sz(GL_RGB, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1),
+            [5, 5, 5, 0, 0, 0]
+        );
+        assert_eq!(
+            sz(GL_RGB, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4),
+            [8, 8, 8, 0, 0, 0]
+        );
+        assert_eq!(
+            sz(GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, GL_UNSIGNED_SHORT),
+            [0, 0, 0, 16, 16, 0]
+        );
+        assert_eq!(sz(GL_RGB, GL_RGB, GL_UNSIGNED_SHORT), [8, 8, 8, 0, 0, 0]);
+        assert_eq!(sz(GL_RGBA, GL_RGBA, GL_FLOAT), [8, 8, 8, 8, 0, 0]);
+        // numbered internal formats are never matched to the type
+        assert_eq!(sz(3, GL_RGB, GL_UNSIGNED_SHORT_5_6_5), [8, 8, 8, 0, 0, 0]);
+        assert_eq!(sz(GL_RGBA2, GL_RGBA, GL_UNSIGNED_BYTE), [4, 4, 4, 4, 0, 0]);
+        assert_eq!(
+            sz(GL_LUMINANCE4_ALPHA4, GL_RGBA, GL_UNSIGNED_BYTE),
+            [0, 0, 0, 4, 4, 0]
+        );
+        assert_eq!(
+            sz(GL_LUMINANCE4, GL_RGBA, GL_UNSIGNED_BYTE),
+            [0, 0, 0, 0, 8, 0]
+        );
+    }
+
+    #[test]
+    fn small_formats_round_on_upload() {
+        // Mesa 22.3 glGetTexImage of a 0..255 ramp stored as GL_RGBA4 / GL_RGB5
+        assert_eq!(quantise_u8(8, 4), 0);
+        assert_eq!(quantise_u8(9, 4), 17);
+        assert_eq!(quantise_u8(4, 5), 0);
+        assert_eq!(quantise_u8(5, 5), 8);
+        assert_eq!(quantise_u8(200, 8), 200);
+        // expanded values are kept as they are
+        for bits in 1..8 {
+            for q in 0..(1u64 << bits) {
+                let v = unorm_to_u8(q, bits);
+                assert_eq!(quantise_u8(v, bits), v);
+            }
+        }
+        let cf = ClientFormat::new(GL_RGBA, GL_FLOAT).unwrap();
+        let ps = PixelStore {
+            alignment: 1,
+            ..Default::default()
+        };
+        let st = choose_storage(GL_RGBA4 as i32, BaseFormat::Rgba, GL_RGBA, GL_FLOAT);
+        // 0.0333·15 = 0.4995 → 0, 0.0334·15 = 0.501 → 1 (17); a u8 detour would give 9 → 17
+        let px = [0.0333f32, 0.0334, 1.5, -1.0];
+        let t = unsafe {
+            unpack(
+                &ps,
+                &cf,
+                BaseFormat::Rgba,
+                st,
+                1,
+                1,
+                px.as_ptr() as *const u8,
+            )
+        };
+        assert_eq!(t[0], [0, 17, 255, 0]);
     }
 }
