@@ -410,13 +410,13 @@ pub unsafe fn unpack(
 }
 
 /// The RGBA value glGetTexImage starts from (GL 1.5 table 6.1: L and I go to R, with G = B
-/// = 0; A = 1 where the format has none).
+/// = 0; A = 1 where the format has none). Mesa 22.3 reads an intensity texture back as
+/// (I, 0, 0, 1), like luminance, not with A = I.
 fn readback_rgba(base: BaseFormat, t: [u8; 4]) -> [u8; 4] {
     match base {
         BaseFormat::Alpha => [0, 0, 0, t[3]],
-        BaseFormat::Luminance => [t[0], 0, 0, 255],
+        BaseFormat::Luminance | BaseFormat::Intensity => [t[0], 0, 0, 255],
         BaseFormat::LuminanceAlpha => [t[0], 0, 0, t[3]],
-        BaseFormat::Intensity => [t[0], 0, 0, t[0]],
         BaseFormat::Rgb => [t[0], t[1], t[2], 255],
         BaseFormat::Rgba => t,
     }
@@ -811,5 +811,11 @@ mod tests {
             )
         };
         assert_eq!(t[0], [0, 17, 255, 0]);
+    }
+
+    #[test]
+    fn intensity_reads_back_like_luminance() {
+        // Mesa 22.3: glGetTexImage(GL_RGBA) of GL_INTENSITY* gives (I, 0, 0, 255)
+        assert_eq!(readback_rgba(BaseFormat::Intensity, [7, 7, 7, 7]), [7, 0, 0, 255]);
     }
 }
