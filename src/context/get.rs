@@ -134,6 +134,8 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_MAX_COLOR_MATRIX_STACK_DEPTH => i(&[mx.color.max_depth() as i64]),
         GL_MAX_VIEWPORT_DIMS => i(&[MAX_VIEWPORT as i64, MAX_VIEWPORT as i64]),
         GL_MAX_TEXTURE_SIZE => i(&[16384]),
+        GL_MAX_3D_TEXTURE_SIZE => i(&[crate::texture::MAX_3D_TEXTURE_SIZE as i64]),
+        GL_MAX_CUBE_MAP_TEXTURE_SIZE => i(&[crate::texture::MAX_CUBE_MAP_TEXTURE_SIZE as i64]),
         GL_MAX_LIGHTS => i(&[8]),
         GL_MAX_CLIP_PLANES => i(&[8]),
         GL_MAX_TEXTURE_UNITS => i(&[super::state::MAX_TEXTURE_UNITS as i64]),
@@ -223,7 +225,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_UNPACK_ALIGNMENT => i(&[st.unpack.alignment as i64]),
         GL_UNPACK_IMAGE_HEIGHT => i(&[st.unpack.image_height as i64]),
         GL_UNPACK_SKIP_IMAGES => i(&[st.unpack.skip_images as i64]),
-        GL_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.active_texture as u32),
+        GL_ACTIVE_TEXTURE => {
+            e(GL_TEXTURE0 + c.textures.high_unit.unwrap_or(st.active_texture as u32))
+        }
         GL_CLIENT_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.client_active_texture as u32),
         GL_VERTEX_ARRAY => b(a.vertex.enabled),
         GL_VERTEX_ARRAY_SIZE => i(&[a.vertex.size as i64]),
@@ -247,8 +251,11 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_NORMAL_ARRAY_BUFFER_BINDING => i(&[a.normal.buffer as i64]),
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => i(&[tc.buffer as i64]),
         // texturing (per active unit)
+        // units 8..31 (TextureState::high_unit) have nothing bound
+        GL_TEXTURE_BINDING_1D | GL_TEXTURE_BINDING_2D if c.textures.high_unit.is_some() => i(&[0]),
         GL_TEXTURE_BINDING_1D => i(&[c.textures.units[st.active_texture].bound[0] as i64]),
         GL_TEXTURE_BINDING_2D => i(&[c.textures.units[st.active_texture].bound[1] as i64]),
+        GL_TEXTURE_1D | GL_TEXTURE_2D if c.textures.high_unit.is_some() => b(false),
         GL_TEXTURE_1D => b(c.textures.units[st.active_texture].enabled_1d),
         GL_TEXTURE_2D => b(c.textures.units[st.active_texture].enabled_2d),
         GL_MAX_TEXTURE_LOD_BIAS => f(&[crate::texture::MAX_LOD_BIAS]),

@@ -50,6 +50,8 @@ fn check_level(level: GLint) -> GlResult<usize> {
 fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObject {
     if proxy {
         &mut c.textures.proxies[target.index()]
+    } else if c.textures.high_unit.is_some() {
+        &mut c.textures.defaults[target.index()]
     } else {
         let unit = c.state.active_texture;
         c.textures.bound_mut(unit, target)
@@ -59,6 +61,8 @@ fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObjec
 fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
     if proxy {
         &c.textures.proxies[target.index()]
+    } else if c.textures.high_unit.is_some() {
+        &c.textures.defaults[target.index()]
     } else {
         c.textures.bound(c.state.active_texture, target)
     }
@@ -121,6 +125,10 @@ unsafe fn tex_image(
         return Err(GlError::InvalidEnum);
     }
     let cf = ClientFormat::new(format, ty)?;
+    if cf.is_depth() {
+        // no depth textures: as an unknown format
+        return Err(GlError::InvalidEnum);
+    }
     let level = check_level(level)?;
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     c.check_outside_begin()?;
@@ -190,6 +198,10 @@ unsafe fn tex_sub_image(
         return Err(GlError::InvalidEnum);
     }
     let cf = ClientFormat::new(format, ty)?;
+    if cf.is_depth() {
+        // no depth textures: as an unknown format
+        return Err(GlError::InvalidEnum);
+    }
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
@@ -363,6 +375,10 @@ pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
     with_ctx(|c| {
         let t = bind_target(target)?;
         c.check_outside_begin()?;
+        if c.textures.high_unit.is_some() {
+            // GL_TEXTURE8..31: no binding state here (see TextureState::high_unit)
+            return Ok(());
+        }
         let unit = c.state.active_texture;
         c.textures.bind(unit, t, texture)
     })
@@ -578,6 +594,10 @@ pub unsafe extern "C" fn glGetTexImage(
         let cf = ClientFormat::new(format, type_)?;
         c.check_outside_begin()?;
         let ps = c.state.pack;
+        if cf.is_depth() {
+            // a depth format for a colour texture (there are no depth textures here)
+            return Err(GlError::InvalidOperation);
+        }
         let Some(img) = object(c, t, false).level(level) else {
             return Ok(());
         };
@@ -653,9 +673,7 @@ fn tex_parameter(
         }
         GL_TEXTURE_WRAP_S => p.wrap_s = wrap_from_gl(e)?,
         GL_TEXTURE_WRAP_T => p.wrap_t = wrap_from_gl(e)?,
-        GL_TEXTURE_WRAP_R => {
-            wrap_from_gl(e)?;
-        }
+        GL_TEXTURE_WRAP_R => p.wrap_r = wrap_from_gl(e)?,
         GL_TEXTURE_BORDER_COLOR => {
             if v.len() < 4 {
                 return Err(GlError::InvalidEnum);
@@ -712,6 +730,7 @@ fn get_tex_parameter(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult
         } as f64),
         GL_TEXTURE_WRAP_S => one(wrap_to_gl(p.wrap_s) as f64),
         GL_TEXTURE_WRAP_T => one(wrap_to_gl(p.wrap_t) as f64),
+        GL_TEXTURE_WRAP_R => one(wrap_to_gl(p.wrap_r) as f64),
         GL_TEXTURE_BORDER_COLOR => Ok((p.border_color.map(|x| x as f64).to_vec(), true)),
         GL_TEXTURE_MIN_LOD => one(p.min_lod as f64),
         GL_TEXTURE_MAX_LOD => one(p.max_lod as f64),
@@ -743,7 +762,8 @@ fn get_level_parameter(
         GL_TEXTURE_HEIGHT => img.map_or(0, |i| i.height) as f64,
         GL_TEXTURE_DEPTH => img.map_or(0, |_| 1) as f64,
         GL_TEXTURE_BORDER => 0.0,
-        GL_TEXTURE_INTERNAL_FORMAT => img.map_or(1, |i| i.internal_format) as f64,
+        // Mesa reports GL_RGBA for a level that was never specified
+        GL_TEXTURE_INTERNAL_FORMAT => img.map_or(GL_RGBA, |i| i.internal_format) as f64,
         GL_TEXTURE_RED_SIZE => size(0),
         GL_TEXTURE_GREEN_SIZE => size(1),
         GL_TEXTURE_BLUE_SIZE => size(2),
@@ -850,7 +870,8 @@ pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, para
         if !params.is_null() {
             for (i, x) in v.iter().enumerate() {
                 let iv = if normalized {
-                    (x * 2147483647.0).round() as i32
+                    // Mesa's FLOAT_TO_INT truncates: 0.25 → 536870911
+                    (x * 2147483647.0) as i32
                 } else {
                     x.round() as i32
                 };
@@ -914,6 +935,10 @@ fn scale_from(v: f64) -> GlResult<f32> {
 
 /// glTexEnv*: `v` holds the values (4 for GL_TEXTURE_ENV_COLOR); `ints` normalises colours.
 fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool) -> GlResult<()> {
+    if c.textures.high_unit.is_some() {
+        // Mesa 22.3 ignores texenv calls on units ≥ 8 without an error, even invalid ones
+        return Ok(());
+    }
     let unit = c.state.active_texture;
     match target {
         GL_TEXTURE_FILTER_CONTROL => {
@@ -978,6 +1003,10 @@ fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool
 
 fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
     c.check_outside_begin()?;
+    if c.textures.high_unit.is_some() {
+        // no texenv state on units ≥ 8: nothing is written
+        return Ok((Vec::new(), false));
+    }
     let u = &c.textures.units[c.state.active_texture];
     let one = |x: u32| Ok((vec![x as f64], false));
     match target {
@@ -1105,15 +1134,24 @@ pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *m
     })
 }
 
-/// glActiveTexture (GL_TEXTUREi, i < 8). `state.caps` for GL_TEXTURE_1D/2D follows the unit.
+/// glActiveTexture (GL_TEXTUREi, i < 32 as in Mesa, whose combined image-unit limit is
+/// 32; units 8..31 have no state here, see `TextureState::high_unit`). `state.caps` for
+/// GL_TEXTURE_1D/2D follows the unit.
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
     with_ctx(|c| {
         let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_TEXTURE_UNITS {
+        if u >= MAX_COMBINED_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
         }
         c.check_outside_begin()?;
+        if u >= MAX_TEXTURE_UNITS {
+            c.textures.high_unit = Some(u as u32);
+            c.state.caps.set(Cap::Texture1D, false);
+            c.state.caps.set(Cap::Texture2D, false);
+            return Ok(());
+        }
+        c.textures.high_unit = None;
         c.state.active_texture = u;
         let unit = &c.textures.units[u];
         let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
@@ -1122,6 +1160,9 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
         Ok(())
     })
 }
+
+/// Mesa's GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: the units glActiveTexture accepts.
+pub const MAX_COMBINED_TEXTURE_UNITS: usize = 32;
 
 /// glClientActiveTexture.
 #[no_mangle]

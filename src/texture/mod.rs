@@ -35,6 +35,10 @@ use env::{Combine, TexEnv};
 use lod::LodParams;
 use std::collections::HashMap;
 
+/// GL_MAX_3D_TEXTURE_SIZE (llvmpipe's value; there are no 3D textures here).
+pub const MAX_3D_TEXTURE_SIZE: usize = 2048;
+/// GL_MAX_CUBE_MAP_TEXTURE_SIZE (llvmpipe's value; no cube maps here).
+pub const MAX_CUBE_MAP_TEXTURE_SIZE: usize = 16384;
 /// GL_MAX_TEXTURE_SIZE (llvmpipe's 2D limit).
 pub const MAX_TEXTURE_SIZE: usize = 16384;
 /// Number of mipmap levels of the largest texture (log2(16384) + 1).
@@ -211,6 +215,8 @@ pub struct SamplerParams {
     pub wrap_s: Wrap,
     /// GL_TEXTURE_WRAP_T.
     pub wrap_t: Wrap,
+    /// GL_TEXTURE_WRAP_R (stored and reported only: there are no 3D textures).
+    pub wrap_r: Wrap,
     /// GL_TEXTURE_BORDER_COLOR (clamped to [0,1] when set, GL 1.5).
     pub border_color: [f32; 4],
     /// GL_TEXTURE_MIN_LOD.
@@ -239,6 +245,7 @@ impl Default for SamplerParams {
             mag_filter: Filter::Linear,
             wrap_s: Wrap::Repeat,
             wrap_t: Wrap::Repeat,
+            wrap_r: Wrap::Repeat,
             border_color: [0.0; 4],
             min_lod: -1000.0,
             max_lod: 1000.0,
@@ -364,6 +371,12 @@ pub struct TextureState {
     pub next_name: u32,
     /// The proxy textures (GL_PROXY_TEXTURE_1D/2D): level sizes only, no texels.
     pub proxies: [TextureObject; 2],
+    /// The active texture unit when it is one of GL_TEXTURE8..31: Mesa accepts units up to
+    /// its combined image-unit limit (32), which have no fixed-function state here. The
+    /// context's `active_texture` then keeps the last unit below 8 so nothing indexes out
+    /// of bounds; texture calls see the default (name 0) textures, as on a Mesa unit with
+    /// nothing bound, and glBindTexture/glTexEnv are ignored.
+    pub high_unit: Option<u32>,
 }
 
 impl Default for TextureState {
@@ -380,6 +393,7 @@ impl Default for TextureState {
                 TextureObject::new(Some(Target::Tex1D)),
                 TextureObject::new(Some(Target::Tex2D)),
             ],
+            high_unit: None,
         }
     }
 }

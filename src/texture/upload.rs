@@ -151,6 +151,8 @@ fn format_components(format: u32) -> Option<&'static [usize]> {
         GL_LUMINANCE_ALPHA => &[4, 3],
         GL_ALPHA => &[3],
         GL_RED => &[0],
+        // only for glGetTexImage, which refuses it for colour textures
+        GL_DEPTH_COMPONENT => &[0],
         GL_GREEN => &[1],
         GL_BLUE => &[2],
         _ => return None,
@@ -209,6 +211,7 @@ fn pixel_type(ty: u32) -> Option<Ty> {
 pub struct ClientFormat {
     comps: &'static [usize],
     ty: Ty,
+    depth: bool,
 }
 
 impl ClientFormat {
@@ -222,7 +225,16 @@ impl ClientFormat {
                 return Err(GlError::InvalidOperation);
             }
         }
-        Ok(ClientFormat { comps, ty: t })
+        Ok(ClientFormat {
+            comps,
+            ty: t,
+            depth: format == GL_DEPTH_COMPONENT,
+        })
+    }
+
+    /// GL_DEPTH_COMPONENT (valid for glGetTexImage, an error with colour textures).
+    pub fn is_depth(&self) -> bool {
+        self.depth
     }
 
     /// Bytes per pixel and bytes per element (for the alignment rule).
@@ -816,6 +828,9 @@ mod tests {
     #[test]
     fn intensity_reads_back_like_luminance() {
         // Mesa 22.3: glGetTexImage(GL_RGBA) of GL_INTENSITY* gives (I, 0, 0, 255)
-        assert_eq!(readback_rgba(BaseFormat::Intensity, [7, 7, 7, 7]), [7, 0, 0, 255]);
+        assert_eq!(
+            readback_rgba(BaseFormat::Intensity, [7, 7, 7, 7]),
+            [7, 0, 0, 255]
+        );
     }
 }
