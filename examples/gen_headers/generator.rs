@@ -64,6 +64,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
     ("fragment_ext.rs", Header::Glext),
+    ("textures_ext.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];

@@ -496,6 +496,10 @@ typedef void (APIENTRYP PFNGLBLENDEQUATIONSEPARATEEXTPROC) (GLenum modeRGB, GLen
 typedef void (APIENTRYP PFNGLBLENDEQUATIONEXTPROC) (GLenum mode);
 typedef void (APIENTRYP PFNGLBLENDCOLOREXTPROC) (GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 
+/* Function-pointer types: src/ffi/textures_ext.rs */
+typedef void (APIENTRYP PFNGLGENERATEMIPMAPPROC) (GLenum target);
+typedef void (APIENTRYP PFNGLGENERATEMIPMAPEXTPROC) (GLenum target);
+
 /* Function-pointer types: src/ffi/lighting_ext.rs */
 typedef void (APIENTRYP PFNGLFOGCOORDFPROC) (GLfloat coord);
 typedef void (APIENTRYP PFNGLFOGCOORDDPROC) (GLdouble coord);
@@ -547,6 +551,10 @@ GLAPI void APIENTRY glBlendFuncSeparateEXT (GLenum sfactorRGB, GLenum dfactorRGB
 GLAPI void APIENTRY glBlendEquationSeparateEXT (GLenum modeRGB, GLenum modeAlpha);
 GLAPI void APIENTRY glBlendEquationEXT (GLenum mode);
 GLAPI void APIENTRY glBlendColorEXT (GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+
+/* Functions: src/ffi/textures_ext.rs */
+GLAPI void APIENTRY glGenerateMipmap (GLenum target);
+GLAPI void APIENTRY glGenerateMipmapEXT (GLenum target);
 
 /* Functions: src/ffi/lighting_ext.rs */
 GLAPI void APIENTRY glFogCoordf (GLfloat coord);

@@ -26,6 +26,7 @@ pub mod proc_table;
 pub mod query;
 pub mod state;
 pub mod textures;
+pub mod textures_ext;
 pub mod types;
 
 use crate::context::{Context, GlError, GlResult};

@@ -32,7 +32,7 @@ fn image_target(target: GLenum) -> GlResult<(Target, bool)> {
 }
 
 /// A bindable target.
-fn bind_target(target: GLenum) -> GlResult<Target> {
+pub(crate) fn bind_target(target: GLenum) -> GlResult<Target> {
     match image_target(target)? {
         (t, false) => Ok(t),
         _ => Err(GlError::InvalidEnum),
@@ -47,7 +47,7 @@ fn check_level(level: GLint) -> GlResult<usize> {
     }
 }
 
-fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObject {
+pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObject {
     if proxy {
         &mut c.textures.proxies[target.index()]
     } else if c.textures.high_unit.is_some() {

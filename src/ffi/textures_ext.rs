@@ -1,0 +1,33 @@
+//! Texture calls beyond GL 1.5 that Mesa's OSMesa exports and GL 1.x programs use
+//! (`GL/glext.h`): glGenerateMipmap (GL 3.0 / ARB_framebuffer_object) and its EXT alias.
+#![allow(non_snake_case)]
+
+use super::textures::{bind_target, object_mut};
+use super::types::*;
+use super::with_ctx;
+use crate::context::error::GlError;
+use crate::texture::mipmap;
+
+/// glGenerateMipmap: rebuilds levels base+1..=max from the base level with the same
+/// filter GL_GENERATE_MIPMAP uses (Mesa's `st_generate_mipmap` serves both).
+#[no_mangle]
+pub extern "C" fn glGenerateMipmap(target: GLenum) {
+    with_ctx(|c| {
+        let t = bind_target(target)?;
+        c.check_outside_begin()?;
+        let obj = object_mut(c, t, false);
+        let p = obj.params;
+        let base = usize::try_from(p.base_level).map_err(|_| GlError::InvalidOperation)?;
+        if obj.levels.get(base).is_none_or(|l| l.is_none()) {
+            return Err(GlError::InvalidOperation);
+        }
+        mipmap::generate(&mut obj.levels, base, p.max_level.max(0) as usize);
+        Ok(())
+    })
+}
+
+/// glGenerateMipmapEXT (GL_EXT_framebuffer_object alias).
+#[no_mangle]
+pub extern "C" fn glGenerateMipmapEXT(target: GLenum) {
+    glGenerateMipmap(target)
+}
