@@ -1042,9 +1042,6 @@ GLAPI void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
 GLAPI void GLAPIENTRY glStencilMask(GLuint mask);
 GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
 
-/* Tokens: src/ffi/textures.rs */
-#define MAX_COMBINED_TEXTURE_UNITS               32
-
 /* Functions: src/ffi/textures.rs */
 GLAPI void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures);
 GLAPI void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures);

@@ -1162,7 +1162,7 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
 }
 
 /// Mesa's GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: the units glActiveTexture accepts.
-pub const MAX_COMBINED_TEXTURE_UNITS: usize = 32;
+const MAX_COMBINED_TEXTURE_UNITS: usize = 32;
 
 /// glClientActiveTexture.
 #[no_mangle]

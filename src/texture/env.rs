@@ -268,6 +268,9 @@ pub struct Combine {
     /// `emit_texenv` builds one vec4 combine for RGB and alpha (equal functions and
     /// Mesa's `args_match` on the sources as set, before [`Combine::canonicalise`]).
     pub one_vec4: bool,
+    /// [`Combine::add_signed_reassociates`] of RGB and alpha, kept up to date by
+    /// `derive` and `canonicalise` so that `apply` does not work it out per fragment.
+    pub reassoc: (bool, bool),
 }
 
 impl Combine {
@@ -301,8 +304,10 @@ impl Combine {
                 scale_a: env.alpha_scale,
                 color: env.color,
                 one_vec4: false,
+                reassoc: (true, true),
             };
             c.one_vec4 = c.compute_one_vec4();
+            c.reassoc = c.add_signed_reassociates();
             return c;
         }
         let d = TexEnv::default();
@@ -393,8 +398,10 @@ impl Combine {
             scale_a: 1.0,
             color: env.color,
             one_vec4: false,
+            reassoc: (true, true),
         };
         c.one_vec4 = c.compute_one_vec4();
+        c.reassoc = c.add_signed_reassociates();
         c
     }
 
@@ -411,7 +418,7 @@ impl Combine {
     ///   `fsat(fsat(x))` is `fsat(x)`), so its users are `fsat(v)` and/or `v·scale`:
     ///   two different users keep it as it is. With one vec4 combine (equal functions
     ///   and `args_match`) the RGB saturation decides for alpha too.
-    fn add_signed_reassociates(&self) -> (bool, bool) {
+    pub fn add_signed_reassociates(&self) -> (bool, bool) {
         use CombineFn as F;
         let alpha_op = |o: Operand| matches!(o, Operand::SrcAlpha | Operand::OneMinusSrcAlpha);
         let [r0, r1, _] = self.args_rgb;
@@ -453,6 +460,7 @@ impl Combine {
                 }
             }
         }
+        self.reassoc = self.add_signed_reassociates();
     }
 
     /// Evaluates the combiner. `textures` holds every unit's texture value for GL_TEXTUREn
@@ -492,7 +500,7 @@ impl Combine {
                 _ => None,
             }
         };
-        let (reassoc_rgb, reassoc_a) = self.add_signed_reassociates();
+        let (reassoc_rgb, reassoc_a) = self.reassoc;
         let eval = |f: CombineFn, args: &[Arg; 3], ch: usize, reassoc: bool| -> f32 {
             let mut a = [0.0f32; 3];
             for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
