@@ -91,6 +91,10 @@ pub const EXTENSIONS: &str = concat!(
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list.
 #[no_mangle]
 pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
+    // Without a current context GL calls do nothing and return 0, as in Mesa.
+    if super::current().is_null() {
+        return std::ptr::null();
+    }
     let s: &'static [u8] = match name {
         GL_VENDOR => b"softgl\0",
         GL_RENDERER => b"softgl software rasterizer\0",
