@@ -161,6 +161,20 @@ fn dodeca_verts() -> Vec<V3> {
     v
 }
 
+/// Face normals of the icosahedron: the vertex directions of its dual dodecahedron,
+/// the cube corners and the cyclic permutations of (0, ±φ, ±1/φ).
+fn icosa_normals() -> Vec<V3> {
+    let mut v = signs(1.0, 1.0, 1.0);
+    v.extend(cyclic(signs(0.0, phi(), 1.0 / phi())));
+    v
+}
+
+/// Face normals of the dodecahedron: its dual icosahedron's vertex directions,
+/// the cyclic permutations of (0, ±φ, ±1).
+fn dodeca_normals() -> Vec<V3> {
+    cyclic(signs(0.0, phi(), 1.0))
+}
+
 macro_rules! solid_pair {
     ($(#[$doc:meta] $solid:ident, $wire:ident, $faces:expr;)*) => {$(
         #[$doc]
@@ -183,9 +197,9 @@ solid_pair! {
     /// Octahedron of radius 1.
     glutSolidOctahedron, glutWireOctahedron, faces(&octa_verts(), &signs(1.0, 1.0, 1.0));
     /// Icosahedron of radius 1.
-    glutSolidIcosahedron, glutWireIcosahedron, faces(&icosa_verts(), &dodeca_verts());
+    glutSolidIcosahedron, glutWireIcosahedron, faces(&icosa_verts(), &icosa_normals());
     /// Dodecahedron of radius √3.
-    glutSolidDodecahedron, glutWireDodecahedron, faces(&dodeca_verts(), &icosa_verts());
+    glutSolidDodecahedron, glutWireDodecahedron, faces(&dodeca_verts(), &dodeca_normals());
     /// Rhombic dodecahedron (freeglut), radius 1.
     glutSolidRhombicDodecahedron, glutWireRhombicDodecahedron,
         faces(&rhombic_verts(), &cyclic(signs(1.0, 1.0, 0.0)));
@@ -465,8 +479,11 @@ mod tests {
             count(faces(&octa_verts(), &signs(1.0, 1.0, 1.0))),
             vec![3; 8]
         );
-        assert_eq!(count(faces(&icosa_verts(), &dodeca_verts())), vec![3; 20]);
-        assert_eq!(count(faces(&dodeca_verts(), &icosa_verts())), vec![5; 12]);
+        assert_eq!(count(faces(&icosa_verts(), &icosa_normals())), vec![3; 20]);
+        assert_eq!(
+            count(faces(&dodeca_verts(), &dodeca_normals())),
+            vec![5; 12]
+        );
         assert_eq!(
             count(faces(&rhombic_verts(), &cyclic(signs(1.0, 1.0, 0.0)))),
             vec![4; 12]
@@ -475,7 +492,10 @@ mod tests {
 
     #[test]
     fn faces_wind_counter_clockwise_from_outside() {
-        for (n, f) in faces(&dodeca_verts(), &icosa_verts()) {
+        for (n, f) in faces(&dodeca_verts(), &dodeca_normals())
+            .into_iter()
+            .chain(faces(&icosa_verts(), &icosa_normals()))
+        {
             let area = cross(sub(f[1], f[0]), sub(f[2], f[0]));
             assert!(dot(area, n) > 0.0);
         }
