@@ -141,40 +141,43 @@ enum Gl {
 
 /// Compiles `tutorials/NAME.c` against softglut and the chosen GL.
 fn compile(name: &str, gl: Gl) -> PathBuf {
-    let glut = glut_dir();
     let bin = work_dir().join("bin");
     fs::create_dir_all(&bin).expect("mkdir bin");
-    let out = bin.join(format!("{name}.{gl:?}").to_lowercase());
+    let src = root().join("tutorials").join(format!("{name}.c"));
+    build(&src, &bin.join(format!("{name}.{gl:?}").to_lowercase()), gl)
+}
+
+/// Compiles a C file against softglut and the chosen GL into `out`.
+fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
+    let glut = glut_dir();
     let mut cmd = Command::new(cc());
-    cmd.arg(root().join("tutorials").join(format!("{name}.c")))
+    cmd.arg(src)
         .args(["-O1", "-Wall", "-Werror", "-o"])
-        .arg(&out)
-        .arg(format!("-I{}", root().join("glut/include").display()));
+        .arg(out)
+        .arg(format!("-I{}", root().join("glut/include").display()))
+        .arg(format!("-L{}", glut.display()))
+        .arg("-lsoftglut");
     match gl {
         Gl::Softgl => {
             let sg = softgl_dir();
             cmd.arg(format!("-I{}", root().join("include").display()))
-                .arg(format!("-L{}", glut.display()))
-                .arg("-lsoftglut")
                 .arg(format!("-L{}", sg.display()))
                 .arg("-lsoftgl")
                 .arg(format!("-Wl,-rpath,{}:{}", glut.display(), sg.display()));
         }
         Gl::Osmesa => {
-            cmd.arg(format!("-L{}", glut.display()))
-                .arg("-lsoftglut")
-                .arg("-lOSMesa")
+            cmd.arg("-lOSMesa")
                 .arg(format!("-Wl,-rpath,{}", glut.display()));
         }
     }
-    cmd.arg("-lm");
-    let o = cmd.output().expect("run cc");
+    let o = cmd.arg("-lm").output().expect("run cc");
     assert!(
         o.status.success(),
-        "compiling {name} for {gl:?} failed:\n{}",
+        "compiling {} for {gl:?} failed:\n{}",
+        src.display(),
         String::from_utf8_lossy(&o.stderr)
     );
-    out
+    out.to_path_buf()
 }
 
 /// Runs a tutorial binary into a fresh folder; returns the sorted PNG paths.
@@ -558,4 +561,56 @@ fn headers_compile_as_c89_and_cpp() {
             .expect("c++");
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }
+}
+
+/// Compiles and runs a C snippet against softglut and the chosen GL; returns the first
+/// frame (RGB).
+fn run_snippet(name: &'static str, code: &str, gl: Gl) -> image::RgbImage {
+    let dir = work_dir().join("snippets");
+    fs::create_dir_all(&dir).unwrap();
+    let src = dir.join(format!("{name}.c"));
+    fs::write(&src, code).unwrap();
+    let bin = build(&src, &dir.join(format!("{name}.{gl:?}").to_lowercase()), gl);
+    let t = Tutorial {
+        name,
+        frames: 1,
+        keys: "",
+        max_diff: 0,
+    };
+    let files = run(&bin, &t, &dir.join(format!("{name}.{gl:?}.out")));
+    image::open(&files[0]).unwrap().to_rgb8()
+}
+
+/// Bitmap fonts go through glBitmap, found with OSMesaGetProcAddress: Mesa draws the
+/// text; on a GL without glBitmap (softgl today) the call does nothing.
+#[test]
+fn bitmap_font_uses_glbitmap_when_the_gl_has_it() {
+    if !Path::new("/usr/include/GL/osmesa.h").exists() {
+        return;
+    }
+    let text = |raster: &str| {
+        format!(
+            "#include <GL/freeglut.h>\n\
+             static void display(void) {{\n\
+               glClear(GL_COLOR_BUFFER_BIT);\n\
+               glMatrixMode(GL_PROJECTION); glLoadIdentity(); gluOrtho2D(0, 64, 0, 32);\n\
+               glColor3f(1, 1, 1);\n\
+               {raster}\n\
+               glutBitmapString(GLUT_BITMAP_9_BY_15, (const unsigned char *)\"HI\");\n\
+               if (glutBitmapLength(GLUT_BITMAP_9_BY_15, (const unsigned char *)\"HI\") != 18) glClearColor(1, 0, 0, 1);\n\
+               if (glutBitmapHeight(GLUT_BITMAP_8_BY_13) != 13) glClearColor(1, 0, 0, 1);\n\
+               glFlush();\n\
+             }}\n\
+             int main(int c, char **v) {{ glutInit(&c, v); glutInitWindowSize(64, 32);\n\
+               glutCreateWindow(\"t\"); glutDisplayFunc(display); glutMainLoop(); return 0; }}\n"
+        )
+    };
+    let mesa = run_snippet("bitmap", &text("glRasterPos2i(4, 8);"), Gl::Osmesa);
+    let lit = mesa.pixels().filter(|p| p[0] == 255 && p[1] == 255).count();
+    assert!(lit > 20, "Mesa drew {lit} text pixels");
+    let sg = run_snippet("bitmap_nogl", &text(""), Gl::Softgl);
+    assert!(
+        sg.pixels().all(|p| p.0 == [0, 0, 0]),
+        "softgl: no glBitmap, no text"
+    );
 }

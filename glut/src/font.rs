@@ -49,7 +49,7 @@ fn font_index(font: *const c_void) -> Option<usize> {
     if addr <= 8 {
         return Some(addr);
     }
-    if addr % std::mem::align_of::<FontId>() != 0 {
+    if !addr.is_multiple_of(std::mem::align_of::<FontId>()) {
         return None;
     }
     let ours = [
@@ -70,7 +70,7 @@ fn font_index(font: *const c_void) -> Option<usize> {
     // i.e. the address of one of the FontId symbols above (possibly the executable's
     // copy-relocated copy, which holds the same value); reading one usize is valid.
     let v = unsafe { *font.cast::<usize>() };
-    v.checked_sub(MAGIC).filter(|&i| i <= 8).map(|i| i as usize)
+    v.checked_sub(MAGIC).filter(|&i| i <= 8)
 }
 
 /// Segments of the sixteen-segment grid: x and y in {0, 1, 2} (y up, 0 = baseline).

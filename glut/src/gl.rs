@@ -44,6 +44,7 @@ pub const GL_PACK_ALIGNMENT: GLenum = 0x0D05;
 pub const GL_MODELVIEW_MATRIX: GLenum = 0x0BA6;
 pub const GL_PROJECTION_MATRIX: GLenum = 0x0BA7;
 pub const GL_VIEWPORT: GLenum = 0x0BA2;
+pub const GL_EXTENSIONS: GLenum = 0x1F03;
 
 pub const OSMESA_RGBA: GLenum = GL_RGBA;
 
@@ -84,6 +85,7 @@ extern "C" {
     pub fn glOrtho(l: GLdouble, r: GLdouble, b: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble);
     pub fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei);
     pub fn glFinish();
+    pub fn glGetString(name: GLenum) -> *const GLubyte;
     pub fn glGetIntegerv(pname: GLenum, params: *mut GLint);
     pub fn glPixelStorei(pname: GLenum, param: GLint);
     pub fn glTexImage1D(

@@ -312,8 +312,8 @@ pub extern "C" fn gluErrorString(code: GLenum) -> *const u8 {
 #[no_mangle]
 pub extern "C" fn gluGetString(name: GLenum) -> *const u8 {
     match name {
-        100800 => b"1.3\0".as_ptr(),
-        100801 => b"\0".as_ptr(),
+        100800 => c"1.3".as_ptr().cast(),
+        100801 => c"".as_ptr().cast(),
         _ => std::ptr::null(),
     }
 }

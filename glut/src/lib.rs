@@ -11,6 +11,10 @@
 //! GL and OSMesa are called through undefined symbols (see [`gl`]), so the program's
 //! link line decides which GL runs: `-lsoftglut -lsoftgl` or `-lsoftglut -lOSMesa`.
 
+// The exported functions are C entry points: they take C's raw pointers by contract
+// (documented per function, checked for NULL) and cannot be `unsafe fn` for C callers.
+#![allow(clippy::not_unsafe_ptr_arg_deref)]
+
 pub mod config;
 pub mod font;
 pub mod gl;

@@ -79,7 +79,6 @@ struct State {
     timer_seq: u64,
     now_ms: i32,
     leave: bool,
-    in_loop: bool,
     action_on_close: c_int,
 }
 
@@ -97,7 +96,6 @@ impl State {
             timer_seq: 0,
             now_ms: 0,
             leave: false,
-            in_loop: false,
             action_on_close: 0,
         }
     }
@@ -440,10 +438,22 @@ pub extern "C" fn glutDeviceGet(what: c_uint) -> c_int {
     }
 }
 
-/// `glutExtensionSupported`: answers from the GL extension string.
+/// `glutExtensionSupported`: whether `name` is a word of the GL extension string.
 #[no_mangle]
-pub extern "C" fn glutExtensionSupported(_name: *const c_char) -> c_int {
-    0
+pub extern "C" fn glutExtensionSupported(name: *const c_char) -> c_int {
+    if name.is_null() {
+        return 0;
+    }
+    // SAFETY: a non-null name is a NUL-terminated C string (GLUT's contract).
+    let name = unsafe { CStr::from_ptr(name) }.to_bytes();
+    // SAFETY: plain GL query; the result is NULL or a static NUL-terminated string.
+    let ext = unsafe { gl::glGetString(gl::GL_EXTENSIONS) };
+    if ext.is_null() || name.is_empty() || name.contains(&b' ') {
+        return 0;
+    }
+    // SAFETY: checked non-null above; GL extension strings are NUL-terminated.
+    let ext = unsafe { CStr::from_ptr(ext.cast::<c_char>()) }.to_bytes();
+    c_int::from(ext.split(|&b| b == b' ').any(|w| w == name))
 }
 
 /// `glutGet`.
@@ -625,7 +635,6 @@ pub fn write_png(path: &std::path::Path, rgba: &[u8], w: u32, h: u32) -> image::
 #[no_mangle]
 pub extern "C" fn glutMainLoop() {
     let (frames, step) = with(|s| {
-        s.in_loop = true;
         s.leave = false;
         let c = s.config();
         (c.frames, c.step_ms)
@@ -665,10 +674,9 @@ pub extern "C" fn glutMainLoop() {
             f();
         }
     }
-    with(|s| s.in_loop = false);
 }
 
-/// `glutMainLoopEvent` (freeglut): one frame of the main loop's work without display.
+/// `glutMainLoopEvent` (freeglut): fires the due timers (there are no other events).
 #[no_mangle]
 pub extern "C" fn glutMainLoopEvent() {
     fire_timers();
