@@ -19,7 +19,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 use std::time::SystemTime;
 
 /// One tutorial run: program, frames, keys fed, and the allowed difference.
@@ -139,12 +139,21 @@ enum Gl {
     Osmesa,
 }
 
-/// Compiles `tutorials/NAME.c` against softglut and the chosen GL.
+/// Compiles `tutorials/NAME.c` against softglut and the chosen GL, once per test run
+/// (tests running in parallel share the binary instead of rewriting it).
 fn compile(name: &str, gl: Gl) -> PathBuf {
+    static BUILT: Mutex<BTreeMap<String, PathBuf>> = Mutex::new(BTreeMap::new());
+    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
+    let key = format!("{name}.{gl:?}").to_lowercase();
+    if let Some(p) = built.get(&key) {
+        return p.clone();
+    }
     let bin = work_dir().join("bin");
     fs::create_dir_all(&bin).expect("mkdir bin");
     let src = root().join("tutorials").join(format!("{name}.c"));
-    build(&src, &bin.join(format!("{name}.{gl:?}").to_lowercase()), gl)
+    let out = build(&src, &bin.join(&key), gl);
+    built.insert(key, out.clone());
+    out
 }
 
 /// Compiles a C file against softglut and the chosen GL into `out`.
