@@ -8,12 +8,16 @@
 #   PREFIX/include/GL/{gl.h,glext.h,osmesa.h}
 #   PREFIX/lib/pkgconfig/softgl.pc        -I/-L/-l/-rpath for libsoftgl.so
 #   PREFIX/lib/pkgconfig/osmesa.pc        Debian's osmesa.pc, pointing at lib/osmesa
+#   PREFIX/lib/libsoftglut.so             GLUT + GLU (the `glut/` workspace member)
+#   PREFIX/include/GL/{glut,freeglut,glu}.h
+#   PREFIX/lib/pkgconfig/softgl-glut.pc   -lsoftglut -lsoftgl, for GLUT programs
 #
 # A program linked against Mesa's OSMesa then runs on softgl with
 #   LD_LIBRARY_PATH=PREFIX/lib/osmesa ./prog
 #
 # SOFTGL_LIB=/path/to/libsoftgl.so installs that file instead of building (the tests
-# use it to install the library `cargo test` just built).
+# use it to install the library `cargo test` just built); SOFTGLUT_LIB likewise names
+# libsoftglut.so (default: next to SOFTGL_LIB; GLUT is skipped when it is absent).
 set -euo pipefail
 
 usage() {
@@ -32,9 +36,11 @@ prefix="$(cd "$prefix" && pwd)"   # .pc files need an absolute prefix
 
 if [ -n "${SOFTGL_LIB:-}" ]; then
   lib="$SOFTGL_LIB"
+  glut="${SOFTGLUT_LIB:-$(dirname "$lib")/libsoftglut.so}"
 else
-  (cd "$repo" && cargo build --release)
+  (cd "$repo" && cargo build --release --workspace)
   lib="$target/release/libsoftgl.so"
+  glut="$target/release/libsoftglut.so"
 fi
 [ -f "$lib" ] || { echo "install.sh: $lib does not exist" >&2; exit 1; }
 
@@ -59,9 +65,19 @@ printf '/* GNU ld script: link against the softgl drop-in as libOSMesa.so.8 */\n
 install -m 0644 "$repo"/include/GL/gl.h "$repo"/include/GL/glext.h "$repo"/include/GL/osmesa.h \
   "$prefix/include/GL/"
 
+if [ -f "$glut" ]; then
+  install -m 0755 "$glut" "$prefix/lib/.libsoftglut.so.new"
+  mv -f "$prefix/lib/.libsoftglut.so.new" "$prefix/lib/libsoftglut.so"
+  install -m 0644 "$repo"/glut/include/GL/glut.h "$repo"/glut/include/GL/freeglut.h \
+    "$repo"/glut/include/GL/glu.h "$prefix/include/GL/"
+  pcs="softgl osmesa softgl-glut"
+else
+  pcs="softgl osmesa"
+fi
+
 # sed replacement text: escape \, & and the | delimiter.
 esc="$(printf '%s' "$prefix" | sed -e 's/[\\&|]/\\&/g')"
-for pc in softgl osmesa; do
+for pc in $pcs; do
   sed -e "s|@PREFIX@|$esc|g" -e "s|@VERSION@|$version|g" \
     "$repo/pkgconfig/$pc.pc.in" >"$prefix/lib/pkgconfig/$pc.pc"
 done
@@ -69,3 +85,6 @@ done
 echo "installed softgl $version into $prefix"
 echo "  run an OSMesa program on softgl: LD_LIBRARY_PATH=$prefix/lib/osmesa ./prog"
 echo "  build against softgl:            PKG_CONFIG_PATH=$prefix/lib/pkgconfig pkg-config --cflags --libs softgl"
+[ -f "$prefix/lib/libsoftglut.so" ] &&
+  echo "  build a GLUT program:            PKG_CONFIG_PATH=$prefix/lib/pkgconfig pkg-config --cflags --libs softgl-glut"
+true

@@ -5,6 +5,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
 cargo fmt --all -- --check
-cargo clippy --release --all-targets -- -D warnings
-cargo build --release
-cargo test --release
+cargo clippy --release --workspace --all-targets -- -D warnings
+cargo build --release --workspace
+cargo test --release --workspace

@@ -1,0 +1,625 @@
+//! softglut (the `glut/` workspace member): GLUT tutorials run headless.
+//!
+//! - `libsoftglut.so` is built with cargo (same profile as this test);
+//! - every program in `tutorials/` is compiled twice against the same GLUT library,
+//!   once linked with `-lsoftgl`, once with Mesa's `-lOSMesa`; both run with the same
+//!   `SOFTGLUT_*` settings (frames, keys) and their PNG frames are compared pixel by
+//!   pixel (`TUTORIALS` gives each one's frame count, keys and allowed difference);
+//! - the softgl build runs twice and must write byte-identical files;
+//! - `scripts/install.sh` installs GLUT, and `cc prog.c $(pkg-config --cflags --libs
+//!   softgl-glut)` builds an unchanged tutorial that writes the configured frames;
+//! - the hand-written headers `glut/include/GL/{glut,freeglut,glu}.h` declare exactly
+//!   what `libsoftglut.so` exports, with freeglut's and GLU's values, and compile as
+//!   C89 and C++.
+//!
+//! Everything is built under `target/glut/`. `SOFTGLUT_TEST_SAVE=1` keeps a side-by-side
+//! diff picture for every differing frame in `target/glut/diff/`.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Mutex, OnceLock};
+use std::time::SystemTime;
+
+/// One tutorial run: program, frames, keys fed, and the allowed difference.
+struct Tutorial {
+    name: &'static str,
+    frames: u32,
+    keys: &'static str,
+    /// Largest allowed channel difference against Mesa (0: bit-identical).
+    max_diff: u8,
+}
+
+/// The tutorials and how they are driven. Every one is bit-identical to OSMesa.
+const TUTORIALS: &[Tutorial] = &[
+    Tutorial {
+        name: "cube",
+        frames: 6,
+        keys: "1:UP,2:RIGHT,3:+,4:l,5:s",
+        max_diff: 0,
+    },
+    Tutorial {
+        name: "texture",
+        frames: 6,
+        keys: "3:m",
+        max_diff: 0,
+    },
+    Tutorial {
+        name: "fog",
+        frames: 6,
+        keys: "2:f,3:+,4:f,5:-",
+        max_diff: 0,
+    },
+    Tutorial {
+        name: "blend",
+        frames: 6,
+        keys: "2:a,3:b,4:b,5:A",
+        max_diff: 0,
+    },
+    Tutorial {
+        name: "robot",
+        frames: 6,
+        keys: "1:s,1:s,2:e,2:e,3:f,4:r,5:E",
+        max_diff: 0,
+    },
+];
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `target/<profile>`: the test executable lives in `target/<profile>/deps/`.
+fn profile_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("current_exe");
+    exe.parent()
+        .and_then(Path::parent)
+        .expect("profile folder")
+        .to_path_buf()
+}
+
+fn mtime(p: &Path) -> Option<SystemTime> {
+    fs::metadata(p).and_then(|m| m.modified()).ok()
+}
+
+/// The freshest `libsoftgl.so` folder: `SOFTGL_LIB_DIR`, else the newer of
+/// `target/<profile>/` and `target/<profile>/deps/` (as in tests/osmesa_compare.rs).
+fn softgl_dir() -> PathBuf {
+    if let Some(d) = std::env::var_os("SOFTGL_LIB_DIR") {
+        return PathBuf::from(d);
+    }
+    let profile = profile_dir();
+    let up = profile.join("libsoftgl.so");
+    let dep = profile.join("deps").join("libsoftgl.so");
+    match (mtime(&up), mtime(&dep)) {
+        (Some(u), Some(d)) if d > u => profile.join("deps"),
+        (None, Some(_)) => profile.join("deps"),
+        _ => profile,
+    }
+}
+
+/// Builds `libsoftglut.so` once (cargo, this test's profile); returns its folder.
+fn glut_dir() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let profile = profile_dir();
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        let mut cmd = Command::new(cargo);
+        cmd.current_dir(root()).args(["build", "-p", "softglut"]);
+        if profile.file_name().and_then(|n| n.to_str()) == Some("release") {
+            cmd.arg("--release");
+        }
+        let target = profile.parent().expect("target dir");
+        cmd.env("CARGO_TARGET_DIR", target);
+        let status = cmd.status().expect("run cargo build -p softglut");
+        assert!(status.success(), "cargo build -p softglut failed");
+        assert!(profile.join("libsoftglut.so").exists());
+        profile
+    })
+}
+
+/// `target/glut/`.
+fn work_dir() -> PathBuf {
+    let d = profile_dir()
+        .parent()
+        .map(|t| t.join("glut"))
+        .unwrap_or_else(|| root().join("target/glut"));
+    fs::create_dir_all(&d).expect("mkdir target/glut");
+    d
+}
+
+fn cc() -> String {
+    std::env::var("CC").unwrap_or_else(|_| "cc".into())
+}
+
+/// Which GL a tutorial is linked with.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Gl {
+    Softgl,
+    Osmesa,
+}
+
+/// Compiles `tutorials/NAME.c` against softglut and the chosen GL, once per test run
+/// (tests running in parallel share the binary instead of rewriting it).
+fn compile(name: &str, gl: Gl) -> PathBuf {
+    static BUILT: Mutex<BTreeMap<String, PathBuf>> = Mutex::new(BTreeMap::new());
+    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
+    let key = format!("{name}.{gl:?}").to_lowercase();
+    if let Some(p) = built.get(&key) {
+        return p.clone();
+    }
+    let bin = work_dir().join("bin");
+    fs::create_dir_all(&bin).expect("mkdir bin");
+    let src = root().join("tutorials").join(format!("{name}.c"));
+    let out = build(&src, &bin.join(&key), gl);
+    built.insert(key, out.clone());
+    out
+}
+
+/// Compiles a C file against softglut and the chosen GL into `out`.
+fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
+    let glut = glut_dir();
+    let mut cmd = Command::new(cc());
+    cmd.arg(src)
+        .args(["-O1", "-Wall", "-Werror", "-o"])
+        .arg(out)
+        .arg(format!("-I{}", root().join("glut/include").display()))
+        .arg(format!("-L{}", glut.display()))
+        .arg("-lsoftglut");
+    match gl {
+        Gl::Softgl => {
+            let sg = softgl_dir();
+            cmd.arg(format!("-I{}", root().join("include").display()))
+                .arg(format!("-L{}", sg.display()))
+                .arg("-lsoftgl")
+                .arg(format!("-Wl,-rpath,{}:{}", glut.display(), sg.display()));
+        }
+        Gl::Osmesa => {
+            cmd.arg("-lOSMesa")
+                .arg(format!("-Wl,-rpath,{}", glut.display()));
+        }
+    }
+    let o = cmd.arg("-lm").output().expect("run cc");
+    assert!(
+        o.status.success(),
+        "compiling {} for {gl:?} failed:\n{}",
+        src.display(),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    out.to_path_buf()
+}
+
+/// Runs a tutorial binary into a fresh folder; returns the sorted PNG paths.
+fn run(bin: &Path, t: &Tutorial, out: &Path) -> Vec<PathBuf> {
+    let _ = fs::remove_dir_all(out);
+    let o = Command::new(bin)
+        .env("SOFTGLUT_FRAMES", t.frames.to_string())
+        .env("SOFTGLUT_OUTPUT", out)
+        .env("SOFTGLUT_KEYS", t.keys)
+        .env("LP_NUM_THREADS", "1")
+        .env_remove("SOFTGLUT_SIZE")
+        .env_remove("SOFTGLUT_STEP_MS")
+        .output()
+        .expect("run tutorial");
+    assert!(
+        o.status.success(),
+        "{} exited with {}:\n{}",
+        bin.display(),
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let mut files: Vec<PathBuf> = fs::read_dir(out)
+        .expect("output folder")
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    files
+}
+
+/// (% identical pixels, largest channel difference) between two PNG files.
+fn compare(a: &Path, b: &Path) -> (f64, u8) {
+    let ia = image::open(a).expect("decode png").to_rgb8();
+    let ib = image::open(b).expect("decode png").to_rgb8();
+    assert_eq!(ia.dimensions(), ib.dimensions(), "{}", a.display());
+    let mut same = 0usize;
+    let mut max = 0u8;
+    for (pa, pb) in ia.pixels().zip(ib.pixels()) {
+        let d = (0..3).map(|c| pa[c].abs_diff(pb[c])).max().unwrap_or(0);
+        same += usize::from(d == 0);
+        max = max.max(d);
+    }
+    let total = ia.pixels().len().max(1);
+    (100.0 * same as f64 / total as f64, max)
+}
+
+fn tutorial_test(t: &Tutorial) {
+    if !Path::new("/usr/include/GL/osmesa.h").exists() {
+        eprintln!("{}: skipped, Mesa's OSMesa is not installed", t.name);
+        return;
+    }
+    let dir = work_dir().join("out").join(t.name);
+    let sg = compile(t.name, Gl::Softgl);
+    let mesa = compile(t.name, Gl::Osmesa);
+    let a = run(&sg, t, &dir.join("softgl"));
+    let a2 = run(&sg, t, &dir.join("softgl.again"));
+    let b = run(&mesa, t, &dir.join("osmesa"));
+    let names = |v: &[PathBuf]| -> Vec<String> {
+        v.iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect()
+    };
+    let want: Vec<String> = (0..t.frames).map(|f| format!("frame_{f:04}.png")).collect();
+    assert_eq!(names(&a), want, "{}: softgl frames", t.name);
+    assert_eq!(names(&b), want, "{}: OSMesa frames", t.name);
+    assert_eq!(names(&a2), want, "{}: second run frames", t.name);
+    for (x, y) in a.iter().zip(&a2) {
+        assert!(
+            fs::read(x).unwrap() == fs::read(y).unwrap(),
+            "{}: two runs differ in {}",
+            t.name,
+            x.display()
+        );
+    }
+    let mut failures = Vec::new();
+    for (x, y) in a.iter().zip(&b) {
+        let (pct, max) = compare(x, y);
+        let frame = x.file_name().unwrap().to_string_lossy();
+        println!("{:8} {frame}: {pct:8.4}% identical, max diff {max}", t.name);
+        if max > t.max_diff {
+            failures.push(format!("{frame}: {pct:.4}% identical, max diff {max}"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} differs from OSMesa beyond max diff {}:\n{}",
+        t.name,
+        t.max_diff,
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn tutorial_cube() {
+    tutorial_test(&TUTORIALS[0]);
+}
+
+#[test]
+fn tutorial_texture() {
+    tutorial_test(&TUTORIALS[1]);
+}
+
+#[test]
+fn tutorial_fog() {
+    tutorial_test(&TUTORIALS[2]);
+}
+
+#[test]
+fn tutorial_blend() {
+    tutorial_test(&TUTORIALS[3]);
+}
+
+#[test]
+fn tutorial_robot() {
+    tutorial_test(&TUTORIALS[4]);
+}
+
+#[test]
+fn every_tutorial_is_in_the_table() {
+    let mut on_disk: Vec<String> = fs::read_dir(root().join("tutorials"))
+        .expect("tutorials/")
+        .flatten()
+        .filter_map(|e| {
+            let p = e.path();
+            (p.extension()? == "c").then(|| p.file_stem().unwrap().to_string_lossy().into())
+        })
+        .collect();
+    on_disk.sort();
+    let mut listed: Vec<String> = TUTORIALS.iter().map(|t| t.name.to_string()).collect();
+    listed.sort();
+    assert_eq!(on_disk, listed);
+}
+
+/// The environment overrides: window size, step, frame count; glutLeaveMainLoop via
+/// Esc is not used (the tutorials exit(0) there), so frames stop at the count.
+#[test]
+fn size_override_and_frame_count() {
+    let sg = compile("cube", Gl::Softgl);
+    let out = work_dir().join("out").join("size");
+    let _ = fs::remove_dir_all(&out);
+    let status = Command::new(&sg)
+        .env("SOFTGLUT_FRAMES", "3")
+        .env("SOFTGLUT_OUTPUT", &out)
+        .env("SOFTGLUT_SIZE", "64x48")
+        .env("SOFTGLUT_STEP_MS", "100")
+        .status()
+        .expect("run cube");
+    assert!(status.success());
+    let mut files: Vec<_> = fs::read_dir(&out)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 3);
+    let img = image::open(&files[0]).unwrap();
+    assert_eq!((img.width(), img.height()), (64, 48));
+    // Esc calls exit(0) in the tutorial: the frames before it are written.
+    let out2 = work_dir().join("out").join("esc");
+    let _ = fs::remove_dir_all(&out2);
+    let status = Command::new(&sg)
+        .env("SOFTGLUT_FRAMES", "10")
+        .env("SOFTGLUT_OUTPUT", &out2)
+        .env("SOFTGLUT_KEYS", "2:ESC")
+        .status()
+        .expect("run cube");
+    assert!(status.success());
+    assert_eq!(fs::read_dir(&out2).unwrap().count(), 2);
+}
+
+fn have(tool: &str) -> bool {
+    Command::new(tool)
+        .arg("--version")
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+/// `install.sh` + `pkg-config --cflags --libs softgl-glut` build an unchanged tutorial.
+#[test]
+fn pkg_config_builds_a_tutorial() {
+    if !have("pkg-config") {
+        eprintln!("pkg_config_builds_a_tutorial: skipped, no pkg-config");
+        return;
+    }
+    let glut = glut_dir();
+    let prefix = work_dir().join("prefix");
+    let status = Command::new("bash")
+        .arg(root().join("scripts/install.sh"))
+        .arg(&prefix)
+        .env("SOFTGL_LIB", softgl_dir().join("libsoftgl.so"))
+        .env("SOFTGLUT_LIB", glut.join("libsoftglut.so"))
+        .status()
+        .expect("run install.sh");
+    assert!(status.success(), "install.sh failed");
+    let pc = Command::new("pkg-config")
+        .args(["--cflags", "--libs", "softgl-glut"])
+        .env("PKG_CONFIG_PATH", prefix.join("lib/pkgconfig"))
+        .output()
+        .expect("pkg-config");
+    assert!(pc.status.success(), "pkg-config softgl-glut failed");
+    let flags = String::from_utf8(pc.stdout).unwrap();
+    let bin = work_dir().join("bin").join("robot.pkgconfig");
+    let status = Command::new(cc())
+        .arg(root().join("tutorials/robot.c"))
+        .arg("-o")
+        .arg(&bin)
+        .args(flags.split_whitespace())
+        .status()
+        .expect("cc");
+    assert!(
+        status.success(),
+        "cc tutorials/robot.c $(pkg-config ...) failed"
+    );
+    let t = Tutorial {
+        name: "robot",
+        frames: 2,
+        keys: "1:s",
+        max_diff: 0,
+    };
+    let files = run(&bin, &t, &work_dir().join("out").join("pkgconfig"));
+    assert_eq!(files.len(), 2);
+    // The installed GLUT draws what the build-tree GLUT draws.
+    let tree = run(
+        &compile("robot", Gl::Softgl),
+        &t,
+        &work_dir().join("out/pkgconfig.tree"),
+    );
+    for (x, y) in files.iter().zip(&tree) {
+        assert!(
+            fs::read(x).unwrap() == fs::read(y).unwrap(),
+            "{}",
+            x.display()
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Headers
+
+/// Functions declared (`GLUTAPI`/`GLUAPI` prototypes) in the hand-written headers.
+fn declared() -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for h in ["glut.h", "freeglut.h", "glu.h"] {
+        let text = fs::read_to_string(root().join("glut/include/GL").join(h)).expect("header");
+        for line in text.lines() {
+            let Some(rest) = line
+                .strip_prefix("GLUTAPI ")
+                .or(line.strip_prefix("GLUAPI "))
+            else {
+                continue;
+            };
+            // Prototypes only (the font handles are data: `GLUTAPI void *name;`).
+            let Some((head, _)) = rest.split_once('(') else {
+                continue;
+            };
+            let name = head
+                .rsplit([' ', '*'])
+                .next()
+                .unwrap_or("")
+                .trim_end_matches(';');
+            assert!(out.insert(name.to_string()), "{name} declared twice");
+        }
+    }
+    out
+}
+
+/// `#define NAME VALUE` pairs with integer values.
+fn int_defines(text: &str) -> BTreeMap<String, i64> {
+    let mut out = BTreeMap::new();
+    for line in text.lines() {
+        let mut w = line.split_whitespace();
+        if w.next() != Some("#define") {
+            continue;
+        }
+        let (Some(n), Some(v)) = (w.next(), w.next()) else {
+            continue;
+        };
+        let v = match v.strip_prefix("0x") {
+            Some(h) => i64::from_str_radix(h, 16).ok(),
+            None => v.parse().ok(),
+        };
+        if let Some(v) = v {
+            out.insert(n.to_string(), v);
+        }
+    }
+    out
+}
+
+#[test]
+fn headers_match_the_library_and_freeglut() {
+    let lib = glut_dir().join("libsoftglut.so");
+    let nm = Command::new("nm")
+        .args(["-D", "--defined-only"])
+        .arg(&lib)
+        .output()
+        .expect("run nm");
+    assert!(nm.status.success());
+    let text = String::from_utf8_lossy(&nm.stdout);
+    let mut functions = BTreeSet::new();
+    let mut data = BTreeSet::new();
+    for l in text.lines() {
+        let f: Vec<&str> = l.split_whitespace().collect();
+        if f.len() == 3 && (f[2].starts_with("glut") || f[2].starts_with("glu")) {
+            if f[1] == "T" {
+                functions.insert(f[2].to_string());
+            } else {
+                data.insert(f[2].to_string());
+            }
+        }
+    }
+    let decl = declared();
+    let undeclared: Vec<_> = functions.difference(&decl).collect();
+    let missing: Vec<_> = decl.difference(&functions).collect();
+    assert!(
+        undeclared.is_empty(),
+        "exported, not declared: {undeclared:?}"
+    );
+    assert!(missing.is_empty(), "declared, not exported: {missing:?}");
+    let glut_h = fs::read_to_string(root().join("glut/include/GL/glut.h")).unwrap();
+    for sym in &data {
+        assert!(
+            glut_h.contains(&format!("GLUTAPI void *{sym};")),
+            "font symbol {sym} not declared"
+        );
+    }
+    // Values: every GLUT_/GLU_ constant equals the system freeglut's / GLU's.
+    let mut ours = BTreeMap::new();
+    for h in ["glut.h", "freeglut.h", "glu.h"] {
+        ours.extend(int_defines(
+            &fs::read_to_string(root().join("glut/include/GL").join(h)).unwrap(),
+        ));
+    }
+    let mut reference = BTreeMap::new();
+    for h in ["freeglut_std.h", "freeglut_ext.h", "glu.h"] {
+        if let Ok(t) = fs::read_to_string(Path::new("/usr/include/GL").join(h)) {
+            reference.extend(int_defines(&t));
+        }
+    }
+    if reference.is_empty() {
+        eprintln!("note: no system freeglut/GLU headers; values unchecked");
+    }
+    let mut checked = 0;
+    for (name, v) in &ours {
+        if let Some(r) = reference.get(name) {
+            assert_eq!(v, r, "{name}");
+            checked += 1;
+        }
+    }
+    println!("{checked} constants equal to freeglut's/GLU's");
+}
+
+#[test]
+fn headers_compile_as_c89_and_cpp() {
+    let dir = work_dir().join("hdr");
+    fs::create_dir_all(&dir).unwrap();
+    let src = dir.join("h.c");
+    fs::write(
+        &src,
+        "#include <GL/freeglut.h>\n#include <GL/glu.h>\n\
+         int main(void) { void *f = GLUT_STROKE_ROMAN; return f == GLUT_BITMAP_8_BY_13; }\n",
+    )
+    .unwrap();
+    let inc = [
+        format!("-I{}", root().join("glut/include").display()),
+        format!("-I{}", root().join("include").display()),
+    ];
+    let o = Command::new(cc())
+        .args(&inc)
+        .args(["-std=c89", "-pedantic", "-Wall", "-Werror", "-fsyntax-only"])
+        .arg(&src)
+        .output()
+        .expect("cc");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    if have("c++") {
+        let o = Command::new("c++")
+            .args(&inc)
+            .args(["-Wall", "-Werror", "-fsyntax-only", "-x", "c++"])
+            .arg(&src)
+            .output()
+            .expect("c++");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+}
+
+/// Compiles and runs a C snippet against softglut and the chosen GL; returns the first
+/// frame (RGB).
+fn run_snippet(name: &'static str, code: &str, gl: Gl) -> image::RgbImage {
+    let dir = work_dir().join("snippets");
+    fs::create_dir_all(&dir).unwrap();
+    let src = dir.join(format!("{name}.c"));
+    fs::write(&src, code).unwrap();
+    let bin = build(&src, &dir.join(format!("{name}.{gl:?}").to_lowercase()), gl);
+    let t = Tutorial {
+        name,
+        frames: 1,
+        keys: "",
+        max_diff: 0,
+    };
+    let files = run(&bin, &t, &dir.join(format!("{name}.{gl:?}.out")));
+    image::open(&files[0]).unwrap().to_rgb8()
+}
+
+/// Bitmap fonts go through glBitmap, found with OSMesaGetProcAddress: Mesa draws the
+/// text; on a GL without glBitmap (softgl today) the call does nothing.
+#[test]
+fn bitmap_font_uses_glbitmap_when_the_gl_has_it() {
+    if !Path::new("/usr/include/GL/osmesa.h").exists() {
+        return;
+    }
+    let text = |raster: &str| {
+        format!(
+            "#include <GL/freeglut.h>\n\
+             static void display(void) {{\n\
+               glClear(GL_COLOR_BUFFER_BIT);\n\
+               glMatrixMode(GL_PROJECTION); glLoadIdentity(); gluOrtho2D(0, 64, 0, 32);\n\
+               glColor3f(1, 1, 1);\n\
+               {raster}\n\
+               glutBitmapString(GLUT_BITMAP_9_BY_15, (const unsigned char *)\"HI\");\n\
+               if (glutBitmapLength(GLUT_BITMAP_9_BY_15, (const unsigned char *)\"HI\") != 18) glClearColor(1, 0, 0, 1);\n\
+               if (glutBitmapHeight(GLUT_BITMAP_8_BY_13) != 13) glClearColor(1, 0, 0, 1);\n\
+               glFlush();\n\
+             }}\n\
+             int main(int c, char **v) {{ glutInit(&c, v); glutInitWindowSize(64, 32);\n\
+               glutCreateWindow(\"t\"); glutDisplayFunc(display); glutMainLoop(); return 0; }}\n"
+        )
+    };
+    let mesa = run_snippet("bitmap", &text("glRasterPos2i(4, 8);"), Gl::Osmesa);
+    let lit = mesa.pixels().filter(|p| p[0] == 255 && p[1] == 255).count();
+    assert!(lit > 20, "Mesa drew {lit} text pixels");
+    let sg = run_snippet("bitmap_nogl", &text(""), Gl::Softgl);
+    assert!(
+        sg.pixels().all(|p| p.0 == [0, 0, 0]),
+        "softgl: no glBitmap, no text"
+    );
+}
