@@ -121,6 +121,15 @@ const SCENES: &[&str] = &[
     "stress_depth_fight",
     "stress_degenerate",
     "tex_sized_formats",
+    "lines_star",
+    "points_sizes",
+    "lines_stipple",
+    "lines_clip",
+    "polygon_modes",
+    "polygon_offset",
+    "polygon_stipple",
+    "raster_state_get",
+    "smooth_prims",
 ];
 
 macro_rules! scene_tests {
@@ -190,6 +199,15 @@ scene_tests!(
     stress_depth_fight,
     stress_degenerate,
     tex_sized_formats,
+    lines_star,
+    points_sizes,
+    lines_stipple,
+    lines_clip,
+    polygon_modes,
+    polygon_offset,
+    polygon_stipple,
+    raster_state_get,
+    smooth_prims,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
