@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     prims_end(out, "hidden_line");
 
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glColor3f(0.2f, 0.3f, 0.8f);
+    glColor3f(0.2f, 0.35f, 0.8f);
     mesh();
     glEnable(GL_POLYGON_OFFSET_LINE);
     glEnable(GL_POLYGON_OFFSET_POINT);

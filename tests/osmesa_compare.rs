@@ -46,16 +46,41 @@ struct Tolerance {
 }
 
 /// Scenes that may differ from OSMesa, with the reason.
-const TOLERANCES: &[(&str, Tolerance)] = &[(
-    "tex_aniso",
-    Tolerance {
-        max_channel_diff: 255,
-        max_percent_off: 100.0,
-        reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
+const TOLERANCES: &[(&str, Tolerance)] = &[
+    (
+        "smooth_prims",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 3.0,
+            reason: "GL_LINE_SMOOTH / GL_POINT_SMOOTH: llvmpipe draws them through the draw \
+                     module's aaline/aapoint stages (a generated fragment shader puts the \
+                     coverage in alpha, llvmpipe-rules §15); softgl draws them aliased. \
+                     Measured 97.57% identical, max diff 247",
+        },
+    ),
+    (
+        "lines_stipple",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 0.01,
+            reason: "one stipple piece of a strip ends with its edge exactly on a pixel \
+                     centre (GL y 167.0 at x 55.5) and llvmpipe puts the pixel in the \
+                     other row; the stipple split and line setup otherwise match \
+                     (draw_pipe_stipple.c, lp_setup_line.c). Measured 99.997% identical: \
+                     2 of 65536 pixels",
+        },
+    ),
+    (
+        "tex_aniso",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 100.0,
+            reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
                  llvmpipe's EWA (llvmpipe-rules §9.3); tests/aniso_truth.rs judges both \
                  against the ground truth",
-    },
-)];
+        },
+    ),
+];
 
 /// Exactness: the default tolerance of every scene.
 const EXACT: Tolerance = Tolerance {

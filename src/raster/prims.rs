@@ -177,6 +177,7 @@ impl PolyPipeline<'_> {
         &self,
         v: [&ClipVertex; 3],
         edges: u8,
+        reset: bool,
         stipple: &mut Option<LineStipple>,
         nvary: usize,
         plan: &FragPlan,
@@ -194,6 +195,15 @@ impl PolyPipeline<'_> {
         if (front && self.cull.front) || (!front && self.cull.back) {
             stats.tris_culled += 1;
             return;
+        }
+        // The stipple counter restarts at each primitive that reaches the unfilled stage,
+        // and the stipple stage restarts it for every filled triangle and point too.
+        if let Some(s) = stipple.as_mut() {
+            let pol = &self.raster.polygon;
+            let m = fill_mode(det, self.cull.front_ccw, pol.mode_front, pol.mode_back);
+            if reset || m != FillMode::Line {
+                s.counter = 0.0;
+            }
         }
         let mut p = [*v[0], *v[1], *v[2]];
         if let (false, Some(o)) = (front, self.back) {
@@ -297,11 +307,6 @@ impl PolyPipeline<'_> {
         let mut stipple = self.lines.stipple;
         let mut tri = SetupTriangle::default();
         decompose(mode, n, |a, b, c, flags, reset| {
-            if reset {
-                if let Some(s) = stipple.as_mut() {
-                    s.counter = 0.0;
-                }
-            }
             let (va, vb, vc) = (at(a), at(b), at(c));
             stats.triangles += 1;
             let mut edges = flags;
@@ -329,6 +334,7 @@ impl PolyPipeline<'_> {
                     self.triangle(
                         [p, q, r],
                         EDGE_ALL,
+                        reset,
                         &mut stipple,
                         nvary,
                         plan,
@@ -341,6 +347,7 @@ impl PolyPipeline<'_> {
                 self.triangle(
                     [va, vb, vc],
                     edges,
+                    reset,
                     &mut stipple,
                     nvary,
                     plan,
