@@ -86,8 +86,11 @@ fn stipple_from_bytes(b: &[u8; 128], lsb_first: bool) -> [u32; 32] {
 }
 
 /// glPolygonStipple (honours GL_UNPACK_LSB_FIRST; a NULL mask is ignored).
+///
+/// # Safety
+/// `mask` must be NULL or readable for 128 bytes.
 #[no_mangle]
-pub extern "C" fn glPolygonStipple(mask: *const GLubyte) {
+pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
     let bytes: Option<[u8; 128]> = (!mask.is_null()).then(|| {
         let mut b = [0u8; 128];
         // SAFETY: the GL contract makes `mask` point to a 32x32 bitmap (128 bytes); it was
@@ -105,8 +108,11 @@ pub extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 }
 
 /// glGetPolygonStipple (honours GL_PACK_LSB_FIRST; a NULL mask is ignored).
+///
+/// # Safety
+/// `mask` must be NULL or writable for 128 bytes.
 #[no_mangle]
-pub extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
+pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
     let rows = with_ctx(|c| {
         c.check_outside_begin()?;
         let lsb = c.state.pack.lsb_first;
@@ -136,8 +142,11 @@ pub extern "C" fn glEdgeFlag(flag: GLboolean) {
 }
 
 /// glEdgeFlagv (NULL is ignored).
+///
+/// # Safety
+/// `flag` must be NULL or point to a readable GLboolean.
 #[no_mangle]
-pub extern "C" fn glEdgeFlagv(flag: *const GLboolean) {
+pub unsafe extern "C" fn glEdgeFlagv(flag: *const GLboolean) {
     if flag.is_null() {
         return;
     }

@@ -81,9 +81,7 @@ fn corners(v1: [f32; 2], v2: [f32; 2], width: f32) -> ([i64; 4], [i64; 4]) {
             let yi = fracf(v1[1]) + x1diff * dydx;
             yi < 1.0 && yi > 0.0
         };
-        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 {
-            false
-        } else if sign(x2diff) != sign(-dx) {
+        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 || sign(x2diff) != sign(-dx) {
             false
         } else if sign(-y2diff) == sign(dy) {
             true
@@ -134,15 +132,13 @@ fn corners(v1: [f32; 2], v2: [f32; 2], width: f32) -> ([i64; 4], [i64; 4]) {
             let xi = fracf(v1[0]) + y1diff * dxdy;
             xi < 1.0 && xi > 0.0
         };
-        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 {
-            false
-        } else if sign(-y2diff) != sign(dy) {
+        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 || sign(-y2diff) != sign(dy) {
             false
         } else if sign(x2diff) == sign(-dx) {
             true
         } else {
             let xi = fracf(v2[0]) + y2diff * dxdy;
-            xi < 1.0 && xi >= 0.0
+            (0.0..1.0).contains(&xi)
         };
         // OSMesa's window buffer uses the bottom-edge rule.
         if dy > 0.0 {
