@@ -45,9 +45,42 @@ fn fracf(f: f32) -> f32 {
     f - f.floor()
 }
 
-/// The largest window coordinate a line or point may have (farther ones are garbage that
-/// clipping would have removed; they are dropped rather than overflowing the fixed point).
-const MAX_COORD: f32 = (1u64 << 30) as f32;
+/// The largest window coordinate a point may have, and the box a line's coverage is cut
+/// to (f32 clipping of extreme lines leaves ends far outside the viewport; llvmpipe's
+/// int conversion would overflow there). Cutting keeps the 64-bit edge functions exact;
+/// the visible pixels are those of the uncut line up to rounding far off screen.
+const MAX_COORD: f32 = (1u64 << 21) as f32;
+
+/// Cuts segment `a`–`b` to the square |x|, |y| <= MAX_COORD (Liang–Barsky in f64);
+/// `None` when nothing is left.
+fn cut_to_box(a: [f32; 2], b: [f32; 2]) -> Option<([f32; 2], [f32; 2])> {
+    let (mut t0, mut t1) = (0f64, 1f64);
+    let m = MAX_COORD as f64;
+    for k in 0..2 {
+        let (p, d) = (a[k] as f64, b[k] as f64 - a[k] as f64);
+        for (q, r) in [(-d, p + m), (d, m - p)] {
+            if q == 0.0 {
+                if r < 0.0 {
+                    return None;
+                }
+            } else {
+                let t = r / q;
+                if q < 0.0 {
+                    t0 = t0.max(t);
+                } else {
+                    t1 = t1.min(t);
+                }
+            }
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let at = |t: f64| -> [f32; 2] {
+        std::array::from_fn(|k| (a[k] as f64 + t * (b[k] as f64 - a[k] as f64)) as f32)
+    };
+    Some((at(t0), at(t1)))
+}
 
 /// The ends of the parallelogram along the major axis after the diamond-exit adjustment,
 /// and the four corners in 1/256 pixel, for segment `v1`–`v2` (window coordinates, y-down).
@@ -202,11 +235,7 @@ pub fn raster_line(
     stats: &mut Stats,
 ) {
     let (p1, p2) = ([v1.win[0], v1.win[1]], [v2.win[0], v2.win[1]]);
-    if !p1
-        .iter()
-        .chain(p2.iter())
-        .all(|c| c.is_finite() && c.abs() < MAX_COORD)
-    {
+    if !p1.iter().chain(p2.iter()).all(|c| c.is_finite()) {
         return;
     }
     let dx = p1[0] - p2[0];
@@ -215,7 +244,15 @@ pub fn raster_line(
     if area == 0.0 {
         return;
     }
-    let (xs, ys) = corners(p1, p2, width.max(1.0));
+    let inside = p1.iter().chain(p2.iter()).all(|c| c.abs() < MAX_COORD);
+    let (xs, ys) = if inside {
+        corners(p1, p2, width.max(1.0))
+    } else {
+        match cut_to_box(p1, p2) {
+            Some((q1, q2)) if q1 != q2 => corners(q1, q2, width.max(1.0)),
+            _ => return,
+        }
+    };
     let minx = *xs.iter().min().unwrap_or(&0);
     let maxx = *xs.iter().max().unwrap_or(&0);
     let miny = *ys.iter().min().unwrap_or(&0);
