@@ -11,12 +11,13 @@ use crate::fixed_function::lighting::LightPlan;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
-use crate::geometry::clip::{clip_line, clip_triangle};
+use crate::geometry::clip::clip_triangle;
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
 use crate::raster::batch::Rasterizer;
-use crate::raster::lines::{raster_line, raster_point};
+use crate::raster::lines::raster_point;
+use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
@@ -51,6 +52,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             Some(p)
         })
         .collect();
+    let depth_bits = fb.depth_format.bits();
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
@@ -92,54 +94,83 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let Some(fb) = ctx.fb.as_mut() else { return };
     let mut rast = Rasterizer::new(fb, &plan, &tex_plans, region);
     let mut tri = SetupTriangle::default();
+    // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
+    let lp_offset = (st.caps.get(Cap::PolygonOffsetFill)
+        && (ctx.raster.polygon.offset_factor != 0.0 || ctx.raster.polygon.offset_units != 0.0))
+        .then(|| {
+            let p = &ctx.raster.polygon;
+            let units =
+                crate::geometry::unfilled::scaled_units(p.offset_units, depth_bits.max(0) as u32);
+            (p.offset_factor, units)
+        });
     let mut one = |a: &ClipVertex,
                    b: &ClipVertex,
                    c: &ClipVertex,
                    rast: &mut Rasterizer<'_, '_>,
                    stats: &mut crate::stats::Stats| {
         match setup_triangle([a, b, c], nvary, cull, back, &mut tri) {
-            SetupResult::Draw => rast.triangle(&tri, stats),
+            SetupResult::Draw => {
+                if let Some((factor, units)) = lp_offset {
+                    crate::raster::prims::apply_setup_offset([a, b, c], factor, units, &mut tri);
+                }
+                rast.triangle(&tri, stats)
+            }
             SetupResult::Degenerate => stats.tris_degenerate += 1,
             SetupResult::Culled => stats.tris_culled += 1,
         }
     };
     match mode {
         Primitive::Points => {
+            let size = point_size(&ctx.raster);
             let mut target = rast.target(stats).target();
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(v, region, &plan, &mut target, stats);
+                    raster_point(v, size, nvary, region, &plan, &mut target, stats);
                 }
             }
         }
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
-            let mut scratch = Vec::new();
+            let lines = LinePlan::new(&ctx.raster, &st.caps, nvary);
+            let mut stipple = lines.stipple;
             let mut target = rast.target(stats).target();
-            assemble::lines(mode, n, |a, b| {
-                let (va, vb) = (at(a), at(b));
-                if va.mask & vb.mask != 0 {
-                    return;
-                }
-                let (p, q) = if va.mask | vb.mask != 0 {
-                    match clip_line(va, vb, va.mask | vb.mask, &viewport, nvary, plan.flat) {
-                        Some(pq) => pq,
-                        None => return,
+            assemble::lines(mode, n, |a, b, reset| {
+                if reset {
+                    if let Some(s) = stipple.as_mut() {
+                        s.counter = 0.0;
                     }
-                } else {
-                    (*va, *vb)
-                };
-                raster_line(
-                    &p,
-                    &q,
-                    &vb.vary,
+                }
+                let (va, vb) = (at(a), at(b));
+                lines.draw(
+                    va,
+                    vb,
+                    &viewport,
+                    plan.flat,
+                    stipple.as_mut(),
                     region,
                     &plan,
                     &mut target,
                     stats,
-                    &mut scratch,
                 );
             });
+        }
+        _ if PolyPipeline::needed(&ctx.raster, &st.caps, back.is_some()) => {
+            let pp = PolyPipeline {
+                lines: LinePlan::new(&ctx.raster, &st.caps, nvary),
+                point_size: point_size(&ctx.raster),
+                raster: &ctx.raster,
+                caps: &st.caps,
+                cull,
+                back,
+                depth_bits: depth_bits.max(0) as u32,
+                viewport,
+                region,
+            };
+            let edge = |k: usize| match indices {
+                Some(ix) => verts[ix[k] as usize].edge_flag,
+                None => verts[k].edge_flag,
+            };
+            pp.draw(mode, n, at, edge, nvary, &plan, &mut rast, stats);
         }
         _ => assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
             let (va, vb, vc) = (at(a), at(b), at(c));

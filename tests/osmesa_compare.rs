@@ -46,16 +46,64 @@ struct Tolerance {
 }
 
 /// Scenes that may differ from OSMesa, with the reason.
-const TOLERANCES: &[(&str, Tolerance)] = &[(
-    "tex_aniso",
-    Tolerance {
-        max_channel_diff: 255,
-        max_percent_off: 100.0,
-        reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
+const TOLERANCES: &[(&str, Tolerance)] = &[
+    (
+        "smooth_prims",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 3.0,
+            reason: "GL_LINE_SMOOTH / GL_POINT_SMOOTH: llvmpipe draws them through the draw \
+                     module's aaline/aapoint stages (a generated fragment shader puts the \
+                     coverage in alpha, llvmpipe-rules §15); softgl draws them aliased. \
+                     Measured 97.57% identical, max diff 247",
+        },
+    ),
+    (
+        "polygon_modes",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 0.15,
+            reason: "unfilled outlines (draw_pipe_unfilled.c) match except where a line \
+                     edge passes exactly through pixel centres (a y-major edge at x = 243.0) \
+                     and the stipple phase of some culled, stippled outlines. Measured \
+                     99.945% identical: 72 of 131072 pixels, all in the second image (0.11% of it)",
+        },
+    ),
+    (
+        "polygon_offset",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 0.1,
+            reason: "llvmpipe adds its fill offset (lp_do_offset_tri) to each fragment's \
+                     interpolated z; softgl folds it into the z plane's origin, which rounds \
+                     differently now and then; and a few back-face points (GL_POINT mode, \
+                     offset by the draw stage) differ at the silhouette. Measured 99.960% \
+                     identical: 53 of 131072 pixels",
+        },
+    ),
+    (
+        "lines_stipple",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 0.01,
+            reason: "one stipple piece of a strip ends with its edge exactly on a pixel \
+                     centre (GL y 167.0 at x 55.5) and llvmpipe puts the pixel in the \
+                     other row; the stipple split and line setup otherwise match \
+                     (draw_pipe_stipple.c, lp_setup_line.c). Measured 99.997% identical: \
+                     2 of 65536 pixels",
+        },
+    ),
+    (
+        "tex_aniso",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 100.0,
+            reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
                  llvmpipe's EWA (llvmpipe-rules §9.3); tests/aniso_truth.rs judges both \
                  against the ground truth",
-    },
-)];
+        },
+    ),
+];
 
 /// Exactness: the default tolerance of every scene.
 const EXACT: Tolerance = Tolerance {
@@ -121,6 +169,15 @@ const SCENES: &[&str] = &[
     "stress_depth_fight",
     "stress_degenerate",
     "tex_sized_formats",
+    "lines_star",
+    "points_sizes",
+    "lines_stipple",
+    "lines_clip",
+    "polygon_modes",
+    "polygon_offset",
+    "polygon_stipple",
+    "raster_state_get",
+    "smooth_prims",
 ];
 
 macro_rules! scene_tests {
@@ -190,6 +247,15 @@ scene_tests!(
     stress_depth_fight,
     stress_degenerate,
     tex_sized_formats,
+    lines_star,
+    points_sizes,
+    lines_stipple,
+    lines_clip,
+    polygon_modes,
+    polygon_offset,
+    polygon_stipple,
+    raster_state_get,
+    smooth_prims,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -1130,6 +1130,17 @@ GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 GLAPI void GLAPIENTRY glFogiv(GLenum pname, const GLint *params);
 
+/* Functions: src/ffi/rasterization.rs */
+GLAPI void GLAPIENTRY glLineWidth(GLfloat width);
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+GLAPI void GLAPIENTRY glPointSize(GLfloat size);
+GLAPI void GLAPIENTRY glPolygonMode(GLenum face, GLenum mode);
+GLAPI void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units);
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glGetPolygonStipple(GLubyte *mask);
+GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);
+GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
+
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLACTIVETEXTUREPROC) (GLenum texture);

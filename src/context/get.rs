@@ -106,6 +106,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let stencil_max = (1i32 << stencil_bits) - 1;
     let a = &c.arrays;
     let tc = &a.texcoord[st.client_active_texture];
+    if let Some(v) = raster_get(c, pname) {
+        return Ok(v);
+    }
     Ok(match pname {
         GL_VIEWPORT => i(&st.viewport.map(|v| v as i64)),
         GL_SCISSOR_BOX => i(&st.scissor.map(|v| v as i64)),
@@ -285,5 +288,28 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
             Ok(cap) => b(st.caps.get(cap)),
             Err(_) => return Err(GlError::InvalidEnum),
         },
+    })
+}
+
+/// The line, point and polygon rasterization values (Mesa's numbers for llvmpipe).
+fn raster_get(c: &Context, pname: u32) -> Option<Value> {
+    use super::raster_state::{MAX_LINE_WIDTH, MAX_POINT_SIZE, SIZE_GRANULARITY};
+    let r = &c.raster;
+    Some(match pname {
+        GL_LINE_WIDTH => f(&[r.line.width]),
+        GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => f(&[1.0, MAX_LINE_WIDTH]),
+        GL_LINE_WIDTH_GRANULARITY => f(&[SIZE_GRANULARITY]),
+        GL_POINT_SIZE => f(&[r.point.size]),
+        GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => f(&[1.0, MAX_POINT_SIZE]),
+        GL_POINT_SIZE_GRANULARITY => f(&[SIZE_GRANULARITY]),
+        GL_LINE_STIPPLE_PATTERN => i(&[r.line.stipple_pattern as i64]),
+        GL_LINE_STIPPLE_REPEAT => i(&[r.line.stipple_repeat as i64]),
+        GL_POLYGON_MODE => i(&[
+            r.polygon.mode_front.to_gl() as i64,
+            r.polygon.mode_back.to_gl() as i64,
+        ]),
+        GL_POLYGON_OFFSET_FACTOR => f(&[r.polygon.offset_factor]),
+        GL_POLYGON_OFFSET_UNITS => f(&[r.polygon.offset_units]),
+        _ => return None,
     })
 }

@@ -10,6 +10,7 @@ pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod lighting_state;
+pub mod raster_state;
 pub mod state;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
@@ -96,6 +97,8 @@ pub struct Context {
     pub textures: crate::texture::TextureState,
     /// Lights, materials, colour material and fog.
     pub light: crate::context::lighting_state::LightingState,
+    /// Line, point and polygon rasterization state.
+    pub raster: raster_state::RasterState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -145,6 +148,7 @@ impl Context {
             depth_copy: None,
             textures: crate::texture::TextureState::default(),
             light: Default::default(),
+            raster: Default::default(),
         }
     }
 

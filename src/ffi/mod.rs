@@ -24,6 +24,7 @@ pub mod multidraw;
 pub mod osmesa;
 pub mod proc_table;
 pub mod query;
+pub mod rasterization;
 pub mod state;
 pub mod textures;
 pub mod textures_ext;

@@ -79,24 +79,26 @@ pub fn triangles(
     }
 }
 
-/// Calls `line(a, b)` for every segment of a line mode.
-pub fn lines(mode: Primitive, n: usize, mut line: impl FnMut(usize, usize)) {
+/// Calls `line(a, b, reset)` for every segment of a line mode; `reset` marks the segments
+/// that restart the line stipple pattern (every GL_LINES segment, the first of a strip or
+/// loop), as the draw module's decomposition flags them.
+pub fn lines(mode: Primitive, n: usize, mut line: impl FnMut(usize, usize, bool)) {
     match mode {
         Primitive::Lines => {
             for i in (0..n / 2 * 2).step_by(2) {
-                line(i, i + 1);
+                line(i, i + 1, true);
             }
         }
         Primitive::LineStrip => {
             for i in 1..n {
-                line(i - 1, i);
+                line(i - 1, i, i == 1);
             }
         }
         Primitive::LineLoop if n >= 2 => {
             for i in 1..n {
-                line(i - 1, i);
+                line(i - 1, i, i == 1);
             }
-            line(n - 1, 0);
+            line(n - 1, 0, false);
         }
         _ => {}
     }

@@ -7,6 +7,7 @@ pub mod assemble;
 pub mod clip;
 pub mod fetch;
 pub mod setup;
+pub mod unfilled;
 
 /// The number of varying floats a vertex carries: primary colour (0..4), secondary colour
 /// (4..8), the fog coordinate (8), the texture coordinates (s, t, r, q) of each enabled

@@ -1,133 +1,548 @@
-//! Lines and points, width 1 (foundation level; llvmpipe's exact wide-line, stipple and
-//! point-size rules arrive with the classic-GL issue).
+//! Lines and points exactly as llvmpipe rasterizes them (llvmpipe-rules §15).
 //!
-//! Lines follow the diamond-exit rule in its common form: an x-major line covers the
-//! columns whose centres lie in [x0, x1), one pixel per column, in the row whose centre is
-//! within half a pixel (bottom-inclusive in GL y-up terms, which is llvmpipe's
-//! parallelogram edge rule); y-major lines likewise per row. Points of size 1 cover the
-//! pixel that contains them. Attributes are interpolated linearly along the major axis
-//! (points: the vertex's values).
+//! A line segment is a parallelogram with four exact integer edge functions (the triangle
+//! fill rule): x-major segments are `util_iround(width)` pixels tall, y-major ones as wide,
+//! and the ends are moved by up to half a pixel along the major axis so that the end
+//! pixels follow the diamond-exit rule (`lp_setup_line.c`, `try_setup_line`, the
+//! non-rectangular branch used when GL_LINE_SMOOTH is off). Positions snap with
+//! `util_iround` (half away from zero), not the triangles' round-half-even. Attributes
+//! vary along the major axis only, with the plane computed in f32 in Mesa's order.
+//!
+//! Points use the legacy GL rule (`lp_setup_point.c`, `legacy_points`): an integer-sized
+//! square of pixels around the snapped centre, all attributes constant.
 
-use super::shade_pixels;
+use crate::cpu::Isa;
+use crate::fragment::span::{shade_span, Fused, Madd, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
 use crate::stats::Stats;
 
-/// Plane for an attribute along a line: value `a0` at (x0, y0) changing by `d` per unit of
-/// the major axis.
-fn line_plane(a0: f32, a1: f32, len: f32, x_major: bool, x0: f32, y0: f32) -> Plane {
-    let d = if len != 0.0 { (a1 - a0) / len } else { 0.0 };
-    let (dadx, dady) = if x_major { (d, 0.0) } else { (0.0, d) };
+/// Sub-pixel units per pixel.
+const ONE: i64 = 256;
+
+/// Mesa's `util_iround` on x86-64: `(int)(f + 0.5f)` for f >= 0, `(int)(f - 0.5f)` else
+/// (the addition rounds in f32 first).
+#[inline]
+pub fn util_iround(f: f32) -> i64 {
+    if f >= 0.0 {
+        (f + 0.5) as i64
+    } else {
+        (f - 0.5) as i64
+    }
+}
+
+/// `util_iround(256 * a)`.
+#[inline]
+fn subpixel_snap(a: f32) -> i64 {
+    util_iround(256.0 * a)
+}
+
+/// `f - floor(f)`.
+#[inline]
+fn fracf(f: f32) -> f32 {
+    f - f.floor()
+}
+
+/// The largest window coordinate a point may have, and the box a line's coverage is cut
+/// to (f32 clipping of extreme lines leaves ends far outside the viewport; llvmpipe's
+/// int conversion would overflow there). Cutting keeps the 64-bit edge functions exact;
+/// the visible pixels are those of the uncut line up to rounding far off screen.
+const MAX_COORD: f32 = (1u64 << 21) as f32;
+
+/// Cuts segment `a`–`b` to the square |x|, |y| <= MAX_COORD (Liang–Barsky in f64);
+/// `None` when nothing is left.
+fn cut_to_box(a: [f32; 2], b: [f32; 2]) -> Option<([f32; 2], [f32; 2])> {
+    let (mut t0, mut t1) = (0f64, 1f64);
+    let m = MAX_COORD as f64;
+    for k in 0..2 {
+        let (p, d) = (a[k] as f64, b[k] as f64 - a[k] as f64);
+        for (q, r) in [(-d, p + m), (d, m - p)] {
+            if q == 0.0 {
+                if r < 0.0 {
+                    return None;
+                }
+            } else {
+                let t = r / q;
+                if q < 0.0 {
+                    t0 = t0.max(t);
+                } else {
+                    t1 = t1.min(t);
+                }
+            }
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let at = |t: f64| -> [f32; 2] {
+        std::array::from_fn(|k| (a[k] as f64 + t * (b[k] as f64 - a[k] as f64)) as f32)
+    };
+    Some((at(t0), at(t1)))
+}
+
+/// The ends of the parallelogram along the major axis after the diamond-exit adjustment,
+/// and the four corners in 1/256 pixel, for segment `v1`–`v2` (window coordinates, y-down).
+fn corners(v1: [f32; 2], v2: [f32; 2], width: f32) -> ([i64; 4], [i64; 4]) {
+    let (mut v1, mut v2) = (v1, v2);
+    let dx = v1[0] - v2[0];
+    let dy = v1[1] - v2[1];
+    let sign = |x: f32| x >= 0.0;
+    let mut x_offset = 0f32;
+    let mut y_offset = 0f32;
+    let mut x_offset_end = 0f32;
+    let mut y_offset_end = 0f32;
+    let x1diff = v1[0] - v1[0].floor() - 0.5;
+    let y1diff = v1[1] - v1[1].floor() - 0.5;
+    let mut x2diff = v2[0] - v2[0].floor() - 0.5;
+    let mut y2diff = v2[1] - v2[1].floor() - 0.5;
+    let fixed_width = util_iround(width) * ONE;
+    let half = fixed_width / 2;
+    if dx.abs() >= dy.abs() {
+        let dydx = dy / dx;
+        if y2diff == -0.5 && dy < 0.0 {
+            y2diff = 0.5;
+        }
+        let draw_start = if x1diff.abs() + y1diff.abs() < 0.5 {
+            true
+        } else if sign(x1diff) == sign(-dx) {
+            false
+        } else if sign(-y1diff) != sign(dy) {
+            true
+        } else {
+            let yi = fracf(v1[1]) + x1diff * dydx;
+            yi < 1.0 && yi > 0.0
+        };
+        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 || sign(x2diff) != sign(-dx) {
+            false
+        } else if sign(-y2diff) == sign(dy) {
+            true
+        } else {
+            let yi = fracf(v2[1]) + x2diff * dydx;
+            yi < 1.0 && yi > 0.0
+        };
+        if dx < 0.0 {
+            std::mem::swap(&mut v1, &mut v2);
+            if (x1diff <= 0.0) != draw_start {
+                x_offset_end = -x1diff - 0.5;
+                y_offset_end = x_offset_end * dydx;
+            }
+            if (x2diff > 0.0) != draw_end {
+                x_offset = -x2diff - 0.5;
+                y_offset = x_offset * dydx;
+            }
+        } else {
+            if (x1diff > 0.0) != draw_start {
+                x_offset = -x1diff + 0.5;
+                y_offset = x_offset * dydx;
+            }
+            if (x2diff <= 0.0) != draw_end {
+                x_offset_end = -x2diff + 0.5;
+                y_offset_end = x_offset_end * dydx;
+            }
+        }
+        let xa = subpixel_snap(v1[0] + x_offset - 0.5);
+        let xb = subpixel_snap(v2[0] + x_offset_end - 0.5);
+        let ya = subpixel_snap(v1[1] + y_offset - 0.5);
+        let yb = subpixel_snap(v2[1] + y_offset_end - 0.5);
+        (
+            [xa, xb, xb, xa],
+            [ya - half, yb - half, yb + half, ya + half],
+        )
+    } else {
+        let dxdy = dx / dy;
+        if x2diff == -0.5 && dx < 0.0 {
+            x2diff = 0.5;
+        }
+        let draw_start = if x1diff.abs() + y1diff.abs() < 0.5 {
+            true
+        } else if sign(-y1diff) == sign(dy) {
+            false
+        } else if sign(x1diff) != sign(-dx) {
+            true
+        } else {
+            let xi = fracf(v1[0]) + y1diff * dxdy;
+            xi < 1.0 && xi > 0.0
+        };
+        let draw_end = if x2diff.abs() + y2diff.abs() < 0.5 || sign(-y2diff) != sign(dy) {
+            false
+        } else if sign(x2diff) == sign(-dx) {
+            true
+        } else {
+            let xi = fracf(v2[0]) + y2diff * dxdy;
+            (0.0..1.0).contains(&xi)
+        };
+        // OSMesa's window buffer uses the bottom-edge rule.
+        if dy > 0.0 {
+            std::mem::swap(&mut v1, &mut v2);
+            if (y1diff >= 0.0) != draw_start {
+                y_offset_end = -y1diff + 0.5;
+                x_offset_end = y_offset_end * dxdy;
+            }
+            if (y2diff < 0.0) != draw_end {
+                y_offset = -y2diff + 0.5;
+                x_offset = y_offset * dxdy;
+            }
+        } else {
+            if (y1diff < 0.0) != draw_start {
+                y_offset = -y1diff - 0.5;
+                x_offset = y_offset * dxdy;
+            }
+            if (y2diff >= 0.0) != draw_end {
+                y_offset_end = -y2diff - 0.5;
+                x_offset_end = y_offset_end * dxdy;
+            }
+        }
+        let xa = subpixel_snap(v1[0] + x_offset - 0.5);
+        let xb = subpixel_snap(v2[0] + x_offset_end - 0.5);
+        let ya = subpixel_snap(v1[1] + y_offset - 0.5);
+        let yb = subpixel_snap(v2[1] + y_offset_end - 0.5);
+        (
+            [xa - half, xb - half, xb + half, xa + half],
+            [ya, yb, yb, ya],
+        )
+    }
+}
+
+/// Line attribute plane (`linear_coef` of `lp_setup_line.c`): `dx`, `dy` are the adjusted
+/// deltas (one of them zero), `ooa` the reciprocal squared length, (x1, y1) the first
+/// vertex.
+#[inline]
+fn line_plane(a1: f32, a2: f32, dx: f32, dy: f32, ooa: f32, x1: f32, y1: f32) -> Plane {
+    let da21 = a1 - a2;
+    let dadx = da21 * dx * ooa;
+    let dady = da21 * dy * ooa;
     Plane {
-        a0: a0 - (dadx * (x0 - 0.5) + dady * (y0 - 0.5)),
+        a0: a1 - (dadx * (x1 - 0.5) + dady * (y1 - 0.5)),
         dadx,
         dady,
     }
 }
 
-/// Draws the segment `v0`–`v1` (window coordinates, y-down) inside `region`.
+/// Draws segment `v1`–`v2` (window coordinates, y-down) of integer-rounded `width` inside
+/// `region`; `flat` is the provoking vertex's varyings (used under GL_FLAT).
 #[allow(clippy::too_many_arguments)]
 pub fn raster_line(
-    v0: &ClipVertex,
     v1: &ClipVertex,
+    v2: &ClipVertex,
     flat: &[f32; MAX_VARY],
+    width: f32,
+    nvary: usize,
     region: [i64; 4],
     plan: &FragPlan,
     fb: &mut Target<'_>,
     stats: &mut Stats,
-    scratch: &mut Vec<(usize, usize)>,
 ) {
-    let (x0, y0, x1, y1) = (v0.win[0], v0.win[1], v1.win[0], v1.win[1]);
-    if !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite()) {
+    let (p1, p2) = ([v1.win[0], v1.win[1]], [v2.win[0], v2.win[1]]);
+    if !p1.iter().chain(p2.iter()).all(|c| c.is_finite()) {
         return;
     }
-    let (dx, dy) = (x1 - x0, y1 - y0);
-    let x_major = dx.abs() >= dy.abs();
-    let len = if x_major { dx } else { dy };
-    if len == 0.0 {
+    let dx = p1[0] - p2[0];
+    let dy = p1[1] - p2[1];
+    let area = dx * dx + dy * dy;
+    if area == 0.0 {
         return;
     }
-    let t = SetupTriangle {
-        z: line_plane(v0.win[2], v1.win[2], len, x_major, x0, y0),
-        vary: std::array::from_fn(|i| line_plane(v0.vary[i], v1.vary[i], len, x_major, x0, y0)),
+    let inside = p1.iter().chain(p2.iter()).all(|c| c.abs() < MAX_COORD);
+    let (xs, ys) = if inside {
+        corners(p1, p2, width.max(1.0))
+    } else {
+        match cut_to_box(p1, p2) {
+            Some((q1, q2)) if q1 != q2 => corners(q1, q2, width.max(1.0)),
+            _ => return,
+        }
+    };
+    let minx = *xs.iter().min().unwrap_or(&0);
+    let maxx = *xs.iter().max().unwrap_or(&0);
+    let miny = *ys.iter().min().unwrap_or(&0);
+    let maxy = *ys.iter().max().unwrap_or(&0);
+    // llvmpipe's bounding box, with the bottom-edge rule's +1 in y.
+    let bx0 = (minx + ONE - 1) >> 8;
+    let bx1 = ((maxx + ONE - 1) >> 8) - 1;
+    let by0 = (miny + ONE) >> 8;
+    let by1 = ((maxy + ONE) >> 8) - 1;
+    let b = [
+        bx0.max(region[0]),
+        by0.max(region[1]).max(fb.y0 as i64),
+        bx1.min(region[2] - 1),
+        by1.min(region[3] - 1).min((fb.y0 + fb.rows) as i64 - 1),
+    ];
+    if b[0] > b[2] || b[1] > b[3] {
+        return;
+    }
+    let edges: [Edge; 4] = std::array::from_fn(|i| {
+        let j = (i + 1) % 4;
+        let a = ys[i] - ys[j];
+        let bb = xs[i] - xs[j];
+        let mut c = a * xs[i] - bb * ys[i];
+        if a < 0 || (a == 0 && bb < 0) {
+            c += 1;
+        }
+        Edge { a, b: bb, c }
+    });
+
+    // Planes: x-major lines vary along x only, y-major along y only.
+    let ooa = 1.0f32 / area;
+    let (pdx, pdy) = if dx.abs() >= dy.abs() {
+        let dydx = dy / dx;
+        (dx * (1.0 + dydx * dydx), 0.0)
+    } else {
+        let dxdy = dx / dy;
+        (0.0, dy * (1.0 + dxdy * dxdy))
+    };
+    let (x1, y1) = (p1[0], p1[1]);
+    let plane = |a1: f32, a2: f32| line_plane(a1, a2, pdx, pdy, ooa, x1, y1);
+    let (w1, w2) = (v1.win[3], v2.win[3]);
+    let persp = !(w1 == 1.0 && w2 == 1.0);
+    let mut t = SetupTriangle {
+        z: plane(v1.win[2], v2.win[2]),
+        w: plane(w1, w2),
+        persp,
         flat: *flat,
         flat_u8: [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(flat[i])),
         ..Default::default()
     };
-    scratch.clear();
-    let h = fb.height as f32;
-    // Pixels whose major-axis centre c = p + 0.5 lies in the half-open range from start to
-    // end (in the direction of travel).
-    let (a, b) = if x_major { (x0, x1) } else { (y0, y1) };
-    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-    let first = (lo - 0.5).ceil() as i64;
-    let last = (hi - 0.5).ceil() as i64 - 1;
-    let (first, last) = if a < b {
-        (first, last)
-    } else {
-        ((lo - 0.5).floor() as i64 + 1, (hi - 0.5).floor() as i64)
-    };
-    // Only positions inside the region can produce pixels: a line far outside the
-    // framebuffer (a viewport offset of 2^30, say) must not walk a billion columns.
-    let (r_lo, r_hi) = if x_major {
-        (region[0], region[2] - 1)
-    } else {
-        (region[1], region[3] - 1)
-    };
-    for p in first.max(r_lo)..=last.min(r_hi) {
-        let c = p as f32 + 0.5;
-        let f = (c - a) / (b - a);
-        let (px, py) = if x_major {
-            let y = y0 + f * dy;
-            // Row whose centre is in [y - 0.5, y + 0.5) in GL y-up space.
-            let gl_y = h - y;
-            let gl_row = gl_y.ceil() as i64 - 1;
-            (p, fb.height as i64 - 1 - gl_row)
+    for i in 0..nvary {
+        t.vary[i] = if persp {
+            plane(v1.vary[i] * w1, v2.vary[i] * w2)
         } else {
-            let x = x0 + f * dx;
-            (x.ceil() as i64 - 1, p)
+            plane(v1.vary[i], v2.vary[i])
         };
-        if px >= region[0] && px < region[2] && py >= region[1] && py < region[3] {
-            scratch.push((px as usize, py as usize));
+    }
+    for py in b[1]..=b[3] {
+        let (mut lo, mut hi) = (b[0], b[2]);
+        for e in &edges {
+            match e.span(py) {
+                Some((l, h)) => {
+                    lo = lo.max(l);
+                    hi = hi.min(h);
+                }
+                None => hi = lo - 1,
+            }
+        }
+        if lo <= hi {
+            shade_span_dispatch(&t, plan, fb, py as usize, lo as usize, hi as usize, stats);
         }
     }
-    shade_pixels(&t, scratch, plan, fb, stats);
 }
 
-/// Draws a size-1 point at `v`.
+/// Draws a point of `size` (glPointSize, already clamped) at `v`.
 pub fn raster_point(
     v: &ClipVertex,
+    size: f32,
+    nvary: usize,
     region: [i64; 4],
     plan: &FragPlan,
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     let (x, y) = (v.win[0], v.win[1]);
-    if !(x.is_finite() && y.is_finite()) {
+    if !(x.is_finite() && y.is_finite() && x.abs() < MAX_COORD && y.abs() < MAX_COORD) {
         return;
     }
-    let px = x.floor() as i64;
-    let gl_row = (fb.height as f32 - y).floor() as i64;
-    let py = fb.height as i64 - 1 - gl_row;
-    if px < region[0] || px >= region[2] || py < region[1] || py >= region[3] {
+    let size = size.min(255.0);
+    let x0 = subpixel_snap(x);
+    let y0 = subpixel_snap(y) - 1;
+    let width = (((subpixel_snap(size) + ONE / 2 - 1) & !(ONE - 1)).max(ONE)) >> 8;
+    let (bx, by) = if width == 1 {
+        (x0 >> 8, y0 >> 8)
+    } else if width & 1 == 1 {
+        ((x0 >> 8) - (width - 1) / 2, (y0 >> 8) - (width - 1) / 2)
+    } else {
+        (
+            ((x0 + ONE / 2) >> 8) - width / 2,
+            ((y0 + ONE / 2) >> 8) - width / 2,
+        )
+    };
+    let b = [
+        bx.max(region[0]),
+        by.max(region[1]).max(fb.y0 as i64),
+        (bx + width - 1).min(region[2] - 1),
+        (by + width - 1)
+            .min(region[3] - 1)
+            .min((fb.y0 + fb.rows) as i64 - 1),
+    ];
+    if b[0] > b[2] || b[1] > b[3] {
         return;
     }
-    let t = SetupTriangle {
-        z: Plane {
-            a0: v.win[2],
-            dadx: 0.0,
-            dady: 0.0,
-        },
-        vary: std::array::from_fn(|i| Plane {
-            a0: v.vary[i],
-            dadx: 0.0,
-            dady: 0.0,
-        }),
+    let w0 = v.win[3];
+    let persp = w0 != 1.0;
+    let constant = |a: f32| Plane {
+        a0: a,
+        dadx: 0.0,
+        dady: 0.0,
+    };
+    let mut t = SetupTriangle {
+        z: constant(v.win[2]),
+        w: constant(w0),
+        persp,
         flat: v.vary,
         flat_u8: [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(v.vary[i])),
         ..Default::default()
     };
-    shade_pixels(&t, &[(px as usize, py as usize)], plan, fb, stats);
+    for i in 0..nvary {
+        t.vary[i] = constant(if persp { v.vary[i] * w0 } else { v.vary[i] });
+    }
+    for py in b[1]..=b[3] {
+        shade_span_dispatch(
+            &t,
+            plan,
+            fb,
+            py as usize,
+            b[0] as usize,
+            b[2] as usize,
+            stats,
+        );
+    }
+}
+
+/// The line stipple stage of Mesa's draw module (`draw_pipe_stipple.c`): cuts a segment
+/// into its "on" pieces, keeping the pattern position across the segments of a strip.
+#[derive(Clone, Copy, Debug)]
+pub struct LineStipple {
+    /// The pattern, bit 0 first.
+    pub pattern: u16,
+    /// The repeat factor (1..=256).
+    pub factor: u32,
+    /// The pattern position (a float, as Mesa keeps it).
+    pub counter: f32,
+}
+
+impl LineStipple {
+    /// Calls `emit(t0, t1)` with the parameter range of every "on" piece of the segment
+    /// from `p0` to `p1` (window x, y), then advances the counter by the segment's length
+    /// (max of |dx| and |dy|).
+    pub fn split(&mut self, p0: [f32; 2], p1: [f32; 2], mut emit: impl FnMut(f32, f32)) {
+        let dx = (p0[0] - p1[0]).abs();
+        let dy = (p0[1] - p1[1]).abs();
+        let length = dx.max(dy);
+        let n = if length.is_finite() {
+            length.ceil() as i64
+        } else {
+            0
+        };
+        let mut start = 0f32;
+        let mut state = false;
+        let base = self.counter as i64;
+        for i in 0..n {
+            let b = ((base + i) / self.factor as i64) & 15;
+            let on = self.pattern & (1 << b) != 0;
+            if on != state {
+                if state {
+                    emit(start / length, i as f32 / length);
+                } else {
+                    start = i as f32;
+                }
+                state = on;
+            }
+        }
+        if state && start < length {
+            emit(start / length, 1.0);
+        }
+        self.counter += length;
+    }
+}
+
+/// A vertex between `a` and `b` at parameter `t`, every field interpolated linearly in
+/// window space (the stipple stage's `screen_interp`).
+pub fn screen_interp(t: f32, a: &ClipVertex, b: &ClipVertex, nvary: usize) -> ClipVertex {
+    let mut v = *a;
+    for i in 0..4 {
+        v.win[i] = a.win[i] + t * (b.win[i] - a.win[i]);
+    }
+    for i in 0..nvary {
+        v.vary[i] = a.vary[i] + t * (b.vary[i] - a.vary[i]);
+    }
+    v
+}
+
+/// Shades pixels `x0..=x1` of row `py` with the planes of `t` (the general span shader,
+/// specialised for depth, flat and perspective like the triangle path).
+pub fn shade_span_dispatch(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x0: usize,
+    x1: usize,
+    stats: &mut Stats,
+) {
+    match crate::cpu::isa() {
+        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma | Isa::Fma => unsafe { span_fma(t, plan, fb, py, x0, x1, stats) },
+        _ => span_any::<Unfused>(t, plan, fb, py, x0, x1, stats),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn span_fma(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x0: usize,
+    x1: usize,
+    stats: &mut Stats,
+) {
+    span_any::<Fused>(t, plan, fb, py, x0, x1, stats)
+}
+
+#[inline(always)]
+fn span_any<M: Madd>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x0: usize,
+    x1: usize,
+    stats: &mut Stats,
+) {
+    let persp = t.persp && !plan.flat;
+    match (plan.depth.is_some(), plan.flat, persp) {
+        (false, false, false) => {
+            shade_span::<M, false, false, false, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (false, false, true) => {
+            shade_span::<M, false, false, true, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (false, true, _) => {
+            shade_span::<M, false, true, false, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (true, false, false) => {
+            shade_span::<M, true, false, false, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (true, false, true) => {
+            shade_span::<M, true, false, true, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (true, true, _) => shade_span::<M, true, true, false, true>(t, plan, fb, py, x0, x1, stats),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn iround_is_half_away_from_zero() {
+        assert_eq!(util_iround(0.5), 1);
+        assert_eq!(util_iround(-0.5), -1);
+        assert_eq!(util_iround(1.49), 1);
+        assert_eq!(util_iround(-2.5), -3);
+    }
+
+    #[test]
+    fn stipple_splits_pattern() {
+        let mut s = LineStipple {
+            pattern: 0x00ff,
+            factor: 1,
+            counter: 0.0,
+        };
+        let mut pieces = vec![];
+        s.split([0.0, 0.0], [32.0, 0.0], |a, b| pieces.push((a, b)));
+        assert_eq!(pieces, vec![(0.0, 0.25), (0.5, 0.75)]);
+        assert_eq!(s.counter, 32.0);
+    }
 }

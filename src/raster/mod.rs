@@ -16,6 +16,8 @@ use crate::texture::UnitPlan;
 
 pub mod batch;
 pub mod lines;
+pub mod prims;
+pub mod stipple;
 
 /// Rasterizes `t` inside `region` (y-down pixels, exclusive high end) and the target's
 /// rows; returns whether any row of the triangle's box was inside them.

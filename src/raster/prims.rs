@@ -1,0 +1,361 @@
+//! The per-draw plan for lines and points: the clamped width and size, and the line
+//! stipple stage, in the order of Mesa's draw pipeline (clip → stipple → llvmpipe setup).
+
+use super::batch::Rasterizer;
+use super::lines::{raster_line, raster_point, screen_interp, LineStipple};
+use super::stipple::stippled_triangle;
+use crate::context::raster_state::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
+use crate::context::state::{Cap, Caps};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::clip::{clip_line, clip_triangle};
+use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::unfilled::{
+    decompose, determinant, draw_offset, fill_mode, scaled_units, setup_offset, EDGE_0, EDGE_1,
+    EDGE_2, EDGE_ALL,
+};
+use crate::geometry::{ClipVertex, Viewport};
+use crate::stats::Stats;
+
+/// The point size llvmpipe receives: glPointSize capped at the maximum.
+pub fn point_size(r: &RasterState) -> f32 {
+    r.point.size.min(MAX_POINT_SIZE)
+}
+
+/// Adds llvmpipe's setup-time polygon offset (`lp_do_offset_tri`) to a set-up triangle:
+/// computed on the vertices in setup order (clockwise triangles swap v0 and v1) and, as an
+/// approximation of llvmpipe's per-fragment addition, folded into the z plane's origin.
+pub fn apply_setup_offset(v: [&ClipVertex; 3], factor: f32, units: f32, t: &mut SetupTriangle) {
+    use crate::geometry::setup::snap;
+    let (x0, y0) = (snap(v[0].win[0]), snap(v[0].win[1]));
+    let (x1, y1) = (snap(v[1].win[0]), snap(v[1].win[1]));
+    let (x2, y2) = (snap(v[2].win[0]), snap(v[2].win[1]));
+    let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
+    let order = if area > 0 {
+        [v[0], v[1], v[2]]
+    } else {
+        [v[1], v[0], v[2]]
+    };
+    t.z.a0 += setup_offset(order, factor, units);
+}
+
+/// How a draw's lines are drawn.
+#[derive(Clone, Copy, Debug)]
+pub struct LinePlan {
+    /// Width clamped to [1, 255] (the state tracker's clamp).
+    pub width: f32,
+    /// The stipple stage when GL_LINE_STIPPLE is on (counter at 0).
+    pub stipple: Option<LineStipple>,
+    /// Varyings per vertex.
+    pub nvary: usize,
+}
+
+impl LinePlan {
+    /// The plan for the current state.
+    pub fn new(r: &RasterState, caps: &Caps, nvary: usize) -> Self {
+        LinePlan {
+            width: r.line.width.clamp(1.0, MAX_LINE_WIDTH),
+            stipple: caps.get(Cap::LineStipple).then_some(LineStipple {
+                pattern: r.line.stipple_pattern,
+                factor: r.line.stipple_repeat,
+                counter: 0.0,
+            }),
+            nvary,
+        }
+    }
+
+    /// Clips, stipples and rasterizes segment `va`–`vb` (vertex-stage outputs).
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw(
+        &self,
+        va: &ClipVertex,
+        vb: &ClipVertex,
+        viewport: &Viewport,
+        flat: bool,
+        stipple: Option<&mut LineStipple>,
+        region: [i64; 4],
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    ) {
+        if va.mask & vb.mask != 0 {
+            return;
+        }
+        let (p, q) = if va.mask | vb.mask != 0 {
+            match clip_line(va, vb, va.mask | vb.mask, viewport, self.nvary, flat) {
+                Some(pq) => pq,
+                None => return,
+            }
+        } else {
+            (*va, *vb)
+        };
+        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, fb, stats);
+    }
+
+    /// Stipples and rasterizes a segment already in window coordinates; `flat_vary` is the
+    /// provoking vertex's varyings.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_window(
+        &self,
+        p: &ClipVertex,
+        q: &ClipVertex,
+        flat_vary: &[f32; crate::geometry::MAX_VARY],
+        stipple: Option<&mut LineStipple>,
+        region: [i64; 4],
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    ) {
+        let n = self.nvary;
+        match stipple {
+            None => raster_line(p, q, flat_vary, self.width, n, region, plan, fb, stats),
+            Some(s) => {
+                s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
+                    let a = if t0 > 0.0 {
+                        screen_interp(t0, p, q, n)
+                    } else {
+                        *p
+                    };
+                    let b = if t1 < 1.0 {
+                        screen_interp(t1, p, q, n)
+                    } else {
+                        *q
+                    };
+                    raster_line(&a, &b, flat_vary, self.width, n, region, plan, fb, stats);
+                });
+            }
+        }
+    }
+}
+
+/// Inputs of the draw module's triangle pipeline for one draw.
+pub struct PolyPipeline<'a> {
+    /// Lines (for GL_LINE polygons).
+    pub lines: LinePlan,
+    /// Point size (for GL_POINT polygons).
+    pub point_size: f32,
+    /// Polygon modes, offsets and enables.
+    pub raster: &'a RasterState,
+    /// glEnable bits.
+    pub caps: &'a Caps,
+    /// Face culling.
+    pub cull: CullMode,
+    /// Where the back colours start, with two-sided lighting.
+    pub back: Option<usize>,
+    /// Depth buffer bits (scales the offset units).
+    pub depth_bits: u32,
+    /// The viewport (for clipping).
+    pub viewport: Viewport,
+    /// The drawable region.
+    pub region: [i64; 4],
+}
+
+impl PolyPipeline<'_> {
+    /// Whether llvmpipe hands triangles of this state to the draw module's pipeline even
+    /// when nothing needs clipping (`draw_need_pipeline` with llvmpipe's split of the
+    /// rasterizer state, `lp_state_rasterizer.c`).
+    pub fn needed(r: &RasterState, caps: &Caps, two_side: bool) -> bool {
+        let unfilled =
+            r.polygon.mode_front != FillMode::Fill || r.polygon.mode_back != FillMode::Fill;
+        let pstipple = caps.get(Cap::PolygonStipple);
+        let lp_pipeline = unfilled
+            || pstipple
+            || caps.get(Cap::LineStipple)
+            || caps.get(Cap::LineSmooth)
+            || caps.get(Cap::PointSmooth);
+        let offset = caps.get(Cap::PolygonOffsetFill)
+            || caps.get(Cap::PolygonOffsetLine)
+            || caps.get(Cap::PolygonOffsetPoint);
+        unfilled || pstipple || (lp_pipeline && (offset || two_side))
+    }
+
+    /// Runs one triangle (after clipping) through cull, two-side, offset, flat-shade and
+    /// unfilled stages, then draws it. `edges` are the boundary-edge bits already masked
+    /// by the vertices' edge flags.
+    #[allow(clippy::too_many_arguments)]
+    pub fn triangle(
+        &self,
+        v: [&ClipVertex; 3],
+        edges: u8,
+        reset: bool,
+        stipple: &mut Option<LineStipple>,
+        nvary: usize,
+        plan: &FragPlan,
+        rast: &mut Rasterizer<'_, '_>,
+        tri: &mut SetupTriangle,
+        stats: &mut Stats,
+    ) {
+        let det = determinant(v);
+        if det == 0.0 || det.is_nan() {
+            stats.tris_degenerate += 1;
+            return;
+        }
+        let ccw = det < 0.0;
+        let front = ccw == self.cull.front_ccw;
+        if (front && self.cull.front) || (!front && self.cull.back) {
+            stats.tris_culled += 1;
+            return;
+        }
+        // The stipple counter restarts at each primitive that reaches the unfilled stage,
+        // and the stipple stage restarts it for every filled triangle and point too.
+        if let Some(s) = stipple.as_mut() {
+            let pol = &self.raster.polygon;
+            let m = fill_mode(det, self.cull.front_ccw, pol.mode_front, pol.mode_back);
+            if reset || m != FillMode::Line {
+                s.counter = 0.0;
+            }
+        }
+        let mut p = [*v[0], *v[1], *v[2]];
+        if let (false, Some(o)) = (front, self.back) {
+            for q in &mut p {
+                q.vary.copy_within(o..o + 8, 0);
+            }
+        }
+        let pol = &self.raster.polygon;
+        let mode = fill_mode(det, self.cull.front_ccw, pol.mode_front, pol.mode_back);
+        let offset_on = self.caps.get(match mode {
+            FillMode::Fill => Cap::PolygonOffsetFill,
+            FillMode::Line => Cap::PolygonOffsetLine,
+            FillMode::Point => Cap::PolygonOffsetPoint,
+        });
+        if offset_on {
+            let units = scaled_units(pol.offset_units, self.depth_bits);
+            let off = draw_offset([&p[0], &p[1], &p[2]], det, pol.offset_factor, units);
+            for q in &mut p {
+                q.win[2] = (q.win[2] + off).clamp(0.0, 1.0);
+            }
+        }
+        if plan.flat {
+            let c: [f32; 8] = std::array::from_fn(|i| p[2].vary[i]);
+            p[0].vary[..8].copy_from_slice(&c);
+            p[1].vary[..8].copy_from_slice(&c);
+        }
+        match mode {
+            FillMode::Fill => {
+                let nocull = CullMode {
+                    front: false,
+                    back: false,
+                    front_ccw: self.cull.front_ccw,
+                };
+                match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
+                    SetupResult::Draw if self.caps.get(Cap::PolygonStipple) => {
+                        let mut target = rast.target(stats).target();
+                        stippled_triangle(
+                            tri,
+                            &self.raster.stipple,
+                            self.region,
+                            plan,
+                            &mut target,
+                            stats,
+                        );
+                    }
+                    SetupResult::Draw => rast.triangle(tri, stats),
+                    _ => stats.tris_degenerate += 1,
+                }
+            }
+            FillMode::Line => {
+                let mut target = rast.target(stats).target();
+                for (bit, s, e) in [(EDGE_2, 2, 0), (EDGE_0, 0, 1), (EDGE_1, 1, 2)] {
+                    if edges & bit != 0 {
+                        self.lines.draw_window(
+                            &p[s],
+                            &p[e],
+                            &p[e].vary,
+                            stipple.as_mut(),
+                            self.region,
+                            plan,
+                            &mut target,
+                            stats,
+                        );
+                    }
+                }
+            }
+            FillMode::Point => {
+                let mut target = rast.target(stats).target();
+                for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
+                    if edges & bit != 0 {
+                        raster_point(
+                            &p[k],
+                            self.point_size,
+                            nvary,
+                            self.region,
+                            plan,
+                            &mut target,
+                            stats,
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// Draws `n` vertices of triangle `mode` through the pipeline: decomposition with edge
+    /// flags, clipping, then [`Self::triangle`]. `at(k)` is the k-th vertex and
+    /// `edge_flag(k)` its edge flag.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw<'v>(
+        &self,
+        mode: crate::context::state::Primitive,
+        n: usize,
+        at: impl Fn(usize) -> &'v ClipVertex,
+        edge_flag: impl Fn(usize) -> bool,
+        nvary: usize,
+        plan: &FragPlan,
+        rast: &mut Rasterizer<'_, '_>,
+        stats: &mut Stats,
+    ) {
+        let mut stipple = self.lines.stipple;
+        let mut tri = SetupTriangle::default();
+        decompose(mode, n, |a, b, c, flags, reset| {
+            let (va, vb, vc) = (at(a), at(b), at(c));
+            stats.triangles += 1;
+            let mut edges = flags;
+            for (bit, k) in [(EDGE_0, a), (EDGE_1, b), (EDGE_2, c)] {
+                if !edge_flag(k) {
+                    edges &= !bit;
+                }
+            }
+            let or = va.mask | vb.mask | vc.mask;
+            if va.mask & vb.mask & vc.mask != 0 {
+                stats.tris_clip_rejected += 1;
+            } else if or != 0 {
+                stats.tris_clipped += 1;
+                let mut out: Vec<[ClipVertex; 3]> = Vec::new();
+                clip_triangle(
+                    [va, vb, vc],
+                    or,
+                    &self.viewport,
+                    nvary,
+                    plan.flat,
+                    |p, q, r| out.push([*p, *q, *r]),
+                );
+                // Edge flags of clipped pieces are not tracked: every edge is drawn.
+                for [p, q, r] in &out {
+                    self.triangle(
+                        [p, q, r],
+                        EDGE_ALL,
+                        reset,
+                        &mut stipple,
+                        nvary,
+                        plan,
+                        rast,
+                        &mut tri,
+                        stats,
+                    );
+                }
+            } else {
+                self.triangle(
+                    [va, vb, vc],
+                    edges,
+                    reset,
+                    &mut stipple,
+                    nvary,
+                    plan,
+                    rast,
+                    &mut tri,
+                    stats,
+                );
+            }
+        });
+    }
+}

@@ -1,0 +1,63 @@
+//! Polygon stipple (GL_POLYGON_STIPPLE): llvmpipe's draw "pstipple" stage kills the
+//! fragments whose window position falls on a zero bit of the 32x32 pattern; the state
+//! tracker flips the pattern for the y-down window buffer, so the pattern is anchored at
+//! GL window (0, 0) with row 0 at the bottom.
+
+use super::lines::shade_span_dispatch;
+use crate::context::raster_state::PolygonStipple;
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::SetupTriangle;
+use crate::stats::Stats;
+
+/// Rasterizes `t` inside `region`, shading only the pixels the stipple lets through (the
+/// untextured span shader).
+pub fn stippled_triangle(
+    t: &SetupTriangle,
+    stipple: &PolygonStipple,
+    region: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let x_lo = t.bbox[0].max(region[0]);
+    let x_hi = t.bbox[2].min(region[2] - 1);
+    let y_lo = t.bbox[1].max(region[1]).max(fb.y0 as i64);
+    let y_hi = t.bbox[3]
+        .min(region[3] - 1)
+        .min((fb.y0 + fb.rows) as i64 - 1);
+    let h = fb.height as i64;
+    for py in y_lo..=y_hi {
+        let (mut lo, mut hi) = (x_lo, x_hi);
+        for e in &t.edges {
+            match e.span(py) {
+                Some((a, b)) => {
+                    lo = lo.max(a);
+                    hi = hi.min(b);
+                }
+                None => hi = lo - 1,
+            }
+        }
+        let gl_y = h - 1 - py;
+        let mut x = lo;
+        while x <= hi {
+            if !stipple.passes(x, gl_y) {
+                x += 1;
+                continue;
+            }
+            let start = x;
+            while x <= hi && stipple.passes(x, gl_y) {
+                x += 1;
+            }
+            shade_span_dispatch(
+                t,
+                plan,
+                fb,
+                py as usize,
+                start as usize,
+                (x - 1) as usize,
+                stats,
+            );
+        }
+    }
+}
