@@ -33,15 +33,8 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let modelview = *ctx.matrices.modelview.top();
     let mvp = ctx.matrices.projection.top().mul(&modelview);
     let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
-    stage.light = LightPlan::new(
-        &ctx.light,
-        &st.caps,
-        st.current.color,
-        &modelview,
-        Some(ctx.matrices.modelview.top_flags()),
-        false,
-        fma,
-    );
+    let ucp = &ctx.clip_planes;
+    stage.set_user_planes(&ucp.eye, ucp.enabled, &ctx.matrices.projection);
     stage.fog = st.caps.get(Cap::Fog).then_some(ctx.light.fog);
     let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
         ..crate::context::state::MAX_TEXTURE_UNITS)
@@ -51,6 +44,18 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             Some(p)
         })
         .collect();
+    let mv_flags = ctx.matrices.modelview.top_flags();
+    let (normalize, rescale) = (st.caps.get(Cap::Normalize), st.caps.get(Cap::RescaleNormal));
+    let texgen_eye = stage.add_texgen(&ctx.texgen, mv_flags, normalize, rescale);
+    stage.light = LightPlan::new(
+        &ctx.light,
+        &st.caps,
+        st.current.color,
+        &modelview,
+        Some(mv_flags),
+        texgen_eye,
+        fma,
+    );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
@@ -122,7 +127,15 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                     return;
                 }
                 let (p, q) = if va.mask | vb.mask != 0 {
-                    match clip_line(va, vb, va.mask | vb.mask, &viewport, nvary, plan.flat) {
+                    match clip_line(
+                        va,
+                        vb,
+                        va.mask | vb.mask,
+                        &stage.ucp,
+                        &viewport,
+                        nvary,
+                        plan.flat,
+                    ) {
                         Some(pq) => pq,
                         None => return,
                     }
@@ -150,9 +163,15 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             } else if or != 0 {
                 stats.tris_clipped += 1;
                 let mut out: Vec<[ClipVertex; 3]> = Vec::new();
-                clip_triangle([va, vb, vc], or, &viewport, nvary, plan.flat, |p, q, r| {
-                    out.push([*p, *q, *r])
-                });
+                clip_triangle(
+                    [va, vb, vc],
+                    or,
+                    &stage.ucp,
+                    &viewport,
+                    nvary,
+                    plan.flat,
+                    |p, q, r| out.push([*p, *q, *r]),
+                );
                 for [p, q, r] in &out {
                     one(p, q, r, &mut rast, stats);
                 }

@@ -121,6 +121,8 @@ const SCENES: &[&str] = &[
     "stress_depth_fight",
     "stress_degenerate",
     "tex_sized_formats",
+    "texgen_linear",
+    "texgen_sphere_map",
 ];
 
 macro_rules! scene_tests {
@@ -190,6 +192,8 @@ scene_tests!(
     stress_depth_fight,
     stress_degenerate,
     tex_sized_formats,
+    texgen_linear,
+    texgen_sphere_map,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

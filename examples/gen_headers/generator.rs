@@ -60,6 +60,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("fragment.rs", Header::Gl),
     ("textures.rs", Header::Gl),
     ("lighting.rs", Header::Gl),
+    ("texgen.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),

@@ -1130,6 +1130,19 @@ GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 GLAPI void GLAPIENTRY glFogiv(GLenum pname, const GLint *params);
 
+/* Functions: src/ffi/texgen.rs */
+GLAPI void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble param);
+GLAPI void GLAPIENTRY glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+GLAPI void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
+GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
+
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLACTIVETEXTUREPROC) (GLenum texture);

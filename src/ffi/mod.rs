@@ -25,6 +25,7 @@ pub mod osmesa;
 pub mod proc_table;
 pub mod query;
 pub mod state;
+pub mod texgen;
 pub mod textures;
 pub mod textures_ext;
 pub mod types;
