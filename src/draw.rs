@@ -57,7 +57,9 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         fma,
     );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
-    plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
+    stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
+    plan.separate_specular =
+        stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     let Some(region) = ctx.draw_region() else {
         return;

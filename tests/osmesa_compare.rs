@@ -139,6 +139,7 @@ const SCENES: &[&str] = &[
     "texgen_sphere_map",
     "clip_planes",
     "clip_planes_lines",
+    "color_sum",
 ];
 
 macro_rules! scene_tests {
@@ -212,6 +213,7 @@ scene_tests!(
     texgen_sphere_map,
     clip_planes,
     clip_planes_lines,
+    color_sum,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -44,6 +44,8 @@ pub struct VertexStage {
     pub ucp: UserPlanes,
     /// The enabled user clip planes (bits).
     pub ucp_enabled: u8,
+    /// GL_COLOR_SUM without lighting: the secondary colour passes through.
+    pub color_sum: bool,
 }
 
 /// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1.
@@ -69,6 +71,7 @@ impl VertexStage {
             fog: None,
             ucp: [[0.0; 4]; 8],
             ucp_enabled: 0,
+            color_sum: false,
         }
     }
 
@@ -140,7 +143,7 @@ impl VertexStage {
             VARY_TEX + 4 * self.n_tex
         } else if self.fog.is_some() {
             VARY_FOG + 1
-        } else if self.light.as_ref().is_some_and(|l| l.separate_specular()) {
+        } else if self.color_sum || self.light.as_ref().is_some_and(|l| l.separate_specular()) {
             VARY_SPEC + 4
         } else {
             4
@@ -179,7 +182,13 @@ impl VertexStage {
                     out.vary[b + 4..b + 8].copy_from_slice(&lit.back_spec.map(clamp_color));
                 }
             }
-            None => out.vary[..4].copy_from_slice(&v.color.map(clamp_color)),
+            None => {
+                out.vary[..4].copy_from_slice(&v.color.map(clamp_color));
+                if self.color_sum {
+                    out.vary[VARY_SPEC..VARY_SPEC + 4]
+                        .copy_from_slice(&v.secondary.map(clamp_color));
+                }
+            }
         }
         if let Some(f) = &self.fog {
             out.vary[VARY_FOG] = vertex_fog_coord(f, &self.modelview, v.pos, eye, v.fog_coord);

@@ -21,6 +21,8 @@ pub struct VertexIn {
     pub texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
     /// Fog coordinate (GL_FOG_COORD).
     pub fog_coord: f32,
+    /// Secondary colour (GL_COLOR_SUM without lighting).
+    pub secondary: [f32; 4],
 }
 
 impl VertexIn {
@@ -32,6 +34,7 @@ impl VertexIn {
             normal: cur.normal,
             texcoord: cur.texcoord,
             fog_coord: cur.fog_coord,
+            secondary: cur.secondary_color,
         }
     }
 }
