@@ -140,6 +140,7 @@ const SCENES: &[&str] = &[
     "clip_planes",
     "clip_planes_lines",
     "color_sum",
+    "raster_pos",
 ];
 
 macro_rules! scene_tests {
@@ -214,6 +215,7 @@ scene_tests!(
     clip_planes,
     clip_planes_lines,
     color_sum,
+    raster_pos,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -10,6 +10,7 @@ pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod lighting_state;
+pub mod pixel_state;
 pub mod state;
 pub mod texgen_state;
 
@@ -101,6 +102,10 @@ pub struct Context {
     pub texgen: texgen_state::TexGenState,
     /// User clip planes.
     pub clip_planes: texgen_state::ClipPlanes,
+    /// The current raster position.
+    pub raster: pixel_state::RasterPos,
+    /// Pixel zoom (GL_PIXEL_MODE_BIT).
+    pub pixel_modes: pixel_state::PixelModes,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -152,6 +157,8 @@ impl Context {
             light: Default::default(),
             texgen: Default::default(),
             clip_planes: Default::default(),
+            raster: Default::default(),
+            pixel_modes: Default::default(),
         }
     }
 

@@ -22,6 +22,8 @@ pub mod lighting_ext;
 pub mod matrix;
 pub mod multidraw;
 pub mod osmesa;
+pub mod pixels;
+pub mod pixels_ext;
 pub mod proc_table;
 pub mod query;
 pub mod state;
