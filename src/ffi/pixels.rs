@@ -81,7 +81,6 @@ pub extern "C" fn glRasterPos2f(x: GLfloat, y: GLfloat) {
 pub unsafe extern "C" fn glRasterPos2fv(v: *const GLfloat) {
     // SAFETY: the caller promises 2 values.
     if let Some(v) = unsafe { read::<GLfloat, 2>(v) } {
-        let v = v;
         rp([v[0], v[1], 0.0, 1.0])
     }
 }
@@ -157,7 +156,6 @@ pub extern "C" fn glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
 pub unsafe extern "C" fn glRasterPos3fv(v: *const GLfloat) {
     // SAFETY: the caller promises 3 values.
     if let Some(v) = unsafe { read::<GLfloat, 3>(v) } {
-        let v = v;
         rp([v[0], v[1], v[2], 1.0])
     }
 }
@@ -233,7 +231,6 @@ pub extern "C" fn glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) 
 pub unsafe extern "C" fn glRasterPos4fv(v: *const GLfloat) {
     // SAFETY: the caller promises 4 values.
     if let Some(v) = unsafe { read::<GLfloat, 4>(v) } {
-        let v = v;
         rp(v)
     }
 }

@@ -67,7 +67,6 @@ pub extern "C" fn glWindowPos2f(x: GLfloat, y: GLfloat) {
 pub unsafe extern "C" fn glWindowPos2fv(v: *const GLfloat) {
     // SAFETY: the caller promises 2 values.
     if let Some(v) = unsafe { read::<GLfloat, 2>(v) } {
-        let v = v;
         wp(v[0], v[1], 0.0)
     }
 }
@@ -143,7 +142,6 @@ pub extern "C" fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
 pub unsafe extern "C" fn glWindowPos3fv(v: *const GLfloat) {
     // SAFETY: the caller promises 3 values.
     if let Some(v) = unsafe { read::<GLfloat, 3>(v) } {
-        let v = v;
         wp(v[0], v[1], v[2])
     }
 }
@@ -219,7 +217,6 @@ pub extern "C" fn glWindowPos2fARB(x: GLfloat, y: GLfloat) {
 pub unsafe extern "C" fn glWindowPos2fvARB(v: *const GLfloat) {
     // SAFETY: the caller promises 2 values.
     if let Some(v) = unsafe { read::<GLfloat, 2>(v) } {
-        let v = v;
         wp(v[0], v[1], 0.0)
     }
 }
@@ -295,7 +292,6 @@ pub extern "C" fn glWindowPos3fARB(x: GLfloat, y: GLfloat, z: GLfloat) {
 pub unsafe extern "C" fn glWindowPos3fvARB(v: *const GLfloat) {
     // SAFETY: the caller promises 3 values.
     if let Some(v) = unsafe { read::<GLfloat, 3>(v) } {
-        let v = v;
         wp(v[0], v[1], v[2])
     }
 }

@@ -117,10 +117,9 @@ impl VertexStage {
         projection: &crate::fixed_function::matrix::MatrixStack,
     ) {
         self.ucp_enabled = enabled;
-        for i in 0..8 {
+        for (i, (dst, p)) in self.ucp.iter_mut().zip(eye_planes).enumerate() {
             if enabled & (1 << i) != 0 {
-                self.ucp[i] =
-                    crate::context::texgen_state::plane_times_inverse(projection, eye_planes[i]);
+                *dst = crate::context::texgen_state::plane_times_inverse(projection, *p);
             }
         }
     }
