@@ -34,15 +34,8 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let modelview = *ctx.matrices.modelview.top();
     let mvp = ctx.matrices.projection.top().mul(&modelview);
     let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
-    stage.light = LightPlan::new(
-        &ctx.light,
-        &st.caps,
-        st.current.color,
-        &modelview,
-        Some(ctx.matrices.modelview.top_flags()),
-        false,
-        fma,
-    );
+    let ucp = &ctx.clip_planes;
+    stage.set_user_planes(&ucp.eye, ucp.enabled, &ctx.matrices.projection);
     stage.fog = st.caps.get(Cap::Fog).then_some(ctx.light.fog);
     let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
         ..crate::context::state::MAX_TEXTURE_UNITS)
@@ -53,8 +46,22 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         })
         .collect();
     let depth_bits = fb.depth_format.bits();
+    let mv_flags = ctx.matrices.modelview.top_flags();
+    let (normalize, rescale) = (st.caps.get(Cap::Normalize), st.caps.get(Cap::RescaleNormal));
+    let texgen_eye = stage.add_texgen(&ctx.texgen, mv_flags, normalize, rescale);
+    stage.light = LightPlan::new(
+        &ctx.light,
+        &st.caps,
+        st.current.color,
+        &modelview,
+        Some(mv_flags),
+        texgen_eye,
+        fma,
+    );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
-    plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
+    stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
+    plan.separate_specular =
+        stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     let Some(region) = ctx.draw_region() else {
         return;
@@ -131,7 +138,8 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             }
         }
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
-            let lines = LinePlan::new(&ctx.raster, &st.caps, nvary);
+            let mut lines = LinePlan::new(&ctx.raster, &st.caps, nvary);
+            lines.ucp = stage.ucp;
             let mut stipple = lines.stipple;
             let mut target = rast.target(stats).target();
             assemble::lines(mode, n, |a, b, reset| {
@@ -156,7 +164,10 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         }
         _ if PolyPipeline::needed(&ctx.raster, &st.caps, back.is_some()) => {
             let pp = PolyPipeline {
-                lines: LinePlan::new(&ctx.raster, &st.caps, nvary),
+                lines: LinePlan {
+                    ucp: stage.ucp,
+                    ..LinePlan::new(&ctx.raster, &st.caps, nvary)
+                },
                 point_size: point_size(&ctx.raster),
                 raster: &ctx.raster,
                 caps: &st.caps,
@@ -181,9 +192,15 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             } else if or != 0 {
                 stats.tris_clipped += 1;
                 let mut out: Vec<[ClipVertex; 3]> = Vec::new();
-                clip_triangle([va, vb, vc], or, &viewport, nvary, plan.flat, |p, q, r| {
-                    out.push([*p, *q, *r])
-                });
+                clip_triangle(
+                    [va, vb, vc],
+                    or,
+                    &stage.ucp,
+                    &viewport,
+                    nvary,
+                    plan.flat,
+                    |p, q, r| out.push([*p, *q, *r]),
+                );
                 for [p, q, r] in &out {
                     one(p, q, r, &mut rast, stats);
                 }

@@ -61,12 +61,15 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("textures.rs", Header::Gl),
     ("lighting.rs", Header::Gl),
     ("rasterization.rs", Header::Gl),
+    ("texgen.rs", Header::Gl),
+    ("pixels.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
     ("fragment_ext.rs", Header::Glext),
     ("textures_ext.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
+    ("pixels_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 

@@ -36,6 +36,11 @@ pub struct Value {
 }
 
 impl Value {
+    /// A value of f32 components.
+    pub fn from_f32(kind: Kind, v: &[f32]) -> Self {
+        let d: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+        Value::new(kind, &d)
+    }
     fn new(kind: Kind, v: &[f64]) -> Self {
         let mut vals = [0.0; 16];
         vals[..v.len()].copy_from_slice(v);
@@ -284,10 +289,16 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         } else {
             GL_FRAGMENT_DEPTH
         }),
-        _ => match Cap::from_gl(pname) {
-            Ok(cap) => b(st.caps.get(cap)),
-            Err(_) => return Err(GlError::InvalidEnum),
-        },
+        _ => {
+            let unit = st.active_texture;
+            if let Some(v) = super::pixel_state::get(&c.raster_pos, &c.pixel_modes, unit, pname) {
+                return v;
+            }
+            match Cap::from_gl(pname) {
+                Ok(cap) => b(st.caps.get(cap)),
+                Err(_) => return Err(GlError::InvalidEnum),
+            }
+        }
     })
 }
 

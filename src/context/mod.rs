@@ -11,7 +11,9 @@ pub mod get;
 pub mod immediate;
 pub mod lighting_state;
 pub mod raster_state;
+pub mod pixel_state;
 pub mod state;
+pub mod texgen_state;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
 use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
@@ -99,6 +101,14 @@ pub struct Context {
     pub light: crate::context::lighting_state::LightingState,
     /// Line, point and polygon rasterization state.
     pub raster: raster_state::RasterState,
+    /// glTexGen state per texture unit.
+    pub texgen: texgen_state::TexGenState,
+    /// User clip planes.
+    pub clip_planes: texgen_state::ClipPlanes,
+    /// The current raster position.
+    pub raster_pos: pixel_state::RasterPos,
+    /// Pixel zoom (GL_PIXEL_MODE_BIT).
+    pub pixel_modes: pixel_state::PixelModes,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -149,6 +159,10 @@ impl Context {
             textures: crate::texture::TextureState::default(),
             light: Default::default(),
             raster: Default::default(),
+            texgen: Default::default(),
+            clip_planes: Default::default(),
+            raster_pos: Default::default(),
+            pixel_modes: Default::default(),
         }
     }
 
@@ -265,12 +279,40 @@ impl Context {
         match cap {
             Cap::Texture1D => unit.enabled_1d = on,
             Cap::Texture2D => unit.enabled_2d = on,
+            Cap::TexGenS | Cap::TexGenT | Cap::TexGenR | Cap::TexGenQ => {
+                let bit = 1u8 << (cap as u8 - Cap::TexGenS as u8);
+                let g = &mut self.texgen.units[self.state.active_texture].enabled;
+                *g = if on { *g | bit } else { *g & !bit };
+            }
+            Cap::ClipPlane0
+            | Cap::ClipPlane1
+            | Cap::ClipPlane2
+            | Cap::ClipPlane3
+            | Cap::ClipPlane4
+            | Cap::ClipPlane5
+            | Cap::ClipPlane6
+            | Cap::ClipPlane7 => {
+                let bit = 1u8 << (cap as u8 - Cap::ClipPlane0 as u8);
+                let g = &mut self.clip_planes.enabled;
+                *g = if on { *g | bit } else { *g & !bit };
+            }
             // Mesa copies the current colour into the tracked material when colour material
             // is switched (and whenever the colour changes while it is on).
             Cap::ColorMaterial => self.light.sync_color_material(self.state.current.color),
             _ => {}
         }
         Ok(())
+    }
+
+    /// Mirrors the active unit's GL_TEXTURE_GEN_S/T/R/Q enables into the cap bits.
+    pub fn sync_texgen_caps(&mut self) {
+        let g = self.texgen.units[self.state.active_texture].enabled;
+        for (k, cap) in [Cap::TexGenS, Cap::TexGenT, Cap::TexGenR, Cap::TexGenQ]
+            .into_iter()
+            .enumerate()
+        {
+            self.state.caps.set(cap, g & (1 << k) != 0);
+        }
     }
 
     /// The matrix stack glMatrixMode selects.

@@ -15,7 +15,7 @@ use crate::context::Context;
 ///
 /// # Safety
 /// `p` must be null or readable for `n` values.
-unsafe fn read4<T: Copy + Default>(p: *const T, n: usize) -> Option<[T; 4]> {
+pub(crate) unsafe fn read4<T: Copy + Default>(p: *const T, n: usize) -> Option<[T; 4]> {
     if p.is_null() {
         return None;
     }

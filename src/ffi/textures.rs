@@ -1157,6 +1157,7 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
         let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
         c.state.caps.set(Cap::Texture1D, e1);
         c.state.caps.set(Cap::Texture2D, e2);
+        c.sync_texgen_caps();
         Ok(())
     })
 }

@@ -6,4 +6,5 @@ pub mod gallivm_math;
 pub mod lighting;
 pub mod matrix;
 pub mod mesa_matrix;
+pub mod texgen;
 pub mod transform;

@@ -6,10 +6,16 @@
 use super::fog::vertex_fog_coord;
 use super::lighting::{eye_normal, eye_position, light_vertex, LightPlan};
 use super::matrix::{Mat4, IDENTITY};
+use super::mesa_matrix::MatFlags;
+use super::texgen::{generate, NormalXform, TexGenPlan};
 use crate::context::lighting_state::FogState;
 use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::context::texgen_state::TexGenState;
+use crate::geometry::clip::UserPlanes;
 use crate::geometry::fetch::VertexIn;
-use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX};
+use crate::geometry::{
+    clip_mask, user_clip_mask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX,
+};
 
 /// Per-draw constants of the vertex stage.
 #[derive(Clone, Debug)]
@@ -26,10 +32,20 @@ pub struct VertexStage {
     pub tex_units: [(usize, Option<Mat4>); MAX_TEXTURE_UNITS],
     /// How many entries of `tex_units` are used.
     pub n_tex: usize,
+    /// Texture coordinate generation of each entry of `tex_units`.
+    pub texgen: [Option<TexGenPlan>; MAX_TEXTURE_UNITS],
+    /// The eye-space normal transform, when some generation reads the normal.
+    pub normal_xform: Option<NormalXform>,
     /// Lighting, when GL_LIGHTING is on.
     pub light: Option<LightPlan>,
     /// Fog, when GL_FOG is on.
     pub fog: Option<FogState>,
+    /// User clip planes in clip space.
+    pub ucp: UserPlanes,
+    /// The enabled user clip planes (bits).
+    pub ucp_enabled: u8,
+    /// GL_COLOR_SUM without lighting: the secondary colour passes through.
+    pub color_sum: bool,
 }
 
 /// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1.
@@ -49,8 +65,13 @@ impl VertexStage {
             fma,
             tex_units: [(0, None); MAX_TEXTURE_UNITS],
             n_tex: 0,
+            texgen: [None; MAX_TEXTURE_UNITS],
+            normal_xform: None,
             light: None,
             fog: None,
+            ucp: [[0.0; 4]; 8],
+            ucp_enabled: 0,
+            color_sum: false,
         }
     }
 
@@ -60,6 +81,46 @@ impl VertexStage {
         if self.n_tex < MAX_TEXTURE_UNITS {
             self.tex_units[self.n_tex] = (unit, (*m != IDENTITY).then_some(*m));
             self.n_tex += 1;
+        }
+    }
+
+    /// Sets up texture coordinate generation for the units added so far. Returns whether
+    /// any of it needs eye coordinates (which moves lighting into eye space).
+    pub fn add_texgen(
+        &mut self,
+        st: &TexGenState,
+        mv_flags: MatFlags,
+        normalize: bool,
+        rescale: bool,
+    ) -> bool {
+        let mut eye = false;
+        let mut normal = false;
+        for k in 0..self.n_tex {
+            let p = TexGenPlan::new(&st.units[self.tex_units[k].0]);
+            if let Some(p) = &p {
+                eye |= p.needs_eye();
+                normal |= p.needs_normal();
+            }
+            self.texgen[k] = p;
+        }
+        self.normal_xform =
+            normal.then(|| NormalXform::new(&self.modelview, mv_flags, normalize, rescale));
+        eye
+    }
+
+    /// Enables the user clip planes `enabled` of `eye_planes` (eye space), moving them to
+    /// clip space with the inverse projection as Mesa's `_mesa_update_clip_plane` does.
+    pub fn set_user_planes(
+        &mut self,
+        eye_planes: &UserPlanes,
+        enabled: u8,
+        projection: &crate::fixed_function::matrix::MatrixStack,
+    ) {
+        self.ucp_enabled = enabled;
+        for (i, (dst, p)) in self.ucp.iter_mut().zip(eye_planes).enumerate() {
+            if enabled & (1 << i) != 0 {
+                *dst = crate::context::texgen_state::plane_times_inverse(projection, *p);
+            }
         }
     }
 
@@ -81,7 +142,7 @@ impl VertexStage {
             VARY_TEX + 4 * self.n_tex
         } else if self.fog.is_some() {
             VARY_FOG + 1
-        } else if self.light.as_ref().is_some_and(|l| l.separate_specular()) {
+        } else if self.color_sum || self.light.as_ref().is_some_and(|l| l.separate_specular()) {
             VARY_SPEC + 4
         } else {
             4
@@ -92,7 +153,10 @@ impl VertexStage {
     #[inline]
     pub fn run(&self, v: &VertexIn) -> ClipVertex {
         let clip = self.mvp.transform(v.pos);
-        let mask = clip_mask(clip);
+        let mut mask = clip_mask(clip);
+        if self.ucp_enabled != 0 {
+            mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
+        }
         let mut out = ClipVertex {
             clip,
             win: self.viewport.apply_shader(clip, self.fma),
@@ -117,13 +181,24 @@ impl VertexStage {
                     out.vary[b + 4..b + 8].copy_from_slice(&lit.back_spec.map(clamp_color));
                 }
             }
-            None => out.vary[..4].copy_from_slice(&v.color.map(clamp_color)),
+            None => {
+                out.vary[..4].copy_from_slice(&v.color.map(clamp_color));
+                if self.color_sum {
+                    out.vary[VARY_SPEC..VARY_SPEC + 4]
+                        .copy_from_slice(&v.secondary.map(clamp_color));
+                }
+            }
         }
         if let Some(f) = &self.fog {
             out.vary[VARY_FOG] = vertex_fog_coord(f, &self.modelview, v.pos, eye, v.fog_coord);
         }
+        let n = self.normal_xform.map(|x| x.apply(v.normal));
         for (k, (unit, m)) in self.tex_units[..self.n_tex].iter().enumerate() {
-            let tc = v.texcoord[*unit];
+            let mut tc = v.texcoord[*unit];
+            if let Some(g) = &self.texgen[k] {
+                let e = *eye.get_or_insert_with(|| eye_position(&self.modelview, v.pos));
+                tc = generate(g, tc, v.pos, e, n.unwrap_or_default());
+            }
             let tc = match m {
                 Some(m) => m.transform(tc),
                 None => tc,

@@ -1,13 +1,17 @@
-//! Homogeneous clipping of triangles against the six view-volume planes.
+//! Homogeneous clipping of triangles and lines against the six view-volume planes and the
+//! user clip planes.
 //!
 //! Sutherland–Hodgman, one plane at a time in llvmpipe's bit order (right, left, top,
-//! bottom, near, far), only for the planes some vertex is outside of. A new vertex is
+//! bottom, near, far, then user planes 0..8), only for the planes some vertex is outside
+//! of. User planes are given in clip space (Mesa's `_ClipUserPlane`: the eye-space plane
+//! times the inverse projection); their distances here are plain C `dot4`s, while the
+//! vertex stage's mask used `fmuladd` ([`super::user_clip_mask`]), as in the draw module. A new vertex is
 //! interpolated in clip space from the end nearer to the plane, and its window position is
 //! computed without FMA, exactly as Mesa's draw module does (`draw_pipe_clip.c`). There is
 //! no guard band: every triangle that crosses a plane is cut, so window coordinates stay
 //! inside the viewport and the fixed-point rasterizer never overflows.
 
-use super::{ClipVertex, Viewport};
+use super::{ClipMask, ClipVertex, Viewport};
 
 /// The view-volume planes as (a, b, c, d) with `dot(clip, plane) >= 0` inside.
 const PLANES: [[f32; 4]; 6] = [
@@ -19,8 +23,22 @@ const PLANES: [[f32; 4]; 6] = [
     [0.0, 0.0, -1.0, 1.0],
 ];
 
-/// The most vertices a triangle clipped by six planes can have, plus room for scratch.
-const MAX_POLY: usize = 12;
+/// The most vertices a triangle clipped by six planes and eight user planes can have, plus
+/// room for scratch (Mesa's `MAX_CLIPPED_VERTICES` is 29).
+const MAX_POLY: usize = 20;
+
+/// User clip planes in clip space, indexed by plane (bit `6 + i` of a clip mask).
+pub type UserPlanes = [[f32; 4]; 8];
+
+/// Plane `p` of a clip mask bit: a view-volume plane or user plane `p - 6`.
+#[inline]
+fn plane(p: usize, ucp: &UserPlanes) -> [f32; 4] {
+    if p < 6 {
+        PLANES[p]
+    } else {
+        ucp[p - 6]
+    }
+}
 
 #[inline]
 fn dot4(a: [f32; 4], b: [f32; 4]) -> f32 {
@@ -50,7 +68,8 @@ fn interp(t: f32, out: &ClipVertex, inn: &ClipVertex, vp: &Viewport, nvary: usiz
 /// into P[0] when it is a new vertex. Returns the number of triangles emitted.
 pub fn clip_triangle(
     v: [&ClipVertex; 3],
-    mask: u8,
+    mask: ClipMask,
+    ucp: &UserPlanes,
     vp: &Viewport,
     nvary: usize,
     flat: bool,
@@ -72,7 +91,7 @@ pub fn clip_triangle(
     while planes != 0 && n >= 3 {
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
-        let plane = PLANES[p];
+        let plane = plane(p, ucp);
         let mut dp_prev = dot4(inl[0].clip, plane);
         if !dp_prev.is_finite() {
             return 0;
@@ -144,7 +163,8 @@ pub fn clip_triangle(
 pub fn clip_line(
     v0: &ClipVertex,
     v1: &ClipVertex,
-    mask: u8,
+    mask: ClipMask,
+    ucp: &UserPlanes,
     vp: &Viewport,
     nvary: usize,
     flat: bool,
@@ -154,8 +174,8 @@ pub fn clip_line(
     while planes != 0 {
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
-        let dp0 = dot4(v0.clip, PLANES[p]);
-        let dp1 = dot4(v1.clip, PLANES[p]);
+        let dp0 = dot4(v0.clip, plane(p, ucp));
+        let dp1 = dot4(v1.clip, plane(p, ucp));
         if !dp0.is_finite() || !dp1.is_finite() {
             return None;
         }
@@ -209,9 +229,15 @@ mod tests {
         ];
         let mask = v[0].mask | v[1].mask | v[2].mask;
         let mut tris = vec![];
-        let n = clip_triangle([&v[0], &v[1], &v[2]], mask, &vp, 0, false, |a, b, c| {
-            tris.push([a.clip, b.clip, c.clip])
-        });
+        let n = clip_triangle(
+            [&v[0], &v[1], &v[2]],
+            mask,
+            &[[0.0; 4]; 8],
+            &vp,
+            0,
+            false,
+            |a, b, c| tris.push([a.clip, b.clip, c.clip]),
+        );
         assert_eq!(n, 2);
         for t in &tris {
             for c in t {
@@ -229,7 +255,15 @@ mod tests {
             vert([0.0, 0.5, 0.0, 1.0]),
         ];
         assert_eq!(
-            clip_triangle([&v[0], &v[1], &v[2]], 1, &vp, 0, false, |_, _, _| {}),
+            clip_triangle(
+                [&v[0], &v[1], &v[2]],
+                1,
+                &[[0.0; 4]; 8],
+                &vp,
+                0,
+                false,
+                |_, _, _| {}
+            ),
             0
         );
     }

@@ -23,6 +23,8 @@ pub struct VertexIn {
     pub fog_coord: f32,
     /// Edge flag (glEdgeFlag): whether the polygon edge starting here is a boundary edge.
     pub edge_flag: bool,
+    /// Secondary colour (GL_COLOR_SUM without lighting).
+    pub secondary: [f32; 4],
 }
 
 impl VertexIn {
@@ -35,6 +37,7 @@ impl VertexIn {
             texcoord: cur.texcoord,
             fog_coord: cur.fog_coord,
             edge_flag: cur.edge_flag,
+            secondary: cur.secondary_color,
         }
     }
 }

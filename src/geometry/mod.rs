@@ -29,8 +29,9 @@ pub struct ClipVertex {
     pub clip: [f32; 4],
     /// Window position: x, y (y-down raster space), z in [0,1] before clamping, and 1/w.
     pub win: [f32; 4],
-    /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w, 5 z>w (llvmpipe's order).
-    pub mask: u8,
+    /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w, 5 z>w (llvmpipe's order),
+    /// bits 6.. the user clip planes.
+    pub mask: ClipMask,
     /// Varyings: [0..4] primary colour, [4..8] secondary colour, then texture coordinates.
     pub vary: [f32; MAX_VARY],
 }
@@ -114,17 +115,42 @@ pub fn cpu_has_fma() -> bool {
     crate::cpu::isa().fused()
 }
 
+/// A vertex's clip mask: the six view-volume bits, then one bit per user clip plane.
+pub type ClipMask = u16;
+
+/// The user clip-plane bits of a clip-space position, as llvmpipe's vertex stage tests
+/// them: `0 > ((a·x ⊕ b·y) ⊕ c·z) ⊕ d·w` where ⊕ is `fmuladd` (fused on FMA hosts), so a
+/// NaN distance sets no bit. `planes` are clip-space planes, `enabled` their bits.
+#[inline]
+pub fn user_clip_mask(c: [f32; 4], planes: &[[f32; 4]; 8], enabled: u8, fma: bool) -> ClipMask {
+    let mut mask = 0;
+    let mut bits = enabled;
+    while bits != 0 {
+        let i = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        let p = planes[i];
+        let mut sum = p[0] * c[0];
+        for k in 1..4 {
+            sum = madd(p[k], c[k], sum, fma);
+        }
+        if 0.0 > sum {
+            mask |= 1 << (6 + i);
+        }
+    }
+    mask
+}
+
 /// The clip mask of a clip-space position (strict tests: on the plane is inside). The
 /// tests are written negated so that a NaN coordinate counts as outside (the clipper then
 /// drops the primitive); for every non-NaN input they equal the plain `x > w` tests.
 #[inline]
 #[allow(clippy::neg_cmp_op_on_partial_ord)] // deliberate: NaN must count as outside
-pub fn clip_mask(c: [f32; 4]) -> u8 {
+pub fn clip_mask(c: [f32; 4]) -> ClipMask {
     let [x, y, z, w] = c;
-    (!(x <= w)) as u8
+    ((!(x <= w)) as u8
         | ((!(x + w >= 0.0)) as u8) << 1
         | ((!(y <= w)) as u8) << 2
         | ((!(y + w >= 0.0)) as u8) << 3
         | ((!(z + w >= 0.0)) as u8) << 4
-        | ((!(z <= w)) as u8) << 5
+        | ((!(z <= w)) as u8) << 5) as ClipMask
 }

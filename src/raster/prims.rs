@@ -8,7 +8,7 @@ use crate::context::raster_state::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_PO
 use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::clip::{clip_line, clip_triangle};
+use crate::geometry::clip::{clip_line, clip_triangle, UserPlanes};
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::unfilled::{
     decompose, determinant, draw_offset, fill_mode, scaled_units, setup_offset, EDGE_0, EDGE_1,
@@ -48,6 +48,8 @@ pub struct LinePlan {
     pub stipple: Option<LineStipple>,
     /// Varyings per vertex.
     pub nvary: usize,
+    /// The user clip planes in clip space (GL_CLIP_PLANEi).
+    pub ucp: UserPlanes,
 }
 
 impl LinePlan {
@@ -61,6 +63,7 @@ impl LinePlan {
                 counter: 0.0,
             }),
             nvary,
+            ucp: [[0.0; 4]; 8],
         }
     }
 
@@ -82,7 +85,15 @@ impl LinePlan {
             return;
         }
         let (p, q) = if va.mask | vb.mask != 0 {
-            match clip_line(va, vb, va.mask | vb.mask, viewport, self.nvary, flat) {
+            match clip_line(
+                va,
+                vb,
+                va.mask | vb.mask,
+                &self.ucp,
+                viewport,
+                self.nvary,
+                flat,
+            ) {
                 Some(pq) => pq,
                 None => return,
             }
@@ -324,6 +335,7 @@ impl PolyPipeline<'_> {
                 clip_triangle(
                     [va, vb, vc],
                     or,
+                    &self.lines.ucp,
                     &self.viewport,
                     nvary,
                     plan.flat,

@@ -1,0 +1,168 @@
+//! Texture coordinate generation and user clip planes (`GL/gl.h`): glTexGen*,
+//! glGetTexGen*, glClipPlane and glGetClipPlane. Values convert to f32 as Mesa's
+//! `texgen.c` and `clip.c` do (glTexGeni/f/d set a plane to `(param, 0, 0, 0)`).
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::lighting::read4;
+use super::types::*;
+use super::with_ctx;
+use crate::context::texgen_state::{plane_times_inverse, ClipPlanes};
+
+/// How many values a glTexGen pname takes.
+fn texgen_count(pname: GLenum) -> usize {
+    if pname == GL_TEXTURE_GEN_MODE {
+        1
+    } else {
+        4
+    }
+}
+
+fn texgen(coord: GLenum, pname: GLenum, p: [f32; 4]) {
+    with_ctx(move |c| {
+        c.check_outside_begin()?;
+        let unit = c.state.active_texture;
+        c.texgen.set(unit, coord, pname, p, &c.matrices.modelview)
+    })
+}
+
+/// glTexGenf.
+#[no_mangle]
+pub extern "C" fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) {
+    texgen(coord, pname, [param, 0.0, 0.0, 0.0])
+}
+
+/// glTexGeni.
+#[no_mangle]
+pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
+    texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glTexGend.
+#[no_mangle]
+pub extern "C" fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) {
+    texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0])
+}
+
+/// glTexGenfv.
+///
+/// # Safety
+/// `params` must be null or point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
+        texgen(coord, pname, p)
+    }
+}
+
+/// glTexGeniv.
+///
+/// # Safety
+/// `params` must be null or point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
+        texgen(coord, pname, p.map(|v| v as f32))
+    }
+}
+
+/// glTexGendv.
+///
+/// # Safety
+/// `params` must be null or point to as many values as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
+    // SAFETY: the caller promises the values `pname` takes.
+    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
+        texgen(coord, pname, p.map(|v| v as f32))
+    }
+}
+
+/// Reads a texgen value of the active unit and writes it converted by `conv`.
+///
+/// # Safety
+/// `params` must be null or writable for the values `pname` returns.
+unsafe fn get_texgen<T>(coord: GLenum, pname: GLenum, params: *mut T, conv: impl Fn(f64) -> T) {
+    let r = with_ctx(|c| {
+        c.check_outside_begin()?;
+        c.texgen.get(c.state.active_texture, coord, pname).map(Some)
+    });
+    if let Some((v, n)) = r {
+        if params.is_null() {
+            return;
+        }
+        for (i, x) in v.into_iter().take(n).enumerate() {
+            // SAFETY: the caller promises room for the values.
+            unsafe { params.add(i).write_unaligned(conv(x)) };
+        }
+    }
+}
+
+/// glGetTexGenfv.
+///
+/// # Safety
+/// `params` must be null or writable for the values `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { get_texgen(coord, pname, params, |v| v as f32) }
+}
+
+/// glGetTexGeniv (planes truncate to integers, as Mesa's `(GLint)` casts do).
+///
+/// # Safety
+/// `params` must be null or writable for the values `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { get_texgen(coord, pname, params, |v| v as i32) }
+}
+
+/// glGetTexGendv.
+///
+/// # Safety
+/// `params` must be null or writable for the values `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { get_texgen(coord, pname, params, |v| v) }
+}
+
+/// glClipPlane: the equation is converted to f32 and moved to eye space.
+///
+/// # Safety
+/// `equation` must be null or point to four values.
+#[no_mangle]
+pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
+    // SAFETY: the caller promises four values.
+    let Some(eq) = (unsafe { read4(equation, 4) }) else {
+        return;
+    };
+    with_ctx(move |c| {
+        c.check_outside_begin()?;
+        let i = ClipPlanes::index(plane)?;
+        c.clip_planes.eye[i] = plane_times_inverse(&c.matrices.modelview, eq.map(|v| v as f32));
+        Ok(())
+    })
+}
+
+/// glGetClipPlane.
+///
+/// # Safety
+/// `equation` must be null or writable for four values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble) {
+    let r = with_ctx(|c| {
+        c.check_outside_begin()?;
+        let i = ClipPlanes::index(plane)?;
+        Ok(Some(c.clip_planes.eye[i]))
+    });
+    if let (Some(p), false) = (r, equation.is_null()) {
+        for (i, x) in p.into_iter().enumerate() {
+            // SAFETY: the caller promises room for four values.
+            unsafe { equation.add(i).write_unaligned(x as f64) };
+        }
+    }
+}
