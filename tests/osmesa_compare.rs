@@ -178,6 +178,9 @@ const SCENES: &[&str] = &[
     "polygon_stipple",
     "raster_state_get",
     "smooth_prims",
+    "dlist_scene",
+    "dlist_errors",
+    "attrib_stack",
 ];
 
 macro_rules! scene_tests {
@@ -192,6 +195,9 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    dlist_scene,
+    dlist_errors,
+    attrib_stack,
     smooth_triangles,
     flat_triangles,
     prim_modes,

@@ -5,6 +5,8 @@
 //! state when they are wrong; the C boundary records the error for glGetError.
 
 pub mod arrays;
+pub mod attrib;
+pub mod dlist;
 pub mod error;
 pub mod fragment_state;
 pub mod get;
@@ -99,6 +101,10 @@ pub struct Context {
     pub light: crate::context::lighting_state::LightingState,
     /// Line, point and polygon rasterization state.
     pub raster: raster_state::RasterState,
+    /// Display lists.
+    pub lists: dlist::ListState,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub attrib: attrib::AttribStacks,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -149,6 +155,8 @@ impl Context {
             textures: crate::texture::TextureState::default(),
             light: Default::default(),
             raster: Default::default(),
+            lists: Default::default(),
+            attrib: Default::default(),
         }
     }
 
@@ -158,7 +166,12 @@ impl Context {
     pub fn flush_pending(&mut self) {
         if let Some(mode) = self.immediate.pending.take() {
             let verts = std::mem::take(&mut self.immediate.verts);
-            crate::draw::draw(self, mode, &verts, None);
+            // A batch from a display list is drawn indexed, as Mesa draws vertex nodes.
+            let idx: Option<Vec<u32>> = self
+                .immediate
+                .indexed
+                .then(|| (0..verts.len() as u32).collect());
+            crate::draw::draw(self, mode, &verts, idx.as_deref());
             self.immediate.verts = verts;
             self.immediate.verts.clear();
         }

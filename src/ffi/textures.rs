@@ -9,7 +9,7 @@
 use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx, with_ctx_raw};
+use super::{non_negative, with_ctx, with_ctx_list};
 use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
@@ -372,7 +372,7 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 /// glBindTexture (a name first bound to another target: GL_INVALID_OPERATION).
 #[no_mangle]
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let t = bind_target(target)?;
         c.check_outside_begin()?;
         if c.textures.high_unit.is_some() {
@@ -517,7 +517,9 @@ pub extern "C" fn glCopyTexImage1D(
     width: GLsizei,
     border: GLint,
 ) {
-    with_ctx(|c| copy_tex_image(c, target, level, internalformat, x, y, width, 1, border, 1))
+    with_ctx_list(move |c| {
+        copy_tex_image(c, target, level, internalformat, x, y, width, 1, border, 1)
+    })
 }
 
 /// glCopyTexImage2D.
@@ -532,7 +534,7 @@ pub extern "C" fn glCopyTexImage2D(
     height: GLsizei,
     border: GLint,
 ) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         copy_tex_image(
             c,
             target,
@@ -558,7 +560,7 @@ pub extern "C" fn glCopyTexSubImage1D(
     y: GLint,
     width: GLsizei,
 ) {
-    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, 0, x, y, width, 1, 1))
+    with_ctx_list(move |c| copy_tex_sub_image(c, target, level, xoffset, 0, x, y, width, 1, 1))
 }
 
 /// glCopyTexSubImage2D.
@@ -573,7 +575,9 @@ pub extern "C" fn glCopyTexSubImage2D(
     width: GLsizei,
     height: GLsizei,
 ) {
-    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, yoffset, x, y, width, height, 2))
+    with_ctx_list(move |c| {
+        copy_tex_sub_image(c, target, level, xoffset, yoffset, x, y, width, height, 2)
+    })
 }
 
 /// glGetTexImage.
@@ -778,7 +782,7 @@ fn get_level_parameter(
 /// glTexParameterf.
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -789,7 +793,7 @@ pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat)
 /// glTexParameteri.
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -803,20 +807,18 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_BORDER_COLOR {
-            4
-        } else {
-            1
-        };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_parameter(c, target, pname, &v, false)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_BORDER_COLOR {
+        4
+    } else {
+        1
+    };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_parameter(c, target, pname, &v, false))
 }
 
 /// glTexParameteriv.
@@ -825,20 +827,18 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_BORDER_COLOR {
-            4
-        } else {
-            1
-        };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_parameter(c, target, pname, &v, true)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_BORDER_COLOR {
+        4
+    } else {
+        1
+    };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_parameter(c, target, pname, &v, true))
 }
 
 /// glGetTexParameterfv.
@@ -1038,7 +1038,7 @@ fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<
 /// glTexEnvf.
 #[no_mangle]
 pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_ENV_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -1049,7 +1049,7 @@ pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
 /// glTexEnvi.
 #[no_mangle]
 pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_ENV_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -1063,16 +1063,14 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_env(c, target, pname, &v, false)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_env(c, target, pname, &v, false))
 }
 
 /// glTexEnviv.
@@ -1081,16 +1079,14 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_env(c, target, pname, &v, true)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_env(c, target, pname, &v, true))
 }
 
 /// glGetTexEnvfv.
@@ -1139,7 +1135,7 @@ pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *m
 /// GL_TEXTURE_1D/2D follows the unit.
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
         if u >= MAX_COMBINED_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
@@ -1188,19 +1184,23 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     textures: *const GLuint,
     priorities: *const GLclampf,
 ) {
-    with_ctx(|c| {
+    let read = || -> Result<(Vec<GLuint>, Vec<GLclampf>), GlError> {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if textures.is_null() || priorities.is_null() {
-            return Ok(());
+            return Ok((Vec::new(), Vec::new()));
         }
         // SAFETY: the caller promises n readable values in each array.
-        let (names, prios) = unsafe {
+        Ok(unsafe {
             (
-                std::slice::from_raw_parts(textures, n),
-                std::slice::from_raw_parts(priorities, n),
+                std::slice::from_raw_parts(textures, n).to_vec(),
+                std::slice::from_raw_parts(priorities, n).to_vec(),
             )
-        };
+        })
+    };
+    let arrays = read();
+    with_ctx_list(move |c| {
+        let (names, prios) = arrays.as_ref().map_err(|e| *e)?;
+        c.check_outside_begin()?;
         for (&name, &p) in names.iter().zip(prios) {
             if let Some(o) = c.textures.objects.get_mut(&name) {
                 o.params.priority = crate::context::clamp01(p as f64) as f32;
@@ -1239,14 +1239,11 @@ pub unsafe extern "C" fn glAreTexturesResident(
 
 /// Sets the current texture coordinate of unit `target - GL_TEXTURE0`.
 fn multi_texcoord(target: GLenum, v: [f32; 4]) {
-    with_ctx_raw(|c| {
-        let u = target.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_TEXTURE_UNITS {
-            return Err(GlError::InvalidEnum);
-        }
-        c.state.current.texcoord[u] = v;
-        Ok(())
-    })
+    let u = target.wrapping_sub(GL_TEXTURE0) as usize;
+    if u >= MAX_TEXTURE_UNITS {
+        return super::with_ctx_list(|_| Err(GlError::InvalidEnum));
+    }
+    super::with_ctx_vertex(crate::context::dlist::VertexOp::TexCoord(u as u8, v))
 }
 
 /// glMultiTexCoord1s.
