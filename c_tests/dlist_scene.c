@@ -318,6 +318,51 @@ int main(int argc, char **argv)
         glEndList();
         cell(7);
         glCallList(ltex);
+
+        /* glTexImage2D/glTexSubImage2D in a list: the pixels are read at compile time,
+         * with the unpack state of that time */
+        {
+            static GLubyte img[6 * 4 * 3], sub[2 * 2 * 3];
+            GLuint t2, limg;
+            for (i = 0; i < 6 * 4 * 3; i++)
+                img[i] = (GLubyte)(i * 37);
+            for (i = 0; i < 2 * 2 * 3; i++)
+                sub[i] = (GLubyte)(255 - i * 20);
+            glGenTextures(1, &t2);
+            glBindTexture(GL_TEXTURE_2D, t2);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 6);
+            limg = glGenLists(1);
+            glNewList(limg, GL_COMPILE);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, img);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 0); /* executes now */
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGB, GL_UNSIGNED_BYTE, sub);
+            glEndList();
+            for (i = 0; i < 6 * 4 * 3; i++)
+                img[i] = 0;
+            for (i = 0; i < 2 * 2 * 3; i++)
+                sub[i] = 0;
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            /* replaced now, and redefined again by the list */
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, sub);
+            glCallList(limg);
+            glEnable(GL_TEXTURE_2D);
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+            glBegin(GL_QUADS);
+            glTexCoord2f(0.0f, 0.0f);
+            glVertex2f(72.0f, 50.0f);
+            glTexCoord2f(1.0f, 0.0f);
+            glVertex2f(84.0f, 50.0f);
+            glTexCoord2f(1.0f, 1.0f);
+            glVertex2f(84.0f, 82.0f);
+            glTexCoord2f(0.0f, 1.0f);
+            glVertex2f(72.0f, 82.0f);
+            glEnd();
+            glDisable(GL_TEXTURE_2D);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
     }
 
     /* 8: redefining a list that the new definition calls; deep nesting */

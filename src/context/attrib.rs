@@ -133,7 +133,7 @@ fn lighting(c: &mut Context, s: &AttribFrame) {
     list.extend((0..8).map(|i| CAPS[Cap::Light0 as usize + i].0));
     caps(c, s, &list);
     c.state.shade_model = s.state.shade_model;
-    c.light.lights = s.light.lights.clone();
+    c.light.lights = s.light.lights;
     c.light.model = s.light.model;
     c.light.material = s.light.material;
     c.light.color_material = s.light.color_material;

@@ -18,13 +18,13 @@ pub unsafe extern "C" fn glMultiDrawArrays(
     count: *const GLsizei,
     drawcount: GLsizei,
 ) {
-    // SAFETY (both closures): the caller promises `drawcount` entries in each array.
     let pairs = || -> GlResult<Vec<(GLint, GLsizei)>> {
         let n = non_negative(drawcount)?;
         if first.is_null() || count.is_null() {
             return Ok(Vec::new());
         }
         Ok((0..n)
+            // SAFETY: the caller promises `drawcount` entries in each array.
             .map(|i| unsafe { (*first.add(i), *count.add(i)) })
             .collect())
     };

@@ -10,7 +10,7 @@ use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
-use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
+use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
 use crate::texture::upload::{self, ClientFormat, Layout};
@@ -106,19 +106,14 @@ fn image_size(
     Ok(Some((w, h)))
 }
 
-#[allow(clippy::too_many_arguments)]
 unsafe fn tex_image(
     c: &mut Context,
     target: GLenum,
     level: GLint,
-    internal: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    border: GLint,
-    format: GLenum,
-    ty: GLenum,
+    (internal, w, h, border, format, ty): (GLint, GLsizei, GLsizei, GLint, GLenum, GLenum),
     data: *const c_void,
     dims: u8,
+    unpack: PixelStore,
 ) -> GlResult<()> {
     let (t, proxy) = image_target(target)?;
     if (t == Target::Tex1D) != (dims == 1) {
@@ -153,7 +148,7 @@ unsafe fn tex_image(
         return Ok(());
     };
     // Border stripping: skip the first border pixel and row of the client image.
-    let mut ps = c.state.unpack;
+    let mut ps = unpack;
     let (fw, _fh) = (tw + 2 * border as usize, th + 2 * border as usize);
     if border == 1 {
         if ps.row_length == 0 {
@@ -179,19 +174,14 @@ unsafe fn tex_image(
     Ok(())
 }
 
-#[allow(clippy::too_many_arguments)]
 unsafe fn tex_sub_image(
     c: &mut Context,
     target: GLenum,
     level: GLint,
-    xoff: GLint,
-    yoff: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    format: GLenum,
-    ty: GLenum,
+    (xoff, yoff, w, h, format, ty): (GLint, GLint, GLsizei, GLsizei, GLenum, GLenum),
     data: *const c_void,
     dims: u8,
+    unpack: PixelStore,
 ) -> GlResult<()> {
     let t = bind_target(target)?;
     if (t == Target::Tex1D) != (dims == 1) {
@@ -205,7 +195,7 @@ unsafe fn tex_sub_image(
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
-    let ps = c.state.unpack;
+    let ps = unpack;
     let obj = object_mut(c, t, false);
     let img = obj.levels[level]
         .as_mut()
@@ -223,6 +213,56 @@ unsafe fn tex_sub_image(
     }
     maybe_generate(obj, level);
     Ok(())
+}
+
+/// A client image copied while a display list is being compiled (GL 1.5 §5.4: the pixels
+/// are unpacked from client memory when the command is compiled), with the pixel-store
+/// state that describes the copy.
+struct ClientImage {
+    /// The bytes the image spans, or `None` for a null pointer or an invalid description
+    /// (whose error the compiled command raises when it runs).
+    bytes: Option<Vec<u8>>,
+    /// The unpack state at compile time.
+    unpack: PixelStore,
+}
+
+impl ClientImage {
+    /// Copies the `w` x `h` image at `data` under the current unpack state.
+    ///
+    /// # Safety
+    /// `data` (if not null) must hold the image the arguments and unpack state describe.
+    unsafe fn read(
+        format: GLenum,
+        ty: GLenum,
+        w: GLsizei,
+        h: GLsizei,
+        data: *const c_void,
+    ) -> Self {
+        let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
+        let bytes = (|| {
+            let cf = ClientFormat::new(format, ty).ok()?;
+            let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
+            if data.is_null() {
+                return None;
+            }
+            let span = Layout::new(&unpack, w, &cf).span(w, h);
+            // SAFETY: the caller promises the described image is readable.
+            Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
+        })();
+        ClientImage { bytes, unpack }
+    }
+
+    /// The copy's address (null when there is none).
+    fn ptr(&self) -> *const c_void {
+        self.bytes
+            .as_ref()
+            .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
+    }
+}
+
+/// Whether a display list is being compiled on the current context.
+fn compiling() -> bool {
+    super::with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
 }
 
 /// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
@@ -408,21 +448,19 @@ pub unsafe extern "C" fn glTexImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (internalformat, width, 1, border, format, type_);
+            tex_image(c, target, level, args, img.ptr(), 1, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_image(
-            c,
-            target,
-            level,
-            internalformat,
-            width,
-            1,
-            border,
-            format,
-            type_,
-            pixels,
-            1,
-        )
+        let args = (internalformat, width, 1, border, format, type_);
+        tex_image(c, target, level, args, pixels, 1, c.state.unpack)
     })
 }
 
@@ -442,21 +480,19 @@ pub unsafe extern "C" fn glTexImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (internalformat, width, height, border, format, type_);
+            tex_image(c, target, level, args, img.ptr(), 2, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_image(
-            c,
-            target,
-            level,
-            internalformat,
-            width,
-            height,
-            border,
-            format,
-            type_,
-            pixels,
-            2,
-        )
+        let args = (internalformat, width, height, border, format, type_);
+        tex_image(c, target, level, args, pixels, 2, c.state.unpack)
     })
 }
 
@@ -474,11 +510,19 @@ pub unsafe extern "C" fn glTexSubImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (xoffset, 0, width, 1, format, type_);
+            tex_sub_image(c, target, level, args, img.ptr(), 1, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_sub_image(
-            c, target, level, xoffset, 0, width, 1, format, type_, pixels, 1,
-        )
+        let args = (xoffset, 0, width, 1, format, type_);
+        tex_sub_image(c, target, level, args, pixels, 1, c.state.unpack)
     })
 }
 
@@ -498,11 +542,19 @@ pub unsafe extern "C" fn glTexSubImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (xoffset, yoffset, width, height, format, type_);
+            tex_sub_image(c, target, level, args, img.ptr(), 2, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_sub_image(
-            c, target, level, xoffset, yoffset, width, height, format, type_, pixels, 2,
-        )
+        let args = (xoffset, yoffset, width, height, format, type_);
+        tex_sub_image(c, target, level, args, pixels, 2, c.state.unpack)
     })
 }
 
