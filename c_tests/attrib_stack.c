@@ -177,7 +177,6 @@ int main(int argc, char **argv)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glPopAttrib();
     put("texture_binding", geti(GL_TEXTURE_BINDING_2D) == (GLint)tex[0]);
-    put("tex0_mag_filter_restored", 0);
     {
         GLint f = -1;
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &f);
@@ -187,7 +186,11 @@ int main(int argc, char **argv)
         put("tex1_mag_filter", f);
         glBindTexture(GL_TEXTURE_2D, tex[0]);
     }
-    put("env_mode", geti(GL_TEXTURE_ENV_MODE));
+    {
+        GLint m = -1;
+        glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &m);
+        put("env_mode", m);
+    }
     tri(40.0f, 80.0f, 0.0f);
     glDisable(GL_TEXTURE_2D);
 
