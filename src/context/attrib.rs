@@ -405,3 +405,32 @@ impl Context {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::Visual;
+    use crate::framebuffer::{ColorFormat, DepthFormat};
+
+    #[test]
+    fn pop_restores_only_the_pushed_groups_and_the_stack_is_bounded() {
+        let mut c = Context::new(Visual {
+            format: ColorFormat::Rgba,
+            depth: DepthFormat::None,
+            stencil: false,
+            accum_bits: 0,
+        });
+        c.push_attrib(GL_DEPTH_BUFFER_BIT).unwrap();
+        c.state.depth_mask = false;
+        c.state.clear_color = [1.0; 4];
+        c.set_cap(Cap::DepthTest, true).unwrap();
+        c.pop_attrib().unwrap();
+        assert!(c.state.depth_mask && !c.state.caps.get(Cap::DepthTest));
+        assert_eq!(c.state.clear_color, [1.0; 4]);
+        assert_eq!(c.pop_attrib(), Err(GlError::StackUnderflow));
+        for _ in 0..MAX_ATTRIB_STACK_DEPTH {
+            c.push_attrib(GL_ALL_ATTRIB_BITS).unwrap();
+        }
+        assert_eq!(c.push_attrib(0), Err(GlError::StackOverflow));
+    }
+}

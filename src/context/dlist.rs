@@ -126,8 +126,11 @@ impl Compiling {
 /// Display-list state of a context.
 #[derive(Default)]
 pub struct ListState {
-    /// Defined lists by name (glGenLists reserves names with empty lists, as Mesa does).
+    /// Defined lists by name.
     pub lists: HashMap<u32, Arc<DisplayList>>,
+    /// Names glGenLists reserved that glNewList has not defined yet, as inclusive ranges
+    /// (glIsList answers true for them, as in Mesa, which stores empty lists).
+    reserved: Vec<(u32, u32)>,
     /// The list being compiled.
     pub compiling: Option<Compiling>,
     /// glListBase.
@@ -320,27 +323,32 @@ impl Context {
         if n == 0 {
             return Ok(0);
         }
-        let n = n as u32;
-        let mut base = match self.lists.max_key.checked_add(n) {
-            Some(_) => self.lists.max_key + 1,
-            None => 1,
-        };
-        loop {
-            let Some(last) = base.checked_add(n - 1) else {
-                return Ok(0);
-            };
-            match (base..=last)
-                .rev()
-                .find(|k| self.lists.lists.contains_key(k))
-            {
-                None => break,
-                Some(used) => base = used + 1,
+        let last_of = |base: u32| base.checked_add(n as u32 - 1);
+        let base = match last_of(self.lists.max_key.saturating_add(1)) {
+            Some(_) if self.lists.max_key < u32::MAX => self.lists.max_key + 1,
+            _ => {
+                // Search the gaps between used names from 1 up.
+                let mut used: Vec<(u32, u32)> = self.lists.reserved.clone();
+                used.extend(self.lists.lists.keys().map(|&k| (k, k)));
+                used.sort_unstable();
+                let mut base = 1u32;
+                for (lo, hi) in used {
+                    match last_of(base) {
+                        Some(last) if last < lo => break,
+                        None => return Ok(0),
+                        _ if hi == u32::MAX => return Ok(0),
+                        _ => base = base.max(hi + 1),
+                    }
+                }
+                match last_of(base) {
+                    Some(_) if base != 0 => base,
+                    _ => return Ok(0),
+                }
             }
-        }
-        for k in base..=base + (n - 1) {
-            self.lists.lists.insert(k, Arc::default());
-        }
-        self.lists.max_key = self.lists.max_key.max(base + (n - 1));
+        };
+        let last = base + (n as u32 - 1);
+        self.lists.reserved.push((base, last));
+        self.lists.max_key = self.lists.max_key.max(last);
         Ok(base)
     }
 
@@ -350,17 +358,36 @@ impl Context {
             return Err(GlError::InvalidValue);
         }
         self.check_outside_begin()?;
-        for k in 0..range as u32 {
-            if let Some(name) = list.checked_add(k) {
-                self.lists.lists.remove(&name);
+        if range == 0 {
+            return Ok(());
+        }
+        let last = list.saturating_add(range as u32 - 1);
+        self.lists.lists.retain(|&k, _| k < list || k > last);
+        let mut kept = Vec::with_capacity(self.lists.reserved.len() + 1);
+        for &(lo, hi) in &self.lists.reserved {
+            if hi < list || lo > last {
+                kept.push((lo, hi));
+                continue;
+            }
+            if lo < list {
+                kept.push((lo, list - 1));
+            }
+            if hi > last {
+                kept.push((last + 1, hi));
             }
         }
+        self.lists.reserved = kept;
         Ok(())
     }
 
     /// glIsList.
     pub fn is_list(&self, list: u32) -> bool {
         self.lists.lists.contains_key(&list)
+            || self
+                .lists
+                .reserved
+                .iter()
+                .any(|&(lo, hi)| (lo..=hi).contains(&list))
     }
 }
 
@@ -402,24 +429,100 @@ impl Context {
     /// Compiles glDrawArrays/glDrawElements into the list being compiled, as Mesa does:
     /// the arrays are read now and become a glBegin/glEnd whose attributes leave the
     /// current values unchanged. A call that fails validation is compiled as its error.
-    pub fn compile_draw(&mut self, mode: GlResult<Primitive>, elements: GlResult<Vec<u32>>) {
-        let (mode, idx) = match mode.and_then(|m| Ok((m, elements?))) {
+    pub fn compile_draw(&mut self, mode: GlResult<Primitive>, elements: GlResult<Elements>) {
+        let fail = |c: &mut Context, e: GlError| c.lists.push_call(Box::new(move |_| Err(e)));
+        let (mode, elements) = match mode.and_then(|m| Ok((m, elements?))) {
             Ok(v) => v,
-            Err(e) => {
-                self.lists.push_call(Box::new(move |_| Err(e)));
-                return;
-            }
+            Err(e) => return fail(self, e),
         };
         if !self.arrays.vertex.enabled {
             return;
         }
-        let mut ops = vec![VertexOp::SaveCurrent, VertexOp::Begin(mode)];
-        for i in idx {
-            self.array_element_ops(i, &mut ops);
+        let n = match &elements {
+            Elements::Range(_, count) => *count,
+            Elements::List(v) => v.len(),
+        };
+        // At most one op per array and the vertex per element.
+        let per = 3 + MAX_TEXTURE_UNITS;
+        let mut ops = Vec::new();
+        if n.checked_mul(per)
+            .and_then(|k| ops.try_reserve(k + 4).ok())
+            .is_none()
+        {
+            return fail(self, GlError::OutOfMemory);
+        }
+        ops.extend([VertexOp::SaveCurrent, VertexOp::Begin(mode)]);
+        match elements {
+            Elements::Range(first, count) => {
+                for i in (0..count as u32).map_while(|i| first.checked_add(i)) {
+                    self.array_element_ops(i, &mut ops);
+                }
+            }
+            Elements::List(v) => {
+                for i in v {
+                    self.array_element_ops(i, &mut ops);
+                }
+            }
         }
         ops.extend([VertexOp::End, VertexOp::RestoreCurrent]);
         for op in ops {
             self.lists.push_op(op);
         }
+    }
+}
+
+/// The elements a compiled draw call reads.
+pub enum Elements {
+    /// glDrawArrays: first and count.
+    Range(u32, usize),
+    /// glDrawElements: the indices.
+    List(Vec<u32>),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::Visual;
+    use crate::framebuffer::{ColorFormat, DepthFormat};
+
+    fn ctx() -> Context {
+        Context::new(Visual {
+            format: ColorFormat::Rgba,
+            depth: DepthFormat::None,
+            stencil: false,
+            accum_bits: 0,
+        })
+    }
+
+    #[test]
+    fn gen_lists_reserves_ranges_without_storing_each_name() {
+        let mut c = ctx();
+        assert_eq!(c.gen_lists(i32::MAX), Ok(1));
+        assert!(c.is_list(1) && c.is_list(i32::MAX as u32) && !c.is_list(i32::MAX as u32 + 1));
+        c.delete_lists(10, 5).unwrap();
+        assert!(c.is_list(9) && !c.is_list(10) && !c.is_list(14) && c.is_list(15));
+        // Past the largest name used while it fits, then the first gap that fits.
+        assert_eq!(c.gen_lists(3), Ok(i32::MAX as u32 + 1));
+        assert_eq!(c.gen_lists(i32::MAX), Ok(0));
+        assert_eq!(c.gen_lists(1), Ok(i32::MAX as u32 + 4));
+        c.new_list(u32::MAX, false).unwrap();
+        c.end_list().unwrap();
+        assert_eq!(c.gen_lists(5), Ok(10));
+        assert_eq!(c.gen_lists(-1), Err(GlError::InvalidValue));
+    }
+
+    #[test]
+    fn nesting_stops_at_the_limit() {
+        let mut c = ctx();
+        c.new_list(1, false).unwrap();
+        c.lists.push_call(Box::new(|c| {
+            c.state.clear_stencil += 1;
+            c.call_list(1);
+            Ok(())
+        }));
+        c.end_list().unwrap();
+        c.call_list(1);
+        assert_eq!(c.state.clear_stencil, MAX_LIST_NESTING as i32);
+        assert_eq!(c.lists.depth, 0);
     }
 }

@@ -5,6 +5,7 @@ use super::enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx_raw};
 use crate::context::arrays::DataType;
+use crate::context::dlist::Elements;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::Primitive;
 use crate::context::Context;
@@ -175,25 +176,23 @@ pub(crate) fn listable_draw(
     })
 }
 
-/// The element numbers glDrawArrays(first, count) reads.
-pub(crate) fn array_range(first: GLint, count: GLsizei) -> GlResult<Vec<u32>> {
+/// The elements glDrawArrays(first, count) reads, validated as it validates them.
+pub(crate) fn array_range(first: GLint, count: GLsizei) -> GlResult<Elements> {
     let count = non_negative(count)?;
     if first < 0 {
         return Err(GlError::InvalidValue);
     }
-    let first = first as u32;
-    Ok((0..count as u32)
-        .map_while(|i| first.checked_add(i))
-        .collect())
+    Ok(Elements::Range(first as u32, count))
 }
 
-/// The indices glDrawElements reads, validated as it validates them.
+/// The indices glDrawElements reads, validated as it validates them (none are read while
+/// the vertex array is disabled, since nothing is drawn).
 pub(crate) fn element_list(
     c: &Context,
     count: GLsizei,
     type_: GLenum,
     indices: *const GLvoid,
-) -> GlResult<Vec<u32>> {
+) -> GlResult<Elements> {
     let count = non_negative(count)?;
     let ty = match type_ {
         GL_UNSIGNED_BYTE => DataType::UByte,
@@ -201,10 +200,10 @@ pub(crate) fn element_list(
         GL_UNSIGNED_INT => DataType::UInt,
         _ => return Err(GlError::InvalidEnum),
     };
-    if count == 0 {
-        return Ok(Vec::new());
+    if count == 0 || !c.arrays.vertex.enabled {
+        return Ok(Elements::List(Vec::new()));
     }
-    read_indices(c, count, ty, indices as usize)
+    read_indices(c, count, ty, indices as usize).map(Elements::List)
 }
 
 /// glDrawArrays.

@@ -4,6 +4,7 @@
 use super::draw::{array_range, draw_arrays, draw_elements, element_list, listable_draw};
 use super::non_negative;
 use super::types::*;
+use crate::context::dlist::Elements;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::Primitive;
 
@@ -29,7 +30,7 @@ pub unsafe extern "C" fn glMultiDrawArrays(
             .collect())
     };
     let compile = |c: &mut crate::context::Context| match pairs() {
-        Err(e) => c.compile_draw(Err(e), Ok(Vec::new())),
+        Err(e) => c.compile_draw(Err(e), Ok(Elements::List(Vec::new()))),
         Ok(p) => {
             for (f, k) in p {
                 c.compile_draw(Primitive::from_gl(mode), array_range(f, k));
@@ -75,7 +76,7 @@ pub unsafe extern "C" fn glMultiDrawElements(
     let compile = |c: &mut crate::context::Context| {
         let n = match non_negative(drawcount) {
             Ok(n) => n,
-            Err(e) => return c.compile_draw(Err(e), Ok(Vec::new())),
+            Err(e) => return c.compile_draw(Err(e), Ok(Elements::List(Vec::new()))),
         };
         if count.is_null() || indices.is_null() {
             return;

@@ -242,7 +242,8 @@ impl ClientImage {
         let bytes = (|| {
             let cf = ClientFormat::new(format, ty).ok()?;
             let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
-            if data.is_null() {
+            // Larger images fail validation when the command runs: nothing to copy.
+            if data.is_null() || w > MAX_TEXTURE_SIZE + 2 || h > MAX_TEXTURE_SIZE + 2 {
                 return None;
             }
             let span = Layout::new(&unpack, w, &cf).span(w, h);
