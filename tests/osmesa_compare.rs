@@ -196,6 +196,9 @@ const SCENES: &[&str] = &[
     "clip_planes_lines",
     "color_sum",
     "raster_pos",
+    "dlist_scene",
+    "dlist_errors",
+    "attrib_stack",
 ];
 
 macro_rules! scene_tests {
@@ -210,6 +213,9 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    dlist_scene,
+    dlist_errors,
+    attrib_stack,
     smooth_triangles,
     flat_triangles,
     prim_modes,

@@ -63,6 +63,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("rasterization.rs", Header::Gl),
     ("texgen.rs", Header::Gl),
     ("pixels.rs", Header::Gl),
+    ("lists.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),

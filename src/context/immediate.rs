@@ -14,6 +14,10 @@ pub struct Immediate {
     /// glBegin of the same mode can extend it: Mesa's vbo module merges such draws (which
     /// decides, for GL_QUADS, whether the merged draw takes the clipping path).
     pub pending: Option<Primitive>,
+    /// Whether the pending batch came from a display list (drawn as an indexed draw).
+    pub indexed: bool,
+    /// Whether a display-list vertex node is being replayed.
+    pub replaying: bool,
 }
 
 impl Immediate {

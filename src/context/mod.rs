@@ -5,6 +5,8 @@
 //! state when they are wrong; the C boundary records the error for glGetError.
 
 pub mod arrays;
+pub mod attrib;
+pub mod dlist;
 pub mod error;
 pub mod fragment_state;
 pub mod get;
@@ -109,6 +111,10 @@ pub struct Context {
     pub raster_pos: pixel_state::RasterPos,
     /// Pixel zoom (GL_PIXEL_MODE_BIT).
     pub pixel_modes: pixel_state::PixelModes,
+    /// Display lists.
+    pub lists: dlist::ListState,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub attrib: attrib::AttribStacks,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -163,6 +169,8 @@ impl Context {
             clip_planes: Default::default(),
             raster_pos: Default::default(),
             pixel_modes: Default::default(),
+            lists: Default::default(),
+            attrib: Default::default(),
         }
     }
 
@@ -172,7 +180,12 @@ impl Context {
     pub fn flush_pending(&mut self) {
         if let Some(mode) = self.immediate.pending.take() {
             let verts = std::mem::take(&mut self.immediate.verts);
-            crate::draw::draw(self, mode, &verts, None);
+            // A batch from a display list is drawn indexed, as Mesa draws vertex nodes.
+            let idx: Option<Vec<u32>> = self
+                .immediate
+                .indexed
+                .then(|| (0..verts.len() as u32).collect());
+            crate::draw::draw(self, mode, &verts, idx.as_deref());
             self.immediate.verts = verts;
             self.immediate.verts.clear();
         }

@@ -7,9 +7,8 @@ use super::glext_enums::*;
 use super::types::*;
 use super::with_ctx;
 use crate::context::arrays::{ArrayPointer, DataType};
-use crate::context::error::{GlError, GlResult};
+use crate::context::error::GlError;
 use crate::context::Context;
-use crate::geometry::fetch::fetch_attr;
 use libc::c_void;
 
 /// Which client array a call names.
@@ -203,52 +202,19 @@ pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: 
     glVertexPointer(vc, GL_FLOAT, stride, at(pv));
 }
 
-/// glArrayElement: inside glBegin/glEnd, specifies vertex `i` from the enabled arrays.
+/// glArrayElement: inside glBegin/glEnd, specifies vertex `i` from the enabled arrays. In a
+/// display list the arrays are read at compile time.
 #[no_mangle]
 pub extern "C" fn glArrayElement(i: GLint) {
-    let r: GlResult<Option<[f32; 4]>> = (|| {
-        if i < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        Ok(with_ctx(|c| {
-            let a = &c.arrays;
-            let cur = &mut c.state.current;
-            // SAFETY: the program promised that enabled client arrays cover element `i`;
-            // buffer-object arrays are bounds-checked.
-            unsafe {
-                if a.color.enabled {
-                    if let Some(v) = fetch_attr(a, &a.color, i as u32, true, [0.0, 0.0, 0.0, 1.0]) {
-                        cur.color = v;
-                    }
-                }
-                if a.normal.enabled {
-                    if let Some(n) = fetch_attr(a, &a.normal, i as u32, true, [0.0; 4]) {
-                        cur.normal = [n[0], n[1], n[2]];
-                    }
-                }
-                for (u, arr) in a.texcoord.iter().enumerate() {
-                    if arr.enabled {
-                        if let Some(t) = fetch_attr(a, arr, i as u32, false, [0.0, 0.0, 0.0, 1.0]) {
-                            cur.texcoord[u] = t;
-                        }
-                    }
-                }
-                if a.vertex.enabled {
-                    return Ok(fetch_attr(
-                        a,
-                        &a.vertex,
-                        i as u32,
-                        false,
-                        [0.0, 0.0, 0.0, 1.0],
-                    ));
-                }
-            }
-            Ok(None)
-        }))
-    })();
-    match r {
-        Ok(Some(p)) => super::immediate::vertex(p),
-        Ok(None) => {}
-        Err(e) => with_ctx(|_| Err::<(), _>(e)),
+    if i < 0 {
+        return super::with_ctx_list(|_| Err(GlError::InvalidValue));
+    }
+    let ops = super::with_ctx_raw(|c| {
+        let mut ops = Vec::new();
+        c.array_element_ops(i as u32, &mut ops);
+        Ok(ops)
+    });
+    for op in ops {
+        super::with_ctx_vertex(op);
     }
 }

@@ -3,8 +3,9 @@
 
 use super::enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx};
+use super::{non_negative, with_ctx_raw};
 use crate::context::arrays::DataType;
+use crate::context::dlist::Elements;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::Primitive;
 use crate::context::Context;
@@ -152,10 +153,66 @@ pub(crate) fn draw_elements(
     Ok(())
 }
 
+/// Runs a draw call, or compiles it while a display list is being compiled (`compile`
+/// reads the arrays now); under GL_COMPILE_AND_EXECUTE it is drawn too.
+pub(crate) fn listable_draw(
+    exec: impl FnOnce(&mut Context) -> GlResult<()>,
+    compile: impl FnOnce(&mut Context),
+) {
+    with_ctx_raw(|c| match c.lists.compile_mode() {
+        None => {
+            c.flush_pending();
+            exec(c)
+        }
+        Some(execute) => {
+            compile(c);
+            if execute {
+                c.flush_pending();
+                exec(c)
+            } else {
+                Ok(())
+            }
+        }
+    })
+}
+
+/// The elements glDrawArrays(first, count) reads, validated as it validates them.
+pub(crate) fn array_range(first: GLint, count: GLsizei) -> GlResult<Elements> {
+    let count = non_negative(count)?;
+    if first < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(Elements::Range(first as u32, count))
+}
+
+/// The indices glDrawElements reads, validated as it validates them (none are read while
+/// the vertex array is disabled, since nothing is drawn).
+pub(crate) fn element_list(
+    c: &Context,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const GLvoid,
+) -> GlResult<Elements> {
+    let count = non_negative(count)?;
+    let ty = match type_ {
+        GL_UNSIGNED_BYTE => DataType::UByte,
+        GL_UNSIGNED_SHORT => DataType::UShort,
+        GL_UNSIGNED_INT => DataType::UInt,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    if count == 0 || !c.arrays.vertex.enabled {
+        return Ok(Elements::List(Vec::new()));
+    }
+    read_indices(c, count, ty, indices as usize).map(Elements::List)
+}
+
 /// glDrawArrays.
 #[no_mangle]
 pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
-    with_ctx(|c| draw_arrays(c, mode, first, count))
+    listable_draw(
+        |c| draw_arrays(c, mode, first, count),
+        |c| c.compile_draw(Primitive::from_gl(mode), array_range(first, count)),
+    )
 }
 
 /// glDrawElements.
@@ -166,7 +223,13 @@ pub extern "C" fn glDrawElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    with_ctx(|c| draw_elements(c, mode, count, type_, indices))
+    listable_draw(
+        |c| draw_elements(c, mode, count, type_, indices),
+        |c| {
+            let idx = element_list(c, count, type_, indices);
+            c.compile_draw(Primitive::from_gl(mode), idx)
+        },
+    )
 }
 
 /// glDrawRangeElements (the range is a hint; indices outside it are still drawn).
@@ -179,10 +242,19 @@ pub extern "C" fn glDrawRangeElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    with_ctx(|c| {
-        if end < start {
-            return Err(GlError::InvalidValue);
-        }
-        draw_elements(c, mode, count, type_, indices)
-    })
+    let range = if end < start {
+        Err(GlError::InvalidValue)
+    } else {
+        Ok(())
+    };
+    listable_draw(
+        |c| {
+            range?;
+            draw_elements(c, mode, count, type_, indices)
+        },
+        |c| {
+            let idx = range.and_then(|_| element_list(c, count, type_, indices));
+            c.compile_draw(Primitive::from_gl(mode), idx)
+        },
+    )
 }

@@ -4,7 +4,7 @@
 
 use super::fragment::{blend_equation, blend_func, stencil_func, stencil_mask, stencil_op, Faces};
 use super::types::*;
-use super::with_ctx;
+use super::with_ctx_list;
 
 /// glBlendFuncSeparate (GL 1.4).
 #[no_mangle]
@@ -27,7 +27,7 @@ fn faces_or_error(face: GLenum) -> Option<Faces> {
     match Faces::from_gl(face) {
         Ok(f) => Some(f),
         Err(e) => {
-            with_ctx(|_| Err::<(), _>(e));
+            with_ctx_list(move |_| Err::<(), _>(e));
             None
         }
     }

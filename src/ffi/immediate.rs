@@ -4,88 +4,46 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::with_ctx_raw;
-use crate::context::error::GlError;
-use crate::context::immediate::Immediate;
+use super::{with_ctx_list, with_ctx_vertex};
+use crate::context::dlist::VertexOp;
 use crate::context::state::Primitive;
-use crate::geometry::fetch::VertexIn;
 
 /// glBegin.
 #[no_mangle]
 pub extern "C" fn glBegin(mode: GLenum) {
-    with_ctx_raw(|c| {
-        let m = Primitive::from_gl(mode)?;
-        c.check_outside_begin()?;
-        if c.immediate.pending != Some(m) {
-            c.flush_pending();
-        }
-        c.immediate.pending = None;
-        c.immediate.active = Some(m);
-        Ok(())
-    })
+    match Primitive::from_gl(mode) {
+        Ok(m) => with_ctx_vertex(VertexOp::Begin(m)),
+        // An invalid mode is compiled as the error it raises when the list runs.
+        Err(e) => with_ctx_list(move |_| Err(e)),
+    }
 }
 
-/// glEnd: draws the vertices given since glBegin.
+/// glEnd: draws the vertices given since glBegin (or defers them to merge with the next
+/// glBegin of the same mode).
 #[no_mangle]
 pub extern "C" fn glEnd() {
-    with_ctx_raw(|c| {
-        let Some(mode) = c.immediate.active.take() else {
-            return Err(GlError::InvalidOperation);
-        };
-        // Drop an incomplete trailing primitive so a merged batch stays aligned.
-        let per = match mode {
-            Primitive::Lines => 2,
-            Primitive::Triangles => 3,
-            Primitive::Quads => 4,
-            _ => 1,
-        };
-        let whole = c.immediate.verts.len() - c.immediate.verts.len() % per;
-        c.immediate.verts.truncate(whole);
-        c.immediate.pending = Some(mode);
-        if !Immediate::mergeable(mode) {
-            c.flush_pending();
-        }
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::End)
 }
 
 /// Adds a vertex inside glBegin/glEnd (outside it, GL leaves the effect undefined; we
 /// ignore it, as Mesa does).
 pub(crate) fn vertex(p: [f32; 4]) {
-    with_ctx_raw(|c| {
-        if c.immediate.active.is_some() {
-            let v = VertexIn::with_current(p, &c.state.current);
-            if c.immediate.verts.try_reserve(1).is_err() {
-                return Err(GlError::OutOfMemory);
-            }
-            c.immediate.verts.push(v);
-        }
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::Vertex(p))
 }
 
 /// Sets the current colour.
 pub(crate) fn color(v: [f32; 4]) {
-    with_ctx_raw(|c| {
-        c.state.current.color = v;
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::Color(v))
 }
 
 /// Sets the current texture coordinate of unit 0.
 pub(crate) fn texcoord(v: [f32; 4]) {
-    with_ctx_raw(|c| {
-        c.state.current.texcoord[0] = v;
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::TexCoord(0, v))
 }
 
 /// Sets the current normal.
 pub(crate) fn normal(v: [f32; 3]) {
-    with_ctx_raw(|c| {
-        c.state.current.normal = v;
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::Normal(v))
 }
 
 #[inline]
@@ -1094,13 +1052,22 @@ pub unsafe extern "C" fn glNormal3dv(v: *const GLdouble) {
 }
 
 /// glRect as Mesa draws it: a GL_QUADS quad (x1,y1), (x2,y1), (x2,y2), (x1,y2) at z = 0.
+/// A display list records it as one command that runs the immediate-mode path (Mesa's
+/// OPCODE_RECTF), not as a vertex node.
 fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
-    glBegin(crate::ffi::enums::GL_QUADS);
-    vertex([x1, y1, 0.0, 1.0]);
-    vertex([x2, y1, 0.0, 1.0]);
-    vertex([x2, y2, 0.0, 1.0]);
-    vertex([x1, y2, 0.0, 1.0]);
-    glEnd();
+    with_ctx_list(move |c| {
+        for op in [
+            VertexOp::Begin(Primitive::Quads),
+            VertexOp::Vertex([x1, y1, 0.0, 1.0]),
+            VertexOp::Vertex([x2, y1, 0.0, 1.0]),
+            VertexOp::Vertex([x2, y2, 0.0, 1.0]),
+            VertexOp::Vertex([x1, y2, 0.0, 1.0]),
+            VertexOp::End,
+        ] {
+            c.vertex_op(op)?;
+        }
+        Ok(())
+    })
 }
 
 /// glRects.

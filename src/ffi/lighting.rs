@@ -6,7 +6,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::with_ctx;
+use super::{with_ctx, with_ctx_list};
 use crate::context::lighting_state::{float_to_int, int_to_float};
 use crate::context::state::Cap;
 use crate::context::Context;
@@ -77,7 +77,7 @@ fn is_color(pname: GLenum) -> bool {
 }
 
 fn light(light: GLenum, pname: GLenum, p: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         let mv = c.matrices.modelview.top().0;
         c.light.set_light(light, pname, &p, &mv)
@@ -85,7 +85,7 @@ fn light(light: GLenum, pname: GLenum, p: [f32; 4]) {
 }
 
 fn light_model(pname: GLenum, p: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.light.set_light_model(pname, &p)
     })
@@ -93,14 +93,14 @@ fn light_model(pname: GLenum, p: [f32; 4]) {
 
 fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
     // glMaterial is allowed between glBegin and glEnd.
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let cm = c.state.caps.get(Cap::ColorMaterial);
         c.light.set_material(face, pname, &p, cm)
     })
 }
 
 fn fog(pname: GLenum, p: [f32; 4]) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.light.set_fog(pname, &p)
     })
@@ -334,7 +334,7 @@ pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *m
 /// glColorMaterial.
 #[no_mangle]
 pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.light.set_color_material(face, mode)?;
         sync_color_material(c);

@@ -5,7 +5,8 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::with_ctx_raw;
+use super::with_ctx_vertex;
+use crate::context::dlist::VertexOp;
 
 #[inline]
 fn b2f(b: GLbyte) -> f32 {
@@ -42,18 +43,12 @@ fn ui2f(u: GLuint) -> f32 {
 
 /// Sets the current secondary colour (allowed between glBegin and glEnd).
 fn secondary(v: [f32; 3]) {
-    with_ctx_raw(|c| {
-        c.state.current.secondary_color = [v[0], v[1], v[2], 1.0];
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::SecondaryColor(v))
 }
 
 /// Sets the current fog coordinate (allowed between glBegin and glEnd).
 fn fog_coord(f: f32) {
-    with_ctx_raw(|c| {
-        c.state.current.fog_coord = f;
-        Ok(())
-    })
+    with_ctx_vertex(VertexOp::FogCoord(f))
 }
 
 /// glFogCoordf.

@@ -3,7 +3,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::with_ctx;
+use super::with_ctx_list;
 use crate::context::error::GlError;
 use crate::context::state::MatrixMode;
 use crate::fixed_function::matrix::{Mat4, IDENTITY};
@@ -11,7 +11,7 @@ use crate::fixed_function::matrix::{Mat4, IDENTITY};
 /// glMatrixMode.
 #[no_mangle]
 pub extern "C" fn glMatrixMode(mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let m = match mode {
             GL_MODELVIEW => MatrixMode::ModelView,
             GL_PROJECTION => MatrixMode::Projection,
@@ -28,7 +28,7 @@ pub extern "C" fn glMatrixMode(mode: GLenum) {
 /// glLoadIdentity.
 #[no_mangle]
 pub extern "C" fn glLoadIdentity() {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.with_matrix_flags(|m, f| {
             *m = IDENTITY;
             f.on_load_identity();
@@ -53,7 +53,7 @@ unsafe fn read16<T: Copy + Into<f64>>(p: *const T) -> Option<Mat4> {
 }
 
 fn load(m: Option<Mat4>, transpose: bool, multiply: bool) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let Some(m) = m else { return Ok(()) };
         let m = if transpose { m.transpose() } else { m };
         c.with_matrix_flags(|cur, f| {
@@ -153,7 +153,7 @@ pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
 /// glTranslatef.
 #[no_mangle]
 pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.with_matrix_flags(|m, f| {
             m.translate(x, y, z);
             f.on_translate();
@@ -170,7 +170,7 @@ pub extern "C" fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glScalef.
 #[no_mangle]
 pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.with_matrix_flags(|m, f| {
             m.scale(x, y, z);
             f.on_scale(x, y, z);
@@ -187,7 +187,7 @@ pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glRotatef.
 #[no_mangle]
 pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.with_matrix_flags(|m, f| {
             // Mesa skips a zero angle, and a degenerate axis leaves the matrix alone.
             if angle != 0.0 && m.rotate(angle, x, y, z) {
@@ -213,7 +213,7 @@ pub extern "C" fn glFrustum(
     zNear: GLdouble,
     zFar: GLdouble,
 ) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         if zNear <= 0.0 || zFar <= 0.0 || zNear == zFar || left == right || top == bottom {
             return Err(GlError::InvalidValue);
@@ -243,7 +243,7 @@ pub extern "C" fn glOrtho(
     zNear: GLdouble,
     zFar: GLdouble,
 ) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         if left == right || bottom == top || zNear == zFar {
             return Err(GlError::InvalidValue);
@@ -266,7 +266,7 @@ pub extern "C" fn glOrtho(
 /// glPushMatrix.
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.current_stack().push()
     })
@@ -275,7 +275,7 @@ pub extern "C" fn glPushMatrix() {
 /// glPopMatrix.
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.current_stack().pop()
     })

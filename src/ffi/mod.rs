@@ -6,6 +6,22 @@
 //! error when that fails. No panic crosses this line: [`with_ctx`] catches unwinding and
 //! reports GL_OUT_OF_MEMORY instead. A GL call without a current context does nothing.
 //!
+//! Which wrapper a GL function uses decides how it behaves inside glNewList/glEndList:
+//! - [`with_ctx_list`] for every command GL 1.5 §5.4 lets a display list record (state
+//!   changes, matrix calls, glClear, glCallList, glPushAttrib …). Its closure must be
+//!   `Fn + Send + Sync + 'static` and capture only owned, already-read argument values:
+//!   read every pointer argument (vectors, matrices, images) into an owned value *before*
+//!   the closure. While a list is compiled the boxed closure is stored in the list (and also
+//!   run for GL_COMPILE_AND_EXECUTE); otherwise it runs at once. Validation belongs inside
+//!   the closure, so errors are generated when the list executes, as GL and Mesa do.
+//! - [`with_ctx_vertex`] for the per-vertex commands (glBegin/glEnd, glVertex, glColor,
+//!   glNormal, glTexCoord …), given as a [`VertexOp`]: lists store them inline as vertex
+//!   nodes, replayed as Mesa replays its vertex nodes.
+//! - [`with_ctx`] for commands that always execute immediately, even while compiling
+//!   (glGen*/glDelete*/glIs*, glGet*, glReadPixels, glPixelStore, client array state,
+//!   glFlush/glFinish, buffer objects, glFeedbackBuffer/glSelectBuffer/glRenderMode);
+//!   [`with_ctx_raw`] only where the deferred immediate-mode batch must not be drawn first.
+//!
 //! The headers in `include/GL` are generated from these files by cbindgen
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
@@ -19,6 +35,7 @@ pub mod glext_enums;
 pub mod immediate;
 pub mod lighting;
 pub mod lighting_ext;
+pub mod lists;
 pub mod matrix;
 pub mod multidraw;
 pub mod osmesa;
@@ -33,6 +50,7 @@ pub mod textures;
 pub mod textures_ext;
 pub mod types;
 
+use crate::context::dlist::VertexOp;
 use crate::context::{Context, GlError, GlResult};
 use std::cell::Cell;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -87,6 +105,50 @@ pub(crate) fn with_ctx_raw<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<
             R::default()
         }
     }
+}
+
+/// Runs a listable command: records `f` into the display list being compiled (running it
+/// too under GL_COMPILE_AND_EXECUTE), or runs it now as [`with_ctx`] does. See the module
+/// documentation for what `f` may capture.
+#[inline]
+pub(crate) fn with_ctx_list<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    with_ctx_raw(|c| match c.lists.compile_mode() {
+        None => {
+            c.flush_pending();
+            f(c)
+        }
+        Some(execute) => {
+            let r = if execute {
+                c.flush_pending();
+                f(c)
+            } else {
+                Ok(())
+            };
+            c.lists.push_call(Box::new(f));
+            r
+        }
+    })
+}
+
+/// Runs a per-vertex command: records it into the vertex node of the display list being
+/// compiled (running it too under GL_COMPILE_AND_EXECUTE), or runs it now without drawing
+/// the deferred batch first.
+#[inline]
+pub(crate) fn with_ctx_vertex(op: VertexOp) {
+    with_ctx_raw(|c| match c.lists.compile_mode() {
+        None => c.vertex_op(op),
+        Some(execute) => {
+            c.lists.push_op(op);
+            if execute {
+                c.vertex_op(op)
+            } else {
+                Ok(())
+            }
+        }
+    })
 }
 
 /// Converts a C GLboolean.

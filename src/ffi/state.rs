@@ -5,7 +5,7 @@
 use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
-use super::{gl_bool, with_ctx};
+use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::clamp01;
 use crate::context::error::GlError;
 use crate::context::state::{Cap, CompareFunc, Face, PixelStore, ShadeModel};
@@ -28,13 +28,13 @@ pub extern "C" fn glGetError() -> GLenum {
 /// glEnable.
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_ctx(|c| c.set_cap(Cap::from_gl(cap)?, true))
+    with_ctx_list(move |c| c.set_cap(Cap::from_gl(cap)?, true))
 }
 
 /// glDisable.
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_ctx(|c| c.set_cap(Cap::from_gl(cap)?, false))
+    with_ctx_list(move |c| c.set_cap(Cap::from_gl(cap)?, false))
 }
 
 /// glIsEnabled (also answers the client array states).
@@ -60,7 +60,7 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
 /// glClearColor (clamped to [0,1]).
 #[no_mangle]
 pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.state.clear_color = [red, green, blue, alpha].map(|v| clamp01(v as f64) as f32);
         Ok(())
@@ -70,7 +70,7 @@ pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 /// glClearDepth (clamped to [0,1]).
 #[no_mangle]
 pub extern "C" fn glClearDepth(depth: GLclampd) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.state.clear_depth = clamp01(depth);
         Ok(())
@@ -80,7 +80,7 @@ pub extern "C" fn glClearDepth(depth: GLclampd) {
 /// glClearStencil.
 #[no_mangle]
 pub extern "C" fn glClearStencil(s: GLint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.state.clear_stencil = s;
         Ok(())
@@ -90,31 +90,31 @@ pub extern "C" fn glClearStencil(s: GLint) {
 /// glClear.
 #[no_mangle]
 pub extern "C" fn glClear(mask: GLbitfield) {
-    with_ctx(|c| c.clear(mask))
+    with_ctx_list(move |c| c.clear(mask))
 }
 
 /// glViewport.
 #[no_mangle]
 pub extern "C" fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_ctx(|c| c.viewport(x, y, width, height))
+    with_ctx_list(move |c| c.viewport(x, y, width, height))
 }
 
 /// glScissor.
 #[no_mangle]
 pub extern "C" fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_ctx(|c| c.scissor(x, y, width, height))
+    with_ctx_list(move |c| c.scissor(x, y, width, height))
 }
 
 /// glDepthRange.
 #[no_mangle]
 pub extern "C" fn glDepthRange(near_val: GLclampd, far_val: GLclampd) {
-    with_ctx(|c| c.depth_range(near_val, far_val))
+    with_ctx_list(move |c| c.depth_range(near_val, far_val))
 }
 
 /// glDepthFunc.
 #[no_mangle]
 pub extern "C" fn glDepthFunc(func: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let f = CompareFunc::from_gl(func)?;
         c.check_outside_begin()?;
         c.state.depth_func = f;
@@ -125,7 +125,7 @@ pub extern "C" fn glDepthFunc(func: GLenum) {
 /// glDepthMask.
 #[no_mangle]
 pub extern "C" fn glDepthMask(flag: GLboolean) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.state.depth_mask = gl_bool(flag);
         Ok(())
@@ -135,7 +135,7 @@ pub extern "C" fn glDepthMask(flag: GLboolean) {
 /// glColorMask.
 #[no_mangle]
 pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.state.color_mask = [red, green, blue, alpha].map(gl_bool);
         Ok(())
@@ -145,7 +145,7 @@ pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean,
 /// glShadeModel.
 #[no_mangle]
 pub extern "C" fn glShadeModel(mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let m = match mode {
             GL_FLAT => ShadeModel::Flat,
             GL_SMOOTH => ShadeModel::Smooth,
@@ -160,7 +160,7 @@ pub extern "C" fn glShadeModel(mode: GLenum) {
 /// glCullFace.
 #[no_mangle]
 pub extern "C" fn glCullFace(mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let f = Face::from_gl(mode)?;
         c.check_outside_begin()?;
         c.state.cull_face = f;
@@ -171,7 +171,7 @@ pub extern "C" fn glCullFace(mode: GLenum) {
 /// glFrontFace.
 #[no_mangle]
 pub extern "C" fn glFrontFace(mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let ccw = match mode {
             GL_CCW => true,
             GL_CW => false,
@@ -186,7 +186,7 @@ pub extern "C" fn glFrontFace(mode: GLenum) {
 /// glHint (stored; the rasterizer ignores hints, as llvmpipe does).
 #[no_mangle]
 pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
             return Err(GlError::InvalidEnum);
         }

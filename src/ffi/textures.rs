@@ -9,8 +9,8 @@
 use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx, with_ctx_raw};
-use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
+use super::{non_negative, with_ctx, with_ctx_list};
+use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
 use crate::texture::upload::{self, ClientFormat, Layout};
@@ -106,19 +106,14 @@ fn image_size(
     Ok(Some((w, h)))
 }
 
-#[allow(clippy::too_many_arguments)]
 unsafe fn tex_image(
     c: &mut Context,
     target: GLenum,
     level: GLint,
-    internal: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    border: GLint,
-    format: GLenum,
-    ty: GLenum,
+    (internal, w, h, border, format, ty): (GLint, GLsizei, GLsizei, GLint, GLenum, GLenum),
     data: *const c_void,
     dims: u8,
+    unpack: PixelStore,
 ) -> GlResult<()> {
     let (t, proxy) = image_target(target)?;
     if (t == Target::Tex1D) != (dims == 1) {
@@ -153,7 +148,7 @@ unsafe fn tex_image(
         return Ok(());
     };
     // Border stripping: skip the first border pixel and row of the client image.
-    let mut ps = c.state.unpack;
+    let mut ps = unpack;
     let (fw, _fh) = (tw + 2 * border as usize, th + 2 * border as usize);
     if border == 1 {
         if ps.row_length == 0 {
@@ -179,19 +174,14 @@ unsafe fn tex_image(
     Ok(())
 }
 
-#[allow(clippy::too_many_arguments)]
 unsafe fn tex_sub_image(
     c: &mut Context,
     target: GLenum,
     level: GLint,
-    xoff: GLint,
-    yoff: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    format: GLenum,
-    ty: GLenum,
+    (xoff, yoff, w, h, format, ty): (GLint, GLint, GLsizei, GLsizei, GLenum, GLenum),
     data: *const c_void,
     dims: u8,
+    unpack: PixelStore,
 ) -> GlResult<()> {
     let t = bind_target(target)?;
     if (t == Target::Tex1D) != (dims == 1) {
@@ -205,7 +195,7 @@ unsafe fn tex_sub_image(
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
-    let ps = c.state.unpack;
+    let ps = unpack;
     let obj = object_mut(c, t, false);
     let img = obj.levels[level]
         .as_mut()
@@ -223,6 +213,57 @@ unsafe fn tex_sub_image(
     }
     maybe_generate(obj, level);
     Ok(())
+}
+
+/// A client image copied while a display list is being compiled (GL 1.5 §5.4: the pixels
+/// are unpacked from client memory when the command is compiled), with the pixel-store
+/// state that describes the copy.
+struct ClientImage {
+    /// The bytes the image spans, or `None` for a null pointer or an invalid description
+    /// (whose error the compiled command raises when it runs).
+    bytes: Option<Vec<u8>>,
+    /// The unpack state at compile time.
+    unpack: PixelStore,
+}
+
+impl ClientImage {
+    /// Copies the `w` x `h` image at `data` under the current unpack state.
+    ///
+    /// # Safety
+    /// `data` (if not null) must hold the image the arguments and unpack state describe.
+    unsafe fn read(
+        format: GLenum,
+        ty: GLenum,
+        w: GLsizei,
+        h: GLsizei,
+        data: *const c_void,
+    ) -> Self {
+        let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
+        let bytes = (|| {
+            let cf = ClientFormat::new(format, ty).ok()?;
+            let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
+            // Larger images fail validation when the command runs: nothing to copy.
+            if data.is_null() || w > MAX_TEXTURE_SIZE + 2 || h > MAX_TEXTURE_SIZE + 2 {
+                return None;
+            }
+            let span = Layout::new(&unpack, w, &cf).span(w, h);
+            // SAFETY: the caller promises the described image is readable.
+            Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
+        })();
+        ClientImage { bytes, unpack }
+    }
+
+    /// The copy's address (null when there is none).
+    fn ptr(&self) -> *const c_void {
+        self.bytes
+            .as_ref()
+            .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
+    }
+}
+
+/// Whether a display list is being compiled on the current context.
+fn compiling() -> bool {
+    super::with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
 }
 
 /// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
@@ -372,7 +413,7 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 /// glBindTexture (a name first bound to another target: GL_INVALID_OPERATION).
 #[no_mangle]
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let t = bind_target(target)?;
         c.check_outside_begin()?;
         if c.textures.high_unit.is_some() {
@@ -408,21 +449,19 @@ pub unsafe extern "C" fn glTexImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (internalformat, width, 1, border, format, type_);
+            tex_image(c, target, level, args, img.ptr(), 1, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_image(
-            c,
-            target,
-            level,
-            internalformat,
-            width,
-            1,
-            border,
-            format,
-            type_,
-            pixels,
-            1,
-        )
+        let args = (internalformat, width, 1, border, format, type_);
+        tex_image(c, target, level, args, pixels, 1, c.state.unpack)
     })
 }
 
@@ -442,21 +481,19 @@ pub unsafe extern "C" fn glTexImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (internalformat, width, height, border, format, type_);
+            tex_image(c, target, level, args, img.ptr(), 2, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_image(
-            c,
-            target,
-            level,
-            internalformat,
-            width,
-            height,
-            border,
-            format,
-            type_,
-            pixels,
-            2,
-        )
+        let args = (internalformat, width, height, border, format, type_);
+        tex_image(c, target, level, args, pixels, 2, c.state.unpack)
     })
 }
 
@@ -474,11 +511,19 @@ pub unsafe extern "C" fn glTexSubImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (xoffset, 0, width, 1, format, type_);
+            tex_sub_image(c, target, level, args, img.ptr(), 1, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_sub_image(
-            c, target, level, xoffset, 0, width, 1, format, type_, pixels, 1,
-        )
+        let args = (xoffset, 0, width, 1, format, type_);
+        tex_sub_image(c, target, level, args, pixels, 1, c.state.unpack)
     })
 }
 
@@ -498,11 +543,19 @@ pub unsafe extern "C" fn glTexSubImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let args = (xoffset, yoffset, width, height, format, type_);
+            tex_sub_image(c, target, level, args, img.ptr(), 2, img.unpack)
+        });
+    }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
-        tex_sub_image(
-            c, target, level, xoffset, yoffset, width, height, format, type_, pixels, 2,
-        )
+        let args = (xoffset, yoffset, width, height, format, type_);
+        tex_sub_image(c, target, level, args, pixels, 2, c.state.unpack)
     })
 }
 
@@ -517,7 +570,9 @@ pub extern "C" fn glCopyTexImage1D(
     width: GLsizei,
     border: GLint,
 ) {
-    with_ctx(|c| copy_tex_image(c, target, level, internalformat, x, y, width, 1, border, 1))
+    with_ctx_list(move |c| {
+        copy_tex_image(c, target, level, internalformat, x, y, width, 1, border, 1)
+    })
 }
 
 /// glCopyTexImage2D.
@@ -532,7 +587,7 @@ pub extern "C" fn glCopyTexImage2D(
     height: GLsizei,
     border: GLint,
 ) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         copy_tex_image(
             c,
             target,
@@ -558,7 +613,7 @@ pub extern "C" fn glCopyTexSubImage1D(
     y: GLint,
     width: GLsizei,
 ) {
-    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, 0, x, y, width, 1, 1))
+    with_ctx_list(move |c| copy_tex_sub_image(c, target, level, xoffset, 0, x, y, width, 1, 1))
 }
 
 /// glCopyTexSubImage2D.
@@ -573,7 +628,9 @@ pub extern "C" fn glCopyTexSubImage2D(
     width: GLsizei,
     height: GLsizei,
 ) {
-    with_ctx(|c| copy_tex_sub_image(c, target, level, xoffset, yoffset, x, y, width, height, 2))
+    with_ctx_list(move |c| {
+        copy_tex_sub_image(c, target, level, xoffset, yoffset, x, y, width, height, 2)
+    })
 }
 
 /// glGetTexImage.
@@ -778,7 +835,7 @@ fn get_level_parameter(
 /// glTexParameterf.
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -789,7 +846,7 @@ pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat)
 /// glTexParameteri.
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -803,20 +860,18 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_BORDER_COLOR {
-            4
-        } else {
-            1
-        };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_parameter(c, target, pname, &v, false)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_BORDER_COLOR {
+        4
+    } else {
+        1
+    };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_parameter(c, target, pname, &v, false))
 }
 
 /// glTexParameteriv.
@@ -825,20 +880,18 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_BORDER_COLOR {
-            4
-        } else {
-            1
-        };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_parameter(c, target, pname, &v, true)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_BORDER_COLOR {
+        4
+    } else {
+        1
+    };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_parameter(c, target, pname, &v, true))
 }
 
 /// glGetTexParameterfv.
@@ -1038,7 +1091,7 @@ fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<
 /// glTexEnvf.
 #[no_mangle]
 pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_ENV_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -1049,7 +1102,7 @@ pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
 /// glTexEnvi.
 #[no_mangle]
 pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         if pname == GL_TEXTURE_ENV_COLOR {
             return Err(GlError::InvalidEnum);
         }
@@ -1063,16 +1116,14 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_env(c, target, pname, &v, false)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_env(c, target, pname, &v, false))
 }
 
 /// glTexEnviv.
@@ -1081,16 +1132,14 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-    with_ctx(|c| {
-        if params.is_null() {
-            return Ok(());
-        }
-        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-        // SAFETY: the caller promises n readable values.
-        let v = unsafe { std::slice::from_raw_parts(params, n) };
-        let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-        tex_env(c, target, pname, &v, true)
-    })
+    if params.is_null() {
+        return;
+    }
+    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+    // SAFETY: the caller promises n readable values.
+    let v = unsafe { std::slice::from_raw_parts(params, n) };
+    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    with_ctx_list(move |c| tex_env(c, target, pname, &v, true))
 }
 
 /// glGetTexEnvfv.
@@ -1139,7 +1188,7 @@ pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *m
 /// GL_TEXTURE_1D/2D follows the unit.
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
         if u >= MAX_COMBINED_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
@@ -1189,19 +1238,23 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     textures: *const GLuint,
     priorities: *const GLclampf,
 ) {
-    with_ctx(|c| {
+    let read = || -> Result<(Vec<GLuint>, Vec<GLclampf>), GlError> {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if textures.is_null() || priorities.is_null() {
-            return Ok(());
+            return Ok((Vec::new(), Vec::new()));
         }
         // SAFETY: the caller promises n readable values in each array.
-        let (names, prios) = unsafe {
+        Ok(unsafe {
             (
-                std::slice::from_raw_parts(textures, n),
-                std::slice::from_raw_parts(priorities, n),
+                std::slice::from_raw_parts(textures, n).to_vec(),
+                std::slice::from_raw_parts(priorities, n).to_vec(),
             )
-        };
+        })
+    };
+    let arrays = read();
+    with_ctx_list(move |c| {
+        let (names, prios) = arrays.as_ref().map_err(|e| *e)?;
+        c.check_outside_begin()?;
         for (&name, &p) in names.iter().zip(prios) {
             if let Some(o) = c.textures.objects.get_mut(&name) {
                 o.params.priority = crate::context::clamp01(p as f64) as f32;
@@ -1240,14 +1293,11 @@ pub unsafe extern "C" fn glAreTexturesResident(
 
 /// Sets the current texture coordinate of unit `target - GL_TEXTURE0`.
 fn multi_texcoord(target: GLenum, v: [f32; 4]) {
-    with_ctx_raw(|c| {
-        let u = target.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_TEXTURE_UNITS {
-            return Err(GlError::InvalidEnum);
-        }
-        c.state.current.texcoord[u] = v;
-        Ok(())
-    })
+    let u = target.wrapping_sub(GL_TEXTURE0) as usize;
+    if u >= MAX_TEXTURE_UNITS {
+        return super::with_ctx_list(|_| Err(GlError::InvalidEnum));
+    }
+    super::with_ctx_vertex(crate::context::dlist::VertexOp::TexCoord(u as u8, v))
 }
 
 /// glMultiTexCoord1s.

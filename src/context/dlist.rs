@@ -1,0 +1,528 @@
+//! Display lists (GL 1.5 §5.4): named sequences of recorded commands.
+//!
+//! A list holds two kinds of entries. A [`Cmd::Call`] is a boxed closure made at the C
+//! boundary from an ordinary state call (glEnable, glRotatef …); it captures only the owned,
+//! already-read argument values, so running it later is running the call later. A
+//! [`Cmd::Node`] is a run of per-vertex commands ([`VertexOp`]: glBegin, glVertex, glColor
+//! …) stored inline without boxing, the way Mesa's vbo "save" module compiles begin/end
+//! geometry into a vertex node. Replaying a node goes through the same immediate-mode code
+//! as glBegin/glEnd ([`Context::vertex_op`]), so attributes the list does not set come from
+//! the current values at execution time; but its primitives are drawn as *indexed* draws,
+//! as Mesa draws vertex nodes, which decides llvmpipe's GL_QUADS split (llvmpipe-rules §5).
+//! Like Mesa, a node whose vertices would reference an attribute that first appears after
+//! them ("dangling" attribute) is replayed through the plain immediate path ("loopback").
+//!
+//! Commands that GL executes immediately (glGen*, glGet*, client array state, glFlush …)
+//! simply never reach a list. Lists are reference counted, so redefining or deleting a list
+//! while it executes (glNewList(n, GL_COMPILE_AND_EXECUTE) calling list n) is safe: the
+//! running copy lives until it returns.
+
+use super::error::{GlError, GlResult};
+use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
+use super::Context;
+use crate::geometry::fetch::VertexIn;
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// GL_MAX_LIST_NESTING (Mesa's value): deeper glCallList calls are ignored.
+pub const MAX_LIST_NESTING: usize = 64;
+
+/// A recorded state command: runs the call on the context at execution time.
+pub type ListFn = Box<dyn Fn(&mut Context) -> GlResult<()> + Send + Sync>;
+
+/// One per-vertex command, recorded inline in a vertex node.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum VertexOp {
+    /// glBegin.
+    Begin(Primitive),
+    /// glEnd.
+    End,
+    /// glVertex: emits a vertex with the current attributes.
+    Vertex([f32; 4]),
+    /// glColor.
+    Color([f32; 4]),
+    /// glSecondaryColor.
+    SecondaryColor([f32; 3]),
+    /// glNormal.
+    Normal([f32; 3]),
+    /// glTexCoord / glMultiTexCoord: unit and coordinates.
+    TexCoord(u8, [f32; 4]),
+    /// glFogCoord.
+    FogCoord(f32),
+    /// Saves the current attributes (a compiled glDrawArrays does not change them).
+    SaveCurrent,
+    /// Restores the attributes saved by [`VertexOp::SaveCurrent`].
+    RestoreCurrent,
+}
+
+impl VertexOp {
+    /// The attribute bit this op sets (for the dangling-attribute rule), 0 for others.
+    fn attr_bit(&self) -> u32 {
+        match self {
+            VertexOp::Color(_) => 1,
+            VertexOp::SecondaryColor(_) => 2,
+            VertexOp::Normal(_) => 4,
+            VertexOp::FogCoord(_) => 8,
+            VertexOp::TexCoord(u, _) => 16 << u,
+            _ => 0,
+        }
+    }
+}
+
+/// One entry of a display list.
+pub enum Cmd {
+    /// A state command.
+    Call(ListFn),
+    /// A run of per-vertex commands.
+    Node {
+        /// The commands.
+        ops: Vec<VertexOp>,
+        /// Replay through the non-indexed immediate path (Mesa's loopback).
+        loopback: bool,
+    },
+}
+
+/// A compiled display list.
+#[derive(Default)]
+pub struct DisplayList {
+    /// Its entries in order.
+    pub cmds: Vec<Cmd>,
+}
+
+/// The list being compiled (between glNewList and glEndList).
+pub struct Compiling {
+    /// Its name.
+    pub name: u32,
+    /// GL_COMPILE_AND_EXECUTE.
+    pub execute: bool,
+    /// Entries so far.
+    cmds: Vec<Cmd>,
+    /// The open vertex node.
+    ops: Vec<VertexOp>,
+    /// Whether the open node must be replayed by loopback.
+    loopback: bool,
+    /// Vertices in the open node.
+    node_verts: usize,
+    /// Attributes set so far in this list (bits of [`VertexOp::attr_bit`]).
+    list_attrs: u32,
+    /// Whether a glBegin is open at this point of the list.
+    in_begin: bool,
+}
+
+impl Compiling {
+    /// Closes the open vertex node, if any.
+    fn close_node(&mut self) {
+        if !self.ops.is_empty() {
+            self.cmds.push(Cmd::Node {
+                ops: std::mem::take(&mut self.ops),
+                loopback: self.loopback,
+            });
+        }
+        self.loopback = false;
+        self.node_verts = 0;
+    }
+}
+
+/// Display-list state of a context.
+#[derive(Default)]
+pub struct ListState {
+    /// Defined lists by name.
+    pub lists: HashMap<u32, Arc<DisplayList>>,
+    /// Names glGenLists reserved that glNewList has not defined yet, as inclusive ranges
+    /// (glIsList answers true for them, as in Mesa, which stores empty lists).
+    reserved: Vec<(u32, u32)>,
+    /// The list being compiled.
+    pub compiling: Option<Compiling>,
+    /// glListBase.
+    pub base: u32,
+    /// Current glCallList nesting depth.
+    pub depth: usize,
+    /// Attributes saved by [`VertexOp::SaveCurrent`].
+    saved_current: Option<CurrentAttribs>,
+    /// The largest name ever used: glGenLists continues after it, as Mesa's name table
+    /// does (`_mesa_HashFindFreeKeyBlock`), before it searches for a gap.
+    max_key: u32,
+}
+
+impl ListState {
+    /// `Some(execute)` while a list is being compiled.
+    #[inline]
+    pub fn compile_mode(&self) -> Option<bool> {
+        self.compiling.as_ref().map(|k| k.execute)
+    }
+
+    /// Appends a state command to the list being compiled.
+    pub fn push_call(&mut self, f: ListFn) {
+        if let Some(k) = self.compiling.as_mut() {
+            k.close_node();
+            k.cmds.push(Cmd::Call(f));
+        }
+    }
+
+    /// Appends a per-vertex command to the list being compiled. An attribute given outside
+    /// glBegin/glEnd is a node of its own (Mesa compiles it as a separate opcode).
+    pub fn push_op(&mut self, op: VertexOp) {
+        let Some(k) = self.compiling.as_mut() else {
+            return;
+        };
+        let bit = op.attr_bit();
+        if bit != 0 && !k.in_begin {
+            k.close_node();
+        }
+        if bit != 0 && k.list_attrs & bit == 0 && k.node_verts > 0 {
+            k.loopback = true;
+        }
+        k.list_attrs |= bit;
+        match op {
+            VertexOp::Vertex(_) => k.node_verts += 1,
+            VertexOp::Begin(_) => k.in_begin = true,
+            VertexOp::End => k.in_begin = false,
+            _ => {}
+        }
+        k.ops.push(op);
+        if bit != 0 && !k.in_begin {
+            k.close_node();
+        }
+    }
+}
+
+impl Context {
+    /// Runs one per-vertex command with immediate-mode semantics (glBegin … glEnd).
+    pub fn vertex_op(&mut self, op: VertexOp) -> GlResult<()> {
+        let cur = &mut self.state.current;
+        match op {
+            VertexOp::Begin(m) => {
+                self.check_outside_begin()?;
+                let im = &self.immediate;
+                if im.pending != Some(m) || im.indexed != im.replaying {
+                    self.flush_pending();
+                }
+                self.immediate.pending = None;
+                self.immediate.active = Some(m);
+            }
+            VertexOp::End => {
+                let Some(mode) = self.immediate.active.take() else {
+                    return Err(GlError::InvalidOperation);
+                };
+                // Drop an incomplete trailing primitive so a merged batch stays aligned.
+                let per = match mode {
+                    Primitive::Lines => 2,
+                    Primitive::Triangles => 3,
+                    Primitive::Quads => 4,
+                    _ => 1,
+                };
+                let im = &mut self.immediate;
+                let whole = im.verts.len() - im.verts.len() % per;
+                im.verts.truncate(whole);
+                im.pending = Some(mode);
+                im.indexed = im.replaying;
+                if !super::immediate::Immediate::mergeable(mode) {
+                    self.flush_pending();
+                }
+            }
+            VertexOp::Vertex(p) => {
+                if self.immediate.active.is_some() {
+                    let v = VertexIn::with_current(p, cur);
+                    if self.immediate.verts.try_reserve(1).is_err() {
+                        return Err(GlError::OutOfMemory);
+                    }
+                    self.immediate.verts.push(v);
+                }
+            }
+            VertexOp::Color(v) => cur.color = v,
+            VertexOp::SecondaryColor(v) => cur.secondary_color = [v[0], v[1], v[2], 1.0],
+            VertexOp::Normal(v) => cur.normal = v,
+            VertexOp::TexCoord(u, v) => cur.texcoord[(u as usize) % MAX_TEXTURE_UNITS] = v,
+            VertexOp::FogCoord(f) => cur.fog_coord = f,
+            VertexOp::SaveCurrent => self.lists.saved_current = Some(*cur),
+            VertexOp::RestoreCurrent => {
+                if let Some(s) = self.lists.saved_current.take() {
+                    *cur = s;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// glNewList.
+    pub fn new_list(&mut self, name: u32, execute: bool) -> GlResult<()> {
+        if name == 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.check_outside_begin()?;
+        if self.lists.compiling.is_some() {
+            return Err(GlError::InvalidOperation);
+        }
+        self.lists.compiling = Some(Compiling {
+            name,
+            execute,
+            cmds: Vec::new(),
+            ops: Vec::new(),
+            loopback: false,
+            node_verts: 0,
+            list_attrs: 0,
+            in_begin: false,
+        });
+        Ok(())
+    }
+
+    /// glEndList: the new definition replaces the old one now.
+    pub fn end_list(&mut self) -> GlResult<()> {
+        let Some(mut k) = self.lists.compiling.take() else {
+            return Err(GlError::InvalidOperation);
+        };
+        k.close_node();
+        let list = Arc::new(DisplayList { cmds: k.cmds });
+        self.lists.lists.insert(k.name, list);
+        self.lists.max_key = self.lists.max_key.max(k.name);
+        Ok(())
+    }
+
+    /// glCallList (also each name of glCallLists): runs the list's commands; errors of
+    /// recorded commands are recorded as they run. Undefined names and calls nested deeper
+    /// than [`MAX_LIST_NESTING`] do nothing.
+    pub fn call_list(&mut self, name: u32) {
+        if self.lists.depth >= MAX_LIST_NESTING {
+            return;
+        }
+        let Some(list) = self.lists.lists.get(&name).cloned() else {
+            return;
+        };
+        self.lists.depth += 1;
+        let was = self.immediate.replaying;
+        for cmd in &list.cmds {
+            let r = match cmd {
+                Cmd::Call(f) => {
+                    self.flush_pending();
+                    f(self)
+                }
+                Cmd::Node { ops, loopback } => {
+                    self.immediate.replaying = !loopback;
+                    for &op in ops {
+                        if let Err(e) = self.vertex_op(op) {
+                            self.record_error(e);
+                        }
+                    }
+                    self.immediate.replaying = was;
+                    Ok(())
+                }
+            };
+            if let Err(e) = r {
+                self.record_error(e);
+            }
+        }
+        self.lists.depth -= 1;
+    }
+
+    /// glGenLists: `n` consecutive unused names (0 when there is no such range or n = 0).
+    pub fn gen_lists(&mut self, n: i32) -> GlResult<u32> {
+        if n < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.check_outside_begin()?;
+        if n == 0 {
+            return Ok(0);
+        }
+        let last_of = |base: u32| base.checked_add(n as u32 - 1);
+        let base = match last_of(self.lists.max_key.saturating_add(1)) {
+            Some(_) if self.lists.max_key < u32::MAX => self.lists.max_key + 1,
+            _ => {
+                // Search the gaps between used names from 1 up.
+                let mut used: Vec<(u32, u32)> = self.lists.reserved.clone();
+                used.extend(self.lists.lists.keys().map(|&k| (k, k)));
+                used.sort_unstable();
+                let mut base = 1u32;
+                for (lo, hi) in used {
+                    match last_of(base) {
+                        Some(last) if last < lo => break,
+                        None => return Ok(0),
+                        _ if hi == u32::MAX => return Ok(0),
+                        _ => base = base.max(hi + 1),
+                    }
+                }
+                match last_of(base) {
+                    Some(_) if base != 0 => base,
+                    _ => return Ok(0),
+                }
+            }
+        };
+        let last = base + (n as u32 - 1);
+        self.lists.reserved.push((base, last));
+        self.lists.max_key = self.lists.max_key.max(last);
+        Ok(base)
+    }
+
+    /// glDeleteLists.
+    pub fn delete_lists(&mut self, list: u32, range: i32) -> GlResult<()> {
+        if range < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.check_outside_begin()?;
+        if range == 0 {
+            return Ok(());
+        }
+        let last = list.saturating_add(range as u32 - 1);
+        self.lists.lists.retain(|&k, _| k < list || k > last);
+        let mut kept = Vec::with_capacity(self.lists.reserved.len() + 1);
+        for &(lo, hi) in &self.lists.reserved {
+            if hi < list || lo > last {
+                kept.push((lo, hi));
+                continue;
+            }
+            if lo < list {
+                kept.push((lo, list - 1));
+            }
+            if hi > last {
+                kept.push((last + 1, hi));
+            }
+        }
+        self.lists.reserved = kept;
+        Ok(())
+    }
+
+    /// glIsList.
+    pub fn is_list(&self, list: u32) -> bool {
+        self.lists.lists.contains_key(&list)
+            || self
+                .lists
+                .reserved
+                .iter()
+                .any(|&(lo, hi)| (lo..=hi).contains(&list))
+    }
+}
+
+impl Context {
+    /// The per-vertex commands glArrayElement(`i`) stands for: the enabled arrays' values
+    /// of element `i` (colour, normal, texture coordinates), then the vertex.
+    pub fn array_element_ops(&self, i: u32, out: &mut Vec<VertexOp>) {
+        use crate::geometry::fetch::fetch_attr;
+        let a = &self.arrays;
+        let fill = [0.0, 0.0, 0.0, 1.0];
+        // SAFETY: the program promised that enabled client arrays cover element `i`;
+        // buffer-object arrays are bounds-checked.
+        unsafe {
+            if a.color.enabled {
+                if let Some(v) = fetch_attr(a, &a.color, i, true, fill) {
+                    out.push(VertexOp::Color(v));
+                }
+            }
+            if a.normal.enabled {
+                if let Some(n) = fetch_attr(a, &a.normal, i, true, [0.0; 4]) {
+                    out.push(VertexOp::Normal([n[0], n[1], n[2]]));
+                }
+            }
+            for (u, arr) in a.texcoord.iter().enumerate() {
+                if arr.enabled {
+                    if let Some(t) = fetch_attr(a, arr, i, false, fill) {
+                        out.push(VertexOp::TexCoord(u as u8, t));
+                    }
+                }
+            }
+            if a.vertex.enabled {
+                if let Some(p) = fetch_attr(a, &a.vertex, i, false, fill) {
+                    out.push(VertexOp::Vertex(p));
+                }
+            }
+        }
+    }
+
+    /// Compiles glDrawArrays/glDrawElements into the list being compiled, as Mesa does:
+    /// the arrays are read now and become a glBegin/glEnd whose attributes leave the
+    /// current values unchanged. A call that fails validation is compiled as its error.
+    pub fn compile_draw(&mut self, mode: GlResult<Primitive>, elements: GlResult<Elements>) {
+        let fail = |c: &mut Context, e: GlError| c.lists.push_call(Box::new(move |_| Err(e)));
+        let (mode, elements) = match mode.and_then(|m| Ok((m, elements?))) {
+            Ok(v) => v,
+            Err(e) => return fail(self, e),
+        };
+        if !self.arrays.vertex.enabled {
+            return;
+        }
+        let n = match &elements {
+            Elements::Range(_, count) => *count,
+            Elements::List(v) => v.len(),
+        };
+        // At most one op per array and the vertex per element.
+        let per = 3 + MAX_TEXTURE_UNITS;
+        let mut ops = Vec::new();
+        if n.checked_mul(per)
+            .and_then(|k| ops.try_reserve(k + 4).ok())
+            .is_none()
+        {
+            return fail(self, GlError::OutOfMemory);
+        }
+        ops.extend([VertexOp::SaveCurrent, VertexOp::Begin(mode)]);
+        match elements {
+            Elements::Range(first, count) => {
+                for i in (0..count as u32).map_while(|i| first.checked_add(i)) {
+                    self.array_element_ops(i, &mut ops);
+                }
+            }
+            Elements::List(v) => {
+                for i in v {
+                    self.array_element_ops(i, &mut ops);
+                }
+            }
+        }
+        ops.extend([VertexOp::End, VertexOp::RestoreCurrent]);
+        for op in ops {
+            self.lists.push_op(op);
+        }
+    }
+}
+
+/// The elements a compiled draw call reads.
+pub enum Elements {
+    /// glDrawArrays: first and count.
+    Range(u32, usize),
+    /// glDrawElements: the indices.
+    List(Vec<u32>),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::Visual;
+    use crate::framebuffer::{ColorFormat, DepthFormat};
+
+    fn ctx() -> Context {
+        Context::new(Visual {
+            format: ColorFormat::Rgba,
+            depth: DepthFormat::None,
+            stencil: false,
+            accum_bits: 0,
+        })
+    }
+
+    #[test]
+    fn gen_lists_reserves_ranges_without_storing_each_name() {
+        let mut c = ctx();
+        assert_eq!(c.gen_lists(i32::MAX), Ok(1));
+        assert!(c.is_list(1) && c.is_list(i32::MAX as u32) && !c.is_list(i32::MAX as u32 + 1));
+        c.delete_lists(10, 5).unwrap();
+        assert!(c.is_list(9) && !c.is_list(10) && !c.is_list(14) && c.is_list(15));
+        // Past the largest name used while it fits, then the first gap that fits.
+        assert_eq!(c.gen_lists(3), Ok(i32::MAX as u32 + 1));
+        assert_eq!(c.gen_lists(i32::MAX), Ok(0));
+        assert_eq!(c.gen_lists(1), Ok(i32::MAX as u32 + 4));
+        c.new_list(u32::MAX, false).unwrap();
+        c.end_list().unwrap();
+        assert_eq!(c.gen_lists(5), Ok(10));
+        assert_eq!(c.gen_lists(-1), Err(GlError::InvalidValue));
+    }
+
+    #[test]
+    fn nesting_stops_at_the_limit() {
+        let mut c = ctx();
+        c.new_list(1, false).unwrap();
+        c.lists.push_call(Box::new(|c| {
+            c.state.clear_stencil += 1;
+            c.call_list(1);
+            Ok(())
+        }));
+        c.end_list().unwrap();
+        c.call_list(1);
+        assert_eq!(c.state.clear_stencil, MAX_LIST_NESTING as i32);
+        assert_eq!(c.lists.depth, 0);
+    }
+}
