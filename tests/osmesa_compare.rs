@@ -46,16 +46,29 @@ struct Tolerance {
 }
 
 /// Scenes that may differ from OSMesa, with the reason.
-const TOLERANCES: &[(&str, Tolerance)] = &[(
-    "tex_aniso",
-    Tolerance {
-        max_channel_diff: 255,
-        max_percent_off: 100.0,
-        reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
+const TOLERANCES: &[(&str, Tolerance)] = &[
+    (
+        "osmesa_wide_formats",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 13.0,
+            reason: "16-bit and float OSMesa buffers: Mesa renders and blends in \
+                     R16G16B16A16_UNORM / R32G32B32A32_FLOAT (llvmpipe-rules §13), softgl in \
+                     its 8-bit path, widened at the copy; measured at full precision: max \
+                     |diff| 0.0056 (1.44/255), 88% of pixels identical after rounding to 8 bits",
+        },
+    ),
+    (
+        "tex_aniso",
+        Tolerance {
+            max_channel_diff: 255,
+            max_percent_off: 100.0,
+            reason: "not compared byte for byte: softgl's anisotropic filter is its own, not \
                  llvmpipe's EWA (llvmpipe-rules §9.3); tests/aniso_truth.rs judges both \
                  against the ground truth",
-    },
-)];
+        },
+    ),
+];
 
 /// Exactness: the default tolerance of every scene.
 const EXACT: Tolerance = Tolerance {
@@ -121,6 +134,8 @@ const SCENES: &[&str] = &[
     "stress_depth_fight",
     "stress_degenerate",
     "tex_sized_formats",
+    "osmesa_wide_formats",
+    "osmesa_contexts",
 ];
 
 macro_rules! scene_tests {
@@ -190,6 +205,8 @@ scene_tests!(
     stress_depth_fight,
     stress_degenerate,
     tex_sized_formats,
+    osmesa_wide_formats,
+    osmesa_contexts,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -100,7 +100,7 @@ fn m(mat: &Mat4) -> Value {
 pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let st = &c.state;
     let mx = &c.matrices;
-    let bits = c.visual.format.channel_bits();
+    let bits = c.color_bits();
     let depth_bits = c.visual.depth.bits() as i64;
     let stencil_bits = if c.visual.stencil { 8 } else { 0 };
     let stencil_max = (1i32 << stencil_bits) - 1;

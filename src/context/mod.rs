@@ -10,6 +10,7 @@ pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod lighting_state;
+pub mod share;
 pub mod state;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
@@ -184,13 +185,14 @@ impl Context {
 
     /// Binds (or resizes) the framebuffer for a user buffer of `w` x `h`. A new size or
     /// format gives a new, zeroed framebuffer, as Mesa does; the first binding sets the
-    /// viewport and scissor to the buffer size.
-    pub fn bind_framebuffer(&mut self, w: usize, h: usize) {
+    /// viewport and scissor to the buffer size. `retyped` (a new component type) also gives
+    /// a new framebuffer, as Mesa picks another pipe format.
+    pub fn bind_framebuffer(&mut self, w: usize, h: usize, retyped: bool) {
         let first = self.fb.is_none();
-        let same = self
-            .fb
-            .as_ref()
-            .is_some_and(|fb| fb.width == w && fb.height == h);
+        let same = !retyped
+            && self.fb.as_ref().is_some_and(|fb| {
+                fb.width == w && fb.height == h && fb.format == self.visual.format
+            });
         if !same {
             self.fb = Some(Framebuffer::new(
                 w,
@@ -214,7 +216,8 @@ impl Context {
         if !self.dirty || self.target.ptr == 0 {
             return;
         }
-        let bpp = fb.format.bytes_per_pixel();
+        let wide = crate::framebuffer::WideType::from_gl(self.target.ty);
+        let bpp = fb.format.bytes_per_pixel() * wide.map_or(1, |w| w.bytes());
         let row_px = if self.target.row_length > 0 {
             self.target.row_length as usize
         } else {
@@ -222,10 +225,30 @@ impl Context {
         };
         // SAFETY: OSMesaMakeCurrent's contract: the buffer holds at least
         // row_length * height pixels of the format (the program promised it to Mesa too).
-        unsafe { fb.copy_to_user(self.target.ptr as *mut u8, row_px * bpp, self.target.y_up) };
+        unsafe {
+            match wide {
+                None => fb.copy_to_user(self.target.ptr as *mut u8, row_px * bpp, self.target.y_up),
+                Some(t) => fb.copy_to_user_wide(
+                    self.target.ptr as *mut u8,
+                    row_px * bpp,
+                    self.target.y_up,
+                    t,
+                ),
+            }
+        };
         self.dirty = false;
         if self.depth_copy.is_some() {
             self.depth_copy = Some(self.depth_snapshot());
+        }
+    }
+
+    /// Bits per colour channel (r, g, b, a) of the bound buffer: 16 or 32 for
+    /// GL_UNSIGNED_SHORT and GL_FLOAT user buffers.
+    pub fn color_bits(&self) -> [i32; 4] {
+        let bits = self.visual.format.channel_bits();
+        match crate::framebuffer::WideType::from_gl(self.target.ty) {
+            Some(t) => bits.map(|b| if b > 0 { 8 * t.bytes() as i32 } else { 0 }),
+            None => bits,
         }
     }
 
