@@ -54,6 +54,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     plan.separate_specular = stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
+    plan.count_samples = ctx.queries.active.is_some();
     let Some(region) = ctx.draw_region() else {
         return;
     };

@@ -169,7 +169,15 @@ impl Framebuffer {
 
     /// The stored colour of a glClear value (already clamped to [0,1]).
     pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
-        match self.format {
+        self.format.pack_float(c)
+    }
+}
+
+impl ColorFormat {
+    /// A float colour in [0,1] packed as gallium's format packing does (glClear's fast
+    /// path, glAccum's GL_RETURN): rounded, RGB565 to 5/6 bits, no alpha stored as 255.
+    pub fn pack_float(self, c: [f32; 4]) -> [u8; 4] {
+        match self {
             ColorFormat::Rgb565 => {
                 let q = |v: f32, max: f32| (v * max).round() as u8;
                 let (r, g, b) = (q(c[0], 31.0), q(c[1], 63.0), q(c[2], 31.0));
@@ -180,13 +188,16 @@ impl Framebuffer {
                     255,
                 ]
             }
-            _ => {
+            ColorFormat::Rgb => {
                 let q = clear_float_to_ubyte;
-                self.store_rgba8([q(c[0]), q(c[1]), q(c[2]), q(c[3])])
+                [q(c[0]), q(c[1]), q(c[2]), 255]
             }
+            _ => c.map(clear_float_to_ubyte),
         }
     }
+}
 
+impl Framebuffer {
     /// Copies the whole buffer into the user's memory (bottom-up when `y_up`).
     ///
     /// # Safety

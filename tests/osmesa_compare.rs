@@ -136,6 +136,8 @@ const SCENES: &[&str] = &[
     "tex_sized_formats",
     "osmesa_wide_formats",
     "osmesa_contexts",
+    "occlusion_query",
+    "accum_buffer",
 ];
 
 macro_rules! scene_tests {
@@ -207,6 +209,8 @@ scene_tests!(
     tex_sized_formats,
     osmesa_wide_formats,
     osmesa_contexts,
+    occlusion_query,
+    accum_buffer,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

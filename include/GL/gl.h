@@ -1130,6 +1130,10 @@ GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 GLAPI void GLAPIENTRY glFogiv(GLenum pname, const GLint *params);
 
+/* Functions: src/ffi/accum.rs */
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLACTIVETEXTUREPROC) (GLenum texture);

@@ -195,8 +195,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_DEPTH_BITS => i(&[depth_bits]),
         GL_STENCIL_BITS => i(&[stencil_bits]),
         GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
-            i(&[0])
+            i(&[if c.has_accum() { 16 } else { 0 }])
         }
+        GL_ACCUM_CLEAR_VALUE => n(&c.accum.attrib.clear_color),
         GL_INDEX_BITS => i(&[0]),
         GL_RGBA_MODE => b(true),
         GL_INDEX_MODE | GL_DOUBLEBUFFER | GL_STEREO => b(false),

@@ -4,12 +4,14 @@
 //! Every method validates its arguments first and returns a [`GlError`] without touching
 //! state when they are wrong; the C boundary records the error for glGetError.
 
+pub mod accum;
 pub mod arrays;
 pub mod error;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod lighting_state;
+pub mod queries;
 pub mod share;
 pub mod state;
 
@@ -39,7 +41,7 @@ pub struct Visual {
     pub depth: DepthFormat,
     /// Whether there is an 8-bit stencil buffer.
     pub stencil: bool,
-    /// Accumulation bits requested (kept for glGet; no accumulation buffer yet).
+    /// Accumulation bits requested (any positive number gives Mesa's 16-bit buffer).
     pub accum_bits: i32,
 }
 
@@ -97,6 +99,10 @@ pub struct Context {
     pub textures: crate::texture::TextureState,
     /// Lights, materials, colour material and fog.
     pub light: crate::context::lighting_state::LightingState,
+    /// Occlusion query objects.
+    pub queries: queries::QueryState,
+    /// The accumulation buffer and its clear value.
+    pub accum: accum::AccumState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -146,6 +152,8 @@ impl Context {
             depth_copy: None,
             textures: crate::texture::TextureState::default(),
             light: Default::default(),
+            queries: Default::default(),
+            accum: Default::default(),
         }
     }
 
@@ -373,6 +381,9 @@ impl Context {
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !all != 0 {
             return Err(GlError::InvalidValue);
+        }
+        if mask & GL_ACCUM_BUFFER_BIT != 0 {
+            self.clear_accum_buffer();
         }
         let Some(region) = self.draw_region() else {
             return Ok(());

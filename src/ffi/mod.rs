@@ -9,6 +9,7 @@
 //! The headers in `include/GL` are generated from these files by cbindgen
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
+pub mod accum;
 pub mod arrays;
 pub mod buffers;
 pub mod draw;
@@ -23,6 +24,7 @@ pub mod matrix;
 pub mod multidraw;
 pub mod osmesa;
 pub mod proc_table;
+pub mod queries;
 pub mod query;
 pub mod state;
 pub mod textures;
