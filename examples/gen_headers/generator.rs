@@ -61,6 +61,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("textures.rs", Header::Gl),
     ("lighting.rs", Header::Gl),
     ("accum.rs", Header::Gl),
+    ("eval.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),

@@ -7,6 +7,7 @@
 pub mod accum;
 pub mod arrays;
 pub mod error;
+pub mod eval;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
@@ -103,6 +104,8 @@ pub struct Context {
     pub queries: queries::QueryState,
     /// The accumulation buffer and its clear value.
     pub accum: accum::AccumState,
+    /// Evaluator maps and grids.
+    pub eval: eval::EvalState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -154,6 +157,7 @@ impl Context {
             light: Default::default(),
             queries: Default::default(),
             accum: Default::default(),
+            eval: Default::default(),
         }
     }
 

@@ -14,6 +14,7 @@ pub mod arrays;
 pub mod buffers;
 pub mod draw;
 pub mod enums;
+pub mod eval;
 pub mod fragment;
 pub mod fragment_ext;
 pub mod glext_enums;
