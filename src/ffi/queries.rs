@@ -24,7 +24,8 @@ fn samples_target(target: GLenum) -> GlResult<()> {
 pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
     let names: Vec<GLuint> = with_ctx(|c| {
         let n = non_negative(n)?;
-        c.gen_queries(n)
+        // Mesa makes no names when there is nowhere to put them.
+        c.gen_queries(if ids.is_null() { 0 } else { n })
     });
     if !ids.is_null() {
         for (i, name) in names.into_iter().enumerate() {
