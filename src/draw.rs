@@ -63,6 +63,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     plan.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
+    plan.count_samples = ctx.queries.active.is_some();
     let Some(region) = ctx.draw_region() else {
         return;
     };

@@ -169,7 +169,15 @@ impl Framebuffer {
 
     /// The stored colour of a glClear value (already clamped to [0,1]).
     pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
-        match self.format {
+        self.format.pack_float(c)
+    }
+}
+
+impl ColorFormat {
+    /// A float colour in [0,1] packed as gallium's format packing does (glClear's fast
+    /// path, glAccum's GL_RETURN): rounded, RGB565 to 5/6 bits, no alpha stored as 255.
+    pub fn pack_float(self, c: [f32; 4]) -> [u8; 4] {
+        match self {
             ColorFormat::Rgb565 => {
                 let q = |v: f32, max: f32| (v * max).round() as u8;
                 let (r, g, b) = (q(c[0], 31.0), q(c[1], 63.0), q(c[2], 31.0));
@@ -180,13 +188,16 @@ impl Framebuffer {
                     255,
                 ]
             }
-            _ => {
+            ColorFormat::Rgb => {
                 let q = clear_float_to_ubyte;
-                self.store_rgba8([q(c[0]), q(c[1]), q(c[2]), q(c[3])])
+                [q(c[0]), q(c[1]), q(c[2]), 255]
             }
+            _ => c.map(clear_float_to_ubyte),
         }
     }
+}
 
+impl Framebuffer {
     /// Copies the whole buffer into the user's memory (bottom-up when `y_up`).
     ///
     /// # Safety
@@ -230,6 +241,69 @@ impl Framebuffer {
                             | ((c[1] as u16 >> 2) << 5)
                             | (c[2] as u16 >> 3);
                         o.copy_from_slice(&v.to_ne_bytes());
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A user buffer wider than 8 bits per channel (OSMesaMakeCurrent's GL_UNSIGNED_SHORT and
+/// GL_FLOAT types). Mesa stores these as R16G16B16A16_UNORM / R32G32B32A32_FLOAT (or the
+/// RGB forms) whatever the OSMESA_RGBA/BGRA/ARGB order; softgl renders them through its
+/// 8-bit colour path and widens at the copy (`v * 257`, `v / 255`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WideType {
+    /// GL_UNSIGNED_SHORT: native-endian u16 channels.
+    U16,
+    /// GL_FLOAT: native-endian f32 channels.
+    F32,
+}
+
+impl WideType {
+    /// The wide type of an OSMesaMakeCurrent `type`, `None` for 8-bit types.
+    pub fn from_gl(ty: u32) -> Option<Self> {
+        match ty {
+            crate::ffi::enums::GL_UNSIGNED_SHORT => Some(WideType::U16),
+            crate::ffi::enums::GL_FLOAT => Some(WideType::F32),
+            _ => None,
+        }
+    }
+    /// Bytes per channel.
+    pub fn bytes(self) -> usize {
+        match self {
+            WideType::U16 => 2,
+            WideType::F32 => 4,
+        }
+    }
+}
+
+impl Framebuffer {
+    /// Copies the whole buffer into a user buffer of `ty` channels, in R, G, B(, A) order
+    /// (4 channels for Rgba, 3 for Rgb), bottom-up when `y_up`.
+    ///
+    /// # Safety
+    /// `dst` must be valid for writes of `stride * (height - 1) + width * channels * bytes`.
+    pub unsafe fn copy_to_user_wide(&self, dst: *mut u8, stride: usize, y_up: bool, ty: WideType) {
+        let n = if self.format == ColorFormat::Rgb {
+            3
+        } else {
+            4
+        };
+        let px_bytes = n * ty.bytes();
+        let w = self.width;
+        for row in 0..self.height {
+            let src = &self.color[row * w..(row + 1) * w];
+            let dst_row = if y_up { self.height - 1 - row } else { row };
+            // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
+            // least `width * px_bytes` bytes; `out` is that row's first `width * px_bytes`.
+            let out =
+                unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * px_bytes) };
+            for (o, c) in out.chunks_exact_mut(px_bytes).zip(src) {
+                for (k, oc) in o.chunks_exact_mut(ty.bytes()).enumerate() {
+                    match ty {
+                        WideType::U16 => oc.copy_from_slice(&(c[k] as u16 * 257).to_ne_bytes()),
+                        WideType::F32 => oc.copy_from_slice(&(c[k] as f32 / 255.0).to_ne_bytes()),
                     }
                 }
             }

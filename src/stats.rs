@@ -38,6 +38,9 @@ pub struct Stats {
     pub color_reads: u64,
     /// Colour buffer writes.
     pub color_writes: u64,
+    /// Samples that passed every fragment test, counted only while an occlusion query is
+    /// active (the draw's [`crate::fragment::FragPlan::count_samples`]).
+    pub samples_passed: u64,
 }
 
 impl Stats {
@@ -51,6 +54,7 @@ impl Stats {
         self.depth_reads += o.depth_reads;
         self.color_reads += o.color_reads;
         self.color_writes += o.color_writes;
+        self.samples_passed += o.samples_passed;
     }
 
     /// A multi-line human-readable report.

@@ -64,6 +64,8 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("texgen.rs", Header::Gl),
     ("pixels.rs", Header::Gl),
     ("lists.rs", Header::Gl),
+    ("accum.rs", Header::Gl),
+    ("eval.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
@@ -71,6 +73,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("textures_ext.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
     ("pixels_ext.rs", Header::Glext),
+    ("queries.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 

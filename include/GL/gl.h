@@ -1195,6 +1195,35 @@ GLAPI void GLAPIENTRY glPopAttrib(void);
 GLAPI void GLAPIENTRY glPushClientAttrib(GLbitfield mask);
 GLAPI void GLAPIENTRY glPopClientAttrib(void);
 
+/* Functions: src/ffi/accum.rs */
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
+/* Functions: src/ffi/eval.rs */
+GLAPI void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat *points);
+GLAPI void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order, const GLdouble *points);
+GLAPI void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points);
+GLAPI void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1, GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points);
+GLAPI void GLAPIENTRY glMapGrid1f(GLint un, GLfloat u1, GLfloat u2);
+GLAPI void GLAPIENTRY glMapGrid1d(GLint un, GLdouble u1, GLdouble u2);
+GLAPI void GLAPIENTRY glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2);
+GLAPI void GLAPIENTRY glMapGrid2d(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);
+GLAPI void GLAPIENTRY glEvalCoord1f(GLfloat u);
+GLAPI void GLAPIENTRY glEvalCoord1d(GLdouble u);
+GLAPI void GLAPIENTRY glEvalCoord1fv(const GLfloat *u);
+GLAPI void GLAPIENTRY glEvalCoord1dv(const GLdouble *u);
+GLAPI void GLAPIENTRY glEvalCoord2f(GLfloat u, GLfloat v);
+GLAPI void GLAPIENTRY glEvalCoord2d(GLdouble u, GLdouble v);
+GLAPI void GLAPIENTRY glEvalCoord2fv(const GLfloat *u);
+GLAPI void GLAPIENTRY glEvalCoord2dv(const GLdouble *u);
+GLAPI void GLAPIENTRY glEvalPoint1(GLint i);
+GLAPI void GLAPIENTRY glEvalPoint2(GLint i, GLint j);
+GLAPI void GLAPIENTRY glEvalMesh1(GLenum mode, GLint i1, GLint i2);
+GLAPI void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
+GLAPI void GLAPIENTRY glGetMapdv(GLenum target, GLenum query, GLdouble *v);
+GLAPI void GLAPIENTRY glGetMapfv(GLenum target, GLenum query, GLfloat *v);
+GLAPI void GLAPIENTRY glGetMapiv(GLenum target, GLenum query, GLint *v);
+
 /* Function-pointer types Mesa's gl.h declares (GL 1.2, 1.3, GL_ARB_multitexture) */
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLACTIVETEXTUREPROC) (GLenum texture);

@@ -105,7 +105,7 @@ fn m(mat: &Mat4) -> Value {
 pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let st = &c.state;
     let mx = &c.matrices;
-    let bits = c.visual.format.channel_bits();
+    let bits = c.color_bits();
     let depth_bits = c.visual.depth.bits() as i64;
     let stencil_bits = if c.visual.stencil { 8 } else { 0 };
     let stencil_max = (1i32 << stencil_bits) - 1;
@@ -212,8 +212,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_DEPTH_BITS => i(&[depth_bits]),
         GL_STENCIL_BITS => i(&[stencil_bits]),
         GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
-            i(&[0])
+            i(&[if c.has_accum() { 16 } else { 0 }])
         }
+        GL_ACCUM_CLEAR_VALUE => n(&c.accum.attrib.clear_color),
         GL_INDEX_BITS => i(&[0]),
         GL_RGBA_MODE => b(true),
         GL_INDEX_MODE | GL_DOUBLEBUFFER | GL_STEREO => b(false),

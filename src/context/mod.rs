@@ -4,16 +4,20 @@
 //! Every method validates its arguments first and returns a [`GlError`] without touching
 //! state when they are wrong; the C boundary records the error for glGetError.
 
+pub mod accum;
 pub mod arrays;
 pub mod attrib;
 pub mod dlist;
 pub mod error;
+pub mod eval;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
 pub mod lighting_state;
 pub mod raster_state;
 pub mod pixel_state;
+pub mod queries;
+pub mod share;
 pub mod state;
 pub mod texgen_state;
 
@@ -43,7 +47,7 @@ pub struct Visual {
     pub depth: DepthFormat,
     /// Whether there is an 8-bit stencil buffer.
     pub stencil: bool,
-    /// Accumulation bits requested (kept for glGet; no accumulation buffer yet).
+    /// Accumulation bits requested (any positive number gives Mesa's 16-bit buffer).
     pub accum_bits: i32,
 }
 
@@ -115,6 +119,12 @@ pub struct Context {
     pub lists: dlist::ListState,
     /// glPushAttrib / glPushClientAttrib stacks.
     pub attrib: attrib::AttribStacks,
+    /// Occlusion query objects.
+    pub queries: queries::QueryState,
+    /// The accumulation buffer and its clear value.
+    pub accum: accum::AccumState,
+    /// Evaluator maps and grids.
+    pub eval: eval::EvalState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -171,6 +181,9 @@ impl Context {
             pixel_modes: Default::default(),
             lists: Default::default(),
             attrib: Default::default(),
+            queries: Default::default(),
+            accum: Default::default(),
+            eval: Default::default(),
         }
     }
 
@@ -215,13 +228,14 @@ impl Context {
 
     /// Binds (or resizes) the framebuffer for a user buffer of `w` x `h`. A new size or
     /// format gives a new, zeroed framebuffer, as Mesa does; the first binding sets the
-    /// viewport and scissor to the buffer size.
-    pub fn bind_framebuffer(&mut self, w: usize, h: usize) {
+    /// viewport and scissor to the buffer size. `retyped` (a new component type) also gives
+    /// a new framebuffer, as Mesa picks another pipe format.
+    pub fn bind_framebuffer(&mut self, w: usize, h: usize, retyped: bool) {
         let first = self.fb.is_none();
-        let same = self
-            .fb
-            .as_ref()
-            .is_some_and(|fb| fb.width == w && fb.height == h);
+        let same = !retyped
+            && self.fb.as_ref().is_some_and(|fb| {
+                fb.width == w && fb.height == h && fb.format == self.visual.format
+            });
         if !same {
             self.fb = Some(Framebuffer::new(
                 w,
@@ -245,7 +259,8 @@ impl Context {
         if !self.dirty || self.target.ptr == 0 {
             return;
         }
-        let bpp = fb.format.bytes_per_pixel();
+        let wide = crate::framebuffer::WideType::from_gl(self.target.ty);
+        let bpp = fb.format.bytes_per_pixel() * wide.map_or(1, |w| w.bytes());
         let row_px = if self.target.row_length > 0 {
             self.target.row_length as usize
         } else {
@@ -253,10 +268,30 @@ impl Context {
         };
         // SAFETY: OSMesaMakeCurrent's contract: the buffer holds at least
         // row_length * height pixels of the format (the program promised it to Mesa too).
-        unsafe { fb.copy_to_user(self.target.ptr as *mut u8, row_px * bpp, self.target.y_up) };
+        unsafe {
+            match wide {
+                None => fb.copy_to_user(self.target.ptr as *mut u8, row_px * bpp, self.target.y_up),
+                Some(t) => fb.copy_to_user_wide(
+                    self.target.ptr as *mut u8,
+                    row_px * bpp,
+                    self.target.y_up,
+                    t,
+                ),
+            }
+        };
         self.dirty = false;
         if self.depth_copy.is_some() {
             self.depth_copy = Some(self.depth_snapshot());
+        }
+    }
+
+    /// Bits per colour channel (r, g, b, a) of the bound buffer: 16 or 32 for
+    /// GL_UNSIGNED_SHORT and GL_FLOAT user buffers.
+    pub fn color_bits(&self) -> [i32; 4] {
+        let bits = self.visual.format.channel_bits();
+        match crate::framebuffer::WideType::from_gl(self.target.ty) {
+            Some(t) => bits.map(|b| if b > 0 { 8 * t.bytes() as i32 } else { 0 }),
+            None => bits,
         }
     }
 
@@ -409,6 +444,9 @@ impl Context {
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !all != 0 {
             return Err(GlError::InvalidValue);
+        }
+        if mask & GL_ACCUM_BUFFER_BIT != 0 {
+            self.clear_accum_buffer();
         }
         let Some(region) = self.draw_region() else {
             return Ok(());

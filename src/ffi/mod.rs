@@ -25,10 +25,12 @@
 //! The headers in `include/GL` are generated from these files by cbindgen
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
+pub mod accum;
 pub mod arrays;
 pub mod buffers;
 pub mod draw;
 pub mod enums;
+pub mod eval;
 pub mod fragment;
 pub mod fragment_ext;
 pub mod glext_enums;
@@ -42,6 +44,7 @@ pub mod osmesa;
 pub mod pixels;
 pub mod pixels_ext;
 pub mod proc_table;
+pub mod queries;
 pub mod query;
 pub mod rasterization;
 pub mod state;

@@ -8,6 +8,7 @@
 
 use super::enums::*;
 use super::types::*;
+use crate::context::share::ShareGroup;
 use crate::context::{Context, Visual};
 use crate::framebuffer::{ColorFormat, DepthFormat};
 use libc::{c_char, c_int, c_void};
@@ -83,6 +84,8 @@ pub struct osmesa_context {
     ctx: UnsafeCell<Context>,
     /// The colour format requested at creation (OSMESA_RGBA …).
     format: GLenum,
+    /// The share group (texture and buffer objects), shared with the `sharelist` context.
+    group: ShareGroup,
 }
 
 /// The handle type of `GL/osmesa.h`.
@@ -115,19 +118,40 @@ fn is_live(c: OSMesaContext) -> bool {
             .unwrap_or(false)
 }
 
-fn color_format(format: GLenum) -> Option<ColorFormat> {
-    match format {
-        OSMESA_RGBA => Some(ColorFormat::Rgba),
-        OSMESA_BGRA => Some(ColorFormat::Bgra),
-        OSMESA_ARGB => Some(ColorFormat::Argb),
-        OSMESA_RGB => Some(ColorFormat::Rgb),
-        OSMESA_RGB_565 => Some(ColorFormat::Rgb565),
+/// The colour layout Mesa picks for a format/type pair at OSMesaMakeCurrent
+/// (`osmesa_choose_format`), `None` for pairs it rejects. 16-bit and float buffers are
+/// R16G16B16A16 / R32G32B32A32 (or their RGB forms) whatever the channel order asked for.
+fn color_format(format: GLenum, ty: GLenum) -> Option<ColorFormat> {
+    let wide = matches!(ty, GL_UNSIGNED_SHORT | GL_FLOAT);
+    match (format, ty) {
+        (OSMESA_RGBA, GL_UNSIGNED_BYTE) => Some(ColorFormat::Rgba),
+        (OSMESA_BGRA, GL_UNSIGNED_BYTE) => Some(ColorFormat::Bgra),
+        (OSMESA_ARGB, GL_UNSIGNED_BYTE) => Some(ColorFormat::Argb),
+        (OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB, _) if wide => Some(ColorFormat::Rgba),
+        (OSMESA_RGB, GL_UNSIGNED_BYTE) => Some(ColorFormat::Rgb),
+        (OSMESA_RGB, _) if wide => Some(ColorFormat::Rgb),
+        (OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5) => Some(ColorFormat::Rgb565),
         _ => None,
     }
 }
 
+/// The 8-bit type of a format (its layout before the first OSMesaMakeCurrent).
+fn default_type(format: GLenum) -> GLenum {
+    if format == OSMESA_RGB_565 {
+        GL_UNSIGNED_SHORT_5_6_5
+    } else {
+        GL_UNSIGNED_BYTE
+    }
+}
+
 /// Creates a context from parsed attributes (Mesa's `OSMesaCreateContextAttribs` rules).
-fn create(format: GLenum, depth: c_int, stencil: c_int, accum: c_int) -> OSMesaContext {
+fn create(
+    format: GLenum,
+    depth: c_int,
+    stencil: c_int,
+    accum: c_int,
+    sharelist: OSMesaContext,
+) -> OSMesaContext {
     if depth < 0 || stencil < 0 || accum < 0 {
         return std::ptr::null_mut();
     }
@@ -151,24 +175,27 @@ fn create(format: GLenum, depth: c_int, stencil: c_int, accum: c_int) -> OSMesaC
         DepthFormat::None
     };
     let visual = Visual {
-        format: color_format(format).unwrap_or(ColorFormat::Rgba),
+        format: color_format(format, default_type(format)).unwrap_or(ColorFormat::Rgba),
         depth: depth_format,
         stencil: stencil > 0,
         accum_bits: accum,
+    };
+    let Ok(mut live) = LIVE.lock() else {
+        return std::ptr::null_mut();
+    };
+    let group = if live.contains(&(sharelist as usize)) {
+        // SAFETY: registered in LIVE, which we hold locked, so it is not freed meanwhile.
+        unsafe { &*sharelist }.group.clone()
+    } else {
+        ShareGroup::default()
     };
     let c = Box::into_raw(Box::new(osmesa_context {
         owner: AtomicU64::new(0),
         ctx: UnsafeCell::new(Context::new(visual)),
         format,
+        group,
     }));
-    match LIVE.lock() {
-        Ok(mut l) => l.push(c as usize),
-        Err(_) => {
-            // SAFETY: `c` was just made by Box::into_raw and is not shared.
-            drop(unsafe { Box::from_raw(c) });
-            return std::ptr::null_mut();
-        }
-    }
+    live.push(c as usize);
     c
 }
 
@@ -185,10 +212,12 @@ pub extern "C" fn OSMesaCreateContextExt(
     depthBits: GLint,
     stencilBits: GLint,
     accumBits: GLint,
-    _sharelist: OSMesaContext,
+    sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    std::panic::catch_unwind(|| create(format, depthBits, stencilBits, accumBits))
-        .unwrap_or(std::ptr::null_mut())
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        create(format, depthBits, stencilBits, accumBits, sharelist)
+    }))
+    .unwrap_or(std::ptr::null_mut())
 }
 
 /// OSMesaCreateContextAttribs: a zero-terminated key/value list. softgl implements the GL
@@ -199,7 +228,7 @@ pub extern "C" fn OSMesaCreateContextExt(
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attribList: *const c_int,
-    _sharelist: OSMesaContext,
+    sharelist: OSMesaContext,
 ) -> OSMesaContext {
     let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 0, 0, 0);
     let (mut major, mut minor) = (1, 0);
@@ -233,7 +262,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     if (major, minor) > (1, 5) {
         return std::ptr::null_mut();
     }
-    OSMesaCreateContextExt(format, depth, stencil, accum, std::ptr::null_mut())
+    OSMesaCreateContextExt(format, depth, stencil, accum, sharelist)
 }
 
 /// OSMesaDestroyContext. A context current on another thread is not freed (that would
@@ -253,6 +282,8 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
         let c = unsafe { &*ctx };
         if CURRENT_HANDLE.with(|h| h.get()) == ctx {
             flush_current();
+            // SAFETY: current on this thread, so this thread has the only reference.
+            c.group.check_in(unsafe { &mut *c.ctx.get() });
             CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
             super::set_current(std::ptr::null_mut());
             c.owner.store(0, Ordering::Release);
@@ -306,8 +337,11 @@ fn flush_current() {
 /// OSMesaDestroyContext was called for it meanwhile from another thread.
 fn let_go(h: OSMesaContext) {
     // SAFETY: a handle current on this thread is not freed by anyone else (destroy on
-    // another thread only sets ORPHAN).
-    let prev = unsafe { &*h }.owner.swap(0, Ordering::AcqRel);
+    // another thread only sets ORPHAN), and only this thread uses its context.
+    let c = unsafe { &*h };
+    // SAFETY: as above: this thread holds the only reference to the GL context.
+    c.group.check_in(unsafe { &mut *c.ctx.get() });
+    let prev = c.owner.swap(0, Ordering::AcqRel);
     if prev & ORPHAN != 0 {
         // SAFETY: unregistered (ORPHAN is set after removal from LIVE) and no longer
         // current anywhere: this thread holds the last reference.
@@ -352,14 +386,9 @@ fn make_current(
     }
     // SAFETY: `ctx` is registered in LIVE (and cannot be freed while we hold the lock).
     let c = unsafe { &*ctx };
-    let type_ok = match c.format {
-        OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB | OSMESA_RGB => type_ == GL_UNSIGNED_BYTE,
-        OSMESA_RGB_565 => type_ == GL_UNSIGNED_SHORT_5_6_5,
-        _ => false,
-    };
-    if !type_ok {
+    let Some(format) = color_format(c.format, type_) else {
         return FALSE;
-    }
+    };
     if prev != ctx
         && c.owner
             .compare_exchange(0, me, Ordering::AcqRel, Ordering::Acquire)
@@ -377,7 +406,12 @@ fn make_current(
     super::set_current(gl);
     // SAFETY: this thread now owns the context (claimed above), so no other reference exists.
     let gl = unsafe { &mut *gl };
-    gl.bind_framebuffer(width as usize, height as usize);
+    if prev != ctx {
+        c.group.check_out(gl);
+    }
+    gl.visual.format = format;
+    let retyped = gl.target.ty != type_;
+    gl.bind_framebuffer(width as usize, height as usize, retyped);
     gl.target.ptr = buffer as usize;
     gl.target.ty = type_;
     gl.target.width = width as usize;
@@ -540,12 +574,15 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
     ok as GLboolean
 }
 
-/// OSMesaColorClamp: accepted; fragment colours are always clamped for the 8-bit buffers
-/// softgl supports, which is what both settings give there.
+/// OSMesaColorClamp: accepted. Mesa sets GL_CLAMP_FRAGMENT_COLOR (TRUE or FIXED_ONLY);
+/// fixed-function colours are already in [0,1] (vertex colours are clamped, textures are
+/// unorm), and softgl renders every buffer through its 8-bit path, so both settings give
+/// the same pixels.
 #[no_mangle]
 pub extern "C" fn OSMesaColorClamp(_enable: GLboolean) {}
 
-/// OSMesaPostprocess: accepted; no post-processing filters are implemented.
+/// OSMesaPostprocess: accepted like Mesa's (a filter name and level, before the first
+/// OSMesaMakeCurrent); the gallium post-processing filters themselves are not implemented.
 ///
 /// # Safety
 /// `filter` is not read.

@@ -40,6 +40,8 @@ pub struct FragPlan {
     pub separate_specular: bool,
     /// Fog, when GL_FOG is on.
     pub fog: Option<crate::fixed_function::fog::FogPlan>,
+    /// An occlusion query is active: count the samples that pass (general path only).
+    pub count_samples: bool,
 }
 
 /// The depth test of a draw.
@@ -188,6 +190,7 @@ impl FragPlan {
             logic,
             separate_specular: false,
             fog: None,
+            count_samples: false,
         }
     }
 
@@ -198,6 +201,7 @@ impl FragPlan {
             || self
                 .stencil
                 .is_some_and(|s| s.front.write != 0 || s.back.write != 0)
+            || self.count_samples
     }
 
     /// Whether the plan needs the general fragment path (alpha test, stencil, blending or a
@@ -209,5 +213,6 @@ impl FragPlan {
             || self.logic.is_some()
             || self.separate_specular
             || self.fog.is_some()
+            || self.count_samples
     }
 }

@@ -365,6 +365,9 @@ pub fn shade_chunk<
             }
         }
     }
+    if FULL && plan.count_samples {
+        stats.samples_passed += live[..n].iter().filter(|&&l| l).count() as u64;
+    }
     if no_color || !live[..n].iter().any(|&l| l) {
         return;
     }

@@ -98,6 +98,7 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         && plan.logic.is_none()
         && !plan.separate_specular
         && plan.fog.is_none()
+        && !plan.count_samples
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             fb.format,

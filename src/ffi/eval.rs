@@ -1,0 +1,491 @@
+//! Evaluators (gl.h): glMap1/2, glMapGrid1/2, glEvalCoord1/2, glEvalMesh1/2,
+//! glEvalPoint1/2 and glGetMap, with Mesa's validation order. glEvalMesh is glBegin, a
+//! glEvalCoord per grid point and glEnd, as Mesa's vbo module issues it.
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::immediate::{glBegin, glEnd};
+use super::types::*;
+use super::{with_ctx, with_ctx_raw};
+use crate::context::error::{GlError, GlResult};
+use crate::context::eval::{Grid, MapKind};
+use crate::fixed_function::eval::MAX_ORDER;
+
+/// The map kind and dimensionality (`true` for 2D) of a GL_MAP1_*/GL_MAP2_* target.
+fn map_target(target: GLenum) -> Option<(MapKind, bool)> {
+    let (base, two) = match target {
+        GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => (GL_MAP1_COLOR_4, false),
+        GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => (GL_MAP2_COLOR_4, true),
+        _ => return None,
+    };
+    Some((MapKind::ALL[(target - base) as usize], two))
+}
+
+/// Reads a control net (`uorder` x `vorder` points of `dim` components, strides in
+/// elements) into u-major f32 points, after Mesa's checks.
+#[allow(clippy::too_many_arguments)]
+fn gather<T: Copy + Into<f64>>(
+    target: GLenum,
+    u: [f32; 2],
+    v: Option<[f32; 2]>,
+    ustride: GLint,
+    uorder: GLint,
+    vstride: GLint,
+    vorder: GLint,
+    points: *const T,
+) -> GlResult<(MapKind, bool, Vec<f32>)> {
+    let order_ok = |o: GLint| (1..=MAX_ORDER as GLint).contains(&o);
+    if u[0] == u[1] || v.is_some_and(|v| v[0] == v[1]) {
+        return Err(GlError::InvalidValue);
+    }
+    if !order_ok(uorder) || !order_ok(vorder) || points.is_null() {
+        return Err(GlError::InvalidValue);
+    }
+    let (kind, two) = map_target(target)
+        .filter(|&(_, two)| two == v.is_some())
+        .ok_or(GlError::InvalidEnum)?;
+    let dim = kind.dim() as GLint;
+    if ustride < dim || (v.is_some() && vstride < dim) {
+        return Err(GlError::InvalidValue);
+    }
+    let mut out = Vec::with_capacity((uorder * vorder * dim) as usize);
+    for i in 0..uorder as usize {
+        for j in 0..vorder as usize {
+            let base = i * ustride as usize + j * vstride.max(0) as usize;
+            for k in 0..dim as usize {
+                // SAFETY: the caller promises the control points glMap describes.
+                out.push(unsafe { *points.add(base + k) }.into() as f32);
+            }
+        }
+    }
+    Ok((kind, two, out))
+}
+
+/// Records `e` as the current context's error.
+fn fail(e: GlError) {
+    with_ctx(|_| -> GlResult<()> { Err(e) })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn map<T: Copy + Into<f64>>(
+    target: GLenum,
+    u: [f32; 2],
+    v: Option<[f32; 2]>,
+    ustride: GLint,
+    uorder: GLint,
+    vstride: GLint,
+    vorder: GLint,
+    points: *const T,
+) {
+    if !with_ctx(|c| c.check_outside_begin().map(|_| true)) {
+        return;
+    }
+    match gather(target, u, v, ustride, uorder, vstride, vorder, points) {
+        Ok((kind, two, pts)) => with_ctx(move |c| {
+            if c.state.active_texture != 0 {
+                return Err(GlError::InvalidOperation);
+            }
+            let vv = v.unwrap_or([0.0, 1.0]);
+            c.set_map(kind, two, u, vv, uorder as usize, vorder as usize, pts)
+        }),
+        Err(e) => fail(e),
+    }
+}
+
+/// glMap1f.
+///
+/// # Safety
+/// `points` must hold `order` points `stride` floats apart.
+#[no_mangle]
+pub unsafe extern "C" fn glMap1f(
+    target: GLenum,
+    u1: GLfloat,
+    u2: GLfloat,
+    stride: GLint,
+    order: GLint,
+    points: *const GLfloat,
+) {
+    map(target, [u1, u2], None, stride, order, 0, 1, points)
+}
+
+/// glMap1d.
+///
+/// # Safety
+/// `points` must hold `order` points `stride` doubles apart.
+#[no_mangle]
+pub unsafe extern "C" fn glMap1d(
+    target: GLenum,
+    u1: GLdouble,
+    u2: GLdouble,
+    stride: GLint,
+    order: GLint,
+    points: *const GLdouble,
+) {
+    map(
+        target,
+        [u1 as f32, u2 as f32],
+        None,
+        stride,
+        order,
+        0,
+        1,
+        points,
+    )
+}
+
+/// glMap2f.
+///
+/// # Safety
+/// `points` must hold the `uorder` x `vorder` net with the given strides.
+#[no_mangle]
+pub unsafe extern "C" fn glMap2f(
+    target: GLenum,
+    u1: GLfloat,
+    u2: GLfloat,
+    ustride: GLint,
+    uorder: GLint,
+    v1: GLfloat,
+    v2: GLfloat,
+    vstride: GLint,
+    vorder: GLint,
+    points: *const GLfloat,
+) {
+    map(
+        target,
+        [u1, u2],
+        Some([v1, v2]),
+        ustride,
+        uorder,
+        vstride,
+        vorder,
+        points,
+    )
+}
+
+/// glMap2d.
+///
+/// # Safety
+/// `points` must hold the `uorder` x `vorder` net with the given strides.
+#[no_mangle]
+pub unsafe extern "C" fn glMap2d(
+    target: GLenum,
+    u1: GLdouble,
+    u2: GLdouble,
+    ustride: GLint,
+    uorder: GLint,
+    v1: GLdouble,
+    v2: GLdouble,
+    vstride: GLint,
+    vorder: GLint,
+    points: *const GLdouble,
+) {
+    let (u, v) = ([u1 as f32, u2 as f32], [v1 as f32, v2 as f32]);
+    map(target, u, Some(v), ustride, uorder, vstride, vorder, points)
+}
+
+/// glMapGrid1f.
+#[no_mangle]
+pub extern "C" fn glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat) {
+    with_ctx(|c| c.map_grid(&[Grid { n: un, d: [u1, u2] }]))
+}
+
+/// glMapGrid1d.
+#[no_mangle]
+pub extern "C" fn glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble) {
+    glMapGrid1f(un, u1 as f32, u2 as f32)
+}
+
+/// glMapGrid2f.
+#[no_mangle]
+pub extern "C" fn glMapGrid2f(
+    un: GLint,
+    u1: GLfloat,
+    u2: GLfloat,
+    vn: GLint,
+    v1: GLfloat,
+    v2: GLfloat,
+) {
+    with_ctx(|c| c.map_grid(&[Grid { n: un, d: [u1, u2] }, Grid { n: vn, d: [v1, v2] }]))
+}
+
+/// glMapGrid2d.
+#[no_mangle]
+pub extern "C" fn glMapGrid2d(
+    un: GLint,
+    u1: GLdouble,
+    u2: GLdouble,
+    vn: GLint,
+    v1: GLdouble,
+    v2: GLdouble,
+) {
+    glMapGrid2f(un, u1 as f32, u2 as f32, vn, v1 as f32, v2 as f32)
+}
+
+fn coord(u: f32, v: Option<f32>) {
+    with_ctx_raw(move |c| {
+        c.eval_coord(u, v);
+        Ok(())
+    })
+}
+
+/// glEvalCoord1f.
+#[no_mangle]
+pub extern "C" fn glEvalCoord1f(u: GLfloat) {
+    coord(u, None)
+}
+
+/// glEvalCoord1d.
+#[no_mangle]
+pub extern "C" fn glEvalCoord1d(u: GLdouble) {
+    coord(u as f32, None)
+}
+
+/// glEvalCoord1fv.
+///
+/// # Safety
+/// `u` must be NULL or point to 1 value.
+#[no_mangle]
+pub unsafe extern "C" fn glEvalCoord1fv(u: *const GLfloat) {
+    if !u.is_null() {
+        // SAFETY: non-null; the caller promises one value.
+        coord(unsafe { *u }, None)
+    }
+}
+
+/// glEvalCoord1dv.
+///
+/// # Safety
+/// `u` must be NULL or point to 1 value.
+#[no_mangle]
+pub unsafe extern "C" fn glEvalCoord1dv(u: *const GLdouble) {
+    if !u.is_null() {
+        // SAFETY: non-null; the caller promises one value.
+        coord(unsafe { *u } as f32, None)
+    }
+}
+
+/// glEvalCoord2f.
+#[no_mangle]
+pub extern "C" fn glEvalCoord2f(u: GLfloat, v: GLfloat) {
+    coord(u, Some(v))
+}
+
+/// glEvalCoord2d.
+#[no_mangle]
+pub extern "C" fn glEvalCoord2d(u: GLdouble, v: GLdouble) {
+    coord(u as f32, Some(v as f32))
+}
+
+/// glEvalCoord2fv.
+///
+/// # Safety
+/// `u` must be NULL or point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glEvalCoord2fv(u: *const GLfloat) {
+    if !u.is_null() {
+        // SAFETY: non-null; the caller promises two values.
+        let (a, b) = unsafe { (*u, *u.add(1)) };
+        coord(a, Some(b))
+    }
+}
+
+/// glEvalCoord2dv.
+///
+/// # Safety
+/// `u` must be NULL or point to 2 values.
+#[no_mangle]
+pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
+    if !u.is_null() {
+        // SAFETY: non-null; the caller promises two values.
+        let (a, b) = unsafe { (*u, *u.add(1)) };
+        coord(a as f32, Some(b as f32))
+    }
+}
+
+/// glEvalPoint1: `u = i * du + u1` with Mesa's `du = (u2 - u1) / n`.
+#[no_mangle]
+pub extern "C" fn glEvalPoint1(i: GLint) {
+    with_ctx_raw(move |c| {
+        let g = c.eval.grid1;
+        c.eval_coord(i as f32 * g.step() + g.d[0], None);
+        Ok(())
+    })
+}
+
+/// glEvalPoint2.
+#[no_mangle]
+pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
+    with_ctx_raw(move |c| {
+        let [gu, gv] = c.eval.grid2;
+        let u = i as f32 * gu.step() + gu.d[0];
+        let v = j as f32 * gv.step() + gv.d[0];
+        c.eval_coord(u, Some(v));
+        Ok(())
+    })
+}
+
+/// Checks glEvalMesh's mode and state; `Some(grid)` when there is something to draw.
+fn mesh_setup(mode: GLenum, allowed: &[GLenum], two: bool) -> Option<[Grid; 2]> {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        if !allowed.contains(&mode) {
+            return Err(GlError::InvalidEnum);
+        }
+        let grid = if two {
+            c.eval.grid2
+        } else {
+            [c.eval.grid1, c.eval.grid1]
+        };
+        Ok(c.eval_vertex_enabled(two).then_some(grid))
+    })
+}
+
+/// glEvalMesh1 (GL_POINT or GL_LINE): `u` steps by Mesa's stored `du` from `u1 + i1·du`.
+#[no_mangle]
+pub extern "C" fn glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) {
+    let Some([g, _]) = mesh_setup(mode, &[GL_POINT, GL_LINE], false) else {
+        return;
+    };
+    let du = g.step();
+    let mut u = g.d[0] + i1 as f32 * du;
+    glBegin(if mode == GL_POINT {
+        GL_POINTS
+    } else {
+        GL_LINE_STRIP
+    });
+    for _ in i1..=i2 {
+        coord(u, None);
+        u += du;
+    }
+    glEnd();
+}
+
+/// glEvalMesh2 (GL_POINT, GL_LINE or GL_FILL, the latter as triangle strips).
+#[no_mangle]
+pub extern "C" fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
+    let Some([gu, gv]) = mesh_setup(mode, &[GL_POINT, GL_LINE, GL_FILL], true) else {
+        return;
+    };
+    let (du, dv) = (gu.step(), gv.step());
+    let u1 = gu.d[0] + i1 as f32 * du;
+    let v1 = gv.d[0] + j1 as f32 * dv;
+    match mode {
+        GL_POINT => {
+            glBegin(GL_POINTS);
+            let mut v = v1;
+            for _ in j1..=j2 {
+                let mut u = u1;
+                for _ in i1..=i2 {
+                    coord(u, Some(v));
+                    u += du;
+                }
+                v += dv;
+            }
+            glEnd();
+        }
+        GL_LINE => {
+            let mut v = v1;
+            for _ in j1..=j2 {
+                glBegin(GL_LINE_STRIP);
+                let mut u = u1;
+                for _ in i1..=i2 {
+                    coord(u, Some(v));
+                    u += du;
+                }
+                glEnd();
+                v += dv;
+            }
+            let mut u = u1;
+            for _ in i1..=i2 {
+                glBegin(GL_LINE_STRIP);
+                let mut v = v1;
+                for _ in j1..=j2 {
+                    coord(u, Some(v));
+                    v += dv;
+                }
+                glEnd();
+                u += du;
+            }
+        }
+        _ => {
+            let mut v = v1;
+            for _ in j1..j2 {
+                glBegin(GL_TRIANGLE_STRIP);
+                let mut u = u1;
+                for _ in i1..=i2 {
+                    coord(u, Some(v));
+                    coord(u, Some(v + dv));
+                    u += du;
+                }
+                glEnd();
+                v += dv;
+            }
+        }
+    }
+}
+
+/// The values glGetMap returns for `query`, as f64.
+fn get_map(target: GLenum, query: GLenum) -> Vec<f64> {
+    with_ctx(|c| {
+        c.check_outside_begin()?;
+        let (kind, two) = map_target(target).ok_or(GlError::InvalidEnum)?;
+        let m = c.map(kind, two);
+        Ok(match query {
+            GL_COEFF => m.points.iter().map(|&p| p as f64).collect(),
+            GL_ORDER if two => vec![m.uorder as f64, m.vorder as f64],
+            GL_ORDER => vec![m.uorder as f64],
+            GL_DOMAIN if two => [m.u[0], m.u[1], m.v[0], m.v[1]].map(f64::from).to_vec(),
+            GL_DOMAIN => vec![m.u[0] as f64, m.u[1] as f64],
+            _ => return Err(GlError::InvalidEnum),
+        })
+    })
+}
+
+/// glGetMapdv.
+///
+/// # Safety
+/// `v` must be NULL or writable for the values of `query`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) {
+    for (i, x) in get_map(target, query).into_iter().enumerate() {
+        if !v.is_null() {
+            // SAFETY: the caller promises room for the values.
+            unsafe { *v.add(i) = x };
+        }
+    }
+}
+
+/// glGetMapfv.
+///
+/// # Safety
+/// `v` must be NULL or writable for the values of `query`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) {
+    for (i, x) in get_map(target, query).into_iter().enumerate() {
+        if !v.is_null() {
+            // SAFETY: the caller promises room for the values.
+            unsafe { *v.add(i) = x as f32 };
+        }
+    }
+}
+
+/// glGetMapiv (coefficients and domain rounded to the nearest integer).
+///
+/// # Safety
+/// `v` must be NULL or writable for the values of `query`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) {
+    let vals = get_map(target, query);
+    let round = query != GL_ORDER;
+    for (i, x) in vals.into_iter().enumerate() {
+        if !v.is_null() {
+            let x = if round {
+                (x as f32 + 0.5).floor()
+            } else {
+                x as f32
+            };
+            // SAFETY: the caller promises room for the values.
+            unsafe { *v.add(i) = x as GLint };
+        }
+    }
+}
