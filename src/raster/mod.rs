@@ -330,7 +330,15 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    textured::for_each_chunk(t, b, |qy, x, fx, fy, live| {
+    for textured::Chunk {
+        qy,
+        x,
+        fx,
+        fy,
+        live,
+    } in textured::Chunks::new(t, b)
+    {
+        let fx = &fx;
         for (k, u) in units.iter().enumerate() {
             let base = VARY_TEX + 4 * k;
             let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
@@ -362,7 +370,7 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
                 );
             }
         }
-    });
+    }
 }
 
 /// Shades single pixels `(x, y)` (y-down, inside the framebuffer) with the planes of `t`:

@@ -28,45 +28,93 @@ pub(super) fn fast_env(plan: &FragPlan, units: &[UnitPlan<'_>]) -> Option<FastEn
     }
 }
 
-/// Walks the 8-pixel chunks of the pairs of rows (aligned to even pixel coordinates, as
-/// llvmpipe's 2x2 quads are) that `t` covers in `b`: `f(qy, x, fx, fy, live)` gets the
-/// top row, the chunk's first column, the lanes' pixel x and the two rows' pixel y as f32,
-/// and each row's covered lanes (a chunk is visited when either row covers part of it).
-#[inline(always)]
-pub(super) fn for_each_chunk(
-    t: &SetupTriangle,
+/// One chunk of [`Chunks`]: the top row `qy` of its pair, its first column `x`, the lanes'
+/// pixel x and the two rows' pixel y as f32, and each row's covered lanes.
+pub(super) struct Chunk {
+    /// Top row of the pair (even).
+    pub qy: i64,
+    /// First column (even).
+    pub x: i64,
+    /// Pixel x of each lane.
+    pub fx: [f32; LANES],
+    /// Pixel y of the two rows.
+    pub fy: [f32; 2],
+    /// Covered lanes of each row.
+    pub live: [[bool; LANES]; 2],
+}
+
+/// The 8-pixel chunks of the pairs of rows (aligned to even pixel coordinates, as
+/// llvmpipe's 2x2 quads are) that `t` covers in `b`; a chunk is visited when either row
+/// covers part of it. An iterator rather than a closure walker: a closure body would be
+/// compiled outside the callers' CPU-specific entry points (without AVX2/FMA).
+pub(super) struct Chunks<'t> {
+    t: &'t SetupTriangle,
     b: [i64; 4],
-    mut f: impl FnMut(i64, i64, &[f32; LANES], [f32; 2], [[bool; LANES]; 2]),
-) {
-    let mut qy = b[1] & !1;
-    while qy <= b[3] {
-        let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
-        let lo = spans.iter().flatten().map(|s| s.0).min();
-        let hi = spans.iter().flatten().map(|s| s.1).max();
-        let (Some(lo), Some(hi)) = (lo, hi) else {
-            qy += 2;
-            continue;
-        };
-        let fy = [qy as f32, (qy + 1) as f32];
-        let mut x = lo & !1;
-        while x <= hi {
-            let mut live = [[false; LANES]; 2];
-            for (r, span) in spans.iter().enumerate() {
-                if let Some((a, z)) = span {
-                    for (i, l) in live[r].iter_mut().enumerate() {
-                        let px = x + i as i64;
-                        *l = px >= *a && px <= *z;
-                    }
+    qy: i64,
+    spans: [Option<(i64, i64)>; 2],
+    x: i64,
+    hi: i64,
+}
+
+impl<'t> Chunks<'t> {
+    /// The chunks of `t` in `b`.
+    #[inline(always)]
+    pub fn new(t: &'t SetupTriangle, b: [i64; 4]) -> Self {
+        Chunks {
+            t,
+            b,
+            qy: (b[1] & !1) - 2,
+            spans: [None; 2],
+            x: 0,
+            hi: -1,
+        }
+    }
+}
+
+impl Iterator for Chunks<'_> {
+    type Item = Chunk;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<Chunk> {
+        while self.x > self.hi {
+            self.qy += 2;
+            if self.qy > self.b[3] {
+                return None;
+            }
+            self.spans = [
+                row_span(self.t, self.b, self.qy),
+                row_span(self.t, self.b, self.qy + 1),
+            ];
+            let lo = self.spans.iter().flatten().map(|s| s.0).min();
+            let hi = self.spans.iter().flatten().map(|s| s.1).max();
+            if let (Some(lo), Some(hi)) = (lo, hi) {
+                self.x = lo & !1;
+                self.hi = hi;
+            }
+        }
+        let x = self.x;
+        self.x += LANES as i64;
+        let mut live = [[false; LANES]; 2];
+        for (r, span) in self.spans.iter().enumerate() {
+            if let Some((a, z)) = span {
+                for (i, l) in live[r].iter_mut().enumerate() {
+                    let px = x + i as i64;
+                    *l = px >= *a && px <= *z;
                 }
             }
-            let mut fx = [0f32; LANES];
-            for (i, v) in fx.iter_mut().enumerate() {
-                *v = (x + i as i64) as f32;
-            }
-            f(qy, x, &fx, fy, live);
-            x += LANES as i64;
         }
-        qy += 2;
+        let mut fx = [0f32; LANES];
+        for (i, v) in fx.iter_mut().enumerate() {
+            *v = (x + i as i64) as f32;
+        }
+        let fy = [self.qy as f32, (self.qy + 1) as f32];
+        Some(Chunk {
+            qy: self.qy,
+            x,
+            fx,
+            fy,
+            live,
+        })
     }
 }
 
@@ -84,7 +132,15 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
     // Texels of the current chunk; lanes of skipped quads keep stale values, never used.
     let mut tex = [[[0u8; 4]; LANES]; 2];
     let reads_frag = env.reads_frag();
-    for_each_chunk(t, b, |qy, x, fx, fy, live| {
+    for Chunk {
+        qy,
+        x,
+        fx,
+        fy,
+        live,
+    } in Chunks::new(t, b)
+    {
+        let fx = &fx;
         let oow = [
             one_over_w::<M, PERSP>(t, fx, fy[0]),
             one_over_w::<M, PERSP>(t, fx, fy[1]),
@@ -128,5 +184,5 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
                 stats,
             );
         }
-    });
+    }
 }
