@@ -977,6 +977,19 @@ fn run_program(name: &str, source: &Path) {
     if single != our_out {
         fail("output with SOFTGL_THREADS=1 differs from the multi-threaded output".into());
     }
+    // The texture fast path must give the general path's bytes.
+    if name.starts_with("tex_") {
+        let general = run_with(
+            name,
+            &our_bin,
+            Side::Softgl,
+            Some(("SOFTGL_TEX_PATH", "general")),
+        )
+        .unwrap_or_else(|e| fail(e));
+        if general != our_out {
+            fail("output with SOFTGL_TEX_PATH=general differs from the fast path's".into());
+        }
+    }
 
     let ref_blocks = parse_output(&ref_out).unwrap_or_else(|e| fail(format!("OSMesa output: {e}")));
     let our_blocks = parse_output(&our_out).unwrap_or_else(|e| fail(format!("softgl output: {e}")));

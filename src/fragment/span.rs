@@ -120,6 +120,22 @@ fn colors<M: Madd, const FLAT: bool, const PERSP: bool>(
 /// returns it.
 pub type TexLanes = [[[f32; 4]; LANES]; MAX_TEXTURE_UNITS];
 
+/// `1 / w` of [`LANES`] pixels of row `fy` (all 1 without perspective).
+#[inline(always)]
+pub fn one_over_w<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    fx: &[f32; LANES],
+    fy: f32,
+) -> [f32; LANES] {
+    let mut oow = [1f32; LANES];
+    if PERSP {
+        for i in 0..LANES {
+            oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
+        }
+    }
+    oow
+}
+
 /// Perspective-correct, projected texture coordinates (s, t) of one unit at [`LANES`]
 /// pixels of row `fy`: `a_plane * (1 / w_plane)`, then `coord * (1 / q)` as llvmpipe's
 /// lowered projective sampling does.
@@ -130,12 +146,19 @@ pub fn tex_coords<M: Madd, const PERSP: bool>(
     fx: &[f32; LANES],
     fy: f32,
 ) -> ([f32; LANES], [f32; LANES]) {
-    let mut oow = [1f32; LANES];
-    if PERSP {
-        for i in 0..LANES {
-            oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
-        }
-    }
+    let oow = one_over_w::<M, PERSP>(t, fx, fy);
+    tex_coords_oow::<M, PERSP>(t, base, fx, fy, &oow)
+}
+
+/// [`tex_coords`] with the row's `1 / w` already computed.
+#[inline(always)]
+pub fn tex_coords_oow<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    base: usize,
+    fx: &[f32; LANES],
+    fy: f32,
+    oow: &[f32; LANES],
+) -> ([f32; LANES], [f32; LANES]) {
     let (mut s, mut tt, mut q) = ([0f32; LANES], [0f32; LANES], [0f32; LANES]);
     for i in 0..LANES {
         let e = |k: usize| {
@@ -158,6 +181,42 @@ pub fn tex_coords<M: Madd, const PERSP: bool>(
     (s, tt)
 }
 
+/// The primary colour of [`LANES`] pixels of row `fy` in f32, as the fragment shader
+/// receives it (perspective-correct with the row's `oow`).
+#[inline(always)]
+pub fn frag_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    fx: &[f32; LANES],
+    fy: f32,
+    oow: &[f32; LANES],
+) -> [[f32; LANES]; 4] {
+    let mut frag = [[0f32; LANES]; 4];
+    if FLAT {
+        for ch in 0..4 {
+            frag[ch] = [t.flat[ch]; LANES];
+        }
+    } else {
+        for ch in 0..4 {
+            for i in 0..LANES {
+                let a = eval::<M>(&t.vary[ch], fx[i], fy);
+                frag[ch][i] = if PERSP { a * oow[i] } else { a };
+            }
+        }
+    }
+    frag
+}
+
+/// Where the colours of a chunk come from.
+#[derive(Clone, Copy)]
+pub enum ChunkColors<'a> {
+    /// Interpolated (with the separate specular colour and fog when the plan has them).
+    Shaded,
+    /// Shaded with these sampled values of the enabled texture units.
+    Textured(&'a TexLanes),
+    /// Already computed (the texture fast path).
+    Ready(&'a Lanes),
+}
+
 /// The colours of [`LANES`] pixels as Mesa's fixed-function fragment shader computes them
 /// in f32: the texture environment of every enabled unit, then the separate specular
 /// colour, then fog; converted to 8 bits.
@@ -170,25 +229,8 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     units: &[UnitPlan<'_>],
     texels: Option<&TexLanes>,
 ) -> Lanes {
-    let mut frag = [[0f32; LANES]; 4];
-    if FLAT {
-        for ch in 0..4 {
-            frag[ch] = [t.flat[ch]; LANES];
-        }
-    } else {
-        let mut oow = [1f32; LANES];
-        if PERSP {
-            for i in 0..LANES {
-                oow[i] = 1.0f32 / eval::<M>(&t.w, fx[i], fy);
-            }
-        }
-        for ch in 0..4 {
-            for i in 0..LANES {
-                let a = eval::<M>(&t.vary[ch], fx[i], fy);
-                frag[ch][i] = if PERSP { a * oow[i] } else { a };
-            }
-        }
-    }
+    let oow = one_over_w::<M, PERSP>(t, fx, fy);
+    let frag = frag_colors::<M, FLAT, PERSP>(t, fx, fy, &oow);
     // Secondary colour and fog coordinate (perspective-correct like every varying).
     let extra = |k: usize, i: usize| -> f32 {
         if FLAT && k < VARY_FOG {
@@ -196,7 +238,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         }
         let a = eval::<M>(&t.vary[k], fx[i], fy);
         if PERSP {
-            a * (1.0f32 / eval::<M>(&t.w, fx[i], fy))
+            a * oow[i]
         } else {
             a
         }
@@ -254,13 +296,23 @@ pub fn shade_span<
         for (i, l) in live.iter_mut().enumerate() {
             *l = i < n;
         }
-        shade_chunk::<M, DEPTH, FLAT, PERSP, FULL>(t, plan, &[], None, fb, py, x, live, stats);
+        shade_chunk::<M, DEPTH, FLAT, PERSP, FULL>(
+            t,
+            plan,
+            &[],
+            ChunkColors::Shaded,
+            fb,
+            py,
+            x,
+            live,
+            stats,
+        );
         x += n;
     }
 }
 
 /// Shades the `live` lanes of the chunk of [`LANES`] pixels starting at `x` in row `py`.
-/// `units` and `texels` are the enabled texture units and their sampled values (textured
+/// `units` are the enabled texture units, whose sampled values `source` carries (textured
 /// draws always take the `FULL` path).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
@@ -274,7 +326,7 @@ pub fn shade_chunk<
     t: &SetupTriangle,
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
-    texels: Option<&TexLanes>,
+    source: ChunkColors<'_>,
     fb: &mut Target<'_>,
     py: usize,
     x: usize,
@@ -300,10 +352,15 @@ pub fn shade_chunk<
     }
     let mut c: Lanes = [[0u8; LANES]; 4];
     if FULL {
-        c = if texels.is_some() || plan.separate_specular || plan.fog.is_some() {
-            shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, texels)
-        } else {
-            colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color)
+        c = match source {
+            ChunkColors::Ready(c) => *c,
+            ChunkColors::Textured(tx) => {
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx))
+            }
+            ChunkColors::Shaded if plan.separate_specular || plan.fog.is_some() => {
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None)
+            }
+            ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
         };
         if let Some((func, reference)) = plan.alpha {
             for i in 0..n {

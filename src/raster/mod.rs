@@ -5,7 +5,7 @@
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    shade_chunk, shade_span, tex_coords, Fused, Madd, TexLanes, Unfused, LANES,
+    shade_chunk, shade_span, tex_coords, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -18,6 +18,7 @@ pub mod batch;
 pub mod lines;
 pub mod prims;
 pub mod stipple;
+mod textured;
 
 /// Rasterizes `t` inside `region` (y-down pixels, exclusive high end) and the target's
 /// rows; returns whether any row of the triangle's box was inside them.
@@ -196,7 +197,9 @@ fn raster_rows<M: Madd>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    if !units.is_empty() {
+    if let Some(env) = textured::fast_env(plan, units) {
+        rows_tex_fast::<M>(t, b, plan, &units[0], env, fb, stats)
+    } else if !units.is_empty() {
         match (plan.depth.is_some(), plan.flat, t.persp) {
             (false, false, false) => {
                 rows_textured::<M, false, false, false>(t, b, plan, units, fb, stats)
@@ -227,6 +230,30 @@ fn raster_rows<M: Madd>(
         rows_full::<M, true>(t, b, plan, fb, stats)
     } else {
         rows_full::<M, false>(t, b, plan, fb, stats)
+    }
+}
+
+/// The texture fast path, specialised like `rows_textured`.
+#[inline(always)]
+fn rows_tex_fast<M: Madd>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    u: &UnitPlan<'_>,
+    env: crate::texture::fast::FastEnv,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    use textured::rows_tex_fast as r;
+    match (plan.depth.is_some(), plan.flat, t.persp) {
+        (false, false, false) => r::<M, false, false, false>(t, b, plan, u, env, fb, stats),
+        (false, false, true) => r::<M, false, false, true>(t, b, plan, u, env, fb, stats),
+        (false, true, false) => r::<M, false, true, false>(t, b, plan, u, env, fb, stats),
+        (false, true, true) => r::<M, false, true, true>(t, b, plan, u, env, fb, stats),
+        (true, false, false) => r::<M, true, false, false>(t, b, plan, u, env, fb, stats),
+        (true, false, true) => r::<M, true, false, true>(t, b, plan, u, env, fb, stats),
+        (true, true, false) => r::<M, true, true, false>(t, b, plan, u, env, fb, stats),
+        (true, true, true) => r::<M, true, true, true>(t, b, plan, u, env, fb, stats),
     }
 }
 
@@ -304,66 +331,46 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    let mut qy = b[1] & !1;
-    while qy <= b[3] {
-        let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
-        let lo = spans.iter().flatten().map(|s| s.0).min();
-        let hi = spans.iter().flatten().map(|s| s.1).max();
-        let (Some(lo), Some(hi)) = (lo, hi) else {
-            qy += 2;
-            continue;
-        };
-        let fy = [qy as f32, (qy + 1) as f32];
-        let mut x = lo & !1;
-        while x <= hi {
-            let mut live = [[false; LANES]; 2];
-            for (r, span) in spans.iter().enumerate() {
-                if let Some((a, z)) = span {
-                    for (i, l) in live[r].iter_mut().enumerate() {
-                        let px = x + i as i64;
-                        *l = px >= *a && px <= *z;
-                    }
+    for textured::Chunk {
+        qy,
+        x,
+        fx,
+        fy,
+        live,
+    } in textured::Chunks::new(t, b)
+    {
+        let fx = &fx;
+        for (k, u) in units.iter().enumerate() {
+            let base = VARY_TEX + 4 * k;
+            let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
+            let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
+            for j in 0..LANES / 2 {
+                let (l, r) = (2 * j, 2 * j + 1);
+                if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                    continue;
                 }
+                let v = u.sample_quad([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+                texels[0][k][l] = v[0];
+                texels[0][k][r] = v[1];
+                texels[1][k][l] = v[2];
+                texels[1][k][r] = v[3];
             }
-            let mut fx = [0f32; LANES];
-            for (i, f) in fx.iter_mut().enumerate() {
-                *f = (x + i as i64) as f32;
-            }
-            for (k, u) in units.iter().enumerate() {
-                let base = VARY_TEX + 4 * k;
-                let (s0, t0) = tex_coords::<M, PERSP>(t, base, &fx, fy[0]);
-                let (s1, t1) = tex_coords::<M, PERSP>(t, base, &fx, fy[1]);
-                for j in 0..LANES / 2 {
-                    let (l, r) = (2 * j, 2 * j + 1);
-                    if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                        continue;
-                    }
-                    let v =
-                        u.sample_quad([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
-                    texels[0][k][l] = v[0];
-                    texels[0][k][r] = v[1];
-                    texels[1][k][l] = v[2];
-                    texels[1][k][r] = v[3];
-                }
-            }
-            for r in 0..2 {
-                if live[r].iter().any(|&l| l) {
-                    shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
-                        t,
-                        plan,
-                        units,
-                        Some(&texels[r]),
-                        fb,
-                        (qy + r as i64) as usize,
-                        x as usize,
-                        live[r],
-                        stats,
-                    );
-                }
-            }
-            x += LANES as i64;
         }
-        qy += 2;
+        for r in 0..2 {
+            if live[r].iter().any(|&l| l) {
+                shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                    t,
+                    plan,
+                    units,
+                    ChunkColors::Textured(&texels[r]),
+                    fb,
+                    (qy + r as i64) as usize,
+                    x as usize,
+                    live[r],
+                    stats,
+                );
+            }
+        }
     }
 }
 

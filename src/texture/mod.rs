@@ -23,6 +23,7 @@
 //! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.
 
 pub mod env;
+pub mod fast;
 pub mod lod;
 pub mod mipmap;
 pub mod sample;
@@ -520,6 +521,11 @@ impl TextureState {
         let pot = [l0.width.is_power_of_two(), l0.height.is_power_of_two()];
         let mut env = Combine::derive(&u.env, base);
         env.canonicalise(unit, !(0..unit).any(|j| self.unit_active(j)));
+        let fast = if fast::enabled() && aos && dims == 2 {
+            fast::FastEnv::classify(&env)
+        } else {
+            None
+        };
         Some(UnitPlan {
             levels: &obj.levels,
             first,
@@ -538,6 +544,7 @@ impl TextureState {
             needs_lod,
             base_format: base,
             env,
+            fast,
             fma: sample::has_fma(),
         })
     }
@@ -580,6 +587,9 @@ pub struct UnitPlan<'a> {
     pub base_format: BaseFormat,
     /// The texture environment in combiner form.
     pub env: Combine,
+    /// The fast path's form of this unit (8-bit 2D sampling with a simple environment),
+    /// when it qualifies (see [`fast`]).
+    pub fast: Option<fast::FastEnv>,
     /// Whether float lerps fuse (llvmpipe uses `llvm.fmuladd`, fused on FMA CPUs).
     pub fma: bool,
 }
@@ -591,6 +601,18 @@ impl UnitPlan<'_> {
         self.levels[level].as_ref().expect("complete texture")
     }
 
+    /// The LOD of a 2x2 quad (TL, TR, BL, BR, y-down), computed only when the filters
+    /// need it (magnification at the base level otherwise).
+    #[inline(always)]
+    pub fn quad_lod(&self, s: [f32; 4], t: [f32; 4]) -> Lod {
+        if !self.needs_lod {
+            return Lod::MAG;
+        }
+        let b = self.image(self.first);
+        let (w, h) = (b.width as f32, b.height as f32);
+        lod::compute(&self.lod, self.mip_filter, self.dims, w, h, s, t)
+    }
+
     /// Samples a 2x2 quad (TL, TR, BL, BR in y-down order) with one LOD computed from
     /// TL/TR/BL, as llvmpipe does.
     #[inline(always)]
@@ -599,20 +621,7 @@ impl UnitPlan<'_> {
         if self.max_anisotropy > 1.0 {
             return sample::sample_quad_aniso(self, s, t);
         }
-        let lod = if self.needs_lod {
-            let b = self.image(self.first);
-            lod::compute(
-                &self.lod,
-                self.mip_filter,
-                self.dims,
-                b.width as f32,
-                b.height as f32,
-                s,
-                t,
-            )
-        } else {
-            Lod::MAG
-        };
+        let lod = self.quad_lod(s, t);
         let mut out = [[0.0f32; 4]; 4];
         for i in 0..4 {
             out[i] = self.sample_one(s[i], t[i], lod);

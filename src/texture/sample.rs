@@ -148,7 +148,17 @@ fn soa_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) ->
 /// Samples one coordinate pair with a given LOD.
 #[inline(always)]
 pub fn sample(p: &UnitPlan<'_>, s: f32, t: f32, lod: Lod) -> [f32; 4] {
-    let (filter, l0, l1, frac) = select_levels(p, lod);
+    sample_levels(p, select_levels(p, lod), s, t)
+}
+
+/// Samples one coordinate pair with the levels [`select_levels`] chose.
+#[inline(always)]
+fn sample_levels(
+    p: &UnitPlan<'_>,
+    (filter, l0, l1, frac): (Filter, usize, usize, f32),
+    s: f32,
+    t: f32,
+) -> [f32; 4] {
     if p.aos {
         let a = aos_filter(p, l0, filter, s, t);
         if l1 == l0 {
@@ -177,6 +187,12 @@ pub fn sample(p: &UnitPlan<'_>, s: f32, t: f32, lod: Lod) -> [f32; 4] {
 /// This is the classic footprint-assembly method: with N ≤ 16 trilinear probes it reads at
 /// most 128 texels, about the cost of llvmpipe's EWA at 16x, and it filters with the mipmaps
 /// instead of nearest texels, which is closer to a supersampled reference.
+///
+/// Inlined into the rasterizer's CPU-specific entry points (its floors and fused lerps
+/// then compile to single instructions instead of library calls); the levels are chosen
+/// once per quad.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)]
 pub fn sample_quad_aniso(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[f32; 4]; 4] {
     let b = p.image(p.first);
     let (w, h) = (b.width as f32, b.height as f32);
@@ -194,7 +210,11 @@ pub fn sample_quad_aniso(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[f32; 4
         (py2, px2, (dsdy, dtdy))
     };
     if !(major2.is_finite() && minor2.is_finite()) {
-        return std::array::from_fn(|i| sample(p, s[i], t[i], Lod::MAG));
+        let mut out = [[0.0f32; 4]; 4];
+        for i in 0..4 {
+            out[i] = sample(p, s[i], t[i], Lod::MAG);
+        }
+        return out;
     }
     let ratio = if minor2 > 0.0 {
         (major2 / minor2).sqrt()
@@ -213,19 +233,23 @@ pub fn sample_quad_aniso(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[f32; 4
             lodv = lodv.max(p.lod.min_lod);
         }
     }
-    let lod = Lod::from_value(lodv, p.mip_filter);
+    let levels = select_levels(p, Lod::from_value(lodv, p.mip_filter));
     let inv = 1.0 / n as f32;
-    std::array::from_fn(|i| {
+    let mut out = [[0.0f32; 4]; 4];
+    for i in 0..4 {
         let mut acc = [0.0f32; 4];
         for k in 0..n {
             let f = (k as f32 + 0.5) * inv - 0.5;
-            let c = sample(p, s[i] + f * ax.0, t[i] + f * ax.1, lod);
+            let c = sample_levels(p, levels, s[i] + f * ax.0, t[i] + f * ax.1);
             for ch in 0..4 {
                 acc[ch] += c[ch];
             }
         }
-        acc.map(|v| v * inv)
-    })
+        for ch in 0..4 {
+            out[i][ch] = acc[ch] * inv;
+        }
+    }
+    out
 }
 
 /// The LOD helper re-exported for callers that evaluate per pixel.
@@ -262,6 +286,7 @@ mod tests {
             needs_lod: true,
             base_format: BaseFormat::Rgba,
             env: Combine::derive(&Default::default(), BaseFormat::Rgba),
+            fast: None,
             fma: false,
         }
     }

@@ -1,0 +1,188 @@
+//! The row walk of the texture fast path (see [`crate::texture::fast`]): one 2D unit on
+//! the 8-bit path with REPLACE, MODULATE or DECAL, no separate specular colour, no fog.
+//! Pairs of rows as in `rows_textured`, one `1 / w` per pixel shared by the texture
+//! coordinates and the colour, 8-bit texels straight into the specialised environment,
+//! then the general per-fragment operations of [`shade_chunk`].
+// Lane loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
+
+use super::row_span;
+use crate::fragment::span::{
+    frag_colors, one_over_w, shade_chunk, tex_coords_oow, ChunkColors, Madd, LANES,
+};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::SetupTriangle;
+use crate::geometry::VARY_TEX;
+use crate::stats::Stats;
+use crate::texture::fast::{self, FastEnv};
+use crate::texture::UnitPlan;
+
+/// The fast path's environment when this draw qualifies: one unit with a fast form, and no
+/// colour sum or fog after the environment.
+#[inline(always)]
+pub(super) fn fast_env(plan: &FragPlan, units: &[UnitPlan<'_>]) -> Option<FastEnv> {
+    match units {
+        [u] if !plan.separate_specular && plan.fog.is_none() => u.fast,
+        _ => None,
+    }
+}
+
+/// One chunk of [`Chunks`]: the top row `qy` of its pair, its first column `x`, the lanes'
+/// pixel x and the two rows' pixel y as f32, and each row's covered lanes.
+pub(super) struct Chunk {
+    /// Top row of the pair (even).
+    pub qy: i64,
+    /// First column (even).
+    pub x: i64,
+    /// Pixel x of each lane.
+    pub fx: [f32; LANES],
+    /// Pixel y of the two rows.
+    pub fy: [f32; 2],
+    /// Covered lanes of each row.
+    pub live: [[bool; LANES]; 2],
+}
+
+/// The 8-pixel chunks of the pairs of rows (aligned to even pixel coordinates, as
+/// llvmpipe's 2x2 quads are) that `t` covers in `b`; a chunk is visited when either row
+/// covers part of it. An iterator rather than a closure walker: a closure body would be
+/// compiled outside the callers' CPU-specific entry points (without AVX2/FMA).
+pub(super) struct Chunks<'t> {
+    t: &'t SetupTriangle,
+    b: [i64; 4],
+    qy: i64,
+    spans: [Option<(i64, i64)>; 2],
+    x: i64,
+    hi: i64,
+}
+
+impl<'t> Chunks<'t> {
+    /// The chunks of `t` in `b`.
+    #[inline(always)]
+    pub fn new(t: &'t SetupTriangle, b: [i64; 4]) -> Self {
+        Chunks {
+            t,
+            b,
+            qy: (b[1] & !1) - 2,
+            spans: [None; 2],
+            x: 0,
+            hi: -1,
+        }
+    }
+}
+
+impl Iterator for Chunks<'_> {
+    type Item = Chunk;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<Chunk> {
+        while self.x > self.hi {
+            self.qy += 2;
+            if self.qy > self.b[3] {
+                return None;
+            }
+            self.spans = [
+                row_span(self.t, self.b, self.qy),
+                row_span(self.t, self.b, self.qy + 1),
+            ];
+            let lo = self.spans.iter().flatten().map(|s| s.0).min();
+            let hi = self.spans.iter().flatten().map(|s| s.1).max();
+            if let (Some(lo), Some(hi)) = (lo, hi) {
+                self.x = lo & !1;
+                self.hi = hi;
+            }
+        }
+        let x = self.x;
+        self.x += LANES as i64;
+        let mut live = [[false; LANES]; 2];
+        for (r, span) in self.spans.iter().enumerate() {
+            if let Some((a, z)) = span {
+                for (i, l) in live[r].iter_mut().enumerate() {
+                    let px = x + i as i64;
+                    *l = px >= *a && px <= *z;
+                }
+            }
+        }
+        let mut fx = [0f32; LANES];
+        for (i, v) in fx.iter_mut().enumerate() {
+            *v = (x + i as i64) as f32;
+        }
+        let fy = [self.qy as f32, (self.qy + 1) as f32];
+        Some(Chunk {
+            qy: self.qy,
+            x,
+            fx,
+            fy,
+            live,
+        })
+    }
+}
+
+/// Shades the rows `b` of `t` through the fast path.
+#[inline(always)]
+pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    u: &UnitPlan<'_>,
+    env: FastEnv,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    // Texels of the current chunk; lanes of skipped quads keep stale values, never used.
+    let mut tex = [[[0u8; 4]; LANES]; 2];
+    let reads_frag = env.reads_frag();
+    for Chunk {
+        qy,
+        x,
+        fx,
+        fy,
+        live,
+    } in Chunks::new(t, b)
+    {
+        let fx = &fx;
+        let oow = [
+            one_over_w::<M, PERSP>(t, fx, fy[0]),
+            one_over_w::<M, PERSP>(t, fx, fy[1]),
+        ];
+        let (s0, t0) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[0], &oow[0]);
+        let (s1, t1) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[1], &oow[1]);
+        for j in 0..LANES / 2 {
+            let (l, r) = (2 * j, 2 * j + 1);
+            if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                continue;
+            }
+            let v = fast::quad_u8(
+                u,
+                [s0[l], s0[r], s1[l], s1[r]],
+                [t0[l], t0[r], t1[l], t1[r]],
+            );
+            tex[0][l] = v[0];
+            tex[0][r] = v[1];
+            tex[1][l] = v[2];
+            tex[1][r] = v[3];
+        }
+        for r in 0..2 {
+            if !live[r].iter().any(|&l| l) {
+                continue;
+            }
+            let frag = if reads_frag {
+                frag_colors::<M, FLAT, PERSP>(t, fx, fy[r], &oow[r])
+            } else {
+                [[0f32; LANES]; 4]
+            };
+            let c = fast::env_lanes(env, &tex[r], &frag);
+            shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                t,
+                plan,
+                &[],
+                ChunkColors::Ready(&c),
+                fb,
+                (qy + r as i64) as usize,
+                x as usize,
+                live[r],
+                stats,
+            );
+        }
+    }
+}
