@@ -38,6 +38,20 @@ pub struct AttribFrame {
     tex_params: Vec<[(u32, SamplerParams); 2]>,
     /// glListBase.
     list_base: u32,
+    /// Line, point, polygon and polygon-stipple state.
+    raster: super::raster_state::RasterState,
+    /// Texture coordinate generation per unit.
+    texgen: Box<super::texgen_state::TexGenState>,
+    /// User clip planes and their enables.
+    clip_planes: super::texgen_state::ClipPlanes,
+    /// The current raster position.
+    raster_pos: super::pixel_state::RasterPos,
+    /// Pixel zoom.
+    pixel_modes: super::pixel_state::PixelModes,
+    /// The accumulation clear value.
+    accum: super::accum::AccumAttrib,
+    /// glMapGrid1 and glMapGrid2.
+    grids: (super::eval::Grid, [super::eval::Grid; 2]),
 }
 
 /// The vertex-array part of a glPushClientAttrib entry.
@@ -88,17 +102,20 @@ fn sync_texture_caps(c: &mut Context) {
 
 fn current(c: &mut Context, s: &AttribFrame) {
     c.state.current = s.state.current;
-    // missing: raster position (valid, colour, texcoords, distance), current index
+    c.raster_pos = s.raster_pos;
+    // missing: current index (colour-index mode is not supported)
 }
 
 fn point(c: &mut Context, s: &AttribFrame) {
     caps(c, s, &[Cap::PointSmooth]);
-    // missing: point size, size min/max, fade threshold, distance attenuation, point sprite
+    c.raster.point = s.raster.point;
+    // missing: size min/max, fade threshold, distance attenuation (glPointParameter not
+    // implemented)
 }
 
 fn line(c: &mut Context, s: &AttribFrame) {
     caps(c, s, &[Cap::LineSmooth, Cap::LineStipple]);
-    // missing: line width, stipple pattern and repeat
+    c.raster.line = s.raster.line;
 }
 
 fn polygon(c: &mut Context, s: &AttribFrame) {
@@ -116,16 +133,16 @@ fn polygon(c: &mut Context, s: &AttribFrame) {
     );
     c.state.cull_face = s.state.cull_face;
     c.state.front_ccw = s.state.front_ccw;
-    // missing: polygon mode (front, back), polygon offset factor and units
+    c.raster.polygon = s.raster.polygon;
 }
 
-fn polygon_stipple(_c: &mut Context, _s: &AttribFrame) {
-    // missing: the 32x32 stipple pattern
+fn polygon_stipple(c: &mut Context, s: &AttribFrame) {
+    c.raster.stipple = s.raster.stipple;
 }
 
-fn pixel_mode(_c: &mut Context, _s: &AttribFrame) {
-    // missing: read buffer, pixel transfer scale/bias/shift/offset, map colour/stencil,
-    // pixel zoom, index shift/offset
+fn pixel_mode(c: &mut Context, s: &AttribFrame) {
+    c.pixel_modes = s.pixel_modes;
+    // missing: read buffer, pixel transfer and maps (not implemented yet)
 }
 
 fn lighting(c: &mut Context, s: &AttribFrame) {
@@ -151,8 +168,8 @@ fn depth_buffer(c: &mut Context, s: &AttribFrame) {
     c.state.depth_mask = s.state.depth_mask;
 }
 
-fn accum_buffer(_c: &mut Context, _s: &AttribFrame) {
-    // missing: accumulation clear value
+fn accum_buffer(c: &mut Context, s: &AttribFrame) {
+    c.accum.attrib = s.accum;
 }
 
 fn stencil_buffer(c: &mut Context, s: &AttribFrame) {
@@ -169,10 +186,20 @@ fn viewport(c: &mut Context, s: &AttribFrame) {
 
 fn transform(c: &mut Context, s: &AttribFrame) {
     let mut list = vec![Cap::Normalize, Cap::RescaleNormal];
-    list.extend((0..6).map(|i| CAPS[Cap::ClipPlane0 as usize + i].0));
+    list.extend([
+        Cap::ClipPlane0,
+        Cap::ClipPlane1,
+        Cap::ClipPlane2,
+        Cap::ClipPlane3,
+        Cap::ClipPlane4,
+        Cap::ClipPlane5,
+        Cap::ClipPlane6,
+        Cap::ClipPlane7,
+    ]);
     caps(c, s, &list);
     c.state.matrix_mode = s.state.matrix_mode;
-    // missing: clip plane equations
+    // The plane equations and their enable bits (which mirror the caps above).
+    c.clip_planes = s.clip_planes;
 }
 
 fn enable(c: &mut Context, s: &AttribFrame) {
@@ -182,7 +209,11 @@ fn enable(c: &mut Context, s: &AttribFrame) {
         u.enabled_2d = saved.enabled_2d;
     }
     sync_texture_caps(c);
-    // missing: per-unit texgen enables once texgen is per unit
+    c.clip_planes.enabled = s.clip_planes.enabled;
+    for (u, saved) in c.texgen.units.iter_mut().zip(s.texgen.units.iter()) {
+        u.enabled = saved.enabled;
+    }
+    c.sync_texgen_caps();
 }
 
 fn color_buffer(c: &mut Context, s: &AttribFrame) {
@@ -220,7 +251,8 @@ fn eval(c: &mut Context, s: &AttribFrame) {
         .chain([Cap::AutoNormal])
         .collect();
     caps(c, s, &maps);
-    // missing: map grid domains and segment counts (glMapGrid)
+    c.eval.grid1 = s.grids.0;
+    c.eval.grid2 = s.grids.1;
 }
 
 fn list(c: &mut Context, s: &AttribFrame) {
@@ -257,7 +289,8 @@ fn texture(c: &mut Context, s: &AttribFrame) {
         ],
     );
     sync_texture_caps(c);
-    // missing: texgen modes and planes per unit
+    c.texgen = (*s.texgen).clone();
+    c.sync_texgen_caps();
 }
 
 fn scissor(c: &mut Context, s: &AttribFrame) {
@@ -337,6 +370,13 @@ impl Context {
             units: Box::new(tx.units.clone()),
             tex_params,
             list_base: self.lists.base,
+            raster: self.raster,
+            texgen: Box::new(self.texgen.clone()),
+            clip_planes: self.clip_planes,
+            raster_pos: self.raster_pos,
+            pixel_modes: self.pixel_modes,
+            accum: self.accum.attrib,
+            grids: (self.eval.grid1, self.eval.grid2),
         });
         Ok(())
     }

@@ -6,7 +6,7 @@
 use super::enums::*;
 use super::immediate::{glBegin, glEnd};
 use super::types::*;
-use super::{with_ctx, with_ctx_raw};
+use super::{with_ctx, with_ctx_raw, with_ctx_list};
 use crate::context::error::{GlError, GlResult};
 use crate::context::eval::{Grid, MapKind};
 use crate::fixed_function::eval::MAX_ORDER;
@@ -186,7 +186,7 @@ pub unsafe extern "C" fn glMap2d(
 /// glMapGrid1f.
 #[no_mangle]
 pub extern "C" fn glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat) {
-    with_ctx(|c| c.map_grid(&[Grid { n: un, d: [u1, u2] }]))
+    with_ctx_list(move |c| c.map_grid(&[Grid { n: un, d: [u1, u2] }]))
 }
 
 /// glMapGrid1d.
@@ -205,7 +205,7 @@ pub extern "C" fn glMapGrid2f(
     v1: GLfloat,
     v2: GLfloat,
 ) {
-    with_ctx(|c| c.map_grid(&[Grid { n: un, d: [u1, u2] }, Grid { n: vn, d: [v1, v2] }]))
+    with_ctx_list(move |c| c.map_grid(&[Grid { n: un, d: [u1, u2] }, Grid { n: vn, d: [v1, v2] }]))
 }
 
 /// glMapGrid2d.

@@ -3,12 +3,12 @@
 //! before anything else.
 #![allow(non_snake_case)]
 
+use super::with_ctx_list;
 use super::types::*;
-use super::with_ctx;
 use crate::pixels::raster_pos::raster_pos;
 
 fn rp(v: [f32; 4]) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         raster_pos(c, v);
         Ok(())
@@ -257,7 +257,7 @@ pub unsafe extern "C" fn glRasterPos4dv(v: *const GLdouble) {
 /// glPixelZoom.
 #[no_mangle]
 pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.pixel_modes.zoom = [xfactor, yfactor];
         Ok(())

@@ -2,13 +2,13 @@
 //! window coordinates set the raster position directly (Mesa's `window_pos3f`).
 #![allow(non_snake_case)]
 
+use super::with_ctx_list;
 use super::pixels::read;
 use super::types::*;
-use super::with_ctx;
 use crate::pixels::raster_pos::window_pos;
 
 fn wp(x: f32, y: f32, z: f32) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         window_pos(c, x, y, z);
         Ok(())

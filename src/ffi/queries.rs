@@ -4,7 +4,7 @@
 
 use super::glext_enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx};
+use super::{non_negative, with_ctx, with_ctx_list};
 use crate::context::error::{GlError, GlResult};
 
 /// GL_SAMPLES_PASSED, or GL_INVALID_ENUM.
@@ -61,7 +61,7 @@ pub extern "C" fn glIsQuery(id: GLuint) -> GLboolean {
 /// glBeginQuery.
 #[no_mangle]
 pub extern "C" fn glBeginQuery(target: GLenum, id: GLuint) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         samples_target(target)?;
         c.begin_query(id)
     })
@@ -70,7 +70,7 @@ pub extern "C" fn glBeginQuery(target: GLenum, id: GLuint) {
 /// glEndQuery.
 #[no_mangle]
 pub extern "C" fn glEndQuery(target: GLenum) {
-    with_ctx(|c| {
+    with_ctx_list(move |c| {
         samples_target(target)?;
         c.end_query()
     })

@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_raw};
+use super::{gl_bool, with_ctx, with_ctx_raw, with_ctx_list};
 use crate::context::error::GlError;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Face;
@@ -11,7 +11,7 @@ use crate::context::state::Face;
 /// glLineWidth (GL_INVALID_VALUE for width <= 0; stored unclamped as Mesa does).
 #[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         if width.is_nan() || width <= 0.0 {
             return Err(GlError::InvalidValue);
@@ -24,7 +24,7 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 /// glLineStipple (the factor is clamped to [1, 256]).
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.raster.line.stipple_repeat = factor.clamp(1, 256) as u32;
         c.raster.line.stipple_pattern = pattern;
@@ -35,7 +35,7 @@ pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
 /// glPointSize (GL_INVALID_VALUE for size <= 0; stored unclamped).
 #[no_mangle]
 pub extern "C" fn glPointSize(size: GLfloat) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         if size.is_nan() || size <= 0.0 {
             return Err(GlError::InvalidValue);
@@ -48,7 +48,7 @@ pub extern "C" fn glPointSize(size: GLfloat) {
 /// glPolygonMode.
 #[no_mangle]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         let face = Face::from_gl(face)?;
         let mode = FillMode::from_gl(mode)?;
@@ -66,7 +66,7 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 /// glPolygonOffset.
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         c.raster.polygon.offset_factor = factor;
         c.raster.polygon.offset_units = units;
@@ -98,7 +98,7 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
         unsafe { std::ptr::copy_nonoverlapping(mask, b.as_mut_ptr(), 128) };
         b
     });
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         if let Some(b) = bytes {
             c.raster.stipple.0 = stipple_from_bytes(&b, c.state.unpack.lsb_first);

@@ -3,6 +3,7 @@
 //! `texgen.c` and `clip.c` do (glTexGeni/f/d set a plane to `(param, 0, 0, 0)`).
 #![allow(non_snake_case)]
 
+use super::with_ctx_list;
 use super::enums::*;
 use super::lighting::read4;
 use super::types::*;
@@ -19,7 +20,7 @@ fn texgen_count(pname: GLenum) -> usize {
 }
 
 fn texgen(coord: GLenum, pname: GLenum, p: [f32; 4]) {
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         let unit = c.state.active_texture;
         c.texgen.set(unit, coord, pname, p, &c.matrices.modelview)
@@ -140,7 +141,7 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
     let Some(eq) = (unsafe { read4(equation, 4) }) else {
         return;
     };
-    with_ctx(move |c| {
+    with_ctx_list(move |c| {
         c.check_outside_begin()?;
         let i = ClipPlanes::index(plane)?;
         c.clip_planes.eye[i] = plane_times_inverse(&c.matrices.modelview, eq.map(|v| v as f32));
