@@ -60,12 +60,14 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("fragment.rs", Header::Gl),
     ("textures.rs", Header::Gl),
     ("lighting.rs", Header::Gl),
+    ("aliases_gl.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
     ("fragment_ext.rs", Header::Glext),
     ("textures_ext.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
+    ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 

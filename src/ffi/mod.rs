@@ -9,6 +9,8 @@
 //! The headers in `include/GL` are generated from these files by cbindgen
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
+pub mod aliases_ext;
+pub mod aliases_gl;
 pub mod arrays;
 pub mod buffers;
 pub mod draw;
