@@ -389,7 +389,9 @@ fn pkg_config_builds_a_tutorial() {
         .expect("pkg-config");
     assert!(pc.status.success(), "pkg-config softgl-glut failed");
     let flags = String::from_utf8(pc.stdout).unwrap();
-    let bin = work_dir().join("bin").join("robot.pkgconfig");
+    let bin_dir = work_dir().join("bin");
+    fs::create_dir_all(&bin_dir).expect("mkdir bin");
+    let bin = bin_dir.join("robot.pkgconfig");
     let status = Command::new(cc())
         .arg(root().join("tutorials/robot.c"))
         .arg("-o")

@@ -66,6 +66,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("lists.rs", Header::Gl),
     ("accum.rs", Header::Gl),
     ("eval.rs", Header::Gl),
+    ("aliases_gl.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
     ("buffers.rs", Header::Glext),
@@ -74,6 +75,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("lighting_ext.rs", Header::Glext),
     ("pixels_ext.rs", Header::Glext),
     ("queries.rs", Header::Glext),
+    ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];
 

@@ -1,9 +1,9 @@
 //! The accumulation buffer (gl.h): glAccum and glClearAccum.
 #![allow(non_snake_case)]
 
-use super::with_ctx_list;
 use super::enums::*;
 use super::types::*;
+use super::with_ctx_list;
 use crate::context::accum::AccumOp;
 use crate::context::error::GlError;
 

@@ -6,7 +6,7 @@
 use super::enums::*;
 use super::immediate::{glBegin, glEnd};
 use super::types::*;
-use super::{with_ctx, with_ctx_raw, with_ctx_list};
+use super::{with_ctx, with_ctx_list, with_ctx_raw};
 use crate::context::error::{GlError, GlResult};
 use crate::context::eval::{Grid, MapKind};
 use crate::fixed_function::eval::MAX_ORDER;

@@ -26,6 +26,8 @@
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
 pub mod accum;
+pub mod aliases_ext;
+pub mod aliases_gl;
 pub mod arrays;
 pub mod buffers;
 pub mod draw;

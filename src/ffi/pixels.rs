@@ -3,8 +3,8 @@
 //! before anything else.
 #![allow(non_snake_case)]
 
-use super::with_ctx_list;
 use super::types::*;
+use super::with_ctx_list;
 use crate::pixels::raster_pos::raster_pos;
 
 fn rp(v: [f32; 4]) {

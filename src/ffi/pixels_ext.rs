@@ -2,9 +2,9 @@
 //! window coordinates set the raster position directly (Mesa's `window_pos3f`).
 #![allow(non_snake_case)]
 
-use super::with_ctx_list;
 use super::pixels::read;
 use super::types::*;
+use super::with_ctx_list;
 use crate::pixels::raster_pos::window_pos;
 
 fn wp(x: f32, y: f32, z: f32) {

@@ -82,10 +82,17 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
 
 /// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
 pub const EXTENSIONS: &str = concat!(
-    "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_blend_color ",
-    "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate ",
-    "GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements ",
-    "GL_EXT_multi_draw_arrays GL_EXT_stencil_wrap GL_NV_blend_square\0"
+    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_texture_border_clamp ",
+    "GL_ARB_texture_env_add GL_ARB_window_pos ",
+    "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 ",
+    "GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object ",
+    "GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate ",
+    "GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract ",
+    "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal ",
+    "GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture_env_add ",
+    "GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotropic GL_EXT_texture_lod_bias ",
+    "GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp ",
+    "GL_SGIS_texture_lod\0"
 );
 
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list.

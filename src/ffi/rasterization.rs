@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_raw, with_ctx_list};
+use super::{gl_bool, with_ctx, with_ctx_list, with_ctx_raw};
 use crate::context::error::GlError;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Face;

@@ -3,11 +3,11 @@
 //! `texgen.c` and `clip.c` do (glTexGeni/f/d set a plane to `(param, 0, 0, 0)`).
 #![allow(non_snake_case)]
 
-use super::with_ctx_list;
 use super::enums::*;
 use super::lighting::read4;
 use super::types::*;
 use super::with_ctx;
+use super::with_ctx_list;
 use crate::context::texgen_state::{plane_times_inverse, ClipPlanes};
 
 /// How many values a glTexGen pname takes.
