@@ -85,6 +85,15 @@ def main():
     defs = ours()
     mesa = mesa_exports()
     gl_h = open(GL_H).read()
+    headers = gl_h + open(GL_H.replace("gl.h", "glext.h")).read()
+
+    def header_arity(name):
+        """Parameter count of `name`'s prototype in Mesa's headers (None when absent)."""
+        m = re.search(r"APIENTRY %s\s*\(([^)]*)\)" % name, headers)
+        if not m:
+            return None
+        p = m.group(1).strip()
+        return 0 if p in ("", "void") else p.count(",") + 1
     groups = {"gl": [], "ext": []}
     for name in sorted(mesa):
         if name in defs:
@@ -92,6 +101,9 @@ def main():
         for s in SUFFIXES:
             core = name[: -len(s)]
             if name.endswith(s) and core in defs:
+                # Same name, different function (EXT_vertex_array's pointers take a count).
+                if header_arity(name) not in (None, len(defs[core][2])):
+                    break
                 where = "gl" if re.search(r"\b%s\b" % name, gl_h) else "ext"
                 groups[where].append((name, core))
                 break

@@ -54,17 +54,6 @@ pub unsafe extern "C" fn glBufferSubDataARB(
     unsafe { super::buffers::glBufferSubData(target, offset, size, data) }
 }
 
-/// glColorPointerEXT: the extension name of [`super::arrays::glColorPointer`].
-#[no_mangle]
-pub extern "C" fn glColorPointerEXT(
-    size: GLint,
-    type_: GLenum,
-    stride: GLsizei,
-    ptr: *const GLvoid,
-) {
-    super::arrays::glColorPointer(size, type_, stride, ptr)
-}
-
 /// glDeleteBuffersARB: the extension name of [`super::buffers::glDeleteBuffers`].
 ///
 /// # Safety
@@ -272,12 +261,6 @@ pub unsafe extern "C" fn glMultiDrawElementsEXT(
     unsafe { super::multidraw::glMultiDrawElements(mode, count, type_, indices, drawcount) }
 }
 
-/// glNormalPointerEXT: the extension name of [`super::arrays::glNormalPointer`].
-#[no_mangle]
-pub extern "C" fn glNormalPointerEXT(type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    super::arrays::glNormalPointer(type_, stride, ptr)
-}
-
 /// glPrioritizeTexturesEXT: the extension name of [`super::textures::glPrioritizeTextures`].
 ///
 /// # Safety
@@ -420,30 +403,8 @@ pub unsafe extern "C" fn glSecondaryColor3usvEXT(v: *const GLushort) {
     unsafe { super::lighting_ext::glSecondaryColor3usv(v) }
 }
 
-/// glTexCoordPointerEXT: the extension name of [`super::arrays::glTexCoordPointer`].
-#[no_mangle]
-pub extern "C" fn glTexCoordPointerEXT(
-    size: GLint,
-    type_: GLenum,
-    stride: GLsizei,
-    ptr: *const GLvoid,
-) {
-    super::arrays::glTexCoordPointer(size, type_, stride, ptr)
-}
-
 /// glUnmapBufferARB: the extension name of [`super::buffers::glUnmapBuffer`].
 #[no_mangle]
 pub extern "C" fn glUnmapBufferARB(target: GLenum) -> GLboolean {
     super::buffers::glUnmapBuffer(target)
-}
-
-/// glVertexPointerEXT: the extension name of [`super::arrays::glVertexPointer`].
-#[no_mangle]
-pub extern "C" fn glVertexPointerEXT(
-    size: GLint,
-    type_: GLenum,
-    stride: GLsizei,
-    ptr: *const GLvoid,
-) {
-    super::arrays::glVertexPointer(size, type_, stride, ptr)
 }
