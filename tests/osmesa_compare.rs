@@ -107,13 +107,14 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
     (
         "evaluators",
         Tolerance {
-            max_channel_diff: 255,
-            max_percent_off: 0.05,
-            reason: "the evaluated curves and grids are drawn as width-1 lines and size-1 \
-                     points, whose endpoint pixels follow llvmpipe's diamond-exit rule that \
-                     softgl does not reproduce yet (README, known differences; \
-                     llvmpipe-rules §15): 4 of 12288 pixels in `curves`, 1 in \
-                     `rational_lines_points`; the filled patches are identical",
+            max_channel_diff: 1,
+            max_percent_off: 0.5,
+            reason: "the lit auto-normal patches and the curves are identical; in \
+                     `rational_lines_points` (rational maps, so evaluated vertices with w != 1 \
+                     drawn as lines and points) 52 of its 12288 pixels (0.42%) differ by 1 \
+                     (colour rounding along the perspective-correct line interpolation; \
+                     measured after the exact line code merged: 99.859% of the scene \
+                     identical, max diff 1)",
         },
     ),
     (
