@@ -162,8 +162,15 @@ const TYPES: &[u32] = &[
 ];
 
 /// Functions whose hostile table calls must stay small (they read client memory through
-/// sizes, or set state that sizes later reads and writes of client memory).
+/// sizes, or set state that sizes later reads and writes of client memory). ARB/EXT
+/// aliases count as their core function: `glArrayElementEXT(65536)` reads past `vmem`
+/// just as `glArrayElement(65536)` would (the harness's fault, not the library's: that
+/// was the crash the long runs found).
 fn must_stay_small(name: &str) -> bool {
+    let name = name
+        .strip_suffix("ARB")
+        .or_else(|| name.strip_suffix("EXT"))
+        .unwrap_or(name);
     name.starts_with("glDraw")
         || name.starts_with("glMultiDraw")
         || name == "glArrayElement"
@@ -283,6 +290,9 @@ impl Fuzzer {
             .iter()
             .map(|&k| hostile(rng, k, small, ptr, handle))
             .collect();
+        if std::env::var_os("SOFTGL_FUZZ_TRACE").is_some() {
+            eprintln!("{} {} {:?}", self.calls, f.name, args);
+        }
         let p0 = panics();
         // SAFETY: pointers are null or the zeroed 64 KiB scratch buffer with sizes below 8;
         // calls that read client arrays by index stay small (see `must_stay_small`), and
@@ -709,6 +719,7 @@ fn fuzz_50k_calls() {
 }
 
 /// `SOFTGL_FUZZ_CALLS=N SOFTGL_FUZZ_SEED=S cargo test --release --test robust_fuzz -- --ignored`
+/// (`SOFTGL_FUZZ_TRACE=1` prints every table call, to find the last one before a crash).
 #[test]
 #[ignore]
 fn fuzz_long() {
@@ -726,4 +737,20 @@ fn fuzz_long() {
         "fuzz seed {seed}: {n} calls in {:.1} s ({tris} triangles, {frags} fragments), no crash",
         t.elapsed().as_secs_f64()
     );
+}
+
+/// Regression: the long runs crashed in `glArrayElementEXT(65536)`, a hostile index the
+/// harness must not pass (client arrays cover 128 vertices); aliases now stay small.
+#[test]
+fn aliases_of_client_memory_readers_stay_small() {
+    for name in [
+        "glArrayElementEXT",
+        "glDrawArraysEXT",
+        "glDrawRangeElementsEXT",
+        "glMultiDrawArraysEXT",
+        "glArrayElement",
+    ] {
+        assert!(must_stay_small(name), "{name}");
+    }
+    assert!(!must_stay_small("glBindBufferARB"));
 }
