@@ -150,6 +150,10 @@ const EXACT: Tolerance = Tolerance {
 
 /// Every scene in `c_tests/`; a test checks that this list is complete.
 const SCENES: &[&str] = &[
+    "tex3d",
+    "tex_cube",
+    "copy_tex_1d",
+    "tex_depth_shadow",
     "smooth_triangles",
     "flat_triangles",
     "prim_modes",
@@ -242,6 +246,10 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    tex3d,
+    tex_cube,
+    copy_tex_1d,
+    tex_depth_shadow,
     dlist_scene,
     dlist_errors,
     attrib_stack,

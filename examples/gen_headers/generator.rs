@@ -59,6 +59,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("query.rs", Header::Gl),
     ("fragment.rs", Header::Gl),
     ("textures.rs", Header::Gl),
+    ("textures_3d.rs", Header::Gl),
     ("lighting.rs", Header::Gl),
     ("rasterization.rs", Header::Gl),
     ("texgen.rs", Header::Gl),

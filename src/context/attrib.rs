@@ -35,7 +35,7 @@ pub struct AttribFrame {
     /// Texture units.
     units: Box<[TexUnit; MAX_TEXTURE_UNITS]>,
     /// Sampler parameters of the texture bound to each unit and target, by name.
-    tex_params: Vec<[(u32, SamplerParams); 2]>,
+    tex_params: Vec<[(u32, SamplerParams); crate::texture::NUM_TARGETS]>,
     /// glListBase.
     list_base: u32,
     /// Line, point, polygon and polygon-stipple state.
@@ -95,9 +95,11 @@ fn caps(c: &mut Context, s: &AttribFrame, caps: &[Cap]) {
 /// Makes the GL_TEXTURE_1D/2D enable bits mirror the active unit again.
 fn sync_texture_caps(c: &mut Context) {
     let u = &c.textures.units[c.state.active_texture];
-    let (e1, e2) = (u.enabled_1d, u.enabled_2d);
+    let (e1, e2, e3, ec) = (u.enabled_1d, u.enabled_2d, u.enabled_3d, u.enabled_cube);
     c.state.caps.set(Cap::Texture1D, e1);
     c.state.caps.set(Cap::Texture2D, e2);
+    c.state.caps.set(Cap::Texture3D, e3);
+    c.state.caps.set(Cap::TextureCubeMap, ec);
 }
 
 fn current(c: &mut Context, s: &AttribFrame) {
@@ -207,6 +209,8 @@ fn enable(c: &mut Context, s: &AttribFrame) {
     for (u, saved) in c.textures.units.iter_mut().zip(s.units.iter()) {
         u.enabled_1d = saved.enabled_1d;
         u.enabled_2d = saved.enabled_2d;
+        u.enabled_3d = saved.enabled_3d;
+        u.enabled_cube = saved.enabled_cube;
     }
     sync_texture_caps(c);
     c.clip_planes.enabled = s.clip_planes.enabled;

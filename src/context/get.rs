@@ -270,10 +270,25 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => i(&[tc.buffer as i64]),
         // texturing (per active unit)
         // units 8..31 (TextureState::high_unit) have nothing bound
-        GL_TEXTURE_BINDING_1D | GL_TEXTURE_BINDING_2D if c.textures.high_unit.is_some() => i(&[0]),
+        GL_TEXTURE_BINDING_1D
+        | GL_TEXTURE_BINDING_2D
+        | GL_TEXTURE_BINDING_3D
+        | GL_TEXTURE_BINDING_CUBE_MAP
+            if c.textures.high_unit.is_some() =>
+        {
+            i(&[0])
+        }
+        GL_TEXTURE_BINDING_3D => i(&[c.textures.units[st.active_texture].bound[2] as i64]),
+        GL_TEXTURE_BINDING_CUBE_MAP => i(&[c.textures.units[st.active_texture].bound[3] as i64]),
         GL_TEXTURE_BINDING_1D => i(&[c.textures.units[st.active_texture].bound[0] as i64]),
         GL_TEXTURE_BINDING_2D => i(&[c.textures.units[st.active_texture].bound[1] as i64]),
-        GL_TEXTURE_1D | GL_TEXTURE_2D if c.textures.high_unit.is_some() => b(false),
+        GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP
+            if c.textures.high_unit.is_some() =>
+        {
+            b(false)
+        }
+        GL_TEXTURE_3D => b(c.textures.units[st.active_texture].enabled_3d),
+        GL_TEXTURE_CUBE_MAP => b(c.textures.units[st.active_texture].enabled_cube),
         GL_TEXTURE_1D => b(c.textures.units[st.active_texture].enabled_1d),
         GL_TEXTURE_2D => b(c.textures.units[st.active_texture].enabled_2d),
         GL_MAX_TEXTURE_LOD_BIAS => f(&[crate::texture::MAX_LOD_BIAS]),

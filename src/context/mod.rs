@@ -327,6 +327,8 @@ impl Context {
         match cap {
             Cap::Texture1D => unit.enabled_1d = on,
             Cap::Texture2D => unit.enabled_2d = on,
+            Cap::Texture3D => unit.enabled_3d = on,
+            Cap::TextureCubeMap => unit.enabled_cube = on,
             Cap::TexGenS | Cap::TexGenT | Cap::TexGenR | Cap::TexGenQ => {
                 let bit = 1u8 << (cap as u8 - Cap::TexGenS as u8);
                 let g = &mut self.texgen.units[self.state.active_texture].enabled;

@@ -54,6 +54,24 @@ pub unsafe extern "C" fn glBufferSubDataARB(
     unsafe { super::buffers::glBufferSubData(target, offset, size, data) }
 }
 
+/// glCopyTexSubImage3DEXT: the extension name of [`super::textures_3d::glCopyTexSubImage3D`].
+#[no_mangle]
+pub extern "C" fn glCopyTexSubImage3DEXT(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    super::textures_3d::glCopyTexSubImage3D(
+        target, level, xoffset, yoffset, zoffset, x, y, width, height,
+    )
+}
+
 /// glDeleteBuffersARB: the extension name of [`super::buffers::glDeleteBuffers`].
 ///
 /// # Safety
@@ -401,6 +419,66 @@ pub extern "C" fn glSecondaryColor3usEXT(red: GLushort, green: GLushort, blue: G
 pub unsafe extern "C" fn glSecondaryColor3usvEXT(v: *const GLushort) {
     // SAFETY: the caller upholds `glSecondaryColor3usv`'s contract; the arguments pass through unchanged.
     unsafe { super::lighting_ext::glSecondaryColor3usv(v) }
+}
+
+/// glTexImage3DEXT: the extension name of [`super::textures_3d::glTexImage3D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glTexImage3D`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexImage3DEXT(
+    target: GLenum,
+    level: GLint,
+    internalFormat: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: the caller upholds `glTexImage3D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_3d::glTexImage3D(
+            target,
+            level,
+            internalFormat,
+            width,
+            height,
+            depth,
+            border,
+            format,
+            type_,
+            pixels,
+        )
+    }
+}
+
+/// glTexSubImage3DEXT: the extension name of [`super::textures_3d::glTexSubImage3D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glTexSubImage3D`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage3DEXT(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    // SAFETY: the caller upholds `glTexSubImage3D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_3d::glTexSubImage3D(
+            target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels,
+        )
+    }
 }
 
 /// glUnmapBufferARB: the extension name of [`super::buffers::glUnmapBuffer`].

@@ -52,6 +52,7 @@ pub mod rasterization;
 pub mod state;
 pub mod texgen;
 pub mod textures;
+pub mod textures_3d;
 pub mod textures_ext;
 pub mod types;
 

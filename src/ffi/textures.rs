@@ -13,33 +13,55 @@ use super::{non_negative, with_ctx, with_ctx_list};
 use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
+use crate::texture::shadow::{self, CompareFunc, DepthMode, ShadowParams};
 use crate::texture::upload::{self, ClientFormat, Layout};
 use crate::texture::{
-    mipmap, Filter, Level, MipFilter, Target, TextureObject, Wrap, MAX_ANISOTROPY, MAX_LEVELS,
-    MAX_TEXTURE_SIZE,
+    mipmap, BaseFormat, Filter, Level, MipFilter, Storage, Target, TextureObject, Wrap,
+    MAX_ANISOTROPY, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 use libc::c_void;
 
-/// (target, is proxy) of a texture-image target.
-fn image_target(target: GLenum) -> GlResult<(Target, bool)> {
+/// (target, is proxy, cube face) of a texture-image target.
+pub(crate) fn image_target(target: GLenum) -> GlResult<(Target, bool, usize)> {
     Ok(match target {
-        GL_TEXTURE_1D => (Target::Tex1D, false),
-        GL_TEXTURE_2D => (Target::Tex2D, false),
-        GL_PROXY_TEXTURE_1D => (Target::Tex1D, true),
-        GL_PROXY_TEXTURE_2D => (Target::Tex2D, true),
+        GL_TEXTURE_1D => (Target::Tex1D, false, 0),
+        GL_TEXTURE_2D => (Target::Tex2D, false, 0),
+        GL_TEXTURE_3D => (Target::Tex3D, false, 0),
+        GL_PROXY_TEXTURE_1D => (Target::Tex1D, true, 0),
+        GL_PROXY_TEXTURE_2D => (Target::Tex2D, true, 0),
+        GL_PROXY_TEXTURE_3D => (Target::Tex3D, true, 0),
+        GL_PROXY_TEXTURE_CUBE_MAP => (Target::Cube, true, 0),
+        f if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..GL_TEXTURE_CUBE_MAP_POSITIVE_X + 6).contains(&f) => (
+            Target::Cube,
+            false,
+            (f - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize,
+        ),
         _ => return Err(GlError::InvalidEnum),
     })
 }
 
-/// A bindable target.
+/// A bindable target (also the target of glTexParameter).
 pub(crate) fn bind_target(target: GLenum) -> GlResult<Target> {
-    match image_target(target)? {
-        (t, false) => Ok(t),
-        _ => Err(GlError::InvalidEnum),
+    Ok(match target {
+        GL_TEXTURE_1D => Target::Tex1D,
+        GL_TEXTURE_2D => Target::Tex2D,
+        GL_TEXTURE_3D => Target::Tex3D,
+        GL_TEXTURE_CUBE_MAP => Target::Cube,
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// Whether an image target of `t` is taken by a call of `dims` dimensions (cube faces
+/// are 2D images).
+pub(crate) fn dims_match(t: Target, dims: u8) -> bool {
+    dims == match t {
+        Target::Tex1D => 1,
+        Target::Tex2D | Target::Cube => 2,
+        Target::Tex3D => 3,
     }
 }
 
-fn check_level(level: GLint) -> GlResult<usize> {
+pub(crate) fn check_level(level: GLint) -> GlResult<usize> {
     if level < 0 || level as usize >= MAX_LEVELS {
         Err(GlError::InvalidValue)
     } else {
@@ -58,7 +80,7 @@ pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut T
     }
 }
 
-fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
+pub(crate) fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
     if proxy {
         &c.textures.proxies[target.index()]
     } else if c.textures.high_unit.is_some() {
@@ -69,10 +91,25 @@ fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
 }
 
 /// Regenerates the mipmaps after the base level changed, if GL_GENERATE_MIPMAP is set.
-fn maybe_generate(obj: &mut TextureObject, level: usize) {
+pub(crate) fn maybe_generate(obj: &mut TextureObject, level: usize) {
     let p = obj.params;
     if p.generate_mipmap && p.base_level >= 0 && level == p.base_level as usize {
-        mipmap::generate(&mut obj.levels, level, p.max_level.max(0) as usize);
+        regenerate(obj, level);
+    }
+}
+
+/// Rebuilds the levels after `base` (every face of a cube map, every slice of a 3D
+/// texture) as Mesa's `st_generate_mipmap` does.
+pub(crate) fn regenerate(obj: &mut TextureObject, base: usize) {
+    let max = obj.params.max_level.max(0) as usize;
+    match obj.target {
+        Some(Target::Tex3D) => crate::texture::volume::generate(obj, base, max),
+        Some(Target::Cube) => {
+            for f in 0..6 {
+                mipmap::generate(obj.face_levels_mut(f), base, max);
+            }
+        }
+        _ => mipmap::generate(&mut obj.levels, base, max),
     }
 }
 
@@ -100,7 +137,7 @@ fn image_size(
     }
     let max = (MAX_TEXTURE_SIZE >> level).max(1);
     let (w, h) = (w - b, if target == Target::Tex1D { 1 } else { h - b });
-    if w > max || h > max {
+    if w > max || h > max || (target == Target::Cube && w != h) {
         return Err(GlError::InvalidValue);
     }
     Ok(Some((w, h)))
@@ -115,23 +152,20 @@ unsafe fn tex_image(
     dims: u8,
     unpack: PixelStore,
 ) -> GlResult<()> {
-    let (t, proxy) = image_target(target)?;
-    if (t == Target::Tex1D) != (dims == 1) {
+    let (t, proxy, face) = image_target(target)?;
+    if !dims_match(t, dims) {
         return Err(GlError::InvalidEnum);
     }
     let cf = ClientFormat::new(format, ty)?;
-    if cf.is_depth() {
-        // no depth textures: as an unknown format
-        return Err(GlError::InvalidEnum);
-    }
     let level = check_level(level)?;
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
+    depth_match(base, &cf)?;
     c.check_outside_begin()?;
-    let storage = upload::choose_storage(internal, base, format, ty);
+    let storage = storage_of(internal, base, format, ty);
     let size = image_size(t, level, w, h, border);
     if proxy {
         let obj = object_mut(c, t, true);
-        obj.levels[level] = match size {
+        obj.face_levels_mut(face)[level] = match size {
             Ok(Some((w, h))) => Some(Level {
                 width: w,
                 height: h,
@@ -160,9 +194,9 @@ unsafe fn tex_image(
         }
     }
     // SAFETY: GL's contract: `data` (when not null) holds the described image.
-    let texels = unsafe { upload::unpack(&ps, &cf, base, storage, tw, th, data as *const u8) };
+    let texels = unsafe { unpack_any(&ps, &cf, base, storage, (tw, th), data) };
     let obj = object_mut(c, t, false);
-    obj.levels[level] = Some(Level {
+    obj.face_levels_mut(face)[level] = Some(Level {
         width: tw,
         height: th,
         internal_format: internal as u32,
@@ -183,30 +217,26 @@ unsafe fn tex_sub_image(
     dims: u8,
     unpack: PixelStore,
 ) -> GlResult<()> {
-    let t = bind_target(target)?;
-    if (t == Target::Tex1D) != (dims == 1) {
-        return Err(GlError::InvalidEnum);
-    }
+    let (t, face) = match image_target(target)? {
+        (t, false, face) if dims_match(t, dims) => (t, face),
+        _ => return Err(GlError::InvalidEnum),
+    };
     let cf = ClientFormat::new(format, ty)?;
-    if cf.is_depth() {
-        // no depth textures: as an unknown format
-        return Err(GlError::InvalidEnum);
-    }
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
     let ps = unpack;
     let obj = object_mut(c, t, false);
-    let img = obj.levels[level]
+    let img = obj.face_levels_mut(face)[level]
         .as_mut()
         .ok_or(GlError::InvalidOperation)?;
     let yoff = if dims == 1 { 0 } else { yoff };
+    depth_match(img.base, &cf)?;
     if xoff < 0 || yoff < 0 || xoff as usize + w > img.width || yoff as usize + h > img.height {
         return Err(GlError::InvalidValue);
     }
     // SAFETY: GL's contract: `data` holds the described image.
-    let texels =
-        unsafe { upload::unpack(&ps, &cf, img.base, img.storage, w, h, data as *const u8) };
+    let texels = unsafe { unpack_any(&ps, &cf, img.base, img.storage, (w, h), data) };
     for y in 0..h {
         let dst = (yoff as usize + y) * img.width + xoff as usize;
         img.texels[dst..dst + w].copy_from_slice(&texels[y * w..(y + 1) * w]);
@@ -262,12 +292,12 @@ impl ClientImage {
 }
 
 /// Whether a display list is being compiled on the current context.
-fn compiling() -> bool {
+pub(crate) fn compiling() -> bool {
     super::with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
 }
 
 /// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
-fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
+pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
     let mut out = vec![[0u8; 4]; w * h];
     let Some(fb) = c.fb.as_ref() else { return out };
     for row in 0..h {
@@ -287,6 +317,149 @@ fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
     out
 }
 
+/// GL_INVALID_OPERATION unless a depth image meets depth data and a colour image colour
+/// data.
+fn depth_match(base: BaseFormat, cf: &ClientFormat) -> GlResult<()> {
+    if (base == BaseFormat::Depth) != cf.is_depth() {
+        return Err(GlError::InvalidOperation);
+    }
+    Ok(())
+}
+
+/// The storage Mesa picks for an image (depth images: their depth bits).
+fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: GLenum) -> Storage {
+    if base == BaseFormat::Depth {
+        Storage {
+            sizes: [shadow::depth_bits(internal as u32, ty), 0, 0, 0, 0, 0],
+        }
+    } else {
+        upload::choose_storage(internal, base, format, ty)
+    }
+}
+
+/// Unpacks a colour or depth client image.
+///
+/// # Safety
+/// `data` (when not null) must hold the described image.
+unsafe fn unpack_any(
+    ps: &PixelStore,
+    cf: &ClientFormat,
+    base: BaseFormat,
+    storage: Storage,
+    (w, h): (usize, usize),
+    data: *const c_void,
+) -> Vec<[u8; 4]> {
+    let data = data as *const u8;
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        if base == BaseFormat::Depth {
+            shadow::unpack(ps, cf, storage.depth_bits(), w, h, data)
+        } else {
+            upload::unpack(ps, cf, base, storage, w, h, data)
+        }
+    }
+}
+
+/// A framebuffer rectangle (GL window coordinates) as texels of `base`: colours, or for a
+/// depth image the depth buffer (GL_INVALID_OPERATION without one).
+fn read_texels(
+    c: &Context,
+    (x, y, w, h): (GLint, GLint, usize, usize),
+    base: BaseFormat,
+    storage: &Storage,
+) -> GlResult<Vec<[u8; 4]>> {
+    if base != BaseFormat::Depth {
+        return Ok(read_fb(c, x, y, w, h)
+            .into_iter()
+            .map(|p| upload::to_texel(base, upload::quantise_rgba(p, storage)))
+            .collect());
+    }
+    let fb = c.fb.as_ref().ok_or(GlError::InvalidOperation)?;
+    let fb_bits = fb.depth_format.bits();
+    if fb_bits <= 0 {
+        return Err(GlError::InvalidOperation);
+    }
+    let mut out = vec![shadow::texel(0); w * h];
+    for row in 0..h {
+        let gy = y as i64 + row as i64;
+        if gy < 0 || gy >= fb.height as i64 {
+            continue;
+        }
+        let fy = fb.height - 1 - gy as usize;
+        for col in 0..w {
+            let gx = x as i64 + col as i64;
+            if gx < 0 || gx >= fb.width as i64 {
+                continue;
+            }
+            let z = fb.depth[fy * fb.width + gx as usize];
+            let z = shadow::convert(z, fb_bits as u8, storage.depth_bits());
+            out[row * w + col] = shadow::texel(z);
+        }
+    }
+    Ok(out)
+}
+
+/// glTexParameter of GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC,
+/// GL_DEPTH_TEXTURE_MODE.
+fn shadow_parameter(p: &mut ShadowParams, pname: GLenum, e: GLenum) -> GlResult<()> {
+    match pname {
+        GL_TEXTURE_COMPARE_MODE => {
+            p.compare = match e {
+                GL_NONE => false,
+                GL_COMPARE_R_TO_TEXTURE => true,
+                _ => return Err(GlError::InvalidEnum),
+            }
+        }
+        GL_TEXTURE_COMPARE_FUNC => {
+            p.func = match e {
+                GL_NEVER => CompareFunc::Never,
+                GL_LESS => CompareFunc::Less,
+                GL_EQUAL => CompareFunc::Equal,
+                GL_LEQUAL => CompareFunc::Lequal,
+                GL_GREATER => CompareFunc::Greater,
+                GL_NOTEQUAL => CompareFunc::Notequal,
+                GL_GEQUAL => CompareFunc::Gequal,
+                GL_ALWAYS => CompareFunc::Always,
+                _ => return Err(GlError::InvalidEnum),
+            }
+        }
+        _ => {
+            p.depth_mode = match e {
+                GL_LUMINANCE => DepthMode::Luminance,
+                GL_INTENSITY => DepthMode::Intensity,
+                GL_ALPHA => DepthMode::Alpha,
+                GL_RED => DepthMode::Red,
+                _ => return Err(GlError::InvalidEnum),
+            }
+        }
+    }
+    Ok(())
+}
+
+/// glGetTexParameter of the comparison state.
+fn get_shadow_parameter(p: &ShadowParams, pname: GLenum) -> GLenum {
+    match pname {
+        GL_TEXTURE_COMPARE_MODE if p.compare => GL_COMPARE_R_TO_TEXTURE,
+        GL_TEXTURE_COMPARE_MODE => GL_NONE,
+        GL_TEXTURE_COMPARE_FUNC => match p.func {
+            CompareFunc::Never => GL_NEVER,
+            CompareFunc::Less => GL_LESS,
+            CompareFunc::Equal => GL_EQUAL,
+            CompareFunc::Lequal => GL_LEQUAL,
+            CompareFunc::Greater => GL_GREATER,
+            CompareFunc::Notequal => GL_NOTEQUAL,
+            CompareFunc::Gequal => GL_GEQUAL,
+            CompareFunc::Always => GL_ALWAYS,
+        },
+        _ => match p.depth_mode {
+            DepthMode::Luminance => GL_LUMINANCE,
+            DepthMode::Intensity => GL_INTENSITY,
+            DepthMode::Alpha => GL_ALPHA,
+            DepthMode::Red => GL_RED,
+        },
+    }
+}
+
 #[allow(clippy::too_many_arguments)]
 fn copy_tex_image(
     c: &mut Context,
@@ -300,25 +473,24 @@ fn copy_tex_image(
     border: GLint,
     dims: u8,
 ) -> GlResult<()> {
-    let t = bind_target(target)?;
-    if (t == Target::Tex1D) != (dims == 1) {
-        return Err(GlError::InvalidEnum);
-    }
+    let (t, face) = match image_target(target)? {
+        (t, false, face) if dims_match(t, dims) => (t, face),
+        _ => return Err(GlError::InvalidEnum),
+    };
     let level = check_level(level)?;
-    let base = upload::base_format(internal as i32).ok_or(GlError::InvalidValue)?;
+    // Mesa: an unknown internal format of a copy is GL_INVALID_ENUM (not VALUE as for
+    // glTexImage)
+    let base = upload::base_format(internal as i32).ok_or(GlError::InvalidEnum)?;
     let Some((tw, th)) = image_size(t, level, w, h, border)? else {
         return Ok(());
     };
     c.check_outside_begin()?;
     let b = border;
-    let src = read_fb(c, x + b, y + if dims == 2 { b } else { 0 }, tw, th);
-    let storage = upload::choose_storage(internal as i32, base, 0, 0);
-    let texels = src
-        .into_iter()
-        .map(|p| upload::to_texel(base, upload::quantise_rgba(p, &storage)))
-        .collect();
+    let storage = storage_of(internal as i32, base, 0, 0);
+    let (sx, sy) = (x + b, y + if dims == 2 { b } else { 0 });
+    let texels = read_texels(c, (sx, sy, tw, th), base, &storage)?;
     let obj = object_mut(c, t, false);
-    obj.levels[level] = Some(Level {
+    obj.face_levels_mut(face)[level] = Some(Level {
         width: tw,
         height: th,
         internal_format: internal,
@@ -343,29 +515,30 @@ fn copy_tex_sub_image(
     h: GLsizei,
     dims: u8,
 ) -> GlResult<()> {
-    let t = bind_target(target)?;
-    if (t == Target::Tex1D) != (dims == 1) {
-        return Err(GlError::InvalidEnum);
-    }
+    let (t, face) = match image_target(target)? {
+        (t, false, face) if dims_match(t, dims) => (t, face),
+        _ => return Err(GlError::InvalidEnum),
+    };
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
-    let src = read_fb(c, x, y, w, h);
+    let (base, storage) = object(c, t, false)
+        .face_levels(face)
+        .get(level)
+        .and_then(|l| l.as_ref())
+        .map(|i| (i.base, i.storage))
+        .ok_or(GlError::InvalidOperation)?;
+    let src = read_texels(c, (x, y, w, h), base, &storage)?;
     let obj = object_mut(c, t, false);
-    let img = obj.levels[level]
+    let img = obj.face_levels_mut(face)[level]
         .as_mut()
         .ok_or(GlError::InvalidOperation)?;
     if xoff < 0 || yoff < 0 || xoff as usize + w > img.width || yoff as usize + h > img.height {
         return Err(GlError::InvalidValue);
     }
     for row in 0..h {
-        for col in 0..w {
-            let d = (yoff as usize + row) * img.width + xoff as usize + col;
-            img.texels[d] = upload::to_texel(
-                img.base,
-                upload::quantise_rgba(src[row * w + col], &img.storage),
-            );
-        }
+        let d = (yoff as usize + row) * img.width + xoff as usize;
+        img.texels[d..d + w].copy_from_slice(&src[row * w..(row + 1) * w]);
     }
     maybe_generate(obj, level);
     Ok(())
@@ -646,18 +819,29 @@ pub unsafe extern "C" fn glGetTexImage(
     pixels: *mut GLvoid,
 ) {
     with_ctx(|c| {
-        let t = bind_target(target)?;
+        let (t, face) = match image_target(target)? {
+            (t, false, face) => (t, face),
+            _ => return Err(GlError::InvalidEnum),
+        };
         let level = check_level(level)?;
         let cf = ClientFormat::new(format, type_)?;
         c.check_outside_begin()?;
         let ps = c.state.pack;
-        if cf.is_depth() {
-            // a depth format for a colour texture (there are no depth textures here)
-            return Err(GlError::InvalidOperation);
-        }
-        let Some(img) = object(c, t, false).level(level) else {
+        let obj = object(c, t, false);
+        let Some(Some(img)) = obj.face_levels(face).get(level) else {
             return Ok(());
         };
+        depth_match(img.base, &cf)?;
+        if img.base == BaseFormat::Depth {
+            // SAFETY: the caller promises room for the packed image.
+            unsafe { shadow::pack(&ps, &cf, img, pixels as *mut u8) };
+            return Ok(());
+        }
+        if t == Target::Tex3D {
+            // SAFETY: the caller promises room for the packed image.
+            unsafe { super::textures_3d::pack_3d(&ps, &cf, img, obj.depths[level], pixels) };
+            return Ok(());
+        }
         let _ = Layout::new(&ps, img.width, &cf);
         // SAFETY: the caller promises room for the packed image.
         unsafe { upload::pack(&ps, &cf, img, pixels as *mut u8) };
@@ -767,6 +951,9 @@ fn tex_parameter(
             p.max_anisotropy = (v[0] as f32).min(MAX_ANISOTROPY);
         }
         GL_TEXTURE_PRIORITY => p.priority = crate::context::clamp01(v[0]) as f32,
+        GL_TEXTURE_COMPARE_MODE | GL_TEXTURE_COMPARE_FUNC | GL_DEPTH_TEXTURE_MODE => {
+            shadow_parameter(&mut p.shadow, pname, e)?
+        }
         _ => return Err(GlError::InvalidEnum),
     }
     c.check_outside_begin()?;
@@ -798,6 +985,9 @@ fn get_tex_parameter(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult
         GL_TEXTURE_MAX_ANISOTROPY_EXT => one(p.max_anisotropy as f64),
         GL_TEXTURE_PRIORITY => one(p.priority as f64),
         GL_TEXTURE_RESIDENT => one(1.0),
+        GL_TEXTURE_COMPARE_MODE | GL_TEXTURE_COMPARE_FUNC | GL_DEPTH_TEXTURE_MODE => {
+            one(get_shadow_parameter(&p.shadow, pname) as f64)
+        }
         _ => Err(GlError::InvalidEnum),
     }
 }
@@ -808,16 +998,23 @@ fn get_level_parameter(
     level: GLint,
     pname: GLenum,
 ) -> GlResult<f64> {
-    let (t, proxy) = image_target(target)?;
+    let (t, proxy, face) = image_target(target)?;
     let level = check_level(level)?;
     c.check_outside_begin()?;
-    let img = object(c, t, proxy).level(level);
+    let obj = object(c, t, proxy);
+    let img = obj.face_levels(face).get(level).and_then(|l| l.as_ref());
+    let depth = if t == Target::Tex3D {
+        obj.depths[level]
+    } else {
+        1
+    };
     // the sizes of the storage format Mesa chose (upload::choose_storage)
-    let size = |k: usize| img.map_or(0, |i| i.storage.sizes[k]) as f64;
+    let is_depth = img.is_some_and(|i| i.base == BaseFormat::Depth);
+    let size = |k: usize| img.filter(|_| !is_depth).map_or(0, |i| i.storage.sizes[k]) as f64;
     Ok(match pname {
         GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,
         GL_TEXTURE_HEIGHT => img.map_or(0, |i| i.height) as f64,
-        GL_TEXTURE_DEPTH => img.map_or(0, |_| 1) as f64,
+        GL_TEXTURE_DEPTH => img.map_or(0, |_| depth) as f64,
         GL_TEXTURE_BORDER => 0.0,
         // Mesa reports GL_RGBA for a level that was never specified
         GL_TEXTURE_INTERNAL_FORMAT => img.map_or(GL_RGBA, |i| i.internal_format) as f64,
@@ -828,6 +1025,9 @@ fn get_level_parameter(
         GL_TEXTURE_LUMINANCE_SIZE => size(4),
         GL_TEXTURE_INTENSITY_SIZE => size(5),
         GL_TEXTURE_COMPRESSED => 0.0,
+        GL_TEXTURE_DEPTH_SIZE => img
+            .filter(|_| is_depth)
+            .map_or(0, |i| i.storage.depth_bits()) as f64,
         _ => return Err(GlError::InvalidEnum),
     })
 }
@@ -1198,14 +1398,19 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
             c.textures.high_unit = Some(u as u32);
             c.state.caps.set(Cap::Texture1D, false);
             c.state.caps.set(Cap::Texture2D, false);
+            c.state.caps.set(Cap::Texture3D, false);
+            c.state.caps.set(Cap::TextureCubeMap, false);
             return Ok(());
         }
         c.textures.high_unit = None;
         c.state.active_texture = u;
         let unit = &c.textures.units[u];
         let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
+        let (e3, ec) = (unit.enabled_3d, unit.enabled_cube);
         c.state.caps.set(Cap::Texture1D, e1);
         c.state.caps.set(Cap::Texture2D, e2);
+        c.state.caps.set(Cap::Texture3D, e3);
+        c.state.caps.set(Cap::TextureCubeMap, ec);
         c.sync_texgen_caps();
         Ok(())
     })

@@ -2,11 +2,10 @@
 //! (`GL/glext.h`): glGenerateMipmap (GL 3.0 / ARB_framebuffer_object) and its EXT alias.
 #![allow(non_snake_case)]
 
-use super::textures::{bind_target, object_mut};
+use super::textures::{bind_target, object_mut, regenerate};
 use super::types::*;
 use super::with_ctx;
 use crate::context::error::GlError;
-use crate::texture::mipmap;
 
 /// glGenerateMipmap: rebuilds levels base+1..=max from the base level with the same
 /// filter GL_GENERATE_MIPMAP uses (Mesa's `st_generate_mipmap` serves both).
@@ -21,7 +20,7 @@ pub extern "C" fn glGenerateMipmap(target: GLenum) {
         if obj.levels.get(base).is_none_or(|l| l.is_none()) {
             return Err(GlError::InvalidOperation);
         }
-        mipmap::generate(&mut obj.levels, base, p.max_level.max(0) as usize);
+        regenerate(obj, base);
         Ok(())
     })
 }

@@ -181,6 +181,29 @@ pub fn tex_coords_oow<M: Madd, const PERSP: bool>(
     (s, tt)
 }
 
+/// The projected r coordinate of one unit at [`LANES`] pixels of row `fy` (3D textures,
+/// cube maps): `r·(1/q)` with the same `1/q` as [`tex_coords`].
+#[inline(always)]
+pub fn tex_r<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    base: usize,
+    fx: &[f32; LANES],
+    fy: f32,
+) -> [f32; LANES] {
+    let oow = one_over_w::<M, PERSP>(t, fx, fy);
+    std::array::from_fn(|i| {
+        let e = |k: usize| {
+            let a = eval::<M>(&t.vary[base + k], fx[i], fy);
+            if PERSP {
+                a * oow[i]
+            } else {
+                a
+            }
+        };
+        e(2) * (1.0f32 / e(3))
+    })
+}
+
 /// The primary colour of [`LANES`] pixels of row `fy` in f32, as the fragment shader
 /// receives it (perspective-correct with the row's `oow`).
 #[inline(always)]

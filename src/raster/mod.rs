@@ -5,7 +5,7 @@
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    shade_chunk, shade_span, tex_coords, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
+    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -344,12 +344,22 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
             let base = VARY_TEX + 4 * k;
             let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
             let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
+            let rr = u.needs_r().then(|| {
+                [
+                    tex_r::<M, PERSP>(t, base, fx, fy[0]),
+                    tex_r::<M, PERSP>(t, base, fx, fy[1]),
+                ]
+            });
             for j in 0..LANES / 2 {
                 let (l, r) = (2 * j, 2 * j + 1);
                 if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
                     continue;
                 }
-                let v = u.sample_quad([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+                let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+                let v = match &rr {
+                    None => u.sample_quad(s, tt),
+                    Some([r0, r1]) => u.sample_quad_str(s, tt, [r0[l], r0[r], r1[l], r1[r]]),
+                };
                 texels[0][k][l] = v[0];
                 texels[0][k][r] = v[1];
                 texels[1][k][l] = v[2];

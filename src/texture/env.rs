@@ -349,6 +349,8 @@ impl Combine {
                     }
                     B::Rgb => mode_rgb = F::Replace,
                     B::Rgba => src_rgb[2] = S::Texture,
+                    // a depth texture reaches the environment as its depth mode's format
+                    B::Depth => {}
                 }
             }
             EnvMode::Blend => {

@@ -165,8 +165,17 @@ pub fn compute(
     if p.min_max_equal {
         return Lod::from_value(p.min_lod, mip);
     }
-    let r = rho(dims, w, h, s, t);
-    let squared = dims > 1;
+    from_rho(p, mip, dims > 1, rho(dims, w, h, s, t))
+}
+
+/// The LOD from a quad's rho (`squared`: rho², as llvmpipe keeps it for dims > 1), for
+/// callers that compute rho themselves (3D textures, cube maps).
+#[inline(always)]
+pub fn from_rho(p: &LodParams, mip: MipFilter, squared: bool, r: f32) -> Lod {
+    if p.min_max_equal {
+        return Lod::from_value(p.min_lod, mip);
+    }
+    let r = if r.is_finite() { r } else { 0.0 };
     let fast = p.bias == 0.0 && !p.apply_min && !p.apply_max;
     if fast && mip != MipFilter::Linear {
         let ipart = if squared {

@@ -13,7 +13,7 @@ use super::sample::lerp8;
 use super::Level;
 
 /// `round_half_even(u·256) − 128` split into (i0, i1, w), clamped to the edge.
-fn axis(dst: usize, x: usize, src: usize) -> (usize, usize, i32) {
+pub(crate) fn axis(dst: usize, x: usize, src: usize) -> (usize, usize, i32) {
     // u·256 = (x + 0.5)·src·256/dst, computed exactly in integers: (2x+1)·src·128/dst
     let num = (2 * x as u64 + 1) * src as u64 * 128;
     let q = num / dst as u64;

@@ -22,12 +22,15 @@
 //! Coordinates are already divided by q (`s * (1/q)`). Returned colours are what the
 //! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.
 
+pub mod cube;
 pub mod env;
 pub mod fast;
 pub mod lod;
 pub mod mipmap;
 pub mod sample;
+pub mod shadow;
 pub mod upload;
+pub mod volume;
 pub mod wrap;
 
 use crate::context::state::MAX_TEXTURE_UNITS;
@@ -36,9 +39,11 @@ use env::{Combine, TexEnv};
 use lod::LodParams;
 use std::collections::HashMap;
 
-/// GL_MAX_3D_TEXTURE_SIZE (llvmpipe's value; there are no 3D textures here).
+/// GL_MAX_3D_TEXTURE_SIZE (llvmpipe's value).
 pub const MAX_3D_TEXTURE_SIZE: usize = 2048;
-/// GL_MAX_CUBE_MAP_TEXTURE_SIZE (llvmpipe's value; no cube maps here).
+/// Number of mipmap levels of the largest 3D texture (log2(2048) + 1).
+pub const MAX_3D_LEVELS: usize = 12;
+/// GL_MAX_CUBE_MAP_TEXTURE_SIZE (llvmpipe's value).
 pub const MAX_CUBE_MAP_TEXTURE_SIZE: usize = 16384;
 /// GL_MAX_TEXTURE_SIZE (llvmpipe's 2D limit).
 pub const MAX_TEXTURE_SIZE: usize = 16384;
@@ -56,7 +61,18 @@ pub enum Target {
     Tex1D,
     /// GL_TEXTURE_2D.
     Tex2D,
+    /// GL_TEXTURE_3D.
+    Tex3D,
+    /// GL_TEXTURE_CUBE_MAP.
+    Cube,
 }
+
+/// Number of [`Target`]s (per-target arrays).
+pub const NUM_TARGETS: usize = 4;
+
+/// Every target, in index order.
+pub const ALL_TARGETS: [Target; NUM_TARGETS] =
+    [Target::Tex1D, Target::Tex2D, Target::Tex3D, Target::Cube];
 
 impl Target {
     /// Index into per-target arrays.
@@ -80,6 +96,9 @@ pub enum BaseFormat {
     Rgb,
     /// GL_RGBA.
     Rgba,
+    /// GL_DEPTH_COMPONENT: texels hold the depth value as a little-endian u32 of
+    /// [`Storage::depth_bits`] bits (see [`shadow`]).
+    Depth,
 }
 
 impl BaseFormat {
@@ -92,7 +111,7 @@ impl BaseFormat {
             BaseFormat::LuminanceAlpha => [v[0], v[0], v[0], v[3]],
             BaseFormat::Intensity => [v[0], v[0], v[0], v[0]],
             BaseFormat::Rgb => [v[0], v[1], v[2], one],
-            BaseFormat::Rgba => v,
+            BaseFormat::Rgba | BaseFormat::Depth => v,
         }
     }
 }
@@ -118,9 +137,16 @@ impl Storage {
             B::Intensity => [0, 0, 0, 0, 0, 8],
             B::Rgb => [8, 8, 8, 0, 0, 0],
             B::Rgba => [8, 8, 8, 8, 0, 0],
+            B::Depth => [24, 0, 0, 0, 0, 0],
         };
         Storage { sizes }
     }
+    /// GL_TEXTURE_DEPTH_SIZE of a depth image (kept in the first slot, whose colour size
+    /// a depth image does not have).
+    pub fn depth_bits(&self) -> u8 {
+        self.sizes[0]
+    }
+
     /// Bits kept of each client RGBA component before the base swizzle (luminance and
     /// intensity are taken from red); 8 or more means no quantisation.
     pub fn bits(&self) -> [u32; 4] {
@@ -216,7 +242,7 @@ pub struct SamplerParams {
     pub wrap_s: Wrap,
     /// GL_TEXTURE_WRAP_T.
     pub wrap_t: Wrap,
-    /// GL_TEXTURE_WRAP_R (stored and reported only: there are no 3D textures).
+    /// GL_TEXTURE_WRAP_R (3D textures).
     pub wrap_r: Wrap,
     /// GL_TEXTURE_BORDER_COLOR (clamped to [0,1] when set, GL 1.5).
     pub border_color: [f32; 4],
@@ -236,6 +262,8 @@ pub struct SamplerParams {
     pub max_anisotropy: f32,
     /// GL_TEXTURE_PRIORITY.
     pub priority: f32,
+    /// GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC and GL_DEPTH_TEXTURE_MODE.
+    pub shadow: shadow::ShadowParams,
 }
 
 impl Default for SamplerParams {
@@ -256,6 +284,7 @@ impl Default for SamplerParams {
             generate_mipmap: false,
             max_anisotropy: 1.0,
             priority: 1.0,
+            shadow: shadow::ShadowParams::default(),
         }
     }
 }
@@ -269,16 +298,49 @@ pub struct TextureObject {
     pub levels: Vec<Option<Level>>,
     /// Sampler parameters.
     pub params: SamplerParams,
+    /// Depth of each level of a 3D texture (its texels hold `depth` slices one after the
+    /// other); kept beside the levels so proxies without texels know it too.
+    pub depths: [usize; MAX_LEVELS],
+    /// The other five faces of a cube map (+X is `levels`; then -X, +Y, -Y, +Z, -Z),
+    /// empty for the other targets.
+    pub faces: Vec<Vec<Option<Level>>>,
 }
 
 impl TextureObject {
     /// A new object for `target`.
     pub fn new(target: Option<Target>) -> Self {
-        TextureObject {
+        let mut o = TextureObject {
             target,
             levels: vec![None; MAX_LEVELS],
             params: SamplerParams::default(),
+            depths: [0; MAX_LEVELS],
+            faces: Vec::new(),
+        };
+        if target == Some(Target::Cube) {
+            o.faces = vec![vec![None; MAX_LEVELS]; 5];
         }
+        o
+    }
+
+    /// The level array of cube face `face` (0..6, GL's order); face 0 (and every other
+    /// target) is `levels`.
+    pub fn face_levels(&self, face: usize) -> &[Option<Level>] {
+        if face == 0 || self.faces.len() < face {
+            &self.levels
+        } else {
+            &self.faces[face - 1]
+        }
+    }
+
+    /// [`TextureObject::face_levels`], mutably (creating the faces on first use).
+    pub fn face_levels_mut(&mut self, face: usize) -> &mut Vec<Option<Level>> {
+        if face == 0 {
+            return &mut self.levels;
+        }
+        if self.faces.len() < 5 {
+            self.faces = vec![vec![None; MAX_LEVELS]; 5];
+        }
+        &mut self.faces[face - 1]
     }
 
     /// The image of `level`, if specified with a non-zero size.
@@ -289,6 +351,15 @@ impl TextureObject {
     /// The range of levels sampling uses, `(base, last)`, when the texture is complete
     /// (GL 1.5 §3.8.10); `None` when incomplete. `last` is Mesa's `_MaxLevel`.
     pub fn complete_range(&self) -> Option<(usize, usize)> {
+        match self.target {
+            Some(Target::Tex3D) => volume::complete_range(self),
+            Some(Target::Cube) => cube::complete_range(self),
+            _ => self.complete_range_2d(),
+        }
+    }
+
+    /// [`TextureObject::complete_range`] of a 1D or 2D texture.
+    pub fn complete_range_2d(&self) -> Option<(usize, usize)> {
         let p = &self.params;
         if p.base_level < 0 || p.base_level > p.max_level || p.base_level as usize >= MAX_LEVELS {
             return None;
@@ -326,8 +397,12 @@ pub struct TexUnit {
     pub enabled_1d: bool,
     /// glEnable(GL_TEXTURE_2D) on this unit.
     pub enabled_2d: bool,
+    /// glEnable(GL_TEXTURE_3D) on this unit.
+    pub enabled_3d: bool,
+    /// glEnable(GL_TEXTURE_CUBE_MAP) on this unit.
+    pub enabled_cube: bool,
     /// Bound texture names per target (0 = the default texture).
-    pub bound: [u32; 2],
+    pub bound: [u32; NUM_TARGETS],
     /// Texture environment (glTexEnv).
     pub env: TexEnv,
     /// GL_TEXTURE_LOD_BIAS of the texture environment (GL_TEXTURE_FILTER_CONTROL).
@@ -339,22 +414,11 @@ impl Default for TexUnit {
         TexUnit {
             enabled_1d: false,
             enabled_2d: false,
-            bound: [0; 2],
+            enabled_3d: false,
+            enabled_cube: false,
+            bound: [0; NUM_TARGETS],
             env: TexEnv::default(),
             lod_bias: 0.0,
-        }
-    }
-}
-
-impl TexUnit {
-    /// The target texturing uses on this unit (2D wins over 1D, GL 1.5 §3.8.15).
-    pub fn active_target(&self) -> Option<Target> {
-        if self.enabled_2d {
-            Some(Target::Tex2D)
-        } else if self.enabled_1d {
-            Some(Target::Tex1D)
-        } else {
-            None
         }
     }
 }
@@ -364,14 +428,14 @@ impl TexUnit {
 pub struct TextureState {
     /// Named objects (name > 0).
     pub objects: HashMap<u32, TextureObject>,
-    /// The default textures (name 0) of GL_TEXTURE_1D and GL_TEXTURE_2D.
-    pub defaults: [TextureObject; 2],
+    /// The default textures (name 0) of each target.
+    pub defaults: [TextureObject; NUM_TARGETS],
     /// The texture units.
     pub units: [TexUnit; MAX_TEXTURE_UNITS],
     /// The next name glGenTextures tries.
     pub next_name: u32,
-    /// The proxy textures (GL_PROXY_TEXTURE_1D/2D): level sizes only, no texels.
-    pub proxies: [TextureObject; 2],
+    /// The proxy textures (GL_PROXY_TEXTURE_1D/2D/3D/CUBE_MAP): level sizes only.
+    pub proxies: [TextureObject; NUM_TARGETS],
     /// The active texture unit when it is one of GL_TEXTURE8..31: Mesa accepts units up to
     /// its combined image-unit limit (32), which have no fixed-function state here. The
     /// context's `active_texture` then keeps the last unit below 8 so nothing indexes out
@@ -384,16 +448,10 @@ impl Default for TextureState {
     fn default() -> Self {
         TextureState {
             objects: HashMap::new(),
-            defaults: [
-                TextureObject::new(Some(Target::Tex1D)),
-                TextureObject::new(Some(Target::Tex2D)),
-            ],
+            defaults: ALL_TARGETS.map(|t| TextureObject::new(Some(t))),
             units: std::array::from_fn(|_| TexUnit::default()),
             next_name: 1,
-            proxies: [
-                TextureObject::new(Some(Target::Tex1D)),
-                TextureObject::new(Some(Target::Tex2D)),
-            ],
+            proxies: ALL_TARGETS.map(|t| TextureObject::new(Some(t))),
             high_unit: None,
         }
     }
@@ -443,7 +501,8 @@ impl TextureState {
                 Some(Some(t)) if t != target => return Err(GlError::InvalidOperation),
                 Some(Some(_)) => {}
                 Some(None) => {
-                    self.objects.get_mut(&name).expect("present").target = Some(target);
+                    *self.objects.get_mut(&name).expect("present") =
+                        TextureObject::new(Some(target));
                 }
                 None => {
                     self.objects.insert(name, TextureObject::new(Some(target)));
@@ -478,23 +537,40 @@ impl TextureState {
     /// Whether `unit` has an enabled target with a complete texture (`unit_plan` is
     /// `Some`).
     fn unit_active(&self, unit: usize) -> bool {
-        self.units.get(unit).is_some_and(|u| {
-            u.active_target()
-                .is_some_and(|t| self.bound(unit, t).complete_range().is_some())
-        })
+        self.current_target(unit).is_some()
+    }
+
+    /// The target `unit` samples: the first enabled target, in the order cube map, 3D, 2D,
+    /// 1D, whose texture is complete (Mesa's `update_ff_texture_state` passes over an
+    /// incomplete one to the next enabled target).
+    pub fn current_target(&self, unit: usize) -> Option<Target> {
+        let u = self.units.get(unit)?;
+        [
+            (u.enabled_cube, Target::Cube),
+            (u.enabled_3d, Target::Tex3D),
+            (u.enabled_2d, Target::Tex2D),
+            (u.enabled_1d, Target::Tex1D),
+        ]
+        .into_iter()
+        .find(|&(on, t)| on && self.bound(unit, t).complete_range().is_some())
+        .map(|(_, t)| t)
     }
 
     /// The sampling plan of `unit` for one draw; `None` when the unit is disabled or its
     /// texture incomplete.
     pub fn unit_plan(&self, unit: usize) -> Option<UnitPlan<'_>> {
         let u = self.units.get(unit)?;
-        let target = u.active_target()?;
+        let target = self.current_target(unit)?;
         let obj = self.bound(unit, target);
         let (first, last) = obj.complete_range()?;
         let p = &obj.params;
         let base_img = obj.level(first)?;
         let base = base_img.base;
-        let dims = if target == Target::Tex2D { 2 } else { 1 };
+        let dims = match target {
+            Target::Tex1D => 1,
+            Target::Tex3D => 3,
+            _ => 2,
+        };
         // GL_CLAMP with nearest-only filtering never reads the border: llvmpipe treats it as
         // CLAMP_TO_EDGE (derived sampler state).
         let nearest_only = p.min_filter == Filter::Nearest && p.mag_filter == Filter::Nearest;
@@ -505,23 +581,51 @@ impl TextureState {
                 w
             }
         };
+        // Cube maps: every wrap mode becomes CLAMP_TO_EDGE (llvmpipe's derived state).
+        let fix = |w: Wrap| {
+            if target == Target::Cube {
+                Wrap::ClampToEdge
+            } else {
+                fix(w)
+            }
+        };
         let wrap_s = fix(p.wrap_s);
-        let wrap_t = if dims == 2 {
+        let wrap_t = if dims >= 2 {
             fix(p.wrap_t)
         } else {
             Wrap::Repeat
         };
+        let wrap_r = fix(p.wrap_r);
         let aniso = p.max_anisotropy > 1.0;
-        let aos = wrap_s.is_simple() && wrap_t.is_simple() && !aniso;
+        let depth = (base == BaseFormat::Depth).then(|| shadow::DepthPlan {
+            func: p.shadow.compare.then_some(p.shadow.func),
+            mode: p.shadow.depth_mode,
+            bits: base_img.storage.depth_bits(),
+        });
+        // a depth texture is always sampled on the float path
+        let aos = depth.is_none()
+            && wrap_s.is_simple()
+            && wrap_t.is_simple()
+            && (dims < 3 || wrap_r.is_simple())
+            && !aniso;
         let lod = LodParams::new(p, u.lod_bias, dims == 1);
         let border = base.swizzle(p.border_color, 0.0, 1.0);
         let needs_lod = !(p.min_filter == p.mag_filter && p.mip_filter == MipFilter::None);
         // llvmpipe chooses the REPEAT code from the resource's level-0 size.
         let l0 = obj.level(0).filter(|l| l.base == base).unwrap_or(base_img);
         let pot = [l0.width.is_power_of_two(), l0.height.is_power_of_two()];
-        let mut env = Combine::derive(&u.env, base);
+        let kind = match target {
+            Target::Tex3D => ExtKind::Volume(volume::VolumePlan {
+                wrap_r,
+                pot_r: obj.depths[0].is_power_of_two() || obj.level(0).is_none(),
+                depths: &obj.depths,
+            }),
+            Target::Cube => ExtKind::Cube(std::array::from_fn(|f| obj.face_levels(f))),
+            _ => ExtKind::Flat,
+        };
+        let mut env = Combine::derive(&u.env, depth.map_or(base, |d| d.mode.base()));
         env.canonicalise(unit, !(0..unit).any(|j| self.unit_active(j)));
-        let fast = if fast::enabled() && aos && dims == 2 {
+        let fast = if fast::enabled() && aos && dims == 2 && matches!(kind, ExtKind::Flat) {
             fast::FastEnv::classify(&env)
         } else {
             None
@@ -546,8 +650,30 @@ impl TextureState {
             env,
             fast,
             fma: sample::has_fma(),
+            ext: PlanExt { kind, depth },
         })
     }
+}
+
+/// What a unit's plan adds for the targets beyond 1D/2D.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PlanExt<'a> {
+    /// The target's sampling kind.
+    pub kind: ExtKind<'a>,
+    /// A depth texture's comparison and mode.
+    pub depth: Option<shadow::DepthPlan>,
+}
+
+/// The sampling kind of a unit's target.
+#[derive(Clone, Copy, Debug, Default)]
+pub enum ExtKind<'a> {
+    /// GL_TEXTURE_1D / GL_TEXTURE_2D: (s, t) only.
+    #[default]
+    Flat,
+    /// GL_TEXTURE_3D.
+    Volume(volume::VolumePlan<'a>),
+    /// GL_TEXTURE_CUBE_MAP: the six faces' levels.
+    Cube(cube::Faces<'a>),
 }
 
 /// Everything sampling and the environment of one unit need for one draw.
@@ -592,6 +718,8 @@ pub struct UnitPlan<'a> {
     pub fast: Option<fast::FastEnv>,
     /// Whether float lerps fuse (llvmpipe uses `llvm.fmuladd`, fused on FMA CPUs).
     pub fma: bool,
+    /// 3D and cube-map sampling.
+    pub ext: PlanExt<'a>,
 }
 
 impl UnitPlan<'_> {
@@ -627,6 +755,25 @@ impl UnitPlan<'_> {
             out[i] = self.sample_one(s[i], t[i], lod);
         }
         out
+    }
+
+    /// Whether sampling reads the r coordinate (3D and cube-map textures).
+    #[inline(always)]
+    pub fn needs_r(&self) -> bool {
+        !matches!(self.ext.kind, ExtKind::Flat) || self.ext.depth.is_some()
+    }
+
+    /// [`UnitPlan::sample_quad`] with r (3D textures, cube maps).
+    #[inline(always)]
+    pub fn sample_quad_str(&self, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> [[f32; 4]; 4] {
+        if let (Some(d), ExtKind::Flat) = (&self.ext.depth, &self.ext.kind) {
+            return shadow::sample_quad(self, d, s, t, r);
+        }
+        match &self.ext.kind {
+            ExtKind::Flat => self.sample_quad(s, t),
+            ExtKind::Volume(v) => volume::sample_quad(self, v, s, t, r),
+            ExtKind::Cube(f) => cube::sample_quad(self, f, s, t, r),
+        }
     }
 
     /// Samples one coordinate with a given LOD.

@@ -11,7 +11,7 @@
 
 use super::lod::{self, Lod};
 use super::wrap;
-use super::{Filter, MipFilter, UnitPlan};
+use super::{Filter, Level, MipFilter, UnitPlan};
 
 /// f32(1/255), the unorm8 → float factor.
 pub const INV_255: f32 = 1.0 / 255.0;
@@ -45,17 +45,17 @@ pub fn lerpf(fma: bool, w: f32, a: f32, b: f32) -> f32 {
 }
 
 #[inline(always)]
-fn lerp8x4(a: [u8; 4], b: [u8; 4], w: i32) -> [u8; 4] {
+pub(crate) fn lerp8x4(a: [u8; 4], b: [u8; 4], w: i32) -> [u8; 4] {
     std::array::from_fn(|c| lerp8(a[c], b[c], w))
 }
 
 #[inline(always)]
-fn lerpfx4(fma: bool, w: f32, a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
+pub(crate) fn lerpfx4(fma: bool, w: f32, a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
     std::array::from_fn(|c| lerpf(fma, w, a[c], b[c]))
 }
 
 #[inline(always)]
-fn to_float(v: [u8; 4]) -> [f32; 4] {
+pub(crate) fn to_float(v: [u8; 4]) -> [f32; 4] {
     v.map(|u| u as f32 * INV_255)
 }
 
@@ -87,8 +87,7 @@ pub fn select_levels(p: &UnitPlan<'_>, lod: Lod) -> (Filter, usize, usize, f32) 
 
 /// One level, AoS (8-bit) filtering.
 #[inline(always)]
-fn aos_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) -> [u8; 4] {
-    let img = p.image(level);
+fn aos_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> [u8; 4] {
     let (w, h) = (img.width, img.height);
     match filter {
         Filter::Nearest => {
@@ -115,8 +114,7 @@ fn aos_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) ->
 
 /// One level, SoA (float) filtering with the border colour.
 #[inline(always)]
-fn soa_filter(p: &UnitPlan<'_>, level: usize, filter: Filter, s: f32, t: f32) -> [f32; 4] {
-    let img = p.image(level);
+fn soa_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> [f32; 4] {
     let (w, h) = (img.width, img.height);
     let fetch = |x: Option<usize>, y: Option<usize>| match (x, y) {
         (Some(x), Some(y)) => to_float(img.texel(x, y)),
@@ -153,25 +151,34 @@ pub fn sample(p: &UnitPlan<'_>, s: f32, t: f32, lod: Lod) -> [f32; 4] {
 
 /// Samples one coordinate pair with the levels [`select_levels`] chose.
 #[inline(always)]
-fn sample_levels(
+fn sample_levels(p: &UnitPlan<'_>, sel: (Filter, usize, usize, f32), s: f32, t: f32) -> [f32; 4] {
+    sample_levels_in(p, p.levels, sel, s, t)
+}
+
+/// [`sample_levels`] reading the images of `levels` (a cube map face) instead of the
+/// plan's own.
+#[inline(always)]
+pub fn sample_levels_in(
     p: &UnitPlan<'_>,
+    levels: &[Option<Level>],
     (filter, l0, l1, frac): (Filter, usize, usize, f32),
     s: f32,
     t: f32,
 ) -> [f32; 4] {
+    let img = |l: usize| levels[l].as_ref().expect("complete texture");
     if p.aos {
-        let a = aos_filter(p, l0, filter, s, t);
+        let a = aos_filter(p, img(l0), filter, s, t);
         if l1 == l0 {
             return to_float(a);
         }
-        let b = aos_filter(p, l1, filter, s, t);
+        let b = aos_filter(p, img(l1), filter, s, t);
         to_float(lerp8x4(a, b, (frac * 256.0) as i32))
     } else {
-        let a = soa_filter(p, l0, filter, s, t);
+        let a = soa_filter(p, img(l0), filter, s, t);
         if l1 == l0 {
             return a;
         }
-        let b = soa_filter(p, l1, filter, s, t);
+        let b = soa_filter(p, img(l1), filter, s, t);
         lerpfx4(p.fma, frac, a, b)
     }
 }

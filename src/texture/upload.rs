@@ -18,6 +18,7 @@ use super::{BaseFormat, Level, Storage};
 use crate::context::state::PixelStore;
 use crate::context::{GlError, GlResult};
 use crate::ffi::enums::*;
+use crate::ffi::glext_enums::{GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32};
 
 /// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
 pub fn base_format(internal: i32) -> Option<BaseFormat> {
@@ -42,6 +43,9 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => B::Alpha,
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => {
             B::Intensity
+        }
+        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT16 | GL_DEPTH_COMPONENT24 | GL_DEPTH_COMPONENT32 => {
+            B::Depth
         }
         _ => return None,
     })
@@ -212,6 +216,8 @@ pub struct ClientFormat {
     comps: &'static [usize],
     ty: Ty,
     depth: bool,
+    /// The GL type token.
+    pub gl_type: u32,
 }
 
 impl ClientFormat {
@@ -229,6 +235,7 @@ impl ClientFormat {
             comps,
             ty: t,
             depth: format == GL_DEPTH_COMPONENT,
+            gl_type: ty,
         })
     }
 
@@ -431,6 +438,8 @@ fn readback_rgba(base: BaseFormat, t: [u8; 4]) -> [u8; 4] {
         BaseFormat::LuminanceAlpha => [t[0], 0, 0, t[3]],
         BaseFormat::Rgb => [t[0], t[1], t[2], 255],
         BaseFormat::Rgba => t,
+        // depth images are read back by `shadow::pack`
+        BaseFormat::Depth => [0, 0, 0, 255],
     }
 }
 

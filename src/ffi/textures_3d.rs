@@ -1,0 +1,382 @@
+//! GL_TEXTURE_3D images (GL 1.2, GL_EXT_texture3D): glTexImage3D, glTexSubImage3D,
+//! glCopyTexSubImage3D. A 3D image is unpacked slice by slice: slice z starts
+//! `(SKIP_IMAGES + z)·IMAGE_HEIGHT` rows after the first (IMAGE_HEIGHT 0 = the height),
+//! GL 1.5 §3.8.1. Borders are stripped as for 1D/2D images.
+#![allow(non_snake_case)]
+
+use super::textures::{check_level, compiling, image_target, maybe_generate, object_mut, read_fb};
+use super::types::*;
+use super::{non_negative, with_ctx, with_ctx_list};
+use crate::context::state::PixelStore;
+use crate::context::{Context, GlError, GlResult};
+use crate::texture::upload::{self, ClientFormat, Layout};
+use crate::texture::{BaseFormat, Level, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
+use libc::c_void;
+
+/// The unpack state of slice `z` of a 3D client image of `h` rows per image.
+fn slice_store(ps: &PixelStore, h: usize, z: usize) -> PixelStore {
+    let rows = if ps.image_height > 0 {
+        ps.image_height as usize
+    } else {
+        h
+    };
+    let mut s = *ps;
+    s.skip_rows += ((ps.skip_images.max(0) as usize + z) * rows) as i32;
+    s.skip_images = 0;
+    s
+}
+
+/// Unpacks a `w x h x d` client image into slice-major texels.
+///
+/// # Safety
+/// `data` (when not null) must hold the described image.
+#[allow(clippy::too_many_arguments)]
+unsafe fn unpack_3d(
+    ps: &PixelStore,
+    cf: &ClientFormat,
+    img: (&Level, usize, usize, usize),
+    data: *const u8,
+) -> Vec<[u8; 4]> {
+    let (lv, w, h, d) = img;
+    let mut out = Vec::with_capacity(w * h * d);
+    for z in 0..d {
+        let s = slice_store(ps, h, z);
+        // SAFETY: forwarded caller contract (slice z lies inside the image).
+        out.extend(unsafe { upload::unpack(&s, cf, lv.base, lv.storage, w, h, data) });
+    }
+    out
+}
+
+/// Packs every slice of a 3D level for glGetTexImage.
+///
+/// # Safety
+/// `dst` must be writable for the packed image.
+pub(crate) unsafe fn pack_3d(
+    ps: &PixelStore,
+    cf: &ClientFormat,
+    img: &Level,
+    d: usize,
+    dst: *mut c_void,
+) {
+    if dst.is_null() {
+        return;
+    }
+    let n = img.width * img.height;
+    for z in 0..d {
+        let slice = Level {
+            width: img.width,
+            height: img.height,
+            internal_format: img.internal_format,
+            base: img.base,
+            storage: img.storage,
+            texels: img.texels[z * n..(z + 1) * n].to_vec(),
+        };
+        let s = slice_store(ps, img.height, z);
+        // SAFETY: forwarded caller contract.
+        unsafe { upload::pack(&s, cf, &slice, dst as *mut u8) };
+    }
+}
+
+/// Validated 3D sizes after border stripping.
+fn size_3d(
+    level: usize,
+    w: GLsizei,
+    h: GLsizei,
+    d: GLsizei,
+    border: GLint,
+) -> GlResult<(usize, usize, usize)> {
+    if border != 0 && border != 1 {
+        return Err(GlError::InvalidValue);
+    }
+    let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
+    let b = 2 * border as usize;
+    if w < b || h < b || d < b || level >= MAX_3D_LEVELS {
+        return Err(GlError::InvalidValue);
+    }
+    let max = (MAX_3D_TEXTURE_SIZE >> level).max(1);
+    let (w, h, d) = (w - b, h - b, d - b);
+    if w > max || h > max || d > max {
+        return Err(GlError::InvalidValue);
+    }
+    Ok((w, h, d))
+}
+
+/// glTexImage3D's work.
+///
+/// # Safety
+/// `data` (when not null) must hold the described image under `unpack`.
+#[allow(clippy::too_many_arguments)]
+unsafe fn tex_image_3d(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    (internal, w, h, d, border): (GLint, GLsizei, GLsizei, GLsizei, GLint),
+    (format, ty): (GLenum, GLenum),
+    data: *const c_void,
+    unpack: PixelStore,
+) -> GlResult<()> {
+    let (t, proxy, _) = image_target(target)?;
+    if t != Target::Tex3D {
+        return Err(GlError::InvalidEnum);
+    }
+    let cf = ClientFormat::new(format, ty)?;
+    let level = check_level(level)?;
+    let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
+    // Mesa: no 3D depth textures; depth data for a colour image is an error too
+    if cf.is_depth() || base == BaseFormat::Depth {
+        return Err(GlError::InvalidOperation);
+    }
+    c.check_outside_begin()?;
+    let storage = upload::choose_storage(internal, base, format, ty);
+    let size = size_3d(level, w, h, d, border);
+    let header = |w, h| Level {
+        width: w,
+        height: h,
+        internal_format: internal as u32,
+        base,
+        storage,
+        texels: Vec::new(),
+    };
+    if proxy {
+        let obj = object_mut(c, t, true);
+        (obj.levels[level], obj.depths[level]) = match size {
+            Ok((w, h, d)) => (Some(header(w, h)), d),
+            Err(_) => (None, 0),
+        };
+        return Ok(());
+    }
+    let (tw, th, td) = size?;
+    let mut ps = unpack;
+    if border == 1 {
+        if ps.row_length == 0 {
+            ps.row_length = (tw + 2) as i32;
+        }
+        if ps.image_height == 0 {
+            ps.image_height = (th + 2) as i32;
+        }
+        ps.skip_pixels += 1;
+        ps.skip_rows += 1;
+        ps.skip_images += 1;
+    }
+    let mut img = header(tw, th);
+    // SAFETY: forwarded caller contract.
+    img.texels = unsafe { unpack_3d(&ps, &cf, (&img, tw, th, td), data as *const u8) };
+    let obj = object_mut(c, t, false);
+    obj.levels[level] = Some(img);
+    obj.depths[level] = td;
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+/// glTexSubImage3D's work.
+///
+/// # Safety
+/// `data` must hold the described image under `unpack`.
+#[allow(clippy::too_many_arguments)]
+unsafe fn tex_sub_image_3d(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    off: [GLint; 3],
+    (w, h, d): (GLsizei, GLsizei, GLsizei),
+    (format, ty): (GLenum, GLenum),
+    data: *const c_void,
+    unpack: PixelStore,
+) -> GlResult<()> {
+    if !matches!(image_target(target)?, (Target::Tex3D, false, _)) {
+        return Err(GlError::InvalidEnum);
+    }
+    let cf = ClientFormat::new(format, ty)?;
+    if cf.is_depth() {
+        return Err(GlError::InvalidOperation);
+    }
+    let level = check_level(level)?;
+    let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
+    c.check_outside_begin()?;
+    let obj = object_mut(c, Target::Tex3D, false);
+    let depth = obj.depths[level];
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
+    let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
+    if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], d, depth)) {
+        return Err(GlError::InvalidValue);
+    }
+    // SAFETY: forwarded caller contract.
+    let texels = unsafe { unpack_3d(&unpack, &cf, (img, w, h, d), data as *const u8) };
+    let [x0, y0, z0] = off.map(|o| o as usize);
+    for z in 0..d {
+        for y in 0..h {
+            let dst = ((z0 + z) * img.height + y0 + y) * img.width + x0;
+            let src = (z * h + y) * w;
+            img.texels[dst..dst + w].copy_from_slice(&texels[src..src + w]);
+        }
+    }
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+/// glCopyTexSubImage3D's work: a framebuffer rectangle into slice `zoff`.
+#[allow(clippy::too_many_arguments)]
+fn copy_tex_sub_image_3d(
+    c: &mut Context,
+    target: GLenum,
+    level: GLint,
+    off: [GLint; 3],
+    (x, y): (GLint, GLint),
+    (w, h): (GLsizei, GLsizei),
+) -> GlResult<()> {
+    if !matches!(image_target(target)?, (Target::Tex3D, false, _)) {
+        return Err(GlError::InvalidEnum);
+    }
+    let level = check_level(level)?;
+    let (w, h) = (non_negative(w)?, non_negative(h)?);
+    c.check_outside_begin()?;
+    let src = read_fb(c, x, y, w, h);
+    let obj = object_mut(c, Target::Tex3D, false);
+    let depth = obj.depths[level];
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
+    let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
+    if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], 1, depth)) {
+        return Err(GlError::InvalidValue);
+    }
+    let [x0, y0, z0] = off.map(|o| o as usize);
+    for row in 0..h {
+        for col in 0..w {
+            let dst = ((z0 * img.height) + y0 + row) * img.width + x0 + col;
+            img.texels[dst] = upload::to_texel(
+                img.base,
+                upload::quantise_rgba(src[row * w + col], &img.storage),
+            );
+        }
+    }
+    maybe_generate(obj, level);
+    Ok(())
+}
+
+/// Copies a 3D client image for a display list (read under the current unpack state).
+///
+/// # Safety
+/// `data` (when not null) must hold the described image.
+unsafe fn read_client_3d(
+    (format, ty): (GLenum, GLenum),
+    (w, h, d): (GLsizei, GLsizei, GLsizei),
+    data: *const c_void,
+) -> (Option<Vec<u8>>, PixelStore) {
+    let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
+    let bytes = (|| {
+        let cf = ClientFormat::new(format, ty).ok()?;
+        let (w, h, d) = (
+            usize::try_from(w).ok()?,
+            usize::try_from(h).ok()?,
+            usize::try_from(d).ok()?,
+        );
+        let lim = MAX_3D_TEXTURE_SIZE + 2;
+        if data.is_null() || w > lim || h > lim || d > lim || w == 0 || h == 0 || d == 0 {
+            return None;
+        }
+        let last = slice_store(&unpack, h, d - 1);
+        let span = Layout::new(&last, w, &cf).span(w, h);
+        // SAFETY: the caller promises the described image is readable.
+        Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
+    })();
+    (bytes, unpack)
+}
+
+/// The address of a display-list copy (null when there is none).
+fn copy_ptr(b: &Option<Vec<u8>>) -> *const c_void {
+    b.as_ref()
+        .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
+}
+
+/// glTexImage3D.
+///
+/// # Safety
+/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexImage3D(
+    target: GLenum,
+    level: GLint,
+    internalFormat: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let sizes = (internalFormat, width, height, depth, border);
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let (bytes, unpack) =
+            unsafe { read_client_3d((format, type_), (width, height, depth), pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let p = copy_ptr(&bytes);
+            tex_image_3d(c, target, level, sizes, (format, type_), p, unpack)
+        });
+    }
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        let u = c.state.unpack;
+        tex_image_3d(c, target, level, sizes, (format, type_), pixels, u)
+    })
+}
+
+/// glTexSubImage3D.
+///
+/// # Safety
+/// `pixels` must hold the image described by the arguments and unpack state.
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage3D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let off = [xoffset, yoffset, zoffset];
+    let size = (width, height, depth);
+    if compiling() {
+        // SAFETY: forwarded caller contract.
+        let (bytes, unpack) = unsafe { read_client_3d((format, type_), size, pixels) };
+        // SAFETY: the copy holds the described image.
+        return with_ctx_list(move |c| unsafe {
+            let p = copy_ptr(&bytes);
+            tex_sub_image_3d(c, target, level, off, size, (format, type_), p, unpack)
+        });
+    }
+    // SAFETY: forwarded caller contract.
+    with_ctx(|c| unsafe {
+        let u = c.state.unpack;
+        tex_sub_image_3d(c, target, level, off, size, (format, type_), pixels, u)
+    })
+}
+
+/// glCopyTexSubImage3D.
+#[no_mangle]
+pub extern "C" fn glCopyTexSubImage3D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    with_ctx_list(move |c| {
+        let off = [xoffset, yoffset, zoffset];
+        copy_tex_sub_image_3d(c, target, level, off, (x, y), (width, height))
+    })
+}

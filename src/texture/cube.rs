@@ -1,0 +1,191 @@
+//! GL_TEXTURE_CUBE_MAP: completeness, face selection and sampling as llvmpipe does them
+//! (`lp_build_cube_lookup` in `lp_bld_sample.c`, llvmpipe-rules §9.1).
+//!
+//! - Faces are numbered as gallium does: +X, −X, +Y, −Y, +Z, −Z (GL's order).
+//! - The major axis is z when `|r| ≥ max(|s|, |t|)`, else x when `|s| > |t|`, else y; the
+//!   face is the axis plus the sign bit of the major coordinate. The minor coordinates
+//!   are mirrored per the spec's table by flipping sign bits.
+//! - Without a LOD: `s' = sc·(0.5/|ma|) + 0.5` (0 when ma = 0). With a LOD
+//!   (`need_derivs`): `s' = sc·|0.5·(1/ma)| + 0.5`, and the derivatives of the projected
+//!   coordinates are `(d.sc − (d.ma·(1/ma))·sc)·(0.5·(1/ma))`, from the pixel's own
+//!   row differences; the quad's LOD comes from its top-left pixel (per-quad LOD), with
+//!   `rho² = max((W·dsdx)² + (W·dtdx)², …)` of the face size.
+//! - A GL 1.x context does not enable GL_TEXTURE_CUBE_MAP_SEAMLESS, so each face is
+//!   sampled on its own with every wrap mode forced to CLAMP_TO_EDGE (llvmpipe does this
+//!   for cube maps whatever the program set), on the 8-bit AoS path for 8-bit formats.
+
+use super::lod::{self, Lod};
+use super::sample::{sample_levels_in, select_levels};
+use super::{Level, MipFilter, TextureObject, UnitPlan, MAX_LEVELS};
+
+/// The six level arrays of a cube map, in face order.
+pub type Faces<'a> = [&'a [Option<Level>]; 6];
+
+/// `(base, last)` of a cube-complete texture, `None` otherwise: every face has a square
+/// base image of the same size and format and (when mipmapping) a full chain.
+pub fn complete_range(obj: &TextureObject) -> Option<(usize, usize)> {
+    let p = &obj.params;
+    if p.base_level < 0 || p.base_level > p.max_level || p.base_level as usize >= MAX_LEVELS {
+        return None;
+    }
+    let base = p.base_level as usize;
+    let b = obj.face_levels(0).get(base)?.as_ref()?;
+    if b.width == 0 || b.width != b.height {
+        return None;
+    }
+    let log2 = usize::BITS - 1 - b.width.leading_zeros();
+    let last = (base + log2 as usize)
+        .min(p.max_level as usize)
+        .min(MAX_LEVELS - 1);
+    let last = if p.mip_filter == MipFilter::None {
+        base
+    } else {
+        last
+    };
+    for face in 0..6 {
+        let levels = obj.face_levels(face);
+        for l in base..=last {
+            let img = levels.get(l)?.as_ref()?;
+            let size = (b.width >> (l - base)).max(1);
+            if img.width != size || img.height != size || img.base != b.base {
+                return None;
+            }
+        }
+    }
+    Some((base, last))
+}
+
+/// The sign bit of `x` as a mask.
+#[inline(always)]
+fn sign(x: f32) -> u32 {
+    x.to_bits() & 0x8000_0000
+}
+
+/// `x` with its sign bit flipped by `mask`.
+#[inline(always)]
+fn flip(x: f32, mask: u32) -> f32 {
+    f32::from_bits(x.to_bits() ^ mask)
+}
+
+/// Major-axis choice of one direction: 0 = x, 1 = y, 2 = z.
+#[inline(always)]
+fn major(s: f32, t: f32, r: f32) -> usize {
+    let (a_s, a_t, a_r) = (s.abs(), t.abs(), r.abs());
+    if a_r >= a_s.max(a_t) {
+        2
+    } else if a_s > a_t {
+        0
+    } else {
+        1
+    }
+}
+
+/// The face and the mirrored, unprojected minor coordinates `(sc, tc)` of a direction
+/// (or of its derivative, mirrored with the direction's own signs), and `ma`.
+#[inline(always)]
+fn minor(axis: usize, ma_sign: u32, v: [f32; 3]) -> (f32, f32) {
+    const NEG: u32 = 0x8000_0000;
+    match axis {
+        0 => (flip(v[2], ma_sign ^ NEG), flip(v[1], NEG)),
+        1 => (v[0], flip(v[2], ma_sign)),
+        _ => (flip(v[0], ma_sign), flip(v[1], NEG)),
+    }
+}
+
+/// Face index and face coordinates of one pixel; `lod` selects the `need_derivs`
+/// projection.
+#[inline(always)]
+fn project(s: f32, t: f32, r: f32, lod: bool) -> (usize, f32, f32) {
+    let axis = major(s, t, r);
+    let ma = [s, t, r][axis];
+    let ms = sign(ma);
+    let (sc, tc) = minor(axis, ms, [s, t, r]);
+    let k = if lod {
+        (0.5 * (1.0 / ma)).abs()
+    } else {
+        let a = ma.abs();
+        if a > 0.0 {
+            0.5 / a
+        } else {
+            0.0
+        }
+    };
+    let face = 2 * axis + (ms >> 31) as usize;
+    (face, sc * k + 0.5, tc * k + 0.5)
+}
+
+/// The quad's LOD from its top-left pixel, as `lp_build_cube_lookup` derives it.
+#[inline(always)]
+fn quad_lod(p: &UnitPlan<'_>, size: f32, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> Lod {
+    let v = [s[0], t[0], r[0]];
+    let ddx = [s[1] - s[0], t[1] - t[0], r[1] - r[0]];
+    let ddy = [s[2] - s[0], t[2] - t[0], r[2] - r[0]];
+    let axis = major(v[0], v[1], v[2]);
+    let ma = v[axis];
+    let ms = sign(ma);
+    let ima = 1.0 / ma;
+    let imahalf = 0.5 * ima;
+    let (sc, tc) = minor(axis, ms, v);
+    let deriv = |d: [f32; 3]| {
+        let (dsc, dtc) = minor(axis, ms, d);
+        let m = d[axis] * ima;
+        ((dsc - m * sc) * imahalf, (dtc - m * tc) * imahalf)
+    };
+    let sq = |(a, b): (f32, f32)| {
+        let (a, b) = (size * a, size * b);
+        a * a + b * b
+    };
+    let rho = sq(deriv(ddx)).max(sq(deriv(ddy)));
+    lod::from_rho(&p.lod, p.mip_filter, true, rho)
+}
+
+/// Samples a 2x2 quad (TL, TR, BL, BR) of direction vectors.
+#[inline(always)]
+pub fn sample_quad(
+    p: &UnitPlan<'_>,
+    faces: &Faces<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: [f32; 4],
+) -> [[f32; 4]; 4] {
+    let need_derivs = p.needs_lod && !p.lod.min_max_equal;
+    let lod = if need_derivs {
+        quad_lod(p, p.image(p.first).width as f32, s, t, r)
+    } else if p.needs_lod {
+        lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
+    } else {
+        Lod::MAG
+    };
+    let sel = select_levels(p, lod);
+    std::array::from_fn(|i| {
+        let (face, fs, ft) = project(s[i], t[i], r[i], need_derivs);
+        sample_levels_in(p, faces[face], sel, fs, ft)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn faces_follow_the_spec_table() {
+        // +X: sc = -rz, tc = -ry
+        assert_eq!(project(1.0, 0.5, 0.25, false), (0, 0.375, 0.25));
+        // -X: sc = +rz, tc = -ry
+        assert_eq!(project(-1.0, 0.5, 0.25, false), (1, 0.625, 0.25));
+        // +Y: sc = rx, tc = rz
+        assert_eq!(project(0.5, 1.0, 0.25, false), (2, 0.75, 0.625));
+        // -Y: sc = rx, tc = -rz
+        assert_eq!(project(0.5, -1.0, 0.25, false), (3, 0.75, 0.375));
+        // +Z: sc = rx, tc = -ry
+        assert_eq!(project(0.5, 0.25, 1.0, false), (4, 0.75, 0.375));
+        // -Z: sc = -rx, tc = -ry
+        assert_eq!(project(0.5, 0.25, -1.0, false), (5, 0.25, 0.375));
+    }
+
+    #[test]
+    fn ties_prefer_z_then_y() {
+        assert_eq!(project(1.0, 1.0, 1.0, false).0, 4);
+        assert_eq!(project(1.0, 1.0, 0.5, false).0, 2);
+    }
+}

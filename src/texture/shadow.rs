@@ -1,0 +1,453 @@
+//! Depth textures (GL_ARB_depth_texture, GL_ARB_shadow): storage, upload, readback and
+//! sampling with the depth comparison, as Mesa 22.3 and llvmpipe do them.
+//!
+//! # Storage
+//! A depth texel is the stored depth value `z` of `bits` bits as a little-endian u32 in
+//! the RGBA8 slot. Mesa picks Z16 for GL_DEPTH_COMPONENT16 (or unsized with
+//! GL_UNSIGNED_SHORT data), Z32_UNORM for GL_DEPTH_COMPONENT32 (or unsized with
+//! GL_UNSIGNED_INT data) and Z24X8 otherwise (measured with GL_TEXTURE_DEPTH_SIZE).
+//! Client depth values become `z = (GLuint)(d·(GLfloat)max)` (`_mesa_unpack_depth_span`:
+//! f32 product, truncated; f64 for 32 bits), d clamped to [0, 1].
+//!
+//! # Sampling (`lp_bld_sample_soa.c`, always the float path)
+//! - A texel becomes `float(z)·f32(1/max)` (16, 24 bits) or, for 32 bits, the 23 top bits
+//!   as a mantissa: `(bits(1.0) | z >> 9) − 1.0` times `f32(2²³/(2²³−1))`
+//!   (`lp_build_unsigned_norm_to_float`).
+//! - GL_COMPARE_R_TO_TEXTURE: the reference r is clamped to [0, 1], each texel is
+//!   `r func d ? 1 : 0`, then filtered: a row is `(m1 ? w : 0) + (m0 ? 1 − w : 0)`
+//!   (`lp_build_masklerp`) and the rows `fmuladd(wy, v1 − v0, v0)` — compare, then filter.
+//! - The result is swizzled by GL_DEPTH_TEXTURE_MODE: LUMINANCE (d,d,d,1), INTENSITY
+//!   (d,d,d,d), ALPHA (0,0,0,d); the texture environment treats the texture as that base
+//!   format.
+
+use super::lod::Lod;
+use super::sample::{lerpf, select_levels};
+use super::wrap;
+use super::{BaseFormat, Filter, Level, UnitPlan};
+
+/// GL_TEXTURE_COMPARE_FUNC.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompareFunc {
+    /// GL_NEVER.
+    Never,
+    /// GL_LESS.
+    Less,
+    /// GL_EQUAL.
+    Equal,
+    /// GL_LEQUAL.
+    Lequal,
+    /// GL_GREATER.
+    Greater,
+    /// GL_NOTEQUAL.
+    Notequal,
+    /// GL_GEQUAL.
+    Gequal,
+    /// GL_ALWAYS.
+    Always,
+}
+
+impl CompareFunc {
+    /// `r func d` (gallivm compares the reference first).
+    #[inline(always)]
+    pub fn test(self, r: f32, d: f32) -> bool {
+        match self {
+            CompareFunc::Never => false,
+            CompareFunc::Less => r < d,
+            CompareFunc::Equal => r == d,
+            CompareFunc::Lequal => r <= d,
+            CompareFunc::Greater => r > d,
+            CompareFunc::Notequal => r != d,
+            CompareFunc::Gequal => r >= d,
+            CompareFunc::Always => true,
+        }
+    }
+}
+
+/// GL_DEPTH_TEXTURE_MODE: how a depth value becomes RGBA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthMode {
+    /// GL_LUMINANCE: (d, d, d, 1).
+    Luminance,
+    /// GL_INTENSITY: (d, d, d, d).
+    Intensity,
+    /// GL_ALPHA: (0, 0, 0, d).
+    Alpha,
+    /// GL_RED: (d, 0, 0, 1).
+    Red,
+}
+
+/// The comparison parameters of a texture object.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShadowParams {
+    /// GL_TEXTURE_COMPARE_MODE is GL_COMPARE_R_TO_TEXTURE.
+    pub compare: bool,
+    /// GL_TEXTURE_COMPARE_FUNC.
+    pub func: CompareFunc,
+    /// GL_DEPTH_TEXTURE_MODE.
+    pub depth_mode: DepthMode,
+}
+
+impl Default for ShadowParams {
+    fn default() -> Self {
+        ShadowParams {
+            compare: false,
+            func: CompareFunc::Lequal,
+            depth_mode: DepthMode::Luminance,
+        }
+    }
+}
+
+impl DepthMode {
+    /// The base format the texture environment sees.
+    pub fn base(self) -> BaseFormat {
+        match self {
+            DepthMode::Luminance => BaseFormat::Luminance,
+            DepthMode::Intensity => BaseFormat::Intensity,
+            DepthMode::Alpha => BaseFormat::Alpha,
+            DepthMode::Red => BaseFormat::Rgb,
+        }
+    }
+
+    /// Applies the mode to a depth (or comparison) value.
+    #[inline(always)]
+    pub fn swizzle(self, d: f32) -> [f32; 4] {
+        match self {
+            DepthMode::Luminance => [d, d, d, 1.0],
+            DepthMode::Intensity => [d; 4],
+            DepthMode::Alpha => [0.0, 0.0, 0.0, d],
+            DepthMode::Red => [d, 0.0, 0.0, 1.0],
+        }
+    }
+}
+
+/// Depth bits Mesa stores for a depth internal format given with client type `ty` (0 for
+/// a copy).
+pub fn depth_bits(internal: u32, ty: u32) -> u8 {
+    use crate::ffi::enums::{GL_UNSIGNED_INT, GL_UNSIGNED_SHORT};
+    use crate::ffi::glext_enums::{
+        GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+    };
+    match internal {
+        GL_DEPTH_COMPONENT16 => 16,
+        GL_DEPTH_COMPONENT24 => 24,
+        GL_DEPTH_COMPONENT32 => 32,
+        _ => match ty {
+            GL_UNSIGNED_SHORT => 16,
+            GL_UNSIGNED_INT => 32,
+            _ => 24,
+        },
+    }
+}
+
+/// The largest stored value of `bits` bits.
+#[inline(always)]
+fn zmax(bits: u8) -> u64 {
+    (1u64 << bits) - 1
+}
+
+/// A client depth value in [0, 1] as stored with `bits` bits.
+pub fn store(d: f32, bits: u8) -> u32 {
+    let d = if d > 0.0 { d.min(1.0) } else { 0.0 };
+    if bits >= 32 {
+        (d as f64 * zmax(32) as f64).min(u32::MAX as f64) as u32
+    } else {
+        (d * zmax(bits) as f32) as u32
+    }
+}
+
+/// A stored value of `bits` bits converted to `to` bits (copies between depth buffers and
+/// textures of different precision go through float).
+pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
+    if bits == to {
+        z
+    } else {
+        store(readback(z, bits), to)
+    }
+}
+
+/// The float Mesa reads a stored value back as (`_mesa_unpack_float_z_row`).
+pub fn readback(z: u32, bits: u8) -> f32 {
+    match bits {
+        16 => z as f32 * (1.0f32 / 65535.0),
+        b => (z as f64 * (1.0 / zmax(b) as f64)) as f32,
+    }
+}
+
+/// The float the sampler converts a stored value to.
+#[inline(always)]
+pub fn sample_value(z: u32, bits: u8) -> f32 {
+    if bits >= 32 {
+        let m = f32::from_bits((z >> 9) | 0x3f80_0000) - 1.0;
+        m * (8388608.0f64 / 8388607.0) as f32
+    } else {
+        z as f32 * (1.0 / zmax(bits) as f64) as f32
+    }
+}
+
+/// The stored value of a depth texel.
+#[inline(always)]
+pub fn texel_z(t: [u8; 4]) -> u32 {
+    u32::from_le_bytes(t)
+}
+
+/// A depth texel of stored value `z`.
+#[inline(always)]
+pub fn texel(z: u32) -> [u8; 4] {
+    z.to_le_bytes()
+}
+
+/// The depth part of a unit's sampling plan.
+#[derive(Clone, Copy, Debug)]
+pub struct DepthPlan {
+    /// The comparison, when GL_TEXTURE_COMPARE_MODE is GL_COMPARE_R_TO_TEXTURE.
+    pub func: Option<CompareFunc>,
+    /// GL_DEPTH_TEXTURE_MODE.
+    pub mode: DepthMode,
+    /// Stored bits.
+    pub bits: u8,
+}
+
+/// One level of a depth texture: the depth value or the filtered comparison.
+#[inline(always)]
+fn filter_level(
+    p: &UnitPlan<'_>,
+    d: &DepthPlan,
+    img: &Level,
+    filter: Filter,
+    s: f32,
+    t: f32,
+    r: f32,
+) -> f32 {
+    let (w, h) = (img.width, img.height);
+    let two_d = p.dims >= 2;
+    let value = |x: Option<usize>, y: Option<usize>| -> f32 {
+        match (x, y) {
+            (Some(x), Some(y)) => sample_value(texel_z(img.texel(x, y)), d.bits),
+            _ => p.border[0],
+        }
+    };
+    match d.func {
+        None => match filter {
+            Filter::Nearest => {
+                let x = wrap::soa_nearest(s, w, p.pot[0], p.wrap_s);
+                let y = if two_d {
+                    wrap::soa_nearest(t, h, p.pot[1], p.wrap_t)
+                } else {
+                    Some(0)
+                };
+                value(x, y)
+            }
+            Filter::Linear => {
+                let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
+                if !two_d {
+                    return lerpf(p.fma, wx, value(x0, Some(0)), value(x1, Some(0)));
+                }
+                let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
+                let r0 = lerpf(p.fma, wx, value(x0, y0), value(x1, y0));
+                let r1 = lerpf(p.fma, wx, value(x0, y1), value(x1, y1));
+                lerpf(p.fma, wy, r0, r1)
+            }
+        },
+        Some(func) => {
+            let rc = r.clamp(0.0, 1.0);
+            let pass = |x, y| func.test(rc, value(x, y));
+            match filter {
+                Filter::Nearest => {
+                    let x = wrap::soa_nearest(s, w, p.pot[0], p.wrap_s);
+                    let y = if two_d {
+                        wrap::soa_nearest(t, h, p.pot[1], p.wrap_t)
+                    } else {
+                        Some(0)
+                    };
+                    if pass(x, y) {
+                        1.0
+                    } else {
+                        0.0
+                    }
+                }
+                Filter::Linear => {
+                    let masklerp = |w: f32, m0: bool, m1: bool| {
+                        (if m1 { w } else { 0.0 }) + (if m0 { 1.0 - w } else { 0.0 })
+                    };
+                    let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
+                    if !two_d {
+                        return masklerp(wx, pass(x0, Some(0)), pass(x1, Some(0)));
+                    }
+                    let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
+                    let r0 = masklerp(wx, pass(x0, y0), pass(x1, y0));
+                    let r1 = masklerp(wx, pass(x0, y1), pass(x1, y1));
+                    lerpf(p.fma, wy, r0, r1)
+                }
+            }
+        }
+    }
+}
+
+/// Samples a 2x2 quad of a depth texture (`r` is the comparison reference).
+#[inline(always)]
+pub fn sample_quad(
+    p: &UnitPlan<'_>,
+    d: &DepthPlan,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: [f32; 4],
+) -> [[f32; 4]; 4] {
+    let lod: Lod = p.quad_lod(s, t);
+    let (filter, l0, l1, frac) = select_levels(p, lod);
+    std::array::from_fn(|i| {
+        let a = filter_level(p, d, p.image(l0), filter, s[i], t[i], r[i]);
+        let v = if l1 == l0 {
+            a
+        } else {
+            let b = filter_level(p, d, p.image(l1), filter, s[i], t[i], r[i]);
+            lerpf(p.fma, frac, a, b)
+        };
+        d.mode.swizzle(v)
+    })
+}
+
+/// Reads client element `i` of type `ty` at `b` as a depth in [0, 1] (or, for the exact
+/// paths, the raw integer).
+fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
+    use crate::ffi::enums::*;
+    let mut raw = [0u8; 4];
+    let n = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => 1,
+        GL_UNSIGNED_SHORT | GL_SHORT => 2,
+        _ => 4,
+    };
+    raw[..n].copy_from_slice(&b[..n]);
+    if swap {
+        raw[..n].reverse();
+    }
+    match ty {
+        GL_UNSIGNED_BYTE => (raw[0] as f32 * (1.0 / 255.0), None),
+        GL_BYTE => ((raw[0] as i8 as f32 * (1.0 / 127.0)).max(0.0), None),
+        GL_UNSIGNED_SHORT => {
+            let v = u16::from_ne_bytes([raw[0], raw[1]]);
+            (v as f32 * (1.0 / 65535.0), Some(v as u64))
+        }
+        GL_SHORT => {
+            let v = i16::from_ne_bytes([raw[0], raw[1]]);
+            ((v as f32 * (1.0 / 32767.0)).max(0.0), None)
+        }
+        GL_UNSIGNED_INT => {
+            let v = u32::from_ne_bytes(raw);
+            (
+                (v as f64 * (1.0 / 4294967295.0)) as f32,
+                Some(v as u64 | 1 << 40),
+            )
+        }
+        GL_INT => {
+            let v = i32::from_ne_bytes(raw);
+            ((v as f64 * (1.0 / 2147483647.0)).max(0.0) as f32, None)
+        }
+        _ => (f32::from_ne_bytes(raw), None),
+    }
+}
+
+/// Unpacks a `w x h` client depth image into depth texels of `bits` bits.
+///
+/// # Safety
+/// `data` (when not null) must hold the image `ps`/`cf` describe.
+pub unsafe fn unpack(
+    ps: &crate::context::state::PixelStore,
+    cf: &super::upload::ClientFormat,
+    bits: u8,
+    w: usize,
+    h: usize,
+    data: *const u8,
+) -> Vec<[u8; 4]> {
+    let lay = super::upload::Layout::new(ps, w, cf);
+    if data.is_null() || w == 0 || h == 0 {
+        return vec![texel(0); w * h];
+    }
+    // SAFETY: the caller guarantees the image's bytes.
+    let bytes = unsafe { std::slice::from_raw_parts(data, lay.span(w, h)) };
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let o = lay.start + y * lay.stride + x * lay.bpp;
+            let (d, exact) = client_value(&bytes[o..o + lay.bpp], cf.gl_type, ps.swap_bytes);
+            // `_mesa_unpack_depth_span`'s exact paths: ushort into 16 bits, uint into 32
+            // (and shifted into 24) bits
+            let z = match (exact, bits) {
+                (Some(v), 16) if v < 1 << 16 => v as u32,
+                (Some(v), 32) if v >= 1 << 40 => v as u32,
+                (Some(v), 24) if v >= 1 << 40 => (v as u32) >> 8,
+                _ => store(d, bits),
+            };
+            out.push(texel(z));
+        }
+    }
+    out
+}
+
+/// Packs a depth image for glGetTexImage(GL_DEPTH_COMPONENT, type) (`_mesa_pack_depth_span`).
+///
+/// # Safety
+/// `dst` must be writable for the packed image.
+pub unsafe fn pack(
+    ps: &crate::context::state::PixelStore,
+    cf: &super::upload::ClientFormat,
+    img: &Level,
+    dst: *mut u8,
+) {
+    use crate::ffi::enums::*;
+    let (w, h) = (img.width, img.height);
+    let lay = super::upload::Layout::new(ps, w, cf);
+    if dst.is_null() || w == 0 || h == 0 {
+        return;
+    }
+    let bits = img.storage.depth_bits();
+    // SAFETY: the caller guarantees `span` writable bytes.
+    let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
+    for y in 0..h {
+        for x in 0..w {
+            let d = readback(texel_z(img.texel(x, y)), bits);
+            let o = lay.start + y * lay.stride + x * lay.bpp;
+            let mut v: Vec<u8> = match cf.gl_type {
+                GL_UNSIGNED_BYTE => vec![(d * 255.0) as u8],
+                GL_BYTE => vec![(d * 127.0) as i8 as u8],
+                GL_UNSIGNED_SHORT => ((d * 65535.0) as u16).to_ne_bytes().to_vec(),
+                GL_SHORT => ((d * 32767.0) as i16).to_ne_bytes().to_vec(),
+                GL_UNSIGNED_INT => ((d as f64 * 4294967295.0) as u32).to_ne_bytes().to_vec(),
+                GL_INT => ((d as f64 * 2147483647.0) as i32).to_ne_bytes().to_vec(),
+                _ => d.to_ne_bytes().to_vec(),
+            };
+            if ps.swap_bytes {
+                v.reverse();
+            }
+            let n = v.len().min(lay.bpp);
+            bytes[o..o + n].copy_from_slice(&v[..n]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stores_truncate_as_mesa_measured() {
+        // measured with glGetTexImage on Mesa 22.3: 0.3 → 0x4ccccc (Z24), 0x4ccc (Z16)
+        assert_eq!(store(0.3, 24), 0x4c_cccc);
+        assert_eq!(store(0.3, 16), 0x4ccc);
+        assert_eq!(store(0.712_345_7, 16), 0xb65b);
+        assert_eq!(store(0.712_345_7, 24), 0xb6_5c49);
+        assert_eq!(store(2.0, 24), 0xff_ffff);
+        // and reads back as 0x4ccccc7f through GL_UNSIGNED_INT
+        assert_eq!(
+            (readback(0x4c_cccc, 24) as f64 * 4294967295.0) as u32,
+            0x4ccc_cc7f
+        );
+    }
+
+    #[test]
+    fn comparison_uses_reference_first() {
+        assert!(CompareFunc::Lequal.test(0.25, 0.5));
+        assert!(!CompareFunc::Greater.test(0.25, 0.5));
+        assert!(CompareFunc::Always.test(f32::NAN, 0.0));
+        assert_eq!(DepthMode::Alpha.swizzle(0.5), [0.0, 0.0, 0.0, 0.5]);
+    }
+}
