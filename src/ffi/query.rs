@@ -82,8 +82,9 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
 
 /// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
 pub const EXTENSIONS: &str = concat!(
-    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_texture_border_clamp ",
-    "GL_ARB_texture_cube_map GL_EXT_texture3D GL_EXT_texture_cube_map ",
+    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
+    "GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_EXT_texture3D ",
+    "GL_EXT_texture_cube_map ",
     "GL_ARB_texture_env_add GL_ARB_window_pos ",
     "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 ",
     "GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object ",

@@ -98,6 +98,11 @@ fn size_3d(
     if w > max || h > max || d > max {
         return Err(GlError::InvalidValue);
     }
+    // llvmpipe refuses resources over 1 GiB (LP_MAX_TEXTURE_SIZE): GL_OUT_OF_MEMORY, and a
+    // proxy that does not fit
+    if w * h * d * 4 > 1 << 30 {
+        return Err(GlError::OutOfMemory);
+    }
     Ok((w, h, d))
 }
 

@@ -13,9 +13,12 @@
 //! - A texel becomes `float(z)·f32(1/max)` (16, 24 bits) or, for 32 bits, the 23 top bits
 //!   as a mantissa: `(bits(1.0) | z >> 9) − 1.0` times `f32(2²³/(2²³−1))`
 //!   (`lp_build_unsigned_norm_to_float`).
-//! - GL_COMPARE_R_TO_TEXTURE: the reference r is clamped to [0, 1], each texel is
-//!   `r func d ? 1 : 0`, then filtered: a row is `(m1 ? w : 0) + (m0 ? 1 − w : 0)`
-//!   (`lp_build_masklerp`) and the rows `fmuladd(wy, v1 − v0, v0)` — compare, then filter.
+//! - GL_COMPARE_R_TO_TEXTURE: the reference r is clamped to [0, 1], each texel becomes
+//!   `r func d ? 1.0 : 0.0`, and those are filtered with the float lerps
+//!   `fmuladd(w, v1 − v0, v0)` — compare, then filter (Mesa 22.3's
+//!   `lp_build_sample_image_linear`; later versions use a masked lerp).
+//! - glCopyTexImage from the depth buffer is a blit: each stored value goes through the
+//!   sampler's float and back with the depth write's `round_half_even(f32(d·max))`.
 //! - The result is swizzled by GL_DEPTH_TEXTURE_MODE: LUMINANCE (d,d,d,1), INTENSITY
 //!   (d,d,d,d), ALPHA (0,0,0,d); the texture environment treats the texture as that base
 //!   format.
@@ -155,13 +158,15 @@ pub fn store(d: f32, bits: u8) -> u32 {
     }
 }
 
-/// A stored value of `bits` bits converted to `to` bits (copies between depth buffers and
-/// textures of different precision go through float).
+/// A depth-buffer value of `bits` bits as a blit copies it into a texture of `to` bits:
+/// the sampler's float ([`sample_value`]), then the depth write's
+/// `round_half_even(f32(d·max))` (llvmpipe-rules §8).
 pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
-    if bits == to {
-        z
+    let d = sample_value(z, bits).clamp(0.0, 1.0);
+    if to >= 32 {
+        (d as f64 * zmax(32) as f64).round_ties_even() as u32
     } else {
-        store(readback(z, bits), to)
+        (d * zmax(to) as f32).round_ties_even() as u32
     }
 }
 
@@ -266,16 +271,14 @@ fn filter_level(
                     }
                 }
                 Filter::Linear => {
-                    let masklerp = |w: f32, m0: bool, m1: bool| {
-                        (if m1 { w } else { 0.0 }) + (if m0 { 1.0 - w } else { 0.0 })
-                    };
+                    let one = |x, y| if pass(x, y) { 1.0 } else { 0.0 };
                     let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
                     if !two_d {
-                        return masklerp(wx, pass(x0, Some(0)), pass(x1, Some(0)));
+                        return lerpf(p.fma, wx, one(x0, Some(0)), one(x1, Some(0)));
                     }
                     let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
-                    let r0 = masklerp(wx, pass(x0, y0), pass(x1, y0));
-                    let r1 = masklerp(wx, pass(x0, y1), pass(x1, y1));
+                    let r0 = lerpf(p.fma, wx, one(x0, y0), one(x1, y0));
+                    let r1 = lerpf(p.fma, wx, one(x0, y1), one(x1, y1));
                     lerpf(p.fma, wy, r0, r1)
                 }
             }
