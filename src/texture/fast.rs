@@ -335,6 +335,7 @@ mod tests {
                                 env: Combine::derive(&Default::default(), BaseFormat::Rgba),
                                 fast: None,
                                 fma: false,
+                                ext: Default::default(),
                             };
                             for _ in 0..300 {
                                 let f = |r: u32| (r % 20000) as f32 / 4000.0 - 2.0;

@@ -295,6 +295,7 @@ mod tests {
             env: Combine::derive(&Default::default(), BaseFormat::Rgba),
             fast: None,
             fma: false,
+            ext: Default::default(),
         }
     }
 
