@@ -15,6 +15,7 @@ pub mod get;
 pub mod immediate;
 pub mod lighting_state;
 pub mod pixel_state;
+pub mod pixel_transfer;
 pub mod queries;
 pub mod raster_state;
 pub mod share;
@@ -115,6 +116,8 @@ pub struct Context {
     pub raster_pos: pixel_state::RasterPos,
     /// Pixel zoom (GL_PIXEL_MODE_BIT).
     pub pixel_modes: pixel_state::PixelModes,
+    /// glPixelMap tables (in no attribute group).
+    pub pixel_maps: pixel_transfer::PixelMaps,
     /// Display lists.
     pub lists: dlist::ListState,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -179,6 +182,7 @@ impl Context {
             clip_planes: Default::default(),
             raster_pos: Default::default(),
             pixel_modes: Default::default(),
+            pixel_maps: Default::default(),
             lists: Default::default(),
             attrib: Default::default(),
             queries: Default::default(),
