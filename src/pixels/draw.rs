@@ -12,8 +12,9 @@
 //! - Depth images write the raster colour (glCopyPixels: the current colour) with the image
 //!   depth, through the usual tests; stencil images replace the stencil value through the
 //!   stencil write mask with every other test off and no colour written.
-//! - glCopyPixels with zoom 1, no overlap and (for colour) no transfer operations and
-//!   plain fragment state is a blit: it ignores the colour and stencil write masks.
+//! - glCopyPixels of colour with zoom 1, no overlap, no transfer operations and plain
+//!   fragment state is a blit: it ignores the colour mask. Depth and stencil copies
+//!   always draw the quad (Mesa's blit cannot render to Z24S8).
 
 use super::image::{Image, Pixels};
 use super::rect::{rasterize, Dest, Fragments, Quad};
@@ -169,6 +170,7 @@ fn shade_colors(ctx: &Context, texels: &[[f32; 4]], transfer: bool) -> Vec<[u8; 
 /// glDrawPixels of a decoded image at the current raster position (validated by the
 /// caller; an invalid raster position draws nothing).
 pub fn draw_pixels(ctx: &mut Context, img: &Image) {
+    super::cache::flush(ctx);
     if !ctx.raster_pos.valid || img.w == 0 || img.h == 0 {
         return;
     }
@@ -221,8 +223,8 @@ fn shift_offset(t: &crate::context::pixel_transfer::PixelTransfer, i: i64) -> i6
 }
 
 /// glBitmap: draws the set bits of a `w` x `h` mask (row 0 at the bottom) at the raster
-/// position minus the origin, then moves the raster position. Nothing happens with an
-/// invalid raster position.
+/// position minus the origin (through Mesa's bitmap cache), then moves the raster
+/// position. Nothing happens with an invalid raster position.
 pub fn bitmap(ctx: &mut Context, w: usize, h: usize, orig: [f32; 2], mv: [f32; 2], bits: &[bool]) {
     if !ctx.raster_pos.valid {
         return;
@@ -231,13 +233,43 @@ pub fn bitmap(ctx: &mut Context, w: usize, h: usize, orig: [f32; 2], mv: [f32; 2
         let p = ctx.raster_pos.pos;
         let x = (p[0] + 0.0001 - orig[0]).floor() as i32;
         let y = (p[1] + 0.0001 - orig[1]).floor() as i32;
-        let c = Shader::new(ctx, cpu_has_fma()).shade(ctx.raster_pos.color);
-        let mut q = quad(ctx, x, y, w, h, false);
-        q.zoom = [1.0, 1.0];
-        run(ctx, &q, Source::Mask(bits, c));
+        // Replayed from a display list, Mesa draws the cache, then the bitmap at once.
+        let from_list = ctx.lists.depth > 0;
+        if from_list {
+            super::cache::flush(ctx);
+        }
+        super::cache::snapshot(ctx);
+        if from_list || !super::cache::accumulate(ctx, x, y, w, h, bits) {
+            let (z, color) = (p[2], ctx.raster_pos.color);
+            draw_mask(ctx, [x, y], w, h, z, color, bits);
+        }
     }
     ctx.raster_pos.pos[0] += mv[0];
     ctx.raster_pos.pos[1] += mv[1];
+}
+
+/// Draws the set texels of a `w` x `h` mask at window position `pos` with depth `z` and
+/// primary colour `color` (a glBitmap quad).
+pub fn draw_mask(
+    ctx: &mut Context,
+    pos: [i32; 2],
+    w: usize,
+    h: usize,
+    z: f32,
+    color: [f32; 4],
+    bits: &[bool],
+) {
+    let c = Shader::new(ctx, cpu_has_fma()).shade(color);
+    let q = Quad {
+        x: pos[0],
+        y: pos[1],
+        w,
+        h,
+        zoom: [1.0, 1.0],
+        z,
+        flip_t: false,
+    };
+    run(ctx, &q, Source::Mask(bits, c));
 }
 
 /// What glCopyPixels copies.
@@ -254,6 +286,7 @@ pub enum CopyKind {
 /// glCopyPixels of the `w` x `h` rectangle at (sx, sy) (GL window coordinates) to the
 /// raster position (validated by the caller).
 pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind: CopyKind) {
+    super::cache::flush(ctx);
     if !ctx.raster_pos.valid || w == 0 || h == 0 {
         return;
     }
@@ -326,7 +359,9 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         }
         return;
     }
-    let q = quad(ctx, dx, dy, w, h, false);
+    // Mesa's temporary texture is y-down (top source row first) and sampled with t flipped.
+    let q = quad(ctx, dx, dy, w, h, true);
+    let src_index = |i: usize, j: usize| src_index(i, h - 1 - j);
     match kind {
         CopyKind::Color => {
             let texels: Vec<[f32; 4]> = (0..w * h)
