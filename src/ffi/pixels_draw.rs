@@ -277,7 +277,7 @@ pub unsafe extern "C" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
 pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
     get_map(map, |k, v, index| {
         let u = if index {
-            v as u32
+            v.to_bits() // Mesa returns the stored floats' bits for the index maps
         } else {
             (v as f64 * u32::MAX as f64) as u32
         };

@@ -334,8 +334,9 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         );
         ax0 < bx1 && bx0 < ax1 && ay0 < by1 && by0 < ay1
     };
+    // The blit needs a renderable source: never for depth/stencil (Z24S8).
     let blit =
-        zoom1 && (kind != CopyKind::Color || simple) && ctx.queries.active.is_none() && !overlap;
+        zoom1 && kind == CopyKind::Color && simple && ctx.queries.active.is_none() && !overlap;
     if blit {
         let Some(region) = ctx.draw_region() else {
             return;
