@@ -21,6 +21,7 @@ use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
+    crate::pixels::cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
     let n = indices.map_or(verts.len(), |i| i.len());
     if n == 0 {

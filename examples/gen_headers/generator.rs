@@ -64,6 +64,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("rasterization.rs", Header::Gl),
     ("texgen.rs", Header::Gl),
     ("pixels.rs", Header::Gl),
+    ("pixels_draw.rs", Header::Gl),
     ("lists.rs", Header::Gl),
     ("accum.rs", Header::Gl),
     ("eval.rs", Header::Gl),

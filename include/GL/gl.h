@@ -1186,6 +1186,19 @@ GLAPI void GLAPIENTRY glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble
 GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor);
 
+/* Functions: src/ffi/pixels_draw.rs */
+GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+GLAPI void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPixelTransferi(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+GLAPI void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+GLAPI void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+GLAPI void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat *values);
+GLAPI void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint *values);
+GLAPI void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort *values);
+
 /* Functions: src/ffi/lists.rs */
 GLAPI void GLAPIENTRY glNewList(GLuint list, GLenum mode);
 GLAPI void GLAPIENTRY glEndList(void);

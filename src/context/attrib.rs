@@ -144,7 +144,7 @@ fn polygon_stipple(c: &mut Context, s: &AttribFrame) {
 
 fn pixel_mode(c: &mut Context, s: &AttribFrame) {
     c.pixel_modes = s.pixel_modes;
-    // missing: read buffer, pixel transfer and maps (not implemented yet)
+    // missing: the read buffer (glReadBuffer is not implemented yet); pixel maps belong to no group
 }
 
 fn lighting(c: &mut Context, s: &AttribFrame) {

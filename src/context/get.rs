@@ -319,6 +319,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
             if let Some(v) = super::pixel_state::get(&c.raster_pos, &c.pixel_modes, unit, pname) {
                 return v;
             }
+            if let Some(v) = c.pixel_maps.get(pname) {
+                return Ok(v);
+            }
             match Cap::from_gl(pname) {
                 Ok(cap) => b(st.caps.get(cap)),
                 Err(_) => return Err(GlError::InvalidEnum),

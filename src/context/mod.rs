@@ -15,6 +15,7 @@ pub mod get;
 pub mod immediate;
 pub mod lighting_state;
 pub mod pixel_state;
+pub mod pixel_transfer;
 pub mod queries;
 pub mod raster_state;
 pub mod share;
@@ -115,6 +116,10 @@ pub struct Context {
     pub raster_pos: pixel_state::RasterPos,
     /// Pixel zoom (GL_PIXEL_MODE_BIT).
     pub pixel_modes: pixel_state::PixelModes,
+    /// glPixelMap tables (in no attribute group).
+    pub pixel_maps: pixel_transfer::PixelMaps,
+    /// glBitmap calls not drawn yet (Mesa's bitmap cache).
+    pub bitmap_cache: crate::pixels::cache::BitmapCache,
     /// Display lists.
     pub lists: dlist::ListState,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -179,6 +184,8 @@ impl Context {
             clip_planes: Default::default(),
             raster_pos: Default::default(),
             pixel_modes: Default::default(),
+            pixel_maps: Default::default(),
+            bitmap_cache: Default::default(),
             lists: Default::default(),
             attrib: Default::default(),
             queries: Default::default(),
@@ -255,6 +262,7 @@ impl Context {
     /// glFlush/glFinish: copies the colour buffer into the user buffer if anything was drawn
     /// or cleared since the last copy (Mesa's `rb->defined`), and refreshes the depth copy.
     pub fn flush(&mut self) {
+        crate::pixels::cache::flush(self);
         let Some(fb) = self.fb.as_ref() else { return };
         if !self.dirty || self.target.ptr == 0 {
             return;
@@ -403,6 +411,7 @@ impl Context {
 
     /// glScissor.
     pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
+        crate::pixels::cache::flush(self);
         self.check_outside_begin()?;
         if w < 0 || h < 0 {
             return Err(GlError::InvalidValue);
@@ -440,6 +449,7 @@ impl Context {
 
     /// glClear.
     pub fn clear(&mut self, mask: u32) -> GlResult<()> {
+        crate::pixels::cache::flush(self);
         use crate::ffi::enums::*;
         self.check_outside_begin()?;
         let all =

@@ -47,11 +47,16 @@ impl Default for RasterPos {
 pub struct PixelModes {
     /// GL_ZOOM_X, GL_ZOOM_Y
     pub zoom: [f32; 2],
+    /// glPixelTransfer state.
+    pub transfer: super::pixel_transfer::PixelTransfer,
 }
 
 impl Default for PixelModes {
     fn default() -> Self {
-        PixelModes { zoom: [1.0, 1.0] }
+        PixelModes {
+            zoom: [1.0, 1.0],
+            transfer: Default::default(),
+        }
     }
 }
 
@@ -70,6 +75,6 @@ pub fn get(rp: &RasterPos, pm: &PixelModes, unit: usize, pname: u32) -> Option<G
         GL_CURRENT_RASTER_INDEX => f(&[1.0]),
         GL_ZOOM_X => f(&[pm.zoom[0]]),
         GL_ZOOM_Y => f(&[pm.zoom[1]]),
-        _ => return None,
+        _ => return pm.transfer.get(pname).map(Ok),
     }))
 }

@@ -44,6 +44,7 @@ pub mod matrix;
 pub mod multidraw;
 pub mod osmesa;
 pub mod pixels;
+pub mod pixels_draw;
 pub mod pixels_ext;
 pub mod proc_table;
 pub mod queries;

@@ -192,6 +192,7 @@ fn read_pixels(
     ty: GLenum,
     out: *mut u8,
 ) -> GlResult<()> {
+    crate::pixels::cache::flush(c);
     let kind = match format {
         GL_RGBA => ReadKind::Color([0, 1, 2, 3], 4),
         GL_RGB => ReadKind::Color([0, 1, 2, 0], 3),

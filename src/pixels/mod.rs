@@ -2,4 +2,8 @@
 //! arithmetic on the CPU, as Mesa's `main/rastpos.c` does for fixed function, not through
 //! the vertex program) and, later, glDrawPixels, glBitmap and glCopyPixels.
 
+pub mod cache;
+pub mod draw;
+pub mod image;
 pub mod raster_pos;
+pub mod rect;

@@ -1,0 +1,308 @@
+//! Pixel rectangles of `GL/gl.h`: glDrawPixels, glCopyPixels, glBitmap, glPixelTransfer,
+//! glPixelMap and glGetPixelMap. Images are decoded with the unpack state when the call
+//! is made (so display lists keep an owned copy); errors are raised when the command
+//! executes, in Mesa's order (size, format/type, missing buffer).
+#![allow(non_snake_case)]
+
+use super::enums::*;
+use super::types::*;
+use super::{with_ctx, with_ctx_list};
+use crate::context::error::GlError;
+use crate::context::pixel_transfer::{is_index_map, map_index};
+use crate::pixels::draw::{bitmap, copy_pixels, draw_pixels, CopyKind};
+use crate::pixels::image::{Layout, Pixels};
+
+/// Reads the current unpack state from the context (default state without one).
+fn unpack_state() -> crate::context::state::PixelStore {
+    with_ctx(|c| Ok(c.state.unpack))
+}
+
+/// glDrawPixels.
+///
+/// # Safety
+/// `pixels` must be null or readable for the image the unpack state describes.
+#[no_mangle]
+pub unsafe extern "C" fn glDrawPixels(
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let layout = Layout::new(format, type_);
+    let ps = unpack_state();
+    let img = match (&layout, width >= 0 && height >= 0) {
+        // SAFETY: GL's contract: `pixels` holds the image the unpack state describes.
+        (Ok(l), true) => unsafe {
+            l.decode(&ps, width as usize, height as usize, pixels as *const u8)
+        },
+        _ => None,
+    };
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let l = layout?;
+        let fb = c.fb.as_ref();
+        match l.format() {
+            GL_STENCIL_INDEX if fb.is_none_or(|f| f.stencil.is_empty()) => {
+                return Err(GlError::InvalidOperation)
+            }
+            GL_DEPTH_COMPONENT
+                if fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None) =>
+            {
+                return Err(GlError::InvalidOperation)
+            }
+            _ => {}
+        }
+        match &img {
+            Some(img) => draw_pixels(c, img),
+            // Mesa cannot map a null image into its texture: GL_OUT_OF_MEMORY.
+            None if c.raster_pos.valid && width > 0 && height > 0 => {
+                return Err(GlError::OutOfMemory)
+            }
+            None => {}
+        }
+        Ok(())
+    })
+}
+
+/// glCopyPixels.
+#[no_mangle]
+pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let kind = match type_ {
+            GL_COLOR => CopyKind::Color,
+            GL_DEPTH => CopyKind::Depth,
+            GL_STENCIL => CopyKind::Stencil,
+            _ => return Err(GlError::InvalidEnum),
+        };
+        let fb = c.fb.as_ref();
+        let missing = match kind {
+            CopyKind::Color => false,
+            CopyKind::Depth => {
+                fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None)
+            }
+            CopyKind::Stencil => fb.is_none_or(|f| f.stencil.is_empty()),
+        };
+        if missing {
+            return Err(GlError::InvalidOperation);
+        }
+        copy_pixels(c, x, y, width as usize, height as usize, kind);
+        Ok(())
+    })
+}
+
+/// glBitmap.
+///
+/// # Safety
+/// `bitmap` must be null or readable for the bitmap the unpack state describes.
+#[no_mangle]
+pub unsafe extern "C" fn glBitmap(
+    width: GLsizei,
+    height: GLsizei,
+    xorig: GLfloat,
+    yorig: GLfloat,
+    xmove: GLfloat,
+    ymove: GLfloat,
+    bitmap_: *const GLubyte,
+) {
+    let ps = unpack_state();
+    let bits: Vec<bool> = if width > 0 && height > 0 {
+        let l = Layout::new(GL_COLOR_INDEX, GL_BITMAP).expect("a valid layout");
+        // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
+        match unsafe { l.decode(&ps, width as usize, height as usize, bitmap_) } {
+            Some(img) => match img.pixels {
+                Pixels::Index(v) => v.iter().map(|&b| b != 0).collect(),
+                _ => Vec::new(),
+            },
+            None => Vec::new(),
+        }
+    } else {
+        Vec::new()
+    };
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let (w, h) = if bits.is_empty() {
+            (0, 0)
+        } else {
+            (width as usize, height as usize)
+        };
+        bitmap(c, w, h, [xorig, yorig], [xmove, ymove], &bits);
+        Ok(())
+    })
+}
+
+/// glPixelTransferf.
+#[no_mangle]
+pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        c.pixel_modes.transfer.set(pname, param)
+    })
+}
+
+/// glPixelTransferi.
+#[no_mangle]
+pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
+    glPixelTransferf(pname, param as f32)
+}
+
+fn pixel_map(map: GLenum, values: Vec<f32>) {
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        c.pixel_maps.set(map, &values)
+    })
+}
+
+/// Reads `n` values (none for a null pointer or a count outside 1..=256).
+///
+/// # Safety
+/// `p` must be null or readable for `n` values.
+unsafe fn read_values<T: Copy>(p: *const T, n: GLsizei) -> Option<Vec<T>> {
+    if p.is_null() || !(1..=256).contains(&n) {
+        return None;
+    }
+    // SAFETY: the caller promises `n` readable values.
+    Some(
+        (0..n as usize)
+            .map(|i| unsafe { p.add(i).read_unaligned() })
+            .collect(),
+    )
+}
+
+/// The float values glPixelMap stores for `map` from integers scaled by `max`.
+fn from_ints(map: GLenum, v: &[f64], max: f64) -> Vec<f32> {
+    let index = map_index(map).is_ok_and(is_index_map);
+    v.iter()
+        .map(|&x| if index { x as f32 } else { (x / max) as f32 })
+        .collect()
+}
+
+fn bad_size(map: GLenum, n: GLsizei) {
+    with_ctx_list(move |c| {
+        c.check_outside_begin()?;
+        map_index(map)?;
+        let _ = n;
+        Err(GlError::InvalidValue)
+    })
+}
+
+/// glPixelMapfv.
+///
+/// # Safety
+/// `values` must be null or readable for `mapsize` values.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
+    // SAFETY: the caller promises `mapsize` values.
+    match unsafe { read_values(values, mapsize) } {
+        Some(v) => pixel_map(map, v),
+        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None => {}
+    }
+}
+
+/// glPixelMapuiv.
+///
+/// # Safety
+/// `values` must be null or readable for `mapsize` values.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
+    // SAFETY: the caller promises `mapsize` values.
+    match unsafe { read_values(values, mapsize) } {
+        Some(v) => {
+            let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+            pixel_map(map, from_ints(map, &v, u32::MAX as f64))
+        }
+        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None => {}
+    }
+}
+
+/// glPixelMapusv.
+///
+/// # Safety
+/// `values` must be null or readable for `mapsize` values.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
+    // SAFETY: the caller promises `mapsize` values.
+    match unsafe { read_values(values, mapsize) } {
+        Some(v) => {
+            let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+            pixel_map(map, from_ints(map, &v, u16::MAX as f64))
+        }
+        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None => {}
+    }
+}
+
+/// Writes map `map`'s values through `put(i, value, is_index_map)`.
+fn get_map(map: GLenum, mut put: impl FnMut(usize, f32, bool)) {
+    with_ctx(|c| {
+        let i = map_index(map)?;
+        for (k, &v) in c.pixel_maps.maps[i].iter().enumerate() {
+            put(k, v, is_index_map(i));
+        }
+        Ok(())
+    })
+}
+
+/// glGetPixelMapfv.
+///
+/// # Safety
+/// `values` must be null or writable for the map's size.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
+    get_map(map, |k, v, _| {
+        if !values.is_null() {
+            // SAFETY: the caller provides room for the whole map.
+            unsafe { values.add(k).write_unaligned(v) }
+        }
+    })
+}
+
+/// glGetPixelMapuiv.
+///
+/// # Safety
+/// `values` must be null or writable for the map's size.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
+    get_map(map, |k, v, index| {
+        let u = if index {
+            v.to_bits() // Mesa returns the stored floats' bits for the index maps
+        } else {
+            (v as f64 * u32::MAX as f64) as u32
+        };
+        if !values.is_null() {
+            // SAFETY: the caller provides room for the whole map.
+            unsafe { values.add(k).write_unaligned(u) }
+        }
+    })
+}
+
+/// glGetPixelMapusv.
+///
+/// # Safety
+/// `values` must be null or writable for the map's size.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
+    get_map(map, |k, v, index| {
+        let u = if index {
+            v as u16
+        } else {
+            (v * 65535.0).round() as u16
+        };
+        if !values.is_null() {
+            // SAFETY: the caller provides room for the whole map.
+            unsafe { values.add(k).write_unaligned(u) }
+        }
+    })
+}

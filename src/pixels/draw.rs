@@ -1,0 +1,392 @@
+//! glDrawPixels, glCopyPixels and glBitmap as Mesa's state tracker runs them on llvmpipe
+//! (`st_cb_drawpixels.c`, `st_cb_bitmap.c`): a textured quad ([`super::rect`]) whose
+//! fragments go through the per-fragment operations.
+//!
+//! Rules measured on Mesa 22.3 (OSMesa, llvmpipe):
+//! - Colour fragments run the fixed-function fragment shader with the image texel (or, for
+//!   bitmaps, the raster colour) as the primary colour. Enabled texture units sample at the
+//!   *current* texture coordinates (glTexCoord, not the raster position's, without the
+//!   texture matrix), and fog uses a fog coordinate of 0.
+//! - Pixel transfer (scale, bias, colour maps) is applied to colour texels in that shader;
+//!   depth scale and bias when the depth image is stored.
+//! - Depth images write the raster colour (glCopyPixels: the current colour) with the image
+//!   depth, through the usual tests; stencil images replace the stencil value through the
+//!   stencil write mask with every other test off and no colour written.
+//! - glCopyPixels of colour with zoom 1, no overlap, no transfer operations and plain
+//!   fragment state is a blit: it ignores the colour mask. Depth and stencil copies
+//!   always draw the quad (Mesa's blit cannot render to Z24S8).
+
+use super::image::{Image, Pixels};
+use super::rect::{rasterize, Dest, Fragments, Quad};
+use crate::context::state::{Cap, CompareFunc, MAX_TEXTURE_UNITS};
+use crate::context::Context;
+use crate::fixed_function::fog::FogPlan;
+use crate::fragment::span::unorm8;
+use crate::fragment::FragPlan;
+use crate::geometry::cpu_has_fma;
+use crate::texture::UnitPlan;
+
+/// The fixed-function colour computation of pixel-rectangle fragments.
+struct Shader<'a> {
+    units: Vec<(UnitPlan<'a>, [f32; 4])>,
+    fog: Option<FogPlan>,
+}
+
+impl<'a> Shader<'a> {
+    fn new(ctx: &'a Context, fma: bool) -> Self {
+        let units = (0..MAX_TEXTURE_UNITS)
+            .filter_map(|u| {
+                let p = ctx.textures.unit_plan(u)?;
+                let tc = ctx.state.current.texcoord[u];
+                let r = 1.0f32 / tc[3];
+                let (s, t) = (tc[0] * r, tc[1] * r);
+                let lod = p.quad_lod([s; 4], [t; 4]);
+                let texel = p.sample_one(s, t, lod);
+                Some((p, texel))
+            })
+            .collect();
+        let fog = ctx
+            .state
+            .caps
+            .get(Cap::Fog)
+            .then(|| FogPlan::new(&ctx.light.fog, fma));
+        Shader { units, fog }
+    }
+
+    fn shade(&self, primary: [f32; 4]) -> [u8; 4] {
+        let mut prev = primary;
+        for (u, tex) in &self.units {
+            prev = u.env(primary, *tex, prev);
+        }
+        if let Some(f) = &self.fog {
+            prev = f.apply(prev, f.factor(0.0));
+        }
+        prev.map(unorm8)
+    }
+}
+
+/// What the fragments of a rectangle carry.
+enum Source<'a> {
+    /// Final colours per texel.
+    Color(&'a [[u8; 4]]),
+    /// One colour; only texels that are set draw.
+    Mask(&'a [bool], [u8; 4]),
+    /// Depth per texel, one colour.
+    Depth(&'a [f32], [u8; 4]),
+    /// Stencil values per texel.
+    Stencil(&'a [u8]),
+}
+
+fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
+    let fma = cpu_has_fma();
+    let Some(region) = ctx.draw_region() else {
+        return;
+    };
+    let Some(fbr) = ctx.fb.as_ref() else { return };
+    let mut plan = FragPlan::new(&ctx.state, fbr.depth_format, !fbr.stencil.is_empty(), fma);
+    plan.count_samples = ctx.queries.active.is_some();
+    ctx.dirty = true;
+    ctx.stats.draws += 1;
+    let stencil_mask = (ctx.state.frag.stencil_front.writemask & 0xFF) as u8;
+    let stats = &mut ctx.stats;
+    let Some(fb) = ctx.fb.as_mut() else { return };
+    let d = Dest {
+        fb_w: fb.width,
+        fb_h: fb.height,
+        region,
+        fma,
+    };
+    let w = q.w;
+    if let Source::Stencil(vals) = src {
+        let fw = fb.width;
+        if fb.stencil.is_empty() {
+            return;
+        }
+        rasterize(q, &d, |_, px, py, col, row| {
+            let s = &mut fb.stencil[py * fw + px];
+            *s = (*s & !stencil_mask) | (vals[row * w + col] & stencil_mask);
+        });
+        return;
+    }
+    let mut frags = Fragments {
+        plan: &plan,
+        target: fb.target(),
+        stats,
+    };
+    match src {
+        Source::Color(c) => rasterize(q, &d, |t, px, py, col, row| {
+            frags.put(t, px, py, c[row * w + col], None)
+        }),
+        Source::Mask(m, c) => rasterize(q, &d, |t, px, py, col, row| {
+            if m[row * w + col] {
+                frags.put(t, px, py, c, None)
+            }
+        }),
+        Source::Depth(z, c) => rasterize(q, &d, |t, px, py, col, row| {
+            frags.put(t, px, py, c, Some(z[row * w + col]))
+        }),
+        Source::Stencil(_) => {}
+    }
+}
+
+/// The raster position rounded as Mesa's glDrawPixels/glCopyPixels round it (`lroundf`).
+fn raster_xy(ctx: &Context) -> (i32, i32) {
+    let p = ctx.raster_pos.pos;
+    (p[0].round() as i32, p[1].round() as i32)
+}
+
+fn quad(ctx: &Context, x: i32, y: i32, w: usize, h: usize, flip_t: bool) -> Quad {
+    Quad {
+        x,
+        y,
+        w,
+        h,
+        zoom: ctx.pixel_modes.zoom,
+        z: ctx.raster_pos.pos[2],
+        flip_t,
+    }
+}
+
+/// Colour texels through the pixel-transfer operations and the fragment shader.
+fn shade_colors(ctx: &Context, texels: &[[f32; 4]], transfer: bool) -> Vec<[u8; 4]> {
+    let sh = Shader::new(ctx, cpu_has_fma());
+    let t = &ctx.pixel_modes.transfer;
+    let (sb, map) = (transfer && t.scale_bias(), transfer && t.map_color);
+    texels
+        .iter()
+        .map(|&c| {
+            let mut c = c;
+            if sb {
+                c = t.apply_scale_bias(c);
+            }
+            if map {
+                c = ctx.pixel_maps.map_rgba(c);
+            }
+            sh.shade(c)
+        })
+        .collect()
+}
+
+/// glDrawPixels of a decoded image at the current raster position (validated by the
+/// caller; an invalid raster position draws nothing).
+pub fn draw_pixels(ctx: &mut Context, img: &Image) {
+    super::cache::flush(ctx);
+    if !ctx.raster_pos.valid || img.w == 0 || img.h == 0 {
+        return;
+    }
+    let (x, y) = raster_xy(ctx);
+    let q = quad(ctx, x, y, img.w, img.h, false);
+    let tr = ctx.pixel_modes.transfer;
+    match &img.pixels {
+        Pixels::Color(texels) => {
+            let c = shade_colors(ctx, texels, true);
+            run(ctx, &q, Source::Color(&c));
+        }
+        Pixels::Index(ix) => {
+            let maps = &ctx.pixel_maps;
+            let texels: Vec<[f32; 4]> = ix
+                .iter()
+                .map(|&i| {
+                    let i = shift_offset(&tr, i);
+                    std::array::from_fn(|ch| {
+                        let m = &maps.maps[2 + ch];
+                        m[(i as usize) & (m.len() - 1)]
+                    })
+                })
+                .collect();
+            let c = shade_colors(ctx, &texels, false);
+            run(ctx, &q, Source::Color(&c));
+        }
+        Pixels::Depth(z) => {
+            let z: Vec<f32> = z.iter().map(|&v| tr.apply_depth(v)).collect();
+            let c = ctx.raster_pos.color.map(unorm8);
+            run(ctx, &q, Source::Depth(&z, c));
+        }
+        Pixels::Stencil(s) => {
+            let maps = &ctx.pixel_maps;
+            let s: Vec<u8> = s
+                .iter()
+                .map(|&v| crate::context::pixel_transfer::stencil_transfer(&tr, maps, v) as u8)
+                .collect();
+            run(ctx, &q, Source::Stencil(&s));
+        }
+    }
+}
+
+fn shift_offset(t: &crate::context::pixel_transfer::PixelTransfer, i: i64) -> i64 {
+    let s = if t.index_shift >= 0 {
+        i << t.index_shift.min(31)
+    } else {
+        i >> (-t.index_shift).min(31)
+    };
+    s + t.index_offset as i64
+}
+
+/// glBitmap: draws the set bits of a `w` x `h` mask (row 0 at the bottom) at the raster
+/// position minus the origin (through Mesa's bitmap cache), then moves the raster
+/// position. Nothing happens with an invalid raster position.
+pub fn bitmap(ctx: &mut Context, w: usize, h: usize, orig: [f32; 2], mv: [f32; 2], bits: &[bool]) {
+    if !ctx.raster_pos.valid {
+        return;
+    }
+    if w > 0 && h > 0 && bits.len() >= w * h {
+        let p = ctx.raster_pos.pos;
+        let x = (p[0] + 0.0001 - orig[0]).floor() as i32;
+        let y = (p[1] + 0.0001 - orig[1]).floor() as i32;
+        // Replayed from a display list, Mesa draws the cache, then the bitmap at once.
+        let from_list = ctx.lists.depth > 0;
+        if from_list {
+            super::cache::flush(ctx);
+        }
+        super::cache::snapshot(ctx);
+        if from_list || !super::cache::accumulate(ctx, x, y, w, h, bits) {
+            let (z, color) = (p[2], ctx.raster_pos.color);
+            draw_mask(ctx, [x, y], w, h, z, color, bits);
+        }
+    }
+    ctx.raster_pos.pos[0] += mv[0];
+    ctx.raster_pos.pos[1] += mv[1];
+}
+
+/// Draws the set texels of a `w` x `h` mask at window position `pos` with depth `z` and
+/// primary colour `color` (a glBitmap quad).
+pub fn draw_mask(
+    ctx: &mut Context,
+    pos: [i32; 2],
+    w: usize,
+    h: usize,
+    z: f32,
+    color: [f32; 4],
+    bits: &[bool],
+) {
+    let c = Shader::new(ctx, cpu_has_fma()).shade(color);
+    let q = Quad {
+        x: pos[0],
+        y: pos[1],
+        w,
+        h,
+        zoom: [1.0, 1.0],
+        z,
+        flip_t: false,
+    };
+    run(ctx, &q, Source::Mask(bits, c));
+}
+
+/// What glCopyPixels copies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CopyKind {
+    /// GL_COLOR
+    Color,
+    /// GL_DEPTH
+    Depth,
+    /// GL_STENCIL
+    Stencil,
+}
+
+/// glCopyPixels of the `w` x `h` rectangle at (sx, sy) (GL window coordinates) to the
+/// raster position (validated by the caller).
+pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind: CopyKind) {
+    super::cache::flush(ctx);
+    if !ctx.raster_pos.valid || w == 0 || h == 0 {
+        return;
+    }
+    let Some(fb) = ctx.fb.as_ref() else { return };
+    let (fw, fh) = (fb.width as i64, fb.height as i64);
+    let (dx, dy) = raster_xy(ctx);
+    // Source texels, bottom row first; pixels outside the buffer read as zero.
+    let src_index = |i: usize, j: usize| -> Option<usize> {
+        let (x, y) = (sx as i64 + i as i64, sy as i64 + j as i64);
+        (x >= 0 && y >= 0 && x < fw && y < fh).then(|| ((fh - 1 - y) * fw + x) as usize)
+    };
+    let st = &ctx.state;
+    let fr = &st.frag;
+    let zoom1 = ctx.pixel_modes.zoom == [1.0, 1.0];
+    let t = &ctx.pixel_modes.transfer;
+    let simple = !t.scale_bias()
+        && !t.map_color
+        && !st.caps.get(Cap::Blend)
+        && !st.caps.get(Cap::AlphaTest)
+        && (!st.caps.get(Cap::ColorLogicOp)
+            || fr.logic_op == crate::context::fragment_state::LogicOp::Copy)
+        && (!st.caps.get(Cap::DepthTest)
+            || (st.depth_func == CompareFunc::Always && !st.depth_mask))
+        && !st.caps.get(Cap::Fog)
+        && (!st.caps.get(Cap::StencilTest)
+            || [
+                fr.stencil_front.fail,
+                fr.stencil_front.zfail,
+                fr.stencil_front.zpass,
+            ]
+            .iter()
+            .all(|&o| o == crate::context::fragment_state::StencilOp::Keep));
+    let overlap = {
+        let (ax0, ay0, ax1, ay1) = (
+            sx as i64,
+            sy as i64,
+            sx as i64 + w as i64,
+            sy as i64 + h as i64,
+        );
+        let (bx0, by0, bx1, by1) = (
+            dx as i64,
+            dy as i64,
+            dx as i64 + w as i64,
+            dy as i64 + h as i64,
+        );
+        ax0 < bx1 && bx0 < ax1 && ay0 < by1 && by0 < ay1
+    };
+    // The blit needs a renderable source: never for depth/stencil (Z24S8).
+    let blit =
+        zoom1 && kind == CopyKind::Color && simple && ctx.queries.active.is_none() && !overlap;
+    if blit {
+        let Some(region) = ctx.draw_region() else {
+            return;
+        };
+        let Some(fb) = ctx.fb.as_mut() else { return };
+        ctx.dirty = true;
+        for j in 0..h {
+            for i in 0..w {
+                let Some(s) = src_index(i, j) else { continue };
+                let (x, yd) = (dx as i64 + i as i64, fh - 1 - (dy as i64 + j as i64));
+                if x < region[0] || x >= region[2] || yd < region[1] || yd >= region[3] {
+                    continue;
+                }
+                let d = (yd * fw + x) as usize;
+                match kind {
+                    CopyKind::Color => fb.color[d] = fb.color[s],
+                    CopyKind::Depth => fb.depth[d] = fb.depth[s],
+                    CopyKind::Stencil => fb.stencil[d] = fb.stencil[s],
+                }
+            }
+        }
+        return;
+    }
+    // Mesa's temporary texture is y-down (top source row first) and sampled with t flipped.
+    let q = quad(ctx, dx, dy, w, h, true);
+    let src_index = |i: usize, j: usize| src_index(i, h - 1 - j);
+    match kind {
+        CopyKind::Color => {
+            let texels: Vec<[f32; 4]> = (0..w * h)
+                .map(|k| {
+                    src_index(k % w, k / w)
+                        .map_or([0.0; 4], |s| fb.color[s].map(|v| v as f32 * (1.0 / 255.0)))
+                })
+                .collect();
+            let c = shade_colors(ctx, &texels, true);
+            run(ctx, &q, Source::Color(&c));
+        }
+        CopyKind::Depth => {
+            let max = fb.depth_format.max_value() as f32;
+            let z: Vec<f32> = (0..w * h)
+                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| fb.depth[s] as f32 / max))
+                .collect();
+            let c = ctx.state.current.color.map(unorm8);
+            run(ctx, &q, Source::Depth(&z, c));
+        }
+        CopyKind::Stencil => {
+            let s: Vec<u8> = (0..w * h)
+                .map(|k| src_index(k % w, k / w).map_or(0, |s| fb.stencil[s]))
+                .collect();
+            run(ctx, &q, Source::Stencil(&s));
+        }
+    }
+}

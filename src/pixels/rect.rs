@@ -1,0 +1,193 @@
+//! The textured rectangle behind glDrawPixels, glCopyPixels and glBitmap.
+//!
+//! Mesa's state tracker draws every pixel rectangle as a quad (`st_draw_quad`, a triangle
+//! fan v0..v3) whose corners are the raster position `(x, y)` (already rounded to integers
+//! by the caller) and `(x + w·zoomX, y + h·zoomY)`, converted to clip space as
+//! `v / fb_size · 2 − 1` in f32 and back by the viewport transform of a viewport that
+//! covers the framebuffer. The image is a texture sampled NEAREST with CLAMP_TO_EDGE at
+//! normalised coordinates: s goes 0..1 left to right and t 0..1 bottom to top (top to
+//! bottom with `flip_t`, for glCopyPixels, whose temporary texture is y-down).
+//!
+//! This module reproduces that draw: the same corner arithmetic, llvmpipe's snapping, fill
+//! rule and attribute planes (through [`setup_triangle`]), and `floor(s·w)` texel selection,
+//! so that fractional and negative zooms pick the texels llvmpipe picks. Each covered pixel
+//! is handed to a callback with its texel, and [`Fragments`] runs the per-fragment
+//! operations of [`shade_chunk`] on it.
+
+use crate::fragment::span::{eval, shade_chunk, ChunkColors, Fused, Madd, Unfused, LANES};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::{ClipVertex, Viewport, VARY_TEX};
+use crate::stats::Stats;
+
+/// A pixel rectangle to rasterize.
+#[derive(Clone, Copy, Debug)]
+pub struct Quad {
+    /// Window x, y (GL, y-up) of the lower-left corner.
+    pub x: i32,
+    /// Window y.
+    pub y: i32,
+    /// Image width in texels.
+    pub w: usize,
+    /// Image height in texels.
+    pub h: usize,
+    /// glPixelZoom (1, 1 for bitmaps).
+    pub zoom: [f32; 2],
+    /// Window z in [0,1] (the raster position's).
+    pub z: f32,
+    /// Texture rows run top to bottom (glCopyPixels).
+    pub flip_t: bool,
+}
+
+/// Framebuffer size and the draw region (y-down, exclusive high end).
+#[derive(Clone, Copy, Debug)]
+pub struct Dest {
+    /// Framebuffer width.
+    pub fb_w: usize,
+    /// Framebuffer height.
+    pub fb_h: usize,
+    /// Scissor ∩ framebuffer, y-down `[x0, y0, x1, y1)`.
+    pub region: [i64; 4],
+    /// Whether the CPU fuses multiply-adds (llvmpipe does where it can).
+    pub fma: bool,
+}
+
+/// Calls `f(tri, px, py, col, row)` for every pixel `(px, py)` (y-down) the quad covers
+/// inside the region, with the texel column and row NEAREST sampling selects.
+pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
+    q: &Quad,
+    d: &Dest,
+    mut f: F,
+) {
+    if q.w == 0 || q.h == 0 {
+        return;
+    }
+    if d.fma {
+        raster_m::<Fused, F>(q, d, &mut f)
+    } else {
+        raster_m::<Unfused, F>(q, d, &mut f)
+    }
+}
+
+fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
+    q: &Quad,
+    d: &Dest,
+    f: &mut F,
+) {
+    let (fbw, fbh) = (d.fb_w as f32, d.fb_h as f32);
+    let x0 = q.x as f32;
+    let x1 = q.x as f32 + q.w as f32 * q.zoom[0];
+    let y0 = q.y as f32;
+    let y1 = q.y as f32 + q.h as f32 * q.zoom[1];
+    let zc = q.z * 2.0 - 1.0;
+    let vp = Viewport::new([0, 0, d.fb_w as i32, d.fb_h as i32], [0.0, 1.0], d.fb_h);
+    let (t_bot, t_top) = if q.flip_t { (0.0, 1.0) } else { (1.0, 0.0) };
+    let corner = |x: f32, y: f32, s: f32, t: f32| {
+        let clip = [x / fbw * 2.0 - 1.0, y / fbh * 2.0 - 1.0, zc, 1.0];
+        let mut v = ClipVertex {
+            clip,
+            win: vp.apply_shader(clip, d.fma),
+            ..Default::default()
+        };
+        v.vary[VARY_TEX] = s;
+        v.vary[VARY_TEX + 1] = t;
+        v
+    };
+    let v = [
+        corner(x0, y1, 0.0, t_bot),
+        corner(x1, y1, 1.0, t_bot),
+        corner(x1, y0, 1.0, t_top),
+        corner(x0, y0, 0.0, t_top),
+    ];
+    let cull = CullMode {
+        front: false,
+        back: false,
+        front_ccw: true,
+    };
+    let (wf, hf) = (q.w as f32, q.h as f32);
+    let mut tri = SetupTriangle::default();
+    for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
+        if !matches!(
+            setup_triangle([&v[a], &v[b], &v[c]], VARY_TEX + 2, cull, None, &mut tri),
+            SetupResult::Draw
+        ) {
+            continue;
+        }
+        let y_lo = tri.bbox[1].max(d.region[1]);
+        let y_hi = tri.bbox[3].min(d.region[3] - 1);
+        for py in y_lo..=y_hi {
+            let mut lo = tri.bbox[0].max(d.region[0]);
+            let mut hi = tri.bbox[2].min(d.region[2] - 1);
+            for e in &tri.edges {
+                match e.span(py) {
+                    Some((a, b)) => {
+                        lo = lo.max(a);
+                        hi = hi.min(b);
+                    }
+                    None => hi = lo - 1,
+                }
+            }
+            let fy = py as f32;
+            for px in lo..=hi {
+                let fx = px as f32;
+                let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
+                let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
+                let col = ((s * wf).floor().max(0.0) as usize).min(q.w - 1);
+                let row = ((t * hf).floor().max(0.0) as usize).min(q.h - 1);
+                f(&tri, px as usize, py as usize, col, row);
+            }
+        }
+    }
+}
+
+/// The per-fragment operations (alpha, stencil, depth tests, blending or logic op, masks)
+/// for single fragments of a pixel rectangle.
+pub struct Fragments<'a, 'b> {
+    /// What the fragment stage does.
+    pub plan: &'a FragPlan,
+    /// The framebuffer.
+    pub target: Target<'b>,
+    /// Work counters.
+    pub stats: &'a mut Stats,
+}
+
+impl Fragments<'_, '_> {
+    /// One fragment of colour `rgba` at `(px, py)`; its depth is the triangle's z plane
+    /// (constant over a pixel rectangle) or `z` when given (depth images).
+    pub fn put(
+        &mut self,
+        tri: &SetupTriangle,
+        px: usize,
+        py: usize,
+        rgba: [u8; 4],
+        z: Option<f32>,
+    ) {
+        let mut c = [[0u8; LANES]; 4];
+        for k in 0..4 {
+            c[k][0] = rgba[k];
+        }
+        let mut live = [false; LANES];
+        live[0] = true;
+        let zt;
+        let t = match z {
+            Some(z) => {
+                let mut t2 = tri.clone();
+                t2.z.a0 = z;
+                t2.z.dadx = 0.0;
+                t2.z.dady = 0.0;
+                zt = t2;
+                &zt
+            }
+            None => tri,
+        };
+        let src = ChunkColors::Ready(&c);
+        let (p, fb, st) = (self.plan, &mut self.target, &mut *self.stats);
+        // The z plane is constant, so fused and unfused evaluation agree.
+        if p.depth.is_some() {
+            shade_chunk::<Unfused, true, false, false, true>(t, p, &[], src, fb, py, px, live, st)
+        } else {
+            shade_chunk::<Unfused, false, false, false, true>(t, p, &[], src, fb, py, px, live, st)
+        }
+    }
+}
