@@ -228,6 +228,7 @@ const SCENES: &[&str] = &[
     "occlusion_query",
     "accum_buffer",
     "evaluators",
+    "feedback_select",
 ];
 
 macro_rules! scene_tests {
@@ -320,6 +321,7 @@ scene_tests!(
     occlusion_query,
     accum_buffer,
     evaluators,
+    feedback_select,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

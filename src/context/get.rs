@@ -36,6 +36,10 @@ pub struct Value {
 }
 
 impl Value {
+    /// A value of f64 components.
+    pub fn from_f64(kind: Kind, v: &[f64]) -> Self {
+        Value::new(kind, v)
+    }
     /// A value of f32 components.
     pub fn from_f32(kind: Kind, v: &[f32]) -> Self {
         let d: Vec<f64> = v.iter().map(|&x| x as f64).collect();
@@ -303,6 +307,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
             let unit = st.active_texture;
             if let Some(v) = super::pixel_state::get(&c.raster_pos, &c.pixel_modes, unit, pname) {
                 return v;
+            }
+            if let Some(v) = c.feedback.get(pname) {
+                return Ok(v);
             }
             match Cap::from_gl(pname) {
                 Ok(cap) => b(st.caps.get(cap)),
