@@ -4,6 +4,7 @@
 //! the clip volume the whole draw takes the clipping path, which also changes the
 //! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
 
+use crate::context::feedback::{FeedbackSink, RenderMode};
 use crate::context::state::{Cap, Face, Primitive};
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
@@ -38,8 +39,16 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let ucp = &ctx.clip_planes;
     stage.set_user_planes(&ucp.eye, ucp.enabled, &ctx.matrices.projection);
     stage.fog = st.caps.get(Cap::Fog).then_some(ctx.light.fog);
+    // Mesa's feedback vertex program always writes unit 0's texture coordinates; the
+    // texture matrix and texgen apply only when the unit has a complete enabled texture.
+    let feedback = ctx.feedback.mode != RenderMode::Render;
+    let feedback_tex0 = feedback && ctx.textures.unit_plan(0).is_some();
+    if feedback_tex0 {
+        stage.add_texture_unit(0, ctx.matrices.texture[0].top());
+    }
     let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
         ..crate::context::state::MAX_TEXTURE_UNITS)
+        .filter(|_| !feedback)
         .filter_map(|u| {
             let p = ctx.textures.unit_plan(u)?;
             stage.add_texture_unit(u, ctx.matrices.texture[u].top());
@@ -50,6 +59,9 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     let mv_flags = ctx.matrices.modelview.top_flags();
     let (normalize, rescale) = (st.caps.get(Cap::Normalize), st.caps.get(Cap::RescaleNormal));
     let texgen_eye = stage.add_texgen(&ctx.texgen, mv_flags, normalize, rescale);
+    if feedback && !feedback_tex0 {
+        stage.add_texture_unit(0, &crate::fixed_function::matrix::IDENTITY);
+    }
     stage.light = LightPlan::new(
         &ctx.light,
         &st.caps,
@@ -61,6 +73,10 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
     stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
+    if feedback {
+        drop(tex_plans);
+        return draw_feedback(ctx, &stage, mode, verts, indices);
+    }
     plan.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
@@ -215,4 +231,57 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     if ctx.state.caps.get(Cap::ColorMaterial) {
         ctx.light.sync_color_material(ctx.state.current.color);
     }
+}
+
+/// A draw in feedback or selection mode: the vertex stage, then the draw module's
+/// primitive stages into the feedback buffer or the hit record; nothing is rasterized.
+fn draw_feedback(
+    ctx: &mut Context,
+    stage: &VertexStage,
+    mode: Primitive,
+    verts: &[VertexIn],
+    indices: Option<&[u32]>,
+) {
+    let Some(fb) = ctx.fb.as_ref() else { return };
+    let st = &ctx.state;
+    let n = indices.map_or(verts.len(), |i| i.len());
+    let cv: Vec<ClipVertex> = verts.iter().map(|v| stage.run(v)).collect();
+    let at = |k: usize| -> &ClipVertex {
+        match indices {
+            Some(ix) => &cv[ix[k] as usize],
+            None => &cv[k],
+        }
+    };
+    let edge = |k: usize| match indices {
+        Some(ix) => verts[ix[k] as usize].edge_flag,
+        None => verts[k].edge_flag,
+    };
+    let cull_on = st.caps.get(Cap::CullFace);
+    let stages = crate::geometry::feedback::PrimStages {
+        ucp: &stage.ucp,
+        viewport: stage.viewport,
+        nvary: stage.nvary(),
+        flat: st.shade_model == crate::context::state::ShadeModel::Flat,
+        cull: CullMode {
+            front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
+            back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
+            front_ccw: st.front_ccw,
+        },
+        back: stage.two_side().then(|| stage.back_offset()),
+        polygon: ctx.raster.polygon,
+        offset: [
+            st.caps.get(Cap::PolygonOffsetFill),
+            st.caps.get(Cap::PolygonOffsetLine),
+            st.caps.get(Cap::PolygonOffsetPoint),
+        ],
+        // Mesa's private feedback draw context never learns the depth format (its
+        // minimum resolvable depth stays 0), so the offset units add nothing.
+        depth_bits: 0,
+    };
+    let mut sink = FeedbackSink {
+        state: &mut ctx.feedback,
+        height: fb.height as f32,
+        tex0: crate::geometry::VARY_TEX,
+    };
+    stages.run(mode, n, at, edge, &mut sink);
 }

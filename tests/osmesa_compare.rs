@@ -249,6 +249,7 @@ const SCENES: &[&str] = &[
     "occlusion_query",
     "accum_buffer",
     "evaluators",
+    "feedback_select",
 ];
 
 macro_rules! scene_tests {
@@ -349,6 +350,7 @@ scene_tests!(
     occlusion_query,
     accum_buffer,
     evaluators,
+    feedback_select,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -67,6 +67,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("pixels_draw.rs", Header::Gl),
     ("lists.rs", Header::Gl),
     ("accum.rs", Header::Gl),
+    ("feedback.rs", Header::Gl),
     ("eval.rs", Header::Gl),
     ("aliases_gl.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),

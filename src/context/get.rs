@@ -36,6 +36,10 @@ pub struct Value {
 }
 
 impl Value {
+    /// A value of f64 components.
+    pub fn from_f64(kind: Kind, v: &[f64]) -> Self {
+        Value::new(kind, v)
+    }
     /// A value of f32 components.
     pub fn from_f32(kind: Kind, v: &[f32]) -> Self {
         let d: Vec<f64> = v.iter().map(|&x| x as f64).collect();
@@ -320,6 +324,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
                 return v;
             }
             if let Some(v) = c.pixel_maps.get(pname) {
+                return Ok(v);
+            }
+            if let Some(v) = c.feedback.get(pname) {
                 return Ok(v);
             }
             match Cap::from_gl(pname) {

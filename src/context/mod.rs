@@ -10,6 +10,7 @@ pub mod attrib;
 pub mod dlist;
 pub mod error;
 pub mod eval;
+pub mod feedback;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
@@ -130,6 +131,8 @@ pub struct Context {
     pub accum: accum::AccumState,
     /// Evaluator maps and grids.
     pub eval: eval::EvalState,
+    /// Render mode, feedback and selection buffers, name stack.
+    pub feedback: feedback::FeedbackState,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -191,6 +194,7 @@ impl Context {
             queries: Default::default(),
             accum: Default::default(),
             eval: Default::default(),
+            feedback: Default::default(),
         }
     }
 

@@ -33,6 +33,7 @@ pub mod buffers;
 pub mod draw;
 pub mod enums;
 pub mod eval;
+pub mod feedback;
 pub mod fragment;
 pub mod fragment_ext;
 pub mod glext_enums;

@@ -5,6 +5,7 @@
 
 pub mod assemble;
 pub mod clip;
+pub mod feedback;
 pub mod fetch;
 pub mod setup;
 pub mod unfilled;

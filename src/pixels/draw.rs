@@ -167,11 +167,32 @@ fn shade_colors(ctx: &Context, texels: &[[f32; 4]], transfer: bool) -> Vec<[u8; 
         .collect()
 }
 
+/// Outside render mode a pixel rectangle draws nothing: feedback mode writes `token`
+/// and the raster position as a vertex (Mesa's `drawpix.c`). Returns whether the mode
+/// is not GL_RENDER.
+fn feedback_token(ctx: &mut Context, token: u32) -> bool {
+    use crate::context::feedback::{FeedbackVertex, RenderMode};
+    if ctx.feedback.mode == RenderMode::Render {
+        return false;
+    }
+    let r = &ctx.raster_pos;
+    let v = FeedbackVertex {
+        win: r.pos,
+        color: r.color,
+        texcoord: r.texcoords[0],
+    };
+    ctx.feedback.raster_token(token, &v);
+    true
+}
+
 /// glDrawPixels of a decoded image at the current raster position (validated by the
 /// caller; an invalid raster position draws nothing).
 pub fn draw_pixels(ctx: &mut Context, img: &Image) {
     super::cache::flush(ctx);
-    if !ctx.raster_pos.valid || img.w == 0 || img.h == 0 {
+    if !ctx.raster_pos.valid || feedback_token(ctx, crate::ffi::enums::GL_DRAW_PIXEL_TOKEN) {
+        return;
+    }
+    if img.w == 0 || img.h == 0 {
         return;
     }
     let (x, y) = raster_xy(ctx);
@@ -229,7 +250,8 @@ pub fn bitmap(ctx: &mut Context, w: usize, h: usize, orig: [f32; 2], mv: [f32; 2
     if !ctx.raster_pos.valid {
         return;
     }
-    if w > 0 && h > 0 && bits.len() >= w * h {
+    if feedback_token(ctx, crate::ffi::enums::GL_BITMAP_TOKEN) {
+    } else if w > 0 && h > 0 && bits.len() >= w * h {
         let p = ctx.raster_pos.pos;
         let x = (p[0] + 0.0001 - orig[0]).floor() as i32;
         let y = (p[1] + 0.0001 - orig[1]).floor() as i32;
@@ -287,7 +309,10 @@ pub enum CopyKind {
 /// raster position (validated by the caller).
 pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind: CopyKind) {
     super::cache::flush(ctx);
-    if !ctx.raster_pos.valid || w == 0 || h == 0 {
+    if !ctx.raster_pos.valid || feedback_token(ctx, crate::ffi::enums::GL_COPY_PIXEL_TOKEN) {
+        return;
+    }
+    if w == 0 || h == 0 {
         return;
     }
     let Some(fb) = ctx.fb.as_ref() else { return };

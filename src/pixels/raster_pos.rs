@@ -52,6 +52,9 @@ pub fn raster_pos(ctx: &mut Context, v: [f32; 4]) {
     for i in 0..3 {
         r.pos[i] = ndc[i] * scale[i] + translate[i];
     }
+    if ctx.feedback.mode == crate::context::feedback::RenderMode::Select {
+        ctx.feedback.update_hit(r.pos[2]);
+    }
     r.pos[3] = w;
     r.distance = if ctx.light.fog.coord_from_attrib {
         st.current.fog_coord
@@ -109,4 +112,7 @@ pub fn window_pos(ctx: &mut Context, x: f32, y: f32, z: f32) {
     r.color = st.current.color.map(|c| c.clamp(0.0, 1.0));
     r.secondary = st.current.secondary_color.map(|c| c.clamp(0.0, 1.0));
     r.texcoords = st.current.texcoord;
+    if ctx.feedback.mode == crate::context::feedback::RenderMode::Select {
+        ctx.feedback.update_hit(r.pos[2]);
+    }
 }
