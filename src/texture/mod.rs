@@ -24,6 +24,7 @@
 
 pub mod env;
 pub mod fast;
+pub mod fast_avx2;
 pub mod lod;
 pub mod mipmap;
 pub mod sample;
