@@ -413,7 +413,7 @@ mod tests {
                 for i in 0..LANES {
                     s[r][i] = s0 + a * i as f32 + b * r as f32;
                     t[r][i] = t0 + c * i as f32 + d * r as f32;
-                    live[r][i] = rnd() % 5 != 0;
+                    live[r][i] = !rnd().is_multiple_of(5);
                 }
             }
             if n % 50 == 7 {
