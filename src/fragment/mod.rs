@@ -11,6 +11,7 @@
 
 pub mod blend;
 pub mod simd;
+pub mod simd_tex;
 pub mod span;
 
 use crate::context::fragment_state::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};

@@ -9,7 +9,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::{BlendPlan, FragPlan};
+use super::{BlendPlan, DepthPlan, FragPlan};
 use crate::context::fragment_state::{BlendEquation, BlendFactor};
 use crate::context::state::CompareFunc;
 use crate::framebuffer::{DepthFormat, Target};
@@ -19,7 +19,7 @@ use std::arch::x86_64::*;
 
 /// Evaluates `p` at lanes `fx`, row `fy`.
 #[inline(always)]
-unsafe fn eval<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
+pub(super) unsafe fn eval<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
     // SAFETY: called only from functions compiled with AVX2 (and FMA when FMA is set).
     unsafe {
         let (a0, dx, dy) = (
@@ -40,14 +40,14 @@ unsafe fn eval<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
 
 /// Clamps to [0,1] with NaN → 0 (`maxps` returns its second operand for NaN).
 #[inline(always)]
-unsafe fn sat(v: __m256) -> __m256 {
+pub(super) unsafe fn sat(v: __m256) -> __m256 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe { _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0)) }
 }
 
 /// `d FUNC q` as a lane mask, for unsigned values below 2^31.
 #[inline(always)]
-unsafe fn depth_pass(func: CompareFunc, q: __m256i, d: __m256i) -> __m256i {
+pub(super) unsafe fn depth_pass(func: CompareFunc, q: __m256i, d: __m256i) -> __m256i {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let ones = _mm256_set1_epi32(-1);
@@ -64,6 +64,80 @@ unsafe fn depth_pass(func: CompareFunc, q: __m256i, d: __m256i) -> __m256i {
             CompareFunc::GEqual => _mm256_xor_si256(lt, ones),
             CompareFunc::Always => ones,
         }
+    }
+}
+
+/// The depth test of the `live` lanes of 8 pixels at `idx` of the depth buffer (lanes
+/// `fx`, row `fy`): Z from the plane, clamped and quantised as
+/// [`super::span::shade_chunk`] does, compared with the stored values and, where it
+/// passes and the plan writes depth, stored. Returns the passing lanes.
+///
+/// # Safety
+/// AVX2 (+FMA when `FMA`) context; the live lanes lie inside the depth buffer.
+#[inline(always)]
+pub(super) unsafe fn depth_test8<const FMA: bool>(
+    t: &SetupTriangle,
+    d: &DepthPlan,
+    fb: &mut Target<'_>,
+    idx: usize,
+    fx: __m256,
+    fy: __m256,
+    live: __m256i,
+) -> __m256i {
+    // SAFETY: forwarded from the caller; the masked load and store touch live lanes only.
+    unsafe {
+        let z = sat(eval::<FMA>(&t.z, fx, fy));
+        let q = match d.format {
+            DepthFormat::Z24 => _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0))),
+            _ => {
+                // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
+                let v = _mm256_add_ps(
+                    _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
+                    _mm256_set1_ps(128.0),
+                );
+                _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
+            }
+        };
+        let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
+        let old = _mm256_maskload_epi32(dptr as *const i32, live);
+        let pass = _mm256_and_si256(live, depth_pass(d.func, q, old));
+        if d.write {
+            _mm256_maskstore_epi32(dptr, pass, q);
+        }
+        pass
+    }
+}
+
+/// Writes the packed RGBA8 colours `px` of the `pass` lanes of 8 pixels at `idx` of the
+/// colour buffer, blended over the stored colours when `BLEND` (`n`: the lanes inside the
+/// row, counted as colour reads as [`super::span::shade_chunk`] counts them).
+///
+/// # Safety
+/// AVX2 context; the passing lanes lie inside the colour buffer.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn write8<const BLEND: bool>(
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    idx: usize,
+    n: usize,
+    pass: __m256i,
+    px: __m256i,
+    stats: &mut Stats,
+) {
+    // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
+    unsafe {
+        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+        let px = if BLEND {
+            let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
+            let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
+            stats.color_reads += n as u64;
+            blend8(b, px, dst)
+        } else {
+            px
+        };
+        _mm256_maskstore_epi32(cptr, pass, px);
+        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
     }
 }
 
@@ -115,29 +189,10 @@ pub unsafe fn shade_span<
             let mut pass = live;
             if DEPTH {
                 let d = depth.expect("DEPTH implies a depth plan");
-                let z = sat(eval::<FMA>(&t.z, fx, fy));
-                let q = match d.format {
-                    DepthFormat::Z24 => {
-                        _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0)))
-                    }
-                    _ => {
-                        // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
-                        let v = _mm256_add_ps(
-                            _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
-                            _mm256_set1_ps(128.0),
-                        );
-                        _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
-                    }
-                };
-                let dptr = fb.depth.as_mut_ptr().add(idx) as *mut __m256i;
-                let old = _mm256_maskload_epi32(dptr as *const i32, live);
-                pass = _mm256_and_si256(live, depth_pass(d.func, q, old));
+                pass = depth_test8::<FMA>(t, &d, fb, idx, fx, fy, live);
                 let np = _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
                 stats.depth_reads += n as u64;
                 stats.depth_failed += n as u64 - np;
-                if d.write {
-                    _mm256_maskstore_epi32(dptr as *mut i32, pass, q);
-                }
                 if np == 0 {
                     x += n;
                     continue;
@@ -168,18 +223,7 @@ pub unsafe fn shade_span<
                 };
                 // The framebuffer is RGBA in memory for every user format (converted at
                 // flush time), so the packed lanes are stored as they are.
-                let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
-                let px = if BLEND {
-                    let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
-                    let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
-                    stats.color_reads += n as u64;
-                    blend8(b, px, dst)
-                } else {
-                    px
-                };
-                _mm256_maskstore_epi32(cptr, pass, px);
-                stats.color_writes +=
-                    _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+                write8::<BLEND>(plan, fb, idx, n, pass, px, stats);
             }
             x += n;
         }
@@ -299,7 +343,7 @@ unsafe fn blend16(p: &BlendPlan, s: __m256i, d: __m256i, k: __m256i) -> __m256i 
 /// Blends eight packed RGBA8 source pixels over eight destination pixels exactly as
 /// [`super::blend::blend`] does.
 #[inline(always)]
-unsafe fn blend8(p: &BlendPlan, src: __m256i, dst: __m256i) -> __m256i {
+pub(super) unsafe fn blend8(p: &BlendPlan, src: __m256i, dst: __m256i) -> __m256i {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let z = _mm256_setzero_si256();

@@ -14,6 +14,8 @@ use crate::texture::UnitPlan;
 
 /// How `a * b + c` rounds: llvmpipe fuses it exactly when the CPU has FMA.
 pub trait Madd {
+    /// Whether [`Madd::madd`] fuses (selects the FMA variant of the AVX2 code).
+    const FUSED: bool;
     /// `a * b + c`.
     fn madd(a: f32, b: f32, c: f32) -> f32;
 }
@@ -24,6 +26,7 @@ pub struct Fused;
 pub struct Unfused;
 
 impl Madd for Fused {
+    const FUSED: bool = true;
     #[inline(always)]
     fn madd(a: f32, b: f32, c: f32) -> f32 {
         a.mul_add(b, c)
@@ -31,6 +34,7 @@ impl Madd for Fused {
 }
 
 impl Madd for Unfused {
+    const FUSED: bool = false;
     #[inline(always)]
     fn madd(a: f32, b: f32, c: f32) -> f32 {
         a * b + c

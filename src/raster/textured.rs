@@ -7,6 +7,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::row_span;
+#[cfg(target_arch = "x86_64")]
+use crate::fragment::simd_tex::tex_row;
 use crate::fragment::span::{
     frag_colors, one_over_w, shade_chunk, tex_coords_oow, ChunkColors, Madd, LANES,
 };
@@ -132,6 +134,9 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
     // Texels of the current chunk; lanes of skipped quads keep stale values, never used.
     let mut tex = [[[0u8; 4]; LANES]; 2];
     let reads_frag = env.reads_frag();
+    let vector = crate::texture::fast_avx2::available();
+    #[cfg(target_arch = "x86_64")]
+    let simd = vector && crate::fragment::simd_tex::plan_ok(plan, fb);
     for Chunk {
         qy,
         x,
@@ -147,23 +152,34 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
         ];
         let (s0, t0) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[0], &oow[0]);
         let (s1, t1) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[1], &oow[1]);
-        for j in 0..LANES / 2 {
-            let (l, r) = (2 * j, 2 * j + 1);
-            if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                continue;
-            }
-            let v = fast::quad_u8(
-                u,
-                [s0[l], s0[r], s1[l], s1[r]],
-                [t0[l], t0[r], t1[l], t1[r]],
-            );
-            tex[0][l] = v[0];
-            tex[0][r] = v[1];
-            tex[1][l] = v[2];
-            tex[1][r] = v[3];
-        }
+        fast::chunk_u8(u, &[s0, s1], &[t0, t1], &live, vector, &mut tex);
         for r in 0..2 {
             if !live[r].iter().any(|&l| l) {
+                continue;
+            }
+            #[cfg(target_arch = "x86_64")]
+            if simd {
+                let py = (qy + r as i64) as usize;
+                let (x, l, tx) = (x as usize, &live[r], &tex[r]);
+                // SAFETY: `simd` implies AVX2 (`fast_avx2::available`), FMA exactly when
+                // `M::FUSED` in the callers that reach here, and a plan `plan_ok` accepts;
+                // live lanes are inside the row.
+                unsafe {
+                    match (M::FUSED, plan.blend.is_some()) {
+                        (true, false) => tex_row::<true, DEPTH, FLAT, PERSP, false>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                        (true, true) => tex_row::<true, DEPTH, FLAT, PERSP, true>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                        (false, false) => tex_row::<false, DEPTH, FLAT, PERSP, false>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                        (false, true) => tex_row::<false, DEPTH, FLAT, PERSP, true>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                    }
+                }
                 continue;
             }
             let frag = if reads_frag {

@@ -17,7 +17,7 @@
 use super::env::{Arg, Combine, CombineFn, Operand, Source};
 use super::sample::select_levels;
 use super::sample::INV_255;
-use super::{wrap, Filter, Level, UnitPlan};
+use super::{fast_avx2, wrap, Filter, Level, UnitPlan};
 use crate::fragment::blend::Lanes;
 use crate::fragment::span::{unorm8, LANES};
 use std::sync::OnceLock;
@@ -151,10 +151,19 @@ fn filter(p: &UnitPlan<'_>, img: &Level, linear: bool, s: f32, t: f32) -> u64 {
 /// The 8-bit texture values of a 2x2 quad (TL, TR, BL, BR, y-down) with one LOD from
 /// TL/TR/BL: bit for bit the bytes behind [`UnitPlan::sample_quad`] on the AoS path.
 #[inline(always)]
-#[allow(clippy::needless_range_loop)]
 pub fn quad_u8(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[u8; 4]; 4] {
-    let lod = p.quad_lod(s, t);
-    let (f, l0, l1, frac) = select_levels(p, lod);
+    quad_u8_levels(p, select_levels(p, p.quad_lod(s, t)), s, t)
+}
+
+/// [`quad_u8`] with the levels [`select_levels`] chose.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)]
+fn quad_u8_levels(
+    p: &UnitPlan<'_>,
+    (f, l0, l1, frac): (Filter, usize, usize, f32),
+    s: [f32; 4],
+    t: [f32; 4],
+) -> [[u8; 4]; 4] {
     let linear = f == Filter::Linear;
     let a = p.image(l0);
     // Plain loops: `array::from_fn` closures are not inlined into the AVX2 callers.
@@ -175,6 +184,121 @@ pub fn quad_u8(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[u8; 4]; 4] {
         out[i] = pack(lerp4(va, vb, w));
     }
     out
+}
+
+/// The 8-bit texture values of a chunk: two rows (`s[r]`, `t[r]`) of [`LANES`] pixels,
+/// [`LANES`]` / 2` quads, each with its own LOD; only quads with a `live` pixel are
+/// sampled (the other lanes of `out` keep their values). With `vector` (the CPU has
+/// AVX2, [`fast_avx2::available`]) and one filter and pair of levels for every live quad,
+/// each row is sampled 8 pixels at once by [`fast_avx2::RowSampler`]; the scalar code
+/// ([`quad_u8`]) gives the same bytes and serves every other case.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)]
+pub fn chunk_u8(
+    p: &UnitPlan<'_>,
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    live: &[[bool; LANES]; 2],
+    vector: bool,
+    out: &mut [[[u8; 4]; LANES]; 2],
+) {
+    const QUADS: usize = LANES / 2;
+    let mut sel = [None; QUADS];
+    let mut key = None;
+    let mut uniform = true;
+    // Without a LOD every quad magnifies the base level: choose once.
+    let fixed = (!p.needs_lod).then(|| select_levels(p, super::Lod::MAG));
+    for j in 0..QUADS {
+        let (l, r) = (2 * j, 2 * j + 1);
+        if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+            continue;
+        }
+        let lv = if let Some(lv) = fixed {
+            lv
+        } else {
+            select_levels(
+                p,
+                p.quad_lod(
+                    [s[0][l], s[0][r], s[1][l], s[1][r]],
+                    [t[0][l], t[0][r], t[1][l], t[1][r]],
+                ),
+            )
+        };
+        sel[j] = Some(lv);
+        match key {
+            None => key = Some((lv.0, lv.1, lv.2)),
+            Some(k) => uniform &= k == (lv.0, lv.1, lv.2),
+        }
+    }
+    if let (true, true, Some((f, l0, l1))) = (vector, uniform, key) {
+        if vector_rows(p, f, l0, l1, &sel, s, t, live, out) {
+            return;
+        }
+    }
+    for j in 0..QUADS {
+        if let Some(lv) = sel[j] {
+            let (l, r) = (2 * j, 2 * j + 1);
+            let v = quad_u8_levels(
+                p,
+                lv,
+                [s[0][l], s[0][r], s[1][l], s[1][r]],
+                [t[0][l], t[0][r], t[1][l], t[1][r]],
+            );
+            out[0][l] = v[0];
+            out[0][r] = v[1];
+            out[1][l] = v[2];
+            out[1][r] = v[3];
+        }
+    }
+}
+
+/// The vector half of [`chunk_u8`]: `false` when the rows must be sampled by the scalar
+/// code (a wrap mode or size it does not handle, or a coordinate out of its range).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn vector_rows(
+    p: &UnitPlan<'_>,
+    f: Filter,
+    l0: usize,
+    l1: usize,
+    sel: &[Option<(Filter, usize, usize, f32)>; LANES / 2],
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    live: &[[bool; LANES]; 2],
+    out: &mut [[[u8; 4]; LANES]; 2],
+) -> bool {
+    let a = p.image(l0);
+    let b = (l1 != l0).then(|| p.image(l1));
+    let fits = |img: &Level| {
+        fast_avx2::handles(p.wrap_s, p.pot[0], img.width)
+            && fast_avx2::handles(p.wrap_t, p.pot[1], img.height)
+    };
+    if !fits(a) || !b.is_none_or(fits) {
+        return false;
+    }
+    let mut wmip = [0i32; LANES];
+    for (j, lv) in sel.iter().enumerate() {
+        if let Some(lv) = lv {
+            let w = (lv.3 * 256.0) as i32;
+            wmip[2 * j] = w;
+            wmip[2 * j + 1] = w;
+        }
+    }
+    let rs = fast_avx2::RowSampler {
+        a,
+        b,
+        linear: f == Filter::Linear,
+        wrap: [p.wrap_s, p.wrap_t],
+    };
+    // A row that declines leaves `out` to the scalar code, which rewrites every live lane.
+    for r in 0..2 {
+        // SAFETY: `vector` is only set when `fast_avx2::available()`, and this inlines
+        // into the AVX2 raster entry points.
+        if live[r].iter().any(|&l| l) && !unsafe { rs.row(&s[r], &t[r], &wmip, &mut out[r]) } {
+            return false;
+        }
+    }
+    true
 }
 
 /// The environment of [`LANES`] pixels: `tex` their 8-bit texture values, `frag` their
@@ -267,6 +391,59 @@ mod tests {
         }
     }
 
+    /// Random chunks through [`chunk_u8`] (8-wide when the CPU has AVX2, and the scalar
+    /// code) against [`quad_u8`] per quad: the same bytes in every live lane. Coordinates
+    /// range from small steps (one level for the whole chunk) to huge and NaN values (the
+    /// vector sampler declines).
+    fn chunks_match_quads(p: &UnitPlan<'_>, rnd: &mut dyn FnMut() -> u32) {
+        for n in 0..200 {
+            let f = |r: u32| (r % 20000) as f32 / 4000.0 - 2.0;
+            let (s0, t0) = (f(rnd()), f(rnd()));
+            let scale = [0.001f32, 0.01, 0.1, 1.0][n % 4] * (rnd() % 1000) as f32 / 1000.0;
+            let (a, b, c, d) = (
+                scale * f(rnd()),
+                scale * f(rnd()),
+                scale * f(rnd()),
+                scale * f(rnd()),
+            );
+            let mut s = [[0f32; LANES]; 2];
+            let mut t = [[0f32; LANES]; 2];
+            let mut live = [[false; LANES]; 2];
+            for r in 0..2 {
+                for i in 0..LANES {
+                    s[r][i] = s0 + a * i as f32 + b * r as f32;
+                    t[r][i] = t0 + c * i as f32 + d * r as f32;
+                    live[r][i] = !rnd().is_multiple_of(5);
+                }
+            }
+            if n % 50 == 7 {
+                s[0][3] = [f32::NAN, 3.0e9, -1.0e12, 4.2e6][n / 50];
+            }
+            for vector in [false, super::fast_avx2::available()] {
+                let mut out = [[[0u8; 4]; LANES]; 2];
+                chunk_u8(p, &s, &t, &live, vector, &mut out);
+                for j in 0..LANES / 2 {
+                    let (l, r) = (2 * j, 2 * j + 1);
+                    if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                        continue;
+                    }
+                    let q = quad_u8(
+                        p,
+                        [s[0][l], s[0][r], s[1][l], s[1][r]],
+                        [t[0][l], t[0][r], t[1][l], t[1][r]],
+                    );
+                    let got = [out[0][l], out[0][r], out[1][l], out[1][r]];
+                    for k in 0..4 {
+                        let lane_live = [live[0][l], live[0][r], live[1][l], live[1][r]][k];
+                        if lane_live {
+                            assert_eq!(got[k], q[k], "vector {vector} chunk {n} quad {j} px {k}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Random quads through both paths, for every AoS configuration.
     #[test]
     fn quads_match_general_sampler() {
@@ -351,6 +528,7 @@ mod tests {
                                     assert_eq!(b, general[i], "{mip:?} {min:?} {mag:?} {wrap:?}");
                                 }
                             }
+                            chunks_match_quads(&p, &mut rnd);
                         }
                     }
                 }

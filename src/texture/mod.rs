@@ -25,6 +25,7 @@
 pub mod cube;
 pub mod env;
 pub mod fast;
+pub mod fast_avx2;
 pub mod lod;
 pub mod mipmap;
 pub mod sample;
