@@ -4,6 +4,7 @@
 //! the clip volume the whole draw takes the clipping path, which also changes the
 //! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
 
+use crate::context::lighting_state::Material;
 use crate::context::state::{Cap, Face, Primitive};
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
@@ -21,6 +22,17 @@ use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
+    draw_lit(ctx, mode, verts, indices, None)
+}
+
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
+pub fn draw_lit(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &[VertexIn],
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+) {
     let Some(fb) = ctx.fb.as_ref() else { return };
     let n = indices.map_or(verts.len(), |i| i.len());
     if n == 0 {
@@ -77,7 +89,24 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         front_ccw: st.front_ccw,
     };
 
-    let cv: Vec<ClipVertex> = verts.iter().map(|v| stage.run(v)).collect();
+    let cv: Vec<ClipVertex> = match (materials, stage.light.is_some()) {
+        (Some(m), true) if m.len() == verts.len() => {
+            if let Some(l) = stage.light.as_mut() {
+                l.vary_material(m);
+            }
+            verts
+                .iter()
+                .zip(m)
+                .map(|(v, m)| {
+                    if let Some(l) = stage.light.as_mut() {
+                        l.vertex_material = Some(*m);
+                    }
+                    stage.run(v)
+                })
+                .collect()
+        }
+        _ => verts.iter().map(|v| stage.run(v)).collect(),
+    };
     ctx.stats.vertices += cv.len() as u64;
     let any_outside = match indices {
         Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
@@ -134,7 +163,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(v, size, nvary, region, &plan, &mut target, stats);
+                    raster_point(v, size, nvary, region, &plan, &tex_plans, &mut target, stats);
                 }
             }
         }
@@ -158,6 +187,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                     stipple.as_mut(),
                     region,
                     &plan,
+                    &tex_plans,
                     &mut target,
                     stats,
                 );

@@ -228,6 +228,15 @@ const SCENES: &[&str] = &[
     "occlusion_query",
     "accum_buffer",
     "evaluators",
+    "lines_textured",
+    "points_textured",
+    "stipple_textured",
+    "material_per_vertex",
+    "edge_flag_array",
+    "dlist_eval_edge",
+    "tutorial_lit_cube",
+    "tutorial_fog_terrain",
+    "tutorial_textured_lit",
 ];
 
 macro_rules! scene_tests {
@@ -320,6 +329,15 @@ scene_tests!(
     occlusion_query,
     accum_buffer,
     evaluators,
+    lines_textured,
+    points_textured,
+    stipple_textured,
+    material_per_vertex,
+    edge_flag_array,
+    dlist_eval_edge,
+    tutorial_lit_cube,
+    tutorial_fog_terrain,
+    tutorial_textured_lit,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -17,6 +17,7 @@ use crate::texture::UnitPlan;
 pub mod batch;
 pub mod lines;
 pub mod prims;
+pub mod prim_tex;
 pub mod stipple;
 mod textured;
 

@@ -16,6 +16,7 @@ use crate::geometry::unfilled::{
 };
 use crate::geometry::{ClipVertex, Viewport};
 use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
 /// The point size llvmpipe receives: glPointSize capped at the maximum.
 pub fn point_size(r: &RasterState) -> f32 {
@@ -78,6 +79,7 @@ impl LinePlan {
         stipple: Option<&mut LineStipple>,
         region: [i64; 4],
         plan: &FragPlan,
+        units: &[UnitPlan<'_>],
         fb: &mut Target<'_>,
         stats: &mut Stats,
     ) {
@@ -100,7 +102,7 @@ impl LinePlan {
         } else {
             (*va, *vb)
         };
-        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, fb, stats);
+        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, units, fb, stats);
     }
 
     /// Stipples and rasterizes a segment already in window coordinates; `flat_vary` is the
@@ -114,12 +116,13 @@ impl LinePlan {
         stipple: Option<&mut LineStipple>,
         region: [i64; 4],
         plan: &FragPlan,
+        units: &[UnitPlan<'_>],
         fb: &mut Target<'_>,
         stats: &mut Stats,
     ) {
         let n = self.nvary;
         match stipple {
-            None => raster_line(p, q, flat_vary, self.width, n, region, plan, fb, stats),
+            None => raster_line(p, q, flat_vary, self.width, n, region, plan, units, fb, stats),
             Some(s) => {
                 s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
                     let a = if t0 > 0.0 {
@@ -132,7 +135,7 @@ impl LinePlan {
                     } else {
                         *q
                     };
-                    raster_line(&a, &b, flat_vary, self.width, n, region, plan, fb, stats);
+                    raster_line(&a, &b, flat_vary, self.width, n, region, plan, units, fb, stats);
                 });
             }
         }
@@ -250,12 +253,14 @@ impl PolyPipeline<'_> {
                 };
                 match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
                     SetupResult::Draw if self.caps.get(Cap::PolygonStipple) => {
+                        let units = rast.units();
                         let mut target = rast.target(stats).target();
                         stippled_triangle(
                             tri,
                             &self.raster.stipple,
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
@@ -265,6 +270,7 @@ impl PolyPipeline<'_> {
                 }
             }
             FillMode::Line => {
+                let units = rast.units();
                 let mut target = rast.target(stats).target();
                 for (bit, s, e) in [(EDGE_2, 2, 0), (EDGE_0, 0, 1), (EDGE_1, 1, 2)] {
                     if edges & bit != 0 {
@@ -275,6 +281,7 @@ impl PolyPipeline<'_> {
                             stipple.as_mut(),
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
@@ -282,6 +289,7 @@ impl PolyPipeline<'_> {
                 }
             }
             FillMode::Point => {
+                let units = rast.units();
                 let mut target = rast.target(stats).target();
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
@@ -291,6 +299,7 @@ impl PolyPipeline<'_> {
                             nvary,
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
