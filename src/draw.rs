@@ -163,7 +163,16 @@ pub fn draw_lit(
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(v, size, nvary, region, &plan, &tex_plans, &mut target, stats);
+                    raster_point(
+                        v,
+                        size,
+                        nvary,
+                        region,
+                        &plan,
+                        &tex_plans,
+                        &mut target,
+                        stats,
+                    );
                 }
             }
         }
@@ -230,6 +239,7 @@ pub fn draw_lit(
                     &viewport,
                     nvary,
                     plan.flat,
+                    back,
                     |p, q, r| out.push([*p, *q, *r]),
                 );
                 for [p, q, r] in &out {

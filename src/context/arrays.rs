@@ -265,6 +265,6 @@ impl ArrayState {
             &mut self.edge_flag,
         ]
         .into_iter()
-            .chain(self.texcoord.iter_mut())
+        .chain(self.texcoord.iter_mut())
     }
 }

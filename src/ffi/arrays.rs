@@ -119,9 +119,7 @@ fn client_state(cap: GLenum, on: bool) {
             GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
             GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
             // Arrays the fixed-function pipeline does not read yet are accepted.
-            GL_INDEX_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => {
-                return Ok(())
-            }
+            GL_INDEX_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => return Ok(()),
             _ => return Err(GlError::InvalidEnum),
         };
         c.check_outside_begin()?;

@@ -7,10 +7,10 @@ use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
 use crate::context::dlist::VertexOp;
-use crate::context::state::Primitive;
-use crate::context::Context;
 use crate::context::error::{GlError, GlResult};
 use crate::context::eval::{Grid, MapKind};
+use crate::context::state::Primitive;
+use crate::context::Context;
 use crate::fixed_function::eval::MAX_ORDER;
 
 /// The map kind and dimensionality (`true` for 2D) of a GL_MAP1_*/GL_MAP2_* target.
@@ -328,7 +328,12 @@ pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
 }
 
 /// Checks glEvalMesh's mode and state; `Some(grid)` when there is something to draw.
-fn mesh_setup(c: &Context, mode: GLenum, allowed: &[GLenum], two: bool) -> GlResult<Option<[Grid; 2]>> {
+fn mesh_setup(
+    c: &Context,
+    mode: GLenum,
+    allowed: &[GLenum],
+    two: bool,
+) -> GlResult<Option<[Grid; 2]>> {
     c.check_outside_begin()?;
     if !allowed.contains(&mode) {
         return Err(GlError::InvalidEnum);
@@ -342,7 +347,11 @@ fn mesh_setup(c: &Context, mode: GLenum, allowed: &[GLenum], two: bool) -> GlRes
 }
 
 /// One glBegin … glEnd of evaluated points at `coords`.
-fn strip(c: &mut Context, mode: Primitive, coords: impl Iterator<Item = (f32, Option<f32>)>) -> GlResult<()> {
+fn strip(
+    c: &mut Context,
+    mode: Primitive,
+    coords: impl Iterator<Item = (f32, Option<f32>)>,
+) -> GlResult<()> {
     c.vertex_op(VertexOp::Begin(mode))?;
     for (u, v) in coords {
         c.eval_coord(u, v);

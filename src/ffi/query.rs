@@ -134,9 +134,7 @@ pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) 
             GL_NORMAL_ARRAY_POINTER => a.normal.ptr,
             GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[c.state.client_active_texture].ptr,
             GL_EDGE_FLAG_ARRAY_POINTER => a.edge_flag.ptr,
-            GL_INDEX_ARRAY_POINTER
-            | GL_FEEDBACK_BUFFER_POINTER
-            | GL_SELECTION_BUFFER_POINTER => 0,
+            GL_INDEX_ARRAY_POINTER | GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER => 0,
             _ => return Err(GlError::InvalidEnum),
         };
         if !params.is_null() {

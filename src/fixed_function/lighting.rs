@@ -494,12 +494,7 @@ pub fn light_vertex(
         let dots = if plan.shininess_is_zero {
             [nl; 4]
         } else {
-            [
-                nl,
-                dp3(normal, half),
-                -mat[1].shininess,
-                mat[0].shininess,
-            ]
+            [nl, dp3(normal, half), -mat[1].shininess, mat[0].shininess]
         };
         for f in 0..faces {
             let (x, y, w) = if f == 0 {

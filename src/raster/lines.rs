@@ -335,6 +335,7 @@ pub fn raster_line(
 }
 
 /// Draws a point of `size` (glPointSize, already clamped) at `v`.
+#[allow(clippy::too_many_arguments)]
 pub fn raster_point(
     v: &ClipVertex,
     size: f32,
@@ -536,7 +537,9 @@ fn span_any<M: Madd>(
         (true, true, false) => {
             shade_span::<M, true, true, false, true>(t, plan, fb, py, x0, x1, stats)
         }
-        (true, true, true) => shade_span::<M, true, true, true, true>(t, plan, fb, py, x0, x1, stats),
+        (true, true, true) => {
+            shade_span::<M, true, true, true, true>(t, plan, fb, py, x0, x1, stats)
+        }
     }
 }
 

@@ -132,11 +132,19 @@ fn covered_any<M: Madd, C: Cover>(
 ) {
     let (d, f, p) = (plan.depth.is_some(), plan.flat, t.persp);
     match (d, f, p) {
-        (false, false, false) => rows::<M, C, false, false, false>(t, b, cover, plan, units, fb, stats),
-        (false, false, true) => rows::<M, C, false, false, true>(t, b, cover, plan, units, fb, stats),
-        (false, true, false) => rows::<M, C, false, true, false>(t, b, cover, plan, units, fb, stats),
+        (false, false, false) => {
+            rows::<M, C, false, false, false>(t, b, cover, plan, units, fb, stats)
+        }
+        (false, false, true) => {
+            rows::<M, C, false, false, true>(t, b, cover, plan, units, fb, stats)
+        }
+        (false, true, false) => {
+            rows::<M, C, false, true, false>(t, b, cover, plan, units, fb, stats)
+        }
         (false, true, true) => rows::<M, C, false, true, true>(t, b, cover, plan, units, fb, stats),
-        (true, false, false) => rows::<M, C, true, false, false>(t, b, cover, plan, units, fb, stats),
+        (true, false, false) => {
+            rows::<M, C, true, false, false>(t, b, cover, plan, units, fb, stats)
+        }
         (true, false, true) => rows::<M, C, true, false, true>(t, b, cover, plan, units, fb, stats),
         (true, true, false) => rows::<M, C, true, true, false>(t, b, cover, plan, units, fb, stats),
         (true, true, true) => rows::<M, C, true, true, true>(t, b, cover, plan, units, fb, stats),

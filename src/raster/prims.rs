@@ -8,11 +8,11 @@ use crate::context::raster_state::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_PO
 use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::clip::{clip_line, clip_triangle, UserPlanes};
+use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::unfilled::{
     decompose, determinant, draw_offset, fill_mode, scaled_units, setup_offset, EDGE_0, EDGE_1,
-    EDGE_2, EDGE_ALL,
+    EDGE_2,
 };
 use crate::geometry::{ClipVertex, Viewport};
 use crate::stats::Stats;
@@ -122,7 +122,9 @@ impl LinePlan {
     ) {
         let n = self.nvary;
         match stipple {
-            None => raster_line(p, q, flat_vary, self.width, n, region, plan, units, fb, stats),
+            None => raster_line(
+                p, q, flat_vary, self.width, n, region, plan, units, fb, stats,
+            ),
             Some(s) => {
                 s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
                     let a = if t0 > 0.0 {
@@ -135,7 +137,9 @@ impl LinePlan {
                     } else {
                         *q
                     };
-                    raster_line(&a, &b, flat_vary, self.width, n, region, plan, units, fb, stats);
+                    raster_line(
+                        &a, &b, flat_vary, self.width, n, region, plan, units, fb, stats,
+                    );
                 });
             }
         }
@@ -340,22 +344,24 @@ impl PolyPipeline<'_> {
                 stats.tris_clip_rejected += 1;
             } else if or != 0 {
                 stats.tris_clipped += 1;
-                let mut out: Vec<[ClipVertex; 3]> = Vec::new();
-                clip_triangle(
+                let mut out: Vec<([ClipVertex; 3], u8)> = Vec::new();
+                clip_triangle_edges(
                     [va, vb, vc],
+                    edges,
                     or,
                     &self.lines.ucp,
                     &self.viewport,
                     nvary,
                     plan.flat,
-                    |p, q, r| out.push([*p, *q, *r]),
+                    self.back,
+                    |p, q, r, e| out.push(([*p, *q, *r], e)),
                 );
-                // Edge flags of clipped pieces are not tracked: every edge is drawn.
-                for [p, q, r] in &out {
+                // The stipple counter restarts only at the polygon's first piece.
+                for (k, ([p, q, r], e)) in out.iter().enumerate() {
                     self.triangle(
                         [p, q, r],
-                        EDGE_ALL,
-                        reset,
+                        *e,
+                        k == 0,
                         &mut stipple,
                         nvary,
                         plan,
