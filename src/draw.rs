@@ -5,6 +5,7 @@
 //! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
 
 use crate::context::feedback::{FeedbackSink, RenderMode};
+use crate::context::lighting_state::Material;
 use crate::context::state::{Cap, Face, Primitive};
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
@@ -22,6 +23,17 @@ use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
+    draw_lit(ctx, mode, verts, indices, None)
+}
+
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
+pub fn draw_lit(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &[VertexIn],
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+) {
     crate::pixels::cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
     let n = indices.map_or(verts.len(), |i| i.len());
@@ -75,7 +87,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
     stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
     if feedback {
         drop(tex_plans);
-        return draw_feedback(ctx, &stage, mode, verts, indices);
+        return draw_feedback(ctx, &mut stage, mode, verts, indices, materials);
     }
     plan.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
@@ -94,7 +106,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
         front_ccw: st.front_ccw,
     };
 
-    let cv: Vec<ClipVertex> = verts.iter().map(|v| stage.run(v)).collect();
+    let cv = run_vertices(&mut stage, verts, materials);
     ctx.stats.vertices += cv.len() as u64;
     let any_outside = match indices {
         Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
@@ -151,7 +163,16 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(v, size, nvary, region, &plan, &mut target, stats);
+                    raster_point(
+                        v,
+                        size,
+                        nvary,
+                        region,
+                        &plan,
+                        &tex_plans,
+                        &mut target,
+                        stats,
+                    );
                 }
             }
         }
@@ -175,6 +196,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                     stipple.as_mut(),
                     region,
                     &plan,
+                    &tex_plans,
                     &mut target,
                     stats,
                 );
@@ -217,6 +239,7 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
                     &viewport,
                     nvary,
                     plan.flat,
+                    back,
                     |p, q, r| out.push([*p, *q, *r]),
                 );
                 for [p, q, r] in &out {
@@ -237,15 +260,16 @@ pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Opt
 /// primitive stages into the feedback buffer or the hit record; nothing is rasterized.
 fn draw_feedback(
     ctx: &mut Context,
-    stage: &VertexStage,
+    stage: &mut VertexStage,
     mode: Primitive,
     verts: &[VertexIn],
     indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
 ) {
     let Some(fb) = ctx.fb.as_ref() else { return };
     let st = &ctx.state;
     let n = indices.map_or(verts.len(), |i| i.len());
-    let cv: Vec<ClipVertex> = verts.iter().map(|v| stage.run(v)).collect();
+    let cv = run_vertices(stage, verts, materials);
     let at = |k: usize| -> &ClipVertex {
         match indices {
             Some(ix) => &cv[ix[k] as usize],
@@ -284,4 +308,31 @@ fn draw_feedback(
         tex0: crate::geometry::VARY_TEX,
     };
     stages.run(mode, n, at, edge, &mut sink);
+}
+
+/// Runs the vertex stage over `verts`, lighting each with its own material when
+/// glMaterial was called between glBegin and glEnd.
+fn run_vertices(
+    stage: &mut VertexStage,
+    verts: &[VertexIn],
+    materials: Option<&[[Material; 2]]>,
+) -> Vec<ClipVertex> {
+    match (materials, stage.light.is_some()) {
+        (Some(m), true) if m.len() == verts.len() => {
+            if let Some(l) = stage.light.as_mut() {
+                l.vary_material(m);
+            }
+            verts
+                .iter()
+                .zip(m)
+                .map(|(v, m)| {
+                    if let Some(l) = stage.light.as_mut() {
+                        l.vertex_material = Some(*m);
+                    }
+                    stage.run(v)
+                })
+                .collect()
+        }
+        _ => verts.iter().map(|v| stage.run(v)).collect(),
+    }
 }

@@ -131,6 +131,17 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
     (
+        "tutorial_fog_terrain",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.3,
+            reason: "the GL_LINEAR-fog picture: 564 of its 120000 pixels differ by 1 in a \
+                     channel (fog-factor rounding, not yet traced to the llvmpipe rule; the \
+                     geometry, wireframe edges and the EXP2 picture are identical). Measured \
+                     99.765% identical, max diff 1",
+        },
+    ),
+    (
         "tex_aniso",
         Tolerance {
             max_channel_diff: 255,
@@ -250,6 +261,15 @@ const SCENES: &[&str] = &[
     "accum_buffer",
     "evaluators",
     "feedback_select",
+    "lines_textured",
+    "points_textured",
+    "stipple_textured",
+    "material_per_vertex",
+    "edge_flag_array",
+    "dlist_eval_edge",
+    "tutorial_lit_cube",
+    "tutorial_fog_terrain",
+    "tutorial_textured_lit",
 ];
 
 macro_rules! scene_tests {
@@ -351,6 +371,15 @@ scene_tests!(
     accum_buffer,
     evaluators,
     feedback_select,
+    lines_textured,
+    points_textured,
+    stipple_textured,
+    material_per_vertex,
+    edge_flag_array,
+    dlist_eval_edge,
+    tutorial_lit_cube,
+    tutorial_fog_terrain,
+    tutorial_textured_lit,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -1012,6 +1012,7 @@ GLAPI void GLAPIENTRY glRectdv(const GLdouble *v1, const GLdouble *v2);
 GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glEnableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glDisableClientState(GLenum cap);

@@ -151,6 +151,8 @@ pub struct ArrayState {
     pub normal: ArrayPointer,
     /// GL_TEXTURE_COORD_ARRAY per unit.
     pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    /// GL_EDGE_FLAG_ARRAY (GLboolean elements).
+    pub edge_flag: ArrayPointer,
     /// GL_ARRAY_BUFFER binding.
     pub array_buffer: u32,
     /// GL_ELEMENT_ARRAY_BUFFER binding.
@@ -166,6 +168,7 @@ impl Default for ArrayState {
             color: ArrayPointer::new(4, DataType::Float),
             normal: ArrayPointer::new(3, DataType::Float),
             texcoord: [ArrayPointer::new(4, DataType::Float); MAX_TEXTURE_UNITS],
+            edge_flag: ArrayPointer::new(1, DataType::UByte),
             array_buffer: 0,
             element_buffer: 0,
             buffers: HashMap::new(),
@@ -255,8 +258,13 @@ impl ArrayState {
     }
 
     fn all_arrays_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
-        [&mut self.vertex, &mut self.color, &mut self.normal]
-            .into_iter()
-            .chain(self.texcoord.iter_mut())
+        [
+            &mut self.vertex,
+            &mut self.color,
+            &mut self.normal,
+            &mut self.edge_flag,
+        ]
+        .into_iter()
+        .chain(self.texcoord.iter_mut())
     }
 }

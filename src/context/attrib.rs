@@ -61,6 +61,7 @@ struct ClientArrays {
     color: ArrayPointer,
     normal: ArrayPointer,
     texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    edge_flag: ArrayPointer,
     array_buffer: u32,
     element_buffer: u32,
     client_active_texture: usize,
@@ -413,6 +414,7 @@ impl Context {
                 color: a.color,
                 normal: a.normal,
                 texcoord: a.texcoord,
+                edge_flag: a.edge_flag,
                 array_buffer: a.array_buffer,
                 element_buffer: a.element_buffer,
                 client_active_texture: self.state.client_active_texture,
@@ -436,6 +438,7 @@ impl Context {
             a.color = s.color;
             a.normal = s.normal;
             a.texcoord = s.texcoord;
+            a.edge_flag = s.edge_flag;
             // A buffer deleted since the push is not revived.
             let live = |a: &super::arrays::ArrayState, n: u32| n == 0 || a.buffers.contains_key(&n);
             if live(a, s.array_buffer) {

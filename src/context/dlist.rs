@@ -49,6 +49,8 @@ pub enum VertexOp {
     TexCoord(u8, [f32; 4]),
     /// glFogCoord.
     FogCoord(f32),
+    /// glEdgeFlag.
+    EdgeFlag(bool),
     /// Saves the current attributes (a compiled glDrawArrays does not change them).
     SaveCurrent,
     /// Restores the attributes saved by [`VertexOp::SaveCurrent`].
@@ -64,6 +66,7 @@ impl VertexOp {
             VertexOp::Normal(_) => 4,
             VertexOp::FogCoord(_) => 8,
             VertexOp::TexCoord(u, _) => 16 << u,
+            VertexOp::EdgeFlag(_) => 1 << 12,
             _ => 0,
         }
     }
@@ -154,7 +157,11 @@ impl ListState {
     /// Appends a state command to the list being compiled.
     pub fn push_call(&mut self, f: ListFn) {
         if let Some(k) = self.compiling.as_mut() {
+            // A call inside glBegin/glEnd (glEvalCoord, glMaterial …) splits the primitive
+            // over nodes: Mesa then replays the rest of it by loopback.
+            let split = k.in_begin;
             k.close_node();
+            k.loopback = split;
             k.cmds.push(Cmd::Call(f));
         }
     }
@@ -214,6 +221,7 @@ impl Context {
                 let im = &mut self.immediate;
                 let whole = im.verts.len() - im.verts.len() % per;
                 im.verts.truncate(whole);
+                im.materials.truncate(whole);
                 im.pending = Some(mode);
                 im.indexed = im.replaying;
                 if !super::immediate::Immediate::mergeable(mode) {
@@ -223,10 +231,7 @@ impl Context {
             VertexOp::Vertex(p) => {
                 if self.immediate.active.is_some() {
                     let v = VertexIn::with_current(p, cur);
-                    if self.immediate.verts.try_reserve(1).is_err() {
-                        return Err(GlError::OutOfMemory);
-                    }
-                    self.immediate.verts.push(v);
+                    self.push_immediate_vertex(v)?;
                 }
             }
             VertexOp::Color(v) => cur.color = v,
@@ -234,6 +239,7 @@ impl Context {
             VertexOp::Normal(v) => cur.normal = v,
             VertexOp::TexCoord(u, v) => cur.texcoord[(u as usize) % MAX_TEXTURE_UNITS] = v,
             VertexOp::FogCoord(f) => cur.fog_coord = f,
+            VertexOp::EdgeFlag(f) => cur.edge_flag = f,
             VertexOp::SaveCurrent => self.lists.saved_current = Some(*cur),
             VertexOp::RestoreCurrent => {
                 if let Some(s) = self.lists.saved_current.take() {
@@ -416,6 +422,11 @@ impl Context {
                     if let Some(t) = fetch_attr(a, arr, i, false, fill) {
                         out.push(VertexOp::TexCoord(u as u8, t));
                     }
+                }
+            }
+            if a.edge_flag.enabled {
+                if let Some(e) = fetch_attr(a, &a.edge_flag, i, false, fill) {
+                    out.push(VertexOp::EdgeFlag(e[0] != 0.0));
                 }
             }
             if a.vertex.enabled {

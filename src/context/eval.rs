@@ -316,9 +316,8 @@ impl Context {
         }
         if let (Some(p), Some(_)) = (vertex, self.immediate.active) {
             let vin = VertexIn::with_current(p, &self.state.current);
-            if self.immediate.verts.try_reserve(1).is_ok() {
-                self.immediate.verts.push(vin);
-            }
+            // Out of memory drops the vertex (glEvalCoord has no error to report).
+            let _ = self.push_immediate_vertex(vin);
         }
     }
 

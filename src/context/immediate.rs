@@ -18,6 +18,10 @@ pub struct Immediate {
     pub indexed: bool,
     /// Whether a display-list vertex node is being replayed.
     pub replaying: bool,
+    /// Whether glMaterial was called inside this batch (see `vertex_material`).
+    pub per_vertex_material: bool,
+    /// With `per_vertex_material`, both faces' materials of each vertex in `verts`.
+    pub materials: Vec<[super::lighting_state::Material; 2]>,
 }
 
 impl Immediate {

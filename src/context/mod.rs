@@ -22,6 +22,7 @@ pub mod raster_state;
 pub mod share;
 pub mod state;
 pub mod texgen_state;
+pub mod vertex_material;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
 use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
@@ -203,13 +204,14 @@ impl Context {
     #[inline]
     pub fn flush_pending(&mut self) {
         if let Some(mode) = self.immediate.pending.take() {
+            let mats = self.take_vertex_materials();
             let verts = std::mem::take(&mut self.immediate.verts);
             // A batch from a display list is drawn indexed, as Mesa draws vertex nodes.
             let idx: Option<Vec<u32>> = self
                 .immediate
                 .indexed
                 .then(|| (0..verts.len() as u32).collect());
-            crate::draw::draw(self, mode, &verts, idx.as_deref());
+            crate::draw::draw_lit(self, mode, &verts, idx.as_deref(), mats.as_deref());
             self.immediate.verts = verts;
             self.immediate.verts.clear();
         }

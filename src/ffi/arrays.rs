@@ -18,6 +18,7 @@ enum Which {
     Color,
     Normal,
     TexCoord,
+    EdgeFlag,
 }
 
 fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
@@ -26,6 +27,7 @@ fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
         Which::Color => &mut c.arrays.color,
         Which::Normal => &mut c.arrays.normal,
         Which::TexCoord => &mut c.arrays.texcoord[c.state.client_active_texture],
+        Which::EdgeFlag => &mut c.arrays.edge_flag,
     }
 }
 
@@ -46,6 +48,7 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
                     | DataType::Double
             ),
             Which::Color => true,
+            Which::EdgeFlag => t == DataType::UByte,
         };
         if !type_ok {
             return Err(GlError::InvalidEnum);
@@ -55,6 +58,7 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
             Which::Color => (3..=4).contains(&size),
             Which::TexCoord => (1..=4).contains(&size),
             Which::Normal => size == 3,
+            Which::EdgeFlag => size == 1,
         };
         if !size_ok || stride < 0 {
             return Err(GlError::InvalidValue);
@@ -94,6 +98,12 @@ pub extern "C" fn glTexCoordPointer(
     set_pointer(Which::TexCoord, size, type_, stride, ptr)
 }
 
+/// glEdgeFlagPointer (GLboolean elements).
+#[no_mangle]
+pub extern "C" fn glEdgeFlagPointer(stride: GLsizei, ptr: *const GLvoid) {
+    set_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr)
+}
+
 /// glNormalPointer.
 #[no_mangle]
 pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
@@ -107,10 +117,9 @@ fn client_state(cap: GLenum, on: bool) {
             GL_COLOR_ARRAY => Which::Color,
             GL_NORMAL_ARRAY => Which::Normal,
             GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
+            GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
             // Arrays the fixed-function pipeline does not read yet are accepted.
-            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => {
-                return Ok(())
-            }
+            GL_INDEX_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => return Ok(()),
             _ => return Err(GlError::InvalidEnum),
         };
         c.check_outside_begin()?;

@@ -4,11 +4,13 @@
 #![allow(non_snake_case)]
 
 use super::enums::*;
-use super::immediate::{glBegin, glEnd};
 use super::types::*;
-use super::{with_ctx, with_ctx_list, with_ctx_raw};
+use super::{with_ctx, with_ctx_list};
+use crate::context::dlist::VertexOp;
 use crate::context::error::{GlError, GlResult};
 use crate::context::eval::{Grid, MapKind};
+use crate::context::state::Primitive;
+use crate::context::Context;
 use crate::fixed_function::eval::MAX_ORDER;
 
 /// The map kind and dimensionality (`true` for 2D) of a GL_MAP1_*/GL_MAP2_* target.
@@ -61,11 +63,8 @@ fn gather<T: Copy + Into<f64>>(
     Ok((kind, two, out))
 }
 
-/// Records `e` as the current context's error.
-fn fail(e: GlError) {
-    with_ctx(|_| -> GlResult<()> { Err(e) })
-}
-
+/// glMap1/glMap2: the control points are read now (a display list keeps this copy);
+/// the map is set, or the error raised, when the call runs.
 #[allow(clippy::too_many_arguments)]
 fn map<T: Copy + Into<f64>>(
     target: GLenum,
@@ -77,18 +76,20 @@ fn map<T: Copy + Into<f64>>(
     vorder: GLint,
     points: *const T,
 ) {
-    if !with_ctx(|c| c.check_outside_begin().map(|_| true)) {
-        return;
-    }
     match gather(target, u, v, ustride, uorder, vstride, vorder, points) {
-        Ok((kind, two, pts)) => with_ctx(move |c| {
+        Ok((kind, two, pts)) => with_ctx_list(move |c| {
+            c.check_outside_begin()?;
             if c.state.active_texture != 0 {
                 return Err(GlError::InvalidOperation);
             }
             let vv = v.unwrap_or([0.0, 1.0]);
-            c.set_map(kind, two, u, vv, uorder as usize, vorder as usize, pts)
+            let (uo, vo) = (uorder as usize, vorder as usize);
+            c.set_map(kind, two, u, vv, uo, vo, pts.clone())
         }),
-        Err(e) => fail(e),
+        Err(e) => with_ctx_list(move |c| {
+            c.check_outside_begin()?;
+            Err(e)
+        }),
     }
 }
 
@@ -221,8 +222,10 @@ pub extern "C" fn glMapGrid2d(
     glMapGrid2f(un, u1 as f32, u2 as f32, vn, v1 as f32, v2 as f32)
 }
 
+/// glEvalCoord: compiled into display lists as a call (evaluated with the maps current
+/// when the list runs, as Mesa's OPCODE_EVAL_C1/C2 do).
 fn coord(u: f32, v: Option<f32>) {
-    with_ctx_raw(move |c| {
+    with_ctx_list(move |c| {
         c.eval_coord(u, v);
         Ok(())
     })
@@ -305,7 +308,7 @@ pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
 /// glEvalPoint1: `u = i * du + u1` with Mesa's `du = (u2 - u1) / n`.
 #[no_mangle]
 pub extern "C" fn glEvalPoint1(i: GLint) {
-    with_ctx_raw(move |c| {
+    with_ctx_list(move |c| {
         let g = c.eval.grid1;
         c.eval_coord(i as f32 * g.step() + g.d[0], None);
         Ok(())
@@ -315,7 +318,7 @@ pub extern "C" fn glEvalPoint1(i: GLint) {
 /// glEvalPoint2.
 #[no_mangle]
 pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
-    with_ctx_raw(move |c| {
+    with_ctx_list(move |c| {
         let [gu, gv] = c.eval.grid2;
         let u = i as f32 * gu.step() + gu.d[0];
         let v = j as f32 * gv.step() + gv.d[0];
@@ -325,103 +328,124 @@ pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
 }
 
 /// Checks glEvalMesh's mode and state; `Some(grid)` when there is something to draw.
-fn mesh_setup(mode: GLenum, allowed: &[GLenum], two: bool) -> Option<[Grid; 2]> {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        if !allowed.contains(&mode) {
-            return Err(GlError::InvalidEnum);
-        }
-        let grid = if two {
-            c.eval.grid2
-        } else {
-            [c.eval.grid1, c.eval.grid1]
-        };
-        Ok(c.eval_vertex_enabled(two).then_some(grid))
-    })
+fn mesh_setup(
+    c: &Context,
+    mode: GLenum,
+    allowed: &[GLenum],
+    two: bool,
+) -> GlResult<Option<[Grid; 2]>> {
+    c.check_outside_begin()?;
+    if !allowed.contains(&mode) {
+        return Err(GlError::InvalidEnum);
+    }
+    let grid = if two {
+        c.eval.grid2
+    } else {
+        [c.eval.grid1, c.eval.grid1]
+    };
+    Ok(c.eval_vertex_enabled(two).then_some(grid))
 }
 
-/// glEvalMesh1 (GL_POINT or GL_LINE): `u` steps by Mesa's stored `du` from `u1 + i1·du`.
-#[no_mangle]
-pub extern "C" fn glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) {
-    let Some([g, _]) = mesh_setup(mode, &[GL_POINT, GL_LINE], false) else {
-        return;
+/// One glBegin … glEnd of evaluated points at `coords`.
+fn strip(
+    c: &mut Context,
+    mode: Primitive,
+    coords: impl Iterator<Item = (f32, Option<f32>)>,
+) -> GlResult<()> {
+    c.vertex_op(VertexOp::Begin(mode))?;
+    for (u, v) in coords {
+        c.eval_coord(u, v);
+    }
+    c.vertex_op(VertexOp::End)
+}
+
+/// glEvalMesh1 on the context: `u` steps by Mesa's stored `du` from `u1 + i1·du`.
+fn eval_mesh1(c: &mut Context, mode: GLenum, i1: GLint, i2: GLint) -> GlResult<()> {
+    let Some([g, _]) = mesh_setup(c, mode, &[GL_POINT, GL_LINE], false)? else {
+        return Ok(());
     };
     let du = g.step();
     let mut u = g.d[0] + i1 as f32 * du;
-    glBegin(if mode == GL_POINT {
-        GL_POINTS
+    let prim = if mode == GL_POINT {
+        Primitive::Points
     } else {
-        GL_LINE_STRIP
-    });
-    for _ in i1..=i2 {
-        coord(u, None);
+        Primitive::LineStrip
+    };
+    let coords = (i1..=i2).map(|_| {
+        let x = u;
         u += du;
-    }
-    glEnd();
+        (x, None)
+    });
+    strip(c, prim, coords)
 }
 
-/// glEvalMesh2 (GL_POINT, GL_LINE or GL_FILL, the latter as triangle strips).
-#[no_mangle]
-pub extern "C" fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
-    let Some([gu, gv]) = mesh_setup(mode, &[GL_POINT, GL_LINE, GL_FILL], true) else {
-        return;
+/// glEvalMesh2 on the context (GL_FILL as triangle strips, as Mesa issues it).
+fn eval_mesh2(c: &mut Context, mode: GLenum, i: [GLint; 2], j: [GLint; 2]) -> GlResult<()> {
+    let Some([gu, gv]) = mesh_setup(c, mode, &[GL_POINT, GL_LINE, GL_FILL], true)? else {
+        return Ok(());
     };
     let (du, dv) = (gu.step(), gv.step());
-    let u1 = gu.d[0] + i1 as f32 * du;
-    let v1 = gv.d[0] + j1 as f32 * dv;
+    let u1 = gu.d[0] + i[0] as f32 * du;
+    let v1 = gv.d[0] + j[0] as f32 * dv;
+    // Row `k` of u values (accumulated as Mesa steps them).
+    let us = |n: GLint| {
+        let mut u = u1;
+        (0..n).map(move |_| {
+            let x = u;
+            u += du;
+            x
+        })
+    };
+    let nu = i[1] - i[0] + 1;
+    let mut v = v1;
     match mode {
         GL_POINT => {
-            glBegin(GL_POINTS);
-            let mut v = v1;
-            for _ in j1..=j2 {
-                let mut u = u1;
-                for _ in i1..=i2 {
-                    coord(u, Some(v));
-                    u += du;
+            c.vertex_op(VertexOp::Begin(Primitive::Points))?;
+            for _ in j[0]..=j[1] {
+                for u in us(nu) {
+                    c.eval_coord(u, Some(v));
                 }
                 v += dv;
             }
-            glEnd();
+            c.vertex_op(VertexOp::End)
         }
         GL_LINE => {
-            let mut v = v1;
-            for _ in j1..=j2 {
-                glBegin(GL_LINE_STRIP);
-                let mut u = u1;
-                for _ in i1..=i2 {
-                    coord(u, Some(v));
-                    u += du;
-                }
-                glEnd();
+            for _ in j[0]..=j[1] {
+                strip(c, Primitive::LineStrip, us(nu).map(|u| (u, Some(v))))?;
                 v += dv;
             }
-            let mut u = u1;
-            for _ in i1..=i2 {
-                glBegin(GL_LINE_STRIP);
+            for u in us(nu) {
                 let mut v = v1;
-                for _ in j1..=j2 {
-                    coord(u, Some(v));
+                let coords = (j[0]..=j[1]).map(|_| {
+                    let x = v;
                     v += dv;
-                }
-                glEnd();
-                u += du;
+                    (u, Some(x))
+                });
+                strip(c, Primitive::LineStrip, coords)?;
             }
+            Ok(())
         }
         _ => {
-            let mut v = v1;
-            for _ in j1..j2 {
-                glBegin(GL_TRIANGLE_STRIP);
-                let mut u = u1;
-                for _ in i1..=i2 {
-                    coord(u, Some(v));
-                    coord(u, Some(v + dv));
-                    u += du;
-                }
-                glEnd();
+            for _ in j[0]..j[1] {
+                let coords = us(nu).flat_map(|u| [(u, Some(v)), (u, Some(v + dv))]);
+                strip(c, Primitive::TriangleStrip, coords)?;
                 v += dv;
             }
+            Ok(())
         }
     }
+}
+
+/// glEvalMesh1 (GL_POINT or GL_LINE); compiled into display lists as one call.
+#[no_mangle]
+pub extern "C" fn glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) {
+    with_ctx_list(move |c| eval_mesh1(c, mode, i1, i2))
+}
+
+/// glEvalMesh2 (GL_POINT, GL_LINE or GL_FILL); compiled into display lists as one call.
+#[no_mangle]
+pub extern "C" fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
+    with_ctx_list(move |c| eval_mesh2(c, mode, [i1, i2], [j1, j2]))
 }
 
 /// The values glGetMap returns for `query`, as f64.

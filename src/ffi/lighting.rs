@@ -95,6 +95,7 @@ fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
     // glMaterial is allowed between glBegin and glEnd.
     with_ctx_list(move |c| {
         let cm = c.state.caps.get(Cap::ColorMaterial);
+        c.material_changing();
         c.light.set_material(face, pname, &p, cm)
     })
 }

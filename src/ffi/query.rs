@@ -137,7 +137,8 @@ pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) 
             GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[c.state.client_active_texture].ptr,
             GL_FEEDBACK_BUFFER_POINTER => c.feedback.fb_buffer,
             GL_SELECTION_BUFFER_POINTER => c.feedback.sel_buffer,
-            GL_INDEX_ARRAY_POINTER | GL_EDGE_FLAG_ARRAY_POINTER => 0,
+            GL_EDGE_FLAG_ARRAY_POINTER => a.edge_flag.ptr,
+            GL_INDEX_ARRAY_POINTER => 0,
             _ => return Err(GlError::InvalidEnum),
         };
         if !params.is_null() {

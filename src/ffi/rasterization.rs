@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_list, with_ctx_raw};
+use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::error::GlError;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Face;
@@ -134,11 +134,7 @@ pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
 /// glEdgeFlag.
 #[no_mangle]
 pub extern "C" fn glEdgeFlag(flag: GLboolean) {
-    let f = gl_bool(flag);
-    with_ctx_raw(move |c| {
-        c.state.current.edge_flag = f;
-        Ok(())
-    })
+    super::with_ctx_vertex(crate::context::dlist::VertexOp::EdgeFlag(gl_bool(flag)))
 }
 
 /// glEdgeFlagv (NULL is ignored).

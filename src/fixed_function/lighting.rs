@@ -130,6 +130,9 @@ pub struct LightPlan {
     tracked: [Tracked; 2],
     scene: [[f32; 4]; 2],
     lights: Vec<PlannedLight>,
+    /// The vertex's own materials (glMaterial inside glBegin/glEnd): lit with per-vertex
+    /// products and scene colour, as Mesa's program does for material attributes.
+    pub vertex_material: Option<[Material; 2]>,
 }
 
 /// The rows of the inverse transpose of the modelview's upper 3x3 (what
@@ -299,7 +302,20 @@ impl LightPlan {
             tracked,
             scene,
             lights,
+            vertex_material: None,
         })
+    }
+
+    /// Prepares for per-vertex materials `mats`: a shininess given per vertex counts as
+    /// active (Mesa's `check_active_shininess` sees the material attribute).
+    pub fn vary_material(&mut self, mats: &[[Material; 2]]) {
+        let two = self.two_side;
+        if mats
+            .iter()
+            .any(|m| m[0].shininess != 0.0 || (two && m[1].shininess != 0.0))
+        {
+            self.shininess_is_zero = false;
+        }
     }
 
     /// Whether [`light_vertex`] reads the eye position (positional lights, or a local
@@ -403,10 +419,14 @@ pub fn light_vertex(
     let faces = if plan.two_side { 2 } else { 1 };
     let any_tracked = |t: &Tracked| t.ambient || t.diffuse || t.emission || t.specular;
     // Per-face material with the tracked terms replaced by the vertex colour.
-    let mut mat = plan.material;
+    let mut mat = plan.vertex_material.unwrap_or(plan.material);
     let mut scene = plan.scene;
+    let varying = plan.vertex_material.is_some();
     for f in 0..faces {
         let t = plan.tracked[f];
+        if varying && !any_tracked(&t) {
+            scene[f] = scene_color(&plan.lm_ambient, &mat[f]);
+        }
         if any_tracked(&t) {
             let m = &mut mat[f];
             if t.emission {
@@ -474,12 +494,7 @@ pub fn light_vertex(
         let dots = if plan.shininess_is_zero {
             [nl; 4]
         } else {
-            [
-                nl,
-                dp3(normal, half),
-                -plan.material[1].shininess,
-                plan.material[0].shininess,
-            ]
+            [nl, dp3(normal, half), -mat[1].shininess, mat[0].shininess]
         };
         for f in 0..faces {
             let (x, y, w) = if f == 0 {
@@ -487,7 +502,7 @@ pub fn light_vertex(
             } else {
                 (-dots[0], -dots[1], -dots[2])
             };
-            let [amb, diff, spec] = if any_tracked(&plan.tracked[f]) {
+            let [amb, diff, spec] = if varying || any_tracked(&plan.tracked[f]) {
                 let m = &mat[f];
                 [
                     mul4(l.colors[0], m.ambient),

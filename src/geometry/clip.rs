@@ -62,10 +62,22 @@ fn interp(t: f32, out: &ClipVertex, inn: &ClipVertex, vp: &Viewport, nvary: usiz
     d
 }
 
+/// Copies the flat-shaded attributes, the colours (primary and secondary, and the back
+/// colours at `back` with two-sided lighting), from `src` to `dst`, as the clipper's
+/// `copy_flat` does: the fog coordinate and texture coordinates stay interpolated.
+fn copy_flat(dst: &mut ClipVertex, src: &ClipVertex, back: Option<usize>) {
+    dst.vary[..8].copy_from_slice(&src.vary[..8]);
+    if let Some(o) = back {
+        dst.vary[o..o + 8].copy_from_slice(&src.vary[o..o + 8]);
+    }
+}
+
 /// Clips triangle `v` (whose vertices' masks OR to `mask`, and AND to zero) and calls `emit`
 /// for each resulting triangle, ordered `(P[i-1], P[i], P[0])` so that P[0], which carries
-/// the provoking vertex's flat attributes, comes last. `flat` copies `v[2]`'s varyings
-/// into P[0] when it is a new vertex. Returns the number of triangles emitted.
+/// the provoking vertex's flat attributes, comes last. `flat` copies `v[2]`'s colours
+/// (with the back colours at `back`) into P[0] when it is a new vertex. Returns the number
+/// of triangles emitted.
+#[allow(clippy::too_many_arguments)]
 pub fn clip_triangle(
     v: [&ClipVertex; 3],
     mask: ClipMask,
@@ -73,8 +85,38 @@ pub fn clip_triangle(
     vp: &Viewport,
     nvary: usize,
     flat: bool,
+    back: Option<usize>,
     mut emit: impl FnMut(&ClipVertex, &ClipVertex, &ClipVertex),
 ) -> usize {
+    let all = 7;
+    let each = |a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, _: u8| emit(a, b, c);
+    clip_triangle_edges(v, all, mask, ucp, vp, nvary, flat, back, each)
+}
+
+/// [`clip_triangle`] that also tracks which edges are polygon boundary edges, as
+/// `do_clip_tri`/`emit_poly` do for the unfilled stage: `edges` has bit 0 for v0→v1, bit
+/// 1 for v1→v2 and bit 2 for v2→v0; an edge along a frustum plane is hidden, one along a
+/// user clip plane is shown, and the fan's inner diagonals are hidden. `emit` gets each
+/// triangle's bits in the same layout.
+#[allow(clippy::too_many_arguments)]
+pub fn clip_triangle_edges(
+    v: [&ClipVertex; 3],
+    edges: u8,
+    mask: ClipMask,
+    ucp: &UserPlanes,
+    vp: &Viewport,
+    nvary: usize,
+    flat: bool,
+    back: Option<usize>,
+    mut emit: impl FnMut(&ClipVertex, &ClipVertex, &ClipVertex, u8),
+) -> usize {
+    // The edge starting at each polygon vertex is a boundary edge.
+    let mut a_e = [false; MAX_POLY];
+    let mut b_e = [false; MAX_POLY];
+    for (k, e) in a_e.iter_mut().enumerate().take(3) {
+        *e = edges & (1 << k) != 0;
+    }
+    let (mut in_e, mut out_e) = (&mut a_e, &mut b_e);
     let mut a: [ClipVertex; MAX_POLY] = [ClipVertex::default(); MAX_POLY];
     let mut b: [ClipVertex; MAX_POLY] = [ClipVertex::default(); MAX_POLY];
     // Whether each polygon vertex is one of the original three (index) or new (usize::MAX).
@@ -101,6 +143,7 @@ pub fn clip_triangle(
         }
         inl[n] = inl[0];
         in_o[n] = in_o[0];
+        in_e[n] = in_e[0];
         let mut cnt = 0usize;
         for i in 1..=n {
             let dp = dot4(inl[i].clip, plane);
@@ -113,6 +156,7 @@ pub fn clip_triangle(
                 }
                 outl[cnt] = inl[i - 1];
                 out_o[cnt] = in_o[i - 1];
+                out_e[cnt] = in_e[i - 1];
                 cnt += 1;
                 dp < 0.0
             } else {
@@ -137,22 +181,36 @@ pub fn clip_triangle(
                 };
                 outl[cnt] = nv;
                 out_o[cnt] = usize::MAX;
+                // Leaving: the edge along the plane shows only for user clip planes.
+                out_e[cnt] = if dp < 0.0 { p >= 6 } else { in_e[i - 1] };
                 cnt += 1;
             }
             dp_prev = dp;
         }
         std::mem::swap(&mut inl, &mut outl);
         std::mem::swap(&mut in_o, &mut out_o);
+        std::mem::swap(&mut in_e, &mut out_e);
         n = cnt;
     }
     if n < 3 {
         return 0;
     }
     if flat && in_o[0] != 2 {
-        inl[0].vary = v[2].vary;
+        copy_flat(&mut inl[0], v[2], back);
     }
     for i in 2..n {
-        emit(&inl[i - 1], &inl[i], &inl[0]);
+        // (P[i-1], P[i], P[0]): bit 0 is P[i-1]→P[i], bit 1 P[i]→P[0], bit 2 P[0]→P[i-1].
+        let mut bits = 0u8;
+        if in_e[i - 1] {
+            bits |= 1;
+        }
+        if i == n - 1 && in_e[n - 1] {
+            bits |= 2;
+        }
+        if i == 2 && in_e[0] {
+            bits |= 4;
+        }
+        emit(&inl[i - 1], &inl[i], &inl[0], bits);
     }
     n - 2
 }
@@ -194,13 +252,13 @@ pub fn clip_line(
     if v0.mask != 0 {
         a = interp(t0, v0, v1, vp, nvary);
         if flat {
-            a.vary = v1.vary;
+            copy_flat(&mut a, v1, None);
         }
     }
     if v1.mask != 0 {
         b = interp(t1, v1, v0, vp, nvary);
         if flat {
-            b.vary = v1.vary;
+            copy_flat(&mut b, v1, None);
         }
     }
     Some((a, b))
@@ -236,6 +294,7 @@ mod tests {
             &vp,
             0,
             false,
+            None,
             |a, b, c| tris.push([a.clip, b.clip, c.clip]),
         );
         assert_eq!(n, 2);
@@ -262,6 +321,7 @@ mod tests {
                 &vp,
                 0,
                 false,
+                None,
                 |_, _, _| {}
             ),
             0

@@ -5,10 +5,10 @@
 //! lines, wide points and line stipple off for this draw context, so none of them
 //! change what feedback reports.
 
-use super::clip::{clip_line, clip_triangle, UserPlanes};
+use super::clip::{clip_line, clip_triangle_edges, UserPlanes};
 use super::setup::CullMode;
 use super::unfilled::{
-    decompose, determinant, draw_offset, fill_mode, scaled_units, EDGE_0, EDGE_1, EDGE_2, EDGE_ALL,
+    decompose, determinant, draw_offset, fill_mode, scaled_units, EDGE_0, EDGE_1, EDGE_2,
 };
 use super::{ClipVertex, Viewport};
 use crate::context::raster_state::{FillMode, PolygonState};
@@ -79,21 +79,20 @@ impl PrimStages<'_> {
                 let or = v[0].mask | v[1].mask | v[2].mask;
                 if v[0].mask & v[1].mask & v[2].mask != 0 {
                 } else if or != 0 {
-                    let viewport = &self.viewport;
-                    let mut first = reset;
-                    clip_triangle(
+                    let (vp, ucp, nvary) = (&self.viewport, self.ucp, self.nvary);
+                    let mut first = true;
+                    // Mesa's clipper keeps the polygon's edge flags (frustum edges and
+                    // fan diagonals hidden) and restarts the stipple at the first piece.
+                    clip_triangle_edges(
                         v,
+                        edges,
                         or,
-                        self.ucp,
-                        viewport,
-                        self.nvary,
+                        ucp,
+                        vp,
+                        nvary,
                         self.flat,
-                        |p, q, r| {
-                            // As in the rasterizing pipeline, clipped pieces draw every edge
-                            // (Mesa's clipper keeps the polygon's edge flags); the first piece
-                            // restarts the stipple.
-                            self.triangle([p, q, r], EDGE_ALL, std::mem::take(&mut first), sink)
-                        },
+                        self.back,
+                        |p, q, r, e| self.triangle([p, q, r], e, std::mem::take(&mut first), sink),
                     );
                 } else {
                     self.triangle(v, edges, reset, sink);

@@ -175,6 +175,11 @@ pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32
                     .unwrap_or([0.0, 0.0, 0.0, 1.0]);
             }
         }
+        if arrays.edge_flag.enabled {
+            if let Some(e) = fetch_attr(arrays, &arrays.edge_flag, index, false, [1.0; 4]) {
+                v.edge_flag = e[0] != 0.0;
+            }
+        }
     }
     v
 }

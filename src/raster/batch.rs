@@ -66,6 +66,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.fb
     }
 
+    /// The enabled texture units' plans.
+    pub fn units(&self) -> &'a [UnitPlan<'a>] {
+        self.units
+    }
+
     /// The drawable region.
     pub fn region(&self) -> [i64; 4] {
         self.region

@@ -18,6 +18,7 @@ use crate::framebuffer::Target;
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
 use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
 /// Sub-pixel units per pixel.
 const ONE: i64 = 256;
@@ -231,6 +232,7 @@ pub fn raster_line(
     nvary: usize,
     region: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
@@ -310,6 +312,11 @@ pub fn raster_line(
             plane(v1.vary[i], v2.vary[i])
         };
     }
+    if !units.is_empty() {
+        let cover = super::prim_tex::EdgeCover(&edges);
+        super::prim_tex::shade_covered(&t, b, &cover, plan, units, fb, stats);
+        return;
+    }
     for py in b[1]..=b[3] {
         let (mut lo, mut hi) = (b[0], b[2]);
         for e in &edges {
@@ -328,12 +335,14 @@ pub fn raster_line(
 }
 
 /// Draws a point of `size` (glPointSize, already clamped) at `v`.
+#[allow(clippy::too_many_arguments)]
 pub fn raster_point(
     v: &ClipVertex,
     size: f32,
     nvary: usize,
     region: [i64; 4],
     plan: &FragPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
@@ -383,6 +392,10 @@ pub fn raster_point(
     };
     for i in 0..nvary {
         t.vary[i] = constant(if persp { v.vary[i] * w0 } else { v.vary[i] });
+    }
+    if !units.is_empty() {
+        super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, plan, units, fb, stats);
+        return;
     }
     for py in b[1]..=b[3] {
         shade_span_dispatch(
@@ -500,7 +513,8 @@ fn span_any<M: Madd>(
     x1: usize,
     stats: &mut Stats,
 ) {
-    let persp = t.persp && !plan.flat;
+    // Flat shading keeps the perspective divide for the fog coordinate.
+    let persp = t.persp && (!plan.flat || plan.fog.is_some());
     match (plan.depth.is_some(), plan.flat, persp) {
         (false, false, false) => {
             shade_span::<M, false, false, false, true>(t, plan, fb, py, x0, x1, stats)
@@ -508,8 +522,11 @@ fn span_any<M: Madd>(
         (false, false, true) => {
             shade_span::<M, false, false, true, true>(t, plan, fb, py, x0, x1, stats)
         }
-        (false, true, _) => {
+        (false, true, false) => {
             shade_span::<M, false, true, false, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (false, true, true) => {
+            shade_span::<M, false, true, true, true>(t, plan, fb, py, x0, x1, stats)
         }
         (true, false, false) => {
             shade_span::<M, true, false, false, true>(t, plan, fb, py, x0, x1, stats)
@@ -517,7 +534,12 @@ fn span_any<M: Madd>(
         (true, false, true) => {
             shade_span::<M, true, false, true, true>(t, plan, fb, py, x0, x1, stats)
         }
-        (true, true, _) => shade_span::<M, true, true, false, true>(t, plan, fb, py, x0, x1, stats),
+        (true, true, false) => {
+            shade_span::<M, true, true, false, true>(t, plan, fb, py, x0, x1, stats)
+        }
+        (true, true, true) => {
+            shade_span::<M, true, true, true, true>(t, plan, fb, py, x0, x1, stats)
+        }
     }
 }
 

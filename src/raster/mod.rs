@@ -16,6 +16,7 @@ use crate::texture::UnitPlan;
 
 pub mod batch;
 pub mod lines;
+pub mod prim_tex;
 pub mod prims;
 pub mod stipple;
 mod textured;
@@ -265,13 +266,17 @@ fn rows_full<M: Madd, const FULL: bool>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    match (plan.depth.is_some(), plan.flat, t.persp) {
+    // Flat colours need no divide, but the fog coordinate is still perspective-correct.
+    let persp = t.persp && (!plan.flat || plan.fog.is_some());
+    match (plan.depth.is_some(), plan.flat, persp) {
         (false, false, false) => rows::<M, false, false, false, FULL>(t, b, plan, fb, stats),
         (false, false, true) => rows::<M, false, false, true, FULL>(t, b, plan, fb, stats),
-        (false, true, _) => rows::<M, false, true, false, FULL>(t, b, plan, fb, stats),
+        (false, true, false) => rows::<M, false, true, false, FULL>(t, b, plan, fb, stats),
+        (false, true, true) => rows::<M, false, true, true, FULL>(t, b, plan, fb, stats),
         (true, false, false) => rows::<M, true, false, false, FULL>(t, b, plan, fb, stats),
         (true, false, true) => rows::<M, true, false, true, FULL>(t, b, plan, fb, stats),
-        (true, true, _) => rows::<M, true, true, false, FULL>(t, b, plan, fb, stats),
+        (true, true, false) => rows::<M, true, true, false, FULL>(t, b, plan, fb, stats),
+        (true, true, true) => rows::<M, true, true, true, FULL>(t, b, plan, fb, stats),
     }
 }
 

@@ -8,14 +8,15 @@ use crate::context::raster_state::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_PO
 use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::clip::{clip_line, clip_triangle, UserPlanes};
+use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::unfilled::{
     decompose, determinant, draw_offset, fill_mode, scaled_units, setup_offset, EDGE_0, EDGE_1,
-    EDGE_2, EDGE_ALL,
+    EDGE_2,
 };
 use crate::geometry::{ClipVertex, Viewport};
 use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
 /// The point size llvmpipe receives: glPointSize capped at the maximum.
 pub fn point_size(r: &RasterState) -> f32 {
@@ -78,6 +79,7 @@ impl LinePlan {
         stipple: Option<&mut LineStipple>,
         region: [i64; 4],
         plan: &FragPlan,
+        units: &[UnitPlan<'_>],
         fb: &mut Target<'_>,
         stats: &mut Stats,
     ) {
@@ -100,7 +102,7 @@ impl LinePlan {
         } else {
             (*va, *vb)
         };
-        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, fb, stats);
+        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, units, fb, stats);
     }
 
     /// Stipples and rasterizes a segment already in window coordinates; `flat_vary` is the
@@ -114,12 +116,15 @@ impl LinePlan {
         stipple: Option<&mut LineStipple>,
         region: [i64; 4],
         plan: &FragPlan,
+        units: &[UnitPlan<'_>],
         fb: &mut Target<'_>,
         stats: &mut Stats,
     ) {
         let n = self.nvary;
         match stipple {
-            None => raster_line(p, q, flat_vary, self.width, n, region, plan, fb, stats),
+            None => raster_line(
+                p, q, flat_vary, self.width, n, region, plan, units, fb, stats,
+            ),
             Some(s) => {
                 s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
                     let a = if t0 > 0.0 {
@@ -132,7 +137,9 @@ impl LinePlan {
                     } else {
                         *q
                     };
-                    raster_line(&a, &b, flat_vary, self.width, n, region, plan, fb, stats);
+                    raster_line(
+                        &a, &b, flat_vary, self.width, n, region, plan, units, fb, stats,
+                    );
                 });
             }
         }
@@ -250,12 +257,14 @@ impl PolyPipeline<'_> {
                 };
                 match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
                     SetupResult::Draw if self.caps.get(Cap::PolygonStipple) => {
+                        let units = rast.units();
                         let mut target = rast.target(stats).target();
                         stippled_triangle(
                             tri,
                             &self.raster.stipple,
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
@@ -265,6 +274,7 @@ impl PolyPipeline<'_> {
                 }
             }
             FillMode::Line => {
+                let units = rast.units();
                 let mut target = rast.target(stats).target();
                 for (bit, s, e) in [(EDGE_2, 2, 0), (EDGE_0, 0, 1), (EDGE_1, 1, 2)] {
                     if edges & bit != 0 {
@@ -275,6 +285,7 @@ impl PolyPipeline<'_> {
                             stipple.as_mut(),
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
@@ -282,6 +293,7 @@ impl PolyPipeline<'_> {
                 }
             }
             FillMode::Point => {
+                let units = rast.units();
                 let mut target = rast.target(stats).target();
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
@@ -291,6 +303,7 @@ impl PolyPipeline<'_> {
                             nvary,
                             self.region,
                             plan,
+                            units,
                             &mut target,
                             stats,
                         );
@@ -331,22 +344,24 @@ impl PolyPipeline<'_> {
                 stats.tris_clip_rejected += 1;
             } else if or != 0 {
                 stats.tris_clipped += 1;
-                let mut out: Vec<[ClipVertex; 3]> = Vec::new();
-                clip_triangle(
+                let mut out: Vec<([ClipVertex; 3], u8)> = Vec::new();
+                clip_triangle_edges(
                     [va, vb, vc],
+                    edges,
                     or,
                     &self.lines.ucp,
                     &self.viewport,
                     nvary,
                     plan.flat,
-                    |p, q, r| out.push([*p, *q, *r]),
+                    self.back,
+                    |p, q, r, e| out.push(([*p, *q, *r], e)),
                 );
-                // Edge flags of clipped pieces are not tracked: every edge is drawn.
-                for [p, q, r] in &out {
+                // The stipple counter restarts only at the polygon's first piece.
+                for (k, ([p, q, r], e)) in out.iter().enumerate() {
                     self.triangle(
                         [p, q, r],
-                        EDGE_ALL,
-                        reset,
+                        *e,
+                        k == 0,
                         &mut stipple,
                         nvary,
                         plan,

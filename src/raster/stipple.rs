@@ -10,13 +10,14 @@ use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
 use crate::stats::Stats;
 
-/// Rasterizes `t` inside `region`, shading only the pixels the stipple lets through (the
-/// untextured span shader).
+/// Rasterizes `t` inside `region`, shading only the pixels the stipple lets through
+/// (textured ones through [`super::prim_tex`]).
 pub fn stippled_triangle(
     t: &SetupTriangle,
     stipple: &PolygonStipple,
     region: [i64; 4],
     plan: &FragPlan,
+    units: &[crate::texture::UnitPlan<'_>],
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
@@ -27,6 +28,16 @@ pub fn stippled_triangle(
         .min(region[3] - 1)
         .min((fb.y0 + fb.rows) as i64 - 1);
     let h = fb.height as i64;
+    if !units.is_empty() {
+        let cover = super::prim_tex::StippleCover {
+            edges: &t.edges,
+            stipple,
+            height: h,
+        };
+        let b = [x_lo, y_lo, x_hi, y_hi];
+        super::prim_tex::shade_covered(t, b, &cover, plan, units, fb, stats);
+        return;
+    }
     for py in y_lo..=y_hi {
         let (mut lo, mut hi) = (x_lo, x_hi);
         for e in &t.edges {

@@ -1,0 +1,244 @@
+//! Textured lines, points and stippled polygons: the same fragment pipeline as textured
+//! triangles (every enabled unit, colour sum, fog, alpha test …) over a coverage that is
+//! not a plain triangle.
+//!
+//! llvmpipe shades every primitive in 2x2 quads aligned to even pixel coordinates and takes
+//! one texture LOD per quad from the TL/TR/BL coordinates; pixels of a quad outside the
+//! primitive are helper pixels evaluated on the same planes. A line's planes vary along its
+//! major axis only (`lp_setup_line.c`), so its LOD comes from that axis; a point's planes
+//! are constant, so points always magnify. The walk here is the triangle path's
+//! (`rows_textured`) with the coverage given by a [`Cover`].
+// Lane loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
+
+use crate::context::raster_state::PolygonStipple;
+use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::cpu::Isa;
+use crate::fragment::span::{
+    shade_chunk, tex_coords, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
+};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::{Edge, SetupTriangle};
+use crate::geometry::VARY_TEX;
+use crate::stats::Stats;
+use crate::texture::UnitPlan;
+
+/// The pixels a primitive covers.
+pub trait Cover {
+    /// The covered pixels of row `py` (y-down) as an inclusive range, or `None`.
+    fn span(&self, py: i64) -> Option<(i64, i64)>;
+    /// Whether covered pixel (`x`, `py`) survives a per-pixel mask (polygon stipple).
+    #[inline(always)]
+    fn keep(&self, _x: i64, _py: i64) -> bool {
+        true
+    }
+}
+
+/// Coverage of the intersection of integer edge functions (a triangle or a line's
+/// parallelogram).
+pub struct EdgeCover<'e>(pub &'e [Edge]);
+
+impl Cover for EdgeCover<'_> {
+    #[inline(always)]
+    fn span(&self, py: i64) -> Option<(i64, i64)> {
+        let (mut lo, mut hi) = (i64::MIN, i64::MAX);
+        for e in self.0 {
+            let (a, z) = e.span(py)?;
+            lo = lo.max(a);
+            hi = hi.min(z);
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+}
+
+/// A rectangle of whole pixels (the box is the walk's bounds).
+pub struct BoxCover;
+
+impl Cover for BoxCover {
+    #[inline(always)]
+    fn span(&self, _py: i64) -> Option<(i64, i64)> {
+        Some((i64::MIN, i64::MAX))
+    }
+}
+
+/// A triangle's coverage with the polygon stipple applied (`gl_y(py)` is GL's row).
+pub struct StippleCover<'e> {
+    /// The triangle's edges.
+    pub edges: &'e [Edge],
+    /// The 32x32 pattern.
+    pub stipple: &'e PolygonStipple,
+    /// Framebuffer height (to turn y-down rows into GL rows).
+    pub height: i64,
+}
+
+impl Cover for StippleCover<'_> {
+    #[inline(always)]
+    fn span(&self, py: i64) -> Option<(i64, i64)> {
+        EdgeCover(self.edges).span(py)
+    }
+
+    #[inline(always)]
+    fn keep(&self, x: i64, py: i64) -> bool {
+        self.stipple.passes(x, self.height - 1 - py)
+    }
+}
+
+/// Shades the pixels of `cover` inside the inclusive box `b` (already cut to the region
+/// and the target's rows) with the planes of `t`, sampling `units` per 2x2 quad.
+pub fn shade_covered<C: Cover>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    cover: &C,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    if b[0] > b[2] || b[1] > b[3] {
+        return;
+    }
+    match crate::cpu::isa() {
+        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma | Isa::Fma => unsafe { covered_fma(t, b, cover, plan, units, fb, stats) },
+        _ => covered_any::<Unfused, C>(t, b, cover, plan, units, fb, stats),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn covered_fma<C: Cover>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    cover: &C,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    covered_any::<Fused, C>(t, b, cover, plan, units, fb, stats)
+}
+
+#[inline(always)]
+fn covered_any<M: Madd, C: Cover>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    cover: &C,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let (d, f, p) = (plan.depth.is_some(), plan.flat, t.persp);
+    match (d, f, p) {
+        (false, false, false) => {
+            rows::<M, C, false, false, false>(t, b, cover, plan, units, fb, stats)
+        }
+        (false, false, true) => {
+            rows::<M, C, false, false, true>(t, b, cover, plan, units, fb, stats)
+        }
+        (false, true, false) => {
+            rows::<M, C, false, true, false>(t, b, cover, plan, units, fb, stats)
+        }
+        (false, true, true) => rows::<M, C, false, true, true>(t, b, cover, plan, units, fb, stats),
+        (true, false, false) => {
+            rows::<M, C, true, false, false>(t, b, cover, plan, units, fb, stats)
+        }
+        (true, false, true) => rows::<M, C, true, false, true>(t, b, cover, plan, units, fb, stats),
+        (true, true, false) => rows::<M, C, true, true, false>(t, b, cover, plan, units, fb, stats),
+        (true, true, true) => rows::<M, C, true, true, true>(t, b, cover, plan, units, fb, stats),
+    }
+}
+
+/// The covered range of row `py` inside `b`.
+#[inline(always)]
+fn row<C: Cover>(cover: &C, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
+    if py < b[1] || py > b[3] {
+        return None;
+    }
+    let (lo, hi) = cover.span(py)?;
+    let (lo, hi) = (lo.max(b[0]), hi.min(b[2]));
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// Pairs of rows in 8-pixel chunks of 2x2 quads, as `rows_textured` walks triangles.
+#[inline(always)]
+fn rows<M: Madd, C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    cover: &C,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+    let mut qy = b[1] & !1;
+    while qy <= b[3] {
+        let spans = [row(cover, b, qy), row(cover, b, qy + 1)];
+        let lo = spans.iter().flatten().map(|s| s.0).min();
+        let hi = spans.iter().flatten().map(|s| s.1).max();
+        let (Some(lo), Some(hi)) = (lo, hi) else {
+            qy += 2;
+            continue;
+        };
+        let mut x = lo & !1;
+        while x <= hi {
+            let mut live = [[false; LANES]; 2];
+            for (r, span) in spans.iter().enumerate() {
+                if let Some((a, z)) = *span {
+                    for i in 0..LANES {
+                        let px = x + i as i64;
+                        live[r][i] = px >= a && px <= z && cover.keep(px, qy + r as i64);
+                    }
+                }
+            }
+            if live.iter().flatten().any(|&l| l) {
+                let fx: [f32; LANES] = std::array::from_fn(|i| (x + i as i64) as f32);
+                let fy = [qy as f32, (qy + 1) as f32];
+                for (k, u) in units.iter().enumerate() {
+                    let base = VARY_TEX + 4 * k;
+                    let (s0, t0) = tex_coords::<M, PERSP>(t, base, &fx, fy[0]);
+                    let (s1, t1) = tex_coords::<M, PERSP>(t, base, &fx, fy[1]);
+                    for j in 0..LANES / 2 {
+                        let (l, r) = (2 * j, 2 * j + 1);
+                        if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                            continue;
+                        }
+                        let v = u.sample_quad(
+                            [s0[l], s0[r], s1[l], s1[r]],
+                            [t0[l], t0[r], t1[l], t1[r]],
+                        );
+                        texels[0][k][l] = v[0];
+                        texels[0][k][r] = v[1];
+                        texels[1][k][l] = v[2];
+                        texels[1][k][r] = v[3];
+                    }
+                }
+                for r in 0..2 {
+                    if live[r].iter().any(|&l| l) {
+                        let colors = if units.is_empty() {
+                            ChunkColors::Shaded
+                        } else {
+                            ChunkColors::Textured(&texels[r])
+                        };
+                        shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                            t,
+                            plan,
+                            units,
+                            colors,
+                            fb,
+                            (qy + r as i64) as usize,
+                            x as usize,
+                            live[r],
+                            stats,
+                        );
+                    }
+                }
+            }
+            x += LANES as i64;
+        }
+        qy += 2;
+    }
+}
