@@ -134,11 +134,11 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         "tutorial_fog_terrain",
         Tolerance {
             max_channel_diff: 1,
-            max_percent_off: 0.3,
-            reason: "the GL_LINEAR-fog picture: 564 of its 120000 pixels differ by 1 in a \
-                     channel (fog-factor rounding, not yet traced to the llvmpipe rule; the \
-                     geometry, wireframe edges and the EXP2 picture are identical). Measured \
-                     99.765% identical, max diff 1",
+            max_percent_off: 0.5,
+            reason: "the GL_LINEAR-fog picture: 564 of its 120000 pixels (0.47%, the limit \
+                     applies per image) differ by 1 in a channel (fog-factor rounding, not \
+                     yet traced to the llvmpipe rule; the geometry, wireframe edges and the \
+                     EXP2 picture are identical). Measured 99.530% identical, max diff 1",
         },
     ),
     (

@@ -68,6 +68,8 @@ fn objects_binding_and_errors() {
     glBindTexture(GL_TEXTURE_1D, names[0]);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glBindTexture(GL_TEXTURE_3D, names[0]);
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    glBindTexture(0x1234, names[0]);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     // SAFETY: negative count is rejected before reading.
     unsafe { glGenTextures(-1, names.as_mut_ptr()) };

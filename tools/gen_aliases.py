@@ -81,6 +81,10 @@ def render(aliases, defs):
     return "\n".join(lines)
 
 
+# glTexImage3DEXT takes `GLenum internalformat` where glTexImage3D takes `GLint`.
+OTHER_TYPES = {"glTexImage3DEXT"}
+
+
 def main():
     defs = ours()
     mesa = mesa_exports()
@@ -103,6 +107,9 @@ def main():
             if name.endswith(s) and core in defs:
                 # Same name, different function (EXT_vertex_array's pointers take a count).
                 if header_arity(name) not in (None, len(defs[core][2])):
+                    break
+                # Same function, other parameter types (written by hand next to the core).
+                if name in OTHER_TYPES:
                     break
                 where = "gl" if re.search(r"\b%s\b" % name, gl_h) else "ext"
                 groups[where].append((name, core))

@@ -421,40 +421,6 @@ pub unsafe extern "C" fn glSecondaryColor3usvEXT(v: *const GLushort) {
     unsafe { super::lighting_ext::glSecondaryColor3usv(v) }
 }
 
-/// glTexImage3DEXT: the extension name of [`super::textures_3d::glTexImage3D`].
-///
-/// # Safety
-/// The pointer arguments must be valid as for `glTexImage3D`.
-#[no_mangle]
-pub unsafe extern "C" fn glTexImage3DEXT(
-    target: GLenum,
-    level: GLint,
-    internalFormat: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    depth: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    // SAFETY: the caller upholds `glTexImage3D`'s contract; the arguments pass through unchanged.
-    unsafe {
-        super::textures_3d::glTexImage3D(
-            target,
-            level,
-            internalFormat,
-            width,
-            height,
-            depth,
-            border,
-            format,
-            type_,
-            pixels,
-        )
-    }
-}
-
 /// glTexSubImage3DEXT: the extension name of [`super::textures_3d::glTexSubImage3D`].
 ///
 /// # Safety
