@@ -1,9 +1,6 @@
 /*
  * blend_quads.c - (b) 40 full-screen blended quads.
  *
- * PENDING FEATURE: blending (glBlendFunc).  Until softgl blends, its output
- * differs from llvmpipe (or the scene fails to link: "missing symbol").
- *
  * Forty window-sized GL_QUADS, each with a smooth colour gradient and alpha
  * between 0.15 and 0.35, composited with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA:
  * 40 read-modify-write passes over every pixel.

@@ -1,9 +1,6 @@
 /*
  * sprites_10k.c - (g) 10,000 textured, blended 2D sprites.
  *
- * PENDING FEATURE: texturing and blending.  Until softgl has both, its
- * output differs from llvmpipe (or the scene fails to link).
- *
  * A 2D game-style pass: pixel-space glOrtho, a 32x32 RGBA sprite (a soft
  * disc with alpha), GL_REPLACE texture environment, GL_SRC_ALPHA /
  * GL_ONE_MINUS_SRC_ALPHA blending, and 10,000 sprites of 16x16 pixels at

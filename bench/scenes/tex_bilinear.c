@@ -1,9 +1,6 @@
 /*
  * tex_bilinear.c - (d) one full-screen bilinear-filtered texture.
  *
- * PENDING FEATURE: texturing (glTexImage2D, GL_LINEAR).  Until softgl
- * textures, its output differs from llvmpipe (or the scene fails to link).
- *
  * A 256x256 RGBA8 procedural texture (rings, a checkerboard and gradients)
  * magnified onto a window-sized quad with GL_LINEAR min/mag filters and the
  * default GL_MODULATE texture environment (white vertex colour).

@@ -1,10 +1,6 @@
 /*
  * tex_trilinear_plane.c - (e) a trilinear-filtered ground plane in perspective.
  *
- * PENDING FEATURE: texturing with mipmaps (GL_LINEAR_MIPMAP_LINEAR).  Until
- * softgl textures, its output differs from llvmpipe (or the scene fails to
- * link).
- *
  * A 256x256 RGBA8 procedural texture with all nine mip levels computed here
  * by 2x2 box filtering and uploaded one by one with glTexImage2D (no
  * gluBuild2DMipmaps), GL_REPEAT, tiled 40 times over a ground plane that
