@@ -69,6 +69,8 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("accum.rs", Header::Gl),
     ("feedback.rs", Header::Gl),
     ("eval.rs", Header::Gl),
+    ("legacy.rs", Header::Gl),
+    ("textures_compressed.rs", Header::Gl),
     ("aliases_gl.rs", Header::Gl),
     ("glext_enums.rs", Header::Glext),
     ("multidraw.rs", Header::Glext),
@@ -78,6 +80,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("lighting_ext.rs", Header::Glext),
     ("pixels_ext.rs", Header::Glext),
     ("queries.rs", Header::Glext),
+    ("arrays_ext.rs", Header::Glext),
     ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];

@@ -113,7 +113,7 @@ impl Context {
             return Ok(());
         };
         let w = self.accum.size.0;
-        let mask = self.state.color_mask;
+        let mask = self.state.color_write_mask();
         let (Some(fb), acc) = (self.fb.as_mut(), &mut self.accum.buffer) else {
             return Ok(());
         };

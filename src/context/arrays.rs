@@ -153,6 +153,8 @@ pub struct ArrayState {
     pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
     /// GL_EDGE_FLAG_ARRAY (GLboolean elements).
     pub edge_flag: ArrayPointer,
+    /// GL_INDEX_ARRAY (kept for glGet; an RGBA context does not read it).
+    pub index: ArrayPointer,
     /// GL_ARRAY_BUFFER binding.
     pub array_buffer: u32,
     /// GL_ELEMENT_ARRAY_BUFFER binding.
@@ -169,6 +171,7 @@ impl Default for ArrayState {
             normal: ArrayPointer::new(3, DataType::Float),
             texcoord: [ArrayPointer::new(4, DataType::Float); MAX_TEXTURE_UNITS],
             edge_flag: ArrayPointer::new(1, DataType::UByte),
+            index: ArrayPointer::new(1, DataType::Float),
             array_buffer: 0,
             element_buffer: 0,
             buffers: HashMap::new(),
@@ -263,6 +266,7 @@ impl ArrayState {
             &mut self.color,
             &mut self.normal,
             &mut self.edge_flag,
+            &mut self.index,
         ]
         .into_iter()
         .chain(self.texcoord.iter_mut())

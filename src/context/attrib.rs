@@ -62,6 +62,7 @@ struct ClientArrays {
     normal: ArrayPointer,
     texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
     edge_flag: ArrayPointer,
+    index: ArrayPointer,
     array_buffer: u32,
     element_buffer: u32,
     client_active_texture: usize,
@@ -106,7 +107,6 @@ fn sync_texture_caps(c: &mut Context) {
 fn current(c: &mut Context, s: &AttribFrame) {
     c.state.current = s.state.current;
     c.raster_pos = s.raster_pos;
-    // missing: current index (colour-index mode is not supported)
 }
 
 fn point(c: &mut Context, s: &AttribFrame) {
@@ -145,7 +145,8 @@ fn polygon_stipple(c: &mut Context, s: &AttribFrame) {
 
 fn pixel_mode(c: &mut Context, s: &AttribFrame) {
     c.pixel_modes = s.pixel_modes;
-    // missing: the read buffer (glReadBuffer is not implemented yet); pixel maps belong to no group
+    c.state.legacy.read_buffer = s.state.legacy.read_buffer;
+    // pixel maps belong to no group
 }
 
 fn lighting(c: &mut Context, s: &AttribFrame) {
@@ -239,7 +240,9 @@ fn color_buffer(c: &mut Context, s: &AttribFrame) {
     c.state.frag.logic_op = s.state.frag.logic_op;
     c.state.color_mask = s.state.color_mask;
     c.state.clear_color = s.state.clear_color;
-    // missing: draw buffer, index mask, clear index
+    c.state.legacy.draw_buffer = s.state.legacy.draw_buffer;
+    c.state.legacy.index_mask = s.state.legacy.index_mask;
+    c.state.legacy.clear_index = s.state.legacy.clear_index;
 }
 
 fn hint(c: &mut Context, s: &AttribFrame) {
@@ -314,7 +317,8 @@ fn multisample(c: &mut Context, s: &AttribFrame) {
             Cap::SampleCoverage,
         ],
     );
-    // missing: sample coverage value and invert
+    c.state.legacy.sample_coverage_value = s.state.legacy.sample_coverage_value;
+    c.state.legacy.sample_coverage_invert = s.state.legacy.sample_coverage_invert;
 }
 
 /// A group's restore function.
@@ -415,6 +419,7 @@ impl Context {
                 normal: a.normal,
                 texcoord: a.texcoord,
                 edge_flag: a.edge_flag,
+                index: a.index,
                 array_buffer: a.array_buffer,
                 element_buffer: a.element_buffer,
                 client_active_texture: self.state.client_active_texture,
@@ -439,6 +444,7 @@ impl Context {
             a.normal = s.normal;
             a.texcoord = s.texcoord;
             a.edge_flag = s.edge_flag;
+            a.index = s.index;
             // A buffer deleted since the push is not revived.
             let live = |a: &super::arrays::ArrayState, n: u32| n == 0 || a.buffers.contains_key(&n);
             if live(a, s.array_buffer) {

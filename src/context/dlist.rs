@@ -51,6 +51,8 @@ pub enum VertexOp {
     FogCoord(f32),
     /// glEdgeFlag.
     EdgeFlag(bool),
+    /// glIndex (the current colour index).
+    Index(f32),
     /// Saves the current attributes (a compiled glDrawArrays does not change them).
     SaveCurrent,
     /// Restores the attributes saved by [`VertexOp::SaveCurrent`].
@@ -67,6 +69,7 @@ impl VertexOp {
             VertexOp::FogCoord(_) => 8,
             VertexOp::TexCoord(u, _) => 16 << u,
             VertexOp::EdgeFlag(_) => 1 << 12,
+            VertexOp::Index(_) => 1 << 13,
             _ => 0,
         }
     }
@@ -147,7 +150,31 @@ pub struct ListState {
     max_key: u32,
 }
 
+/// The part of [`ListState`] a share group shares: the lists and their names.
+#[derive(Default)]
+pub struct ListTable {
+    lists: HashMap<u32, Arc<DisplayList>>,
+    reserved: Vec<(u32, u32)>,
+    max_key: u32,
+}
+
 impl ListState {
+    /// Takes the list names and lists out (for the share group), leaving none.
+    pub fn take_table(&mut self) -> ListTable {
+        ListTable {
+            lists: std::mem::take(&mut self.lists),
+            reserved: std::mem::take(&mut self.reserved),
+            max_key: std::mem::replace(&mut self.max_key, 0),
+        }
+    }
+
+    /// Puts a share group's list names and lists in.
+    pub fn put_table(&mut self, t: ListTable) {
+        self.lists = t.lists;
+        self.reserved = t.reserved;
+        self.max_key = t.max_key;
+    }
+
     /// `Some(execute)` while a list is being compiled.
     #[inline]
     pub fn compile_mode(&self) -> Option<bool> {
@@ -240,6 +267,7 @@ impl Context {
             VertexOp::TexCoord(u, v) => cur.texcoord[(u as usize) % MAX_TEXTURE_UNITS] = v,
             VertexOp::FogCoord(f) => cur.fog_coord = f,
             VertexOp::EdgeFlag(f) => cur.edge_flag = f,
+            VertexOp::Index(i) => cur.index = i,
             VertexOp::SaveCurrent => self.lists.saved_current = Some(*cur),
             VertexOp::RestoreCurrent => {
                 if let Some(s) = self.lists.saved_current.take() {

@@ -223,7 +223,28 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_RGBA_MODE => b(true),
         GL_INDEX_MODE | GL_DOUBLEBUFFER | GL_STEREO => b(false),
         GL_AUX_BUFFERS => i(&[0]),
-        GL_DRAW_BUFFER | GL_READ_BUFFER => e(GL_FRONT),
+        GL_DRAW_BUFFER => e(st.legacy.draw_buffer.to_gl()),
+        GL_READ_BUFFER => e(st.legacy.read_buffer.to_gl()),
+        GL_CURRENT_INDEX => f(&[st.current.index]),
+        GL_INDEX_WRITEMASK => i(&[st.legacy.index_mask as i32 as i64]),
+        GL_INDEX_CLEAR_VALUE => i(&[st.legacy.clear_index as i32 as i64]),
+        GL_SAMPLE_COVERAGE_VALUE => f(&[st.legacy.sample_coverage_value]),
+        GL_SAMPLE_COVERAGE_INVERT => b(st.legacy.sample_coverage_invert),
+        GL_SAMPLE_BUFFERS | GL_SAMPLES => i(&[0]),
+        // No compressed internal format is supported (GL 1.5 requires none).
+        GL_NUM_COMPRESSED_TEXTURE_FORMATS => i(&[0]),
+        GL_COMPRESSED_TEXTURE_FORMATS => i(&[]),
+        GL_MAP1_GRID_DOMAIN => f(&c.eval.grid1.d),
+        GL_MAP1_GRID_SEGMENTS => i(&[c.eval.grid1.n as i64]),
+        GL_MAP2_GRID_DOMAIN => {
+            let [u, v] = c.eval.grid2;
+            f(&[u.d[0], u.d[1], v.d[0], v.d[1]])
+        }
+        GL_MAP2_GRID_SEGMENTS => i(&[c.eval.grid2[0].n as i64, c.eval.grid2[1].n as i64]),
+        GL_INDEX_ARRAY => b(a.index.enabled),
+        GL_INDEX_ARRAY_TYPE => e(a.index.ty.to_gl()),
+        GL_INDEX_ARRAY_STRIDE => i(&[a.index.stride as i64]),
+        GL_INDEX_ARRAY_BUFFER_BINDING => i(&[a.index.buffer as i64]),
         GL_PERSPECTIVE_CORRECTION_HINT => e(st.hints.perspective_correction),
         GL_POINT_SMOOTH_HINT => e(st.hints.point_smooth),
         GL_LINE_SMOOTH_HINT => e(st.hints.line_smooth),

@@ -14,6 +14,7 @@ pub mod feedback;
 pub mod fragment_state;
 pub mod get;
 pub mod immediate;
+pub mod legacy_state;
 pub mod lighting_state;
 pub mod pixel_state;
 pub mod pixel_transfer;
@@ -477,16 +478,17 @@ impl Context {
         let w = fb.width;
         // Mesa clears with pipe->clear only for full-buffer, full-mask clears; otherwise it
         // draws a quad, whose colour and depth go through the shader's conversions.
+        let color_mask = st.color_write_mask();
         let quad_path = region != [0, 0, fb.width as i64, fb.height as i64]
-            || st.color_mask != [true; 4]
+            || color_mask != [true; 4]
             || (st.frag.stencil_front.writemask & 0xFF) != 0xFF;
-        if mask & GL_COLOR_BUFFER_BIT != 0 && st.color_mask.iter().any(|&m| m) {
+        if mask & GL_COLOR_BUFFER_BIT != 0 && color_mask.iter().any(|&m| m) {
             let v = if quad_path {
                 fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte))
             } else {
                 fb.clear_value(st.clear_color)
             };
-            let m = st.color_mask;
+            let m = color_mask;
             if m == [true; 4] && x0 == 0 && x1 == w {
                 fb.color[y0 * w..y1 * w].fill(v);
             }

@@ -1,5 +1,5 @@
-//! Objects that OSMesa contexts created with a `sharelist` share: texture objects and
-//! buffer objects (GL's share group).
+//! Objects that OSMesa contexts created with a `sharelist` share: texture objects, buffer
+//! objects and display lists (GL's share group).
 //!
 //! The tables live in one [`ShareGroup`] per group. A context that becomes current on a
 //! thread checks the tables out into its own state (so the drawing code reads them as plain
@@ -23,6 +23,8 @@ pub struct SharedObjects {
     pub next_texture: u32,
     /// Buffer objects by name.
     pub buffers: HashMap<u32, Option<BufferObject>>,
+    /// Display lists and their names.
+    pub lists: super::dlist::ListTable,
 }
 
 /// A share group: the tables, while no context of the group has them checked out.
@@ -37,6 +39,7 @@ impl ShareGroup {
             c.textures.objects = s.textures;
             c.textures.next_name = s.next_texture;
             c.arrays.buffers = s.buffers;
+            c.lists.put_table(s.lists);
         }
     }
 
@@ -48,6 +51,7 @@ impl ShareGroup {
                 textures: std::mem::take(&mut c.textures.objects),
                 next_texture: std::mem::replace(&mut c.textures.next_name, 1),
                 buffers: std::mem::take(&mut c.arrays.buffers),
+                lists: c.lists.take_table(),
             });
         }
     }

@@ -408,6 +408,8 @@ pub struct CurrentAttribs {
     pub fog_coord: f32,
     /// GL_EDGE_FLAG
     pub edge_flag: bool,
+    /// GL_CURRENT_INDEX (kept for glGet; an RGBA context draws nothing with it)
+    pub index: f32,
 }
 
 /// The number of texture units (Mesa's fixed-function count is 8).
@@ -422,6 +424,7 @@ impl Default for CurrentAttribs {
             texcoord: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
             fog_coord: 0.0,
             edge_flag: true,
+            index: 1.0,
         }
     }
 }
@@ -498,6 +501,20 @@ pub struct State {
     pub active_texture: usize,
     /// glClientActiveTexture, as an index.
     pub client_active_texture: usize,
+    /// Colour-index, sample-coverage and draw/read-buffer values.
+    pub legacy: super::legacy_state::LegacyState,
+}
+
+impl State {
+    /// The colour channels drawing writes: glColorMask, or none when glDrawBuffer is
+    /// GL_NONE.
+    pub fn color_write_mask(&self) -> [bool; 4] {
+        if self.legacy.draws_color() {
+            self.color_mask
+        } else {
+            [false; 4]
+        }
+    }
 }
 
 impl Default for State {
@@ -524,6 +541,7 @@ impl Default for State {
             matrix_mode: MatrixMode::ModelView,
             active_texture: 0,
             client_active_texture: 0,
+            legacy: Default::default(),
         }
     }
 }

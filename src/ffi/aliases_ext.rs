@@ -54,6 +54,156 @@ pub unsafe extern "C" fn glBufferSubDataARB(
     unsafe { super::buffers::glBufferSubData(target, offset, size, data) }
 }
 
+/// glCompressedTexImage1DARB: the extension name of [`super::textures_compressed::glCompressedTexImage1D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexImage1DARB(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _border: GLint,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexImage1D(
+        _target,
+        _level,
+        _internalformat,
+        _width,
+        _border,
+        _image_size,
+        _data,
+    )
+}
+
+/// glCompressedTexImage2DARB: the extension name of [`super::textures_compressed::glCompressedTexImage2D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexImage2DARB(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _height: GLsizei,
+    _border: GLint,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexImage2D(
+        _target,
+        _level,
+        _internalformat,
+        _width,
+        _height,
+        _border,
+        _image_size,
+        _data,
+    )
+}
+
+/// glCompressedTexImage3DARB: the extension name of [`super::textures_compressed::glCompressedTexImage3D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexImage3DARB(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _height: GLsizei,
+    _depth: GLsizei,
+    _border: GLint,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexImage3D(
+        _target,
+        _level,
+        _internalformat,
+        _width,
+        _height,
+        _depth,
+        _border,
+        _image_size,
+        _data,
+    )
+}
+
+/// glCompressedTexSubImage1DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage1D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexSubImage1DARB(
+    target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _width: GLsizei,
+    format: GLenum,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexSubImage1D(
+        target,
+        _level,
+        _xoffset,
+        _width,
+        format,
+        _image_size,
+        _data,
+    )
+}
+
+/// glCompressedTexSubImage2DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage2D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexSubImage2DARB(
+    target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _yoffset: GLint,
+    _width: GLsizei,
+    _height: GLsizei,
+    format: GLenum,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexSubImage2D(
+        target,
+        _level,
+        _xoffset,
+        _yoffset,
+        _width,
+        _height,
+        format,
+        _image_size,
+        _data,
+    )
+}
+
+/// glCompressedTexSubImage3DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage3D`].
+#[no_mangle]
+pub extern "C" fn glCompressedTexSubImage3DARB(
+    target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _yoffset: GLint,
+    _zoffset: GLint,
+    _width: GLsizei,
+    _height: GLsizei,
+    _depth: GLsizei,
+    format: GLenum,
+    _image_size: GLsizei,
+    _data: *const GLvoid,
+) {
+    super::textures_compressed::glCompressedTexSubImage3D(
+        target,
+        _level,
+        _xoffset,
+        _yoffset,
+        _zoffset,
+        _width,
+        _height,
+        _depth,
+        format,
+        _image_size,
+        _data,
+    )
+}
+
 /// glCopyTexSubImage3DEXT: the extension name of [`super::textures_3d::glCopyTexSubImage3D`].
 #[no_mangle]
 pub extern "C" fn glCopyTexSubImage3DEXT(
@@ -186,6 +336,12 @@ pub unsafe extern "C" fn glGetBufferSubDataARB(
     unsafe { super::buffers::glGetBufferSubData(target, offset, size, data) }
 }
 
+/// glGetCompressedTexImageARB: the extension name of [`super::textures_compressed::glGetCompressedTexImage`].
+#[no_mangle]
+pub extern "C" fn glGetCompressedTexImageARB(target: GLenum, level: GLint, _img: *mut GLvoid) {
+    super::textures_compressed::glGetCompressedTexImage(target, level, _img)
+}
+
 /// glGetPointervEXT: the extension name of [`super::query::glGetPointerv`].
 ///
 /// # Safety
@@ -291,6 +447,12 @@ pub unsafe extern "C" fn glPrioritizeTexturesEXT(
 ) {
     // SAFETY: the caller upholds `glPrioritizeTextures`'s contract; the arguments pass through unchanged.
     unsafe { super::textures::glPrioritizeTextures(n, textures, priorities) }
+}
+
+/// glSampleCoverageARB: the extension name of [`super::legacy::glSampleCoverage`].
+#[no_mangle]
+pub extern "C" fn glSampleCoverageARB(value: GLfloat, invert: GLboolean) {
+    super::legacy::glSampleCoverage(value, invert)
 }
 
 /// glSecondaryColor3bEXT: the extension name of [`super::lighting_ext::glSecondaryColor3b`].

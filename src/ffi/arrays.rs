@@ -19,6 +19,7 @@ enum Which {
     Normal,
     TexCoord,
     EdgeFlag,
+    Index,
 }
 
 fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
@@ -28,6 +29,7 @@ fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
         Which::Normal => &mut c.arrays.normal,
         Which::TexCoord => &mut c.arrays.texcoord[c.state.client_active_texture],
         Which::EdgeFlag => &mut c.arrays.edge_flag,
+        Which::Index => &mut c.arrays.index,
     }
 }
 
@@ -49,6 +51,14 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
             ),
             Which::Color => true,
             Which::EdgeFlag => t == DataType::UByte,
+            Which::Index => matches!(
+                t,
+                DataType::UByte
+                    | DataType::Short
+                    | DataType::Int
+                    | DataType::Float
+                    | DataType::Double
+            ),
         };
         if !type_ok {
             return Err(GlError::InvalidEnum);
@@ -58,7 +68,7 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
             Which::Color => (3..=4).contains(&size),
             Which::TexCoord => (1..=4).contains(&size),
             Which::Normal => size == 3,
-            Which::EdgeFlag => size == 1,
+            Which::EdgeFlag | Which::Index => size == 1,
         };
         if !size_ok || stride < 0 {
             return Err(GlError::InvalidValue);
@@ -104,6 +114,12 @@ pub extern "C" fn glEdgeFlagPointer(stride: GLsizei, ptr: *const GLvoid) {
     set_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr)
 }
 
+/// glIndexPointer (kept for glGet; an RGBA context does not read the index array).
+#[no_mangle]
+pub extern "C" fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    set_pointer(Which::Index, 1, type_, stride, ptr)
+}
+
 /// glNormalPointer.
 #[no_mangle]
 pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
@@ -118,8 +134,9 @@ fn client_state(cap: GLenum, on: bool) {
             GL_NORMAL_ARRAY => Which::Normal,
             GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
             GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
+            GL_INDEX_ARRAY => Which::Index,
             // Arrays the fixed-function pipeline does not read yet are accepted.
-            GL_INDEX_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => return Ok(()),
+            GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => return Ok(()),
             _ => return Err(GlError::InvalidEnum),
         };
         c.check_outside_begin()?;

@@ -84,7 +84,7 @@ pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsiz
         };
         let fb = c.fb.as_ref();
         let missing = match kind {
-            CopyKind::Color => false,
+            CopyKind::Color => !c.state.legacy.reads_color(),
             CopyKind::Depth => {
                 fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None)
             }

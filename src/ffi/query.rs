@@ -138,7 +138,7 @@ pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) 
             GL_FEEDBACK_BUFFER_POINTER => c.feedback.fb_buffer,
             GL_SELECTION_BUFFER_POINTER => c.feedback.sel_buffer,
             GL_EDGE_FLAG_ARRAY_POINTER => a.edge_flag.ptr,
-            GL_INDEX_ARRAY_POINTER => 0,
+            GL_INDEX_ARRAY_POINTER => a.index.ptr,
             _ => return Err(GlError::InvalidEnum),
         };
         if !params.is_null() {
@@ -218,6 +218,10 @@ fn read_pixels(
         return Err(GlError::InvalidValue);
     }
     c.check_outside_begin()?;
+    if matches!(kind, ReadKind::Color(..)) && !c.state.legacy.reads_color() {
+        // glReadBuffer(GL_NONE): no colour buffer to read.
+        return Err(GlError::InvalidOperation);
+    }
     let Some(fb) = c.fb.as_ref() else {
         return Ok(());
     };

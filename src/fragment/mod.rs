@@ -183,7 +183,7 @@ impl FragPlan {
         FragPlan {
             depth,
             flat: state.shade_model == ShadeModel::Flat,
-            color_mask: state.color_mask,
+            color_mask: state.color_write_mask(),
             fma,
             alpha,
             stencil,
