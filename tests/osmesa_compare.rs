@@ -270,6 +270,9 @@ const SCENES: &[&str] = &[
     "tutorial_lit_cube",
     "tutorial_fog_terrain",
     "tutorial_textured_lit",
+    "point_params",
+    "secondary_color_array",
+    "fog_coord_array",
 ];
 
 macro_rules! scene_tests {
@@ -380,6 +383,9 @@ scene_tests!(
     tutorial_lit_cube,
     tutorial_fog_terrain,
     tutorial_textured_lit,
+    point_params,
+    secondary_color_array,
+    fog_coord_array,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

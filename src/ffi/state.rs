@@ -49,7 +49,9 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
             GL_NORMAL_ARRAY => a.normal.enabled,
             GL_TEXTURE_COORD_ARRAY => a.texcoord[c.state.client_active_texture].enabled,
             GL_EDGE_FLAG_ARRAY => a.edge_flag.enabled,
-            GL_INDEX_ARRAY | GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => false,
+            GL_SECONDARY_COLOR_ARRAY => a.secondary_color.enabled,
+            GL_FOG_COORD_ARRAY => a.fog_coord.enabled,
+            GL_INDEX_ARRAY => false,
             _ => c.state.caps.get(Cap::from_gl(cap)?),
         };
         Ok(on as GLboolean)
