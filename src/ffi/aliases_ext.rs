@@ -101,10 +101,10 @@ pub extern "C" fn glDrawRangeElementsEXT(
     super::draw::glDrawRangeElements(mode, start, end, count, type_, indices)
 }
 
-/// glFogCoordPointerEXT: the extension name of [`super::arrays_ext::glFogCoordPointer`].
+/// glFogCoordPointerEXT: the extension name of [`super::arrays_gl14::glFogCoordPointer`].
 #[no_mangle]
 pub extern "C" fn glFogCoordPointerEXT(type_: GLenum, stride: GLsizei, pointer: *const GLvoid) {
-    super::arrays_ext::glFogCoordPointer(type_, stride, pointer)
+    super::arrays_gl14::glFogCoordPointer(type_, stride, pointer)
 }
 
 /// glFogCoorddEXT: the extension name of [`super::lighting_ext::glFogCoordd`].
@@ -459,7 +459,7 @@ pub unsafe extern "C" fn glSecondaryColor3usvEXT(v: *const GLushort) {
     unsafe { super::lighting_ext::glSecondaryColor3usv(v) }
 }
 
-/// glSecondaryColorPointerEXT: the extension name of [`super::arrays_ext::glSecondaryColorPointer`].
+/// glSecondaryColorPointerEXT: the extension name of [`super::arrays_gl14::glSecondaryColorPointer`].
 #[no_mangle]
 pub extern "C" fn glSecondaryColorPointerEXT(
     size: GLint,
@@ -467,7 +467,7 @@ pub extern "C" fn glSecondaryColorPointerEXT(
     stride: GLsizei,
     pointer: *const GLvoid,
 ) {
-    super::arrays_ext::glSecondaryColorPointer(size, type_, stride, pointer)
+    super::arrays_gl14::glSecondaryColorPointer(size, type_, stride, pointer)
 }
 
 /// glTexSubImage3DEXT: the extension name of [`super::textures_3d::glTexSubImage3D`].

@@ -29,7 +29,7 @@ pub mod accum;
 pub mod aliases_ext;
 pub mod aliases_gl;
 pub mod arrays;
-pub mod arrays_ext;
+pub mod arrays_gl14;
 pub mod buffers;
 pub mod draw;
 pub mod enums;
