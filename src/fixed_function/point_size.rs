@@ -35,7 +35,7 @@ pub struct PointAtten {
 impl PointAtten {
     /// The constants for `p`, or `None` when the size is not attenuated.
     pub fn new(p: &PointState) -> Option<PointAtten> {
-        p.attenuated().then(|| PointAtten {
+        p.attenuated().then_some(PointAtten {
             size: p.size,
             // Mesa's `a >= b ? a : b` and `a <= b ? a : b` (a NaN parameter loses).
             lo: if p.min_size >= MIN_IMPL_POINT_SIZE {
