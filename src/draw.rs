@@ -10,6 +10,7 @@ use crate::context::state::{Cap, Face, Primitive};
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
 use crate::fixed_function::lighting::LightPlan;
+use crate::fixed_function::point_size::PointAtten;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
@@ -74,13 +75,14 @@ pub fn draw_lit(
     if feedback && !feedback_tex0 {
         stage.add_texture_unit(0, &crate::fixed_function::matrix::IDENTITY);
     }
+    stage.point_atten = PointAtten::new(&ctx.raster.point);
     stage.light = LightPlan::new(
         &ctx.light,
         &st.caps,
         st.current.color,
         &modelview,
         Some(mv_flags),
-        texgen_eye,
+        texgen_eye || stage.point_atten.is_some(),
         fma,
     );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
@@ -159,13 +161,14 @@ pub fn draw_lit(
     match mode {
         Primitive::Points => {
             let size = point_size(&ctx.raster);
+            let per_vertex = stage.point_atten.is_some();
             let mut target = rast.target(stats).target();
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
                     raster_point(
                         v,
-                        size,
+                        if per_vertex { v.psize } else { size },
                         nvary,
                         region,
                         &plan,
@@ -208,7 +211,7 @@ pub fn draw_lit(
                     ucp: stage.ucp,
                     ..LinePlan::new(&ctx.raster, &st.caps, nvary)
                 },
-                point_size: point_size(&ctx.raster),
+                point_size: stage.point_atten.is_none().then(|| point_size(&ctx.raster)),
                 raster: &ctx.raster,
                 caps: &st.caps,
                 cull,

@@ -891,4 +891,46 @@ fn advertised_extensions_resolve() {
         unresolved.is_empty(),
         "advertised but missing: {unresolved:#?}"
     );
+    // The extensions issue 8 requires (each must also pass the check above), among them
+    // the GL 1.4 vertex extras whose entry points the loop resolves: glPointParameter*ARB,
+    // glFogCoord*EXT with glFogCoordPointerEXT, glSecondaryColor*EXT with
+    // glSecondaryColorPointerEXT.
+    let required = [
+        "GL_ARB_multitexture",
+        "GL_ARB_vertex_buffer_object",
+        "GL_ARB_occlusion_query",
+        "GL_ARB_texture_cube_map",
+        "GL_ARB_texture_env_combine",
+        "GL_ARB_depth_texture",
+        "GL_ARB_shadow",
+        "GL_ARB_point_parameters",
+        "GL_ARB_window_pos",
+        "GL_EXT_blend_minmax",
+        "GL_EXT_blend_subtract",
+        "GL_EXT_blend_func_separate",
+        "GL_EXT_blend_color",
+        "GL_EXT_fog_coord",
+        "GL_EXT_secondary_color",
+        "GL_EXT_stencil_wrap",
+        "GL_EXT_texture_lod_bias",
+        "GL_EXT_texture_filter_anisotropic",
+        "GL_SGIS_generate_mipmap",
+        "GL_NV_blend_square",
+    ];
+    let advertised: BTreeSet<&str> = exts.split_whitespace().collect();
+    let missing: Vec<&str> = required
+        .into_iter()
+        .filter(|e| !advertised.contains(e))
+        .collect();
+    assert!(missing.is_empty(), "not advertised: {missing:?}");
+    for ext in [
+        "GL_ARB_point_parameters",
+        "GL_EXT_fog_coord",
+        "GL_EXT_secondary_color",
+    ] {
+        assert!(
+            !extension_functions(ext).is_empty(),
+            "{ext} declares no functions in Mesa's headers"
+        );
+    }
 }

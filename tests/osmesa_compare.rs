@@ -48,6 +48,29 @@ struct Tolerance {
 /// Scenes that may differ from OSMesa, with the reason.
 const TOLERANCES: &[(&str, Tolerance)] = &[
     (
+        "point_params",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.3,
+            reason: "not yet found: in the 'combined' image the points drawn with \
+                     glDrawArrays in the current colour (0.2, 0.9, 0.6), attenuated, after \
+                     lighting with GL_COLOR_MATERIAL was switched off, have green 229 where \
+                     llvmpipe writes 230 (0.9f*255 = 229.49999); every attenuated size, the \
+                     lit, fogged and GL_POINT-polygon points and the other four images are \
+                     exact. Measured 99.741% identical, 170 of 65536 pixels, max diff 1",
+        },
+    ),
+    (
+        "secondary_color_array",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.01,
+            reason: "not yet found: one pixel of the colour sum (primary + secondary, \
+                     llvmpipe-rules §13 rounding) differs by 1 in blue (233 vs 234). \
+                     Measured 99.998% identical, 1 of 65536 pixels, max diff 1",
+        },
+    ),
+    (
         "tex_cube",
         Tolerance {
             max_channel_diff: 130,
@@ -272,6 +295,9 @@ const SCENES: &[&str] = &[
     "tutorial_lit_cube",
     "tutorial_fog_terrain",
     "tutorial_textured_lit",
+    "point_params",
+    "secondary_color_array",
+    "fog_coord_array",
 ];
 
 macro_rules! scene_tests {
@@ -384,6 +410,9 @@ scene_tests!(
     tutorial_lit_cube,
     tutorial_fog_terrain,
     tutorial_textured_lit,
+    point_params,
+    secondary_color_array,
+    fog_coord_array,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -78,6 +78,8 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("fragment_ext.rs", Header::Glext),
     ("textures_ext.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
+    ("arrays_gl14.rs", Header::Glext),
+    ("points.rs", Header::Glext),
     ("pixels_ext.rs", Header::Glext),
     ("queries.rs", Header::Glext),
     ("arrays_ext.rs", Header::Glext),

@@ -155,6 +155,10 @@ pub struct ArrayState {
     pub edge_flag: ArrayPointer,
     /// GL_INDEX_ARRAY (kept for glGet; an RGBA context does not read it).
     pub index: ArrayPointer,
+    /// GL_SECONDARY_COLOR_ARRAY.
+    pub secondary_color: ArrayPointer,
+    /// GL_FOG_COORD_ARRAY.
+    pub fog_coord: ArrayPointer,
     /// GL_ARRAY_BUFFER binding.
     pub array_buffer: u32,
     /// GL_ELEMENT_ARRAY_BUFFER binding.
@@ -172,6 +176,8 @@ impl Default for ArrayState {
             texcoord: [ArrayPointer::new(4, DataType::Float); MAX_TEXTURE_UNITS],
             edge_flag: ArrayPointer::new(1, DataType::UByte),
             index: ArrayPointer::new(1, DataType::Float),
+            secondary_color: ArrayPointer::new(3, DataType::Float),
+            fog_coord: ArrayPointer::new(1, DataType::Float),
             array_buffer: 0,
             element_buffer: 0,
             buffers: HashMap::new(),
@@ -267,8 +273,24 @@ impl ArrayState {
             &mut self.normal,
             &mut self.edge_flag,
             &mut self.index,
+            &mut self.secondary_color,
+            &mut self.fog_coord,
         ]
         .into_iter()
         .chain(self.texcoord.iter_mut())
+    }
+
+    /// Every client array (for checks that look at all of them, e.g. mapped buffers).
+    pub fn all_arrays(&self) -> impl Iterator<Item = &ArrayPointer> {
+        [
+            &self.vertex,
+            &self.color,
+            &self.normal,
+            &self.edge_flag,
+            &self.secondary_color,
+            &self.fog_coord,
+        ]
+        .into_iter()
+        .chain(self.texcoord.iter())
     }
 }

@@ -63,6 +63,8 @@ struct ClientArrays {
     texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
     edge_flag: ArrayPointer,
     index: ArrayPointer,
+    secondary_color: ArrayPointer,
+    fog_coord: ArrayPointer,
     array_buffer: u32,
     element_buffer: u32,
     client_active_texture: usize,
@@ -420,6 +422,8 @@ impl Context {
                 texcoord: a.texcoord,
                 edge_flag: a.edge_flag,
                 index: a.index,
+                secondary_color: a.secondary_color,
+                fog_coord: a.fog_coord,
                 array_buffer: a.array_buffer,
                 element_buffer: a.element_buffer,
                 client_active_texture: self.state.client_active_texture,
@@ -445,6 +449,8 @@ impl Context {
             a.texcoord = s.texcoord;
             a.edge_flag = s.edge_flag;
             a.index = s.index;
+            a.secondary_color = s.secondary_color;
+            a.fog_coord = s.fog_coord;
             // A buffer deleted since the push is not revived.
             let live = |a: &super::arrays::ArrayState, n: u32| n == 0 || a.buffers.contains_key(&n);
             if live(a, s.array_buffer) {

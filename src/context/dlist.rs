@@ -457,6 +457,16 @@ impl Context {
                     out.push(VertexOp::EdgeFlag(e[0] != 0.0));
                 }
             }
+            if a.secondary_color.enabled {
+                if let Some(s) = fetch_attr(a, &a.secondary_color, i, true, fill) {
+                    out.push(VertexOp::SecondaryColor([s[0], s[1], s[2]]));
+                }
+            }
+            if a.fog_coord.enabled {
+                if let Some(f) = fetch_attr(a, &a.fog_coord, i, false, fill) {
+                    out.push(VertexOp::FogCoord(f[0]));
+                }
+            }
             if a.vertex.enabled {
                 if let Some(p) = fetch_attr(a, &a.vertex, i, false, fill) {
                     out.push(VertexOp::Vertex(p));
@@ -482,7 +492,7 @@ impl Context {
             Elements::List(v) => v.len(),
         };
         // At most one op per array and the vertex per element.
-        let per = 3 + MAX_TEXTURE_UNITS;
+        let per = 6 + MAX_TEXTURE_UNITS;
         let mut ops = Vec::new();
         if n.checked_mul(per)
             .and_then(|k| ops.try_reserve(k + 4).ok())

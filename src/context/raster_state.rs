@@ -42,11 +42,96 @@ impl Default for LineState {
 pub struct PointState {
     /// glPointSize as given.
     pub size: f32,
+    /// GL_POINT_SIZE_MIN (glPointParameter).
+    pub min_size: f32,
+    /// GL_POINT_SIZE_MAX.
+    pub max_size: f32,
+    /// GL_POINT_FADE_THRESHOLD_SIZE (stored and queried; llvmpipe does not fade).
+    pub fade_threshold: f32,
+    /// GL_POINT_DISTANCE_ATTENUATION: constant, linear and quadratic coefficients.
+    pub attenuation: [f32; 3],
 }
 
 impl Default for PointState {
     fn default() -> Self {
-        PointState { size: 1.0 }
+        PointState {
+            size: 1.0,
+            min_size: 0.0,
+            max_size: MAX_POINT_SIZE,
+            fade_threshold: 1.0,
+            attenuation: [1.0, 0.0, 0.0],
+        }
+    }
+}
+
+/// A glPointParameter pname.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointParam {
+    /// GL_POINT_SIZE_MIN.
+    SizeMin,
+    /// GL_POINT_SIZE_MAX.
+    SizeMax,
+    /// GL_POINT_FADE_THRESHOLD_SIZE.
+    FadeThreshold,
+    /// GL_POINT_DISTANCE_ATTENUATION (three values).
+    DistanceAttenuation,
+}
+
+impl PointParam {
+    /// Converts a pname (the ARB/EXT tokens share the values).
+    pub fn from_gl(e: GLenum) -> GlResult<Self> {
+        use crate::ffi::glext_enums::*;
+        Ok(match e {
+            GL_POINT_SIZE_MIN => Self::SizeMin,
+            GL_POINT_SIZE_MAX => Self::SizeMax,
+            GL_POINT_FADE_THRESHOLD_SIZE => Self::FadeThreshold,
+            GL_POINT_DISTANCE_ATTENUATION => Self::DistanceAttenuation,
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+
+    /// How many values the pname takes.
+    pub fn count(self) -> usize {
+        if self == Self::DistanceAttenuation {
+            3
+        } else {
+            1
+        }
+    }
+}
+
+impl PointState {
+    /// Whether the size is attenuated per vertex (Mesa's `Point._Attenuated`).
+    pub fn attenuated(&self) -> bool {
+        self.attenuation != [1.0, 0.0, 0.0]
+    }
+
+    /// glPointParameterfv: negative sizes and thresholds are GL_INVALID_VALUE (NaN passes,
+    /// as Mesa's `< 0` test lets it); the attenuation coefficients are not checked.
+    pub fn set(&mut self, p: PointParam, v: [f32; 3]) -> GlResult<()> {
+        if p != PointParam::DistanceAttenuation && v[0] < 0.0 {
+            return Err(GlError::InvalidValue);
+        }
+        match p {
+            PointParam::SizeMin => self.min_size = v[0],
+            PointParam::SizeMax => self.max_size = v[0],
+            PointParam::FadeThreshold => self.fade_threshold = v[0],
+            PointParam::DistanceAttenuation => self.attenuation = v,
+        }
+        Ok(())
+    }
+
+    /// The size llvmpipe rasterizes without attenuation: glPointSize clamped to
+    /// [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] by Mesa's `CLAMP` macro (the minimum is
+    /// tested first, so an inverted range still gives one of its ends).
+    pub fn clamped_size(&self) -> f32 {
+        if self.size < self.min_size {
+            self.min_size
+        } else if self.size > self.max_size {
+            self.max_size
+        } else {
+            self.size
+        }
     }
 }
 

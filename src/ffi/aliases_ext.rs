@@ -251,6 +251,12 @@ pub extern "C" fn glDrawRangeElementsEXT(
     super::draw::glDrawRangeElements(mode, start, end, count, type_, indices)
 }
 
+/// glFogCoordPointerEXT: the extension name of [`super::arrays_gl14::glFogCoordPointer`].
+#[no_mangle]
+pub extern "C" fn glFogCoordPointerEXT(type_: GLenum, stride: GLsizei, pointer: *const GLvoid) {
+    super::arrays_gl14::glFogCoordPointer(type_, stride, pointer)
+}
+
 /// glFogCoorddEXT: the extension name of [`super::lighting_ext::glFogCoordd`].
 #[no_mangle]
 pub extern "C" fn glFogCoorddEXT(coord: GLdouble) {
@@ -435,6 +441,38 @@ pub unsafe extern "C" fn glMultiDrawElementsEXT(
     unsafe { super::multidraw::glMultiDrawElements(mode, count, type_, indices, drawcount) }
 }
 
+/// glPointParameterfARB: the extension name of [`super::points::glPointParameterf`].
+#[no_mangle]
+pub extern "C" fn glPointParameterfARB(pname: GLenum, param: GLfloat) {
+    super::points::glPointParameterf(pname, param)
+}
+
+/// glPointParameterfEXT: the extension name of [`super::points::glPointParameterf`].
+#[no_mangle]
+pub extern "C" fn glPointParameterfEXT(pname: GLenum, param: GLfloat) {
+    super::points::glPointParameterf(pname, param)
+}
+
+/// glPointParameterfvARB: the extension name of [`super::points::glPointParameterfv`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glPointParameterfv`.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvARB(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller upholds `glPointParameterfv`'s contract; the arguments pass through unchanged.
+    unsafe { super::points::glPointParameterfv(pname, params) }
+}
+
+/// glPointParameterfvEXT: the extension name of [`super::points::glPointParameterfv`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glPointParameterfv`.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvEXT(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: the caller upholds `glPointParameterfv`'s contract; the arguments pass through unchanged.
+    unsafe { super::points::glPointParameterfv(pname, params) }
+}
+
 /// glPrioritizeTexturesEXT: the extension name of [`super::textures::glPrioritizeTextures`].
 ///
 /// # Safety
@@ -581,6 +619,17 @@ pub extern "C" fn glSecondaryColor3usEXT(red: GLushort, green: GLushort, blue: G
 pub unsafe extern "C" fn glSecondaryColor3usvEXT(v: *const GLushort) {
     // SAFETY: the caller upholds `glSecondaryColor3usv`'s contract; the arguments pass through unchanged.
     unsafe { super::lighting_ext::glSecondaryColor3usv(v) }
+}
+
+/// glSecondaryColorPointerEXT: the extension name of [`super::arrays_gl14::glSecondaryColorPointer`].
+#[no_mangle]
+pub extern "C" fn glSecondaryColorPointerEXT(
+    size: GLint,
+    type_: GLenum,
+    stride: GLsizei,
+    pointer: *const GLvoid,
+) {
+    super::arrays_gl14::glSecondaryColorPointer(size, type_, stride, pointer)
 }
 
 /// glTexSubImage3DEXT: the extension name of [`super::textures_3d::glTexSubImage3D`].

@@ -13,13 +13,15 @@ use libc::c_void;
 
 /// Which client array a call names.
 #[derive(Clone, Copy)]
-enum Which {
+pub(crate) enum Which {
     Vertex,
     Color,
     Normal,
     TexCoord,
     EdgeFlag,
     Index,
+    SecondaryColor,
+    FogCoord,
 }
 
 fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
@@ -30,11 +32,21 @@ fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
         Which::TexCoord => &mut c.arrays.texcoord[c.state.client_active_texture],
         Which::EdgeFlag => &mut c.arrays.edge_flag,
         Which::Index => &mut c.arrays.index,
+        Which::SecondaryColor => &mut c.arrays.secondary_color,
+        Which::FogCoord => &mut c.arrays.fog_coord,
     }
 }
 
-fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void) {
+/// gl*Pointer: validates as Mesa does (inside glBegin/glEnd its dispatch table answers
+/// GL_INVALID_OPERATION; then the stride, the type and the size, in that order) and
+/// stores the pointer. Mesa 22.3 still stores a negative stride after reporting it; we
+/// keep the old state, as GL requires.
+pub(crate) fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void) {
     with_ctx(|c| {
+        c.check_outside_begin()?;
+        if stride < 0 {
+            return Err(GlError::InvalidValue);
+        }
         let t = DataType::from_gl(ty)?;
         let type_ok = match w {
             Which::Vertex | Which::TexCoord => matches!(
@@ -49,7 +61,7 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
                     | DataType::Float
                     | DataType::Double
             ),
-            Which::Color => true,
+            Which::Color | Which::SecondaryColor => true,
             Which::EdgeFlag => t == DataType::UByte,
             Which::Index => matches!(
                 t,
@@ -59,21 +71,21 @@ fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c
                     | DataType::Float
                     | DataType::Double
             ),
+            Which::FogCoord => matches!(t, DataType::Float | DataType::Double),
         };
         if !type_ok {
             return Err(GlError::InvalidEnum);
         }
         let size_ok = match w {
             Which::Vertex => (2..=4).contains(&size),
-            Which::Color => (3..=4).contains(&size),
+            Which::Color | Which::SecondaryColor => (3..=4).contains(&size),
             Which::TexCoord => (1..=4).contains(&size),
             Which::Normal => size == 3,
-            Which::EdgeFlag | Which::Index => size == 1,
+            Which::EdgeFlag | Which::Index | Which::FogCoord => size == 1,
         };
-        if !size_ok || stride < 0 {
+        if !size_ok {
             return Err(GlError::InvalidValue);
         }
-        c.check_outside_begin()?;
         let buffer = c.arrays.array_buffer;
         let a = array_mut(c, w);
         a.size = size;
@@ -134,9 +146,10 @@ fn client_state(cap: GLenum, on: bool) {
             GL_NORMAL_ARRAY => Which::Normal,
             GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
             GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
+            // Kept for glGet; an RGBA context does not read the index array.
             GL_INDEX_ARRAY => Which::Index,
-            // Arrays the fixed-function pipeline does not read yet are accepted.
-            GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => return Ok(()),
+            GL_SECONDARY_COLOR_ARRAY => Which::SecondaryColor,
+            GL_FOG_COORD_ARRAY => Which::FogCoord,
             _ => return Err(GlError::InvalidEnum),
         };
         c.check_outside_begin()?;

@@ -22,10 +22,9 @@ fn check_unmapped(c: &Context, indexed: bool) -> GlResult<()> {
                 .and_then(|b| b.as_ref())
                 .is_some_and(|b| b.mapped.is_some())
     };
-    let mut arrays = [&a.vertex, &a.color, &a.normal]
-        .into_iter()
-        .chain(a.texcoord.iter());
-    if arrays.any(|p| p.enabled && mapped(p.buffer)) || (indexed && mapped(a.element_buffer)) {
+    if a.all_arrays().any(|p| p.enabled && mapped(p.buffer))
+        || (indexed && mapped(a.element_buffer))
+    {
         return Err(GlError::InvalidOperation);
     }
     Ok(())

@@ -85,12 +85,13 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
     "GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_EXT_texture3D ",
     "GL_EXT_texture_cube_map ",
-    "GL_ARB_texture_env_add GL_ARB_window_pos ",
+    "GL_ARB_texture_env_add GL_ARB_window_pos GL_ARB_point_parameters ",
     "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 ",
     "GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object ",
     "GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate ",
     "GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract ",
     "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal ",
+    "GL_EXT_fog_coord GL_EXT_point_parameters GL_EXT_secondary_color ",
     "GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture_env_add ",
     "GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotropic GL_EXT_texture_lod_bias ",
     "GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp ",
@@ -139,6 +140,8 @@ pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) 
             GL_SELECTION_BUFFER_POINTER => c.feedback.sel_buffer,
             GL_EDGE_FLAG_ARRAY_POINTER => a.edge_flag.ptr,
             GL_INDEX_ARRAY_POINTER => a.index.ptr,
+            super::glext_enums::GL_SECONDARY_COLOR_ARRAY_POINTER => a.secondary_color.ptr,
+            super::glext_enums::GL_FOG_COORD_ARRAY_POINTER => a.fog_coord.ptr,
             _ => return Err(GlError::InvalidEnum),
         };
         if !params.is_null() {

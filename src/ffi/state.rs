@@ -50,7 +50,8 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
             GL_TEXTURE_COORD_ARRAY => a.texcoord[c.state.client_active_texture].enabled,
             GL_EDGE_FLAG_ARRAY => a.edge_flag.enabled,
             GL_INDEX_ARRAY => a.index.enabled,
-            GL_FOG_COORD_ARRAY | GL_SECONDARY_COLOR_ARRAY => false,
+            GL_SECONDARY_COLOR_ARRAY => a.secondary_color.enabled,
+            GL_FOG_COORD_ARRAY => a.fog_coord.enabled,
             _ => c.state.caps.get(Cap::from_gl(cap)?),
         };
         Ok(on as GLboolean)

@@ -7,5 +7,6 @@ pub mod gallivm_math;
 pub mod lighting;
 pub mod matrix;
 pub mod mesa_matrix;
+pub mod point_size;
 pub mod texgen;
 pub mod transform;

@@ -3,10 +3,11 @@
 //! the fog coordinate, texture coordinates through the texture matrices, clip mask and
 //! window position.
 
-use super::fog::vertex_fog_coord;
+use super::fog::{eye_z_dp4, vertex_fog_coord};
 use super::lighting::{eye_normal, eye_position, light_vertex, LightPlan};
 use super::matrix::{Mat4, IDENTITY};
 use super::mesa_matrix::MatFlags;
+use super::point_size::PointAtten;
 use super::texgen::{generate, NormalXform, TexGenPlan};
 use crate::context::lighting_state::FogState;
 use crate::context::state::MAX_TEXTURE_UNITS;
@@ -46,6 +47,11 @@ pub struct VertexStage {
     pub ucp_enabled: u8,
     /// GL_COLOR_SUM without lighting: the secondary colour passes through.
     pub color_sum: bool,
+    /// Point-size attenuation, when GL_POINT_DISTANCE_ATTENUATION is not (1, 0, 0).
+    pub point_atten: Option<PointAtten>,
+    /// Whether texture coordinate generation computes the eye position (which the
+    /// attenuation then reuses).
+    pub texgen_eye: bool,
 }
 
 /// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1.
@@ -72,6 +78,8 @@ impl VertexStage {
             ucp: [[0.0; 4]; 8],
             ucp_enabled: 0,
             color_sum: false,
+            point_atten: None,
+            texgen_eye: false,
         }
     }
 
@@ -105,6 +113,7 @@ impl VertexStage {
         }
         self.normal_xform =
             normal.then(|| NormalXform::new(&self.modelview, mv_flags, normalize, rescale));
+        self.texgen_eye = eye;
         eye
     }
 
@@ -192,6 +201,7 @@ impl VertexStage {
         if let Some(f) = &self.fog {
             out.vary[VARY_FOG] = vertex_fog_coord(f, &self.modelview, v.pos, eye, v.fog_coord);
         }
+        let lit_eye = eye;
         let n = self.normal_xform.map(|x| x.apply(v.normal));
         for (k, (unit, m)) in self.tex_units[..self.n_tex].iter().enumerate() {
             let mut tc = v.texcoord[*unit];
@@ -204,6 +214,12 @@ impl VertexStage {
                 None => tc,
             };
             out.vary[VARY_TEX + 4 * k..VARY_TEX + 4 * k + 4].copy_from_slice(&tc);
+        }
+        if let Some(pa) = &self.point_atten {
+            // The program's eye position exists when lighting or eye-space texgen made it.
+            let full = if self.texgen_eye { eye } else { lit_eye };
+            let z = full.map_or_else(|| eye_z_dp4(&self.modelview, v.pos), |e| e[2]);
+            out.psize = pa.size(z);
         }
         out
     }

@@ -59,6 +59,7 @@ fn interp(t: f32, out: &ClipVertex, inn: &ClipVertex, vp: &Viewport, nvary: usiz
     for i in 0..nvary {
         d.vary[i] = lerp(t, out.vary[i], inn.vary[i]);
     }
+    d.psize = lerp(t, out.psize, inn.psize);
     d
 }
 

@@ -180,6 +180,15 @@ pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32
                 v.edge_flag = e[0] != 0.0;
             }
         }
+        if arrays.secondary_color.enabled {
+            let s = &arrays.secondary_color;
+            v.secondary = fetch_attr(arrays, s, index, true, [0.0, 0.0, 0.0, 1.0])
+                .unwrap_or([0.0, 0.0, 0.0, 1.0]);
+        }
+        if arrays.fog_coord.enabled {
+            v.fog_coord =
+                fetch_attr(arrays, &arrays.fog_coord, index, false, [0.0; 4]).map_or(0.0, |f| f[0]);
+        }
     }
     v
 }

@@ -35,6 +35,9 @@ pub struct ClipVertex {
     pub mask: ClipMask,
     /// Varyings: [0..4] primary colour, [4..8] secondary colour, then texture coordinates.
     pub vary: [f32; MAX_VARY],
+    /// The attenuated point size (GL_POINT_DISTANCE_ATTENUATION), when the vertex stage
+    /// writes one.
+    pub psize: f32,
 }
 
 impl Default for ClipVertex {
@@ -44,6 +47,7 @@ impl Default for ClipVertex {
             win: [0.0; 4],
             mask: 0,
             vary: [0.0; MAX_VARY],
+            psize: 1.0,
         }
     }
 }

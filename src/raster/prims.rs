@@ -18,9 +18,10 @@ use crate::geometry::{ClipVertex, Viewport};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
-/// The point size llvmpipe receives: glPointSize capped at the maximum.
+/// The point size llvmpipe rasterizes without attenuation: glPointSize clamped to
+/// GL_POINT_SIZE_MIN/MAX by the state tracker, then capped at llvmpipe's maximum.
 pub fn point_size(r: &RasterState) -> f32 {
-    r.point.size.min(MAX_POINT_SIZE)
+    r.point.clamped_size().min(MAX_POINT_SIZE)
 }
 
 /// Adds llvmpipe's setup-time polygon offset (`lp_do_offset_tri`) to a set-up triangle:
@@ -150,8 +151,9 @@ impl LinePlan {
 pub struct PolyPipeline<'a> {
     /// Lines (for GL_LINE polygons).
     pub lines: LinePlan,
-    /// Point size (for GL_POINT polygons).
-    pub point_size: f32,
+    /// Point size (for GL_POINT polygons); `None` when each vertex has its own
+    /// ([`ClipVertex::psize`], attenuated points).
+    pub point_size: Option<f32>,
     /// Polygon modes, offsets and enables.
     pub raster: &'a RasterState,
     /// glEnable bits.
@@ -299,7 +301,7 @@ impl PolyPipeline<'_> {
                     if edges & bit != 0 {
                         raster_point(
                             &p[k],
-                            self.point_size,
+                            self.point_size.unwrap_or(p[k].psize),
                             nvary,
                             self.region,
                             plan,
