@@ -61,17 +61,6 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
     (
-        "smooth_prims",
-        Tolerance {
-            max_channel_diff: 255,
-            max_percent_off: 3.0,
-            reason: "GL_LINE_SMOOTH / GL_POINT_SMOOTH: llvmpipe draws them through the draw \
-                     module's aaline/aapoint stages (a generated fragment shader puts the \
-                     coverage in alpha, llvmpipe-rules §15); softgl draws them aliased. \
-                     Measured 97.57% identical, max diff 247",
-        },
-    ),
-    (
         "polygon_modes",
         Tolerance {
             max_channel_diff: 255,
@@ -242,6 +231,8 @@ const SCENES: &[&str] = &[
     "polygon_stipple",
     "raster_state_get",
     "smooth_prims",
+    "smooth_lines",
+    "smooth_points",
     "texgen_linear",
     "texgen_sphere_map",
     "clip_planes",
@@ -355,6 +346,8 @@ scene_tests!(
     polygon_stipple,
     raster_state_get,
     smooth_prims,
+    smooth_lines,
+    smooth_points,
     texgen_linear,
     texgen_sphere_map,
     clip_planes,
