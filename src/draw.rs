@@ -19,8 +19,7 @@ use crate::geometry::fetch::VertexIn;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
 use crate::raster::batch::Rasterizer;
-use crate::raster::lines::raster_point;
-use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
+use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
 pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
@@ -166,9 +165,10 @@ pub fn draw_lit(
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    raster_point(
+                    draw_point(
                         v,
                         if per_vertex { v.psize } else { size },
+                        &st.caps,
                         nvary,
                         region,
                         &plan,

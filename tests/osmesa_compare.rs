@@ -84,17 +84,6 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
     (
-        "smooth_prims",
-        Tolerance {
-            max_channel_diff: 255,
-            max_percent_off: 3.0,
-            reason: "GL_LINE_SMOOTH / GL_POINT_SMOOTH: llvmpipe draws them through the draw \
-                     module's aaline/aapoint stages (a generated fragment shader puts the \
-                     coverage in alpha, llvmpipe-rules §15); softgl draws them aliased. \
-                     Measured 97.57% identical, max diff 247",
-        },
-    ),
-    (
         "polygon_modes",
         Tolerance {
             max_channel_diff: 255,
@@ -266,6 +255,9 @@ const SCENES: &[&str] = &[
     "polygon_stipple",
     "raster_state_get",
     "smooth_prims",
+    "smooth_lines",
+    "smooth_points",
+    "pixel_transfer_maps",
     "texgen_linear",
     "texgen_sphere_map",
     "clip_planes",
@@ -384,6 +376,9 @@ scene_tests!(
     polygon_stipple,
     raster_state_get,
     smooth_prims,
+    smooth_lines,
+    smooth_points,
+    pixel_transfer_maps,
     texgen_linear,
     texgen_sphere_map,
     clip_planes,

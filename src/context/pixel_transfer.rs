@@ -4,7 +4,9 @@
 //!
 //! Numbers: colour maps store values clamped to [0,1]; index maps store the values as
 //! given; a lookup of colour `c` in a map of `n` entries reads entry
-//! `round(clamp(c, 0, 1) · (n − 1))` (Mesa's `_mesa_map_rgba`, `IROUND`).
+//! `round_half_even(clamp(c, 0, 1) · (n − 1))` on the CPU paths (Mesa's `_mesa_map_rgba`:
+//! glReadPixels), while glDrawPixels/glCopyPixels look the maps up in a texture
+//! ([`PixelMaps::map_rgba_texture`]).
 
 use super::error::{GlError, GlResult};
 use super::get::{Kind, Value};
@@ -178,13 +180,28 @@ impl PixelMaps {
     pub fn map_color(&self, ch: usize, c: f32) -> f32 {
         let m = &self.maps[6 + ch];
         let n = (m.len() - 1) as f32;
-        let i = (c.clamp(0.0, 1.0) * n).round() as usize;
+        let i = (c.clamp(0.0, 1.0) * n).round_ties_even() as usize;
         m[i.min(m.len() - 1)]
     }
 
     /// Maps a colour through the four colour maps.
     pub fn map_rgba(&self, c: [f32; 4]) -> [f32; 4] {
         std::array::from_fn(|ch| self.map_color(ch, c[ch]))
+    }
+
+    /// Maps red and green as llvmpipe's glDrawPixels/glCopyPixels shader does
+    /// (`nir_lower_drawpixels.c`, `st_atom_pixeltransfer.c`): the maps live in a 256×256
+    /// RGBA8 texture whose entry j holds `map[j·n/256]` packed with gallium's
+    /// `float_to_ubyte`, sampled NEAREST with CLAMP_TO_EDGE at the colour itself (entry
+    /// `clamp(floor(c·256), 0, 255)`), and read back as `u·f32(1/255)`. (Blue and alpha are
+    /// not looked up in the maps by Mesa 22.3: see `pixels::draw`.)
+    pub fn map_rg_texture(&self, c: [f32; 4]) -> [f32; 2] {
+        std::array::from_fn(|ch| {
+            let m = &self.maps[6 + ch];
+            let j = (c[ch].clamp(-1.0, 2.0) * 256.0).floor().clamp(0.0, 255.0) as usize;
+            let u = crate::framebuffer::clear_float_to_ubyte(m[j * m.len() / 256]);
+            u as f32 * (1.0f32 / 255.0)
+        })
     }
 
     /// Looks stencil index `s` up in S_TO_S (masked by the table size).

@@ -255,6 +255,12 @@ fn get_map(map: GLenum, mut put: impl FnMut(usize, f32, bool)) {
     })
 }
 
+/// Mesa's `FLOAT_TO_UINT`: `(GLuint)(v * 4294967295.0)` in double, which on x86-64 keeps
+/// the low 32 bits of the 64-bit truncation (so -1.0 reads back as 1).
+fn float_to_uint(v: f32) -> u32 {
+    (v as f64 * 4294967295.0) as i64 as u32
+}
+
 /// glGetPixelMapfv.
 ///
 /// # Safety
@@ -275,11 +281,13 @@ pub unsafe extern "C" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
 /// `values` must be null or writable for the map's size.
 #[no_mangle]
 pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
-    get_map(map, |k, v, index| {
-        let u = if index {
-            v.to_bits() // Mesa returns the stored floats' bits for the index maps
+    get_map(map, |k, v, _| {
+        // Mesa copies S_TO_S's stored float bits; every other map goes through
+        // FLOAT_TO_UINT, I_TO_I included.
+        let u = if map == GL_PIXEL_MAP_S_TO_S {
+            v.to_bits()
         } else {
-            (v as f64 * u32::MAX as f64) as u32
+            float_to_uint(v)
         };
         if !values.is_null() {
             // SAFETY: the caller provides room for the whole map.
@@ -296,9 +304,9 @@ pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
 pub unsafe extern "C" fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
     get_map(map, |k, v, index| {
         let u = if index {
-            v as u16
+            v.clamp(0.0, 65535.0) as u16
         } else {
-            (v * 65535.0).round() as u16
+            (v * 65535.0).round_ties_even() as u16
         };
         if !values.is_null() {
             // SAFETY: the caller provides room for the whole map.

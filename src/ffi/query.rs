@@ -7,9 +7,10 @@ use super::types::*;
 use super::with_ctx;
 use crate::context::error::{GlError, GlResult};
 use crate::context::get::get;
+use crate::context::pixel_transfer::stencil_transfer;
 use crate::context::state::PixelStore;
 use crate::context::Context;
-use crate::framebuffer::DepthFormat;
+use crate::framebuffer::{float_to_ubyte, DepthFormat};
 use libc::c_void;
 
 /// Writes the value of `pname` through `out` using `conv`.
@@ -240,6 +241,12 @@ fn read_pixels(
         ReadKind::Color(_, n) => n,
         _ => 1,
     };
+    // Pixel transfer sends Mesa down its CPU path (`readpix.c`, `read_rgba_pixels`):
+    // unorm8 → float, scale and bias, the colour maps, then float → the packed type.
+    let tr = c.pixel_modes.transfer;
+    let maps = &c.pixel_maps;
+    let transfer = tr.scale_bias() || tr.map_color;
+    let stencil_ops = tr.index_shift != 0 || tr.index_offset != 0 || tr.map_stencil;
     let bpp = comps * tsize;
     let (start, stride) = packed_layout(&c.state.pack, w as usize, bpp, tsize);
     let put = |p: *mut u8, v: f64, norm: bool| {
@@ -299,6 +306,28 @@ fn read_pixels(
             // SAFETY: pointer arithmetic within the packed image the program provided.
             let p = unsafe { out.add(start + row * stride + col * bpp) };
             match kind {
+                ReadKind::Color(map, n) if transfer => {
+                    let f = |u: u8| u as f32 * (1.0f32 / 255.0);
+                    let mut rgba = fb.color[idx].map(f);
+                    rgba = tr.apply_scale_bias(rgba);
+                    if tr.map_color {
+                        rgba = maps.map_rgba(rgba);
+                    }
+                    for (k, &ch) in map.iter().take(n).enumerate() {
+                        let v = if ch == usize::MAX {
+                            (rgba[0] + rgba[1] + rgba[2]).clamp(0.0, 1.0)
+                        } else {
+                            rgba[ch]
+                        };
+                        // SAFETY: k * tsize < bpp, inside the packed image.
+                        let q = unsafe { p.add(k * tsize) };
+                        match ty {
+                            // SAFETY: as above.
+                            GL_UNSIGNED_BYTE => unsafe { *q = float_to_ubyte(v) },
+                            _ => put(q, v as f64, ty != GL_FLOAT),
+                        }
+                    }
+                }
                 ReadKind::Color(map, n) => {
                     let px = fb.color[idx];
                     for (k, &ch) in map.iter().take(n).enumerate() {
@@ -333,6 +362,11 @@ fn read_pixels(
                             put(p, (z as f64 / max) as f32 as f64, true)
                         }
                     }
+                }
+                ReadKind::Stencil if stencil_ops => {
+                    // Mesa's `_mesa_apply_stencil_transfer_ops` on the 8-bit values.
+                    let s = stencil_transfer(&tr, maps, fb.stencil[idx] as i64) as u8;
+                    put(p, s as f64, false)
                 }
                 ReadKind::Stencil => put(p, fb.stencil[idx] as f64, false),
             }

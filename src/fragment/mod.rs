@@ -43,6 +43,8 @@ pub struct FragPlan {
     pub fog: Option<crate::fixed_function::fog::FogPlan>,
     /// An occlusion query is active: count the samples that pass (general path only).
     pub count_samples: bool,
+    /// Antialiased lines or points: the coverage multiplied into alpha (general path).
+    pub smooth: Option<crate::raster::smooth::Smooth>,
 }
 
 /// The depth test of a draw.
@@ -192,6 +194,7 @@ impl FragPlan {
             separate_specular: false,
             fog: None,
             count_samples: false,
+            smooth: None,
         }
     }
 
@@ -215,5 +218,6 @@ impl FragPlan {
             || self.separate_specular
             || self.fog.is_some()
             || self.count_samples
+            || self.smooth.is_some()
     }
 }

@@ -255,6 +255,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     fy: f32,
     units: &[UnitPlan<'_>],
     texels: Option<&TexLanes>,
+    cov: Option<&[f32; LANES]>,
 ) -> Lanes {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
     let frag = frag_colors::<M, FLAT, PERSP>(t, fx, fy, &oow);
@@ -287,6 +288,10 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         if let Some(fog) = &plan.fog {
             let factor = fog.factor(extra(VARY_FOG, i));
             prev = fog.apply(prev, factor);
+        }
+        // Antialiasing stages multiply the shader's final alpha by their coverage.
+        if let Some(cv) = cov {
+            prev[3] *= cv[i];
         }
         for ch in 0..4 {
             c[ch][i] = unorm8(prev[ch]);
@@ -379,13 +384,19 @@ pub fn shade_chunk<
     }
     let mut c: Lanes = [[0u8; LANES]; 4];
     if FULL {
+        let cov = plan
+            .smooth
+            .map(|s| crate::raster::smooth::coverage::<M, PERSP>(t, s, &fx, fy, &mut live));
+        let cov = cov.as_ref();
         c = match source {
             ChunkColors::Ready(c) => *c,
             ChunkColors::Textured(tx) => {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx))
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx), cov)
             }
-            ChunkColors::Shaded if plan.separate_specular || plan.fog.is_some() => {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None)
+            ChunkColors::Shaded
+                if plan.separate_specular || plan.fog.is_some() || cov.is_some() =>
+            {
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None, cov)
             }
             ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
         };

@@ -8,7 +8,9 @@
 //!   *current* texture coordinates (glTexCoord, not the raster position's, without the
 //!   texture matrix), and fog uses a fog coordinate of 0.
 //! - Pixel transfer (scale, bias, colour maps) is applied to colour texels in that shader;
-//!   depth scale and bias when the depth image is stored.
+//!   depth scale and bias when the depth image is stored. Stencil images take no
+//!   transfer operation (the image is stored in a stencil texture as is); glReadPixels
+//!   applies GL_INDEX_SHIFT/OFFSET and GL_MAP_STENCIL.
 //! - Depth images write the raster colour (glCopyPixels: the current colour) with the image
 //!   depth, through the usual tests; stencil images replace the stencil value through the
 //!   stencil write mask with every other test off and no colour written.
@@ -147,11 +149,23 @@ fn quad(ctx: &Context, x: i32, y: i32, w: usize, h: usize, flip_t: bool) -> Quad
     }
 }
 
-/// Colour texels through the pixel-transfer operations and the fragment shader.
-fn shade_colors(ctx: &Context, texels: &[[f32; 4]], transfer: bool) -> Vec<[u8; 4]> {
+/// Colour texels (`w` wide, in the temporary texture's row order) through the
+/// pixel-transfer operations and the fragment shader.
+///
+/// GL_MAP_COLOR as Mesa 22.3 runs it (`nir_lower_drawpixels.c`): red and green are looked
+/// up in the pixel-map texture, but the second lookup, meant for blue and alpha, carries no
+/// texture source and so samples texture 0, the image itself: blue and alpha become the
+/// red and green of the image texel at (b, a), NEAREST with CLAMP_TO_EDGE.
+fn shade_colors(ctx: &Context, texels: &[[f32; 4]], w: usize, transfer: bool) -> Vec<[u8; 4]> {
     let sh = Shader::new(ctx, cpu_has_fma());
     let t = &ctx.pixel_modes.transfer;
     let (sb, map) = (transfer && t.scale_bias(), transfer && t.map_color);
+    let h = texels.len() / w.max(1);
+    let nearest = |c: f32, n: usize| {
+        (c.clamp(-1.0, 2.0) * n as f32)
+            .floor()
+            .clamp(0.0, (n - 1) as f32) as usize
+    };
     texels
         .iter()
         .map(|&c| {
@@ -160,7 +174,9 @@ fn shade_colors(ctx: &Context, texels: &[[f32; 4]], transfer: bool) -> Vec<[u8; 
                 c = t.apply_scale_bias(c);
             }
             if map {
-                c = ctx.pixel_maps.map_rgba(c);
+                let [r, g] = ctx.pixel_maps.map_rg_texture(c);
+                let texel = texels[nearest(c[3], h) * w + nearest(c[2], w)];
+                c = [r, g, texel[0], texel[1]];
             }
             sh.shade(c)
         })
@@ -200,7 +216,7 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
     let tr = ctx.pixel_modes.transfer;
     match &img.pixels {
         Pixels::Color(texels) => {
-            let c = shade_colors(ctx, texels, true);
+            let c = shade_colors(ctx, texels, img.w, true);
             run(ctx, &q, Source::Color(&c));
         }
         Pixels::Index(ix) => {
@@ -215,7 +231,7 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
                     })
                 })
                 .collect();
-            let c = shade_colors(ctx, &texels, false);
+            let c = shade_colors(ctx, &texels, img.w, false);
             run(ctx, &q, Source::Color(&c));
         }
         Pixels::Depth(z) => {
@@ -224,11 +240,10 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
             run(ctx, &q, Source::Depth(&z, c));
         }
         Pixels::Stencil(s) => {
-            let maps = &ctx.pixel_maps;
-            let s: Vec<u8> = s
-                .iter()
-                .map(|&v| crate::context::pixel_transfer::stencil_transfer(&tr, maps, v) as u8)
-                .collect();
+            // Measured: llvmpipe (stencil export) stores the image into a stencil texture
+            // as is (`st_cb_drawpixels.c`, `make_texture`, with the transfer state cleared),
+            // so neither GL_INDEX_SHIFT/OFFSET nor GL_MAP_STENCIL applies.
+            let s: Vec<u8> = s.iter().map(|&v| v as u8).collect();
             run(ctx, &q, Source::Stencil(&s));
         }
     }
@@ -396,7 +411,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
                         .map_or([0.0; 4], |s| fb.color[s].map(|v| v as f32 * (1.0 / 255.0)))
                 })
                 .collect();
-            let c = shade_colors(ctx, &texels, true);
+            let c = shade_colors(ctx, &texels, w, true);
             run(ctx, &q, Source::Color(&c));
         }
         CopyKind::Depth => {

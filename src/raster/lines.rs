@@ -420,16 +420,23 @@ pub struct LineStipple {
     pub factor: u32,
     /// The pattern position (a float, as Mesa keeps it).
     pub counter: f32,
+    /// `line_rectangular` (GL_LINE_SMOOTH): the length is Euclidean, not max(|dx|, |dy|).
+    pub rectangular: bool,
 }
 
 impl LineStipple {
     /// Calls `emit(t0, t1)` with the parameter range of every "on" piece of the segment
     /// from `p0` to `p1` (window x, y), then advances the counter by the segment's length
-    /// (max of |dx| and |dy|).
+    /// (max of |dx| and |dy|, or Euclidean for smooth lines) rounded up.
     pub fn split(&mut self, p0: [f32; 2], p1: [f32; 2], mut emit: impl FnMut(f32, f32)) {
         let dx = (p0[0] - p1[0]).abs();
         let dy = (p0[1] - p1[1]).abs();
-        let length = dx.max(dy);
+        let length = if self.rectangular {
+            let (ex, ey) = (p1[0] - p0[0], p1[1] - p0[1]);
+            (ex * ex + ey * ey).sqrt()
+        } else {
+            dx.max(dy)
+        };
         let n = if length.is_finite() {
             length.ceil() as i64
         } else {
@@ -453,7 +460,8 @@ impl LineStipple {
         if state && start < length {
             emit(start / length, 1.0);
         }
-        self.counter += length;
+        // Mesa's counter is an integer advanced by the whole pixels iterated.
+        self.counter += n as f32;
     }
 }
 
@@ -561,6 +569,7 @@ mod tests {
             pattern: 0x00ff,
             factor: 1,
             counter: 0.0,
+            rectangular: false,
         };
         let mut pieces = vec![];
         s.split([0.0, 0.0], [32.0, 0.0], |a, b| pieces.push((a, b)));

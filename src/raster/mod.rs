@@ -18,6 +18,7 @@ pub mod batch;
 pub mod lines;
 pub mod prim_tex;
 pub mod prims;
+pub mod smooth;
 pub mod stipple;
 mod textured;
 
@@ -101,6 +102,7 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         && !plan.separate_specular
         && plan.fog.is_none()
         && !plan.count_samples
+        && plan.smooth.is_none()
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             fb.format,
@@ -267,7 +269,7 @@ fn rows_full<M: Madd, const FULL: bool>(
     stats: &mut Stats,
 ) {
     // Flat colours need no divide, but the fog coordinate is still perspective-correct.
-    let persp = t.persp && (!plan.flat || plan.fog.is_some());
+    let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
     match (plan.depth.is_some(), plan.flat, persp) {
         (false, false, false) => rows::<M, false, false, false, FULL>(t, b, plan, fb, stats),
         (false, false, true) => rows::<M, false, false, true, FULL>(t, b, plan, fb, stats),

@@ -24,6 +24,27 @@ pub fn point_size(r: &RasterState) -> f32 {
     r.point.clamped_size().min(MAX_POINT_SIZE)
 }
 
+/// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage under
+/// GL_POINT_SMOOTH, else as llvmpipe's legacy square.
+#[allow(clippy::too_many_arguments)]
+pub fn draw_point(
+    v: &ClipVertex,
+    size: f32,
+    caps: &Caps,
+    nvary: usize,
+    region: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    if caps.get(Cap::PointSmooth) {
+        super::smooth::point(v, size, nvary, region, plan, units, fb, stats);
+    } else {
+        raster_point(v, size, nvary, region, plan, units, fb, stats);
+    }
+}
+
 /// Adds llvmpipe's setup-time polygon offset (`lp_do_offset_tri`) to a set-up triangle:
 /// computed on the vertices in setup order (clockwise triangles swap v0 and v1) and, as an
 /// approximation of llvmpipe's per-fragment addition, folded into the z plane's origin.
@@ -52,6 +73,8 @@ pub struct LinePlan {
     pub nvary: usize,
     /// The user clip planes in clip space (GL_CLIP_PLANEi).
     pub ucp: UserPlanes,
+    /// GL_LINE_SMOOTH: segments go through the aaline stage ([`super::smooth`]).
+    pub smooth: bool,
 }
 
 impl LinePlan {
@@ -63,9 +86,11 @@ impl LinePlan {
                 pattern: r.line.stipple_pattern,
                 factor: r.line.stipple_repeat,
                 counter: 0.0,
+                rectangular: caps.get(Cap::LineSmooth),
             }),
             nvary,
             ucp: [[0.0; 4]; 8],
+            smooth: caps.get(Cap::LineSmooth),
         }
     }
 
@@ -122,10 +147,17 @@ impl LinePlan {
         stats: &mut Stats,
     ) {
         let n = self.nvary;
+        // Under GL_FLAT the draw module's flat-shade stage gives both ends the provoking colour.
+        let (width, smooth, flat) = (self.width, self.smooth, plan.flat.then_some(flat_vary));
+        let seg = |a: &ClipVertex, b: &ClipVertex, fb: &mut Target<'_>, stats: &mut Stats| {
+            if smooth {
+                super::smooth::line(a, b, flat, width, n, region, plan, units, fb, stats);
+            } else {
+                raster_line(a, b, flat_vary, width, n, region, plan, units, fb, stats);
+            }
+        };
         match stipple {
-            None => raster_line(
-                p, q, flat_vary, self.width, n, region, plan, units, fb, stats,
-            ),
+            None => seg(p, q, fb, stats),
             Some(s) => {
                 s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
                     let a = if t0 > 0.0 {
@@ -138,9 +170,7 @@ impl LinePlan {
                     } else {
                         *q
                     };
-                    raster_line(
-                        &a, &b, flat_vary, self.width, n, region, plan, units, fb, stats,
-                    );
+                    seg(&a, &b, fb, stats);
                 });
             }
         }
@@ -299,9 +329,10 @@ impl PolyPipeline<'_> {
                 let mut target = rast.target(stats).target();
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
-                        raster_point(
+                        draw_point(
                             &p[k],
                             self.point_size.unwrap_or(p[k].psize),
+                            self.caps,
                             nvary,
                             self.region,
                             plan,

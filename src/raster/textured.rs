@@ -25,7 +25,7 @@ use crate::texture::UnitPlan;
 #[inline(always)]
 pub(super) fn fast_env(plan: &FragPlan, units: &[UnitPlan<'_>]) -> Option<FastEnv> {
     match units {
-        [u] if !plan.separate_specular && plan.fog.is_none() => u.fast,
+        [u] if !plan.separate_specular && plan.fog.is_none() && plan.smooth.is_none() => u.fast,
         _ => None,
     }
 }
