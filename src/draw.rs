@@ -234,7 +234,6 @@ pub fn draw_lit(
                 stats.tris_clip_rejected += 1;
             } else if or != 0 {
                 stats.tris_clipped += 1;
-                let mut out: Vec<[ClipVertex; 3]> = Vec::new();
                 clip_triangle(
                     [va, vb, vc],
                     or,
@@ -243,11 +242,8 @@ pub fn draw_lit(
                     nvary,
                     plan.flat,
                     back,
-                    |p, q, r| out.push([*p, *q, *r]),
+                    |p, q, r| one(p, q, r, &mut rast, stats),
                 );
-                for [p, q, r] in &out {
-                    one(p, q, r, &mut rast, stats);
-                }
             } else {
                 one(va, vb, vc, &mut rast, stats);
             }

@@ -381,7 +381,7 @@ impl Framebuffer {
 #[inline(always)]
 pub fn float_to_ubyte(c: f32) -> u8 {
     let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
-    (c * 255.0f32).round_ties_even() as u8
+    crate::geometry::round_even(c * 255.0f32) as u8
 }
 
 /// Float to unorm8 as gallium's fast clear packs it (`util` float_to_ubyte): scale by

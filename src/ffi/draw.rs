@@ -9,7 +9,7 @@ use crate::context::dlist::Elements;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::Primitive;
 use crate::context::Context;
-use crate::geometry::fetch::{fetch_vertex, VertexIn};
+use crate::geometry::fetch::{VertexFetcher, VertexIn};
 use std::collections::HashMap;
 
 /// GL_INVALID_OPERATION when an array or index buffer the draw reads is mapped.
@@ -52,12 +52,13 @@ pub(crate) fn draw_arrays(
         .try_reserve_exact(count)
         .map_err(|_| GlError::OutOfMemory)?;
     let first = first as u32;
+    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
     for i in 0..count as u32 {
         let Some(idx) = first.checked_add(i) else {
             break;
         };
         // SAFETY: enabled client arrays are the program's promise; buffers are bounds-checked.
-        verts.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, idx) });
+        verts.push(unsafe { fetch.fetch(idx) });
     }
     crate::draw::draw(c, mode, &verts, None);
     Ok(())
@@ -125,13 +126,14 @@ pub(crate) fn draw_elements(
     };
     // Transform each distinct index once: a dense range when it is compact, a map otherwise.
     let range = (hi - lo) as usize + 1;
+    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
     let (verts, local): (Vec<VertexIn>, Vec<u32>) = if range <= idx.len() * 4 + 1024 {
         let mut v = Vec::new();
         v.try_reserve_exact(range)
             .map_err(|_| GlError::OutOfMemory)?;
         for i in lo..=hi {
             // SAFETY: as in draw_arrays.
-            v.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, i) });
+            v.push(unsafe { fetch.fetch(i) });
         }
         (v, idx.iter().map(|&i| i - lo).collect())
     } else {
@@ -141,7 +143,7 @@ pub(crate) fn draw_elements(
         for &i in &idx {
             let k = *map.entry(i).or_insert_with(|| {
                 // SAFETY: as in draw_arrays.
-                v.push(unsafe { fetch_vertex(&c.arrays, &c.state.current, i) });
+                v.push(unsafe { fetch.fetch(i) });
                 (v.len() - 1) as u32
             });
             local.push(k);

@@ -122,10 +122,31 @@ pub unsafe fn fetch_attr(
     normalized: bool,
     fill: [f32; 4],
 ) -> Option<[f32; 4]> {
+    let data = if arr.buffer != 0 {
+        Some(arrays.buffer_data(arr.buffer)?)
+    } else {
+        None
+    };
+    // SAFETY: forwarded from the caller.
+    unsafe { fetch_from(data, arr, index, normalized, fill) }
+}
+
+/// [`fetch_attr`] with the array's buffer object already looked up: `data` is the
+/// buffer's store when `arr.buffer != 0` (`None` for client memory).
+///
+/// # Safety
+/// As [`fetch_attr`].
+#[inline]
+unsafe fn fetch_from(
+    data: Option<&[u8]>,
+    arr: &ArrayPointer,
+    index: u32,
+    normalized: bool,
+    fill: [f32; 4],
+) -> Option<[f32; 4]> {
     let esize = arr.size as usize * arr.ty.size();
     let off = (index as usize).checked_mul(arr.byte_stride())?;
-    let base: *const u8 = if arr.buffer != 0 {
-        let data = arrays.buffer_data(arr.buffer)?;
+    let base: *const u8 = if let Some(data) = data {
         let start = arr.ptr.checked_add(off)?;
         if start.checked_add(esize)? > data.len() {
             return None;
@@ -148,47 +169,125 @@ pub unsafe fn fetch_attr(
     Some(out)
 }
 
+/// One enabled array of a draw with its buffer object looked up once.
+#[derive(Clone, Copy)]
+struct Source<'a> {
+    arr: &'a ArrayPointer,
+    /// The buffer's store (`None` for client memory).
+    data: Option<&'a [u8]>,
+}
+
+impl<'a> Source<'a> {
+    /// The array `arr` when enabled and readable; `Err(())` when its buffer object is gone
+    /// (every element then reads as missing).
+    fn new(arrays: &'a ArrayState, arr: &'a ArrayPointer) -> Option<Result<Self, ()>> {
+        if !arr.enabled {
+            return None;
+        }
+        if arr.buffer == 0 {
+            return Some(Ok(Source { arr, data: None }));
+        }
+        Some(
+            arrays
+                .buffer_data(arr.buffer)
+                .map(|d| Source { arr, data: Some(d) })
+                .ok_or(()),
+        )
+    }
+
+    /// Element `index`, as [`fetch_attr`].
+    ///
+    /// # Safety
+    /// As [`fetch_attr`].
+    #[inline]
+    unsafe fn get(
+        src: &Result<Self, ()>,
+        index: u32,
+        normalized: bool,
+        fill: [f32; 4],
+    ) -> Option<[f32; 4]> {
+        let s = src.as_ref().ok()?;
+        // SAFETY: forwarded from the caller.
+        unsafe { fetch_from(s.data, s.arr, index, normalized, fill) }
+    }
+}
+
+/// The enabled arrays of a draw, resolved once (buffer objects looked up per draw, not
+/// per vertex and attribute).
+pub struct VertexFetcher<'a> {
+    cur: &'a CurrentAttribs,
+    vertex: Option<Result<Source<'a>, ()>>,
+    color: Option<Result<Source<'a>, ()>>,
+    normal: Option<Result<Source<'a>, ()>>,
+    texcoord: [Option<Result<Source<'a>, ()>>; MAX_TEXTURE_UNITS],
+    edge_flag: Option<Result<Source<'a>, ()>>,
+    secondary: Option<Result<Source<'a>, ()>>,
+    fog_coord: Option<Result<Source<'a>, ()>>,
+}
+
+impl<'a> VertexFetcher<'a> {
+    /// Resolves the enabled arrays of `arrays`; disabled ones read from `cur`.
+    pub fn new(arrays: &'a ArrayState, cur: &'a CurrentAttribs) -> Self {
+        VertexFetcher {
+            cur,
+            vertex: Source::new(arrays, &arrays.vertex),
+            color: Source::new(arrays, &arrays.color),
+            normal: Source::new(arrays, &arrays.normal),
+            texcoord: std::array::from_fn(|u| Source::new(arrays, &arrays.texcoord[u])),
+            edge_flag: Source::new(arrays, &arrays.edge_flag),
+            secondary: Source::new(arrays, &arrays.secondary_color),
+            fog_coord: Source::new(arrays, &arrays.fog_coord),
+        }
+    }
+
+    /// Fetches vertex `index` from the enabled arrays; disabled arrays give the current
+    /// values.
+    ///
+    /// # Safety
+    /// As [`fetch_attr`]: enabled client-memory arrays must be valid for `index`.
+    #[inline]
+    pub unsafe fn fetch(&self, index: u32) -> VertexIn {
+        const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+        let mut v = VertexIn::with_current(ORIGIN, self.cur);
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            if let Some(s) = &self.vertex {
+                v.pos = Source::get(s, index, false, ORIGIN).unwrap_or(ORIGIN);
+            }
+            if let Some(s) = &self.color {
+                v.color = Source::get(s, index, true, ORIGIN).unwrap_or(ORIGIN);
+            }
+            if let Some(s) = &self.normal {
+                if let Some(n) = Source::get(s, index, true, [0.0; 4]) {
+                    v.normal = [n[0], n[1], n[2]];
+                }
+            }
+            for (u, s) in self.texcoord.iter().enumerate() {
+                if let Some(s) = s {
+                    v.texcoord[u] = Source::get(s, index, false, ORIGIN).unwrap_or(ORIGIN);
+                }
+            }
+            if let Some(s) = &self.edge_flag {
+                if let Some(e) = Source::get(s, index, false, [1.0; 4]) {
+                    v.edge_flag = e[0] != 0.0;
+                }
+            }
+            if let Some(s) = &self.secondary {
+                v.secondary = Source::get(s, index, true, ORIGIN).unwrap_or(ORIGIN);
+            }
+            if let Some(s) = &self.fog_coord {
+                v.fog_coord = Source::get(s, index, false, [0.0; 4]).map_or(0.0, |f| f[0]);
+            }
+        }
+        v
+    }
+}
+
 /// Fetches vertex `index` from the enabled arrays; disabled arrays give the current values.
 ///
 /// # Safety
 /// As [`fetch_attr`]: enabled client-memory arrays must be valid for `index`.
 pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32) -> VertexIn {
-    let mut v = VertexIn::with_current([0.0, 0.0, 0.0, 1.0], cur);
     // SAFETY: forwarded from the caller.
-    unsafe {
-        if arrays.vertex.enabled {
-            v.pos = fetch_attr(arrays, &arrays.vertex, index, false, [0.0, 0.0, 0.0, 1.0])
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]);
-        }
-        if arrays.color.enabled {
-            v.color = fetch_attr(arrays, &arrays.color, index, true, [0.0, 0.0, 0.0, 1.0])
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]);
-        }
-        if arrays.normal.enabled {
-            if let Some(n) = fetch_attr(arrays, &arrays.normal, index, true, [0.0; 4]) {
-                v.normal = [n[0], n[1], n[2]];
-            }
-        }
-        for (u, arr) in arrays.texcoord.iter().enumerate() {
-            if arr.enabled {
-                v.texcoord[u] = fetch_attr(arrays, arr, index, false, [0.0, 0.0, 0.0, 1.0])
-                    .unwrap_or([0.0, 0.0, 0.0, 1.0]);
-            }
-        }
-        if arrays.edge_flag.enabled {
-            if let Some(e) = fetch_attr(arrays, &arrays.edge_flag, index, false, [1.0; 4]) {
-                v.edge_flag = e[0] != 0.0;
-            }
-        }
-        if arrays.secondary_color.enabled {
-            let s = &arrays.secondary_color;
-            v.secondary = fetch_attr(arrays, s, index, true, [0.0, 0.0, 0.0, 1.0])
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]);
-        }
-        if arrays.fog_coord.enabled {
-            v.fog_coord =
-                fetch_attr(arrays, &arrays.fog_coord, index, false, [0.0; 4]).map_or(0.0, |f| f[0]);
-        }
-    }
-    v
+    unsafe { VertexFetcher::new(arrays, cur).fetch(index) }
 }

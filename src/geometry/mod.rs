@@ -115,6 +115,21 @@ pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
     }
 }
 
+/// `v` rounded to the nearest integer, ties to even (`f32::round_ties_even`), without a
+/// call into libm on CPUs without SSE4.1: adding and subtracting 2^23 rounds in the
+/// default rounding mode; values of 2^23 and more (and NaN, infinities) are returned as
+/// they are, already integral.
+#[inline(always)]
+pub fn round_even(v: f32) -> f32 {
+    const BIG: f32 = 8_388_608.0;
+    if v.abs() < BIG {
+        let c = BIG.copysign(v);
+        (v + c) - c
+    } else {
+        v
+    }
+}
+
 /// Whether this CPU fuses multiply-adds (then llvmpipe does too).
 pub fn cpu_has_fma() -> bool {
     crate::cpu::isa().fused()

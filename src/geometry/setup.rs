@@ -81,7 +81,7 @@ pub struct SetupTriangle {
 /// `round_half_even(256 * f32(v - 0.5))` as llvmpipe's SSE path snaps.
 #[inline]
 pub fn snap(v: f32) -> i64 {
-    ((v - 0.5) * 256.0).round_ties_even() as i64
+    super::round_even((v - 0.5) * 256.0) as i64
 }
 
 /// The largest snapped coordinate we accept; beyond it a triangle is dropped (clipping keeps
@@ -257,7 +257,9 @@ fn setup_rest<'v>(
             plane(p0.vary[i], p1.vary[i], p2.vary[i])
         };
     }
-    fill.flat = p2.vary;
+    // Only the varyings this draw writes (the rest stay as the draw's first triangle left
+    // them: zero, like the vertices' unused varyings).
+    fill.flat[..nvary].copy_from_slice(&p2.vary[..nvary]);
     fill.flat_u8 = [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(p2.vary[i]));
     SetupResult::Draw
 }
