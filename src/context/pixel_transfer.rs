@@ -118,6 +118,12 @@ impl PixelTransfer {
         std::array::from_fn(|i| c[i] * self.scale[i] + self.bias[i])
     }
 
+    /// GL_DEPTH_SCALE and GL_DEPTH_BIAS, or `None` when they are the identity.
+    pub fn depth_scale_bias(&self) -> Option<(f32, f32)> {
+        (self.depth_scale != 1.0 || self.depth_bias != 0.0)
+            .then_some((self.depth_scale, self.depth_bias))
+    }
+
     /// Depth scale and bias, clamped to [0,1].
     #[inline]
     pub fn apply_depth(&self, z: f32) -> f32 {

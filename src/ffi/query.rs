@@ -11,6 +11,7 @@ use crate::context::pixel_transfer::stencil_transfer;
 use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::framebuffer::{float_to_ubyte, DepthFormat};
+use crate::texture::shadow;
 use libc::c_void;
 
 /// Writes the value of `pname` through `out` using `conv`.
@@ -247,6 +248,7 @@ fn read_pixels(
     let maps = &c.pixel_maps;
     let transfer = tr.scale_bias() || tr.map_color;
     let stencil_ops = tr.index_shift != 0 || tr.index_offset != 0 || tr.map_stencil;
+    let depth_scale_bias = tr.depth_scale_bias();
     let bpp = comps * tsize;
     let (start, stride) = packed_layout(&c.state.pack, w as usize, bpp, tsize);
     let put = |p: *mut u8, v: f64, norm: bool| {
@@ -350,16 +352,21 @@ fn read_pixels(
                 }
                 ReadKind::Depth => {
                     let z = fb.depth[idx];
-                    match (ty, fb.depth_format) {
-                        (GL_UNSIGNED_INT, DepthFormat::Z24) => {
+                    match (ty, fb.depth_format, depth_scale_bias) {
+                        // Mesa's `read_uint_depth_pixels`: the stored bits replicated
+                        (GL_UNSIGNED_INT, DepthFormat::Z24, None) => {
                             put(p, ((z << 8) | (z >> 16)) as f64, false)
                         }
-                        (GL_UNSIGNED_INT, _) => put(p, ((z << 16) | z) as f64, false),
-                        (GL_UNSIGNED_SHORT, DepthFormat::Z16) => put(p, z as f64, false),
-                        (GL_UNSIGNED_SHORT, _) => put(p, (z >> 8) as f64, false),
-                        _ => {
-                            let max = fb.depth_format.max_value() as f64;
-                            put(p, (z as f64 / max) as f32 as f64, true)
+                        (GL_UNSIGNED_INT, _, None) => put(p, ((z << 16) | z) as f64, false),
+                        // otherwise `read_depth_pixels`: float, scale and bias, pack
+                        (_, format, sb) => {
+                            let mut d = shadow::readback(z, format.bits() as u8);
+                            if let Some((scale, bias)) = sb {
+                                d = (d * scale + bias).clamp(0.0, 1.0);
+                            }
+                            let (v, n) = shadow::pack_depth(d, ty);
+                            // SAFETY: n == tsize bytes of this pixel, inside the image.
+                            unsafe { std::ptr::copy_nonoverlapping(v.as_ptr(), p, n) };
                         }
                     }
                 }

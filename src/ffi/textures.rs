@@ -194,7 +194,7 @@ unsafe fn tex_image(
         }
     }
     // SAFETY: GL's contract: `data` (when not null) holds the described image.
-    let texels = unsafe { unpack_any(&ps, &cf, base, storage, (tw, th), data) };
+    let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (tw, th), data) };
     let obj = object_mut(c, t, false);
     obj.face_levels_mut(face)[level] = Some(Level {
         width: tw,
@@ -226,17 +226,23 @@ unsafe fn tex_sub_image(
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
     let ps = unpack;
+    let (base, storage, width, height) = object(c, t, false)
+        .face_levels(face)
+        .get(level)
+        .and_then(|l| l.as_ref())
+        .map(|i| (i.base, i.storage, i.width, i.height))
+        .ok_or(GlError::InvalidOperation)?;
+    let yoff = if dims == 1 { 0 } else { yoff };
+    depth_match(base, &cf)?;
+    if xoff < 0 || yoff < 0 || xoff as usize + w > width || yoff as usize + h > height {
+        return Err(GlError::InvalidValue);
+    }
+    // SAFETY: GL's contract: `data` holds the described image.
+    let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (w, h), data) };
     let obj = object_mut(c, t, false);
     let img = obj.face_levels_mut(face)[level]
         .as_mut()
         .ok_or(GlError::InvalidOperation)?;
-    let yoff = if dims == 1 { 0 } else { yoff };
-    depth_match(img.base, &cf)?;
-    if xoff < 0 || yoff < 0 || xoff as usize + w > img.width || yoff as usize + h > img.height {
-        return Err(GlError::InvalidValue);
-    }
-    // SAFETY: GL's contract: `data` holds the described image.
-    let texels = unsafe { unpack_any(&ps, &cf, img.base, img.storage, (w, h), data) };
     for y in 0..h {
         let dst = (yoff as usize + y) * img.width + xoff as usize;
         img.texels[dst..dst + w].copy_from_slice(&texels[y * w..(y + 1) * w]);
@@ -337,43 +343,57 @@ fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: GLenum) -> 
     }
 }
 
-/// Unpacks a colour or depth client image.
+/// Unpacks a colour or depth client image with `c`'s pixel transfer (colour scale, bias
+/// and maps, or depth scale and bias).
 ///
 /// # Safety
 /// `data` (when not null) must hold the described image.
-unsafe fn unpack_any(
+pub(crate) unsafe fn unpack_any(
+    c: &Context,
     ps: &PixelStore,
     cf: &ClientFormat,
-    base: BaseFormat,
-    storage: Storage,
+    (base, storage): (BaseFormat, Storage),
     (w, h): (usize, usize),
     data: *const c_void,
 ) -> Vec<[u8; 4]> {
     let data = data as *const u8;
+    let tr = &c.pixel_modes.transfer;
     // SAFETY: forwarded caller contract.
     unsafe {
         if base == BaseFormat::Depth {
-            shadow::unpack(ps, cf, storage.depth_bits(), w, h, data)
+            let depth = tr.depth_scale_bias();
+            shadow::unpack(ps, cf, storage.depth_bits(), (w, h), data, depth)
         } else {
-            upload::unpack(ps, cf, base, storage, w, h, data)
+            let color = upload::ColorTransfer::active(tr, &c.pixel_maps);
+            upload::unpack_transfer(ps, cf, (base, storage), w, h, data, color)
         }
     }
 }
 
 /// A framebuffer rectangle (GL window coordinates) as texels of `base`: colours, or for a
 /// depth image the depth buffer (GL_INVALID_OPERATION without one).
-fn read_texels(
+///
+/// Pixel transfer applies as in Mesa's CPU copy: colours go through RGBA float
+/// (`u·f32(1/255)`) with scale, bias and the maps; depth through [`shadow::convert_scaled`].
+pub(crate) fn read_texels(
     c: &Context,
     (x, y, w, h): (GLint, GLint, usize, usize),
     base: BaseFormat,
     storage: &Storage,
 ) -> GlResult<Vec<[u8; 4]>> {
+    let tr = &c.pixel_modes.transfer;
     if base != BaseFormat::Depth {
-        return Ok(read_fb(c, x, y, w, h)
-            .into_iter()
-            .map(|p| upload::to_texel(base, upload::quantise_rgba(p, storage)))
-            .collect());
+        let pixels = read_fb(c, x, y, w, h).into_iter();
+        return Ok(match upload::ColorTransfer::active(tr, &c.pixel_maps) {
+            Some(ct) => pixels
+                .map(|p| ct.store(p.map(|u| u as f32 * (1.0f32 / 255.0)), base, storage))
+                .collect(),
+            None => pixels
+                .map(|p| upload::to_texel(base, upload::quantise_rgba(p, storage)))
+                .collect(),
+        });
     }
+    let scale_bias = tr.depth_scale_bias();
     let fb = c.fb.as_ref().ok_or(GlError::InvalidOperation)?;
     let fb_bits = fb.depth_format.bits();
     if fb_bits <= 0 {
@@ -392,7 +412,10 @@ fn read_texels(
                 continue;
             }
             let z = fb.depth[fy * fb.width + gx as usize];
-            let z = shadow::convert(z, fb_bits as u8, storage.depth_bits());
+            let z = match scale_bias {
+                Some(sb) => shadow::convert_scaled(z, fb_bits as u8, storage.depth_bits(), sb),
+                None => shadow::convert(z, fb_bits as u8, storage.depth_bits()),
+            };
             out[row * w + col] = shadow::texel(z);
         }
     }

@@ -4,13 +4,16 @@
 //! GL 1.5 §3.8.1. Borders are stripped as for 1D/2D images.
 #![allow(non_snake_case)]
 
-use super::textures::{check_level, compiling, image_target, maybe_generate, object_mut, read_fb};
+use super::textures::{
+    check_level, compiling, image_target, maybe_generate, object, object_mut, read_texels,
+    unpack_any,
+};
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
 use crate::context::state::PixelStore;
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::upload::{self, ClientFormat, Layout};
-use crate::texture::{BaseFormat, Level, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
+use crate::texture::{BaseFormat, Level, Storage, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
 use libc::c_void;
 
 /// The unpack state of slice `z` of a 3D client image of `h` rows per image.
@@ -32,17 +35,18 @@ fn slice_store(ps: &PixelStore, h: usize, z: usize) -> PixelStore {
 /// `data` (when not null) must hold the described image.
 #[allow(clippy::too_many_arguments)]
 unsafe fn unpack_3d(
+    c: &Context,
     ps: &PixelStore,
     cf: &ClientFormat,
-    img: (&Level, usize, usize, usize),
-    data: *const u8,
+    (base, storage): (BaseFormat, Storage),
+    (w, h, d): (usize, usize, usize),
+    data: *const c_void,
 ) -> Vec<[u8; 4]> {
-    let (lv, w, h, d) = img;
     let mut out = Vec::with_capacity(w * h * d);
     for z in 0..d {
         let s = slice_store(ps, h, z);
         // SAFETY: forwarded caller contract (slice z lies inside the image).
-        out.extend(unsafe { upload::unpack(&s, cf, lv.base, lv.storage, w, h, data) });
+        out.extend(unsafe { unpack_any(c, &s, cf, (base, storage), (w, h), data) });
     }
     out
 }
@@ -165,7 +169,7 @@ unsafe fn tex_image_3d(
     }
     let mut img = header(tw, th);
     // SAFETY: forwarded caller contract.
-    img.texels = unsafe { unpack_3d(&ps, &cf, (&img, tw, th, td), data as *const u8) };
+    img.texels = unsafe { unpack_3d(c, &ps, &cf, (base, storage), (tw, th, td), data) };
     let obj = object_mut(c, t, false);
     obj.levels[level] = Some(img);
     obj.depths[level] = td;
@@ -198,17 +202,22 @@ unsafe fn tex_sub_image_3d(
     let level = check_level(level)?;
     let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
     c.check_outside_begin()?;
-    let obj = object_mut(c, Target::Tex3D, false);
+    let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
     let img = obj.levels[level]
-        .as_mut()
+        .as_ref()
         .ok_or(GlError::InvalidOperation)?;
     let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
     if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], d, depth)) {
         return Err(GlError::InvalidValue);
     }
+    let format = (img.base, img.storage);
     // SAFETY: forwarded caller contract.
-    let texels = unsafe { unpack_3d(&unpack, &cf, (img, w, h, d), data as *const u8) };
+    let texels = unsafe { unpack_3d(c, &unpack, &cf, format, (w, h, d), data) };
+    let obj = object_mut(c, Target::Tex3D, false);
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
     let [x0, y0, z0] = off.map(|o| o as usize);
     for z in 0..d {
         for y in 0..h {
@@ -237,25 +246,24 @@ fn copy_tex_sub_image_3d(
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
-    let src = read_fb(c, x, y, w, h);
-    let obj = object_mut(c, Target::Tex3D, false);
+    let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
     let img = obj.levels[level]
-        .as_mut()
+        .as_ref()
         .ok_or(GlError::InvalidOperation)?;
     let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
     if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], 1, depth)) {
         return Err(GlError::InvalidValue);
     }
+    let src = read_texels(c, (x, y, w, h), img.base, &img.storage)?;
+    let obj = object_mut(c, Target::Tex3D, false);
+    let img = obj.levels[level]
+        .as_mut()
+        .ok_or(GlError::InvalidOperation)?;
     let [x0, y0, z0] = off.map(|o| o as usize);
     for row in 0..h {
-        for col in 0..w {
-            let dst = ((z0 * img.height) + y0 + row) * img.width + x0 + col;
-            img.texels[dst] = upload::to_texel(
-                img.base,
-                upload::quantise_rgba(src[row * w + col], &img.storage),
-            );
-        }
+        let dst = ((z0 * img.height) + y0 + row) * img.width + x0;
+        img.texels[dst..dst + w].copy_from_slice(&src[row * w..(row + 1) * w]);
     }
     maybe_generate(obj, level);
     Ok(())

@@ -170,6 +170,25 @@ pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
     }
 }
 
+/// A depth-buffer value of `bits` bits copied into a texture of `to` bits under
+/// GL_DEPTH_SCALE/GL_DEPTH_BIAS: Mesa's CPU copy (`fallback_copy_texsubimage`) widens it
+/// to 32 bits by bit replication, computes `trunc(clamp(z32·scale + bias·(2³²−1)))` in
+/// f64 and keeps the top `to` bits.
+pub fn convert_scaled(z: u32, bits: u8, to: u8, (scale, bias): (f32, f32)) -> u32 {
+    let z32 = match bits {
+        16 => (z << 16) | z,
+        24 => (z << 8) | (z >> 16),
+        _ => z,
+    };
+    let max = u32::MAX as f64;
+    let d = (z32 as f64 * scale as f64 + bias as f64 * max).clamp(0.0, max) as u32;
+    if to >= 32 {
+        d
+    } else {
+        d >> (32 - to)
+    }
+}
+
 /// The float Mesa reads a stored value back as (`_mesa_unpack_float_z_row`).
 pub fn readback(z: u32, bits: u8) -> f32 {
     match bits {
@@ -309,8 +328,8 @@ pub fn sample_quad(
     })
 }
 
-/// Reads client element `i` of type `ty` at `b` as a depth in [0, 1] (or, for the exact
-/// paths, the raw integer).
+/// Reads client element `i` of type `ty` at `b` as a depth (signed types may be negative:
+/// the store clamps) or, for the exact paths, the raw integer.
 fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
     use crate::ffi::enums::*;
     let mut raw = [0u8; 4];
@@ -325,14 +344,14 @@ fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
     }
     match ty {
         GL_UNSIGNED_BYTE => (raw[0] as f32 * (1.0 / 255.0), None),
-        GL_BYTE => ((raw[0] as i8 as f32 * (1.0 / 127.0)).max(0.0), None),
+        GL_BYTE => (raw[0] as i8 as f32 * (1.0 / 127.0), None),
         GL_UNSIGNED_SHORT => {
             let v = u16::from_ne_bytes([raw[0], raw[1]]);
             (v as f32 * (1.0 / 65535.0), Some(v as u64))
         }
         GL_SHORT => {
             let v = i16::from_ne_bytes([raw[0], raw[1]]);
-            ((v as f32 * (1.0 / 32767.0)).max(0.0), None)
+            (v as f32 * (1.0 / 32767.0), None)
         }
         GL_UNSIGNED_INT => {
             let v = u32::from_ne_bytes(raw);
@@ -343,13 +362,16 @@ fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
         }
         GL_INT => {
             let v = i32::from_ne_bytes(raw);
-            ((v as f64 * (1.0 / 2147483647.0)).max(0.0) as f32, None)
+            ((v as f64 * (1.0 / 2147483647.0)) as f32, None)
         }
         _ => (f32::from_ne_bytes(raw), None),
     }
 }
 
-/// Unpacks a `w x h` client depth image into depth texels of `bits` bits.
+/// Unpacks a `w x h` client depth image into depth texels of `bits` bits, with
+/// GL_DEPTH_SCALE and GL_DEPTH_BIAS (`scale_bias`, when not the identity) applied as
+/// `_mesa_unpack_depth_span` does: `clamp(d·scale + bias, 0, 1)` in f32, and no exact
+/// integer path.
 ///
 /// # Safety
 /// `data` (when not null) must hold the image `ps`/`cf` describe.
@@ -357,9 +379,9 @@ pub unsafe fn unpack(
     ps: &crate::context::state::PixelStore,
     cf: &super::upload::ClientFormat,
     bits: u8,
-    w: usize,
-    h: usize,
+    (w, h): (usize, usize),
     data: *const u8,
+    scale_bias: Option<(f32, f32)>,
 ) -> Vec<[u8; 4]> {
     let lay = super::upload::Layout::new(ps, w, cf);
     if data.is_null() || w == 0 || h == 0 {
@@ -374,6 +396,10 @@ pub unsafe fn unpack(
             let (d, exact) = client_value(&bytes[o..o + lay.bpp], cf.gl_type, ps.swap_bytes);
             // `_mesa_unpack_depth_span`'s exact paths: ushort into 16 bits, uint into 32
             // (and shifted into 24) bits
+            let (d, exact) = match scale_bias {
+                Some((scale, bias)) => (d * scale + bias, None),
+                None => (d, exact),
+            };
             let z = match (exact, bits) {
                 (Some(v), 16) if v < 1 << 16 => v as u32,
                 (Some(v), 32) if v >= 1 << 40 => v as u32,
@@ -386,6 +412,25 @@ pub unsafe fn unpack(
     out
 }
 
+/// One depth value in [0, 1] packed as client type `ty` (native byte order; the bytes
+/// used), with `_mesa_pack_depth_span`'s conversions: truncating `FLOAT_TO_UBYTE`,
+/// `FLOAT_TO_BYTE` (`(⌊255d⌋ − 1)/2`), `FLOAT_TO_SHORT`, `FLOAT_TO_UINT` and
+/// `FLOAT_TO_INT` (f64), and round-half-even for GL_UNSIGNED_SHORT.
+pub fn pack_depth(d: f32, ty: u32) -> ([u8; 4], usize) {
+    use crate::ffi::enums::*;
+    let four = |b: [u8; 4]| (b, 4);
+    let two = |b: [u8; 2]| ([b[0], b[1], 0, 0], 2);
+    match ty {
+        GL_UNSIGNED_BYTE => ([(d * 255.0) as i32 as u8, 0, 0, 0], 1),
+        GL_BYTE => ([(((255.0 * d) as i32 - 1) / 2) as i8 as u8, 0, 0, 0], 1),
+        GL_UNSIGNED_SHORT => two(((d * 65535.0).round_ties_even() as u16).to_ne_bytes()),
+        GL_SHORT => two(((((65535.0 * d) as i32 - 1) / 2) as i16).to_ne_bytes()),
+        GL_UNSIGNED_INT => four(((d as f64 * 4294967295.0) as u32).to_ne_bytes()),
+        GL_INT => four(((2147483647.0 * d as f64) as i32).to_ne_bytes()),
+        _ => four(d.to_ne_bytes()),
+    }
+}
+
 /// Packs a depth image for glGetTexImage(GL_DEPTH_COMPONENT, type) (`_mesa_pack_depth_span`).
 ///
 /// # Safety
@@ -396,7 +441,6 @@ pub unsafe fn pack(
     img: &Level,
     dst: *mut u8,
 ) {
-    use crate::ffi::enums::*;
     let (w, h) = (img.width, img.height);
     let lay = super::upload::Layout::new(ps, w, cf);
     if dst.is_null() || w == 0 || h == 0 {
@@ -409,19 +453,11 @@ pub unsafe fn pack(
         for x in 0..w {
             let d = readback(texel_z(img.texel(x, y)), bits);
             let o = lay.start + y * lay.stride + x * lay.bpp;
-            let mut v: Vec<u8> = match cf.gl_type {
-                GL_UNSIGNED_BYTE => vec![(d * 255.0) as u8],
-                GL_BYTE => vec![(d * 127.0) as i8 as u8],
-                GL_UNSIGNED_SHORT => ((d * 65535.0) as u16).to_ne_bytes().to_vec(),
-                GL_SHORT => ((d * 32767.0) as i16).to_ne_bytes().to_vec(),
-                GL_UNSIGNED_INT => ((d as f64 * 4294967295.0) as u32).to_ne_bytes().to_vec(),
-                GL_INT => ((d as f64 * 2147483647.0) as i32).to_ne_bytes().to_vec(),
-                _ => d.to_ne_bytes().to_vec(),
-            };
+            let (mut v, n) = pack_depth(d, cf.gl_type);
             if ps.swap_bytes {
-                v.reverse();
+                v[..n].reverse();
             }
-            let n = v.len().min(lay.bpp);
+            let n = n.min(lay.bpp);
             bytes[o..o + n].copy_from_slice(&v[..n]);
         }
     }

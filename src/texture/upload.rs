@@ -15,6 +15,7 @@
 //! base-format swizzle (see the module root).
 
 use super::{BaseFormat, Level, Storage};
+use crate::context::pixel_transfer::{PixelMaps, PixelTransfer};
 use crate::context::state::PixelStore;
 use crate::context::{GlError, GlResult};
 use crate::ffi::enums::*;
@@ -127,21 +128,24 @@ pub fn quantise_u8(x: u8, bits: u32) -> u8 {
     unorm_to_u8(((x as u32 * max + 127) / 255) as u64, bits)
 }
 
-/// A float component stored with `bits` bits (`_mesa_float_to_unorm`), as 8 bits.
+/// A float component stored with `bits` bits, as 8 bits: 8-bit channels with
+/// `_mesa_float_to_unorm` (round half to even), the packed formats of fewer bits with
+/// u_format's `util_iround(clamp(x)·max)`, which Mesa 22.3 computes as `(int)(f + 0.5f)`
+/// (measured: 0.3 into GL_RGBA4 stores 5, not 4).
 #[inline]
 fn float_to_bits_u8(x: f32, bits: u32) -> u8 {
     if bits >= 8 {
         return float_to_u8(x);
     }
     let max = ((1u32 << bits) - 1) as f32;
-    let q = if x > 1.0 {
-        max
+    let x = if x > 1.0 {
+        1.0
     } else if x > 0.0 {
-        (x * max).round_ties_even()
+        x
     } else {
         0.0
     };
-    unorm_to_u8(q as u64, bits)
+    unorm_to_u8((x * max + 0.5) as u64, bits)
 }
 
 /// Which RGBA channel each client component is (`4` = luminance, i.e. R=G=B).
@@ -301,21 +305,25 @@ fn read_uint(bytes: &[u8], swap: bool) -> u64 {
     }
 }
 
-/// Decodes one client pixel into RGBA8 (missing colour 0, alpha 255), each component kept
-/// with `bits[channel]` bits (see [`Storage::bits`]).
-fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool, bits: [u32; 4]) -> [u8; 4] {
-    let mut rgba = [0u8, 0, 0, 255];
-    let chan_bits = |comp: usize| bits[if comp == 4 { 0 } else { comp }];
-    let mut put = |comp: usize, v: u8| {
-        let v = quantise_u8(v, chan_bits(comp));
-        if comp == 4 {
-            rgba[0] = v;
-            rgba[1] = v;
-            rgba[2] = v;
-        } else {
-            rgba[comp] = v;
-        }
-    };
+/// One client component as read from memory.
+#[derive(Clone, Copy)]
+enum Component {
+    /// An unsigned normalized integer of this many bits.
+    Unorm(u64, u32),
+    /// A signed normalized integer of this many bits.
+    Snorm(i64, u32),
+    /// A float.
+    Float(f32),
+}
+
+/// Calls `put(channel, component)` for each component of one client pixel (channel `4`
+/// = luminance).
+fn for_each_component(
+    cf: &ClientFormat,
+    px: &[u8],
+    swap: bool,
+    mut put: impl FnMut(usize, Component),
+) {
     match cf.ty {
         Ty::Plain {
             size,
@@ -325,31 +333,118 @@ fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool, bits: [u32; 4]) -> [u8
             for (i, &comp) in cf.comps.iter().enumerate() {
                 let raw = read_uint(&px[i * size..(i + 1) * size], swap && size > 1);
                 let bits = 8 * size as u32;
-                let v = if float {
-                    // straight to the stored precision (then `put` keeps it)
-                    float_to_bits_u8(f32::from_bits(raw as u32), chan_bits(comp))
-                } else if signed {
-                    let sv = ((raw << (64 - bits)) as i64) >> (64 - bits);
-                    if sv <= 0 {
-                        0
+                put(
+                    comp,
+                    if float {
+                        Component::Float(f32::from_bits(raw as u32))
+                    } else if signed {
+                        Component::Snorm(((raw << (64 - bits)) as i64) >> (64 - bits), bits)
                     } else {
-                        unorm_to_u8(sv as u64, bits - 1)
-                    }
-                } else {
-                    unorm_to_u8(raw, bits)
-                };
-                put(comp, v);
+                        Component::Unorm(raw, bits)
+                    },
+                );
             }
         }
         Ty::Packed { size, fields } => {
             let raw = read_uint(&px[..size], swap && size > 1);
             for (&comp, &(shift, bits)) in cf.comps.iter().zip(fields) {
-                let x = (raw >> shift) & ((1 << bits) - 1);
-                put(comp, unorm_to_u8(x, bits));
+                put(
+                    comp,
+                    Component::Unorm((raw >> shift) & ((1 << bits) - 1), bits),
+                );
             }
         }
     }
+}
+
+/// Writes `v` into channel `comp` of `rgba` (`4` = luminance: R, G and B).
+fn put_channel<T: Copy>(rgba: &mut [T; 4], comp: usize, v: T) {
+    if comp == 4 {
+        rgba[..3].fill(v);
+    } else {
+        rgba[comp] = v;
+    }
+}
+
+/// Decodes one client pixel into RGBA8 (missing colour 0, alpha 255), each component kept
+/// with `bits[channel]` bits (see [`Storage::bits`]).
+fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool, bits: [u32; 4]) -> [u8; 4] {
+    let mut rgba = [0u8, 0, 0, 255];
+    for_each_component(cf, px, swap, |comp, c| {
+        let stored = bits[if comp == 4 { 0 } else { comp }];
+        let v = match c {
+            // straight to the stored precision (then the quantisation keeps it)
+            Component::Float(f) => float_to_bits_u8(f, stored),
+            Component::Snorm(sv, bits) if sv > 0 => unorm_to_u8(sv as u64, bits - 1),
+            Component::Snorm(..) => 0,
+            Component::Unorm(x, bits) => unorm_to_u8(x, bits),
+        };
+        put_channel(&mut rgba, comp, quantise_u8(v, stored));
+    });
     rgba
+}
+
+/// Decodes one client pixel into RGBA float as Mesa's `_mesa_format_convert` does
+/// before pixel transfer: unorm `x·f32(1/max)`, snorm `x·f32(1/max)` (at least −1), float
+/// as is; missing colour 0, missing alpha 1, luminance into R, G and B.
+fn decode_pixel_f32(cf: &ClientFormat, px: &[u8], swap: bool) -> [f32; 4] {
+    let mut rgba = [0.0, 0.0, 0.0, 1.0];
+    for_each_component(cf, px, swap, |comp, c| {
+        let v = match c {
+            Component::Float(f) => f,
+            Component::Snorm(sv, bits) => {
+                let max = (1i64 << (bits - 1)) - 1;
+                if sv <= -max {
+                    -1.0
+                } else {
+                    sv as f32 * (1.0 / max as f32)
+                }
+            }
+            Component::Unorm(x, bits) => x as f32 * (1.0 / ((1u64 << bits) - 1) as f32),
+        };
+        put_channel(&mut rgba, comp, v);
+    });
+    rgba
+}
+
+/// Pixel transfer of colours stored into a texture (GL 1.5 §3.8.1: glTexImage,
+/// glTexSubImage and glCopyTexImage apply it; Mesa's texstore goes through RGBA float:
+/// scale and bias, then the colour maps, then the stored format's `_mesa_float_to_unorm`).
+#[derive(Clone, Copy, Debug)]
+pub struct ColorTransfer<'a> {
+    /// Scale and bias (GL_RED_SCALE …) and GL_MAP_COLOR.
+    pub transfer: &'a PixelTransfer,
+    /// The GL_PIXEL_MAP_*_TO_* colour maps.
+    pub maps: &'a PixelMaps,
+}
+
+impl ColorTransfer<'_> {
+    /// The transfer of `tr` and `maps`, or `None` when it changes nothing
+    /// (Mesa's `_ImageTransferState` is 0).
+    pub fn active<'a>(tr: &'a PixelTransfer, maps: &'a PixelMaps) -> Option<ColorTransfer<'a>> {
+        (tr.scale_bias() || tr.map_color).then_some(ColorTransfer { transfer: tr, maps })
+    }
+
+    /// A colour after scale, bias and the maps (not clamped: the store clamps).
+    pub fn apply(&self, c: [f32; 4]) -> [f32; 4] {
+        let c = self.transfer.apply_scale_bias(c);
+        if self.transfer.map_color {
+            self.maps.map_rgba(c)
+        } else {
+            c
+        }
+    }
+
+    /// A float colour after the transfer, stored with `storage`'s bits as the texel of
+    /// `base`.
+    pub fn store(&self, c: [f32; 4], base: BaseFormat, storage: &Storage) -> [u8; 4] {
+        let c = self.apply(c);
+        let bits = storage.bits();
+        to_texel(
+            base,
+            std::array::from_fn(|i| float_to_bits_u8(c[i], bits[i])),
+        )
+    }
 }
 
 /// Quantises an RGBA8 value to the storage precision (glCopyTexImage, mipmaps).
@@ -406,6 +501,23 @@ pub unsafe fn unpack(
     h: usize,
     data: *const u8,
 ) -> Vec<[u8; 4]> {
+    // SAFETY: forwarded caller contract.
+    unsafe { unpack_transfer(ps, cf, (base, storage), w, h, data, None) }
+}
+
+/// [`unpack`] with the pixel transfer `tr` applied to every colour.
+///
+/// # Safety
+/// `data` must be readable for `Layout::span(w, h)` bytes (GL's contract with the program).
+pub unsafe fn unpack_transfer(
+    ps: &PixelStore,
+    cf: &ClientFormat,
+    (base, storage): (BaseFormat, Storage),
+    w: usize,
+    h: usize,
+    data: *const u8,
+    tr: Option<ColorTransfer<'_>>,
+) -> Vec<[u8; 4]> {
     let lay = Layout::new(ps, w, cf);
     let mut out = Vec::with_capacity(w * h);
     if data.is_null() || w == 0 || h == 0 {
@@ -418,11 +530,11 @@ pub unsafe fn unpack(
     for y in 0..h {
         let row = lay.start + y * lay.stride;
         for x in 0..w {
-            let o = row + x * lay.bpp;
-            out.push(to_texel(
-                base,
-                decode_pixel(cf, &bytes[o..o + lay.bpp], ps.swap_bytes, bits),
-            ));
+            let px = &bytes[row + x * lay.bpp..][..lay.bpp];
+            out.push(match tr {
+                Some(tr) => tr.store(decode_pixel_f32(cf, px, ps.swap_bytes), base, &storage),
+                None => to_texel(base, decode_pixel(cf, px, ps.swap_bytes, bits)),
+            });
         }
     }
     out
