@@ -205,18 +205,30 @@ impl Framebuffer {
     pub unsafe fn copy_to_user(&self, dst: *mut u8, stride: usize, y_up: bool) {
         let bpp = self.format.bytes_per_pixel();
         let w = self.width;
-        for row in 0..self.height {
+        let dst = dst as usize;
+        crate::par::row_ranges(self.height, w * bpp, |lo, hi| {
+            for row in lo..hi {
+                // SAFETY: forwarded from the caller; each row is written by one thread.
+                unsafe { self.copy_row(row, dst as *mut u8, stride, y_up) }
+            }
+        });
+    }
+
+    /// Copies colour row `row` into the user buffer (see [`Framebuffer::copy_to_user`]).
+    ///
+    /// # Safety
+    /// As [`Framebuffer::copy_to_user`]; no other thread may write the same row.
+    unsafe fn copy_row(&self, row: usize, dst: *mut u8, stride: usize, y_up: bool) {
+        let bpp = self.format.bytes_per_pixel();
+        let w = self.width;
+        {
             let src = &self.color[row * w..(row + 1) * w];
             let dst_row = if y_up { self.height - 1 - row } else { row };
             // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
             // least `width * bpp` bytes; `out` is exactly that row's first `width * bpp` bytes.
             let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
             match self.format {
-                ColorFormat::Rgba => {
-                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
-                        o.copy_from_slice(c);
-                    }
-                }
+                ColorFormat::Rgba => out.copy_from_slice(src.as_flattened()),
                 ColorFormat::Bgra => {
                     for (o, c) in out.chunks_exact_mut(4).zip(src) {
                         let v = u32::from_le_bytes(*c);

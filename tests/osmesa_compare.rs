@@ -1228,3 +1228,48 @@ fn run_program(name: &str, source: &Path) {
         );
     }
 }
+
+/// Threads on and off give byte-identical images on the benchmark scenes (`bench/scenes`),
+/// at sizes where the threaded paths run (batches drawn on the pool while the draw goes on,
+/// band-parallel rasterization, parallel clears and copies) and at an odd size whose last
+/// band is partial: each scene runs two frames with `SOFTGL_THREADS=1` and `=2`.
+#[test]
+fn bench_scenes_identical_with_threads_on_and_off() {
+    let mut names: Vec<String> = fs::read_dir(root().join("bench/scenes"))
+        .expect("bench/scenes")
+        .filter_map(|e| {
+            let p = e.ok()?.path();
+            let stem = p.file_stem()?.to_string_lossy().into_owned();
+            (p.extension()? == "c" && stem != "filter_study").then_some(stem)
+        })
+        .collect();
+    names.sort();
+    assert!(names.len() >= 10, "bench scenes: {names:?}");
+    let out_dir = target_dir().join("ctests").join("out");
+    fs::create_dir_all(&out_dir).expect("mkdir");
+    for name in &names {
+        let src = root().join("bench/scenes").join(format!("{name}.c"));
+        let bin = build(&format!("bench_{name}"), &src, Side::Softgl)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        for (w, h) in [(512, 512), (333, 277), (1024, 1024)] {
+            let run = |threads: &str| {
+                let out = out_dir.join(format!("bench_{name}-{w}x{h}-t{threads}.out"));
+                let _ = fs::remove_file(&out);
+                let st = Command::new(&bin)
+                    .env("SOFTGL_THREADS", threads)
+                    .arg(&out)
+                    .args([w, h, 2].map(|v: u32| v.to_string()))
+                    .output()
+                    .expect("run bench scene");
+                assert!(st.status.success(), "{name} {w}x{h}: {st:?}");
+                fs::read(&out).expect("output file")
+            };
+            let single = run("1");
+            assert!(single.len() > (w * h) as usize, "{name}: short output");
+            assert!(
+                single == run("2"),
+                "{name} at {w}x{h}: SOFTGL_THREADS=2 differs from SOFTGL_THREADS=1"
+            );
+        }
+    }
+}

@@ -490,7 +490,7 @@ impl Context {
             };
             let m = color_mask;
             if m == [true; 4] && x0 == 0 && x1 == w {
-                fb.color[y0 * w..y1 * w].fill(v);
+                crate::par::fill(&mut fb.color[y0 * w..y1 * w], v);
             }
             for y in y0..y1 {
                 let row = &mut fb.color[y * w + x0..y * w + x1];
@@ -516,7 +516,7 @@ impl Context {
                 fb.depth_format.quantize_clear(st.clear_depth)
             };
             if x0 == 0 && x1 == w {
-                fb.depth[y0 * w..y1 * w].fill(v);
+                crate::par::fill(&mut fb.depth[y0 * w..y1 * w], v);
             } else {
                 for y in y0..y1 {
                     fb.depth[y * w + x0..y * w + x1].fill(v);

@@ -1,27 +1,167 @@
-//! Batches large triangles of a draw and rasterizes them in parallel over bands of rows.
+//! Batches the triangles of a draw and rasterizes them on the thread pool over bands of
+//! rows, while the draw goes on setting up the next batch.
 //!
-//! Each band of [`BAND_ROWS`] rows is owned by one thread at a time and receives every
-//! triangle of the batch in order, so each pixel sees the same fragments in the same order
-//! as single-threaded rendering: the images are byte-identical with threads on and off.
-//! Small triangles are not worth a thread hand-off: they flush the batch and are drawn
-//! directly.
+//! With threads on, every set-up triangle is stored compactly (only the draw's varyings)
+//! and its index is appended to the bin of each band of [`BAND_ROWS`] rows its box
+//! touches. A full batch is handed to the pool and the draw fills the second batch
+//! meanwhile (llvmpipe bins into tiles and rasterizes them on its threads the same way);
+//! before handing over the next one it waits for the first. On the pool, one thread owns a
+//! band at a time and draws the band's triangles in primitive order, and batches are drawn
+//! one after the other, so each pixel sees the same fragments in the same order as
+//! single-threaded rendering: the images are byte-identical with threads on and off. The
+//! last batch of a draw is drawn before the draw returns, on the calling thread when it is
+//! little work. The batches live in a per-thread pool, so drawing allocates nothing once
+//! they have grown.
 
 use super::raster_triangle;
 use crate::fragment::FragPlan;
-use crate::framebuffer::Framebuffer;
-use crate::geometry::setup::SetupTriangle;
+use crate::framebuffer::{Framebuffer, Target};
+use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use rayon::prelude::*;
+use std::cell::RefCell;
+use std::sync::{Arc, Condvar, Mutex};
 
 /// Rows per band (even, so 2x2 quads stay inside one band).
 pub const BAND_ROWS: usize = 32;
-/// A triangle whose box covers fewer pixels is drawn without batching.
-const BIG_TRIANGLE: i64 = 2048;
 /// Pixels of triangle boxes that make a batch worth splitting over threads.
-const PARALLEL_WORK: i64 = 64 * 1024;
+const PARALLEL_WORK: i64 = 32 * 1024;
 /// Triangles a batch holds at most.
-const MAX_BATCH: usize = 256;
+const MAX_BATCH: usize = 4096;
+/// Pixels of triangle boxes after which a batch is handed to the pool.
+const MAX_WORK: i64 = 1 << 20;
+
+/// A batched triangle without its varyings (those are in [`Batch::planes`] and
+/// [`Batch::flats`], `nvary` per triangle).
+#[derive(Clone, Copy)]
+struct Head {
+    edges: [Edge; 3],
+    bbox: [i64; 4],
+    front: bool,
+    z: Plane,
+    w: Plane,
+    persp: bool,
+    flat_u8: [u8; 4],
+}
+
+/// The pending triangles of a draw and their bins.
+#[derive(Default)]
+struct Batch {
+    heads: Vec<Head>,
+    planes: Vec<Plane>,
+    flats: Vec<f32>,
+    /// Per band: the indices of the triangles whose box touches it, in order.
+    bins: Vec<Vec<u32>>,
+    /// Pixels of the triangles' boxes inside the region.
+    work: i64,
+}
+
+impl Batch {
+    /// Forgets the triangles (keeps the buffers).
+    fn clear(&mut self) {
+        self.heads.clear();
+        self.planes.clear();
+        self.flats.clear();
+        for b in &mut self.bins {
+            b.clear();
+        }
+        self.work = 0;
+    }
+
+    /// Appends `t` (its first `nvary` varyings) and bins it into bands `b0..=b1`.
+    fn push(&mut self, t: &SetupTriangle, nvary: usize, b0: usize, b1: usize) {
+        let SetupTriangle {
+            edges,
+            bbox,
+            front,
+            z,
+            w,
+            persp,
+            vary,
+            flat,
+            flat_u8,
+        } = t;
+        let idx = self.heads.len() as u32;
+        self.heads.push(Head {
+            edges: *edges,
+            bbox: *bbox,
+            front: *front,
+            z: *z,
+            w: *w,
+            persp: *persp,
+            flat_u8: *flat_u8,
+        });
+        self.planes.extend_from_slice(&vary[..nvary]);
+        self.flats.extend_from_slice(&flat[..nvary]);
+        for bin in &mut self.bins[b0..=b1] {
+            bin.push(idx);
+        }
+    }
+
+    /// Copies triangle `i` into `t`, whose varyings past `nvary` stay zero as setup leaves
+    /// them.
+    #[inline]
+    fn load(&self, i: usize, nvary: usize, t: &mut SetupTriangle) {
+        let h = &self.heads[i];
+        t.edges = h.edges;
+        t.bbox = h.bbox;
+        t.front = h.front;
+        t.z = h.z;
+        t.w = h.w;
+        t.persp = h.persp;
+        t.flat_u8 = h.flat_u8;
+        t.vary[..nvary].copy_from_slice(&self.planes[i * nvary..(i + 1) * nvary]);
+        t.flat[..nvary].copy_from_slice(&self.flats[i * nvary..(i + 1) * nvary]);
+    }
+}
+
+/// The completion state of a batch rasterized on the pool while the draw goes on.
+#[derive(Default)]
+struct JobState {
+    /// The batch (handed to the job, handed back when it is drawn).
+    batch: Option<Batch>,
+    /// Whether the job has not finished yet.
+    busy: bool,
+    /// The pixel counters of the finished job.
+    stats: Stats,
+}
+
+/// A job slot shared with the pool: the state and its signal.
+#[derive(Default)]
+struct Job {
+    state: Mutex<JobState>,
+    done: Condvar,
+}
+
+/// What a draw keeps between draws on one thread: both batches and the job slot.
+#[derive(Default)]
+struct Pool {
+    batches: [Batch; 2],
+    job: Arc<Job>,
+}
+
+thread_local! {
+    /// The batch buffers of the last draw on this thread, reused by the next one.
+    static POOL: RefCell<Pool> = RefCell::new(Pool::default());
+}
+
+/// The borrowed inputs of a job, as raw pointers so that it can run on the pool while the
+/// draw goes on.
+struct JobInputs {
+    fb: *mut Framebuffer,
+    plan: FragPlan,
+    units: *const UnitPlan<'static>,
+    n_units: usize,
+    region: [i64; 4],
+    nvary: usize,
+}
+
+// SAFETY: the pointers are only dereferenced by the job, while the `Rasterizer` that made
+// them waits for it before touching the framebuffer again or ending its borrows (`wait`,
+// called by every method that uses them and by `Drop`); `UnitPlan` and `Framebuffer` are
+// `Sync`/`Send` (checked in `launch`).
+unsafe impl Send for JobInputs {}
 
 /// The rasterization side of a draw: the target, the plan and the pending batch.
 pub struct Rasterizer<'a, 'f> {
@@ -29,9 +169,14 @@ pub struct Rasterizer<'a, 'f> {
     plan: &'a FragPlan,
     units: &'a [UnitPlan<'a>],
     region: [i64; 4],
+    nvary: usize,
     threads: bool,
-    batch: Vec<SetupTriangle>,
-    work: i64,
+    /// The batch being filled.
+    batch: Batch,
+    /// The other batch, `None` while a job draws it.
+    spare: Option<Batch>,
+    /// The job slot (batches handed to the pool go through it).
+    job: Arc<Job>,
 }
 
 /// The pixel count of `t`'s box inside `region`.
@@ -42,21 +187,40 @@ fn box_area(t: &SetupTriangle, region: [i64; 4]) -> i64 {
 }
 
 impl<'a, 'f> Rasterizer<'a, 'f> {
-    /// A rasterizer for one draw into `fb` clipped to `region`.
+    /// A rasterizer for one draw into `fb` clipped to `region`, whose triangles carry
+    /// `nvary` varyings.
     pub fn new(
         fb: &'f mut Framebuffer,
         plan: &'a FragPlan,
         units: &'a [UnitPlan<'a>],
         region: [i64; 4],
+        nvary: usize,
     ) -> Self {
+        // A draw issued from a pool thread must not wait for the pool: no threads then.
+        let threads = crate::cpu::threads() > 1 && rayon::current_thread_index().is_none();
+        let pool = if threads {
+            POOL.with(|p| std::mem::take(&mut *p.borrow_mut()))
+        } else {
+            Pool::default()
+        };
+        let [mut batch, mut spare] = pool.batches;
+        if threads {
+            let nb = fb.height.div_ceil(BAND_ROWS);
+            for b in [&mut batch, &mut spare] {
+                b.clear();
+                b.bins.resize_with(nb, Vec::new);
+            }
+        }
         Rasterizer {
             fb,
             plan,
             units,
             region,
-            threads: crate::cpu::threads() > 1,
-            batch: Vec::new(),
-            work: 0,
+            nvary: nvary.min(crate::geometry::MAX_VARY),
+            threads,
+            batch,
+            spare: Some(spare),
+            job: pool.job,
         }
     }
 
@@ -84,54 +248,178 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         stats.tris_rasterized += 1;
-        if self.threads && area >= BIG_TRIANGLE {
-            self.batch.push(t.clone());
-            self.work += area;
-            if self.batch.len() >= MAX_BATCH {
-                self.flush(stats);
-            }
+        if !self.threads {
+            raster_triangle(
+                t,
+                self.region,
+                self.plan,
+                self.units,
+                &mut self.fb.target(),
+                stats,
+            );
             return;
         }
-        self.flush(stats);
-        raster_triangle(
-            t,
-            self.region,
-            self.plan,
-            self.units,
-            &mut self.fb.target(),
-            stats,
-        );
+        let y0 = t.bbox[1].max(self.region[1]) as usize;
+        let y1 = t.bbox[3].min(self.region[3] - 1) as usize;
+        self.batch
+            .push(t, self.nvary, y0 / BAND_ROWS, y1 / BAND_ROWS);
+        self.batch.work += area;
+        if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= MAX_WORK {
+            // Hand the full batch to the pool and keep setting up the next one meanwhile.
+            self.wait(stats);
+            self.launch();
+        }
     }
 
-    /// Draws the pending batch, over threads when it is large enough.
+    /// Draws every pending triangle (waits for the pool, then draws the last batch, over
+    /// threads when it is large enough).
     pub fn flush(&mut self, stats: &mut Stats) {
-        if self.batch.is_empty() {
+        self.wait(stats);
+        if self.batch.heads.is_empty() {
             return;
         }
-        let (plan, units, region) = (self.plan, self.units, self.region);
-        if self.work < PARALLEL_WORK {
+        let (plan, units, region, nvary) = (self.plan, self.units, self.region, self.nvary);
+        if self.batch.work < PARALLEL_WORK {
             let mut target = self.fb.target();
-            for t in &self.batch {
-                raster_triangle(t, region, plan, units, &mut target, stats);
+            let mut t = SetupTriangle::default();
+            for i in 0..self.batch.heads.len() {
+                self.batch.load(i, nvary, &mut t);
+                raster_triangle(&t, region, plan, units, &mut target, stats);
             }
         } else {
-            let batch = &self.batch;
-            let mut bands = self.fb.bands(BAND_ROWS);
-            let band_stats: Vec<Stats> = bands
-                .par_iter_mut()
-                .map(|band| {
-                    let mut s = Stats::default();
-                    for t in batch {
-                        raster_triangle(t, region, plan, units, band, &mut s);
-                    }
-                    s
-                })
-                .collect();
-            for s in &band_stats {
-                stats.add_pixels(s);
-            }
+            let s = draw_bands(&self.batch, self.fb, nvary, region, plan, units);
+            stats.add_pixels(&s);
         }
         self.batch.clear();
-        self.work = 0;
+    }
+
+    /// Waits for the batch on the pool, if any, and takes it back with its counters.
+    fn wait(&mut self, stats: &mut Stats) {
+        if self.spare.is_some() {
+            return;
+        }
+        let mut st = self.job.state.lock().unwrap_or_else(|e| e.into_inner());
+        while st.busy {
+            st = self.job.done.wait(st).unwrap_or_else(|e| e.into_inner());
+        }
+        stats.add_pixels(&st.stats);
+        let mut b = st.batch.take().unwrap_or_default();
+        drop(st);
+        b.clear();
+        self.spare = Some(b);
+    }
+
+    /// Hands the current batch to the pool (the previous one must be back) and starts
+    /// filling the spare one.
+    fn launch(&mut self) {
+        fn shareable<T: Sync>() {}
+        fn sendable<T: Send>() {}
+        shareable::<UnitPlan<'static>>();
+        sendable::<Framebuffer>();
+        let spare = self.spare.take().unwrap_or_default();
+        let batch = std::mem::replace(&mut self.batch, spare);
+        {
+            let mut st = self.job.state.lock().unwrap_or_else(|e| e.into_inner());
+            st.batch = Some(batch);
+            st.busy = true;
+            st.stats = Stats::default();
+        }
+        let inputs = JobInputs {
+            fb: &mut *self.fb,
+            plan: *self.plan,
+            units: self.units.as_ptr().cast(),
+            n_units: self.units.len(),
+            region: self.region,
+            nvary: self.nvary,
+        };
+        let job = Arc::clone(&self.job);
+        rayon::spawn(move || {
+            let inputs = inputs;
+            let batch = job
+                .state
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .batch
+                .take();
+            let mut s = Stats::default();
+            if let Some(batch) = &batch {
+                // SAFETY: see `JobInputs`: the rasterizer does not touch the framebuffer or
+                // end the borrows of the units until this job reports done.
+                let (fb, units) = unsafe {
+                    (
+                        &mut *inputs.fb,
+                        std::slice::from_raw_parts(inputs.units, inputs.n_units),
+                    )
+                };
+                s = draw_bands(batch, fb, inputs.nvary, inputs.region, &inputs.plan, units);
+            }
+            let mut st = job.state.lock().unwrap_or_else(|e| e.into_inner());
+            st.batch = batch;
+            st.stats = s;
+            st.busy = false;
+            drop(st);
+            job.done.notify_all();
+        });
+    }
+}
+
+/// Draws `batch` into `fb` with the pool, each band drawing its own bin.
+fn draw_bands(
+    batch: &Batch,
+    fb: &mut Framebuffer,
+    nvary: usize,
+    region: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+) -> Stats {
+    let mut bands = fb.bands(BAND_ROWS);
+    bands
+        .par_iter_mut()
+        .zip(batch.bins.par_iter())
+        .map(|(band, bin)| draw_bin(batch, bin, nvary, region, plan, units, band))
+        .reduce(Stats::default, |mut a, b| {
+            a.add_pixels(&b);
+            a
+        })
+}
+
+/// Draws the triangles of one band's bin into the band.
+fn draw_bin(
+    batch: &Batch,
+    bin: &[u32],
+    nvary: usize,
+    region: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    band: &mut Target<'_>,
+) -> Stats {
+    let mut s = Stats::default();
+    if bin.is_empty() {
+        return s;
+    }
+    let mut t = SetupTriangle::default();
+    for &i in bin {
+        batch.load(i as usize, nvary, &mut t);
+        raster_triangle(&t, region, plan, units, band, &mut s);
+    }
+    s
+}
+
+impl Drop for Rasterizer<'_, '_> {
+    fn drop(&mut self) {
+        if !self.threads {
+            return;
+        }
+        // The job must be done before the borrows it uses end.
+        let mut s = Stats::default();
+        self.wait(&mut s);
+        let pool = Pool {
+            batches: [
+                std::mem::take(&mut self.batch),
+                self.spare.take().unwrap_or_default(),
+            ],
+            job: Arc::clone(&self.job),
+        };
+        POOL.with(|p| *p.borrow_mut() = pool);
     }
 }

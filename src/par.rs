@@ -1,0 +1,49 @@
+//! Memory-bound loops (clears, the copy into the user buffer) split over the thread pool
+//! in contiguous chunks. Each element is written by exactly one thread with the same value
+//! as single-threaded, so results do not depend on the thread count.
+
+use rayon::prelude::*;
+
+/// Bytes below which a loop stays on the calling thread (a hand-off costs more).
+const MIN_PARALLEL_BYTES: usize = 256 * 1024;
+
+/// How many chunks a loop over `bytes` bytes is split into (1: run it here).
+fn chunks(bytes: usize) -> usize {
+    let t = crate::cpu::threads();
+    if t <= 1 || bytes < MIN_PARALLEL_BYTES {
+        1
+    } else {
+        t
+    }
+}
+
+/// `s.fill(v)`, over threads when `s` is large.
+pub fn fill<T: Copy + Send + Sync>(s: &mut [T], v: T) {
+    let n = chunks(std::mem::size_of_val(s));
+    if n == 1 {
+        s.fill(v);
+    } else {
+        // Chunks of whole 4 KiB pages so two threads never share a cache line.
+        let per = (s.len().div_ceil(n) * std::mem::size_of::<T>()).next_multiple_of(4096)
+            / std::mem::size_of::<T>().max(1);
+        s.par_chunks_mut(per.max(1)).for_each(|c| c.fill(v));
+    }
+}
+
+/// Calls `f(lo, hi)` on contiguous row ranges covering `0..rows` (rows of `row_bytes`
+/// bytes each), over threads when the rows are large together.
+pub fn row_ranges<F: Fn(usize, usize) + Sync>(rows: usize, row_bytes: usize, f: F) {
+    let n = chunks(rows * row_bytes).min(rows.max(1));
+    if n == 1 {
+        f(0, rows);
+    } else {
+        let per = rows.div_ceil(n);
+        (0..n).into_par_iter().for_each(|k| {
+            let lo = k * per;
+            let hi = (lo + per).min(rows);
+            if lo < hi {
+                f(lo, hi);
+            }
+        });
+    }
+}
