@@ -130,7 +130,8 @@ pub fn draw_lit(
     let back = stage.two_side().then(|| stage.back_offset());
     let stats = &mut ctx.stats;
     let Some(fb) = ctx.fb.as_mut() else { return };
-    let mut rast = Rasterizer::new(fb, &plan, &tex_plans, region, nvary);
+    // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
+    let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
     let mut tri = SetupTriangle::default();
     // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
     let lp_offset = (st.caps.get(Cap::PolygonOffsetFill)

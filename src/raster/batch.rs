@@ -189,7 +189,12 @@ fn box_area(t: &SetupTriangle, region: [i64; 4]) -> i64 {
 impl<'a, 'f> Rasterizer<'a, 'f> {
     /// A rasterizer for one draw into `fb` clipped to `region`, whose triangles carry
     /// `nvary` varyings.
-    pub fn new(
+    ///
+    /// # Safety
+    /// The rasterizer must be dropped, not leaked (`mem::forget`): batches on the pool
+    /// reach `fb`, `plan` and `units` through raw pointers, and only `flush` and `Drop`
+    /// wait for them before the borrows end.
+    pub unsafe fn new(
         fb: &'f mut Framebuffer,
         plan: &'a FragPlan,
         units: &'a [UnitPlan<'a>],
