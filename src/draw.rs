@@ -15,29 +15,44 @@ use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::clip_triangle;
-use crate::geometry::fetch::VertexIn;
-use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::source::{VertexCache, VertexSource};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
 use crate::raster::batch::Rasterizer;
 use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
 
-/// Draws `verts` as `mode`, through `indices` when given (each index < verts.len()).
-pub fn draw(ctx: &mut Context, mode: Primitive, verts: &[VertexIn], indices: Option<&[u32]>) {
+/// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()).
+pub fn draw<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+) {
     draw_lit(ctx, mode, verts, indices, None)
 }
 
 /// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
-pub fn draw_lit(
+pub fn draw_lit<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
-    verts: &[VertexIn],
+    verts: &S,
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
 ) {
     crate::pixels::cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
-    let n = indices.map_or(verts.len(), |i| i.len());
+    let n = indices.map_or(verts.count(), |i| i.len());
     if n == 0 {
+        return;
+    }
+    // A draw whose vertices could not all be held at once is refused with
+    // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
+    // streamed for minutes: the probe reserves address space and touches none of it.
+    if Vec::<ClipVertex>::new()
+        .try_reserve_exact(verts.count())
+        .is_err()
+    {
+        ctx.record_error(crate::context::error::GlError::OutOfMemory);
         return;
     }
     ctx.stats.draws += 1;
@@ -107,12 +122,31 @@ pub fn draw_lit(
         front_ccw: st.front_ccw,
     };
 
-    let cv = run_vertices(&mut stage, verts, materials);
-    ctx.stats.vertices += cv.len() as u64;
-    let any_outside = match indices {
-        Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
-        None => cv.iter().any(|v| v.mask != 0),
+    // Independent triangles, strips, fans and polygons stream through the post-transform
+    // cache; the other modes (whose decomposition depends on whether any vertex of the
+    // draw is outside, or which need edge flags or per-vertex materials) transform every
+    // vertex first.
+    let streamed = materials.is_none()
+        && matches!(
+            mode,
+            Primitive::Triangles
+                | Primitive::TriangleStrip
+                | Primitive::TriangleFan
+                | Primitive::Polygon
+        )
+        && !PolyPipeline::needed(&ctx.raster, &st.caps, stage.two_side());
+    let cv = if streamed {
+        Vec::new()
+    } else {
+        run_vertices(&mut stage, verts, materials)
     };
+    ctx.stats.vertices += cv.len() as u64;
+    // (A streamed draw's modes decompose the same way either way.)
+    let any_outside = !streamed
+        && match indices {
+            Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
+            None => cv.iter().any(|v| v.mask != 0),
+        };
     let path = if any_outside {
         DrawPath::Clip
     } else if indices.is_some() {
@@ -147,7 +181,7 @@ pub fn draw_lit(
                    c: &ClipVertex,
                    rast: &mut Rasterizer<'_, '_>,
                    stats: &mut crate::stats::Stats| {
-        match setup_triangle([a, b, c], nvary, cull, back, &mut tri) {
+        match setup_triangle_shaded([a, b, c], nvary, cull, back, plan.flat, &mut tri) {
             SetupResult::Draw => {
                 if let Some((factor, units)) = lp_offset {
                     crate::raster::prims::apply_setup_offset([a, b, c], factor, units, &mut tri);
@@ -221,34 +255,51 @@ pub fn draw_lit(
                 viewport,
                 region,
             };
-            let edge = |k: usize| match indices {
-                Some(ix) => verts[ix[k] as usize].edge_flag,
-                None => verts[k].edge_flag,
-            };
+            let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
             pp.draw(mode, n, at, edge, nvary, &plan, &mut rast, stats);
         }
-        _ => assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
-            let (va, vb, vc) = (at(a), at(b), at(c));
-            stats.triangles += 1;
-            let or = va.mask | vb.mask | vc.mask;
-            if va.mask & vb.mask & vc.mask != 0 {
-                stats.tris_clip_rejected += 1;
-            } else if or != 0 {
-                stats.tris_clipped += 1;
-                clip_triangle(
-                    [va, vb, vc],
-                    or,
-                    &stage.ucp,
-                    &viewport,
-                    nvary,
-                    plan.flat,
-                    back,
-                    |p, q, r| one(p, q, r, &mut rast, stats),
-                );
+        _ => {
+            let mut tri3 = |va: &ClipVertex,
+                            vb: &ClipVertex,
+                            vc: &ClipVertex,
+                            rast: &mut Rasterizer<'_, '_>,
+                            stats: &mut crate::stats::Stats| {
+                stats.triangles += 1;
+                let or = va.mask | vb.mask | vc.mask;
+                if va.mask & vb.mask & vc.mask != 0 {
+                    stats.tris_clip_rejected += 1;
+                } else if or != 0 {
+                    stats.tris_clipped += 1;
+                    clip_triangle(
+                        [va, vb, vc],
+                        or,
+                        &stage.ucp,
+                        &viewport,
+                        nvary,
+                        plan.flat,
+                        back,
+                        |p, q, r| one(p, q, r, rast, stats),
+                    );
+                } else {
+                    one(va, vb, vc, rast, stats);
+                }
+            };
+            if streamed {
+                let mut cache = VertexCache::new();
+                let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
+                assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
+                    let [va, vb, vc] = cache.triangle([ix(a), ix(b), ix(c)], |i, out| {
+                        stage.run_into(&verts.vertex(i), out)
+                    });
+                    tri3(va, vb, vc, &mut rast, stats);
+                });
+                stats.vertices += cache.transformed;
             } else {
-                one(va, vb, vc, &mut rast, stats);
+                assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
+                    tri3(at(a), at(b), at(c), &mut rast, stats)
+                });
             }
-        }),
+        }
     }
     rast.flush(stats);
     if ctx.state.caps.get(Cap::ColorMaterial) {
@@ -258,17 +309,17 @@ pub fn draw_lit(
 
 /// A draw in feedback or selection mode: the vertex stage, then the draw module's
 /// primitive stages into the feedback buffer or the hit record; nothing is rasterized.
-fn draw_feedback(
+fn draw_feedback<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     stage: &mut VertexStage,
     mode: Primitive,
-    verts: &[VertexIn],
+    verts: &S,
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
 ) {
     let Some(fb) = ctx.fb.as_ref() else { return };
     let st = &ctx.state;
-    let n = indices.map_or(verts.len(), |i| i.len());
+    let n = indices.map_or(verts.count(), |i| i.len());
     let cv = run_vertices(stage, verts, materials);
     let at = |k: usize| -> &ClipVertex {
         match indices {
@@ -276,10 +327,7 @@ fn draw_feedback(
             None => &cv[k],
         }
     };
-    let edge = |k: usize| match indices {
-        Some(ix) => verts[ix[k] as usize].edge_flag,
-        None => verts[k].edge_flag,
-    };
+    let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
     let cull_on = st.caps.get(Cap::CullFace);
     let stages = crate::geometry::feedback::PrimStages {
         ucp: &stage.ucp,
@@ -312,27 +360,27 @@ fn draw_feedback(
 
 /// Runs the vertex stage over `verts`, lighting each with its own material when
 /// glMaterial was called between glBegin and glEnd.
-fn run_vertices(
+fn run_vertices<S: VertexSource + ?Sized>(
     stage: &mut VertexStage,
-    verts: &[VertexIn],
+    verts: &S,
     materials: Option<&[[Material; 2]]>,
 ) -> Vec<ClipVertex> {
+    let n = verts.count();
     match (materials, stage.light.is_some()) {
-        (Some(m), true) if m.len() == verts.len() => {
+        (Some(m), true) if m.len() == n => {
             if let Some(l) = stage.light.as_mut() {
                 l.vary_material(m);
             }
-            verts
-                .iter()
+            (0..n)
                 .zip(m)
-                .map(|(v, m)| {
+                .map(|(i, m)| {
                     if let Some(l) = stage.light.as_mut() {
                         l.vertex_material = Some(*m);
                     }
-                    stage.run(v)
+                    stage.run(&verts.vertex(i))
                 })
                 .collect()
         }
-        _ => verts.iter().map(|v| stage.run(v)).collect(),
+        _ => (0..n).map(|i| stage.run(&verts.vertex(i))).collect(),
     }
 }

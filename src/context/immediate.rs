@@ -1,7 +1,9 @@
 //! glBegin/glEnd: the vertices of the primitive being specified.
 
-use super::state::Primitive;
+use super::error::{GlError, GlResult};
+use super::state::{Primitive, MAX_TEXTURE_UNITS};
 use crate::geometry::fetch::VertexIn;
+use crate::geometry::source::VertexSource;
 
 /// Immediate-mode state.
 #[derive(Clone, Debug, Default)]
@@ -9,7 +11,7 @@ pub struct Immediate {
     /// The primitive of the glBegin in progress, if any.
     pub active: Option<Primitive>,
     /// Vertices given since glBegin.
-    pub verts: Vec<VertexIn>,
+    pub verts: ImmVerts,
     /// A finished glBegin/glEnd of this mode whose drawing is deferred, so that the next
     /// glBegin of the same mode can extend it: Mesa's vbo module merges such draws (which
     /// decides, for GL_QUADS, whether the merged draw takes the clipping path).
@@ -32,5 +34,105 @@ impl Immediate {
             mode,
             Primitive::Points | Primitive::Lines | Primitive::Triangles | Primitive::Quads
         )
+    }
+}
+
+/// The attributes of a vertex other than position and colour, shared by consecutive
+/// vertices that do not change them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Rest {
+    normal: [f32; 3],
+    texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
+    fog_coord: f32,
+    edge_flag: bool,
+    secondary: [f32; 4],
+}
+
+impl Rest {
+    fn of(v: &VertexIn) -> Self {
+        Rest {
+            normal: v.normal,
+            texcoord: v.texcoord,
+            fog_coord: v.fog_coord,
+            edge_flag: v.edge_flag,
+            secondary: v.secondary,
+        }
+    }
+}
+
+/// The vertices of an immediate-mode batch, stored compactly: position and colour per
+/// vertex (the attributes that usually change per vertex), the other attributes once per
+/// run of vertices that share them.
+#[derive(Clone, Debug, Default)]
+pub struct ImmVerts {
+    /// Position, colour and the index of the vertex's entry in `rest`.
+    verts: Vec<([f32; 4], [f32; 4], u32)>,
+    rest: Vec<Rest>,
+}
+
+impl ImmVerts {
+    /// The number of vertices.
+    pub fn len(&self) -> usize {
+        self.verts.len()
+    }
+
+    /// Whether there are no vertices.
+    pub fn is_empty(&self) -> bool {
+        self.verts.is_empty()
+    }
+
+    /// Appends `v` (GL_OUT_OF_MEMORY when memory runs out).
+    pub fn push(&mut self, v: &VertexIn) -> GlResult<()> {
+        let rest = Rest::of(v);
+        if self.rest.last() != Some(&rest) {
+            self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
+            self.rest.push(rest);
+        }
+        self.verts
+            .try_reserve(1)
+            .map_err(|_| GlError::OutOfMemory)?;
+        self.verts
+            .push((v.pos, v.color, (self.rest.len() - 1) as u32));
+        Ok(())
+    }
+
+    /// Keeps the first `n` vertices.
+    pub fn truncate(&mut self, n: usize) {
+        self.verts.truncate(n);
+        let rest = self.verts.last().map_or(0, |v| v.2 as usize + 1);
+        self.rest.truncate(rest);
+    }
+
+    /// Removes every vertex (keeping the memory for the next batch).
+    pub fn clear(&mut self) {
+        self.verts.clear();
+        self.rest.clear();
+    }
+}
+
+impl VertexSource for ImmVerts {
+    #[inline]
+    fn count(&self) -> usize {
+        self.verts.len()
+    }
+
+    #[inline]
+    fn vertex(&self, i: usize) -> VertexIn {
+        let (pos, color, r) = self.verts[i];
+        let r = &self.rest[r as usize];
+        VertexIn {
+            pos,
+            color,
+            normal: r.normal,
+            texcoord: r.texcoord,
+            fog_coord: r.fog_coord,
+            edge_flag: r.edge_flag,
+            secondary: r.secondary,
+        }
+    }
+
+    #[inline]
+    fn edge_flag(&self, i: usize) -> bool {
+        self.rest[self.verts[i].2 as usize].edge_flag
     }
 }

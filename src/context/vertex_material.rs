@@ -4,7 +4,7 @@
 //! carries a snapshot of both faces' materials (vertices before the call get the material
 //! they were given with), and the draw lights each vertex with its own.
 
-use super::error::{GlError, GlResult};
+use super::error::GlResult;
 use super::lighting_state::Material;
 use super::Context;
 use crate::geometry::fetch::VertexIn;
@@ -14,10 +14,7 @@ impl Context {
     /// per-vertex materials, the material it is given with.
     pub fn push_immediate_vertex(&mut self, v: VertexIn) -> GlResult<()> {
         let im = &mut self.immediate;
-        if im.verts.try_reserve(1).is_err() {
-            return Err(GlError::OutOfMemory);
-        }
-        im.verts.push(v);
+        im.verts.push(&v)?;
         if im.per_vertex_material {
             im.materials.push(self.light.material);
         }

@@ -4,13 +4,16 @@
 use super::enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx_raw};
+use crate::context::arrays::ArrayState;
 use crate::context::arrays::DataType;
 use crate::context::dlist::Elements;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::Primitive;
 use crate::context::Context;
 use crate::geometry::fetch::{VertexFetcher, VertexIn};
+use crate::geometry::source::FetchSource;
 use std::collections::HashMap;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 
 /// GL_INVALID_OPERATION when an array or index buffer the draw reads is mapped.
 fn check_unmapped(c: &Context, indexed: bool) -> GlResult<()> {
@@ -47,21 +50,25 @@ pub(crate) fn draw_arrays(
     if !c.arrays.vertex.enabled || count == 0 {
         return Ok(());
     }
-    let mut verts = Vec::new();
-    verts
-        .try_reserve_exact(count)
-        .map_err(|_| GlError::OutOfMemory)?;
-    let first = first as u32;
-    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
-    for i in 0..count as u32 {
-        let Some(idx) = first.checked_add(i) else {
-            break;
-        };
+    // Elements past u32::MAX do not exist.
+    let count = count.min((u32::MAX - first as u32) as usize + 1);
+    with_arrays(c, |c, arrays| {
+        let cur = c.state.current;
+        let fetch = VertexFetcher::new(arrays, &cur);
         // SAFETY: enabled client arrays are the program's promise; buffers are bounds-checked.
-        verts.push(unsafe { fetch.fetch(idx) });
-    }
-    crate::draw::draw(c, mode, &verts, None);
+        let src = unsafe { FetchSource::new(fetch, first as u32, count) };
+        crate::draw::draw(c, mode, &src, None);
+    });
     Ok(())
+}
+
+/// Runs `f` with the context's vertex-array state moved out, so that a draw reads the
+/// arrays while it renders into the context; the state is put back even if `f` panics.
+fn with_arrays<R>(c: &mut Context, f: impl FnOnce(&mut Context, &ArrayState) -> R) -> R {
+    let arrays = std::mem::take(&mut c.arrays);
+    let r = catch_unwind(AssertUnwindSafe(|| f(c, &arrays)));
+    c.arrays = arrays;
+    r.unwrap_or_else(|p| resume_unwind(p))
 }
 
 /// Reads `count` indices of `ty` from the bound element buffer (offset `ptr`) or client
@@ -120,23 +127,26 @@ pub(crate) fn draw_elements(
     if !c.arrays.vertex.enabled || count == 0 {
         return Ok(());
     }
-    let idx = read_indices(c, count, ty, indices as usize)?;
+    let mut idx = read_indices(c, count, ty, indices as usize)?;
     let (Some(&lo), Some(&hi)) = (idx.iter().min(), idx.iter().max()) else {
         return Ok(());
     };
-    // Transform each distinct index once: a dense range when it is compact, a map otherwise.
+    // A compact index range is read straight from the arrays (vertex `i - lo` of the
+    // range); a sparse one is fetched into a list of its distinct vertices.
     let range = (hi - lo) as usize + 1;
-    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
-    let (verts, local): (Vec<VertexIn>, Vec<u32>) = if range <= idx.len() * 4 + 1024 {
-        let mut v = Vec::new();
-        v.try_reserve_exact(range)
-            .map_err(|_| GlError::OutOfMemory)?;
-        for i in lo..=hi {
+    if range <= idx.len() * 4 + 1024 {
+        idx.iter_mut().for_each(|i| *i -= lo);
+        with_arrays(c, |c, arrays| {
+            let cur = c.state.current;
+            let fetch = VertexFetcher::new(arrays, &cur);
             // SAFETY: as in draw_arrays.
-            v.push(unsafe { fetch.fetch(i) });
-        }
-        (v, idx.iter().map(|&i| i - lo).collect())
-    } else {
+            let src = unsafe { FetchSource::new(fetch, lo, range) };
+            crate::draw::draw(c, mode, &src, Some(&idx));
+        });
+        return Ok(());
+    }
+    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
+    let (verts, local): (Vec<VertexIn>, Vec<u32>) = {
         let mut map: HashMap<u32, u32> = HashMap::new();
         let mut v = Vec::new();
         let mut local = Vec::with_capacity(idx.len());
@@ -150,7 +160,7 @@ pub(crate) fn draw_elements(
         }
         (v, local)
     };
-    crate::draw::draw(c, mode, &verts, Some(&local));
+    crate::draw::draw(c, mode, verts.as_slice(), Some(&local));
     Ok(())
 }
 

@@ -161,17 +161,24 @@ impl VertexStage {
     /// Runs one vertex through the stage.
     #[inline]
     pub fn run(&self, v: &VertexIn) -> ClipVertex {
+        let mut out = ClipVertex::default();
+        self.run_into(v, &mut out);
+        out
+    }
+
+    /// Runs one vertex through the stage into `out`, writing the position, the mask and
+    /// the varyings this stage writes (the same fields for every vertex of a draw, so an
+    /// entry reused within a draw needs nothing cleared).
+    #[inline]
+    pub fn run_into(&self, v: &VertexIn, out: &mut ClipVertex) {
         let clip = self.mvp.transform(v.pos);
         let mut mask = clip_mask(clip);
         if self.ucp_enabled != 0 {
             mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
         }
-        let mut out = ClipVertex {
-            clip,
-            win: self.viewport.apply_shader(clip, self.fma),
-            mask,
-            ..Default::default()
-        };
+        out.clip = clip;
+        out.win = self.viewport.apply_shader(clip, self.fma);
+        out.mask = mask;
         let mut eye = None;
         match &self.light {
             Some(lp) => {
@@ -221,6 +228,5 @@ impl VertexStage {
             let z = full.map_or_else(|| eye_z_dp4(&self.modelview, v.pos), |e| e[2]);
             out.psize = pa.size(z);
         }
-        out
     }
 }

@@ -8,6 +8,7 @@ pub mod clip;
 pub mod feedback;
 pub mod fetch;
 pub mod setup;
+pub mod source;
 pub mod unfilled;
 
 /// The number of varying floats a vertex carries: primary colour (0..4), secondary colour

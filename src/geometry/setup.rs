@@ -55,6 +55,36 @@ impl Edge {
     }
 }
 
+/// Boxes at most this many pixels wide find a row's span by testing each pixel of the row
+/// (three integer steps per pixel) instead of three 64-bit divisions.
+const NARROW: i64 = 16;
+
+impl SetupTriangle {
+    /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
+    /// `(first, last)`; `None` when none is covered. Exact: the same set as intersecting
+    /// the three edges' [`Edge::span`]s.
+    #[inline]
+    pub fn row_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
+        if x1 - x0 < NARROW {
+            // The covered pixels of a row are consecutive: find the first, then the end.
+            let e = self.edges.map(|e| e.c + e.b * ONE * py - e.a * ONE * x0);
+            let s = self.edges.map(|e| e.a * ONE);
+            let inside = |k: i64| (0..3).all(|i| e[i] - s[i] * k > 0);
+            let n = x1 - x0;
+            let first = (0..=n).find(|&k| inside(k))?;
+            let last = (first + 1..=n).find(|&k| !inside(k)).map_or(n, |k| k - 1);
+            return Some((x0 + first, x0 + last));
+        }
+        let (mut lo, mut hi) = (x0, x1);
+        for e in &self.edges {
+            let (a, z) = e.span(py)?;
+            lo = lo.max(a);
+            hi = hi.min(z);
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+}
+
 /// A set-up triangle, ready for the rasterizer.
 #[derive(Clone, Debug)]
 pub struct SetupTriangle {
@@ -118,6 +148,20 @@ pub fn setup_triangle(
     back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
+    setup_triangle_shaded(v, nvary, cull, back, true, fill)
+}
+
+/// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
+/// (`fill.flat`, `fill.flat_u8`) are only written when `flat`, since only flat-shaded
+/// spans read them.
+pub fn setup_triangle_shaded(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    flat: bool,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
     for vx in v {
         if !(vx.win[0].abs() < MAX_SNAPPED / 256.0 && vx.win[1].abs() < MAX_SNAPPED / 256.0) {
             return SetupResult::Degenerate;
@@ -154,7 +198,7 @@ pub fn setup_triangle(
             [y0, y1, y2],
             ccw,
             front,
-            nvary,
+            (nvary, flat),
             fill,
         );
     }
@@ -166,7 +210,7 @@ pub fn setup_triangle(
         [y0, y1, y2],
         ccw,
         front,
-        nvary,
+        (nvary, flat),
         fill,
     )
 }
@@ -182,7 +226,7 @@ fn setup_rest<'v>(
     ys: [i64; 3],
     ccw: bool,
     front: bool,
-    nvary: usize,
+    (nvary, flat): (usize, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
@@ -259,8 +303,10 @@ fn setup_rest<'v>(
     }
     // Only the varyings this draw writes (the rest stay as the draw's first triangle left
     // them: zero, like the vertices' unused varyings).
-    fill.flat[..nvary].copy_from_slice(&p2.vary[..nvary]);
-    fill.flat_u8 = [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(p2.vary[i]));
+    if flat {
+        fill.flat[..nvary].copy_from_slice(&p2.vary[..nvary]);
+        fill.flat_u8 = [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(p2.vary[i]));
+    }
     SetupResult::Draw
 }
 
@@ -356,6 +402,35 @@ mod tests {
         }
         assert_eq!(brute, spans);
         assert!(brute.len() > 50);
+    }
+
+    #[test]
+    fn narrow_row_span_agrees_with_division() {
+        let tris = [
+            [v(1.3, 2.7), v(7.9, 5.1), v(3.2, 9.4)],
+            [v(0.5, 0.5), v(3.0, 0.5), v(0.5, 3.0)],
+            [v(5.7, 1.1), v(1.2, 4.9), v(6.6, 8.8)],
+        ];
+        for tri in &tris {
+            let mut t = SetupTriangle::default();
+            assert!(matches!(
+                setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, &mut t),
+                SetupResult::Draw
+            ));
+            for py in t.bbox[1] - 1..=t.bbox[3] + 1 {
+                for (x0, x1) in [(t.bbox[0], t.bbox[2]), (t.bbox[0] + 1, t.bbox[2] - 1)] {
+                    let mut want = Some((x0, x1));
+                    for e in &t.edges {
+                        want = match (want, e.span(py)) {
+                            (Some((lo, hi)), Some((a, z))) => Some((lo.max(a), hi.min(z))),
+                            _ => None,
+                        };
+                    }
+                    let want = want.filter(|(lo, hi)| lo <= hi);
+                    assert_eq!(t.row_span(x0, x1, py), want);
+                }
+            }
+        }
     }
 
     #[test]

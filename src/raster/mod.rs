@@ -288,14 +288,7 @@ fn row_span(t: &SetupTriangle, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
     if py < b[1] || py > b[3] {
         return None;
     }
-    let mut lo = b[0];
-    let mut hi = b[2];
-    for e in &t.edges {
-        let (a, z) = e.span(py)?;
-        lo = lo.max(a);
-        hi = hi.min(z);
-    }
-    (lo <= hi).then_some((lo, hi))
+    t.row_span(b[0], b[2], py)
 }
 
 /// The row walk, specialised like the span shader it calls (everything inlines into the

@@ -1,0 +1,158 @@
+//! Where a draw's vertices come from, and the post-transform vertex cache.
+//!
+//! A draw reads its vertices through [`VertexSource`]: an array of fetched vertices
+//! (immediate mode, display lists) or the enabled vertex arrays themselves, fetched as the
+//! vertex stage needs them ([`FetchSource`]), so an array draw keeps no per-vertex copy of
+//! its input. The triangle path transforms vertices on demand through [`VertexCache`], a
+//! small direct-mapped cache keyed by vertex index, so memory does not grow with the draw
+//! and a vertex shared by neighbouring triangles of an indexed mesh is transformed once.
+
+use super::fetch::{VertexFetcher, VertexIn};
+use super::ClipVertex;
+
+/// The vertices of one draw, addressed 0..count.
+pub trait VertexSource {
+    /// How many vertices the draw can address.
+    fn count(&self) -> usize;
+    /// Vertex `i` (`i < count()`).
+    fn vertex(&self, i: usize) -> VertexIn;
+    /// The edge flag of vertex `i`.
+    fn edge_flag(&self, i: usize) -> bool {
+        self.vertex(i).edge_flag
+    }
+}
+
+impl VertexSource for [VertexIn] {
+    #[inline]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline]
+    fn vertex(&self, i: usize) -> VertexIn {
+        self[i]
+    }
+    #[inline]
+    fn edge_flag(&self, i: usize) -> bool {
+        self[i].edge_flag
+    }
+}
+
+/// Vertices `base..base + count` of the enabled arrays, fetched when read.
+pub struct FetchSource<'a> {
+    fetch: VertexFetcher<'a>,
+    base: u32,
+    count: usize,
+}
+
+impl<'a> FetchSource<'a> {
+    /// The vertices `base..base + count` of `fetch` (indices past `u32::MAX` read as
+    /// element `u32::MAX`, which no real array reaches).
+    ///
+    /// # Safety
+    /// As [`VertexFetcher::fetch`]: enabled client-memory arrays must be valid for every
+    /// index in the range.
+    pub unsafe fn new(fetch: VertexFetcher<'a>, base: u32, count: usize) -> Self {
+        FetchSource { fetch, base, count }
+    }
+}
+
+impl VertexSource for FetchSource<'_> {
+    #[inline]
+    fn count(&self) -> usize {
+        self.count
+    }
+    #[inline]
+    fn vertex(&self, i: usize) -> VertexIn {
+        let idx = u32::try_from(i)
+            .ok()
+            .and_then(|i| self.base.checked_add(i))
+            .unwrap_or(u32::MAX);
+        // SAFETY: `FetchSource::new` made the caller promise the range is valid.
+        unsafe { self.fetch.fetch(idx) }
+    }
+}
+
+/// log2 of the cache size: 1024 entries keep two rows of a 500-vertex-wide grid mesh.
+const CACHE_BITS: u32 = 10;
+const CACHE_SIZE: usize = 1 << CACHE_BITS;
+const CACHE_MASK: usize = CACHE_SIZE - 1;
+
+/// A direct-mapped post-transform cache: entry `i % 1024` holds vertex `i` when its tag
+/// says so. Every entry of a draw is written by the same vertex stage, so an entry that is
+/// overwritten needs only the fields that stage writes.
+pub struct VertexCache {
+    tags: Vec<usize>,
+    slots: Vec<ClipVertex>,
+    /// Three entries for a triangle whose vertices share a cache slot.
+    spill: [ClipVertex; 3],
+    /// Vertices transformed (cache misses).
+    pub transformed: u64,
+}
+
+impl Default for VertexCache {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl VertexCache {
+    /// An empty cache.
+    pub fn new() -> Self {
+        VertexCache {
+            tags: vec![usize::MAX; CACHE_SIZE],
+            slots: vec![ClipVertex::default(); CACHE_SIZE],
+            spill: [ClipVertex::default(); 3],
+            transformed: 0,
+        }
+    }
+
+    /// The transformed vertices `idx` of one triangle; `run(i, out)` transforms vertex
+    /// `i` into `out` on a miss.
+    #[inline]
+    pub fn triangle(
+        &mut self,
+        idx: [usize; 3],
+        mut run: impl FnMut(usize, &mut ClipVertex),
+    ) -> [&ClipVertex; 3] {
+        let s = idx.map(|i| i & CACHE_MASK);
+        let clash = |a: usize, b: usize| s[a] == s[b] && idx[a] != idx[b];
+        if clash(0, 1) || clash(0, 2) || clash(1, 2) {
+            for (k, out) in self.spill.iter_mut().enumerate() {
+                run(idx[k], out);
+            }
+            self.transformed += 3;
+            let [a, b, c] = &self.spill;
+            return [a, b, c];
+        }
+        for k in 0..3 {
+            if self.tags[s[k]] != idx[k] {
+                run(idx[k], &mut self.slots[s[k]]);
+                self.tags[s[k]] = idx[k];
+                self.transformed += 1;
+            }
+        }
+        [&self.slots[s[0]], &self.slots[s[1]], &self.slots[s[2]]]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cache_transforms_shared_vertices_once_and_survives_clashes() {
+        let mut c = VertexCache::new();
+        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
+        let t = c.triangle([0, 1, 2], run);
+        assert_eq!(t.map(|v| v.win[0]), [0.0, 1.0, 2.0]);
+        let t = c.triangle([2, 1, 3], run);
+        assert_eq!(t.map(|v| v.win[0]), [2.0, 1.0, 3.0]);
+        assert_eq!(c.transformed, 4);
+        // 5 and 5 + CACHE_SIZE share a slot.
+        let t = c.triangle([5, CACHE_SIZE + 5, 6], run);
+        assert_eq!(t.map(|v| v.win[0]), [5.0, (CACHE_SIZE + 5) as f32, 6.0]);
+        let t = c.triangle([1, 2, 3], run);
+        assert_eq!(t.map(|v| v.win[0]), [1.0, 2.0, 3.0]);
+        assert_eq!(c.transformed, 7);
+    }
+}
