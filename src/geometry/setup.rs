@@ -57,7 +57,7 @@ impl Edge {
 
 /// Boxes at most this many pixels wide find a row's span by testing each pixel of the row
 /// (three integer steps per pixel) instead of three 64-bit divisions.
-const NARROW: i64 = 16;
+const NARROW: i64 = 4;
 
 impl SetupTriangle {
     /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
