@@ -112,6 +112,11 @@ pub struct Framebuffer {
     pub depth: Vec<u32>,
     /// Stencil values (empty without a stencil buffer), row 0 = top row.
     pub stencil: Vec<u8>,
+    /// The value every colour pixel holds, when known: set by a full-buffer glClear and
+    /// dropped by anything else that may write colour ([`Framebuffer::target`],
+    /// [`Framebuffer::bands`] and the few direct writers), so that glFlush fills the user
+    /// buffer instead of reading the colour buffer back.
+    pub uniform_color: Option<[u8; 4]>,
 }
 
 impl Framebuffer {
@@ -136,6 +141,34 @@ impl Framebuffer {
                 vec![0; n]
             },
             stencil: if stencil { vec![0; n] } else { Vec::new() },
+            uniform_color: None,
+        }
+    }
+
+    /// Clears the whole rows `rows` (y-down) of the colour buffer to `color` and of the
+    /// depth buffer to `depth` (each when given, already in stored form): the full-width
+    /// fast clear. Leaves [`Framebuffer::uniform_color`] alone (the caller knows whether
+    /// the clear covers the buffer). This signature is kept stable for the threaded clear,
+    /// which may instead call [`Target::clear`] per band.
+    pub fn clear_rows(
+        &mut self,
+        rows: std::ops::Range<usize>,
+        color: Option<[u8; 4]>,
+        depth: Option<u32>,
+    ) {
+        let (w, y0, y1) = (
+            self.width,
+            rows.start.min(self.height),
+            rows.end.min(self.height),
+        );
+        if y0 >= y1 {
+            return;
+        }
+        if let Some(c) = color {
+            crate::par::for_each_chunk(&mut self.color[y0 * w..y1 * w], |s| fill_color(s, c));
+        }
+        if let (Some(d), false) = (depth, self.depth.is_empty()) {
+            crate::par::fill(&mut self.depth[y0 * w..y1 * w], d);
         }
     }
 
@@ -174,6 +207,21 @@ impl Framebuffer {
 }
 
 impl ColorFormat {
+    /// The bytes [`Framebuffer::copy_to_user`] writes for stored colour `c` (the first
+    /// [`ColorFormat::bytes_per_pixel`] of them).
+    pub fn user_bytes(self, c: [u8; 4]) -> [u8; 4] {
+        match self {
+            ColorFormat::Rgba | ColorFormat::Rgb => c,
+            ColorFormat::Bgra => [c[2], c[1], c[0], c[3]],
+            ColorFormat::Argb => [c[3], c[0], c[1], c[2]],
+            ColorFormat::Rgb565 => {
+                let v = ((c[0] as u16 >> 3) << 11) | ((c[1] as u16 >> 2) << 5) | (c[2] as u16 >> 3);
+                let b = v.to_ne_bytes();
+                [b[0], b[1], 0, 0]
+            }
+        }
+    }
+
     /// A float colour in [0,1] packed as gallium's format packing does (glClear's fast
     /// path, glAccum's GL_RETURN): rounded, RGB565 to 5/6 bits, no alpha stored as 255.
     pub fn pack_float(self, c: [f32; 4]) -> [u8; 4] {
@@ -221,6 +269,21 @@ impl Framebuffer {
     unsafe fn copy_row(&self, row: usize, dst: *mut u8, stride: usize, y_up: bool) {
         let bpp = self.format.bytes_per_pixel();
         let w = self.width;
+        if let Some(c) = self.uniform_color {
+            // Every pixel holds `c`: write its user form without reading the colour
+            // buffer back.
+            let px = self.format.user_bytes(c);
+            // SAFETY: as below, `out` is row `row`'s first `width * bpp` bytes.
+            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(row * stride), w * bpp) };
+            if bpp == 4 {
+                fill_color_bytes(out, [px[0], px[1], px[2], px[3]]);
+            } else {
+                for o in out.chunks_exact_mut(bpp) {
+                    o.copy_from_slice(&px[..bpp]);
+                }
+            }
+            return;
+        }
         {
             let src = &self.color[row * w..(row + 1) * w];
             let dst_row = if y_up { self.height - 1 - row } else { row };
@@ -347,6 +410,7 @@ pub struct Target<'a> {
 impl Framebuffer {
     /// The whole framebuffer as one band.
     pub fn target(&mut self) -> Target<'_> {
+        self.uniform_color = None;
         Target {
             width: self.width,
             height: self.height,
@@ -362,6 +426,7 @@ impl Framebuffer {
     /// The framebuffer split into bands of `band_rows` rows (an even number, so 2x2 quads
     /// never straddle two bands), for threads that each own some bands.
     pub fn bands(&mut self, band_rows: usize) -> Vec<Target<'_>> {
+        self.uniform_color = None;
         let (w, h, format) = (self.width, self.height, self.format);
         let band_rows = band_rows.max(2) & !1;
         let n = w * band_rows;
@@ -385,6 +450,47 @@ impl Framebuffer {
             y0 += rows;
         }
         out
+    }
+}
+
+impl Target<'_> {
+    /// Clears the band's colour rows to `color` and depth rows to `depth` (each when
+    /// given, in stored form): [`Framebuffer::clear_rows`] for one band of a threaded clear.
+    pub fn clear(&mut self, color: Option<[u8; 4]>, depth: Option<u32>) {
+        if let Some(c) = color {
+            fill_color(self.color, c);
+        }
+        if let Some(d) = depth {
+            self.depth.fill(d);
+        }
+    }
+}
+
+/// Fills colour pixels with `c` in 32-bit stores (the byte-array form does not always
+/// become wide stores).
+#[inline]
+pub fn fill_color(dst: &mut [[u8; 4]], c: [u8; 4]) {
+    fill_color_bytes(dst.as_flattened_mut(), c);
+}
+
+/// Fills `dst` (a multiple of 4 bytes) with the 4-byte pattern `c`, in aligned 32-bit
+/// stores where possible.
+#[inline]
+fn fill_color_bytes(dst: &mut [u8], c: [u8; 4]) {
+    debug_assert_eq!(dst.len() % 4, 0);
+    // SAFETY: every bit pattern is a valid u32, so viewing the aligned middle of a byte
+    // slice as u32 is sound.
+    let (head, mid, tail) = unsafe { dst.align_to_mut::<u32>() };
+    if head.is_empty() {
+        mid.fill(u32::from_ne_bytes(c));
+        for (o, v) in tail.iter_mut().zip(c) {
+            *o = v;
+        }
+    } else {
+        // Unaligned start: the pattern does not line up with the words.
+        for o in dst.chunks_exact_mut(4) {
+            o.copy_from_slice(&c);
+        }
     }
 }
 
@@ -433,6 +539,35 @@ mod tests {
             );
         }
         assert_eq!(DepthFormat::Z24.quantize(1.0), 0xFF_FFFF);
+    }
+
+    /// A uniform buffer copied through the fill shortcut gives the bytes of the copy.
+    #[test]
+    fn uniform_copy_matches_copy() {
+        for format in [
+            ColorFormat::Rgba,
+            ColorFormat::Bgra,
+            ColorFormat::Argb,
+            ColorFormat::Rgb,
+            ColorFormat::Rgb565,
+        ] {
+            let (w, h) = (5usize, 3usize);
+            let mut fb = Framebuffer::new(w, h, format, DepthFormat::Z24, false);
+            let v = fb.clear_value([0.2, 0.4, 0.6, 0.8]);
+            fb.clear_rows(0..h, Some(v), Some(7));
+            assert!(fb.depth.iter().all(|&d| d == 7));
+            let stride = w * format.bytes_per_pixel() + 3;
+            let mut copied = vec![0xAAu8; stride * h + 1];
+            let mut filled = copied.clone();
+            // SAFETY: both buffers hold `h` rows of `stride` bytes.
+            unsafe { fb.copy_to_user(copied.as_mut_ptr().add(1), stride, true) };
+            fb.uniform_color = Some(v);
+            // SAFETY: as above.
+            unsafe { fb.copy_to_user(filled.as_mut_ptr().add(1), stride, true) };
+            assert_eq!(copied, filled, "{format:?}");
+            assert!(fb.target().color.iter().all(|&c| c == v));
+            assert_eq!(fb.uniform_color, None, "a target may write colour");
+        }
     }
 
     #[test]

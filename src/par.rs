@@ -19,14 +19,19 @@ fn chunks(bytes: usize) -> usize {
 
 /// `s.fill(v)`, over threads when `s` is large.
 pub fn fill<T: Copy + Send + Sync>(s: &mut [T], v: T) {
+    for_each_chunk(s, |c| c.fill(v));
+}
+
+/// Calls `f` on contiguous chunks covering `s`, over threads when `s` is large.
+pub fn for_each_chunk<T: Send, F: Fn(&mut [T]) + Sync + Send>(s: &mut [T], f: F) {
     let n = chunks(std::mem::size_of_val(s));
     if n == 1 {
-        s.fill(v);
+        f(s);
     } else {
         // Chunks of whole 4 KiB pages so two threads never share a cache line.
         let per = (s.len().div_ceil(n) * std::mem::size_of::<T>()).next_multiple_of(4096)
             / std::mem::size_of::<T>().max(1);
-        s.par_chunks_mut(per.max(1)).for_each(|c| c.fill(v));
+        s.par_chunks_mut(per.max(1)).for_each(f);
     }
 }
 

@@ -490,8 +490,11 @@ impl Context {
             };
             let m = color_mask;
             if m == [true; 4] && x0 == 0 && x1 == w {
-                crate::par::fill(&mut fb.color[y0 * w..y1 * w], v);
+                fb.clear_rows(y0..y1, Some(v), None);
             }
+            // Only a clear of the whole buffer leaves it uniform (glFlush then fills the
+            // user buffer instead of copying it).
+            fb.uniform_color = (!quad_path).then_some(v);
             for y in y0..y1 {
                 let row = &mut fb.color[y * w + x0..y * w + x1];
                 if m == [true; 4] {
@@ -516,7 +519,7 @@ impl Context {
                 fb.depth_format.quantize_clear(st.clear_depth)
             };
             if x0 == 0 && x1 == w {
-                crate::par::fill(&mut fb.depth[y0 * w..y1 * w], v);
+                fb.clear_rows(y0..y1, None, Some(v));
             } else {
                 for y in y0..y1 {
                     fb.depth[y * w + x0..y * w + x1].fill(v);

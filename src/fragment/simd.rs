@@ -141,6 +141,61 @@ pub(super) unsafe fn write8<const BLEND: bool>(
     }
 }
 
+/// Whether `p` is the classic "over" blend: SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD for RGB
+/// and alpha alike, which [`write8_over`] computes without dispatching on the factors.
+pub fn blend_is_over(p: &BlendPlan) -> bool {
+    p.src_rgb == BlendFactor::SrcAlpha
+        && p.dst_rgb == BlendFactor::OneMinusSrcAlpha
+        && p.src_a == BlendFactor::SrcAlpha
+        && p.dst_a == BlendFactor::OneMinusSrcAlpha
+        && p.eq_rgb == BlendEquation::Add
+        && p.eq_a == BlendEquation::Add
+}
+
+/// [`write8`] with blending, for a plan that [`blend_is_over`] accepts: the same
+/// arithmetic as [`blend8`] for that plan (`min(s·a + d·(255 − a), 255)` with llvmpipe's
+/// unorm8 multiply on every channel), without the per-call factor dispatch.
+///
+/// # Safety
+/// AVX2 context; the passing lanes lie inside the colour buffer.
+#[inline(always)]
+pub(super) unsafe fn write8_over(
+    fb: &mut Target<'_>,
+    idx: usize,
+    n: usize,
+    pass: __m256i,
+    px: __m256i,
+    stats: &mut Stats,
+) {
+    // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
+    unsafe {
+        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+        let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
+        stats.color_reads += n as u64;
+        let z = _mm256_setzero_si256();
+        // Not closures: they would be compiled without AVX2 and not inlined.
+        let lo = over16(_mm256_unpacklo_epi8(px, z), _mm256_unpacklo_epi8(dst, z));
+        let hi = over16(_mm256_unpackhi_epi8(px, z), _mm256_unpackhi_epi8(dst, z));
+        _mm256_maskstore_epi32(cptr, pass, _mm256_packus_epi16(lo, hi));
+        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+    }
+}
+
+/// The "over" blend of four pixels held as 16-bit channel words: `blend16` for a plan
+/// that [`blend_is_over`] accepts.
+#[inline(always)]
+unsafe fn over16(s: __m256i, d: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let c255 = _mm256_set1_epi16(255);
+        let a = alpha_words(s);
+        _mm256_min_epu16(
+            _mm256_add_epi16(mul8x16(s, a), mul8x16(d, _mm256_sub_epi16(c255, a))),
+            c255,
+        )
+    }
+}
+
 /// Shades pixels `x0..=x1` of row `py`. The caller guarantees the plan has no alpha test,
 /// stencil, blending or logic op, no textures, a colour format with 8-bit alpha layout
 /// that stores values unchanged (RGBA, BGRA, ARGB), and a full colour mask or none.

@@ -12,7 +12,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::simd::{depth_test8, eval, sat, write8};
+use super::simd::{depth_test8, eval, sat, write8, write8_over};
 use super::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
 use crate::geometry::setup::SetupTriangle;
@@ -36,7 +36,8 @@ pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
 }
 
 /// Shades the `live` lanes of the 8 pixels from `x` in row `py` with texture values
-/// `tex` (RGBA8 per lane) and the fast environment `env`.
+/// `tex` (RGBA8 per lane) and the fast environment `env`; `OVER` (with `BLEND`) when the
+/// plan's blend is [`super::simd::blend_is_over`].
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`), for a plan
@@ -49,6 +50,7 @@ pub unsafe fn tex_row<
     const FLAT: bool,
     const PERSP: bool,
     const BLEND: bool,
+    const OVER: bool,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -140,6 +142,10 @@ pub unsafe fn tex_row<
             }
             acc
         };
-        write8::<BLEND>(plan, fb, idx, n, pass, px, stats);
+        if OVER {
+            write8_over(fb, idx, n, pass, px, stats);
+        } else {
+            write8::<BLEND>(plan, fb, idx, n, pass, px, stats);
+        }
     }
 }

@@ -92,6 +92,7 @@ fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
     let stencil_mask = (ctx.state.frag.stencil_front.writemask & 0xFF) as u8;
     let stats = &mut ctx.stats;
     let Some(fb) = ctx.fb.as_mut() else { return };
+    fb.uniform_color = None;
     let d = Dest {
         fb_w: fb.width,
         fb_h: fb.height,
@@ -383,6 +384,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         };
         let Some(fb) = ctx.fb.as_mut() else { return };
         ctx.dirty = true;
+        fb.uniform_color = None;
         for j in 0..h {
             for i in 0..w {
                 let Some(s) = src_index(i, j) else { continue };

@@ -30,6 +30,21 @@ pub(super) fn fast_env(plan: &FragPlan, units: &[UnitPlan<'_>]) -> Option<FastEn
     }
 }
 
+/// The live lanes of each 8-bit mask (lane i live when bit i is set).
+const LIVE_MASKS: [[bool; LANES]; 256] = {
+    let mut t = [[false; LANES]; 256];
+    let mut m = 0;
+    while m < 256 {
+        let mut i = 0;
+        while i < LANES {
+            t[m][i] = (m >> i) & 1 == 1;
+            i += 1;
+        }
+        m += 1;
+    }
+    t
+};
+
 /// One chunk of [`Chunks`]: the top row `qy` of its pair, its first column `x`, the lanes'
 /// pixel x and the two rows' pixel y as f32, and each row's covered lanes.
 pub(super) struct Chunk {
@@ -98,16 +113,19 @@ impl Iterator for Chunks<'_> {
         self.x += LANES as i64;
         let mut live = [[false; LANES]; 2];
         for (r, span) in self.spans.iter().enumerate() {
-            if let Some((a, z)) = span {
-                for (i, l) in live[r].iter_mut().enumerate() {
-                    let px = x + i as i64;
-                    *l = px >= *a && px <= *z;
-                }
+            if let Some((a, z)) = *span {
+                // Lane i is live when a <= x + i <= z: lanes lo..hi.
+                let lo = (a - x).clamp(0, LANES as i64) as u32;
+                let hi = (z - x + 1).clamp(0, LANES as i64) as u32;
+                let m = (0xFFu32 << lo) & (0xFFu32 >> (LANES as u32 - hi));
+                live[r] = LIVE_MASKS[m as usize & 0xFF];
             }
         }
+        // Integers below 2^24 are exact in f32, so this is `(x + i) as f32`.
+        let xf = x as f32;
         let mut fx = [0f32; LANES];
         for (i, v) in fx.iter_mut().enumerate() {
-            *v = (x + i as i64) as f32;
+            *v = xf + i as f32;
         }
         let fy = [self.qy as f32, (self.qy + 1) as f32];
         Some(Chunk {
@@ -137,6 +155,11 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
     let vector = crate::texture::fast_avx2::available();
     #[cfg(target_arch = "x86_64")]
     let simd = vector && crate::fragment::simd_tex::plan_ok(plan, fb);
+    #[cfg(target_arch = "x86_64")]
+    let over = plan
+        .blend
+        .as_ref()
+        .is_some_and(crate::fragment::simd::blend_is_over);
     for Chunk {
         qy,
         x,
@@ -165,17 +188,23 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
                 // `M::FUSED` in the callers that reach here, and a plan `plan_ok` accepts;
                 // live lanes are inside the row.
                 unsafe {
-                    match (M::FUSED, plan.blend.is_some()) {
-                        (true, false) => tex_row::<true, DEPTH, FLAT, PERSP, false>(
+                    match (M::FUSED, plan.blend.is_some(), over) {
+                        (true, false, _) => tex_row::<true, DEPTH, FLAT, PERSP, false, false>(
                             t, plan, env, fb, py, x, l, tx, stats,
                         ),
-                        (true, true) => tex_row::<true, DEPTH, FLAT, PERSP, true>(
+                        (true, true, false) => tex_row::<true, DEPTH, FLAT, PERSP, true, false>(
                             t, plan, env, fb, py, x, l, tx, stats,
                         ),
-                        (false, false) => tex_row::<false, DEPTH, FLAT, PERSP, false>(
+                        (true, true, true) => tex_row::<true, DEPTH, FLAT, PERSP, true, true>(
                             t, plan, env, fb, py, x, l, tx, stats,
                         ),
-                        (false, true) => tex_row::<false, DEPTH, FLAT, PERSP, true>(
+                        (false, false, _) => tex_row::<false, DEPTH, FLAT, PERSP, false, false>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                        (false, true, false) => tex_row::<false, DEPTH, FLAT, PERSP, true, false>(
+                            t, plan, env, fb, py, x, l, tx, stats,
+                        ),
+                        (false, true, true) => tex_row::<false, DEPTH, FLAT, PERSP, true, true>(
                             t, plan, env, fb, py, x, l, tx, stats,
                         ),
                     }

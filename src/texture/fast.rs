@@ -203,27 +203,46 @@ pub fn chunk_u8(
     out: &mut [[[u8; 4]; LANES]; 2],
 ) {
     const QUADS: usize = LANES / 2;
+    // Without a LOD every quad magnifies the base level: choose once, and skip the
+    // per-quad bookkeeping (lanes of quads without a live pixel are sampled but unused).
+    if !p.needs_lod {
+        let lv = select_levels(p, super::Lod::MAG);
+        let wmip = [(lv.3 * 256.0) as i32; LANES];
+        if vector && vector_rows(p, lv.0, lv.1, lv.2, &wmip, s, t, live, out) {
+            return;
+        }
+        for j in 0..QUADS {
+            let (l, r) = (2 * j, 2 * j + 1);
+            if live[0][l] || live[0][r] || live[1][l] || live[1][r] {
+                let v = quad_u8_levels(
+                    p,
+                    lv,
+                    [s[0][l], s[0][r], s[1][l], s[1][r]],
+                    [t[0][l], t[0][r], t[1][l], t[1][r]],
+                );
+                out[0][l] = v[0];
+                out[0][r] = v[1];
+                out[1][l] = v[2];
+                out[1][r] = v[3];
+            }
+        }
+        return;
+    }
     let mut sel = [None; QUADS];
     let mut key = None;
     let mut uniform = true;
-    // Without a LOD every quad magnifies the base level: choose once.
-    let fixed = (!p.needs_lod).then(|| select_levels(p, super::Lod::MAG));
     for j in 0..QUADS {
         let (l, r) = (2 * j, 2 * j + 1);
         if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
             continue;
         }
-        let lv = if let Some(lv) = fixed {
-            lv
-        } else {
-            select_levels(
-                p,
-                p.quad_lod(
-                    [s[0][l], s[0][r], s[1][l], s[1][r]],
-                    [t[0][l], t[0][r], t[1][l], t[1][r]],
-                ),
-            )
-        };
+        let lv = select_levels(
+            p,
+            p.quad_lod(
+                [s[0][l], s[0][r], s[1][l], s[1][r]],
+                [t[0][l], t[0][r], t[1][l], t[1][r]],
+            ),
+        );
         sel[j] = Some(lv);
         match key {
             None => key = Some((lv.0, lv.1, lv.2)),
@@ -231,7 +250,15 @@ pub fn chunk_u8(
         }
     }
     if let (true, true, Some((f, l0, l1))) = (vector, uniform, key) {
-        if vector_rows(p, f, l0, l1, &sel, s, t, live, out) {
+        let mut wmip = [0i32; LANES];
+        for (j, lv) in sel.iter().enumerate() {
+            if let Some(lv) = lv {
+                let w = (lv.3 * 256.0) as i32;
+                wmip[2 * j] = w;
+                wmip[2 * j + 1] = w;
+            }
+        }
+        if vector_rows(p, f, l0, l1, &wmip, s, t, live, out) {
             return;
         }
     }
@@ -261,7 +288,7 @@ fn vector_rows(
     f: Filter,
     l0: usize,
     l1: usize,
-    sel: &[Option<(Filter, usize, usize, f32)>; LANES / 2],
+    wmip: &[i32; LANES],
     s: &[[f32; LANES]; 2],
     t: &[[f32; LANES]; 2],
     live: &[[bool; LANES]; 2],
@@ -276,14 +303,6 @@ fn vector_rows(
     if !fits(a) || !b.is_none_or(fits) {
         return false;
     }
-    let mut wmip = [0i32; LANES];
-    for (j, lv) in sel.iter().enumerate() {
-        if let Some(lv) = lv {
-            let w = (lv.3 * 256.0) as i32;
-            wmip[2 * j] = w;
-            wmip[2 * j + 1] = w;
-        }
-    }
     let rs = fast_avx2::RowSampler {
         a,
         b,
@@ -294,7 +313,7 @@ fn vector_rows(
     for r in 0..2 {
         // SAFETY: `vector` is only set when `fast_avx2::available()`, and this inlines
         // into the AVX2 raster entry points.
-        if live[r].iter().any(|&l| l) && !unsafe { rs.row(&s[r], &t[r], &wmip, &mut out[r]) } {
+        if live[r].iter().any(|&l| l) && !unsafe { rs.row(&s[r], &t[r], wmip, &mut out[r]) } {
             return false;
         }
     }
