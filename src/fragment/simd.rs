@@ -298,7 +298,12 @@ unsafe fn factor16(f: BlendFactor, s: __m256i, d: __m256i, k: __m256i, rgb: bool
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let c255 = _mm256_set1_epi16(255);
-        let inv = |v: __m256i| _mm256_sub_epi16(c255, v);
+        // A function, not a closure, so it is compiled with the caller's AVX2.
+        #[inline(always)]
+        unsafe fn inv(v: __m256i) -> __m256i {
+            // SAFETY: AVX2 context (see `eval`).
+            unsafe { _mm256_sub_epi16(_mm256_set1_epi16(255), v) }
+        }
         match f {
             BlendFactor::Zero => _mm256_setzero_si256(),
             BlendFactor::One => c255,
