@@ -2,8 +2,9 @@
 //!
 //! Run by hand with `bash scripts/bench.sh` (never as a test). It compiles every C scene in
 //! `bench/scenes/` twice (against `libsoftgl.so` and against `-lOSMesa`), then runs the
-//! three renderers in alternation — softgl, llvmpipe with `LP_NUM_THREADS=1`, llvmpipe with
-//! its default thread count — for several repetitions at each size. Each scene times its own
+//! four renderers in alternation — softgl (default threads), llvmpipe with
+//! `LP_NUM_THREADS=1`, llvmpipe with its default thread count, softgl with
+//! `SOFTGL_THREADS=1` — for several repetitions at each size. Each scene times its own
 //! frames; the runner takes the median frame time of each run and the median over the runs,
 //! compares softgl's final frame with llvmpipe's, and measures whole-process wall time and
 //! peak memory (`wait4` rusage) of one-frame runs. It writes `target/bench/results.md`,
@@ -49,9 +50,17 @@ enum Renderer {
     Softgl,
     Lp1,
     LpN,
+    /// softgl with `SOFTGL_THREADS=1` (the issue's single-thread comparison with llvmpipe-1).
+    Softgl1,
 }
 
-const RENDERERS: [Renderer; 3] = [Renderer::Softgl, Renderer::Lp1, Renderer::LpN];
+/// Indices 0..3 are fixed: softgl (default threads), llvmpipe-1, llvmpipe, softgl-1.
+const RENDERERS: [Renderer; 4] = [
+    Renderer::Softgl,
+    Renderer::Lp1,
+    Renderer::LpN,
+    Renderer::Softgl1,
+];
 
 impl Renderer {
     fn label(self) -> &'static str {
@@ -59,6 +68,7 @@ impl Renderer {
             Renderer::Softgl => "softgl",
             Renderer::Lp1 => "llvmpipe-1",
             Renderer::LpN => "llvmpipe",
+            Renderer::Softgl1 => "softgl-1",
         }
     }
 }
@@ -343,7 +353,12 @@ fn run_scene(
         .env_remove("LP_NUM_THREADS")
         .envs(env.iter().copied());
     match renderer {
-        Renderer::Softgl => {}
+        Renderer::Softgl => {
+            cmd.env_remove("SOFTGL_THREADS");
+        }
+        Renderer::Softgl1 => {
+            cmd.env("SOFTGL_THREADS", "1");
+        }
         Renderer::Lp1 => {
             cmd.env("GALLIUM_DRIVER", "llvmpipe")
                 .env("LP_NUM_THREADS", "1");
@@ -522,13 +537,13 @@ struct Cell {
     scene: usize,
     size: u32,
     /// Per renderer: the median frame time of each successful run.
-    run_medians: [Vec<f64>; 3],
+    run_medians: [Vec<f64>; 4],
     /// Per renderer: median memset time of each run (clear_only only).
-    memset_medians: [Vec<f64>; 3],
+    memset_medians: [Vec<f64>; 4],
     /// Per renderer: the first failure, if any run failed.
-    failure: [Option<String>; 3],
+    failure: [Option<String>; 4],
     /// Per renderer: the output file of the last successful run.
-    output: [Option<PathBuf>; 3],
+    output: [Option<PathBuf>; 4],
 }
 
 /// One-frame process runs of one scene on one renderer.
@@ -540,13 +555,13 @@ struct ProcessStats {
 }
 
 struct Summary {
-    ms: [Option<f64>; 3],
+    ms: [Option<f64>; 4],
     ours: Result<ErrorStats, String>,
     lpn: Option<ErrorStats>,
 }
 
 fn summarize(cell: &Cell, scenes: &[Scene]) -> Summary {
-    let ms = [0, 1, 2].map(|i| median(&cell.run_medians[i]));
+    let ms = [0, 1, 2, 3].map(|i| median(&cell.run_medians[i]));
     let frames = [0, 1, 2].map(|i| cell.output[i].as_deref().map(read_frame));
     let ours = match (&frames[0], &frames[1]) {
         (Some(Ok(a)), Some(Ok(b))) => compare(a, b),
@@ -687,7 +702,7 @@ fn real_main() -> Result<(), String> {
             let scene = &scenes[cell.scene];
             for (ri, &r) in RENDERERS.iter().enumerate() {
                 let bin = match r {
-                    Renderer::Softgl => &scene.softgl_bin,
+                    Renderer::Softgl | Renderer::Softgl1 => &scene.softgl_bin,
                     _ => &scene.osmesa_bin,
                 };
                 let bin = match bin {
@@ -775,25 +790,27 @@ fn real_main() -> Result<(), String> {
     let _ = writeln!(
         md,
         "{machine}. {} repetitions × {} timed frames (after one warm-up frame) per renderer, \
-         run in alternation (softgl, llvmpipe 1 thread, llvmpipe default threads). \
-         Times are the median over repetitions of each run's median frame time \
+         run in alternation (softgl default threads, llvmpipe 1 thread, llvmpipe default \
+         threads, softgl-1 = softgl with SOFTGL_THREADS=1). Single-thread against single-thread: \
+         softgl-1/lp-1; default against default: softgl/lp. Times are the median over repetitions of each run's median frame time \
          (draw + glFinish), in ms. Ratios < 1 mean softgl is faster. Error columns compare \
          softgl's last frame with llvmpipe (1 thread) over all RGBA channels.\n",
         cfg.reps, cfg.frames
     );
     let _ = writeln!(
         md,
-        "| id | scene | size | softgl ms | llvmpipe-1 ms | llvmpipe ms | softgl/lp-1 | \
-         softgl/lp | identical % | px off | max diff | PSNR dB | note |"
+        "| id | scene | size | softgl-1 ms | llvmpipe-1 ms | softgl-1/lp-1 | softgl ms | \
+         llvmpipe ms | softgl/lp | identical % | px off | max diff | PSNR dB | note |"
     );
     let _ = writeln!(
         md,
-        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
     );
     let mut csv = String::from(
         "scene,id,width,height,softgl_ms,llvmpipe1_ms,llvmpipe_ms,ratio_softgl_llvmpipe1,\
          ratio_softgl_llvmpipe,identical_pct,pixels_off,max_diff,psnr_db,llvmpipe_vs_llvmpipe1_identical_pct,\
-         softgl_runs,llvmpipe1_runs,llvmpipe_runs,status,pending_feature\n",
+         softgl_runs,llvmpipe1_runs,llvmpipe_runs,status,pending_feature,softgl1_ms,\
+         ratio_softgl1_llvmpipe1,softgl1_runs\n",
     );
     for (cell, sum) in cells.iter().zip(&summaries) {
         let scene = &scenes[cell.scene];
@@ -839,14 +856,15 @@ fn real_main() -> Result<(), String> {
         };
         let _ = writeln!(
             md,
-            "| {} | {} | {}² | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {}² | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             scene.id,
             scene.name,
             cell.size,
-            fmt_ms(sum.ms[0]),
+            fmt_ms(sum.ms[3]),
             fmt_ms(sum.ms[1]),
+            fmt_ratio(sum.ms[3], sum.ms[1]),
+            fmt_ms(sum.ms[0]),
             fmt_ms(sum.ms[2]),
-            fmt_ratio(sum.ms[0], sum.ms[1]),
             fmt_ratio(sum.ms[0], sum.ms[2]),
             ident,
             off,
@@ -863,7 +881,7 @@ fn real_main() -> Result<(), String> {
         };
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",\"{}\",{},{},{}",
             scene.name,
             scene.id,
             cell.size,
@@ -897,6 +915,9 @@ fn real_main() -> Result<(), String> {
             cell.run_medians[2].len(),
             status,
             scene.pending.clone().unwrap_or_default(),
+            csv_opt(sum.ms[3]),
+            csv_opt(ratio(sum.ms[3], sum.ms[1])),
+            cell.run_medians[3].len(),
         );
     }
 
