@@ -165,10 +165,10 @@ impl Framebuffer {
             return;
         }
         if let Some(c) = color {
-            crate::par::for_each_chunk(&mut self.color[y0 * w..y1 * w], |s| fill_color(s, c));
+            fill_color(&mut self.color[y0 * w..y1 * w], c);
         }
         if let (Some(d), false) = (depth, self.depth.is_empty()) {
-            crate::par::fill(&mut self.depth[y0 * w..y1 * w], d);
+            self.depth[y0 * w..y1 * w].fill(d);
         }
     }
 
@@ -251,21 +251,18 @@ impl Framebuffer {
     /// # Safety
     /// `dst` must be valid for writes of `stride * (height - 1) + width * bpp` bytes.
     pub unsafe fn copy_to_user(&self, dst: *mut u8, stride: usize, y_up: bool) {
-        let bpp = self.format.bytes_per_pixel();
-        let w = self.width;
-        let dst = dst as usize;
-        crate::par::row_ranges(self.height, w * bpp, |lo, hi| {
-            for row in lo..hi {
-                // SAFETY: forwarded from the caller; each row is written by one thread.
-                unsafe { self.copy_row(row, dst as *mut u8, stride, y_up) }
-            }
-        });
+        // Memory-bound: measured slower split over two threads (1024² clear + copy 0.686 ms
+        // against 0.576 ms on one), so it stays on the calling thread.
+        for row in 0..self.height {
+            // SAFETY: forwarded from the caller.
+            unsafe { self.copy_row(row, dst, stride, y_up) }
+        }
     }
 
     /// Copies colour row `row` into the user buffer (see [`Framebuffer::copy_to_user`]).
     ///
     /// # Safety
-    /// As [`Framebuffer::copy_to_user`]; no other thread may write the same row.
+    /// As [`Framebuffer::copy_to_user`].
     unsafe fn copy_row(&self, row: usize, dst: *mut u8, stride: usize, y_up: bool) {
         let bpp = self.format.bytes_per_pixel();
         let w = self.width;

@@ -23,7 +23,6 @@ pub mod fixed_function;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
-pub mod par;
 pub mod pixels;
 pub mod raster;
 pub mod stats;
