@@ -37,6 +37,26 @@ pub fn threads() -> usize {
     })
 }
 
+/// Whether the AVX2+FMA variant may run its copy compiled for AVX-512 (F, BW, VL, DQ):
+/// the CPU has them and `SOFTGL_AVX512=0` is not set.
+pub fn avx512() -> bool {
+    static AVX512: OnceLock<bool> = OnceLock::new();
+    *AVX512.get_or_init(|| {
+        #[cfg(target_arch = "x86_64")]
+        {
+            !std::env::var("SOFTGL_AVX512").is_ok_and(|v| v == "0")
+                && std::arch::is_x86_feature_detected!("avx512f")
+                && std::arch::is_x86_feature_detected!("avx512bw")
+                && std::arch::is_x86_feature_detected!("avx512vl")
+                && std::arch::is_x86_feature_detected!("avx512dq")
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            false
+        }
+    })
+}
+
 /// The variant for this CPU. `SOFTGL_FMA=0` turns fusing off, to compare against a
 /// reference run with `GALLIUM_OVERRIDE_CPU_CAPS=sse4.1`.
 pub fn isa() -> Isa {
