@@ -117,6 +117,13 @@ pub struct Framebuffer {
     /// [`Framebuffer::bands`] and the few direct writers), so that glFlush fills the user
     /// buffer instead of reading the colour buffer back.
     pub uniform_color: Option<[u8; 4]>,
+    /// A full-buffer colour clear recorded by glClear but not written yet: the colour
+    /// buffer's memory is stale and every pixel holds this value (then also
+    /// [`Framebuffer::uniform_color`]). [`Framebuffer::resolve`], [`Framebuffer::target`]
+    /// and the bands of [`Framebuffer::bands`] write it.
+    pub pending_color: Option<[u8; 4]>,
+    /// A full-buffer depth clear recorded but not written yet (as `pending_color`).
+    pub pending_depth: Option<u32>,
 }
 
 impl Framebuffer {
@@ -142,6 +149,8 @@ impl Framebuffer {
             },
             stencil: if stencil { vec![0; n] } else { Vec::new() },
             uniform_color: None,
+            pending_color: None,
+            pending_depth: None,
         }
     }
 
@@ -170,6 +179,44 @@ impl Framebuffer {
         if let (Some(d), false) = (depth, self.depth.is_empty()) {
             self.depth[y0 * w..y1 * w].fill(d);
         }
+    }
+
+    /// Records a clear of the whole colour buffer to `color` and of the whole depth buffer
+    /// to `depth` (each when given, in stored form) without writing them: a frame that is
+    /// cleared and drawn writes each band's clear values while the band is in the cache
+    /// (see [`Framebuffer::bands`]), and a frame that is only cleared never writes them
+    /// (glFlush fills the user buffer from [`Framebuffer::uniform_color`]).
+    pub fn defer_clear(&mut self, color: Option<[u8; 4]>, depth: Option<u32>) {
+        if let Some(c) = color {
+            self.uniform_color = Some(c);
+            self.pending_color = Some(c);
+        }
+        if let (Some(d), false) = (depth, self.depth.is_empty()) {
+            self.pending_depth = Some(d);
+        }
+    }
+
+    /// Writes the recorded clears ([`Framebuffer::defer_clear`]) into the buffers; called
+    /// before anything reads or writes their memory directly.
+    pub fn resolve(&mut self) {
+        if let Some(c) = self.pending_color.take() {
+            fill_color(&mut self.color, c);
+        }
+        if let Some(d) = self.pending_depth.take() {
+            self.depth.fill(d);
+        }
+    }
+
+    /// Colour pixel `i` (y-down row-major), recorded clears included.
+    #[inline]
+    pub fn color_at(&self, i: usize) -> [u8; 4] {
+        self.pending_color.unwrap_or_else(|| self.color[i])
+    }
+
+    /// Depth value `i` (y-down row-major), recorded clears included.
+    #[inline]
+    pub fn depth_at(&self, i: usize) -> u32 {
+        self.pending_depth.unwrap_or_else(|| self.depth[i])
     }
 
     /// Stencil bits (0 or 8).
@@ -364,8 +411,13 @@ impl Framebuffer {
         };
         let px_bytes = n * ty.bytes();
         let w = self.width;
+        // A recorded clear: every row is the clear colour.
+        let uniform = self.pending_color.map(|c| vec![c; w]);
         for row in 0..self.height {
-            let src = &self.color[row * w..(row + 1) * w];
+            let src = match &uniform {
+                Some(u) => &u[..],
+                None => &self.color[row * w..(row + 1) * w],
+            };
             let dst_row = if y_up { self.height - 1 - row } else { row };
             // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
             // least `width * px_bytes` bytes; `out` is that row's first `width * px_bytes`.
@@ -402,11 +454,16 @@ pub struct Target<'a> {
     pub depth: &'a mut [u32],
     /// The band's stencil rows (empty without a stencil buffer).
     pub stencil: &'a mut [u8],
+    /// A recorded colour clear this band has not written yet ([`Target::resolve`]).
+    pub pending_color: Option<[u8; 4]>,
+    /// A recorded depth clear this band has not written yet ([`Target::resolve`]).
+    pub pending_depth: Option<u32>,
 }
 
 impl Framebuffer {
     /// The whole framebuffer as one band.
     pub fn target(&mut self) -> Target<'_> {
+        self.resolve();
         self.uniform_color = None;
         Target {
             width: self.width,
@@ -417,13 +474,18 @@ impl Framebuffer {
             color: &mut self.color,
             depth: &mut self.depth,
             stencil: &mut self.stencil,
+            pending_color: None,
+            pending_depth: None,
         }
     }
 
     /// The framebuffer split into bands of `band_rows` rows (an even number, so 2x2 quads
-    /// never straddle two bands), for threads that each own some bands.
+    /// never straddle two bands), for threads that each own some bands. Recorded clears
+    /// move into the bands: the caller must [`Target::resolve`] every band before it draws
+    /// into it, and even when it does not.
     pub fn bands(&mut self, band_rows: usize) -> Vec<Target<'_>> {
         self.uniform_color = None;
+        let (pending_color, pending_depth) = (self.pending_color.take(), self.pending_depth.take());
         let (w, h, format) = (self.width, self.height, self.format);
         let band_rows = band_rows.max(2) & !1;
         let n = w * band_rows;
@@ -443,6 +505,8 @@ impl Framebuffer {
                 color: color.next().unwrap_or_default(),
                 depth: depth.as_mut().and_then(|d| d.next()).unwrap_or_default(),
                 stencil: stencil.as_mut().and_then(|s| s.next()).unwrap_or_default(),
+                pending_color,
+                pending_depth,
             });
             y0 += rows;
         }
@@ -451,6 +515,17 @@ impl Framebuffer {
 }
 
 impl Target<'_> {
+    /// Writes the band's share of the recorded clears (see [`Framebuffer::bands`]).
+    #[inline]
+    pub fn resolve(&mut self) {
+        if let Some(c) = self.pending_color.take() {
+            fill_color(self.color, c);
+        }
+        if let Some(d) = self.pending_depth.take() {
+            self.depth.fill(d);
+        }
+    }
+
     /// Clears the band's colour rows to `color` and depth rows to `depth` (each when
     /// given, in stored form): [`Framebuffer::clear_rows`] for one band of a threaded clear.
     pub fn clear(&mut self, color: Option<[u8; 4]>, depth: Option<u32>) {
@@ -565,6 +640,39 @@ mod tests {
             assert!(fb.target().color.iter().all(|&c| c == v));
             assert_eq!(fb.uniform_color, None, "a target may write colour");
         }
+    }
+
+    /// A recorded clear reads back as the clear values everywhere, is written by
+    /// `target`, and moves into the bands of `bands`, each writing only its rows.
+    #[test]
+    fn deferred_clear_reads_and_resolves() {
+        let (w, h) = (7usize, 9usize);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba, DepthFormat::Z24, false);
+        fb.defer_clear(Some([1, 2, 3, 4]), Some(77));
+        assert!(
+            fb.color.iter().all(|&c| c == [0, 0, 0, 0]),
+            "not written yet"
+        );
+        assert!((0..w * h).all(|i| fb.color_at(i) == [1, 2, 3, 4] && fb.depth_at(i) == 77));
+        let mut out = vec![0u8; w * h * 4];
+        // SAFETY: `out` holds `h` rows of `w * 4` bytes.
+        unsafe { fb.copy_to_user(out.as_mut_ptr(), w * 4, true) };
+        assert!(out.chunks(4).all(|p| p == [1, 2, 3, 4]));
+        {
+            let mut bands = fb.bands(4);
+            assert_eq!(fb_pending(&bands[0]), (Some([1, 2, 3, 4]), Some(77)));
+            bands[1].resolve();
+        }
+        assert_eq!((fb.pending_color, fb.pending_depth), (None, None));
+        // Only band 1 (rows 4..8) was resolved.
+        assert!((0..w * h).all(|i| (fb.depth[i] == 77) == (4 * w..8 * w).contains(&i)));
+        fb.defer_clear(None, Some(5));
+        let t = fb.target();
+        assert!(t.depth.iter().all(|&d| d == 5));
+    }
+
+    fn fb_pending(t: &Target<'_>) -> (Option<[u8; 4]>, Option<u32>) {
+        (t.pending_color, t.pending_depth)
     }
 
     #[test]

@@ -117,6 +117,7 @@ impl Context {
         let (Some(fb), acc) = (self.fb.as_mut(), &mut self.accum.buffer) else {
             return Ok(());
         };
+        fb.resolve();
         fb.uniform_color = None;
         let format = fb.format;
         for y in y0..y1 {

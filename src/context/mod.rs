@@ -321,10 +321,12 @@ impl Context {
             for x in 0..fb.width {
                 let i = row * fb.width + x;
                 match fb.depth_format {
-                    DepthFormat::Z16 => out.extend_from_slice(&(fb.depth[i] as u16).to_ne_bytes()),
+                    DepthFormat::Z16 => {
+                        out.extend_from_slice(&(fb.depth_at(i) as u16).to_ne_bytes())
+                    }
                     DepthFormat::Z24 => {
                         let s = fb.stencil.get(i).copied().unwrap_or(0) as u32;
-                        out.extend_from_slice(&(fb.depth[i] | (s << 24)).to_ne_bytes());
+                        out.extend_from_slice(&(fb.depth_at(i) | (s << 24)).to_ne_bytes());
                     }
                     DepthFormat::None => {}
                 }
@@ -482,7 +484,17 @@ impl Context {
         let quad_path = region != [0, 0, fb.width as i64, fb.height as i64]
             || color_mask != [true; 4]
             || (st.frag.stencil_front.writemask & 0xFF) != 0xFF;
-        if mask & GL_COLOR_BUFFER_BIT != 0 && color_mask.iter().any(|&m| m) {
+        if !quad_path {
+            // The whole colour and depth buffers: recorded, written later by whatever
+            // reads or draws them (`Framebuffer::defer_clear`).
+            let color = (mask & GL_COLOR_BUFFER_BIT != 0).then(|| fb.clear_value(st.clear_color));
+            let depth = (mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask)
+                .then(|| fb.depth_format.quantize_clear(st.clear_depth));
+            fb.defer_clear(color, depth);
+        } else {
+            fb.resolve();
+        }
+        if quad_path && mask & GL_COLOR_BUFFER_BIT != 0 && color_mask.iter().any(|&m| m) {
             let v = if quad_path {
                 fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte))
             } else {
@@ -512,7 +524,7 @@ impl Context {
                 }
             }
         }
-        if mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask && !fb.depth.is_empty() {
+        if quad_path && mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask && !fb.depth.is_empty() {
             let v = if quad_path {
                 fb.depth_format.quantize(st.clear_depth as f32)
             } else {

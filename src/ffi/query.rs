@@ -310,7 +310,7 @@ fn read_pixels(
             match kind {
                 ReadKind::Color(map, n) if transfer => {
                     let f = |u: u8| u as f32 * (1.0f32 / 255.0);
-                    let mut rgba = fb.color[idx].map(f);
+                    let mut rgba = fb.color_at(idx).map(f);
                     rgba = tr.apply_scale_bias(rgba);
                     if tr.map_color {
                         rgba = maps.map_rgba(rgba);
@@ -331,7 +331,7 @@ fn read_pixels(
                     }
                 }
                 ReadKind::Color(map, n) => {
-                    let px = fb.color[idx];
+                    let px = fb.color_at(idx);
                     for (k, &ch) in map.iter().take(n).enumerate() {
                         // SAFETY: k * tsize < bpp.
                         let q = unsafe { p.add(k * tsize) };
@@ -351,7 +351,7 @@ fn read_pixels(
                     }
                 }
                 ReadKind::Depth => {
-                    let z = fb.depth[idx];
+                    let z = fb.depth_at(idx);
                     match (ty, fb.depth_format, depth_scale_bias) {
                         // Mesa's `read_uint_depth_pixels`: the stored bits replicated
                         (GL_UNSIGNED_INT, DepthFormat::Z24, None) => {

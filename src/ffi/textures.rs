@@ -317,7 +317,7 @@ pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u
             if gx < 0 || gx >= fb.width as i64 {
                 continue;
             }
-            out[row * w + col] = fb.color[fy * fb.width + gx as usize];
+            out[row * w + col] = fb.color_at(fy * fb.width + gx as usize);
         }
     }
     out
@@ -411,7 +411,7 @@ pub(crate) fn read_texels(
             if gx < 0 || gx >= fb.width as i64 {
                 continue;
             }
-            let z = fb.depth[fy * fb.width + gx as usize];
+            let z = fb.depth_at(fy * fb.width + gx as usize);
             let z = match scale_bias {
                 Some(sb) => shadow::convert_scaled(z, fb_bits as u8, storage.depth_bits(), sb),
                 None => shadow::convert(z, fb_bits as u8, storage.depth_bits()),

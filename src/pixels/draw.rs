@@ -384,6 +384,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         };
         let Some(fb) = ctx.fb.as_mut() else { return };
         ctx.dirty = true;
+        fb.resolve();
         fb.uniform_color = None;
         for j in 0..h {
             for i in 0..w {
@@ -409,8 +410,9 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         CopyKind::Color => {
             let texels: Vec<[f32; 4]> = (0..w * h)
                 .map(|k| {
-                    src_index(k % w, k / w)
-                        .map_or([0.0; 4], |s| fb.color[s].map(|v| v as f32 * (1.0 / 255.0)))
+                    src_index(k % w, k / w).map_or([0.0; 4], |s| {
+                        fb.color_at(s).map(|v| v as f32 * (1.0 / 255.0))
+                    })
                 })
                 .collect();
             let c = shade_colors(ctx, &texels, w, true);
@@ -419,7 +421,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         CopyKind::Depth => {
             let max = fb.depth_format.max_value() as f32;
             let z: Vec<f32> = (0..w * h)
-                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| fb.depth[s] as f32 / max))
+                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| fb.depth_at(s) as f32 / max))
                 .collect();
             let c = ctx.state.current.color.map(unorm8);
             run(ctx, &q, Source::Depth(&z, c));

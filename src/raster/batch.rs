@@ -419,6 +419,8 @@ fn draw_bin(
     band: &mut Target<'_>,
     s: &mut Stats,
 ) {
+    // The band's share of a deferred glClear, written while the band is in the cache.
+    band.resolve();
     if bin.is_empty() {
         return;
     }
