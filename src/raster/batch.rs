@@ -23,7 +23,8 @@ use rayon::prelude::*;
 use std::cell::RefCell;
 use std::sync::{Arc, Condvar, Mutex};
 
-/// Rows per band (even, so 2x2 quads stay inside one band).
+/// Rows per band (even, so 2x2 quads stay inside one band) unless `SOFTGL_BAND_ROWS`
+/// says otherwise ([`Tuning`]).
 pub const BAND_ROWS: usize = 32;
 /// Pixels of triangle boxes that make a batch worth splitting over threads.
 const PARALLEL_WORK: i64 = 32 * 1024;
@@ -38,6 +39,33 @@ const MAX_WORK: i64 = 1 << 20;
 const BAND_AREA: i64 = 4096;
 /// Single-threaded, pixels of triangle boxes after which a batch is drawn.
 const MAX_WORK_LOCAL: i64 = 1 << 26;
+
+/// The batching constants, read once; the environment variables `SOFTGL_BAND_ROWS`,
+/// `SOFTGL_MAX_WORK` and `SOFTGL_BAND_AREA` override them for measurements (the images
+/// are the same for any values: each pixel still sees its fragments in primitive order).
+#[derive(Clone, Copy, Debug)]
+struct Tuning {
+    /// Rows per band (even).
+    band_rows: usize,
+    /// Threaded: pixels of boxes after which a batch goes to the pool.
+    max_work: i64,
+    /// Single-threaded: the box size from which triangles are batched into bands.
+    band_area: i64,
+}
+
+/// The batching constants ([`Tuning`]).
+fn tuning() -> Tuning {
+    static T: std::sync::OnceLock<Tuning> = std::sync::OnceLock::new();
+    *T.get_or_init(|| {
+        let var = |k: &str| std::env::var(k).ok().and_then(|v| v.parse::<i64>().ok());
+        Tuning {
+            band_rows: var("SOFTGL_BAND_ROWS")
+                .map_or(BAND_ROWS, |v| (v.clamp(2, 4096) as usize) & !1),
+            max_work: var("SOFTGL_MAX_WORK").map_or(MAX_WORK, |v| v.max(1)),
+            band_area: var("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
+        }
+    })
+}
 
 /// A batched triangle without its varyings (those are in [`Batch::planes`] and
 /// [`Batch::flats`], `nvary` per triangle).
@@ -162,6 +190,7 @@ struct JobInputs {
     n_units: usize,
     region: [i64; 4],
     nvary: usize,
+    band_rows: usize,
 }
 
 // SAFETY: the pointers are only dereferenced by the job, while the `Rasterizer` that made
@@ -178,6 +207,8 @@ pub struct Rasterizer<'a, 'f> {
     region: [i64; 4],
     nvary: usize,
     threads: bool,
+    /// The batching constants.
+    tune: Tuning,
     /// The batch being filled.
     batch: Batch,
     /// The other batch, `None` while a job draws it.
@@ -212,7 +243,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let threads = crate::cpu::threads() > 1 && rayon::current_thread_index().is_none();
         let pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
         let [mut batch, mut spare] = pool.batches;
-        let nb = fb.height.div_ceil(BAND_ROWS);
+        let tune = tuning();
+        let nb = fb.height.div_ceil(tune.band_rows);
         for b in [&mut batch, &mut spare] {
             b.clear();
             b.bins.resize_with(nb, Vec::new);
@@ -224,6 +256,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             region,
             nvary: nvary.min(crate::geometry::MAX_VARY),
             threads,
+            tune,
             batch,
             spare: Some(spare),
             job: pool.job,
@@ -254,7 +287,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         stats.tris_rasterized += 1;
-        if !self.threads && area < BAND_AREA {
+        if !self.threads && area < self.tune.band_area {
             // Drawn at once, after the batched triangles before it (primitive order).
             self.flush(stats);
             raster_triangle(
@@ -269,8 +302,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         }
         let y0 = t.bbox[1].max(self.region[1]) as usize;
         let y1 = t.bbox[3].min(self.region[3] - 1) as usize;
-        self.batch
-            .push(t, self.nvary, y0 / BAND_ROWS, y1 / BAND_ROWS);
+        self.batch.push(
+            t,
+            self.nvary,
+            y0 / self.tune.band_rows,
+            y1 / self.tune.band_rows,
+        );
         self.batch.work += area;
         if !self.threads {
             if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= MAX_WORK_LOCAL {
@@ -278,7 +315,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             }
             return;
         }
-        if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= MAX_WORK {
+        if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= self.tune.max_work {
             // Hand the full batch to the pool and keep setting up the next one meanwhile.
             self.wait(stats);
             self.launch();
@@ -295,7 +332,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let (plan, units, region, nvary) = (self.plan, self.units, self.region, self.nvary);
         if !self.threads && self.batch.heads.len() > 1 {
             // One band after the other, each with all of its triangles.
-            let mut bands = self.fb.bands(BAND_ROWS);
+            let mut bands = self.fb.bands(self.tune.band_rows);
             for (band, bin) in bands.iter_mut().zip(&self.batch.bins) {
                 draw_bin(&self.batch, bin, nvary, region, plan, units, band, stats);
             }
@@ -307,7 +344,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 raster_triangle(&t, region, plan, units, &mut target, stats);
             }
         } else {
-            let s = draw_bands(&self.batch, self.fb, nvary, region, plan, units);
+            let rows = self.tune.band_rows;
+            let s = draw_bands(&self.batch, self.fb, nvary, region, plan, units, rows);
             stats.add_pixels(&s);
         }
         self.batch.clear();
@@ -351,6 +389,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             n_units: self.units.len(),
             region: self.region,
             nvary: self.nvary,
+            band_rows: self.tune.band_rows,
         };
         let job = Arc::clone(&self.job);
         rayon::spawn(move || {
@@ -371,7 +410,15 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                         std::slice::from_raw_parts(inputs.units, inputs.n_units),
                     )
                 };
-                s = draw_bands(batch, fb, inputs.nvary, inputs.region, &inputs.plan, units);
+                s = draw_bands(
+                    batch,
+                    fb,
+                    inputs.nvary,
+                    inputs.region,
+                    &inputs.plan,
+                    units,
+                    inputs.band_rows,
+                );
             }
             let mut st = job.state.lock().unwrap_or_else(|e| e.into_inner());
             st.batch = batch;
@@ -383,7 +430,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     }
 }
 
-/// Draws `batch` into `fb` with the pool, each band drawing its own bin.
+/// Draws `batch` into `fb` with the pool, each band (of `band_rows` rows) drawing its own
+/// bin.
 fn draw_bands(
     batch: &Batch,
     fb: &mut Framebuffer,
@@ -391,8 +439,9 @@ fn draw_bands(
     region: [i64; 4],
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
+    band_rows: usize,
 ) -> Stats {
-    let mut bands = fb.bands(BAND_ROWS);
+    let mut bands = fb.bands(band_rows);
     bands
         .par_iter_mut()
         .zip(batch.bins.par_iter())
