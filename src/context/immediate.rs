@@ -39,7 +39,7 @@ impl Immediate {
 
 /// The attributes of a vertex other than position and colour, shared by consecutive
 /// vertices that do not change them.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct Rest {
     normal: [f32; 3],
     texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
@@ -49,28 +49,6 @@ struct Rest {
 }
 
 impl Rest {
-    /// Whether `self` and `o` hold the same bits (a bitwise compare: it vectorises where
-    /// the float compare took a branch per value, and it keeps -0.0 and NaN payloads
-    /// apart, which the float compare merged or split).
-    #[inline]
-    fn same_bits(&self, o: &Rest) -> bool {
-        let bits = |r: &Rest| {
-            let mut b = [0u32; 3 + 4 * MAX_TEXTURE_UNITS + 6];
-            let vals = r
-                .normal
-                .iter()
-                .chain(r.texcoord.as_flattened())
-                .chain([&r.fog_coord])
-                .chain(&r.secondary);
-            for (d, v) in b.iter_mut().zip(vals) {
-                *d = v.to_bits();
-            }
-            b[b.len() - 1] = r.edge_flag as u32;
-            b
-        };
-        bits(self) == bits(o)
-    }
-
     fn of(v: &VertexIn) -> Self {
         Rest {
             normal: v.normal,
@@ -106,7 +84,7 @@ impl ImmVerts {
     /// Appends `v` (GL_OUT_OF_MEMORY when memory runs out).
     pub fn push(&mut self, v: &VertexIn) -> GlResult<()> {
         let rest = Rest::of(v);
-        if !self.rest.last().is_some_and(|r| r.same_bits(&rest)) {
+        if self.rest.last() != Some(&rest) {
             self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
             self.rest.push(rest);
         }
