@@ -7,6 +7,9 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::row_span;
+
+#[cfg(target_arch = "x86_64")]
+mod vec8;
 #[cfg(target_arch = "x86_64")]
 use crate::fragment::simd_tex::tex_row;
 use crate::fragment::span::{
@@ -155,6 +158,19 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
     let vector = crate::texture::fast_avx2::available();
     #[cfg(target_arch = "x86_64")]
     let simd = vector && crate::fragment::simd_tex::plan_ok(plan, fb);
+    #[cfg(target_arch = "x86_64")]
+    if simd && fast::vec8_enabled() {
+        // SAFETY: `simd` implies AVX2, FMA exactly when `M::FUSED` in the callers that
+        // reach here, and a plan `plan_ok` accepts.
+        unsafe {
+            if M::FUSED {
+                vec8::rows::<true, DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
+            } else {
+                vec8::rows::<false, DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
+            }
+        }
+        return;
+    }
     #[cfg(target_arch = "x86_64")]
     let over = plan
         .blend

@@ -12,7 +12,8 @@
 //!   for every byte, checked by a test), so REPLACE never touches floats;
 //! - the level of detail is only computed when the filters need it (`needs_lod`).
 //!
-//! `SOFTGL_TEX_PATH=general` turns the fast path off (to compare the two paths).
+//! `SOFTGL_TEX_PATH=general` turns the fast path off (to compare the two paths),
+//! `SOFTGL_TEX_PATH=array` keeps it but without the register walk.
 
 use super::env::{Arg, Combine, CombineFn, Operand, Source};
 use super::sample::select_levels;
@@ -50,6 +51,13 @@ pub struct FastEnv {
 pub fn enabled() -> bool {
     static ON: OnceLock<bool> = OnceLock::new();
     *ON.get_or_init(|| std::env::var("SOFTGL_TEX_PATH").map_or(true, |v| v != "general"))
+}
+
+/// Whether the texture fast path keeps a chunk in registers (`raster::textured::vec8`);
+/// `SOFTGL_TEX_PATH=array` keeps the array walk (to compare the two).
+pub fn vec8_enabled() -> bool {
+    static ON: OnceLock<bool> = OnceLock::new();
+    *ON.get_or_init(|| std::env::var("SOFTGL_TEX_PATH").map_or(true, |v| v != "array"))
 }
 
 impl FastEnv {
@@ -411,7 +419,7 @@ mod tests {
     }
 
     /// Random chunks through [`chunk_u8`] (8-wide when the CPU has AVX2, and the scalar
-    /// code) against [`quad_u8`] per quad: the same bytes in every live lane. Coordinates
+    /// code) and the register sampler (`fast_avx2::chunk`) against [`quad_u8`] per quad: the same bytes in every live lane. Coordinates
     /// range from small steps (one level for the whole chunk) to huge and NaN values (the
     /// vector sampler declines).
     fn chunks_match_quads(p: &UnitPlan<'_>, rnd: &mut dyn FnMut() -> u32) {
@@ -438,9 +446,19 @@ mod tests {
             if n % 50 == 7 {
                 s[0][3] = [f32::NAN, 3.0e9, -1.0e12, 4.2e6][n / 50];
             }
+            let mut outs = Vec::new();
             for vector in [false, super::fast_avx2::available()] {
                 let mut out = [[[0u8; 4]; LANES]; 2];
                 chunk_u8(p, &s, &t, &live, vector, &mut out);
+                outs.push((if vector { "vector" } else { "scalar" }, out));
+            }
+            #[cfg(target_arch = "x86_64")]
+            if super::fast_avx2::available() {
+                // SAFETY: the CPU has AVX2.
+                let out = unsafe { super::fast_avx2::chunk::texels_arrays(p, &s, &t, &live) };
+                outs.push(("registers", out));
+            }
+            for (path, out) in outs {
                 for j in 0..LANES / 2 {
                     let (l, r) = (2 * j, 2 * j + 1);
                     if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
@@ -455,7 +473,7 @@ mod tests {
                     for k in 0..4 {
                         let lane_live = [live[0][l], live[0][r], live[1][l], live[1][r]][k];
                         if lane_live {
-                            assert_eq!(got[k], q[k], "vector {vector} chunk {n} quad {j} px {k}");
+                            assert_eq!(got[k], q[k], "{path} chunk {n} quad {j} px {k}");
                         }
                     }
                 }

@@ -18,6 +18,8 @@
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
+pub mod chunk;
+
 use super::{Level, Wrap};
 
 /// Whether this CPU can run the 8-wide sampler (decided once).
@@ -215,22 +217,36 @@ impl RowSampler<'_> {
         wmip: &[i32; 8],
         out: &mut [[u8; 4]; 8],
     ) -> bool {
-        // SAFETY: the arrays are 8 f32 / i32 (32 bytes); unaligned loads.
-        let (vs, vt) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
-        let mut ok = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
-        let mut v = level8(self.a, self.linear, self.wrap, vs, vt, &mut ok);
-        if let Some(b) = self.b {
-            let vb = level8(b, self.linear, self.wrap, vs, vt, &mut ok);
-            // SAFETY: 8 i32.
-            let w = unsafe { _mm256_loadu_si256(wmip.as_ptr() as *const __m256i) };
-            v = lerp8(v, vb, w);
+        // SAFETY: the arrays are 8 f32 / i32 (32 bytes); unaligned loads and store.
+        unsafe {
+            let (vs, vt) = (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr()));
+            let w = _mm256_loadu_si256(wmip.as_ptr() as *const __m256i);
+            let (v, ok) = self.row_v(vs, vt, w);
+            if ok {
+                _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, v);
+            }
+            ok
         }
-        if _mm256_movemask_ps(ok) != 0xff {
-            return false;
+    }
+
+    /// [`RowSampler::row`] on registers: the texels and whether they are valid (else the
+    /// row must be sampled by the scalar code).
+    ///
+    /// # Safety
+    /// As [`RowSampler::row`].
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub unsafe fn row_v(&self, s: __m256, t: __m256, wmip: __m256i) -> (__m256i, bool) {
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let mut ok = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+            let mut v = level8(self.a, self.linear, self.wrap, s, t, &mut ok);
+            if let Some(b) = self.b {
+                let vb = level8(b, self.linear, self.wrap, s, t, &mut ok);
+                v = lerp8(v, vb, wmip);
+            }
+            (v, _mm256_movemask_ps(ok) == 0xff)
         }
-        // SAFETY: `out` is 32 bytes.
-        unsafe { _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, v) };
-        true
     }
 
     /// Without AVX2 the vector sampler never runs.

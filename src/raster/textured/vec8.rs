@@ -1,0 +1,169 @@
+//! The 8-wide chunk walk of the texture fast path: everything of a chunk (two rows of 8
+//! pixels) stays in AVX2 registers from the planes to the store — lane masks from the
+//! row spans, `1 / w`, the projected coordinates, the level of detail of its four quads,
+//! the gathers and the environment. It computes exactly what the array walk of
+//! [`super::rows_tex_fast`] computes (same operations in the same order), and hands a
+//! chunk it cannot sample in registers (levels that differ between its quads, a LOD form
+//! it does not vectorise, a coordinate the vector sampler declines) to
+//! [`crate::texture::fast::chunk_u8`], the array sampler, which gives the same bytes.
+
+use super::super::row_span;
+use crate::fragment::simd_tex::{eval8, shade8, Row8, White};
+use crate::fragment::span::LANES;
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::geometry::VARY_TEX;
+use crate::stats::Stats;
+use crate::texture::fast::FastEnv;
+use crate::texture::fast_avx2::chunk::{bits, Sampling};
+use crate::texture::UnitPlan;
+use std::arch::x86_64::*;
+
+/// Whether `p` is the constant plane 1.0 (its value is exactly 1.0 at every pixel).
+fn is_one(p: &Plane) -> bool {
+    p.a0 == 1.0 && p.dadx == 0.0 && p.dady == 0.0
+}
+
+/// The lane bounds of a row span as `(a − 1, z + 1)` (no span: no lane is inside).
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn bounds(s: Option<(i64, i64)>) -> (__m256i, __m256i) {
+    match s {
+        Some((a, z)) => (
+            _mm256_set1_epi32(a as i32 - 1),
+            _mm256_set1_epi32(z as i32 + 1),
+        ),
+        None => (_mm256_set1_epi32(i32::MAX), _mm256_set1_epi32(i32::MIN)),
+    }
+}
+
+/// Lanes `xi` with `a <= xi <= z`, from [`bounds`].
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn inside(xi: __m256i, (am1, zp1): (__m256i, __m256i)) -> __m256i {
+    _mm256_and_si256(_mm256_cmpgt_epi32(xi, am1), _mm256_cmpgt_epi32(zp1, xi))
+}
+
+/// Shades the rows `b` of `t` through the 8-wide walk (see the module comment). The
+/// caller has checked that [`crate::fragment::simd_tex::plan_ok`] accepts the plan.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2 (and FMA when `FMA`), on a CPU that
+/// has them.
+#[inline(always)]
+pub(in crate::raster) unsafe fn rows<
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    u: &UnitPlan<'_>,
+    env: FastEnv,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let white = White::of::<FLAT, PERSP>(t, env);
+    let q_one = !PERSP && is_one(&t.vary[VARY_TEX + 3]);
+    let over = plan
+        .blend
+        .as_ref()
+        .is_some_and(crate::fragment::simd::blend_is_over);
+    let blend = plan.blend.is_some();
+    // SAFETY (whole loop): AVX2 (+FMA) context from the caller; `shade8` gets lanes
+    // inside their row (the spans lie in `b`, which lies in the target).
+    unsafe {
+        let sampling = Sampling::new(u);
+        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        let lane_f = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let one = _mm256_set1_ps(1.0);
+        let vary = &t.vary[VARY_TEX..];
+        let mut qy = b[1] & !1;
+        while qy <= b[3] {
+            let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
+            let lo = spans.iter().flatten().map(|s| s.0).min();
+            let hi = spans.iter().flatten().map(|s| s.1).max();
+            let (Some(lo), Some(hi)) = (lo, hi) else {
+                qy += 2;
+                continue;
+            };
+            let bnd = [bounds(spans[0]), bounds(spans[1])];
+            let fy = [_mm256_set1_ps(qy as f32), _mm256_set1_ps((qy + 1) as f32)];
+            let mut x = lo & !1;
+            while x <= hi {
+                let xi = _mm256_add_epi32(_mm256_set1_epi32(x as i32), lane_i);
+                let live = [inside(xi, bnd[0]), inside(xi, bnd[1])];
+                let lm = [bits(live[0]), bits(live[1])];
+                if lm[0] | lm[1] == 0 {
+                    x += LANES as i64;
+                    continue;
+                }
+                // Integers below 2^24 are exact in f32: this is `(x + i) as f32`.
+                let fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane_f);
+                let mut xw = [one; 2];
+                let mut oow = [one; 2];
+                let mut s = [one; 2];
+                let mut tt = [one; 2];
+                for r in 0..2 {
+                    let mut sr = eval8::<FMA>(&vary[0], fx, fy[r]);
+                    let mut tv = eval8::<FMA>(&vary[1], fx, fy[r]);
+                    if PERSP {
+                        xw[r] = eval8::<FMA>(&t.w, fx, fy[r]);
+                        oow[r] = _mm256_div_ps(one, xw[r]);
+                        sr = _mm256_mul_ps(sr, oow[r]);
+                        tv = _mm256_mul_ps(tv, oow[r]);
+                    }
+                    if !q_one {
+                        let q = eval8::<FMA>(&vary[3], fx, fy[r]);
+                        let q = if PERSP { _mm256_mul_ps(q, oow[r]) } else { q };
+                        let rq = _mm256_div_ps(one, q);
+                        sr = _mm256_mul_ps(sr, rq);
+                        tv = _mm256_mul_ps(tv, rq);
+                    }
+                    s[r] = sr;
+                    tt[r] = tv;
+                }
+                let texv = sampling.texels(s, tt, live);
+                for r in 0..2 {
+                    if lm[r] == 0 {
+                        continue;
+                    }
+                    let row = Row8 {
+                        t,
+                        plan,
+                        env,
+                        white,
+                        py: (qy + r as i64) as usize,
+                        x: x as usize,
+                        live: live[r],
+                        tex: texv[r],
+                        fx,
+                        fy: fy[r],
+                        w: xw[r],
+                        oow: oow[r],
+                    };
+                    match (blend, over) {
+                        (false, _) => {
+                            shade8::<FMA, DEPTH, FLAT, PERSP, false, false>(&row, fb, stats)
+                        }
+                        (true, false) => {
+                            shade8::<FMA, DEPTH, FLAT, PERSP, true, false>(&row, fb, stats)
+                        }
+                        (true, true) => {
+                            shade8::<FMA, DEPTH, FLAT, PERSP, true, true>(&row, fb, stats)
+                        }
+                    }
+                }
+                x += LANES as i64;
+            }
+            qy += 2;
+        }
+    }
+}

@@ -1,0 +1,328 @@
+//! The sampling half of the 8-wide texture walk (`raster::textured::vec8`): the texels
+//! of a chunk (two rows of 8 pixels) from coordinates in registers, with the level of
+//! detail of its four quads computed in lanes. Bit for bit what [`fast::chunk_u8`] gives
+//! (same operations in the same order as [`crate::texture::lod::compute`] and
+//! [`select_levels`]); a chunk whose quads choose different levels, a LOD form not
+//! vectorised here, or a coordinate the vector sampler declines goes through
+//! [`fast::chunk_u8`] itself.
+
+#![cfg(target_arch = "x86_64")]
+// Lane loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
+
+use super::super::fast;
+use super::super::sample::select_levels;
+use super::super::{Filter, Level, Lod, MipFilter, UnitPlan};
+use super::{handles, RowSampler};
+use crate::fragment::span::LANES;
+use std::arch::x86_64::*;
+
+/// Integer bitmask of a lane mask.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+pub unsafe fn bits(m: __m256i) -> u32 {
+    // SAFETY: forwarded from the caller.
+    unsafe { _mm256_movemask_ps(_mm256_castsi256_ps(m)) as u32 }
+}
+
+/// Each lane's quad's top-left value (lanes [0, 0, 2, 2] of each 128-bit half).
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn tl(v: __m256) -> __m256 {
+    _mm256_permute_ps::<0xA0>(v)
+}
+
+/// Each lane's quad's top-right value (lanes [1, 1, 3, 3] of each 128-bit half).
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn tr(v: __m256) -> __m256 {
+    _mm256_permute_ps::<0xF5>(v)
+}
+
+/// What the level of detail needs, per triangle (the base level's size, the LOD
+/// parameters as vectors).
+#[derive(Clone, Copy)]
+struct LodConsts {
+    /// Base level width and height.
+    w: f32,
+    h: f32,
+    /// Quantised bias (added when non-zero).
+    bias: f32,
+    /// Clamps as llvmpipe applies them.
+    max_lod: Option<f32>,
+    min_lod: Option<f32>,
+    /// `first`, `last` levels.
+    first: i32,
+    last: i32,
+    /// The key of a magnified quad (`first·2` when MAG and MIN filter alike, else −2).
+    mag_key: i32,
+}
+
+/// The per-quad LOD of a chunk for LINEAR mip filtering on the general LOD path
+/// ([`crate::texture::lod::compute`] then [`select_levels`] per quad, with rho from
+/// TL/TR/BL, in lanes: both lanes of a quad carry its values): the key of the levels the
+/// quads with a live pixel (`qlive`) share — `l0·2 + 1` for a blend of `l0` and `l0 + 1`,
+/// `l·2` for the single level `l`, −2 for magnification with a filter of its own — and the
+/// blend weights `trunc(fpart·256)`; `None` when the live quads differ.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn lod_key(
+    c: &LodConsts,
+    s: [__m256; 2],
+    t: [__m256; 2],
+    qlive: u32,
+) -> Option<(i32, __m256i)> {
+    // SAFETY: AVX2 context (the caller).
+    unsafe {
+        let (w, h) = (_mm256_set1_ps(c.w), _mm256_set1_ps(c.h));
+        let s0 = tl(s[0]);
+        let t0 = tl(t[0]);
+        let a = _mm256_mul_ps(_mm256_sub_ps(tr(s[0]), s0), w);
+        let b = _mm256_mul_ps(_mm256_sub_ps(tr(t[0]), t0), h);
+        let cc = _mm256_mul_ps(_mm256_sub_ps(tl(s[1]), s0), w);
+        let d = _mm256_mul_ps(_mm256_sub_ps(tl(t[1]), t0), h);
+        let rx = _mm256_add_ps(_mm256_mul_ps(a, a), _mm256_mul_ps(b, b));
+        let ry = _mm256_add_ps(_mm256_mul_ps(cc, cc), _mm256_mul_ps(d, d));
+        // `rx.max(ry)` ignores a NaN operand, then non-finite → 0; both are sums of
+        // squares (≥ 0 or NaN), so NaN → 0 before `maxps` is the same.
+        let rx = _mm256_and_ps(rx, _mm256_cmp_ps::<_CMP_ORD_Q>(rx, rx));
+        let ry = _mm256_and_ps(ry, _mm256_cmp_ps::<_CMP_ORD_Q>(ry, ry));
+        let r = _mm256_max_ps(rx, ry);
+        let r = _mm256_and_ps(
+            r,
+            _mm256_cmp_ps::<_CMP_LT_OQ>(r, _mm256_set1_ps(f32::INFINITY)),
+        );
+        // fast_log2: (exponent − 1) + mantissa in [1, 2).
+        let rb = _mm256_castps_si256(r);
+        let e = _mm256_sub_epi32(
+            _mm256_and_si256(_mm256_srli_epi32::<23>(rb), _mm256_set1_epi32(0xff)),
+            _mm256_set1_epi32(128),
+        );
+        let m = _mm256_castsi256_ps(_mm256_or_si256(
+            _mm256_and_si256(rb, _mm256_set1_epi32(0x007f_ffff)),
+            _mm256_set1_epi32(0x3f80_0000),
+        ));
+        let mut lod = _mm256_mul_ps(_mm256_add_ps(_mm256_cvtepi32_ps(e), m), _mm256_set1_ps(0.5));
+        if c.bias != 0.0 {
+            lod = _mm256_add_ps(lod, _mm256_set1_ps(c.bias));
+        }
+        if let Some(mx) = c.max_lod {
+            lod = _mm256_min_ps(lod, _mm256_set1_ps(mx));
+        }
+        if let Some(mn) = c.min_lod {
+            lod = _mm256_max_ps(lod, _mm256_set1_ps(mn));
+        }
+        let pos = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(lod, _mm256_setzero_ps()));
+        let f = _mm256_floor_ps(lod);
+        let fpart = _mm256_sub_ps(lod, f);
+        let l0 = _mm256_add_epi32(_mm256_cvttps_epi32(f), _mm256_set1_epi32(c.first));
+        let first = _mm256_set1_epi32(c.first);
+        let below = _mm256_cmpgt_epi32(first, l0);
+        let in_hi = _mm256_cmpgt_epi32(_mm256_set1_epi32(c.last), l0);
+        let blend_key = _mm256_or_si256(_mm256_slli_epi32::<1>(l0), _mm256_set1_epi32(1));
+        let k = _mm256_blendv_epi8(_mm256_set1_epi32(c.last * 2), blend_key, in_hi);
+        let k = _mm256_blendv_epi8(k, _mm256_slli_epi32::<1>(first), below);
+        let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), k, pos);
+        let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
+        let kb = _mm256_permutevar8x32_epi32(key, lane0);
+        if bits(_mm256_cmpeq_epi32(key, kb)) & qlive != qlive {
+            return None;
+        }
+        let wmip = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0)));
+        Some((_mm256_cvtsi256_si32(kb), wmip))
+    }
+}
+
+/// How a triangle's chunks are sampled (decided once per triangle).
+pub struct Sampling<'a> {
+    /// The unit.
+    u: &'a UnitPlan<'a>,
+    /// Without a LOD: the one sampler and its mip weights for every chunk.
+    fixed: Option<(RowSampler<'a>, __m256i)>,
+    /// The LOD form [`lod_key`] vectorises, every level in the vector sampler's range.
+    vec_lod: bool,
+    /// Its constants.
+    lc: LodConsts,
+}
+
+impl<'a> Sampling<'a> {
+    /// The sampling of unit `u`.
+    ///
+    /// # Safety
+    /// AVX2 context.
+    #[inline(always)]
+    pub unsafe fn new(u: &'a UnitPlan<'a>) -> Self {
+        let fits = |img: &Level| {
+            handles(u.wrap_s, u.pot[0], img.width) && handles(u.wrap_t, u.pot[1], img.height)
+        };
+        let fixed = if u.needs_lod {
+            None
+        } else {
+            let lv = select_levels(u, Lod::MAG);
+            // SAFETY: AVX2 context.
+            let w = unsafe { _mm256_set1_epi32((lv.3 * 256.0) as i32) };
+            (fits(u.image(lv.1)) && fits(u.image(lv.2)))
+                .then(|| (Self::sampler(u, lv.0, lv.1, lv.2), w))
+        };
+        let vec_lod = u.needs_lod
+            && u.mip_filter == MipFilter::Linear
+            && !u.lod.min_max_equal
+            && u.dims == 2
+            && (u.first..=u.last).all(|l| fits(u.image(l)));
+        let base = u.image(u.first);
+        let lc = LodConsts {
+            w: base.width as f32,
+            h: base.height as f32,
+            bias: u.lod.bias,
+            max_lod: u.lod.apply_max.then_some(u.lod.max_lod),
+            min_lod: u.lod.apply_min.then_some(u.lod.min_lod),
+            first: u.first as i32,
+            last: u.last as i32,
+            mag_key: if u.mag_filter == u.min_filter {
+                2 * u.first as i32
+            } else {
+                -2
+            },
+        };
+        Sampling {
+            u,
+            fixed,
+            vec_lod,
+            lc,
+        }
+    }
+
+    /// The vector sampler of levels `l0`, `l1` with filter `f`.
+    fn sampler(u: &'a UnitPlan<'a>, f: Filter, l0: usize, l1: usize) -> RowSampler<'a> {
+        RowSampler {
+            a: u.image(l0),
+            b: (l1 != l0).then(|| u.image(l1)),
+            linear: f == Filter::Linear,
+            wrap: [u.wrap_s, u.wrap_t],
+        }
+    }
+
+    /// The texture values of a chunk: rows of coordinates `s`, `t`, covered lanes `live`
+    /// (rows without any are not sampled); the lanes of quads without a covered pixel are
+    /// unspecified.
+    ///
+    /// # Safety
+    /// AVX2 context on a CPU that has it.
+    #[inline(always)]
+    pub unsafe fn texels(
+        &self,
+        s: [__m256; 2],
+        t: [__m256; 2],
+        live: [__m256i; 2],
+    ) -> [__m256i; 2] {
+        // SAFETY: AVX2 context (the caller).
+        unsafe {
+            let lm = [bits(live[0]), bits(live[1])];
+            let chosen = if let Some((rs, w)) = &self.fixed {
+                Some((*rs, *w))
+            } else if self.vec_lod {
+                let any = _mm256_or_si256(live[0], live[1]);
+                let pair = _mm256_castps_si256(_mm256_permute_ps::<0xB1>(_mm256_castsi256_ps(any)));
+                let qlive = bits(_mm256_or_si256(any, pair));
+                let u = self.u;
+                match lod_key(&self.lc, s, t, qlive) {
+                    Some((-2, wm)) => Some((Self::sampler(u, u.mag_filter, u.first, u.first), wm)),
+                    Some((k, wm)) => {
+                        let l0 = (k >> 1) as usize;
+                        let l1 = l0 + (k & 1) as usize;
+                        Some((Self::sampler(u, u.min_filter, l0, l1), wm))
+                    }
+                    None => None,
+                }
+            } else {
+                None
+            };
+            if let Some((rs, wm)) = chosen {
+                let mut texv = [_mm256_setzero_si256(); 2];
+                let mut done = true;
+                for r in 0..2 {
+                    if lm[r] != 0 {
+                        let (v, ok) = rs.row_v(s[r], t[r], wm);
+                        texv[r] = v;
+                        done &= ok;
+                    }
+                }
+                if done {
+                    return texv;
+                }
+            }
+            fallback(self.u, s, t, lm)
+        }
+    }
+}
+
+/// A chunk through the array sampler [`fast::chunk_u8`] (its vector rows included).
+///
+/// # Safety
+/// AVX2 context on a CPU that has it.
+#[inline(always)]
+unsafe fn fallback(u: &UnitPlan<'_>, s: [__m256; 2], t: [__m256; 2], lm: [u32; 2]) -> [__m256i; 2] {
+    let mut sa = [[0f32; LANES]; 2];
+    let mut ta = [[0f32; LANES]; 2];
+    let mut live = [[false; LANES]; 2];
+    let mut out = [[[0u8; 4]; LANES]; 2];
+    // SAFETY: AVX2 context; the arrays are 8 f32 / 8 RGBA8 (32 bytes) each.
+    unsafe {
+        for r in 0..2 {
+            _mm256_storeu_ps(sa[r].as_mut_ptr(), s[r]);
+            _mm256_storeu_ps(ta[r].as_mut_ptr(), t[r]);
+            for (i, l) in live[r].iter_mut().enumerate() {
+                *l = (lm[r] >> i) & 1 == 1;
+            }
+        }
+        fast::chunk_u8(u, &sa, &ta, &live, true, &mut out);
+        [
+            _mm256_loadu_si256(out[0].as_ptr() as *const __m256i),
+            _mm256_loadu_si256(out[1].as_ptr() as *const __m256i),
+        ]
+    }
+}
+
+/// [`Sampling::texels`] on arrays, for the tests against [`fast::quad_u8`].
+///
+/// # Safety
+/// The CPU has AVX2.
+#[cfg(test)]
+#[target_feature(enable = "avx2")]
+pub unsafe fn texels_arrays(
+    u: &UnitPlan<'_>,
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    live: &[[bool; LANES]; 2],
+) -> [[[u8; 4]; LANES]; 2] {
+    let mut out = [[[0u8; 4]; LANES]; 2];
+    // SAFETY: AVX2 (this function's feature); the arrays are 32 bytes each.
+    unsafe {
+        let m = |r: usize| {
+            let l = |i: usize| -(live[r][i] as i32);
+            [l(0), l(1), l(2), l(3), l(4), l(5), l(6), l(7)]
+        };
+        let lv = |r: usize| _mm256_loadu_si256(m(r).as_ptr() as *const __m256i);
+        let sv = [
+            _mm256_loadu_ps(s[0].as_ptr()),
+            _mm256_loadu_ps(s[1].as_ptr()),
+        ];
+        let tv = [
+            _mm256_loadu_ps(t[0].as_ptr()),
+            _mm256_loadu_ps(t[1].as_ptr()),
+        ];
+        let v = Sampling::new(u).texels(sv, tv, [lv(0), lv(1)]);
+        for r in 0..2 {
+            _mm256_storeu_si256(out[r].as_mut_ptr() as *mut __m256i, v[r]);
+        }
+    }
+    out
+}
