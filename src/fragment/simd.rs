@@ -197,11 +197,11 @@ unsafe fn over16(s: __m256i, d: __m256i) -> __m256i {
 
 /// `DEPTH` of [`shade_span`]: no depth test.
 pub const D_NONE: u8 = 0;
-/// `DEPTH` of [`shade_span`]: GL_LESS.
+/// `DEPTH` of [`shade_span`]: GL_LESS on a Z24 buffer.
 pub const D_LESS: u8 = 1;
-/// `DEPTH` of [`shade_span`]: GL_LEQUAL.
+/// `DEPTH` of [`shade_span`]: GL_LEQUAL on a Z24 buffer.
 pub const D_LEQUAL: u8 = 2;
-/// `DEPTH` of [`shade_span`]: any function, read from the plan per chunk.
+/// `DEPTH` of [`shade_span`]: any function and format, read from the plan per chunk.
 pub const D_ANY: u8 = 3;
 /// `BLEND` of [`shade_span`]: no blending.
 pub const B_NONE: u8 = 0;
@@ -212,10 +212,10 @@ pub const B_OVER: u8 = 2;
 
 /// The `DEPTH` code of [`shade_span`] for a plan.
 pub fn depth_code(plan: &FragPlan) -> u8 {
-    match plan.depth.map(|d| d.func) {
+    match plan.depth.map(|d| (d.func, d.format)) {
         None => D_NONE,
-        Some(CompareFunc::Less) => D_LESS,
-        Some(CompareFunc::LEqual) => D_LEQUAL,
+        Some((CompareFunc::Less, DepthFormat::Z24)) => D_LESS,
+        Some((CompareFunc::LEqual, DepthFormat::Z24)) => D_LEQUAL,
         Some(_) => D_ANY,
     }
 }
@@ -343,7 +343,12 @@ unsafe fn chunk8<
         let mut all = true;
         if DEPTH != D_NONE {
             let Some(d) = plan.depth else { return };
-            let q = depth_q::<FMA>(t, d.format, fx, fy);
+            // The format is fixed at compile time for the named functions.
+            let format = match DEPTH {
+                D_LESS | D_LEQUAL => DepthFormat::Z24,
+                _ => d.format,
+            };
+            let q = depth_q::<FMA>(t, format, fx, fy);
             let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
             let old = if FULL {
                 _mm256_loadu_si256(dptr as *const __m256i)
