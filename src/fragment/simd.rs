@@ -86,18 +86,7 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
 ) -> __m256i {
     // SAFETY: forwarded from the caller; the masked load and store touch live lanes only.
     unsafe {
-        let z = sat(eval::<FMA>(&t.z, fx, fy));
-        let q = match d.format {
-            DepthFormat::Z24 => _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0))),
-            _ => {
-                // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
-                let v = _mm256_add_ps(
-                    _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
-                    _mm256_set1_ps(128.0),
-                );
-                _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
-            }
-        };
+        let q = depth_q::<FMA>(t, d.format, fx, fy);
         let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
         let old = _mm256_maskload_epi32(dptr as *const i32, live);
         let pass = _mm256_and_si256(live, depth_pass(d.func, q, old));
@@ -172,12 +161,22 @@ pub(super) unsafe fn write8_over(
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
         let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
         stats.color_reads += n as u64;
+        _mm256_maskstore_epi32(cptr, pass, over8(px, dst));
+        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+    }
+}
+
+/// The "over" blend of eight packed RGBA8 source pixels over eight destination pixels:
+/// [`blend8`] for a plan that [`blend_is_over`] accepts.
+#[inline(always)]
+pub(super) unsafe fn over8(px: __m256i, dst: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
         let z = _mm256_setzero_si256();
         // Not closures: they would be compiled without AVX2 and not inlined.
         let lo = over16(_mm256_unpacklo_epi8(px, z), _mm256_unpacklo_epi8(dst, z));
         let hi = over16(_mm256_unpackhi_epi8(px, z), _mm256_unpackhi_epi8(dst, z));
-        _mm256_maskstore_epi32(cptr, pass, _mm256_packus_epi16(lo, hi));
-        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+        _mm256_packus_epi16(lo, hi)
     }
 }
 
@@ -196,9 +195,226 @@ unsafe fn over16(s: __m256i, d: __m256i) -> __m256i {
     }
 }
 
+/// `DEPTH` of [`shade_span`]: no depth test.
+pub const D_NONE: u8 = 0;
+/// `DEPTH` of [`shade_span`]: GL_LESS on a Z24 buffer.
+pub const D_LESS: u8 = 1;
+/// `DEPTH` of [`shade_span`]: GL_LEQUAL on a Z24 buffer.
+pub const D_LEQUAL: u8 = 2;
+/// `DEPTH` of [`shade_span`]: any function and format, read from the plan per chunk.
+pub const D_ANY: u8 = 3;
+/// `BLEND` of [`shade_span`]: no blending.
+pub const B_NONE: u8 = 0;
+/// `BLEND` of [`shade_span`]: any blend plan ([`blend8`]).
+pub const B_ANY: u8 = 1;
+/// `BLEND` of [`shade_span`]: a plan that [`blend_is_over`] accepts ([`over8`]).
+pub const B_OVER: u8 = 2;
+
+/// The `DEPTH` code of [`shade_span`] for a plan.
+pub fn depth_code(plan: &FragPlan) -> u8 {
+    match plan.depth.map(|d| (d.func, d.format)) {
+        None => D_NONE,
+        Some((CompareFunc::Less, DepthFormat::Z24)) => D_LESS,
+        Some((CompareFunc::LEqual, DepthFormat::Z24)) => D_LEQUAL,
+        Some(_) => D_ANY,
+    }
+}
+
+/// The `BLEND` code of [`shade_span`] for a plan.
+pub fn blend_code(plan: &FragPlan) -> u8 {
+    match &plan.blend {
+        None => B_NONE,
+        Some(b) if blend_is_over(b) => B_OVER,
+        Some(_) => B_ANY,
+    }
+}
+
+/// `q FUNC old` as a lane mask, with the function fixed at compile time when `D` names it.
+#[inline(always)]
+unsafe fn depth_pass_d<const D: u8>(func: CompareFunc, q: __m256i, old: __m256i) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        match D {
+            D_LESS => _mm256_cmpgt_epi32(old, q),
+            D_LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(q, old), _mm256_set1_epi32(-1)),
+            _ => depth_pass(func, q, old),
+        }
+    }
+}
+
+/// Z of 8 pixels quantised to the depth buffer's format, as [`depth_test8`] computes it.
+#[inline(always)]
+unsafe fn depth_q<const FMA: bool>(
+    t: &SetupTriangle,
+    f: DepthFormat,
+    fx: __m256,
+    fy: __m256,
+) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        let z = sat(eval::<FMA>(&t.z, fx, fy));
+        match f {
+            DepthFormat::Z24 => _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0))),
+            _ => {
+                // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
+                let v = _mm256_add_ps(
+                    _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
+                    _mm256_set1_ps(128.0),
+                );
+                _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
+            }
+        }
+    }
+}
+
+/// The packed RGBA8 colours of 8 pixels (lanes `fx`, row `fy`), as
+/// [`super::span::shade_chunk`] converts them.
+#[inline(always)]
+unsafe fn color8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    flat: __m256i,
+    fx: __m256,
+    fy: __m256,
+) -> __m256i {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        if FLAT {
+            return flat;
+        }
+        let oow = if PERSP {
+            _mm256_div_ps(_mm256_set1_ps(1.0), eval::<FMA>(&t.w, fx, fy))
+        } else {
+            _mm256_set1_ps(1.0)
+        };
+        let mut acc = _mm256_setzero_si256();
+        for ch in 0..4 {
+            let mut a = eval::<FMA>(&t.vary[ch], fx, fy);
+            if PERSP {
+                a = _mm256_mul_ps(a, oow);
+            }
+            let u = _mm256_cvtps_epi32(_mm256_mul_ps(sat(a), _mm256_set1_ps(255.0)));
+            acc = _mm256_or_si256(acc, _mm256_sllv_epi32(u, _mm256_set1_epi32(8 * ch as i32)));
+        }
+        acc
+    }
+}
+
+/// Per-span tallies of [`chunk8`], added to the stats once per span.
+#[derive(Default)]
+struct Tally {
+    /// Fragments that passed the depth test.
+    passed: u64,
+    /// Colour buffer reads.
+    reads: u64,
+}
+
+/// One chunk of [`shade_span`]: the 8 pixels at `idx` (lanes `fx`, row `fy`), of which
+/// the first `n` are live (`live` as a mask; all 8 when `FULL`, which uses plain loads
+/// and stores: every lane lies in this span, so rewriting a lane with its own value is
+/// invisible).
+///
+/// # Safety
+/// AVX2 (+FMA when `FMA`) context; the live lanes lie inside the buffers.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn chunk8<
+    const FMA: bool,
+    const DEPTH: u8,
+    const FLAT: bool,
+    const PERSP: bool,
+    const BLEND: u8,
+    const FULL: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    idx: usize,
+    fx: __m256,
+    fy: __m256,
+    n: usize,
+    live: __m256i,
+    flat: __m256i,
+    tally: &mut Tally,
+) {
+    // SAFETY (whole body): forwarded from the caller; full loads and stores cover
+    // `idx..idx + 8` only when `FULL`, masked ones only live (passing) lanes otherwise.
+    unsafe {
+        let mut pass = live;
+        let mut all = true;
+        if DEPTH != D_NONE {
+            let Some(d) = plan.depth else { return };
+            // The format is fixed at compile time for the named functions.
+            let format = match DEPTH {
+                D_LESS | D_LEQUAL => DepthFormat::Z24,
+                _ => d.format,
+            };
+            let q = depth_q::<FMA>(t, format, fx, fy);
+            let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
+            let old = if FULL {
+                _mm256_loadu_si256(dptr as *const __m256i)
+            } else {
+                _mm256_maskload_epi32(dptr as *const i32, live)
+            };
+            pass = depth_pass_d::<DEPTH>(d.func, q, old);
+            if !FULL {
+                pass = _mm256_and_si256(live, pass);
+            }
+            let m = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u32;
+            if m == 0 {
+                return;
+            }
+            tally.passed += m.count_ones() as u64;
+            all = FULL && m == 0xFF;
+            if d.write {
+                if FULL {
+                    let v = _mm256_blendv_epi8(old, q, pass);
+                    _mm256_storeu_si256(dptr as *mut __m256i, v);
+                } else {
+                    _mm256_maskstore_epi32(dptr, pass, q);
+                }
+            }
+        }
+        if !plan.color_mask[0] {
+            return;
+        }
+        let px = color8::<FMA, FLAT, PERSP>(t, flat, fx, fy);
+        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+        let px = if BLEND == B_NONE {
+            px
+        } else {
+            let dst = if FULL {
+                _mm256_loadu_si256(cptr as *const __m256i)
+            } else {
+                _mm256_maskload_epi32(cptr as *const i32, pass)
+            };
+            tally.reads += n as u64;
+            let out = match (BLEND, &plan.blend) {
+                (B_OVER, _) => over8(px, dst),
+                (_, Some(b)) => blend8(b, px, dst),
+                (_, None) => px,
+            };
+            if FULL && !all {
+                // Failing lanes keep their stored colour.
+                _mm256_blendv_epi8(dst, out, pass)
+            } else {
+                out
+            }
+        };
+        if FULL && (all || BLEND != B_NONE) {
+            _mm256_storeu_si256(cptr as *mut __m256i, px);
+        } else {
+            _mm256_maskstore_epi32(cptr, pass, px);
+        }
+    }
+}
+
 /// Shades pixels `x0..=x1` of row `py`. The caller guarantees the plan has no alpha test,
-/// stencil, blending or logic op, no textures, a colour format with 8-bit alpha layout
-/// that stores values unchanged (RGBA, BGRA, ARGB), and a full colour mask or none.
+/// stencil, logic op or texture, a colour format with 8-bit alpha layout that stores
+/// values unchanged (RGBA, BGRA, ARGB), a full colour mask or none, and that `DEPTH`
+/// ([`depth_code`]) and `BLEND` ([`blend_code`]) match the plan.
+///
+/// Whole chunks of 8 pixels use plain loads and stores; only the last, partial chunk is
+/// masked. The stats are added once per span.
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
@@ -206,10 +422,10 @@ unsafe fn over16(s: __m256i, d: __m256i) -> __m256i {
 #[allow(clippy::too_many_arguments)]
 pub unsafe fn shade_span<
     const FMA: bool,
-    const DEPTH: bool,
+    const DEPTH: u8,
     const FLAT: bool,
     const PERSP: bool,
-    const BLEND: bool,
+    const BLEND: u8,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -219,69 +435,65 @@ pub unsafe fn shade_span<
     x1: usize,
     stats: &mut Stats,
 ) {
-    let w = fb.width;
-    let write_color = plan.color_mask[0];
-    let count = x1 + 1 - x0;
-    stats.fragments += count as u64;
-    // SAFETY (whole body): AVX2 (+FMA) context guaranteed by the caller; every load and
-    // store covers lanes `x..x + n` with `x + n <= x1 + 1 <= w`, inside row `py`.
+    let count = (x1 + 1 - x0) as u64;
+    let mut tally = Tally::default();
+    // SAFETY (whole body): AVX2 (+FMA) context guaranteed by the caller; every chunk
+    // covers lanes `x..x + n` with `x + n <= x1 + 1 <= w`, inside row `py`.
     unsafe {
         let lane = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
-        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
         let fy = _mm256_set1_ps(py as f32);
-        let scale255 = _mm256_set1_ps(255.0);
-        let flat = {
-            let c = t.flat_u8;
-            _mm256_set1_epi32(u32::from_le_bytes(c) as i32)
-        };
-        let depth = plan.depth;
+        let flat = _mm256_set1_epi32(u32::from_le_bytes(t.flat_u8) as i32);
+        let row = (py - fb.y0) * fb.width;
+        let end = x1 + 1;
         let mut x = x0;
-        while x <= x1 {
-            let n = 8.min(x1 + 1 - x);
-            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
-            let fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
-            let idx = (py - fb.y0) * w + x;
-            let mut pass = live;
-            if DEPTH {
-                let d = depth.expect("DEPTH implies a depth plan");
-                pass = depth_test8::<FMA>(t, &d, fb, idx, fx, fy, live);
-                let np = _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
-                stats.depth_reads += n as u64;
-                stats.depth_failed += n as u64 - np;
-                if np == 0 {
-                    x += n;
-                    continue;
-                }
-            }
-            if write_color {
-                let px = if FLAT {
-                    flat
-                } else {
-                    let oow = if PERSP {
-                        _mm256_div_ps(_mm256_set1_ps(1.0), eval::<FMA>(&t.w, fx, fy))
-                    } else {
-                        _mm256_set1_ps(1.0)
-                    };
-                    let mut acc = _mm256_setzero_si256();
-                    for ch in 0..4 {
-                        let mut a = eval::<FMA>(&t.vary[ch], fx, fy);
-                        if PERSP {
-                            a = _mm256_mul_ps(a, oow);
-                        }
-                        let u = _mm256_cvtps_epi32(_mm256_mul_ps(sat(a), scale255));
-                        acc = _mm256_or_si256(
-                            acc,
-                            _mm256_sllv_epi32(u, _mm256_set1_epi32(8 * ch as i32)),
-                        );
-                    }
-                    acc
-                };
-                // The framebuffer is RGBA in memory for every user format (converted at
-                // flush time), so the packed lanes are stored as they are.
-                write8::<BLEND>(plan, fb, idx, n, pass, px, stats);
-            }
-            x += n;
+        // Pixel coordinates are integers below 2^24: stepping by 8 is exact.
+        let mut fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
+        let all = _mm256_set1_epi32(-1);
+        while x + 8 <= end {
+            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, true>(
+                t,
+                plan,
+                fb,
+                row + x,
+                fx,
+                fy,
+                8,
+                all,
+                flat,
+                &mut tally,
+            );
+            x += 8;
+            fx = _mm256_add_ps(fx, _mm256_set1_ps(8.0));
         }
+        if x < end {
+            let n = end - x;
+            let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
+            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false>(
+                t,
+                plan,
+                fb,
+                row + x,
+                fx,
+                fy,
+                n,
+                live,
+                flat,
+                &mut tally,
+            );
+        }
+    }
+    stats.fragments += count;
+    let passed = if DEPTH != D_NONE {
+        stats.depth_reads += count;
+        stats.depth_failed += count - tally.passed;
+        tally.passed
+    } else {
+        count
+    };
+    if plan.color_mask[0] {
+        stats.color_writes += passed;
+        stats.color_reads += tally.reads;
     }
 }
 

@@ -133,7 +133,8 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         )
 }
 
-/// The row walk for the AVX2 span shader.
+/// The row walk for the AVX2 span shader: picks the span shader's variant once per
+/// triangle (depth function, blend, flat / smooth / perspective).
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
@@ -146,56 +147,100 @@ unsafe fn rows_simd<const FMA: bool>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    use crate::fragment::simd::shade_span as s;
-    let key = (
-        plan.depth.is_some(),
-        plan.flat,
-        t.persp && !plan.flat,
-        plan.blend.is_some(),
-    );
+    use crate::fragment::simd::{depth_code, D_ANY, D_LEQUAL, D_LESS, D_NONE};
+    // SAFETY (all four): forwarded from the caller.
+    unsafe {
+        match depth_code(plan) {
+            D_NONE => rows_simd_b::<FMA, D_NONE>(t, b, plan, fb, stats),
+            D_LESS => rows_simd_b::<FMA, D_LESS>(t, b, plan, fb, stats),
+            D_LEQUAL => rows_simd_b::<FMA, D_LEQUAL>(t, b, plan, fb, stats),
+            _ => rows_simd_b::<FMA, D_ANY>(t, b, plan, fb, stats),
+        }
+    }
+}
+
+/// [`rows_simd`] after the depth function: picks the blend variant.
+///
+/// # Safety
+/// As [`rows_simd`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows_simd_b<const FMA: bool, const D: u8>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    use crate::fragment::simd::{blend_code, B_ANY, B_NONE, B_OVER};
+    // SAFETY (all three): forwarded from the caller.
+    unsafe {
+        match blend_code(plan) {
+            B_NONE => rows_simd_c::<FMA, D, B_NONE>(t, b, plan, fb, stats),
+            B_OVER => rows_simd_c::<FMA, D, B_OVER>(t, b, plan, fb, stats),
+            _ => rows_simd_c::<FMA, D, B_ANY>(t, b, plan, fb, stats),
+        }
+    }
+}
+
+/// [`rows_simd`] after depth and blend: picks the colour variant and walks the rows.
+///
+/// # Safety
+/// As [`rows_simd`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows_simd_c<const FMA: bool, const D: u8, const B: u8>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    // SAFETY (all three): forwarded from the caller.
+    unsafe {
+        if plan.flat {
+            rows_simd_walk::<FMA, D, true, false, B>(t, b, plan, fb, stats)
+        } else if t.persp {
+            rows_simd_walk::<FMA, D, false, true, B>(t, b, plan, fb, stats)
+        } else {
+            rows_simd_walk::<FMA, D, false, false, B>(t, b, plan, fb, stats)
+        }
+    }
+}
+
+/// The row loop of [`rows_simd`] for one span shader variant.
+///
+/// # Safety
+/// As [`rows_simd`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows_simd_walk<
+    const FMA: bool,
+    const D: u8,
+    const FLAT: bool,
+    const PERSP: bool,
+    const B: u8,
+>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    use crate::fragment::simd::shade_span;
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
-            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
             // SAFETY: forwarded from the caller.
             unsafe {
-                match key {
-                    (false, false, false, false) => {
-                        s::<FMA, false, false, false, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (false, false, true, false) => {
-                        s::<FMA, false, false, true, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (false, true, _, false) => {
-                        s::<FMA, false, true, false, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, false, false, false) => {
-                        s::<FMA, true, false, false, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, false, true, false) => {
-                        s::<FMA, true, false, true, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, true, _, false) => {
-                        s::<FMA, true, true, false, false>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (false, false, false, true) => {
-                        s::<FMA, false, false, false, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (false, false, true, true) => {
-                        s::<FMA, false, false, true, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (false, true, _, true) => {
-                        s::<FMA, false, true, false, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, false, false, true) => {
-                        s::<FMA, true, false, false, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, false, true, true) => {
-                        s::<FMA, true, false, true, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                    (true, true, _, true) => {
-                        s::<FMA, true, true, false, true>(t, plan, fb, py, lo, hi, stats)
-                    }
-                }
+                shade_span::<FMA, D, FLAT, PERSP, B>(
+                    t,
+                    plan,
+                    fb,
+                    py as usize,
+                    lo as usize,
+                    hi as usize,
+                    stats,
+                )
             }
         }
     }
