@@ -30,8 +30,11 @@ pub const BAND_ROWS: usize = 32;
 const PARALLEL_WORK: i64 = 32 * 1024;
 /// Triangles a batch holds at most.
 const MAX_BATCH: usize = 4096;
-/// Pixels of triangle boxes after which a batch is handed to the pool.
-const MAX_WORK: i64 = 1 << 20;
+/// Pixels of triangle boxes after which a batch is handed to the pool. Measured (17:57,
+/// quiet machine, 2 threads, 1024²): 1M px → 32M px took blend_quads 29.5 → 20.6 ms,
+/// depth_back_to_front 12.2 → 9.5, depth_front_to_back 5.0 → 3.5, sprites 32.9 → 29.5;
+/// small-triangle draws are bounded by `MAX_BATCH` first and did not change.
+const MAX_WORK: i64 = 1 << 25;
 /// Single-threaded, triangles whose box covers at least this many pixels are batched and
 /// drawn band by band, so that a band's colour and depth rows stay in the cache while
 /// every triangle of the batch is drawn into them (at 1024x1024 the buffers are 4 MB each,
