@@ -1232,7 +1232,8 @@ fn run_program(name: &str, source: &Path) {
 /// Threads on and off give byte-identical images on the benchmark scenes (`bench/scenes`),
 /// at sizes where the threaded paths run (batches drawn on the pool while the draw goes on,
 /// band-parallel rasterization, parallel clears and copies) and at an odd size whose last
-/// band is partial: each scene runs two frames with `SOFTGL_THREADS=1` and `=2`.
+/// band is partial: each scene runs two frames with `SOFTGL_THREADS=1` and `=2` (and `=3`
+/// at the odd size).
 #[test]
 fn bench_scenes_identical_with_threads_on_and_off() {
     let mut names: Vec<String> = fs::read_dir(root().join("bench/scenes"))
@@ -1270,6 +1271,14 @@ fn bench_scenes_identical_with_threads_on_and_off() {
                 single == run("2"),
                 "{name} at {w}x{h}: SOFTGL_THREADS=2 differs from SOFTGL_THREADS=1"
             );
+            // With more threads than one, the pool draws a batch on several threads at
+            // once while the draw goes on (on a 2-core machine the pool has 2 threads).
+            if w == 333 {
+                assert!(
+                    single == run("3"),
+                    "{name} at {w}x{h}: SOFTGL_THREADS=3 differs from SOFTGL_THREADS=1"
+                );
+            }
         }
     }
 }

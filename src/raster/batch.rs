@@ -5,13 +5,15 @@
 //! and its index is appended to the bin of each band of [`BAND_ROWS`] rows its box
 //! touches. A full batch is handed to the pool and the draw fills the second batch
 //! meanwhile (llvmpipe bins into tiles and rasterizes them on its threads the same way);
-//! before handing over the next one it waits for the first. On the pool, one thread owns a
-//! band at a time and draws the band's triangles in primitive order, and batches are drawn
-//! one after the other, so each pixel sees the same fragments in the same order as
-//! single-threaded rendering: the images are byte-identical with threads on and off. The
-//! last batch of a draw is drawn before the draw returns, on the calling thread when it is
-//! little work. The batches live in a per-thread pool, so drawing allocates nothing once
-//! they have grown.
+//! the pool draws it on all its threads but one, since the draw's own thread keeps a core
+//! busy. Before handing over the next batch the draw takes the first back, drawing its
+//! remaining bands itself rather than waiting idle. Each band is claimed by one thread,
+//! which draws the band's triangles in primitive order, and batches are drawn one after
+//! the other, so each pixel sees the same fragments in the same order as single-threaded
+//! rendering: the images are byte-identical with threads on and off. The last batch of a
+//! draw is drawn before the draw returns, on the calling thread alone when it is little
+//! work. The batches live in a per-thread pool, so drawing allocates little once they have
+//! grown (a band list per batch).
 
 use super::raster_triangle;
 use crate::fragment::FragPlan;
@@ -19,8 +21,8 @@ use crate::framebuffer::{Framebuffer, Target};
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
-use rayon::prelude::*;
-use std::cell::RefCell;
+use std::cell::{RefCell, UnsafeCell};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
 
 /// Rows per band (even, so 2x2 quads stay inside one band) unless `SOFTGL_BAND_ROWS`
@@ -44,7 +46,7 @@ const BAND_AREA: i64 = 4096;
 const MAX_WORK_LOCAL: i64 = 1 << 26;
 
 /// The batching constants, read once; the environment variables `SOFTGL_BAND_ROWS`,
-/// `SOFTGL_MAX_WORK` and `SOFTGL_BAND_AREA` override them for measurements (the images
+/// `SOFTGL_MAX_WORK`, `SOFTGL_BAND_AREA` and `SOFTGL_MAX_BATCH` override them for measurements (the images
 /// are the same for any values: each pixel still sees its fragments in primitive order).
 #[derive(Clone, Copy, Debug)]
 struct Tuning {
@@ -54,6 +56,11 @@ struct Tuning {
     max_work: i64,
     /// Single-threaded: the box size from which triangles are batched into bands.
     band_area: i64,
+    /// Triangles a batch holds at most.
+    max_batch: usize,
+    /// Whether the draw's thread draws bands of the batch in flight while it waits for it
+    /// (and the pool leaves it a core); `SOFTGL_POOL_HELP=0` turns this off for A/B.
+    help: bool,
 }
 
 /// The batching constants ([`Tuning`]).
@@ -66,6 +73,8 @@ fn tuning() -> Tuning {
                 .map_or(BAND_ROWS, |v| (v.clamp(2, 4096) as usize) & !1),
             max_work: var("SOFTGL_MAX_WORK").map_or(MAX_WORK, |v| v.max(1)),
             band_area: var("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
+            help: var("SOFTGL_POOL_HELP") != Some(0),
+            max_batch: var("SOFTGL_MAX_BATCH").map_or(MAX_BATCH, |v| v.clamp(1, 1 << 20) as usize),
         }
     })
 }
@@ -105,6 +114,16 @@ impl Batch {
             b.clear();
         }
         self.work = 0;
+    }
+
+    /// Makes room for a full batch at once, so that the first draws do not copy the
+    /// growing buffers again and again (address space only: untouched pages cost nothing).
+    fn reserve(&mut self, max_batch: usize, nvary: usize) {
+        self.heads
+            .reserve(max_batch.saturating_sub(self.heads.len()));
+        let n = max_batch * nvary;
+        self.planes.reserve(n.saturating_sub(self.planes.len()));
+        self.flats.reserve(n.saturating_sub(self.flats.len()));
     }
 
     /// Appends `t` (its first `nvary` varyings) and bins it into bands `b0..=b1`.
@@ -154,21 +173,73 @@ impl Batch {
     }
 }
 
-/// The completion state of a batch rasterized on the pool while the draw goes on.
-#[derive(Default)]
-struct JobState {
-    /// The batch (handed to the job, handed back when it is drawn).
-    batch: Option<Batch>,
-    /// Whether the job has not finished yet.
-    busy: bool,
-    /// The pixel counters of the finished job.
-    stats: Stats,
+/// A batch being drawn: its bands are claimed one at a time by the pool's threads and,
+/// whenever the draw has to wait for it, by the draw's own thread ([`Work::help`]).
+struct Work {
+    /// The triangles and their bins (read-only while the batch is drawn).
+    batch: Batch,
+    /// The framebuffer's bands, one per bin; band `i` is claimed by whoever took `i` from
+    /// `next`.
+    bands: Vec<BandCell>,
+    /// The next unclaimed band.
+    next: AtomicUsize,
+    plan: FragPlan,
+    units: *const UnitPlan<'static>,
+    n_units: usize,
+    region: [i64; 4],
+    nvary: usize,
+    /// The pixel counters of the drawn bands.
+    stats: Mutex<Stats>,
 }
 
-/// A job slot shared with the pool: the state and its signal.
+/// One band of a [`Work`], written only by the thread that claimed it.
+struct BandCell(UnsafeCell<Target<'static>>);
+
+// SAFETY: a `Work` is shared between the draw's thread and one pool job. Each band is
+// reached only by the thread that claimed its index from `next` (`fetch_add` hands every
+// index out once); the batch is only read; the framebuffer and units behind the band
+// targets and `units` stay borrowed by the `Rasterizer` that made the work, which takes it
+// back (`wait`, called by every method that touches the framebuffer and by `Drop`) only
+// after the job has finished. `UnitPlan` is `Sync` and `Framebuffer` `Send` (checked in
+// `launch`).
+unsafe impl Sync for Work {}
+// SAFETY: as for `Sync` above: the raw parts are only used under that protocol.
+unsafe impl Send for Work {}
+
+impl Work {
+    /// Draws unclaimed bands until none is left, then adds their counters to the work's.
+    fn help(&self) {
+        // SAFETY: `units`/`n_units` come from a live slice (see `Work`'s `Sync`).
+        let units = unsafe { std::slice::from_raw_parts(self.units, self.n_units) };
+        let mut s = Stats::default();
+        loop {
+            let b = self.next.fetch_add(1, Ordering::Relaxed);
+            let Some(cell) = self.bands.get(b) else { break };
+            // SAFETY: band `b` was claimed by this call alone (see `Work`'s `Sync`).
+            let band = unsafe { &mut *cell.0.get() };
+            let bin = &self.batch.bins[b];
+            draw_bin(
+                &self.batch,
+                bin,
+                self.nvary,
+                self.region,
+                &self.plan,
+                units,
+                band,
+                &mut s,
+            );
+        }
+        self.stats
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .add_pixels(&s);
+    }
+}
+
+/// Whether the pool's job on the batch in flight has finished, and its signal.
 #[derive(Default)]
 struct Job {
-    state: Mutex<JobState>,
+    busy: Mutex<bool>,
     done: Condvar,
 }
 
@@ -184,24 +255,6 @@ thread_local! {
     static POOL: RefCell<Pool> = RefCell::new(Pool::default());
 }
 
-/// The borrowed inputs of a job, as raw pointers so that it can run on the pool while the
-/// draw goes on.
-struct JobInputs {
-    fb: *mut Framebuffer,
-    plan: FragPlan,
-    units: *const UnitPlan<'static>,
-    n_units: usize,
-    region: [i64; 4],
-    nvary: usize,
-    band_rows: usize,
-}
-
-// SAFETY: the pointers are only dereferenced by the job, while the `Rasterizer` that made
-// them waits for it before touching the framebuffer again or ending its borrows (`wait`,
-// called by every method that uses them and by `Drop`); `UnitPlan` and `Framebuffer` are
-// `Sync`/`Send` (checked in `launch`).
-unsafe impl Send for JobInputs {}
-
 /// The rasterization side of a draw: the target, the plan and the pending batch.
 pub struct Rasterizer<'a, 'f> {
     fb: &'f mut Framebuffer,
@@ -214,8 +267,10 @@ pub struct Rasterizer<'a, 'f> {
     tune: Tuning,
     /// The batch being filled.
     batch: Batch,
-    /// The other batch, `None` while a job draws it.
+    /// The other batch, `None` while it is in flight.
     spare: Option<Batch>,
+    /// The batch being drawn by the pool (and by this thread when it waits).
+    inflight: Option<Arc<Work>>,
     /// The job slot (batches handed to the pool go through it).
     job: Arc<Job>,
 }
@@ -262,6 +317,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             tune,
             batch,
             spare: Some(spare),
+            inflight: None,
             job: pool.job,
         }
     }
@@ -305,6 +361,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         }
         let y0 = t.bbox[1].max(self.region[1]) as usize;
         let y1 = t.bbox[3].min(self.region[3] - 1) as usize;
+        if self.batch.heads.is_empty() {
+            self.batch.reserve(self.tune.max_batch, self.nvary);
+        }
         self.batch.push(
             t,
             self.nvary,
@@ -313,12 +372,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         );
         self.batch.work += area;
         if !self.threads {
-            if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= MAX_WORK_LOCAL {
+            if self.batch.heads.len() >= self.tune.max_batch || self.batch.work >= MAX_WORK_LOCAL {
                 self.flush(stats);
             }
             return;
         }
-        if self.batch.heads.len() >= MAX_BATCH || self.batch.work >= self.tune.max_work {
+        if self.batch.heads.len() >= self.tune.max_batch || self.batch.work >= self.tune.max_work {
             // Hand the full batch to the pool and keep setting up the next one meanwhile.
             self.wait(stats);
             self.launch();
@@ -347,31 +406,47 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 raster_triangle(&t, region, plan, units, &mut target, stats);
             }
         } else {
-            let rows = self.tune.band_rows;
-            let s = draw_bands(&self.batch, self.fb, nvary, region, plan, units, rows);
-            stats.add_pixels(&s);
+            // Over the pool's threads and this one.
+            self.launch();
+            self.wait(stats);
+            return;
         }
         self.batch.clear();
     }
 
-    /// Waits for the batch on the pool, if any, and takes it back with its counters.
+    /// Takes the batch in flight back once it is drawn, helping to draw its remaining
+    /// bands meanwhile, and adds its counters to `stats`.
     fn wait(&mut self, stats: &mut Stats) {
-        if self.spare.is_some() {
+        let Some(work) = self.inflight.as_ref() else {
             return;
+        };
+        if self.tune.help {
+            work.help();
         }
-        let mut st = self.job.state.lock().unwrap_or_else(|e| e.into_inner());
-        while st.busy {
-            st = self.job.done.wait(st).unwrap_or_else(|e| e.into_inner());
+        let mut busy = self.job.busy.lock().unwrap_or_else(|e| e.into_inner());
+        while *busy {
+            busy = self.job.done.wait(busy).unwrap_or_else(|e| e.into_inner());
         }
-        stats.add_pixels(&st.stats);
-        let mut b = st.batch.take().unwrap_or_default();
-        drop(st);
+        drop(busy);
+        // Taken only now, so that a panic above still leaves `Drop` waiting for the job.
+        // The job dropped its handle before it reported done.
+        let work = self.inflight.take();
+        let mut b = match work.and_then(Arc::into_inner) {
+            Some(w) => {
+                stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
+                w.batch
+            }
+            None => Batch::default(),
+        };
         b.clear();
+        b.bins.resize_with(self.batch.bins.len(), Vec::new);
         self.spare = Some(b);
     }
 
     /// Hands the current batch to the pool (the previous one must be back) and starts
-    /// filling the spare one.
+    /// filling the spare one. While this thread goes on setting up triangles, the job
+    /// draws bands on all the pool's threads but one (the cores are shared with this
+    /// thread); when this thread has to wait for the batch it draws bands too.
     fn launch(&mut self) {
         fn shareable<T: Sync>() {}
         fn sendable<T: Send>() {}
@@ -379,84 +454,46 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         sendable::<Framebuffer>();
         let spare = self.spare.take().unwrap_or_default();
         let batch = std::mem::replace(&mut self.batch, spare);
-        {
-            let mut st = self.job.state.lock().unwrap_or_else(|e| e.into_inner());
-            st.batch = Some(batch);
-            st.busy = true;
-            st.stats = Stats::default();
-        }
-        let inputs = JobInputs {
-            fb: &mut *self.fb,
+        let bands = self.fb.bands(self.tune.band_rows);
+        // SAFETY: the bands borrow `self.fb`, which this rasterizer keeps borrowed and does
+        // not touch until `wait` has taken the work back from the job (see `Work`).
+        let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
+        let work = Arc::new(Work {
+            batch,
+            bands: bands
+                .into_iter()
+                .map(|b| BandCell(UnsafeCell::new(b)))
+                .collect(),
+            next: AtomicUsize::new(0),
             plan: *self.plan,
             units: self.units.as_ptr().cast(),
             n_units: self.units.len(),
             region: self.region,
             nvary: self.nvary,
-            band_rows: self.tune.band_rows,
-        };
+            stats: Mutex::new(Stats::default()),
+        });
+        self.inflight = Some(Arc::clone(&work));
+        *self.job.busy.lock().unwrap_or_else(|e| e.into_inner()) = true;
         let job = Arc::clone(&self.job);
+        let threads = crate::cpu::threads();
+        let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
         rayon::spawn(move || {
-            let inputs = inputs;
-            let batch = job
-                .state
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-                .batch
-                .take();
-            let mut s = Stats::default();
-            if let Some(batch) = &batch {
-                // SAFETY: see `JobInputs`: the rasterizer does not touch the framebuffer or
-                // end the borrows of the units until this job reports done.
-                let (fb, units) = unsafe {
-                    (
-                        &mut *inputs.fb,
-                        std::slice::from_raw_parts(inputs.units, inputs.n_units),
-                    )
-                };
-                s = draw_bands(
-                    batch,
-                    fb,
-                    inputs.nvary,
-                    inputs.region,
-                    &inputs.plan,
-                    units,
-                    inputs.band_rows,
-                );
+            let helpers = helpers.min(rayon::current_num_threads());
+            if helpers > 1 {
+                rayon::scope(|s| {
+                    for _ in 1..helpers {
+                        s.spawn(|_| work.help());
+                    }
+                    work.help();
+                });
+            } else {
+                work.help();
             }
-            let mut st = job.state.lock().unwrap_or_else(|e| e.into_inner());
-            st.batch = batch;
-            st.stats = s;
-            st.busy = false;
-            drop(st);
+            drop(work);
+            *job.busy.lock().unwrap_or_else(|e| e.into_inner()) = false;
             job.done.notify_all();
         });
     }
-}
-
-/// Draws `batch` into `fb` with the pool, each band (of `band_rows` rows) drawing its own
-/// bin.
-fn draw_bands(
-    batch: &Batch,
-    fb: &mut Framebuffer,
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    band_rows: usize,
-) -> Stats {
-    let mut bands = fb.bands(band_rows);
-    bands
-        .par_iter_mut()
-        .zip(batch.bins.par_iter())
-        .map(|(band, bin)| {
-            let mut s = Stats::default();
-            draw_bin(batch, bin, nvary, region, plan, units, band, &mut s);
-            s
-        })
-        .reduce(Stats::default, |mut a, b| {
-            a.add_pixels(&b);
-            a
-        })
 }
 
 /// Draws the triangles of one band's bin into the band, counting into `s`.
