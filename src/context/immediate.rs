@@ -49,6 +49,24 @@ struct Rest {
 }
 
 impl Rest {
+    /// Whether `v`'s attributes are bit for bit these (so `v` may share this entry). One
+    /// branch-free pass over the bits: the float compare it replaces branched per float,
+    /// and also merged 0.0 with -0.0.
+    #[inline]
+    fn same_bits(&self, v: &VertexIn) -> bool {
+        let diff = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .zip(b)
+                .fold(0u32, |d, (x, y)| d | (x.to_bits() ^ y.to_bits()))
+        };
+        diff(self.texcoord.as_flattened(), v.texcoord.as_flattened())
+            | diff(&self.normal, &v.normal)
+            | diff(&self.secondary, &v.secondary)
+            | (self.fog_coord.to_bits() ^ v.fog_coord.to_bits())
+            | (self.edge_flag != v.edge_flag) as u32
+            == 0
+    }
+
     fn of(v: &VertexIn) -> Self {
         Rest {
             normal: v.normal,
@@ -83,10 +101,9 @@ impl ImmVerts {
 
     /// Appends `v` (GL_OUT_OF_MEMORY when memory runs out).
     pub fn push(&mut self, v: &VertexIn) -> GlResult<()> {
-        let rest = Rest::of(v);
-        if self.rest.last() != Some(&rest) {
+        if !self.rest.last().is_some_and(|r| r.same_bits(v)) {
             self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
-            self.rest.push(rest);
+            self.rest.push(Rest::of(v));
         }
         self.verts
             .try_reserve(1)

@@ -126,6 +126,10 @@ pub enum SetupResult {
     Degenerate,
     /// Removed by face culling.
     Culled,
+    /// Its bounding box holds no pixel centre, so it covers no pixel (only
+    /// [`setup_triangle_shaded`] reports this, before computing the planes; the other
+    /// entry points give such triangles as `Draw` with an empty `bbox`).
+    Empty,
 }
 
 /// Face-culling inputs for setup.
@@ -148,18 +152,33 @@ pub fn setup_triangle(
     back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_triangle_shaded(v, nvary, cull, back, true, fill)
+    setup_inner(v, nvary, cull, back, (true, false), fill)
 }
 
 /// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
 /// (`fill.flat`, `fill.flat_u8`) are only written when `flat`, since only flat-shaded
-/// spans read them.
+/// spans read them. A triangle that covers no pixel centre is reported as
+/// [`SetupResult::Empty`] without its planes (most of setup's work).
 pub fn setup_triangle_shaded(
     v: [&ClipVertex; 3],
     nvary: usize,
     cull: CullMode,
     back: Option<usize>,
     flat: bool,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    setup_inner(v, nvary, cull, back, (flat, true), fill)
+}
+
+/// Setup; `(flat, skip_empty)` as [`setup_triangle_shaded`]'s `flat` and whether an empty
+/// triangle is reported as `Empty`.
+#[inline(always)]
+fn setup_inner(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    (flat, skip_empty): (bool, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     for vx in v {
@@ -198,7 +217,7 @@ pub fn setup_triangle_shaded(
             [y0, y1, y2],
             ccw,
             front,
-            (nvary, flat),
+            (nvary, flat, skip_empty),
             fill,
         );
     }
@@ -210,7 +229,7 @@ pub fn setup_triangle_shaded(
         [y0, y1, y2],
         ccw,
         front,
-        (nvary, flat),
+        (nvary, flat, skip_empty),
         fill,
     )
 }
@@ -226,7 +245,7 @@ fn setup_rest<'v>(
     ys: [i64; 3],
     ccw: bool,
     front: bool,
-    (nvary, flat): (usize, bool),
+    (nvary, flat, skip_empty): (usize, bool, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
@@ -260,6 +279,9 @@ fn setup_rest<'v>(
         maxx.div_euclid(ONE),
         maxy.div_euclid(ONE),
     ];
+    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3]) {
+        return SetupResult::Empty;
+    }
 
     // Plane equations in f32, Mesa's order (lp_state_setup.c), no FMA.
     let (fx0, fy0) = (p0.win[0], p0.win[1]);
