@@ -153,3 +153,44 @@ impl VertexSource for ImmVerts {
         self.rest[self.verts[i].2 as usize].edge_flag
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CurrentAttribs;
+
+    #[test]
+    fn vertices_share_attributes_only_when_bits_are_equal() {
+        let cur = CurrentAttribs::default();
+        let mut iv = ImmVerts::default();
+        let mut v = VertexIn::with_current([0.0, 0.0, 0.0, 1.0], &cur);
+        iv.push(&v).unwrap();
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 1);
+        // -0.0 == 0.0 as floats, but it is another value.
+        v.texcoord[7][2] = -v.texcoord[7][2];
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 2);
+        assert_eq!(
+            iv.vertex(2).texcoord[7][2].to_bits(),
+            v.texcoord[7][2].to_bits()
+        );
+        assert_eq!(iv.vertex(0).texcoord, cur.texcoord);
+        v.edge_flag = !v.edge_flag;
+        iv.push(&v).unwrap();
+        v.fog_coord = 0.25;
+        iv.push(&v).unwrap();
+        v.normal[1] = 0.5;
+        iv.push(&v).unwrap();
+        v.secondary[3] = 0.5;
+        iv.push(&v).unwrap();
+        // NaN is kept (and shared with an identical NaN).
+        v.texcoord[0][0] = f32::NAN;
+        iv.push(&v).unwrap();
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 7);
+        assert!(iv.vertex(8).texcoord[0][0].is_nan());
+        assert_eq!(iv.vertex(5).normal[1], 0.5);
+        assert_eq!(iv.vertex(4).normal[1], cur.normal[1]);
+    }
+}

@@ -295,3 +295,26 @@ pub extern "C" fn glDrawRangeElements(
         },
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::min_max;
+
+    #[test]
+    fn min_max_of_every_length_and_position() {
+        assert_eq!(min_max(&[]), None);
+        for n in 1..70u32 {
+            let v: Vec<u32> = (0..n).map(|i| (i * 2_654_435_761u32) % 1000 + 5).collect();
+            let want = (*v.iter().min().unwrap(), *v.iter().max().unwrap());
+            assert_eq!(min_max(&v), Some(want));
+            // The extremes in the remainder and in the vector part.
+            for k in [0, n as usize - 1, (n as usize) / 2] {
+                let mut w = v.clone();
+                w[k] = 0;
+                assert_eq!(min_max(&w).unwrap().0, 0);
+                w[k] = u32::MAX;
+                assert_eq!(min_max(&w).unwrap().1, u32::MAX);
+            }
+        }
+    }
+}
