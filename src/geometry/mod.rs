@@ -221,7 +221,7 @@ mod tests {
             assert_eq!(madd(a, b, c, false).to_bits(), (a * b + c).to_bits());
         }
         // A case where fusing changes the result.
-        let a = 1.0 + f32::EPSILON;
+        let a = 1.0 + 2.0 * f32::EPSILON;
         assert_eq!(madd(a, a, -1.0, true), a.mul_add(a, -1.0));
         assert_ne!(madd(a, a, -1.0, true), madd(a, a, -1.0, false));
     }
