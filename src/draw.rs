@@ -190,6 +190,8 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
             }
             SetupResult::Degenerate => stats.tris_degenerate += 1,
             SetupResult::Culled => stats.tris_culled += 1,
+            // What the rasterizer counts for a box without pixels.
+            SetupResult::Empty => stats.tris_offscreen += 1,
         }
     };
     match mode {

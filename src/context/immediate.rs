@@ -49,6 +49,24 @@ struct Rest {
 }
 
 impl Rest {
+    /// Whether `v`'s attributes are bit for bit these (so `v` may share this entry). One
+    /// branch-free pass over the bits: the float compare it replaces branched per float,
+    /// and also merged 0.0 with -0.0.
+    #[inline]
+    fn same_bits(&self, v: &VertexIn) -> bool {
+        let diff = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .zip(b)
+                .fold(0u32, |d, (x, y)| d | (x.to_bits() ^ y.to_bits()))
+        };
+        diff(self.texcoord.as_flattened(), v.texcoord.as_flattened())
+            | diff(&self.normal, &v.normal)
+            | diff(&self.secondary, &v.secondary)
+            | (self.fog_coord.to_bits() ^ v.fog_coord.to_bits())
+            | (self.edge_flag != v.edge_flag) as u32
+            == 0
+    }
+
     fn of(v: &VertexIn) -> Self {
         Rest {
             normal: v.normal,
@@ -83,10 +101,9 @@ impl ImmVerts {
 
     /// Appends `v` (GL_OUT_OF_MEMORY when memory runs out).
     pub fn push(&mut self, v: &VertexIn) -> GlResult<()> {
-        let rest = Rest::of(v);
-        if self.rest.last() != Some(&rest) {
+        if !self.rest.last().is_some_and(|r| r.same_bits(v)) {
             self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
-            self.rest.push(rest);
+            self.rest.push(Rest::of(v));
         }
         self.verts
             .try_reserve(1)
@@ -134,5 +151,46 @@ impl VertexSource for ImmVerts {
     #[inline]
     fn edge_flag(&self, i: usize) -> bool {
         self.rest[self.verts[i].2 as usize].edge_flag
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CurrentAttribs;
+
+    #[test]
+    fn vertices_share_attributes_only_when_bits_are_equal() {
+        let cur = CurrentAttribs::default();
+        let mut iv = ImmVerts::default();
+        let mut v = VertexIn::with_current([0.0, 0.0, 0.0, 1.0], &cur);
+        iv.push(&v).unwrap();
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 1);
+        // -0.0 == 0.0 as floats, but it is another value.
+        v.texcoord[7][2] = -v.texcoord[7][2];
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 2);
+        assert_eq!(
+            iv.vertex(2).texcoord[7][2].to_bits(),
+            v.texcoord[7][2].to_bits()
+        );
+        assert_eq!(iv.vertex(0).texcoord, cur.texcoord);
+        v.edge_flag = !v.edge_flag;
+        iv.push(&v).unwrap();
+        v.fog_coord = 0.25;
+        iv.push(&v).unwrap();
+        v.normal[1] = 0.5;
+        iv.push(&v).unwrap();
+        v.secondary[3] = 0.5;
+        iv.push(&v).unwrap();
+        // NaN is kept (and shared with an identical NaN).
+        v.texcoord[0][0] = f32::NAN;
+        iv.push(&v).unwrap();
+        iv.push(&v).unwrap();
+        assert_eq!(iv.rest.len(), 7);
+        assert!(iv.vertex(8).texcoord[0][0].is_nan());
+        assert_eq!(iv.vertex(5).normal[1], 0.5);
+        assert_eq!(iv.vertex(4).normal[1], cur.normal[1]);
     }
 }

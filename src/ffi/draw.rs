@@ -75,35 +75,59 @@ fn with_arrays<R>(c: &mut Context, f: impl FnOnce(&mut Context, &ArrayState) -> 
 /// memory; indices beyond the end of a buffer are dropped.
 fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult<Vec<u32>> {
     let size = ty.size();
-    let read = |bytes: &[u8]| -> u32 {
-        match ty {
-            DataType::UByte => bytes[0] as u32,
-            DataType::UShort => u16::from_ne_bytes([bytes[0], bytes[1]]) as u32,
-            _ => u32::from_ne_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]),
-        }
-    };
-    let mut out = Vec::new();
-    if c.arrays.element_buffer != 0 {
+    let bytes: &[u8] = if c.arrays.element_buffer != 0 {
         let data = c.arrays.buffer_data(c.arrays.element_buffer).unwrap_or(&[]);
         let avail = data.len().saturating_sub(ptr) / size;
         let n = count.min(avail);
-        out.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
         // An offset at or past the end gives no indices (n == 0), not a slice panic.
         let start = ptr.min(data.len());
-        out.extend(data[start..start + n * size].chunks_exact(size).map(read));
+        &data[start..start + n * size]
     } else {
         // Null, or an element-buffer offset given with no buffer bound (null + offset):
         // never client memory.
         if ptr < 4096 {
-            return Ok(out);
+            return Ok(Vec::new());
         }
-        out.try_reserve_exact(count)
-            .map_err(|_| GlError::OutOfMemory)?;
         // SAFETY: the program promises `count` indices at a non-null client pointer.
-        let bytes = unsafe { std::slice::from_raw_parts(ptr as *const u8, count * size) };
-        out.extend(bytes.chunks_exact(size).map(read));
+        unsafe { std::slice::from_raw_parts(ptr as *const u8, count * size) }
+    };
+    let mut out = Vec::new();
+    out.try_reserve_exact(bytes.len() / size)
+        .map_err(|_| GlError::OutOfMemory)?;
+    // One loop per type (not a type match per index), so each is a plain widening copy.
+    match ty {
+        DataType::UByte => out.extend(bytes.iter().map(|&b| b as u32)),
+        DataType::UShort => out.extend(
+            bytes
+                .chunks_exact(2)
+                .map(|b| u16::from_ne_bytes([b[0], b[1]]) as u32),
+        ),
+        _ => out.extend(
+            bytes
+                .chunks_exact(4)
+                .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+        ),
     }
     Ok(out)
+}
+
+/// The smallest and largest of `idx` (`None` when empty), in one pass over independent
+/// lanes that the compiler vectorises (`Iterator::min`/`max` compare one index at a time).
+fn min_max(idx: &[u32]) -> Option<(u32, u32)> {
+    const L: usize = 16;
+    let first = *idx.first()?;
+    let (mut lo, mut hi) = ([first; L], [first; L]);
+    let mut chunks = idx.chunks_exact(L);
+    for c in &mut chunks {
+        for k in 0..L {
+            lo[k] = lo[k].min(c[k]);
+            hi[k] = hi[k].max(c[k]);
+        }
+    }
+    let rest = chunks.remainder();
+    let lo = lo.iter().chain(rest).fold(first, |m, &i| m.min(i));
+    let hi = hi.iter().chain(rest).fold(first, |m, &i| m.max(i));
+    Some((lo, hi))
 }
 
 /// glDrawElements on the current context (shared by the range and multi-draw calls).
@@ -128,14 +152,16 @@ pub(crate) fn draw_elements(
         return Ok(());
     }
     let mut idx = read_indices(c, count, ty, indices as usize)?;
-    let (Some(&lo), Some(&hi)) = (idx.iter().min(), idx.iter().max()) else {
+    let Some((lo, hi)) = min_max(&idx) else {
         return Ok(());
     };
     // A compact index range is read straight from the arrays (vertex `i - lo` of the
     // range); a sparse one is fetched into a list of its distinct vertices.
     let range = (hi - lo) as usize + 1;
     if range <= idx.len() * 4 + 1024 {
-        idx.iter_mut().for_each(|i| *i -= lo);
+        if lo != 0 {
+            idx.iter_mut().for_each(|i| *i -= lo);
+        }
         with_arrays(c, |c, arrays| {
             let cur = c.state.current;
             let fetch = VertexFetcher::new(arrays, &cur);
@@ -268,4 +294,27 @@ pub extern "C" fn glDrawRangeElements(
             c.compile_draw(Primitive::from_gl(mode), idx)
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::min_max;
+
+    #[test]
+    fn min_max_of_every_length_and_position() {
+        assert_eq!(min_max(&[]), None);
+        for n in 1..70u32 {
+            let v: Vec<u32> = (0..n).map(|i| (i * 2_654_435_761u32) % 1000 + 5).collect();
+            let want = (*v.iter().min().unwrap(), *v.iter().max().unwrap());
+            assert_eq!(min_max(&v), Some(want));
+            // The extremes in the remainder and in the vector part.
+            for k in [0, n as usize - 1, (n as usize) / 2] {
+                let mut w = v.clone();
+                w[k] = 0;
+                assert_eq!(min_max(&w).unwrap().0, 0);
+                w[k] = u32::MAX;
+                assert_eq!(min_max(&w).unwrap().1, u32::MAX);
+            }
+        }
+    }
 }

@@ -162,9 +162,28 @@ unsafe fn fetch_from(
         arr.ptr.checked_add(off)? as *const u8
     };
     let mut out = fill;
-    for (c, o) in out.iter_mut().enumerate().take(arr.size as usize) {
-        // SAFETY: buffer reads were bounds-checked; client pointers are the program's promise.
-        *o = unsafe { read_component(base.add(c * arr.ty.size()), arr.ty, normalized) };
+    let n = arr.size as usize;
+    // SAFETY (all three loops): buffer reads were bounds-checked; client pointers are the
+    // program's promise. The two common types get their own loops (the same conversion
+    // as `read_component`) instead of a type match per component.
+    unsafe {
+        match arr.ty {
+            DataType::Float => {
+                for (c, o) in out.iter_mut().enumerate().take(n) {
+                    *o = base.add(c * 4).cast::<f32>().read_unaligned();
+                }
+            }
+            DataType::UByte if normalized => {
+                for (c, o) in out.iter_mut().enumerate().take(n) {
+                    *o = base.add(c).read() as f32 * (1.0f32 / 255.0);
+                }
+            }
+            ty => {
+                for (c, o) in out.iter_mut().enumerate().take(n) {
+                    *o = read_component(base.add(c * ty.size()), ty, normalized);
+                }
+            }
+        }
     }
     Some(out)
 }
@@ -215,7 +234,10 @@ impl<'a> Source<'a> {
 /// The enabled arrays of a draw, resolved once (buffer objects looked up per draw, not
 /// per vertex and attribute).
 pub struct VertexFetcher<'a> {
-    cur: &'a CurrentAttribs,
+    /// A vertex at the origin with the current attributes, what every fetch starts from.
+    base: VertexIn,
+    /// Whether any texture-coordinate array is enabled.
+    any_texcoord: bool,
     vertex: Option<Result<Source<'a>, ()>>,
     color: Option<Result<Source<'a>, ()>>,
     normal: Option<Result<Source<'a>, ()>>,
@@ -228,12 +250,15 @@ pub struct VertexFetcher<'a> {
 impl<'a> VertexFetcher<'a> {
     /// Resolves the enabled arrays of `arrays`; disabled ones read from `cur`.
     pub fn new(arrays: &'a ArrayState, cur: &'a CurrentAttribs) -> Self {
+        let texcoord: [_; MAX_TEXTURE_UNITS] =
+            std::array::from_fn(|u| Source::new(arrays, &arrays.texcoord[u]));
         VertexFetcher {
-            cur,
+            base: VertexIn::with_current([0.0, 0.0, 0.0, 1.0], cur),
+            any_texcoord: texcoord.iter().any(Option::is_some),
+            texcoord,
             vertex: Source::new(arrays, &arrays.vertex),
             color: Source::new(arrays, &arrays.color),
             normal: Source::new(arrays, &arrays.normal),
-            texcoord: std::array::from_fn(|u| Source::new(arrays, &arrays.texcoord[u])),
             edge_flag: Source::new(arrays, &arrays.edge_flag),
             secondary: Source::new(arrays, &arrays.secondary_color),
             fog_coord: Source::new(arrays, &arrays.fog_coord),
@@ -248,7 +273,7 @@ impl<'a> VertexFetcher<'a> {
     #[inline]
     pub unsafe fn fetch(&self, index: u32) -> VertexIn {
         const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
-        let mut v = VertexIn::with_current(ORIGIN, self.cur);
+        let mut v = self.base;
         // SAFETY: forwarded from the caller.
         unsafe {
             if let Some(s) = &self.vertex {
@@ -262,9 +287,11 @@ impl<'a> VertexFetcher<'a> {
                     v.normal = [n[0], n[1], n[2]];
                 }
             }
-            for (u, s) in self.texcoord.iter().enumerate() {
-                if let Some(s) = s {
-                    v.texcoord[u] = Source::get(s, index, false, ORIGIN).unwrap_or(ORIGIN);
+            if self.any_texcoord {
+                for (u, s) in self.texcoord.iter().enumerate() {
+                    if let Some(s) = s {
+                        v.texcoord[u] = Source::get(s, index, false, ORIGIN).unwrap_or(ORIGIN);
+                    }
                 }
             }
             if let Some(s) = &self.edge_flag {

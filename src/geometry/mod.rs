@@ -110,10 +110,35 @@ impl Viewport {
 #[inline(always)]
 pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
     if fma {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("fma") {
+            return fused_inline(a, b, c);
+        }
         a.mul_add(b, c)
     } else {
         a * b + c
     }
+}
+
+/// `a * b + c` with one rounding by the CPU's FMA instruction, inline: code compiled
+/// without the `fma` target feature would otherwise call libm's `fmaf` (same result).
+/// Callers check that the CPU has FMA.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn fused_inline(a: f32, b: f32, c: f32) -> f32 {
+    let mut r = a;
+    // SAFETY: the caller checked that the CPU has FMA; the instruction reads and writes
+    // only these registers (r = r * b + c).
+    unsafe {
+        std::arch::asm!(
+            "vfmadd213ss {r}, {b}, {c}",
+            r = inout(xmm_reg) r,
+            b = in(xmm_reg) b,
+            c = in(xmm_reg) c,
+            options(pure, nomem, nostack, preserves_flags)
+        );
+    }
+    r
 }
 
 /// `v` rounded to the nearest integer, ties to even (`f32::round_ties_even`), without a
@@ -174,4 +199,30 @@ pub fn clip_mask(c: [f32; 4]) -> ClipMask {
         | ((!(y + w >= 0.0)) as u8) << 3
         | ((!(z + w >= 0.0)) as u8) << 4
         | ((!(z <= w)) as u8) << 5) as ClipMask
+}
+
+#[cfg(test)]
+mod tests {
+    use super::madd;
+
+    #[test]
+    fn fused_madd_rounds_once_like_mul_add() {
+        let mut x = 0x1234_5678u32;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            f32::from_bits((x & 0x3fff_ffff) | 0x3000_0000) * if x & 1 == 0 { 1.0 } else { -1.0 }
+        };
+        for _ in 0..100_000 {
+            let (a, b, c) = (next(), next(), next());
+            let want = a.mul_add(b, c);
+            assert_eq!(madd(a, b, c, true).to_bits(), want.to_bits(), "{a} {b} {c}");
+            assert_eq!(madd(a, b, c, false).to_bits(), (a * b + c).to_bits());
+        }
+        // A case where fusing changes the result.
+        let a = 1.0 + 2.0 * f32::EPSILON;
+        assert_eq!(madd(a, a, -1.0, true), a.mul_add(a, -1.0));
+        assert_ne!(madd(a, a, -1.0, true), madd(a, a, -1.0, false));
+    }
 }

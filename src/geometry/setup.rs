@@ -63,16 +63,30 @@ impl SetupTriangle {
     /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
     /// `(first, last)`; `None` when none is covered. Exact: the same set as intersecting
     /// the three edges' [`Edge::span`]s.
-    #[inline]
+    #[inline(always)]
     pub fn row_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
         if x1 - x0 < NARROW {
-            // The covered pixels of a row are consecutive: find the first, then the end.
+            // Bit k: pixel x0 + k is inside all three edges (no branch per pixel). The
+            // covered pixels of a row are consecutive, so the lowest and highest bits are
+            // the span's ends.
             let e = self.edges.map(|e| e.c + e.b * ONE * py - e.a * ONE * x0);
             let s = self.edges.map(|e| e.a * ONE);
-            let inside = |k: i64| (0..3).all(|i| e[i] - s[i] * k > 0);
             let n = x1 - x0;
-            let first = (0..=n).find(|&k| inside(k))?;
-            let last = (first + 1..=n).find(|&k| !inside(k)).map_or(n, |k| k - 1);
+            if n < 0 {
+                return None;
+            }
+            let mut mask = 0u32;
+            let mut ek = e;
+            // At most NARROW pixels; no early exit, so the only branch is the box width.
+            for k in 0..=n as u32 {
+                mask |= (((ek[0] > 0) & (ek[1] > 0) & (ek[2] > 0)) as u32) << k;
+                ek = [ek[0] - s[0], ek[1] - s[1], ek[2] - s[2]];
+            }
+            if mask == 0 {
+                return None;
+            }
+            let first = mask.trailing_zeros() as i64;
+            let last = 31 - mask.leading_zeros() as i64;
             return Some((x0 + first, x0 + last));
         }
         let (mut lo, mut hi) = (x0, x1);
@@ -114,6 +128,22 @@ pub fn snap(v: f32) -> i64 {
     super::round_even((v - 0.5) * 256.0) as i64
 }
 
+/// [`snap`] of four values before the conversion to integers, lane by lane without
+/// branches (the same operations as `round_even`, so the compiler can use one vector
+/// operation for the four).
+#[inline(always)]
+fn snap4(v: [f32; 4]) -> [f32; 4] {
+    const BIG: f32 = 8_388_608.0;
+    let t = v.map(|v| (v - 0.5) * 256.0);
+    let mut out = [0f32; 4];
+    for l in 0..4 {
+        let c = BIG.copysign(t[l]);
+        let r = (t[l] + c) - c;
+        out[l] = if t[l].abs() < BIG { r } else { t[l] };
+    }
+    out
+}
+
 /// The largest snapped coordinate we accept; beyond it a triangle is dropped (clipping keeps
 /// real geometry far inside this; only garbage such as NaN reaches it).
 const MAX_SNAPPED: f32 = (1u64 << 40) as f32;
@@ -126,6 +156,10 @@ pub enum SetupResult {
     Degenerate,
     /// Removed by face culling.
     Culled,
+    /// Its bounding box holds no pixel centre, so it covers no pixel (only
+    /// [`setup_triangle_shaded`] reports this, before computing the planes; the other
+    /// entry points give such triangles as `Draw` with an empty `bbox`).
+    Empty,
 }
 
 /// Face-culling inputs for setup.
@@ -148,12 +182,13 @@ pub fn setup_triangle(
     back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_triangle_shaded(v, nvary, cull, back, true, fill)
+    setup_inner(v, nvary, cull, back, (true, false), fill)
 }
 
 /// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
 /// (`fill.flat`, `fill.flat_u8`) are only written when `flat`, since only flat-shaded
-/// spans read them.
+/// spans read them. A triangle that covers no pixel centre is reported as
+/// [`SetupResult::Empty`] without its planes (most of setup's work).
 pub fn setup_triangle_shaded(
     v: [&ClipVertex; 3],
     nvary: usize,
@@ -162,15 +197,34 @@ pub fn setup_triangle_shaded(
     flat: bool,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    for vx in v {
-        if !(vx.win[0].abs() < MAX_SNAPPED / 256.0 && vx.win[1].abs() < MAX_SNAPPED / 256.0) {
-            return SetupResult::Degenerate;
-        }
+    setup_inner(v, nvary, cull, back, (flat, true), fill)
+}
+
+/// Setup; `(flat, skip_empty)` as [`setup_triangle_shaded`]'s `flat` and whether an empty
+/// triangle is reported as `Empty`.
+#[inline(always)]
+fn setup_inner(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    (flat, skip_empty): (bool, bool),
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    // The six coordinates as lanes (x0 y0 x1 y1, x2 y2), checked and snapped without a
+    // branch per value.
+    let lo = [v[0].win[0], v[0].win[1], v[1].win[0], v[1].win[1]];
+    let hi = [v[2].win[0], v[2].win[1], 0.0, 0.0];
+    let lim = MAX_SNAPPED / 256.0;
+    let ok = (0..4).fold(true, |ok, l| ok & (lo[l].abs() < lim) & (hi[l].abs() < lim));
+    if !ok {
+        return SetupResult::Degenerate;
     }
+    let (lo, hi) = (snap4(lo), snap4(hi));
     let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
-    let (x0, y0) = (snap(p0.win[0]), snap(p0.win[1]));
-    let (x1, y1) = (snap(p1.win[0]), snap(p1.win[1]));
-    let (x2, y2) = (snap(p2.win[0]), snap(p2.win[1]));
+    let (x0, y0) = (lo[0] as i64, lo[1] as i64);
+    let (x1, y1) = (lo[2] as i64, lo[3] as i64);
+    let (x2, y2) = (hi[0] as i64, hi[1] as i64);
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     if area == 0 {
         return SetupResult::Degenerate;
@@ -198,7 +252,7 @@ pub fn setup_triangle_shaded(
             [y0, y1, y2],
             ccw,
             front,
-            (nvary, flat),
+            (nvary, flat, skip_empty),
             fill,
         );
     }
@@ -210,9 +264,61 @@ pub fn setup_triangle_shaded(
         [y0, y1, y2],
         ccw,
         front,
-        (nvary, flat),
+        (nvary, flat, skip_empty),
         fill,
     )
+}
+
+/// A triangle's constants for its plane equations (Mesa's order, lp_state_setup.c; f32,
+/// no FMA): the position deltas scaled by 1/area, and vertex 0 relative to pixel (0,0)'s
+/// centre.
+#[derive(Clone, Copy)]
+struct PlaneConsts {
+    dy20o: f32,
+    dy01o: f32,
+    dx01o: f32,
+    dx20o: f32,
+    x0c: f32,
+    y0c: f32,
+}
+
+impl PlaneConsts {
+    /// The plane through the values `a0`, `a1`, `a2` at the three vertices.
+    #[inline(always)]
+    fn plane(&self, a0: f32, a1: f32, a2: f32) -> Plane {
+        let da01 = a0 - a1;
+        let da20 = a2 - a0;
+        let dadx = da01 * self.dy20o - da20 * self.dy01o;
+        let dady = da20 * self.dx01o - da01 * self.dx20o;
+        Plane {
+            a0: a0 - (dadx * self.x0c + dady * self.y0c),
+            dadx,
+            dady,
+        }
+    }
+
+    /// Four [`Self::plane`]s, lane by lane with the same operations (written as lanes so
+    /// the compiler can use one vector operation for the four).
+    #[inline(always)]
+    fn plane4(&self, a0: [f32; 4], a1: [f32; 4], a2: [f32; 4]) -> [Plane; 4] {
+        let mut dadx = [0f32; 4];
+        let mut dady = [0f32; 4];
+        let mut a = [0f32; 4];
+        for l in 0..4 {
+            let da01 = a0[l] - a1[l];
+            let da20 = a2[l] - a0[l];
+            dadx[l] = da01 * self.dy20o - da20 * self.dy01o;
+            dady[l] = da20 * self.dx01o - da01 * self.dx20o;
+        }
+        for l in 0..4 {
+            a[l] = a0[l] - (dadx[l] * self.x0c + dady[l] * self.y0c);
+        }
+        std::array::from_fn(|l| Plane {
+            a0: a[l],
+            dadx: dadx[l],
+            dady: dady[l],
+        })
+    }
 }
 
 /// The part of setup after culling: edges and planes of (p0, p1, p2), reordered when
@@ -226,7 +332,7 @@ fn setup_rest<'v>(
     ys: [i64; 3],
     ccw: bool,
     front: bool,
-    (nvary, flat): (usize, bool),
+    (nvary, flat, skip_empty): (usize, bool, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
@@ -260,6 +366,9 @@ fn setup_rest<'v>(
         maxx.div_euclid(ONE),
         maxy.div_euclid(ONE),
     ];
+    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3]) {
+        return SetupResult::Empty;
+    }
 
     // Plane equations in f32, Mesa's order (lp_state_setup.c), no FMA.
     let (fx0, fy0) = (p0.win[0], p0.win[1]);
@@ -276,29 +385,41 @@ fn setup_rest<'v>(
     let dy20o = dy20 * ooa;
     let dx01o = dx01 * ooa;
     let dy01o = dy01 * ooa;
-    let plane = |a0: f32, a1: f32, a2: f32| -> Plane {
-        let da01 = a0 - a1;
-        let da20 = a2 - a0;
-        let dadx = da01 * dy20o - da20 * dy01o;
-        let dady = da20 * dx01o - da01 * dx20o;
-        Plane {
-            a0: a0 - (dadx * x0c + dady * y0c),
-            dadx,
-            dady,
-        }
+    let pc = PlaneConsts {
+        dy20o,
+        dy01o,
+        dx01o,
+        dx20o,
+        x0c,
+        y0c,
     };
     fill.edges = edges;
     fill.bbox = bbox;
     fill.front = front;
-    fill.z = plane(p0.win[2], p1.win[2], p2.win[2]);
+    fill.z = pc.plane(p0.win[2], p1.win[2], p2.win[2]);
     let (w0, w1, w2) = (p0.win[3], p1.win[3], p2.win[3]);
     fill.persp = !(w0 == 1.0 && w1 == 1.0 && w2 == 1.0);
-    fill.w = plane(w0, w1, w2);
-    for i in 0..nvary {
-        fill.vary[i] = if fill.persp {
-            plane(p0.vary[i] * w0, p1.vary[i] * w1, p2.vary[i] * w2)
+    fill.w = pc.plane(w0, w1, w2);
+    let persp = fill.persp;
+    // Four varyings at a time (the same operations per lane as `plane`), then the rest.
+    let lanes = |p: &ClipVertex, w: f32, i: usize| -> [f32; 4] {
+        let v = [p.vary[i], p.vary[i + 1], p.vary[i + 2], p.vary[i + 3]];
+        if persp {
+            v.map(|a| a * w)
         } else {
-            plane(p0.vary[i], p1.vary[i], p2.vary[i])
+            v
+        }
+    };
+    let n4 = nvary.min(super::MAX_VARY) / 4 * 4;
+    for i in (0..n4).step_by(4) {
+        let out = pc.plane4(lanes(p0, w0, i), lanes(p1, w1, i), lanes(p2, w2, i));
+        fill.vary[i..i + 4].copy_from_slice(&out);
+    }
+    for i in n4..nvary {
+        fill.vary[i] = if persp {
+            pc.plane(p0.vary[i] * w0, p1.vary[i] * w1, p2.vary[i] * w2)
+        } else {
+            pc.plane(p0.vary[i], p1.vary[i], p2.vary[i])
         };
     }
     // Only the varyings this draw writes (the rest stay as the draw's first triangle left
@@ -429,6 +550,139 @@ mod tests {
                     let want = want.filter(|(lo, hi)| lo <= hi);
                     assert_eq!(t.row_span(x0, x1, py), want);
                 }
+            }
+        }
+    }
+
+    /// A small deterministic generator for the randomised tests.
+    struct XorShift(u64);
+
+    impl XorShift {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        /// A float in [0, 1).
+        fn unit(&mut self) -> f32 {
+            (self.next() >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
+    /// The reference for `row_span`: the three edges' divisions, intersected.
+    fn reference_span(t: &SetupTriangle, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
+        let (mut lo, mut hi) = (x0, x1);
+        for e in &t.edges {
+            let (a, z) = e.span(py)?;
+            lo = lo.max(a);
+            hi = hi.min(z);
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    #[test]
+    fn row_span_agrees_with_division_on_random_triangles() {
+        let mut r = XorShift(0x9e37_79b9_7f4a_7c15);
+        let mut checked = 0;
+        for n in 0..20000 {
+            // Scales from sub-pixel to huge; every fourth triangle on pixel centres, every
+            // eighth on 1/256 sub-pixel positions.
+            let scale = [0.7f32, 3.0, 9.0, 40.0, 3000.0][n % 5];
+            let pos = |r: &mut XorShift| {
+                let v = 20.0 + r.unit() * scale;
+                match n % 8 {
+                    0 | 4 => v.floor() + 0.5,
+                    2 => (v * 256.0).floor() / 256.0,
+                    _ => v,
+                }
+            };
+            let tri = [0; 3].map(|_| v(pos(&mut r), pos(&mut r)));
+            let mut t = SetupTriangle::default();
+            if !matches!(
+                setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, &mut t),
+                SetupResult::Draw
+            ) {
+                continue;
+            }
+            let rows = (t.bbox[3] - t.bbox[1]).min(40);
+            for py in t.bbox[1] - 1..=t.bbox[1] + rows + 1 {
+                let mut windows = vec![(t.bbox[0], t.bbox[2]), (t.bbox[0] - 1, t.bbox[2] + 1)];
+                for w in 0..6 {
+                    let x = t.bbox[0] - 1 + (r.next() % 6) as i64;
+                    windows.push((x, x + w - 1));
+                }
+                for (x0, x1) in windows {
+                    assert_eq!(
+                        t.row_span(x0, x1, py),
+                        reference_span(&t, x0, x1, py),
+                        "triangle {tri:?} row {py} window {x0}..={x1}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 100_000);
+    }
+
+    #[test]
+    fn plane4_matches_scalar_planes_bit_for_bit() {
+        let mut r = XorShift(12345);
+        let f = |r: &mut XorShift| {
+            (r.unit() - 0.5) * [1.0f32, 1e-3, 300.0, 7e5][(r.next() % 4) as usize]
+        };
+        for _ in 0..20000 {
+            let pc = PlaneConsts {
+                dy20o: f(&mut r),
+                dy01o: f(&mut r),
+                dx01o: f(&mut r),
+                dx20o: f(&mut r),
+                x0c: f(&mut r),
+                y0c: f(&mut r),
+            };
+            let a = [0; 3].map(|_| [0; 4].map(|_| f(&mut r)));
+            let four = pc.plane4(a[0], a[1], a[2]);
+            for l in 0..4 {
+                // The reference: the scalar formula, spelled out in Mesa's order.
+                let (a0, a1, a2) = (a[0][l], a[1][l], a[2][l]);
+                let da01 = a0 - a1;
+                let da20 = a2 - a0;
+                let dadx = da01 * pc.dy20o - da20 * pc.dy01o;
+                let dady = da20 * pc.dx01o - da01 * pc.dx20o;
+                let a0 = a0 - (dadx * pc.x0c + dady * pc.y0c);
+                let got = four[l];
+                assert_eq!(
+                    [got.a0, got.dadx, got.dady].map(f32::to_bits),
+                    [a0, dadx, dady].map(f32::to_bits)
+                );
+                assert_eq!(pc.plane(a[0][l], a[1][l], a[2][l]), got);
+            }
+        }
+    }
+
+    #[test]
+    fn snap4_matches_snap() {
+        let mut r = XorShift(777);
+        let mut vals = vec![
+            0.5f32,
+            -0.5,
+            1.5 / 256.0,
+            0.5 + 0.5 / 256.0,
+            0.5 + 1.5 / 256.0,
+        ];
+        vals.extend([-1e30, 1e30, 4e7, -4e7, 32767.998, -0.0, 0.0]);
+        for _ in 0..100_000 {
+            let k = (r.next() % 2_000_000) as f32 - 1_000_000.0;
+            // Ties (k + 0.5)/256 + 0.5, near-ties and arbitrary values.
+            vals.push((k + 0.5) / 256.0 + 0.5);
+            vals.push(k / 256.0 + 0.5 + r.unit() / 256.0);
+            vals.push((r.unit() - 0.5) * 70000.0);
+        }
+        for c in vals.chunks_exact(4) {
+            let v = [c[0], c[1], c[2], c[3]];
+            let got = snap4(v);
+            for l in 0..4 {
+                assert_eq!(got[l] as i64, snap(v[l]), "{}", v[l]);
             }
         }
     }
