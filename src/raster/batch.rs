@@ -348,7 +348,10 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         stats.tris_rasterized += 1;
         if !self.threads && area < self.tune.band_area {
             // Drawn at once, after the batched triangles before it (primitive order).
-            self.flush(stats);
+            // (Without threads nothing is ever in flight: only a pending batch needs drawing.)
+            if !self.batch.heads.is_empty() {
+                self.flush(stats);
+            }
             raster_triangle(
                 t,
                 self.region,
