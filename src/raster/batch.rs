@@ -13,7 +13,9 @@
 //! rendering: the images are byte-identical with threads on and off. The last batch of a
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
 //! work. The batches live in a per-thread pool, so drawing allocates little once they have
-//! grown (a band list per batch).
+//! grown (a band list per batch). Waking a sleeping pool thread costs a good part of a
+//! millisecond here, so a pool task polls for the next batch for a while after drawing one
+//! and the draw's thread polls briefly for the last band before it sleeps ([`Job`]).
 
 use super::raster_triangle;
 use crate::fragment::FragPlan;
@@ -22,8 +24,9 @@ use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use std::cell::{RefCell, UnsafeCell};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
 
 /// Rows per band (even, so 2x2 quads stay inside one band) unless `SOFTGL_BAND_ROWS`
 /// says otherwise ([`Tuning`]).
@@ -45,6 +48,11 @@ const BAND_AREA: i64 = 4096;
 /// Single-threaded, pixels of triangle boxes after which a batch is drawn.
 const MAX_WORK_LOCAL: i64 = 1 << 26;
 
+/// Microseconds a pool task keeps polling for the next batch of the same draw thread.
+const POOL_STAY_US: u64 = 2000;
+/// Microseconds the draw thread polls for the batch in flight before sleeping.
+const POOL_SPIN_US: u64 = 500;
+
 /// The batching constants, read once; the environment variables `SOFTGL_BAND_ROWS`,
 /// `SOFTGL_MAX_WORK`, `SOFTGL_BAND_AREA` and `SOFTGL_MAX_BATCH` override them for measurements (the images
 /// are the same for any values: each pixel still sees its fragments in primitive order).
@@ -61,6 +69,12 @@ struct Tuning {
     /// Whether the draw's thread draws bands of the batch in flight while it waits for it
     /// (and the pool leaves it a core); `SOFTGL_POOL_HELP=0` turns this off for A/B.
     help: bool,
+    /// How long a pool task polls for the draw thread's next batch after drawing one
+    /// (`SOFTGL_POOL_STAY_US`, 0 = return at once).
+    stay: Duration,
+    /// How long the draw thread polls for the batch in flight before it sleeps
+    /// (`SOFTGL_POOL_SPIN_US`).
+    wait_spin: Duration,
 }
 
 /// The batching constants ([`Tuning`]).
@@ -75,6 +89,12 @@ fn tuning() -> Tuning {
             band_area: var("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
             help: var("SOFTGL_POOL_HELP") != Some(0),
             max_batch: var("SOFTGL_MAX_BATCH").map_or(MAX_BATCH, |v| v.clamp(1, 1 << 20) as usize),
+            stay: Duration::from_micros(
+                var("SOFTGL_POOL_STAY_US").map_or(POOL_STAY_US, |v| v.clamp(0, 1_000_000) as u64),
+            ),
+            wait_spin: Duration::from_micros(
+                var("SOFTGL_POOL_SPIN_US").map_or(POOL_SPIN_US, |v| v.clamp(0, 1_000_000) as u64),
+            ),
         }
     })
 }
@@ -236,11 +256,121 @@ impl Work {
     }
 }
 
-/// Whether the pool's job on the batch in flight has finished, and its signal.
+/// The pool's side of a draw thread's batches: whether the batch handed over is drawn,
+/// and the hand-over slot of a pool task that stays on after a batch ([`Job::run`]).
 #[derive(Default)]
 struct Job {
-    busy: Mutex<bool>,
+    /// The same as `slot.busy`, for waiting without the lock.
+    busy: AtomicBool,
+    /// Set when `slot.next` holds a batch for the task that waits in [`Job::run`].
+    posted: AtomicBool,
+    slot: Mutex<Slot>,
+    /// Signalled when `busy` goes false.
     done: Condvar,
+}
+
+/// The state of a [`Job`] behind its lock.
+#[derive(Default)]
+struct Slot {
+    /// A batch was handed over and is not drawn yet.
+    busy: bool,
+    /// A pool task has finished its batch and waits for the next one in [`Job::run`].
+    waiting: bool,
+    /// The batch handed to that task.
+    next: Option<Arc<Work>>,
+}
+
+impl Job {
+    /// Draws `work` on the pool, using a task that waits for more if there is one
+    /// (see [`Job::run`]).
+    fn hand_over(self: &Arc<Self>, work: Arc<Work>, helpers: usize, stay: Duration) {
+        let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+        slot.busy = true;
+        self.busy.store(true, Ordering::Release);
+        if slot.waiting {
+            slot.waiting = false;
+            slot.next = Some(work);
+            self.posted.store(true, Ordering::Release);
+            return;
+        }
+        drop(slot);
+        let job = Arc::clone(self);
+        rayon::spawn(move || job.run(work, helpers, stay));
+    }
+
+    /// A pool task: draws `work` on `helpers` threads, reports it done, then keeps polling
+    /// for the next batch of this draw thread for `stay` before it returns the pool thread.
+    /// Waking a sleeping pool thread takes a good part of a millisecond on this kind of
+    /// virtual machine, longer than the work of a small frame; frames follow each other
+    /// within that time.
+    fn run(&self, mut work: Arc<Work>, helpers: usize, stay: Duration) {
+        loop {
+            let helpers = helpers.min(rayon::current_num_threads());
+            if helpers > 1 {
+                let w = &work;
+                rayon::scope(|s| {
+                    for _ in 1..helpers {
+                        s.spawn(|_| w.help());
+                    }
+                    w.help();
+                });
+            } else {
+                work.help();
+            }
+            // The draw thread takes the batch back with `Arc::into_inner`: drop ours first.
+            drop(work);
+            {
+                let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+                slot.busy = false;
+                slot.waiting = !stay.is_zero();
+                self.busy.store(false, Ordering::Release);
+            }
+            self.done.notify_all();
+            if stay.is_zero() {
+                return;
+            }
+            let until = Instant::now() + stay;
+            let mut spins = 0u32;
+            while !self.posted.load(Ordering::Acquire) {
+                std::hint::spin_loop();
+                spins = spins.wrapping_add(1);
+                if spins.is_multiple_of(64) && Instant::now() >= until {
+                    break;
+                }
+            }
+            let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+            match slot.next.take() {
+                Some(next) => {
+                    self.posted.store(false, Ordering::Relaxed);
+                    work = next;
+                }
+                None => {
+                    slot.waiting = false;
+                    return;
+                }
+            }
+        }
+    }
+
+    /// Waits until the batch handed over is drawn: polls for `spin` first (the pool
+    /// thread is finishing its last band), then sleeps.
+    fn wait_done(&self, spin: Duration) {
+        if self.busy.load(Ordering::Acquire) && !spin.is_zero() {
+            let until = Instant::now() + spin;
+            let mut spins = 0u32;
+            while self.busy.load(Ordering::Acquire) {
+                std::hint::spin_loop();
+                spins = spins.wrapping_add(1);
+                if spins.is_multiple_of(64) && Instant::now() >= until {
+                    break;
+                }
+            }
+        }
+        let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+        while slot.busy {
+            slot = self.done.wait(slot).unwrap_or_else(|e| e.into_inner());
+        }
+    }
 }
 
 /// What a draw keeps between draws on one thread: both batches and the job slot.
@@ -426,11 +556,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         if self.tune.help {
             work.help();
         }
-        let mut busy = self.job.busy.lock().unwrap_or_else(|e| e.into_inner());
-        while *busy {
-            busy = self.job.done.wait(busy).unwrap_or_else(|e| e.into_inner());
-        }
-        drop(busy);
+        self.job.wait_done(self.tune.wait_spin);
         // Taken only now, so that a panic above still leaves `Drop` waiting for the job.
         // The job dropped its handle before it reported done.
         let work = self.inflight.take();
@@ -476,26 +602,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             stats: Mutex::new(Stats::default()),
         });
         self.inflight = Some(Arc::clone(&work));
-        *self.job.busy.lock().unwrap_or_else(|e| e.into_inner()) = true;
-        let job = Arc::clone(&self.job);
         let threads = crate::cpu::threads();
         let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
-        rayon::spawn(move || {
-            let helpers = helpers.min(rayon::current_num_threads());
-            if helpers > 1 {
-                rayon::scope(|s| {
-                    for _ in 1..helpers {
-                        s.spawn(|_| work.help());
-                    }
-                    work.help();
-                });
-            } else {
-                work.help();
-            }
-            drop(work);
-            *job.busy.lock().unwrap_or_else(|e| e.into_inner()) = false;
-            job.done.notify_all();
-        });
+        self.job.hand_over(work, helpers, self.tune.stay);
     }
 }
 
