@@ -22,6 +22,9 @@ pub struct Stats {
     pub tris_rasterized: u64,
     /// Triangles whose bounding box missed the drawable region.
     pub tris_offscreen: u64,
+    /// Pairs of rasterized triangles drawn as one axis-aligned rectangle (both count in
+    /// `tris_rasterized`; see `raster::batch`).
+    pub tris_paired: u64,
     /// Fragments (covered pixels) generated.
     pub fragments: u64,
     /// Fragments that failed the depth test.

@@ -246,6 +246,60 @@ fn counters_show_skipped_work() {
     assert_eq!(s4.fragments, s3.fragments);
 }
 
+/// A quad with the given corner colours (counter-clockwise from the bottom left).
+fn quad(corners: [[f32; 2]; 4], colors: [[f32; 3]; 4]) {
+    glBegin(GL_QUADS);
+    for (p, c) in corners.iter().zip(&colors) {
+        glColor3f(c[0], c[1], c[2]);
+        glVertex2f(p[0], p[1]);
+    }
+    glEnd();
+}
+
+#[test]
+fn rectangles_of_two_triangles_are_drawn_as_one() {
+    let _c = Ctx::new(32, 32);
+    let rect = [[-0.61, -0.47], [0.53, -0.47], [0.53, 0.39], [-0.61, 0.39]];
+    let s0 = softgl::ffi::current_stats().unwrap();
+    quad(rect, [[0.2, 0.5, 0.9]; 4]);
+    let s1 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s1.tris_rasterized - s0.tris_rasterized, 2);
+    assert_eq!(
+        s1.tris_paired - s0.tris_paired,
+        1,
+        "one colour: same planes"
+    );
+    // The rectangle's pixel count: x from -0.61 to 0.53 and y from -0.47 to 0.39 in
+    // NDC on 32 px are window x 6.24..24.48 and y 8.48..22.24, so pixel centres 6.5..23.5
+    // (18 columns) and 8.5..21.5 (14 rows).
+    assert_eq!(s1.fragments - s0.fragments, 18 * 14);
+    // Corner colours that are not affine give the two triangles different planes.
+    quad(
+        rect,
+        [
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 1.0, 1.0],
+            [0.0, 0.0, 1.0],
+        ],
+    );
+    let s2 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s2.tris_rasterized - s1.tris_rasterized, 2);
+    assert_eq!(
+        s2.tris_paired, s1.tris_paired,
+        "different planes: drawn apart"
+    );
+    assert_eq!(s2.fragments - s1.fragments, 18 * 14);
+    // A quad that is not axis-aligned is never paired.
+    quad(
+        [[-0.6, -0.5], [0.5, -0.4], [0.5, 0.4], [-0.6, 0.4]],
+        [[0.2, 0.5, 0.9]; 4],
+    );
+    let s3 = softgl::ffi::current_stats().unwrap();
+    assert_eq!(s3.tris_rasterized - s2.tris_rasterized, 2);
+    assert_eq!(s3.tris_paired, s2.tris_paired, "not a rectangle");
+}
+
 #[test]
 fn counters_show_skipped_fragment_work() {
     use softgl::ffi::fragment::*;

@@ -74,6 +74,9 @@ struct Tuning {
     /// Whether the draw's thread draws bands of the batch in flight while it waits for it
     /// (and the pool leaves it a core); `SOFTGL_POOL_HELP=0` turns this off for A/B.
     help: bool,
+    /// Whether triangles that make an axis-aligned rectangle with bit-identical planes are
+    /// drawn as one ([`pair`]); `SOFTGL_PAIR=0` turns this off for A/B.
+    pair: bool,
     /// How long a pool task polls for the draw thread's next batch after drawing one
     /// (`SOFTGL_POOL_STAY_US`, 0 = return at once).
     stay: Duration,
@@ -94,6 +97,7 @@ fn tuning() -> Tuning {
             band_area: var("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
             help: var("SOFTGL_POOL_HELP") != Some(0),
             max_batch: var("SOFTGL_MAX_BATCH").map_or(MAX_BATCH, |v| v.clamp(1, 1 << 20) as usize),
+            pair: var("SOFTGL_PAIR") != Some(0),
             stay: Duration::from_micros(
                 var("SOFTGL_POOL_STAY_US").map_or(POOL_STAY_US, |v| v.clamp(0, 1_000_000) as u64),
             ),
@@ -411,6 +415,10 @@ pub struct Rasterizer<'a, 'f> {
     /// Triangles after which the current batch is handed to the pool: [`FIRST_BATCH`] for
     /// a draw's first batch, doubling up to `max_batch`.
     limit: usize,
+    /// A triangle held back because it may make a rectangle with the next one ([`pair`]).
+    held: Option<Box<SetupTriangle>>,
+    /// Whether `held` holds such a triangle.
+    holding: bool,
 }
 
 /// The pixel count of `t`'s box inside `region`.
@@ -458,6 +466,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             inflight: None,
             job: pool.job,
             limit: FIRST_BATCH.min(tune.max_batch),
+            held: None,
+            holding: false,
         }
     }
 
@@ -485,6 +495,41 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         stats.tris_rasterized += 1;
+        if self.holding {
+            self.holding = false;
+            let mut h = self.held.take().unwrap_or_default();
+            let paired = pair(&mut h, t, self.nvary);
+            stats.tris_paired += paired as u64;
+            let a = box_area(&h, self.region);
+            self.emit(&h, a, stats);
+            self.held = Some(h);
+            if paired {
+                return;
+            }
+        }
+        if self.tune.pair && half_rect(t).is_some() {
+            let h = self.held.get_or_insert_with(Box::default);
+            copy_triangle(h, t, self.nvary);
+            self.holding = true;
+            return;
+        }
+        self.emit(t, area, stats);
+    }
+
+    /// Draws the held triangle, if any.
+    fn release(&mut self, stats: &mut Stats) {
+        if self.holding {
+            self.holding = false;
+            if let Some(h) = self.held.take() {
+                let a = box_area(&h, self.region);
+                self.emit(&h, a, stats);
+                self.held = Some(h);
+            }
+        }
+    }
+
+    /// Rasterizes (or batches) `t`, whose box holds `area` pixels of the region.
+    fn emit(&mut self, t: &SetupTriangle, area: i64, stats: &mut Stats) {
         if !self.threads && area < self.tune.band_area {
             // Drawn at once, after the batched triangles before it (primitive order).
             // (Without threads nothing is ever in flight: only a pending batch needs drawing.)
@@ -531,6 +576,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     /// Draws every pending triangle (waits for the pool, then draws the last batch, over
     /// threads when it is large enough).
     pub fn flush(&mut self, stats: &mut Stats) {
+        self.release(stats);
         self.wait(stats);
         if self.batch.heads.is_empty() {
             return;
@@ -619,6 +665,146 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     }
 }
 
+/// Whether `t` is a right triangle with a horizontal and a vertical edge (half of an
+/// axis-aligned rectangle): the index of its third (diagonal) edge.
+#[inline(always)]
+fn half_rect(t: &SetupTriangle) -> Option<usize> {
+    let [e0, e1, e2] = &t.edges;
+    // Cheap test first: most triangles have no horizontal or no vertical edge.
+    if !((e0.a == 0) | (e1.a == 0) | (e2.a == 0)) || !((e0.b == 0) | (e1.b == 0) | (e2.b == 0)) {
+        return None;
+    }
+    let kind = t.edges.map(|e| (e.a == 0) as u8 | ((e.b == 0) as u8) << 1);
+    let mut seen = [0u8; 4];
+    for k in kind {
+        seen[k as usize] += 1;
+    }
+    (seen == [1, 1, 1, 0]).then(|| kind.iter().position(|&k| k == 0).unwrap_or(0))
+}
+
+/// An edge that every pixel is inside (`c > 0`, no slope).
+const INSIDE: Edge = Edge { a: 0, b: 0, c: 1 };
+
+/// Makes `h` the pixel rectangle that `h` and `t` cover together, when they are the two
+/// halves of one axis-aligned rectangle with the same planes, flat values and facing;
+/// returns whether it did.
+///
+/// Exactness:
+/// - *Coverage.* Each half is a right triangle with a horizontal and a vertical leg, and
+///   the third edge of one is the third edge of the other reversed (`a`, `b` negated,
+///   `c₁ + c₂ = 1`: the same line, one fill-rule bias). Both triangles' edge functions are
+///   positive inside, so they lie on opposite sides of the diagonal, and the two diagonal
+///   functions sum to 1 at every pixel centre: each centre is inside exactly one of them
+///   (the top-left rule's guarantee that shared edges neither crack nor overlap). A centre
+///   is therefore covered by the pair exactly when it is inside the four legs, except at
+///   a corner of the rectangle where the leg and diagonal biases meet; so pairs with a
+///   corner on a pixel centre are left alone. Inside four axis-aligned edges is a pixel
+///   rectangle: it becomes `h`'s box, with edges every pixel is inside.
+/// - *Values.* Every pixel is computed from the same planes whichever triangle covers it:
+///   bit-identical, except that a zero slope may be +0 in one and −0 in the other (a
+///   constant attribute: `0 · d` takes the sign of d), allowed when `a0` is not −0: then
+///   every sum of `a0` with the slope terms is the same value either way (x + ±0 = x for
+///   x ≠ −0, and +0 + −0 = +0), and pixel coordinates are never negative.
+fn pair(h: &mut SetupTriangle, t: &SetupTriangle, nvary: usize) -> bool {
+    let (Some(i), Some(j)) = (half_rect(h), half_rect(t)) else {
+        return false;
+    };
+    let (d1, d2) = (h.edges[i], t.edges[j]);
+    if d2.a != -d1.a || d2.b != -d1.b || d1.c.checked_add(d2.c) != Some(1) {
+        return false;
+    }
+    let zero_ok = |a: f32, b: f32| a.to_bits() == b.to_bits() || (a == 0.0 && b == 0.0);
+    let same = |p: &Plane, q: &Plane| {
+        p.a0.to_bits() == q.a0.to_bits()
+            && ((p.dadx.to_bits() == q.dadx.to_bits() && p.dady.to_bits() == q.dady.to_bits())
+                || (p.a0.to_bits() != (-0.0f32).to_bits()
+                    && zero_ok(p.dadx, q.dadx)
+                    && zero_ok(p.dady, q.dady)))
+    };
+    let planes_match = h.front == t.front
+        && h.persp == t.persp
+        && h.flat_u8 == t.flat_u8
+        && same(&h.z, &t.z)
+        && same(&h.w, &t.w)
+        && (0..nvary)
+            .all(|k| same(&h.vary[k], &t.vary[k]) && h.flat[k].to_bits() == t.flat[k].to_bits());
+    if !planes_match {
+        return false;
+    }
+    // The legs: vertical ones (b = 0) bound x, horizontal ones (a = 0) bound y. A leg from
+    // vertex i to j has c = a·x_i − b·y_i plus 1 when it includes its centres.
+    let legs = h
+        .edges
+        .iter()
+        .chain(&t.edges)
+        .filter(|e| e.a == 0 || e.b == 0);
+    let (mut xs, mut ys) = ([0i64; 2], [0i64; 2]);
+    let (mut nx, mut ny) = (0, 0);
+    let (mut cols, mut rows) = ((i64::MIN, i64::MAX), (i64::MIN, i64::MAX));
+    for e in legs {
+        let bias = (e.a < 0 || (e.a == 0 && e.b < 0)) as i64;
+        // (Setup's rule; anything else would leave a remainder: then leave the pair.)
+        if (e.c - bias) % (e.a + e.b) != 0 {
+            return false;
+        }
+        // The range of pixels inside: columns for a vertical leg, rows for a horizontal
+        // one (`c + b·256·py > 0` is `Edge::span` of the edge with `a = −b`).
+        let (range, at, n) = if e.b == 0 {
+            (e.span(0), (e.c - bias) / e.a, &mut nx)
+        } else {
+            let across = Edge {
+                a: -e.b,
+                b: 0,
+                c: e.c,
+            };
+            (across.span(0), -(e.c - bias) / e.b, &mut ny)
+        };
+        let Some((lo, hi)) = range else { return false };
+        if e.b == 0 {
+            if *n < 2 {
+                xs[*n] = at;
+            }
+            cols = (cols.0.max(lo), cols.1.min(hi));
+        } else {
+            if *n < 2 {
+                ys[*n] = at;
+            }
+            rows = (rows.0.max(lo), rows.1.min(hi));
+        }
+        *n += 1;
+    }
+    // Two distinct vertical and two distinct horizontal legs (the halves differ), no corner
+    // on a pixel centre (pixel centres are the multiples of 256 in snapped coordinates),
+    // and at least one pixel.
+    let centre = |v: i64| v.rem_euclid(256) == 0;
+    if nx != 2
+        || ny != 2
+        || xs[0] == xs[1]
+        || ys[0] == ys[1]
+        || xs.iter().any(|&x| centre(x)) && ys.iter().any(|&y| centre(y))
+        || cols.0 > cols.1
+        || rows.0 > rows.1
+    {
+        return false;
+    }
+    h.edges = [INSIDE; 3];
+    h.bbox = [cols.0, rows.0, cols.1, rows.1];
+    true
+}
+
+/// Copies `t` (its first `nvary` varyings) into `h`.
+fn copy_triangle(h: &mut SetupTriangle, t: &SetupTriangle, nvary: usize) {
+    h.edges = t.edges;
+    h.bbox = t.bbox;
+    h.front = t.front;
+    h.z = t.z;
+    h.w = t.w;
+    h.persp = t.persp;
+    h.flat_u8 = t.flat_u8;
+    h.vary[..nvary].copy_from_slice(&t.vary[..nvary]);
+    h.flat[..nvary].copy_from_slice(&t.flat[..nvary]);
+}
+
 /// Draws the triangles of one band's bin into the band, counting into `s`.
 #[allow(clippy::too_many_arguments)]
 fn draw_bin(
@@ -645,8 +831,10 @@ fn draw_bin(
 
 impl Drop for Rasterizer<'_, '_> {
     fn drop(&mut self) {
-        // The job must be done before the borrows it uses end.
+        // The job must be done before the borrows it uses end. (Draws end with `flush`, so
+        // nothing is held or pending here unless a draw was cut short.)
         let mut s = Stats::default();
+        self.release(&mut s);
         self.wait(&mut s);
         let pool = Pool {
             batches: [
