@@ -7,7 +7,8 @@
 //! `floor(s·size)`), gathers the texels with `vpgatherdd`, and filters the four channels
 //! of every pixel in 16-bit fields with the 8-bit lerp `(a·(256 − w) + b·w + 128) >> 8`
 //! (x for both rows, then y, then the mip blend), exactly as [`super::fast::quad_u8`]
-//! does one pixel at a time.
+//! does one pixel at a time. The texels are split once into even and odd bytes (no
+//! shuffles) and stay in 16-bit fields through all lerps, packed once at the end.
 //!
 //! It declines (returns `false`, and the caller samples the row with the scalar code)
 //! when a lane's scaled coordinate is not below 2^30 in magnitude or is NaN (where the
@@ -116,51 +117,80 @@ unsafe fn axis(
     }
 }
 
-/// llvmpipe's 8-bit lerp of 8 RGBA8 pixels, `w` per pixel in 0..=255.
-///
-/// # Safety
-/// Must be called from a function compiled with AVX2.
-/// `(a·(256 − w) + b·w + 128) >> 8` on 16-bit lanes. A function, not a closure: a
-/// closure in an `#[inline(always)]` function without `target_feature` is compiled without
-/// AVX2 and called out of line (measured: 4x the frame time of tex_trilinear_plane).
+/// 8 RGBA8 pixels as two vectors of 16-bit fields: `.0` the even bytes (R, B), `.1` the
+/// odd bytes (G, A), each pixel's two fields in its own 32-bit lane. The lerps work on
+/// this form without any shuffle; [`pack`] puts the bytes back.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Wide(__m256i, __m256i);
+
+/// Splits 8 RGBA8 pixels into [`Wide`] fields.
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn half(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+unsafe fn widen(v: __m256i) -> Wide {
+    Wide(
+        _mm256_and_si256(v, _mm256_set1_epi16(0xff)),
+        _mm256_srli_epi16::<8>(v),
+    )
+}
+
+/// The bytes of [`Wide`] fields that hold values in 0..=255.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn pack(v: Wide) -> __m256i {
+    _mm256_or_si256(v.0, _mm256_slli_epi16::<8>(v.1))
+}
+
+/// A per-pixel weight (`w` in 0..=256 per 32-bit lane) in both 16-bit fields of its lane.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn weight(w: __m256i) -> __m256i {
+    _mm256_or_si256(w, _mm256_slli_epi32::<16>(w))
+}
+
+/// llvmpipe's 8-bit lerp `(a·(256 − w) + b·w + 128) >> 8` on 16-bit fields holding
+/// 0..=255, `w` in 0..=256 per field, computed as `((a << 8) + (b − a)·w + 128) >> 8` in
+/// wrapping 16-bit arithmetic: both are the same polynomial mod 2^16, and its true value
+/// lies in 0..=65408, so the wrapped sum is that value (one multiply instead of two;
+/// `lerp16_matches_lerp8` checks every input). A function, not a closure: a closure in an
+/// `#[inline(always)]` function without `target_feature` is compiled without AVX2 and
+/// called out of line (measured: 4x the frame time of tex_trilinear_plane).
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn lerp16(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
     let v = _mm256_add_epi16(
         _mm256_add_epi16(
-            _mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), w)),
-            _mm256_mullo_epi16(b, w),
+            _mm256_slli_epi16::<8>(a),
+            _mm256_mullo_epi16(_mm256_sub_epi16(b, a), w),
         ),
         _mm256_set1_epi16(128),
     );
-    _mm256_srli_epi16(v, 8)
+    _mm256_srli_epi16::<8>(v)
 }
 
+/// [`lerp16`] of both halves of [`Wide`] pixels with weights from [`weight`].
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn lerp8(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
-    let zero = _mm256_setzero_si256();
-    // w in both 16-bit halves, then each pixel's weight in its four channel fields
-    // (the unpacks pair pixels 0,1 | 4,5 (lo) and 2,3 | 6,7 (hi) like the byte unpacks).
-    let wd = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));
-    let (wlo, whi) = (_mm256_unpacklo_epi32(wd, wd), _mm256_unpackhi_epi32(wd, wd));
-    let lo = half(
-        _mm256_unpacklo_epi8(a, zero),
-        _mm256_unpacklo_epi8(b, zero),
-        wlo,
-    );
-    let hi = half(
-        _mm256_unpackhi_epi8(a, zero),
-        _mm256_unpackhi_epi8(b, zero),
-        whi,
-    );
-    _mm256_packus_epi16(lo, hi)
+unsafe fn lerp_wide(a: Wide, b: Wide, w: __m256i) -> Wide {
+    Wide(lerp16(a.0, b.0, w), lerp16(a.1, b.1, w))
 }
 
-/// One level of 8 pixels.
+/// One level of 8 pixels, as [`Wide`] fields.
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2.
@@ -173,7 +203,7 @@ unsafe fn level8(
     s: __m256,
     t: __m256,
     ok: &mut __m256,
-) -> __m256i {
+) -> Wide {
     let (w, h) = (img.width, img.height);
     debug_assert!(img.texels.len() >= w * h && w * h <= i32::MAX as usize);
     let base = img.texels.as_ptr() as *const i32;
@@ -181,23 +211,25 @@ unsafe fn level8(
     let (x0, x1, wx) = axis(s, w, wrap[0], linear, ok);
     let (y0, y1, wy) = axis(t, h, wrap[1], linear, ok);
     if _mm256_movemask_ps(*ok) != 0xff {
-        return _mm256_setzero_si256();
+        let z = _mm256_setzero_si256();
+        return Wide(z, z);
     }
     let r0 = _mm256_mullo_epi32(y0, stride);
     // SAFETY (all gathers): every index is wrapped or clamped into 0..w and 0..h above
     // (the lanes passed the range check), so y·w + x < w·h ≤ texels.len(); the texels are
     // 4 bytes each, read as unaligned i32.
     #[inline(always)]
-    unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> __m256i {
-        _mm256_i32gather_epi32::<4>(base, _mm256_add_epi32(r, x))
+    unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> Wide {
+        widen(_mm256_i32gather_epi32::<4>(base, _mm256_add_epi32(r, x)))
     }
     if !linear {
         return gather(base, r0, x0);
     }
     let r1 = _mm256_mullo_epi32(y1, stride);
-    let top = lerp8(gather(base, r0, x0), gather(base, r0, x1), wx);
-    let bottom = lerp8(gather(base, r1, x0), gather(base, r1, x1), wx);
-    lerp8(top, bottom, wy)
+    let wx = weight(wx);
+    let top = lerp_wide(gather(base, r0, x0), gather(base, r0, x1), wx);
+    let bottom = lerp_wide(gather(base, r1, x0), gather(base, r1, x1), wx);
+    lerp_wide(top, bottom, weight(wy))
 }
 
 impl RowSampler<'_> {
@@ -243,9 +275,9 @@ impl RowSampler<'_> {
             let mut v = level8(self.a, self.linear, self.wrap, s, t, &mut ok);
             if let Some(b) = self.b {
                 let vb = level8(b, self.linear, self.wrap, s, t, &mut ok);
-                v = lerp8(v, vb, wmip);
+                v = lerp_wide(v, vb, weight(wmip));
             }
-            (v, _mm256_movemask_ps(ok) == 0xff)
+            (pack(v), _mm256_movemask_ps(ok) == 0xff)
         }
     }
 
@@ -262,5 +294,52 @@ impl RowSampler<'_> {
         _out: &mut [[u8; 4]; 8],
     ) -> bool {
         false
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::*;
+    use crate::texture::sample::lerp8 as lerp8_ref;
+
+    /// The vector lerp, through [`widen`], [`weight`], [`lerp_wide`] and [`pack`], on every
+    /// `a`, `b` in 0..=255 and `w` in 0..=256 (each triple reaches some byte: `a` runs
+    /// over all values, `b` over all residues through the byte offset), against the scalar
+    /// lerp.
+    #[test]
+    fn lerp16_matches_lerp8() {
+        if !available() {
+            return;
+        }
+        #[target_feature(enable = "avx2")]
+        unsafe fn run(a: [u8; 32], b: [u8; 32], w: [i32; 8]) -> [u8; 32] {
+            let mut out = [0u8; 32];
+            // SAFETY: AVX2 (this function's feature); the arrays are 32 bytes each.
+            unsafe {
+                let (va, vb) = (
+                    widen(_mm256_loadu_si256(a.as_ptr() as *const __m256i)),
+                    widen(_mm256_loadu_si256(b.as_ptr() as *const __m256i)),
+                );
+                let vw = weight(_mm256_loadu_si256(w.as_ptr() as *const __m256i));
+                let v = pack(lerp_wide(va, vb, vw));
+                _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, v);
+            }
+            out
+        }
+        for w0 in 0..=256i32 {
+            let w: [i32; 8] = std::array::from_fn(|i| (w0 + i as i32 * 37) % 257);
+            for a0 in 0..=255u32 {
+                for b0 in (0..=255u32).step_by(8) {
+                    let a: [u8; 32] = std::array::from_fn(|i| (a0 + i as u32 * 11) as u8);
+                    let b: [u8; 32] = std::array::from_fn(|i| (b0 + i as u32) as u8);
+                    // SAFETY: `available` checked that the CPU has AVX2.
+                    let out = unsafe { run(a, b, w) };
+                    for i in 0..32 {
+                        let want = lerp8_ref(a[i], b[i], w[i / 4]);
+                        assert_eq!(out[i], want, "a {} b {} w {}", a[i], b[i], w[i / 4]);
+                    }
+                }
+            }
+        }
     }
 }

@@ -81,11 +81,15 @@ pub(in crate::raster) unsafe fn rows<
     // inside their row (the spans lie in `b`, which lies in the target).
     unsafe {
         let sampling = Sampling::new(u);
+        // Chunks start at even pixels only for the LOD's 2x2 quads; without a LOD every
+        // pixel is sampled on its own, and starting at the span (a 16-px sprite row that
+        // begins at an odd x fits 2 chunks instead of 3) gives the same bytes.
+        let align = if sampling.quads() { !1 } else { !0 };
         let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
         let lane_f = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
         let one = _mm256_set1_ps(1.0);
         let vary = &t.vary[VARY_TEX..];
-        let mut qy = b[1] & !1;
+        let mut qy = b[1] & align;
         while qy <= b[3] {
             let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
             let lo = spans.iter().flatten().map(|s| s.0).min();
@@ -96,7 +100,7 @@ pub(in crate::raster) unsafe fn rows<
             };
             let bnd = [bounds(spans[0]), bounds(spans[1])];
             let fy = [_mm256_set1_ps(qy as f32), _mm256_set1_ps((qy + 1) as f32)];
-            let mut x = lo & !1;
+            let mut x = lo & align;
             while x <= hi {
                 let xi = _mm256_add_epi32(_mm256_set1_epi32(x as i32), lane_i);
                 let live = [inside(xi, bnd[0]), inside(xi, bnd[1])];

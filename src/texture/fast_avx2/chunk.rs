@@ -200,7 +200,15 @@ impl<'a> Sampling<'a> {
         }
     }
 
+    /// Whether the chunks' lanes must form llvmpipe's 2x2 quads (the LOD is computed per
+    /// quad); without a LOD each pixel is sampled on its own ([`fast::chunk_u8`] too).
+    #[inline(always)]
+    pub fn quads(&self) -> bool {
+        self.u.needs_lod
+    }
+
     /// The vector sampler of levels `l0`, `l1` with filter `f`.
+    #[inline(always)]
     fn sampler(u: &'a UnitPlan<'a>, f: Filter, l0: usize, l1: usize) -> RowSampler<'a> {
         RowSampler {
             a: u.image(l0),
