@@ -443,7 +443,7 @@ mod tests {
         };
         let val = |next: &mut dyn FnMut() -> u32| {
             let r = next();
-            if r % 16 == 0 {
+            if r.is_multiple_of(16) {
                 ODD[(r >> 4) as usize % ODD.len()]
             } else {
                 (r >> 8) as f32 / (1 << 23) as f32 * 4.0 - 2.0

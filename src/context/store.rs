@@ -9,6 +9,10 @@ use std::ops::{Deref, DerefMut};
 #[cfg(target_os = "linux")]
 const HUGE: usize = 2 << 20;
 
+/// The memory for a store could not be had.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutOfMemory;
+
 /// A buffer object's bytes (dereferences to the byte slice).
 #[derive(Default)]
 pub struct Store(Inner);
@@ -33,26 +37,26 @@ unsafe impl Send for Store {}
 unsafe impl Sync for Store {}
 
 impl Store {
-    /// `size` zero bytes; `Err` when memory runs out.
-    pub fn zeroed(size: usize) -> Result<Self, ()> {
+    /// `size` zero bytes, or [`OutOfMemory`].
+    pub fn zeroed(size: usize) -> Result<Self, OutOfMemory> {
         // A fresh mapping is zero already (and untouched until written).
         if let Some(s) = Self::map(size) {
             return Ok(s);
         }
         let mut v = Vec::new();
-        v.try_reserve_exact(size).map_err(|_| ())?;
+        v.try_reserve_exact(size).map_err(|_| OutOfMemory)?;
         v.resize(size, 0);
         Ok(Store(Inner::Heap(v)))
     }
 
-    /// A copy of `data`; `Err` when memory runs out.
-    pub fn copy_of(data: &[u8]) -> Result<Self, ()> {
+    /// A copy of `data`, or [`OutOfMemory`].
+    pub fn copy_of(data: &[u8]) -> Result<Self, OutOfMemory> {
         if let Some(mut s) = Self::map(data.len()) {
             s.copy_from_slice(data);
             return Ok(s);
         }
         let mut v = Vec::new();
-        v.try_reserve_exact(data.len()).map_err(|_| ())?;
+        v.try_reserve_exact(data.len()).map_err(|_| OutOfMemory)?;
         v.extend_from_slice(data);
         Ok(Store(Inner::Heap(v)))
     }
