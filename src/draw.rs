@@ -122,10 +122,9 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
         front_ccw: st.front_ccw,
     };
 
-    // Independent triangles, strips, fans and polygons stream through the post-transform
-    // cache; the other modes (whose decomposition depends on whether any vertex of the
-    // draw is outside, or which need edge flags or per-vertex materials) transform every
-    // vertex first.
+    // Filled triangles, strips, fans, polygons, quads and quad strips stream through the
+    // post-transform cache; points, lines and draws that need edge flags or per-vertex
+    // materials transform every vertex first.
     let streamed = materials.is_none()
         && matches!(
             mode,
@@ -133,6 +132,8 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                 | Primitive::TriangleStrip
                 | Primitive::TriangleFan
                 | Primitive::Polygon
+                | Primitive::Quads
+                | Primitive::QuadStrip
         )
         && !PolyPipeline::needed(&ctx.raster, &st.caps, stage.two_side());
     let cv = if streamed {
@@ -141,12 +142,22 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
         run_vertices(&mut stage, verts, materials)
     };
     ctx.stats.vertices += cv.len() as u64;
-    // (A streamed draw's modes decompose the same way either way.)
-    let any_outside = !streamed
-        && match indices {
+    let any_outside = if streamed {
+        // Only the split of quads and quad strips depends on whether any vertex is
+        // outside (llvmpipe-rules §5; indexed or flat quads split one way on both paths):
+        // a pass over the positions alone decides it before anything is assembled.
+        let split_varies = match mode {
+            Primitive::Quads => indices.is_none() && !plan.flat,
+            Primitive::QuadStrip => true,
+            _ => false,
+        };
+        split_varies && any_vertex_outside(&stage, verts, indices)
+    } else {
+        match indices {
             Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
             None => cv.iter().any(|v| v.mask != 0),
-        };
+        }
+    };
     let path = if any_outside {
         DrawPath::Clip
     } else if indices.is_some() {
@@ -360,6 +371,21 @@ fn draw_feedback<S: VertexSource + ?Sized>(
     stages.run(mode, n, at, edge, &mut sink);
 }
 
+/// Whether any vertex the draw reads (every vertex of `verts`, or those `indices` name)
+/// is outside the clip volume or a user clip plane: the clip masks [`run_vertices`] would
+/// give, from the positions alone.
+fn any_vertex_outside<S: VertexSource + ?Sized>(
+    stage: &VertexStage,
+    verts: &S,
+    indices: Option<&[u32]>,
+) -> bool {
+    let outside = |i: usize| stage.clip_position(verts.position(i)).1 != 0;
+    match indices {
+        Some(ix) => ix.iter().any(|&i| outside(i as usize)),
+        None => (0..verts.count()).any(outside),
+    }
+}
+
 /// Runs the vertex stage over `verts`, lighting each with its own material when
 /// glMaterial was called between glBegin and glEnd.
 fn run_vertices<S: VertexSource + ?Sized>(
@@ -384,5 +410,85 @@ fn run_vertices<S: VertexSource + ?Sized>(
                 .collect()
         }
         _ => (0..n).map(|i| stage.run(&verts.vertex(i))).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CurrentAttribs;
+    use crate::fixed_function::matrix::Mat4;
+    use crate::geometry::fetch::VertexIn;
+
+    /// Special values mixed into the random inputs.
+    const ODD: [f32; 8] = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        1e30,
+    ];
+
+    #[test]
+    fn position_pass_finds_the_vertex_stage_masks() {
+        let mut x = 0x9e37_79b9u32;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            x
+        };
+        let val = |next: &mut dyn FnMut() -> u32| {
+            let r = next();
+            if r.is_multiple_of(16) {
+                ODD[(r >> 4) as usize % ODD.len()]
+            } else {
+                (r >> 8) as f32 / (1 << 23) as f32 * 4.0 - 2.0
+            }
+        };
+        let cur = CurrentAttribs::default();
+        let viewport = Viewport::new([0, 0, 64, 64], [0.0, 1.0], 64);
+        let mut seen = [0; 2];
+        for case in 0..400 {
+            let m = Mat4(std::array::from_fn(|_| val(&mut next)));
+            for fma in [false, true] {
+                let mut stage = VertexStage::new(m, m, viewport, fma);
+                if case % 3 == 0 {
+                    stage.ucp_enabled = (next() & 0xff) as u8;
+                    stage.ucp = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut next)));
+                }
+                // Small draws, so that some are entirely inside.
+                let n = 1 + next() as usize % 6;
+                let scale = if case % 2 == 0 { 0.3 } else { 3.0 };
+                let verts: Vec<VertexIn> = (0..n)
+                    .map(|_| {
+                        let p = std::array::from_fn(|_| val(&mut next) * scale);
+                        VertexIn::with_current(p, &cur)
+                    })
+                    .collect();
+                let indices: Vec<u32> = (0..n).map(|_| next() % n as u32).collect();
+                // The reference: the masks of the whole vertex stage.
+                let cv = run_vertices(&mut stage, verts.as_slice(), None);
+                let want_arrays = cv.iter().any(|v| v.mask != 0);
+                let want_elems = indices.iter().any(|&i| cv[i as usize].mask != 0);
+                seen[want_arrays as usize] += 1;
+                for (v, c) in verts.iter().zip(&cv) {
+                    assert_eq!(stage.clip_position(v.pos).1, c.mask);
+                }
+                assert_eq!(
+                    any_vertex_outside(&stage, verts.as_slice(), None),
+                    want_arrays
+                );
+                assert_eq!(
+                    any_vertex_outside(&stage, verts.as_slice(), Some(&indices)),
+                    want_elems
+                );
+            }
+        }
+        // Both answers occur.
+        assert!(seen[0] > 20 && seen[1] > 20, "{seen:?}");
     }
 }

@@ -110,7 +110,7 @@ impl ArrayPointer {
 #[derive(Clone, Debug, Default)]
 pub struct BufferObject {
     /// The bytes.
-    pub data: Vec<u8>,
+    pub data: super::store::Store,
     /// GL_BUFFER_USAGE.
     pub usage: GLenum,
     /// GL_BUFFER_ACCESS of the current mapping, if mapped.
@@ -211,7 +211,7 @@ impl ArrayState {
         self.buffers
             .get(&name)
             .and_then(|b| b.as_ref())
-            .map(|b| b.data.as_slice())
+            .map(|b| &b.data[..])
     }
 
     /// glGenBuffers: `n` unused names (reserved, no object yet).

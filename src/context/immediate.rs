@@ -149,6 +149,11 @@ impl VertexSource for ImmVerts {
     }
 
     #[inline]
+    fn position(&self, i: usize) -> [f32; 4] {
+        self.verts[i].0
+    }
+
+    #[inline]
     fn edge_flag(&self, i: usize) -> bool {
         self.rest[self.verts[i].2 as usize].edge_flag
     }

@@ -22,6 +22,7 @@ pub mod queries;
 pub mod raster_state;
 pub mod share;
 pub mod state;
+pub mod store;
 pub mod texgen_state;
 pub mod vertex_material;
 

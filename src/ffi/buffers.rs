@@ -7,6 +7,7 @@ use super::types::*;
 use super::{non_negative, with_ctx};
 use crate::context::arrays::BufferTarget;
 use crate::context::error::GlError;
+use crate::context::store::Store;
 use libc::c_void;
 
 /// glGenBuffers.
@@ -108,17 +109,13 @@ pub unsafe extern "C" fn glBufferData(
         c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         let size = size as usize;
-        let mut store = Vec::new();
-        store
-            .try_reserve_exact(size)
-            .map_err(|_| GlError::OutOfMemory)?;
-        if data.is_null() {
-            store.resize(size, 0);
+        let store = if data.is_null() {
+            Store::zeroed(size)
         } else {
             // SAFETY: the caller promises `size` readable bytes at `data`.
-            store.extend_from_slice(unsafe { std::slice::from_raw_parts(data as *const u8, size) });
-        }
-        b.data = store;
+            Store::copy_of(unsafe { std::slice::from_raw_parts(data as *const u8, size) })
+        };
+        b.data = store.map_err(|_| GlError::OutOfMemory)?;
         b.usage = usage;
         b.mapped = None;
         Ok(())

@@ -130,6 +130,45 @@ fn min_max(idx: &[u32]) -> Option<(u32, u32)> {
     Some((lo, hi))
 }
 
+/// Whether indices `lo..=hi` (`n` of them) are read as a range of the arrays rather than
+/// as a list of their distinct vertices.
+fn compact(lo: u32, hi: u32, n: usize) -> bool {
+    ((hi - lo) as usize) < n * 4 + 1024
+}
+
+/// Draws vertices `lo + idx[k]` of the arrays (`idx` relative to `lo`, each below
+/// `range`).
+fn draw_range(
+    c: &mut Context,
+    arrays: &ArrayState,
+    mode: Primitive,
+    lo: u32,
+    range: usize,
+    idx: &[u32],
+) {
+    let cur = c.state.current;
+    let fetch = VertexFetcher::new(arrays, &cur);
+    // SAFETY: as in draw_arrays.
+    let src = unsafe { FetchSource::new(fetch, lo, range) };
+    crate::draw::draw(c, mode, &src, Some(idx));
+}
+
+/// The `count` 32-bit indices at byte offset `ptr` of the bound element buffer, borrowed
+/// from its store (those past its end dropped, as [`read_indices`] drops them); `None`
+/// without a bound buffer or when the offset is not 4-byte aligned in memory.
+fn buffer_indices_u32(arrays: &ArrayState, count: usize, ptr: usize) -> Option<&[u32]> {
+    if arrays.element_buffer == 0 {
+        return None;
+    }
+    let data = arrays.buffer_data(arrays.element_buffer).unwrap_or(&[]);
+    let start = ptr.min(data.len());
+    let n = count.min((data.len() - start) / 4);
+    // SAFETY: every bit pattern is a valid u32; `align_to` reinterprets only the aligned
+    // middle part.
+    let (head, mid, _) = unsafe { data[start..start + n * 4].align_to::<u32>() };
+    (head.is_empty() && mid.len() == n).then_some(mid)
+}
+
 /// glDrawElements on the current context (shared by the range and multi-draw calls).
 pub(crate) fn draw_elements(
     c: &mut Context,
@@ -151,24 +190,38 @@ pub(crate) fn draw_elements(
     if !c.arrays.vertex.enabled || count == 0 {
         return Ok(());
     }
+    // 32-bit indices in a buffer object, from 0 and compact (the usual mesh), are drawn
+    // from the buffer's store without a copy.
+    if ty == DataType::UInt && c.arrays.element_buffer != 0 {
+        let drawn = with_arrays(c, |c, arrays| {
+            let Some(idx) = buffer_indices_u32(arrays, count, indices as usize) else {
+                return false;
+            };
+            match min_max(idx) {
+                None => true,
+                Some((0, hi)) if compact(0, hi, idx.len()) => {
+                    draw_range(c, arrays, mode, 0, hi as usize + 1, idx);
+                    true
+                }
+                Some(_) => false,
+            }
+        });
+        if drawn {
+            return Ok(());
+        }
+    }
     let mut idx = read_indices(c, count, ty, indices as usize)?;
     let Some((lo, hi)) = min_max(&idx) else {
         return Ok(());
     };
     // A compact index range is read straight from the arrays (vertex `i - lo` of the
     // range); a sparse one is fetched into a list of its distinct vertices.
-    let range = (hi - lo) as usize + 1;
-    if range <= idx.len() * 4 + 1024 {
+    if compact(lo, hi, idx.len()) {
         if lo != 0 {
             idx.iter_mut().for_each(|i| *i -= lo);
         }
-        with_arrays(c, |c, arrays| {
-            let cur = c.state.current;
-            let fetch = VertexFetcher::new(arrays, &cur);
-            // SAFETY: as in draw_arrays.
-            let src = unsafe { FetchSource::new(fetch, lo, range) };
-            crate::draw::draw(c, mode, &src, Some(&idx));
-        });
+        let range = (hi - lo) as usize + 1;
+        with_arrays(c, |c, arrays| draw_range(c, arrays, mode, lo, range, &idx));
         return Ok(());
     }
     let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
@@ -298,7 +351,41 @@ pub extern "C" fn glDrawRangeElements(
 
 #[cfg(test)]
 mod tests {
-    use super::min_max;
+    use super::{buffer_indices_u32, min_max};
+    use crate::context::arrays::{ArrayState, BufferObject};
+
+    #[test]
+    fn borrowed_indices_are_the_copied_ones() {
+        let words: Vec<u32> = (0..64u32).map(|i| i.wrapping_mul(0x9e37_79b9)).collect();
+        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_ne_bytes()).collect();
+        let mut a = ArrayState::default();
+        assert_eq!(buffer_indices_u32(&a, 4, 0), None);
+        let b = BufferObject {
+            data: crate::context::store::Store::copy_of(&bytes).unwrap(),
+            ..Default::default()
+        };
+        a.buffers.insert(3, Some(b));
+        a.element_buffer = 3;
+        let store = a.buffer_data(3).unwrap();
+        for ptr in 0..300 {
+            for count in [0, 1, 5, 63, 64, 65, 1000] {
+                // What `read_indices` copies.
+                let avail = store.len().saturating_sub(ptr) / 4;
+                let start = ptr.min(store.len());
+                let want: Vec<u32> = store[start..start + count.min(avail) * 4]
+                    .chunks_exact(4)
+                    .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+                    .collect();
+                match buffer_indices_u32(&a, count, ptr) {
+                    Some(got) => assert_eq!(got, want.as_slice(), "{ptr} {count}"),
+                    // Only a misaligned start is refused.
+                    None => assert!(
+                        !(store.as_ptr() as usize + start).is_multiple_of(4) && !want.is_empty()
+                    ),
+                }
+            }
+        }
+    }
 
     #[test]
     fn min_max_of_every_length_and_position() {

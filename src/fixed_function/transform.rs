@@ -15,7 +15,7 @@ use crate::context::texgen_state::TexGenState;
 use crate::geometry::clip::UserPlanes;
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::{
-    clip_mask, user_clip_mask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX,
+    clip_mask, user_clip_mask, ClipMask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX,
 };
 
 /// Per-draw constants of the vertex stage.
@@ -158,6 +158,19 @@ impl VertexStage {
         }
     }
 
+    /// The clip-space position of object position `pos` and its clip mask: the first
+    /// step of [`Self::run_into`], also used alone to find whether any vertex of a draw
+    /// is outside the clip volume before its primitives are assembled.
+    #[inline(always)]
+    pub fn clip_position(&self, pos: [f32; 4]) -> ([f32; 4], ClipMask) {
+        let clip = self.mvp.transform(pos);
+        let mut mask = clip_mask(clip);
+        if self.ucp_enabled != 0 {
+            mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
+        }
+        (clip, mask)
+    }
+
     /// Runs one vertex through the stage.
     #[inline]
     pub fn run(&self, v: &VertexIn) -> ClipVertex {
@@ -171,11 +184,7 @@ impl VertexStage {
     /// entry reused within a draw needs nothing cleared).
     #[inline]
     pub fn run_into(&self, v: &VertexIn, out: &mut ClipVertex) {
-        let clip = self.mvp.transform(v.pos);
-        let mut mask = clip_mask(clip);
-        if self.ucp_enabled != 0 {
-            mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
-        }
+        let (clip, mask) = self.clip_position(v.pos);
         out.clip = clip;
         out.win = self.viewport.apply_shader(clip, self.fma);
         out.mask = mask;

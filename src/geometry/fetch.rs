@@ -265,6 +265,20 @@ impl<'a> VertexFetcher<'a> {
         }
     }
 
+    /// The position of vertex `index` (what [`Self::fetch`] gives as `pos`).
+    ///
+    /// # Safety
+    /// As [`fetch_attr`]: an enabled client-memory vertex array must be valid for `index`.
+    #[inline]
+    pub unsafe fn position(&self, index: u32) -> [f32; 4] {
+        const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+        match &self.vertex {
+            // SAFETY: forwarded from the caller.
+            Some(s) => unsafe { Source::get(s, index, false, ORIGIN) }.unwrap_or(ORIGIN),
+            None => self.base.pos,
+        }
+    }
+
     /// Fetches vertex `index` from the enabled arrays; disabled arrays give the current
     /// values.
     ///
@@ -276,9 +290,7 @@ impl<'a> VertexFetcher<'a> {
         let mut v = self.base;
         // SAFETY: forwarded from the caller.
         unsafe {
-            if let Some(s) = &self.vertex {
-                v.pos = Source::get(s, index, false, ORIGIN).unwrap_or(ORIGIN);
-            }
+            v.pos = self.position(index);
             if let Some(s) = &self.color {
                 v.color = Source::get(s, index, true, ORIGIN).unwrap_or(ORIGIN);
             }

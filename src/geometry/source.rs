@@ -16,6 +16,11 @@ pub trait VertexSource {
     fn count(&self) -> usize;
     /// Vertex `i` (`i < count()`).
     fn vertex(&self, i: usize) -> VertexIn;
+    /// The object-space position of vertex `i`: `vertex(i).pos`, without the other
+    /// attributes.
+    fn position(&self, i: usize) -> [f32; 4] {
+        self.vertex(i).pos
+    }
     /// The edge flag of vertex `i`.
     fn edge_flag(&self, i: usize) -> bool {
         self.vertex(i).edge_flag
@@ -30,6 +35,10 @@ impl VertexSource for [VertexIn] {
     #[inline]
     fn vertex(&self, i: usize) -> VertexIn {
         self[i]
+    }
+    #[inline]
+    fn position(&self, i: usize) -> [f32; 4] {
+        self[i].pos
     }
     #[inline]
     fn edge_flag(&self, i: usize) -> bool {
@@ -54,6 +63,15 @@ impl<'a> FetchSource<'a> {
     pub unsafe fn new(fetch: VertexFetcher<'a>, base: u32, count: usize) -> Self {
         FetchSource { fetch, base, count }
     }
+
+    /// The array element of vertex `i`.
+    #[inline]
+    fn index(&self, i: usize) -> u32 {
+        u32::try_from(i)
+            .ok()
+            .and_then(|i| self.base.checked_add(i))
+            .unwrap_or(u32::MAX)
+    }
 }
 
 impl VertexSource for FetchSource<'_> {
@@ -63,12 +81,13 @@ impl VertexSource for FetchSource<'_> {
     }
     #[inline]
     fn vertex(&self, i: usize) -> VertexIn {
-        let idx = u32::try_from(i)
-            .ok()
-            .and_then(|i| self.base.checked_add(i))
-            .unwrap_or(u32::MAX);
         // SAFETY: `FetchSource::new` made the caller promise the range is valid.
-        unsafe { self.fetch.fetch(idx) }
+        unsafe { self.fetch.fetch(self.index(i)) }
+    }
+    #[inline]
+    fn position(&self, i: usize) -> [f32; 4] {
+        // SAFETY: as in `vertex`.
+        unsafe { self.fetch.position(self.index(i)) }
     }
 }
 
