@@ -80,7 +80,7 @@ pub(in crate::raster) unsafe fn rows<
     // SAFETY (whole loop): AVX2 (+FMA) context from the caller; `shade8` gets lanes
     // inside their row (the spans lie in `b`, which lies in the target).
     unsafe {
-        let sampling = Sampling::new(u);
+        let mut sampling = Sampling::new(u);
         // Chunks start at even pixels only for the LOD's 2x2 quads; without a LOD every
         // pixel is sampled on its own, and starting at the span (a 16-px sprite row that
         // begins at an odd x fits 2 chunks instead of 3) gives the same bytes.
