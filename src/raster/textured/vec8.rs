@@ -3,8 +3,8 @@
 //! row spans, `1 / w`, the projected coordinates, the level of detail of its four quads,
 //! the gathers and the environment. It computes exactly what the array walk of
 //! [`super::rows_tex_fast`] computes (same operations in the same order), and hands a
-//! chunk it cannot sample in registers (levels that differ between its quads, a LOD form
-//! it does not vectorise, a coordinate the vector sampler declines) to
+//! chunk it cannot sample in registers (a LOD form it does not vectorise, a coordinate
+//! the vector sampler declines) to
 //! [`crate::texture::fast::chunk_u8`], the array sampler, which gives the same bytes.
 
 use super::super::row_span;

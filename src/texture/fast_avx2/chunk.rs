@@ -2,9 +2,9 @@
 //! of a chunk (two rows of 8 pixels) from coordinates in registers, with the level of
 //! detail of its four quads computed in lanes. Bit for bit what [`fast::chunk_u8`] gives
 //! (same operations in the same order as [`crate::texture::lod::compute`] and
-//! [`select_levels`]); a chunk whose quads choose different levels, a LOD form not
-//! vectorised here, or a coordinate the vector sampler declines goes through
-//! [`fast::chunk_u8`] itself.
+//! [`select_levels`]); a chunk whose quads choose different levels is sampled once per
+//! level key and blended per lane; a LOD form not vectorised here, or a coordinate the
+//! vector sampler declines goes through [`fast::chunk_u8`] itself.
 
 #![cfg(target_arch = "x86_64")]
 // Lane loops index several arrays in step.
@@ -69,7 +69,8 @@ struct LodConsts {
 /// TL/TR/BL, in lanes: both lanes of a quad carry its values): the key of the levels the
 /// quads with a live pixel (`qlive`) share — `l0·2 + 1` for a blend of `l0` and `l0 + 1`,
 /// `l·2` for the single level `l`, −2 for magnification with a filter of its own — and the
-/// blend weights `trunc(fpart·256)`; `None` when the live quads differ.
+/// blend weights `trunc(fpart·256)`, as `(key of each lane, key of the first live quad,
+/// weights, whether every live quad has that key)`.
 ///
 /// # Safety
 /// AVX2 context.
@@ -79,7 +80,7 @@ unsafe fn lod_key(
     s: [__m256; 2],
     t: [__m256; 2],
     qlive: u32,
-) -> Option<(i32, __m256i)> {
+) -> (__m256i, i32, __m256i, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
         let (w, h) = (_mm256_set1_ps(c.w), _mm256_set1_ps(c.h));
@@ -133,11 +134,9 @@ unsafe fn lod_key(
         let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), k, pos);
         let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
         let kb = _mm256_permutevar8x32_epi32(key, lane0);
-        if bits(_mm256_cmpeq_epi32(key, kb)) & qlive != qlive {
-            return None;
-        }
+        let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
         let wmip = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0)));
-        Some((_mm256_cvtsi256_si32(kb), wmip))
+        (key, _mm256_cvtsi256_si32(kb), wmip, uniform)
     }
 }
 
@@ -236,6 +235,47 @@ impl<'a> Sampling<'a> {
         Self::sampler(u, u.min_filter, l0, l1)
     }
 
+    /// A chunk whose live quads chose different levels: the rows through the sampler of
+    /// each key in turn, each lane kept from its own key's (every lane computes what a
+    /// chunk of its key alone computes); `None` when a row declines.
+    ///
+    /// # Safety
+    /// AVX2 context on a CPU that has it.
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    unsafe fn mixed(
+        &self,
+        key: __m256i,
+        wm: __m256i,
+        qlive: u32,
+        s: [__m256; 2],
+        t: [__m256; 2],
+        lm: [u32; 2],
+    ) -> Option<[__m256i; 2]> {
+        // SAFETY: AVX2 (this function's feature, on a CPU that has it: the caller).
+        unsafe {
+            let mut texv = [_mm256_setzero_si256(); 2];
+            let mut todo = qlive;
+            while todo != 0 {
+                let lane = _mm256_set1_epi32(todo.trailing_zeros() as i32);
+                let kv = _mm256_permutevar8x32_epi32(key, lane);
+                let m = _mm256_cmpeq_epi32(key, kv);
+                let rs = self.keyed(_mm256_cvtsi256_si32(kv));
+                for r in 0..2 {
+                    if lm[r] & bits(m) != 0 {
+                        let (v, ok) = rs.row_v(s[r], t[r], wm);
+                        if !ok {
+                            return None;
+                        }
+                        texv[r] = _mm256_blendv_epi8(texv[r], v, m);
+                    }
+                }
+                todo &= !bits(m);
+            }
+            Some(texv)
+        }
+    }
+
     /// The texture values of a chunk: rows of coordinates `s`, `t`, covered lanes `live`
     /// (rows without any are not sampled); the lanes of quads without a covered pixel are
     /// unspecified.
@@ -259,7 +299,7 @@ impl<'a> Sampling<'a> {
                 let pair = _mm256_castps_si256(_mm256_permute_ps::<0xB1>(_mm256_castsi256_ps(any)));
                 let qlive = bits(_mm256_or_si256(any, pair));
                 match lod_key(&self.lc, s, t, qlive) {
-                    Some((k, wm)) => match self.last {
+                    (_, k, wm, true) => match self.last {
                         Some((lk, rs)) if lk == k => Some((rs, wm)),
                         _ => {
                             let rs = self.keyed(k);
@@ -267,7 +307,12 @@ impl<'a> Sampling<'a> {
                             Some((rs, wm))
                         }
                     },
-                    None => None,
+                    (key, _, wm, false) => {
+                        if let Some(v) = self.mixed(key, wm, qlive, s, t, lm) {
+                            return v;
+                        }
+                        None
+                    }
                 }
             } else {
                 None
