@@ -423,6 +423,7 @@ mod tests {
     /// range from small steps (one level for the whole chunk) to huge and NaN values (the
     /// vector sampler declines).
     fn chunks_match_quads(p: &UnitPlan<'_>, rnd: &mut dyn FnMut() -> u32) {
+        let mut chunks = Vec::new();
         for n in 0..200 {
             let f = |r: u32| (r % 20000) as f32 / 4000.0 - 2.0;
             let (s0, t0) = (f(rnd()), f(rnd()));
@@ -446,17 +447,34 @@ mod tests {
             if n % 50 == 7 {
                 s[0][3] = [f32::NAN, 3.0e9, -1.0e12, 4.2e6][n / 50];
             }
+            chunks.push((s, t, live));
+            // The same levels again, shifted by a texel: the register walk reuses the
+            // sampler of the chunk before.
+            if n % 3 == 0 {
+                let mut s2 = s;
+                for v in s2.iter_mut().flatten() {
+                    *v += 1.0 / 16.0;
+                }
+                chunks.push((s2, t, live));
+            }
+        }
+        // The register sampler (`fast_avx2::chunk`) sees the chunks in turn, as the walk
+        // does.
+        #[cfg(target_arch = "x86_64")]
+        let regs = super::fast_avx2::available().then(|| {
+            // SAFETY: the CPU has AVX2.
+            unsafe { super::fast_avx2::chunk::texels_seq(p, &chunks) }
+        });
+        for (n, (s, t, live)) in chunks.iter().enumerate() {
             let mut outs = Vec::new();
             for vector in [false, super::fast_avx2::available()] {
                 let mut out = [[[0u8; 4]; LANES]; 2];
-                chunk_u8(p, &s, &t, &live, vector, &mut out);
+                chunk_u8(p, s, t, live, vector, &mut out);
                 outs.push((if vector { "vector" } else { "scalar" }, out));
             }
             #[cfg(target_arch = "x86_64")]
-            if super::fast_avx2::available() {
-                // SAFETY: the CPU has AVX2.
-                let out = unsafe { super::fast_avx2::chunk::texels_arrays(p, &s, &t, &live) };
-                outs.push(("registers", out));
+            if let Some(regs) = &regs {
+                outs.push(("registers", regs[n]));
             }
             for (path, out) in outs {
                 for j in 0..LANES / 2 {

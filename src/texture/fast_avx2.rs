@@ -63,7 +63,45 @@ pub struct RowSampler<'a> {
     pub wrap: [Wrap; 2],
 }
 
-/// Texel indices along one axis: `(i0, i1, weight)` for LINEAR, `(i, _, _)` for NEAREST.
+/// A level as the vector sampler reads it: its constants are computed once (per
+/// triangle, or per row for [`RowSampler`]) and read from memory as broadcasts, so the
+/// gathers' addresses depend on the coordinates only, not on converting the level's size.
+#[derive(Clone, Copy)]
+pub struct LevelV<'a> {
+    /// The texels, row by row.
+    texels: &'a [[u8; 4]],
+    /// Width and height as f32 (exact: sizes are far below 2^24).
+    size: [f32; 2],
+    /// `size · 256` (LINEAR's fixed-point scale; exact).
+    size256: [f32; 2],
+    /// Width − 1 and height − 1.
+    last: [i32; 2],
+    /// The row stride in texels (the width).
+    stride: i32,
+    /// log2 of the width when it is a power of two: the row offset is then a shift (one
+    /// cycle) instead of `vpmulld` (ten).
+    shift: Option<u32>,
+}
+
+impl<'a> LevelV<'a> {
+    /// The constants of `img`.
+    #[inline(always)]
+    pub fn of(img: &'a Level) -> Self {
+        let (w, h) = (img.width, img.height);
+        debug_assert!(img.texels.len() >= w * h && w * h <= i32::MAX as usize);
+        LevelV {
+            texels: &img.texels[..w * h],
+            size: [w as f32, h as f32],
+            size256: [w as f32 * 256.0, h as f32 * 256.0],
+            last: [w as i32 - 1, h as i32 - 1],
+            stride: w as i32,
+            shift: w.is_power_of_two().then(|| w.trailing_zeros()),
+        }
+    }
+}
+
+/// Texel indices along axis `ax` of `lv`: `(i0, i1, weight)` for LINEAR, `(i, _, _)` for
+/// NEAREST.
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2.
@@ -71,13 +109,13 @@ pub struct RowSampler<'a> {
 #[inline(always)]
 unsafe fn axis(
     s: __m256,
-    size: usize,
+    lv: &LevelV<'_>,
+    ax: usize,
     wrap: Wrap,
     linear: bool,
     ok: &mut __m256,
 ) -> (__m256i, __m256i, __m256i) {
-    let len = _mm256_set1_epi32(size as i32);
-    let last = _mm256_set1_epi32(size as i32 - 1);
+    let last = _mm256_set1_epi32(lv.last[ax]);
     let zero = _mm256_setzero_si256();
     let limit = _mm256_set1_ps(1_073_741_824.0);
     let abs_mask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fff_ffff));
@@ -90,9 +128,8 @@ unsafe fn axis(
         }
     }
     let repeat = wrap == Wrap::Repeat;
-    let _ = len;
     if linear {
-        let u = _mm256_mul_ps(s, _mm256_set1_ps(size as f32 * 256.0));
+        let u = _mm256_mul_ps(s, _mm256_set1_ps(lv.size256[ax]));
         // NaN compares false: such lanes make the row decline.
         *ok = _mm256_and_ps(
             *ok,
@@ -108,7 +145,7 @@ unsafe fn axis(
             w,
         )
     } else {
-        let u = _mm256_floor_ps(_mm256_mul_ps(s, _mm256_set1_ps(size as f32)));
+        let u = _mm256_floor_ps(_mm256_mul_ps(s, _mm256_set1_ps(lv.size[ax])));
         *ok = _mm256_and_ps(
             *ok,
             _mm256_cmp_ps(_mm256_and_ps(u, abs_mask), limit, _CMP_LT_OQ),
@@ -197,26 +234,31 @@ unsafe fn lerp_wide(a: Wide, b: Wide, w: __m256i) -> Wide {
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 unsafe fn level8(
-    img: &Level,
+    lv: &LevelV<'_>,
     linear: bool,
     wrap: [Wrap; 2],
     s: __m256,
     t: __m256,
     ok: &mut __m256,
 ) -> Wide {
-    let (w, h) = (img.width, img.height);
-    debug_assert!(img.texels.len() >= w * h && w * h <= i32::MAX as usize);
-    let base = img.texels.as_ptr() as *const i32;
-    let stride = _mm256_set1_epi32(w as i32);
-    let (x0, x1, wx) = axis(s, w, wrap[0], linear, ok);
-    let (y0, y1, wy) = axis(t, h, wrap[1], linear, ok);
+    let base = lv.texels.as_ptr() as *const i32;
+    let (x0, x1, wx) = axis(s, lv, 0, wrap[0], linear, ok);
+    let (y0, y1, wy) = axis(t, lv, 1, wrap[1], linear, ok);
     if _mm256_movemask_ps(*ok) != 0xff {
         let z = _mm256_setzero_si256();
         return Wide(z, z);
     }
-    let r0 = _mm256_mullo_epi32(y0, stride);
+    // Not a closure: see `lerp16`.
+    #[inline(always)]
+    unsafe fn row(lv: &LevelV<'_>, y: __m256i) -> __m256i {
+        match lv.shift {
+            Some(k) => _mm256_sllv_epi32(y, _mm256_set1_epi32(k as i32)),
+            None => _mm256_mullo_epi32(y, _mm256_set1_epi32(lv.stride)),
+        }
+    }
+    let r0 = row(lv, y0);
     // SAFETY (all gathers): every index is wrapped or clamped into 0..w and 0..h above
-    // (the lanes passed the range check), so y·w + x < w·h ≤ texels.len(); the texels are
+    // (the lanes passed the range check), so y·w + x < w·h = texels.len(); the texels are
     // 4 bytes each, read as unaligned i32.
     #[inline(always)]
     unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> Wide {
@@ -225,14 +267,49 @@ unsafe fn level8(
     if !linear {
         return gather(base, r0, x0);
     }
-    let r1 = _mm256_mullo_epi32(y1, stride);
+    let r1 = row(lv, y1);
     let wx = weight(wx);
     let top = lerp_wide(gather(base, r0, x0), gather(base, r0, x1), wx);
     let bottom = lerp_wide(gather(base, r1, x0), gather(base, r1, x1), wx);
     lerp_wide(top, bottom, weight(wy))
 }
 
-impl RowSampler<'_> {
+/// [`RowSampler`] with its levels' constants prepared ([`LevelV`]); the 8-wide walk
+/// keeps one per triangle (no LOD) or per level key.
+#[derive(Clone, Copy)]
+pub struct RowSamplerV<'a> {
+    /// The finer level.
+    pub a: LevelV<'a>,
+    /// The coarser level of a LINEAR mip blend (`None`: no blend).
+    pub b: Option<LevelV<'a>>,
+    /// LINEAR (else NEAREST) within each level.
+    pub linear: bool,
+    /// Wrap of s and t.
+    pub wrap: [Wrap; 2],
+}
+
+impl RowSamplerV<'_> {
+    /// [`RowSampler::row_v`] with the prepared levels.
+    ///
+    /// # Safety
+    /// As [`RowSampler::row`].
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub unsafe fn row_v(&self, s: __m256, t: __m256, wmip: __m256i) -> (__m256i, bool) {
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let mut ok = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+            let mut v = level8(&self.a, self.linear, self.wrap, s, t, &mut ok);
+            if let Some(b) = &self.b {
+                let vb = level8(b, self.linear, self.wrap, s, t, &mut ok);
+                v = lerp_wide(v, vb, weight(wmip));
+            }
+            (pack(v), _mm256_movemask_ps(ok) == 0xff)
+        }
+    }
+}
+
+impl<'a> RowSampler<'a> {
     /// Samples 8 pixels at (`s`, `t`) with mip blend weights `wmip` (ignored without a
     /// second level) into `out`; `false` (and `out` untouched) when the row must be
     /// sampled by the scalar code.
@@ -270,14 +347,17 @@ impl RowSampler<'_> {
     #[inline(always)]
     pub unsafe fn row_v(&self, s: __m256, t: __m256, wmip: __m256i) -> (__m256i, bool) {
         // SAFETY: forwarded from the caller.
-        unsafe {
-            let mut ok = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
-            let mut v = level8(self.a, self.linear, self.wrap, s, t, &mut ok);
-            if let Some(b) = self.b {
-                let vb = level8(b, self.linear, self.wrap, s, t, &mut ok);
-                v = lerp_wide(v, vb, weight(wmip));
-            }
-            (pack(v), _mm256_movemask_ps(ok) == 0xff)
+        unsafe { self.prepared().row_v(s, t, wmip) }
+    }
+
+    /// The sampler with its levels' constants prepared.
+    #[inline(always)]
+    pub fn prepared(&self) -> RowSamplerV<'a> {
+        RowSamplerV {
+            a: LevelV::of(self.a),
+            b: self.b.map(LevelV::of),
+            linear: self.linear,
+            wrap: self.wrap,
         }
     }
 

@@ -3,8 +3,8 @@
 //! row spans, `1 / w`, the projected coordinates, the level of detail of its four quads,
 //! the gathers and the environment. It computes exactly what the array walk of
 //! [`super::rows_tex_fast`] computes (same operations in the same order), and hands a
-//! chunk it cannot sample in registers (levels that differ between its quads, a LOD form
-//! it does not vectorise, a coordinate the vector sampler declines) to
+//! chunk it cannot sample in registers (a LOD form it does not vectorise, a coordinate
+//! the vector sampler declines) to
 //! [`crate::texture::fast::chunk_u8`], the array sampler, which gives the same bytes.
 
 use super::super::row_span;
@@ -80,7 +80,7 @@ pub(in crate::raster) unsafe fn rows<
     // SAFETY (whole loop): AVX2 (+FMA) context from the caller; `shade8` gets lanes
     // inside their row (the spans lie in `b`, which lies in the target).
     unsafe {
-        let sampling = Sampling::new(u);
+        let mut sampling = Sampling::new(u);
         // Chunks start at even pixels only for the LOD's 2x2 quads; without a LOD every
         // pixel is sampled on its own, and starting at the span (a 16-px sprite row that
         // begins at an odd x fits 2 chunks instead of 3) gives the same bytes.

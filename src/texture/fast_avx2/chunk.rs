@@ -2,9 +2,9 @@
 //! of a chunk (two rows of 8 pixels) from coordinates in registers, with the level of
 //! detail of its four quads computed in lanes. Bit for bit what [`fast::chunk_u8`] gives
 //! (same operations in the same order as [`crate::texture::lod::compute`] and
-//! [`select_levels`]); a chunk whose quads choose different levels, a LOD form not
-//! vectorised here, or a coordinate the vector sampler declines goes through
-//! [`fast::chunk_u8`] itself.
+//! [`select_levels`]); a chunk whose quads choose different levels is sampled once per
+//! level key and blended per lane; a LOD form not vectorised here, or a coordinate the
+//! vector sampler declines goes through [`fast::chunk_u8`] itself.
 
 #![cfg(target_arch = "x86_64")]
 // Lane loops index several arrays in step.
@@ -13,7 +13,7 @@
 use super::super::fast;
 use super::super::sample::select_levels;
 use super::super::{Filter, Level, Lod, MipFilter, UnitPlan};
-use super::{handles, RowSampler};
+use super::{handles, LevelV, RowSamplerV};
 use crate::fragment::span::LANES;
 use std::arch::x86_64::*;
 
@@ -69,7 +69,8 @@ struct LodConsts {
 /// TL/TR/BL, in lanes: both lanes of a quad carry its values): the key of the levels the
 /// quads with a live pixel (`qlive`) share — `l0·2 + 1` for a blend of `l0` and `l0 + 1`,
 /// `l·2` for the single level `l`, −2 for magnification with a filter of its own — and the
-/// blend weights `trunc(fpart·256)`; `None` when the live quads differ.
+/// blend weights `trunc(fpart·256)`, as `(key of each lane, key of the first live quad,
+/// weights, whether every live quad has that key)`.
 ///
 /// # Safety
 /// AVX2 context.
@@ -79,7 +80,7 @@ unsafe fn lod_key(
     s: [__m256; 2],
     t: [__m256; 2],
     qlive: u32,
-) -> Option<(i32, __m256i)> {
+) -> (__m256i, i32, __m256i, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
         let (w, h) = (_mm256_set1_ps(c.w), _mm256_set1_ps(c.h));
@@ -133,11 +134,9 @@ unsafe fn lod_key(
         let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), k, pos);
         let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
         let kb = _mm256_permutevar8x32_epi32(key, lane0);
-        if bits(_mm256_cmpeq_epi32(key, kb)) & qlive != qlive {
-            return None;
-        }
+        let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
         let wmip = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0)));
-        Some((_mm256_cvtsi256_si32(kb), wmip))
+        (key, _mm256_cvtsi256_si32(kb), wmip, uniform)
     }
 }
 
@@ -146,11 +145,16 @@ pub struct Sampling<'a> {
     /// The unit.
     u: &'a UnitPlan<'a>,
     /// Without a LOD: the one sampler and its mip weights for every chunk.
-    fixed: Option<(RowSampler<'a>, __m256i)>,
+    fixed: Option<(RowSamplerV<'a>, __m256i)>,
     /// The LOD form [`lod_key`] vectorises, every level in the vector sampler's range.
     vec_lod: bool,
     /// Its constants.
     lc: LodConsts,
+    /// The level key of the last chunk sampled with a LOD and its sampler: consecutive
+    /// chunks mostly share their key, and reusing the sampler under a branch (predicted)
+    /// keeps the gathers' addresses off the LOD's dependency chain (building it from the
+    /// key makes them wait for the LOD).
+    last: Option<(i32, RowSamplerV<'a>)>,
 }
 
 impl<'a> Sampling<'a> {
@@ -197,6 +201,7 @@ impl<'a> Sampling<'a> {
             fixed,
             vec_lod,
             lc,
+            last: None,
         }
     }
 
@@ -209,12 +214,65 @@ impl<'a> Sampling<'a> {
 
     /// The vector sampler of levels `l0`, `l1` with filter `f`.
     #[inline(always)]
-    fn sampler(u: &'a UnitPlan<'a>, f: Filter, l0: usize, l1: usize) -> RowSampler<'a> {
-        RowSampler {
-            a: u.image(l0),
-            b: (l1 != l0).then(|| u.image(l1)),
+    fn sampler(u: &'a UnitPlan<'a>, f: Filter, l0: usize, l1: usize) -> RowSamplerV<'a> {
+        RowSamplerV {
+            a: LevelV::of(u.image(l0)),
+            b: (l1 != l0).then(|| LevelV::of(u.image(l1))),
             linear: f == Filter::Linear,
             wrap: [u.wrap_s, u.wrap_t],
+        }
+    }
+
+    /// The sampler of level key `k` (see [`lod_key`]).
+    #[inline(never)]
+    fn keyed(&self, k: i32) -> RowSamplerV<'a> {
+        let u = self.u;
+        if k == -2 {
+            return Self::sampler(u, u.mag_filter, u.first, u.first);
+        }
+        let l0 = (k >> 1) as usize;
+        let l1 = l0 + (k & 1) as usize;
+        Self::sampler(u, u.min_filter, l0, l1)
+    }
+
+    /// A chunk whose live quads chose different levels: the rows through the sampler of
+    /// each key in turn, each lane kept from its own key's (every lane computes what a
+    /// chunk of its key alone computes); `None` when a row declines.
+    ///
+    /// # Safety
+    /// AVX2 context on a CPU that has it.
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    unsafe fn mixed(
+        &self,
+        key: __m256i,
+        wm: __m256i,
+        qlive: u32,
+        s: [__m256; 2],
+        t: [__m256; 2],
+        lm: [u32; 2],
+    ) -> Option<[__m256i; 2]> {
+        // SAFETY: AVX2 (this function's feature, on a CPU that has it: the caller).
+        unsafe {
+            let mut texv = [_mm256_setzero_si256(); 2];
+            let mut todo = qlive;
+            while todo != 0 {
+                let lane = _mm256_set1_epi32(todo.trailing_zeros() as i32);
+                let kv = _mm256_permutevar8x32_epi32(key, lane);
+                let m = _mm256_cmpeq_epi32(key, kv);
+                let rs = self.keyed(_mm256_cvtsi256_si32(kv));
+                for r in 0..2 {
+                    if lm[r] & bits(m) != 0 {
+                        let (v, ok) = rs.row_v(s[r], t[r], wm);
+                        if !ok {
+                            return None;
+                        }
+                        texv[r] = _mm256_blendv_epi8(texv[r], v, m);
+                    }
+                }
+                todo &= !bits(m);
+            }
+            Some(texv)
         }
     }
 
@@ -226,7 +284,7 @@ impl<'a> Sampling<'a> {
     /// AVX2 context on a CPU that has it.
     #[inline(always)]
     pub unsafe fn texels(
-        &self,
+        &mut self,
         s: [__m256; 2],
         t: [__m256; 2],
         live: [__m256i; 2],
@@ -240,15 +298,21 @@ impl<'a> Sampling<'a> {
                 let any = _mm256_or_si256(live[0], live[1]);
                 let pair = _mm256_castps_si256(_mm256_permute_ps::<0xB1>(_mm256_castsi256_ps(any)));
                 let qlive = bits(_mm256_or_si256(any, pair));
-                let u = self.u;
                 match lod_key(&self.lc, s, t, qlive) {
-                    Some((-2, wm)) => Some((Self::sampler(u, u.mag_filter, u.first, u.first), wm)),
-                    Some((k, wm)) => {
-                        let l0 = (k >> 1) as usize;
-                        let l1 = l0 + (k & 1) as usize;
-                        Some((Self::sampler(u, u.min_filter, l0, l1), wm))
+                    (_, k, wm, true) => match self.last {
+                        Some((lk, rs)) if lk == k => Some((rs, wm)),
+                        _ => {
+                            let rs = self.keyed(k);
+                            self.last = Some((k, rs));
+                            Some((rs, wm))
+                        }
+                    },
+                    (key, _, wm, false) => {
+                        if let Some(v) = self.mixed(key, wm, qlive, s, t, lm) {
+                            return v;
+                        }
+                        None
                     }
-                    None => None,
                 }
             } else {
                 None
@@ -299,38 +363,40 @@ unsafe fn fallback(u: &UnitPlan<'_>, s: [__m256; 2], t: [__m256; 2], lm: [u32; 2
     }
 }
 
-/// [`Sampling::texels`] on arrays, for the tests against [`fast::quad_u8`].
+/// A chunk on arrays: coordinates `s`, `t` and covered lanes per row.
+#[cfg(test)]
+pub type ArrayChunk = ([[f32; LANES]; 2], [[f32; LANES]; 2], [[bool; LANES]; 2]);
+
+/// [`Sampling::texels`] on arrays, every chunk of `chunks` in turn through one
+/// [`Sampling`] (as the walk does, so a chunk may reuse the sampler of the chunk before),
+/// for the tests against [`fast::quad_u8`].
 ///
 /// # Safety
 /// The CPU has AVX2.
 #[cfg(test)]
 #[target_feature(enable = "avx2")]
-pub unsafe fn texels_arrays(
-    u: &UnitPlan<'_>,
-    s: &[[f32; LANES]; 2],
-    t: &[[f32; LANES]; 2],
-    live: &[[bool; LANES]; 2],
-) -> [[[u8; 4]; LANES]; 2] {
-    let mut out = [[[0u8; 4]; LANES]; 2];
+pub unsafe fn texels_seq(u: &UnitPlan<'_>, chunks: &[ArrayChunk]) -> Vec<[[[u8; 4]; LANES]; 2]> {
+    let mut outs = Vec::with_capacity(chunks.len());
     // SAFETY: AVX2 (this function's feature); the arrays are 32 bytes each.
     unsafe {
-        let m = |r: usize| {
-            let l = |i: usize| -(live[r][i] as i32);
-            [l(0), l(1), l(2), l(3), l(4), l(5), l(6), l(7)]
-        };
-        let lv = |r: usize| _mm256_loadu_si256(m(r).as_ptr() as *const __m256i);
-        let sv = [
-            _mm256_loadu_ps(s[0].as_ptr()),
-            _mm256_loadu_ps(s[1].as_ptr()),
-        ];
-        let tv = [
-            _mm256_loadu_ps(t[0].as_ptr()),
-            _mm256_loadu_ps(t[1].as_ptr()),
-        ];
-        let v = Sampling::new(u).texels(sv, tv, [lv(0), lv(1)]);
-        for r in 0..2 {
-            _mm256_storeu_si256(out[r].as_mut_ptr() as *mut __m256i, v[r]);
+        let mut sampling = Sampling::new(u);
+        for (s, t, live) in chunks {
+            let mut out = [[[0u8; 4]; LANES]; 2];
+            let mut lv = [_mm256_setzero_si256(); 2];
+            let mut sv = [_mm256_setzero_ps(); 2];
+            let mut tv = [_mm256_setzero_ps(); 2];
+            for r in 0..2 {
+                let m: [i32; LANES] = std::array::from_fn(|i| -(live[r][i] as i32));
+                lv[r] = _mm256_loadu_si256(m.as_ptr() as *const __m256i);
+                sv[r] = _mm256_loadu_ps(s[r].as_ptr());
+                tv[r] = _mm256_loadu_ps(t[r].as_ptr());
+            }
+            let v = sampling.texels(sv, tv, lv);
+            for r in 0..2 {
+                _mm256_storeu_si256(out[r].as_mut_ptr() as *mut __m256i, v[r]);
+            }
+            outs.push(out);
         }
     }
-    out
+    outs
 }
