@@ -262,21 +262,25 @@ unsafe fn level8(
     // (the lanes passed the range check), so y·w + x < w·h = texels.len(); the texels are
     // 4 bytes each, read as unaligned i32.
     #[inline(always)]
-    unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> Wide {
-        widen(_mm256_i32gather_epi32::<4>(base, _mm256_add_epi32(r, x)))
+    unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> __m256i {
+        _mm256_i32gather_epi32::<4>(base, _mm256_add_epi32(r, x))
     }
     if !linear {
-        return gather(base, r0, x0);
+        return widen(gather(base, r0, x0));
     }
     let r1 = row(lv, y1);
-    let wx = weight(wx);
-    if lv.last[0] == 0 {
+    let [tl, tr, bl, br] = if lv.last[0] == 0 {
         // A one-texel-wide level has no pairs to load.
-        let top = lerp_wide(gather(base, r0, x0), gather(base, r0, x1), wx);
-        let bottom = lerp_wide(gather(base, r1, x0), gather(base, r1, x1), wx);
-        return lerp_wide(top, bottom, weight(wy));
-    }
-    let [tl, tr, bl, br] = quad_texels(base, lv.last[0], [r0, r1], x0, x1);
+        [
+            gather(base, r0, x0),
+            gather(base, r0, x1),
+            gather(base, r1, x0),
+            gather(base, r1, x1),
+        ]
+    } else {
+        quad_texels(base, lv.last[0], [r0, r1], x0, x1)
+    };
+    let wx = weight(wx);
     let top = lerp_wide(widen(tl), widen(tr), wx);
     let bottom = lerp_wide(widen(bl), widen(br), wx);
     lerp_wide(top, bottom, weight(wy))
