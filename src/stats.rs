@@ -20,7 +20,8 @@ pub struct Stats {
     pub tris_degenerate: u64,
     /// Triangles that reached the rasterizer.
     pub tris_rasterized: u64,
-    /// Triangles whose bounding box missed the drawable region.
+    /// Triangles whose bounding box missed the drawable region, and tiny ones (at most
+    /// 2x2 pixel centres in their box) that setup found to cover no pixel centre.
     pub tris_offscreen: u64,
     /// Pairs of rasterized triangles drawn as one axis-aligned rectangle (both count in
     /// `tris_rasterized`; see `raster::batch`).

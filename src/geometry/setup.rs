@@ -269,6 +269,27 @@ fn setup_inner(
     )
 }
 
+/// Whether a box of at most 2x2 pixel centres (`bbox`, inclusive, not empty) has a centre
+/// inside all three `edges` (the rasterizer's exact test); larger boxes answer `true`
+/// untested. Tiny triangles often cover no centre at all, and this finds it before the
+/// planes are computed.
+#[inline(always)]
+fn tiny_box_covered(edges: &[Edge; 3], bbox: [i64; 4]) -> bool {
+    if bbox[2] - bbox[0] > 1 || bbox[3] - bbox[1] > 1 {
+        return true;
+    }
+    // The edge values at the box's first centre, then one step right and one step down.
+    let e = edges.map(|e| e.c - e.a * ONE * bbox[0] + e.b * ONE * bbox[1]);
+    let (dx, dy) = (edges.map(|e| e.a * ONE), edges.map(|e| e.b * ONE));
+    let inside = |k: usize, sx: i64, sy: i64| e[k] - sx * dx[k] + sy * dy[k] > 0;
+    let (nx, ny) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    let mut any = false;
+    for (sx, sy) in [(0, 0), (nx, 0), (0, ny), (nx, ny)] {
+        any |= inside(0, sx, sy) & inside(1, sx, sy) & inside(2, sx, sy);
+    }
+    any
+}
+
 /// A triangle's constants for its plane equations (Mesa's order, lp_state_setup.c; f32,
 /// no FMA): the position deltas scaled by 1/area, and vertex 0 relative to pixel (0,0)'s
 /// centre.
@@ -367,7 +388,7 @@ fn setup_rest<'v>(
         maxx.div_euclid(ONE),
         maxy.div_euclid(ONE),
     ];
-    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3]) {
+    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3] || !tiny_box_covered(&edges, bbox)) {
         return SetupResult::Empty;
     }
 
@@ -494,6 +515,54 @@ mod tests {
         let mut c = coverage(&t);
         c.sort();
         assert_eq!(c, vec![(0, 6), (0, 7), (1, 7)]);
+    }
+
+    #[test]
+    fn tiny_triangles_are_empty_exactly_when_no_centre_is_covered() {
+        // Small triangles at 1/64-pixel positions around a few pixel centres, both windings:
+        // `setup_triangle_shaded` calls a triangle Empty exactly when the brute-force
+        // coverage of the full setup is empty.
+        let mut state = 0x9E37_79B9u32;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            state
+        };
+        let (mut empty, mut drawn) = (0, 0);
+        for _ in 0..20_000 {
+            let p = |r: u32| 3.0 + (r % 160) as f32 / 64.0;
+            let tri: Vec<ClipVertex> = (0..3).map(|_| v(p(next()), p(next()))).collect();
+            let mut full = SetupTriangle::default();
+            let r = setup_triangle([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, &mut full);
+            if !matches!(r, SetupResult::Draw) {
+                continue;
+            }
+            let covered = !coverage(&full).is_empty();
+            let mut t = SetupTriangle::default();
+            let r =
+                setup_triangle_shaded([&tri[0], &tri[1], &tri[2]], 0, NOCULL, None, false, &mut t);
+            match r {
+                SetupResult::Empty => {
+                    assert!(
+                        !covered,
+                        "{:?}",
+                        tri.iter().map(|v| v.win).collect::<Vec<_>>()
+                    );
+                    empty += 1;
+                }
+                SetupResult::Draw => {
+                    assert_eq!(t.edges, full.edges);
+                    // Boxes of at most 2x2 centres are always decided by setup.
+                    let small = t.bbox[2] - t.bbox[0] <= 1 && t.bbox[3] - t.bbox[1] <= 1;
+                    assert!(covered || !small);
+                    drawn += 1;
+                }
+                _ => panic!("setup_triangle drew it"),
+            }
+        }
+        // Both outcomes occur many times.
+        assert!(empty > 1000 && drawn > 1000, "{empty} {drawn}");
     }
 
     #[test]
