@@ -228,8 +228,24 @@ unsafe fn rows_simd_walk<
     stats: &mut Stats,
 ) {
     use crate::fragment::simd::shade_span;
+    use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
+            // The span two rows down starts near this one's: ask for its depth and colour
+            // lines now, so that their loads do not wait on the cache when it is reached.
+            let ahead = py as usize + 2;
+            if ahead < fb.y0 + fb.rows {
+                let i = (ahead - fb.y0) * fb.width + lo as usize;
+                if D != crate::fragment::simd::D_NONE {
+                    // SAFETY: a prefetch is a hint that never faults, and the address is
+                    // formed with wrapping arithmetic (it is inside the band anyway).
+                    unsafe {
+                        _mm_prefetch::<_MM_HINT_T0>(fb.depth.as_ptr().wrapping_add(i).cast())
+                    };
+                }
+                // SAFETY: as above (a hint that never faults).
+                unsafe { _mm_prefetch::<_MM_HINT_T0>(fb.color.as_ptr().wrapping_add(i).cast()) };
+            }
             // SAFETY: forwarded from the caller.
             unsafe {
                 shade_span::<FMA, D, FLAT, PERSP, B>(
