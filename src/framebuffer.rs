@@ -117,13 +117,18 @@ pub struct Framebuffer {
     /// [`Framebuffer::bands`] and the few direct writers), so that glFlush fills the user
     /// buffer instead of reading the colour buffer back.
     pub uniform_color: Option<[u8; 4]>,
-    /// A full-buffer colour clear recorded by glClear but not written yet: the colour
-    /// buffer's memory is stale and every pixel holds this value (then also
-    /// [`Framebuffer::uniform_color`]). [`Framebuffer::resolve`], [`Framebuffer::target`]
-    /// and the bands of [`Framebuffer::bands`] write it.
+    /// A full-buffer colour clear recorded by glClear but not written yet: the rows marked
+    /// in [`Framebuffer::pending_rows`] have stale memory and hold this value.
+    /// [`Framebuffer::resolve`], [`Framebuffer::target`] and the bands of
+    /// [`Framebuffer::bands`] that a draw reaches write it.
     pub pending_color: Option<[u8; 4]>,
     /// A full-buffer depth clear recorded but not written yet (as `pending_color`).
     pub pending_depth: Option<u32>,
+    /// Per row (y-down): whether the row still holds the recorded clears instead of its
+    /// memory. Bands that no triangle reaches stay pending through a draw, so a frame
+    /// whose sky is empty never writes the sky's depth, and glFlush fills its colour rows
+    /// from the clear colour instead of copying them.
+    pub pending_rows: Vec<bool>,
 }
 
 impl Framebuffer {
@@ -151,6 +156,7 @@ impl Framebuffer {
             uniform_color: None,
             pending_color: None,
             pending_depth: None,
+            pending_rows: vec![false; height],
         }
     }
 
@@ -187,36 +193,64 @@ impl Framebuffer {
     /// (see [`Framebuffer::bands`]), and a frame that is only cleared never writes them
     /// (glFlush fills the user buffer from [`Framebuffer::uniform_color`]).
     pub fn defer_clear(&mut self, color: Option<[u8; 4]>, depth: Option<u32>) {
+        let depth = depth.filter(|_| !self.depth.is_empty());
+        if color.is_none() && depth.is_none() {
+            return;
+        }
+        // Both buffers share the row marks: an earlier clear of the buffer this one leaves
+        // alone is written first when some rows have been written since (their marks are
+        // about to be set for the new clear).
+        let keeps = (self.pending_color.is_some() && color.is_none())
+            || (self.pending_depth.is_some() && depth.is_none());
+        if keeps && !self.pending_rows.iter().all(|&p| p) {
+            self.resolve();
+        }
         if let Some(c) = color {
             self.uniform_color = Some(c);
             self.pending_color = Some(c);
         }
-        if let (Some(d), false) = (depth, self.depth.is_empty()) {
+        if let Some(d) = depth {
             self.pending_depth = Some(d);
         }
+        self.pending_rows.fill(true);
     }
 
     /// Writes the recorded clears ([`Framebuffer::defer_clear`]) into the buffers; called
     /// before anything reads or writes their memory directly.
     pub fn resolve(&mut self) {
-        if let Some(c) = self.pending_color.take() {
-            fill_color(&mut self.color, c);
-        }
-        if let Some(d) = self.pending_depth.take() {
-            self.depth.fill(d);
-        }
+        let (color, depth) = (self.pending_color.take(), self.pending_depth.take());
+        resolve_rows(
+            self.width,
+            &mut self.pending_rows,
+            &mut self.color,
+            &mut self.depth,
+            color,
+            depth,
+        );
+    }
+
+    /// Whether row `y` still holds the recorded clears (see [`Framebuffer::pending_rows`]).
+    #[inline]
+    fn row_pending(&self, y: usize) -> bool {
+        self.pending_rows.get(y).copied().unwrap_or(false)
     }
 
     /// Colour pixel `i` (y-down row-major), recorded clears included.
     #[inline]
     pub fn color_at(&self, i: usize) -> [u8; 4] {
-        self.pending_color.unwrap_or_else(|| self.color[i])
+        match self.pending_color {
+            Some(c) if self.row_pending(i / self.width) => c,
+            _ => self.color[i],
+        }
     }
 
     /// Depth value `i` (y-down row-major), recorded clears included.
     #[inline]
     pub fn depth_at(&self, i: usize) -> u32 {
-        self.pending_depth.unwrap_or_else(|| self.depth[i])
+        match self.pending_depth {
+            Some(d) if self.row_pending(i / self.width) => d,
+            _ => self.depth[i],
+        }
     }
 
     /// Stencil bits (0 or 8).
@@ -313,12 +347,17 @@ impl Framebuffer {
     unsafe fn copy_row(&self, row: usize, dst: *mut u8, stride: usize, y_up: bool) {
         let bpp = self.format.bytes_per_pixel();
         let w = self.width;
-        if let Some(c) = self.uniform_color {
-            // Every pixel holds `c`: write its user form without reading the colour
-            // buffer back.
+        let dst_row = if y_up { self.height - 1 - row } else { row };
+        // Every pixel holds `uniform_color`, or this row still holds the recorded clear (no
+        // draw reached it): write the colour's user form without reading the buffer back.
+        let fill = self.uniform_color.or(match self.pending_color {
+            Some(c) if self.row_pending(row) => Some(c),
+            _ => None,
+        });
+        if let Some(c) = fill {
             let px = self.format.user_bytes(c);
-            // SAFETY: as below, `out` is row `row`'s first `width * bpp` bytes.
-            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(row * stride), w * bpp) };
+            // SAFETY: as below, `out` is row `dst_row`'s first `width * bpp` bytes.
+            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
             if bpp == 4 {
                 fill_color_bytes(out, [px[0], px[1], px[2], px[3]]);
             } else {
@@ -330,7 +369,6 @@ impl Framebuffer {
         }
         {
             let src = &self.color[row * w..(row + 1) * w];
-            let dst_row = if y_up { self.height - 1 - row } else { row };
             // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
             // least `width * bpp` bytes; `out` is exactly that row's first `width * bpp` bytes.
             let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
@@ -411,12 +449,12 @@ impl Framebuffer {
         };
         let px_bytes = n * ty.bytes();
         let w = self.width;
-        // A recorded clear: every row is the clear colour.
+        // Rows that still hold a recorded clear are the clear colour.
         let uniform = self.pending_color.map(|c| vec![c; w]);
         for row in 0..self.height {
             let src = match &uniform {
-                Some(u) => &u[..],
-                None => &self.color[row * w..(row + 1) * w],
+                Some(u) if self.row_pending(row) => &u[..],
+                _ => &self.color[row * w..(row + 1) * w],
             };
             let dst_row = if y_up { self.height - 1 - row } else { row };
             // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
@@ -458,12 +496,36 @@ pub struct Target<'a> {
     pub pending_color: Option<[u8; 4]>,
     /// A recorded depth clear this band has not written yet ([`Target::resolve`]).
     pub pending_depth: Option<u32>,
+    /// The band's rows' marks in [`Framebuffer::pending_rows`].
+    pub pending_rows: &'a mut [bool],
 }
 
 impl Framebuffer {
-    /// The whole framebuffer as one band.
+    /// The whole framebuffer as one band, every recorded clear written.
     pub fn target(&mut self) -> Target<'_> {
         self.resolve();
+        // Nothing is pending any more: the band of no rows only makes the target.
+        self.target_rows(0..0)
+    }
+
+    /// The whole framebuffer as one band, for drawing that stays inside rows `rows`
+    /// (y-down): only those rows' recorded clears are written, the others stay pending.
+    pub fn target_rows(&mut self, rows: std::ops::Range<usize>) -> Target<'_> {
+        let (w, y1) = (self.width, rows.end.min(self.height));
+        let y0 = rows.start.min(y1);
+        let depth_rows: &mut [u32] = if self.depth.is_empty() {
+            &mut []
+        } else {
+            &mut self.depth[y0 * w..y1 * w]
+        };
+        resolve_rows(
+            w,
+            &mut self.pending_rows[y0..y1],
+            &mut self.color[y0 * w..y1 * w],
+            depth_rows,
+            self.pending_color,
+            self.pending_depth,
+        );
         self.uniform_color = None;
         Target {
             width: self.width,
@@ -476,22 +538,25 @@ impl Framebuffer {
             stencil: &mut self.stencil,
             pending_color: None,
             pending_depth: None,
+            // Nothing for `Target::resolve` to do: the rows drawn into are written.
+            pending_rows: &mut [],
         }
     }
 
     /// The framebuffer split into bands of `band_rows` rows (an even number, so 2x2 quads
-    /// never straddle two bands), for threads that each own some bands. Recorded clears
-    /// move into the bands: the caller must [`Target::resolve`] every band before it draws
-    /// into it, and even when it does not.
+    /// never straddle two bands), for threads that each own some bands. Each band carries
+    /// the recorded clears and its rows' marks: the caller must [`Target::resolve`] a band
+    /// before it draws into it; a band it does not draw into stays pending.
     pub fn bands(&mut self, band_rows: usize) -> Vec<Target<'_>> {
         self.uniform_color = None;
-        let (pending_color, pending_depth) = (self.pending_color.take(), self.pending_depth.take());
+        let (pending_color, pending_depth) = (self.pending_color, self.pending_depth);
         let (w, h, format) = (self.width, self.height, self.format);
         let band_rows = band_rows.max(2) & !1;
         let n = w * band_rows;
         let mut color = self.color.chunks_mut(n);
         let mut depth = (!self.depth.is_empty()).then(|| self.depth.chunks_mut(n));
         let mut stencil = (!self.stencil.is_empty()).then(|| self.stencil.chunks_mut(n));
+        let mut marks = self.pending_rows.chunks_mut(band_rows);
         let mut out = Vec::new();
         let mut y0 = 0;
         while y0 < h {
@@ -507,6 +572,7 @@ impl Framebuffer {
                 stencil: stencil.as_mut().and_then(|s| s.next()).unwrap_or_default(),
                 pending_color,
                 pending_depth,
+                pending_rows: marks.next().unwrap_or_default(),
             });
             y0 += rows;
         }
@@ -518,12 +584,15 @@ impl Target<'_> {
     /// Writes the band's share of the recorded clears (see [`Framebuffer::bands`]).
     #[inline]
     pub fn resolve(&mut self) {
-        if let Some(c) = self.pending_color.take() {
-            fill_color(self.color, c);
-        }
-        if let Some(d) = self.pending_depth.take() {
-            self.depth.fill(d);
-        }
+        let (color, depth) = (self.pending_color.take(), self.pending_depth.take());
+        resolve_rows(
+            self.width,
+            self.pending_rows,
+            self.color,
+            self.depth,
+            color,
+            depth,
+        );
     }
 
     /// Clears the band's colour rows to `color` and depth rows to `depth` (each when
@@ -534,6 +603,41 @@ impl Target<'_> {
         }
         if let Some(d) = depth {
             self.depth.fill(d);
+        }
+    }
+}
+
+/// Writes the recorded clears `color` and `depth` into the rows of `color_rows` and
+/// `depth_rows` (`width` pixels each) that `marks` flags, and clears the flags.
+fn resolve_rows(
+    width: usize,
+    marks: &mut [bool],
+    color_rows: &mut [[u8; 4]],
+    depth_rows: &mut [u32],
+    color: Option<[u8; 4]>,
+    depth: Option<u32>,
+) {
+    if color.is_none() && depth.is_none() {
+        marks.fill(false);
+        return;
+    }
+    let mut y = 0;
+    while y < marks.len() {
+        if !marks[y] {
+            y += 1;
+            continue;
+        }
+        // A run of marked rows, written in one fill per buffer.
+        let start = y;
+        while y < marks.len() && marks[y] {
+            marks[y] = false;
+            y += 1;
+        }
+        if let Some(c) = color {
+            fill_color(&mut color_rows[start * width..y * width], c);
+        }
+        if let (Some(d), false) = (depth, depth_rows.is_empty()) {
+            depth_rows[start * width..y * width].fill(d);
         }
     }
 }
@@ -643,7 +747,8 @@ mod tests {
     }
 
     /// A recorded clear reads back as the clear values everywhere, is written by
-    /// `target`, and moves into the bands of `bands`, each writing only its rows.
+    /// `target`, and is shared with the bands of `bands`, each writing only its rows; rows
+    /// no band wrote stay pending through the draw and are copied as the clear colour.
     #[test]
     fn deferred_clear_reads_and_resolves() {
         let (w, h) = (7usize, 9usize);
@@ -662,13 +767,80 @@ mod tests {
             let mut bands = fb.bands(4);
             assert_eq!(fb_pending(&bands[0]), (Some([1, 2, 3, 4]), Some(77)));
             bands[1].resolve();
+            // A draw into band 1 (rows 4..8).
+            bands[1].color.fill([9, 9, 9, 9]);
+            bands[1].depth.fill(5);
         }
-        assert_eq!((fb.pending_color, fb.pending_depth), (None, None));
-        // Only band 1 (rows 4..8) was resolved.
-        assert!((0..w * h).all(|i| (fb.depth[i] == 77) == (4 * w..8 * w).contains(&i)));
+        // Only band 1 was written; the other rows are still pending.
+        assert_eq!(
+            (fb.pending_color, fb.pending_depth),
+            (Some([1, 2, 3, 4]), Some(77))
+        );
+        assert!((0..h).all(|y| fb.pending_rows[y] != (4..8).contains(&y)));
+        assert!((0..w * h).all(|i| (fb.color[i] == [9; 4]) == (4 * w..8 * w).contains(&i)));
+        for i in 0..w * h {
+            let drawn = (4 * w..8 * w).contains(&i);
+            assert_eq!(fb.color_at(i), if drawn { [9; 4] } else { [1, 2, 3, 4] });
+            assert_eq!(fb.depth_at(i), if drawn { 5 } else { 77 });
+        }
+        // The copy: drawn rows from memory, pending rows as the clear colour (bottom-up).
+        // SAFETY: as above.
+        unsafe { fb.copy_to_user(out.as_mut_ptr(), w * 4, true) };
+        for (y, row) in out.chunks(w * 4).enumerate() {
+            let drawn = (4..8).contains(&(h - 1 - y));
+            let want = if drawn { [9; 4] } else { [1, 2, 3, 4] };
+            assert!(row.chunks(4).all(|p| p == want), "user row {y}");
+        }
+        // A depth-only clear while colour is partly pending: colour keeps its values.
         fb.defer_clear(None, Some(5));
+        assert!((0..w * h).all(|i| fb.depth_at(i) == 5));
         let t = fb.target();
         assert!(t.depth.iter().all(|&d| d == 5));
+        assert!(t
+            .color
+            .chunks(w)
+            .enumerate()
+            .all(|(y, r)| r.iter().all(|&c| c
+                == if (4..8).contains(&y) {
+                    [9; 4]
+                } else {
+                    [1, 2, 3, 4]
+                })));
+    }
+
+    /// A second clear of both buffers after a partial draw makes every row pending again.
+    #[test]
+    fn full_clear_after_partial_draw_is_pending_everywhere() {
+        let (w, h) = (4usize, 8usize);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba, DepthFormat::Z24, false);
+        fb.defer_clear(Some([1, 1, 1, 1]), Some(1));
+        {
+            let mut bands = fb.bands(2);
+            bands[0].resolve();
+            bands[0].color.fill([7; 4]);
+        }
+        fb.defer_clear(Some([2, 2, 2, 2]), None);
+        // Depth was pending in rows 2.. and is still 1 everywhere; colour is 2 everywhere.
+        assert!((0..w * h).all(|i| fb.color_at(i) == [2; 4] && fb.depth_at(i) == 1));
+        fb.resolve();
+        assert!(fb.color.iter().all(|&c| c == [2; 4]) && fb.depth.iter().all(|&d| d == 1));
+        assert!(fb.pending_rows.iter().all(|&p| !p));
+    }
+
+    /// `target_rows` writes the recorded clears of its rows only.
+    #[test]
+    fn target_rows_resolves_only_its_rows() {
+        let (w, h) = (3usize, 6usize);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba, DepthFormat::Z24, false);
+        fb.defer_clear(Some([4, 3, 2, 1]), Some(9));
+        let t = fb.target_rows(2..4);
+        assert!(t.pending_rows.is_empty() && t.pending_color.is_none());
+        let written = |i: usize| (2 * w..4 * w).contains(&i);
+        assert!((0..w * h).all(|i| (fb.color[i] == [4, 3, 2, 1]) == written(i)));
+        assert!((0..w * h).all(|i| (fb.depth[i] == 9) == written(i)));
+        assert!((0..h).all(|y| fb.pending_rows[y] != (2..4).contains(&y)));
+        assert!((0..w * h).all(|i| fb.color_at(i) == [4, 3, 2, 1] && fb.depth_at(i) == 9));
+        assert_eq!(fb.uniform_color, None, "a target may write colour");
     }
 
     fn fb_pending(t: &Target<'_>) -> (Option<[u8; 4]>, Option<u32>) {

@@ -536,18 +536,19 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             if !self.batch.heads.is_empty() {
                 self.flush(stats);
             }
+            // Only the triangle's rows leave a deferred glClear behind.
+            let (y0, y1) = box_rows(t, self.region);
             raster_triangle(
                 t,
                 self.region,
                 self.plan,
                 self.units,
-                &mut self.fb.target(),
+                &mut self.fb.target_rows(y0..y1 + 1),
                 stats,
             );
             return;
         }
-        let y0 = t.bbox[1].max(self.region[1]) as usize;
-        let y1 = t.bbox[3].min(self.region[3] - 1) as usize;
+        let (y0, y1) = box_rows(t, self.region);
         if self.batch.heads.is_empty() {
             self.batch.reserve(self.tune.max_batch, self.nvary);
         }
@@ -589,7 +590,15 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 draw_bin(&self.batch, bin, nvary, region, plan, units, band, stats);
             }
         } else if !self.threads || self.batch.work < PARALLEL_WORK {
-            let mut target = self.fb.target();
+            // Only the bands the batch reaches leave a deferred glClear behind.
+            let bins = &self.batch.bins;
+            let first = bins.iter().position(|b| !b.is_empty()).unwrap_or(0);
+            let end = bins
+                .iter()
+                .rposition(|b| !b.is_empty())
+                .map_or(0, |l| l + 1);
+            let br = self.tune.band_rows;
+            let mut target = self.fb.target_rows(first * br..end * br);
             let mut t = SetupTriangle::default();
             for i in 0..self.batch.heads.len() {
                 self.batch.load(i, nvary, &mut t);
@@ -663,6 +672,16 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
         self.job.hand_over(work, helpers, self.tune.stay);
     }
+}
+
+/// The first and last row (y-down, inclusive) of `t`'s box inside `region` (the box is
+/// known to hold pixels of the region).
+#[inline(always)]
+fn box_rows(t: &SetupTriangle, region: [i64; 4]) -> (usize, usize) {
+    (
+        t.bbox[1].max(region[1]) as usize,
+        t.bbox[3].min(region[3] - 1) as usize,
+    )
 }
 
 /// Whether `t` is a right triangle with a horizontal and a vertical edge (half of an
@@ -817,11 +836,12 @@ fn draw_bin(
     band: &mut Target<'_>,
     s: &mut Stats,
 ) {
-    // The band's share of a deferred glClear, written while the band is in the cache.
-    band.resolve();
     if bin.is_empty() {
+        // Nothing to draw here: the band keeps a deferred glClear pending.
         return;
     }
+    // The band's share of a deferred glClear, written while the band is in the cache.
+    band.resolve();
     let mut t = SetupTriangle::default();
     for &i in bin {
         batch.load(i as usize, nvary, &mut t);
