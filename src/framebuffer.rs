@@ -338,6 +338,17 @@ impl Framebuffer {
             // SAFETY: forwarded from the caller.
             unsafe { self.copy_row(row, dst, stride, y_up) }
         }
+        #[cfg(target_arch = "x86_64")]
+        if self.streamed() {
+            // Orders the streaming stores before whatever the program does next.
+            // SAFETY: sfence has no preconditions (SSE is part of x86-64).
+            unsafe { std::arch::x86_64::_mm_sfence() };
+        }
+    }
+
+    /// Whether [`Framebuffer::copy_to_user`] copies RGBA rows with streaming stores.
+    fn streamed(&self) -> bool {
+        self.format == ColorFormat::Rgba && self.color.len() * 4 > STREAM_COPY_BYTES
     }
 
     /// Copies colour row `row` into the user buffer (see [`Framebuffer::copy_to_user`]).
@@ -373,6 +384,7 @@ impl Framebuffer {
             // least `width * bpp` bytes; `out` is exactly that row's first `width * bpp` bytes.
             let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
             match self.format {
+                ColorFormat::Rgba if self.streamed() => stream_copy(out, src.as_flattened()),
                 ColorFormat::Rgba => out.copy_from_slice(src.as_flattened()),
                 ColorFormat::Bgra => {
                     for (o, c) in out.chunks_exact_mut(4).zip(src) {
@@ -607,6 +619,37 @@ impl Target<'_> {
     }
 }
 
+/// Colour buffers above this many bytes are copied to the user with non-temporal stores:
+/// the copy is larger than a core's L2 cache, so its lines would be evicted before anyone
+/// reads them, and streaming them saves reading each destination line first.
+const STREAM_COPY_BYTES: usize = 2 << 20;
+
+/// Copies `src` into `out` (the same length) with non-temporal 16-byte stores where `out`
+/// is aligned (the caller issues the store fence once the whole copy is done).
+fn stream_copy(out: &mut [u8], src: &[u8]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_loadu_si128, _mm_stream_si128};
+        let n = out.len().min(src.len());
+        let head = out.as_ptr().align_offset(16).min(n);
+        out[..head].copy_from_slice(&src[..head]);
+        let mut i = head;
+        while i + 16 <= n {
+            // SAFETY: `i + 16 <= n` keeps both 16-byte accesses inside the slices, and
+            // `out + i` is 16-byte aligned (from `head` on, in steps of 16) as the
+            // streaming store requires; SSE2 is part of x86-64.
+            unsafe {
+                let v = _mm_loadu_si128(src.as_ptr().add(i).cast());
+                _mm_stream_si128(out.as_mut_ptr().add(i).cast(), v);
+            }
+            i += 16;
+        }
+        out[i..n].copy_from_slice(&src[i..n]);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    out.copy_from_slice(src);
+}
+
 /// Writes the recorded clears `color` and `depth` into the rows of `color_rows` and
 /// `depth_rows` (`width` pixels each) that `marks` flags, and clears the flags.
 fn resolve_rows(
@@ -825,6 +868,35 @@ mod tests {
         fb.resolve();
         assert!(fb.color.iter().all(|&c| c == [2; 4]) && fb.depth.iter().all(|&d| d == 1));
         assert!(fb.pending_rows.iter().all(|&p| !p));
+    }
+
+    /// A colour buffer above `STREAM_COPY_BYTES` is copied with streaming stores, at any
+    /// destination alignment, to the same bytes as a plain copy.
+    #[test]
+    fn streamed_copy_matches_plain_copy() {
+        for n in [0usize, 1, 15, 16, 17, 100, 4096 + 7] {
+            let src: Vec<u8> = (0..n).map(|i| (i * 7 + 3) as u8).collect();
+            for off in 0..16 {
+                let mut out = vec![0u8; n + 16];
+                stream_copy(&mut out[off..off + n], &src);
+                assert_eq!(&out[off..off + n], &src[..], "n {n} off {off}");
+                assert!(out[..off].iter().chain(&out[off + n..]).all(|&b| b == 0));
+            }
+        }
+        let (w, h) = (1024usize, 600usize);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba, DepthFormat::None, false);
+        assert!(fb.streamed());
+        for (i, c) in fb.color.iter_mut().enumerate() {
+            *c = (i as u32).wrapping_mul(2_654_435_761).to_le_bytes();
+        }
+        let stride = w * 4 + 5;
+        let mut out = vec![0u8; stride * h + 1];
+        // SAFETY: `out` holds `h` rows of `stride` bytes after its first byte.
+        unsafe { fb.copy_to_user(out.as_mut_ptr().add(1), stride, true) };
+        for y in 0..h {
+            let row = &out[1 + (h - 1 - y) * stride..][..w * 4];
+            assert_eq!(row, fb.color[y * w..(y + 1) * w].as_flattened(), "row {y}");
+        }
     }
 
     /// `target_rows` writes the recorded clears of its rows only.
