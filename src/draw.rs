@@ -434,13 +434,7 @@ mod tests {
 
     #[test]
     fn position_pass_finds_the_vertex_stage_masks() {
-        let mut x = 0x9e37_79b9u32;
-        let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 17;
-            x ^= x << 5;
-            x
-        };
+        let mut next = crate::test_rng::xorshift32(0x9e37_79b9);
         let val = |next: &mut dyn FnMut() -> u32| {
             let r = next();
             if r.is_multiple_of(16) {

@@ -26,4 +26,6 @@ pub mod geometry;
 pub mod pixels;
 pub mod raster;
 pub mod stats;
+#[cfg(test)]
+mod test_rng;
 pub mod texture;

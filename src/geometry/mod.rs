@@ -207,11 +207,9 @@ mod tests {
 
     #[test]
     fn fused_madd_rounds_once_like_mul_add() {
-        let mut x = 0x1234_5678u32;
+        let mut rng = crate::test_rng::xorshift32(0x1234_5678);
         let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 17;
-            x ^= x << 5;
+            let x = rng();
             f32::from_bits((x & 0x3fff_ffff) | 0x3000_0000) * if x & 1 == 0 { 1.0 } else { -1.0 }
         };
         for _ in 0..100_000 {

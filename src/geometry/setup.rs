@@ -522,13 +522,7 @@ mod tests {
         // Small triangles at 1/64-pixel positions around a few pixel centres, both windings:
         // `setup_triangle_shaded` calls a triangle Empty exactly when the brute-force
         // coverage of the full setup is empty.
-        let mut state = 0x9E37_79B9u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state
-        };
+        let mut next = crate::test_rng::xorshift32(0x9E37_79B9);
         let (mut empty, mut drawn) = (0, 0);
         for _ in 0..20_000 {
             let p = |r: u32| 3.0 + (r % 160) as f32 / 64.0;

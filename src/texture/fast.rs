@@ -502,13 +502,7 @@ mod tests {
     /// Random quads through both paths, for every AoS configuration.
     #[test]
     fn quads_match_general_sampler() {
-        let mut seed = 0x1234_5678u32;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        };
+        let mut rnd = crate::test_rng::xorshift32(0x1234_5678);
         let mk = |w: usize, h: usize, rnd: &mut dyn FnMut() -> u32| -> Option<Level> {
             Some(Level {
                 width: w,
