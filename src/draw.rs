@@ -299,10 +299,12 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
             };
             if streamed {
                 let mut cache = VertexCache::new();
+                let mut slot = verts.new_slot();
                 let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
                 assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
                     let [va, vb, vc] = cache.triangle([ix(a), ix(b), ix(c)], |i, out| {
-                        stage.run_into(&verts.vertex(i), out)
+                        verts.vertex_into(i, &mut slot);
+                        stage.run_into(&slot.v, out)
                     });
                     tri3(va, vb, vc, &mut rast, stats);
                 });
@@ -409,7 +411,15 @@ fn run_vertices<S: VertexSource + ?Sized>(
                 })
                 .collect()
         }
-        _ => (0..n).map(|i| stage.run(&verts.vertex(i))).collect(),
+        _ => {
+            let mut slot = verts.new_slot();
+            (0..n)
+                .map(|i| {
+                    verts.vertex_into(i, &mut slot);
+                    stage.run(&slot.v)
+                })
+                .collect()
+        }
     }
 }
 

@@ -20,7 +20,6 @@
 use super::error::{GlError, GlResult};
 use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
 use super::Context;
-use crate::geometry::fetch::VertexIn;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -257,8 +256,7 @@ impl Context {
             }
             VertexOp::Vertex(p) => {
                 if self.immediate.active.is_some() {
-                    let v = VertexIn::with_current(p, cur);
-                    self.push_immediate_vertex(v)?;
+                    self.push_immediate_vertex(p)?;
                 }
             }
             VertexOp::Color(v) => cur.color = v,

@@ -8,7 +8,6 @@
 use super::state::Cap;
 use super::{Context, GlError, GlResult};
 use crate::fixed_function::eval::{de_casteljau_surf, horner_curve, horner_surf};
-use crate::geometry::fetch::VertexIn;
 
 /// The nine map kinds, in GL_MAP1_COLOR_4 … GL_MAP1_VERTEX_4 order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -315,9 +314,8 @@ impl Context {
             cur.texcoord[0] = t;
         }
         if let (Some(p), Some(_)) = (vertex, self.immediate.active) {
-            let vin = VertexIn::with_current(p, &self.state.current);
             // Out of memory drops the vertex (glEvalCoord has no error to report).
-            let _ = self.push_immediate_vertex(vin);
+            let _ = self.push_immediate_vertex(p);
         }
     }
 

@@ -1,9 +1,9 @@
 //! glBegin/glEnd: the vertices of the primitive being specified.
 
 use super::error::{GlError, GlResult};
-use super::state::{Primitive, MAX_TEXTURE_UNITS};
+use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
 use crate::geometry::fetch::VertexIn;
-use crate::geometry::source::VertexSource;
+use crate::geometry::source::{VertexSlot, VertexSource};
 
 /// Immediate-mode state.
 #[derive(Clone, Debug, Default)]
@@ -49,31 +49,31 @@ struct Rest {
 }
 
 impl Rest {
-    /// Whether `v`'s attributes are bit for bit these (so `v` may share this entry). One
-    /// branch-free pass over the bits: the float compare it replaces branched per float,
-    /// and also merged 0.0 with -0.0.
+    /// Whether the current attributes `cur` are bit for bit these (so a vertex given with
+    /// them may share this entry). One branch-free pass over the bits: the float compare
+    /// it replaces branched per float, and also merged 0.0 with -0.0.
     #[inline]
-    fn same_bits(&self, v: &VertexIn) -> bool {
+    fn same_bits(&self, cur: &CurrentAttribs) -> bool {
         let diff = |a: &[f32], b: &[f32]| {
             a.iter()
                 .zip(b)
                 .fold(0u32, |d, (x, y)| d | (x.to_bits() ^ y.to_bits()))
         };
-        diff(self.texcoord.as_flattened(), v.texcoord.as_flattened())
-            | diff(&self.normal, &v.normal)
-            | diff(&self.secondary, &v.secondary)
-            | (self.fog_coord.to_bits() ^ v.fog_coord.to_bits())
-            | (self.edge_flag != v.edge_flag) as u32
+        diff(self.texcoord.as_flattened(), cur.texcoord.as_flattened())
+            | diff(&self.normal, &cur.normal)
+            | diff(&self.secondary, &cur.secondary_color)
+            | (self.fog_coord.to_bits() ^ cur.fog_coord.to_bits())
+            | (self.edge_flag != cur.edge_flag) as u32
             == 0
     }
 
-    fn of(v: &VertexIn) -> Self {
+    fn of(cur: &CurrentAttribs) -> Self {
         Rest {
-            normal: v.normal,
-            texcoord: v.texcoord,
-            fog_coord: v.fog_coord,
-            edge_flag: v.edge_flag,
-            secondary: v.secondary,
+            normal: cur.normal,
+            texcoord: cur.texcoord,
+            fog_coord: cur.fog_coord,
+            edge_flag: cur.edge_flag,
+            secondary: cur.secondary_color,
         }
     }
 }
@@ -99,17 +99,19 @@ impl ImmVerts {
         self.verts.is_empty()
     }
 
-    /// Appends `v` (GL_OUT_OF_MEMORY when memory runs out).
-    pub fn push(&mut self, v: &VertexIn) -> GlResult<()> {
-        if !self.rest.last().is_some_and(|r| r.same_bits(v)) {
+    /// Appends a vertex at `pos` with the current attributes `cur` (GL_OUT_OF_MEMORY when
+    /// memory runs out). Reads `cur` in place: building a [`VertexIn`] first copied its
+    /// 200 bytes per glVertex.
+    pub fn push_current(&mut self, pos: [f32; 4], cur: &CurrentAttribs) -> GlResult<()> {
+        if !self.rest.last().is_some_and(|r| r.same_bits(cur)) {
             self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
-            self.rest.push(Rest::of(v));
+            self.rest.push(Rest::of(cur));
         }
         self.verts
             .try_reserve(1)
             .map_err(|_| GlError::OutOfMemory)?;
         self.verts
-            .push((v.pos, v.color, (self.rest.len() - 1) as u32));
+            .push((pos, cur.color, (self.rest.len() - 1) as u32));
         Ok(())
     }
 
@@ -149,6 +151,23 @@ impl VertexSource for ImmVerts {
     }
 
     #[inline]
+    fn vertex_into(&self, i: usize, slot: &mut VertexSlot) {
+        let (pos, color, r) = self.verts[i];
+        slot.v.pos = pos;
+        slot.v.color = color;
+        // Consecutive vertices mostly share their `rest` entry: copy it only on a change.
+        if slot.tag != r as usize {
+            slot.tag = r as usize;
+            let r = &self.rest[r as usize];
+            slot.v.normal = r.normal;
+            slot.v.texcoord = r.texcoord;
+            slot.v.fog_coord = r.fog_coord;
+            slot.v.edge_flag = r.edge_flag;
+            slot.v.secondary = r.secondary;
+        }
+    }
+
+    #[inline]
     fn position(&self, i: usize) -> [f32; 4] {
         self.verts[i].0
     }
@@ -168,34 +187,48 @@ mod tests {
     fn vertices_share_attributes_only_when_bits_are_equal() {
         let cur = CurrentAttribs::default();
         let mut iv = ImmVerts::default();
-        let mut v = VertexIn::with_current([0.0, 0.0, 0.0, 1.0], &cur);
-        iv.push(&v).unwrap();
-        iv.push(&v).unwrap();
+        let mut c = cur;
+        let p = [0.0, 0.0, 0.0, 1.0];
+        iv.push_current(p, &c).unwrap();
+        iv.push_current(p, &c).unwrap();
         assert_eq!(iv.rest.len(), 1);
         // -0.0 == 0.0 as floats, but it is another value.
-        v.texcoord[7][2] = -v.texcoord[7][2];
-        iv.push(&v).unwrap();
+        c.texcoord[7][2] = -c.texcoord[7][2];
+        iv.push_current(p, &c).unwrap();
         assert_eq!(iv.rest.len(), 2);
         assert_eq!(
             iv.vertex(2).texcoord[7][2].to_bits(),
-            v.texcoord[7][2].to_bits()
+            c.texcoord[7][2].to_bits()
         );
         assert_eq!(iv.vertex(0).texcoord, cur.texcoord);
-        v.edge_flag = !v.edge_flag;
-        iv.push(&v).unwrap();
-        v.fog_coord = 0.25;
-        iv.push(&v).unwrap();
-        v.normal[1] = 0.5;
-        iv.push(&v).unwrap();
-        v.secondary[3] = 0.5;
-        iv.push(&v).unwrap();
+        c.edge_flag = !c.edge_flag;
+        iv.push_current(p, &c).unwrap();
+        c.fog_coord = 0.25;
+        iv.push_current(p, &c).unwrap();
+        c.normal[1] = 0.5;
+        iv.push_current(p, &c).unwrap();
+        c.secondary_color[3] = 0.5;
+        iv.push_current(p, &c).unwrap();
         // NaN is kept (and shared with an identical NaN).
-        v.texcoord[0][0] = f32::NAN;
-        iv.push(&v).unwrap();
-        iv.push(&v).unwrap();
+        c.texcoord[0][0] = f32::NAN;
+        iv.push_current(p, &c).unwrap();
+        // Only the colour changes: the entry is still shared.
+        c.color = [0.25; 4];
+        iv.push_current([1.0, 2.0, 3.0, 1.0], &c).unwrap();
         assert_eq!(iv.rest.len(), 7);
         assert!(iv.vertex(8).texcoord[0][0].is_nan());
+        assert_eq!(iv.vertex(8).color, [0.25; 4]);
+        assert_eq!(iv.vertex(8).pos, [1.0, 2.0, 3.0, 1.0]);
         assert_eq!(iv.vertex(5).normal[1], 0.5);
         assert_eq!(iv.vertex(4).normal[1], cur.normal[1]);
+        assert_eq!(iv.vertex(4).edge_flag, !cur.edge_flag);
+        // A reused slot reads every vertex as `vertex` does, in any order (the slot skips
+        // copying the shared attributes only while they stay the same entry).
+        let mut slot = iv.new_slot();
+        for i in [0, 1, 2, 8, 3, 3, 0, 7, 8, 5, 4, 6, 1] {
+            iv.vertex_into(i, &mut slot);
+            let (a, b) = (slot.v, iv.vertex(i));
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "vertex {i}");
+        }
     }
 }

@@ -7,14 +7,13 @@
 use super::error::GlResult;
 use super::lighting_state::Material;
 use super::Context;
-use crate::geometry::fetch::VertexIn;
 
 impl Context {
     /// Appends an immediate-mode vertex (inside glBegin/glEnd) and, when the batch has
     /// per-vertex materials, the material it is given with.
-    pub fn push_immediate_vertex(&mut self, v: VertexIn) -> GlResult<()> {
+    pub fn push_immediate_vertex(&mut self, pos: [f32; 4]) -> GlResult<()> {
         let im = &mut self.immediate;
-        im.verts.push(&v)?;
+        im.verts.push_current(pos, &self.state.current)?;
         if im.per_vertex_material {
             im.materials.push(self.light.material);
         }

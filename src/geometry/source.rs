@@ -10,12 +10,37 @@
 use super::fetch::{VertexFetcher, VertexIn};
 use super::ClipVertex;
 
+/// A vertex read through [`VertexSource::vertex_into`], reused from one read to the next
+/// so that a source rewrites only the attributes that can differ (reading a whole
+/// [`VertexIn`], about 200 bytes, per vertex was a visible part of small-triangle draws).
+#[derive(Clone, Copy, Debug)]
+pub struct VertexSlot {
+    /// The vertex last read.
+    pub v: VertexIn,
+    /// The source's own note of what `v` holds beyond the per-vertex attributes.
+    pub tag: usize,
+}
+
 /// The vertices of one draw, addressed 0..count.
 pub trait VertexSource {
     /// How many vertices the draw can address.
     fn count(&self) -> usize;
     /// Vertex `i` (`i < count()`).
     fn vertex(&self, i: usize) -> VertexIn;
+    /// A slot for [`Self::vertex_into`], made once per draw.
+    fn new_slot(&self) -> VertexSlot {
+        let cur = crate::context::state::CurrentAttribs::default();
+        VertexSlot {
+            v: VertexIn::with_current([0.0, 0.0, 0.0, 1.0], &cur),
+            tag: usize::MAX,
+        }
+    }
+    /// Reads vertex `i` into `slot` (whose `v` then equals `vertex(i)`); `slot` must come
+    /// from this source's [`Self::new_slot`] and have been written only by this method.
+    #[inline]
+    fn vertex_into(&self, i: usize, slot: &mut VertexSlot) {
+        slot.v = self.vertex(i);
+    }
     /// The object-space position of vertex `i`: `vertex(i).pos`, without the other
     /// attributes.
     fn position(&self, i: usize) -> [f32; 4] {
@@ -83,6 +108,18 @@ impl VertexSource for FetchSource<'_> {
     fn vertex(&self, i: usize) -> VertexIn {
         // SAFETY: `FetchSource::new` made the caller promise the range is valid.
         unsafe { self.fetch.fetch(self.index(i)) }
+    }
+    fn new_slot(&self) -> VertexSlot {
+        VertexSlot {
+            v: self.fetch.base(),
+            tag: 0,
+        }
+    }
+    #[inline]
+    fn vertex_into(&self, i: usize, slot: &mut VertexSlot) {
+        // SAFETY: as in `vertex`; `slot.v` came from `new_slot` and was written only
+        // here, so its attributes without an enabled array hold the current values.
+        unsafe { self.fetch.fetch_into(self.index(i), &mut slot.v) }
     }
     #[inline]
     fn position(&self, i: usize) -> [f32; 4] {
