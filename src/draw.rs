@@ -15,7 +15,7 @@ use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::clip_triangle;
-use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
 use crate::geometry::source::{VertexCache, VertexSource};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
 use crate::raster::batch::Rasterizer;
@@ -178,6 +178,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
     let mut tri = SetupTriangle::default();
+    let setup = SetupVariant::detect();
     // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
     let lp_offset = (st.caps.get(Cap::PolygonOffsetFill)
         && (ctx.raster.polygon.offset_factor != 0.0 || ctx.raster.polygon.offset_units != 0.0))
@@ -192,7 +193,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                    c: &ClipVertex,
                    rast: &mut Rasterizer<'_, '_>,
                    stats: &mut crate::stats::Stats| {
-        match setup_triangle_shaded([a, b, c], nvary, cull, back, plan.flat, &mut tri) {
+        match setup.shaded([a, b, c], nvary, cull, back, plan.flat, &mut tri) {
             SetupResult::Draw => {
                 if let Some((factor, units)) = lp_offset {
                     crate::raster::prims::apply_setup_offset([a, b, c], factor, units, &mut tri);

@@ -200,6 +200,67 @@ pub fn setup_triangle_shaded(
     setup_inner(v, nvary, cull, back, (flat, true), fill)
 }
 
+/// [`setup_triangle_shaded`] compiled for AVX2: the same f32 and i64 operations (Rust
+/// never fuses a multiply and an add on its own), so the same results, with three-operand
+/// instructions instead of SSE2's register copies.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn setup_triangle_shaded_avx2(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    flat: bool,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    setup_inner(v, nvary, cull, back, (flat, true), fill)
+}
+
+/// Which compiled copy of [`setup_triangle_shaded`] a draw runs, chosen once per draw.
+#[derive(Clone, Copy, Debug)]
+pub struct SetupVariant {
+    /// Run the AVX2 copy (only ever true on a CPU that has AVX2).
+    avx2: bool,
+}
+
+impl SetupVariant {
+    /// The fastest copy this CPU can run.
+    pub fn detect() -> Self {
+        use crate::cpu::{isa, Isa};
+        SetupVariant {
+            avx2: matches!(isa(), Isa::Avx2Fma | Isa::Avx2),
+        }
+    }
+
+    /// The baseline (SSE2) copy, whatever the CPU.
+    #[cfg(test)]
+    pub fn baseline() -> Self {
+        SetupVariant { avx2: false }
+    }
+
+    /// [`setup_triangle_shaded`], in this variant's copy.
+    #[inline(always)]
+    pub fn shaded(
+        self,
+        v: [&ClipVertex; 3],
+        nvary: usize,
+        cull: CullMode,
+        back: Option<usize>,
+        flat: bool,
+        fill: &mut SetupTriangle,
+    ) -> SetupResult {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is only set by `detect`, on a CPU with AVX2.
+            return unsafe { setup_triangle_shaded_avx2(v, nvary, cull, back, flat, fill) };
+        }
+        setup_triangle_shaded(v, nvary, cull, back, flat, fill)
+    }
+}
+
 /// Setup; `(flat, skip_empty)` as [`setup_triangle_shaded`]'s `flat` and whether an empty
 /// triangle is reported as `Empty`.
 #[inline(always)]
@@ -237,25 +298,17 @@ fn setup_inner(
     // Two-sided lighting: a back-facing triangle takes the back colours (llvmpipe's
     // `lp_twoside` setup step).
     let swapped: [ClipVertex; 3];
-    if let (false, Some(o)) = (front, back) {
+    let p2 = if let (false, Some(o)) = (front, back) {
         swapped = [p0, p1, p2].map(|p| {
             let mut q = *p;
             q.vary.copy_within(o..o + 8, 0);
             q
         });
         (p0, p1) = (&swapped[0], &swapped[1]);
-        return setup_rest(
-            p0,
-            p1,
-            &swapped[2],
-            [x0, x1, x2],
-            [y0, y1, y2],
-            ccw,
-            front,
-            (nvary, flat, skip_empty),
-            fill,
-        );
-    }
+        &swapped[2]
+    } else {
+        p2
+    };
     setup_rest(
         p0,
         p1,
@@ -343,8 +396,9 @@ impl PlaneConsts {
 }
 
 /// The part of setup after culling: edges and planes of (p0, p1, p2), reordered when
-/// clockwise.
+/// clockwise. Inlined into each entry point, so the AVX2 copy has its own.
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 fn setup_rest<'v>(
     mut p0: &'v ClipVertex,
     mut p1: &'v ClipVertex,
@@ -769,5 +823,67 @@ mod tests {
         all.dedup();
         assert_eq!(n, all.len(), "double-covered pixel");
         assert_eq!(n, 9);
+    }
+    #[test]
+    fn avx2_setup_matches_baseline_bit_for_bit() {
+        let fast = SetupVariant::detect();
+        if !fast.avx2 {
+            eprintln!("no AVX2 on this CPU: only the baseline copy exists to run");
+            return;
+        }
+        let mut next = crate::test_rng::xorshift32(0xa5e7_0f1c);
+        let odd = [f32::NAN, f32::INFINITY, -1e30, 0.0, -0.0, 1e-30, 3.5, 1e12];
+        let mut val = |scale: f32| {
+            let r = next();
+            if r.is_multiple_of(64) {
+                odd[(r >> 6) as usize % odd.len()]
+            } else {
+                (r >> 8) as f32 / (1 << 24) as f32 * scale
+            }
+        };
+        let mut counts = [0u32; 4];
+        for case in 0..20_000 {
+            // Tiny, small and large triangles, some with varying 1/w.
+            let scale = [2.0, 12.0, 300.0][case % 3];
+            let (ox, oy) = (val(200.0), val(200.0));
+            let vs: Vec<ClipVertex> = (0..3)
+                .map(|_| {
+                    let mut c = ClipVertex {
+                        win: [ox + val(scale), oy + val(scale), val(1.0), 1.0],
+                        ..Default::default()
+                    };
+                    if case % 2 == 1 {
+                        c.win[3] = 0.25 + val(2.0);
+                    }
+                    for x in c.vary.iter_mut() {
+                        *x = val(1.0);
+                    }
+                    c
+                })
+                .collect();
+            let cull = CullMode {
+                front: case % 7 == 3,
+                back: case % 5 == 2,
+                front_ccw: case % 4 < 2,
+            };
+            let back = (case % 6 == 1).then_some(super::super::VARY_TEX);
+            let nvary = [4, 7, 16, 22][case % 4];
+            let flat = case % 9 == 0;
+            let v = [&vs[0], &vs[1], &vs[2]];
+            let (mut a, mut b) = (SetupTriangle::default(), SetupTriangle::default());
+            let ra = SetupVariant::baseline().shaded(v, nvary, cull, back, flat, &mut a);
+            let rb = fast.shaded(v, nvary, cull, back, flat, &mut b);
+            let kind = |r: &SetupResult| match r {
+                SetupResult::Draw => 0,
+                SetupResult::Degenerate => 1,
+                SetupResult::Culled => 2,
+                SetupResult::Empty => 3,
+            };
+            assert_eq!(kind(&ra), kind(&rb), "case {case}");
+            counts[kind(&ra)] += 1;
+            // Debug prints every f32 exactly (and NaN, -0.0 as such).
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "case {case}");
+        }
+        assert!(counts.iter().all(|&c| c > 200), "{counts:?}");
     }
 }
