@@ -14,11 +14,11 @@ use crate::fixed_function::point_size::PointAtten;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
-use crate::geometry::clip::clip_triangle;
+use crate::geometry::clip::{clip_triangle, UserPlanes};
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
-use crate::geometry::source::{VertexCache, VertexSource};
+use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
-use crate::raster::batch::Rasterizer;
+use crate::raster::batch::{geom_section, Binner, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
 
 /// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()).
@@ -177,8 +177,6 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
     let Some(fb) = ctx.fb.as_mut() else { return };
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
-    let mut tri = SetupTriangle::default();
-    let setup = SetupVariant::detect();
     // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
     let lp_offset = (st.caps.get(Cap::PolygonOffsetFill)
         && (ctx.raster.polygon.offset_factor != 0.0 || ctx.raster.polygon.offset_units != 0.0))
@@ -188,23 +186,15 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                 crate::geometry::unfilled::scaled_units(p.offset_units, depth_bits.max(0) as u32);
             (p.offset_factor, units)
         });
-    let mut one = |a: &ClipVertex,
-                   b: &ClipVertex,
-                   c: &ClipVertex,
-                   rast: &mut Rasterizer<'_, '_>,
-                   stats: &mut crate::stats::Stats| {
-        match setup.shaded([a, b, c], nvary, cull, back, plan.flat, &mut tri) {
-            SetupResult::Draw => {
-                if let Some((factor, units)) = lp_offset {
-                    crate::raster::prims::apply_setup_offset([a, b, c], factor, units, &mut tri);
-                }
-                rast.triangle(&tri, stats)
-            }
-            SetupResult::Degenerate => stats.tris_degenerate += 1,
-            SetupResult::Culled => stats.tris_culled += 1,
-            // What the rasterizer counts for a box without pixels.
-            SetupResult::Empty => stats.tris_offscreen += 1,
-        }
+    let pipe = TriPipe {
+        setup: SetupVariant::detect(),
+        nvary,
+        cull,
+        back,
+        flat: plan.flat,
+        lp_offset,
+        ucp: &stage.ucp,
+        viewport: &viewport,
     };
     match mode {
         Primitive::Points => {
@@ -272,49 +262,57 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
             let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
             pp.draw(mode, n, at, edge, nvary, &plan, &mut rast, stats);
         }
-        _ => {
-            let mut tri3 = |va: &ClipVertex,
-                            vb: &ClipVertex,
-                            vc: &ClipVertex,
-                            rast: &mut Rasterizer<'_, '_>,
-                            stats: &mut crate::stats::Stats| {
-                stats.triangles += 1;
-                let or = va.mask | vb.mask | vc.mask;
-                if va.mask & vb.mask & vc.mask != 0 {
-                    stats.tris_clip_rejected += 1;
-                } else if or != 0 {
-                    stats.tris_clipped += 1;
-                    clip_triangle(
-                        [va, vb, vc],
-                        or,
-                        &stage.ucp,
-                        &viewport,
-                        nvary,
-                        plan.flat,
-                        back,
-                        |p, q, r| one(p, q, r, rast, stats),
+        _ if streamed => {
+            let streamer = Streamer {
+                verts,
+                indices,
+                stage: &stage,
+                pipe,
+                mode,
+                path,
+            };
+            let mut state = streamer.state();
+            let section = geom_section();
+            let ntris = n / 3;
+            if mode == Primitive::Triangles
+                && section > 0
+                && ntris >= 2 * section
+                && rast.can_split()
+            {
+                // The first section the ordinary way; the rest on two threads at once
+                // (`raster::batch::split`) when its triangles are small: then setting
+                // them up takes longer than drawing them.
+                let boxes = rast.box_area_sum();
+                let tris = stats.tris_rasterized;
+                streamer.run(0, section, &mut state, &mut rast, stats);
+                let area = (rast.box_area_sum() - boxes) as f64;
+                let rasterized = (stats.tris_rasterized - tris) as f64;
+                if area <= SPLIT_MAX_AREA * rasterized {
+                    let rest = ntris - section;
+                    let geom =
+                        |state: &mut StreamState, s: usize, sink: &mut Binner, stats: &mut _| {
+                            let first = section * (s + 1);
+                            streamer.run(first, section.min(ntris - first), state, sink, stats);
+                        };
+                    rast.split_geometry(
+                        rest.div_ceil(section),
+                        section,
+                        stats,
+                        || streamer.state(),
+                        geom,
                     );
                 } else {
-                    one(va, vb, vc, rast, stats);
+                    streamer.run(section, ntris - section, &mut state, &mut rast, stats);
                 }
-            };
-            if streamed {
-                let mut cache = VertexCache::new();
-                let mut slot = verts.new_slot();
-                let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
-                assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
-                    let [va, vb, vc] = cache.triangle([ix(a), ix(b), ix(c)], |i, out| {
-                        verts.vertex_into(i, &mut slot);
-                        stage.run_into(&slot.v, out)
-                    });
-                    tri3(va, vb, vc, &mut rast, stats);
-                });
-                stats.vertices += cache.transformed;
             } else {
-                assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
-                    tri3(at(a), at(b), at(c), &mut rast, stats)
-                });
+                streamer.run_all(n, &mut state, &mut rast, stats);
             }
+        }
+        _ => {
+            let mut tri = SetupTriangle::default();
+            assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
+                pipe.triangle(at(a), at(b), at(c), &mut tri, &mut rast, stats)
+            });
         }
     }
     rast.flush(stats);
@@ -322,6 +320,167 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
         ctx.light.sync_color_material(ctx.state.current.color);
     }
 }
+
+/// The per-triangle stages after the vertex stage: clipping, setup, llvmpipe's polygon
+/// offset, then the sink (the draw's rasterizer, or a section's batch of a split draw).
+#[derive(Clone, Copy)]
+struct TriPipe<'a> {
+    setup: SetupVariant,
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    flat: bool,
+    /// llvmpipe's own polygon offset: factor and scaled units.
+    lp_offset: Option<(f32, f32)>,
+    ucp: &'a UserPlanes,
+    viewport: &'a Viewport,
+}
+
+impl TriPipe<'_> {
+    /// Sets up one triangle inside the clip volume and passes it to `sink`.
+    #[inline]
+    fn one<K: TriangleSink>(
+        &self,
+        v: [&ClipVertex; 3],
+        tri: &mut SetupTriangle,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        match self
+            .setup
+            .shaded(v, self.nvary, self.cull, self.back, self.flat, tri)
+        {
+            SetupResult::Draw => {
+                if let Some((factor, units)) = self.lp_offset {
+                    crate::raster::prims::apply_setup_offset(v, factor, units, tri);
+                }
+                sink.triangle(tri, stats)
+            }
+            SetupResult::Degenerate => stats.tris_degenerate += 1,
+            SetupResult::Culled => stats.tris_culled += 1,
+            // What the rasterizer counts for a box without pixels.
+            SetupResult::Empty => stats.tris_offscreen += 1,
+        }
+    }
+
+    /// Rejects, clips or sets up one assembled triangle.
+    #[inline]
+    fn triangle<K: TriangleSink>(
+        &self,
+        va: &ClipVertex,
+        vb: &ClipVertex,
+        vc: &ClipVertex,
+        tri: &mut SetupTriangle,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        stats.triangles += 1;
+        let or = va.mask | vb.mask | vc.mask;
+        if va.mask & vb.mask & vc.mask != 0 {
+            stats.tris_clip_rejected += 1;
+        } else if or != 0 {
+            stats.tris_clipped += 1;
+            clip_triangle(
+                [va, vb, vc],
+                or,
+                self.ucp,
+                self.viewport,
+                self.nvary,
+                self.flat,
+                self.back,
+                |p, q, r| self.one([p, q, r], tri, sink, stats),
+            );
+        } else {
+            self.one([va, vb, vc], tri, sink, stats);
+        }
+    }
+}
+
+/// A streamed draw's own post-transform cache, vertex slot and set-up triangle (one per
+/// thread of a split draw).
+type StreamState = (VertexCache, VertexSlot, SetupTriangle);
+
+/// The streamed triangles of a draw: each vertex fetched and transformed when first
+/// assembled (through the post-transform cache), then clipped and set up ([`TriPipe`]).
+struct Streamer<'a, S: ?Sized> {
+    verts: &'a S,
+    indices: Option<&'a [u32]>,
+    stage: &'a VertexStage,
+    pipe: TriPipe<'a>,
+    mode: Primitive,
+    path: DrawPath,
+}
+
+impl<S: VertexSource + ?Sized> Streamer<'_, S> {
+    /// A new cache, slot and set-up triangle.
+    fn state(&self) -> StreamState {
+        (
+            VertexCache::new(),
+            self.verts.new_slot(),
+            SetupTriangle::default(),
+        )
+    }
+
+    /// Streams the draw's `n` vertices as its primitive mode into `sink`.
+    fn run_all<K: TriangleSink>(
+        &self,
+        n: usize,
+        state: &mut StreamState,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        self.stream(self.mode, 0, n, state, sink, stats);
+    }
+
+    /// Streams `count` independent triangles from triangle `first` of a GL_TRIANGLES draw
+    /// into `sink`, starting with an empty cache.
+    fn run<K: TriangleSink>(
+        &self,
+        first: usize,
+        count: usize,
+        state: &mut StreamState,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        state.0.reset();
+        self.stream(
+            Primitive::Triangles,
+            first * 3,
+            count * 3,
+            state,
+            sink,
+            stats,
+        );
+    }
+
+    /// Streams vertices `first..first + n` as `mode`.
+    fn stream<K: TriangleSink>(
+        &self,
+        mode: Primitive,
+        first: usize,
+        n: usize,
+        (cache, slot, tri): &mut StreamState,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
+        let (verts, stage) = (self.verts, self.stage);
+        assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {
+            let k = [ix(first + a), ix(first + b), ix(first + c)];
+            let [va, vb, vc] = cache.triangle(k, |i, out| {
+                verts.vertex_into(i, slot);
+                stage.run_into(&slot.v, out)
+            });
+            self.pipe.triangle(va, vb, vc, tri, sink, stats);
+        });
+        stats.vertices += cache.transformed;
+        cache.transformed = 0;
+    }
+}
+
+/// A draw of GL_TRIANGLES is split over two threads when the mean pixel box of its first
+/// section's triangles is at most this: set-up then costs more than drawing.
+const SPLIT_MAX_AREA: f64 = 32.0;
 
 /// A draw in feedback or selection mode: the vertex stage, then the draw module's
 /// primitive stages into the feedback buffer or the hit record; nothing is rasterized.

@@ -61,6 +61,21 @@ impl Stats {
         self.samples_passed += o.samples_passed;
     }
 
+    /// Adds every counter of `o` (the work of a draw's other thread).
+    pub fn add(&mut self, o: &Stats) {
+        self.draws += o.draws;
+        self.vertices += o.vertices;
+        self.triangles += o.triangles;
+        self.tris_clip_rejected += o.tris_clip_rejected;
+        self.tris_clipped += o.tris_clipped;
+        self.tris_culled += o.tris_culled;
+        self.tris_degenerate += o.tris_degenerate;
+        self.tris_rasterized += o.tris_rasterized;
+        self.tris_offscreen += o.tris_offscreen;
+        self.tris_paired += o.tris_paired;
+        self.add_pixels(o);
+    }
+
     /// A multi-line human-readable report.
     pub fn report(&self) -> String {
         format!("{self:#?}")

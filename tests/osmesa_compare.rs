@@ -1231,6 +1231,78 @@ fn run_program(name: &str, source: &Path) {
     }
 }
 
+/// The geometry split (a GL_TRIANGLES draw of small triangles set up on two threads in
+/// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) keeps the images and the
+/// `SOFTGL_STATS` counters of single-threaded rendering without it: the same bytes and the
+/// same counts except `vertices` (each section starts with an empty post-transform cache)
+/// and `tris_paired`. small_tris_200k (clipped and depth-tested one-pixel triangles) takes
+/// the split whenever threads are on, as its larger `vertices` count proves;
+/// immediate_100k's triangles (boxes of about 60 pixels at 512x512) are too big for it
+/// there (its count stays the same).
+#[test]
+fn split_geometry_keeps_images_and_counters() {
+    let out_dir = target_dir().join("ctests").join("out");
+    fs::create_dir_all(&out_dir).expect("mkdir");
+    // The counters of a run, as `name value` pairs from the report on stderr.
+    let counters = |stderr: &[u8]| -> Vec<(String, u64)> {
+        String::from_utf8_lossy(stderr)
+            .lines()
+            .filter_map(|l| {
+                let (k, v) = l.trim().trim_end_matches(',').split_once(": ")?;
+                Some((k.to_owned(), v.parse().ok()?))
+            })
+            .collect()
+    };
+    for (name, splits_512) in [("small_tris_200k", true), ("immediate_100k", false)] {
+        let src = root().join("bench/scenes").join(format!("{name}.c"));
+        let bin = build(&format!("bench_{name}"), &src, Side::Softgl)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        for (w, h) in [(512, 512), (333, 277)] {
+            let run = |threads: &str, section: &str| {
+                let out = out_dir.join(format!("split_{name}-{w}x{h}-t{threads}-s{section}.out"));
+                let _ = fs::remove_file(&out);
+                let st = Command::new(&bin)
+                    .env("SOFTGL_THREADS", threads)
+                    .env("SOFTGL_GEOM_SECTION", section)
+                    .env("SOFTGL_STATS", "1")
+                    .arg(&out)
+                    .args([w, h, 1].map(|v: u32| v.to_string()))
+                    .output()
+                    .expect("run bench scene");
+                assert!(st.status.success(), "{name} {w}x{h}: {st:?}");
+                let c = counters(&st.stderr);
+                assert!(c.len() >= 15, "{name}: no counters in {st:?}");
+                (fs::read(&out).expect("output file"), c)
+            };
+            let (image, base) = run("1", "0");
+            let get = |c: &[(String, u64)], k: &str| {
+                c.iter().find(|(n, _)| n == k).map(|(_, v)| *v).expect(k)
+            };
+            assert!(get(&base, "triangles") > 60_000, "{name}: {base:?}");
+            for section in ["0", "1000", "777", "30000"] {
+                for threads in ["1", "2"] {
+                    let (img, c) = run(threads, section);
+                    let what = format!("{name} {w}x{h} threads {threads} section {section}");
+                    assert!(img == image, "{what}: the image differs");
+                    let same = |k: &str| k != "vertices" && k != "tris_paired";
+                    let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
+                        c.iter().filter(|(k, _)| same(k)).cloned().collect()
+                    };
+                    assert_eq!(strip(&c), strip(&base), "{what}: counters differ");
+                    let (v, v0) = (get(&c, "vertices"), get(&base, "vertices"));
+                    if threads == "1" || section == "0" {
+                        assert_eq!(v, v0, "{what}: vertices");
+                    } else if splits_512 {
+                        assert!(v > v0, "{what}: not split ({v} vertices, {v0} without)");
+                    } else if w == 512 {
+                        assert_eq!(v, v0, "{what}: split");
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// Threads on and off give byte-identical images on the benchmark scenes (`bench/scenes`),
 /// at sizes where the threaded paths run (batches drawn on the pool while the draw goes on,
 /// band-parallel rasterization, parallel clears and copies) and at an odd size whose last

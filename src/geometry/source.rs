@@ -22,7 +22,7 @@ pub struct VertexSlot {
 }
 
 /// The vertices of one draw, addressed 0..count.
-pub trait VertexSource {
+pub trait VertexSource: Sync {
     /// How many vertices the draw can address.
     fn count(&self) -> usize;
     /// Vertex `i` (`i < count()`).
@@ -99,6 +99,12 @@ impl<'a> FetchSource<'a> {
     }
 }
 
+// SAFETY: a `FetchSource` only reads: the buffer stores it borrows, and client memory
+// through the array pointers, which `FetchSource::new`'s caller promised valid for the
+// draw, during which nothing writes them (the draw's caller is inside the GL call).
+// Reading them from the draw's two threads at once is therefore no data race.
+unsafe impl Sync for FetchSource<'_> {}
+
 impl VertexSource for FetchSource<'_> {
     #[inline]
     fn count(&self) -> usize {
@@ -160,6 +166,11 @@ impl VertexCache {
             spill: [ClipVertex::default(); 3],
             transformed: 0,
         }
+    }
+
+    /// Forgets every cached vertex (keeps the buffers and the count of transformed ones).
+    pub fn reset(&mut self) {
+        self.tags.fill(usize::MAX);
     }
 
     /// The transformed vertices `idx` of one triangle; `run(i, out)` transforms vertex

@@ -17,6 +17,10 @@
 //! millisecond here, so a pool task polls for the next batch for a while after drawing one
 //! and the draw's thread polls briefly for the last band before it sleeps ([`Job`]).
 
+mod split;
+
+pub use split::{geom_section, Binner};
+
 use super::raster_triangle;
 use crate::fragment::FragPlan;
 use crate::framebuffer::{Framebuffer, Target};
@@ -209,7 +213,7 @@ struct Work {
     batch: Batch,
     /// The framebuffer's bands, one per bin; band `i` is claimed by whoever took `i` from
     /// `next`.
-    bands: Vec<BandCell>,
+    bands: Vec<BandCell<'static>>,
     /// The next unclaimed band.
     next: AtomicUsize,
     plan: FragPlan,
@@ -222,7 +226,7 @@ struct Work {
 }
 
 /// One band of a [`Work`], written only by the thread that claimed it.
-struct BandCell(UnsafeCell<Target<'static>>);
+struct BandCell<'f>(UnsafeCell<Target<'f>>);
 
 // SAFETY: a `Work` is shared between the draw's thread and one pool job. Each band is
 // reached only by the thread that claimed its index from `next` (`fetch_add` hands every
@@ -285,14 +289,30 @@ struct Slot {
     busy: bool,
     /// A pool task has finished its batch and waits for the next one in [`Job::run`].
     waiting: bool,
-    /// The batch handed to that task.
-    next: Option<Arc<Work>>,
+    /// The task handed to that pool task.
+    next: Option<Task>,
 }
 
+/// What a [`Job`] runs on the pool.
+enum Task {
+    /// A batch, drawn band by band.
+    Bands(Arc<Work>),
+    /// A closure on the draw thread's stack ([`Rasterizer::split_geometry`]), called once.
+    Side(SideFn),
+}
+
+/// A pointer to a closure that the draw thread keeps alive (and waits for, through
+/// [`Job::wait_done`]) until the pool task that calls it has reported done.
+struct SideFn(*const (dyn Fn() + Sync + 'static));
+
+// SAFETY: the closure is `Sync`, so calling it from the pool thread through a shared
+// pointer is allowed; the draw thread keeps it alive until the call has returned.
+unsafe impl Send for SideFn {}
+
 impl Job {
-    /// Draws `work` on the pool, using a task that waits for more if there is one
+    /// Runs `work` on the pool, using a task that waits for more if there is one
     /// (see [`Job::run`]).
-    fn hand_over(self: &Arc<Self>, work: Arc<Work>, helpers: usize, stay: Duration) {
+    fn hand_over(self: &Arc<Self>, work: Task, helpers: usize, stay: Duration) {
         let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
         slot.busy = true;
         self.busy.store(true, Ordering::Release);
@@ -312,22 +332,35 @@ impl Job {
     /// Waking a sleeping pool thread takes a good part of a millisecond on this kind of
     /// virtual machine, longer than the work of a small frame; frames follow each other
     /// within that time.
-    fn run(&self, mut work: Arc<Work>, helpers: usize, stay: Duration) {
+    fn run(&self, mut work: Task, helpers: usize, stay: Duration) {
         loop {
-            let helpers = helpers.min(rayon::current_num_threads());
-            if helpers > 1 {
-                let w = &work;
-                rayon::scope(|s| {
-                    for _ in 1..helpers {
-                        s.spawn(|_| w.help());
+            match work {
+                Task::Bands(work) => {
+                    let helpers = helpers.min(rayon::current_num_threads());
+                    if helpers > 1 {
+                        let w = &work;
+                        rayon::scope(|s| {
+                            for _ in 1..helpers {
+                                s.spawn(|_| w.help());
+                            }
+                            w.help();
+                        });
+                    } else {
+                        work.help();
                     }
-                    w.help();
-                });
-            } else {
-                work.help();
+                    // The draw thread takes the batch back with `Arc::into_inner`: drop
+                    // ours first.
+                    drop(work);
+                }
+                Task::Side(f) => {
+                    // A panic stays on this thread (the closure tells the draw thread to
+                    // stop through its own state); the job still reports done.
+                    // SAFETY: the draw thread keeps the closure alive until `busy` goes
+                    // false below (see `SideFn`).
+                    let f = unsafe { &*f.0 };
+                    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+                }
             }
-            // The draw thread takes the batch back with `Arc::into_inner`: drop ours first.
-            drop(work);
             {
                 let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
                 slot.busy = false;
@@ -382,10 +415,12 @@ impl Job {
     }
 }
 
-/// What a draw keeps between draws on one thread: both batches and the job slot.
+/// What a draw keeps between draws on one thread: both batches, the geometry split's
+/// ring of batches and the job slot.
 #[derive(Default)]
 struct Pool {
     batches: [Batch; 2],
+    ring: Vec<Batch>,
     job: Arc<Job>,
 }
 
@@ -415,10 +450,80 @@ pub struct Rasterizer<'a, 'f> {
     /// Triangles after which the current batch is handed to the pool: [`FIRST_BATCH`] for
     /// a draw's first batch, doubling up to `max_batch`.
     limit: usize,
-    /// A triangle held back because it may make a rectangle with the next one ([`pair`]).
+    /// The triangle held back for [`pair`].
+    pairing: Pairing,
+    /// The geometry split's batches ([`Rasterizer::split_geometry`]), kept for the next draw.
+    ring: Vec<Batch>,
+    /// The sum of the pixel boxes (inside the region) of the triangles rasterized so far.
+    box_sum: i64,
+}
+
+/// A triangle held back because it may make a rectangle with the next one ([`pair`]).
+#[derive(Default)]
+struct Pairing {
     held: Option<Box<SetupTriangle>>,
     /// Whether `held` holds such a triangle.
     holding: bool,
+}
+
+impl Pairing {
+    /// Passes `t` (whose box holds `area > 0` pixels of `region`) on to `emit` in primitive
+    /// order: held back when it is half of an axis-aligned rectangle and `on`, drawn as one
+    /// rectangle with the held triangle when they pair up.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn offer(
+        &mut self,
+        t: &SetupTriangle,
+        area: i64,
+        on: bool,
+        nvary: usize,
+        region: [i64; 4],
+        stats: &mut Stats,
+        mut emit: impl FnMut(&SetupTriangle, i64, &mut Stats),
+    ) {
+        if self.holding {
+            self.holding = false;
+            let mut h = self.held.take().unwrap_or_default();
+            let paired = pair(&mut h, t, nvary);
+            stats.tris_paired += paired as u64;
+            emit(&h, box_area(&h, region), stats);
+            self.held = Some(h);
+            if paired {
+                return;
+            }
+        }
+        if on && half_rect(t).is_some() {
+            let h = self.held.get_or_insert_with(Box::default);
+            copy_triangle(h, t, nvary);
+            self.holding = true;
+            return;
+        }
+        emit(t, area, stats);
+    }
+
+    /// Passes the held triangle, if any, on to `emit`.
+    fn release(
+        &mut self,
+        region: [i64; 4],
+        stats: &mut Stats,
+        mut emit: impl FnMut(&SetupTriangle, i64, &mut Stats),
+    ) {
+        if self.holding {
+            self.holding = false;
+            if let Some(h) = self.held.take() {
+                emit(&h, box_area(&h, region), stats);
+                self.held = Some(h);
+            }
+        }
+    }
+}
+
+/// Where the draw's set-up triangles go: the [`Rasterizer`] itself, or a [`Binner`] that
+/// fills one section's batch of a split draw.
+pub trait TriangleSink {
+    /// Rasterizes (or batches) one set-up triangle.
+    fn triangle(&mut self, t: &SetupTriangle, stats: &mut Stats);
 }
 
 /// The pixel count of `t`'s box inside `region`.
@@ -466,8 +571,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             inflight: None,
             job: pool.job,
             limit: FIRST_BATCH.min(tune.max_batch),
-            held: None,
-            holding: false,
+            pairing: Pairing::default(),
+            ring: pool.ring,
+            box_sum: 0,
         }
     }
 
@@ -475,6 +581,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     pub fn target(&mut self, stats: &mut Stats) -> &mut Framebuffer {
         self.flush(stats);
         self.fb
+    }
+
+    /// The sum of the pixel boxes (inside the region) of the triangles rasterized so far,
+    /// for choosing how to draw the rest.
+    pub fn box_area_sum(&self) -> i64 {
+        self.box_sum
     }
 
     /// The enabled texture units' plans.
@@ -495,37 +607,20 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         stats.tris_rasterized += 1;
-        if self.holding {
-            self.holding = false;
-            let mut h = self.held.take().unwrap_or_default();
-            let paired = pair(&mut h, t, self.nvary);
-            stats.tris_paired += paired as u64;
-            let a = box_area(&h, self.region);
-            self.emit(&h, a, stats);
-            self.held = Some(h);
-            if paired {
-                return;
-            }
-        }
-        if self.tune.pair && half_rect(t).is_some() {
-            let h = self.held.get_or_insert_with(Box::default);
-            copy_triangle(h, t, self.nvary);
-            self.holding = true;
-            return;
-        }
-        self.emit(t, area, stats);
+        self.box_sum += area;
+        let mut p = std::mem::take(&mut self.pairing);
+        let (on, nvary, region) = (self.tune.pair, self.nvary, self.region);
+        p.offer(t, area, on, nvary, region, stats, |t, a, s| {
+            self.emit(t, a, s)
+        });
+        self.pairing = p;
     }
 
     /// Draws the held triangle, if any.
     fn release(&mut self, stats: &mut Stats) {
-        if self.holding {
-            self.holding = false;
-            if let Some(h) = self.held.take() {
-                let a = box_area(&h, self.region);
-                self.emit(&h, a, stats);
-                self.held = Some(h);
-            }
-        }
+        let mut p = std::mem::take(&mut self.pairing);
+        p.release(self.region, stats, |t, a, s| self.emit(t, a, s));
+        self.pairing = p;
     }
 
     /// Rasterizes (or batches) `t`, whose box holds `area` pixels of the region.
@@ -670,7 +765,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.inflight = Some(Arc::clone(&work));
         let threads = crate::cpu::threads();
         let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
-        self.job.hand_over(work, helpers, self.tune.stay);
+        self.job
+            .hand_over(Task::Bands(work), helpers, self.tune.stay);
     }
 }
 
@@ -849,6 +945,13 @@ fn draw_bin(
     }
 }
 
+impl TriangleSink for Rasterizer<'_, '_> {
+    #[inline]
+    fn triangle(&mut self, t: &SetupTriangle, stats: &mut Stats) {
+        Rasterizer::triangle(self, t, stats)
+    }
+}
+
 impl Drop for Rasterizer<'_, '_> {
     fn drop(&mut self) {
         // The job must be done before the borrows it uses end. (Draws end with `flush`, so
@@ -861,6 +964,7 @@ impl Drop for Rasterizer<'_, '_> {
                 std::mem::take(&mut self.batch),
                 self.spare.take().unwrap_or_default(),
             ],
+            ring: std::mem::take(&mut self.ring),
             job: Arc::clone(&self.job),
         };
         POOL.with(|p| *p.borrow_mut() = pool);
