@@ -433,7 +433,8 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
     }
 
     /// Streams `count` independent triangles from triangle `first` of a GL_TRIANGLES draw
-    /// into `sink`, starting with an empty cache.
+    /// into `sink`. The cache carries over from the sections this thread streamed before:
+    /// a vertex transforms the same in every section of a draw.
     fn run<K: TriangleSink>(
         &self,
         first: usize,
@@ -442,7 +443,6 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         sink: &mut K,
         stats: &mut crate::stats::Stats,
     ) {
-        state.0.reset();
         self.stream(
             Primitive::Triangles,
             first * 3,

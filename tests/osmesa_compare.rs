@@ -1234,9 +1234,10 @@ fn run_program(name: &str, source: &Path) {
 /// The geometry split (a GL_TRIANGLES draw of small triangles set up on two threads in
 /// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) keeps the images and the
 /// `SOFTGL_STATS` counters of single-threaded rendering without it: the same bytes and the
-/// same counts except `vertices` (each section starts with an empty post-transform cache)
-/// and `tris_paired`. small_tris_200k (clipped and depth-tested one-pixel triangles) takes
-/// the split whenever threads are on, as its larger `vertices` count proves;
+/// same counts except `vertices` (each thread has its own post-transform cache, so vertices
+/// of sections set up on different threads are transformed twice) and `tris_paired`.
+/// small_tris_200k (clipped and depth-tested one-pixel triangles) takes the split whenever
+/// threads are on, as its larger `vertices` count proves;
 /// immediate_100k's triangles (boxes of about 60 pixels at 512x512) are too big for it
 /// there (its count stays the same).
 #[test]

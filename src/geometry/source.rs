@@ -168,11 +168,6 @@ impl VertexCache {
         }
     }
 
-    /// Forgets every cached vertex (keeps the buffers and the count of transformed ones).
-    pub fn reset(&mut self) {
-        self.tags.fill(usize::MAX);
-    }
-
     /// The transformed vertices `idx` of one triangle; `run(i, out)` transforms vertex
     /// `i` into `out` on a miss.
     #[inline]

@@ -9,8 +9,8 @@
 //! is drawn only after every band of the batch before it is done, each band of a batch is
 //! drawn by one thread, and a section's triangles are binned in their own order. The
 //! images are therefore byte-identical to single-threaded rendering. The counters are the
-//! same too, except `vertices` (each section starts with an empty post-transform cache)
-//! and `tris_paired` (a rectangle's halves in two sections are drawn as two triangles).
+//! same too, except `vertices` (each thread has its own post-transform cache, so vertices
+//! shared by sections set up on different threads are transformed twice) and `tris_paired` (a rectangle's halves in two sections are drawn as two triangles).
 //!
 //! The scheduler is a loop both threads run ([`Shared::work`]): draw the next band of the
 //! batch at the cursor when that batch is set up, else set up the next section when its
