@@ -305,7 +305,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                     streamer.run(section, ntris - section, &mut state, &mut rast, stats);
                 }
             } else {
-                streamer.run_all(n, &mut state, &mut rast, stats);
+                streamer.stream(streamer.mode, 0, n, &mut state, &mut rast, stats);
             }
         }
         _ => {
@@ -419,17 +419,6 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
             self.verts.new_slot(),
             SetupTriangle::default(),
         )
-    }
-
-    /// Streams the draw's `n` vertices as its primitive mode into `sink`.
-    fn run_all<K: TriangleSink>(
-        &self,
-        n: usize,
-        state: &mut StreamState,
-        sink: &mut K,
-        stats: &mut crate::stats::Stats,
-    ) {
-        self.stream(self.mode, 0, n, state, sink, stats);
     }
 
     /// Streams `count` independent triangles from triangle `first` of a GL_TRIANGLES draw

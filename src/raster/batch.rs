@@ -643,17 +643,17 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             );
             return;
         }
-        let (y0, y1) = box_rows(t, self.region);
         if self.batch.heads.is_empty() {
             self.batch.reserve(self.tune.max_batch, self.nvary);
         }
-        self.batch.push(
+        split::bin(
+            &mut self.batch,
             t,
+            area,
             self.nvary,
-            y0 / self.tune.band_rows,
-            y1 / self.tune.band_rows,
+            self.region,
+            self.tune.band_rows,
         );
-        self.batch.work += area;
         if !self.threads {
             if self.batch.heads.len() >= self.tune.max_batch || self.batch.work >= MAX_WORK_LOCAL {
                 self.flush(stats);

@@ -59,7 +59,7 @@ pub struct Binner {
 
 /// Appends `t` (whose box holds `area` pixels of `region`) to `batch`, binned by its rows.
 #[inline]
-fn bin(
+pub(super) fn bin(
     batch: &mut Batch,
     t: &SetupTriangle,
     area: i64,
