@@ -338,7 +338,7 @@ struct TriPipe<'a> {
 
 impl TriPipe<'_> {
     /// Sets up one triangle inside the clip volume and passes it to `sink`.
-    #[inline]
+    #[inline(always)]
     fn one<K: TriangleSink>(
         &self,
         v: [&ClipVertex; 3],

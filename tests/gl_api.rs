@@ -1,6 +1,7 @@
 //! GL API semantics through the exported C functions: errors leave state unchanged, the
 //! first error is kept until read, OSMesa behaviour, and the work counters.
 
+use softgl::ffi::arrays::*;
 use softgl::ffi::buffers::*;
 use softgl::ffi::draw::*;
 use softgl::ffi::enums::*;
@@ -353,4 +354,92 @@ fn counters_show_skipped_fragment_work() {
         s4.color_writes, s3.color_writes,
         "all-false colour mask: no colour written"
     );
+}
+
+/// A long glBegin(GL_TRIANGLES) batch is drawn in chunks while it is specified the first
+/// time, then whole (its storage now holds it); both give exactly the image and counters
+/// of one glDrawArrays of the same vertices. GL_QUADS batches are never drawn in chunks.
+#[test]
+fn long_triangle_batches_stream_in_chunks_with_the_same_pixels() {
+    let (w, h) = (96, 80);
+    let c = Ctx::new(w, h);
+    let mut seed = 0x9E37_79B9u32;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    // 20000 small triangles, some crossing the frame's edges (clipped), overlapping in
+    // depth: 60000 vertices, several times the first chunk.
+    let mut pos = Vec::new();
+    let mut col = Vec::new();
+    for _ in 0..20000 {
+        let (cx, cy, cz) = (rnd() * 2.4 - 1.2, rnd() * 2.4 - 1.2, rnd() * 1.8 - 0.9);
+        for _ in 0..3 {
+            pos.extend([cx + rnd() * 0.2 - 0.1, cy + rnd() * 0.2 - 0.1, cz]);
+            col.extend([rnd(), rnd(), rnd()]);
+        }
+    }
+    glEnable(GL_DEPTH_TEST);
+    let frame = |draw: &dyn Fn()| {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let s0 = softgl::ffi::current_stats().unwrap();
+        draw();
+        glFinish();
+        let s1 = softgl::ffi::current_stats().unwrap();
+        (
+            c.buf.clone(),
+            s1.draws - s0.draws,
+            s1.tris_rasterized - s0.tris_rasterized,
+            s1.fragments - s0.fragments,
+            s1.depth_failed - s0.depth_failed,
+        )
+    };
+    let immediate = || {
+        glBegin(GL_TRIANGLES);
+        for (p, k) in pos.chunks(3).zip(col.chunks(3)) {
+            glColor3f(k[0], k[1], k[2]);
+            glVertex3f(p[0], p[1], p[2]);
+        }
+        glEnd();
+    };
+    let first = frame(&immediate);
+    let second = frame(&immediate);
+    let arrays = frame(&|| {
+        glVertexPointer(3, GL_FLOAT, 0, pos.as_ptr().cast());
+        glColorPointer(3, GL_FLOAT, 0, col.as_ptr().cast());
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glDrawArrays(GL_TRIANGLES, 0, 60000);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glDisableClientState(GL_COLOR_ARRAY);
+    });
+    assert!(
+        first.1 >= 3,
+        "the first batch is drawn in chunks: {}",
+        first.1
+    );
+    assert_eq!(second.1, 1, "the second batch is drawn whole");
+    assert_eq!(arrays.1, 1);
+    assert!(arrays.2 > 10000 && arrays.3 > 50000 && arrays.4 > 1000);
+    for (name, f) in [("first", &first), ("second", &second)] {
+        assert_eq!(
+            (f.2, f.3, f.4),
+            (arrays.2, arrays.3, arrays.4),
+            "{name}: counters"
+        );
+        assert!(f.0 == arrays.0, "{name}: image differs from glDrawArrays");
+    }
+    assert_eq!(glGetError(), GL_NO_ERROR);
+
+    // A long GL_QUADS batch stays one draw (its clip decision covers the whole draw).
+    let quads = frame(&|| {
+        glBegin(GL_QUADS);
+        for p in pos.chunks(3).take(40000) {
+            glVertex3f(p[0], p[1], p[2]);
+        }
+        glEnd();
+    });
+    assert_eq!(quads.1, 1);
 }

@@ -257,6 +257,7 @@ impl Context {
             VertexOp::Vertex(p) => {
                 if self.immediate.active.is_some() {
                     self.push_immediate_vertex(p)?;
+                    self.stream_immediate();
                 }
             }
             VertexOp::Color(v) => cur.color = v,

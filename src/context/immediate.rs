@@ -2,8 +2,13 @@
 
 use super::error::{GlError, GlResult};
 use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
+use super::Context;
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::source::{VertexSlot, VertexSource};
+
+/// The vertex count at which a glBegin(GL_TRIANGLES) batch is drawn before glEnd
+/// ([`Context::stream_immediate`]): 4096 triangles, 432 KiB of stored vertices.
+pub const STREAM_CHUNK: usize = 3 * 4096;
 
 /// Immediate-mode state.
 #[derive(Clone, Debug, Default)]
@@ -20,6 +25,8 @@ pub struct Immediate {
     pub indexed: bool,
     /// Whether a display-list vertex node is being replayed.
     pub replaying: bool,
+    /// Vertices of the batch already drawn by [`Context::stream_immediate`].
+    pub streamed: usize,
     /// Whether glMaterial was called inside this batch (see `vertex_material`).
     pub per_vertex_material: bool,
     /// With `per_vertex_material`, both faces' materials of each vertex in `verts`.
@@ -34,6 +41,41 @@ impl Immediate {
             mode,
             Primitive::Points | Primitive::Lines | Primitive::Triangles | Primitive::Quads
         )
+    }
+}
+
+impl Context {
+    /// Draws the whole triangles of a glBegin(GL_TRIANGLES) batch of at least
+    /// [`STREAM_CHUNK`] vertices when its storage is full, instead of growing it: a
+    /// program's first long batch is drawn in chunks while it is specified, so a one-frame
+    /// program does not fault in (and copy, as the storage doubles) megabytes of vertices.
+    /// [`Context::flush_pending`] then reserves room for the whole batch, so the batches
+    /// of later frames are drawn whole, in one draw.
+    ///
+    /// Triangles are independent of each other, so drawing them in several draws gives
+    /// the same pixels (Mesa's vbo module also draws a long batch each time its vertex
+    /// buffer fills). Other modes are left whole (a GL_QUADS draw's clip decision covers
+    /// the whole draw), as are display-list replays (drawn indexed) and batches with
+    /// per-vertex materials.
+    #[inline]
+    pub fn stream_immediate(&mut self) {
+        let im = &self.immediate;
+        let n = im.verts.len();
+        if n < STREAM_CHUNK
+            || im.verts.room() >= 3
+            || !n.is_multiple_of(3)
+            || im.active != Some(Primitive::Triangles)
+            || im.replaying
+            || im.per_vertex_material
+        {
+            return;
+        }
+        let verts = std::mem::take(&mut self.immediate.verts);
+        crate::draw::draw_lit(self, Primitive::Triangles, &verts, None, None);
+        let im = &mut self.immediate;
+        im.verts = verts;
+        im.verts.clear();
+        im.streamed += n;
     }
 }
 
@@ -126,6 +168,18 @@ impl ImmVerts {
     pub fn clear(&mut self) {
         self.verts.clear();
         self.rest.clear();
+    }
+
+    /// How many more vertices fit without growing the storage.
+    pub fn room(&self) -> usize {
+        self.verts.capacity() - self.verts.len()
+    }
+
+    /// Makes room for `n` vertices in all, if memory allows (a hint: without the room the
+    /// storage grows, or [`Context::stream_immediate`] draws, as vertices arrive).
+    pub fn reserve_total(&mut self, n: usize) {
+        let more = n.saturating_sub(self.verts.len());
+        let _ = self.verts.try_reserve_exact(more);
     }
 }
 

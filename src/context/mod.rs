@@ -214,8 +214,16 @@ impl Context {
                 .indexed
                 .then(|| (0..verts.len() as u32).collect());
             crate::draw::draw_lit(self, mode, &verts, idx.as_deref(), mats.as_deref());
-            self.immediate.verts = verts;
-            self.immediate.verts.clear();
+            let im = &mut self.immediate;
+            let total = std::mem::take(&mut im.streamed) + verts.len();
+            im.verts = verts;
+            im.verts.clear();
+            if total > im.verts.len() + im.verts.room() {
+                // The batch was drawn in chunks: the next one like it is held whole and
+                // drawn here (with room to spare, so that it is not drawn by its last
+                // glVertex either).
+                im.verts.reserve_total(total + total / 4);
+            }
         }
     }
 
