@@ -6,8 +6,9 @@ use super::Context;
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::source::{VertexSlot, VertexSource};
 
-/// The vertex count at which a glBegin(GL_TRIANGLES) batch is drawn before glEnd
-/// ([`Context::stream_immediate`]): 4096 triangles, 432 KiB of stored vertices.
+/// The fewest vertices a glBegin(GL_TRIANGLES) batch holds before
+/// [`Context::stream_immediate`] may draw it ahead of glEnd: 4096 triangles, 432 KiB of
+/// stored vertices.
 pub const STREAM_CHUNK: usize = 3 * 4096;
 
 /// Immediate-mode state.

@@ -218,7 +218,7 @@ impl Context {
             let total = std::mem::take(&mut im.streamed) + verts.len();
             im.verts = verts;
             im.verts.clear();
-            if total > im.verts.len() + im.verts.room() {
+            if total > im.verts.room() {
                 // The batch was drawn in chunks: the next one like it is held whole and
                 // drawn here (with room to spare, so that it is not drawn by its last
                 // glVertex either).
