@@ -271,7 +271,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                 mode,
                 path,
             };
-            let mut state = streamer.state();
+            let mut state = streamer.state(n);
             let section = geom_section();
             let ntris = n / 3;
             if mode == Primitive::Triangles
@@ -298,7 +298,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                         rest.div_ceil(section),
                         section,
                         stats,
-                        || streamer.state(),
+                        || streamer.state(n),
                         geom,
                     );
                 } else {
@@ -412,10 +412,10 @@ struct Streamer<'a, S: ?Sized> {
 }
 
 impl<S: VertexSource + ?Sized> Streamer<'_, S> {
-    /// A new cache, slot and set-up triangle.
-    fn state(&self) -> StreamState {
+    /// A new cache, slot and set-up triangle for a draw of `n` vertex references.
+    fn state(&self, n: usize) -> StreamState {
         (
-            VertexCache::new(),
+            VertexCache::for_draw(n),
             self.verts.new_slot(),
             SetupTriangle::default(),
         )

@@ -134,15 +134,16 @@ impl VertexSource for FetchSource<'_> {
     }
 }
 
-/// log2 of the cache size: 1024 entries keep two rows of a 500-vertex-wide grid mesh.
+/// log2 of the largest cache: 1024 entries keep two rows of a 500-vertex-wide grid mesh.
 const CACHE_BITS: u32 = 10;
 const CACHE_SIZE: usize = 1 << CACHE_BITS;
-const CACHE_MASK: usize = CACHE_SIZE - 1;
 
 /// A direct-mapped post-transform cache: entry `i % 1024` holds vertex `i` when its tag
 /// says so. Every entry of a draw is written by the same vertex stage, so an entry that is
 /// overwritten needs only the fields that stage writes.
 pub struct VertexCache {
+    /// Entries minus one (a power of two minus one).
+    mask: usize,
     tags: Vec<usize>,
     slots: Vec<ClipVertex>,
     /// Three entries for a triangle whose vertices share a cache slot.
@@ -158,11 +159,19 @@ impl Default for VertexCache {
 }
 
 impl VertexCache {
-    /// An empty cache.
+    /// An empty cache of the largest size.
     pub fn new() -> Self {
+        Self::for_draw(CACHE_SIZE)
+    }
+
+    /// An empty cache for a draw that assembles `n` vertex references: no more entries
+    /// than it can use, so a draw of a few vertices does not clear 1024 of them (180 KB).
+    pub fn for_draw(n: usize) -> Self {
+        let size = n.clamp(4, CACHE_SIZE).next_power_of_two();
         VertexCache {
-            tags: vec![usize::MAX; CACHE_SIZE],
-            slots: vec![ClipVertex::default(); CACHE_SIZE],
+            mask: size - 1,
+            tags: vec![usize::MAX; size],
+            slots: vec![ClipVertex::default(); size],
             spill: [ClipVertex::default(); 3],
             transformed: 0,
         }
@@ -176,7 +185,7 @@ impl VertexCache {
         idx: [usize; 3],
         mut run: impl FnMut(usize, &mut ClipVertex),
     ) -> [&ClipVertex; 3] {
-        let s = idx.map(|i| i & CACHE_MASK);
+        let s = idx.map(|i| i & self.mask);
         let clash = |a: usize, b: usize| s[a] == s[b] && idx[a] != idx[b];
         if clash(0, 1) || clash(0, 2) || clash(1, 2) {
             for (k, out) in self.spill.iter_mut().enumerate() {
@@ -215,6 +224,23 @@ mod tests {
         assert_eq!(t.map(|v| v.win[0]), [5.0, (CACHE_SIZE + 5) as f32, 6.0]);
         let t = c.triangle([1, 2, 3], run);
         assert_eq!(t.map(|v| v.win[0]), [1.0, 2.0, 3.0]);
+        assert_eq!(c.transformed, 7);
+    }
+
+    #[test]
+    fn a_small_draws_cache_is_small_and_still_exact() {
+        let mut c = VertexCache::for_draw(6);
+        assert_eq!(c.slots.len(), 8);
+        assert_eq!(VertexCache::for_draw(100_000).slots.len(), CACHE_SIZE);
+        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
+        // 1 and 9 share a slot of the 8-entry cache; 0 and 8 too, in two triangles.
+        let t = c.triangle([1, 9, 2], run);
+        assert_eq!(t.map(|v| v.win[0]), [1.0, 9.0, 2.0]);
+        let t = c.triangle([0, 2, 3], run);
+        assert_eq!(t.map(|v| v.win[0]), [0.0, 2.0, 3.0]);
+        let t = c.triangle([8, 2, 3], run);
+        assert_eq!(t.map(|v| v.win[0]), [8.0, 2.0, 3.0]);
+        // 3 (the spill caches nothing) + 3 (0, 2, 3) + 1 (8 evicts 0).
         assert_eq!(c.transformed, 7);
     }
 }
