@@ -289,11 +289,13 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
                 let rasterized = (stats.tris_rasterized - tris) as f64;
                 if area <= SPLIT_MAX_AREA * rasterized {
                     let rest = ntris - section;
-                    let geom =
-                        |state: &mut StreamState, s: usize, sink: &mut Binner, stats: &mut _| {
-                            let first = section * (s + 1);
-                            streamer.run(first, section.min(ntris - first), state, sink, stats);
-                        };
+                    let geom = |state: &mut Box<StreamState>,
+                                s: usize,
+                                sink: &mut Binner,
+                                stats: &mut _| {
+                        let first = section * (s + 1);
+                        streamer.run(first, section.min(ntris - first), state, sink, stats);
+                    };
                     rast.split_geometry(
                         rest.div_ceil(section),
                         section,
@@ -397,8 +399,16 @@ impl TriPipe<'_> {
 }
 
 /// A streamed draw's own post-transform cache, vertex slot and set-up triangle (one per
-/// thread of a split draw).
-type StreamState = (VertexCache, VertexSlot, SetupTriangle);
+/// thread of a split draw). They are written for every vertex and triangle, so they live
+/// on the heap on lines of their own ([`Streamer::state`]), not on the draw's stack next
+/// to what a pool thread keeps reading there (the fragment and texture plans): sharing a
+/// cache line with those made every such write wait for the other core.
+#[repr(align(128))]
+struct StreamState {
+    cache: VertexCache,
+    slot: VertexSlot,
+    tri: SetupTriangle,
+}
 
 /// The streamed triangles of a draw: each vertex fetched and transformed when first
 /// assembled (through the post-transform cache), then clipped and set up ([`TriPipe`]).
@@ -413,12 +423,12 @@ struct Streamer<'a, S: ?Sized> {
 
 impl<S: VertexSource + ?Sized> Streamer<'_, S> {
     /// A new cache, slot and set-up triangle for a draw of `n` vertex references.
-    fn state(&self, n: usize) -> StreamState {
-        (
-            VertexCache::for_draw(n),
-            self.verts.new_slot(),
-            SetupTriangle::default(),
-        )
+    fn state(&self, n: usize) -> Box<StreamState> {
+        Box::new(StreamState {
+            cache: VertexCache::for_draw(n),
+            slot: self.verts.new_slot(),
+            tri: SetupTriangle::default(),
+        })
     }
 
     /// Streams `count` independent triangles from triangle `first` of a GL_TRIANGLES draw
@@ -448,10 +458,11 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         mode: Primitive,
         first: usize,
         n: usize,
-        (cache, slot, tri): &mut StreamState,
+        state: &mut StreamState,
         sink: &mut K,
         stats: &mut crate::stats::Stats,
     ) {
+        let StreamState { cache, slot, tri } = state;
         let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
         let (verts, stage) = (self.verts, self.stage);
         assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {

@@ -112,6 +112,19 @@ fn tuning() -> Tuning {
     })
 }
 
+/// A value alone on its 128 bytes (two cache lines, which AMD and Intel prefetch as a
+/// pair): a thread that polls it is not slowed down by another thread writing its
+/// neighbours, and writes to it do not slow down readers of theirs (false sharing).
+#[repr(align(128))]
+struct Padded<T>(T);
+
+impl<T> std::ops::Deref for Padded<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.0
+    }
+}
+
 /// A batched triangle without its varyings (those are in [`Batch::planes`] and
 /// [`Batch::flats`], `nvary` per triangle).
 #[derive(Clone, Copy)]
@@ -214,8 +227,8 @@ struct Work {
     /// The framebuffer's bands, one per bin; band `i` is claimed by whoever took `i` from
     /// `next`.
     bands: Vec<BandCell<'static>>,
-    /// The next unclaimed band.
-    next: AtomicUsize,
+    /// The next unclaimed band (claimed by every thread, so alone on its line).
+    next: Padded<AtomicUsize>,
     plan: FragPlan,
     units: *const UnitPlan<'static>,
     n_units: usize,
@@ -271,7 +284,10 @@ impl Work {
 
 /// The pool's side of a draw thread's batches: whether the batch handed over is drawn,
 /// and the hand-over slot of a pool task that stays on after a batch ([`Job::run`]).
+/// Aligned to lines of its own: a pool task polls `posted` while the draw thread works on
+/// whatever the allocator would have put next to it.
 #[derive(Default)]
+#[repr(align(128))]
 struct Job {
     /// The same as `slot.busy`, for waiting without the lock.
     busy: AtomicBool,
@@ -754,7 +770,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .into_iter()
                 .map(|b| BandCell(UnsafeCell::new(b)))
                 .collect(),
-            next: AtomicUsize::new(0),
+            next: Padded(AtomicUsize::new(0)),
             plan: *self.plan,
             units: self.units.as_ptr().cast(),
             n_units: self.units.len(),

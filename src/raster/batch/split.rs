@@ -17,7 +17,7 @@
 //! ring slot is free (at most [`RING`] sections ahead of the cursor), else spin.
 
 use super::{
-    box_area, box_rows, draw_bin, BandCell, Batch, Job, Pairing, Rasterizer, SideFn, Task,
+    box_area, box_rows, draw_bin, BandCell, Batch, Job, Padded, Pairing, Rasterizer, SideFn, Task,
     TriangleSink,
 };
 use crate::fragment::FragPlan;
@@ -109,8 +109,9 @@ impl Binner {
 
 /// A ring slot: the batch of one section, and which section it holds once set up.
 struct Slot {
-    /// Section + 1 of the set-up batch in `binner` (0: none yet).
-    ready: AtomicUsize,
+    /// Section + 1 of the set-up batch in `binner` (0: none yet). Polled by the drawing
+    /// thread while the other fills `binner`, so not on `binner`'s lines.
+    ready: Padded<AtomicUsize>,
     binner: UnsafeCell<Binner>,
 }
 
@@ -119,13 +120,15 @@ struct Shared<'a, 'f> {
     /// Sections of the draw.
     sections: usize,
     /// The next section to set up.
-    next: AtomicUsize,
+    next: Padded<AtomicUsize>,
     /// The batch being drawn (high 32 bits) and its next unclaimed band (low 32 bits).
-    cursor: AtomicU64,
+    /// Polled by an idle thread: alone on its line, as are the other atomics, so that
+    /// the draw thread's stores to its stack next to `Shared` do not stall on it.
+    cursor: Padded<AtomicU64>,
     /// Bands of the batch at the cursor drawn so far.
-    bands_done: AtomicUsize,
+    bands_done: Padded<AtomicUsize>,
     /// Set when a thread panicked: both stop.
-    abort: AtomicBool,
+    abort: Padded<AtomicBool>,
     slots: Vec<Slot>,
     bands: Vec<BandCell<'f>>,
     plan: &'a FragPlan,
@@ -331,7 +334,7 @@ impl Rasterizer<'_, '_> {
                 batch.bins.resize_with(nb, Vec::new);
                 batch.reserve(section_len, nvary);
                 Slot {
-                    ready: AtomicUsize::new(0),
+                    ready: Padded(AtomicUsize::new(0)),
                     binner: UnsafeCell::new(Binner {
                         batch,
                         pairing: Pairing::default(),
@@ -345,10 +348,10 @@ impl Rasterizer<'_, '_> {
             .collect();
         let shared = Shared {
             sections,
-            next: AtomicUsize::new(0),
-            cursor: AtomicU64::new(0),
-            bands_done: AtomicUsize::new(0),
-            abort: AtomicBool::new(false),
+            next: Padded(AtomicUsize::new(0)),
+            cursor: Padded(AtomicU64::new(0)),
+            bands_done: Padded(AtomicUsize::new(0)),
+            abort: Padded(AtomicBool::new(false)),
             slots,
             bands,
             plan: self.plan,
