@@ -400,9 +400,10 @@ impl TriPipe<'_> {
 
 /// A streamed draw's own post-transform cache, vertex slot and set-up triangle (one per
 /// thread of a split draw). They are written for every vertex and triangle, so they live
-/// on the heap on lines of their own ([`Streamer::state`]), not on the draw's stack next
-/// to what a pool thread keeps reading there (the fragment and texture plans): sharing a
-/// cache line with those made every such write wait for the other core.
+/// on the heap on lines of their own ([`Streamer::state`]), not on the draw thread's stack
+/// next to what the other thread polls or reads there (a split draw's shared state, the
+/// fragment plan): sharing a cache line with those made every such write wait for the
+/// other core.
 #[repr(align(128))]
 struct StreamState {
     cache: VertexCache,

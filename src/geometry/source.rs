@@ -138,8 +138,8 @@ impl VertexSource for FetchSource<'_> {
 const CACHE_BITS: u32 = 10;
 const CACHE_SIZE: usize = 1 << CACHE_BITS;
 
-/// A direct-mapped post-transform cache: entry `i % 1024` holds vertex `i` when its tag
-/// says so. Every entry of a draw is written by the same vertex stage, so an entry that is
+/// A direct-mapped post-transform cache: entry `i % size` holds vertex `i` when its tag
+/// says so (`size` a power of two, at most 1024). Every entry of a draw is written by the same vertex stage, so an entry that is
 /// overwritten needs only the fields that stage writes.
 pub struct VertexCache {
     /// Entries minus one (a power of two minus one).
