@@ -152,18 +152,7 @@ pub struct VertexCache {
     pub transformed: u64,
 }
 
-impl Default for VertexCache {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
 impl VertexCache {
-    /// An empty cache of the largest size.
-    pub fn new() -> Self {
-        Self::for_draw(CACHE_SIZE)
-    }
-
     /// An empty cache for a draw that assembles `n` vertex references: no more entries
     /// than it can use, so a draw of a few vertices does not clear 1024 of them (180 KB).
     pub fn for_draw(n: usize) -> Self {
@@ -212,7 +201,7 @@ mod tests {
 
     #[test]
     fn cache_transforms_shared_vertices_once_and_survives_clashes() {
-        let mut c = VertexCache::new();
+        let mut c = VertexCache::for_draw(CACHE_SIZE);
         let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
         let t = c.triangle([0, 1, 2], run);
         assert_eq!(t.map(|v| v.win[0]), [0.0, 1.0, 2.0]);
