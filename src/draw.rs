@@ -542,10 +542,22 @@ fn any_vertex_outside<S: VertexSource + ?Sized>(
     verts: &S,
     indices: Option<&[u32]>,
 ) -> bool {
-    let outside = |i: usize| stage.clip_position(verts.position(i)).1 != 0;
+    let outside = |p: [f32; 4]| stage.clip_position(p).1 != 0;
+    if let Some(fp) = verts.float_positions() {
+        // The same positions, read without a per-vertex fetch (a pass over 40k sprite
+        // corners was 4% of their frame).
+        let n = fp.count();
+        return match indices {
+            Some(ix) => ix.iter().any(|&i| {
+                let i = i as usize;
+                outside(if i < n { fp.get(i) } else { verts.position(i) })
+            }),
+            None => (0..n).any(|i| outside(fp.get(i))),
+        };
+    }
     match indices {
-        Some(ix) => ix.iter().any(|&i| outside(i as usize)),
-        None => (0..verts.count()).any(outside),
+        Some(ix) => ix.iter().any(|&i| outside(verts.position(i as usize))),
+        None => (0..verts.count()).any(|i| outside(verts.position(i))),
     }
 }
 

@@ -136,7 +136,12 @@ pub unsafe fn fetch_attr(
 ///
 /// # Safety
 /// As [`fetch_attr`].
-#[inline]
+///
+/// Always inlined: called out of line, its `Option<[f32; 4]>` went back through memory in
+/// two 8-byte stores read as one 16-byte load (a store-forwarding stall), and that load
+/// was 70% of its samples in a frame of 10k sprites. The rare layouts are converted out of
+/// line ([`convert_other`]).
+#[inline(always)]
 unsafe fn fetch_from(
     data: Option<&[u8]>,
     arr: &ArrayPointer,
@@ -161,7 +166,6 @@ unsafe fn fetch_from(
         }
         arr.ptr.checked_add(off)? as *const u8
     };
-    let mut out = fill;
     let n = arr.size as usize;
     // SAFETY (all arms): buffer reads were bounds-checked; client pointers are the
     // program's promise. The common layouts are read as whole vectors: filled component
@@ -170,27 +174,46 @@ unsafe fn fetch_from(
     // conversions are the same as `read_component`'s.
     unsafe {
         match (arr.ty, n) {
-            (DataType::Float, 4) => return Some(base.cast::<[f32; 4]>().read_unaligned()),
+            (DataType::Float, 4) => Some(base.cast::<[f32; 4]>().read_unaligned()),
             (DataType::Float, 3) => {
                 let [x, y, z] = base.cast::<[f32; 3]>().read_unaligned();
-                return Some([x, y, z, fill[3]]);
+                Some([x, y, z, fill[3]])
             }
             (DataType::Float, 2) => {
                 let [x, y] = base.cast::<[f32; 2]>().read_unaligned();
-                return Some([x, y, fill[2], fill[3]]);
+                Some([x, y, fill[2], fill[3]])
             }
             (DataType::UByte, 4) if normalized => {
                 let b = base.cast::<[u8; 4]>().read_unaligned();
-                return Some(b.map(|c| c as f32 * (1.0f32 / 255.0)));
+                Some(b.map(|c| c as f32 * (1.0f32 / 255.0)))
             }
             (DataType::UByte, 3) if normalized => {
                 let [r, g, b] = base.cast::<[u8; 3]>().read_unaligned();
                 let s = 1.0f32 / 255.0;
-                return Some([r as f32 * s, g as f32 * s, b as f32 * s, fill[3]]);
+                Some([r as f32 * s, g as f32 * s, b as f32 * s, fill[3]])
             }
-            _ => {}
+            _ => Some(convert_other(base, arr.ty, n, normalized, fill)),
         }
-        match arr.ty {
+    }
+}
+
+/// The `n` components of type `ty` at `base` over `fill`: [`fetch_from`]'s layouts other
+/// than its vector fast paths.
+///
+/// # Safety
+/// `base` must be readable for `n` components of `ty`.
+#[inline(never)]
+unsafe fn convert_other(
+    base: *const u8,
+    ty: DataType,
+    n: usize,
+    normalized: bool,
+    fill: [f32; 4],
+) -> [f32; 4] {
+    let mut out = fill;
+    // SAFETY (all arms): forwarded from the caller.
+    unsafe {
+        match ty {
             DataType::Float => {
                 for (c, o) in out.iter_mut().enumerate().take(n) {
                     *o = base.add(c * 4).cast::<f32>().read_unaligned();
@@ -208,7 +231,53 @@ unsafe fn fetch_from(
             }
         }
     }
-    Some(out)
+    out
+}
+
+/// A draw's positions stored as 2 to 4 floats per element, readable without checks
+/// ([`VertexFetcher::float_positions`]).
+pub struct FloatPositions<'a> {
+    /// The first element's first byte.
+    start: *const u8,
+    /// Bytes from one element to the next.
+    stride: usize,
+    /// Floats per element (2 to 4).
+    size: usize,
+    /// Elements readable from `start`.
+    count: usize,
+    /// The buffer store or client memory read.
+    _data: std::marker::PhantomData<&'a [u8]>,
+}
+
+impl FloatPositions<'_> {
+    /// The number of positions.
+    pub fn count(&self) -> usize {
+        self.count
+    }
+
+    /// Position `i` (`i < count()`, checked), with z = 0 and w = 1 where the array has
+    /// no such component: the value [`VertexFetcher::position`] reads.
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> [f32; 4] {
+        assert!(i < self.count);
+        // SAFETY: `float_positions` checked that `count` elements of `size` floats at
+        // `stride` bytes from `start` are inside the store, or its caller promised that
+        // client memory holds them.
+        unsafe {
+            let p = self.start.add(i * self.stride);
+            match self.size {
+                4 => p.cast::<[f32; 4]>().read_unaligned(),
+                3 => {
+                    let [x, y, z] = p.cast::<[f32; 3]>().read_unaligned();
+                    [x, y, z, 1.0]
+                }
+                _ => {
+                    let [x, y] = p.cast::<[f32; 2]>().read_unaligned();
+                    [x, y, 0.0, 1.0]
+                }
+            }
+        }
+    }
 }
 
 /// One enabled array of a draw with its buffer object looked up once.
@@ -300,6 +369,55 @@ impl<'a> VertexFetcher<'a> {
             Some(s) => unsafe { Source::get(s, index, false, ORIGIN) }.unwrap_or(ORIGIN),
             None => self.base.pos,
         }
+    }
+
+    /// The positions of elements `base..base + count` as a [`FloatPositions`] when the
+    /// vertex array holds 2 to 4 floats per element and the whole range can be read
+    /// (inside its buffer object's store, or past the null page in client memory): read
+    /// that way, a pass over the positions costs no conversion, bounds check or
+    /// `Option` per vertex. `None` otherwise (read them with [`Self::position`]).
+    ///
+    /// # Safety
+    /// As [`fetch_attr`]: an enabled client-memory vertex array must be valid for every
+    /// index in the range.
+    pub unsafe fn float_positions(&self, base: u32, count: usize) -> Option<FloatPositions<'a>> {
+        let Some(Ok(src)) = &self.vertex else {
+            return None;
+        };
+        let arr = src.arr;
+        if arr.ty != DataType::Float || !(2..=4).contains(&arr.size) || count == 0 {
+            return None;
+        }
+        u32::try_from(count - 1).ok()?.checked_add(base)?;
+        let size = arr.size as usize;
+        let stride = arr.byte_stride();
+        let first = (base as usize).checked_mul(stride)?;
+        // Bytes from the first element's start to the last element's end.
+        let span = (count - 1).checked_mul(stride)?.checked_add(size * 4)?;
+        let start: *const u8 = match src.data {
+            Some(data) => {
+                let start = arr.ptr.checked_add(first)?;
+                if start.checked_add(span)? > data.len() {
+                    return None;
+                }
+                // SAFETY: start + span <= data.len() was checked above.
+                unsafe { data.as_ptr().add(start) }
+            }
+            None => {
+                if arr.ptr < NULL_PAGE {
+                    return None;
+                }
+                arr.ptr.checked_add(first)?.checked_add(span)?;
+                (arr.ptr + first) as *const u8
+            }
+        };
+        Some(FloatPositions {
+            start,
+            stride,
+            size,
+            count,
+            _data: std::marker::PhantomData,
+        })
     }
 
     /// The vertex every fetch starts from: the origin with the current attributes.
@@ -403,6 +521,22 @@ mod tests {
         Some(out)
     }
 
+    /// Array state whose buffer object 1 holds a copy of `bytes` when `in_buffer`.
+    fn arrays_over(bytes: &[u8], in_buffer: bool) -> ArrayState {
+        let mut arrays = ArrayState::default();
+        if in_buffer {
+            let data = Store::copy_of(bytes).unwrap();
+            arrays.buffers.insert(
+                1,
+                Some(BufferObject {
+                    data,
+                    ..Default::default()
+                }),
+            );
+        }
+        arrays
+    }
+
     #[test]
     fn fetch_and_slot_reads_match_component_reads() {
         const TYPES: [DataType; 5] = [
@@ -432,17 +566,7 @@ mod tests {
             let in_buffer = case % 2 == 1;
             // A buffer object holds a shorter copy, so the last elements read as missing.
             let len = if in_buffer { 30 * 96 + 7 } else { bytes.len() };
-            let mut arrays = ArrayState::default();
-            if in_buffer {
-                let data = Store::copy_of(&bytes[..len]).unwrap();
-                arrays.buffers.insert(
-                    1,
-                    Some(BufferObject {
-                        data,
-                        ..Default::default()
-                    }),
-                );
-            }
+            let mut arrays = arrays_over(&bytes[..len], in_buffer);
             let mut offset = 0;
             let mut setup =
                 |arr: &mut ArrayPointer, sizes: &[i32], next: &mut dyn FnMut() -> u32| {
@@ -513,5 +637,63 @@ mod tests {
             }
         }
         assert!(seen_missing > 50, "{seen_missing}");
+    }
+
+    /// `float_positions` reads every position of a range as `position` does, and is
+    /// offered exactly when the array is 2 to 4 floats per element and the whole range is
+    /// readable (for a buffer object: inside its store).
+    #[test]
+    fn float_positions_read_what_position_reads() {
+        let mut next = crate::test_rng::xorshift32(0x0f1e_a7e5);
+        let (mut offered, mut refused_range) = (0, 0);
+        for case in 0..400 {
+            // 64 elements of up to 24 bytes: random bytes (floats include NaNs and
+            // infinities, compared bit for bit).
+            let bytes: Vec<u8> = (0..64 * 24).map(|_| next() as u8).collect();
+            let in_buffer = case % 2 == 1;
+            let len = if in_buffer { 40 * 24 + 5 } else { bytes.len() };
+            let mut arrays = arrays_over(&bytes[..len], in_buffer);
+            let arr = &mut arrays.vertex;
+            arr.enabled = true;
+            arr.size = [1, 2, 3, 4][next() as usize % 4];
+            arr.ty = [DataType::Float, DataType::Float, DataType::Short][next() as usize % 3];
+            // 0 (tight) or 16 to 24 bytes.
+            arr.stride = [0, 16, 20, 24][next() as usize % 4];
+            arr.buffer = in_buffer as u32;
+            arr.ptr = (next() % 8) as usize * 4
+                + if in_buffer {
+                    0
+                } else {
+                    bytes.as_ptr() as usize
+                };
+            let (base, count) = (next() % 24, 1 + next() as usize % 40);
+            let cur = crate::context::state::CurrentAttribs::default();
+            let fetcher = VertexFetcher::new(&arrays, &cur);
+            let a = &arrays.vertex;
+            let floats = a.ty == DataType::Float && a.size >= 2;
+            let end = a.ptr + (base as usize + count - 1) * a.byte_stride() + a.size as usize * 4;
+            let inside = !in_buffer || end <= len;
+            // SAFETY: client arrays point into `bytes`, whose 1536 bytes hold every
+            // element of the range (offset ≤ 28, 63 strides of ≤ 24, ≤ 16 bytes).
+            let fp = unsafe { fetcher.float_positions(base, count) };
+            assert_eq!(fp.is_some(), floats && inside, "case {case}");
+            refused_range += (floats && !inside) as u32;
+            let Some(fp) = fp else { continue };
+            offered += 1;
+            assert_eq!(fp.count(), count);
+            for i in 0..count {
+                // SAFETY: as above.
+                let want = unsafe { fetcher.position(base + i as u32) };
+                assert_eq!(
+                    fp.get(i).map(f32::to_bits),
+                    want.map(f32::to_bits),
+                    "case {case} {i}"
+                );
+            }
+        }
+        assert!(
+            offered > 100 && refused_range > 10,
+            "{offered} {refused_range}"
+        );
     }
 }

@@ -7,7 +7,7 @@
 //! small direct-mapped cache keyed by vertex index, so memory does not grow with the draw
 //! and a vertex shared by neighbouring triangles of an indexed mesh is transformed once.
 
-use super::fetch::{VertexFetcher, VertexIn};
+use super::fetch::{FloatPositions, VertexFetcher, VertexIn};
 use super::ClipVertex;
 
 /// A vertex read through [`VertexSource::vertex_into`], reused from one read to the next
@@ -49,6 +49,11 @@ pub trait VertexSource: Sync {
     /// The edge flag of vertex `i`.
     fn edge_flag(&self, i: usize) -> bool {
         self.vertex(i).edge_flag
+    }
+    /// The positions of vertices `0..count()` as a plain float array, when they are
+    /// stored as one ([`FloatPositions::get`] reads what [`Self::position`] reads).
+    fn float_positions(&self) -> Option<FloatPositions<'_>> {
+        None
     }
 }
 
@@ -131,6 +136,10 @@ impl VertexSource for FetchSource<'_> {
     fn position(&self, i: usize) -> [f32; 4] {
         // SAFETY: as in `vertex`.
         unsafe { self.fetch.position(self.index(i)) }
+    }
+    fn float_positions(&self) -> Option<FloatPositions<'_>> {
+        // SAFETY: as in `vertex` (the range is the one `FetchSource::new` was given).
+        unsafe { self.fetch.float_positions(self.base, self.count) }
     }
 }
 
