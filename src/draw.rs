@@ -17,7 +17,7 @@ use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::{clip_triangle, UserPlanes};
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
-use crate::geometry::{cpu_has_fma, ClipVertex, Viewport};
+use crate::geometry::{cpu_has_fma, ClipMask, ClipVertex, Viewport};
 use crate::raster::batch::{geom_section, Binner, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
 
@@ -381,20 +381,36 @@ impl TriPipe<'_> {
         if va.mask & vb.mask & vc.mask != 0 {
             stats.tris_clip_rejected += 1;
         } else if or != 0 {
-            stats.tris_clipped += 1;
-            clip_triangle(
-                [va, vb, vc],
-                or,
-                self.ucp,
-                self.viewport,
-                self.nvary,
-                self.flat,
-                self.back,
-                |p, q, r| self.one([p, q, r], tri, sink, stats),
-            );
+            self.clipped([va, vb, vc], or, tri, sink, stats);
         } else {
             self.one([va, vb, vc], tri, sink, stats);
         }
+    }
+
+    /// Clips a triangle that crosses the clip volume (`or`: its vertices' masks ORed) and
+    /// sets up the pieces. Out of line: the clipper's vertex arrays made
+    /// [`Self::triangle`]'s stack frame 11 KB, probed page by page for every triangle.
+    #[cold]
+    #[inline(never)]
+    fn clipped<K: TriangleSink>(
+        &self,
+        v: [&ClipVertex; 3],
+        or: ClipMask,
+        tri: &mut SetupTriangle,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        stats.tris_clipped += 1;
+        clip_triangle(
+            v,
+            or,
+            self.ucp,
+            self.viewport,
+            self.nvary,
+            self.flat,
+            self.back,
+            |p, q, r| self.one([p, q, r], tri, sink, stats),
+        );
     }
 }
 

@@ -54,9 +54,25 @@ pub fn raster_triangle(
         Isa::Avx2 => unsafe { tri_avx2(t, b, plan, units, fb, stats) },
         #[cfg(target_arch = "x86_64")]
         Isa::Fma => unsafe { tri_fma(t, b, plan, units, fb, stats) },
-        _ => raster_rows::<Unfused>(t, b, plan, units, fb, stats),
+        _ => tri_base(t, b, plan, units, fb, stats),
     }
     true
+}
+
+/// The row walk without SIMD: out of line, so that [`raster_triangle`], which every
+/// triangle passes through, keeps a small stack frame (inlined, its 8 KB frame was
+/// probed page by page on every call: a quarter of `raster_triangle`'s samples in a
+/// frame of 200k small triangles).
+#[inline(never)]
+fn tri_base(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    raster_rows::<Unfused>(t, b, plan, units, fb, stats)
 }
 
 /// The untextured span shader of [`tri_avx2_fma`] compiled for CPUs with AVX-512 (F, BW,
