@@ -283,9 +283,13 @@ fn setup_inner(
     }
     let (lo, hi) = (snap4(lo), snap4(hi));
     let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
-    let (x0, y0) = (lo[0] as i64, lo[1] as i64);
-    let (x1, y1) = (lo[2] as i64, lo[3] as i64);
-    let (x2, y2) = (hi[0] as i64, hi[1] as i64);
+    // One `cvttss2si` each: `as` adds the saturation of NaN and out-of-range values (five
+    // instructions a value), which cannot occur here.
+    // SAFETY: every coordinate passed `|c| < 2^32` above (NaN fails it), so the snapped
+    // value is finite and below 2^41 in magnitude: an i64 holds it exactly.
+    let [x0, y0, x1, y1] = lo.map(|c| unsafe { c.to_int_unchecked::<i64>() });
+    // SAFETY: as above.
+    let [x2, y2] = [hi[0], hi[1]].map(|c| unsafe { c.to_int_unchecked::<i64>() });
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     if area == 0 {
         return SetupResult::Degenerate;
@@ -331,16 +335,22 @@ fn tiny_box_covered(edges: &[Edge; 3], bbox: [i64; 4]) -> bool {
     if bbox[2] - bbox[0] > 1 || bbox[3] - bbox[1] > 1 {
         return true;
     }
-    // The edge values at the box's first centre, then one step right and one step down.
-    let e = edges.map(|e| e.c - e.a * ONE * bbox[0] + e.b * ONE * bbox[1]);
-    let (dx, dy) = (edges.map(|e| e.a * ONE), edges.map(|e| e.b * ONE));
-    let inside = |k: usize, sx: i64, sy: i64| e[k] - sx * dx[k] + sy * dy[k] > 0;
-    let (nx, ny) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
-    let mut any = false;
-    for (sx, sy) in [(0, 0), (nx, 0), (0, ny), (nx, ny)] {
-        any |= inside(0, sx, sy) & inside(1, sx, sy) & inside(2, sx, sy);
+    // The box's extent past its first centre is 0 or 1 pixel per axis: as an all-ones or
+    // zero mask, a step to the second column or row is an AND instead of a multiply.
+    let (mx, my) = (-(bbox[2] - bbox[0]), -(bbox[3] - bbox[1]));
+    // Whether each of the four centres is inside every edge so far.
+    let mut inside = [true; 4];
+    for e in edges {
+        // The edge's value at the first centre, then one step right and one step down.
+        let v00 = e.c - e.a * ONE * bbox[0] + e.b * ONE * bbox[1];
+        let v10 = v00 - ((e.a * ONE) & mx);
+        let dy = (e.b * ONE) & my;
+        let (v01, v11) = (v00 + dy, v10 + dy);
+        for (k, v) in [v00, v10, v01, v11].into_iter().enumerate() {
+            inside[k] &= v > 0;
+        }
     }
-    any
+    inside[0] | inside[1] | inside[2] | inside[3]
 }
 
 /// A triangle's constants for its plane equations (Mesa's order, lp_state_setup.c; f32,
