@@ -174,15 +174,7 @@ unsafe fn fetch_from(
     // conversions are the same as `read_component`'s.
     unsafe {
         match (arr.ty, n) {
-            (DataType::Float, 4) => Some(base.cast::<[f32; 4]>().read_unaligned()),
-            (DataType::Float, 3) => {
-                let [x, y, z] = base.cast::<[f32; 3]>().read_unaligned();
-                Some([x, y, z, fill[3]])
-            }
-            (DataType::Float, 2) => {
-                let [x, y] = base.cast::<[f32; 2]>().read_unaligned();
-                Some([x, y, fill[2], fill[3]])
-            }
+            (DataType::Float, 2..=4) => Some(floats(base, n, fill)),
             (DataType::UByte, 4) if normalized => {
                 let b = base.cast::<[u8; 4]>().read_unaligned();
                 Some(b.map(|c| c as f32 * (1.0f32 / 255.0)))
@@ -193,6 +185,29 @@ unsafe fn fetch_from(
                 Some([r as f32 * s, g as f32 * s, b as f32 * s, fill[3]])
             }
             _ => Some(convert_other(base, arr.ty, n, normalized, fill)),
+        }
+    }
+}
+
+/// The `n` (2 to 4) floats at `p` over `fill`, read as one vector: the float layouts of
+/// [`fetch_from`] and [`FloatPositions::get`].
+///
+/// # Safety
+/// `p` must be readable for `n` floats.
+#[inline(always)]
+unsafe fn floats(p: *const u8, n: usize, fill: [f32; 4]) -> [f32; 4] {
+    // SAFETY (all arms): forwarded from the caller.
+    unsafe {
+        match n {
+            4 => p.cast::<[f32; 4]>().read_unaligned(),
+            3 => {
+                let [x, y, z] = p.cast::<[f32; 3]>().read_unaligned();
+                [x, y, z, fill[3]]
+            }
+            _ => {
+                let [x, y] = p.cast::<[f32; 2]>().read_unaligned();
+                [x, y, fill[2], fill[3]]
+            }
         }
     }
 }
@@ -264,18 +279,11 @@ impl FloatPositions<'_> {
         // `stride` bytes from `start` are inside the store, or its caller promised that
         // client memory holds them.
         unsafe {
-            let p = self.start.add(i * self.stride);
-            match self.size {
-                4 => p.cast::<[f32; 4]>().read_unaligned(),
-                3 => {
-                    let [x, y, z] = p.cast::<[f32; 3]>().read_unaligned();
-                    [x, y, z, 1.0]
-                }
-                _ => {
-                    let [x, y] = p.cast::<[f32; 2]>().read_unaligned();
-                    [x, y, 0.0, 1.0]
-                }
-            }
+            floats(
+                self.start.add(i * self.stride),
+                self.size,
+                [0.0, 0.0, 0.0, 1.0],
+            )
         }
     }
 }
