@@ -6,7 +6,8 @@ use std::sync::OnceLock;
 /// The code variant the rasterizer runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Isa {
-    /// AVX2 with fused multiply-add (llvmpipe fuses `fmuladd` on such CPUs).
+    /// AVX2 with fused multiply-add (llvmpipe fuses `fmuladd` on such CPUs). Both AVX2
+    /// variants also require POPCNT, BMI1, BMI2 and LZCNT (every AVX2 CPU has them).
     Avx2Fma,
     /// AVX2 without fusing (FMA absent or disabled with `SOFTGL_FMA=0`).
     Avx2,
@@ -65,7 +66,13 @@ pub fn isa() -> Isa {
         let no_fma = std::env::var("SOFTGL_FMA").is_ok_and(|v| v == "0");
         #[cfg(target_arch = "x86_64")]
         {
-            let avx2 = std::arch::is_x86_feature_detected!("avx2");
+            // The AVX2 variants are also compiled for the bit instructions every AVX2 CPU
+            // has (POPCNT, BMI1, BMI2, LZCNT): the hot loops count lanes with `count_ones`.
+            let avx2 = std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("popcnt")
+                && std::arch::is_x86_feature_detected!("bmi1")
+                && std::arch::is_x86_feature_detected!("bmi2")
+                && std::arch::is_x86_feature_detected!("lzcnt");
             let fma = std::arch::is_x86_feature_detected!("fma") && !no_fma;
             match (avx2, fma) {
                 (true, true) => Isa::Avx2Fma,

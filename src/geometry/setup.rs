@@ -205,9 +205,9 @@ pub fn setup_triangle_shaded(
 /// instructions instead of SSE2's register copies.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and the bit instructions of `cpu::isa`'s AVX2 variants.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
 unsafe fn setup_triangle_shaded_avx2(
     v: [&ClipVertex; 3],
     nvary: usize,
@@ -254,7 +254,8 @@ impl SetupVariant {
     ) -> SetupResult {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
-            // SAFETY: `avx2` is only set by `detect`, on a CPU with AVX2.
+            // SAFETY: `avx2` is only set by `detect`, from an AVX2 `isa()` (AVX2 and the bit
+            // instructions).
             return unsafe { setup_triangle_shaded_avx2(v, nvary, cull, back, flat, fill) };
         }
         setup_triangle_shaded(v, nvary, cull, back, flat, fill)

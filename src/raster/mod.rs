@@ -81,7 +81,7 @@ fn tri_base(
 /// compiled the same way, measured slower and keeps the AVX2 copy). The arithmetic that
 /// reaches the pixels is the same instructions (no contraction), so the bytes are the same.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq")]
+#[target_feature(enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt")]
 unsafe fn tri_avx512(
     t: &SetupTriangle,
     b: [i64; 4],
@@ -95,7 +95,7 @@ unsafe fn tri_avx512(
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
+#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]
 unsafe fn tri_avx2_fma(
     t: &SetupTriangle,
     b: [i64; 4],
@@ -113,7 +113,7 @@ unsafe fn tri_avx2_fma(
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
 unsafe fn tri_avx2(
     t: &SetupTriangle,
     b: [i64; 4],

@@ -24,7 +24,8 @@ pub mod chunk;
 
 use super::{Level, Wrap};
 
-/// Whether this CPU can run the 8-wide sampler (decided once).
+/// Whether this CPU can run the 8-wide sampler (decided once): an AVX2 [`crate::cpu::isa`],
+/// which also has POPCNT, BMI1, BMI2 and LZCNT.
 pub fn available() -> bool {
     #[cfg(target_arch = "x86_64")]
     {

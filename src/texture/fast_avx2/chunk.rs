@@ -240,9 +240,9 @@ impl<'a> Sampling<'a> {
     /// chunk of its key alone computes); `None` when a row declines.
     ///
     /// # Safety
-    /// AVX2 context on a CPU that has it.
+    /// AVX2 context on a CPU that has what [`super::available`] requires.
     #[inline(never)]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
     unsafe fn mixed(
         &self,
         key: __m256i,
@@ -372,9 +372,9 @@ pub type ArrayChunk = ([[f32; LANES]; 2], [[f32; LANES]; 2], [[bool; LANES]; 2])
 /// for the tests against [`fast::quad_u8`].
 ///
 /// # Safety
-/// The CPU has AVX2.
+/// The CPU has what [`super::available`] requires (AVX2 and the bit instructions).
 #[cfg(test)]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
 pub unsafe fn texels_seq(u: &UnitPlan<'_>, chunks: &[ArrayChunk]) -> Vec<[[[u8; 4]; LANES]; 2]> {
     let mut outs = Vec::with_capacity(chunks.len());
     // SAFETY: AVX2 (this function's feature); the arrays are 32 bytes each.
