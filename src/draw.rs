@@ -482,8 +482,18 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         let StreamState { cache, slot, tri } = state;
         let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
         let (verts, stage) = (self.verts, self.stage);
+        // Without indices the vertices are read in order: transform them ahead in runs of
+        // `BLOCK` ([`VertexStage::run_block`]), `filled` being where the next run starts.
+        let block = self.indices.is_none() && stage.block_ok();
+        let (mut filled, end) = (first, first + n);
         assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {
             let k = [ix(first + a), ix(first + b), ix(first + c)];
+            let top = k[0].max(k[1]).max(k[2]) + 1;
+            if block && top > filled {
+                let from = filled.max(k[0].min(k[1]).min(k[2]));
+                let to = (from + BLOCK).max(top).min(end);
+                filled = cache.fill(from, to, |i, out| stage.run_block(verts, i, slot, out));
+            }
             let [va, vb, vc] = cache.triangle(k, |i, out| {
                 verts.vertex_into(i, slot);
                 stage.run_into(&slot.v, out)
@@ -494,6 +504,9 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         cache.transformed = 0;
     }
 }
+
+/// Vertices a streamed draw without indices transforms in one run ([`Streamer::stream`]).
+const BLOCK: usize = 32;
 
 /// A draw of GL_TRIANGLES is split over two threads when the mean pixel box of its first
 /// section's triangles is at most this: set-up then costs more than drawing.

@@ -1,6 +1,7 @@
 //! The fixed-function vertex stage: matrix stacks and the transform into clip space.
 //! (Lighting, texgen and fog arrive with later issues behind the same interface.)
 
+pub mod block;
 pub mod eval;
 pub mod fog;
 pub mod gallivm_math;

@@ -175,6 +175,32 @@ impl VertexCache {
         }
     }
 
+    /// Transforms vertices `start..end` into their entries ahead of the triangles that
+    /// read them: `run(i, out)` fills the entries of vertices `i..i + out.len()` (a run of
+    /// consecutive entries; the range is split where the entries wrap). An entry it
+    /// overwrites is transformed again when a triangle reads its old vertex. Fills at most
+    /// as many vertices as the cache holds; returns the end of what it filled.
+    pub fn fill(
+        &mut self,
+        start: usize,
+        end: usize,
+        mut run: impl FnMut(usize, &mut [ClipVertex]),
+    ) -> usize {
+        let end = end.min(start + self.mask + 1);
+        let mut i = start;
+        while i < end {
+            let s = i & self.mask;
+            let len = (end - i).min(self.mask + 1 - s);
+            run(i, &mut self.slots[s..s + len]);
+            for (j, tag) in self.tags[s..s + len].iter_mut().enumerate() {
+                *tag = i + j;
+            }
+            self.transformed += len as u64;
+            i += len;
+        }
+        end
+    }
+
     /// The transformed vertices `idx` of one triangle; `run(i, out)` transforms vertex
     /// `i` into `out` on a miss.
     #[inline]
@@ -240,5 +266,41 @@ mod tests {
         assert_eq!(t.map(|v| v.win[0]), [8.0, 2.0, 3.0]);
         // 3 (the spill caches nothing) + 3 (0, 2, 3) + 1 (8 evicts 0).
         assert_eq!(c.transformed, 7);
+    }
+
+    #[test]
+    fn fill_transforms_runs_ahead_and_a_vertex_it_evicts_comes_back() {
+        let mut c = VertexCache::for_draw(8);
+        let mut runs = Vec::new();
+        let fill = |c: &mut VertexCache, a: usize, b: usize, runs: &mut Vec<(usize, usize)>| {
+            c.fill(a, b, |i, out: &mut [ClipVertex]| {
+                runs.push((i, out.len()));
+                for (j, o) in out.iter_mut().enumerate() {
+                    o.win[0] = (i + j) as f32;
+                }
+            })
+        };
+        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
+        assert_eq!(fill(&mut c, 0, 3, &mut runs), 3);
+        // A fan around vertex 0: its first triangles read what the fill wrote.
+        let t = c.triangle([0, 1, 2], run);
+        assert_eq!(t.map(|v| v.win[0]), [0.0, 1.0, 2.0]);
+        assert_eq!(c.transformed, 3);
+        // 6..12 wraps around the 8 entries: two runs; 8 evicts 0, 9 evicts 1 …
+        assert_eq!(fill(&mut c, 6, 12, &mut runs), 12);
+        assert_eq!(runs, [(0, 3), (6, 2), (8, 4)]);
+        assert_eq!(c.transformed, 9);
+        let t = c.triangle([0, 10, 11], run);
+        assert_eq!(t.map(|v| v.win[0]), [0.0, 10.0, 11.0]);
+        // Only 0 came back (it evicted 8).
+        assert_eq!(c.transformed, 10);
+        let t = c.triangle([6, 7, 9], run);
+        assert_eq!(t.map(|v| v.win[0]), [6.0, 7.0, 9.0]);
+        assert_eq!(c.transformed, 10);
+        // No more than the cache holds at once.
+        runs.clear();
+        assert_eq!(fill(&mut c, 20, 40, &mut runs), 28);
+        assert_eq!(runs, [(20, 4), (24, 4)]);
+        assert_eq!(c.transformed, 18);
     }
 }

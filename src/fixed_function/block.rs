@@ -1,0 +1,252 @@
+//! The vertex stage over runs of consecutive vertices, for a plain stage (no lighting,
+//! fog, texture coordinate generation, point attenuation or user clip planes): position,
+//! clip mask and window position in SSE registers, one vertex after another in a loop
+//! whose iterations do not wait for each other. It writes exactly what
+//! [`VertexStage::run_into`] writes (same operations in the same order); per vertex, that
+//! function's dependency chain (transform, divide, viewport) was most of its cost when it
+//! ran vertex by vertex from the post-transform cache.
+
+use super::transform::VertexStage;
+use crate::geometry::source::{VertexSlot, VertexSource};
+use crate::geometry::{ClipVertex, VARY_SPEC, VARY_TEX};
+
+impl VertexStage {
+    /// Whether [`VertexStage::run_block`] may run this stage: nothing beyond the position,
+    /// the colours and the texture coordinates through their matrices, and a CPU with
+    /// AVX2 and FMA.
+    pub fn block_ok(&self) -> bool {
+        self.light.is_none()
+            && self.fog.is_none()
+            && self.point_atten.is_none()
+            && self.ucp_enabled == 0
+            && self.texgen[..self.n_tex].iter().all(Option::is_none)
+            && matches!(crate::cpu::isa(), crate::cpu::Isa::Avx2Fma)
+    }
+
+    /// Runs vertices `first..first + out.len()` of `verts` through the stage into `out`,
+    /// reading each through `slot` ([`VertexSource::vertex_into`]): what
+    /// [`VertexStage::run_into`] writes for each. The caller has checked
+    /// [`VertexStage::block_ok`].
+    pub fn run_block<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        slot: &mut VertexSlot,
+        out: &mut [ClipVertex],
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: `block_ok` found AVX2 and FMA on this CPU (`cpu::isa`).
+            unsafe {
+                if self.fma {
+                    self.run_block_x86::<S, true>(verts, first, slot, out)
+                } else {
+                    self.run_block_x86::<S, false>(verts, first, slot, out)
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        for (j, o) in out.iter_mut().enumerate() {
+            verts.vertex_into(first + j, slot);
+            self.run_into(&slot.v, o);
+        }
+    }
+
+    /// [`VertexStage::run_block`] in SSE registers; `FMA` is `self.fma`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn run_block_x86<S: VertexSource + ?Sized, const FMA: bool>(
+        &self,
+        verts: &S,
+        first: usize,
+        slot: &mut VertexSlot,
+        out: &mut [ClipVertex],
+    ) {
+        use std::arch::x86_64::*;
+        // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
+        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4).
+        const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
+        const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
+        let m = &self.mvp.0;
+        let vp = &self.viewport;
+        let tex = &self.tex_units[..self.n_tex];
+        // SAFETY (whole body): SSE/AVX2/FMA context (this function's features); the loads
+        // and stores are of 4-float arrays.
+        unsafe {
+            let col = [0, 4, 8, 12].map(|c| _mm_loadu_ps(m[c..c + 4].as_ptr()));
+            let scale = _mm_setr_ps(vp.scale[0], vp.scale[1], vp.scale[2], 0.0);
+            let trans = _mm_setr_ps(vp.translate[0], vp.translate[1], vp.translate[2], 0.0);
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            // `clamp_color`: `v.min(1.0).max(0.0)`, NaN to 1 (`minps` gives its second
+            // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
+            // values), as the scalar code is compiled (the test below checks both).
+            let clamp = |c: __m128| _mm_max_ps(_mm_min_ps(c, one), zero);
+            for (j, o) in out.iter_mut().enumerate() {
+                verts.vertex_into(first + j, slot);
+                let v = &slot.v;
+                let p = _mm_loadu_ps(v.pos.as_ptr());
+                // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
+                let x = _mm_mul_ps(_mm_shuffle_ps::<0x00>(p, p), col[0]);
+                let y = _mm_mul_ps(_mm_shuffle_ps::<0x55>(p, p), col[1]);
+                let z = _mm_mul_ps(_mm_shuffle_ps::<0xAA>(p, p), col[2]);
+                let w = _mm_mul_ps(_mm_shuffle_ps::<0xFF>(p, p), col[3]);
+                let clip = _mm_add_ps(_mm_add_ps(_mm_add_ps(x, y), z), w);
+                let cw = _mm_shuffle_ps::<0xFF>(clip, clip);
+                let above = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NLE_UQ>(clip, cw)) & 7;
+                let sum = _mm_add_ps(clip, cw);
+                let below = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NGE_UQ>(sum, zero)) & 7;
+                // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
+                let inv = _mm_div_ps(one, cw);
+                let q = _mm_mul_ps(clip, inv);
+                let win = if FMA {
+                    _mm_fmadd_ps(q, scale, trans)
+                } else {
+                    _mm_add_ps(_mm_mul_ps(q, scale), trans)
+                };
+                let win = _mm_blend_ps::<0b1000>(win, inv);
+                _mm_storeu_ps(o.clip.as_mut_ptr(), clip);
+                _mm_storeu_ps(o.win.as_mut_ptr(), win);
+                o.mask = (ABOVE[above as usize] | BELOW[below as usize]) as _;
+                let c = clamp(_mm_loadu_ps(v.color.as_ptr()));
+                _mm_storeu_ps(o.vary.as_mut_ptr(), c);
+                if self.color_sum {
+                    let s = clamp(_mm_loadu_ps(v.secondary.as_ptr()));
+                    _mm_storeu_ps(o.vary[VARY_SPEC..].as_mut_ptr(), s);
+                }
+                for (k, (unit, tm)) in tex.iter().enumerate() {
+                    let tc = v.texcoord[*unit];
+                    let tc = match tm {
+                        Some(tm) => tm.transform(tc),
+                        None => tc,
+                    };
+                    o.vary[VARY_TEX + 4 * k..VARY_TEX + 4 * k + 4].copy_from_slice(&tc);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CurrentAttribs;
+    use crate::fixed_function::matrix::{Mat4, IDENTITY};
+    use crate::geometry::fetch::VertexIn;
+    use crate::geometry::Viewport;
+
+    /// Values that exercise the rounding, the clip tests and the colour clamp: ordinary
+    /// coordinates, zeros of both signs, values at and beyond ±w, huge values, infinities
+    /// and NaN.
+    fn value(r: u32) -> f32 {
+        const SPECIAL: [f32; 12] = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1.0000001,
+            -1.0000001,
+            1e30,
+            -1e30,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+        ];
+        if r.is_multiple_of(4) {
+            SPECIAL[(r / 4) as usize % SPECIAL.len()]
+        } else {
+            f32::from_bits((r >> 2 & 0x00ff_ffff) | 0x3e00_0000)
+                * if r & 2 == 0 { 1.0 } else { -3.0 }
+        }
+    }
+
+    /// Every field `run_block` writes equals what `run_into` writes, bit for bit, for
+    /// random and special positions and colours, fused and not, with and without the
+    /// secondary colour and texture units (one through a matrix), and runs that start
+    /// anywhere in the source.
+    #[test]
+    fn run_block_writes_what_run_into_writes() {
+        let vp = Viewport::new([3, -2, 333, 277], [0.25, 0.9], 300);
+        if !VertexStage::new(IDENTITY, IDENTITY, vp, false).block_ok() {
+            return;
+        }
+        let mut rng = crate::test_rng::xorshift32(0x5eed_1234);
+        let mut next = || value(rng());
+        let cur = CurrentAttribs::default();
+        let verts: Vec<VertexIn> = (0..997)
+            .map(|_| {
+                let mut v = VertexIn::with_current([next(), next(), next(), next()], &cur);
+                v.color = [next(), next(), next(), next()];
+                v.secondary = [next(), next(), next(), next()];
+                v.texcoord[0] = [next(), next(), next(), next()];
+                v.texcoord[2] = [next(), next(), next(), next()];
+                v
+            })
+            .collect();
+        let mut rng2 = crate::test_rng::xorshift32(0xabcd_0123);
+        let mut mat = || {
+            let mut m = [0f32; 16];
+            for (i, e) in m.iter_mut().enumerate() {
+                let r = rng2();
+                *e = if r.is_multiple_of(3) {
+                    (i % 5 == 0) as u32 as f32
+                } else {
+                    f32::from_bits((r >> 2 & 0x007f_ffff) | 0x3f00_0000) - 1.0
+                };
+            }
+            Mat4(m)
+        };
+        for case in 0..16 {
+            let fma = case & 1 == 1;
+            let mut stage = VertexStage::new(mat(), mat(), vp, fma);
+            stage.color_sum = case & 2 == 2;
+            if case & 4 == 4 {
+                stage.add_texture_unit(0, &IDENTITY);
+                stage.add_texture_unit(2, &mat());
+            }
+            assert!(stage.block_ok());
+            let mut slot = verts.new_slot();
+            let mut want = vec![ClipVertex::default(); verts.len()];
+            for (i, o) in want.iter_mut().enumerate() {
+                verts.vertex_into(i, &mut slot);
+                stage.run_into(&slot.v, o);
+            }
+            let first = case * 7;
+            let mut got = vec![ClipVertex::default(); verts.len() - first];
+            let mut slot = verts.new_slot();
+            stage.run_block(&verts[..], first, &mut slot, &mut got);
+            // NaN compares as one value: Rust leaves the sign and payload of a NaN that an
+            // operation produces unspecified (the compiler may swap the operands of an
+            // addition), and nothing downstream reads them.
+            let bits = |v: &ClipVertex| {
+                let mut b: Vec<u32> = v
+                    .clip
+                    .iter()
+                    .chain(&v.win)
+                    .chain(&v.vary)
+                    .map(|f| {
+                        if f.is_nan() {
+                            f32::NAN.to_bits()
+                        } else {
+                            f.to_bits()
+                        }
+                    })
+                    .collect();
+                b.push(v.mask as u32);
+                b
+            };
+            for (j, g) in got.iter().enumerate() {
+                let w = &want[first + j];
+                assert_eq!(
+                    bits(g),
+                    bits(w),
+                    "case {case}, vertex {}: {g:?} instead of {w:?}",
+                    first + j
+                );
+            }
+        }
+    }
+}
