@@ -482,17 +482,30 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         let StreamState { cache, slot, tri } = state;
         let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
         let (verts, stage) = (self.verts, self.stage);
-        // Without indices the vertices are read in order: transform them ahead in runs of
-        // `BLOCK` ([`VertexStage::run_block`]), `filled` being where the next run starts.
-        let block = self.indices.is_none() && stage.block_ok();
-        let (mut filled, end) = (first, first + n);
+        // Vertices read in order are transformed ahead in runs of `BLOCK`
+        // ([`VertexStage::run_block`]), `filled` being where the next run starts. Without
+        // indices that is every vertex. With indices, a triangle whose highest vertex is at
+        // most `BLOCK` past `filled` continues the run (a grid's rows, indices in the order
+        // of first use); one further ahead only moves `filled` past itself, its vertices
+        // being transformed one by one on a miss, so a jump starts no run of vertices the
+        // draw may never read.
+        let block = stage.block_ok();
+        let indexed = self.indices.is_some();
+        let (mut filled, end) = match self.indices {
+            Some(_) => (0, verts.count()),
+            None => (first, first + n),
+        };
         assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {
             let k = [ix(first + a), ix(first + b), ix(first + c)];
             let top = k[0].max(k[1]).max(k[2]) + 1;
             if block && top > filled {
-                let from = filled.max(k[0].min(k[1]).min(k[2]));
-                let to = (from + BLOCK).max(top).min(end);
-                filled = cache.fill(from, to, |i, out| stage.run_block(verts, i, slot, out));
+                if indexed && top - filled > BLOCK {
+                    filled = top;
+                } else {
+                    let from = filled.max(k[0].min(k[1]).min(k[2]));
+                    let to = (from + BLOCK).max(top).min(end);
+                    filled = cache.fill(from, to, |i, out| stage.run_block(verts, i, slot, out));
+                }
             }
             let [va, vb, vc] = cache.triangle(k, |i, out| {
                 verts.vertex_into(i, slot);
@@ -505,7 +518,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
     }
 }
 
-/// Vertices a streamed draw without indices transforms in one run ([`Streamer::stream`]).
+/// Vertices a streamed draw transforms in one run ([`Streamer::stream`]).
 const BLOCK: usize = 32;
 
 /// A draw of GL_TRIANGLES is split over two threads when the mean pixel box of its first

@@ -359,6 +359,98 @@ fn counters_show_skipped_fragment_work() {
 /// A long glBegin(GL_TRIANGLES) batch is drawn in chunks while it is specified the first
 /// time, then whole (its storage now holds it); both give exactly the image and counters
 /// of one glDrawArrays of the same vertices. GL_QUADS batches are never drawn in chunks.
+/// Clears colour and depth, runs `draw` and glFinish: the image and the counters before
+/// and after.
+fn counted_frame(
+    c: &Ctx,
+    draw: &dyn Fn(),
+) -> (Vec<u8>, softgl::stats::Stats, softgl::stats::Stats) {
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    let s0 = softgl::ffi::current_stats().unwrap();
+    draw();
+    glFinish();
+    let s1 = softgl::ffi::current_stats().unwrap();
+    (c.buf.clone(), s0, s1)
+}
+
+#[test]
+fn indexed_vertices_are_transformed_once_and_a_jump_starts_no_run() {
+    let (w, h) = (64, 64);
+    let c = Ctx::new(w, h);
+    // A 24 x 24 grid of vertices (1058 triangles) in row order, like a height field.
+    const G: usize = 24;
+    let mut pos = Vec::new();
+    let mut col = Vec::new();
+    for j in 0..G {
+        for i in 0..G {
+            let (x, y) = (i as f32 / 11.5 - 1.0, j as f32 / 11.5 - 1.0);
+            pos.extend([x * 0.97 + y * 0.05, y, 0.3 * (x * 3.0).sin() * y]);
+            col.extend([i as f32 / 23.0, j as f32 / 23.0, ((i ^ j) & 7) as f32 / 7.0]);
+        }
+    }
+    let mut idx: Vec<u32> = Vec::new();
+    for j in 0..G - 1 {
+        for i in 0..G - 1 {
+            let a = (j * G + i) as u32;
+            let (b, c, d) = (a + 1, a + G as u32, a + G as u32 + 1);
+            idx.extend([a, c, b, b, c, d]);
+        }
+    }
+    glEnable(GL_DEPTH_TEST);
+    glVertexPointer(3, GL_FLOAT, 0, pos.as_ptr().cast());
+    glColorPointer(3, GL_FLOAT, 0, col.as_ptr().cast());
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    let frame = |draw: &dyn Fn()| {
+        let (img, s0, s1) = counted_frame(&c, draw);
+        (img, s1.vertices - s0.vertices, s1.fragments - s0.fragments)
+    };
+    let indexed = frame(&|| {
+        glDrawElements(
+            GL_TRIANGLES,
+            idx.len() as i32,
+            GL_UNSIGNED_INT,
+            idx.as_ptr().cast(),
+        )
+    });
+    assert_eq!(
+        indexed.1,
+        (G * G) as u64,
+        "each grid vertex transformed once"
+    );
+    assert!(indexed.2 > 2000, "the grid covers the frame: {}", indexed.2);
+    // The same triangles, every vertex of them stored in order.
+    let flat_pos: Vec<f32> = idx
+        .iter()
+        .flat_map(|&i| pos[3 * i as usize..3 * i as usize + 3].to_vec())
+        .collect();
+    let flat_col: Vec<f32> = idx
+        .iter()
+        .flat_map(|&i| col[3 * i as usize..3 * i as usize + 3].to_vec())
+        .collect();
+    let arrays = frame(&|| {
+        glVertexPointer(3, GL_FLOAT, 0, flat_pos.as_ptr().cast());
+        glColorPointer(3, GL_FLOAT, 0, flat_col.as_ptr().cast());
+        glDrawArrays(GL_TRIANGLES, 0, idx.len() as i32);
+    });
+    assert_eq!(arrays.1, idx.len() as u64);
+    assert_eq!(arrays.2, indexed.2);
+    assert!(arrays.0 == indexed.0, "indexed and expanded draws differ");
+
+    // Two triangles 200 vertices apart: the second costs its own three vertices, not a
+    // second run ahead (the first may start one, of at most 32).
+    glVertexPointer(3, GL_FLOAT, 0, pos.as_ptr().cast());
+    glColorPointer(3, GL_FLOAT, 0, col.as_ptr().cast());
+    let two = [0u32, 1, 24, 300, 301, 324];
+    let jump = frame(&|| glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, two.as_ptr().cast()));
+    assert!(
+        (6..=3 + 32).contains(&jump.1),
+        "vertices transformed: {}",
+        jump.1
+    );
+    assert_eq!(glGetError(), GL_NO_ERROR);
+}
+
 #[test]
 fn long_triangle_batches_stream_in_chunks_with_the_same_pixels() {
     let (w, h) = (96, 80);
@@ -383,13 +475,9 @@ fn long_triangle_batches_stream_in_chunks_with_the_same_pixels() {
     }
     glEnable(GL_DEPTH_TEST);
     let frame = |draw: &dyn Fn()| {
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        let s0 = softgl::ffi::current_stats().unwrap();
-        draw();
-        glFinish();
-        let s1 = softgl::ffi::current_stats().unwrap();
+        let (img, s0, s1) = counted_frame(&c, draw);
         (
-            c.buf.clone(),
+            img,
             s1.draws - s0.draws,
             s1.tris_rasterized - s0.tris_rasterized,
             s1.fragments - s0.fragments,
