@@ -491,9 +491,10 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         // draw may never read.
         let block = stage.block_ok();
         let indexed = self.indices.is_some();
-        let (mut filled, end) = match self.indices {
-            Some(_) => (0, verts.count()),
-            None => (first, first + n),
+        let (mut filled, end) = if indexed {
+            (0, verts.count())
+        } else {
+            (first, first + n)
         };
         assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {
             let k = [ix(first + a), ix(first + b), ix(first + c)];

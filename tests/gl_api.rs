@@ -420,14 +420,12 @@ fn indexed_vertices_are_transformed_once_and_a_jump_starts_no_run() {
     );
     assert!(indexed.2 > 2000, "the grid covers the frame: {}", indexed.2);
     // The same triangles, every vertex of them stored in order.
-    let flat_pos: Vec<f32> = idx
-        .iter()
-        .flat_map(|&i| pos[3 * i as usize..3 * i as usize + 3].to_vec())
-        .collect();
-    let flat_col: Vec<f32> = idx
-        .iter()
-        .flat_map(|&i| col[3 * i as usize..3 * i as usize + 3].to_vec())
-        .collect();
+    let expand = |attr: &[f32]| -> Vec<f32> {
+        idx.iter()
+            .flat_map(|&i| attr[3 * i as usize..3 * i as usize + 3].to_vec())
+            .collect()
+    };
+    let (flat_pos, flat_col) = (expand(&pos), expand(&col));
     let arrays = frame(&|| {
         glVertexPointer(3, GL_FLOAT, 0, flat_pos.as_ptr().cast());
         glColorPointer(3, GL_FLOAT, 0, flat_col.as_ptr().cast());
