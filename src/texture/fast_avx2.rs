@@ -186,21 +186,23 @@ unsafe fn pack(v: Wide) -> __m256i {
     _mm256_or_si256(v.0, _mm256_slli_epi16::<8>(v.1))
 }
 
-/// A per-pixel weight (`w` in 0..=256 per 32-bit lane) in both 16-bit fields of its lane.
+/// A per-pixel weight (`w` in 0..=255 per 32-bit lane) as [`lerp16`] takes it: `w · 128`
+/// in both 16-bit fields of its lane.
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 unsafe fn weight(w: __m256i) -> __m256i {
-    _mm256_or_si256(w, _mm256_slli_epi32::<16>(w))
+    _mm256_or_si256(_mm256_slli_epi32::<7>(w), _mm256_slli_epi32::<23>(w))
 }
 
 /// llvmpipe's 8-bit lerp `(a·(256 − w) + b·w + 128) >> 8` on 16-bit fields holding
-/// 0..=255, `w` in 0..=256 per field, computed as `((a << 8) + (b − a)·w + 128) >> 8` in
-/// wrapping 16-bit arithmetic: both are the same polynomial mod 2^16, and its true value
-/// lies in 0..=65408, so the wrapped sum is that value (one multiply instead of two;
-/// `lerp16_matches_lerp8` checks every input). A function, not a closure: a closure in an
+/// 0..=255, `w` in 0..=255 per field, given as `w7 = w · 128` ([`weight`]): it equals
+/// `a + ((b − a)·w + 128) >> 8`, and `vpmulhrsw` computes `((b − a)·w7 + 2^14) >> 15`,
+/// which is that rounded quotient (`(b − a)` fits 9 signed bits and `w7` below 2^15, so
+/// neither overflows; `lerp16_matches_lerp8` checks every input). Three operations where
+/// the shift-multiply-round form takes six. A function, not a closure: a closure in an
 /// `#[inline(always)]` function without `target_feature` is compiled without AVX2 and
 /// called out of line (measured: 4x the frame time of tex_trilinear_plane).
 ///
@@ -208,15 +210,8 @@ unsafe fn weight(w: __m256i) -> __m256i {
 /// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn lerp16(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
-    let v = _mm256_add_epi16(
-        _mm256_add_epi16(
-            _mm256_slli_epi16::<8>(a),
-            _mm256_mullo_epi16(_mm256_sub_epi16(b, a), w),
-        ),
-        _mm256_set1_epi16(128),
-    );
-    _mm256_srli_epi16::<8>(v)
+unsafe fn lerp16(a: __m256i, b: __m256i, w7: __m256i) -> __m256i {
+    _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), w7))
 }
 
 /// [`lerp16`] of both halves of [`Wide`] pixels with weights from [`weight`].
@@ -471,7 +466,7 @@ mod tests {
     use crate::texture::sample::lerp8 as lerp8_ref;
 
     /// The vector lerp, through [`widen`], [`weight`], [`lerp_wide`] and [`pack`], on every
-    /// `a`, `b` in 0..=255 and `w` in 0..=256 (each triple reaches some byte: `a` runs
+    /// `a`, `b` in 0..=255 and `w` in 0..=255 (each triple reaches some byte: `a` runs
     /// over all values, `b` over all residues through the byte offset), against the scalar
     /// lerp.
     #[test]
@@ -494,8 +489,8 @@ mod tests {
             }
             out
         }
-        for w0 in 0..=256i32 {
-            let w: [i32; 8] = std::array::from_fn(|i| (w0 + i as i32 * 37) % 257);
+        for w0 in 0..=255i32 {
+            let w: [i32; 8] = std::array::from_fn(|i| (w0 + i as i32 * 37) % 256);
             for a0 in 0..=255u32 {
                 for b0 in (0..=255u32).step_by(8) {
                     let a: [u8; 32] = std::array::from_fn(|i| (a0 + i as u32 * 11) as u8);
