@@ -187,7 +187,11 @@ unsafe fn pack(v: Wide) -> __m256i {
 }
 
 /// A per-pixel weight (`w` in 0..=255 per 32-bit lane) as [`lerp16`] takes it: `w · 128`
-/// in both 16-bit fields of its lane.
+/// in both 16-bit fields of its lane. Every weight is below 256: an axis weight is
+/// `fx & 255`, and a mip blend weight is `trunc(fpart · 256)` where `fpart = lod −
+/// floor(lod)` of a positive LOD, which that subtraction gives exactly, so below 1. (A
+/// magnified lane's `fpart` may round to 1.0, but it samples one level, whose row ignores
+/// the mip weight; any lane would only get a wrong value, never leave its bounds.)
 ///
 /// # Safety
 /// Must be called from a function compiled with AVX2.
