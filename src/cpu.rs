@@ -22,6 +22,12 @@ impl Isa {
     pub fn fused(self) -> bool {
         matches!(self, Isa::Avx2Fma | Isa::Fma)
     }
+
+    /// Whether this is an AVX2 variant: the CPU has AVX2, POPCNT, BMI1, BMI2 and LZCNT,
+    /// so code compiled for them may run.
+    pub fn avx2(self) -> bool {
+        matches!(self, Isa::Avx2Fma | Isa::Avx2)
+    }
 }
 
 /// How many threads rasterize large draws: `SOFTGL_THREADS` (1 turns threading off), else

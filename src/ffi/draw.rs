@@ -119,10 +119,7 @@ fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult
 /// indices, about 0.37 ms of scalar compares became 0.06 ms.)
 fn min_max(idx: &[u32]) -> Option<(u32, u32)> {
     #[cfg(target_arch = "x86_64")]
-    if matches!(
-        crate::cpu::isa(),
-        crate::cpu::Isa::Avx2Fma | crate::cpu::Isa::Avx2
-    ) {
+    if crate::cpu::isa().avx2() {
         // SAFETY: the AVX2 variants are only chosen on a CPU that has AVX2.
         return unsafe { min_max_avx2(idx) };
     }

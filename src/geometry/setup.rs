@@ -229,9 +229,8 @@ pub struct SetupVariant {
 impl SetupVariant {
     /// The fastest copy this CPU can run.
     pub fn detect() -> Self {
-        use crate::cpu::{isa, Isa};
         SetupVariant {
-            avx2: matches!(isa(), Isa::Avx2Fma | Isa::Avx2),
+            avx2: crate::cpu::isa().avx2(),
         }
     }
 

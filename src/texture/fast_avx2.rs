@@ -27,17 +27,7 @@ use super::{Level, Wrap};
 /// Whether this CPU can run the 8-wide sampler (decided once): an AVX2 [`crate::cpu::isa`],
 /// which also has POPCNT, BMI1, BMI2 and LZCNT.
 pub fn available() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        matches!(
-            crate::cpu::isa(),
-            crate::cpu::Isa::Avx2Fma | crate::cpu::Isa::Avx2
-        )
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
+    crate::cpu::isa().avx2()
 }
 
 /// Whether the vector sampler handles a wrap mode on an axis: CLAMP_TO_EDGE, or REPEAT
