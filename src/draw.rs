@@ -39,6 +39,28 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
 ) {
+    draw_inner(ctx, mode, verts, indices, materials, false)
+}
+
+/// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
+/// specified ([`Context::stream_immediate`]): the chunk's last batch of triangles may be
+/// left drawing on the pool ([`Context::settle_draws`]) while the program sends the next
+/// chunk's vertices.
+pub fn draw_chunk<S: VertexSource + ?Sized>(ctx: &mut Context, mode: Primitive, verts: &S) {
+    draw_inner(ctx, mode, verts, None, None, true)
+}
+
+/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it.
+fn draw_inner<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    detach: bool,
+) {
+    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
+    ctx.settle_draws();
     crate::pixels::cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
     let n = indices.map_or(verts.count(), |i| i.len());
@@ -317,9 +339,25 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
             });
         }
     }
-    rast.flush(stats);
+    let kept = if detach {
+        // SAFETY: the framebuffer goes into the returned batch below (`keep_inflight`)
+        // before anything else touches it, and `ctx.settle_draws` (run by every draw
+        // before it starts a rasterizer) hands it back once the batch is drawn; this draw
+        // settled the previous one first.
+        unsafe { rast.flush_detached(stats) }
+    } else {
+        rast.flush(stats);
+        None
+    };
+    drop(rast);
+    drop(tex_plans);
     if ctx.state.caps.get(Cap::ColorMaterial) {
         ctx.light.sync_color_material(ctx.state.current.color);
+    }
+    if let Some(f) = kept {
+        // SAFETY: `f` draws into `ctx.fb`, untouched since the rasterizer was dropped
+        // (only the colour-material sync ran), and this draw settled everything first.
+        unsafe { ctx.keep_inflight(f) };
     }
 }
 

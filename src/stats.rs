@@ -45,6 +45,9 @@ pub struct Stats {
     /// Samples that passed every fragment test, counted only while an occlusion query is
     /// active (the draw's [`crate::fragment::FragPlan::count_samples`]).
     pub samples_passed: u64,
+    /// Draws whose last batch was left drawing on the pool when the draw returned (chunks
+    /// of a long glBegin/glEnd batch: see `Rasterizer::flush_detached`).
+    pub draws_detached: u64,
 }
 
 impl Stats {
@@ -73,6 +76,7 @@ impl Stats {
         self.tris_rasterized += o.tris_rasterized;
         self.tris_offscreen += o.tris_offscreen;
         self.tris_paired += o.tris_paired;
+        self.draws_detached += o.draws_detached;
         self.add_pixels(o);
     }
 

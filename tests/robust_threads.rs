@@ -4,10 +4,13 @@
 mod robust_common;
 
 use robust_common::*;
+use softgl::ffi::arrays::*;
+use softgl::ffi::draw::*;
 use softgl::ffi::enums::*;
 use softgl::ffi::fragment::*;
 use softgl::ffi::immediate::*;
 use softgl::ffi::matrix::*;
+use softgl::ffi::osmesa::*;
 use softgl::ffi::state::*;
 
 /// Scene `k`: depth-tested, blended, perspective triangles from a seeded RNG.
@@ -67,4 +70,116 @@ fn threads_render_the_same_images_as_one_at_a_time() {
         sequential.windows(2).all(|w| w[0] != w[1]),
         "scenes should differ"
     );
+}
+
+/// With threads on, each chunk of a long glBegin(GL_TRIANGLES) batch returns while the
+/// pool still draws its last batch of triangles (`draws_detached` counts them), so that the
+/// program's next vertices are taken meanwhile. Every way out waits for that batch first:
+/// glEnd and glFinish, a GL call made (wrongly) inside glBegin/glEnd, OSMesaMakeCurrent with
+/// another buffer, and OSMesaDestroyContext without glEnd. The images are those of one
+/// glDrawArrays. (`scripts/sanitize.sh` runs this test under valgrind.)
+#[test]
+fn chunks_left_drawing_on_the_pool_are_settled_by_every_next_call() {
+    let (w, h) = (160, 128);
+    let mut r = Rng(0x2545_F491);
+    let mut rnd = move || r.unit() as f32;
+    // 14000 triangles of about 25 pixels across (every batch is worth the pool): 42000
+    // vertices, two whole chunks and a part (the first chunk is the batch storage's first
+    // capacity, 16383 vertices).
+    let mut pos = Vec::new();
+    let mut col = Vec::new();
+    for _ in 0..14000 {
+        let (cx, cy, cz) = (rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0, rnd() * 1.8 - 0.9);
+        for _ in 0..3 {
+            pos.extend([cx + rnd() * 0.6 - 0.3, cy + rnd() * 0.6 - 0.3, cz]);
+            col.extend([rnd(), rnd(), rnd()]);
+        }
+    }
+    let setup = || {
+        glEnable(GL_DEPTH_TEST);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    };
+    let vertices = |r: std::ops::Range<usize>| {
+        for (p, k) in pos.chunks(3).zip(col.chunks(3)).take(r.end).skip(r.start) {
+            glColor3f(k[0], k[1], k[2]);
+            glVertex3f(p[0], p[1], p[2]);
+        }
+    };
+    let threads = softgl::cpu::threads() > 1;
+    let detached = || softgl::ffi::current_stats().unwrap().draws_detached;
+
+    let reference = {
+        let c = Ctx::new(w, h);
+        setup();
+        glVertexPointer(3, GL_FLOAT, 0, pos.as_ptr().cast());
+        glColorPointer(3, GL_FLOAT, 0, col.as_ptr().cast());
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glDrawArrays(GL_TRIANGLES, 0, 42000);
+        glFinish();
+        assert_eq!(detached(), 0, "a whole draw waits for its last batch");
+        c.read()
+    };
+    assert!(
+        reference.chunks(4).filter(|p| p[..3] != [0, 0, 0]).count()
+            > w as usize * h as usize * 9 / 10
+    );
+
+    // glEnd, then glFinish.
+    {
+        let c = Ctx::new(w, h);
+        setup();
+        glBegin(GL_TRIANGLES);
+        vertices(0..42000);
+        glEnd();
+        glFinish();
+        let s = softgl::ffi::current_stats().unwrap();
+        assert_eq!(s.draws, 3, "two chunks and the rest");
+        assert_eq!(
+            s.draws_detached,
+            if threads { 2 } else { 0 },
+            "one per chunk"
+        );
+        assert!(
+            c.read() == reference,
+            "chunks left on the pool: image differs"
+        );
+        assert_eq!(take_error(), GL_NO_ERROR);
+    }
+    // A call inside glBegin/glEnd right after two chunks (GL_INVALID_OPERATION, nothing
+    // else), then the rest of the batch.
+    {
+        let c = Ctx::new(w, h);
+        setup();
+        glBegin(GL_TRIANGLES);
+        vertices(0..33000);
+        glFinish();
+        vertices(33000..42000);
+        glEnd();
+        assert_eq!(take_error(), GL_INVALID_OPERATION);
+        glFinish();
+        assert_eq!(detached(), if threads { 2 } else { 0 });
+        assert!(
+            c.read() == reference,
+            "a call inside the batch: image differs"
+        );
+    }
+    // OSMesaMakeCurrent with another buffer size inside the batch, and
+    // OSMesaDestroyContext without glEnd: no chunk may outlive its framebuffer.
+    {
+        let c = Ctx::new(w, h);
+        setup();
+        glBegin(GL_TRIANGLES);
+        vertices(0..17000);
+        let mut small = vec![0u8; 64 * 48 * 4];
+        // SAFETY: `small` holds 64x48 RGBA pixels and outlives the binding (the context is
+        // destroyed at the end of this block, before `small`).
+        let ok = unsafe {
+            OSMesaMakeCurrent(c.ctx, small.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 64, 48)
+        };
+        assert_eq!(ok, GL_TRUE as u8);
+        vertices(17000..33000);
+        drop(c);
+        drop(small);
+    }
 }

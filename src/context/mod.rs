@@ -136,6 +136,10 @@ pub struct Context {
     pub eval: eval::EvalState,
     /// Render mode, feedback and selection buffers, name stack.
     pub feedback: feedback::FeedbackState,
+    /// The last batch of a streamed glBegin/glEnd chunk, still drawn by the pool
+    /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
+    /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
+    inflight: Option<crate::raster::batch::InFlight>,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -165,6 +169,13 @@ impl Default for UserTarget {
             row_length: 0,
             y_up: true,
         }
+    }
+}
+
+impl Drop for Context {
+    fn drop(&mut self) {
+        // The pool may still be drawing into `fb`.
+        self.settle_draws();
     }
 }
 
@@ -198,13 +209,39 @@ impl Context {
             accum: Default::default(),
             eval: Default::default(),
             feedback: Default::default(),
+            inflight: None,
         }
+    }
+
+    /// Waits for the draw still running on the pool, if any, and puts its framebuffer
+    /// back into `fb` (see `inflight`). Every GL call but the per-vertex ones does this
+    /// first (through [`Context::flush_pending`]), as do draws, framebuffer (re)binding
+    /// and dropping the context.
+    #[inline]
+    pub fn settle_draws(&mut self) {
+        if let Some(f) = self.inflight.take() {
+            self.fb = f.settle(&mut self.stats);
+        }
+    }
+
+    /// Hands `fb` to `f`, the last batch of a draw still drawing into it on the pool,
+    /// until [`Context::settle_draws`].
+    ///
+    /// # Safety
+    /// `f` must come from [`crate::raster::batch::Rasterizer::flush_detached`] over this
+    /// context's `fb`, with nothing touching `fb` since, and no other draw in flight (the
+    /// draw settled first).
+    pub(crate) unsafe fn keep_inflight(&mut self, mut f: crate::raster::batch::InFlight) {
+        debug_assert!(self.inflight.is_none());
+        f.hold(self.fb.take());
+        self.inflight = Some(f);
     }
 
     /// Draws a deferred glBegin/glEnd batch, if any. Every GL call except the vertex
     /// attribute calls and glBegin does this first, as Mesa flushes its vertex buffer.
     #[inline]
     pub fn flush_pending(&mut self) {
+        self.settle_draws();
         if let Some(mode) = self.immediate.pending.take() {
             let mats = self.take_vertex_materials();
             let verts = std::mem::take(&mut self.immediate.verts);
@@ -254,6 +291,7 @@ impl Context {
     /// viewport and scissor to the buffer size. `retyped` (a new component type) also gives
     /// a new framebuffer, as Mesa picks another pipe format.
     pub fn bind_framebuffer(&mut self, w: usize, h: usize, retyped: bool) {
+        self.settle_draws();
         let first = self.fb.is_none();
         let same = !retyped
             && self.fb.as_ref().is_some_and(|fb| {

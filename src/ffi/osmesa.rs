@@ -491,6 +491,7 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
         // SAFETY: live handle. Reading the context from another thread while it draws would
         // race; Mesa has the same contract (call it from the rendering thread).
         let gl = unsafe { &mut *(*c).ctx.get() };
+        gl.settle_draws();
         match gl.fb.as_ref() {
             Some(fb) if fb.depth_format != DepthFormat::None => {
                 let (w, h) = (fb.width as GLint, fb.height as GLint);

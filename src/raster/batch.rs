@@ -12,7 +12,9 @@
 //! the other, so each pixel sees the same fragments in the same order as single-threaded
 //! rendering: the images are byte-identical with threads on and off. The last batch of a
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
-//! work. The batches live in a per-thread pool, so drawing allocates little once they have
+//! work; only a chunk of a long glBegin/glEnd batch returns while the pool draws its last
+//! batch ([`Rasterizer::flush_detached`]), holding the framebuffer until the context's
+//! next GL call other than a per-vertex one settles it. The batches live in a per-thread pool, so drawing allocates little once they have
 //! grown (a band list per batch). Waking a sleeping pool thread costs a good part of a
 //! millisecond here, so a pool task polls for the next batch for a while after drawing one
 //! and the draw's thread polls briefly for the last band before it sleeps ([`Job`]).
@@ -724,6 +726,34 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.batch.clear();
     }
 
+    /// As [`Rasterizer::flush`], except that a last batch big enough for the pool, of a
+    /// draw without textures, is left drawing there and returned: the draw's thread goes
+    /// on while the pool finishes it (a streamed glBegin/glEnd chunk returns to take the
+    /// next chunk's vertices). Nothing else is pending once this returns.
+    ///
+    /// # Safety
+    /// Until the returned [`InFlight`] is settled or dropped, the pool writes the
+    /// framebuffer's bands: once this rasterizer is dropped, the framebuffer must go into
+    /// [`InFlight::hold`] before anything else touches it, and no other rasterizer may
+    /// start on this thread meanwhile (it would hand the same job slot a second batch).
+    pub unsafe fn flush_detached(&mut self, stats: &mut Stats) -> Option<InFlight> {
+        self.release(stats);
+        self.wait(stats);
+        if !self.threads || !self.units.is_empty() || self.batch.work < PARALLEL_WORK {
+            self.flush(stats);
+            return None;
+        }
+        self.launch();
+        let work = self.inflight.take()?;
+        stats.draws_detached += 1;
+        Some(InFlight {
+            work: Some(work),
+            job: Arc::clone(&self.job),
+            spin: self.tune.wait_spin,
+            fb: None,
+        })
+    }
+
     /// Takes the batch in flight back once it is drawn, helping to draw its remaining
     /// bands meanwhile, and adds its counters to `stats`.
     fn wait(&mut self, stats: &mut Stats) {
@@ -783,6 +813,61 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
         self.job
             .hand_over(Task::Bands(work), helpers, self.tune.stay);
+    }
+}
+
+/// The last batch of a draw, still drawn by the pool after the draw returned
+/// ([`Rasterizer::flush_detached`]), and the framebuffer it draws into
+/// ([`InFlight::hold`]): nothing else can reach the framebuffer until
+/// [`InFlight::settle`] hands it back. Dropping it waits for the pool too.
+pub struct InFlight {
+    /// The batch (taken by `settle`).
+    work: Option<Arc<Work>>,
+    /// The job slot it was handed to.
+    job: Arc<Job>,
+    /// How long to poll before sleeping ([`Tuning::wait_spin`]).
+    spin: Duration,
+    /// The framebuffer the batch draws into, held until it is drawn. (Moving a
+    /// `Framebuffer` leaves its buffers, which the pool writes, where they are.)
+    fb: Option<Framebuffer>,
+}
+
+impl InFlight {
+    /// Keeps `fb` until the batch is drawn; it must be the framebuffer the rasterizer
+    /// that returned this drew into (see [`Rasterizer::flush_detached`]).
+    pub fn hold(&mut self, fb: Option<Framebuffer>) {
+        self.fb = fb;
+    }
+
+    /// Waits until the batch is drawn, adds its counters to `stats`, gives its buffers
+    /// back to this thread's pool for the next draw, and returns the framebuffer.
+    pub fn settle(mut self, stats: &mut Stats) -> Option<Framebuffer> {
+        self.job.wait_done(self.spin);
+        // The job dropped its handle before it reported done.
+        if let Some(w) = self.work.take().and_then(Arc::into_inner) {
+            stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
+            let mut b = w.batch;
+            b.clear();
+            // Only while no rasterizer has the pool out (it is back between draws): the
+            // batch fills the slot the draw left empty.
+            POOL.with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    if let Some(slot) = p.batches.iter_mut().find(|s| s.heads.capacity() == 0) {
+                        *slot = b;
+                    }
+                }
+            });
+        }
+        self.fb.take()
+    }
+}
+
+impl Drop for InFlight {
+    fn drop(&mut self) {
+        // Before `fb` is dropped.
+        if self.work.is_some() {
+            self.job.wait_done(self.spin);
+        }
     }
 }
 
