@@ -14,8 +14,8 @@
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
 //! work; only a chunk of a long glBegin/glEnd batch returns while the pool draws its last
 //! batch ([`Rasterizer::flush_detached`]), holding the framebuffer until the context's
-//! next GL call other than a per-vertex one settles it. The batches live in a per-thread pool, so drawing allocates little once they have
-//! grown (a band list per batch). Waking a sleeping pool thread costs a good part of a
+//! next GL call other than a per-vertex one settles it. The batches live in a per-thread
+//! pool, so drawing allocates little once they have grown (a band list per batch). Waking a sleeping pool thread costs a good part of a
 //! millisecond here, so a pool task polls for the next batch for a while after drawing one
 //! and the draw's thread polls briefly for the last band before it sleeps ([`Job`]).
 
@@ -766,15 +766,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.job.wait_done(self.tune.wait_spin);
         // Taken only now, so that a panic above still leaves `Drop` waiting for the job.
         // The job dropped its handle before it reported done.
-        let work = self.inflight.take();
-        let mut b = match work.and_then(Arc::into_inner) {
-            Some(w) => {
-                stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
-                w.batch
-            }
-            None => Batch::default(),
-        };
-        b.clear();
+        let mut b = reclaim(self.inflight.take(), stats);
         b.bins.resize_with(self.batch.bins.len(), Vec::new);
         self.spare = Some(b);
     }
@@ -816,6 +808,20 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     }
 }
 
+/// Takes back a batch whose job has reported done (the job dropped its handle before
+/// that): adds its counters to `stats` and returns its buffers, cleared.
+fn reclaim(work: Option<Arc<Work>>, stats: &mut Stats) -> Batch {
+    let mut b = match work.and_then(Arc::into_inner) {
+        Some(w) => {
+            stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
+            w.batch
+        }
+        None => Batch::default(),
+    };
+    b.clear();
+    b
+}
+
 /// The last batch of a draw, still drawn by the pool after the draw returned
 /// ([`Rasterizer::flush_detached`]), and the framebuffer it draws into
 /// ([`InFlight::hold`]): nothing else can reach the framebuffer until
@@ -843,21 +849,16 @@ impl InFlight {
     /// back to this thread's pool for the next draw, and returns the framebuffer.
     pub fn settle(mut self, stats: &mut Stats) -> Option<Framebuffer> {
         self.job.wait_done(self.spin);
-        // The job dropped its handle before it reported done.
-        if let Some(w) = self.work.take().and_then(Arc::into_inner) {
-            stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
-            let mut b = w.batch;
-            b.clear();
-            // Only while no rasterizer has the pool out (it is back between draws): the
-            // batch fills the slot the draw left empty.
-            POOL.with(|p| {
-                if let Ok(mut p) = p.try_borrow_mut() {
-                    if let Some(slot) = p.batches.iter_mut().find(|s| s.heads.capacity() == 0) {
-                        *slot = b;
-                    }
+        let b = reclaim(self.work.take(), stats);
+        // Only while no rasterizer has the pool out (it is back between draws): the batch
+        // fills the slot the draw left empty.
+        POOL.with(|p| {
+            if let Ok(mut p) = p.try_borrow_mut() {
+                if let Some(slot) = p.batches.iter_mut().find(|s| s.heads.capacity() == 0) {
+                    *slot = b;
                 }
-            });
-        }
+            }
+        });
         self.fb.take()
     }
 }
