@@ -149,6 +149,38 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         )
 }
 
+/// Asks for the colour (and with `depth` the depth) lines of absolute row `py` from pixel
+/// `lo` to `hi`, at most `max_lines` 64-byte lines, when the row lies in the band.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) fn prefetch_row(
+    fb: &Target<'_>,
+    py: i64,
+    lo: i64,
+    hi: i64,
+    depth: bool,
+    max_lines: usize,
+) {
+    use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+    let (y0, y1) = (fb.y0 as i64, (fb.y0 + fb.rows) as i64);
+    if py < y0 || py >= y1 || lo > hi || lo < 0 {
+        return;
+    }
+    let i = (py - y0) as usize * fb.width + lo as usize;
+    // 16 four-byte pixels per line.
+    let lines = (((hi - lo) / 16) as usize + 1).min(max_lines);
+    for k in 0..lines {
+        // SAFETY: a prefetch is a hint that never faults, and the addresses are formed with
+        // wrapping arithmetic (they lie inside the band's rows anyway).
+        unsafe {
+            _mm_prefetch::<_MM_HINT_T0>(fb.color.as_ptr().wrapping_add(i + 16 * k).cast());
+            if depth {
+                _mm_prefetch::<_MM_HINT_T0>(fb.depth.as_ptr().wrapping_add(i + 16 * k).cast());
+            }
+        }
+    }
+}
+
 /// The row walk for the AVX2 span shader: picks the span shader's variant once per
 /// triangle (depth function, blend, flat / smooth / perspective).
 ///
@@ -244,24 +276,14 @@ unsafe fn rows_simd_walk<
     stats: &mut Stats,
 ) {
     use crate::fragment::simd::shade_span;
-    use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
-            // The span two rows down starts near this one's: ask for its depth and colour
-            // lines now, so that their loads do not wait on the cache when it is reached.
-            let ahead = py as usize + 2;
-            if ahead < fb.y0 + fb.rows {
-                let i = (ahead - fb.y0) * fb.width + lo as usize;
-                if D != crate::fragment::simd::D_NONE {
-                    // SAFETY: a prefetch is a hint that never faults, and the address is
-                    // formed with wrapping arithmetic (it is inside the band anyway).
-                    unsafe {
-                        _mm_prefetch::<_MM_HINT_T0>(fb.depth.as_ptr().wrapping_add(i).cast())
-                    };
-                }
-                // SAFETY: as above (a hint that never faults).
-                unsafe { _mm_prefetch::<_MM_HINT_T0>(fb.color.as_ptr().wrapping_add(i).cast()) };
-            }
+            // The span two rows down starts near this one's: ask for its first depth and
+            // colour lines now, so that their loads do not wait on the cache when it is
+            // reached (the hardware fetches the line after; more lines measured no faster
+            // on immediate_100k at 1024²).
+            let depth = D != crate::fragment::simd::D_NONE;
+            prefetch_row(fb, py + 2, lo, hi, depth, 1);
             // SAFETY: forwarded from the caller.
             unsafe {
                 shade_span::<FMA, D, FLAT, PERSP, B>(
