@@ -15,9 +15,10 @@
 //! work; only a chunk of a long glBegin/glEnd batch returns while the pool draws its last
 //! batch ([`Rasterizer::flush_detached`]), holding the framebuffer until the context's
 //! next GL call other than a per-vertex one settles it. The batches live in a per-thread
-//! pool, so drawing allocates little once they have grown (a band list per batch). Waking a sleeping pool thread costs a good part of a
-//! millisecond here, so a pool task polls for the next batch for a while after drawing one
-//! and the draw's thread polls briefly for the last band before it sleeps ([`Job`]).
+//! pool, so drawing allocates little once they have grown (a band list per batch).
+//! Waking a sleeping pool thread costs a good part of a millisecond here, so a pool task
+//! polls for the next batch for a while after drawing one and the draw's thread polls
+//! briefly for the last band before it sleeps ([`Job`]).
 
 mod split;
 
