@@ -3,9 +3,10 @@
 //!
 //! `bench/scenes/filter_study.c` draws the checkerboard ground plane of
 //! `c_tests/tex_truth_plane.h` at 512×512 with the filter named by `FILTER_STUDY`. The runs
-//! alternate as in the main benchmark (for each repetition, for each filter: softgl,
-//! llvmpipe with one thread, llvmpipe with its default threads), and the time of a filter
-//! and renderer is the median over repetitions of each run's median frame time. The error
+//! alternate as in the main benchmark (for each repetition, for each filter: every renderer
+//! of [`RENDERERS`] — softgl, llvmpipe with one thread, llvmpipe with its default threads,
+//! softgl with one thread), and the time of a filter and renderer is the median over
+//! repetitions of each run's median frame time. The error
 //! is that of each renderer's last frame against the analytic ground truth
 //! (`ground_truth.rs`, 16×16 samples per pixel): mean absolute error and PSNR over the RGB
 //! channels of the pixels the plane fully covers. Writes `target/bench/filter_study.md`,
@@ -15,7 +16,7 @@
 use super::ground_truth::{ground_truth, TruthError};
 use super::{
     build, chart, compare, fmt_ms, fmt_pct, fmt_ratio, machine_line, median, out_dir, read_frame,
-    root, run_scene, save_png, Config, Frame, RENDERERS,
+    root, run_scene, save_png, Config, Frame, Renderer, RENDERERS,
 };
 use std::fmt::Write as _;
 use std::fs;
@@ -58,7 +59,10 @@ pub fn run(cfg: &Config) -> Result<(), String> {
     let started = Instant::now();
     eprintln!("filter study: compiling {SCENE} against softgl and OSMesa");
     let bins = [build(SCENE, true), build(SCENE, false)];
-    let mut slots: Vec<[Slot; 3]> = MODES.iter().map(|_| Default::default()).collect();
+    // One slot per renderer, in the order of `RENDERERS` (softgl, llvmpipe-1, llvmpipe,
+    // softgl-1).
+    let mut slots: Vec<[Slot; RENDERERS.len()]> =
+        MODES.iter().map(|_| Default::default()).collect();
     let out = out_dir();
     for rep in 0..cfg.reps {
         eprintln!(
@@ -70,7 +74,8 @@ pub fn run(cfg: &Config) -> Result<(), String> {
         for ((mode, _, _), slot) in MODES.iter().zip(&mut slots) {
             for (ri, &r) in RENDERERS.iter().enumerate() {
                 let s = &mut slot[ri];
-                let bin = match &bins[usize::from(ri > 0)] {
+                let ours = matches!(r, Renderer::Softgl | Renderer::Softgl1);
+                let bin = match &bins[usize::from(!ours)] {
                     Ok(b) => b,
                     Err(e) => {
                         s.failure.get_or_insert_with(|| e.clone());
@@ -117,8 +122,10 @@ pub fn run(cfg: &Config) -> Result<(), String> {
          {}. The ground plane of `bench/scenes/filter_study.c` (a 512×512 black/white \
          checkerboard with its untinted mip chain, `c_tests/tex_truth_plane.h`) at \
          {SIZE}×{SIZE} with each filter. {} repetitions × {} timed frames per renderer, run in \
-         alternation (softgl, llvmpipe 1 thread, llvmpipe default threads); times are the \
-         median over repetitions of each run's median frame time (draw + glFinish), in ms.\n",
+         alternation (softgl default threads, llvmpipe 1 thread, llvmpipe default threads, \
+         softgl-1 = softgl with SOFTGL_THREADS=1); times are the median over repetitions of \
+         each run's median frame time (draw + glFinish), in ms. Single-thread against \
+         single-thread: softgl-1/lp-1; default against default: softgl/lp.\n",
         machine_line(),
         cfg.reps,
         cfg.frames
@@ -140,29 +147,31 @@ pub fn run(cfg: &Config) -> Result<(), String> {
     );
     let _ = writeln!(
         md,
-        "| id | filter | softgl ms | llvmpipe-1 ms | llvmpipe ms | softgl/lp-1 | softgl/lp | \
-         softgl MAE | llvmpipe MAE | softgl PSNR dB | llvmpipe PSNR dB | identical % | note |"
+        "| id | filter | softgl-1 ms | llvmpipe-1 ms | softgl-1/lp-1 | softgl ms | llvmpipe ms | \
+         softgl/lp | softgl MAE | llvmpipe MAE | softgl PSNR dB | llvmpipe PSNR dB | \
+         identical % | note |"
     );
     let _ = writeln!(
         md,
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
     );
     let mut csv = String::from(
-        "filter,id,size,softgl_ms,llvmpipe1_ms,llvmpipe_ms,softgl_mae,llvmpipe1_mae,\
+        "filter,id,size,softgl_ms,llvmpipe1_ms,llvmpipe_ms,softgl1_ms,softgl_mae,llvmpipe1_mae,\
          llvmpipe_mae,softgl_rmse,llvmpipe1_rmse,llvmpipe_rmse,softgl_psnr_db,\
          llvmpipe1_psnr_db,llvmpipe_psnr_db,identical_pct_softgl_vs_llvmpipe1,judged_pixels,note\n",
     );
     let mut points = Vec::new();
     for ((mode, id, name), slot) in MODES.iter().zip(&slots) {
-        let ms: [Option<f64>; 3] = std::array::from_fn(|i| median(&slot[i].run_medians));
-        let frames: [Option<Frame>; 3] = std::array::from_fn(|i| {
+        let ms: [Option<f64>; RENDERERS.len()] =
+            std::array::from_fn(|i| median(&slot[i].run_medians));
+        let frames: [Option<Frame>; RENDERERS.len()] = std::array::from_fn(|i| {
             slot[i]
                 .output
                 .as_deref()
                 .and_then(|p| read_frame(p).ok())
                 .filter(|f| (f.width, f.height) == (SIZE, SIZE))
         });
-        let errs: [Option<TruthError>; 3] = std::array::from_fn(|i| {
+        let errs: [Option<TruthError>; RENDERERS.len()] = std::array::from_fn(|i| {
             frames[i]
                 .as_ref()
                 .map(|f| truth.error(&f.rgba, size * 4, true))
@@ -185,13 +194,15 @@ pub fn run(cfg: &Config) -> Result<(), String> {
             (Some(a), Some(b)) => compare(a, b).ok(),
             _ => None,
         };
-        if let (Some(a), Some(b)) = (&frames[2], &frames[1]) {
-            if let Ok(e) = compare(a, b) {
-                if e.pixels_off > 0 {
-                    notes.push(format!(
-                        "llvmpipe threads vs 1 thread: {:.2}% identical",
-                        e.identical_pct
-                    ));
+        for (a, b, what) in [(2, 1, "llvmpipe"), (3, 0, "softgl")] {
+            if let (Some(fa), Some(fb)) = (&frames[a], &frames[b]) {
+                if let Ok(e) = compare(fa, fb) {
+                    if e.pixels_off > 0 {
+                        notes.push(format!(
+                            "{what} threads vs 1 thread: {:.2}% identical",
+                            e.identical_pct
+                        ));
+                    }
                 }
             }
         }
@@ -200,11 +211,12 @@ pub fn run(cfg: &Config) -> Result<(), String> {
         let note = notes.join("; ").replace('|', "/");
         let _ = writeln!(
             md,
-            "| {id} | {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {note} |",
-            fmt_ms(ms[0]),
+            "| {id} | {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {note} |",
+            fmt_ms(ms[3]),
             fmt_ms(ms[1]),
+            fmt_ratio(ms[3], ms[1]),
+            fmt_ms(ms[0]),
             fmt_ms(ms[2]),
-            fmt_ratio(ms[0], ms[1]),
             fmt_ratio(ms[0], ms[2]),
             mae(errs[0]),
             mae(errs[1]),
@@ -215,10 +227,11 @@ pub fn run(cfg: &Config) -> Result<(), String> {
         let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:.4}"));
         let _ = writeln!(
             csv,
-            "{mode},{id},{SIZE},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{note}\"",
+            "{mode},{id},{SIZE},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{note}\"",
             opt(ms[0]),
             opt(ms[1]),
             opt(ms[2]),
+            opt(ms[3]),
             opt(errs[0].map(|e| e.mae)),
             opt(errs[1].map(|e| e.mae)),
             opt(errs[2].map(|e| e.mae)),
@@ -231,13 +244,14 @@ pub fn run(cfg: &Config) -> Result<(), String> {
             opt(ident.map(|e| e.identical_pct)),
             judged,
         );
-        for i in 0..3 {
+        for i in 0..RENDERERS.len() {
             if let (Some(ms), Some(e)) = (ms[i], errs[i]) {
                 points.push(chart::Point {
                     ms,
                     error_pct: e.mae,
                     series: i,
-                    hollow: false,
+                    // softgl-1 shares softgl's circle: drawn hollow.
+                    hollow: i == 3,
                     label: (*id).to_owned(),
                 });
             }
@@ -265,6 +279,10 @@ pub fn run(cfg: &Config) -> Result<(), String> {
         chart::Series {
             name: "llvmpipe, default threads".into(),
             color: [30, 150, 60],
+        },
+        chart::Series {
+            name: "softgl, 1 thread (hollow)".into(),
+            color: [230, 130, 20],
         },
     ];
     let mut legend = vec!["filters".to_owned()];
