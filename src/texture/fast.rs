@@ -533,12 +533,24 @@ mod tests {
                     (Filter::Nearest, Filter::Linear),
                 ] {
                     for wrap in [Wrap::Repeat, Wrap::ClampToEdge] {
-                        for bias in [0.0f32, 0.75] {
+                        // Bias and LOD clamps: none (NEAREST mip filtering takes the LOD
+                        // from rho's exponent), a bias, each clamp alone, and a min_lod
+                        // beyond i32 (the float → int conversions saturate in the scalar
+                        // code, not in the vector one).
+                        for (bias, min_lod, max_lod) in [
+                            (0.0f32, -1000.0f32, 1000.0f32),
+                            (0.75, -1000.0, 1000.0),
+                            (0.0, 0.6, 1000.0),
+                            (-0.25, -1000.0, 1.4),
+                            (0.0, 1.0e30, 2.0e30),
+                        ] {
                             let sp = SamplerParams {
                                 min_filter: min,
                                 mag_filter: mag,
                                 mip_filter: mip,
                                 lod_bias: bias,
+                                min_lod,
+                                max_lod,
                                 ..Default::default()
                             };
                             let p = UnitPlan {

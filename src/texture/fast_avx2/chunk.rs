@@ -62,15 +62,21 @@ struct LodConsts {
     last: i32,
     /// The key of a magnified quad (`first·2` when MAG and MIN filter alike, else −2).
     mag_key: i32,
+    /// NEAREST mip filtering or none (else LINEAR): one level per quad, the LOD rounded
+    /// (without mipmaps `last` is `first`).
+    nearest: bool,
+    /// With `nearest`: no bias and no clamps, so the level comes from rho's exponent
+    /// ([`crate::texture::lod::from_rho`]'s fast path).
+    exponent_only: bool,
 }
 
-/// The per-quad LOD of a chunk for LINEAR mip filtering on the general LOD path
+/// The per-quad LOD of a chunk for LINEAR, NEAREST or no mip filtering
 /// ([`crate::texture::lod::compute`] then [`select_levels`] per quad, with rho from
 /// TL/TR/BL, in lanes: both lanes of a quad carry its values): the key of the levels the
 /// quads with a live pixel (`qlive`) share — `l0·2 + 1` for a blend of `l0` and `l0 + 1`,
 /// `l·2` for the single level `l`, −2 for magnification with a filter of its own — and the
-/// blend weights `trunc(fpart·256)`, as `(key of each lane, key of the first live quad,
-/// weights, whether every live quad has that key)`.
+/// blend weights `trunc(fpart·256)` (0 for NEAREST), as `(key of each lane, key of the
+/// first live quad, weights, whether every live quad has that key)`.
 ///
 /// # Safety
 /// AVX2 context.
@@ -101,8 +107,19 @@ unsafe fn lod_key(
             r,
             _mm256_cmp_ps::<_CMP_LT_OQ>(r, _mm256_set1_ps(f32::INFINITY)),
         );
-        // fast_log2: (exponent − 1) + mantissa in [1, 2).
         let rb = _mm256_castps_si256(r);
+        if c.nearest && c.exponent_only {
+            // `from_rho`'s fast path: level `(exponent(rho²) + 1) >> 1`, minified where
+            // rho² > 1.
+            let e = _mm256_sub_epi32(
+                _mm256_and_si256(_mm256_srli_epi32::<23>(rb), _mm256_set1_epi32(0xff)),
+                _mm256_set1_epi32(127),
+            );
+            let ipart = _mm256_srai_epi32::<1>(_mm256_add_epi32(e, _mm256_set1_epi32(1)));
+            let pos = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(r, _mm256_set1_ps(1.0)));
+            return nearest_key(c, ipart, pos, qlive);
+        }
+        // fast_log2: (exponent − 1) + mantissa in [1, 2).
         let e = _mm256_sub_epi32(
             _mm256_and_si256(_mm256_srli_epi32::<23>(rb), _mm256_set1_epi32(0xff)),
             _mm256_set1_epi32(128),
@@ -121,7 +138,21 @@ unsafe fn lod_key(
         if let Some(mn) = c.min_lod {
             lod = _mm256_max_ps(lod, _mm256_set1_ps(mn));
         }
+        // The LOD is finite (rho² is, and so are the bias and the applied clamps) but a
+        // huge min_lod makes it overflow the float → int conversions below, which give
+        // i32::MIN where the scalar `as i32` saturates: within ±2^24 both pick the level
+        // `select_levels` picks (the first or the last), with the same zero fraction.
+        let big = _mm256_set1_ps(16_777_216.0);
+        lod = _mm256_min_ps(
+            _mm256_max_ps(lod, _mm256_sub_ps(_mm256_setzero_ps(), big)),
+            big,
+        );
         let pos = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(lod, _mm256_setzero_ps()));
+        if c.nearest {
+            // `Lod::from_value`: `round_ties_even(lod) as i32`.
+            let lr = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(lod);
+            return nearest_key(c, _mm256_cvttps_epi32(lr), pos, qlive);
+        }
         let f = _mm256_floor_ps(lod);
         let fpart = _mm256_sub_ps(lod, f);
         let l0 = _mm256_add_epi32(_mm256_cvttps_epi32(f), _mm256_set1_epi32(c.first));
@@ -140,13 +171,48 @@ unsafe fn lod_key(
     }
 }
 
+/// [`lod_key`]'s result for NEAREST mip filtering from each lane's LOD integer part
+/// `ipart` and minification mask `pos`: the key `2·clamp(first + ipart, first, last)`
+/// where minified, else the magnification key; weights 0.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn nearest_key(
+    c: &LodConsts,
+    ipart: __m256i,
+    pos: __m256i,
+    qlive: u32,
+) -> (__m256i, i32, __m256i, bool) {
+    // SAFETY: AVX2 context (the caller).
+    unsafe {
+        // |ipart| ≤ 2^24 and first ≤ 1000: the sum does not overflow.
+        let l = _mm256_add_epi32(ipart, _mm256_set1_epi32(c.first));
+        let l = _mm256_min_epi32(
+            _mm256_max_epi32(l, _mm256_set1_epi32(c.first)),
+            _mm256_set1_epi32(c.last),
+        );
+        let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), _mm256_slli_epi32::<1>(l), pos);
+        let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
+        let kb = _mm256_permutevar8x32_epi32(key, lane0);
+        let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
+        (
+            key,
+            _mm256_cvtsi256_si32(kb),
+            _mm256_setzero_si256(),
+            uniform,
+        )
+    }
+}
+
 /// How a triangle's chunks are sampled (decided once per triangle).
 pub struct Sampling<'a> {
     /// The unit.
     u: &'a UnitPlan<'a>,
     /// Without a LOD: the one sampler and its mip weights for every chunk.
     fixed: Option<(RowSamplerV<'a>, __m256i)>,
-    /// The LOD form [`lod_key`] vectorises, every level in the vector sampler's range.
+    /// The LOD form [`lod_key`] vectorises (2D, min and max LOD not equal), every level it
+    /// can choose in the vector sampler's range.
     vec_lod: bool,
     /// Its constants.
     lc: LodConsts,
@@ -176,11 +242,17 @@ impl<'a> Sampling<'a> {
             (fits(u.image(lv.1)) && fits(u.image(lv.2)))
                 .then(|| (Self::sampler(u, lv.0, lv.1, lv.2), w))
         };
+        // Without mipmaps the LOD only chooses between the MIN and MAG filters of the
+        // first level: a NEAREST mip key whose levels end at the first.
+        let last = if u.mip_filter == MipFilter::None {
+            u.first
+        } else {
+            u.last
+        };
         let vec_lod = u.needs_lod
-            && u.mip_filter == MipFilter::Linear
             && !u.lod.min_max_equal
             && u.dims == 2
-            && (u.first..=u.last).all(|l| fits(u.image(l)));
+            && (u.first..=last).all(|l| fits(u.image(l)));
         let base = u.image(u.first);
         let lc = LodConsts {
             w: base.width as f32,
@@ -189,12 +261,14 @@ impl<'a> Sampling<'a> {
             max_lod: u.lod.apply_max.then_some(u.lod.max_lod),
             min_lod: u.lod.apply_min.then_some(u.lod.min_lod),
             first: u.first as i32,
-            last: u.last as i32,
+            last: last as i32,
             mag_key: if u.mag_filter == u.min_filter {
                 2 * u.first as i32
             } else {
                 -2
             },
+            nearest: u.mip_filter != MipFilter::Linear,
+            exponent_only: u.lod.bias == 0.0 && !u.lod.apply_min && !u.lod.apply_max,
         };
         Sampling {
             u,
