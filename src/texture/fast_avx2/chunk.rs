@@ -163,11 +163,9 @@ unsafe fn lod_key(
         let k = _mm256_blendv_epi8(_mm256_set1_epi32(c.last * 2), blend_key, in_hi);
         let k = _mm256_blendv_epi8(k, _mm256_slli_epi32::<1>(first), below);
         let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), k, pos);
-        let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
-        let kb = _mm256_permutevar8x32_epi32(key, lane0);
-        let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
+        let (k0, uniform) = shared_key(key, qlive);
         let wmip = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0)));
-        (key, _mm256_cvtsi256_si32(kb), wmip, uniform)
+        (key, k0, wmip, uniform)
     }
 }
 
@@ -186,22 +184,31 @@ unsafe fn nearest_key(
 ) -> (__m256i, i32, __m256i, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
-        // |ipart| ≤ 2^24 and first ≤ 1000: the sum does not overflow.
+        // |ipart| ≤ 2^24 and first is a level index: the sum does not overflow.
         let l = _mm256_add_epi32(ipart, _mm256_set1_epi32(c.first));
         let l = _mm256_min_epi32(
             _mm256_max_epi32(l, _mm256_set1_epi32(c.first)),
             _mm256_set1_epi32(c.last),
         );
         let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), _mm256_slli_epi32::<1>(l), pos);
+        let (k0, uniform) = shared_key(key, qlive);
+        (key, k0, _mm256_setzero_si256(), uniform)
+    }
+}
+
+/// The key of the first quad with a live pixel (`qlive`) among the lanes' `key`s, and
+/// whether every such quad has it.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn shared_key(key: __m256i, qlive: u32) -> (i32, bool) {
+    // SAFETY: AVX2 context (the caller).
+    unsafe {
         let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
         let kb = _mm256_permutevar8x32_epi32(key, lane0);
         let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
-        (
-            key,
-            _mm256_cvtsi256_si32(kb),
-            _mm256_setzero_si256(),
-            uniform,
-        )
+        (_mm256_cvtsi256_si32(kb), uniform)
     }
 }
 
