@@ -128,12 +128,14 @@ impl<T> std::ops::Deref for Padded<T> {
     }
 }
 
-/// A batched triangle without its varyings (those are in [`Batch::planes`] and
-/// [`Batch::flats`], `nvary` per triangle).
+/// A batched triangle without its varyings (those are in [`Batch::planes`], `nvary` per
+/// triangle, and for flat shading in [`Batch::flats`]). Its box is kept clipped to the
+/// batch's region, which is all the rasterizer reads of it, so it fits `i32`: 16 bytes of
+/// the 120 a triangle's head takes.
 #[derive(Clone, Copy)]
 struct Head {
     edges: [Edge; 3],
-    bbox: [i64; 4],
+    bbox: [i32; 4],
     front: bool,
     z: Plane,
     w: Plane,
@@ -146,7 +148,11 @@ struct Head {
 struct Batch {
     heads: Vec<Head>,
     planes: Vec<Plane>,
+    /// The provoking vertex's varyings, `nflat` per triangle.
     flats: Vec<f32>,
+    /// Flat values kept per triangle: the draw's `nvary` when it shades flat, else 0
+    /// (smooth spans never read them; set by [`Batch::reserve`]).
+    nflat: usize,
     /// Per band: the indices of the triangles whose box touches it, in order.
     bins: Vec<Vec<u32>>,
     /// Pixels of the triangles' boxes inside the region.
@@ -166,17 +172,23 @@ impl Batch {
     }
 
     /// Makes room for a full batch at once, so that the first draws do not copy the
-    /// growing buffers again and again (address space only: untouched pages cost nothing).
-    fn reserve(&mut self, max_batch: usize, nvary: usize) {
+    /// growing buffers again and again (address space only: untouched pages cost nothing),
+    /// and records whether the draw shades `flat` (whether triangles keep flat values).
+    /// Called on an empty batch.
+    fn reserve(&mut self, max_batch: usize, nvary: usize, flat: bool) {
+        self.nflat = if flat { nvary } else { 0 };
         self.heads
             .reserve(max_batch.saturating_sub(self.heads.len()));
         let n = max_batch * nvary;
         self.planes.reserve(n.saturating_sub(self.planes.len()));
+        let n = max_batch * self.nflat;
         self.flats.reserve(n.saturating_sub(self.flats.len()));
     }
 
-    /// Appends `t` (its first `nvary` varyings) and bins it into bands `b0..=b1`.
-    fn push(&mut self, t: &SetupTriangle, nvary: usize, b0: usize, b1: usize) {
+    /// Appends `t` (its first `nvary` varyings, its box clipped to `region`) and bins it
+    /// into bands `b0..=b1`. `t` covers a pixel of `region`, so the clipped box is not
+    /// empty and inside the framebuffer.
+    fn push(&mut self, t: &SetupTriangle, nvary: usize, region: [i64; 4], b0: usize, b1: usize) {
         let SetupTriangle {
             edges,
             bbox,
@@ -189,9 +201,18 @@ impl Batch {
             flat_u8,
         } = t;
         let idx = self.heads.len() as u32;
+        // The clip `raster_triangle` makes (it reads the box no other way); a region is
+        // inside a framebuffer of at most `MAX_SIZE` pixels a side, so the values fit.
+        let clipped = [
+            bbox[0].max(region[0]),
+            bbox[1].max(region[1]),
+            bbox[2].min(region[2] - 1),
+            bbox[3].min(region[3] - 1),
+        ];
+        debug_assert!(clipped.iter().all(|&v| i32::try_from(v).is_ok()));
         self.heads.push(Head {
             edges: *edges,
-            bbox: *bbox,
+            bbox: clipped.map(|v| v as i32),
             front: *front,
             z: *z,
             w: *w,
@@ -199,26 +220,27 @@ impl Batch {
             flat_u8: *flat_u8,
         });
         self.planes.extend_from_slice(&vary[..nvary]);
-        self.flats.extend_from_slice(&flat[..nvary]);
+        self.flats.extend_from_slice(&flat[..self.nflat]);
         for bin in &mut self.bins[b0..=b1] {
             bin.push(idx);
         }
     }
 
-    /// Copies triangle `i` into `t`, whose varyings past `nvary` stay zero as setup leaves
-    /// them.
+    /// Copies triangle `i` into `t`, whose varyings past `nvary` (and flat values of a
+    /// smooth draw) stay as setup leaves them: zero.
     #[inline]
     fn load(&self, i: usize, nvary: usize, t: &mut SetupTriangle) {
         let h = &self.heads[i];
         t.edges = h.edges;
-        t.bbox = h.bbox;
+        t.bbox = h.bbox.map(i64::from);
         t.front = h.front;
         t.z = h.z;
         t.w = h.w;
         t.persp = h.persp;
         t.flat_u8 = h.flat_u8;
         t.vary[..nvary].copy_from_slice(&self.planes[i * nvary..(i + 1) * nvary]);
-        t.flat[..nvary].copy_from_slice(&self.flats[i * nvary..(i + 1) * nvary]);
+        let nf = self.nflat;
+        t.flat[..nf].copy_from_slice(&self.flats[i * nf..(i + 1) * nf]);
     }
 }
 
@@ -663,7 +685,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         if self.batch.heads.is_empty() {
-            self.batch.reserve(self.tune.max_batch, self.nvary);
+            self.batch
+                .reserve(self.tune.max_batch, self.nvary, self.plan.flat);
         }
         split::bin(
             &mut self.batch,

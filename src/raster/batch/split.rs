@@ -68,7 +68,7 @@ pub(super) fn bin(
     rows: usize,
 ) {
     let (y0, y1) = box_rows(t, region);
-    batch.push(t, nvary, y0 / rows, y1 / rows);
+    batch.push(t, nvary, region, y0 / rows, y1 / rows);
     batch.work += area;
 }
 
@@ -332,7 +332,7 @@ impl Rasterizer<'_, '_> {
             .map(|mut batch| {
                 batch.clear();
                 batch.bins.resize_with(nb, Vec::new);
-                batch.reserve(section_len, nvary);
+                batch.reserve(section_len, nvary, self.plan.flat);
                 Slot {
                     ready: Padded(AtomicUsize::new(0)),
                     binner: UnsafeCell::new(Binner {
