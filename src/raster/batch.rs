@@ -203,12 +203,7 @@ impl Batch {
         let idx = self.heads.len() as u32;
         // The clip `raster_triangle` makes (it reads the box no other way); a region is
         // inside a framebuffer of at most `MAX_SIZE` pixels a side, so the values fit.
-        let clipped = [
-            bbox[0].max(region[0]),
-            bbox[1].max(region[1]),
-            bbox[2].min(region[2] - 1),
-            bbox[3].min(region[3] - 1),
-        ];
+        let clipped = clip_box(*bbox, region);
         debug_assert!(clipped.iter().all(|&v| i32::try_from(v).is_ok()));
         self.heads.push(Head {
             edges: *edges,
@@ -567,11 +562,22 @@ pub trait TriangleSink {
     fn triangle(&mut self, t: &SetupTriangle, stats: &mut Stats);
 }
 
+/// An inclusive box (x0, y0, x1, y1) clipped to `region` (exclusive high end); empty
+/// when x0 > x1 or y0 > y1.
+#[inline(always)]
+fn clip_box(b: [i64; 4], region: [i64; 4]) -> [i64; 4] {
+    [
+        b[0].max(region[0]),
+        b[1].max(region[1]),
+        b[2].min(region[2] - 1),
+        b[3].min(region[3] - 1),
+    ]
+}
+
 /// The pixel count of `t`'s box inside `region`.
 fn box_area(t: &SetupTriangle, region: [i64; 4]) -> i64 {
-    let w = t.bbox[2].min(region[2] - 1) - t.bbox[0].max(region[0]) + 1;
-    let h = t.bbox[3].min(region[3] - 1) - t.bbox[1].max(region[1]) + 1;
-    w.max(0) * h.max(0)
+    let [x0, y0, x1, y1] = clip_box(t.bbox, region);
+    (x1 - x0 + 1).max(0) * (y1 - y0 + 1).max(0)
 }
 
 impl<'a, 'f> Rasterizer<'a, 'f> {
@@ -900,10 +906,8 @@ impl Drop for InFlight {
 /// known to hold pixels of the region).
 #[inline(always)]
 fn box_rows(t: &SetupTriangle, region: [i64; 4]) -> (usize, usize) {
-    (
-        t.bbox[1].max(region[1]) as usize,
-        t.bbox[3].min(region[3] - 1) as usize,
-    )
+    let [_, y0, _, y1] = clip_box(t.bbox, region);
+    (y0 as usize, y1 as usize)
 }
 
 /// Whether `t` is a right triangle with a horizontal and a vertical edge (half of an
