@@ -4,6 +4,8 @@
 //! The user buffer is written only by [`Framebuffer::copy_to_user`] (glFlush/glFinish), as
 //! Mesa does: a new buffer starts zeroed, colour (0,0,0,0) and depth 0.
 
+use crate::memory::HugeBuf;
+
 /// The colour layout of the OSMesa user buffer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColorFormat {
@@ -104,14 +106,14 @@ pub struct Framebuffer {
     pub height: usize,
     /// The user buffer's colour layout (decides quantisation on store).
     pub format: ColorFormat,
-    /// RGBA8 colour, row 0 = top row.
-    pub color: Vec<[u8; 4]>,
+    /// RGBA8 colour, row 0 = top row (on huge pages when large: [`HugeBuf`]).
+    pub color: HugeBuf<[u8; 4]>,
     /// Depth layout.
     pub depth_format: DepthFormat,
     /// Depth values (empty without a depth buffer), row 0 = top row.
-    pub depth: Vec<u32>,
+    pub depth: HugeBuf<u32>,
     /// Stencil values (empty without a stencil buffer), row 0 = top row.
-    pub stencil: Vec<u8>,
+    pub stencil: HugeBuf<u8>,
     /// The value every colour pixel holds, when known: set by a full-buffer glClear and
     /// dropped by anything else that may write colour ([`Framebuffer::target`],
     /// [`Framebuffer::bands`] and the few direct writers), so that glFlush fills the user
@@ -145,14 +147,18 @@ impl Framebuffer {
             width,
             height,
             format,
-            color: vec![[0, 0, 0, if format.has_alpha() { 0 } else { 255 }]; n],
+            color: HugeBuf::filled(n, [0, 0, 0, if format.has_alpha() { 0 } else { 255 }]),
             depth_format,
             depth: if depth_format == DepthFormat::None {
-                Vec::new()
+                HugeBuf::empty()
             } else {
-                vec![0; n]
+                HugeBuf::filled(n, 0)
             },
-            stencil: if stencil { vec![0; n] } else { Vec::new() },
+            stencil: if stencil {
+                HugeBuf::filled(n, 0)
+            } else {
+                HugeBuf::empty()
+            },
             uniform_color: None,
             pending_color: None,
             pending_depth: None,

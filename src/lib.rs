@@ -23,6 +23,7 @@ pub mod fixed_function;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
+pub mod memory;
 pub mod pixels;
 pub mod raster;
 pub mod stats;

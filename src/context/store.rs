@@ -1,13 +1,10 @@
-//! The bytes of a buffer object. A large store is mapped on its own at a 2 MiB boundary
-//! with transparent huge pages requested (Linux `madvise(MADV_HUGEPAGE)`), so that filling
-//! it takes one page fault per 2 MiB instead of one per 4 KiB; smaller stores, other
-//! systems and every store whose mapping fails are ordinary heap vectors.
+//! The bytes of a buffer object. A large store is mapped on its own on transparent huge
+//! pages ([`crate::memory`]), so that filling it takes one page fault per 2 MiB instead of
+//! one per 4 KiB; smaller stores, other systems and every store whose mapping fails are
+//! ordinary heap vectors.
 
+use crate::memory::Mapping;
 use std::ops::{Deref, DerefMut};
-
-/// The huge-page size the mapped stores are aligned to.
-#[cfg(target_os = "linux")]
-const HUGE: usize = 2 << 20;
 
 /// The memory for a store could not be had.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,19 +19,12 @@ enum Inner {
     #[default]
     Empty,
     Heap(Vec<u8>),
-    /// `len` bytes at `ptr`, the start of an anonymous mapping of `map_len` bytes.
-    #[cfg(target_os = "linux")]
+    /// `len` bytes at the start of `map`.
     Mapped {
-        ptr: std::ptr::NonNull<u8>,
+        map: Mapping,
         len: usize,
-        map_len: usize,
     },
 }
-
-// SAFETY: a Store owns its memory alone (as a Vec does); nothing else refers to a mapping.
-unsafe impl Send for Store {}
-// SAFETY: shared references only read the bytes.
-unsafe impl Sync for Store {}
 
 impl Store {
     /// `size` zero bytes, or [`OutOfMemory`].
@@ -61,67 +51,11 @@ impl Store {
         Ok(Store(Inner::Heap(v)))
     }
 
-    /// A zeroed mapping of `size` bytes starting on a huge-page boundary, when its length
-    /// spans at least one whole huge page: `size` rounded up to whole huge pages when that
-    /// at most doubles it (the rounding is resident once written, so a store of 1–2 MiB
-    /// holds 2 MiB), else to whole pages (the part after the last whole huge page then
-    /// takes ordinary pages). Measured (small_tris_200k, whose 1.6 MB vertex and 2.4 MB
-    /// index stores got 4 KiB pages for all or part under a quarter rule): see the commit.
-    #[cfg(target_os = "linux")]
+    /// A zeroed store of `size` bytes on huge pages ([`Mapping::huge`]), when it is large
+    /// enough. Measured (small_tris_200k, whose 1.6 MB vertex and 2.4 MB index stores got
+    /// 4 KiB pages for all or part under an earlier rule): see commit 7b53836.
     fn map(size: usize) -> Option<Self> {
-        const PAGE: usize = 4096;
-        let up = size.checked_next_multiple_of(HUGE)?;
-        let map_len = if up - size <= size {
-            up
-        } else {
-            size.checked_next_multiple_of(PAGE)?
-        };
-        if map_len < HUGE {
-            return None;
-        }
-        let total = map_len.checked_add(HUGE)?;
-        // SAFETY: a new anonymous private mapping; no existing memory is involved.
-        let p = unsafe {
-            libc::mmap(
-                std::ptr::null_mut(),
-                total,
-                libc::PROT_READ | libc::PROT_WRITE,
-                libc::MAP_PRIVATE | libc::MAP_ANONYMOUS,
-                -1,
-                0,
-            )
-        };
-        if p == libc::MAP_FAILED {
-            return None;
-        }
-        let start = p as usize;
-        let aligned = start.next_multiple_of(HUGE);
-        let end = aligned + map_len;
-        // SAFETY: the head [start, aligned) and the tail [end, start + total) lie inside
-        // the mapping just made and are page-aligned; nothing refers to them. A failed
-        // munmap only leaves address space mapped; a failed madvise only leaves ordinary
-        // pages.
-        unsafe {
-            if aligned > start {
-                libc::munmap(p, aligned - start);
-            }
-            if start + total > end {
-                libc::munmap(end as *mut libc::c_void, start + total - end);
-            }
-            libc::madvise(aligned as *mut libc::c_void, map_len, libc::MADV_HUGEPAGE);
-        }
-        let ptr = std::ptr::NonNull::new(aligned as *mut u8)?;
-        Some(Store(Inner::Mapped {
-            ptr,
-            len: size,
-            map_len,
-        }))
-    }
-
-    /// No mapping off Linux: every store is a heap vector.
-    #[cfg(not(target_os = "linux"))]
-    fn map(_size: usize) -> Option<Self> {
-        None
+        Mapping::huge(size).map(|map| Store(Inner::Mapped { map, len: size }))
     }
 }
 
@@ -134,9 +68,8 @@ impl Deref for Store {
             Inner::Heap(v) => v,
             // SAFETY: the mapping holds `len` initialised (zeroed or written) bytes and
             // lives as long as `self`.
-            #[cfg(target_os = "linux")]
-            Inner::Mapped { ptr, len, .. } => unsafe {
-                std::slice::from_raw_parts(ptr.as_ptr(), *len)
+            Inner::Mapped { map, len } => unsafe {
+                std::slice::from_raw_parts(map.ptr().as_ptr(), *len)
             },
         }
     }
@@ -149,23 +82,9 @@ impl DerefMut for Store {
             Inner::Empty => &mut [],
             Inner::Heap(v) => v,
             // SAFETY: as in `deref`, and `&mut self` makes the access unique.
-            #[cfg(target_os = "linux")]
-            Inner::Mapped { ptr, len, .. } => unsafe {
-                std::slice::from_raw_parts_mut(ptr.as_ptr(), *len)
+            Inner::Mapped { map, len } => unsafe {
+                std::slice::from_raw_parts_mut(map.ptr().as_ptr(), *len)
             },
-        }
-    }
-}
-
-impl Drop for Store {
-    fn drop(&mut self) {
-        #[cfg(target_os = "linux")]
-        if let Inner::Mapped { ptr, map_len, .. } = self.0 {
-            // SAFETY: the mapping was made by `map` with this start and length and
-            // nothing refers to it any more.
-            unsafe {
-                libc::munmap(ptr.as_ptr().cast(), map_len);
-            }
         }
     }
 }
@@ -186,6 +105,8 @@ impl std::fmt::Debug for Store {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(target_os = "linux")]
+    use crate::memory::HUGE;
 
     #[test]
     fn stores_of_every_kind_hold_their_bytes() {
