@@ -16,6 +16,7 @@ use crate::fragment::FragPlan;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::{clip_triangle, UserPlanes};
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
+use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{cpu_has_fma, ClipMask, ClipVertex, Viewport};
 use crate::raster::batch::{geom_section, Binner, Rasterizer, TriangleSink};
@@ -335,7 +336,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
         _ => {
             let mut tri = SetupTriangle::default();
             assemble::triangles(mode, n, path, plan.flat, |a, b, c| {
-                pipe.triangle(at(a), at(b), at(c), &mut tri, &mut rast, stats)
+                pipe.triangle(at(a), at(b), at(c), None, &mut tri, &mut rast, stats)
             });
         }
     }
@@ -386,16 +387,25 @@ impl TriPipe<'_> {
         sink: &mut K,
         stats: &mut crate::stats::Stats,
     ) {
-        match self
+        let r = self
             .setup
-            .shaded(v, self.nvary, self.cull, self.back, self.flat, tri)
-        {
-            SetupResult::Draw => {
-                if let Some((factor, units)) = self.lp_offset {
-                    crate::raster::prims::apply_setup_offset(v, factor, units, tri);
-                }
-                sink.triangle(tri, stats)
-            }
+            .shaded(v, self.nvary, self.cull, self.back, self.flat, tri);
+        if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
+            crate::raster::prims::apply_setup_offset(v, factor, units, tri);
+        }
+        Self::emit(r, tri, sink, stats);
+    }
+
+    /// Passes a set-up triangle to `sink`, or counts why setup dropped it.
+    #[inline(always)]
+    fn emit<K: TriangleSink>(
+        r: SetupResult,
+        tri: &SetupTriangle,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        match r {
+            SetupResult::Draw => sink.triangle(tri, stats),
             SetupResult::Degenerate => stats.tris_degenerate += 1,
             SetupResult::Culled => stats.tris_culled += 1,
             // What the rasterizer counts for a box without pixels.
@@ -403,13 +413,48 @@ impl TriPipe<'_> {
         }
     }
 
-    /// Rejects, clips or sets up one assembled triangle.
+    /// Whether this draw's triangles can be set up eight at a time ([`SetupQueue`]): on
+    /// the AVX2 setup, without two-sided colours or llvmpipe's polygon offset (both look
+    /// at a triangle's vertices after setup), and `SOFTGL_SETUP8=0` turns it off for A/B.
+    fn queue_ok(&self) -> bool {
+        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        let on = *ON.get_or_init(|| std::env::var("SOFTGL_SETUP8").as_deref() != Ok("0"));
+        on && self.setup.is_avx2()
+            && self.back.is_none()
+            && self.lp_offset.is_none()
+            && self.nvary <= QUEUE_VARY
+    }
+
+    /// Sets up the triangles waiting in `queue` and passes them to `sink` in order.
+    #[inline(never)]
+    fn flush<K: TriangleSink>(
+        &self,
+        queue: &mut SetupQueue,
+        tri: &mut SetupTriangle,
+        sink: &mut K,
+        stats: &mut crate::stats::Stats,
+    ) {
+        // SAFETY: a draw has a queue only when its setup is the AVX2 copy
+        // (`Self::queue_ok`), which `SetupVariant::detect` picks only on AVX2 CPUs.
+        unsafe {
+            queue.flush(self.cull, self.flat, tri, |r, t| {
+                Self::emit(r, t, sink, stats)
+            })
+        };
+    }
+
+    /// Rejects, clips or sets up one assembled triangle. With a `queue`, a triangle
+    /// inside the clip volume waits there until eight have come (or the stream ends:
+    /// [`Self::flush`]), and one that needs clipping first sets up those waiting, so that
+    /// `sink` sees the triangles in order.
     #[inline]
+    #[allow(clippy::too_many_arguments)]
     fn triangle<K: TriangleSink>(
         &self,
         va: &ClipVertex,
         vb: &ClipVertex,
         vc: &ClipVertex,
+        queue: Option<&mut SetupQueue>,
         tri: &mut SetupTriangle,
         sink: &mut K,
         stats: &mut crate::stats::Stats,
@@ -419,7 +464,14 @@ impl TriPipe<'_> {
         if va.mask & vb.mask & vc.mask != 0 {
             stats.tris_clip_rejected += 1;
         } else if or != 0 {
+            if let Some(q) = queue {
+                self.flush(q, tri, sink, stats);
+            }
             self.clipped([va, vb, vc], or, tri, sink, stats);
+        } else if let Some(q) = queue {
+            if q.push([va, vb, vc]) {
+                self.flush(q, tri, sink, stats);
+            }
         } else {
             self.one([va, vb, vc], tri, sink, stats);
         }
@@ -463,6 +515,8 @@ struct StreamState {
     cache: VertexCache,
     slot: VertexSlot,
     tri: SetupTriangle,
+    /// Triangles waiting to be set up eight at a time, when the draw allows it.
+    queue: Option<Box<SetupQueue>>,
 }
 
 /// The streamed triangles of a draw: each vertex fetched and transformed when first
@@ -483,6 +537,10 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
             cache: VertexCache::for_draw(n),
             slot: self.verts.new_slot(),
             tri: SetupTriangle::default(),
+            queue: self
+                .pipe
+                .queue_ok()
+                .then(|| SetupQueue::new(self.pipe.nvary)),
         })
     }
 
@@ -517,7 +575,12 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         sink: &mut K,
         stats: &mut crate::stats::Stats,
     ) {
-        let StreamState { cache, slot, tri } = state;
+        let StreamState {
+            cache,
+            slot,
+            tri,
+            queue,
+        } = state;
         let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
         let (verts, stage) = (self.verts, self.stage);
         // Vertices read in order are transformed ahead in runs of `BLOCK`
@@ -550,8 +613,12 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
                 verts.vertex_into(i, slot);
                 stage.run_into(&slot.v, out)
             });
-            self.pipe.triangle(va, vb, vc, tri, sink, stats);
+            let q = queue.as_deref_mut();
+            self.pipe.triangle(va, vb, vc, q, tri, sink, stats);
         });
+        if let Some(q) = queue.as_deref_mut() {
+            self.pipe.flush(q, tri, sink, stats);
+        }
         stats.vertices += cache.transformed;
         cache.transformed = 0;
     }

@@ -8,6 +8,7 @@ pub mod clip;
 pub mod feedback;
 pub mod fetch;
 pub mod setup;
+pub mod setup8;
 pub mod source;
 pub mod unfilled;
 

@@ -149,6 +149,7 @@ fn snap4(v: [f32; 4]) -> [f32; 4] {
 const MAX_SNAPPED: f32 = (1u64 << 40) as f32;
 
 /// What setup decided about a triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SetupResult {
     /// Draw it: the output triangle was filled in.
     Draw,
@@ -232,6 +233,11 @@ impl SetupVariant {
         SetupVariant {
             avx2: crate::cpu::isa().avx2(),
         }
+    }
+
+    /// Whether this is the AVX2 copy (the CPU has AVX2).
+    pub fn is_avx2(self) -> bool {
+        self.avx2
     }
 
     /// The baseline (SSE2) copy, whatever the CPU.
