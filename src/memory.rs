@@ -17,6 +17,7 @@ pub(crate) const HUGE: usize = 2 << 20;
 /// A zeroed anonymous mapping on a huge-page boundary, unmapped when dropped.
 pub(crate) struct Mapping {
     ptr: NonNull<u8>,
+    #[cfg_attr(not(target_os = "linux"), allow(dead_code))]
     map_len: usize,
 }
 
@@ -104,18 +105,28 @@ impl Drop for Mapping {
 
 /// Element types a [`HugeBuf`] holds: plain values for which all-zero bytes are a valid
 /// value (a fresh mapping is zero).
-pub trait Plain: Copy + PartialEq + std::fmt::Debug + Send + Sync + 'static {
+///
+/// # Safety
+/// An implementor has no padding and no invalid bit patterns (all-zero bytes in
+/// particular are a valid value), `ZERO` is the value whose bytes are all zero, and
+/// `v == ZERO` holds exactly when `v`'s bytes are all zero: [`HugeBuf::filled`] leaves a
+/// fresh mapping unwritten for such a value.
+pub unsafe trait Plain: Copy + PartialEq + std::fmt::Debug + Send + Sync + 'static {
     /// The value whose bytes are all zero.
     const ZERO: Self;
 }
 
-impl Plain for u8 {
+// SAFETY: integers and byte arrays have no padding, every bit pattern is valid, and
+// integer equality is equality of the bytes.
+unsafe impl Plain for u8 {
     const ZERO: Self = 0;
 }
-impl Plain for u32 {
+// SAFETY: as for u8.
+unsafe impl Plain for u32 {
     const ZERO: Self = 0;
 }
-impl Plain for [u8; 4] {
+// SAFETY: as for u8.
+unsafe impl Plain for [u8; 4] {
     const ZERO: Self = [0; 4];
 }
 
@@ -165,8 +176,8 @@ impl<T: Plain> Deref for HugeBuf<T> {
         match &self.0 {
             Inner::Heap(v) => v,
             // SAFETY: the mapping holds `len` values (its length was computed from
-            // `len * size_of::<T>()`), all initialised: zero bytes are a valid `T`
-            // (`Plain`), and the mapping is aligned to 2 MiB, more than any `T` needs. It
+            // `len * size_of::<T>()`), all initialised: zero bytes are a valid `T` (the
+            // `Plain` contract), and the mapping is aligned to 2 MiB, more than any `T` needs. It
             // lives as long as `self`.
             Inner::Mapped { map, len } => unsafe {
                 std::slice::from_raw_parts(map.ptr().as_ptr().cast::<T>(), *len)

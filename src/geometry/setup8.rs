@@ -23,8 +23,10 @@ pub const LANES: usize = 8;
 pub const QUEUE_VARY: usize = 8;
 
 /// Window coordinates below this (in magnitude) snap to values that fit the lanes' i32.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 const FAST_LIMIT: f32 = (1u32 << 21) as f32;
 /// Snapped sub-pixel units per pixel.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 const ONE: i32 = 1 << super::setup::SUBPIXEL_BITS;
 
 /// A lane's outcome.
@@ -211,6 +213,7 @@ impl SetupQueue {
 }
 
 /// The lanes' class from their bit masks (bit `l` for lane `l`).
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 #[inline(always)]
 fn classes(fast: u32, degenerate: u32, culled: u32, empty: u32) -> [Class; LANES] {
     std::array::from_fn(|l| {
