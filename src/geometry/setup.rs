@@ -60,6 +60,17 @@ impl Edge {
 const NARROW: i64 = 4;
 
 impl SetupTriangle {
+    /// Stores the provoking vertex's varyings for flat shading: `v(i)` for the first
+    /// `nvary`, and its colour (`v(0..4)`, which must be valid) as 8-bit values.
+    #[inline(always)]
+    pub fn set_flat(&mut self, nvary: usize, v: impl Fn(usize) -> f32) {
+        for (i, f) in self.flat[..nvary].iter_mut().enumerate() {
+            *f = v(i);
+        }
+        let u = |i| crate::framebuffer::float_to_ubyte(v(i));
+        self.flat_u8 = [u(0), u(1), u(2), u(3)];
+    }
+
     /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
     /// `(first, last)`; `None` when none is covered. Exact: the same set as intersecting
     /// the three edges' [`Edge::span`]s.
@@ -69,8 +80,16 @@ impl SetupTriangle {
             // Bit k: pixel x0 + k is inside all three edges (no branch per pixel). The
             // covered pixels of a row are consecutive, so the lowest and highest bits are
             // the span's ends.
-            let e = self.edges.map(|e| e.c + e.b * ONE * py - e.a * ONE * x0);
-            let s = self.edges.map(|e| e.a * ONE);
+            // Written out rather than `self.edges.map(..)`: in the rasterizer's large
+            // specialised functions LLVM left `map` out of line, a call per row whose
+            // result came back through the stack.
+            let [e0, e1, e2] = &self.edges;
+            let e = [
+                e0.c + e0.b * ONE * py - e0.a * ONE * x0,
+                e1.c + e1.b * ONE * py - e1.a * ONE * x0,
+                e2.c + e2.b * ONE * py - e2.a * ONE * x0,
+            ];
+            let s = [e0.a * ONE, e1.a * ONE, e2.a * ONE];
             let n = x1 - x0;
             if n < 0 {
                 return None;
@@ -517,8 +536,7 @@ fn setup_rest<'v>(
     // Only the varyings this draw writes (the rest stay as the draw's first triangle left
     // them: zero, like the vertices' unused varyings).
     if flat {
-        fill.flat[..nvary].copy_from_slice(&p2.vary[..nvary]);
-        fill.flat_u8 = [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(p2.vary[i]));
+        fill.set_flat(nvary, |i| p2.vary[i]);
     }
     SetupResult::Draw
 }

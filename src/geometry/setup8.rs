@@ -146,7 +146,10 @@ impl SetupQueue {
                             c: o.edge[i][2][l],
                         };
                     }
-                    fill.bbox = [0, 1, 2, 3].map(|i| o.bbox[i][l]);
+                    // Written out: `[0, 1, 2, 3].map(..)` stayed an out-of-line call whose
+                    // result came back through the stack, a store-forwarding stall that
+                    // cost more than the rest of the copy.
+                    fill.bbox = [o.bbox[0][l], o.bbox[1][l], o.bbox[2][l], o.bbox[3][l]];
                     fill.front = o.front[l];
                     let plane = |p: &[[f32; LANES]; 3]| Plane {
                         a0: p[0][l],
@@ -160,11 +163,8 @@ impl SetupQueue {
                         fill.vary[i] = plane(&o.vary[i]);
                     }
                     if flat {
-                        for i in 0..nvary {
-                            fill.flat[i] = self.vary[2][i][l];
-                        }
-                        fill.flat_u8 = [0, 1, 2, 3]
-                            .map(|i| crate::framebuffer::float_to_ubyte(self.vary[2][i][l]));
+                        // `ncopy` >= 4: the colour is queued even with fewer varyings.
+                        fill.set_flat(nvary, |i| self.vary[2][i][l]);
                     }
                     SetupResult::Draw
                 }
@@ -174,7 +174,12 @@ impl SetupQueue {
                 Class::Scalar => {
                     let v: [ClipVertex; 3] = std::array::from_fn(|k| {
                         let mut p = ClipVertex {
-                            win: [0, 1, 2, 3].map(|c| self.win[k][c][l]),
+                            win: [
+                                self.win[k][0][l],
+                                self.win[k][1][l],
+                                self.win[k][2][l],
+                                self.win[k][3][l],
+                            ],
                             ..ClipVertex::default()
                         };
                         for i in 0..self.ncopy {
