@@ -1,6 +1,8 @@
 //! The AVX2 span shader for the most common plan: smooth or flat colour, optional
 //! perspective, optional depth test, plain colour write (no alpha test, stencil, blending,
-//! logic op or texture). Eight pixels per iteration in 256-bit registers.
+//! logic op or texture). Eight pixels per iteration in 256-bit registers: eight of a row's
+//! span, or for a triangle less than four pixels wide, a 4x2 block of two rows
+//! ([`shade_pair`]).
 //!
 //! It computes exactly what [`super::span::shade_chunk`] computes: the plane evaluation
 //! `fmuladd(dady, py, fmuladd(dadx, px, a0))` (fused only in the FMA variant), the exact
@@ -338,6 +340,25 @@ struct Tally {
     reads: u64,
 }
 
+impl Tally {
+    /// Adds a span's (or block's) `count` fragments and these tallies to `stats`.
+    #[inline(always)]
+    fn count<const DEPTH: u8>(&self, plan: &FragPlan, count: u64, stats: &mut Stats) {
+        stats.fragments += count;
+        let passed = if DEPTH != D_NONE {
+            stats.depth_reads += count;
+            stats.depth_failed += count - self.passed;
+            self.passed
+        } else {
+            count
+        };
+        if plan.color_mask[0] {
+            stats.color_writes += passed;
+            stats.color_reads += self.reads;
+        }
+    }
+}
+
 /// One chunk of [`shade_span`]: the 8 pixels at `idx` (lanes `fx`, row `fy`), of which
 /// the first `n` are live (`live` as a mask; all 8 when `FULL`, which uses plain loads
 /// and stores: every lane lies in this span, so rewriting a lane with its own value is
@@ -354,6 +375,7 @@ unsafe fn chunk8<
     const PERSP: bool,
     const BLEND: u8,
     const FULL: bool,
+    const PAIR: bool,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -382,6 +404,8 @@ unsafe fn chunk8<
             let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
             let old = if FULL {
                 _mm256_loadu_si256(dptr as *const __m256i)
+            } else if PAIR {
+                load_pair(dptr, fb.width, live)
             } else {
                 _mm256_maskload_epi32(dptr as *const i32, live)
             };
@@ -399,6 +423,8 @@ unsafe fn chunk8<
                 if FULL {
                     let v = _mm256_blendv_epi8(old, q, pass);
                     _mm256_storeu_si256(dptr as *mut __m256i, v);
+                } else if PAIR {
+                    store_pair(dptr, fb.width, pass, q);
                 } else {
                     store_masked(dptr, fb.depth.len().saturating_sub(idx), pass, q);
                 }
@@ -414,10 +440,23 @@ unsafe fn chunk8<
         } else {
             let dst = if FULL {
                 _mm256_loadu_si256(cptr as *const __m256i)
+            } else if PAIR {
+                load_pair(cptr, fb.width, pass)
             } else {
                 _mm256_maskload_epi32(cptr as *const i32, pass)
             };
-            tally.reads += n as u64;
+            tally.reads += if PAIR {
+                // Counted as the two rows' spans count: a row's live lanes, when one of
+                // them passed the depth test.
+                let (l, m) = (
+                    _mm256_movemask_ps(_mm256_castsi256_ps(live)) as u32,
+                    _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u32,
+                );
+                let row = |r: u32| if m & r != 0 { (l & r).count_ones() } else { 0 };
+                u64::from(row(0x0F) + row(0xF0))
+            } else {
+                n as u64
+            };
             let out = match (BLEND, &plan.blend) {
                 (B_OVER, _) => over8(px, dst),
                 (_, Some(b)) => blend8(b, px, dst),
@@ -432,6 +471,8 @@ unsafe fn chunk8<
         };
         if FULL && (all || BLEND != B_NONE) {
             _mm256_storeu_si256(cptr as *mut __m256i, px);
+        } else if PAIR {
+            store_pair(cptr, fb.width, pass, px);
         } else {
             store_masked(cptr, fb.color.len().saturating_sub(idx), pass, px);
         }
@@ -480,7 +521,7 @@ pub unsafe fn shade_span<
         let mut fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
         let all = _mm256_set1_epi32(-1);
         while x + 8 <= end {
-            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, true>(
+            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, true, false>(
                 t,
                 plan,
                 fb,
@@ -499,7 +540,7 @@ pub unsafe fn shade_span<
             let n = end - x;
             let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
             let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
-            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false>(
+            chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false, false>(
                 t,
                 plan,
                 fb,
@@ -513,17 +554,103 @@ pub unsafe fn shade_span<
             );
         }
     }
-    stats.fragments += count;
-    let passed = if DEPTH != D_NONE {
-        stats.depth_reads += count;
-        stats.depth_failed += count - tally.passed;
-        tally.passed
-    } else {
-        count
-    };
-    if plan.color_mask[0] {
-        stats.color_writes += passed;
-        stats.color_reads += tally.reads;
+    tally.count::<DEPTH>(plan, count, stats);
+}
+
+/// Shades the pixels of a 4x2 block set in `mask` in one chunk: bits 0–3 are pixels
+/// `x0..x0 + 4` of row `py`, bits 4–7 the same columns of row `py + 1` (the row pairs of
+/// a narrow triangle, [`crate::raster`]). Each pixel gets exactly what [`shade_span`]
+/// gives it (every value is computed per lane from the pixel's own coordinates), and the
+/// stats count the same as the rows' spans would.
+///
+/// # Safety
+/// As [`shade_span`]; the pixels set in `mask` lie inside the target's rows and width.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn shade_pair<
+    const FMA: bool,
+    const DEPTH: u8,
+    const FLAT: bool,
+    const PERSP: bool,
+    const BLEND: u8,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x0: usize,
+    mask: u32,
+    stats: &mut Stats,
+) {
+    let count = mask.count_ones() as u64;
+    let mut tally = Tally::default();
+    // SAFETY: AVX2 (+FMA) context guaranteed by the caller; the live lanes are the pixels
+    // of `mask`, inside the target.
+    unsafe {
+        // Pixel coordinates are integers below 2^24: the sums are exact, the same values
+        // as a span's lanes.
+        let fx = _mm256_add_ps(
+            _mm256_set1_ps(x0 as f32),
+            _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 0.0, 1.0, 2.0, 3.0),
+        );
+        let fy = _mm256_add_ps(
+            _mm256_set1_ps(py as f32),
+            _mm256_setr_ps(0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0),
+        );
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let live = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(mask as i32), bits), bits);
+        let flat = _mm256_set1_epi32(u32::from_le_bytes(t.flat_u8) as i32);
+        let idx = (py - fb.y0) * fb.width + x0;
+        chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false, true>(
+            t,
+            plan,
+            fb,
+            idx,
+            fx,
+            fy,
+            count as usize,
+            live,
+            flat,
+            &mut tally,
+        );
+    }
+    tally.count::<DEPTH>(plan, count, stats);
+}
+
+/// Loads the `live` lanes of a 4x2 block: lanes 0–3 from `ptr`, lanes 4–7 from the row
+/// `stride` values further (0 in the other lanes).
+///
+/// # Safety
+/// AVX2 context; the live lanes lie inside the buffer.
+#[inline(always)]
+unsafe fn load_pair(ptr: *const i32, stride: usize, live: __m256i) -> __m256i {
+    // SAFETY: forwarded from the caller; masked loads touch live lanes only, and the second
+    // row's address is formed with wrapping arithmetic (it may lie past the buffer when
+    // none of its lanes is live).
+    unsafe {
+        let lo = _mm_maskload_epi32(ptr, _mm256_castsi256_si128(live));
+        let hi = _mm_maskload_epi32(
+            ptr.wrapping_add(stride),
+            _mm256_extracti128_si256::<1>(live),
+        );
+        _mm256_set_m128i(hi, lo)
+    }
+}
+
+/// Stores the `pass` lanes of a 4x2 block (see [`load_pair`]).
+///
+/// # Safety
+/// AVX2 context; the passing lanes lie inside the buffer.
+#[inline(always)]
+unsafe fn store_pair(ptr: *mut i32, stride: usize, pass: __m256i, v: __m256i) {
+    // SAFETY: as in `load_pair`.
+    unsafe {
+        _mm_maskstore_epi32(ptr, _mm256_castsi256_si128(pass), _mm256_castsi256_si128(v));
+        _mm_maskstore_epi32(
+            ptr.wrapping_add(stride),
+            _mm256_extracti128_si256::<1>(pass),
+            _mm256_extracti128_si256::<1>(v),
+        );
     }
 }
 

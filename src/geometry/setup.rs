@@ -57,7 +57,7 @@ impl Edge {
 
 /// Boxes at most this many pixels wide find a row's span by testing each pixel of the row
 /// (three integer steps per pixel) instead of three 64-bit divisions.
-const NARROW: i64 = 4;
+pub const NARROW: i64 = 4;
 
 impl SetupTriangle {
     /// Stores the provoking vertex's varyings for flat shading: `v(i)` for the first
@@ -71,36 +71,45 @@ impl SetupTriangle {
         self.flat_u8 = [u(0), u(1), u(2), u(3)];
     }
 
+    /// The covered pixels of row `py` among columns `x0..=x1` (a box at most [`NARROW`]
+    /// pixels wide; of a wider one, its first `NARROW` columns) as a bit mask, bit k for
+    /// pixel `x0 + k`. Exact: the pixels whose centre is inside all three edges, tested one
+    /// by one (three integer steps per pixel, no branch per pixel).
+    #[inline(always)]
+    pub fn row_mask(&self, x0: i64, x1: i64, py: i64) -> u32 {
+        // Written out rather than `self.edges.map(..)`: in the rasterizer's large
+        // specialised functions LLVM left `map` out of line, a call per row whose result
+        // came back through the stack.
+        let [e0, e1, e2] = &self.edges;
+        let e = [
+            e0.c + e0.b * ONE * py - e0.a * ONE * x0,
+            e1.c + e1.b * ONE * py - e1.a * ONE * x0,
+            e2.c + e2.b * ONE * py - e2.a * ONE * x0,
+        ];
+        let s = [e0.a * ONE, e1.a * ONE, e2.a * ONE];
+        let n = x1 - x0;
+        if n < 0 {
+            return 0;
+        }
+        let mut mask = 0u32;
+        let mut ek = e;
+        // At most NARROW pixels; no early exit, so the only branch is the box width.
+        for k in 0..=(n as u32).min(NARROW as u32 - 1) {
+            mask |= (((ek[0] > 0) & (ek[1] > 0) & (ek[2] > 0)) as u32) << k;
+            ek = [ek[0] - s[0], ek[1] - s[1], ek[2] - s[2]];
+        }
+        mask
+    }
+
     /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
     /// `(first, last)`; `None` when none is covered. Exact: the same set as intersecting
     /// the three edges' [`Edge::span`]s.
     #[inline(always)]
     pub fn row_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
         if x1 - x0 < NARROW {
-            // Bit k: pixel x0 + k is inside all three edges (no branch per pixel). The
-            // covered pixels of a row are consecutive, so the lowest and highest bits are
-            // the span's ends.
-            // Written out rather than `self.edges.map(..)`: in the rasterizer's large
-            // specialised functions LLVM left `map` out of line, a call per row whose
-            // result came back through the stack.
-            let [e0, e1, e2] = &self.edges;
-            let e = [
-                e0.c + e0.b * ONE * py - e0.a * ONE * x0,
-                e1.c + e1.b * ONE * py - e1.a * ONE * x0,
-                e2.c + e2.b * ONE * py - e2.a * ONE * x0,
-            ];
-            let s = [e0.a * ONE, e1.a * ONE, e2.a * ONE];
-            let n = x1 - x0;
-            if n < 0 {
-                return None;
-            }
-            let mut mask = 0u32;
-            let mut ek = e;
-            // At most NARROW pixels; no early exit, so the only branch is the box width.
-            for k in 0..=n as u32 {
-                mask |= (((ek[0] > 0) & (ek[1] > 0) & (ek[2] > 0)) as u32) << k;
-                ek = [ek[0] - s[0], ek[1] - s[1], ek[2] - s[2]];
-            }
+            // The covered pixels of a row are consecutive, so the lowest and highest bits
+            // of the row's mask are the span's ends.
+            let mask = self.row_mask(x0, x1, py);
             if mask == 0 {
                 return None;
             }

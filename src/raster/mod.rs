@@ -9,7 +9,7 @@ use crate::fragment::span::{
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::setup::SetupTriangle;
+use crate::geometry::setup::{SetupTriangle, NARROW};
 use crate::geometry::VARY_TEX;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
@@ -181,6 +181,20 @@ pub(crate) fn prefetch_row(
     }
 }
 
+/// Whether the AVX2 row walk draws boxes less than [`NARROW`] pixels wide as 4x2 blocks
+/// ([`crate::fragment::simd::shade_pair`]); `SOFTGL_NARROW=0` turns this off for A/B
+/// measurements (the pixels are the same either way).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn narrow_blocks() -> bool {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    #[cfg(test)]
+    if tests::SPANS_ONLY.with(|s| s.get()) {
+        return false;
+    }
+    *ON.get_or_init(|| std::env::var("SOFTGL_NARROW").as_deref() != Ok("0"))
+}
+
 /// The row walk for the AVX2 span shader: picks the span shader's variant once per
 /// triangle (depth function, blend, flat / smooth / perspective).
 ///
@@ -275,7 +289,35 @@ unsafe fn rows_simd_walk<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    use crate::fragment::simd::shade_span;
+    use crate::fragment::simd::{shade_pair, shade_span};
+    if b[2] - b[0] < NARROW && narrow_blocks() {
+        // A narrow box (most small triangles): its rows two at a time, each pair of rows
+        // as one chunk of 4x2 pixels, instead of a span per row.
+        let mut py = b[1];
+        while py <= b[3] {
+            let mut mask = t.row_mask(b[0], b[2], py);
+            if py < b[3] {
+                mask |= t.row_mask(b[0], b[2], py + 1) << NARROW;
+            }
+            if mask != 0 {
+                // SAFETY: forwarded from the caller; the pixels of `mask` lie in the box,
+                // which is inside the target.
+                unsafe {
+                    shade_pair::<FMA, D, FLAT, PERSP, B>(
+                        t,
+                        plan,
+                        fb,
+                        py as usize,
+                        b[0] as usize,
+                        mask,
+                        stats,
+                    )
+                }
+            }
+            py += 2;
+        }
+        return;
+    }
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
             // The span two rows down starts near this one's: ask for its first depth and
@@ -553,5 +595,123 @@ fn pixels_any<M: Madd>(
             (true, false) => shade_span::<M, true, false, false, true>(t, plan, fb, y, x, x, stats),
             (true, true) => shade_span::<M, true, true, false, true>(t, plan, fb, y, x, x, stats),
         }
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::*;
+    use crate::context::fragment_state::{BlendEquation, BlendFactor};
+    use crate::context::state::{Cap, CompareFunc, ShadeModel, State};
+    use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
+    use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult};
+    use crate::geometry::ClipVertex;
+    use std::cell::Cell;
+
+    thread_local! {
+        /// Set by a test on its own thread: the AVX2 walk draws every box span by span.
+        pub(super) static SPANS_ONLY: Cell<bool> = const { Cell::new(false) };
+    }
+
+    /// Draws `tris` into a framebuffer prefilled with pseudo-random colour and depth,
+    /// with narrow boxes as 4x2 blocks or not; returns the colour, depth and counters.
+    fn draw(
+        plan: &FragPlan,
+        tris: &[SetupTriangle],
+        blocks: bool,
+    ) -> (Vec<[u8; 4]>, Vec<u32>, Stats) {
+        let (w, h) = (37, 29);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba, DepthFormat::Z24, false);
+        let mut next = crate::test_rng::xorshift32(77);
+        for (c, d) in fb.color.iter_mut().zip(fb.depth.iter_mut()) {
+            *c = next().to_le_bytes();
+            *d = next() & 0xFF_FFFF;
+        }
+        SPANS_ONLY.with(|s| s.set(!blocks));
+        let mut stats = Stats::default();
+        {
+            let mut target = fb.target();
+            for t in tris {
+                let region = [0, 0, w as i64, h as i64];
+                raster_triangle(t, region, plan, &[], &mut target, &mut stats);
+            }
+        }
+        SPANS_ONLY.with(|s| s.set(false));
+        (fb.color.to_vec(), fb.depth.to_vec(), stats)
+    }
+
+    #[test]
+    fn narrow_blocks_match_spans_byte_for_byte() {
+        if !crate::cpu::isa().avx2() {
+            return;
+        }
+        let mut next = crate::test_rng::xorshift32(0x4e41_5252);
+        let mut unit = move || next() as f32 / u32::MAX as f32;
+        let mut narrow = 0;
+        for round in 0..96 {
+            let mut st = State::default();
+            st.caps.set(Cap::DepthTest, round % 4 != 0);
+            st.depth_func =
+                [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3];
+            st.depth_mask = round % 5 != 0;
+            st.shade_model = if round % 6 == 5 {
+                ShadeModel::Flat
+            } else {
+                ShadeModel::Smooth
+            };
+            st.caps.set(Cap::Blend, round % 4 >= 2);
+            let b = &mut st.frag.blend;
+            if round % 8 >= 6 {
+                (b.src_rgb, b.dst_rgb, b.eq_rgb) =
+                    (BlendFactor::DstColor, BlendFactor::One, BlendEquation::Add);
+            } else {
+                (b.src_rgb, b.dst_rgb) = (BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha);
+            }
+            (b.src_a, b.dst_a) = (b.src_rgb, b.dst_rgb);
+            let plan = FragPlan::new(&st, DepthFormat::Z24, false, crate::cpu::isa().fused());
+            let persp = round % 2 == 0;
+            // Small triangles (boxes of 1 to 6 pixels a side), some crossing the edges of
+            // the buffer, some thin and tall.
+            let mut tris = vec![];
+            while tris.len() < 300 {
+                let (cx, cy) = (unit() * 41.0 - 2.0, unit() * 33.0 - 2.0);
+                let (sx, sy) = (0.5 + unit() * 4.5, 0.5 + unit() * 4.5);
+                let v: [ClipVertex; 3] = std::array::from_fn(|_| {
+                    let mut p = ClipVertex {
+                        win: [
+                            cx + unit() * sx,
+                            cy + unit() * sy,
+                            unit(),
+                            if persp { 0.2 + unit() } else { 1.0 },
+                        ],
+                        ..ClipVertex::default()
+                    };
+                    for i in 0..4 {
+                        p.vary[i] = unit() * 1.2 - 0.1;
+                    }
+                    p
+                });
+                let mut t = SetupTriangle::default();
+                let cull = CullMode {
+                    front: false,
+                    back: false,
+                    front_ccw: true,
+                };
+                let r =
+                    setup_triangle_shaded([&v[0], &v[1], &v[2]], 4, cull, None, plan.flat, &mut t);
+                if r == SetupResult::Draw {
+                    narrow += usize::from(t.bbox[2] - t.bbox[0] < NARROW);
+                    tris.push(t);
+                }
+            }
+            let spans = draw(&plan, &tris, false);
+            let blocks = draw(&plan, &tris, true);
+            assert!(spans.0 == blocks.0, "colour differs in round {round}");
+            assert!(spans.1 == blocks.1, "depth differs in round {round}");
+            assert_eq!(spans.2, blocks.2, "counters differ in round {round}");
+            assert!(spans.2.fragments > 0);
+        }
+        // Most boxes are narrow, so the blocks were drawn.
+        assert!(narrow > 96 * 300 / 2, "{narrow}");
     }
 }
