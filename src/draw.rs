@@ -302,21 +302,23 @@ fn draw_inner<S: VertexSource + ?Sized>(
                 && ntris >= 2 * section
                 && rast.can_split()
             {
-                // The first section the ordinary way; the rest on two threads at once
-                // (`raster::batch::split`) when its triangles are small: then setting
-                // them up takes longer than drawing them.
+                // The first triangles the ordinary way; the rest on two threads at once
+                // (`raster::batch::split`) when they are small: then setting them up
+                // takes longer than drawing them.
+                let probe = split_probe().clamp(1, section);
+                rast.start_pool();
                 let boxes = rast.box_area_sum();
                 let tris = stats.tris_rasterized;
-                streamer.run(0, section, &mut state, &mut rast, stats);
+                streamer.run(0, probe, &mut state, &mut rast, stats);
                 let area = (rast.box_area_sum() - boxes) as f64;
                 let rasterized = (stats.tris_rasterized - tris) as f64;
                 if area <= SPLIT_MAX_AREA * rasterized {
-                    let rest = ntris - section;
+                    let rest = ntris - probe;
                     let geom = |state: &mut Box<StreamState>,
                                 s: usize,
                                 sink: &mut Binner,
                                 stats: &mut _| {
-                        let first = section * (s + 1);
+                        let first = probe + section * s;
                         streamer.run(first, section.min(ntris - first), state, sink, stats);
                     };
                     rast.split_geometry(
@@ -327,7 +329,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
                         geom,
                     );
                 } else {
-                    streamer.run(section, ntris - section, &mut state, &mut rast, stats);
+                    streamer.run(probe, ntris - probe, &mut state, &mut rast, stats);
                 }
             } else {
                 streamer.stream(streamer.mode, 0, n, &mut state, &mut rast, stats);
@@ -628,8 +630,23 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
 const BLOCK: usize = 32;
 
 /// A draw of GL_TRIANGLES is split over two threads when the mean pixel box of its first
-/// section's triangles is at most this: set-up then costs more than drawing.
+/// [`split_probe`] triangles is at most this: set-up then costs more than drawing.
 const SPLIT_MAX_AREA: f64 = 32.0;
+
+/// Triangles a draw that may be split sets up the ordinary way first, to measure their
+/// boxes (`SOFTGL_SPLIT_PROBE` for measurements; at most a section).
+fn split_probe() -> usize {
+    static P: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *P.get_or_init(|| {
+        std::env::var("SOFTGL_SPLIT_PROBE")
+            .ok()
+            .and_then(|v| v.parse::<usize>().ok())
+            .unwrap_or(SPLIT_PROBE)
+    })
+}
+
+/// [`split_probe`]'s default.
+const SPLIT_PROBE: usize = 1024;
 
 /// A draw in feedback or selection mode: the vertex stage, then the draw module's
 /// primitive stages into the feedback buffer or the hit record; nothing is rasterized.

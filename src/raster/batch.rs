@@ -339,6 +339,9 @@ enum Task {
     Bands(Arc<Work>),
     /// A closure on the draw thread's stack ([`Rasterizer::split_geometry`]), called once.
     Side(SideFn),
+    /// Nothing: gets a pool thread running, which then waits for the next task
+    /// ([`Rasterizer::start_pool`]).
+    Start,
 }
 
 /// A pointer to a closure that the draw thread keeps alive (and waits for, through
@@ -353,6 +356,11 @@ impl Job {
     /// Runs `work` on the pool, using a task that waits for more if there is one
     /// (see [`Job::run`]).
     fn hand_over(self: &Arc<Self>, work: Task, helpers: usize, stay: Duration) {
+        // Only a `Task::Start` is handed over without the draw thread waiting for it later;
+        // the next task waits until it has run (the pool thread is up by then).
+        if self.busy.load(Ordering::Acquire) {
+            self.wait_done(tuning().wait_spin);
+        }
         let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
         slot.busy = true;
         self.busy.store(true, Ordering::Release);
@@ -400,6 +408,7 @@ impl Job {
                     let f = unsafe { &*f.0 };
                     let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
                 }
+                Task::Start => {}
             }
             {
                 let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
@@ -625,6 +634,19 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             pairing: Pairing::default(),
             ring: pool.ring,
             box_sum: 0,
+        }
+    }
+
+    /// Gets a pool thread running and waiting for this draw's first task, when threads are
+    /// on and none is: a draw that will hand work to the pool after setting up its first
+    /// triangles (the probe of a geometry split) calls this first, so that the pool thread
+    /// starts (a thread is made, or a sleeping one wakes, a good part of a millisecond on
+    /// this kind of machine) while it sets them up. `SOFTGL_POOL_START=0` turns this off.
+    pub fn start_pool(&self) {
+        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        let on = *ON.get_or_init(|| std::env::var("SOFTGL_POOL_START").as_deref() != Ok("0"));
+        if on && self.threads && self.inflight.is_none() && !self.job.busy.load(Ordering::Acquire) {
+            self.job.hand_over(Task::Start, 1, self.tune.stay);
         }
     }
 
