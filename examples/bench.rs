@@ -73,6 +73,12 @@ impl Renderer {
     }
 }
 
+/// One-frame runs per scene and renderer unless `--wall-reps` says otherwise (or `--reps`
+/// asks for more): a one-frame process's wall time spreads by a third from run to run on
+/// this kind of machine, and medians of 9 runs moved the softgl/llvmpipe ratio of a scene
+/// by 0.07 between two runs minutes apart (blend_quads 0.23 and 0.16).
+const WALL_REPS: usize = 25;
+
 struct Config {
     filter_study: bool,
     reps: usize,
@@ -145,7 +151,7 @@ impl Config {
             timeout: Duration::from_secs(num("timeout", &timeout)? as u64),
             wall_reps: match wall_reps {
                 Some(s) => num("wall-reps", &s)?.max(1),
-                None => reps,
+                None => reps.max(WALL_REPS),
             },
             wall_size: num("wall-size", &wall_size)? as u32,
         })
