@@ -448,7 +448,9 @@ mod tests {
     fn min_max_of_every_length_and_position() {
         assert_eq!(min_max(&[]), None);
         for n in 1..70u32 {
-            let v: Vec<u32> = (0..n).map(|i| (i * 2_654_435_761u32) % 1000 + 5).collect();
+            let v: Vec<u32> = (0..n)
+                .map(|i| i.wrapping_mul(2_654_435_761) % 1000 + 5)
+                .collect();
             let want = (*v.iter().min().unwrap(), *v.iter().max().unwrap());
             assert_eq!(min_max(&v), Some(want));
             assert_eq!(min_max_lanes(&v), Some(want));

@@ -82,7 +82,8 @@ impl VertexStage {
             let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
             // `clamp_color`: `v.min(1.0).max(0.0)`, NaN to 1 (`minps` gives its second
             // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
-            // values), as the scalar code is compiled (the test below checks both).
+            // values), the comparisons the scalar `clamp_color` makes (the test below
+            // checks both).
             let clamp = |c: __m128| _mm_max_ps(_mm_min_ps(c, one), zero);
             for (j, o) in out.iter_mut().enumerate() {
                 verts.vertex_into(first + j, slot);

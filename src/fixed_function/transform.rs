@@ -54,11 +54,19 @@ pub struct VertexStage {
     pub texgen_eye: bool,
 }
 
-/// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1.
+/// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1, written as the
+/// comparisons `minps`/`maxps` make (the second operand unless the first is less/greater),
+/// so -0.0 becomes +0.0 at every optimisation level: `f32::max` leaves the sign of a zero
+/// result unspecified (an unoptimised build kept -0.0 where the release build and the
+/// vector block transform give +0.0).
 #[inline]
-#[allow(clippy::manual_clamp)] // f32::clamp keeps NaN; llvmpipe's min-then-max gives 1
 fn clamp_color(v: f32) -> f32 {
-    v.min(1.0).max(0.0)
+    let m = if v < 1.0 { v } else { 1.0 };
+    if m > 0.0 {
+        m
+    } else {
+        0.0
+    }
 }
 
 impl VertexStage {
