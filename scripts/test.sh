@@ -7,4 +7,11 @@ bash scripts/ensure-deps.sh
 cargo fmt --all -- --check
 cargo clippy --release --workspace --all-targets -- -D warnings
 cargo build --release --workspace
-cargo test --release --workspace
+# Integration tests (the C scenes against OSMesa among them) and examples on the release
+# library, as it ships; then the doc tests.
+cargo test --release --workspace --test '*' --examples
+cargo test --release --workspace --doc
+# The libraries' own unit tests, unoptimised with debug assertions and overflow checks
+# (Cargo.toml's `unit` profile): a release build of the unit-test harness is a second
+# full optimised compile of the library, half of CI's time.
+cargo test --profile unit --workspace --lib
