@@ -80,7 +80,7 @@ impl VertexStage {
             let scale = _mm_setr_ps(vp.scale[0], vp.scale[1], vp.scale[2], 0.0);
             let trans = _mm_setr_ps(vp.translate[0], vp.translate[1], vp.translate[2], 0.0);
             let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
-            // `clamp_color`: `v.min(1.0).max(0.0)`, NaN to 1 (`minps` gives its second
+            // `clamp_color`: `max(min(v, 1), 0)`, NaN to 1 (`minps` gives its second
             // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
             // values), the comparisons the scalar `clamp_color` makes (the test below
             // checks both).
