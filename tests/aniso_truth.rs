@@ -14,7 +14,7 @@
 //! llvmpipe's frame of the same level from the same run in both measures: mean absolute
 //! error no larger and PSNR no lower. Nothing is hard-coded from either renderer's output.
 //!
-//! Environment: `SOFTGL_LIB_DIR`, `CC` and `SOFTGL_REF_CPU_CAPS` as in
+//! Environment: `SOFTGL_LIB_DIR`, `CC`, `SOFTGL_ISA` and `SOFTGL_REF_CPU_CAPS` as in
 //! `tests/osmesa_compare.rs`. The images and the truth are written to
 //! `target/aniso_truth/`.
 
@@ -116,7 +116,7 @@ fn build_and_run(softgl: bool, out_dir: &Path) -> Vec<u8> {
     if !softgl {
         run.env("GALLIUM_DRIVER", "llvmpipe")
             .env("LP_NUM_THREADS", "1");
-        if let Ok(caps) = std::env::var("SOFTGL_REF_CPU_CAPS") {
+        if let Some(caps) = softgl::cpu::reference_cpu_caps() {
             run.env("GALLIUM_OVERRIDE_CPU_CAPS", caps);
         }
     }

@@ -197,6 +197,8 @@ fn run(bin: &Path, t: &Tutorial, out: &Path) -> Vec<PathBuf> {
         .env("SOFTGLUT_OUTPUT", out)
         .env("SOFTGLUT_KEYS", t.keys)
         .env("LP_NUM_THREADS", "1")
+        // Pins llvmpipe's fusing to softgl's level (softgl ignores the variable).
+        .envs(softgl::cpu::reference_cpu_caps().map(|c| ("GALLIUM_OVERRIDE_CPU_CAPS", c)))
         .env_remove("SOFTGLUT_SIZE")
         .env_remove("SOFTGLUT_STEP_MS")
         .output()

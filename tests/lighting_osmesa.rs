@@ -6,7 +6,7 @@
 //!
 //! Skipped (with a message) when `cc` or the system `libOSMesa` is missing. Environment:
 //! `SOFTGL_LIGHT_CASES` (default 3000), `SOFTGL_LIGHT_VERBOSE=1` (print mismatches),
-//! `SOFTGL_REF_CPU_CAPS=sse4.1` with `SOFTGL_FMA=0` (compare the non-FMA paths),
+//! `SOFTGL_ISA` (a level without FMA pins the reference to `sse4.1`, see `softgl::cpu`),
 //! `SOFTGL_LIGHT_FORCE_EYE=1` (force eye-space lighting, to show that it matters).
 
 use softgl::context::lighting_state::LightingState;
@@ -318,11 +318,7 @@ fn lighting_matches_osmesa() {
     let out = Command::new(&exe)
         .stdin(std::fs::File::open(&input_path).unwrap())
         .env("GALLIUM_DRIVER", "llvmpipe")
-        .envs(
-            std::env::var("SOFTGL_REF_CPU_CAPS")
-                .ok()
-                .map(|v| ("GALLIUM_OVERRIDE_CPU_CAPS", v)),
-        )
+        .envs(softgl::cpu::reference_cpu_caps().map(|v| ("GALLIUM_OVERRIDE_CPU_CAPS", v)))
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);

@@ -112,7 +112,7 @@ impl Viewport {
 pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
     if fma {
         #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("fma") {
+        if crate::cpu::has_fma_instructions() {
             return fused_inline(a, b, c);
         }
         a.mul_add(b, c)

@@ -16,16 +16,10 @@ use super::{Filter, Level, MipFilter, UnitPlan};
 /// f32(1/255), the unorm8 → float factor.
 pub const INV_255: f32 = 1.0 / 255.0;
 
-/// Whether this CPU fuses `llvm.fmuladd` (x86 FMA3).
+/// Whether the float lerps fuse, as llvmpipe's `llvm.fmuladd` does on an FMA CPU: the
+/// level's choice ([`crate::cpu::level`]).
 pub fn has_fma() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("fma")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
+    crate::cpu::isa().fused()
 }
 
 /// The 8.8 fixed-point lerp of the AoS path.

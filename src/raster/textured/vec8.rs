@@ -227,7 +227,7 @@ mod tests {
     /// when all eight are), far from it, and mixes of both, plus zeros, infinities and NaN.
     #[test]
     fn recip_is_the_division() {
-        if !std::arch::is_x86_feature_detected!("avx2") {
+        if !crate::cpu::isa().avx2() {
             return;
         }
         let one = 1.0f32.to_bits();
