@@ -11,8 +11,10 @@
 //! Points use the legacy GL rule (`lp_setup_point.c`, `legacy_points`): an integer-sized
 //! square of pixels around the snapped centre, all attributes constant.
 
+#[cfg(target_arch = "x86_64")]
+use super::variants::Fma;
+use super::variants::{with_flags, Base, Walks};
 use crate::cpu::Isa;
-use crate::fragment::span::{shade_span, Fused, Madd, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
@@ -489,30 +491,23 @@ pub fn shade_span_dispatch(
     x1: usize,
     stats: &mut Stats,
 ) {
-    match crate::cpu::isa() {
-        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma | Isa::Fma => unsafe { span_fma(t, plan, fb, py, x0, x1, stats) },
-        _ => span_any::<Unfused>(t, plan, fb, py, x0, x1, stats),
+    // SAFETY (both): `cpu::isa` only reports a variant whose features the CPU has. Lines
+    // and points are few pixels: the general span shader serves every plan, fused or not.
+    unsafe {
+        match crate::cpu::isa() {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2Fma | Isa::Fma => span_with::<Fma>(t, plan, fb, py, x0, x1, stats),
+            _ => span_with::<Base>(t, plan, fb, py, x0, x1, stats),
+        }
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn span_fma(
-    t: &SetupTriangle,
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
-    stats: &mut Stats,
-) {
-    span_any::<Fused>(t, plan, fb, py, x0, x1, stats)
-}
-
+/// Picks `W`'s span variant for the plan.
+///
+/// # Safety
+/// `W`'s instruction set is the CPU's ([`Walks`]).
 #[inline(always)]
-fn span_any<M: Madd>(
+unsafe fn span_with<W: Walks>(
     t: &SetupTriangle,
     plan: &FragPlan,
     fb: &mut Target<'_>,
@@ -523,32 +518,10 @@ fn span_any<M: Madd>(
 ) {
     // Flat shading keeps the perspective divide for the fog coordinate.
     let persp = t.persp && (!plan.flat || plan.fog.is_some());
-    match (plan.depth.is_some(), plan.flat, persp) {
-        (false, false, false) => {
-            shade_span::<M, false, false, false, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (false, false, true) => {
-            shade_span::<M, false, false, true, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (false, true, false) => {
-            shade_span::<M, false, true, false, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (false, true, true) => {
-            shade_span::<M, false, true, true, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (true, false, false) => {
-            shade_span::<M, true, false, false, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (true, false, true) => {
-            shade_span::<M, true, false, true, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (true, true, false) => {
-            shade_span::<M, true, true, false, true>(t, plan, fb, py, x0, x1, stats)
-        }
-        (true, true, true) => {
-            shade_span::<M, true, true, true, true>(t, plan, fb, py, x0, x1, stats)
-        }
-    }
+    with_flags!((plan.depth.is_some(), plan.flat, persp), |D, F, P| {
+        // SAFETY: forwarded from the caller.
+        unsafe { W::span::<D, F, P>(t, plan, fb, py, x0, x1, stats) }
+    })
 }
 
 #[cfg(test)]

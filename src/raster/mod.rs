@@ -5,7 +5,7 @@
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
+    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Madd, TexLanes, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -21,6 +21,11 @@ pub mod prims;
 pub mod smooth;
 pub mod stipple;
 mod textured;
+mod variants;
+
+#[cfg(target_arch = "x86_64")]
+use variants::SimdWalks;
+use variants::{with_flags, Walks};
 
 /// Rasterizes `t` inside `region` (y-down pixels, exclusive high end) and the target's
 /// rows; returns whether any row of the triangle's box was inside them.
@@ -42,29 +47,33 @@ pub fn raster_triangle(
         return false;
     }
     let b = [x_lo, y_lo, x_hi, y_hi];
-    match crate::cpu::isa() {
-        // SAFETY (all four): `cpu::isa` and `cpu::avx512` only report features the CPU has.
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma if crate::cpu::avx512() && simd_ok(plan, units, fb) => unsafe {
-            tri_avx512(t, b, plan, fb, stats)
-        },
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma => unsafe { tri_avx2_fma(t, b, plan, units, fb, stats) },
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2 => unsafe { tri_avx2(t, b, plan, units, fb, stats) },
-        #[cfg(target_arch = "x86_64")]
-        Isa::Fma => unsafe { tri_fma(t, b, plan, units, fb, stats) },
-        _ => tri_base(t, b, plan, units, fb, stats),
+    // SAFETY (all five): `cpu::isa` and `cpu::avx512` only report features the CPU has,
+    // and each arm runs that level's walks.
+    unsafe {
+        match crate::cpu::isa() {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2Fma if crate::cpu::avx512() && simd_ok(plan, units, fb) => {
+                rows_simd::<variants::Avx512>(t, b, plan, fb, stats)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2Fma => tri_simd::<variants::Avx2Fma>(t, b, plan, units, fb, stats),
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => tri_simd::<variants::Avx2>(t, b, plan, units, fb, stats),
+            #[cfg(target_arch = "x86_64")]
+            Isa::Fma => raster_rows::<variants::Fma>(t, b, plan, units, fb, stats),
+            _ => raster_rows::<variants::Base>(t, b, plan, units, fb, stats),
+        }
     }
     true
 }
 
-/// The row walk without SIMD: out of line, so that [`raster_triangle`], which every
-/// triangle passes through, keeps a small stack frame (inlined, its 8 KB frame was
-/// probed page by page on every call: a quarter of `raster_triangle`'s samples in a
-/// frame of 200k small triangles).
-#[inline(never)]
-fn tri_base(
+/// An AVX2 level: the AVX2 span shader when it covers the plan, else the general walks.
+///
+/// # Safety
+/// `W`'s instruction set is the CPU's ([`Walks`]).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn tri_simd<W: Walks + SimdWalks>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -72,61 +81,13 @@ fn tri_base(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    raster_rows::<Unfused>(t, b, plan, units, fb, stats)
-}
-
-/// The untextured span shader of [`tri_avx2_fma`] compiled for CPUs with AVX-512 (F, BW,
-/// VL, DQ): the same 256-bit code, which the compiler may then give masked moves and 32
-/// registers (measured 2–5% faster on the blend and depth scenes; the textured path,
-/// compiled the same way, measured slower and keeps the AVX2 copy). The arithmetic that
-/// reaches the pixels is the same instructions (no contraction), so the bytes are the same.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt")]
-unsafe fn tri_avx512(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    // SAFETY: this function is compiled with AVX2 and FMA (and more); the caller checked
-    // `simd_ok`.
-    unsafe { rows_simd::<true>(t, b, plan, fb, stats) }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]
-unsafe fn tri_avx2_fma(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    if simd_ok(plan, units, fb) {
-        // SAFETY: this function is compiled with AVX2 and FMA.
-        unsafe { rows_simd::<true>(t, b, plan, fb, stats) }
-    } else {
-        raster_rows::<Fused>(t, b, plan, units, fb, stats)
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
-unsafe fn tri_avx2(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    if simd_ok(plan, units, fb) {
-        // SAFETY: this function is compiled with AVX2.
-        unsafe { rows_simd::<false>(t, b, plan, fb, stats) }
-    } else {
-        raster_rows::<Unfused>(t, b, plan, units, fb, stats)
+    // SAFETY (both): forwarded from the caller.
+    unsafe {
+        if simd_ok(plan, units, fb) {
+            rows_simd::<W>(t, b, plan, fb, stats)
+        } else {
+            raster_rows::<W>(t, b, plan, units, fb, stats)
+        }
     }
 }
 
@@ -196,77 +157,52 @@ fn narrow_blocks() -> bool {
 }
 
 /// The row walk for the AVX2 span shader: picks the span shader's variant once per
-/// triangle (depth function, blend, flat / smooth / perspective).
+/// triangle (depth function, blend, flat / smooth / perspective) and calls `W`'s copy.
 ///
 /// # Safety
-/// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
+/// `W`'s instruction set is the CPU's ([`SimdWalks`]), and [`simd_ok`] holds.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn rows_simd<const FMA: bool>(
+unsafe fn rows_simd<W: SimdWalks>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    use crate::fragment::simd::{depth_code, D_ANY, D_LEQUAL, D_LESS, D_NONE};
-    // SAFETY (all four): forwarded from the caller.
-    unsafe {
-        match depth_code(plan) {
-            D_NONE => rows_simd_b::<FMA, D_NONE>(t, b, plan, fb, stats),
-            D_LESS => rows_simd_b::<FMA, D_LESS>(t, b, plan, fb, stats),
-            D_LEQUAL => rows_simd_b::<FMA, D_LEQUAL>(t, b, plan, fb, stats),
-            _ => rows_simd_b::<FMA, D_ANY>(t, b, plan, fb, stats),
-        }
+    use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
+    use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
+    let (flat, persp) = (plan.flat, !plan.flat && t.persp);
+    // SAFETY: forwarded from the caller.
+    macro_rules! blend {
+        ($d:expr) => {
+            match blend_code(plan) {
+                B_NONE => shapes!($d, B_NONE),
+                B_OVER => shapes!($d, B_OVER),
+                _ => shapes!($d, B_ANY),
+            }
+        };
     }
-}
-
-/// [`rows_simd`] after the depth function: picks the blend variant.
-///
-/// # Safety
-/// As [`rows_simd`].
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn rows_simd_b<const FMA: bool, const D: u8>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    use crate::fragment::simd::{blend_code, B_ANY, B_NONE, B_OVER};
-    // SAFETY (all three): forwarded from the caller.
-    unsafe {
-        match blend_code(plan) {
-            B_NONE => rows_simd_c::<FMA, D, B_NONE>(t, b, plan, fb, stats),
-            B_OVER => rows_simd_c::<FMA, D, B_OVER>(t, b, plan, fb, stats),
-            _ => rows_simd_c::<FMA, D, B_ANY>(t, b, plan, fb, stats),
-        }
+    macro_rules! shapes {
+        ($d:expr, $b:expr) => {
+            match (flat, persp) {
+                (true, _) => unsafe {
+                    W::simd::<{ $d }, true, false, { $b }>(t, b, plan, fb, stats)
+                },
+                (false, true) => unsafe {
+                    W::simd::<{ $d }, false, true, { $b }>(t, b, plan, fb, stats)
+                },
+                (false, false) => unsafe {
+                    W::simd::<{ $d }, false, false, { $b }>(t, b, plan, fb, stats)
+                },
+            }
+        };
     }
-}
-
-/// [`rows_simd`] after depth and blend: picks the colour variant and walks the rows.
-///
-/// # Safety
-/// As [`rows_simd`].
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn rows_simd_c<const FMA: bool, const D: u8, const B: u8>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    // SAFETY (all three): forwarded from the caller.
-    unsafe {
-        if plan.flat {
-            rows_simd_walk::<FMA, D, true, false, B>(t, b, plan, fb, stats)
-        } else if t.persp {
-            rows_simd_walk::<FMA, D, false, true, B>(t, b, plan, fb, stats)
-        } else {
-            rows_simd_walk::<FMA, D, false, false, B>(t, b, plan, fb, stats)
-        }
+    match depth_code(plan) {
+        D_NONE => blend!(D_NONE),
+        D_LESS => blend!(D_LESS),
+        D_LEQUAL => blend!(D_LEQUAL),
+        _ => blend!(D_ANY),
     }
 }
 
@@ -342,21 +278,13 @@ unsafe fn rows_simd_walk<
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn tri_fma(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    raster_rows::<Fused>(t, b, plan, units, fb, stats)
-}
-
+/// The general walks of level `W`: the texture fast path, the textured walk, or the
+/// general span shader, each variant picked here and called once.
+///
+/// # Safety
+/// `W`'s instruction set is the CPU's ([`Walks`]).
 #[inline(always)]
-fn raster_rows<M: Madd>(
+unsafe fn raster_rows<W: Walks>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -364,85 +292,29 @@ fn raster_rows<M: Madd>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
+    let depth = plan.depth.is_some();
+    // SAFETY (all): forwarded from the caller.
     if let Some(env) = textured::fast_env(plan, units) {
-        rows_tex_fast::<M>(t, b, plan, &units[0], env, fb, stats)
+        let u = &units[0];
+        with_flags!((depth, plan.flat, t.persp), |D, F, P| unsafe {
+            W::tex_fast::<D, F, P>(t, b, plan, u, env, fb, stats)
+        })
     } else if !units.is_empty() {
-        match (plan.depth.is_some(), plan.flat, t.persp) {
-            (false, false, false) => {
-                rows_textured::<M, false, false, false>(t, b, plan, units, fb, stats)
-            }
-            (false, false, true) => {
-                rows_textured::<M, false, false, true>(t, b, plan, units, fb, stats)
-            }
-            (false, true, false) => {
-                rows_textured::<M, false, true, false>(t, b, plan, units, fb, stats)
-            }
-            (false, true, true) => {
-                rows_textured::<M, false, true, true>(t, b, plan, units, fb, stats)
-            }
-            (true, false, false) => {
-                rows_textured::<M, true, false, false>(t, b, plan, units, fb, stats)
-            }
-            (true, false, true) => {
-                rows_textured::<M, true, false, true>(t, b, plan, units, fb, stats)
-            }
-            (true, true, false) => {
-                rows_textured::<M, true, true, false>(t, b, plan, units, fb, stats)
-            }
-            (true, true, true) => {
-                rows_textured::<M, true, true, true>(t, b, plan, units, fb, stats)
-            }
-        }
-    } else if plan.needs_full_path() {
-        rows_full::<M, true>(t, b, plan, fb, stats)
+        with_flags!((depth, plan.flat, t.persp), |D, F, P| unsafe {
+            W::textured::<D, F, P>(t, b, plan, units, fb, stats)
+        })
     } else {
-        rows_full::<M, false>(t, b, plan, fb, stats)
-    }
-}
-
-/// The texture fast path, specialised like `rows_textured`.
-#[inline(always)]
-fn rows_tex_fast<M: Madd>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    u: &UnitPlan<'_>,
-    env: crate::texture::fast::FastEnv,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    use textured::rows_tex_fast as r;
-    match (plan.depth.is_some(), plan.flat, t.persp) {
-        (false, false, false) => r::<M, false, false, false>(t, b, plan, u, env, fb, stats),
-        (false, false, true) => r::<M, false, false, true>(t, b, plan, u, env, fb, stats),
-        (false, true, false) => r::<M, false, true, false>(t, b, plan, u, env, fb, stats),
-        (false, true, true) => r::<M, false, true, true>(t, b, plan, u, env, fb, stats),
-        (true, false, false) => r::<M, true, false, false>(t, b, plan, u, env, fb, stats),
-        (true, false, true) => r::<M, true, false, true>(t, b, plan, u, env, fb, stats),
-        (true, true, false) => r::<M, true, true, false>(t, b, plan, u, env, fb, stats),
-        (true, true, true) => r::<M, true, true, true>(t, b, plan, u, env, fb, stats),
-    }
-}
-
-#[inline(always)]
-fn rows_full<M: Madd, const FULL: bool>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    // Flat colours need no divide, but the fog coordinate is still perspective-correct.
-    let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
-    match (plan.depth.is_some(), plan.flat, persp) {
-        (false, false, false) => rows::<M, false, false, false, FULL>(t, b, plan, fb, stats),
-        (false, false, true) => rows::<M, false, false, true, FULL>(t, b, plan, fb, stats),
-        (false, true, false) => rows::<M, false, true, false, FULL>(t, b, plan, fb, stats),
-        (false, true, true) => rows::<M, false, true, true, FULL>(t, b, plan, fb, stats),
-        (true, false, false) => rows::<M, true, false, false, FULL>(t, b, plan, fb, stats),
-        (true, false, true) => rows::<M, true, false, true, FULL>(t, b, plan, fb, stats),
-        (true, true, false) => rows::<M, true, true, false, FULL>(t, b, plan, fb, stats),
-        (true, true, true) => rows::<M, true, true, true, FULL>(t, b, plan, fb, stats),
+        // Flat colours need no divide, but the fog coordinate is still perspective-correct.
+        let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
+        if plan.needs_full_path() {
+            with_flags!((depth, plan.flat, persp), |D, F, P| unsafe {
+                W::full::<D, F, P, true>(t, b, plan, fb, stats)
+            })
+        } else {
+            with_flags!((depth, plan.flat, persp), |D, F, P| unsafe {
+                W::full::<D, F, P, false>(t, b, plan, fb, stats)
+            })
+        }
     }
 }
 
@@ -520,10 +392,8 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
                     continue;
                 }
                 let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
-                let v = match &rr {
-                    None => u.sample_quad(s, tt),
-                    Some([r0, r1]) => u.sample_quad_str(s, tt, [r0[l], r0[r], r1[l], r1[r]]),
-                };
+                let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
+                let v = variants::sample_quad::<M>(u, s, tt, rq);
                 texels[0][k][l] = v[0];
                 texels[0][k][r] = v[1];
                 texels[1][k][l] = v[2];
@@ -544,56 +414,6 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
                     stats,
                 );
             }
-        }
-    }
-}
-
-/// Shades single pixels `(x, y)` (y-down, inside the framebuffer) with the planes of `t`:
-/// the entry for lines and points, which compute their own coverage.
-pub fn shade_pixels(
-    t: &SetupTriangle,
-    pixels: &[(usize, usize)],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    match crate::cpu::isa() {
-        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma | Isa::Fma => unsafe { pixels_fma(t, pixels, plan, fb, stats) },
-        _ => pixels_any::<Unfused>(t, pixels, plan, fb, stats),
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn pixels_fma(
-    t: &SetupTriangle,
-    pixels: &[(usize, usize)],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    pixels_any::<Fused>(t, pixels, plan, fb, stats)
-}
-
-#[inline(always)]
-fn pixels_any<M: Madd>(
-    t: &SetupTriangle,
-    pixels: &[(usize, usize)],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    // Lines and points are few pixels: the general path serves every plan.
-    for &(x, y) in pixels {
-        match (plan.depth.is_some(), plan.flat) {
-            (false, false) => {
-                shade_span::<M, false, false, false, true>(t, plan, fb, y, x, x, stats)
-            }
-            (false, true) => shade_span::<M, false, true, false, true>(t, plan, fb, y, x, x, stats),
-            (true, false) => shade_span::<M, true, false, false, true>(t, plan, fb, y, x, x, stats),
-            (true, true) => shade_span::<M, true, true, false, true>(t, plan, fb, y, x, x, stats),
         }
     }
 }

@@ -11,12 +11,11 @@
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
+use super::variants::{with_flags, Walks};
 use crate::context::raster_state::PolygonStipple;
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
-use crate::fragment::span::{
-    shade_chunk, tex_coords, ChunkColors, Fused, Madd, TexLanes, Unfused, LANES,
-};
+use crate::fragment::span::{shade_chunk, tex_coords, ChunkColors, Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Edge, SetupTriangle};
@@ -98,30 +97,25 @@ pub fn shade_covered<C: Cover>(
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
-    match crate::cpu::isa() {
-        // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2Fma | Isa::Fma => unsafe { covered_fma(t, b, cover, plan, units, fb, stats) },
-        _ => covered_any::<Unfused, C>(t, b, cover, plan, units, fb, stats),
+    // SAFETY (both): `cpu::isa` only reports a variant whose features the CPU has. The
+    // textured walk of lines and points runs no AVX2 code: only the fusing differs.
+    unsafe {
+        match crate::cpu::isa() {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2Fma | Isa::Fma => {
+                covered_with::<super::variants::Fma, C>(t, b, cover, plan, units, fb, stats)
+            }
+            _ => covered_with::<super::variants::Base, C>(t, b, cover, plan, units, fb, stats),
+        }
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn covered_fma<C: Cover>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    cover: &C,
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    covered_any::<Fused, C>(t, b, cover, plan, units, fb, stats)
-}
-
+/// Picks `W`'s variant for the plan.
+///
+/// # Safety
+/// `W`'s instruction set is the CPU's ([`Walks`]).
 #[inline(always)]
-fn covered_any<M: Madd, C: Cover>(
+unsafe fn covered_with<W: Walks, C: Cover>(
     t: &SetupTriangle,
     b: [i64; 4],
     cover: &C,
@@ -130,25 +124,10 @@ fn covered_any<M: Madd, C: Cover>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    let (d, f, p) = (plan.depth.is_some(), plan.flat, t.persp);
-    match (d, f, p) {
-        (false, false, false) => {
-            rows::<M, C, false, false, false>(t, b, cover, plan, units, fb, stats)
-        }
-        (false, false, true) => {
-            rows::<M, C, false, false, true>(t, b, cover, plan, units, fb, stats)
-        }
-        (false, true, false) => {
-            rows::<M, C, false, true, false>(t, b, cover, plan, units, fb, stats)
-        }
-        (false, true, true) => rows::<M, C, false, true, true>(t, b, cover, plan, units, fb, stats),
-        (true, false, false) => {
-            rows::<M, C, true, false, false>(t, b, cover, plan, units, fb, stats)
-        }
-        (true, false, true) => rows::<M, C, true, false, true>(t, b, cover, plan, units, fb, stats),
-        (true, true, false) => rows::<M, C, true, true, false>(t, b, cover, plan, units, fb, stats),
-        (true, true, true) => rows::<M, C, true, true, true>(t, b, cover, plan, units, fb, stats),
-    }
+    with_flags!((plan.depth.is_some(), plan.flat, t.persp), |D, F, P| {
+        // SAFETY: forwarded from the caller.
+        unsafe { W::covered::<C, D, F, P>(t, b, cover, plan, units, fb, stats) }
+    })
 }
 
 /// The covered range of row `py` inside `b`.
@@ -164,7 +143,7 @@ fn row<C: Cover>(cover: &C, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
 
 /// Pairs of rows in 8-pixel chunks of 2x2 quads, as `rows_textured` walks triangles.
 #[inline(always)]
-fn rows<M: Madd, C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+pub(super) fn rows<M: Madd, C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
     b: [i64; 4],
     cover: &C,
@@ -206,9 +185,11 @@ fn rows<M: Madd, C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: boo
                         if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
                             continue;
                         }
-                        let v = u.sample_quad(
+                        let v = super::variants::sample_quad::<M>(
+                            u,
                             [s0[l], s0[r], s1[l], s1[r]],
                             [t0[l], t0[r], t1[l], t1[r]],
+                            None,
                         );
                         texels[0][k][l] = v[0];
                         texels[0][k][r] = v[1];

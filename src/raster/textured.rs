@@ -143,7 +143,13 @@ impl Iterator for Chunks<'_> {
 
 /// Shades the rows `b` of `t` through the fast path.
 #[inline(always)]
-pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+pub(super) fn rows_tex_fast<
+    M: Madd,
+    const AVX2: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -155,11 +161,12 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
     // Texels of the current chunk; lanes of skipped quads keep stale values, never used.
     let mut tex = [[[0u8; 4]; LANES]; 2];
     let reads_frag = env.reads_frag();
-    let vector = crate::texture::fast_avx2::available();
+    let vector = AVX2 && crate::texture::fast_avx2::available();
     #[cfg(target_arch = "x86_64")]
     let simd = vector && crate::fragment::simd_tex::plan_ok(plan, fb);
+    // `AVX2` is a constant: the other levels' copies do not contain the 8-wide code.
     #[cfg(target_arch = "x86_64")]
-    if simd && fast::vec8_enabled() {
+    if AVX2 && simd && fast::vec8_enabled() {
         // SAFETY: `simd` implies AVX2, FMA exactly when `M::FUSED` in the callers that
         // reach here, and a plan `plan_ok` accepts.
         unsafe {
@@ -191,13 +198,13 @@ pub(super) fn rows_tex_fast<M: Madd, const DEPTH: bool, const FLAT: bool, const 
         ];
         let (s0, t0) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[0], &oow[0]);
         let (s1, t1) = tex_coords_oow::<M, PERSP>(t, VARY_TEX, fx, fy[1], &oow[1]);
-        fast::chunk_u8(u, &[s0, s1], &[t0, t1], &live, vector, &mut tex);
+        fast::chunk_u8::<AVX2>(u, &[s0, s1], &[t0, t1], &live, vector, &mut tex);
         for r in 0..2 {
             if !live[r].iter().any(|&l| l) {
                 continue;
             }
             #[cfg(target_arch = "x86_64")]
-            if simd {
+            if AVX2 && simd {
                 let py = (qy + r as i64) as usize;
                 let (x, l, tx) = (x as usize, &live[r], &tex[r]);
                 // SAFETY: `simd` implies AVX2 (`fast_avx2::available`), FMA exactly when

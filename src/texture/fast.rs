@@ -196,13 +196,14 @@ fn quad_u8_levels(
 
 /// The 8-bit texture values of a chunk: two rows (`s[r]`, `t[r]`) of [`LANES`] pixels,
 /// [`LANES`]` / 2` quads, each with its own LOD; only quads with a `live` pixel are
-/// sampled (the other lanes of `out` keep their values). With `vector` (the CPU has
-/// AVX2, [`fast_avx2::available`]) and one filter and pair of levels for every live quad,
-/// each row is sampled 8 pixels at once by [`fast_avx2::RowSampler`]; the scalar code
-/// ([`quad_u8`]) gives the same bytes and serves every other case.
+/// sampled (the other lanes of `out` keep their values). With `VECTOR` (the caller is
+/// compiled for AVX2; a constant, so other callers contain no AVX2 code), `vector` (the
+/// CPU has AVX2, [`fast_avx2::available`]) and one filter and pair of levels for every
+/// live quad, each row is sampled 8 pixels at once by [`fast_avx2::RowSampler`]; the
+/// scalar code ([`quad_u8`]) gives the same bytes and serves every other case.
 #[inline(always)]
 #[allow(clippy::needless_range_loop)]
-pub fn chunk_u8(
+pub fn chunk_u8<const VECTOR: bool>(
     p: &UnitPlan<'_>,
     s: &[[f32; LANES]; 2],
     t: &[[f32; LANES]; 2],
@@ -216,7 +217,7 @@ pub fn chunk_u8(
     if !p.needs_lod {
         let lv = select_levels(p, super::Lod::MAG);
         let wmip = [(lv.3 * 256.0) as i32; LANES];
-        if vector && vector_rows(p, lv.0, lv.1, lv.2, &wmip, s, t, live, out) {
+        if VECTOR && vector && vector_rows(p, lv.0, lv.1, lv.2, &wmip, s, t, live, out) {
             return;
         }
         for j in 0..QUADS {
@@ -257,7 +258,7 @@ pub fn chunk_u8(
             Some(k) => uniform &= k == (lv.0, lv.1, lv.2),
         }
     }
-    if let (true, true, Some((f, l0, l1))) = (vector, uniform, key) {
+    if let (true, true, true, Some((f, l0, l1))) = (VECTOR, vector, uniform, key) {
         let mut wmip = [0i32; LANES];
         for (j, lv) in sel.iter().enumerate() {
             if let Some(lv) = lv {
@@ -469,7 +470,7 @@ mod tests {
             let mut outs = Vec::new();
             for vector in [false, super::fast_avx2::available()] {
                 let mut out = [[[0u8; 4]; LANES]; 2];
-                chunk_u8(p, s, t, live, vector, &mut out);
+                chunk_u8::<true>(p, s, t, live, vector, &mut out);
                 outs.push((if vector { "vector" } else { "scalar" }, out));
             }
             #[cfg(target_arch = "x86_64")]

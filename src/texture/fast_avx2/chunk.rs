@@ -436,7 +436,7 @@ unsafe fn fallback(u: &UnitPlan<'_>, s: [__m256; 2], t: [__m256; 2], lm: [u32; 2
                 *l = (lm[r] >> i) & 1 == 1;
             }
         }
-        fast::chunk_u8(u, &sa, &ta, &live, true, &mut out);
+        fast::chunk_u8::<true>(u, &sa, &ta, &live, true, &mut out);
         [
             _mm256_loadu_si256(out[0].as_ptr() as *const __m256i),
             _mm256_loadu_si256(out[1].as_ptr() as *const __m256i),

@@ -1,0 +1,514 @@
+//! The compiled copies of the row walks, one per instruction-set level, each variant its
+//! own function.
+//!
+//! A row walk is monomorphised over the plan's booleans (depth test, flat, perspective,
+//! …) so that its per-pixel loop has no state branches, and compiled once per
+//! [`crate::cpu::Isa`] so that it uses that level's instructions and fuses exactly when
+//! llvmpipe does. Each (level, variant) pair is one `#[inline(never)]` function here,
+//! generated from one body by [`walks!`]: the dispatch that picks it is a few matches and
+//! one call, made once per triangle (or line, or span of a line).
+//!
+//! ## Why each variant is its own function
+//! These walks used to be inlined whole into one entry function per level. LLVM optimises
+//! a function on one thread and its cost grows faster than the function: four entry
+//! points of 2.4–2.9 MB of machine code each made the release build take 20 minutes on
+//! two cores, and unoptimised they needed stack frames of 4–6 MB (a test thread has 2).
+//! As separate functions the same code compiles in parallel codegen units, each frame
+//! holds one variant's locals, and the call costs one jump per triangle.
+
+use super::prim_tex::Cover;
+use crate::fragment::span::{Fused, Unfused};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::SetupTriangle;
+use crate::stats::Stats;
+use crate::texture::fast::FastEnv;
+use crate::texture::UnitPlan;
+
+/// Expands `$body` once for each value of the three run-time booleans, with `$a`, `$b`
+/// and `$c` bound to them as constants: how a row walk's variant is chosen.
+macro_rules! with_flags {
+    (($x:expr, $y:expr, $z:expr), |$a:ident, $b:ident, $c:ident| $body:expr) => {
+        match ($x, $y, $z) {
+            (false, false, false) => with_flags!(@ false, false, false, $a, $b, $c, $body),
+            (false, false, true) => with_flags!(@ false, false, true, $a, $b, $c, $body),
+            (false, true, false) => with_flags!(@ false, true, false, $a, $b, $c, $body),
+            (false, true, true) => with_flags!(@ false, true, true, $a, $b, $c, $body),
+            (true, false, false) => with_flags!(@ true, false, false, $a, $b, $c, $body),
+            (true, false, true) => with_flags!(@ true, false, true, $a, $b, $c, $body),
+            (true, true, false) => with_flags!(@ true, true, false, $a, $b, $c, $body),
+            (true, true, true) => with_flags!(@ true, true, true, $a, $b, $c, $body),
+        }
+    };
+    (@ $va:literal, $vb:literal, $vc:literal, $a:ident, $b:ident, $c:ident, $body:expr) => {{
+        const $a: bool = $va;
+        const $b: bool = $vb;
+        const $c: bool = $vc;
+        $body
+    }};
+}
+pub(crate) use with_flags;
+
+/// The row walks of one instruction-set level.
+///
+/// # Safety
+/// Every method is compiled for the level's instruction set: call it only when
+/// [`crate::cpu::isa`] reports that level (or one with all of its features).
+pub(crate) trait Walks {
+    /// Untextured triangle rows through the general span shader
+    /// ([`super::rows`]); `FULL` when the plan needs the whole per-fragment pipeline.
+    ///
+    /// # Safety
+    /// See the trait.
+    unsafe fn full<const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool>(
+        t: &SetupTriangle,
+        b: [i64; 4],
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+
+    /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
+    ///
+    /// # Safety
+    /// See the trait.
+    unsafe fn textured<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+        t: &SetupTriangle,
+        b: [i64; 4],
+        plan: &FragPlan,
+        units: &[UnitPlan<'_>],
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+
+    /// Triangle rows through the one-unit texture fast path
+    /// ([`super::textured::rows_tex_fast`]).
+    ///
+    /// # Safety
+    /// See the trait.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn tex_fast<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+        t: &SetupTriangle,
+        b: [i64; 4],
+        plan: &FragPlan,
+        u: &UnitPlan<'_>,
+        env: FastEnv,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+
+    /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
+    ///
+    /// # Safety
+    /// See the trait.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn covered<C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+        t: &SetupTriangle,
+        b: [i64; 4],
+        cover: &C,
+        plan: &FragPlan,
+        units: &[UnitPlan<'_>],
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+
+    /// One span of a line, point or stippled polygon through the general span shader.
+    ///
+    /// # Safety
+    /// See the trait.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn span<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+        t: &SetupTriangle,
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        py: usize,
+        x0: usize,
+        x1: usize,
+        stats: &mut Stats,
+    );
+}
+
+/// The AVX2 span shader's row walk ([`super::rows_simd_walk`]), for the AVX2 levels.
+///
+/// # Safety
+/// As [`Walks`]; the caller also checked [`super::simd_ok`].
+#[cfg(target_arch = "x86_64")]
+pub(crate) trait SimdWalks {
+    /// The rows of one span-shader variant: depth code `D`, blend code `B`.
+    ///
+    /// # Safety
+    /// See the trait.
+    unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
+        t: &SetupTriangle,
+        b: [i64; 4],
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+}
+
+/// Defines a level's [`Walks`]: each walk is a thin `#[inline(never)]` function compiled
+/// with the level's target features around the one inlined body, in a module of its own
+/// (`$module::walk`) so that it lands in a codegen unit of its own: rustc places a
+/// generic function's instances in its defining module's unit, and LLVM compiles a unit
+/// on one thread, so one module holding every variant compiled on one core. The trait's
+/// methods only forward.
+macro_rules! walks {
+    ($(#[$doc:meta])* $name:ident, $module:ident, $m:ty, avx2 = $avx2:literal, [$($feat:tt)*]) => {
+        $(#[$doc])*
+        pub(crate) struct $name;
+
+        /// The walks of one level, a module (and codegen unit) each.
+        mod $module {
+            pub(super) mod full {
+                use super::super::*;
+                $($feat)*
+                #[inline(never)]
+                pub(crate) unsafe fn run<
+                    const DEPTH: bool,
+                    const FLAT: bool,
+                    const PERSP: bool,
+                    const FULL: bool,
+                >(
+                    t: &SetupTriangle,
+                    b: [i64; 4],
+                    plan: &FragPlan,
+                    fb: &mut Target<'_>,
+                    stats: &mut Stats,
+                ) {
+                    crate::raster::rows::<$m, DEPTH, FLAT, PERSP, FULL>(t, b, plan, fb, stats)
+                }
+            }
+
+            pub(super) mod textured {
+                use super::super::*;
+                $($feat)*
+                #[inline(never)]
+                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                    t: &SetupTriangle,
+                    b: [i64; 4],
+                    plan: &FragPlan,
+                    units: &[UnitPlan<'_>],
+                    fb: &mut Target<'_>,
+                    stats: &mut Stats,
+                ) {
+                    crate::raster::rows_textured::<$m, DEPTH, FLAT, PERSP>(
+                        t, b, plan, units, fb, stats,
+                    )
+                }
+            }
+
+            pub(super) mod tex_fast {
+                use super::super::*;
+                $($feat)*
+                #[inline(never)]
+                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                    t: &SetupTriangle,
+                    b: [i64; 4],
+                    plan: &FragPlan,
+                    u: &UnitPlan<'_>,
+                    env: FastEnv,
+                    fb: &mut Target<'_>,
+                    stats: &mut Stats,
+                ) {
+                    crate::raster::textured::rows_tex_fast::<$m, $avx2, DEPTH, FLAT, PERSP>(
+                        t, b, plan, u, env, fb, stats,
+                    )
+                }
+            }
+
+            pub(super) mod covered {
+                use super::super::*;
+                $($feat)*
+                #[inline(never)]
+                pub(crate) unsafe fn run<
+                    C: Cover,
+                    const DEPTH: bool,
+                    const FLAT: bool,
+                    const PERSP: bool,
+                >(
+                    t: &SetupTriangle,
+                    b: [i64; 4],
+                    cover: &C,
+                    plan: &FragPlan,
+                    units: &[UnitPlan<'_>],
+                    fb: &mut Target<'_>,
+                    stats: &mut Stats,
+                ) {
+                    crate::raster::prim_tex::rows::<$m, C, DEPTH, FLAT, PERSP>(
+                        t, b, cover, plan, units, fb, stats,
+                    )
+                }
+            }
+
+            pub(super) mod span {
+                use super::super::*;
+                $($feat)*
+                #[inline(never)]
+                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                    t: &SetupTriangle,
+                    plan: &FragPlan,
+                    fb: &mut Target<'_>,
+                    py: usize,
+                    x0: usize,
+                    x1: usize,
+                    stats: &mut Stats,
+                ) {
+                    crate::fragment::span::shade_span::<$m, DEPTH, FLAT, PERSP, true>(
+                        t, plan, fb, py, x0, x1, stats,
+                    )
+                }
+            }
+        }
+
+        impl Walks for $name {
+            #[inline(always)]
+            unsafe fn full<
+                const DEPTH: bool,
+                const FLAT: bool,
+                const PERSP: bool,
+                const FULL: bool,
+            >(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                plan: &FragPlan,
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe { $module::full::run::<DEPTH, FLAT, PERSP, FULL>(t, b, plan, fb, stats) }
+            }
+
+            #[inline(always)]
+            unsafe fn textured<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                plan: &FragPlan,
+                units: &[UnitPlan<'_>],
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe {
+                    $module::textured::run::<DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+                }
+            }
+
+            #[inline(always)]
+            unsafe fn tex_fast<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                plan: &FragPlan,
+                u: &UnitPlan<'_>,
+                env: FastEnv,
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe {
+                    $module::tex_fast::run::<DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
+                }
+            }
+
+            #[inline(always)]
+            unsafe fn covered<
+                C: Cover,
+                const DEPTH: bool,
+                const FLAT: bool,
+                const PERSP: bool,
+            >(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                cover: &C,
+                plan: &FragPlan,
+                units: &[UnitPlan<'_>],
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe {
+                    $module::covered::run::<C, DEPTH, FLAT, PERSP>(
+                        t, b, cover, plan, units, fb, stats,
+                    )
+                }
+            }
+
+            #[inline(always)]
+            unsafe fn span<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+                t: &SetupTriangle,
+                plan: &FragPlan,
+                fb: &mut Target<'_>,
+                py: usize,
+                x0: usize,
+                x1: usize,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe { $module::span::run::<DEPTH, FLAT, PERSP>(t, plan, fb, py, x0, x1, stats) }
+            }
+        }
+    };
+}
+
+/// Defines a level's [`SimdWalks`] like [`walks!`], in module `$module`.
+#[cfg(target_arch = "x86_64")]
+macro_rules! simd_walks {
+    ($name:ident, $module:ident, fma = $fma:literal, [$($feat:tt)*]) => {
+        /// The AVX2 span shader's walk of one level, a module (and codegen unit) of its own.
+        mod $module {
+            use super::*;
+            $($feat)*
+            #[inline(never)]
+            pub(crate) unsafe fn run<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                plan: &FragPlan,
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: this function is compiled with AVX2 (and FMA when `$fma`).
+                unsafe {
+                    crate::raster::rows_simd_walk::<$fma, D, FLAT, PERSP, B>(t, b, plan, fb, stats)
+                }
+            }
+        }
+
+        impl SimdWalks for $name {
+            #[inline(always)]
+            unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
+                t: &SetupTriangle,
+                b: [i64; 4],
+                plan: &FragPlan,
+                fb: &mut Target<'_>,
+                stats: &mut Stats,
+            ) {
+                // SAFETY: forwarded from the caller.
+                unsafe { $module::run::<D, FLAT, PERSP, B>(t, b, plan, fb, stats) }
+            }
+        }
+    };
+}
+
+walks!(
+    /// Baseline x86-64 (SSE2), or another architecture: not fused.
+    Base,
+    base,
+    Unfused,
+    avx2 = false,
+    []
+);
+
+#[cfg(target_arch = "x86_64")]
+walks!(
+    /// FMA without AVX2: fused, 128-bit.
+    Fma,
+    fma,
+    Fused,
+    avx2 = false,
+    [#[target_feature(enable = "fma")]]
+);
+
+#[cfg(target_arch = "x86_64")]
+walks!(
+    /// AVX2 (and the bit instructions every AVX2 CPU has), not fused.
+    Avx2,
+    avx2,
+    Unfused,
+    avx2 = true,
+    [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]]
+);
+
+#[cfg(target_arch = "x86_64")]
+walks!(
+    /// AVX2 and FMA: the common case.
+    Avx2Fma,
+    avx2fma,
+    Fused,
+    avx2 = true,
+    [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]]
+);
+
+/// The untextured span shader of [`Avx2Fma`] compiled for CPUs with AVX-512 (F, BW, VL,
+/// DQ): the same 256-bit code, which the compiler may then give masked moves and 32
+/// registers (measured 2–5% faster on the blend and depth scenes; the textured path,
+/// compiled the same way, measured slower and keeps the AVX2 copy). The arithmetic that
+/// reaches the pixels is the same instructions (no contraction), so the bytes are the same.
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Avx512;
+
+#[cfg(target_arch = "x86_64")]
+simd_walks!(
+    Avx2,
+    avx2_simd,
+    fma = false,
+    [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]]
+);
+
+#[cfg(target_arch = "x86_64")]
+simd_walks!(
+    Avx2Fma,
+    avx2fma_simd,
+    fma = true,
+    [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]]
+);
+
+#[cfg(target_arch = "x86_64")]
+simd_walks!(
+    Avx512,
+    avx512_simd,
+    fma = true,
+    [#[target_feature(
+        enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt"
+    )]]
+);
+
+/// Samples a 2x2 quad of unit `u` (with `r` for 3D, cube-map and depth textures) through
+/// the sampler compiled once per fusing and called out of line: the sampler serves every
+/// target, filter and wrap mode, and inlined into each of the textured walks' variants
+/// it was most of their code. One call per quad (four pixels) costs little beside the
+/// sampling; the bytes do not change (the sampler fuses by `u.fma` either way, and the
+/// FMA copy only makes the fused lerps an instruction instead of a call).
+#[inline(always)]
+pub(crate) fn sample_quad<M: crate::fragment::span::Madd>(
+    u: &UnitPlan<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: Option<[f32; 4]>,
+) -> [[f32; 4]; 4] {
+    #[cfg(target_arch = "x86_64")]
+    if M::FUSED {
+        // SAFETY: fused walks run only on the levels with FMA (`cpu::isa`).
+        return unsafe { sample_quad_fma(u, s, t, r) };
+    }
+    sample_quad_base(u, s, t, r)
+}
+
+/// [`sample_quad`] for baseline x86-64.
+#[inline(never)]
+fn sample_quad_base(
+    u: &UnitPlan<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: Option<[f32; 4]>,
+) -> [[f32; 4]; 4] {
+    match r {
+        None => u.sample_quad(s, t),
+        Some(r) => u.sample_quad_str(s, t, r),
+    }
+}
+
+/// [`sample_quad`] compiled with FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+#[inline(never)]
+unsafe fn sample_quad_fma(
+    u: &UnitPlan<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: Option<[f32; 4]>,
+) -> [[f32; 4]; 4] {
+    match r {
+        None => u.sample_quad(s, t),
+        Some(r) => u.sample_quad_str(s, t, r),
+    }
+}
