@@ -1,17 +1,44 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds the library and runs every
-# test (unit, API, header, and the C scenes compared against Mesa's OSMesa).
+# test (unit, API, header, and the C scenes compared against Mesa's OSMesa) under every
+# instruction-set level this CPU supports (SOFTGL_ISA, see src/cpu.rs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
 cargo fmt --all -- --check
 cargo clippy --release --workspace --all-targets -- -D warnings
-cargo build --release --workspace
+cargo build --release --workspace --examples
+
+# The levels softgl can run here, lowest first ("scalar ... avx512"); the last is the
+# default. Every dispatched path of the library is one of them.
+read -r -a levels <<<"$(target/release/examples/isa_levels)"
+best="${levels[${#levels[@]}-1]}"
+echo "test.sh: ISA levels on this CPU: ${levels[*]} (default $best)"
+
 # Integration tests (the C scenes against OSMesa among them) and examples on the release
-# library, as it ships; then the doc tests.
-cargo test --release --workspace --test '*' --examples
+# library, as it ships, once per level, the default first. A level without FMA runs the
+# reference llvmpipe with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, so that both sides fuse alike
+# (src/cpu.rs); the reference's output is reused between levels that pin it alike. Each
+# level's raw outputs are kept for the cross-level check below.
+outs=target/ctests/levels
+rm -rf "$outs"
+order=("$best")
+for level in "${levels[@]}"; do
+  [ "$level" != "$best" ] && order+=("$level")
+done
+for level in "${order[@]}"; do
+  echo "test.sh: integration tests with SOFTGL_ISA=$level"
+  SOFTGL_ISA=$level cargo test --release --workspace --test '*' --examples
+  mkdir -p "$outs/$level"
+  cp target/ctests/out/*.out "$outs/$level/"
+done
+bash scripts/isa-compare.sh "$outs" "${levels[@]}"
 cargo test --release --workspace --doc
-# The libraries' own unit tests, unoptimised with debug assertions and overflow checks
-# (Cargo.toml's `unit` profile): a release build of the unit-test harness is a second
-# full optimised compile of the library, half of CI's time.
-cargo test --profile unit --workspace --lib
+
+# The libraries' own unit tests with debug assertions and overflow checks (Cargo.toml's
+# `unit` profile), once per level.
+for level in "${levels[@]}"; do
+  echo "test.sh: unit tests with SOFTGL_ISA=$level"
+  SOFTGL_ISA=$level cargo test --profile unit --workspace --lib
+done
+echo "test.sh: all tests passed at the levels ${levels[*]}"

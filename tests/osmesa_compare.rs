@@ -17,13 +17,16 @@
 //! - `SOFTGL_SAVE_IMAGES=1`: write the PNGs even when the scene matches.
 //! - `SOFTGL_REF_DRIVER`: Gallium driver of the reference (default `llvmpipe`;
 //!   `softpipe` gives Mesa's second opinion).
-//! - `SOFTGL_REF_CPU_CAPS`: passed to the reference as
-//!   `GALLIUM_OVERRIDE_CPU_CAPS` (e.g. `sse4.1` to turn off FMA).
+//! - `SOFTGL_ISA`: the instruction-set level softgl runs (see `softgl::cpu`); a level
+//!   without FMA runs the reference with `GALLIUM_OVERRIDE_CPU_CAPS=sse4.1`.
+//! - `SOFTGL_REF_CPU_CAPS`: passed to the reference as `GALLIUM_OVERRIDE_CPU_CAPS`
+//!   instead (empty for none).
 //! - `SOFTGL_LIB_DIR`: folder holding `libsoftgl.so` (default: the profile
 //!   folder of this test executable, e.g. `target/release`, or its `deps/`
 //!   when that copy is newer, as after `cargo test`).
 //! - `SOFTGL_CTEST_TIMEOUT`: seconds a scene may run (default 120).
-//! - `SOFTGL_CTEST_REBUILD=1`: recompile the scenes even when up to date.
+//! - `SOFTGL_CTEST_REBUILD=1`: recompile the scenes even when up to date, and run the
+//!   reference anew (its output is otherwise reused by the runs that pin it alike).
 //! - `CC`: the C compiler (default `cc`).
 
 use std::fmt::Write as _;
@@ -176,6 +179,44 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
 ];
+
+/// Tolerances that replace [`TOLERANCES`] at the instruction-set levels without FMA
+/// (`SOFTGL_ISA=scalar` or `avx2`), where the reference runs with
+/// `GALLIUM_OVERRIDE_CPU_CAPS=sse4.1`: llvmpipe's 128-bit SSE4.1 code rounds a few values
+/// otherwise than its AVX code beyond the fusing of multiply-adds, which is all softgl
+/// follows.
+const NON_FMA_TOLERANCES: &[(&str, Tolerance)] = &[
+    (
+        "evaluators",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.6,
+            reason: "as in TOLERANCES (the perspective-correct colour of rational lines and \
+                     points): 65 of its 12288 pixels (0.53%) against llvmpipe SSE4.1, where \
+                     52 differ against its AVX2+FMA code",
+        },
+    ),
+    (
+        "texgen_sphere_map",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.002,
+            reason: "not yet found: one pixel of 65536 differs by 1 against llvmpipe SSE4.1 \
+                     (exact against its AVX2+FMA code at the fused levels)",
+        },
+    ),
+];
+
+/// Scenes whose reference runs without `GALLIUM_OVERRIDE_CPU_CAPS` at every level: their
+/// llvmpipe output changes with the caps for a reason other than fusing, and softgl's
+/// output does not depend on the level (checked by `scripts/isa-compare.sh`).
+const REFERENCE_UNPINNED: &[(&str, &str)] = &[(
+    "osmesa_wide_formats",
+    "llvmpipe's 16-bit RGB (no alpha) buffer, R16G16B16_UNORM, comes out up to 138 apart \
+     under GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 from its AVX2 rendering, in 54% of the \
+     rgb_ushort image; softgl's widened 8-bit path matches the AVX2 rendering within this \
+     scene's tolerance at every level",
+)];
 
 /// Exactness: the default tolerance of every scene.
 const EXACT: Tolerance = Tolerance {
@@ -655,6 +696,31 @@ fn head_lines(s: &str, n: usize) -> String {
     )
 }
 
+/// The reference's output of a scene. It is run once per reference configuration (driver
+/// and `GALLIUM_OVERRIDE_CPU_CAPS`) and binary: `scripts/test.sh` runs the comparisons once
+/// per instruction-set level, and the levels that pin llvmpipe alike reuse the first run's
+/// output (still written to `NAME.osmesa.out`). `SOFTGL_CTEST_REBUILD=1` runs it anew.
+fn reference_output(name: &str, bin: &Path) -> Result<Vec<u8>, String> {
+    let driver = std::env::var("SOFTGL_REF_DRIVER").unwrap_or_else(|_| "llvmpipe".into());
+    let caps = reference_caps(name).unwrap_or_else(|| "native".into());
+    let out_dir = target_dir().join("ctests").join("out");
+    let cache = out_dir.join(format!("{name}.osmesa.{driver}-{caps}.cache"));
+    let fresh = match (mtime(&cache), mtime(bin)) {
+        (Some(c), Some(b)) => c > b && !env_flag("SOFTGL_CTEST_REBUILD"),
+        _ => false,
+    };
+    if fresh {
+        if let Ok(bytes) = fs::read(&cache) {
+            let plain = out_dir.join(format!("{name}.{}.out", Side::Osmesa.label()));
+            fs::write(&plain, &bytes).map_err(|e| format!("write {}: {e}", plain.display()))?;
+            return Ok(bytes);
+        }
+    }
+    let bytes = run(name, bin, Side::Osmesa)?;
+    fs::write(&cache, &bytes).map_err(|e| format!("write {}: {e}", cache.display()))?;
+    Ok(bytes)
+}
+
 /// Runs a scene binary with the output path as argv[1]; returns the output bytes.
 fn run(name: &str, bin: &Path, side: Side) -> Result<Vec<u8>, String> {
     run_with(name, bin, side, None)
@@ -685,7 +751,7 @@ fn run_with(
     if side == Side::Osmesa {
         let driver = std::env::var("SOFTGL_REF_DRIVER").unwrap_or_else(|_| "llvmpipe".into());
         cmd.env("GALLIUM_DRIVER", driver).env("LP_NUM_THREADS", "1");
-        if let Ok(caps) = std::env::var("SOFTGL_REF_CPU_CAPS") {
+        if let Some(caps) = reference_caps(name) {
             cmd.env("GALLIUM_OVERRIDE_CPU_CAPS", caps);
         }
     }
@@ -1005,11 +1071,23 @@ fn text_diff(a: &[u8], b: &[u8]) -> String {
 }
 
 fn tolerance(name: &str) -> Tolerance {
-    TOLERANCES
+    let pinned = reference_caps(name).is_some_and(|c| c == "sse4.1");
+    let non_fma = if pinned { NON_FMA_TOLERANCES } else { &[] };
+    non_fma
         .iter()
+        .chain(TOLERANCES)
         .find(|(n, _)| *n == name)
         .map(|(_, t)| *t)
         .unwrap_or(EXACT)
+}
+
+/// The `GALLIUM_OVERRIDE_CPU_CAPS` of scene `name`'s reference: the level's pin
+/// ([`softgl::cpu::reference_cpu_caps`]) unless the scene is in [`REFERENCE_UNPINNED`].
+fn reference_caps(name: &str) -> Option<String> {
+    if REFERENCE_UNPINNED.iter().any(|(n, _)| *n == name) {
+        return None;
+    }
+    softgl::cpu::reference_cpu_caps()
 }
 
 fn write_summary_row(name: &str, row: &str) {
@@ -1057,7 +1135,7 @@ fn run_program(name: &str, source: &Path) {
         panic!("scene {name}: {msg}");
     };
     let ref_bin = build(name, source, Side::Osmesa).unwrap_or_else(|e| fail(e));
-    let ref_out = run(name, &ref_bin, Side::Osmesa).unwrap_or_else(|e| fail(e));
+    let ref_out = reference_output(name, &ref_bin).unwrap_or_else(|e| fail(e));
     let our_bin = build(name, source, Side::Softgl).unwrap_or_else(|e| {
         fail(format!(
             "the softgl build failed (expected while libsoftgl lacks symbols):\n{e}"
