@@ -193,6 +193,7 @@ pub fn supported_levels() -> Vec<Level> {
 
 /// The level the library runs: the best the CPU has within the cap `SOFTGL_ISA` (read
 /// once; an unknown value is reported on stderr once and ignored).
+#[inline]
 pub fn level() -> Level {
     static LEVEL: OnceLock<Level> = OnceLock::new();
     *LEVEL.get_or_init(|| {
@@ -219,18 +220,29 @@ pub fn level() -> Level {
 
 /// Whether the CPU has the FMA instructions, whatever the level: the guard of code that
 /// issues `vfmadd` when a caller asks for fused arithmetic explicitly (a level without FMA
-/// never asks).
+/// never asks). Inlined: it guards per-vertex arithmetic, and the standard library's check
+/// is one load of a cached word.
+#[inline(always)]
 pub fn has_fma_instructions() -> bool {
-    cpu_features().fma
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
 }
 
 /// The variant for this CPU and [`level`].
+#[inline]
 pub fn isa() -> Isa {
     level().isa()
 }
 
 /// Whether the AVX2+FMA variant may run its copy compiled for AVX-512 (F, BW, VL, DQ):
 /// the CPU has them and the level is `avx512`.
+#[inline]
 pub fn avx512() -> bool {
     level() == Level::Avx512
 }
