@@ -7,7 +7,7 @@ use super::glext_enums::*;
 use super::types::*;
 use super::with_ctx;
 use crate::context::arrays::{ArrayPointer, DataType};
-use crate::context::error::GlError;
+use crate::context::error::{GlError, GlResult};
 use crate::context::Context;
 use libc::c_void;
 
@@ -139,23 +139,37 @@ pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GL
 }
 
 fn client_state(cap: GLenum, on: bool) {
-    with_ctx(|c| {
-        let w = match cap {
-            GL_VERTEX_ARRAY => Which::Vertex,
-            GL_COLOR_ARRAY => Which::Color,
-            GL_NORMAL_ARRAY => Which::Normal,
-            GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
-            GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
-            // Kept for glGet; an RGBA context does not read the index array.
-            GL_INDEX_ARRAY => Which::Index,
-            GL_SECONDARY_COLOR_ARRAY => Which::SecondaryColor,
-            GL_FOG_COORD_ARRAY => Which::FogCoord,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        c.check_outside_begin()?;
-        array_mut(c, w).enabled = on;
-        Ok(())
+    with_ctx(|c| set_client_array(c, cap, on))
+}
+
+/// The client array `cap` names, if any.
+fn client_array(cap: GLenum) -> Option<Which> {
+    Some(match cap {
+        GL_VERTEX_ARRAY => Which::Vertex,
+        GL_COLOR_ARRAY => Which::Color,
+        GL_NORMAL_ARRAY => Which::Normal,
+        GL_TEXTURE_COORD_ARRAY => Which::TexCoord,
+        GL_EDGE_FLAG_ARRAY => Which::EdgeFlag,
+        // Kept for glGet; an RGBA context does not read the index array.
+        GL_INDEX_ARRAY => Which::Index,
+        GL_SECONDARY_COLOR_ARRAY => Which::SecondaryColor,
+        GL_FOG_COORD_ARRAY => Which::FogCoord,
+        _ => return None,
     })
+}
+
+/// Whether `cap` names a client array (then glEnable/glDisable treat it as
+/// glEnableClientState/glDisableClientState, as Mesa's compatibility profile does).
+pub(crate) fn is_client_array(cap: GLenum) -> bool {
+    client_array(cap).is_some()
+}
+
+/// glEnableClientState/glDisableClientState on the context.
+pub(crate) fn set_client_array(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
+    let w = client_array(cap).ok_or(GlError::InvalidEnum)?;
+    c.check_outside_begin()?;
+    array_mut(c, w).enabled = on;
+    Ok(())
 }
 
 /// glEnableClientState.

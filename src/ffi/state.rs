@@ -7,8 +7,9 @@ use super::glext_enums::*;
 use super::types::*;
 use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::clamp01;
-use crate::context::error::GlError;
+use crate::context::error::{GlError, GlResult};
 use crate::context::state::{Cap, CompareFunc, Face, PixelStore, ShadeModel};
+use crate::context::Context;
 
 /// glGetError: the first error since the last call, or GL_NO_ERROR.
 #[no_mangle]
@@ -28,13 +29,23 @@ pub extern "C" fn glGetError() -> GLenum {
 /// glEnable.
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_ctx_list(move |c| c.set_cap(Cap::from_gl(cap)?, true))
+    with_ctx_list(move |c| enable(c, cap, true))
+}
+
+/// glEnable/glDisable. Like Mesa's compatibility profile (and unlike the GL 1.5 spec, which
+/// makes them INVALID_ENUM), the client arrays are accepted as glEnableClientState /
+/// glDisableClientState: real programs rely on it (README, known differences).
+fn enable(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
+    if super::arrays::is_client_array(cap) {
+        return super::arrays::set_client_array(c, cap, on);
+    }
+    c.set_cap(Cap::from_gl(cap)?, on)
 }
 
 /// glDisable.
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_ctx_list(move |c| c.set_cap(Cap::from_gl(cap)?, false))
+    with_ctx_list(move |c| enable(c, cap, false))
 }
 
 /// glIsEnabled (also answers the client array states).
