@@ -5,6 +5,13 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 fn main() {
+    // Bind the library's references to its own exported functions inside the library, as
+    // Mesa links libOSMesa (-Bsymbolic): a program that defines a `gl*` function of its own
+    // (a wrapper named glFinish, say) must not replace softgl's in OSMesaGetProcAddress or
+    // in softgl's own calls (tests/interposition.rs).
+    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
+        println!("cargo:rustc-cdylib-link-arg=-Wl,-Bsymbolic");
+    }
     let dir = Path::new("src/ffi");
     println!("cargo:rerun-if-changed=src/ffi");
     let mut entries: Vec<(String, String)> = Vec::new();
