@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
 cargo fmt --all -- --check
 cargo clippy --release --workspace --all-targets -- -D warnings
+cargo build --release --workspace
 cargo build --release --workspace --examples
 
 # The levels softgl can run here, lowest first ("scalar ... avx512"); the last is the
