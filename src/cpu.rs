@@ -79,6 +79,13 @@ struct Features {
     avx512: bool,
 }
 
+impl Features {
+    /// Whether every feature of `need` is in `self`.
+    fn has_all(self, need: Features) -> bool {
+        (!need.avx2 || self.avx2) && (!need.fma || self.fma) && (!need.avx512 || self.avx512)
+    }
+}
+
 impl Level {
     /// Every level, lowest first.
     pub const ALL: [Level; 5] = [
@@ -128,10 +135,7 @@ impl Level {
         Level::ALL
             .into_iter()
             .rev()
-            .find(|l| {
-                let n = l.features();
-                (!n.avx2 || f.avx2) && (!n.fma || f.fma) && (!n.avx512 || f.avx512)
-            })
+            .find(|l| f.has_all(l.features()))
             .unwrap_or(Level::Scalar)
     }
 
@@ -184,10 +188,7 @@ pub fn supported_levels() -> Vec<Level> {
     let cpu = Level::best_within(cpu_features()).features();
     Level::ALL
         .into_iter()
-        .filter(|l| {
-            let n = l.features();
-            (!n.avx2 || cpu.avx2) && (!n.fma || cpu.fma) && (!n.avx512 || cpu.avx512)
-        })
+        .filter(|l| cpu.has_all(l.features()))
         .collect()
 }
 

@@ -483,6 +483,15 @@ pub(crate) fn sample_quad<M: crate::fragment::span::Madd>(
     sample_quad_base(u, s, t, r)
 }
 
+/// The body of both copies of [`sample_quad`].
+#[inline(always)]
+fn sample_any(u: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4], r: Option<[f32; 4]>) -> [[f32; 4]; 4] {
+    match r {
+        None => u.sample_quad(s, t),
+        Some(r) => u.sample_quad_str(s, t, r),
+    }
+}
+
 /// [`sample_quad`] for baseline x86-64.
 #[inline(never)]
 fn sample_quad_base(
@@ -491,10 +500,7 @@ fn sample_quad_base(
     t: [f32; 4],
     r: Option<[f32; 4]>,
 ) -> [[f32; 4]; 4] {
-    match r {
-        None => u.sample_quad(s, t),
-        Some(r) => u.sample_quad_str(s, t, r),
-    }
+    sample_any(u, s, t, r)
 }
 
 /// [`sample_quad`] compiled with FMA.
@@ -507,8 +513,5 @@ unsafe fn sample_quad_fma(
     t: [f32; 4],
     r: Option<[f32; 4]>,
 ) -> [[f32; 4]; 4] {
-    match r {
-        None => u.sample_quad(s, t),
-        Some(r) => u.sample_quad_str(s, t, r),
-    }
+    sample_any(u, s, t, r)
 }
