@@ -82,7 +82,8 @@ fn draw_inner<S: VertexSource + ?Sized>(
     ctx.dirty = true;
     let fma = cpu_has_fma();
     let st = &ctx.state;
-    let viewport = Viewport::new(st.viewport, st.depth_range, fb.height);
+    let viewport = Viewport::oriented(st.viewport, st.depth_range, fb.height, fb.y_flip);
+    let y_flip = fb.y_flip;
     let modelview = *ctx.matrices.modelview.top();
     let mvp = ctx.matrices.projection.top().mul(&modelview);
     let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
@@ -142,7 +143,8 @@ fn draw_inner<S: VertexSource + ?Sized>(
     let cull = CullMode {
         front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
         back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
-        front_ccw: st.front_ccw,
+        // Unflipped (object) rows turn the winding over.
+        front_ccw: st.front_ccw == y_flip,
     };
 
     // Filled triangles, strips, fans, polygons, quads and quad strips stream through the

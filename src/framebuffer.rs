@@ -131,9 +131,22 @@ pub struct Framebuffer {
     /// whose sky is empty never writes the sky's depth, and glFlush fills its colour rows
     /// from the clear colour instead of copying them.
     pub pending_rows: Vec<bool>,
+    /// Whether row 0 is the top row (the OSMesa window, y flipped as llvmpipe's window
+    /// surfaces are) or GL's row 0 (framebuffer objects, which llvmpipe draws unflipped).
+    pub y_flip: bool,
 }
 
 impl Framebuffer {
+    /// The memory row of GL window row `y` (the map is its own inverse).
+    #[inline]
+    pub fn row(&self, y: usize) -> usize {
+        if self.y_flip {
+            self.height - 1 - y
+        } else {
+            y
+        }
+    }
+
     /// A zero-filled framebuffer (Mesa's initial contents).
     pub fn new(
         width: usize,
@@ -163,6 +176,7 @@ impl Framebuffer {
             pending_color: None,
             pending_depth: None,
             pending_rows: vec![false; height],
+            y_flip: true,
         }
     }
 
@@ -498,6 +512,8 @@ pub struct Target<'a> {
     pub width: usize,
     /// Framebuffer height (all rows, for y flips).
     pub height: usize,
+    /// Whether rows are y-down ([`Framebuffer::y_flip`]).
+    pub y_flip: bool,
     /// First row of the band.
     pub y0: usize,
     /// Number of rows in the band.
@@ -544,6 +560,7 @@ impl Framebuffer {
         Target {
             width: self.width,
             height: self.height,
+            y_flip: self.y_flip,
             y0: 0,
             rows: self.height,
             format: self.format,
@@ -598,6 +615,7 @@ impl Framebuffer {
             out.push(Target {
                 width: w,
                 height: h,
+                y_flip: self.y_flip,
                 y0,
                 rows,
                 format,

@@ -77,6 +77,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("buffers.rs", Header::Glext),
     ("fragment_ext.rs", Header::Glext),
     ("textures_ext.rs", Header::Glext),
+    ("framebuffers.rs", Header::Glext),
     ("lighting_ext.rs", Header::Glext),
     ("arrays_gl14.rs", Header::Glext),
     ("points.rs", Header::Glext),

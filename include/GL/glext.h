@@ -141,6 +141,10 @@ typedef ptrdiff_t GLintptr;
 #define GL_DEPTH_TEXTURE_MODE_ARB                0x884B
 #endif /* GL_ARB_depth_texture */
 
+#ifndef GL_ARB_framebuffer_object
+#define GL_ARB_framebuffer_object                1
+#endif /* GL_ARB_framebuffer_object */
+
 #ifndef GL_ARB_occlusion_query
 #define GL_ARB_occlusion_query                   1
 #define GL_QUERY_COUNTER_BITS_ARB                0x8864
@@ -338,9 +342,87 @@ typedef ptrdiff_t GLintptr;
 #define GL_FOG_COORDINATE_ARRAY_EXT              0x8457
 #endif /* GL_EXT_fog_coord */
 
+#ifndef GL_EXT_framebuffer_blit
+#define GL_EXT_framebuffer_blit                  1
+#define GL_READ_FRAMEBUFFER_EXT                  0x8CA8
+#define GL_DRAW_FRAMEBUFFER_EXT                  0x8CA9
+#define GL_DRAW_FRAMEBUFFER_BINDING_EXT          0x8CA6
+#define GL_READ_FRAMEBUFFER_BINDING_EXT          0x8CAA
+#endif /* GL_EXT_framebuffer_blit */
+
+#ifndef GL_EXT_framebuffer_multisample
+#define GL_EXT_framebuffer_multisample           1
+#define GL_RENDERBUFFER_SAMPLES_EXT              0x8CAB
+#define GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE_EXT 0x8D56
+#define GL_MAX_SAMPLES_EXT                       0x8D57
+#endif /* GL_EXT_framebuffer_multisample */
+
+#ifndef GL_EXT_framebuffer_object
+#define GL_EXT_framebuffer_object                1
+#define GL_INVALID_FRAMEBUFFER_OPERATION_EXT     0x0506
+#define GL_MAX_RENDERBUFFER_SIZE_EXT             0x84E8
+#define GL_FRAMEBUFFER_BINDING_EXT               0x8CA6
+#define GL_RENDERBUFFER_BINDING_EXT              0x8CA7
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT 0x8CD0
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT 0x8CD1
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT 0x8CD2
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT 0x8CD3
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT 0x8CD4
+#define GL_FRAMEBUFFER_COMPLETE_EXT              0x8CD5
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT 0x8CD6
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT 0x8CD7
+#define GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT 0x8CD9
+#define GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT    0x8CDA
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT 0x8CDB
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT 0x8CDC
+#define GL_FRAMEBUFFER_UNSUPPORTED_EXT           0x8CDD
+#define GL_MAX_COLOR_ATTACHMENTS_EXT             0x8CDF
+#define GL_COLOR_ATTACHMENT0_EXT                 0x8CE0
+#define GL_COLOR_ATTACHMENT1_EXT                 0x8CE1
+#define GL_COLOR_ATTACHMENT2_EXT                 0x8CE2
+#define GL_COLOR_ATTACHMENT3_EXT                 0x8CE3
+#define GL_COLOR_ATTACHMENT4_EXT                 0x8CE4
+#define GL_COLOR_ATTACHMENT5_EXT                 0x8CE5
+#define GL_COLOR_ATTACHMENT6_EXT                 0x8CE6
+#define GL_COLOR_ATTACHMENT7_EXT                 0x8CE7
+#define GL_COLOR_ATTACHMENT8_EXT                 0x8CE8
+#define GL_COLOR_ATTACHMENT9_EXT                 0x8CE9
+#define GL_COLOR_ATTACHMENT10_EXT                0x8CEA
+#define GL_COLOR_ATTACHMENT11_EXT                0x8CEB
+#define GL_COLOR_ATTACHMENT12_EXT                0x8CEC
+#define GL_COLOR_ATTACHMENT13_EXT                0x8CED
+#define GL_COLOR_ATTACHMENT14_EXT                0x8CEE
+#define GL_COLOR_ATTACHMENT15_EXT                0x8CEF
+#define GL_DEPTH_ATTACHMENT_EXT                  0x8D00
+#define GL_STENCIL_ATTACHMENT_EXT                0x8D20
+#define GL_FRAMEBUFFER_EXT                       0x8D40
+#define GL_RENDERBUFFER_EXT                      0x8D41
+#define GL_RENDERBUFFER_WIDTH_EXT                0x8D42
+#define GL_RENDERBUFFER_HEIGHT_EXT               0x8D43
+#define GL_RENDERBUFFER_INTERNAL_FORMAT_EXT      0x8D44
+#define GL_STENCIL_INDEX1_EXT                    0x8D46
+#define GL_STENCIL_INDEX4_EXT                    0x8D47
+#define GL_STENCIL_INDEX8_EXT                    0x8D48
+#define GL_STENCIL_INDEX16_EXT                   0x8D49
+#define GL_RENDERBUFFER_RED_SIZE_EXT             0x8D50
+#define GL_RENDERBUFFER_GREEN_SIZE_EXT           0x8D51
+#define GL_RENDERBUFFER_BLUE_SIZE_EXT            0x8D52
+#define GL_RENDERBUFFER_ALPHA_SIZE_EXT           0x8D53
+#define GL_RENDERBUFFER_DEPTH_SIZE_EXT           0x8D54
+#define GL_RENDERBUFFER_STENCIL_SIZE_EXT         0x8D55
+#endif /* GL_EXT_framebuffer_object */
+
 #ifndef GL_EXT_multi_draw_arrays
 #define GL_EXT_multi_draw_arrays                 1
 #endif /* GL_EXT_multi_draw_arrays */
+
+#ifndef GL_EXT_packed_depth_stencil
+#define GL_EXT_packed_depth_stencil              1
+#define GL_DEPTH_STENCIL_EXT                     0x84F9
+#define GL_UNSIGNED_INT_24_8_EXT                 0x84FA
+#define GL_DEPTH24_STENCIL8_EXT                  0x88F0
+#define GL_TEXTURE_STENCIL_SIZE_EXT              0x88F1
+#endif /* GL_EXT_packed_depth_stencil */
 
 #ifndef GL_EXT_packed_pixels
 #define GL_EXT_packed_pixels                     1
@@ -467,6 +549,102 @@ typedef ptrdiff_t GLintptr;
 #define GL_STENCIL_BACK_REF                      0x8CA3
 #define GL_STENCIL_BACK_VALUE_MASK               0x8CA4
 #define GL_STENCIL_BACK_WRITEMASK                0x8CA5
+#define GL_INVALID_FRAMEBUFFER_OPERATION         0x0506
+#define GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING 0x8210
+#define GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE 0x8211
+#define GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE       0x8212
+#define GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE     0x8213
+#define GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE      0x8214
+#define GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE     0x8215
+#define GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE     0x8216
+#define GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE   0x8217
+#define GL_FRAMEBUFFER_DEFAULT                   0x8218
+#define GL_FRAMEBUFFER_UNDEFINED                 0x8219
+#define GL_DEPTH_STENCIL_ATTACHMENT              0x821A
+#define GL_MAX_RENDERBUFFER_SIZE                 0x84E8
+#define GL_DEPTH_STENCIL                         0x84F9
+#define GL_UNSIGNED_INT_24_8                     0x84FA
+#define GL_DEPTH24_STENCIL8                      0x88F0
+#define GL_TEXTURE_STENCIL_SIZE                  0x88F1
+#define GL_TEXTURE_RED_TYPE                      0x8C10
+#define GL_TEXTURE_GREEN_TYPE                    0x8C11
+#define GL_TEXTURE_BLUE_TYPE                     0x8C12
+#define GL_TEXTURE_ALPHA_TYPE                    0x8C13
+#define GL_TEXTURE_DEPTH_TYPE                    0x8C16
+#define GL_UNSIGNED_NORMALIZED                   0x8C17
+#define GL_FRAMEBUFFER_BINDING                   0x8CA6
+#define GL_DRAW_FRAMEBUFFER_BINDING              0x8CA6
+#define GL_RENDERBUFFER_BINDING                  0x8CA7
+#define GL_READ_FRAMEBUFFER                      0x8CA8
+#define GL_DRAW_FRAMEBUFFER                      0x8CA9
+#define GL_READ_FRAMEBUFFER_BINDING              0x8CAA
+#define GL_RENDERBUFFER_SAMPLES                  0x8CAB
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE    0x8CD0
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME    0x8CD1
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL  0x8CD2
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE 0x8CD3
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER  0x8CD4
+#define GL_FRAMEBUFFER_COMPLETE                  0x8CD5
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT     0x8CD6
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT 0x8CD7
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER    0x8CDB
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER    0x8CDC
+#define GL_FRAMEBUFFER_UNSUPPORTED               0x8CDD
+#define GL_MAX_COLOR_ATTACHMENTS                 0x8CDF
+#define GL_COLOR_ATTACHMENT0                     0x8CE0
+#define GL_COLOR_ATTACHMENT1                     0x8CE1
+#define GL_COLOR_ATTACHMENT2                     0x8CE2
+#define GL_COLOR_ATTACHMENT3                     0x8CE3
+#define GL_COLOR_ATTACHMENT4                     0x8CE4
+#define GL_COLOR_ATTACHMENT5                     0x8CE5
+#define GL_COLOR_ATTACHMENT6                     0x8CE6
+#define GL_COLOR_ATTACHMENT7                     0x8CE7
+#define GL_COLOR_ATTACHMENT8                     0x8CE8
+#define GL_COLOR_ATTACHMENT9                     0x8CE9
+#define GL_COLOR_ATTACHMENT10                    0x8CEA
+#define GL_COLOR_ATTACHMENT11                    0x8CEB
+#define GL_COLOR_ATTACHMENT12                    0x8CEC
+#define GL_COLOR_ATTACHMENT13                    0x8CED
+#define GL_COLOR_ATTACHMENT14                    0x8CEE
+#define GL_COLOR_ATTACHMENT15                    0x8CEF
+#define GL_COLOR_ATTACHMENT16                    0x8CF0
+#define GL_COLOR_ATTACHMENT17                    0x8CF1
+#define GL_COLOR_ATTACHMENT18                    0x8CF2
+#define GL_COLOR_ATTACHMENT19                    0x8CF3
+#define GL_COLOR_ATTACHMENT20                    0x8CF4
+#define GL_COLOR_ATTACHMENT21                    0x8CF5
+#define GL_COLOR_ATTACHMENT22                    0x8CF6
+#define GL_COLOR_ATTACHMENT23                    0x8CF7
+#define GL_COLOR_ATTACHMENT24                    0x8CF8
+#define GL_COLOR_ATTACHMENT25                    0x8CF9
+#define GL_COLOR_ATTACHMENT26                    0x8CFA
+#define GL_COLOR_ATTACHMENT27                    0x8CFB
+#define GL_COLOR_ATTACHMENT28                    0x8CFC
+#define GL_COLOR_ATTACHMENT29                    0x8CFD
+#define GL_COLOR_ATTACHMENT30                    0x8CFE
+#define GL_COLOR_ATTACHMENT31                    0x8CFF
+#define GL_DEPTH_ATTACHMENT                      0x8D00
+#define GL_STENCIL_ATTACHMENT                    0x8D20
+#define GL_FRAMEBUFFER                           0x8D40
+#define GL_RENDERBUFFER                          0x8D41
+#define GL_RENDERBUFFER_WIDTH                    0x8D42
+#define GL_RENDERBUFFER_HEIGHT                   0x8D43
+#define GL_RENDERBUFFER_INTERNAL_FORMAT          0x8D44
+#define GL_STENCIL_INDEX1                        0x8D46
+#define GL_STENCIL_INDEX4                        0x8D47
+#define GL_STENCIL_INDEX8                        0x8D48
+#define GL_STENCIL_INDEX16                       0x8D49
+#define GL_RENDERBUFFER_RED_SIZE                 0x8D50
+#define GL_RENDERBUFFER_GREEN_SIZE               0x8D51
+#define GL_RENDERBUFFER_BLUE_SIZE                0x8D52
+#define GL_RENDERBUFFER_ALPHA_SIZE               0x8D53
+#define GL_RENDERBUFFER_DEPTH_SIZE               0x8D54
+#define GL_RENDERBUFFER_STENCIL_SIZE             0x8D55
+#define GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE    0x8D56
+#define GL_MAX_SAMPLES                           0x8D57
+#define GL_INDEX                                 0x8222
+#define GL_TEXTURE_LUMINANCE_TYPE                0x8C14
+#define GL_TEXTURE_INTENSITY_TYPE                0x8C15
 
 /* Function-pointer types: src/ffi/multidraw.rs */
 typedef void (APIENTRYP PFNGLMULTIDRAWARRAYSPROC) (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
@@ -499,6 +677,29 @@ typedef void (APIENTRYP PFNGLBLENDCOLOREXTPROC) (GLclampf red, GLclampf green, G
 /* Function-pointer types: src/ffi/textures_ext.rs */
 typedef void (APIENTRYP PFNGLGENERATEMIPMAPPROC) (GLenum target);
 typedef void (APIENTRYP PFNGLGENERATEMIPMAPEXTPROC) (GLenum target);
+
+/* Function-pointer types: src/ffi/framebuffers.rs */
+typedef void (APIENTRYP PFNGLGENFRAMEBUFFERSPROC) (GLsizei n, GLuint *framebuffers);
+typedef void (APIENTRYP PFNGLDELETEFRAMEBUFFERSPROC) (GLsizei n, const GLuint *framebuffers);
+typedef void (APIENTRYP PFNGLBINDFRAMEBUFFERPROC) (GLenum target, GLuint framebuffer);
+typedef void (APIENTRYP PFNGLBINDFRAMEBUFFEREXTPROC) (GLenum target, GLuint framebuffer);
+typedef GLboolean (APIENTRYP PFNGLISFRAMEBUFFERPROC) (GLuint framebuffer);
+typedef GLenum (APIENTRYP PFNGLCHECKFRAMEBUFFERSTATUSPROC) (GLenum target);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE1DPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE2DPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE3DPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURELAYERPROC) (GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERRENDERBUFFERPROC) (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+typedef void (APIENTRYP PFNGLGENRENDERBUFFERSPROC) (GLsizei n, GLuint *renderbuffers);
+typedef void (APIENTRYP PFNGLDELETERENDERBUFFERSPROC) (GLsizei n, const GLuint *renderbuffers);
+typedef void (APIENTRYP PFNGLBINDRENDERBUFFERPROC) (GLenum target, GLuint renderbuffer);
+typedef void (APIENTRYP PFNGLBINDRENDERBUFFEREXTPROC) (GLenum target, GLuint renderbuffer);
+typedef GLboolean (APIENTRYP PFNGLISRENDERBUFFERPROC) (GLuint renderbuffer);
+typedef void (APIENTRYP PFNGLRENDERBUFFERSTORAGEPROC) (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+typedef void (APIENTRYP PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+typedef void (APIENTRYP PFNGLGETRENDERBUFFERPARAMETERIVPROC) (GLenum target, GLenum pname, GLint *params);
+typedef void (APIENTRYP PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC) (GLenum target, GLenum attachment, GLenum pname, GLint *params);
+typedef void (APIENTRYP PFNGLBLITFRAMEBUFFERPROC) (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
 
 /* Function-pointer types: src/ffi/lighting_ext.rs */
 typedef void (APIENTRYP PFNGLFOGCOORDFPROC) (GLfloat coord);
@@ -598,6 +799,7 @@ typedef void (APIENTRYP PFNGLBINDBUFFERARBPROC) (GLenum target, GLuint buffer);
 typedef void (APIENTRYP PFNGLBINDTEXTUREEXTPROC) (GLenum target, GLuint texture);
 typedef void (APIENTRYP PFNGLBUFFERDATAARBPROC) (GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
 typedef void (APIENTRYP PFNGLBUFFERSUBDATAARBPROC) (GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+typedef GLenum (APIENTRYP PFNGLCHECKFRAMEBUFFERSTATUSEXTPROC) (GLenum target);
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXIMAGE1DARBPROC) (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLint border, GLsizei image_size, const GLvoid *data);
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXIMAGE2DARBPROC) (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height, GLint border, GLsizei image_size, const GLvoid *data);
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXIMAGE3DARBPROC) (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLsizei image_size, const GLvoid *data);
@@ -606,6 +808,8 @@ typedef void (APIENTRYP PFNGLCOMPRESSEDTEXSUBIMAGE2DARBPROC) (GLenum target, GLi
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXSUBIMAGE3DARBPROC) (GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLsizei image_size, const GLvoid *data);
 typedef void (APIENTRYP PFNGLCOPYTEXSUBIMAGE3DEXTPROC) (GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height);
 typedef void (APIENTRYP PFNGLDELETEBUFFERSARBPROC) (GLsizei n, const GLuint *buffers);
+typedef void (APIENTRYP PFNGLDELETEFRAMEBUFFERSEXTPROC) (GLsizei n, const GLuint *framebuffers);
+typedef void (APIENTRYP PFNGLDELETERENDERBUFFERSEXTPROC) (GLsizei n, const GLuint *renderbuffers);
 typedef void (APIENTRYP PFNGLDRAWARRAYSEXTPROC) (GLenum mode, GLint first, GLsizei count);
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSEXTPROC) (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 typedef void (APIENTRYP PFNGLFOGCOORDPOINTEREXTPROC) (GLenum type, GLsizei stride, const GLvoid *pointer);
@@ -613,13 +817,24 @@ typedef void (APIENTRYP PFNGLFOGCOORDDEXTPROC) (GLdouble coord);
 typedef void (APIENTRYP PFNGLFOGCOORDDVEXTPROC) (const GLdouble *coord);
 typedef void (APIENTRYP PFNGLFOGCOORDFEXTPROC) (GLfloat coord);
 typedef void (APIENTRYP PFNGLFOGCOORDFVEXTPROC) (const GLfloat *coord);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERRENDERBUFFEREXTPROC) (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE1DEXTPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE2DEXTPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURE3DEXTPROC) (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+typedef void (APIENTRYP PFNGLFRAMEBUFFERTEXTURELAYEREXTPROC) (GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
 typedef void (APIENTRYP PFNGLGENBUFFERSARBPROC) (GLsizei n, GLuint *buffers);
+typedef void (APIENTRYP PFNGLGENFRAMEBUFFERSEXTPROC) (GLsizei n, GLuint *framebuffers);
+typedef void (APIENTRYP PFNGLGENRENDERBUFFERSEXTPROC) (GLsizei n, GLuint *renderbuffers);
 typedef void (APIENTRYP PFNGLGETBUFFERPARAMETERIVARBPROC) (GLenum target, GLenum pname, GLint *params);
 typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVARBPROC) (GLenum target, GLenum pname, GLvoid **params);
 typedef void (APIENTRYP PFNGLGETBUFFERSUBDATAARBPROC) (GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
 typedef void (APIENTRYP PFNGLGETCOMPRESSEDTEXIMAGEARBPROC) (GLenum target, GLint level, GLvoid *img);
+typedef void (APIENTRYP PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVEXTPROC) (GLenum target, GLenum attachment, GLenum pname, GLint *params);
 typedef void (APIENTRYP PFNGLGETPOINTERVEXTPROC) (GLenum pname, GLvoid **params);
+typedef void (APIENTRYP PFNGLGETRENDERBUFFERPARAMETERIVEXTPROC) (GLenum target, GLenum pname, GLint *params);
 typedef GLboolean (APIENTRYP PFNGLISBUFFERARBPROC) (GLuint buffer);
+typedef GLboolean (APIENTRYP PFNGLISFRAMEBUFFEREXTPROC) (GLuint framebuffer);
+typedef GLboolean (APIENTRYP PFNGLISRENDERBUFFEREXTPROC) (GLuint renderbuffer);
 typedef void (APIENTRYP PFNGLLOADTRANSPOSEMATRIXDARBPROC) (const GLdouble *m);
 typedef void (APIENTRYP PFNGLLOADTRANSPOSEMATRIXFARBPROC) (const GLfloat *m);
 typedef GLvoid *(APIENTRYP PFNGLMAPBUFFERARBPROC) (GLenum target, GLenum access);
@@ -632,6 +847,8 @@ typedef void (APIENTRYP PFNGLPOINTPARAMETERFEXTPROC) (GLenum pname, GLfloat para
 typedef void (APIENTRYP PFNGLPOINTPARAMETERFVARBPROC) (GLenum pname, const GLfloat *params);
 typedef void (APIENTRYP PFNGLPOINTPARAMETERFVEXTPROC) (GLenum pname, const GLfloat *params);
 typedef void (APIENTRYP PFNGLPRIORITIZETEXTURESEXTPROC) (GLsizei n, const GLuint *textures, const GLclampf *priorities);
+typedef void (APIENTRYP PFNGLRENDERBUFFERSTORAGEEXTPROC) (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+typedef void (APIENTRYP PFNGLRENDERBUFFERSTORAGEMULTISAMPLEEXTPROC) (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
 typedef void (APIENTRYP PFNGLSAMPLECOVERAGEARBPROC) (GLfloat value, GLboolean invert);
 typedef void (APIENTRYP PFNGLSECONDARYCOLOR3BEXTPROC) (GLbyte red, GLbyte green, GLbyte blue);
 typedef void (APIENTRYP PFNGLSECONDARYCOLOR3BVEXTPROC) (const GLbyte *v);
@@ -686,6 +903,29 @@ GLAPI void APIENTRY glBlendColorEXT (GLclampf red, GLclampf green, GLclampf blue
 /* Functions: src/ffi/textures_ext.rs */
 GLAPI void APIENTRY glGenerateMipmap (GLenum target);
 GLAPI void APIENTRY glGenerateMipmapEXT (GLenum target);
+
+/* Functions: src/ffi/framebuffers.rs */
+GLAPI void APIENTRY glGenFramebuffers (GLsizei n, GLuint *framebuffers);
+GLAPI void APIENTRY glDeleteFramebuffers (GLsizei n, const GLuint *framebuffers);
+GLAPI void APIENTRY glBindFramebuffer (GLenum target, GLuint framebuffer);
+GLAPI void APIENTRY glBindFramebufferEXT (GLenum target, GLuint framebuffer);
+GLAPI GLboolean APIENTRY glIsFramebuffer (GLuint framebuffer);
+GLAPI GLenum APIENTRY glCheckFramebufferStatus (GLenum target);
+GLAPI void APIENTRY glFramebufferTexture1D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture2D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture3D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+GLAPI void APIENTRY glFramebufferTextureLayer (GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
+GLAPI void APIENTRY glFramebufferRenderbuffer (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+GLAPI void APIENTRY glGenRenderbuffers (GLsizei n, GLuint *renderbuffers);
+GLAPI void APIENTRY glDeleteRenderbuffers (GLsizei n, const GLuint *renderbuffers);
+GLAPI void APIENTRY glBindRenderbuffer (GLenum target, GLuint renderbuffer);
+GLAPI void APIENTRY glBindRenderbufferEXT (GLenum target, GLuint renderbuffer);
+GLAPI GLboolean APIENTRY glIsRenderbuffer (GLuint renderbuffer);
+GLAPI void APIENTRY glRenderbufferStorage (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glRenderbufferStorageMultisample (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glGetRenderbufferParameteriv (GLenum target, GLenum pname, GLint *params);
+GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv (GLenum target, GLenum attachment, GLenum pname, GLint *params);
+GLAPI void APIENTRY glBlitFramebuffer (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
 
 /* Functions: src/ffi/lighting_ext.rs */
 GLAPI void APIENTRY glFogCoordf (GLfloat coord);
@@ -785,6 +1025,7 @@ GLAPI void APIENTRY glBindBufferARB (GLenum target, GLuint buffer);
 GLAPI void APIENTRY glBindTextureEXT (GLenum target, GLuint texture);
 GLAPI void APIENTRY glBufferDataARB (GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
 GLAPI void APIENTRY glBufferSubDataARB (GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+GLAPI GLenum APIENTRY glCheckFramebufferStatusEXT (GLenum target);
 GLAPI void APIENTRY glCompressedTexImage1DARB (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLint border, GLsizei image_size, const GLvoid *data);
 GLAPI void APIENTRY glCompressedTexImage2DARB (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height, GLint border, GLsizei image_size, const GLvoid *data);
 GLAPI void APIENTRY glCompressedTexImage3DARB (GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLsizei image_size, const GLvoid *data);
@@ -793,6 +1034,8 @@ GLAPI void APIENTRY glCompressedTexSubImage2DARB (GLenum target, GLint level, GL
 GLAPI void APIENTRY glCompressedTexSubImage3DARB (GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLsizei image_size, const GLvoid *data);
 GLAPI void APIENTRY glCopyTexSubImage3DEXT (GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height);
 GLAPI void APIENTRY glDeleteBuffersARB (GLsizei n, const GLuint *buffers);
+GLAPI void APIENTRY glDeleteFramebuffersEXT (GLsizei n, const GLuint *framebuffers);
+GLAPI void APIENTRY glDeleteRenderbuffersEXT (GLsizei n, const GLuint *renderbuffers);
 GLAPI void APIENTRY glDrawArraysEXT (GLenum mode, GLint first, GLsizei count);
 GLAPI void APIENTRY glDrawRangeElementsEXT (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 GLAPI void APIENTRY glFogCoordPointerEXT (GLenum type, GLsizei stride, const GLvoid *pointer);
@@ -800,13 +1043,24 @@ GLAPI void APIENTRY glFogCoorddEXT (GLdouble coord);
 GLAPI void APIENTRY glFogCoorddvEXT (const GLdouble *coord);
 GLAPI void APIENTRY glFogCoordfEXT (GLfloat coord);
 GLAPI void APIENTRY glFogCoordfvEXT (const GLfloat *coord);
+GLAPI void APIENTRY glFramebufferRenderbufferEXT (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+GLAPI void APIENTRY glFramebufferTexture1DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture2DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture3DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+GLAPI void APIENTRY glFramebufferTextureLayerEXT (GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
 GLAPI void APIENTRY glGenBuffersARB (GLsizei n, GLuint *buffers);
+GLAPI void APIENTRY glGenFramebuffersEXT (GLsizei n, GLuint *framebuffers);
+GLAPI void APIENTRY glGenRenderbuffersEXT (GLsizei n, GLuint *renderbuffers);
 GLAPI void APIENTRY glGetBufferParameterivARB (GLenum target, GLenum pname, GLint *params);
 GLAPI void APIENTRY glGetBufferPointervARB (GLenum target, GLenum pname, GLvoid **params);
 GLAPI void APIENTRY glGetBufferSubDataARB (GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
 GLAPI void APIENTRY glGetCompressedTexImageARB (GLenum target, GLint level, GLvoid *img);
+GLAPI void APIENTRY glGetFramebufferAttachmentParameterivEXT (GLenum target, GLenum attachment, GLenum pname, GLint *params);
 GLAPI void APIENTRY glGetPointervEXT (GLenum pname, GLvoid **params);
+GLAPI void APIENTRY glGetRenderbufferParameterivEXT (GLenum target, GLenum pname, GLint *params);
 GLAPI GLboolean APIENTRY glIsBufferARB (GLuint buffer);
+GLAPI GLboolean APIENTRY glIsFramebufferEXT (GLuint framebuffer);
+GLAPI GLboolean APIENTRY glIsRenderbufferEXT (GLuint renderbuffer);
 GLAPI void APIENTRY glLoadTransposeMatrixdARB (const GLdouble *m);
 GLAPI void APIENTRY glLoadTransposeMatrixfARB (const GLfloat *m);
 GLAPI GLvoid *APIENTRY glMapBufferARB (GLenum target, GLenum access);
@@ -819,6 +1073,8 @@ GLAPI void APIENTRY glPointParameterfEXT (GLenum pname, GLfloat param);
 GLAPI void APIENTRY glPointParameterfvARB (GLenum pname, const GLfloat *params);
 GLAPI void APIENTRY glPointParameterfvEXT (GLenum pname, const GLfloat *params);
 GLAPI void APIENTRY glPrioritizeTexturesEXT (GLsizei n, const GLuint *textures, const GLclampf *priorities);
+GLAPI void APIENTRY glRenderbufferStorageEXT (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glRenderbufferStorageMultisampleEXT (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
 GLAPI void APIENTRY glSampleCoverageARB (GLfloat value, GLboolean invert);
 GLAPI void APIENTRY glSecondaryColor3bEXT (GLbyte red, GLbyte green, GLbyte blue);
 GLAPI void APIENTRY glSecondaryColor3bvEXT (const GLbyte *v);

@@ -18,6 +18,9 @@ pub enum GlError {
     StackUnderflow,
     /// GL_OUT_OF_MEMORY: an allocation failed.
     OutOfMemory,
+    /// GL_INVALID_FRAMEBUFFER_OPERATION: drawing to or reading from an incomplete
+    /// framebuffer object.
+    InvalidFramebufferOperation,
 }
 
 impl GlError {
@@ -30,6 +33,9 @@ impl GlError {
             GlError::StackOverflow => GL_STACK_OVERFLOW,
             GlError::StackUnderflow => GL_STACK_UNDERFLOW,
             GlError::OutOfMemory => GL_OUT_OF_MEMORY,
+            GlError::InvalidFramebufferOperation => {
+                crate::ffi::glext_enums::GL_INVALID_FRAMEBUFFER_OPERATION
+            }
         }
     }
 }

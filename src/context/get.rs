@@ -105,17 +105,37 @@ fn m(mat: &Mat4) -> Value {
     f(&mat.0)
 }
 
+/// The framebuffer-object bindings and limits, and the draw and read buffers of a bound
+/// object.
+fn framebuffer_get(c: &Context, pname: u32) -> Option<Value> {
+    use super::fbo::{MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE, MAX_SAMPLES};
+    let attachment = |b: Option<usize>| e(b.map_or(GL_NONE, |i| GL_COLOR_ATTACHMENT0 + i as u32));
+    Some(match pname {
+        GL_DRAW_FRAMEBUFFER_BINDING => i(&[c.fbo.draw as i64]),
+        GL_READ_FRAMEBUFFER_BINDING => i(&[c.fbo.read as i64]),
+        GL_RENDERBUFFER_BINDING => i(&[c.fbo.renderbuffer as i64]),
+        GL_MAX_RENDERBUFFER_SIZE => i(&[MAX_RENDERBUFFER_SIZE as i64]),
+        GL_MAX_COLOR_ATTACHMENTS => i(&[MAX_COLOR_ATTACHMENTS as i64]),
+        GL_MAX_SAMPLES => i(&[MAX_SAMPLES as i64]),
+        GL_DRAW_BUFFER => attachment(c.fbo.object(c.fbo.draw)?.draw_buffer),
+        GL_READ_BUFFER => attachment(c.fbo.object(c.fbo.read)?.read_buffer),
+        _ => return None,
+    })
+}
+
 /// The value of `pname`, or GL_INVALID_ENUM.
 pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let st = &c.state;
     let mx = &c.matrices;
-    let bits = c.color_bits();
-    let depth_bits = c.visual.depth.bits() as i64;
-    let stencil_bits = if c.visual.stencil { 8 } else { 0 };
+    let (bits, depth_bits, stencil_bits) = c.draw_bits();
+    let depth_bits = depth_bits as i64;
     let stencil_max = (1i32 << stencil_bits) - 1;
     let a = &c.arrays;
     let tc = &a.texcoord[st.client_active_texture];
     if let Some(v) = raster_get(c, pname) {
+        return Ok(v);
+    }
+    if let Some(v) = framebuffer_get(c, pname) {
         return Ok(v);
     }
     Ok(match pname {
@@ -214,7 +234,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_BLUE_BITS => i(&[bits[2] as i64]),
         GL_ALPHA_BITS => i(&[bits[3] as i64]),
         GL_DEPTH_BITS => i(&[depth_bits]),
-        GL_STENCIL_BITS => i(&[stencil_bits]),
+        GL_STENCIL_BITS => i(&[stencil_bits as i64]),
         GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
             i(&[if c.has_accum() { 16 } else { 0 }])
         }

@@ -10,6 +10,8 @@ pub mod attrib;
 pub mod dlist;
 pub mod error;
 pub mod eval;
+pub mod fbo;
+pub mod fbo_bind;
 pub mod feedback;
 pub mod fragment_state;
 pub mod get;
@@ -136,6 +138,8 @@ pub struct Context {
     pub eval: eval::EvalState,
     /// Render mode, feedback and selection buffers, name stack.
     pub feedback: feedback::FeedbackState,
+    /// Framebuffer and renderbuffer objects and their bindings.
+    pub fbo: fbo::FboState,
     /// The last batch of a streamed glBegin/glEnd chunk, still drawn by the pool
     /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
     /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
@@ -209,6 +213,7 @@ impl Context {
             accum: Default::default(),
             eval: Default::default(),
             feedback: Default::default(),
+            fbo: Default::default(),
             inflight: None,
         }
     }
@@ -291,6 +296,11 @@ impl Context {
     /// viewport and scissor to the buffer size. `retyped` (a new component type) also gives
     /// a new framebuffer, as Mesa picks another pipe format.
     pub fn bind_framebuffer(&mut self, w: usize, h: usize, retyped: bool) {
+        self.with_window(|c| c.bind_window_buffer(w, h, retyped));
+    }
+
+    /// [`Context::bind_framebuffer`] with the window's framebuffer in `fb`.
+    fn bind_window_buffer(&mut self, w: usize, h: usize, retyped: bool) {
         self.settle_draws();
         let first = self.fb.is_none();
         let same = !retyped
@@ -317,7 +327,7 @@ impl Context {
     /// or cleared since the last copy (Mesa's `rb->defined`), and refreshes the depth copy.
     pub fn flush(&mut self) {
         crate::pixels::cache::flush(self);
-        let Some(fb) = self.fb.as_ref() else { return };
+        let Some(fb) = self.window_fb() else { return };
         if !self.dirty || self.target.ptr == 0 {
             return;
         }
@@ -347,6 +357,16 @@ impl Context {
         }
     }
 
+    /// The OSMesa window's framebuffer, wherever it is (parked while an object is bound
+    /// for drawing).
+    pub fn window_fb(&self) -> Option<&Framebuffer> {
+        if self.fbo.draw == 0 {
+            self.fb.as_ref()
+        } else {
+            self.fbo.window.as_ref()
+        }
+    }
+
     /// Bits per colour channel (r, g, b, a) of the bound buffer: 16 or 32 for
     /// GL_UNSIGNED_SHORT and GL_FLOAT user buffers.
     pub fn color_bits(&self) -> [i32; 4] {
@@ -360,7 +380,7 @@ impl Context {
     /// The depth (and stencil) buffer as OSMesaGetDepthBuffer presents it: bottom-up rows,
     /// 4 bytes per value for Z24 (stencil in the high byte), 2 for Z16.
     pub fn depth_snapshot(&self) -> Vec<u8> {
-        let Some(fb) = self.fb.as_ref() else {
+        let Some(fb) = self.window_fb() else {
             return Vec::new();
         };
         let mut out = Vec::new();
@@ -492,13 +512,13 @@ impl Context {
         let mut r = [0, 0, w, h];
         if self.state.caps.get(Cap::ScissorTest) {
             let [sx, sy, sw, sh] = self.state.scissor.map(|v| v as i64);
-            // GL y-up rows [sy, sy+sh) are y-down rows [h-sy-sh, h-sy).
-            r = [
-                r[0].max(sx),
-                r[1].max(h - sy - sh),
-                r[2].min(sx + sw),
-                r[3].min(h - sy),
-            ];
+            // GL y-up rows [sy, sy+sh) are y-down rows [h-sy-sh, h-sy) (in the window).
+            let (y0, y1) = if fb.y_flip {
+                (h - sy - sh, h - sy)
+            } else {
+                (sy, sy + sh)
+            };
+            r = [r[0].max(sx), r[1].max(y0), r[2].min(sx + sw), r[3].min(y1)];
         }
         (r[0] < r[2] && r[1] < r[3]).then_some(r)
     }
@@ -513,6 +533,7 @@ impl Context {
         if mask & !all != 0 {
             return Err(GlError::InvalidValue);
         }
+        self.check_draw_framebuffer()?;
         if mask & GL_ACCUM_BUFFER_BIT != 0 {
             self.clear_accum_buffer();
         }

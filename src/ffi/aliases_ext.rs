@@ -54,6 +54,12 @@ pub unsafe extern "C" fn glBufferSubDataARB(
     unsafe { super::buffers::glBufferSubData(target, offset, size, data) }
 }
 
+/// glCheckFramebufferStatusEXT: the extension name of [`super::framebuffers::glCheckFramebufferStatus`].
+#[no_mangle]
+pub extern "C" fn glCheckFramebufferStatusEXT(target: GLenum) -> GLenum {
+    super::framebuffers::glCheckFramebufferStatus(target)
+}
+
 /// glCompressedTexImage1DARB: the extension name of [`super::textures_compressed::glCompressedTexImage1D`].
 #[no_mangle]
 pub extern "C" fn glCompressedTexImage1DARB(
@@ -232,6 +238,26 @@ pub unsafe extern "C" fn glDeleteBuffersARB(n: GLsizei, buffers: *const GLuint) 
     unsafe { super::buffers::glDeleteBuffers(n, buffers) }
 }
 
+/// glDeleteFramebuffersEXT: the extension name of [`super::framebuffers::glDeleteFramebuffers`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glDeleteFramebuffers`.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteFramebuffersEXT(n: GLsizei, framebuffers: *const GLuint) {
+    // SAFETY: the caller upholds `glDeleteFramebuffers`'s contract; the arguments pass through unchanged.
+    unsafe { super::framebuffers::glDeleteFramebuffers(n, framebuffers) }
+}
+
+/// glDeleteRenderbuffersEXT: the extension name of [`super::framebuffers::glDeleteRenderbuffers`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glDeleteRenderbuffers`.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteRenderbuffersEXT(n: GLsizei, renderbuffers: *const GLuint) {
+    // SAFETY: the caller upholds `glDeleteRenderbuffers`'s contract; the arguments pass through unchanged.
+    unsafe { super::framebuffers::glDeleteRenderbuffers(n, renderbuffers) }
+}
+
 /// glDrawArraysEXT: the extension name of [`super::draw::glDrawArrays`].
 #[no_mangle]
 pub extern "C" fn glDrawArraysEXT(mode: GLenum, first: GLint, count: GLsizei) {
@@ -289,6 +315,73 @@ pub unsafe extern "C" fn glFogCoordfvEXT(coord: *const GLfloat) {
     unsafe { super::lighting_ext::glFogCoordfv(coord) }
 }
 
+/// glFramebufferRenderbufferEXT: the extension name of [`super::framebuffers::glFramebufferRenderbuffer`].
+#[no_mangle]
+pub extern "C" fn glFramebufferRenderbufferEXT(
+    target: GLenum,
+    attachment: GLenum,
+    renderbuffertarget: GLenum,
+    renderbuffer: GLuint,
+) {
+    super::framebuffers::glFramebufferRenderbuffer(
+        target,
+        attachment,
+        renderbuffertarget,
+        renderbuffer,
+    )
+}
+
+/// glFramebufferTexture1DEXT: the extension name of [`super::framebuffers::glFramebufferTexture1D`].
+#[no_mangle]
+pub extern "C" fn glFramebufferTexture1DEXT(
+    target: GLenum,
+    attachment: GLenum,
+    textarget: GLenum,
+    texture: GLuint,
+    level: GLint,
+) {
+    super::framebuffers::glFramebufferTexture1D(target, attachment, textarget, texture, level)
+}
+
+/// glFramebufferTexture2DEXT: the extension name of [`super::framebuffers::glFramebufferTexture2D`].
+#[no_mangle]
+pub extern "C" fn glFramebufferTexture2DEXT(
+    target: GLenum,
+    attachment: GLenum,
+    textarget: GLenum,
+    texture: GLuint,
+    level: GLint,
+) {
+    super::framebuffers::glFramebufferTexture2D(target, attachment, textarget, texture, level)
+}
+
+/// glFramebufferTexture3DEXT: the extension name of [`super::framebuffers::glFramebufferTexture3D`].
+#[no_mangle]
+pub extern "C" fn glFramebufferTexture3DEXT(
+    target: GLenum,
+    attachment: GLenum,
+    textarget: GLenum,
+    texture: GLuint,
+    level: GLint,
+    zoffset: GLint,
+) {
+    super::framebuffers::glFramebufferTexture3D(
+        target, attachment, textarget, texture, level, zoffset,
+    )
+}
+
+/// glFramebufferTextureLayerEXT: the extension name of [`super::framebuffers::glFramebufferTextureLayer`].
+#[no_mangle]
+pub extern "C" fn glFramebufferTextureLayerEXT(
+    target: GLenum,
+    attachment: GLenum,
+    texture: GLuint,
+    level: GLint,
+    layer: GLint,
+) {
+    super::framebuffers::glFramebufferTextureLayer(target, attachment, texture, level, layer)
+}
+
 /// glGenBuffersARB: the extension name of [`super::buffers::glGenBuffers`].
 ///
 /// # Safety
@@ -297,6 +390,26 @@ pub unsafe extern "C" fn glFogCoordfvEXT(coord: *const GLfloat) {
 pub unsafe extern "C" fn glGenBuffersARB(n: GLsizei, buffers: *mut GLuint) {
     // SAFETY: the caller upholds `glGenBuffers`'s contract; the arguments pass through unchanged.
     unsafe { super::buffers::glGenBuffers(n, buffers) }
+}
+
+/// glGenFramebuffersEXT: the extension name of [`super::framebuffers::glGenFramebuffers`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glGenFramebuffers`.
+#[no_mangle]
+pub unsafe extern "C" fn glGenFramebuffersEXT(n: GLsizei, framebuffers: *mut GLuint) {
+    // SAFETY: the caller upholds `glGenFramebuffers`'s contract; the arguments pass through unchanged.
+    unsafe { super::framebuffers::glGenFramebuffers(n, framebuffers) }
+}
+
+/// glGenRenderbuffersEXT: the extension name of [`super::framebuffers::glGenRenderbuffers`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glGenRenderbuffers`.
+#[no_mangle]
+pub unsafe extern "C" fn glGenRenderbuffersEXT(n: GLsizei, renderbuffers: *mut GLuint) {
+    // SAFETY: the caller upholds `glGenRenderbuffers`'s contract; the arguments pass through unchanged.
+    unsafe { super::framebuffers::glGenRenderbuffers(n, renderbuffers) }
 }
 
 /// glGetBufferParameterivARB: the extension name of [`super::buffers::glGetBufferParameteriv`].
@@ -348,6 +461,25 @@ pub extern "C" fn glGetCompressedTexImageARB(target: GLenum, level: GLint, _img:
     super::textures_compressed::glGetCompressedTexImage(target, level, _img)
 }
 
+/// glGetFramebufferAttachmentParameterivEXT: the extension name of [`super::framebuffers::glGetFramebufferAttachmentParameteriv`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glGetFramebufferAttachmentParameteriv`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivEXT(
+    target: GLenum,
+    attachment: GLenum,
+    pname: GLenum,
+    params: *mut GLint,
+) {
+    // SAFETY: the caller upholds `glGetFramebufferAttachmentParameteriv`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::framebuffers::glGetFramebufferAttachmentParameteriv(
+            target, attachment, pname, params,
+        )
+    }
+}
+
 /// glGetPointervEXT: the extension name of [`super::query::glGetPointerv`].
 ///
 /// # Safety
@@ -358,10 +490,36 @@ pub unsafe extern "C" fn glGetPointervEXT(pname: GLenum, params: *mut *mut GLvoi
     unsafe { super::query::glGetPointerv(pname, params) }
 }
 
+/// glGetRenderbufferParameterivEXT: the extension name of [`super::framebuffers::glGetRenderbufferParameteriv`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glGetRenderbufferParameteriv`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetRenderbufferParameterivEXT(
+    target: GLenum,
+    pname: GLenum,
+    params: *mut GLint,
+) {
+    // SAFETY: the caller upholds `glGetRenderbufferParameteriv`'s contract; the arguments pass through unchanged.
+    unsafe { super::framebuffers::glGetRenderbufferParameteriv(target, pname, params) }
+}
+
 /// glIsBufferARB: the extension name of [`super::buffers::glIsBuffer`].
 #[no_mangle]
 pub extern "C" fn glIsBufferARB(buffer: GLuint) -> GLboolean {
     super::buffers::glIsBuffer(buffer)
+}
+
+/// glIsFramebufferEXT: the extension name of [`super::framebuffers::glIsFramebuffer`].
+#[no_mangle]
+pub extern "C" fn glIsFramebufferEXT(framebuffer: GLuint) -> GLboolean {
+    super::framebuffers::glIsFramebuffer(framebuffer)
+}
+
+/// glIsRenderbufferEXT: the extension name of [`super::framebuffers::glIsRenderbuffer`].
+#[no_mangle]
+pub extern "C" fn glIsRenderbufferEXT(renderbuffer: GLuint) -> GLboolean {
+    super::framebuffers::glIsRenderbuffer(renderbuffer)
 }
 
 /// glLoadTransposeMatrixdARB: the extension name of [`super::matrix::glLoadTransposeMatrixd`].
@@ -485,6 +643,35 @@ pub unsafe extern "C" fn glPrioritizeTexturesEXT(
 ) {
     // SAFETY: the caller upholds `glPrioritizeTextures`'s contract; the arguments pass through unchanged.
     unsafe { super::textures::glPrioritizeTextures(n, textures, priorities) }
+}
+
+/// glRenderbufferStorageEXT: the extension name of [`super::framebuffers::glRenderbufferStorage`].
+#[no_mangle]
+pub extern "C" fn glRenderbufferStorageEXT(
+    target: GLenum,
+    internalformat: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    super::framebuffers::glRenderbufferStorage(target, internalformat, width, height)
+}
+
+/// glRenderbufferStorageMultisampleEXT: the extension name of [`super::framebuffers::glRenderbufferStorageMultisample`].
+#[no_mangle]
+pub extern "C" fn glRenderbufferStorageMultisampleEXT(
+    target: GLenum,
+    samples: GLsizei,
+    internalformat: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    super::framebuffers::glRenderbufferStorageMultisample(
+        target,
+        samples,
+        internalformat,
+        width,
+        height,
+    )
 }
 
 /// glSampleCoverageARB: the extension name of [`super::legacy::glSampleCoverage`].

@@ -47,6 +47,7 @@ pub(crate) fn draw_arrays(
     }
     c.check_outside_begin()?;
     check_unmapped(c, false)?;
+    c.check_draw_framebuffer()?;
     if !c.arrays.vertex.enabled || count == 0 {
         return Ok(());
     }
@@ -244,6 +245,7 @@ pub(crate) fn draw_elements(
     };
     c.check_outside_begin()?;
     check_unmapped(c, true)?;
+    c.check_draw_framebuffer()?;
     if !c.arrays.vertex.enabled || count == 0 {
         return Ok(());
     }

@@ -149,6 +149,16 @@ pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
 pub extern "C" fn glDrawBuffer(mode: GLenum) {
     with_ctx_list(move |c| {
         c.check_outside_begin()?;
+        if c.fbo.draw != 0 {
+            let b = crate::ffi::framebuffers::object_buffer(mode)?;
+            return c.fbo_edit(|c| {
+                let name = c.fbo.draw;
+                if let Some(f) = c.fbo.object_mut(name) {
+                    f.draw_buffer = b;
+                }
+                Ok(())
+            });
+        }
         c.state.legacy.draw_buffer = ColorBuffer::from_gl(mode)?;
         Ok(())
     })
@@ -159,6 +169,11 @@ pub extern "C" fn glDrawBuffer(mode: GLenum) {
 pub extern "C" fn glReadBuffer(mode: GLenum) {
     with_ctx_list(move |c| {
         c.check_outside_begin()?;
+        let read = c.fbo.read;
+        if let Some(f) = c.fbo.object_mut(read) {
+            f.read_buffer = crate::ffi::framebuffers::object_buffer(mode)?;
+            return Ok(());
+        }
         c.state.legacy.read_buffer = ColorBuffer::from_gl(mode)?;
         Ok(())
     })

@@ -38,6 +38,7 @@ pub mod eval;
 pub mod feedback;
 pub mod fragment;
 pub mod fragment_ext;
+pub mod framebuffers;
 pub mod glext_enums;
 pub mod immediate;
 pub mod legacy;
@@ -107,7 +108,9 @@ pub(crate) fn with_ctx_raw<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<
     // freed while current here (OSMesaDestroyContext unbinds it first). GL calls never
     // re-enter the library, so this is the only live reference.
     let ctx = unsafe { &mut *p };
-    match catch_unwind(AssertUnwindSafe(|| f(ctx))) {
+    let r = catch_unwind(AssertUnwindSafe(|| f(ctx)));
+    ctx.fbo_refresh();
+    match r {
         Ok(Ok(r)) => r,
         Ok(Err(e)) => {
             ctx.record_error(e);

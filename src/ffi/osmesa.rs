@@ -492,7 +492,7 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
         // race; Mesa has the same contract (call it from the rendering thread).
         let gl = unsafe { &mut *(*c).ctx.get() };
         gl.settle_draws();
-        match gl.fb.as_ref() {
+        match gl.window_fb() {
             Some(fb) if fb.depth_format != DepthFormat::None => {
                 let (w, h) = (fb.width as GLint, fb.height as GLint);
                 let bpv = if fb.depth_format == DepthFormat::Z16 {

@@ -44,6 +44,7 @@ pub unsafe extern "C" fn glDrawPixels(
             return Err(GlError::InvalidValue);
         }
         let l = layout?;
+        c.check_draw_framebuffer()?;
         let fb = c.fb.as_ref();
         match l.format() {
             GL_STENCIL_INDEX if fb.is_none_or(|f| f.stencil.is_empty()) => {
@@ -82,9 +83,11 @@ pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsiz
             GL_STENCIL => CopyKind::Stencil,
             _ => return Err(GlError::InvalidEnum),
         };
+        c.check_draw_framebuffer()?;
+        c.check_read_framebuffer()?;
         let fb = c.fb.as_ref();
         let missing = match kind {
-            CopyKind::Color => !c.state.legacy.reads_color(),
+            CopyKind::Color => !c.reads_color(),
             CopyKind::Depth => {
                 fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None)
             }

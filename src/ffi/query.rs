@@ -86,7 +86,8 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
 pub const EXTENSIONS: &str = concat!(
     "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
     "GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_EXT_texture3D ",
-    "GL_EXT_texture_cube_map ",
+    "GL_EXT_texture_cube_map GL_ARB_framebuffer_object GL_EXT_framebuffer_object ",
+    "GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil ",
     "GL_ARB_texture_env_add GL_ARB_window_pos GL_ARB_point_parameters ",
     "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 ",
     "GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object ",
@@ -223,11 +224,12 @@ fn read_pixels(
         return Err(GlError::InvalidValue);
     }
     c.check_outside_begin()?;
-    if matches!(kind, ReadKind::Color(..)) && !c.state.legacy.reads_color() {
+    c.prepare_read()?;
+    if matches!(kind, ReadKind::Color(..)) && !c.reads_color() {
         // glReadBuffer(GL_NONE): no colour buffer to read.
         return Err(GlError::InvalidOperation);
     }
-    let Some(fb) = c.fb.as_ref() else {
+    let Some(fb) = c.read_fb() else {
         return Ok(());
     };
     match kind {
@@ -298,7 +300,7 @@ fn read_pixels(
         if gy < 0 || gy >= fb.height as i64 {
             continue;
         }
-        let fy = fb.height - 1 - gy as usize;
+        let fy = fb.row(gy as usize);
         for col in 0..w as usize {
             let gx = x as i64 + col as i64;
             if gx < 0 || gx >= fb.width as i64 {

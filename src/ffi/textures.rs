@@ -10,6 +10,7 @@ use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
+use crate::context::fbo::Attachment;
 use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
@@ -75,6 +76,8 @@ pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut T
     } else if c.textures.high_unit.is_some() {
         &mut c.textures.defaults[target.index()]
     } else {
+        // The image may be attached to the framebuffer object being drawn.
+        c.fbo_touch();
         let unit = c.state.active_texture;
         c.textures.bound_mut(unit, target)
     }
@@ -305,13 +308,13 @@ pub(crate) fn compiling() -> bool {
 /// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
 pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
     let mut out = vec![[0u8; 4]; w * h];
-    let Some(fb) = c.fb.as_ref() else { return out };
+    let Some(fb) = c.read_fb() else { return out };
     for row in 0..h {
         let gy = y as i64 + row as i64;
         if gy < 0 || gy >= fb.height as i64 {
             continue;
         }
-        let fy = fb.height - 1 - gy as usize;
+        let fy = fb.row(gy as usize);
         for col in 0..w {
             let gx = x as i64 + col as i64;
             if gx < 0 || gx >= fb.width as i64 {
@@ -394,7 +397,7 @@ pub(crate) fn read_texels(
         });
     }
     let scale_bias = tr.depth_scale_bias();
-    let fb = c.fb.as_ref().ok_or(GlError::InvalidOperation)?;
+    let fb = c.read_fb().ok_or(GlError::InvalidOperation)?;
     let fb_bits = fb.depth_format.bits();
     if fb_bits <= 0 {
         return Err(GlError::InvalidOperation);
@@ -405,7 +408,7 @@ pub(crate) fn read_texels(
         if gy < 0 || gy >= fb.height as i64 {
             continue;
         }
-        let fy = fb.height - 1 - gy as usize;
+        let fy = fb.row(gy as usize);
         for col in 0..w {
             let gx = x as i64 + col as i64;
             if gx < 0 || gx >= fb.width as i64 {
@@ -511,6 +514,7 @@ fn copy_tex_image(
     let b = border;
     let storage = storage_of(internal as i32, base, 0, 0);
     let (sx, sy) = (x + b, y + if dims == 2 { b } else { 0 });
+    c.prepare_read()?;
     let texels = read_texels(c, (sx, sy, tw, th), base, &storage)?;
     let obj = object_mut(c, t, false);
     obj.face_levels_mut(face)[level] = Some(Level {
@@ -551,6 +555,7 @@ fn copy_tex_sub_image(
         .and_then(|l| l.as_ref())
         .map(|i| (i.base, i.storage))
         .ok_or(GlError::InvalidOperation)?;
+    c.prepare_read()?;
     let src = read_texels(c, (x, y, w, h), base, &storage)?;
     let obj = object_mut(c, t, false);
     let img = obj.face_levels_mut(face)[level]
@@ -601,6 +606,8 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
         }
         // SAFETY: the caller promises n readable names.
         let names = unsafe { std::slice::from_raw_parts(textures, n) };
+        c.fbo_touch();
+        c.detach_bound(|a| matches!(a, Attachment::Texture { name, .. } if names.contains(&name)));
         c.textures.delete(names);
         Ok(())
     })

@@ -202,6 +202,7 @@ unsafe fn tex_sub_image_3d(
     let level = check_level(level)?;
     let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
     c.check_outside_begin()?;
+    c.prepare_read()?;
     let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
     let img = obj.levels[level]

@@ -65,18 +65,26 @@ pub struct Viewport {
 }
 
 impl Viewport {
-    /// Builds the transform from glViewport/glDepthRange and the framebuffer height.
+    /// Builds the transform from glViewport/glDepthRange and the framebuffer height, for
+    /// the y-down window.
     pub fn new(vp: [i32; 4], depth_range: [f64; 2], fb_height: usize) -> Self {
+        Viewport::oriented(vp, depth_range, fb_height, true)
+    }
+
+    /// As [`Viewport::new`]; `flip` false gives the unflipped transform llvmpipe uses for
+    /// framebuffer objects (window y = GL y).
+    pub fn oriented(vp: [i32; 4], depth_range: [f64; 2], fb_height: usize, flip: bool) -> Self {
         let (x, y, w, h) = (vp[0] as f32, vp[1] as f32, vp[2] as f32, vp[3] as f32);
         let (n, f) = (depth_range[0], depth_range[1]);
         let half_h = 0.5f32 * h;
+        let (sy, ty) = if flip {
+            (-half_h, fb_height as f32 - (half_h + y))
+        } else {
+            (half_h, half_h + y)
+        };
         Viewport {
-            scale: [0.5 * w, -half_h, (0.5 * (f - n)) as f32],
-            translate: [
-                0.5 * w + x,
-                fb_height as f32 - (half_h + y),
-                (0.5 * (n + f)) as f32,
-            ],
+            scale: [0.5 * w, sy, (0.5 * (f - n)) as f32],
+            translate: [0.5 * w + x, ty, (0.5 * (n + f)) as f32],
         }
     }
 

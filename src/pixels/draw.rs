@@ -98,6 +98,7 @@ fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
         fb_h: fb.height,
         region,
         fma,
+        y_flip: fb.y_flip,
     };
     let w = q.w;
     if let Source::Stencil(vals) = src {
@@ -333,11 +334,13 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
     }
     let Some(fb) = ctx.fb.as_ref() else { return };
     let (fw, fh) = (fb.width as i64, fb.height as i64);
+    let y_flip = fb.y_flip;
+    let row = move |y: i64| if y_flip { fh - 1 - y } else { y };
     let (dx, dy) = raster_xy(ctx);
     // Source texels, bottom row first; pixels outside the buffer read as zero.
     let src_index = |i: usize, j: usize| -> Option<usize> {
         let (x, y) = (sx as i64 + i as i64, sy as i64 + j as i64);
-        (x >= 0 && y >= 0 && x < fw && y < fh).then(|| ((fh - 1 - y) * fw + x) as usize)
+        (x >= 0 && y >= 0 && x < fw && y < fh).then(|| (row(y) * fw + x) as usize)
     };
     let st = &ctx.state;
     let fr = &st.frag;
@@ -389,7 +392,9 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         for j in 0..h {
             for i in 0..w {
                 let Some(s) = src_index(i, j) else { continue };
-                let (x, yd) = (dx as i64 + i as i64, fh - 1 - (dy as i64 + j as i64));
+                let gy = dy as i64 + j as i64;
+                let yd = row(gy);
+                let x = dx as i64 + i as i64;
                 if x < region[0] || x >= region[2] || yd < region[1] || yd >= region[3] {
                     continue;
                 }

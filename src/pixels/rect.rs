@@ -51,6 +51,8 @@ pub struct Dest {
     pub region: [i64; 4],
     /// Whether the CPU fuses multiply-adds (llvmpipe does where it can).
     pub fma: bool,
+    /// Whether the framebuffer's rows are y-down ([`crate::framebuffer::Framebuffer::y_flip`]).
+    pub y_flip: bool,
 }
 
 /// Calls `f(tri, px, py, col, row)` for every pixel `(px, py)` (y-down) the quad covers
@@ -81,7 +83,12 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
     let y0 = q.y as f32;
     let y1 = q.y as f32 + q.h as f32 * q.zoom[1];
     let zc = q.z * 2.0 - 1.0;
-    let vp = Viewport::new([0, 0, d.fb_w as i32, d.fb_h as i32], [0.0, 1.0], d.fb_h);
+    let vp = Viewport::oriented(
+        [0, 0, d.fb_w as i32, d.fb_h as i32],
+        [0.0, 1.0],
+        d.fb_h,
+        d.y_flip,
+    );
     let (t_bot, t_top) = if q.flip_t { (0.0, 1.0) } else { (1.0, 0.0) };
     let corner = |x: f32, y: f32, s: f32, t: f32| {
         let clip = [x / fbw * 2.0 - 1.0, y / fbh * 2.0 - 1.0, zc, 1.0];

@@ -69,6 +69,8 @@ pub struct StippleCover<'e> {
     pub stipple: &'e PolygonStipple,
     /// Framebuffer height (to turn y-down rows into GL rows).
     pub height: i64,
+    /// Whether rows are y-down (else they are GL rows already).
+    pub y_flip: bool,
 }
 
 impl Cover for StippleCover<'_> {
@@ -79,7 +81,12 @@ impl Cover for StippleCover<'_> {
 
     #[inline(always)]
     fn keep(&self, x: i64, py: i64) -> bool {
-        self.stipple.passes(x, self.height - 1 - py)
+        let gl_y = if self.y_flip {
+            self.height - 1 - py
+        } else {
+            py
+        };
+        self.stipple.passes(x, gl_y)
     }
 }
 

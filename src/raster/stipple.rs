@@ -33,6 +33,7 @@ pub fn stippled_triangle(
             edges: &t.edges,
             stipple,
             height: h,
+            y_flip: fb.y_flip,
         };
         let b = [x_lo, y_lo, x_hi, y_hi];
         super::prim_tex::shade_covered(t, b, &cover, plan, units, fb, stats);
@@ -49,7 +50,7 @@ pub fn stippled_triangle(
                 None => hi = lo - 1,
             }
         }
-        let gl_y = h - 1 - py;
+        let gl_y = if fb.y_flip { h - 1 - py } else { py };
         let mut x = lo;
         while x <= hi {
             if !stipple.passes(x, gl_y) {

@@ -1,0 +1,393 @@
+//! Framebuffer and renderbuffer objects (GL_ARB_framebuffer_object, with GL 3.0's rules):
+//! the object tables, attachments, the completeness rules and the queries.
+//!
+//! # How a framebuffer object is drawn into
+//! The attached images are the truth: a renderbuffer's own storage, or a texture level's
+//! texels (rows bottom-up, as GL numbers them). While an object is bound for drawing, the
+//! context draws into a *working copy*: an ordinary [`Framebuffer`] (colour, depth and
+//! stencil in y-down rows, the OSMesa window's layout) assembled from the attachments by
+//! [`super::fbo_bind`], and written back into them whenever something else may look at
+//! them (rebinding, texture specification, glGenerateMipmap, reads through another
+//! binding). The window's own framebuffer is parked in [`FboState::window`] meanwhile.
+//!
+//! One colour attachment is drawn at a time (the one glDrawBuffer selects); glDrawBuffers
+//! with several is GL 2.0 and not offered. Multisample renderbuffers are not offered yet:
+//! GL_MAX_SAMPLES is 0.
+
+use super::{GlError, GlResult};
+use crate::framebuffer::{DepthFormat, Framebuffer};
+use crate::texture::{BaseFormat, TextureState};
+use std::collections::HashMap;
+
+/// GL_MAX_COLOR_ATTACHMENTS (Mesa's value).
+pub const MAX_COLOR_ATTACHMENTS: usize = 8;
+/// GL_MAX_RENDERBUFFER_SIZE (llvmpipe's 2D texture limit).
+pub const MAX_RENDERBUFFER_SIZE: usize = 16384;
+/// GL_MAX_SAMPLES: multisample storage is not offered yet.
+pub const MAX_SAMPLES: i32 = 0;
+
+/// The storage layout of a renderbuffer (what `glRenderbufferStorage` chose).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RbFormat {
+    /// 8-bit RGBA colour.
+    Rgba8,
+    /// 8-bit RGB colour (alpha reads as 1, as llvmpipe's R8G8B8X8).
+    Rgb8,
+    /// Depth only.
+    Depth(DepthFormat),
+    /// 24-bit depth with 8-bit stencil in one image.
+    Depth24Stencil8,
+    /// 8-bit stencil only.
+    Stencil8,
+}
+
+impl RbFormat {
+    /// The layout for a glRenderbufferStorage internal format; `None` when the format is
+    /// not colour-, depth- or stencil-renderable (GL_INVALID_ENUM).
+    pub fn from_internal(internal: u32) -> Option<RbFormat> {
+        use crate::ffi::enums::*;
+        use crate::ffi::glext_enums::*;
+        Some(match internal {
+            GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2 | GL_RGBA12
+            | GL_RGBA16 => RbFormat::Rgba8,
+            GL_RGB | GL_RGB8 | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB10 | GL_RGB12 | GL_RGB16 => {
+                RbFormat::Rgb8
+            }
+            GL_DEPTH_COMPONENT16 => RbFormat::Depth(DepthFormat::Z16),
+            GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => RbFormat::Depth(DepthFormat::Z24),
+            GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => RbFormat::Depth24Stencil8,
+            GL_STENCIL_INDEX | GL_STENCIL_INDEX1 | GL_STENCIL_INDEX4 | GL_STENCIL_INDEX8
+            | GL_STENCIL_INDEX16 => RbFormat::Stencil8,
+            _ => return None,
+        })
+    }
+
+    /// Bits of red, green, blue, alpha, depth and stencil (glGetRenderbufferParameteriv).
+    pub fn sizes(self) -> [i32; 6] {
+        match self {
+            RbFormat::Rgba8 => [8, 8, 8, 8, 0, 0],
+            RbFormat::Rgb8 => [8, 8, 8, 0, 0, 0],
+            RbFormat::Depth(d) => [0, 0, 0, 0, d.bits(), 0],
+            RbFormat::Depth24Stencil8 => [0, 0, 0, 0, 24, 8],
+            RbFormat::Stencil8 => [0, 0, 0, 0, 0, 8],
+        }
+    }
+}
+
+/// A renderbuffer object. Its images are rows bottom-up, `width * height` values each.
+#[derive(Clone, Debug, Default)]
+pub struct Renderbuffer {
+    /// The internal format as given (GL_RENDERBUFFER_INTERNAL_FORMAT; GL_RGBA initially).
+    pub internal: u32,
+    /// Width in pixels (0 until storage is given).
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// The layout; `None` until storage is given.
+    pub format: Option<RbFormat>,
+    /// Colour values (colour formats).
+    pub color: Vec<[u8; 4]>,
+    /// Depth values in the depth format's stored form (depth formats).
+    pub depth: Vec<u32>,
+    /// Stencil values (stencil formats).
+    pub stencil: Vec<u8>,
+}
+
+impl Renderbuffer {
+    /// Gives the renderbuffer zeroed storage of `format` (glRenderbufferStorage); fails
+    /// with GL_OUT_OF_MEMORY, leaving it unchanged, when the memory is not there.
+    pub fn allocate(
+        &mut self,
+        internal: u32,
+        format: RbFormat,
+        w: usize,
+        h: usize,
+    ) -> GlResult<()> {
+        let n = w * h;
+        let (mut color, mut depth, mut stencil) = (Vec::new(), Vec::new(), Vec::new());
+        let oom = |_| GlError::OutOfMemory;
+        match format {
+            RbFormat::Rgba8 | RbFormat::Rgb8 => color.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Depth(_) => depth.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Depth24Stencil8 => {
+                depth.try_reserve_exact(n).map_err(oom)?;
+                stencil.try_reserve_exact(n).map_err(oom)?;
+            }
+            RbFormat::Stencil8 => stencil.try_reserve_exact(n).map_err(oom)?,
+        }
+        let a = if format == RbFormat::Rgb8 { 255 } else { 0 };
+        color.resize(color.capacity().min(n), [0, 0, 0, a]);
+        depth.resize(depth.capacity().min(n), 0);
+        stencil.resize(stencil.capacity().min(n), 0);
+        *self = Renderbuffer {
+            internal,
+            width: w,
+            height: h,
+            format: Some(format),
+            color,
+            depth,
+            stencil,
+        };
+        Ok(())
+    }
+}
+
+/// What an attachment point holds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Attachment {
+    /// Nothing (GL_NONE).
+    #[default]
+    None,
+    /// A renderbuffer, by name.
+    Renderbuffer(u32),
+    /// A texture image: object name, cube face (0 for other targets), level, and the
+    /// layer of a 3D texture (0 otherwise).
+    Texture {
+        /// The texture object's name.
+        name: u32,
+        /// The cube face (0..6, GL's order), 0 for other targets.
+        face: usize,
+        /// The mipmap level.
+        level: usize,
+        /// The z slice of a 3D texture.
+        layer: usize,
+    },
+}
+
+/// A framebuffer object's state.
+#[derive(Clone, Debug)]
+pub struct FramebufferObject {
+    /// GL_COLOR_ATTACHMENTi.
+    pub color: [Attachment; MAX_COLOR_ATTACHMENTS],
+    /// GL_DEPTH_ATTACHMENT.
+    pub depth: Attachment,
+    /// GL_STENCIL_ATTACHMENT.
+    pub stencil: Attachment,
+    /// The colour attachment glDrawBuffer selected (`None`: GL_NONE).
+    pub draw_buffer: Option<usize>,
+    /// The colour attachment glReadBuffer selected (`None`: GL_NONE).
+    pub read_buffer: Option<usize>,
+}
+
+impl Default for FramebufferObject {
+    fn default() -> Self {
+        FramebufferObject {
+            color: [Attachment::None; MAX_COLOR_ATTACHMENTS],
+            depth: Attachment::None,
+            stencil: Attachment::None,
+            draw_buffer: Some(0),
+            read_buffer: Some(0),
+        }
+    }
+}
+
+/// What kind of values an attached image holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageKind {
+    /// Colour, with the base format it is stored as (RGB stores alpha as 1).
+    Color(BaseFormat),
+    /// Depth of this format, and whether the same image holds stencil.
+    Depth(DepthFormat, bool),
+    /// Stencil only.
+    Stencil,
+    /// A format nothing can be rendered into (a compressed or 32-bit depth image).
+    Unrenderable,
+}
+
+/// The size and kind of an attached image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageInfo {
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// What it holds.
+    pub kind: ImageKind,
+}
+
+/// glCheckFramebufferStatus's answers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// GL_FRAMEBUFFER_COMPLETE.
+    Complete,
+    /// GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT.
+    IncompleteAttachment,
+    /// GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT.
+    MissingAttachment,
+    /// GL_FRAMEBUFFER_UNSUPPORTED.
+    Unsupported,
+}
+
+impl Status {
+    /// The GL enum.
+    pub fn to_gl(self) -> u32 {
+        use crate::ffi::glext_enums::*;
+        match self {
+            Status::Complete => GL_FRAMEBUFFER_COMPLETE,
+            Status::IncompleteAttachment => GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+            Status::MissingAttachment => GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT,
+            Status::Unsupported => GL_FRAMEBUFFER_UNSUPPORTED,
+        }
+    }
+}
+
+/// The framebuffer-object state of a context.
+#[derive(Default)]
+pub struct FboState {
+    /// Framebuffer objects by name; `None` for names generated but never bound.
+    pub framebuffers: HashMap<u32, Option<FramebufferObject>>,
+    /// Renderbuffer objects by name; `None` for names generated but never bound.
+    pub renderbuffers: HashMap<u32, Option<Renderbuffer>>,
+    /// The next name glGenFramebuffers tries.
+    next_fb: u32,
+    /// The next name glGenRenderbuffers tries.
+    next_rb: u32,
+    /// GL_DRAW_FRAMEBUFFER_BINDING (0: the OSMesa window).
+    pub draw: u32,
+    /// GL_READ_FRAMEBUFFER_BINDING.
+    pub read: u32,
+    /// GL_RENDERBUFFER_BINDING.
+    pub renderbuffer: u32,
+    /// The window's framebuffer while an object is bound for drawing.
+    pub window: Option<Framebuffer>,
+    /// The working copy was written back before a texture change and must be assembled
+    /// anew when the call ends (see `Context::fbo_touch`).
+    pub stale: bool,
+    /// A copy of the read framebuffer when it is not the draw framebuffer, made by
+    /// `Context::prepare_read` for the read that follows.
+    pub read_copy: Option<Framebuffer>,
+}
+
+/// Names not in `used`, counting up from `*next` (glGen*'s rule: any unused names).
+fn gen_names<T>(used: &mut HashMap<u32, Option<T>>, next: &mut u32, n: usize) -> Vec<u32> {
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        *next = next.wrapping_add(1).max(1);
+        if !used.contains_key(next) {
+            used.insert(*next, None);
+            out.push(*next);
+        }
+    }
+    out
+}
+
+impl FboState {
+    /// glGenFramebuffers.
+    pub fn gen_framebuffers(&mut self, n: usize) -> Vec<u32> {
+        gen_names(&mut self.framebuffers, &mut self.next_fb, n)
+    }
+
+    /// glGenRenderbuffers.
+    pub fn gen_renderbuffers(&mut self, n: usize) -> Vec<u32> {
+        gen_names(&mut self.renderbuffers, &mut self.next_rb, n)
+    }
+
+    /// The object bound to the draw binding, if any.
+    pub fn draw_object(&self) -> Option<&FramebufferObject> {
+        self.object(self.draw)
+    }
+
+    /// The framebuffer object `name` (not the window), if it exists.
+    pub fn object(&self, name: u32) -> Option<&FramebufferObject> {
+        self.framebuffers.get(&name)?.as_ref()
+    }
+
+    /// The framebuffer object `name`, mutably.
+    pub fn object_mut(&mut self, name: u32) -> Option<&mut FramebufferObject> {
+        self.framebuffers.get_mut(&name)?.as_mut()
+    }
+
+    /// The renderbuffer bound to GL_RENDERBUFFER, mutably.
+    pub fn bound_renderbuffer_mut(&mut self) -> Option<&mut Renderbuffer> {
+        self.renderbuffers.get_mut(&self.renderbuffer)?.as_mut()
+    }
+
+    /// The size and kind of the image `a` names; `None` when it names nothing or an image
+    /// that does not exist (yet).
+    pub fn image_info(&self, a: Attachment, textures: &TextureState) -> Option<ImageInfo> {
+        match a {
+            Attachment::None => None,
+            Attachment::Renderbuffer(name) => {
+                let rb = self.renderbuffers.get(&name)?.as_ref()?;
+                let kind = match rb.format? {
+                    RbFormat::Rgba8 => ImageKind::Color(BaseFormat::Rgba),
+                    RbFormat::Rgb8 => ImageKind::Color(BaseFormat::Rgb),
+                    RbFormat::Depth(d) => ImageKind::Depth(d, false),
+                    RbFormat::Depth24Stencil8 => ImageKind::Depth(DepthFormat::Z24, true),
+                    RbFormat::Stencil8 => ImageKind::Stencil,
+                };
+                Some(ImageInfo {
+                    width: rb.width,
+                    height: rb.height,
+                    kind,
+                })
+            }
+            Attachment::Texture {
+                name,
+                face,
+                level,
+                layer,
+            } => {
+                let obj = textures.objects.get(&name)?;
+                let img = obj.face_levels(face).get(level)?.as_ref()?;
+                if obj.target == Some(crate::texture::Target::Tex3D) && layer >= obj.depths[level] {
+                    return None;
+                }
+                let kind = match img.base {
+                    BaseFormat::Depth => match img.storage.depth_bits() {
+                        16 => ImageKind::Depth(DepthFormat::Z16, false),
+                        24 => ImageKind::Depth(DepthFormat::Z24, false),
+                        _ => ImageKind::Unrenderable,
+                    },
+                    b => ImageKind::Color(b),
+                };
+                Some(ImageInfo {
+                    width: img.width,
+                    height: img.height,
+                    kind,
+                })
+            }
+        }
+    }
+
+    /// glCheckFramebufferStatus of object `name` (the window is always complete).
+    pub fn status(&self, name: u32, textures: &TextureState) -> Status {
+        let Some(f) = self.object(name) else {
+            return Status::Complete;
+        };
+        let mut any = false;
+        let mut check = |a: Attachment, ok: &dyn Fn(ImageKind) -> bool| -> Option<Status> {
+            if a == Attachment::None {
+                return None;
+            }
+            any = true;
+            match self.image_info(a, textures) {
+                Some(i) if i.width > 0 && i.height > 0 && ok(i.kind) => None,
+                Some(i) if i.kind == ImageKind::Unrenderable => Some(Status::Unsupported),
+                _ => Some(Status::IncompleteAttachment),
+            }
+        };
+        for &a in &f.color {
+            if let Some(s) = check(a, &|k| matches!(k, ImageKind::Color(_))) {
+                return s;
+            }
+        }
+        if let Some(s) = check(f.depth, &|k| matches!(k, ImageKind::Depth(..))) {
+            return s;
+        }
+        if let Some(s) = check(f.stencil, &|k| {
+            matches!(k, ImageKind::Stencil | ImageKind::Depth(_, true))
+        }) {
+            return s;
+        }
+        if !any {
+            return Status::MissingAttachment;
+        }
+        // llvmpipe keeps depth and stencil in one surface: separate images are unsupported
+        // (as Mesa's st_validate_attachment reports them).
+        if f.depth != Attachment::None && f.stencil != Attachment::None && f.depth != f.stencil {
+            return Status::Unsupported;
+        }
+        Status::Complete
+    }
+}

@@ -1,0 +1,416 @@
+//! Binding framebuffer objects: the working copy a bound object is drawn through, how it is
+//! assembled from the attachments and written back, and the reads through the read binding.
+//!
+//! See [`super::fbo`] for the model. The working copy's rows are GL's (row 0 at the
+//! bottom, [`Framebuffer::y_flip`] false), as llvmpipe draws into objects: its viewport is
+//! not flipped, so window coordinates round as they do there and loading or writing back is
+//! a plain row copy (the window's buffer is y-down and flipped). Its size is the
+//! smallest of the attached images (GL 3.0 lets them differ); writing back touches only that
+//! region of each image.
+
+use super::fbo::{Attachment, FboState, ImageKind, Status};
+use super::{Context, GlError, GlResult};
+use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
+use crate::texture::{BaseFormat, TextureState};
+
+/// The colour, depth and stencil images of an object that a working copy is made of.
+#[derive(Clone, Copy, Debug, Default)]
+struct Parts {
+    color: Option<Attachment>,
+    depth: Option<Attachment>,
+    stencil: Option<Attachment>,
+}
+
+impl Parts {
+    /// Each attached part, with whether it is the stencil attachment (a depth-stencil
+    /// image attached to both points is visited twice, once for each role).
+    fn roles(self) -> impl Iterator<Item = (Attachment, bool)> {
+        [
+            (self.color, false),
+            (self.depth, false),
+            (self.stencil, true),
+        ]
+        .into_iter()
+        .filter_map(|(a, s)| Some((a?, s)))
+    }
+}
+
+/// Mutable access to one attached image's values, rows bottom-up with `width` per row.
+enum ImageMut<'a> {
+    /// RGBA8 colour (texture texels or renderbuffer colour), and the base format.
+    Color(&'a mut [[u8; 4]], BaseFormat),
+    /// Depth texels: the value as a little-endian u32 in each RGBA8 slot.
+    DepthTexels(&'a mut [[u8; 4]]),
+    /// Renderbuffer depth and (possibly empty) stencil.
+    DepthStencil(&'a mut [u32], &'a mut [u8]),
+    /// Renderbuffer stencil.
+    Stencil(&'a mut [u8]),
+}
+
+/// The image `a` names, with its row width, for reading and writing.
+fn image_mut<'a>(
+    fbo: &'a mut FboState,
+    textures: &'a mut TextureState,
+    a: Attachment,
+) -> Option<(ImageMut<'a>, usize)> {
+    match a {
+        Attachment::None => None,
+        Attachment::Renderbuffer(name) => {
+            let rb = fbo.renderbuffers.get_mut(&name)?.as_mut()?;
+            let w = rb.width;
+            let img = if !rb.color.is_empty() {
+                let base = if rb.format == Some(super::fbo::RbFormat::Rgb8) {
+                    BaseFormat::Rgb
+                } else {
+                    BaseFormat::Rgba
+                };
+                ImageMut::Color(&mut rb.color, base)
+            } else if !rb.depth.is_empty() {
+                ImageMut::DepthStencil(&mut rb.depth, &mut rb.stencil)
+            } else {
+                ImageMut::Stencil(&mut rb.stencil)
+            };
+            Some((img, w))
+        }
+        Attachment::Texture {
+            name,
+            face,
+            level,
+            layer,
+        } => {
+            let obj = textures.objects.get_mut(&name)?;
+            let img = obj.face_levels_mut(face).get_mut(level)?.as_mut()?;
+            let (w, h) = (img.width, img.height);
+            let start = layer * w * h;
+            let texels = img.texels.get_mut(start..start + w * h)?;
+            let v = match img.base {
+                BaseFormat::Depth => ImageMut::DepthTexels(texels),
+                b => ImageMut::Color(texels, b),
+            };
+            Some((v, w))
+        }
+    }
+}
+
+impl Context {
+    /// The images the working copy of object `name` is made of, and its size; `None`
+    /// when the object is incomplete.
+    fn parts(&self, name: u32) -> Option<(Parts, usize, usize)> {
+        if self.fbo.status(name, &self.textures) != Status::Complete {
+            return None;
+        }
+        let f = self.fbo.object(name)?;
+        let color = f
+            .draw_buffer
+            .map(|i| f.color[i])
+            .filter(|&a| a != Attachment::None);
+        let depth = Some(f.depth).filter(|&a| a != Attachment::None);
+        let stencil = Some(f.stencil).filter(|&a| a != Attachment::None);
+        let (mut w, mut h) = (usize::MAX, usize::MAX);
+        let every = f.color.iter().chain([&f.depth, &f.stencil]);
+        for &a in every.filter(|&&a| a != Attachment::None) {
+            let i = self.fbo.image_info(a, &self.textures)?;
+            w = w.min(i.width);
+            h = h.min(i.height);
+        }
+        let parts = Parts {
+            color,
+            depth,
+            stencil,
+        };
+        Some((parts, w, h))
+    }
+
+    /// Assembles a working copy of object `name` from its attachments (`None` when it is
+    /// incomplete).
+    fn assemble(&mut self, name: u32) -> Option<Framebuffer> {
+        let (parts, w, h) = self.parts(name)?;
+        let info = |a: Option<Attachment>| a.and_then(|a| self.fbo.image_info(a, &self.textures));
+        let format = match info(parts.color).map(|i| i.kind) {
+            Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
+            _ => ColorFormat::Rgba,
+        };
+        let depth = match info(parts.depth).map(|i| i.kind) {
+            Some(ImageKind::Depth(d, _)) => d,
+            _ => DepthFormat::None,
+        };
+        let mut fb = Framebuffer::new(w, h, format, depth, parts.stencil.is_some());
+        // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
+        fb.y_flip = false;
+        let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+        for (a, stencil) in parts.roles() {
+            if let Some((img, iw)) = image_mut(fbo, textures, a) {
+                load(&mut fb, img, iw, stencil);
+            }
+        }
+        Some(fb)
+    }
+
+    /// Writes the working copy of the bound draw object back into its attachments.
+    fn write_back(&mut self) {
+        if self.fbo.draw == 0 {
+            return;
+        }
+        let Some((parts, _, _)) = self.parts(self.fbo.draw) else {
+            return;
+        };
+        let Some(fb) = self.fb.as_mut() else { return };
+        fb.resolve();
+        let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+        for (a, stencil) in parts.roles() {
+            if let Some((img, iw)) = image_mut(fbo, textures, a) {
+                store(fb, img, iw, stencil);
+            }
+        }
+    }
+
+    /// Writes pending draws into the bound draw object's images, so that they can be read
+    /// or changed directly (texture calls, glGenerateMipmap, reads through another binding).
+    pub fn fbo_sync(&mut self) {
+        if self.fbo.draw != 0 {
+            self.settle_draws();
+            crate::pixels::cache::flush(self);
+            self.write_back();
+        }
+    }
+
+    /// Called before a texture's images change while an object is bound for drawing:
+    /// writes the working copy back now, and marks it to be assembled anew when the GL
+    /// call ends ([`Context::fbo_refresh`]), so that the change is seen either way.
+    pub fn fbo_touch(&mut self) {
+        if self.fbo.draw != 0 && !self.fbo.stale {
+            self.fbo_sync();
+            self.fbo.stale = true;
+        }
+    }
+
+    /// Assembles the working copy anew after [`Context::fbo_touch`] (the C boundary calls
+    /// it when a GL call ends).
+    #[inline]
+    pub fn fbo_refresh(&mut self) {
+        if self.fbo.stale {
+            self.fbo.stale = false;
+            self.settle_draws();
+            self.fb = self.assemble(self.fbo.draw);
+        }
+    }
+
+    /// Detaches the images `which` picks from the bound draw and read objects (deleting
+    /// an attached texture or renderbuffer detaches it from the bound framebuffers only,
+    /// as GL 3.0 says). The caller has called [`Context::fbo_touch`].
+    pub fn detach_bound(&mut self, which: impl Fn(Attachment) -> bool) {
+        for name in [self.fbo.draw, self.fbo.read] {
+            if let Some(f) = self.fbo.object_mut(name) {
+                for a in f.color.iter_mut().chain([&mut f.depth, &mut f.stencil]) {
+                    if which(*a) {
+                        *a = Attachment::None;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Runs `f`, which may change attachments or attached images, between writing the
+    /// working copy back and assembling it anew.
+    pub fn fbo_edit<R>(&mut self, f: impl FnOnce(&mut Self) -> GlResult<R>) -> GlResult<R> {
+        if self.fbo.draw == 0 {
+            return f(self);
+        }
+        self.fbo_sync();
+        let r = f(self);
+        self.fb = self.assemble(self.fbo.draw);
+        r
+    }
+
+    /// Makes object `name` (0: the window) the draw binding, moving the working copy.
+    pub fn set_draw_framebuffer(&mut self, name: u32) {
+        self.settle_draws();
+        crate::pixels::cache::flush(self);
+        if name == self.fbo.draw {
+            return;
+        }
+        if self.fbo.draw == 0 {
+            self.fbo.window = self.fb.take();
+        } else {
+            self.write_back();
+        }
+        self.fbo.draw = name;
+        self.fb = if name == 0 {
+            self.fbo.window.take()
+        } else {
+            self.assemble(name)
+        };
+    }
+
+    /// Runs `f` with the window's framebuffer in `fb` (OSMesa calls that look at the
+    /// window while an object is bound for drawing).
+    pub fn with_window<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
+        if self.fbo.draw == 0 {
+            return f(self);
+        }
+        self.settle_draws();
+        crate::pixels::cache::flush(self);
+        std::mem::swap(&mut self.fb, &mut self.fbo.window);
+        let r = f(self);
+        std::mem::swap(&mut self.fb, &mut self.fbo.window);
+        r
+    }
+
+    /// Colour (r, g, b, a), depth and stencil bits of the draw framebuffer (glGet's
+    /// GL_RED_BITS … GL_STENCIL_BITS).
+    pub fn draw_bits(&self) -> ([i32; 4], i32, i32) {
+        if self.fbo.draw == 0 {
+            let stencil = if self.visual.stencil { 8 } else { 0 };
+            return (self.color_bits(), self.visual.depth.bits(), stencil);
+        }
+        match self.fb.as_ref() {
+            Some(fb) => (
+                fb.format.channel_bits(),
+                fb.depth_format.bits(),
+                fb.stencil_bits(),
+            ),
+            None => ([0; 4], 0, 0),
+        }
+    }
+
+    /// GL_INVALID_FRAMEBUFFER_OPERATION when the draw framebuffer is an incomplete object.
+    pub fn check_draw_framebuffer(&self) -> GlResult<()> {
+        if self.fbo.draw != 0 && self.fb.is_none() && self.inflight.is_none() {
+            return Err(GlError::InvalidFramebufferOperation);
+        }
+        Ok(())
+    }
+
+    /// GL_INVALID_FRAMEBUFFER_OPERATION when the read framebuffer is an incomplete object.
+    pub fn check_read_framebuffer(&self) -> GlResult<()> {
+        if self.fbo.read != 0 && self.fbo.status(self.fbo.read, &self.textures) != Status::Complete
+        {
+            return Err(GlError::InvalidFramebufferOperation);
+        }
+        Ok(())
+    }
+
+    /// Readies the read framebuffer for [`Context::read_fb`] (glReadPixels,
+    /// glCopyTex(Sub)Image): GL_INVALID_FRAMEBUFFER_OPERATION when it is incomplete.
+    pub fn prepare_read(&mut self) -> GlResult<()> {
+        self.check_read_framebuffer()?;
+        self.fbo.read_copy = self.read_framebuffer_copy();
+        Ok(())
+    }
+
+    /// The framebuffer reads come from: the draw framebuffer itself, or the copy
+    /// [`Context::prepare_read`] made of another one.
+    pub fn read_fb(&self) -> Option<&Framebuffer> {
+        if self.fbo.read == self.fbo.draw {
+            self.fb.as_ref()
+        } else {
+            self.fbo.read_copy.as_ref()
+        }
+    }
+
+    /// Whether colour can be read: the read buffer is not GL_NONE (and, for an object,
+    /// names an attached image).
+    pub fn reads_color(&self) -> bool {
+        match self.fbo.object(self.fbo.read) {
+            None => self.state.legacy.reads_color(),
+            Some(f) => f
+                .read_buffer
+                .is_some_and(|i| f.color[i] != Attachment::None),
+        }
+    }
+
+    /// A copy of the read framebuffer, with its colour taken from the read buffer, when it
+    /// is not the draw framebuffer (then the caller reads `fb` itself: `None`).
+    pub fn read_framebuffer_copy(&mut self) -> Option<Framebuffer> {
+        if self.fbo.read == self.fbo.draw {
+            return None;
+        }
+        self.fbo_sync();
+        if self.fbo.read == 0 {
+            return self.fbo.window.clone();
+        }
+        let name = self.fbo.read;
+        let f = self.fbo.object_mut(name)?;
+        // Assemble with the read buffer in the draw buffer's place.
+        let saved = f.draw_buffer;
+        f.draw_buffer = f.read_buffer;
+        let fb = self.assemble(name);
+        if let Some(f) = self.fbo.object_mut(name) {
+            f.draw_buffer = saved;
+        }
+        fb
+    }
+}
+
+/// Copies image `img` (rows bottom-up, `iw` wide) into the working copy `fb`. `stencil`
+/// says the attachment is the stencil attachment (a depth-stencil image fills both).
+fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
+    let (w, h) = (fb.width, fb.height);
+    for y in 0..h {
+        let (src, dst) = (y * iw, fb.row(y) * w);
+        match &img {
+            ImageMut::Color(px, _) => {
+                let st = fb.format;
+                for x in 0..w {
+                    let c = px[src + x];
+                    fb.color[dst + x] = if st == ColorFormat::Rgb {
+                        [c[0], c[1], c[2], 255]
+                    } else {
+                        c
+                    };
+                }
+            }
+            ImageMut::DepthTexels(px) if !stencil => {
+                for x in 0..w {
+                    fb.depth[dst + x] = u32::from_le_bytes(px[src + x]);
+                }
+            }
+            ImageMut::DepthStencil(d, s) => {
+                if !stencil && !fb.depth.is_empty() {
+                    fb.depth[dst..dst + w].copy_from_slice(&d[src..src + w]);
+                }
+                if stencil && !s.is_empty() && !fb.stencil.is_empty() {
+                    fb.stencil[dst..dst + w].copy_from_slice(&s[src..src + w]);
+                }
+            }
+            ImageMut::Stencil(s) if stencil && !fb.stencil.is_empty() => {
+                fb.stencil[dst..dst + w].copy_from_slice(&s[src..src + w]);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Writes the working copy `fb` back into image `img` (the inverse of [`load`]); colour
+/// is stored as the image's base format keeps it.
+fn store(fb: &Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
+    let (w, h) = (fb.width, fb.height);
+    let mut img = img;
+    for y in 0..h {
+        let (dst, src) = (y * iw, fb.row(y) * w);
+        match &mut img {
+            ImageMut::Color(px, base) => {
+                for x in 0..w {
+                    px[dst + x] = base.swizzle(fb.color[src + x], 0, 255);
+                }
+            }
+            ImageMut::DepthTexels(px) if !stencil && !fb.depth.is_empty() => {
+                for x in 0..w {
+                    px[dst + x] = fb.depth[src + x].to_le_bytes();
+                }
+            }
+            ImageMut::DepthStencil(d, s) => {
+                if !stencil && !fb.depth.is_empty() {
+                    d[dst..dst + w].copy_from_slice(&fb.depth[src..src + w]);
+                }
+                if stencil && !s.is_empty() && !fb.stencil.is_empty() {
+                    s[dst..dst + w].copy_from_slice(&fb.stencil[src..src + w]);
+                }
+            }
+            ImageMut::Stencil(s) if stencil && !fb.stencil.is_empty() => {
+                s[dst..dst + w].copy_from_slice(&fb.stencil[src..src + w]);
+            }
+            _ => {}
+        }
+    }
+}
