@@ -39,7 +39,8 @@ def loaded_lib():
     with open("/proc/self/maps") as f:
         for line in f:
             path = line.split()[-1] if len(line.split()) >= 6 else ""
-            if "OSMesa" in path or "softgl" in path:
+            name = os.path.basename(path)
+            if "OSMesa" in name or "softgl" in name:
                 return os.path.realpath(path)
     return None
 
