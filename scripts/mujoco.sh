@@ -6,7 +6,7 @@
 #   bash scripts/mujoco.sh [--reference-only] [compare.py options...]
 #   bash scripts/mujoco.sh --trace [SAMPLES...]   GL call trace of MuJoCo (default on
 #       Mesa; GLTRACE_LIB=path/to/libsoftgl.so traces another libOSMesa), written to
-#       target/mujoco/trace-MODEL-sN.txt by the shim bench/mujoco/gltrace/ generates
+#       target/mujoco/trace-SIDE-MODEL-sN.txt by the shim bench/mujoco/gltrace/ generates
 #
 # --reference-only renders Mesa on both sides (a determinism check; no cargo build).
 # Other options go to bench/mujoco/compare.py (--models, --sizes 640x480,1920x1080,
@@ -41,16 +41,18 @@ if [ "${1:-}" = "--trace" ]; then
   for n in libOSMesa.so libOSMesa.so.8; do
     ln -sfn "$(realpath "${GLTRACE_LIB:-/usr/lib/x86_64-linux-gnu/libOSMesa.so.8}")" "$out/lib-trace/$n"
   done
+  side=mesa
+  [ -z "${GLTRACE_LIB:-}" ] || side=$(basename "$GLTRACE_LIB" .so)
   samples=("$@")
   [ ${#samples[@]} -gt 0 ] || samples=(0 4)
   for s in "${samples[@]}"; do
     for model in humanoid showcase; do
-      GLTRACE_FILE="$out/trace-$model-s$s.txt" LD_PRELOAD="$PWD/$out/gltrace.so" \
+      GLTRACE_FILE="$out/trace-$side-$model-s$s.txt" LD_PRELOAD="$PWD/$out/gltrace.so" \
         MUJOCO_GL=osmesa PYOPENGL_PLATFORM=osmesa GALLIUM_DRIVER=llvmpipe \
         LD_LIBRARY_PATH="$PWD/$out/lib-trace${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
         "$py" bench/mujoco/render.py --model "$model" --samples "$s" --frames 1 --warmup 0 \
-        --out "$out/trace-$model-s$s.png" >/dev/null || true
-      echo "wrote $out/trace-$model-s$s.txt"
+        --out "$out/trace-$side-$model-s$s.png" >/dev/null || true
+      echo "wrote $out/trace-$side-$model-s$s.txt"
     done
   done
   exit 0

@@ -152,7 +152,7 @@ def main(out):
             w("  pthread_mutex_lock(&M);")
             w("  fprintf(tf(), \"%s(%s)\"%s);" % (n, ", ".join(fs), "".join(", " + v for v in vs)))
             if n == "glGetString" or n == "glGetStringi":
-                w("  fprintf(tf(), \" = \\\"%.300s\\\"\", r ? (const char*)r : \"(null)\");")
+                w("  fprintf(tf(), \" = \\\"%.30000s\\\"\", r ? (const char*)r : \"(null)\");")
             elif n == "glCheckFramebufferStatus" or n == "glCheckFramebufferStatusEXT":
                 w("  fprintf(tf(), \" = %s\", en(r));")
             elif n == "glGetError":
