@@ -20,8 +20,9 @@ HEADERS = ["/usr/include/GL/gl.h", "/usr/include/GL/glext.h"]
 
 # Calls too frequent to log one by one (immediate mode, display-list replay).
 COUNT_ONLY = re.compile(
-    r"^gl(Vertex|Normal|TexCoord|MultiTexCoord|Color|SecondaryColor|FogCoord|"
-    r"EdgeFlag|Index|Material|CallList|Rect|ArrayElement)[0-9a-zA-Z]*$")
+    r"^gl(Vertex[234]|Normal3|TexCoord[1234]|MultiTexCoord[1234]|Color[34]|"
+    r"SecondaryColor3|FogCoord[fd]|EdgeFlagv?$|Index[dfisu]|Material|CallList$|Rect[dfis]|"
+    r"ArrayElement$)")
 
 ENUM_PARAM = re.compile(r"(internalformat|internalFormat)$")
 SUFFIX = re.compile(r"_(ARB|EXT|OES|NV|NVX|AMD|ATI|SGIS|SGIX|SGI|KHR|MESA|IBM|APPLE|INTEL|SUN|HP|3DFX|OML|PGI|REND|S3|WIN|INGR|IMG|QCOM|ANGLE|GREMEDY|OVR)$")
