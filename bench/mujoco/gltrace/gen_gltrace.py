@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""Generates gltrace.c: an LD_PRELOAD shim that logs the GL calls a client makes
+through OSMesaGetProcAddress (how MuJoCo's glad loader gets every GL function).
+
+The shim interposes OSMesaGetProcAddress. For each name asked for it logs
+`getproc NAME -> ok|NULL`, and if the library has it and the name is declared in
+the system's GL/gl.h or GL/glext.h, returns a wrapper that logs `NAME(args) [= ret]`
+and forwards to the real function. Enum arguments are printed by name; glGet*v
+outputs, glGetString results and glCheckFramebufferStatus results are printed too.
+Immediate-mode vertex calls (glVertex*, glNormal*, glTexCoord*, glColor*...) are
+only counted; all counts are printed at exit.
+
+Usage: gen_gltrace.py OUT.c   (then: cc -shared -fPIC -O1 OUT.c -o gltrace.so -ldl)
+Run the client with LD_PRELOAD=gltrace.so GLTRACE_FILE=trace.txt.
+"""
+import re
+import sys
+
+HEADERS = ["/usr/include/GL/gl.h", "/usr/include/GL/glext.h"]
+
+# Calls too frequent to log one by one (immediate mode, display-list replay).
+COUNT_ONLY = re.compile(
+    r"^gl(Vertex[234]|Normal3|TexCoord[1234]|MultiTexCoord[1234]|Color[34]|"
+    r"SecondaryColor3|FogCoord[fd]|EdgeFlagv?$|Index[dfisu]|Material|CallList$|Rect[dfis]|"
+    r"ArrayElement$)")
+
+ENUM_PARAM = re.compile(r"(internalformat|internalFormat)$")
+SUFFIX = re.compile(r"_(ARB|EXT|OES|NV|NVX|AMD|ATI|SGIS|SGIX|SGI|KHR|MESA|IBM|APPLE|INTEL|SUN|HP|3DFX|OML|PGI|REND|S3|WIN|INGR|IMG|QCOM|ANGLE|GREMEDY|OVR)$")
+GET_OUT = {  # functions whose last pointer parameter is an output worth printing
+    "glGetIntegerv": "int", "glGetBooleanv": "bool", "glGetFloatv": "float",
+    "glGetDoublev": "double", "glGetRenderbufferParameteriv": "int",
+    "glGetFramebufferAttachmentParameteriv": "int", "glGetTexLevelParameteriv": "int",
+    "glGetTexParameteriv": "int", "glGetQueryObjectuiv": "int",
+}
+
+
+def parse():
+    protos, enums = {}, {}
+    for h in HEADERS:
+        text = open(h).read()
+        for m in re.finditer(r"#define\s+(GL_[A-Za-z0-9_]+)\s+(0x[0-9A-Fa-f]+|\d+)\b", text):
+            name, val = m.group(1), int(m.group(2), 0)
+            if name.startswith("GL_VERSION_") or "_BIT" in name:
+                continue
+            old = enums.get(val)
+            # Prefer a core name (no vendor suffix), else the first one seen.
+            if old is None or (SUFFIX.search(old) and not SUFFIX.search(name)):
+                enums[val] = name
+        flat = re.sub(r"\s+", " ", re.sub(r"/\*.*?\*/", "", text, flags=re.S))
+        for m in re.finditer(r"GLAPI ([^;()]*?)\s*(?:GLAPIENTRY|APIENTRY)\s*(gl[A-Za-z0-9_]+)\s*\(([^)]*)\)\s*;", flat):
+            ret, name, args = m.group(1).strip(), m.group(2), m.group(3).strip()
+            if name in protos:
+                continue
+            params = []
+            if args and args != "void":
+                ok = True
+                for i, a in enumerate(args.split(",")):
+                    a = a.strip()
+                    if "(" in a or "[" in a:
+                        ok = False
+                        break
+                    mm = re.match(r"(.*?)([A-Za-z_][A-Za-z0-9_]*)$", a)
+                    if not mm or not mm.group(1).strip():
+                        typ, pname = a, "a%d" % i
+                    else:
+                        typ, pname = mm.group(1).strip(), mm.group(2)
+                    params.append((typ, pname))
+                if not ok:
+                    continue
+            protos[name] = (ret, params)
+    return protos, enums
+
+
+def fmt(typ, pname):
+    t = typ.replace("const", "").strip()
+    if "*" in t or t in ("GLsync", "GLDEBUGPROC", "GLDEBUGPROCARB", "GLDEBUGPROCKHR",
+                         "GLDEBUGPROCAMD", "GLeglImageOES", "GLeglClientBufferEXT",
+                         "GLVULKANPROCNV"):
+        return "%p", "(const void*)(%s)" % pname
+    if t == "GLenum" or (ENUM_PARAM.search(pname) and t == "GLint"):
+        return "%s", "en((unsigned)(%s))" % pname
+    if t == "GLint" and pname == "param":  # glTexParameteri, glTexGeni, glFogi ...
+        return "%s", "ei((int)(%s))" % pname
+    if t == "GLbitfield":
+        return "0x%x", "(unsigned)(%s)" % pname
+    if t in ("GLfloat", "GLclampf", "GLdouble", "GLclampd"):
+        return "%g", "(double)(%s)" % pname
+    if t in ("GLboolean", "GLbyte", "GLshort", "GLint", "GLsizei", "GLfixed", "GLclampx"):
+        return "%d", "(int)(%s)" % pname
+    if t in ("GLubyte", "GLushort", "GLuint", "GLhandleARB", "GLhalfNV", "GLchar",
+             "GLcharARB"):
+        return "%u", "(unsigned)(%s)" % pname
+    if t in ("GLintptr", "GLsizeiptr", "GLintptrARB", "GLsizeiptrARB", "GLint64",
+             "GLint64EXT", "GLvdpauSurfaceNV"):
+        return "%lld", "(long long)(%s)" % pname
+    if t in ("GLuint64", "GLuint64EXT"):
+        return "%llu", "(unsigned long long)(%s)" % pname
+    return None, None
+
+
+def main(out):
+    protos, enums = parse()
+    o = []
+    w = o.append
+    w("/* generated by gen_gltrace.py from the system GL headers; do not edit */")
+    w("#define _GNU_SOURCE\n#include <dlfcn.h>\n#include <stdio.h>\n#include <stdlib.h>")
+    w("#include <string.h>\n#include <stdint.h>\n#include <pthread.h>\n#define GL_GLEXT_PROTOTYPES")
+    w("#include <GL/gl.h>\n#include <GL/glext.h>\n")
+    w("static FILE *T;\nstatic pthread_mutex_t M = PTHREAD_MUTEX_INITIALIZER;")
+    w("static FILE *tf(void) { if (!T) { const char *p = getenv(\"GLTRACE_FILE\");"
+      " T = p ? fopen(p, \"w\") : stderr; if (!T) T = stderr; setvbuf(T, NULL, _IOLBF, 0); } return T; }")
+    w("struct E { unsigned v; const char *n; };\nstatic const struct E ENUMS[] = {")
+    for v in sorted(enums):
+        if v < 2**32:
+            w("  {0x%xu, \"%s\"}," % (v, enums[v]))
+    w("};")
+    w("static __thread char ebuf[8][64]; static __thread int eix;")
+    w("static const char *en(unsigned v) { if (v < 16) { char *b = ebuf[eix++ & 7]; snprintf(b, 64, \"%u\", v); return b; } int lo = 0, hi = (int)(sizeof ENUMS / sizeof ENUMS[0]) - 1;"
+      " while (lo <= hi) { int m = (lo + hi) / 2; if (ENUMS[m].v == v) return ENUMS[m].n;"
+      " if (ENUMS[m].v < v) lo = m + 1; else hi = m - 1; }"
+      " char *b = ebuf[eix++ & 7]; snprintf(b, 64, \"0x%x\", v); return b; }")
+    w("static const char *ei(int v) { char *b = ebuf[eix++ & 7]; const char *n = v >= 0x100 ? en((unsigned)v) : \"\";"
+      " if (n[0] == 'G') snprintf(b, 64, \"%s\", n); else snprintf(b, 64, \"%d\", v); return b; }")
+    names = sorted(protos)
+    w("static const char *NAMES[] = {%s};" % ",".join('"%s"' % n for n in names))
+    w("static unsigned long COUNTS[%d];" % len(names))
+    w("static void *REAL[%d];" % len(names))
+    for i, n in enumerate(names):
+        ret, params = protos[n]
+        fs, vs, decl, call = [], [], [], []
+        good = True
+        for typ, pname in params:
+            f, v = fmt(typ, pname)
+            if f is None:
+                good = False
+                break
+            fs.append(f)
+            vs.append(v)
+            decl.append("%s %s" % (typ, pname))
+            call.append(pname)
+        if not good:
+            w("#define W_%s 0" % n)
+            continue
+        w("#define W_%s 1" % n)
+        sig = ", ".join(decl) or "void"
+        w("static %s w_%s(%s) {" % (ret, n, sig))
+        w("  typedef %s (*F)(%s);" % (ret, sig))
+        w("  __atomic_fetch_add(&COUNTS[%d], 1, __ATOMIC_RELAXED);" % i)
+        r = "" if ret == "void" else "%s r = " % ret
+        count_only = bool(COUNT_ONLY.match(n))
+        w("  %s((F)REAL[%d])(%s);" % (r, i, ", ".join(call)))
+        if not count_only:
+            w("  pthread_mutex_lock(&M);")
+            w("  fprintf(tf(), \"%s(%s)\"%s);" % (n, ", ".join(fs), "".join(", " + v for v in vs)))
+            if n == "glGetString" or n == "glGetStringi":
+                w("  fprintf(tf(), \" = \\\"%.30000s\\\"\", r ? (const char*)r : \"(null)\");")
+            elif n == "glCheckFramebufferStatus" or n == "glCheckFramebufferStatusEXT":
+                w("  fprintf(tf(), \" = %s\", en(r));")
+            elif n == "glGetError":
+                w("  fprintf(tf(), \" = %s\", r ? en(r) : \"GL_NO_ERROR\");")
+            elif ret != "void":
+                w("  fprintf(tf(), \" = %lld\", (long long)(uintptr_t)r);")
+            if n in GET_OUT and params:
+                p = params[-1][1]
+                kind = GET_OUT[n]
+                if kind == "int":
+                    w("  if (%s) fprintf(tf(), \" -> %%d\", (int)%s[0]);" % (p, p))
+                elif kind == "bool":
+                    w("  if (%s) fprintf(tf(), \" -> %%d\", (int)%s[0]);" % (p, p))
+                else:
+                    w("  if (%s) fprintf(tf(), \" -> %%g\", (double)%s[0]);" % (p, p))
+            w("  fputc('\\n', tf());")
+            w("  pthread_mutex_unlock(&M);")
+        if ret != "void":
+            w("  return r;")
+        w("}")
+    w("static void *WRAP[] = {")
+    for n in names:
+        w("#if W_%s\n  (void*)w_%s,\n#else\n  0,\n#endif" % (n, n))
+    w("};")
+    w("""
+typedef void *(*GPA)(const char *);
+void *OSMesaGetProcAddress(const char *name) {
+  static GPA real;
+  if (!real) real = (GPA)dlsym(RTLD_NEXT, "OSMesaGetProcAddress");
+  void *p = real ? real(name) : NULL;
+  pthread_mutex_lock(&M);
+  fprintf(tf(), "getproc %s -> %s\\n", name, p ? "ok" : "NULL");
+  pthread_mutex_unlock(&M);
+  if (!p) return NULL;
+  int lo = 0, hi = (int)(sizeof NAMES / sizeof NAMES[0]) - 1;
+  while (lo <= hi) {
+    int m = (lo + hi) / 2, c = strcmp(NAMES[m], name);
+    if (c == 0) { if (!WRAP[m]) return p; REAL[m] = p; return WRAP[m]; }
+    if (c < 0) lo = m + 1; else hi = m - 1;
+  }
+  return p;
+}
+__attribute__((destructor)) static void fini(void) {
+  fprintf(tf(), "# call counts\\n");
+  for (unsigned i = 0; i < sizeof NAMES / sizeof NAMES[0]; i++)
+    if (COUNTS[i]) fprintf(tf(), "count %s %lu\\n", NAMES[i], COUNTS[i]);
+  fflush(tf());
+}
+""")
+    with open(out, "w") as f:
+        f.write("\n".join(o))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
