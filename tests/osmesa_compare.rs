@@ -227,6 +227,8 @@ const EXACT: Tolerance = Tolerance {
 
 /// Every scene in `c_tests/`; a test checks that this list is complete.
 const SCENES: &[&str] = &[
+    "fbo_errors",
+    "fbo_render",
     "tex3d",
     "tex_cube",
     "copy_tex_1d",
@@ -348,6 +350,8 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    fbo_errors,
+    fbo_render,
     tex3d,
     tex_cube,
     copy_tex_1d,

@@ -33,6 +33,9 @@ pub enum RbFormat {
     Rgba8,
     /// 8-bit RGB colour (alpha reads as 1, as llvmpipe's R8G8B8X8).
     Rgb8,
+    /// 8-bit alpha, luminance, luminance-alpha or intensity (renderable in the
+    /// compatibility profile, as in Mesa).
+    Legacy(BaseFormat),
     /// Depth only.
     Depth(DepthFormat),
     /// 24-bit depth with 8-bit stencil in one image.
@@ -53,6 +56,22 @@ impl RbFormat {
             GL_RGB | GL_RGB8 | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB10 | GL_RGB12 | GL_RGB16 => {
                 RbFormat::Rgb8
             }
+            GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => {
+                RbFormat::Legacy(BaseFormat::Alpha)
+            }
+            GL_LUMINANCE | GL_LUMINANCE4 | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 => {
+                RbFormat::Legacy(BaseFormat::Luminance)
+            }
+            GL_LUMINANCE_ALPHA
+            | GL_LUMINANCE4_ALPHA4
+            | GL_LUMINANCE6_ALPHA2
+            | GL_LUMINANCE8_ALPHA8
+            | GL_LUMINANCE12_ALPHA4
+            | GL_LUMINANCE12_ALPHA12
+            | GL_LUMINANCE16_ALPHA16 => RbFormat::Legacy(BaseFormat::LuminanceAlpha),
+            GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => {
+                RbFormat::Legacy(BaseFormat::Intensity)
+            }
             GL_DEPTH_COMPONENT16 => RbFormat::Depth(DepthFormat::Z16),
             GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => RbFormat::Depth(DepthFormat::Z24),
             GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => RbFormat::Depth24Stencil8,
@@ -67,6 +86,9 @@ impl RbFormat {
         match self {
             RbFormat::Rgba8 => [8, 8, 8, 8, 0, 0],
             RbFormat::Rgb8 => [8, 8, 8, 0, 0, 0],
+            RbFormat::Legacy(BaseFormat::Alpha) => [0, 0, 0, 8, 0, 0],
+            RbFormat::Legacy(BaseFormat::LuminanceAlpha) => [8, 0, 0, 8, 0, 0],
+            RbFormat::Legacy(_) => [8, 0, 0, 0, 0, 0],
             RbFormat::Depth(d) => [0, 0, 0, 0, d.bits(), 0],
             RbFormat::Depth24Stencil8 => [0, 0, 0, 0, 24, 8],
             RbFormat::Stencil8 => [0, 0, 0, 0, 0, 8],
@@ -107,7 +129,9 @@ impl Renderbuffer {
         let (mut color, mut depth, mut stencil) = (Vec::new(), Vec::new(), Vec::new());
         let oom = |_| GlError::OutOfMemory;
         match format {
-            RbFormat::Rgba8 | RbFormat::Rgb8 => color.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Rgba8 | RbFormat::Rgb8 | RbFormat::Legacy(_) => {
+                color.try_reserve_exact(n).map_err(oom)?
+            }
             RbFormat::Depth(_) => depth.try_reserve_exact(n).map_err(oom)?,
             RbFormat::Depth24Stencil8 => {
                 depth.try_reserve_exact(n).map_err(oom)?;
@@ -312,6 +336,7 @@ impl FboState {
                 let kind = match rb.format? {
                     RbFormat::Rgba8 => ImageKind::Color(BaseFormat::Rgba),
                     RbFormat::Rgb8 => ImageKind::Color(BaseFormat::Rgb),
+                    RbFormat::Legacy(b) => ImageKind::Color(b),
                     RbFormat::Depth(d) => ImageKind::Depth(d, false),
                     RbFormat::Depth24Stencil8 => ImageKind::Depth(DepthFormat::Z24, true),
                     RbFormat::Stencil8 => ImageKind::Stencil,

@@ -59,10 +59,10 @@ fn image_mut<'a>(
             let rb = fbo.renderbuffers.get_mut(&name)?.as_mut()?;
             let w = rb.width;
             let img = if !rb.color.is_empty() {
-                let base = if rb.format == Some(super::fbo::RbFormat::Rgb8) {
-                    BaseFormat::Rgb
-                } else {
-                    BaseFormat::Rgba
+                let base = match rb.format {
+                    Some(super::fbo::RbFormat::Rgb8) => BaseFormat::Rgb,
+                    Some(super::fbo::RbFormat::Legacy(b)) => b,
+                    _ => BaseFormat::Rgba,
                 };
                 ImageMut::Color(&mut rb.color, base)
             } else if !rb.depth.is_empty() {

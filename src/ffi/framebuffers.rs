@@ -184,10 +184,11 @@ fn bind_framebuffer(target: GLenum, name: GLuint, any_name: bool) {
     })
 }
 
-/// glBindFramebuffer (names must come from glGenFramebuffers).
+/// glBindFramebuffer (the compatibility profile, like the EXT call, takes names never
+/// generated; only a core profile refuses them, as Mesa does).
 #[no_mangle]
 pub extern "C" fn glBindFramebuffer(target: GLenum, framebuffer: GLuint) {
-    bind_framebuffer(target, framebuffer, false)
+    bind_framebuffer(target, framebuffer, true)
 }
 
 /// glBindFramebufferEXT (any name creates an object).
@@ -473,10 +474,10 @@ fn new_renderbuffer() -> Renderbuffer {
     }
 }
 
-/// glBindRenderbuffer (names must come from glGenRenderbuffers).
+/// glBindRenderbuffer (names never generated are taken, as by glBindFramebuffer).
 #[no_mangle]
 pub extern "C" fn glBindRenderbuffer(target: GLenum, renderbuffer: GLuint) {
-    bind_renderbuffer(target, renderbuffer, false)
+    bind_renderbuffer(target, renderbuffer, true)
 }
 
 /// glBindRenderbufferEXT (any name creates an object).
@@ -512,8 +513,13 @@ fn renderbuffer_storage(
         if !(0..=max).contains(&w) || !(0..=max).contains(&h) {
             return Err(GlError::InvalidValue);
         }
-        if samples < 0 || samples > MAX_SAMPLES {
+        // Mesa has ARB_internalformat_query: more samples than the format offers is
+        // INVALID_OPERATION, a negative count INVALID_VALUE.
+        if samples < 0 {
             return Err(GlError::InvalidValue);
+        }
+        if samples > MAX_SAMPLES {
+            return Err(GlError::InvalidOperation);
         }
         if c.fbo.bound_renderbuffer_mut().is_none() {
             return Err(GlError::InvalidOperation);
@@ -539,7 +545,7 @@ pub extern "C" fn glRenderbufferStorage(
     renderbuffer_storage(target, 0, internalformat, width, height)
 }
 
-/// glRenderbufferStorageMultisample: `samples` above GL_MAX_SAMPLES is GL_INVALID_VALUE.
+/// glRenderbufferStorageMultisample: `samples` above GL_MAX_SAMPLES is GL_INVALID_OPERATION.
 #[no_mangle]
 pub extern "C" fn glRenderbufferStorageMultisample(
     target: GLenum,
@@ -808,4 +814,25 @@ pub(crate) fn object_buffer(mode: GLenum) -> GlResult<Option<usize>> {
             _ => Err(GlError::InvalidEnum),
         },
     }
+}
+
+/// glBlitFramebufferEXT (GL_EXT_framebuffer_blit; Mesa resolves it through
+/// OSMesaGetProcAddress without exporting it).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glBlitFramebufferEXT(
+    srcX0: GLint,
+    srcY0: GLint,
+    srcX1: GLint,
+    srcY1: GLint,
+    dstX0: GLint,
+    dstY0: GLint,
+    dstX1: GLint,
+    dstY1: GLint,
+    mask: GLbitfield,
+    filter: GLenum,
+) {
+    glBlitFramebuffer(
+        srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1, mask, filter,
+    )
 }
