@@ -227,6 +227,7 @@ const EXACT: Tolerance = Tolerance {
 
 /// Every scene in `c_tests/`; a test checks that this list is complete.
 const SCENES: &[&str] = &[
+    "fbo_blit",
     "fbo_errors",
     "fbo_render",
     "tex3d",
@@ -350,6 +351,7 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    fbo_blit,
     fbo_errors,
     fbo_render,
     tex3d,

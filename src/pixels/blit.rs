@@ -1,17 +1,33 @@
-//! glBlitFramebuffer: copies a rectangle of the read framebuffer into a rectangle of the
-//! draw framebuffer, scaled and flipped as the two rectangles say, through the scissor
-//! and nothing else of the fragment pipeline.
+//! glBlitFramebuffer as Mesa 22.3 and llvmpipe do it (docs/fbo-rules.md §2).
 //!
-//! # Arithmetic
-//! Each destination pixel centre maps back into the source rectangle:
-//! `u = sx0 + (x + 0.5 − dx0) · (sx1 − sx0) / (dx1 − dx0)` (the same for y), in f32.
-//! GL_NEAREST takes texel `floor(u)`; GL_LINEAR interpolates the four texels around
-//! `u − 0.5`, clamped to the source buffer's edge, and rounds to nearest. Destination pixels
-//! whose source texel falls outside the read buffer are left alone (GL 3.0 §4.3.2 leaves
-//! them undefined). Depth and stencil are copied as stored values (the formats must match).
+//! # Rectangles
+//! Mesa first clips the destination rectangle to the draw buffer ∩ scissor and the source
+//! rectangle to the read buffer, moving the other rectangle's edge by
+//! `(int)(t·(src1 − src0) ± 0.5)` (`_mesa_clip_blit`). The clipped destination only
+//! becomes a scissor (when clipping changed it): the texel each pixel takes comes from the
+//! *unclipped* rectangles. Both rectangles then go to memory rows (the window's are
+//! flipped), a pair of upside-down rectangles is turned right side up, and the destination
+//! box is made positive (the source box may then run backwards: a mirror).
+//!
+//! # Texel selection
+//! An unscaled blit copies texel for texel. A scaled one is llvmpipe's blitter: a quad over
+//! the destination box, corners at `x / W · 2 − 1` through the viewport, drawn as the fan
+//! (v0, v1, v2), (v0, v2, v3) with llvmpipe's setup, its source coordinates interpolated
+//! per pixel (normalised by the source size for an object's image, unnormalised for the
+//! window, which gallium keeps as a RECT texture). GL_NEAREST takes texel
+//! `clamp(floor(s·W), 0, W − 1)`; GL_LINEAR llvmpipe's 8-bit filter:
+//! `f = round_half_even(s·W·256) − 128`, taps `f >> 8` and the next (clamped to the edge),
+//! weight `f & 255`, `a + ((w·(b − a) + 128) >> 8)` across, then down. An unscaled blit
+//! is never filtered. Depth and stencil take the GL_NEAREST texel's stored value.
+//!
+//! Not followed yet: a destination rectangle that leaves the draw buffer, whose quad
+//! llvmpipe clips geometrically first (its ties can fall the other way).
 
 use crate::context::{Context, GlError, GlResult};
+use crate::fragment::span::{eval, Fused, Madd, Unfused};
 use crate::framebuffer::Framebuffer;
+use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::{ClipVertex, Viewport, VARY_TEX};
 
 /// Which buffers a blit copies.
 #[derive(Clone, Copy, Debug, Default)]
@@ -24,38 +40,42 @@ pub struct BlitMask {
     pub stencil: bool,
 }
 
-/// One axis of a blit: the destination range and the map back into the source.
-struct Axis {
-    /// First and last-plus-one destination pixel (after clipping to the buffer).
-    lo: i64,
-    hi: i64,
-    /// `src = s0 + (d + 0.5 − d0) · scale`.
-    s0: f32,
-    d0: f32,
-    scale: f32,
+/// `_mesa_clip_blit`'s edge move after cutting the destination at `limit` (one side).
+fn cut(s_from: i32, s_to: i32, d_from: i32, d_to: i32, limit: i32) -> i32 {
+    let t = (limit - d_from) as f32 / (d_to - d_from) as f32;
+    let bias = if s_from < s_to { 0.5f32 } else { -0.5f32 };
+    s_from + (t * (s_to - s_from) as f32 + bias) as i32
 }
 
-impl Axis {
-    fn new(s0: i32, s1: i32, d0: i32, d1: i32, limit: (i64, i64)) -> Option<Axis> {
-        if d0 == d1 || s0 == s1 {
-            return None;
+/// Clips one axis of `dst` to `[lo, hi)` and `src` to `[0, size)` as `_mesa_clip_blit`
+/// does; `false` when nothing is left.
+fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32) -> bool {
+    if d[0] == d[1] || (d[0] <= lo && d[1] <= lo) || (d[0] >= hi && d[1] >= hi) {
+        return false;
+    }
+    if s[0] == s[1] || (s[0] <= 0 && s[1] <= 0) || (s[0] >= size && s[1] >= size) {
+        return false;
+    }
+    // One pass per (range, limit): the right/top edge first, then the left/bottom one.
+    let pass = |s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32| {
+        if d[1] > hi {
+            s[1] = cut(s[0], s[1], d[0], d[1], hi);
+            d[1] = hi;
+        } else if d[0] > hi {
+            s[0] = cut(s[1], s[0], d[1], d[0], hi);
+            d[0] = hi;
         }
-        let lo = (d0.min(d1) as i64).max(limit.0);
-        let hi = (d0.max(d1) as i64).min(limit.1);
-        (lo < hi).then(|| Axis {
-            lo,
-            hi,
-            s0: s0 as f32,
-            d0: d0 as f32,
-            scale: (s1 as f32 - s0 as f32) / (d1 as f32 - d0 as f32),
-        })
-    }
-
-    /// The source coordinate of destination pixel `d`'s centre.
-    #[inline]
-    fn src(&self, d: i64) -> f32 {
-        self.s0 + (d as f32 + 0.5 - self.d0) * self.scale
-    }
+        if d[0] < lo {
+            s[0] = cut(s[0], s[1], d[0], d[1], lo);
+            d[0] = lo;
+        } else if d[1] < lo {
+            s[1] = cut(s[1], s[0], d[1], d[0], lo);
+            d[1] = lo;
+        }
+    };
+    pass(s, d, lo, hi);
+    pass(d, s, 0, size);
+    true
 }
 
 /// glBlitFramebuffer after argument checks: `src`/`dst` are (x0, y0, x1, y1) in GL window
@@ -87,89 +107,246 @@ pub fn blit(
     if mask.depth && sfb.depth_format != dfb.depth_format {
         return Err(GlError::InvalidOperation);
     }
-    // The destination rectangle, clipped to the buffer and the scissor (y-down rows).
+    // The draw buffer ∩ scissor in GL coordinates (Mesa's _Xmin.._Ymax).
     let Some(region) = ctx.draw_region() else {
         return Ok(());
     };
-    let (dw, dh) = (dfb.width as i64, dfb.height as i64);
-    let gl_rows = if dfb.y_flip {
-        (dh - region[3], dh - region[1])
+    let dh = dfb.height as i32;
+    let (sw, sh) = (sfb.width as i32, sfb.height as i32);
+    let gl_rows = |r: [i64; 4]| {
+        if dfb.y_flip {
+            (dh - r[3] as i32, dh - r[1] as i32)
+        } else {
+            (r[1] as i32, r[3] as i32)
+        }
+    };
+    let (ylo, yhi) = gl_rows(region);
+    let (mut cs, mut cd) = ([src[0], src[2]], [dst[0], dst[2]]);
+    let (mut ct, mut ce) = ([src[1], src[3]], [dst[1], dst[3]]);
+    if !clip_axis(&mut cs, &mut cd, region[0] as i32, region[2] as i32, sw)
+        || !clip_axis(&mut ct, &mut ce, ylo, yhi, sh)
+    {
+        return Ok(());
+    }
+    // The clipped destination, as a scissor in memory rows.
+    let flip = |y: i32, h: i32, f: bool| if f { h - y } else { y };
+    let (sy0, sy1) = (flip(ce[0], dh, dfb.y_flip), flip(ce[1], dh, dfb.y_flip));
+    let scissor = [
+        cd[0].min(cd[1]) as i64,
+        sy0.min(sy1) as i64,
+        cd[0].max(cd[1]) as i64,
+        sy0.max(sy1) as i64,
+    ];
+    // The unclipped rectangles in memory rows, right side up, destination positive.
+    let (mut dy0, mut dy1) = (flip(dst[1], dh, dfb.y_flip), flip(dst[3], dh, dfb.y_flip));
+    let (mut sy0, mut sy1) = (flip(src[1], sh, sfb.y_flip), flip(src[3], sh, sfb.y_flip));
+    if sy0 > sy1 && dy0 > dy1 {
+        (sy0, sy1, dy0, dy1) = (sy1, sy0, dy1, dy0);
+    }
+    let (bx, sx, bw, swid) = if dst[0] < dst[2] {
+        (dst[0], src[0], dst[2] - dst[0], src[2] - src[0])
     } else {
-        (region[1], region[3])
+        (dst[2], src[2], dst[0] - dst[2], src[0] - src[2])
     };
-    let d_flip = dfb.y_flip;
-    let (Some(ax), Some(ay)) = (
-        Axis::new(src[0], src[2], dst[0], dst[2], (region[0], region[2])),
-        Axis::new(src[1], src[3], dst[1], dst[3], gl_rows),
-    ) else {
-        return Ok(());
+    let (by, sy, bh, shgt) = if dy0 < dy1 {
+        (dy0, sy0, dy1 - dy0, sy1 - sy0)
+    } else {
+        (dy1, sy1, dy0 - dy1, sy0 - sy1)
     };
-    let (sw, sh) = (sfb.width as i64, sfb.height as i64);
-    let Some(dfb) = ctx.fb.as_mut() else {
-        return Ok(());
+    let job = Job {
+        dst: [bx, by, bw, bh],
+        src: [sx, sy, swid, shgt],
+        scissor,
+        normalized: !sfb.y_flip,
+        linear: linear && (bw != swid.abs() || bh != shgt.abs()),
+        fma: crate::geometry::cpu_has_fma(),
     };
-    dfb.resolve();
-    dfb.uniform_color = None;
+    let fb = ctx.fb.as_mut().ok_or(GlError::InvalidOperation)?;
+    fb.resolve();
+    fb.uniform_color = None;
     ctx.dirty = true;
-    let s_flip = sfb.y_flip;
-    let s_index = |x: i64, y: i64| (if s_flip { sh - 1 - y } else { y } * sw + x) as usize;
-    for y in ay.lo..ay.hi {
-        let v = ay.src(y);
-        let drow = (if d_flip { dh - 1 - y } else { y } * dw) as usize;
-        for x in ax.lo..ax.hi {
-            let u = ax.src(x);
-            let d = drow + x as usize;
-            if mask.color {
-                let c = if linear {
-                    Some(bilinear(&sfb, u, v))
-                } else {
-                    texel(u, v, sw, sh).map(|(sx, sy)| sfb.color[s_index(sx, sy)])
-                };
-                if let Some(c) = c {
-                    dfb.color[d] = dfb.store_rgba8(c);
+    job.run(&sfb, fb, mask);
+    Ok(())
+}
+
+/// One blit in memory coordinates.
+struct Job {
+    /// Destination box: x, y, width, height (positive).
+    dst: [i32; 4],
+    /// Source box: x, y, width, height (negative: mirrored).
+    src: [i32; 4],
+    /// Pixels that may be written, `[x0, y0, x1, y1)`.
+    scissor: [i64; 4],
+    /// Texture coordinates are normalised (an object's image) or texel units (window).
+    normalized: bool,
+    /// Scaled GL_LINEAR.
+    linear: bool,
+    /// Whether llvmpipe's multiply-adds fuse on this CPU level.
+    fma: bool,
+}
+
+impl Job {
+    fn run(&self, s: &Framebuffer, d: &mut Framebuffer, mask: BlitMask) {
+        let sc = self.scissor;
+        let [bx, by, bw, bh] = self.dst;
+        let [sx, sy, sw, sh] = self.src;
+        // util_try_blit_via_copy_region's memcpy: unscaled, not mirrored, no scissor, every
+        // buffer of the depth-stencil format; otherwise depth takes the blitter's shader.
+        let whole = sc == [bx as i64, by as i64, (bx + bw) as i64, (by + bh) as i64];
+        let exact_depth = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
+        let bits = s.depth_format.bits() as u8;
+        let write =
+            |d: &mut Framebuffer, px: i64, py: i64, c: Option<[u8; 4]>, t: (usize, usize)| {
+                let di = py as usize * d.width + px as usize;
+                let si = t.1 * s.width + t.0;
+                if mask.color {
+                    let c = c.unwrap_or(s.color[si]);
+                    d.color[di] = d.store_rgba8(c);
+                }
+                if mask.depth {
+                    d.depth[di] = if exact_depth {
+                        s.depth[si]
+                    } else {
+                        // The blitter's depth shader: the sampler's float, written as depth.
+                        let z = crate::texture::shadow::sample_value(s.depth[si], bits);
+                        d.depth_format.quantize(z)
+                    };
+                }
+                if mask.stencil && !s.stencil.is_empty() && !d.stencil.is_empty() {
+                    d.stencil[di] = s.stencil[si];
+                }
+            };
+        let inside = |px: i64, py: i64| px >= sc[0] && px < sc[2] && py >= sc[1] && py < sc[3];
+        if bw == sw.abs() && bh == sh.abs() {
+            // Texel for texel (llvmpipe's copy or TXF path).
+            for j in 0..bh as i64 {
+                for i in 0..bw as i64 {
+                    let (px, py) = (bx as i64 + i, by as i64 + j);
+                    let tx = if sw > 0 {
+                        sx as i64 + i
+                    } else {
+                        sx as i64 - 1 - i
+                    };
+                    let ty = if sh > 0 {
+                        sy as i64 + j
+                    } else {
+                        sy as i64 - 1 - j
+                    };
+                    let ok = tx >= 0 && ty >= 0 && tx < s.width as i64 && ty < s.height as i64;
+                    if inside(px, py) && ok {
+                        write(d, px, py, None, (tx as usize, ty as usize));
+                    }
                 }
             }
-            if let Some((sx, sy)) = texel(u, v, sw, sh) {
-                let s = s_index(sx, sy);
-                if mask.depth {
-                    dfb.depth[d] = sfb.depth[s];
+            return;
+        }
+        let (ws, hs) = (s.width as f32, s.height as f32);
+        let (nx, ny) = if self.normalized {
+            (ws, hs)
+        } else {
+            (1.0, 1.0)
+        };
+        let (dwf, dhf) = (d.width as f32, d.height as f32);
+        let vp = Viewport::oriented(
+            [0, 0, d.width as i32, d.height as i32],
+            [0.0, 1.0],
+            d.height,
+            false,
+        );
+        let corner = |x: i32, y: i32, u: i32, v: i32| {
+            let clip = [
+                x as f32 / dwf * 2.0 - 1.0,
+                y as f32 / dhf * 2.0 - 1.0,
+                0.0,
+                1.0,
+            ];
+            let mut c = ClipVertex {
+                clip,
+                win: vp.apply_shader(clip, self.fma),
+                ..Default::default()
+            };
+            c.vary[VARY_TEX] = u as f32 / nx;
+            c.vary[VARY_TEX + 1] = v as f32 / ny;
+            c
+        };
+        let v = [
+            corner(bx, by, sx, sy),
+            corner(bx + bw, by, sx + sw, sy),
+            corner(bx + bw, by + bh, sx + sw, sy + sh),
+            corner(bx, by + bh, sx, sy + sh),
+        ];
+        let cull = CullMode {
+            front: false,
+            back: false,
+            front_ccw: true,
+        };
+        let mut tri = SetupTriangle::default();
+        for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
+            if !matches!(
+                setup_triangle([&v[a], &v[b], &v[c]], VARY_TEX + 2, cull, None, &mut tri),
+                SetupResult::Draw
+            ) {
+                continue;
+            }
+            for py in tri.bbox[1].max(sc[1])..=tri.bbox[3].min(sc[3] - 1) {
+                let (mut lo, mut hi) = (tri.bbox[0].max(sc[0]), tri.bbox[2].min(sc[2] - 1));
+                for e in &tri.edges {
+                    match e.span(py) {
+                        Some((a, b)) => {
+                            lo = lo.max(a);
+                            hi = hi.min(b);
+                        }
+                        None => hi = lo - 1,
+                    }
                 }
-                if mask.stencil && !sfb.stencil.is_empty() && !dfb.stencil.is_empty() {
-                    dfb.stencil[d] = sfb.stencil[s];
+                for px in lo..=hi {
+                    let (u, t) = if self.fma {
+                        st::<Fused>(&tri, px, py)
+                    } else {
+                        st::<Unfused>(&tri, px, py)
+                    };
+                    let nearest = (texel(u * nx, s.width), texel(t * ny, s.height));
+                    let c = self.linear.then(|| bilinear(s, u * nx, t * ny));
+                    write(d, px, py, c, nearest);
                 }
             }
         }
     }
-    Ok(())
 }
 
-/// The texel under source coordinate (u, v), or `None` outside the buffer.
+/// The interpolated source coordinates at pixel (px, py).
 #[inline]
-fn texel(u: f32, v: f32, w: i64, h: i64) -> Option<(i64, i64)> {
-    let (x, y) = (u.floor() as i64, v.floor() as i64);
-    (x >= 0 && y >= 0 && x < w && y < h).then_some((x, y))
+fn st<M: Madd>(tri: &SetupTriangle, px: i64, py: i64) -> (f32, f32) {
+    let (fx, fy) = (px as f32, py as f32);
+    (
+        eval::<M>(&tri.vary[VARY_TEX], fx, fy),
+        eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy),
+    )
 }
 
-/// The bilinear filter of the colour texels around (u, v), clamped to the buffer's edge.
-fn bilinear(fb: &Framebuffer, u: f32, v: f32) -> [u8; 4] {
-    let (w, h) = (fb.width as i64, fb.height as i64);
-    let (u, v) = (u - 0.5, v - 0.5);
-    let (x0, y0) = (u.floor(), v.floor());
-    let (fx, fy) = (u - x0, v - y0);
-    let at = |x: i64, y: i64| {
-        let (x, y) = (x.clamp(0, w - 1), y.clamp(0, h - 1));
-        fb.color[fb.row(y as usize) * w as usize + x as usize]
+/// GL_NEAREST's texel for coordinate `c` (in texels) of a `n`-texel axis.
+#[inline]
+fn texel(c: f32, n: usize) -> usize {
+    (c.floor().max(0.0) as usize).min(n - 1)
+}
+
+/// llvmpipe's 8-bit GL_LINEAR filter at (u, v) in texels, clamped to the edge.
+fn bilinear(s: &Framebuffer, u: f32, v: f32) -> [u8; 4] {
+    let axis = |c: f32, n: usize| {
+        let f = (c * 256.0).round_ties_even() as i64 - 128;
+        let i0 = f >> 8;
+        let clamp = |i: i64| i.clamp(0, n as i64 - 1) as usize;
+        (clamp(i0), clamp(i0 + 1), (f & 255) as i32)
     };
-    let (x0, y0) = (x0 as i64, y0 as i64);
-    let (a, b, c, d) = (
-        at(x0, y0),
-        at(x0 + 1, y0),
-        at(x0, y0 + 1),
-        at(x0 + 1, y0 + 1),
-    );
-    std::array::from_fn(|i| {
-        let top = a[i] as f32 + (b[i] as f32 - a[i] as f32) * fx;
-        let bot = c[i] as f32 + (d[i] as f32 - c[i] as f32) * fx;
-        (top + (bot - top) * fy).round().clamp(0.0, 255.0) as u8
-    })
+    let (x0, x1, wx) = axis(u, s.width);
+    let (y0, y1, wy) = axis(v, s.height);
+    let at = |x: usize, y: usize| s.color[y * s.width + x];
+    let lerp = |a: [u8; 4], b: [u8; 4], w: i32| -> [u8; 4] {
+        std::array::from_fn(|i| {
+            (a[i] as i32 + ((w * (b[i] as i32 - a[i] as i32) + 128) >> 8)) as u8
+        })
+    };
+    let top = lerp(at(x0, y0), at(x1, y0), wx);
+    let bot = lerp(at(x0, y1), at(x1, y1), wx);
+    lerp(top, bot, wy)
 }
