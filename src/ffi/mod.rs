@@ -62,6 +62,7 @@ pub mod textures;
 pub mod textures_3d;
 pub mod textures_compressed;
 pub mod textures_ext;
+pub mod transform_ext;
 pub mod types;
 
 use crate::context::dlist::VertexOp;
