@@ -61,6 +61,7 @@ pub mod texgen;
 pub mod textures;
 pub mod textures_3d;
 pub mod textures_compressed;
+pub mod textures_ds;
 pub mod textures_ext;
 pub mod types;
 
