@@ -82,7 +82,8 @@ fn draw_inner<S: VertexSource + ?Sized>(
     ctx.dirty = true;
     let fma = cpu_has_fma();
     let st = &ctx.state;
-    let viewport = Viewport::oriented(st.viewport, st.depth_range, fb.height, fb.y_flip);
+    let cc = st.clip_control;
+    let viewport = Viewport::with_convention(st.viewport, st.depth_range, fb.height, fb.y_flip, cc);
     let y_flip = fb.y_flip;
     let modelview = *ctx.matrices.modelview.top();
     let mvp = ctx.matrices.projection.top().mul(&modelview);
@@ -143,8 +144,10 @@ fn draw_inner<S: VertexSource + ?Sized>(
     let cull = CullMode {
         front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
         back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
-        // Unflipped (object) rows turn the winding over.
-        front_ccw: st.front_ccw == y_flip,
+        // Unflipped (object) rows turn the winding over, and so does GL_UPPER_LEFT; each
+        // also toggles llvmpipe's `bottom_edge_rule` (st_atom_rasterizer.c).
+        front_ccw: (st.front_ccw == y_flip) != cc.upper_left,
+        top_left: !y_flip != cc.upper_left,
     };
 
     // Filled triangles, strips, fans, polygons, quads and quad strips stream through the
@@ -680,7 +683,9 @@ fn draw_feedback<S: VertexSource + ?Sized>(
         cull: CullMode {
             front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
             back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
-            front_ccw: st.front_ccw,
+            // As the rasterizer state the draw module reads (see `draw_inner`).
+            front_ccw: (st.front_ccw == fb.y_flip) != st.clip_control.upper_left,
+            top_left: !fb.y_flip != st.clip_control.upper_left,
         },
         back: stage.two_side().then(|| stage.back_offset()),
         polygon: ctx.raster.polygon,

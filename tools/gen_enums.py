@@ -24,7 +24,15 @@ GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotro
 GL_EXT_texture_lod_bias GL_NV_blend_square GL_SGIS_generate_mipmap
 GL_SGIS_texture_edge_clamp GL_ARB_texture_cube_map GL_ARB_framebuffer_object
 GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample
-GL_EXT_packed_depth_stencil""".split()
+GL_EXT_packed_depth_stencil GL_ARB_clip_control""".split()
+
+# Tokens of an extension that glext.h lists under the GL version that took it into core
+# (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
+# emitted inside the extension's own section.
+SECTION_TOKENS = {
+    "GL_ARB_clip_control": """GL_LOWER_LEFT GL_UPPER_LEFT GL_NEGATIVE_ONE_TO_ONE GL_ZERO_TO_ONE
+GL_CLIP_ORIGIN GL_CLIP_DEPTH_MODE""".split(),
+}
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports
 # (separate blend equation and separate stencil state are GL 2.0).
@@ -107,6 +115,12 @@ def main():
             continue
         if s.startswith("#endif"):
             if depth == 0:
+                for name in SECTION_TOKENS.get(section, []):
+                    value = next(m.group(2) for m in map(DEF.match, map(str.strip, ext))
+                                 if m and m.group(1) == name)
+                    if name not in seen:
+                        seen.add(name)
+                        body.append(rust(name, value))
                 section = None
             else:
                 depth -= 1

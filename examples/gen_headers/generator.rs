@@ -84,6 +84,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("pixels_ext.rs", Header::Glext),
     ("queries.rs", Header::Glext),
     ("arrays_ext.rs", Header::Glext),
+    ("transform_ext.rs", Header::Glext),
     ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];

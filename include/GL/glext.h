@@ -132,6 +132,16 @@ typedef ptrdiff_t GLintptr;
 #define GL_SRC2_ALPHA                            0x858A
 #endif /* GL_VERSION_1_5 */
 
+#ifndef GL_ARB_clip_control
+#define GL_ARB_clip_control                      1
+#define GL_LOWER_LEFT                            0x8CA1
+#define GL_UPPER_LEFT                            0x8CA2
+#define GL_NEGATIVE_ONE_TO_ONE                   0x935E
+#define GL_ZERO_TO_ONE                           0x935F
+#define GL_CLIP_ORIGIN                           0x935C
+#define GL_CLIP_DEPTH_MODE                       0x935D
+#endif /* GL_ARB_clip_control */
+
 #ifndef GL_ARB_depth_texture
 #define GL_ARB_depth_texture                     1
 #define GL_DEPTH_COMPONENT16_ARB                 0x81A5
@@ -794,6 +804,9 @@ typedef void (APIENTRYP PFNGLNORMALPOINTEREXTPROC) (GLenum type, GLsizei stride,
 typedef void (APIENTRYP PFNGLTEXCOORDPOINTEREXTPROC) (GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
 typedef void (APIENTRYP PFNGLEDGEFLAGPOINTEREXTPROC) (GLsizei stride, GLsizei count, const GLboolean *ptr);
 
+/* Function-pointer types: src/ffi/transform_ext.rs */
+typedef void (APIENTRYP PFNGLCLIPCONTROLPROC) (GLenum origin, GLenum depth);
+
 /* Function-pointer types: src/ffi/aliases_ext.rs */
 typedef void (APIENTRYP PFNGLARRAYELEMENTEXTPROC) (GLint i);
 typedef void (APIENTRYP PFNGLBINDBUFFERARBPROC) (GLenum target, GLuint buffer);
@@ -1020,6 +1033,9 @@ GLAPI void APIENTRY glColorPointerEXT (GLint size, GLenum type, GLsizei stride, 
 GLAPI void APIENTRY glNormalPointerEXT (GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
 GLAPI void APIENTRY glTexCoordPointerEXT (GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
 GLAPI void APIENTRY glEdgeFlagPointerEXT (GLsizei stride, GLsizei count, const GLboolean *ptr);
+
+/* Functions: src/ffi/transform_ext.rs */
+GLAPI void APIENTRY glClipControl (GLenum origin, GLenum depth);
 
 /* Functions: src/ffi/aliases_ext.rs */
 GLAPI void APIENTRY glArrayElementEXT (GLint i);

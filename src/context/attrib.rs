@@ -206,6 +206,8 @@ fn transform(c: &mut Context, s: &AttribFrame) {
     c.state.matrix_mode = s.state.matrix_mode;
     // The plane equations and their enable bits (which mirror the caps above).
     c.clip_planes = s.clip_planes;
+    // glClipControl (Mesa's attrib.c restores it with the transform group).
+    c.state.clip_control = s.state.clip_control;
 }
 
 fn enable(c: &mut Context, s: &AttribFrame) {

@@ -215,6 +215,16 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_STENCIL_BACK_PASS_DEPTH_FAIL => e(st.frag.stencil_back.zfail.to_gl()),
         GL_STENCIL_BACK_PASS_DEPTH_PASS => e(st.frag.stencil_back.zpass.to_gl()),
         GL_FRONT_FACE => e(if st.front_ccw { GL_CCW } else { GL_CW }),
+        GL_CLIP_ORIGIN => e(if st.clip_control.upper_left {
+            GL_UPPER_LEFT
+        } else {
+            GL_LOWER_LEFT
+        }),
+        GL_CLIP_DEPTH_MODE => e(if st.clip_control.zero_to_one {
+            GL_ZERO_TO_ONE
+        } else {
+            GL_NEGATIVE_ONE_TO_ONE
+        }),
         GL_SHADE_MODEL => e(if st.shade_model == ShadeModel::Flat {
             GL_FLAT
         } else {

@@ -471,6 +471,9 @@ pub struct State {
     pub viewport: [i32; 4],
     /// glDepthRange near, far (clamped to [0,1]).
     pub depth_range: [f64; 2],
+    /// glClipControl: GL_UPPER_LEFT origin and GL_ZERO_TO_ONE depth mode (part of
+    /// GL_TRANSFORM_BIT).
+    pub clip_control: crate::geometry::ClipConvention,
     /// glDepthFunc.
     pub depth_func: CompareFunc,
     /// glDepthMask.
@@ -526,6 +529,7 @@ impl Default for State {
             clear_stencil: 0,
             viewport: [0; 4],
             depth_range: [0.0, 1.0],
+            clip_control: Default::default(),
             depth_func: CompareFunc::Less,
             depth_mask: true,
             color_mask: [true; 4],

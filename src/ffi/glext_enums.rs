@@ -99,6 +99,15 @@ pub const GL_SRC2_RGB: GLenum = 0x8582;
 pub const GL_SRC0_ALPHA: GLenum = 0x8588;
 pub const GL_SRC2_ALPHA: GLenum = 0x858A;
 
+// GL_ARB_clip_control
+pub const GL_ARB_clip_control: GLenum = 1;
+pub const GL_LOWER_LEFT: GLenum = 0x8CA1;
+pub const GL_UPPER_LEFT: GLenum = 0x8CA2;
+pub const GL_NEGATIVE_ONE_TO_ONE: GLenum = 0x935E;
+pub const GL_ZERO_TO_ONE: GLenum = 0x935F;
+pub const GL_CLIP_ORIGIN: GLenum = 0x935C;
+pub const GL_CLIP_DEPTH_MODE: GLenum = 0x935D;
+
 // GL_ARB_depth_texture
 pub const GL_ARB_depth_texture: GLenum = 1;
 pub const GL_DEPTH_COMPONENT16_ARB: GLenum = 0x81A5;

@@ -61,7 +61,9 @@ pub mod texgen;
 pub mod textures;
 pub mod textures_3d;
 pub mod textures_compressed;
+pub mod textures_ds;
 pub mod textures_ext;
+pub mod transform_ext;
 pub mod types;
 
 use crate::context::dlist::VertexOp;

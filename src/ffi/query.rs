@@ -84,7 +84,7 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
 
 /// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
 pub const EXTENSIONS: &str = concat!(
-    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
+    "GL_ARB_clip_control GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
     "GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_EXT_texture3D ",
     "GL_EXT_texture_cube_map GL_ARB_framebuffer_object GL_EXT_framebuffer_object ",
     "GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil ",

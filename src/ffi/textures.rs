@@ -198,7 +198,10 @@ unsafe fn tex_image(
     }
     // SAFETY: GL's contract: `data` (when not null) holds the described image.
     let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (tw, th), data) };
+    // SAFETY: as above.
+    let stencil = unsafe { super::textures_ds::unpack_stencil(c, &ps, &cf, (tw, th), data) };
     let obj = object_mut(c, t, false);
+    super::textures_ds::set(obj, (face, level), internal as u32, stencil);
     obj.face_levels_mut(face)[level] = Some(Level {
         width: tw,
         height: th,
@@ -229,11 +232,11 @@ unsafe fn tex_sub_image(
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
     let ps = unpack;
-    let (base, storage, width, height) = object(c, t, false)
+    let (base, storage, width, height, internal) = object(c, t, false)
         .face_levels(face)
         .get(level)
         .and_then(|l| l.as_ref())
-        .map(|i| (i.base, i.storage, i.width, i.height))
+        .map(|i| (i.base, i.storage, i.width, i.height, i.internal_format))
         .ok_or(GlError::InvalidOperation)?;
     let yoff = if dims == 1 { 0 } else { yoff };
     depth_match(base, &cf)?;
@@ -242,7 +245,14 @@ unsafe fn tex_sub_image(
     }
     // SAFETY: GL's contract: `data` holds the described image.
     let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (w, h), data) };
+    let stencil = (shadow::is_depth_stencil(internal) && cf.is_depth_stencil())
+        // SAFETY: as above.
+        .then(|| unsafe { super::textures_ds::unpack_stencil(c, &ps, &cf, (w, h), data) });
     let obj = object_mut(c, t, false);
+    if let Some(s) = stencil {
+        let rect = (xoff as usize, yoff as usize, w, h);
+        super::textures_ds::update(obj, (face, level), (width, height), rect, &s);
+    }
     let img = obj.face_levels_mut(face)[level]
         .as_mut()
         .ok_or(GlError::InvalidOperation)?;
@@ -515,8 +525,17 @@ fn copy_tex_image(
     let storage = storage_of(internal as i32, base, 0, 0);
     let (sx, sy) = (x + b, y + if dims == 2 { b } else { 0 });
     c.prepare_read()?;
-    let texels = read_texels(c, (sx, sy, tw, th), base, &storage)?;
+    let exact = super::textures_ds::read_fb_depth_exact(c, internal, (sx, sy, tw, th));
+    let texels = match exact {
+        Some(t) => t,
+        None => read_texels(c, (sx, sy, tw, th), base, &storage)?,
+    };
+    let stencil = match shadow::is_depth_stencil(internal) {
+        true => super::textures_ds::read_fb_stencil(c, sx, sy, tw, th),
+        false => Vec::new(),
+    };
     let obj = object_mut(c, t, false);
+    super::textures_ds::set(obj, (face, level), internal, stencil);
     obj.face_levels_mut(face)[level] = Some(Level {
         width: tw,
         height: th,
@@ -549,14 +568,19 @@ fn copy_tex_sub_image(
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     c.check_outside_begin()?;
-    let (base, storage) = object(c, t, false)
+    let (base, storage, internal) = object(c, t, false)
         .face_levels(face)
         .get(level)
         .and_then(|l| l.as_ref())
-        .map(|i| (i.base, i.storage))
+        .map(|i| (i.base, i.storage, i.internal_format))
         .ok_or(GlError::InvalidOperation)?;
     c.prepare_read()?;
-    let src = read_texels(c, (x, y, w, h), base, &storage)?;
+    let src = match super::textures_ds::read_fb_depth_exact(c, internal, (x, y, w, h)) {
+        Some(t) => t,
+        None => read_texels(c, (x, y, w, h), base, &storage)?,
+    };
+    let stencil = shadow::is_depth_stencil(internal)
+        .then(|| super::textures_ds::read_fb_stencil(c, x, y, w, h));
     let obj = object_mut(c, t, false);
     let img = obj.face_levels_mut(face)[level]
         .as_mut()
@@ -567,6 +591,13 @@ fn copy_tex_sub_image(
     for row in 0..h {
         let d = (yoff as usize + row) * img.width + xoff as usize;
         img.texels[d..d + w].copy_from_slice(&src[row * w..(row + 1) * w]);
+    }
+    if let Some(s) = stencil {
+        let (size, rect) = (
+            (img.width, img.height),
+            (xoff as usize, yoff as usize, w, h),
+        );
+        super::textures_ds::update(obj, (face, level), size, rect, &s);
     }
     maybe_generate(obj, level);
     Ok(())
@@ -862,6 +893,15 @@ pub unsafe extern "C" fn glGetTexImage(
             return Ok(());
         };
         depth_match(img.base, &cf)?;
+        if cf.is_depth_stencil() {
+            if !shadow::is_depth_stencil(img.internal_format) {
+                return Err(GlError::InvalidOperation);
+            }
+            let stencil = obj.stencil.get(&(face, level)).map_or(&[][..], |s| s);
+            // SAFETY: the caller promises room for the packed image.
+            unsafe { shadow::pack_depth_stencil(&ps, &cf, img, stencil, pixels as *mut u8) };
+            return Ok(());
+        }
         if img.base == BaseFormat::Depth {
             // SAFETY: the caller promises room for the packed image.
             unsafe { shadow::pack(&ps, &cf, img, pixels as *mut u8) };
@@ -1058,6 +1098,9 @@ fn get_level_parameter(
         GL_TEXTURE_DEPTH_SIZE => img
             .filter(|_| is_depth)
             .map_or(0, |i| i.storage.depth_bits()) as f64,
+        GL_TEXTURE_STENCIL_SIZE => img
+            .filter(|i| shadow::is_depth_stencil(i.internal_format))
+            .map_or(0, |_| 8) as f64,
         _ => return Err(GlError::InvalidEnum),
     })
 }

@@ -20,6 +20,11 @@ pub extern "C" fn glGenerateMipmap(target: GLenum) {
         if obj.levels.get(base).is_none_or(|l| l.is_none()) {
             return Err(GlError::InvalidOperation);
         }
+        // Mesa: no mipmaps of a packed depth-stencil image
+        let internal = obj.levels[base].as_ref().map_or(0, |l| l.internal_format);
+        if crate::texture::shadow::is_depth_stencil(internal) {
+            return Err(GlError::InvalidOperation);
+        }
         regenerate(obj, base);
         Ok(())
     })

@@ -67,7 +67,7 @@ impl VertexStage {
     ) {
         use std::arch::x86_64::*;
         // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
-        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4).
+        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
         const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
         const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
         let m = &self.mvp.0;
@@ -80,6 +80,9 @@ impl VertexStage {
             let scale = _mm_setr_ps(vp.scale[0], vp.scale[1], vp.scale[2], 0.0);
             let trans = _mm_setr_ps(vp.translate[0], vp.translate[1], vp.translate[2], 0.0);
             let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let halfz = vp.halfz;
+            // w in the x and y lanes, 0 in the z lane.
+            let cw_halfz = |w: __m128| _mm_blend_ps::<0b0100>(w, zero);
             // `clamp_color`: `max(min(v, 1), 0)`, NaN to 1 (`minps` gives its second
             // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
             // values), the comparisons the scalar `clamp_color` makes (the test below
@@ -97,7 +100,9 @@ impl VertexStage {
                 let clip = _mm_add_ps(_mm_add_ps(_mm_add_ps(x, y), z), w);
                 let cw = _mm_shuffle_ps::<0xFF>(clip, clip);
                 let above = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NLE_UQ>(clip, cw)) & 7;
-                let sum = _mm_add_ps(clip, cw);
+                // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so
+                // the same comparison gives `!(z >= 0)`.
+                let sum = _mm_add_ps(clip, if halfz { cw_halfz(cw) } else { cw });
                 let below = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NGE_UQ>(sum, zero)) & 7;
                 // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
                 let inv = _mm_div_ps(one, cw);
@@ -166,11 +171,17 @@ mod tests {
 
     /// Every field `run_block` writes equals what `run_into` writes, bit for bit, for
     /// random and special positions and colours, fused and not, with and without the
-    /// secondary colour and texture units (one through a matrix), and runs that start
-    /// anywhere in the source.
+    /// secondary colour and texture units (one through a matrix), under both clip-control
+    /// conventions, and runs that start anywhere in the source.
     #[test]
     fn run_block_writes_what_run_into_writes() {
         let vp = Viewport::new([3, -2, 333, 277], [0.25, 0.9], 300);
+        // GL_ZERO_TO_ONE and GL_UPPER_LEFT: another near plane and z and y transforms.
+        let cc = crate::geometry::ClipConvention {
+            upper_left: true,
+            zero_to_one: true,
+        };
+        let vp_halfz = Viewport::with_convention([3, -2, 333, 277], [0.25, 0.9], 300, true, cc);
         if !VertexStage::new(IDENTITY, IDENTITY, vp, false).block_ok() {
             return;
         }
@@ -202,6 +213,7 @@ mod tests {
         };
         for case in 0..16 {
             let fma = case & 1 == 1;
+            let vp = if case & 8 == 8 { vp_halfz } else { vp };
             let mut stage = VertexStage::new(mat(), mat(), vp, fma);
             stage.color_sum = case & 2 == 2;
             if case & 4 == 4 {

@@ -172,7 +172,7 @@ impl VertexStage {
     #[inline(always)]
     pub fn clip_position(&self, pos: [f32; 4]) -> ([f32; 4], ClipMask) {
         let clip = self.mvp.transform(pos);
-        let mut mask = clip_mask(clip);
+        let mut mask = clip_mask(clip, self.viewport.halfz);
         if self.ucp_enabled != 0 {
             mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
         }

@@ -30,10 +30,16 @@ const MAX_POLY: usize = 20;
 /// User clip planes in clip space, indexed by plane (bit `6 + i` of a clip mask).
 pub type UserPlanes = [[f32; 4]; 8];
 
-/// Plane `p` of a clip mask bit: a view-volume plane or user plane `p - 6`.
+/// The near plane under GL_ZERO_TO_ONE (the draw module's `clip_halfz` plane 4).
+const NEAR_HALFZ: [f32; 4] = [0.0, 0.0, 1.0, 0.0];
+
+/// Plane `p` of a clip mask bit: a view-volume plane or user plane `p - 6`; `halfz`
+/// selects the GL_ZERO_TO_ONE near plane.
 #[inline]
-fn plane(p: usize, ucp: &UserPlanes) -> [f32; 4] {
-    if p < 6 {
+fn plane(p: usize, ucp: &UserPlanes, halfz: bool) -> [f32; 4] {
+    if p == 4 && halfz {
+        NEAR_HALFZ
+    } else if p < 6 {
         PLANES[p]
     } else {
         ucp[p - 6]
@@ -134,7 +140,7 @@ pub fn clip_triangle_edges(
     while planes != 0 && n >= 3 {
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
-        let plane = plane(p, ucp);
+        let plane = plane(p, ucp, vp.halfz);
         let mut dp_prev = dot4(inl[0].clip, plane);
         if !dp_prev.is_finite() {
             return 0;
@@ -233,8 +239,9 @@ pub fn clip_line(
     while planes != 0 {
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
-        let dp0 = dot4(v0.clip, plane(p, ucp));
-        let dp1 = dot4(v1.clip, plane(p, ucp));
+        let pl = plane(p, ucp, vp.halfz);
+        let dp0 = dot4(v0.clip, pl);
+        let dp1 = dot4(v1.clip, pl);
         if !dp0.is_finite() || !dp1.is_finite() {
             return None;
         }
@@ -273,7 +280,7 @@ mod tests {
     fn vert(c: [f32; 4]) -> ClipVertex {
         ClipVertex {
             clip: c,
-            mask: clip_mask(c),
+            mask: clip_mask(c, false),
             ..Default::default()
         }
     }

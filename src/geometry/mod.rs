@@ -32,7 +32,8 @@ pub struct ClipVertex {
     pub clip: [f32; 4],
     /// Window position: x, y (y-down raster space), z in [0,1] before clamping, and 1/w.
     pub win: [f32; 4],
-    /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w, 5 z>w (llvmpipe's order),
+    /// Clip mask: bit 0 x>w, 1 x<-w, 2 y>w, 3 y<-w, 4 z<-w (z<0 under
+    /// GL_ZERO_TO_ONE), 5 z>w (llvmpipe's order),
     /// bits 6.. the user clip planes.
     pub mask: ClipMask,
     /// Varyings: [0..4] primary colour, [4..8] secondary colour, then texture coordinates.
@@ -54,6 +55,17 @@ impl Default for ClipVertex {
     }
 }
 
+/// The clip-space conventions of GL_ARB_clip_control, as plain flags.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ClipConvention {
+    /// GL_UPPER_LEFT origin: clip-space y points down the window (the viewport's y scale
+    /// is negated, front faces and the horizontal-edge fill rule swap).
+    pub upper_left: bool,
+    /// GL_ZERO_TO_ONE depth: the near plane is `z >= 0` (gallium's `clip_halfz`) and the
+    /// viewport maps z in [0, 1] to [n, f].
+    pub zero_to_one: bool,
+}
+
 /// The viewport transform as llvmpipe's vertex stage holds it (y flipped for the
 /// bottom-up OSMesa buffer, so window y is in y-down raster space).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,6 +74,10 @@ pub struct Viewport {
     pub scale: [f32; 3],
     /// x, y, z translate.
     pub translate: [f32; 3],
+    /// Whether the near clip plane is `z >= 0` instead of `z >= -w` (GL_ZERO_TO_ONE: the
+    /// draw module's `clip_halfz`). It travels with the transform because the clip mask,
+    /// the clipper and the z mapping all follow it.
+    pub halfz: bool,
 }
 
 impl Viewport {
@@ -74,17 +90,40 @@ impl Viewport {
     /// As [`Viewport::new`]; `flip` false gives the unflipped transform llvmpipe uses for
     /// framebuffer objects (window y = GL y).
     pub fn oriented(vp: [i32; 4], depth_range: [f64; 2], fb_height: usize, flip: bool) -> Self {
+        Viewport::with_convention(vp, depth_range, fb_height, flip, ClipConvention::default())
+    }
+
+    /// As [`Viewport::oriented`] under the clip-control convention `cc`, as Mesa's
+    /// `_mesa_get_viewport_xform` and `st_update_viewport` build it: the GL transform has
+    /// y scale `±0.5f·h` (negative for GL_UPPER_LEFT) and translate `0.5f·h + y`; the
+    /// window buffer then negates the scale and takes `fb_height − translate`. z is
+    /// `0.5·(f−n)`, `0.5·(n+f)` in double for GL_NEGATIVE_ONE_TO_ONE, `f−n`, `n` for
+    /// GL_ZERO_TO_ONE, each rounded to f32.
+    pub fn with_convention(
+        vp: [i32; 4],
+        depth_range: [f64; 2],
+        fb_height: usize,
+        flip: bool,
+        cc: ClipConvention,
+    ) -> Self {
         let (x, y, w, h) = (vp[0] as f32, vp[1] as f32, vp[2] as f32, vp[3] as f32);
         let (n, f) = (depth_range[0], depth_range[1]);
         let half_h = 0.5f32 * h;
+        let gl_sy = if cc.upper_left { -half_h } else { half_h };
         let (sy, ty) = if flip {
-            (-half_h, fb_height as f32 - (half_h + y))
+            (-gl_sy, fb_height as f32 - (half_h + y))
         } else {
-            (half_h, half_h + y)
+            (gl_sy, half_h + y)
+        };
+        let (sz, tz) = if cc.zero_to_one {
+            ((f - n) as f32, n as f32)
+        } else {
+            ((0.5 * (f - n)) as f32, (0.5 * (n + f)) as f32)
         };
         Viewport {
-            scale: [0.5 * w, sy, (0.5 * (f - n)) as f32],
-            translate: [0.5 * w + x, ty, (0.5 * (n + f)) as f32],
+            scale: [0.5 * w, sy, sz],
+            translate: [0.5 * w + x, ty, tz],
+            halfz: cc.zero_to_one,
         }
     }
 
@@ -198,15 +237,18 @@ pub fn user_clip_mask(c: [f32; 4], planes: &[[f32; 4]; 8], enabled: u8, fma: boo
 /// The clip mask of a clip-space position (strict tests: on the plane is inside). The
 /// tests are written negated so that a NaN coordinate counts as outside (the clipper then
 /// drops the primitive); for every non-NaN input they equal the plain `x > w` tests.
+/// `halfz` (GL_ZERO_TO_ONE) moves the near plane to `z >= 0`, as the draw module's
+/// `clip_halfz` mask does (`0 > z`).
 #[inline]
 #[allow(clippy::neg_cmp_op_on_partial_ord)] // deliberate: NaN must count as outside
-pub fn clip_mask(c: [f32; 4]) -> ClipMask {
+pub fn clip_mask(c: [f32; 4], halfz: bool) -> ClipMask {
     let [x, y, z, w] = c;
+    let near = if halfz { z } else { z + w };
     ((!(x <= w)) as u8
         | ((!(x + w >= 0.0)) as u8) << 1
         | ((!(y <= w)) as u8) << 2
         | ((!(y + w >= 0.0)) as u8) << 3
-        | ((!(z + w >= 0.0)) as u8) << 4
+        | ((!(near >= 0.0)) as u8) << 4
         | ((!(z <= w)) as u8) << 5) as ClipMask
 }
 

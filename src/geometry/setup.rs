@@ -198,8 +198,13 @@ pub struct CullMode {
     pub front: bool,
     /// Cull back faces.
     pub back: bool,
-    /// glFrontFace is GL_CCW.
+    /// Triangles wound counter-clockwise in raster space (positive area) face front.
     pub front_ccw: bool,
+    /// The top-left fill rule (llvmpipe's `bottom_edge_rule = 0`): horizontal edges at
+    /// the smallest raster y include their pixel centres, instead of those at the largest
+    /// (the window buffer's bottom-edge rule). Framebuffer objects and GL_UPPER_LEFT each
+    /// toggle it.
+    pub top_left: bool,
 }
 
 /// Sets up triangle (v0, v1, v2) with `nvary` varyings into `fill` (v2 is the provoking
@@ -354,7 +359,7 @@ fn setup_inner(
         [x0, x1, x2],
         [y0, y1, y2],
         ccw,
-        front,
+        (front, cull.top_left),
         (nvary, flat, skip_empty),
         fill,
     )
@@ -450,7 +455,7 @@ fn setup_rest<'v>(
     xs: [i64; 3],
     ys: [i64; 3],
     ccw: bool,
-    front: bool,
+    (front, top_left): (bool, bool),
     (nvary, flat, skip_empty): (usize, bool, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
@@ -468,9 +473,9 @@ fn setup_rest<'v>(
         let a = ys[i] - ys[j];
         let b = xs[i] - xs[j];
         let mut c = a * xs[i] - b * ys[i];
-        // Left edges (a < 0) and, for the bottom-up OSMesa buffer, bottom edges include the
-        // pixel centres on them.
-        if a < 0 || (a == 0 && b < 0) {
+        // Left edges (a < 0) and, by the bottom-edge rule, bottom edges (b < 0) include
+        // the pixel centres on them; by the top-left rule, top edges (b > 0) instead.
+        if a < 0 || (a == 0 && if top_left { b > 0 } else { b < 0 }) {
             c += 1;
         }
         edges[i] = Edge { a, b, c };
@@ -597,6 +602,7 @@ mod tests {
         front: false,
         back: false,
         front_ccw: true,
+        top_left: false,
     };
 
     #[test]
@@ -908,6 +914,7 @@ mod tests {
                 front: case % 7 == 3,
                 back: case % 5 == 2,
                 front_ccw: case % 4 < 2,
+                top_left: false,
             };
             let back = (case % 6 == 1).then_some(super::super::VARY_TEX);
             let nvary = [4, 7, 16, 22][case % 4];

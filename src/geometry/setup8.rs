@@ -358,11 +358,17 @@ unsafe fn lanes_avx2(
             let b = _mm256_sub_epi32(xs[i], xs[j]);
             let (aw, bw) = (wide(a), wide(b));
             let c = sub64(mul64(aw, wide(xs[i])), mul64(bw, wide(ys[i])));
-            // Left edges (a < 0) and bottom edges (a == 0, b < 0) take +1.
+            // Left edges (a < 0) and bottom edges (a == 0, b < 0) take +1; by the top-left
+            // rule, top edges (a == 0, b > 0) instead.
             let zero = _mm256_setzero_si256();
+            let horizontal_in = if cull.top_left {
+                _mm256_cmpgt_epi32(b, zero)
+            } else {
+                _mm256_cmpgt_epi32(zero, b)
+            };
             let left = _mm256_or_si256(
                 _mm256_cmpgt_epi32(zero, a),
-                _mm256_and_si256(_mm256_cmpeq_epi32(a, zero), _mm256_cmpgt_epi32(zero, b)),
+                _mm256_and_si256(_mm256_cmpeq_epi32(a, zero), horizontal_in),
             );
             let c = sub64(c, wide(left));
             edge[i] = [aw, bw, c];
@@ -523,6 +529,7 @@ mod tests {
                 front: round % 5 == 1,
                 back: round % 5 == 2,
                 front_ccw: round % 2 == 0,
+                top_left: round % 7 >= 3,
             };
             // Small triangles around a few centres (many empty or tiny), larger ones, and
             // now and then an odd coordinate or a shared w of 1.

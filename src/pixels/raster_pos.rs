@@ -4,7 +4,8 @@
 //! Numbers: eye = MV·v and clip = P·eye with `TRANSFORM_POINT` (left-to-right f32 sums);
 //! the point is invalid when `z < -w`, `z > w`, `|x| > w`, `|y| > w` or a user plane's
 //! `dot4(clip, plane) < 0`; window = `(clip·(1/w))·scale + translate` with the viewport
-//! in GL's y-up orientation; raster w = clip w; the distance is `sqrtf(|eye.xyz|²)` (or
+//! in GL's y-up orientation (y scale negated under GL_UPPER_LEFT; z `f−n`, `n` under
+//! GL_ZERO_TO_ONE, whose near plane the clip test ignores, as Mesa's does); raster w = clip w; the distance is `sqrtf(|eye.xyz|²)` (or
 //! the fog coordinate). Without lighting the colours are the current ones, unclamped.
 //! Texture coordinates go through texgen and the texture matrix.
 //!
@@ -46,8 +47,17 @@ pub fn raster_pos(ctx: &mut Context, v: [f32; 4]) {
     let vp = st.viewport;
     let (hw, hh) = (0.5f32 * vp[2] as f32, 0.5f32 * vp[3] as f32);
     let (n, f) = (st.depth_range[0], st.depth_range[1]);
-    let scale = [hw, hh, (0.5 * (f - n)) as f32];
-    let translate = [hw + vp[0] as f32, hh + vp[1] as f32, (0.5 * (n + f)) as f32];
+    // `_mesa_get_viewport_xform`, with glClipControl's y and z (the clip test above keeps
+    // `z < -w` in Mesa whatever the depth mode).
+    let cc = st.clip_control;
+    let sy = if cc.upper_left { -hh } else { hh };
+    let (sz, tz) = if cc.zero_to_one {
+        ((f - n) as f32, n as f32)
+    } else {
+        ((0.5 * (f - n)) as f32, (0.5 * (n + f)) as f32)
+    };
+    let scale = [hw, sy, sz];
+    let translate = [hw + vp[0] as f32, hh + vp[1] as f32, tz];
     let r = &mut ctx.raster_pos;
     for i in 0..3 {
         r.pos[i] = ndc[i] * scale[i] + translate[i];

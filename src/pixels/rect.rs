@@ -111,6 +111,7 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
         front: false,
         back: false,
         front_ccw: true,
+        top_left: false,
     };
     let (wf, hf) = (q.w as f32, q.h as f32);
     let mut tri = SetupTriangle::default();

@@ -1014,8 +1014,9 @@ fn pair(h: &mut SetupTriangle, t: &SetupTriangle, nvary: usize) -> bool {
     let (mut cols, mut rows) = ((i64::MIN, i64::MAX), (i64::MIN, i64::MAX));
     for e in legs {
         let bias = (e.a < 0 || (e.a == 0 && e.b < 0)) as i64;
-        // (Setup's rule; anything else would leave a remainder: then leave the pair.)
-        if (e.c - bias) % (e.a + e.b) != 0 {
+        // (Setup's bottom-edge rule; a leg biased otherwise, as by the top-left rule,
+        // leaves a remainder unless it is one unit long: then leave the pair.)
+        if (e.a + e.b).abs() < 2 || (e.c - bias) % (e.a + e.b) != 0 {
             return false;
         }
         // The range of pixels inside: columns for a vertical leg, rows for a horizontal

@@ -516,6 +516,7 @@ mod tests {
                     front: false,
                     back: false,
                     front_ccw: true,
+                    top_left: false,
                 };
                 let r =
                     setup_triangle_shaded([&v[0], &v[1], &v[2]], 4, cull, None, plan.flat, &mut t);

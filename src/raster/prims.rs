@@ -286,6 +286,7 @@ impl PolyPipeline<'_> {
                     front: false,
                     back: false,
                     front_ccw: self.cull.front_ccw,
+                    top_left: self.cull.top_left,
                 };
                 match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
                     SetupResult::Draw if self.caps.get(Cap::PolygonStipple) => {

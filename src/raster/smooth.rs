@@ -48,6 +48,7 @@ const NOCULL: CullMode = CullMode {
     front: false,
     back: false,
     front_ccw: true,
+    top_left: false,
 };
 
 /// Where the stage's vec4 goes among `nvary` varyings: after them, or over the back

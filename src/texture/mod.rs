@@ -305,6 +305,9 @@ pub struct TextureObject {
     /// The other five faces of a cube map (+X is `levels`; then -X, +Y, -Y, +Z, -Z),
     /// empty for the other targets.
     pub faces: Vec<Vec<Option<Level>>>,
+    /// The stencil indices of GL_DEPTH24_STENCIL8 images, by (cube face, level), row 0
+    /// first; the texels of those images hold only the depth (see [`shadow`]).
+    pub stencil: HashMap<(usize, usize), Vec<u8>>,
 }
 
 impl TextureObject {
@@ -316,6 +319,7 @@ impl TextureObject {
             params: SamplerParams::default(),
             depths: [0; MAX_LEVELS],
             faces: Vec::new(),
+            stencil: HashMap::new(),
         };
         if target == Some(Target::Cube) {
             o.faces = vec![vec![None; MAX_LEVELS]; 5];

@@ -128,9 +128,11 @@ impl DepthMode {
 pub fn depth_bits(internal: u32, ty: u32) -> u8 {
     use crate::ffi::enums::{GL_UNSIGNED_INT, GL_UNSIGNED_SHORT};
     use crate::ffi::glext_enums::{
-        GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+        GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+        GL_DEPTH_STENCIL,
     };
     match internal {
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => 24,
         GL_DEPTH_COMPONENT16 => 16,
         GL_DEPTH_COMPONENT24 => 24,
         GL_DEPTH_COMPONENT32 => 32,
@@ -140,6 +142,14 @@ pub fn depth_bits(internal: u32, ty: u32) -> u8 {
             _ => 24,
         },
     }
+}
+
+/// Whether a glTexImage internal format is a packed depth-stencil one (GL_DEPTH_STENCIL,
+/// GL_DEPTH24_STENCIL8): stored as Z24 with 8 stencil bits (GL_TEXTURE_DEPTH_SIZE 24,
+/// GL_TEXTURE_STENCIL_SIZE 8, measured).
+pub fn is_depth_stencil(internal: u32) -> bool {
+    use crate::ffi::glext_enums::{GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL};
+    matches!(internal, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8)
 }
 
 /// The largest stored value of `bits` bits.
@@ -328,10 +338,25 @@ pub fn sample_quad(
     })
 }
 
-/// Reads client element `i` of type `ty` at `b` as a depth (signed types may be negative:
-/// the store clamps) or, for the exact paths, the raw integer.
-fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
+/// An integer client depth value that some stores take without the float detour
+/// (`_mesa_unpack_depth_span`'s special cases).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Exact {
+    /// None applies.
+    No,
+    /// A GL_UNSIGNED_SHORT value (kept as is by a 16-bit store).
+    U16(u32),
+    /// A GL_UNSIGNED_INT value (kept as is by a 32-bit store).
+    U32(u32),
+    /// The 24 depth bits of a GL_UNSIGNED_INT_24_8 value (kept by a 24-bit store).
+    Z24(u32),
+}
+
+/// Reads the client depth value at `b` of type `ty` as a float (signed types may be
+/// negative: the store clamps) and, for the exact paths, the raw integer.
+fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Exact) {
     use crate::ffi::enums::*;
+    use crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8;
     let mut raw = [0u8; 4];
     let n = match ty {
         GL_UNSIGNED_BYTE | GL_BYTE => 1,
@@ -343,35 +368,40 @@ fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Option<u64>) {
         raw[..n].reverse();
     }
     match ty {
-        GL_UNSIGNED_BYTE => (raw[0] as f32 * (1.0 / 255.0), None),
-        GL_BYTE => (raw[0] as i8 as f32 * (1.0 / 127.0), None),
+        GL_UNSIGNED_BYTE => (raw[0] as f32 * (1.0 / 255.0), Exact::No),
+        GL_BYTE => (raw[0] as i8 as f32 * (1.0 / 127.0), Exact::No),
         GL_UNSIGNED_SHORT => {
             let v = u16::from_ne_bytes([raw[0], raw[1]]);
-            (v as f32 * (1.0 / 65535.0), Some(v as u64))
+            (v as f32 * (1.0 / 65535.0), Exact::U16(v as u32))
         }
         GL_SHORT => {
             let v = i16::from_ne_bytes([raw[0], raw[1]]);
-            (v as f32 * (1.0 / 32767.0), None)
+            (v as f32 * (1.0 / 32767.0), Exact::No)
         }
         GL_UNSIGNED_INT => {
             let v = u32::from_ne_bytes(raw);
-            (
-                (v as f64 * (1.0 / 4294967295.0)) as f32,
-                Some(v as u64 | 1 << 40),
-            )
+            ((v as f64 * (1.0 / 4294967295.0)) as f32, Exact::U32(v))
+        }
+        GL_UNSIGNED_INT_24_8 => {
+            let z = u32::from_ne_bytes(raw) >> 8;
+            (z as f32 * (1.0f32 / 16777215.0), Exact::Z24(z))
         }
         GL_INT => {
             let v = i32::from_ne_bytes(raw);
-            ((v as f64 * (1.0 / 2147483647.0)) as f32, None)
+            ((v as f64 * (1.0 / 2147483647.0)) as f32, Exact::No)
         }
-        _ => (f32::from_ne_bytes(raw), None),
+        _ => (f32::from_ne_bytes(raw), Exact::No),
     }
 }
 
 /// Unpacks a `w x h` client depth image into depth texels of `bits` bits, with
 /// GL_DEPTH_SCALE and GL_DEPTH_BIAS (`scale_bias`, when not the identity) applied as
 /// `_mesa_unpack_depth_span` does: `clamp(d·scale + bias, 0, 1)` in f32, and no exact
-/// integer path.
+/// integer path. Without them the exact paths are GL_UNSIGNED_SHORT into 16 bits,
+/// GL_UNSIGNED_INT into 32 bits and the depth bits of GL_UNSIGNED_INT_24_8 into 24 bits.
+/// Otherwise a GL_UNSIGNED_INT_24_8 value is `f32(z24)·f32(1/(2²⁴−1))`, and
+/// GL_UNSIGNED_INT into 24 bits takes the float path too (measured for
+/// GL_DEPTH_COMPONENT24 and GL_DEPTH24_STENCIL8: 0xffffff01 → 0xfffffe, not 0xffffff).
 ///
 /// # Safety
 /// `data` (when not null) must hold the image `ps`/`cf` describe.
@@ -394,19 +424,53 @@ pub unsafe fn unpack(
         for x in 0..w {
             let o = lay.start + y * lay.stride + x * lay.bpp;
             let (d, exact) = client_value(&bytes[o..o + lay.bpp], cf.gl_type, ps.swap_bytes);
-            // `_mesa_unpack_depth_span`'s exact paths: ushort into 16 bits, uint into 32
-            // (and shifted into 24) bits
             let (d, exact) = match scale_bias {
-                Some((scale, bias)) => (d * scale + bias, None),
+                Some((scale, bias)) => (d * scale + bias, Exact::No),
                 None => (d, exact),
             };
             let z = match (exact, bits) {
-                (Some(v), 16) if v < 1 << 16 => v as u32,
-                (Some(v), 32) if v >= 1 << 40 => v as u32,
-                (Some(v), 24) if v >= 1 << 40 => (v as u32) >> 8,
+                (Exact::U16(v), 16) => v,
+                (Exact::U32(v), 32) => v,
+                (Exact::Z24(v), 24) => v,
                 _ => store(d, bits),
             };
             out.push(texel(z));
+        }
+    }
+    out
+}
+
+/// The stencil indices of a `w x h` GL_DEPTH_STENCIL/GL_UNSIGNED_INT_24_8 client image
+/// (the low byte of each value), each passed through `transfer` (GL_INDEX_SHIFT,
+/// GL_INDEX_OFFSET and GL_PIXEL_MAP_S_TO_S, as `_mesa_unpack_stencil_span` applies them;
+/// measured: an offset of 3 turns 0xff into 0x02). Zeros for other client formats
+/// (GL_DEPTH_COMPONENT data leaves the stencil undefined).
+///
+/// # Safety
+/// `data` (when not null) must hold the image `ps`/`cf` describe.
+pub unsafe fn unpack_stencil(
+    ps: &crate::context::state::PixelStore,
+    cf: &super::upload::ClientFormat,
+    (w, h): (usize, usize),
+    data: *const u8,
+    transfer: &dyn Fn(u32) -> u8,
+) -> Vec<u8> {
+    let lay = super::upload::Layout::new(ps, w, cf);
+    if data.is_null() || w == 0 || h == 0 || !cf.is_depth_stencil() {
+        return vec![0; w * h];
+    }
+    // SAFETY: the caller guarantees the image's bytes.
+    let bytes = unsafe { std::slice::from_raw_parts(data, lay.span(w, h)) };
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let o = lay.start + y * lay.stride + x * lay.bpp;
+            let mut raw = [0u8; 4];
+            raw.copy_from_slice(&bytes[o..o + 4]);
+            if ps.swap_bytes {
+                raw.reverse();
+            }
+            out.push(transfer(u32::from_ne_bytes(raw) & 0xff));
         }
     }
     out
@@ -459,6 +523,41 @@ pub unsafe fn pack(
             }
             let n = n.min(lay.bpp);
             bytes[o..o + n].copy_from_slice(&v[..n]);
+        }
+    }
+}
+
+/// Packs a GL_DEPTH24_STENCIL8 image for glGetTexImage(GL_DEPTH_STENCIL,
+/// GL_UNSIGNED_INT_24_8): `z24 << 8 | stencil`, untouched by GL_DEPTH_SCALE/BIAS
+/// (`_mesa_unpack_uint_24_8_depth_stencil_row`; measured: the uploaded values come back
+/// unchanged). `stencil` holds the image's indices (missing ones read as 0).
+///
+/// # Safety
+/// `dst` must be writable for the packed image.
+pub unsafe fn pack_depth_stencil(
+    ps: &crate::context::state::PixelStore,
+    cf: &super::upload::ClientFormat,
+    img: &Level,
+    stencil: &[u8],
+    dst: *mut u8,
+) {
+    let (w, h) = (img.width, img.height);
+    let lay = super::upload::Layout::new(ps, w, cf);
+    if dst.is_null() || w == 0 || h == 0 {
+        return;
+    }
+    // SAFETY: the caller guarantees `span` writable bytes.
+    let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
+    for y in 0..h {
+        for x in 0..w {
+            let z = texel_z(img.texel(x, y)) & 0xff_ffff;
+            let s = stencil.get(y * w + x).copied().unwrap_or(0);
+            let mut v = (z << 8 | s as u32).to_ne_bytes();
+            if ps.swap_bytes {
+                v.reverse();
+            }
+            let o = lay.start + y * lay.stride + x * lay.bpp;
+            bytes[o..o + 4].copy_from_slice(&v);
         }
     }
 }

@@ -19,7 +19,10 @@ use crate::context::pixel_transfer::{PixelMaps, PixelTransfer};
 use crate::context::state::PixelStore;
 use crate::context::{GlError, GlResult};
 use crate::ffi::enums::*;
-use crate::ffi::glext_enums::{GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32};
+use crate::ffi::glext_enums::{
+    GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+    GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+};
 
 /// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
 pub fn base_format(internal: i32) -> Option<BaseFormat> {
@@ -48,6 +51,9 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT16 | GL_DEPTH_COMPONENT24 | GL_DEPTH_COMPONENT32 => {
             B::Depth
         }
+        // packed depth-stencil images are depth images that also keep stencil indices
+        // (see `shadow`)
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => B::Depth,
         _ => return None,
     })
 }
@@ -159,8 +165,8 @@ fn format_components(format: u32) -> Option<&'static [usize]> {
         GL_LUMINANCE_ALPHA => &[4, 3],
         GL_ALPHA => &[3],
         GL_RED => &[0],
-        // only for glGetTexImage, which refuses it for colour textures
-        GL_DEPTH_COMPONENT => &[0],
+        // only for depth images (the others refuse it)
+        GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL => &[0],
         GL_GREEN => &[1],
         GL_BLUE => &[2],
         _ => return None,
@@ -210,6 +216,8 @@ fn pixel_type(ty: u32) -> Option<Ty> {
         GL_UNSIGNED_INT_8_8_8_8_REV => packed(4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
         GL_UNSIGNED_INT_10_10_10_2 => packed(4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
         GL_UNSIGNED_INT_2_10_10_10_REV => packed(4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+        // depth in the top 24 bits, stencil in the low 8 (GL_DEPTH_STENCIL only)
+        GL_UNSIGNED_INT_24_8 => packed(4, &[(8, 24)]),
         _ => return None,
     })
 }
@@ -220,16 +228,26 @@ pub struct ClientFormat {
     comps: &'static [usize],
     ty: Ty,
     depth: bool,
+    stencil: bool,
     /// The GL type token.
     pub gl_type: u32,
 }
 
 impl ClientFormat {
     /// Validates `format`/`type`: unknown → GL_INVALID_ENUM, a packed type whose component
-    /// count does not match the format → GL_INVALID_OPERATION.
+    /// count does not match the format → GL_INVALID_OPERATION. GL_DEPTH_STENCIL takes only
+    /// GL_UNSIGNED_INT_24_8 (another type is GL_INVALID_ENUM), and GL_UNSIGNED_INT_24_8 only
+    /// GL_DEPTH_STENCIL (GL_INVALID_OPERATION), as Mesa 22.3 checks them.
     pub fn new(format: u32, ty: u32) -> GlResult<ClientFormat> {
         let comps = format_components(format).ok_or(GlError::InvalidEnum)?;
         let t = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
+        if (format == GL_DEPTH_STENCIL) != (ty == GL_UNSIGNED_INT_24_8) {
+            return Err(if format == GL_DEPTH_STENCIL {
+                GlError::InvalidEnum
+            } else {
+                GlError::InvalidOperation
+            });
+        }
         if let Ty::Packed { fields, .. } = t {
             if fields.len() != comps.len() || (fields.len() == 3 && format != GL_RGB) {
                 return Err(GlError::InvalidOperation);
@@ -238,14 +256,20 @@ impl ClientFormat {
         Ok(ClientFormat {
             comps,
             ty: t,
-            depth: format == GL_DEPTH_COMPONENT,
+            depth: format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL,
+            stencil: format == GL_DEPTH_STENCIL,
             gl_type: ty,
         })
     }
 
-    /// GL_DEPTH_COMPONENT (valid for glGetTexImage, an error with colour textures).
+    /// GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL (valid only with depth images).
     pub fn is_depth(&self) -> bool {
         self.depth
+    }
+
+    /// GL_DEPTH_STENCIL (packed depth and stencil index).
+    pub fn is_depth_stencil(&self) -> bool {
+        self.stencil
     }
 
     /// Bytes per pixel and bytes per element (for the alignment rule).
