@@ -43,6 +43,7 @@ const KNOWN_SCENES: &[(&str, &str)] = &[
     ("sprites_10k", "g"),
     ("immediate_100k", "h"),
     ("clear_only", "i"),
+    ("fbo_msaa_shadow", "j"),
 ];
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]

@@ -80,6 +80,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
     }
     ctx.stats.draws += 1;
     ctx.dirty = true;
+    ctx.fbo.drawn = true;
     let fma = cpu_has_fma();
     let st = &ctx.state;
     let cc = st.clip_control;

@@ -123,6 +123,9 @@ def main():
     p.add_argument("--timeout", type=int, default=600, help="seconds per render.py run")
     p.add_argument("--diff", action="store_true", help="write OUT/*.diff.png")
     p.add_argument("--out", default=os.path.join(REPO, "target/mujoco"))
+    p.add_argument("--min-within", type=float, default=None,
+                   help="fail unless every case has at least this %% of pixels within "
+                        "2/255 of the reference (the test command's real-client check)")
     args = p.parse_args()
 
     os.makedirs(args.out, exist_ok=True)
@@ -215,6 +218,12 @@ def main():
     status = 0
     if failures:
         status = 1
+    if args.min_within is not None:
+        low = [f"{r['model']} {r['size']} s{r['samples']}: {r.get('within2', 0):.3f}%"
+               for r in rows if r.get("within2", 0) < args.min_within]
+        if low:
+            print(f"below {args.min_within}% within 2/255: " + ", ".join(low))
+            status = 1
     if args.reference_only and any(r.get("identical", 0) != 100.0 for r in rows):
         print("reference-only run: the two reference renders differ (not deterministic)")
         status = 1

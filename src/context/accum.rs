@@ -166,6 +166,7 @@ impl Context {
         }
         if op == AccumOp::Return {
             self.dirty = true;
+            self.fbo.drawn = true;
         }
         Ok(())
     }

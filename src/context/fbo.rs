@@ -157,7 +157,7 @@ impl Renderbuffer {
 }
 
 /// What an attachment point holds.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Attachment {
     /// Nothing (GL_NONE).
     #[default]
@@ -178,6 +178,16 @@ pub enum Attachment {
     },
 }
 
+/// A framebuffer object's working copy, kept while another framebuffer is bound so that
+/// binding it again neither allocates nor (when its images have not changed) copies.
+#[derive(Clone, Debug)]
+pub struct Cached {
+    /// The working copy, written back.
+    pub fb: Framebuffer,
+    /// The version ([`FboState::version`]) of each attached image it holds.
+    pub seen: Vec<(Attachment, u64)>,
+}
+
 /// A framebuffer object's state.
 #[derive(Clone, Debug)]
 pub struct FramebufferObject {
@@ -191,6 +201,8 @@ pub struct FramebufferObject {
     pub draw_buffer: Option<usize>,
     /// The colour attachment glReadBuffer selected (`None`: GL_NONE).
     pub read_buffer: Option<usize>,
+    /// The working copy while the object is not bound for drawing.
+    pub cache: Option<Box<Cached>>,
 }
 
 impl Default for FramebufferObject {
@@ -201,6 +213,7 @@ impl Default for FramebufferObject {
             stencil: Attachment::None,
             draw_buffer: Some(0),
             read_buffer: Some(0),
+            cache: None,
         }
     }
 }
@@ -277,9 +290,18 @@ pub struct FboState {
     /// The working copy was written back before a texture change and must be assembled
     /// anew when the call ends (see `Context::fbo_touch`).
     pub stale: bool,
+    /// The image versions the working copy held when it went stale.
+    pub stale_seen: Vec<(Attachment, u64)>,
     /// A copy of the read framebuffer when it is not the draw framebuffer, made by
     /// `Context::prepare_read` for the read that follows.
     pub read_copy: Option<Framebuffer>,
+    /// Something was drawn into the working copy since it was assembled or written back.
+    pub drawn: bool,
+    /// The version of each image ever attached: bumped whenever its contents change
+    /// outside the working copy that holds it (a write-back, a texture call, new storage).
+    versions: HashMap<Attachment, u64>,
+    /// The last version handed out.
+    last_version: u64,
 }
 
 /// Names not in `used`, counting up from `*next` (glGen*'s rule: any unused names).
@@ -296,6 +318,28 @@ fn gen_names<T>(used: &mut HashMap<u32, Option<T>>, next: &mut u32, n: usize) ->
 }
 
 impl FboState {
+    /// The version of image `a` (0 if it never changed).
+    pub fn version(&self, a: Attachment) -> u64 {
+        self.versions.get(&a).copied().unwrap_or(0)
+    }
+
+    /// Marks image `a` changed; returns its new version.
+    pub fn bump(&mut self, a: Attachment) -> u64 {
+        self.last_version += 1;
+        self.versions.insert(a, self.last_version);
+        self.last_version
+    }
+
+    /// Marks every image of texture `name` changed (a texture call may have changed it).
+    pub fn touch_texture(&mut self, name: u32) {
+        for (a, v) in self.versions.iter_mut() {
+            if matches!(*a, Attachment::Texture { name: n, .. } if n == name) {
+                self.last_version += 1;
+                *v = self.last_version;
+            }
+        }
+    }
+
     /// glGenFramebuffers.
     pub fn gen_framebuffers(&mut self, n: usize) -> Vec<u32> {
         gen_names(&mut self.framebuffers, &mut self.next_fb, n)

@@ -122,8 +122,11 @@ impl Context {
     }
 
     /// Assembles a working copy of object `name` from its attachments (`None` when it is
-    /// incomplete).
+    /// incomplete), reusing the object's cached copy: as it is when every image is at the
+    /// version it holds, else with the images loaded into it when the layout still fits.
     fn assemble(&mut self, name: u32) -> Option<Framebuffer> {
+        self.fbo.drawn = false;
+        let cached = self.fbo.object_mut(name).and_then(|f| f.cache.take());
         let (parts, w, h) = self.parts(name)?;
         let info = |a: Option<Attachment>| a.and_then(|a| self.fbo.image_info(a, &self.textures));
         let format = match info(parts.color).map(|i| i.kind) {
@@ -134,9 +137,35 @@ impl Context {
             Some(ImageKind::Depth(d, _)) => d,
             _ => DepthFormat::None,
         };
-        let mut fb = Framebuffer::new(w, h, format, depth, parts.stencil.is_some());
-        // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
-        fb.y_flip = false;
+        let stencil = parts.stencil.is_some();
+        let seen: Vec<(Attachment, u64)> = parts
+            .roles()
+            .map(|(a, _)| (a, self.fbo.version(a)))
+            .collect();
+        let fits = |f: &Framebuffer| {
+            (
+                f.width,
+                f.height,
+                f.format,
+                f.depth_format,
+                f.stencil.is_empty(),
+            ) == (w, h, format, depth, !stencil)
+        };
+        let mut fb = match cached {
+            Some(c) if fits(&c.fb) && c.seen == seen => return Some(c.fb),
+            Some(c) if fits(&c.fb) => {
+                let mut fb = c.fb;
+                fb.resolve();
+                fb.uniform_color = None;
+                fb
+            }
+            _ => {
+                let mut fb = Framebuffer::new(w, h, format, depth, stencil);
+                // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
+                fb.y_flip = false;
+                fb
+            }
+        };
         let (fbo, textures) = (&mut self.fbo, &mut self.textures);
         for (a, stencil) in parts.roles() {
             if let Some((img, iw)) = image_mut(fbo, textures, a) {
@@ -146,21 +175,60 @@ impl Context {
         Some(fb)
     }
 
-    /// Writes the working copy of the bound draw object back into its attachments.
-    fn write_back(&mut self) {
-        if self.fbo.draw == 0 {
-            return;
-        }
-        let Some((parts, _, _)) = self.parts(self.fbo.draw) else {
-            return;
+    /// Writes the working copy of the bound draw object back into its attachments (when
+    /// anything was drawn since it was assembled); returns the versions it now holds.
+    fn write_back(&mut self) -> Vec<(Attachment, u64)> {
+        let Some((parts, _, _)) = self.parts(self.fbo.draw).filter(|_| self.fbo.draw != 0) else {
+            return Vec::new();
         };
-        let Some(fb) = self.fb.as_mut() else { return };
-        fb.resolve();
-        let (fbo, textures) = (&mut self.fbo, &mut self.textures);
-        for (a, stencil) in parts.roles() {
-            if let Some((img, iw)) = image_mut(fbo, textures, a) {
-                store(fb, img, iw, stencil);
+        if std::mem::take(&mut self.fbo.drawn) {
+            if let Some(fb) = self.fb.as_mut() {
+                fb.resolve();
+                let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+                for (a, stencil) in parts.roles() {
+                    if let Some((img, iw)) = image_mut(fbo, textures, a) {
+                        store(fb, img, iw, stencil);
+                    }
+                }
+                // A depth-stencil image is one image in both roles: one new version.
+                let mut done: Vec<Attachment> = Vec::new();
+                for (a, _) in parts.roles() {
+                    if !done.contains(&a) {
+                        self.fbo.bump(a);
+                        done.push(a);
+                    }
+                }
             }
+        }
+        parts
+            .roles()
+            .map(|(a, _)| (a, self.fbo.version(a)))
+            .collect()
+    }
+
+    /// Writes the working copy back and keeps it in the draw object's cache.
+    fn park(&mut self) {
+        let seen = self.write_back();
+        self.park_as(seen);
+    }
+
+    /// Keeps the (written back) working copy in the draw object's cache as holding the
+    /// image versions `seen`.
+    fn park_as(&mut self, seen: Vec<(Attachment, u64)>) {
+        let name = self.fbo.draw;
+        if let (Some(fb), Some(f)) = (self.fb.take(), self.fbo.object_mut(name)) {
+            f.cache = Some(Box::new(super::fbo::Cached { fb, seen }));
+        }
+    }
+
+    /// The versions of the images the draw object's working copy holds.
+    fn held_versions(&self) -> Vec<(Attachment, u64)> {
+        match self.parts(self.fbo.draw).filter(|_| self.fbo.draw != 0) {
+            Some((parts, _, _)) => parts
+                .roles()
+                .map(|(a, _)| (a, self.fbo.version(a)))
+                .collect(),
+            None => Vec::new(),
         }
     }
 
@@ -174,12 +242,19 @@ impl Context {
         }
     }
 
-    /// Called before a texture's images change while an object is bound for drawing:
+    /// Called before texture `texture`'s images change: when it is attached to the object
+    /// bound for drawing,
     /// writes the working copy back now, and marks it to be assembled anew when the GL
     /// call ends ([`Context::fbo_refresh`]), so that the change is seen either way.
-    pub fn fbo_touch(&mut self) {
-        if self.fbo.draw != 0 && !self.fbo.stale {
+    pub fn fbo_touch(&mut self, texture: u32) {
+        let attached = self.fbo.draw_object().is_some_and(|f| {
+            f.color.iter().chain([&f.depth, &f.stencil]).any(
+                |a| matches!(*a, Attachment::Texture { name, .. } if name == texture && name != 0),
+            )
+        });
+        if attached && !self.fbo.stale {
             self.fbo_sync();
+            self.fbo.stale_seen = self.held_versions();
             self.fbo.stale = true;
         }
     }
@@ -191,6 +266,8 @@ impl Context {
         if self.fbo.stale {
             self.fbo.stale = false;
             self.settle_draws();
+            let seen = std::mem::take(&mut self.fbo.stale_seen);
+            self.park_as(seen);
             self.fb = self.assemble(self.fbo.draw);
         }
     }
@@ -217,7 +294,9 @@ impl Context {
             return f(self);
         }
         self.fbo_sync();
+        let seen = self.held_versions();
         let r = f(self);
+        self.park_as(seen);
         self.fb = self.assemble(self.fbo.draw);
         r
     }
@@ -232,7 +311,7 @@ impl Context {
         if self.fbo.draw == 0 {
             self.fbo.window = self.fb.take();
         } else {
-            self.write_back();
+            self.park();
         }
         self.fbo.draw = name;
         self.fb = if name == 0 {

@@ -616,6 +616,7 @@ impl Context {
             }
         }
         self.dirty = true;
+        self.fbo.drawn = true;
         Ok(())
     }
 }

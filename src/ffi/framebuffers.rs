@@ -529,7 +529,10 @@ fn renderbuffer_storage(
                 .fbo
                 .bound_renderbuffer_mut()
                 .ok_or(GlError::InvalidOperation)?;
-            rb.allocate(internal, format, w as usize, h as usize)
+            rb.allocate(internal, format, w as usize, h as usize)?;
+            let name = c.fbo.renderbuffer;
+            c.fbo.bump(Attachment::Renderbuffer(name));
+            Ok(())
         })
     })
 }

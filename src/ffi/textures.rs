@@ -76,9 +76,11 @@ pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut T
     } else if c.textures.high_unit.is_some() {
         &mut c.textures.defaults[target.index()]
     } else {
-        // The image may be attached to the framebuffer object being drawn.
-        c.fbo_touch();
         let unit = c.state.active_texture;
+        // The image may be attached to the framebuffer object being drawn.
+        let name = c.textures.units[unit].bound[target.index()];
+        c.fbo_touch(name);
+        c.fbo.touch_texture(name);
         c.textures.bound_mut(unit, target)
     }
 }
@@ -637,7 +639,10 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
         }
         // SAFETY: the caller promises n readable names.
         let names = unsafe { std::slice::from_raw_parts(textures, n) };
-        c.fbo_touch();
+        for &name in names {
+            c.fbo_touch(name);
+            c.fbo.touch_texture(name);
+        }
         c.detach_bound(|a| matches!(a, Attachment::Texture { name, .. } if names.contains(&name)));
         c.textures.delete(names);
         Ok(())

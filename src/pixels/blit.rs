@@ -165,6 +165,7 @@ pub fn blit(
     fb.resolve();
     fb.uniform_color = None;
     ctx.dirty = true;
+    ctx.fbo.drawn = true;
     job.run(&sfb, fb, mask);
     Ok(())
 }
@@ -275,10 +276,12 @@ impl Job {
             corner(bx + bw, by + bh, sx + sw, sy + sh),
             corner(bx, by + bh, sx, sy + sh),
         ];
+        // The blitter's rasterizer state: the rule the window's draws use (measured).
         let cull = CullMode {
             front: false,
             back: false,
             front_ccw: true,
+            top_left: false,
         };
         let mut tri = SetupTriangle::default();
         for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {

@@ -88,6 +88,7 @@ fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
     let mut plan = FragPlan::new(&ctx.state, fbr.depth_format, !fbr.stencil.is_empty(), fma);
     plan.count_samples = ctx.queries.active.is_some();
     ctx.dirty = true;
+    ctx.fbo.drawn = true;
     ctx.stats.draws += 1;
     let stencil_mask = (ctx.state.frag.stencil_front.writemask & 0xFF) as u8;
     let stats = &mut ctx.stats;
@@ -387,6 +388,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         };
         let Some(fb) = ctx.fb.as_mut() else { return };
         ctx.dirty = true;
+        ctx.fbo.drawn = true;
         fb.resolve();
         fb.uniform_color = None;
         for j in 0..h {
