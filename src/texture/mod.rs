@@ -30,6 +30,7 @@ pub mod lod;
 pub mod mipmap;
 pub mod sample;
 pub mod shadow;
+pub mod srgb;
 pub mod upload;
 pub mod volume;
 pub mod wrap;
@@ -607,8 +608,11 @@ impl TextureState {
             mode: p.shadow.depth_mode,
             bits: base_img.storage.depth_bits(),
         });
+        // sRGB textures: decoded per texel, then filtered on the float path
+        let srgb = srgb::is_srgb(base_img.internal_format).then(|| srgb::table(sample::has_fma()));
         // a depth texture is always sampled on the float path
         let aos = depth.is_none()
+            && srgb.is_none()
             && wrap_s.is_simple()
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
@@ -655,7 +659,7 @@ impl TextureState {
             env,
             fast,
             fma: sample::has_fma(),
-            ext: PlanExt { kind, depth },
+            ext: PlanExt { kind, depth, srgb },
         })
     }
 }
@@ -667,6 +671,8 @@ pub struct PlanExt<'a> {
     pub kind: ExtKind<'a>,
     /// A depth texture's comparison and mode.
     pub depth: Option<shadow::DepthPlan>,
+    /// An sRGB texture's decode table (see [`srgb`]); such a plan is never `aos`.
+    pub srgb: Option<&'static [f32; 256]>,
 }
 
 /// The sampling kind of a unit's target.
