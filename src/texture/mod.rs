@@ -6,7 +6,10 @@
 //! holds plain data. [`TextureState`] owns every texture object and the eight texture units.
 //! Texels are stored as RGBA8 *after* the base-format swizzle Mesa's sampler view applies
 //! (L→(L,L,L,1), A→(0,0,0,A), I→(I,I,I,I), LA→(L,L,L,A), RGB→(R,G,B,1)), so sampling never
-//! looks at the format; the base format is kept for the texture environment.
+//! looks at the format; the base format is kept for the texture environment. Two kinds of
+//! image are told apart by their internal format instead: sRGB images (decoded when
+//! sampled, see [`srgb`]) and packed depth-stencil ones (depth texels, stencil in
+//! [`TextureObject::stencil`], see `ffi/textures_ds.rs`).
 //!
 //! # Interface for the rasterizer
 //! - [`TextureState::unit_plan`]`(unit) -> Option<UnitPlan>`: `None` when the unit is
