@@ -33,20 +33,26 @@ static void quad_str(float x0, float y0, float x1, float y1, float r0, float r1)
     glEnd();
 }
 
+/* planes facing the light (constant depth in its view, so that the copied depth values
+ * do not depend on the rasteriser's interpolation arithmetic) */
 static void scene(void)
 {
     glColor4f(0.92f, 0.86f, 0.62f, 1.0f);
     glBegin(GL_QUADS);
-    glVertex3f(-1.6f, 0.0f, 1.6f);
-    glVertex3f(1.6f, 0.0f, 1.6f);
-    glVertex3f(1.6f, 0.0f, -1.6f);
-    glVertex3f(-1.6f, 0.0f, -1.6f);
-    glEnd();
+    glVertex3f(-1.6f, -1.6f, -0.5f);
+    glVertex3f(1.6f, -1.6f, -0.5f);
+    glVertex3f(1.6f, 1.6f, -0.5f);
+    glVertex3f(-1.6f, 1.6f, -0.5f);
     glColor4f(1.0f, 0.52f, 0.42f, 1.0f);
-    glBegin(GL_TRIANGLES);
-    glVertex3f(-0.6f, 0.5f, 0.6f);
-    glVertex3f(0.7f, 0.65f, 0.3f);
-    glVertex3f(0.1f, 1.1f, -0.5f);
+    glVertex3f(-0.7f, -0.4f, 0.3f);
+    glVertex3f(0.5f, -0.6f, 0.3f);
+    glVertex3f(0.6f, 0.7f, 0.3f);
+    glVertex3f(-0.5f, 0.5f, 0.3f);
+    glColor4f(0.5f, 0.8f, 1.0f, 1.0f);
+    glVertex3f(0.2f, 0.1f, 0.9f);
+    glVertex3f(1.1f, 0.1f, 0.9f);
+    glVertex3f(1.1f, 1.0f, 0.9f);
+    glVertex3f(0.2f, 1.0f, 0.9f);
     glEnd();
 }
 
@@ -54,8 +60,6 @@ static void light_view(void)
 {
     glOrtho(-2.0, 2.0, -2.0, 2.0, 1.0, 8.0);
     glTranslatef(0.0f, 0.0f, -4.0f);
-    glRotatef(55.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(-25.0f, 0.0f, 1.0f, 0.0f);
 }
 
 int main(int argc, char **argv)
@@ -178,9 +182,9 @@ int main(int argc, char **argv)
     glFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    glTranslatef(0.0f, -0.2f, -4.2f);
-    glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(20.0f, 0.0f, 1.0f, 0.0f);
+    glTranslatef(0.0f, 0.1f, -4.6f);
+    glRotatef(-35.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(25.0f, 0.0f, 1.0f, 0.0f);
     glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
     glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
     glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);

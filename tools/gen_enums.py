@@ -24,7 +24,7 @@ GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotro
 GL_EXT_texture_lod_bias GL_NV_blend_square GL_SGIS_generate_mipmap
 GL_SGIS_texture_edge_clamp GL_ARB_texture_cube_map GL_ARB_framebuffer_object
 GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample
-GL_EXT_packed_depth_stencil GL_ARB_clip_control""".split()
+GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB""".split()
 
 # Tokens of an extension that glext.h lists under the GL version that took it into core
 # (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
@@ -39,6 +39,12 @@ GL_CLIP_ORIGIN GL_CLIP_DEPTH_MODE""".split(),
 EXTRA_TOKENS = """GL_BLEND_EQUATION_RGB GL_BLEND_EQUATION_ALPHA GL_STENCIL_BACK_FUNC GL_STENCIL_BACK_FAIL
 GL_STENCIL_BACK_PASS_DEPTH_FAIL GL_STENCIL_BACK_PASS_DEPTH_PASS GL_STENCIL_BACK_REF
 GL_STENCIL_BACK_VALUE_MASK GL_STENCIL_BACK_WRITEMASK""".split()
+
+# GL 2.1's sRGB texture formats (GL_EXT_texture_sRGB without the suffix), which programs
+# pass whether or not the extension is advertised.
+SRGB_TOKENS = """GL_SRGB GL_SRGB8 GL_SRGB_ALPHA GL_SRGB8_ALPHA8 GL_SLUMINANCE_ALPHA
+GL_SLUMINANCE8_ALPHA8 GL_SLUMINANCE GL_SLUMINANCE8 GL_COMPRESSED_SRGB GL_COMPRESSED_SRGB_ALPHA
+GL_COMPRESSED_SLUMINANCE GL_COMPRESSED_SLUMINANCE_ALPHA""".split()
 
 # GL_ARB_framebuffer_object's tokens, which glext.h lists under GL_VERSION_3_0.
 FBO_TOKENS = """GL_INVALID_FRAMEBUFFER_OPERATION GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
@@ -135,6 +141,12 @@ def main():
     for line in ext:
         m = DEF.match(line.strip())
         if m and m.group(1) in EXTRA_TOKENS + FBO_TOKENS and m.group(1) not in seen:
+            seen.add(m.group(1))
+            body.append(rust(m.group(1), m.group(2)))
+    body.append("\n// GL 2.1's sRGB texture formats")
+    for line in ext:
+        m = DEF.match(line.strip())
+        if m and m.group(1) in SRGB_TOKENS and m.group(1) not in seen:
             seen.add(m.group(1))
             body.append(rust(m.group(1), m.group(2)))
     with open("src/ffi/glext_enums.rs", "w") as f:

@@ -535,6 +535,26 @@ typedef ptrdiff_t GLintptr;
 #define GL_TEXTURE_LOD_BIAS_EXT                  0x8501
 #endif /* GL_EXT_texture_lod_bias */
 
+#ifndef GL_EXT_texture_sRGB
+#define GL_EXT_texture_sRGB                      1
+#define GL_SRGB_EXT                              0x8C40
+#define GL_SRGB8_EXT                             0x8C41
+#define GL_SRGB_ALPHA_EXT                        0x8C42
+#define GL_SRGB8_ALPHA8_EXT                      0x8C43
+#define GL_SLUMINANCE_ALPHA_EXT                  0x8C44
+#define GL_SLUMINANCE8_ALPHA8_EXT                0x8C45
+#define GL_SLUMINANCE_EXT                        0x8C46
+#define GL_SLUMINANCE8_EXT                       0x8C47
+#define GL_COMPRESSED_SRGB_EXT                   0x8C48
+#define GL_COMPRESSED_SRGB_ALPHA_EXT             0x8C49
+#define GL_COMPRESSED_SLUMINANCE_EXT             0x8C4A
+#define GL_COMPRESSED_SLUMINANCE_ALPHA_EXT       0x8C4B
+#define GL_COMPRESSED_SRGB_S3TC_DXT1_EXT         0x8C4C
+#define GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT   0x8C4D
+#define GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT   0x8C4E
+#define GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT   0x8C4F
+#endif /* GL_EXT_texture_sRGB */
+
 #ifndef GL_NV_blend_square
 #define GL_NV_blend_square                       1
 #endif /* GL_NV_blend_square */
@@ -655,6 +675,18 @@ typedef ptrdiff_t GLintptr;
 #define GL_INDEX                                 0x8222
 #define GL_TEXTURE_LUMINANCE_TYPE                0x8C14
 #define GL_TEXTURE_INTENSITY_TYPE                0x8C15
+#define GL_SRGB                                  0x8C40
+#define GL_SRGB8                                 0x8C41
+#define GL_SRGB_ALPHA                            0x8C42
+#define GL_SRGB8_ALPHA8                          0x8C43
+#define GL_COMPRESSED_SRGB                       0x8C48
+#define GL_COMPRESSED_SRGB_ALPHA                 0x8C49
+#define GL_SLUMINANCE_ALPHA                      0x8C44
+#define GL_SLUMINANCE8_ALPHA8                    0x8C45
+#define GL_SLUMINANCE                            0x8C46
+#define GL_SLUMINANCE8                           0x8C47
+#define GL_COMPRESSED_SLUMINANCE                 0x8C4A
+#define GL_COMPRESSED_SLUMINANCE_ALPHA           0x8C4B
 
 /* Function-pointer types: src/ffi/multidraw.rs */
 typedef void (APIENTRYP PFNGLMULTIDRAWARRAYSPROC) (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);

@@ -462,6 +462,25 @@ pub const GL_MAX_TEXTURE_LOD_BIAS_EXT: GLenum = 0x84FD;
 pub const GL_TEXTURE_FILTER_CONTROL_EXT: GLenum = 0x8500;
 pub const GL_TEXTURE_LOD_BIAS_EXT: GLenum = 0x8501;
 
+// GL_EXT_texture_sRGB
+pub const GL_EXT_texture_sRGB: GLenum = 1;
+pub const GL_SRGB_EXT: GLenum = 0x8C40;
+pub const GL_SRGB8_EXT: GLenum = 0x8C41;
+pub const GL_SRGB_ALPHA_EXT: GLenum = 0x8C42;
+pub const GL_SRGB8_ALPHA8_EXT: GLenum = 0x8C43;
+pub const GL_SLUMINANCE_ALPHA_EXT: GLenum = 0x8C44;
+pub const GL_SLUMINANCE8_ALPHA8_EXT: GLenum = 0x8C45;
+pub const GL_SLUMINANCE_EXT: GLenum = 0x8C46;
+pub const GL_SLUMINANCE8_EXT: GLenum = 0x8C47;
+pub const GL_COMPRESSED_SRGB_EXT: GLenum = 0x8C48;
+pub const GL_COMPRESSED_SRGB_ALPHA_EXT: GLenum = 0x8C49;
+pub const GL_COMPRESSED_SLUMINANCE_EXT: GLenum = 0x8C4A;
+pub const GL_COMPRESSED_SLUMINANCE_ALPHA_EXT: GLenum = 0x8C4B;
+pub const GL_COMPRESSED_SRGB_S3TC_DXT1_EXT: GLenum = 0x8C4C;
+pub const GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT: GLenum = 0x8C4D;
+pub const GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT: GLenum = 0x8C4E;
+pub const GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT: GLenum = 0x8C4F;
+
 // GL_NV_blend_square
 pub const GL_NV_blend_square: GLenum = 1;
 
@@ -580,3 +599,17 @@ pub const GL_MAX_SAMPLES: GLenum = 0x8D57;
 pub const GL_INDEX: GLenum = 0x8222;
 pub const GL_TEXTURE_LUMINANCE_TYPE: GLenum = 0x8C14;
 pub const GL_TEXTURE_INTENSITY_TYPE: GLenum = 0x8C15;
+
+// GL 2.1's sRGB texture formats
+pub const GL_SRGB: GLenum = 0x8C40;
+pub const GL_SRGB8: GLenum = 0x8C41;
+pub const GL_SRGB_ALPHA: GLenum = 0x8C42;
+pub const GL_SRGB8_ALPHA8: GLenum = 0x8C43;
+pub const GL_COMPRESSED_SRGB: GLenum = 0x8C48;
+pub const GL_COMPRESSED_SRGB_ALPHA: GLenum = 0x8C49;
+pub const GL_SLUMINANCE_ALPHA: GLenum = 0x8C44;
+pub const GL_SLUMINANCE8_ALPHA8: GLenum = 0x8C45;
+pub const GL_SLUMINANCE: GLenum = 0x8C46;
+pub const GL_SLUMINANCE8: GLenum = 0x8C47;
+pub const GL_COMPRESSED_SLUMINANCE: GLenum = 0x8C4A;
+pub const GL_COMPRESSED_SLUMINANCE_ALPHA: GLenum = 0x8C4B;

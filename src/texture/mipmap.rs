@@ -77,7 +77,12 @@ pub fn generate(levels: &mut [Option<Level>], base: usize, max_level: usize) {
         if src.width == 1 && src.height == 1 {
             return;
         }
-        let next = downsample(src);
+        // sRGB levels: decoded, filtered in float and encoded (see `srgb`)
+        let next = if super::srgb::is_srgb(src.internal_format) {
+            super::srgb::downsample(src, super::sample::has_fma())
+        } else {
+            downsample(src)
+        };
         levels[l + 1] = Some(next);
         l += 1;
     }

@@ -6,7 +6,10 @@
 //! holds plain data. [`TextureState`] owns every texture object and the eight texture units.
 //! Texels are stored as RGBA8 *after* the base-format swizzle Mesa's sampler view applies
 //! (L→(L,L,L,1), A→(0,0,0,A), I→(I,I,I,I), LA→(L,L,L,A), RGB→(R,G,B,1)), so sampling never
-//! looks at the format; the base format is kept for the texture environment.
+//! looks at the format; the base format is kept for the texture environment. Two kinds of
+//! image are told apart by their internal format instead: sRGB images (decoded when
+//! sampled, see [`srgb`]) and packed depth-stencil ones (depth texels, stencil in
+//! [`TextureObject::stencil`], see `ffi/textures_ds.rs`).
 //!
 //! # Interface for the rasterizer
 //! - [`TextureState::unit_plan`]`(unit) -> Option<UnitPlan>`: `None` when the unit is
@@ -30,6 +33,7 @@ pub mod lod;
 pub mod mipmap;
 pub mod sample;
 pub mod shadow;
+pub mod srgb;
 pub mod upload;
 pub mod volume;
 pub mod wrap;
@@ -607,8 +611,11 @@ impl TextureState {
             mode: p.shadow.depth_mode,
             bits: base_img.storage.depth_bits(),
         });
+        // sRGB textures: decoded per texel, then filtered on the float path
+        let srgb = srgb::is_srgb(base_img.internal_format).then(|| srgb::table(sample::has_fma()));
         // a depth texture is always sampled on the float path
         let aos = depth.is_none()
+            && srgb.is_none()
             && wrap_s.is_simple()
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
@@ -655,7 +662,7 @@ impl TextureState {
             env,
             fast,
             fma: sample::has_fma(),
-            ext: PlanExt { kind, depth },
+            ext: PlanExt { kind, depth, srgb },
         })
     }
 }
@@ -667,6 +674,8 @@ pub struct PlanExt<'a> {
     pub kind: ExtKind<'a>,
     /// A depth texture's comparison and mode.
     pub depth: Option<shadow::DepthPlan>,
+    /// An sRGB texture's decode table (see [`srgb`]); such a plan is never `aos`.
+    pub srgb: Option<&'static [f32; 256]>,
 }
 
 /// The sampling kind of a unit's target.

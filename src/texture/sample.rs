@@ -53,6 +53,16 @@ pub(crate) fn to_float(v: [u8; 4]) -> [f32; 4] {
     v.map(|u| u as f32 * INV_255)
 }
 
+/// A texel as the float (SoA) path sees it: `u·f32(1/255)`, or for an sRGB texture with
+/// R, G and B decoded ([`super::srgb`]).
+#[inline(always)]
+pub(crate) fn texel_float(p: &UnitPlan<'_>, v: [u8; 4]) -> [f32; 4] {
+    match p.ext.srgb {
+        Some(t) => super::srgb::to_float(v, t),
+        None => to_float(v),
+    }
+}
+
 /// Which filter and levels a LOD selects: `(filter, level0, level1, fraction)`.
 #[inline(always)]
 pub fn select_levels(p: &UnitPlan<'_>, lod: Lod) -> (Filter, usize, usize, f32) {
@@ -111,7 +121,7 @@ fn aos_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> 
 fn soa_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> [f32; 4] {
     let (w, h) = (img.width, img.height);
     let fetch = |x: Option<usize>, y: Option<usize>| match (x, y) {
-        (Some(x), Some(y)) => to_float(img.texel(x, y)),
+        (Some(x), Some(y)) => texel_float(p, img.texel(x, y)),
         _ => p.border,
     };
     match filter {

@@ -21,7 +21,8 @@ use crate::context::{GlError, GlResult};
 use crate::ffi::enums::*;
 use crate::ffi::glext_enums::{
     GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
-    GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+    GL_DEPTH_STENCIL, GL_SLUMINANCE, GL_SLUMINANCE8, GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA,
+    GL_SRGB, GL_SRGB8, GL_SRGB8_ALPHA8, GL_SRGB_ALPHA, GL_UNSIGNED_INT_24_8,
 };
 
 /// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
@@ -54,6 +55,11 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
         // packed depth-stencil images are depth images that also keep stencil indices
         // (see `shadow`)
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => B::Depth,
+        // sRGB: stored like their linear counterparts, decoded when sampled (`srgb`)
+        GL_SRGB | GL_SRGB8 => B::Rgb,
+        GL_SRGB_ALPHA | GL_SRGB8_ALPHA8 => B::Rgba,
+        GL_SLUMINANCE | GL_SLUMINANCE8 => B::Luminance,
+        GL_SLUMINANCE_ALPHA | GL_SLUMINANCE8_ALPHA8 => B::LuminanceAlpha,
         _ => return None,
     })
 }

@@ -17,7 +17,7 @@
 
 use super::lod::{self, Lod};
 use super::mipmap::axis;
-use super::sample::{lerp8, lerp8x4, lerpf, lerpfx4, select_levels, to_float};
+use super::sample::{lerp8, lerp8x4, lerpf, lerpfx4, select_levels, texel_float, to_float};
 use super::wrap;
 use super::{Filter, Level, MipFilter, TextureObject, UnitPlan, Wrap, MAX_LEVELS};
 
@@ -238,7 +238,7 @@ fn soa_filter(
 ) -> [f32; 4] {
     let (img, size, pot, wraps) = axes(p, v, level);
     let fetch = |x: Option<usize>, y: Option<usize>, z: Option<usize>| match (x, y, z) {
-        (Some(x), Some(y), Some(z)) => to_float(texel(img, x, y, z)),
+        (Some(x), Some(y), Some(z)) => texel_float(p, texel(img, x, y, z)),
         _ => p.border,
     };
     match filter {
