@@ -139,9 +139,10 @@ static void scene_upper_left(void)
 {
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    glOrtho(0.0, W, 0.0, H, -1.0, 1.0);
+    glOrtho(0.0, 128.0, 0.0, 128.0, -1.0, 1.0); /* exact window coordinates */
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
+    glViewport(0, 0, 128, 128);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glBegin(GL_TRIANGLES);

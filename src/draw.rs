@@ -148,7 +148,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
         // Unflipped (object) rows turn the winding over, and so does GL_UPPER_LEFT; each
         // also toggles llvmpipe's `bottom_edge_rule` (st_atom_rasterizer.c).
         front_ccw: (st.front_ccw == y_flip) != cc.upper_left,
-        top_left: !y_flip != cc.upper_left,
+        top_left: y_flip == cc.upper_left,
     };
 
     // Filled triangles, strips, fans, polygons, quads and quad strips stream through the
@@ -686,7 +686,7 @@ fn draw_feedback<S: VertexSource + ?Sized>(
             back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
             // As the rasterizer state the draw module reads (see `draw_inner`).
             front_ccw: (st.front_ccw == fb.y_flip) != st.clip_control.upper_left,
-            top_left: !fb.y_flip != st.clip_control.upper_left,
+            top_left: fb.y_flip == st.clip_control.upper_left,
         },
         back: stage.two_side().then(|| stage.back_offset()),
         polygon: ctx.raster.polygon,
