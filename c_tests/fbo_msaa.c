@@ -8,7 +8,8 @@
  *   with GL_MULTISAMPLE off; resolved with glBlitFramebuffer into a single-sample
  *   object (also offset and mirrored) and read back.
  * - Errors: glReadPixels and glCopyTexImage2D from a multisample read buffer, a scaled
- *   resolve, a blit into a multisample object. */
+ *   resolve, a blit into a multisample object (allowed: every sample gets the value).
+ * - glDrawPixels into the 4x object. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -312,6 +313,13 @@ int main(int argc, char **argv)
     v[5] = (GLint)glGetError();
     sgl_text(out, "errors", "%x %x %x %x %x %x", v[0], v[1], v[2], v[3], v[4], v[5]);
     read_resolved(out, fb[0], fb[1], "after_upload");
+
+    /* glDrawPixels into the 4x object: every sample of the covered pixels */
+    glBindFramebuffer(GL_FRAMEBUFFER, fb[0]);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glRasterPos2f(-0.5f, -0.4f);
+    glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    read_resolved(out, fb[0], fb[1], "draw_pixels");
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glGetIntegerv(GL_SAMPLE_BUFFERS, &v[1]);
