@@ -248,6 +248,7 @@ pub enum ChunkColors<'a> {
 /// in f32: the texture environment of every enabled unit, then the separate specular
 /// colour, then fog; converted to 8 bits.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
     plan: &FragPlan,

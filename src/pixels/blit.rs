@@ -205,13 +205,13 @@ fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
     let mut out = planes[0].clone();
     let scale = 1.0f32 / 255.0;
     for (i, px) in out.color.iter_mut().enumerate() {
-        for ch in 0..4 {
+        for (ch, v) in px.iter_mut().enumerate() {
             let mut sum = 0.0f32;
             for p in planes {
                 sum += p.color[i][ch] as f32 * scale;
             }
             let avg = sum * 0.25;
-            px[ch] = crate::fragment::span::unorm8(avg);
+            *v = crate::fragment::span::unorm8(avg);
         }
     }
     out
