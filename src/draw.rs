@@ -51,7 +51,8 @@ pub fn draw_chunk<S: VertexSource + ?Sized>(ctx: &mut Context, mode: Primitive, 
     draw_inner(ctx, mode, verts, None, None, true)
 }
 
-/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it.
+/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
+/// a 4x multisample object is one pass per sample plane ([`draw_multisample`]).
 fn draw_inner<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
@@ -59,6 +60,93 @@ fn draw_inner<S: VertexSource + ?Sized>(
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
     detach: bool,
+) {
+    if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {
+        return draw_pass(ctx, mode, verts, indices, materials, detach, None);
+    }
+    draw_multisample(ctx, mode, verts, indices, materials);
+}
+
+/// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
+///
+/// With GL_MULTISAMPLE on, filled triangles are drawn once per sample plane, each pass
+/// rasterised at its sample point ([`crate::geometry::setup::setup_triangle_ms`]) and
+/// shaded as [`crate::fragment::MsPass`] says; a sample that glSampleCoverage's mask
+/// leaves out (`(1 << (int)(v·4)) − 1`, inverted on request) is not drawn at all. Points
+/// and lines are drawn into every plane with the single-sample rules (llvmpipe draws them
+/// as rectangles sampled at the sample points: not reproduced).
+///
+/// With GL_MULTISAMPLE off, llvmpipe rasterises at pixel centres, tests and writes depth
+/// and stencil of sample 0 only, and writes the colour of the fragments that pass into
+/// every sample (blending with each sample's colour). Each plane s > 0 is drawn with a
+/// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
+/// same tests pass, in the same order), its own depth and stencil put back afterwards;
+/// plane 0 is drawn last, normally.
+fn draw_multisample<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+) {
+    ctx.settle_draws();
+    crate::pixels::cache::flush(ctx);
+    let caps = &ctx.state.caps;
+    if !caps.get(Cap::Multisample) {
+        let Some(fb) = ctx.fb.as_mut() else { return };
+        fb.resolve();
+        let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
+        ctx.for_each_sample(|c, s| {
+            if s == 0 {
+                return;
+            }
+            let Some(fb) = c.fb.as_mut() else { return };
+            fb.resolve();
+            let own_d = std::mem::replace(&mut fb.depth, depth0.clone());
+            let own_s = std::mem::replace(&mut fb.stencil, stencil0.clone());
+            draw_pass(c, mode, verts, indices, materials, false, None);
+            if let Some(fb) = c.fb.as_mut() {
+                fb.depth = own_d;
+                fb.stencil = own_s;
+            }
+        });
+        return draw_pass(ctx, mode, verts, indices, materials, false, None);
+    }
+    // glSampleCoverage's mask (only with GL_SAMPLE_COVERAGE on; st_atom_msaa.c).
+    let mut mask = 0xF_u32;
+    if caps.get(Cap::SampleCoverage) {
+        let l = &ctx.state.legacy;
+        let nr = (l.sample_coverage_value * 4.0) as u32;
+        let m = (1u32 << nr.min(4)) - 1;
+        mask = if l.sample_coverage_invert {
+            !m & 0xF
+        } else {
+            m
+        };
+    }
+    let a2c = caps.get(Cap::SampleAlphaToCoverage);
+    let triangles = !matches!(
+        mode,
+        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
+    );
+    ctx.for_each_sample(|c, s| {
+        if mask & (1 << s) != 0 {
+            let pass = triangles.then(|| crate::fragment::MsPass::new(s, a2c));
+            draw_pass(c, mode, verts, indices, materials, false, pass);
+        }
+    });
+}
+
+/// One pass of a draw: the whole pipeline into the framebuffer in `ctx.fb` (for a
+/// multisample pass `ms`, the plane of its sample).
+fn draw_pass<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    detach: bool,
+    ms: Option<crate::fragment::MsPass>,
 ) {
     // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
     ctx.settle_draws();
@@ -126,6 +214,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
         fma,
     );
     let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
+    plan.ms = ms;
     stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
     if feedback {
         drop(tex_plans);
@@ -135,6 +224,11 @@ fn draw_inner<S: VertexSource + ?Sized>(
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     plan.count_samples = ctx.queries.active.is_some();
+    // Triangles that take the polygon pipeline (unfilled, smooth, two-sided …) are drawn
+    // with the single-sample rules in every plane.
+    if PolyPipeline::needed(&ctx.raster, &st.caps, stage.two_side()) {
+        plan.ms = None;
+    }
     let Some(region) = ctx.draw_region() else {
         return;
     };
@@ -216,7 +310,10 @@ fn draw_inner<S: VertexSource + ?Sized>(
             (p.offset_factor, units)
         });
     let pipe = TriPipe {
-        setup: SetupVariant::detect(),
+        setup: match plan.ms {
+            Some(m) => SetupVariant::multisample(m.sample),
+            None => SetupVariant::detect(),
+        },
         nvary,
         cull,
         back,

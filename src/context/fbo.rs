@@ -11,8 +11,18 @@
 //! binding). The window's own framebuffer is parked in [`FboState::window`] meanwhile.
 //!
 //! One colour attachment is drawn at a time (the one glDrawBuffer selects); glDrawBuffers
-//! with several is GL 2.0 and not offered. Multisample renderbuffers are not offered yet:
-//! GL_MAX_SAMPLES is 0.
+//! with several is GL 2.0 and not offered.
+//!
+//! # Multisample renderbuffers (docs/fbo-rules.md §3)
+//! llvmpipe has one multisample mode, 4x: GL_MAX_SAMPLES is 4, a request of 1 to 4
+//! samples gets 4 (GL_RENDERBUFFER_SAMPLES), more is GL_INVALID_OPERATION. A 4x
+//! renderbuffer keeps its 4 sample planes one after the other in its vectors (plane s at
+//! `s·w·h`). The working copy of a 4x object is four [`Framebuffer`]s, one per sample:
+//! plane 0 in the context's `fb`, planes 1–3 in [`FboState::ms_planes`]. Everything that
+//! writes the draw buffer runs once per plane with that plane in `fb`
+//! (`Context::for_each_sample`): a triangle draw is one rasterizer pass per sample
+//! (`crate::fragment::MsPass`), clears and pixel rectangles write every plane.
+//! Attachments with different sample counts are GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE.
 
 use super::{GlError, GlResult};
 use crate::framebuffer::{DepthFormat, Framebuffer};
@@ -23,8 +33,10 @@ use std::collections::HashMap;
 pub const MAX_COLOR_ATTACHMENTS: usize = 8;
 /// GL_MAX_RENDERBUFFER_SIZE (llvmpipe's 2D texture limit).
 pub const MAX_RENDERBUFFER_SIZE: usize = 16384;
-/// GL_MAX_SAMPLES: multisample storage is not offered yet.
-pub const MAX_SAMPLES: i32 = 0;
+/// GL_MAX_SAMPLES: llvmpipe's only multisample count (`LP_MAX_SAMPLES`).
+pub const MAX_SAMPLES: i32 = 4;
+/// The sample planes of a multisample image.
+pub const SAMPLES: usize = 4;
 
 /// The storage layout of a renderbuffer (what `glRenderbufferStorage` chose).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -113,19 +125,23 @@ pub struct Renderbuffer {
     pub depth: Vec<u32>,
     /// Stencil values (stencil formats).
     pub stencil: Vec<u8>,
+    /// GL_RENDERBUFFER_SAMPLES: 0, or [`SAMPLES`] planes of `width * height` values each.
+    pub samples: u32,
 }
 
 impl Renderbuffer {
-    /// Gives the renderbuffer zeroed storage of `format` (glRenderbufferStorage); fails
-    /// with GL_OUT_OF_MEMORY, leaving it unchanged, when the memory is not there.
+    /// Gives the renderbuffer zeroed storage of `format` with `samples` (0 or [`SAMPLES`])
+    /// (glRenderbufferStorage(Multisample)); fails with GL_OUT_OF_MEMORY, leaving it
+    /// unchanged, when the memory is not there.
     pub fn allocate(
         &mut self,
         internal: u32,
         format: RbFormat,
         w: usize,
         h: usize,
+        samples: u32,
     ) -> GlResult<()> {
-        let n = w * h;
+        let n = w * h * (samples as usize).max(1);
         let (mut color, mut depth, mut stencil) = (Vec::new(), Vec::new(), Vec::new());
         let oom = |_| GlError::OutOfMemory;
         match format {
@@ -151,6 +167,7 @@ impl Renderbuffer {
             color,
             depth,
             stencil,
+            samples,
         };
         Ok(())
     }
@@ -240,6 +257,8 @@ pub struct ImageInfo {
     pub height: usize,
     /// What it holds.
     pub kind: ImageKind,
+    /// Its sample count (0: single-sample).
+    pub samples: u32,
 }
 
 /// glCheckFramebufferStatus's answers.
@@ -253,6 +272,8 @@ pub enum Status {
     MissingAttachment,
     /// GL_FRAMEBUFFER_UNSUPPORTED.
     Unsupported,
+    /// GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: attachments with different sample counts.
+    IncompleteMultisample,
 }
 
 impl Status {
@@ -264,6 +285,7 @@ impl Status {
             Status::IncompleteAttachment => GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
             Status::MissingAttachment => GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT,
             Status::Unsupported => GL_FRAMEBUFFER_UNSUPPORTED,
+            Status::IncompleteMultisample => GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE,
         }
     }
 }
@@ -302,6 +324,9 @@ pub struct FboState {
     versions: HashMap<Attachment, u64>,
     /// The last version handed out.
     last_version: u64,
+    /// Sample planes 1..4 of a 4x draw object's working copy (plane 0 is the context's
+    /// `fb`); empty for a single-sample draw framebuffer.
+    pub ms_planes: Vec<Framebuffer>,
 }
 
 /// Names not in `used`, counting up from `*next` (glGen*'s rule: any unused names).
@@ -350,6 +375,20 @@ impl FboState {
         gen_names(&mut self.renderbuffers, &mut self.next_rb, n)
     }
 
+    /// The sample count of object `name`'s images (0 for the window, single-sample or
+    /// incomplete objects with no image).
+    pub fn samples(&self, name: u32, textures: &TextureState) -> u32 {
+        let Some(f) = self.object(name) else {
+            return 0;
+        };
+        let every = f.color.iter().chain([&f.depth, &f.stencil]);
+        every
+            .filter_map(|&a| self.image_info(a, textures))
+            .map(|i| i.samples)
+            .max()
+            .unwrap_or(0)
+    }
+
     /// The object bound to the draw binding, if any.
     pub fn draw_object(&self) -> Option<&FramebufferObject> {
         self.object(self.draw)
@@ -389,6 +428,7 @@ impl FboState {
                     width: rb.width,
                     height: rb.height,
                     kind,
+                    samples: rb.samples,
                 })
             }
             Attachment::Texture {
@@ -414,6 +454,7 @@ impl FboState {
                     width: img.width,
                     height: img.height,
                     kind,
+                    samples: 0,
                 })
             }
         }
@@ -451,6 +492,13 @@ impl FboState {
         }
         if !any {
             return Status::MissingAttachment;
+        }
+        let every = f.color.iter().chain([&f.depth, &f.stencil]);
+        let mut counts = every.filter_map(|&a| self.image_info(a, textures).map(|i| i.samples));
+        if let Some(first) = counts.next() {
+            if counts.any(|c| c != first) {
+                return Status::IncompleteMultisample;
+            }
         }
         // llvmpipe keeps depth and stencil in one surface: separate images are unsupported
         // (as Mesa's st_validate_attachment reports them).

@@ -8,7 +8,7 @@
 //! smallest of the attached images (GL 3.0 lets them differ); writing back touches only that
 //! region of each image.
 
-use super::fbo::{Attachment, FboState, ImageKind, Status};
+use super::fbo::{Attachment, FboState, ImageKind, Status, SAMPLES};
 use super::{Context, GlError, GlResult};
 use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
 use crate::texture::{BaseFormat, TextureState};
@@ -47,28 +47,42 @@ enum ImageMut<'a> {
     Stencil(&'a mut [u8]),
 }
 
-/// The image `a` names, with its row width, for reading and writing.
+/// Sample plane `plane` of a renderbuffer's values (`v` itself when it has no planes).
+fn plane_of<T>(v: &mut [T], n: usize, samples: u32, plane: usize) -> &mut [T] {
+    if samples == 0 || v.is_empty() {
+        v
+    } else {
+        &mut v[plane * n..(plane + 1) * n]
+    }
+}
+
+/// The image `a` names (sample plane `plane` of a multisample renderbuffer), with its row
+/// width, for reading and writing.
 fn image_mut<'a>(
     fbo: &'a mut FboState,
     textures: &'a mut TextureState,
     a: Attachment,
+    plane: usize,
 ) -> Option<(ImageMut<'a>, usize)> {
     match a {
         Attachment::None => None,
         Attachment::Renderbuffer(name) => {
             let rb = fbo.renderbuffers.get_mut(&name)?.as_mut()?;
-            let w = rb.width;
+            let (w, n, ns) = (rb.width, rb.width * rb.height, rb.samples);
             let img = if !rb.color.is_empty() {
                 let base = match rb.format {
                     Some(super::fbo::RbFormat::Rgb8) => BaseFormat::Rgb,
                     Some(super::fbo::RbFormat::Legacy(b)) => b,
                     _ => BaseFormat::Rgba,
                 };
-                ImageMut::Color(&mut rb.color, base)
+                ImageMut::Color(plane_of(&mut rb.color, n, ns, plane), base)
             } else if !rb.depth.is_empty() {
-                ImageMut::DepthStencil(&mut rb.depth, &mut rb.stencil)
+                ImageMut::DepthStencil(
+                    plane_of(&mut rb.depth, n, ns, plane),
+                    plane_of(&mut rb.stencil, n, ns, plane),
+                )
             } else {
-                ImageMut::Stencil(&mut rb.stencil)
+                ImageMut::Stencil(plane_of(&mut rb.stencil, n, ns, plane))
             };
             Some((img, w))
         }
@@ -122,11 +136,37 @@ impl Context {
     }
 
     /// Assembles a working copy of object `name` from its attachments (`None` when it is
-    /// incomplete), reusing the object's cached copy: as it is when every image is at the
-    /// version it holds, else with the images loaded into it when the layout still fits.
+    /// incomplete), for reading: sample plane 0 of a multisample object, never the cache.
     fn assemble(&mut self, name: u32) -> Option<Framebuffer> {
+        self.assemble_plane(name, 0, false)
+    }
+
+    /// Assembles the working copy of draw object `name`: plane 0 (from the object's cache
+    /// when it has one), and for a multisample object its planes 1..4 into
+    /// [`FboState::ms_planes`].
+    fn assemble_draw(&mut self, name: u32) -> Option<Framebuffer> {
+        self.fbo.ms_planes.clear();
         self.fbo.drawn = false;
-        let cached = self.fbo.object_mut(name).and_then(|f| f.cache.take());
+        let fb = self.assemble_plane(name, 0, true)?;
+        if self.fbo.samples(name, &self.textures) > 0 {
+            let planes: Option<Vec<_>> = (1..SAMPLES)
+                .map(|s| self.assemble_plane(name, s, false))
+                .collect();
+            self.fbo.ms_planes = planes?;
+        }
+        Some(fb)
+    }
+
+    /// Assembles sample plane `plane` of object `name` (0 for single-sample images). With
+    /// `cached`, a single-sample object's cached copy is reused: as it is when every image
+    /// is at the version it holds, else with the images loaded into it when the layout
+    /// still fits.
+    fn assemble_plane(&mut self, name: u32, plane: usize, cached: bool) -> Option<Framebuffer> {
+        let cached = if cached && self.fbo.samples(name, &self.textures) == 0 {
+            self.fbo.object_mut(name).and_then(|f| f.cache.take())
+        } else {
+            None
+        };
         let (parts, w, h) = self.parts(name)?;
         let info = |a: Option<Attachment>| a.and_then(|a| self.fbo.image_info(a, &self.textures));
         let format = match info(parts.color).map(|i| i.kind) {
@@ -168,7 +208,7 @@ impl Context {
         };
         let (fbo, textures) = (&mut self.fbo, &mut self.textures);
         for (a, stencil) in parts.roles() {
-            if let Some((img, iw)) = image_mut(fbo, textures, a) {
+            if let Some((img, iw)) = image_mut(fbo, textures, a, plane) {
                 load(&mut fb, img, iw, stencil);
             }
         }
@@ -186,10 +226,21 @@ impl Context {
                 fb.resolve();
                 let (fbo, textures) = (&mut self.fbo, &mut self.textures);
                 for (a, stencil) in parts.roles() {
-                    if let Some((img, iw)) = image_mut(fbo, textures, a) {
+                    if let Some((img, iw)) = image_mut(fbo, textures, a, 0) {
                         store(fb, img, iw, stencil);
                     }
                 }
+                let mut planes = std::mem::take(&mut self.fbo.ms_planes);
+                for (k, p) in planes.iter_mut().enumerate() {
+                    p.resolve();
+                    for (a, stencil) in parts.roles() {
+                        let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+                        if let Some((img, iw)) = image_mut(fbo, textures, a, k + 1) {
+                            store(p, img, iw, stencil);
+                        }
+                    }
+                }
+                self.fbo.ms_planes = planes;
                 // A depth-stencil image is one image in both roles: one new version.
                 let mut done: Vec<Attachment> = Vec::new();
                 for (a, _) in parts.roles() {
@@ -213,10 +264,12 @@ impl Context {
     }
 
     /// Keeps the (written back) working copy in the draw object's cache as holding the
-    /// image versions `seen`.
+    /// image versions `seen` (single-sample objects only; planes are dropped).
     fn park_as(&mut self, seen: Vec<(Attachment, u64)>) {
         let name = self.fbo.draw;
-        if let (Some(fb), Some(f)) = (self.fb.take(), self.fbo.object_mut(name)) {
+        self.fbo.ms_planes.clear();
+        let single = self.fbo.samples(name, &self.textures) == 0;
+        if let (Some(fb), Some(f), true) = (self.fb.take(), self.fbo.object_mut(name), single) {
             f.cache = Some(Box::new(super::fbo::Cached { fb, seen }));
         }
     }
@@ -268,7 +321,7 @@ impl Context {
             self.settle_draws();
             let seen = std::mem::take(&mut self.fbo.stale_seen);
             self.park_as(seen);
-            self.fb = self.assemble(self.fbo.draw);
+            self.fb = self.assemble_draw(self.fbo.draw);
         }
     }
 
@@ -297,7 +350,7 @@ impl Context {
         let seen = self.held_versions();
         let r = f(self);
         self.park_as(seen);
-        self.fb = self.assemble(self.fbo.draw);
+        self.fb = self.assemble_draw(self.fbo.draw);
         r
     }
 
@@ -314,11 +367,80 @@ impl Context {
             self.park();
         }
         self.fbo.draw = name;
+        self.fbo.ms_planes.clear();
         self.fb = if name == 0 {
             self.fbo.window.take()
         } else {
-            self.assemble(name)
+            self.assemble_draw(name)
         };
+    }
+
+    /// GL_SAMPLES of the draw framebuffer: 4 for a multisample object, else 0.
+    pub fn draw_samples(&self) -> u32 {
+        if self.fbo.ms_planes.is_empty() {
+            0
+        } else {
+            SAMPLES as u32
+        }
+    }
+
+    /// The sample count of the read framebuffer (0 for the window).
+    pub fn read_samples(&self) -> u32 {
+        self.fbo.samples(self.fbo.read, &self.textures)
+    }
+
+    /// Runs `f` once for each sample plane of the draw framebuffer, with that plane in
+    /// `fb` and its index as the argument (once, with 0, for a single-sample one). Pending
+    /// draws are settled first; `f` must not rebind or reassemble the draw framebuffer.
+    pub fn for_each_sample(&mut self, mut f: impl FnMut(&mut Self, usize)) {
+        if self.fbo.ms_planes.is_empty() {
+            return f(self, 0);
+        }
+        self.settle_draws();
+        crate::pixels::cache::flush(self);
+        f(self, 0);
+        for s in 1..SAMPLES {
+            self.settle_draws();
+            crate::pixels::cache::flush(self);
+            let Some(fb) = self.fb.as_mut() else { return };
+            std::mem::swap(fb, &mut self.fbo.ms_planes[s - 1]);
+            f(self, s);
+            self.settle_draws();
+            crate::pixels::cache::flush(self);
+            if let Some(fb) = self.fb.as_mut() {
+                std::mem::swap(fb, &mut self.fbo.ms_planes[s - 1]);
+            }
+        }
+    }
+
+    /// All the sample planes of the read framebuffer (one for a single-sample one), for a
+    /// blit; `None` when there is nothing to read.
+    pub fn read_planes(&mut self) -> Option<Vec<Framebuffer>> {
+        let samples = self.read_samples();
+        if self.fbo.read == self.fbo.draw {
+            self.fbo_sync();
+            let mut v = vec![self.fb.clone()?];
+            v.extend(self.fbo.ms_planes.iter().cloned());
+            return Some(v);
+        }
+        let first = self.read_framebuffer_copy()?;
+        if samples == 0 {
+            return Some(vec![first]);
+        }
+        let name = self.fbo.read;
+        let mut v = vec![first];
+        let f = self.fbo.object_mut(name)?;
+        let saved = f.draw_buffer;
+        f.draw_buffer = f.read_buffer;
+        for s in 1..SAMPLES {
+            if let Some(p) = self.assemble_plane(name, s, false) {
+                v.push(p);
+            }
+        }
+        if let Some(f) = self.fbo.object_mut(name) {
+            f.draw_buffer = saved;
+        }
+        Some(v)
     }
 
     /// Runs `f` with the window's framebuffer in `fb` (OSMesa calls that look at the
@@ -330,7 +452,9 @@ impl Context {
         self.settle_draws();
         crate::pixels::cache::flush(self);
         std::mem::swap(&mut self.fb, &mut self.fbo.window);
+        let planes = std::mem::take(&mut self.fbo.ms_planes);
         let r = f(self);
+        self.fbo.ms_planes = planes;
         std::mem::swap(&mut self.fb, &mut self.fbo.window);
         r
     }
@@ -373,6 +497,10 @@ impl Context {
     /// glCopyTex(Sub)Image): GL_INVALID_FRAMEBUFFER_OPERATION when it is incomplete.
     pub fn prepare_read(&mut self) -> GlResult<()> {
         self.check_read_framebuffer()?;
+        // Mesa: reading a multisample buffer is GL_INVALID_OPERATION (resolve it first).
+        if self.read_samples() > 0 {
+            return Err(GlError::InvalidOperation);
+        }
         self.fbo.read_copy = self.read_framebuffer_copy();
         Ok(())
     }

@@ -260,7 +260,8 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_INDEX_CLEAR_VALUE => i(&[st.legacy.clear_index as i32 as i64]),
         GL_SAMPLE_COVERAGE_VALUE => f(&[st.legacy.sample_coverage_value]),
         GL_SAMPLE_COVERAGE_INVERT => b(st.legacy.sample_coverage_invert),
-        GL_SAMPLE_BUFFERS | GL_SAMPLES => i(&[0]),
+        GL_SAMPLE_BUFFERS => i(&[(c.draw_samples() > 0) as i64]),
+        GL_SAMPLES => i(&[c.draw_samples() as i64]),
         // No compressed internal format is supported (GL 1.5 requires none).
         GL_NUM_COMPRESSED_TEXTURE_FORMATS => i(&[0]),
         GL_COMPRESSED_TEXTURE_FORMATS => i(&[]),

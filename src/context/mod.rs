@@ -537,12 +537,21 @@ impl Context {
         if mask & GL_ACCUM_BUFFER_BIT != 0 {
             self.clear_accum_buffer();
         }
+        // Every sample plane of a multisample draw buffer gets the clear values.
+        self.for_each_sample(|c, _| c.clear_plane(mask));
+        Ok(())
+    }
+
+    /// glClear's writes into the draw framebuffer in `fb` (one sample plane of a
+    /// multisample object).
+    fn clear_plane(&mut self, mask: u32) {
+        use crate::ffi::enums::*;
         let Some(region) = self.draw_region() else {
-            return Ok(());
+            return;
         };
         let st = &self.state;
         let Some(fb) = self.fb.as_mut() else {
-            return Ok(());
+            return;
         };
         let [x0, y0, x1, y1] = region.map(|v| v as usize);
         let w = fb.width;
@@ -617,7 +626,6 @@ impl Context {
         }
         self.dirty = true;
         self.fbo.drawn = true;
-        Ok(())
     }
 }
 

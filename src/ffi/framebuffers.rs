@@ -529,7 +529,9 @@ fn renderbuffer_storage(
                 .fbo
                 .bound_renderbuffer_mut()
                 .ok_or(GlError::InvalidOperation)?;
-            rb.allocate(internal, format, w as usize, h as usize)?;
+            // llvmpipe's one multisample count: any request of 1..=4 gets 4.
+            let samples = if samples > 0 { MAX_SAMPLES as u32 } else { 0 };
+            rb.allocate(internal, format, w as usize, h as usize, samples)?;
             let name = c.fbo.renderbuffer;
             c.fbo.bump(Attachment::Renderbuffer(name));
             Ok(())
@@ -590,7 +592,7 @@ pub unsafe extern "C" fn glGetRenderbufferParameteriv(
             GL_RENDERBUFFER_ALPHA_SIZE => sizes[3],
             GL_RENDERBUFFER_DEPTH_SIZE => sizes[4],
             GL_RENDERBUFFER_STENCIL_SIZE => sizes[5],
-            GL_RENDERBUFFER_SAMPLES => 0,
+            GL_RENDERBUFFER_SAMPLES => rb.samples as GLint,
             _ => return Err(GlError::InvalidEnum),
         }))
     });

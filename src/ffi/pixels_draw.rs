@@ -58,6 +58,11 @@ pub unsafe extern "C" fn glDrawPixels(
             _ => {}
         }
         match &img {
+            // Into a multisample object: every sample plane gets the pixels (llvmpipe's
+            // pixel-aligned quad covers every sample of the pixels it covers).
+            Some(img) if c.feedback.mode == crate::context::feedback::RenderMode::Render => {
+                c.for_each_sample(|c, _| draw_pixels(c, img))
+            }
             Some(img) => draw_pixels(c, img),
             // Mesa cannot map a null image into its texture: GL_OUT_OF_MEMORY.
             None if c.raster_pos.valid && width > 0 && height > 0 => {

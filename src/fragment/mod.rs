@@ -45,6 +45,43 @@ pub struct FragPlan {
     pub count_samples: bool,
     /// Antialiased lines or points: the coverage multiplied into alpha (general path).
     pub smooth: Option<crate::raster::smooth::Smooth>,
+    /// One sample's pass of a multisample triangle draw (general path only).
+    pub ms: Option<MsPass>,
+}
+
+/// One pass of a 4x multisample triangle draw: the rasterizer tests this sample's point,
+/// and the span shader evaluates colour and every other attribute at the pixel centre
+/// `(x + 0.5, y + 0.5)` and depth at the sample point `(x + sx, y + sy)`, each as
+/// `fmuladd(dady, y', fmuladd(dadx, x', a0))` with `a0` at the pixel's corner (llvmpipe's
+/// `attribs_update_simple` with `coverage_samples > 1`). Colour is thus the same in every
+/// pass; depth, stencil and blending are per sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MsPass {
+    /// The sample (0..4, llvmpipe's order).
+    pub sample: usize,
+    /// The sample point inside the pixel, as fractions (x, y) of a pixel.
+    pub pos: [f32; 2],
+    /// GL_SAMPLE_ALPHA_TO_COVERAGE: the sample is kept only where the shaded (float)
+    /// alpha is above `sample · 0.25` (llvmpipe's `lp_build_sample_alpha_to_coverage`,
+    /// no dither).
+    pub alpha_to_coverage: bool,
+}
+
+impl MsPass {
+    /// The pass of sample `s`.
+    pub fn new(s: usize, alpha_to_coverage: bool) -> Self {
+        let [x, y] = crate::geometry::setup::SAMPLE_POS[s];
+        MsPass {
+            sample: s,
+            pos: [x as f32 / 256.0, y as f32 / 256.0],
+            alpha_to_coverage,
+        }
+    }
+
+    /// The alpha the shaded alpha must exceed for this sample to be kept.
+    pub fn coverage_threshold(&self) -> f32 {
+        self.sample as f32 * 0.25
+    }
 }
 
 /// The depth test of a draw.
@@ -195,6 +232,7 @@ impl FragPlan {
             fog: None,
             count_samples: false,
             smooth: None,
+            ms: None,
         }
     }
 
@@ -219,5 +257,6 @@ impl FragPlan {
             || self.fog.is_some()
             || self.count_samples
             || self.smooth.is_some()
+            || self.ms.is_some()
     }
 }

@@ -248,6 +248,7 @@ pub enum ChunkColors<'a> {
 /// in f32: the texture environment of every enabled unit, then the separate specular
 /// colour, then fog; converted to 8 bits.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -256,6 +257,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     units: &[UnitPlan<'_>],
     texels: Option<&TexLanes>,
     cov: Option<&[f32; LANES]>,
+    mut alpha_out: Option<&mut [f32; LANES]>,
 ) -> Lanes {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
     let frag = frag_colors::<M, FLAT, PERSP>(t, fx, fy, &oow);
@@ -292,6 +294,9 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         // Antialiasing stages multiply the shader's final alpha by their coverage.
         if let Some(cv) = cov {
             prev[3] *= cv[i];
+        }
+        if let Some(a) = alpha_out.as_deref_mut() {
+            a[i] = prev[3];
         }
         for ch in 0..4 {
             c[ch][i] = unorm8(prev[ch]);
@@ -382,21 +387,46 @@ pub fn shade_chunk<
     for (i, f) in fx.iter_mut().enumerate() {
         *f = (x + i) as f32;
     }
+    // A multisample pass evaluates the attributes at the pixel centre (its planes' a0 is
+    // at the corner) and depth at its sample point (integers and these offsets add
+    // exactly in f32).
+    let ms = plan.ms;
+    let (fx_z, fy_z) = match ms {
+        None => (fx, fy),
+        Some(m) => {
+            let fy_z = fy + m.pos[1];
+            for f in fx.iter_mut() {
+                *f += m.pos[0];
+            }
+            let fx_z = fx;
+            for (i, f) in fx.iter_mut().enumerate() {
+                *f = (x + i) as f32 + 0.5;
+            }
+            (fx_z, fy_z)
+        }
+    };
+    let fy = if ms.is_some() { fy + 0.5 } else { fy };
     let mut c: Lanes = [[0u8; LANES]; 4];
     if FULL {
         let cov = plan
             .smooth
             .map(|s| crate::raster::smooth::coverage::<M, PERSP>(t, s, &fx, fy, &mut live));
         let cov = cov.as_ref();
+        let mut alpha = [0f32; LANES];
+        let a2c = ms.filter(|m| m.alpha_to_coverage);
+        let alpha_out = a2c.is_some().then_some(&mut alpha);
         c = match source {
             ChunkColors::Ready(c) => *c,
             ChunkColors::Textured(tx) => {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx), cov)
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx), cov, alpha_out)
             }
             ChunkColors::Shaded
-                if plan.separate_specular || plan.fog.is_some() || cov.is_some() =>
+                if plan.separate_specular
+                    || plan.fog.is_some()
+                    || cov.is_some()
+                    || alpha_out.is_some() =>
             {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None, cov)
+                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None, cov, alpha_out)
             }
             ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
         };
@@ -406,6 +436,13 @@ pub fn shade_chunk<
                     live[i] = false;
                     stats.alpha_failed += 1;
                 }
+            }
+        }
+        if let Some(m) = a2c {
+            let threshold = m.coverage_threshold();
+            for i in 0..n {
+                // NaN alpha keeps no sample, as the ordered compare.
+                live[i] &= alpha[i] > threshold;
             }
         }
         if let Some(sp) = &stencil {
@@ -426,7 +463,7 @@ pub fn shade_chunk<
         let d = plan.depth.expect("DEPTH implies a depth plan");
         let mut q = [0u32; LANES];
         for i in 0..LANES {
-            q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx[i], fy));
+            q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx_z[i], fy_z));
         }
         let dst = &mut fb.depth[row..row + n];
         for i in 0..n {

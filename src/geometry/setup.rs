@@ -12,6 +12,12 @@ use super::ClipVertex;
 
 /// Sub-pixel bits of the snapped positions.
 pub const SUBPIXEL_BITS: u32 = 8;
+
+/// llvmpipe's 4x sample positions in 1/256 pixel (`lp_sample_pos_4x` scaled and rounded,
+/// `lp_scene.c`), in the framebuffer's memory rows (an object's rows are GL's): sample s
+/// of pixel (px, py) is at `(256·px + SAMPLE_POS[s][0], 256·py + SAMPLE_POS[s][1])`, i.e.
+/// (0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875) of the pixel.
+pub const SAMPLE_POS: [[i64; 2]; 4] = [[96, 32], [224, 96], [32, 160], [160, 224]];
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
 /// A linear function of the pixel position: `a0 + dadx * px + dady * py`.
@@ -172,6 +178,20 @@ fn snap4(v: [f32; 4]) -> [f32; 4] {
     out
 }
 
+/// [`snap4`] without the half-pixel offset (multisample set-up): `round_half_even(256·v)`.
+#[inline(always)]
+fn snap4_ms(v: [f32; 4]) -> [f32; 4] {
+    const BIG: f32 = 8_388_608.0;
+    let t = v.map(|v| v * 256.0);
+    let mut out = [0f32; 4];
+    for l in 0..4 {
+        let c = BIG.copysign(t[l]);
+        let r = (t[l] + c) - c;
+        out[l] = if t[l].abs() < BIG { r } else { t[l] };
+    }
+    out
+}
+
 /// The largest snapped coordinate we accept; beyond it a triangle is dropped (clipping keeps
 /// real geometry far inside this; only garbage such as NaN reaches it).
 const MAX_SNAPPED: f32 = (1u64 << 40) as f32;
@@ -216,7 +236,7 @@ pub fn setup_triangle(
     back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (true, false), fill)
+    setup_inner(v, nvary, cull, back, (true, false), None, fill)
 }
 
 /// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
@@ -231,7 +251,7 @@ pub fn setup_triangle_shaded(
     flat: bool,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (flat, true), fill)
+    setup_inner(v, nvary, cull, back, (flat, true), None, fill)
 }
 
 /// [`setup_triangle_shaded`] compiled for AVX2: the same f32 and i64 operations (Rust
@@ -250,7 +270,7 @@ unsafe fn setup_triangle_shaded_avx2(
     flat: bool,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (flat, true), fill)
+    setup_inner(v, nvary, cull, back, (flat, true), None, fill)
 }
 
 /// Which compiled copy of [`setup_triangle_shaded`] a draw runs, chosen once per draw.
@@ -258,6 +278,8 @@ unsafe fn setup_triangle_shaded_avx2(
 pub struct SetupVariant {
     /// Run the AVX2 copy (only ever true on a CPU that has AVX2).
     avx2: bool,
+    /// A multisample pass: set up for this sample of [`SAMPLE_POS`] ([`setup_triangle_ms`]).
+    sample: Option<usize>,
 }
 
 impl SetupVariant {
@@ -265,6 +287,16 @@ impl SetupVariant {
     pub fn detect() -> Self {
         SetupVariant {
             avx2: crate::cpu::isa().avx2(),
+            sample: None,
+        }
+    }
+
+    /// The set-up of one pass of a multisample draw: sample `s` of [`SAMPLE_POS`], through
+    /// [`setup_triangle_ms`] (never the AVX2 copies).
+    pub fn multisample(s: usize) -> Self {
+        SetupVariant {
+            avx2: false,
+            sample: Some(s),
         }
     }
 
@@ -276,7 +308,10 @@ impl SetupVariant {
     /// The baseline (SSE2) copy, whatever the CPU.
     #[cfg(test)]
     pub fn baseline() -> Self {
-        SetupVariant { avx2: false }
+        SetupVariant {
+            avx2: false,
+            sample: None,
+        }
     }
 
     /// [`setup_triangle_shaded`], in this variant's copy.
@@ -290,6 +325,9 @@ impl SetupVariant {
         flat: bool,
         fill: &mut SetupTriangle,
     ) -> SetupResult {
+        if let Some(s) = self.sample {
+            return setup_triangle_ms(v, nvary, cull, back, flat, s, fill);
+        }
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
             // SAFETY: `avx2` is only set by `detect`, from an AVX2 `isa()` (AVX2 and the bit
@@ -298,6 +336,33 @@ impl SetupVariant {
         }
         setup_triangle_shaded(v, nvary, cull, back, flat, fill)
     }
+}
+
+/// [`setup_triangle_shaded`] for pass `sample` of a 4x multisample draw, as llvmpipe sets
+/// up with `setup->multisample`: positions snapped as `round_half_even(256·v)` (no −0.5
+/// pixel offset), then moved by −[`SAMPLE_POS`]`[sample]`, so that the rasterizer's
+/// integer "pixel centre" test is the edge test at that sample point (llvmpipe's
+/// `c + (sy·dcdy − sx·dcdx) >> 8`, the same edges and tie rule); the plane equations'
+/// `a0` is the value at pixel (0,0)'s corner (`pixel_center = 0`): the span shader adds
+/// 0.5 (attributes) or the sample position (depth) to the pixel's coordinates.
+pub fn setup_triangle_ms(
+    v: [&ClipVertex; 3],
+    nvary: usize,
+    cull: CullMode,
+    back: Option<usize>,
+    flat: bool,
+    sample: usize,
+    fill: &mut SetupTriangle,
+) -> SetupResult {
+    setup_inner(
+        v,
+        nvary,
+        cull,
+        back,
+        (flat, true),
+        Some(SAMPLE_POS[sample]),
+        fill,
+    )
 }
 
 /// Setup; `(flat, skip_empty)` as [`setup_triangle_shaded`]'s `flat` and whether an empty
@@ -309,6 +374,7 @@ fn setup_inner(
     cull: CullMode,
     back: Option<usize>,
     (flat, skip_empty): (bool, bool),
+    sample: Option<[i64; 2]>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     // The six coordinates as lanes (x0 y0 x1 y1, x2 y2), checked and snapped without a
@@ -320,7 +386,10 @@ fn setup_inner(
     if !ok {
         return SetupResult::Degenerate;
     }
-    let (lo, hi) = (snap4(lo), snap4(hi));
+    let (lo, hi) = match sample {
+        None => (snap4(lo), snap4(hi)),
+        Some(_) => (snap4_ms(lo), snap4_ms(hi)),
+    };
     let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
     // One `cvttss2si` each: `as` adds the saturation of NaN and out-of-range values (five
     // instructions a value), which cannot occur here.
@@ -329,6 +398,11 @@ fn setup_inner(
     let [x0, y0, x1, y1] = lo.map(|c| unsafe { c.to_int_unchecked::<i64>() });
     // SAFETY: as above.
     let [x2, y2] = [hi[0], hi[1]].map(|c| unsafe { c.to_int_unchecked::<i64>() });
+    // A multisample pass moves the sample point to the rasterizer's integer test point.
+    let ([x0, x1, x2], [y0, y1, y2]) = match sample {
+        None => ([x0, x1, x2], [y0, y1, y2]),
+        Some([sx, sy]) => ([x0 - sx, x1 - sx, x2 - sx], [y0 - sy, y1 - sy, y2 - sy]),
+    };
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     if area == 0 {
         return SetupResult::Degenerate;
@@ -360,7 +434,7 @@ fn setup_inner(
         [y0, y1, y2],
         ccw,
         (front, cull.top_left),
-        (nvary, flat, skip_empty),
+        (nvary, flat, skip_empty, sample.is_none()),
         fill,
     )
 }
@@ -456,7 +530,7 @@ fn setup_rest<'v>(
     ys: [i64; 3],
     ccw: bool,
     (front, top_left): (bool, bool),
-    (nvary, flat, skip_empty): (usize, bool, bool),
+    (nvary, flat, skip_empty, centre): (usize, bool, bool, bool),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
@@ -499,8 +573,10 @@ fn setup_rest<'v>(
     let (fx0, fy0) = (p0.win[0], p0.win[1]);
     let (fx1, fy1) = (p1.win[0], p1.win[1]);
     let (fx2, fy2) = (p2.win[0], p2.win[1]);
-    let x0c = fx0 - 0.5;
-    let y0c = fy0 - 0.5;
+    // a0 at pixel (0,0)'s centre, or (multisample) at its corner.
+    let half = if centre { 0.5f32 } else { 0.0 };
+    let x0c = fx0 - half;
+    let y0c = fy0 - half;
     let dx01 = fx0 - fx1;
     let dy01 = fy0 - fy1;
     let dx20 = fx2 - fx0;

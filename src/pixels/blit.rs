@@ -89,13 +89,35 @@ pub fn blit(
 ) -> GlResult<()> {
     ctx.check_draw_framebuffer()?;
     ctx.check_read_framebuffer()?;
-    // Reading and drawing one buffer: read a snapshot.
-    let mut sfb = match ctx.read_framebuffer_copy() {
-        Some(f) => f,
-        None => match ctx.fb.as_ref() {
-            Some(f) => f.clone(),
-            None => return Ok(()),
-        },
+    // Mesa's blit_framebuffer: with a multisample buffer on either side the rectangles
+    // must have the same size (offsets and mirroring are allowed).
+    let (read_ms, draw_ms) = (ctx.read_samples() > 0, ctx.draw_samples() > 0);
+    if (read_ms || draw_ms)
+        && ((src[2] - src[0]).abs() != (dst[2] - dst[0]).abs()
+            || (src[3] - src[1]).abs() != (dst[3] - dst[1]).abs())
+    {
+        return Err(GlError::InvalidOperation);
+    }
+    // Every sample plane of a multisample source (a resolve averages them).
+    let mut planes = Vec::new();
+    let mut sfb = if read_ms {
+        planes = ctx.read_planes().unwrap_or_default();
+        for p in &mut planes {
+            p.resolve();
+        }
+        if planes.len() != crate::context::fbo::SAMPLES {
+            return Ok(());
+        }
+        resolve_samples(&planes)
+    } else {
+        // Reading and drawing one buffer: read a snapshot.
+        match ctx.read_framebuffer_copy() {
+            Some(f) => f,
+            None => match ctx.fb.as_ref() {
+                Some(f) => f.clone(),
+                None => return Ok(()),
+            },
+        }
     };
     sfb.resolve();
     let Some(dfb) = ctx.fb.as_ref() else {
@@ -161,13 +183,39 @@ pub fn blit(
         linear: linear && (bw != swid.abs() || bh != shgt.abs()),
         fma: crate::geometry::cpu_has_fma(),
     };
-    let fb = ctx.fb.as_mut().ok_or(GlError::InvalidOperation)?;
-    fb.resolve();
-    fb.uniform_color = None;
+    // Into a multisample object: sample for sample from a multisample source, else every
+    // sample gets the source's value.
+    ctx.for_each_sample(|c, s| {
+        let src = if draw_ms && read_ms { &planes[s] } else { &sfb };
+        if let Some(fb) = c.fb.as_mut() {
+            fb.resolve();
+            fb.uniform_color = None;
+            job.run(src, fb, mask);
+        }
+    });
     ctx.dirty = true;
     ctx.fbo.drawn = true;
-    job.run(&sfb, fb, mask);
     Ok(())
+}
+
+/// The single-sample image a multisample resolve reads: per pixel and channel llvmpipe's
+/// resolve shader (`util_make_fs_msaa_resolve`): `sum = 0; sum += s_i` in sample order
+/// in f32, each sample `u · f32(1/255)`, then `round_half_even(sum · 0.25 · 255)`. Depth
+/// and stencil are sample 0's.
+fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
+    let mut out = planes[0].clone();
+    let scale = 1.0f32 / 255.0;
+    for (i, px) in out.color.iter_mut().enumerate() {
+        for (ch, v) in px.iter_mut().enumerate() {
+            let mut sum = 0.0f32;
+            for p in planes {
+                sum += p.color[i][ch] as f32 * scale;
+            }
+            let avg = sum * 0.25;
+            *v = crate::fragment::span::unorm8(avg);
+        }
+    }
+    out
 }
 
 /// One blit in memory coordinates.

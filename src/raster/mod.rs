@@ -47,6 +47,21 @@ pub fn raster_triangle(
         return false;
     }
     let b = [x_lo, y_lo, x_hi, y_hi];
+    if plan.ms.is_some() {
+        // A multisample pass takes the general walks of the scalar levels only (the SIMD
+        // span shaders know no sample offsets); FMA still follows the CPU, as llvmpipe's.
+        // SAFETY: `Fma` runs only when `cpu::isa` reports FMA.
+        unsafe {
+            match crate::cpu::isa() {
+                #[cfg(target_arch = "x86_64")]
+                Isa::Fma | Isa::Avx2Fma => {
+                    raster_rows::<variants::Fma>(t, b, plan, units, fb, stats)
+                }
+                _ => raster_rows::<variants::Base>(t, b, plan, units, fb, stats),
+            }
+        }
+        return true;
+    }
     // SAFETY (all five): `cpu::isa` and `cpu::avx512` only report features the CPU has,
     // and each arm runs that level's walks.
     unsafe {
@@ -294,7 +309,7 @@ unsafe fn raster_rows<W: Walks>(
 ) {
     let depth = plan.depth.is_some();
     // SAFETY (all): forwarded from the caller.
-    if let Some(env) = textured::fast_env(plan, units) {
+    if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none()) {
         let u = &units[0];
         with_flags!((depth, plan.flat, t.persp), |D, F, P| unsafe {
             W::tex_fast::<D, F, P>(t, b, plan, u, env, fb, stats)
@@ -375,6 +390,11 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
         live,
     } in textured::Chunks::new(t, b)
     {
+        // A multisample pass samples at the pixel centres (see `FragPlan::ms`).
+        let (fx, fy) = match plan.ms {
+            None => (fx, fy),
+            Some(_) => (fx.map(|v| v + 0.5), fy.map(|v| v + 0.5)),
+        };
         let fx = &fx;
         for (k, u) in units.iter().enumerate() {
             let base = VARY_TEX + 4 * k;
