@@ -34,6 +34,13 @@ for level in "${order[@]}"; do
   cp target/ctests/out/*.out "$outs/$level/"
 done
 bash scripts/isa-compare.sh "$outs" "${levels[@]}"
+
+# A real third-party client through the drop-in (bench/mujoco/README.md): MuJoCo from PyPI,
+# in a venv made once and cached, renders its two test models at 640x480, single-sample and
+# 4x multisample, through Mesa's llvmpipe and through softgl; every case must have 99.5% of
+# its pixels within 2/255 of llvmpipe's. (Frame times are printed, never judged here.)
+echo "test.sh: MuJoCo through the drop-in"
+bash scripts/mujoco.sh --sizes 640x480 --samples 0,4 --frames 1 --min-within 99.5
 cargo test --release --workspace --doc
 
 # The libraries' own unit tests with debug assertions and overflow checks (Cargo.toml's
