@@ -9,8 +9,8 @@ use super::glext_enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx};
 use crate::context::fbo::{
-    Attachment, ImageKind, RbFormat, Renderbuffer, MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE,
-    MAX_SAMPLES,
+    Attachment, FboState, ImageKind, RbFormat, Renderbuffer, MAX_COLOR_ATTACHMENTS,
+    MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
 };
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::{Target, MAX_3D_TEXTURE_SIZE, MAX_LEVELS};
@@ -120,13 +120,22 @@ unsafe fn read_names(n: usize, p: *const GLuint) -> Vec<u32> {
 /// `framebuffers` must be writable for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenFramebuffers(n: GLsizei, framebuffers: *mut GLuint) {
+    // SAFETY: the caller's promise, passed on.
+    unsafe { gen_names(n, framebuffers, FboState::gen_framebuffers) }
+}
+
+/// The body of glGenFramebuffers and glGenRenderbuffers: `n` new names from `gen`.
+///
+/// # Safety
+/// `out` must be writable for `n` names or null.
+unsafe fn gen_names(n: GLsizei, out: *mut GLuint, gen: fn(&mut FboState, usize) -> Vec<u32>) {
     with_ctx(|c| {
         let n = non_negative(n)?;
         c.check_outside_begin()?;
-        if !framebuffers.is_null() {
-            let names = c.fbo.gen_framebuffers(n);
+        if !out.is_null() {
+            let names = gen(&mut c.fbo, n);
             // SAFETY: the caller promises room for n names.
-            unsafe { write_names(framebuffers, &names) };
+            unsafe { write_names(out, &names) };
         }
         Ok(())
     })
@@ -408,16 +417,8 @@ pub extern "C" fn glFramebufferRenderbuffer(
 /// `renderbuffers` must be writable for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenRenderbuffers(n: GLsizei, renderbuffers: *mut GLuint) {
-    with_ctx(|c| {
-        let n = non_negative(n)?;
-        c.check_outside_begin()?;
-        if !renderbuffers.is_null() {
-            let names = c.fbo.gen_renderbuffers(n);
-            // SAFETY: the caller promises room for n names.
-            unsafe { write_names(renderbuffers, &names) };
-        }
-        Ok(())
-    })
+    // SAFETY: the caller's promise, passed on.
+    unsafe { gen_names(n, renderbuffers, FboState::gen_renderbuffers) }
 }
 
 /// glDeleteRenderbuffers: detached from the bound framebuffers, unbound if bound.
