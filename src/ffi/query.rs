@@ -199,6 +199,22 @@ fn read_pixels(
     out: *mut u8,
 ) -> GlResult<()> {
     crate::pixels::cache::flush(c);
+    if w < 0 || h < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    // Mesa's `_mesa_error_check_format_and_type` looks at a packed type before the format:
+    // 3-field types need GL_RGB, 4-field types GL_RGBA or GL_BGRA, any other format
+    // (even an unknown one) is GL_INVALID_OPERATION.
+    let packed = crate::pixels::image::packed_fields(ty);
+    if let Some((_, fields)) = packed {
+        let fits = match fields.len() {
+            3 => format == GL_RGB,
+            _ => matches!(format, GL_RGBA | GL_BGRA),
+        };
+        if !fits {
+            return Err(GlError::InvalidOperation);
+        }
+    }
     let kind = match format {
         GL_RGBA => ReadKind::Color([0, 1, 2, 3], 4),
         GL_RGB => ReadKind::Color([0, 1, 2, 0], 3),
@@ -214,15 +230,13 @@ fn read_pixels(
         GL_STENCIL_INDEX => ReadKind::Stencil,
         _ => return Err(GlError::InvalidEnum),
     };
-    let tsize = match ty {
-        GL_UNSIGNED_BYTE | GL_BYTE => 1,
-        GL_UNSIGNED_SHORT | GL_SHORT => 2,
-        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
+    let tsize = match (ty, packed) {
+        (_, Some((size, _))) => size,
+        (GL_UNSIGNED_BYTE | GL_BYTE, _) => 1,
+        (GL_UNSIGNED_SHORT | GL_SHORT, _) => 2,
+        (GL_UNSIGNED_INT | GL_INT | GL_FLOAT, _) => 4,
         _ => return Err(GlError::InvalidEnum),
     };
-    if w < 0 || h < 0 {
-        return Err(GlError::InvalidValue);
-    }
     c.check_outside_begin()?;
     c.prepare_read()?;
     if matches!(kind, ReadKind::Color(..)) && !c.reads_color() {
@@ -241,9 +255,10 @@ fn read_pixels(
         return Ok(());
     }
     let comps = match kind {
-        ReadKind::Color(_, n) => n,
+        ReadKind::Color(_, n) if packed.is_none() => n,
         _ => 1,
     };
+    let swap = c.state.pack.swap_bytes && tsize > 1;
     // Pixel transfer sends Mesa down its CPU path (`readpix.c`, `read_rgba_pixels`):
     // unorm8 → float, scale and bias, the colour maps, then float → the packed type.
     let tr = c.pixel_modes.transfer;
@@ -310,6 +325,26 @@ fn read_pixels(
             // SAFETY: pointer arithmetic within the packed image the program provided.
             let p = unsafe { out.add(start + row * stride + col * bpp) };
             match kind {
+                ReadKind::Color(map, _) if packed.is_some() => {
+                    let (size, fields) = packed.unwrap_or_default();
+                    let bits = if transfer {
+                        let f = |u: u8| u as f32 * (1.0f32 / 255.0);
+                        let mut rgba = tr.apply_scale_bias(fb.color_at(idx).map(f));
+                        if tr.map_color {
+                            rgba = maps.map_rgba(rgba);
+                        }
+                        encode_packed(fields, map, |ch, n| float_to_unorm(rgba[ch], n))
+                    } else {
+                        let px = fb.color_at(idx);
+                        encode_packed(fields, map, |ch, n| unorm8_to_unorm(px[ch], n))
+                    };
+                    let mut bytes = bits.to_ne_bytes();
+                    if swap {
+                        bytes[..size].reverse();
+                    }
+                    // SAFETY: `size` == bpp bytes of this pixel, inside the packed image.
+                    unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), p, size) };
+                }
                 ReadKind::Color(map, n) if transfer => {
                     let f = |u: u8| u as f32 * (1.0f32 / 255.0);
                     let mut rgba = fb.color_at(idx).map(f);
@@ -382,6 +417,38 @@ fn read_pixels(
         }
     }
     Ok(())
+}
+
+/// One pixel of a GL 1.2 packed type: component `k` of the format (RGBA channel `map[k]`)
+/// goes into bit field `fields[k]`, converted by `conv(channel, width)`.
+fn encode_packed(fields: &[(u32, u32)], map: [usize; 4], conv: impl Fn(usize, u32) -> u32) -> u32 {
+    fields
+        .iter()
+        .zip(map)
+        .fold(0, |acc, (&(shift, n), ch)| acc | conv(ch, n) << shift)
+}
+
+/// Mesa's `_mesa_unorm_to_unorm` from 8 bits: narrower fields round
+/// (`(u * max + 127) / 255`), wider ones replicate the high bits.
+fn unorm8_to_unorm(u: u8, n: u32) -> u32 {
+    let u = u as u32;
+    match n {
+        0..=7 => (u * ((1 << n) - 1) + 127) / 255,
+        8 => u,
+        _ => (u << (n - 8)) | (u >> (16 - n)),
+    }
+}
+
+/// Float to a packed field after pixel transfer. GL_UNSIGNED_INT_8_8_8_8(_REV) are array
+/// formats to Mesa and go through `_mesa_float_to_unorm` (round half to even); the other
+/// packed formats through util_format's pack, `util_iround(CLAMP(v, 0, 1) * max)`.
+fn float_to_unorm(v: f32, n: u32) -> u32 {
+    let x = v.clamp(0.0, 1.0) * ((1u32 << n) - 1) as f32;
+    if n == 8 {
+        x.round_ties_even() as u32
+    } else {
+        (x + 0.5) as u32
+    }
 }
 
 /// glReadPixels: reads a rectangle of the framebuffer (bottom row first) with the pack

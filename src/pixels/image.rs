@@ -80,6 +80,15 @@ fn pixel_type(ty: u32) -> Option<Ty> {
     })
 }
 
+/// A GL 1.2 packed type's byte size and its (shift, width) bit field per component of
+/// the format, or `None` for any other type.
+pub(crate) fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
+    match pixel_type(ty)? {
+        Ty::Packed { size, fields } => Some((size, fields)),
+        _ => None,
+    }
+}
+
 /// Which RGBA channel each component of a colour format is (4 = luminance).
 fn components(format: u32) -> Option<&'static [usize]> {
     Some(match format {
