@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the tests and the demo need on a fresh Debian machine: a C compiler,
-# binutils (nm) and Mesa's OSMesa (the reference the C scenes are compared against).
+# binutils (nm), Mesa's OSMesa (the reference the C scenes are compared against) and
+# SGI's libGLU (the reference for softglut's GLU).
 set -euo pipefail
 need=()
 command -v cc >/dev/null 2>&1 || need+=(gcc libc6-dev)
@@ -8,6 +9,8 @@ command -v nm >/dev/null 2>&1 || need+=(binutils)
 command -v python3 >/dev/null 2>&1 || need+=(python3)
 command -v pkg-config >/dev/null 2>&1 || need+=(pkg-config)
 [ -f /usr/include/GL/osmesa.h ] || need+=(libosmesa6-dev)
+# libGLU: tests/dropin.rs and tests/glu_reference.rs compare against the system GLU.
+[ -f /usr/include/GL/glu.h ] || need+=(libglu1-mesa-dev)
 if [ ${#need[@]} -gt 0 ]; then
   echo "ensure-deps: installing ${need[*]}"
   SUDO=""

@@ -82,6 +82,7 @@ extern "C" {
     pub fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat);
     pub fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat);
     pub fn glMultMatrixd(m: *const GLdouble);
+    pub fn glMultMatrixf(m: *const GLfloat);
     pub fn glOrtho(l: GLdouble, r: GLdouble, b: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble);
     pub fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei);
     pub fn glFinish();
@@ -246,6 +247,11 @@ pub mod im {
     pub fn scale(x: f32, y: f32, z: f32) {
         // SAFETY: no pointer arguments.
         unsafe { glScalef(x, y, z) }
+    }
+    /// `glMultMatrixf` of a column-major matrix.
+    pub fn mult_f32(m: &[f32; 16]) {
+        // SAFETY: m points to 16 floats.
+        unsafe { glMultMatrixf(m.as_ptr()) }
     }
     /// `glMultMatrixd` of a column-major matrix.
     pub fn mult(m: &[f64; 16]) {

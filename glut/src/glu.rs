@@ -102,24 +102,12 @@ pub extern "C" fn gluOrtho2D(left: GLdouble, right: GLdouble, bottom: GLdouble, 
     unsafe { gl::glOrtho(left, right, bottom, top, -1.0, 1.0) };
 }
 
-fn normalize(v: [f64; 3]) -> [f64; 3] {
-    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    if l == 0.0 {
-        v
-    } else {
-        [v[0] / l, v[1] / l, v[2] / l]
-    }
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// `gluLookAt`: a viewing transform from the eye towards the centre, `up` upwards.
+///
+/// The basis is computed in single precision and multiplied with glMultMatrixf, then the
+/// eye is translated with glTranslated: SGI's libGLU (the one Mesa's users link) does
+/// exactly that, and the matrices it leaves differ from a double-precision basis in the
+/// last bit of a third of their entries, enough to move scattered pixels by one step.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub extern "C" fn gluLookAt(
@@ -133,14 +121,39 @@ pub extern "C" fn gluLookAt(
     up_y: GLdouble,
     up_z: GLdouble,
 ) {
-    let f = normalize([center_x - eye_x, center_y - eye_y, center_z - eye_z]);
-    let s = normalize(cross(f, [up_x, up_y, up_z]));
-    let u = cross(s, f);
+    let forward = [
+        (center_x - eye_x) as f32,
+        (center_y - eye_y) as f32,
+        (center_z - eye_z) as f32,
+    ];
+    let f = normalize_f32(forward);
+    let s = normalize_f32(cross_f32(f, [up_x as f32, up_y as f32, up_z as f32]));
+    let u = cross_f32(s, f);
     let m = [
         s[0], u[0], -f[0], 0.0, s[1], u[1], -f[1], 0.0, s[2], u[2], -f[2], 0.0, 0.0, 0.0, 0.0, 1.0,
     ];
-    im::mult(&m);
+    im::mult_f32(&m);
     im::translate(-eye_x as f32, -eye_y as f32, -eye_z as f32);
+}
+
+/// A vector divided by its length, all in f32 (the length's square root rounded from
+/// double, as C's `sqrt` of a float sum); a zero vector is returned unchanged.
+fn normalize_f32(v: [f32; 3]) -> [f32; 3] {
+    let l = (f64::from(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])).sqrt() as f32;
+    if l == 0.0 {
+        v
+    } else {
+        [v[0] / l, v[1] / l, v[2] / l]
+    }
+}
+
+/// The cross product a × b in f32.
+fn cross_f32(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 /// `gluPickMatrix`: restricts drawing to a small region around (x, y) of the viewport.
