@@ -13,7 +13,9 @@
 //! pixels and [`fragment`] runs the per-fragment operations chosen by a per-draw plan.
 //!
 //! The arithmetic follows Mesa's llvmpipe (the reference the C tests compare against) so
-//! that images are bit-identical: see `shared/docs/llvmpipe-rules.md`.
+//! that images are bit-identical. The rules followed are written down in `docs/llvmpipe-rules.md`
+//! (cited in module docs as "llvmpipe-rules §n") and, for framebuffer objects, blits and
+//! multisampling, in `docs/fbo-rules.md`.
 
 pub mod context;
 pub mod cpu;
