@@ -163,10 +163,11 @@ unsafe fn tex_image(
     }
     let cf = ClientFormat::new(format, ty)?;
     let level = check_level(level)?;
+    let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     depth_match(base, &cf)?;
     c.check_outside_begin()?;
-    let storage = storage_of(internal, base, format, ty);
+    let storage = storage_of(internal, base, sformat, sty);
     let size = image_size(t, level, w, h, border);
     if proxy {
         let obj = object_mut(c, t, true);
@@ -347,6 +348,23 @@ fn depth_match(base: BaseFormat, cf: &ClientFormat) -> GlResult<()> {
     Ok(())
 }
 
+/// A glTexImage internal format as softgl stores it, with the client format and type its
+/// storage is chosen by: a generic compressed format (GL_COMPRESSED_RGB ...) becomes its
+/// base format. A 1D image then takes the storage of that unsized format, as Mesa's
+/// `st_ChooseTextureFormat` does; on other targets Mesa takes a fixed format (A8 and I8
+/// for ALPHA and INTENSITY, blocks for the rest), so the client type plays no part.
+pub(crate) fn resolve_internal(
+    internal: GLint,
+    t: Target,
+    (format, ty): (GLenum, GLenum),
+) -> (GLint, GLenum, GLenum) {
+    match super::textures_compressed::generic_base(internal as GLenum) {
+        Some(b) if t == Target::Tex1D => (b as GLint, format, ty),
+        Some(b) => (b as GLint, 0, 0),
+        None => (internal, format, ty),
+    }
+}
+
 /// The storage Mesa picks for an image (depth images: their depth bits).
 fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: GLenum) -> Storage {
     if base == BaseFormat::Depth {
@@ -517,7 +535,13 @@ fn copy_tex_image(
     };
     let level = check_level(level)?;
     // Mesa: an unknown internal format of a copy is GL_INVALID_ENUM (not VALUE as for
-    // glTexImage)
+    // glTexImage), and so are the legacy component counts 1-4, which only glTexImage
+    // takes (GL 1.5 spec, section 3.8.2)
+    if (1..=4).contains(&internal) {
+        return Err(GlError::InvalidEnum);
+    }
+    let (internal, _, _) = resolve_internal(internal as GLint, t, (0, 0));
+    let internal = internal as GLenum;
     let base = upload::base_format(internal as i32).ok_or(GlError::InvalidEnum)?;
     let Some((tw, th)) = image_size(t, level, w, h, border)? else {
         return Ok(());
@@ -1100,6 +1124,8 @@ fn get_level_parameter(
         GL_TEXTURE_LUMINANCE_SIZE => size(4),
         GL_TEXTURE_INTENSITY_SIZE => size(5),
         GL_TEXTURE_COMPRESSED => 0.0,
+        // no image is compressed (Mesa: GL_INVALID_OPERATION unless the image is)
+        GL_TEXTURE_COMPRESSED_IMAGE_SIZE => return Err(GlError::InvalidOperation),
         GL_TEXTURE_DEPTH_SIZE => img
             .filter(|_| is_depth)
             .map_or(0, |i| i.storage.depth_bits()) as f64,

@@ -130,13 +130,14 @@ unsafe fn tex_image_3d(
     }
     let cf = ClientFormat::new(format, ty)?;
     let level = check_level(level)?;
+    let (internal, sformat, sty) = super::textures::resolve_internal(internal, t, (format, ty));
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     // Mesa: no 3D depth textures; depth data for a colour image is an error too
     if cf.is_depth() || base == BaseFormat::Depth {
         return Err(GlError::InvalidOperation);
     }
     c.check_outside_begin()?;
-    let storage = upload::choose_storage(internal, base, format, ty);
+    let storage = upload::choose_storage(internal, base, sformat, sty);
     let size = size_3d(level, w, h, d, border);
     let header = |w, h| Level {
         width: w,

@@ -1,7 +1,7 @@
 //! glCompressedTexImage*, glCompressedTexSubImage* and glGetCompressedTexImage. GL 1.5
 //! requires no compressed internal format and softgl supports none
-//! (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0; GL_COMPRESSED_* asked of glTexImage store the
-//! texture uncompressed), so every call ends in the error Mesa's checks give for a format
+//! (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0; the generic GL_COMPRESSED_* asked of glTexImage
+//! and glCopyTexImage store the texture uncompressed, see [`generic_base`]), so every call ends in the error Mesa's checks give for a format
 //! that is not compressed, and changes nothing.
 #![allow(non_snake_case)]
 
@@ -11,24 +11,40 @@ use super::types::*;
 use super::with_ctx_list;
 use crate::context::error::{GlError, GlResult};
 
+/// GL 1.3's generic compressed internal formats and the base internal format each names.
+///
+/// softgl stores them uncompressed, as their base format (the GL 1.3 spec allows it: "if
+/// no specific compressed format is available, internalformat is instead replaced by the
+/// corresponding base internal format"), so GL_TEXTURE_INTERNAL_FORMAT answers the base
+/// format and GL_TEXTURE_COMPRESSED 0. Mesa 22.3 (llvmpipe) does the same for a 1D
+/// texture and for ALPHA and INTENSITY; it compresses RGB, RGBA, LUMINANCE and
+/// LUMINANCE_ALPHA of the other targets (DXT1, DXT5, LATC1, LATC2): see README's
+/// known differences.
+pub(crate) fn generic_base(f: GLenum) -> Option<GLenum> {
+    Some(match f {
+        GL_COMPRESSED_ALPHA => GL_ALPHA,
+        GL_COMPRESSED_LUMINANCE => GL_LUMINANCE,
+        GL_COMPRESSED_LUMINANCE_ALPHA => GL_LUMINANCE_ALPHA,
+        GL_COMPRESSED_INTENSITY => GL_INTENSITY,
+        GL_COMPRESSED_RGB => GL_RGB,
+        GL_COMPRESSED_RGBA => GL_RGBA,
+        _ => return None,
+    })
+}
+
 /// The generic compressed formats (glTexImage's GL_COMPRESSED_RGB ...; GL 3.0's RED/RG and
 /// EXT_texture_sRGB's too), which glCompressedTexSubImage rejects with GL_INVALID_ENUM.
 fn is_generic_compressed(f: GLenum) -> bool {
-    matches!(
-        f,
-        GL_COMPRESSED_ALPHA
-            | GL_COMPRESSED_LUMINANCE
-            | GL_COMPRESSED_LUMINANCE_ALPHA
-            | GL_COMPRESSED_INTENSITY
-            | GL_COMPRESSED_RGB
-            | GL_COMPRESSED_RGBA
-            | 0x8225 // GL_COMPRESSED_RED
+    generic_base(f).is_some()
+        || matches!(
+            f,
+            0x8225 // GL_COMPRESSED_RED
             | 0x8226 // GL_COMPRESSED_RG
             | 0x8C48 // GL_COMPRESSED_SRGB
             | 0x8C49 // GL_COMPRESSED_SRGB_ALPHA
             | 0x8C4A // GL_COMPRESSED_SLUMINANCE
             | 0x8C4B // GL_COMPRESSED_SLUMINANCE_ALPHA
-    )
+        )
 }
 
 /// glCompressedTexImage{1,2,3}D: the internal format is never a supported compressed
