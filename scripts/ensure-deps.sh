@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the tests and the demo need on a fresh Debian machine: a C compiler,
-# binutils (nm) and Mesa's OSMesa (the reference the C scenes are compared against).
+# binutils (nm), Mesa's OSMesa (the reference the C scenes are compared against; it brings
+# libgl-dev, whose GL/gl.h and GL/glext.h tests/headers.rs compares ours with) and the
+# Khronos registry gl.xml (khronos-api), from which tools/gen_glext.py makes GL/glext.h.
 set -euo pipefail
 need=()
 command -v cc >/dev/null 2>&1 || need+=(gcc libc6-dev)
@@ -8,6 +10,8 @@ command -v nm >/dev/null 2>&1 || need+=(binutils)
 command -v python3 >/dev/null 2>&1 || need+=(python3)
 command -v pkg-config >/dev/null 2>&1 || need+=(pkg-config)
 [ -f /usr/include/GL/osmesa.h ] || need+=(libosmesa6-dev)
+[ -f /usr/include/GL/glext.h ] || need+=(libgl-dev)
+[ -f /usr/share/khronos-api/gl.xml ] || need+=(khronos-api)
 if [ ${#need[@]} -gt 0 ]; then
   echo "ensure-deps: installing ${need[*]}"
   SUDO=""
