@@ -158,9 +158,9 @@ pub const GL_H_UNEXPORTED: &[&str] = &[
 /// Mesa's gl.h), so this part is guarded by gl.h's include guard alone.
 ///
 /// One deliberate difference: with GL_GLEXT_LEGACY (gl.h without glext.h) the
-/// GL_OES_EGL_image part is left out. Mesa's declares `GLeglImageOES` there, which makes a
-/// later `#include` of Mesa's glext.h redefine that typedef, an error in C99 with
-/// `-pedantic-errors` (hidden for Mesa's own pair only because both are system headers).
+/// GL_OES_EGL_image part is left out. Mesa's gl.h declares `GLeglImageOES` there, so a
+/// later `#include` of Mesa's glext.h redefines that typedef, which C99 forbids
+/// (`-pedantic -Werror` fails; Mesa's own pair gets away with it as system headers).
 const GL_H_TAIL: &str = "\
 /*
  * GL_ATI_blend_equation_separate and GL_OES_EGL_image, declared at the end of Mesa's gl.h
@@ -203,9 +203,6 @@ struct Proto {
 struct Fragment {
     /// `#define` name and value, in source order.
     defines: Vec<(String, String)>,
-    /// The feature section (`GL_ARB_shadow`) of each constant in the Rust source: a
-    /// constant `GL_<feature> = 1` opens one, the next plain `//` comment closes it.
-    sections: HashMap<String, String>,
     /// Typedef name and full line.
     typedefs: Vec<(String, String)>,
     /// Opaque struct declarations (`struct osmesa_context;`).
@@ -358,10 +355,7 @@ fn run_cbindgen(path: &Path) -> Result<Fragment, String> {
     bindings.write(&mut bytes);
     let text = String::from_utf8(bytes).map_err(|e| e.to_string())?;
     let literals = const_literals(&source);
-    let mut frag = Fragment {
-        sections: const_sections(&source),
-        ..Default::default()
-    };
+    let mut frag = Fragment::default();
     for line in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
         if let Some(rest) = line.strip_prefix("#define ") {
             let (name, value) = rest
@@ -422,27 +416,6 @@ fn const_literals(source: &str) -> Vec<(String, String)> {
             Some((name.trim().to_string(), value.trim().to_string()))
         })
         .collect()
-}
-
-/// Maps each one-line `pub const` to the feature section it is in (see
-/// [`Fragment::sections`]); constants outside any section are not listed.
-fn const_sections(source: &str) -> HashMap<String, String> {
-    let mut out = HashMap::new();
-    let mut current: Option<String> = None;
-    for line in source.lines().map(str::trim_start) {
-        if line.starts_with("//") && !line.starts_with("///") && !line.starts_with("//!") {
-            current = None;
-        }
-        if let Some((name, value)) = const_literals(line).pop() {
-            if is_feature_macro(&name) && value == "1" {
-                current = Some(name.clone());
-            }
-            if let Some(section) = &current {
-                out.insert(name, section.clone());
-            }
-        }
-    }
-    out
 }
 
 /// The value of a plain decimal or `0x` integer literal.
@@ -591,11 +564,6 @@ fn pfn_typedef(p: &Proto) -> String {
 /// `#define NAME VALUE` with the value aligned like Mesa's headers.
 fn define(name: &str, value: &str) -> String {
     format!("#define {name:<40} {value}")
-}
-
-/// True for a feature-test macro (`GL_VERSION_1_4`, `GL_ARB_imaging`) rather than a token.
-fn is_feature_macro(name: &str) -> bool {
-    name.starts_with("GL_VERSION_") || name.bytes().any(|b| b.is_ascii_lowercase())
 }
 
 /// The comment every generated header starts with.
