@@ -1,4 +1,5 @@
-//! Regenerates `include/GL/{gl,glext,osmesa}.h` from `src/ffi` with cbindgen:
+//! Regenerates `include/GL/{gl,osmesa}.h` from `src/ffi` with cbindgen, then
+//! `include/GL/glext.h` from the Khronos registry with `tools/gen_glext.py`:
 //! `cargo run --example gen_headers`. `tests/headers.rs` fails when they are stale.
 
 #[path = "gen_headers/generator.rs"]
@@ -26,5 +27,13 @@ fn main() {
         }
         std::fs::write(&full, text).unwrap_or_else(|e| panic!("{}: {e}", full.display()));
         println!("wrote {path}");
+    }
+    let status = std::process::Command::new("python3")
+        .arg(root.join(generator::GLEXT_TOOL))
+        .status()
+        .unwrap_or_else(|e| panic!("python3 {}: {e}", generator::GLEXT_TOOL));
+    if !status.success() {
+        eprintln!("gen_headers: {} failed", generator::GLEXT_TOOL);
+        std::process::exit(1);
     }
 }

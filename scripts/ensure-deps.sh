@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what the tests and the demo need on a fresh Debian machine: a C compiler,
-# binutils (nm), Mesa's OSMesa (the reference the C scenes are compared against) and
-# SGI's libGLU (the reference for softglut's GLU).
+# binutils (nm), Mesa's OSMesa (the reference the C scenes are compared against; it brings
+# libgl-dev, whose GL/gl.h and GL/glext.h tests/headers.rs compares ours with), SGI's
+# libGLU (the reference for softglut's GLU) and the Khronos registry gl.xml (khronos-api),
+# from which tools/gen_glext.py makes GL/glext.h.
 set -euo pipefail
 need=()
 command -v cc >/dev/null 2>&1 || need+=(gcc libc6-dev)
@@ -9,8 +11,10 @@ command -v nm >/dev/null 2>&1 || need+=(binutils)
 command -v python3 >/dev/null 2>&1 || need+=(python3)
 command -v pkg-config >/dev/null 2>&1 || need+=(pkg-config)
 [ -f /usr/include/GL/osmesa.h ] || need+=(libosmesa6-dev)
+[ -f /usr/include/GL/glext.h ] || need+=(libgl-dev)
 # libGLU: tests/dropin.rs and tests/glu_reference.rs compare against the system GLU.
 [ -f /usr/include/GL/glu.h ] || need+=(libglu1-mesa-dev)
+[ -f /usr/share/khronos-api/gl.xml ] || need+=(khronos-api)
 if [ ${#need[@]} -gt 0 ]; then
   echo "ensure-deps: installing ${need[*]}"
   SUDO=""

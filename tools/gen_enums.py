@@ -3,9 +3,12 @@
 installed on a Debian machine (/usr/include/GL/gl.h and glext.h).
 
 The enum values are part of the OpenGL ABI, so we take them from the reference headers
-instead of typing them by hand. gl.h gets every token of Mesa's gl.h (GL 1.0-1.3 and the
-extensions it declares); glext.h gets the GL 1.4/1.5 tokens and the ARB/EXT extensions that
-softgl advertises or that programs commonly test for. Run once; the output is committed.
+instead of typing them by hand. enums.rs (which makes our gl.h's tokens) gets every token of
+Mesa's gl.h (GL 1.0-1.3 and the extensions it declares); glext_enums.rs gets the GL 1.4/1.5
+tokens and the ARB/EXT extensions that softgl advertises or that programs commonly test for,
+for use in Rust only: include/GL/glext.h comes from the Khronos registry
+(tools/gen_glext.py), and tests/headers.rs checks these values against it. Run once; the
+output is committed.
 """
 import re, sys
 

@@ -1,5 +1,5 @@
 /*
- * GL/gl.h — OpenGL 1.0–1.3 (GL 1.4/1.5 are in GL/glext.h)
+ * GL/gl.h — OpenGL 1.0–1.3 (later versions and extensions are in GL/glext.h)
  *
  * softgl: a software OpenGL 1.5 implementation with Mesa's OSMesa API.
  *
@@ -1110,7 +1110,6 @@ GLAPI void GLAPIENTRY glMultiTexCoord4d(GLenum target, GLdouble s, GLdouble t, G
 GLAPI void GLAPIENTRY glMultiTexCoord4dv(GLenum target, const GLdouble *v);
 
 /* Functions: src/ffi/textures_3d.rs */
-GLAPI void GLAPIENTRY glTexImage3DEXT(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
 GLAPI void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
 GLAPI void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const GLvoid *pixels);
 GLAPI void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height);
@@ -1407,6 +1406,30 @@ typedef void (APIENTRYP PFNGLMULTITEXCOORD4SVARBPROC) (GLenum target, const GLsh
  */
 #ifndef GL_GLEXT_LEGACY
 #include <GL/glext.h>
+#endif
+
+/*
+ * GL_ATI_blend_equation_separate and GL_OES_EGL_image, declared at the end of Mesa's gl.h
+ * (softgl exports none of these functions).
+ */
+#ifdef __cplusplus
+extern "C" {
+#endif
+GLAPI void GLAPIENTRY glBlendEquationSeparateATI(GLenum modeRGB, GLenum modeA);
+typedef void (APIENTRYP PFNGLBLENDEQUATIONSEPARATEATIPROC) (GLenum modeRGB, GLenum modeA);
+#ifndef GL_GLEXT_LEGACY
+#ifndef GL_EXT_EGL_image_storage
+typedef void *GLeglImageOES;
+#endif
+#ifdef GL_GLEXT_PROTOTYPES
+GLAPI void APIENTRY glEGLImageTargetTexture2DOES (GLenum target, GLeglImageOES image);
+GLAPI void APIENTRY glEGLImageTargetRenderbufferStorageOES (GLenum target, GLeglImageOES image);
+#endif
+typedef void (APIENTRYP PFNGLEGLIMAGETARGETTEXTURE2DOESPROC) (GLenum target, GLeglImageOES image);
+typedef void (APIENTRYP PFNGLEGLIMAGETARGETRENDERBUFFERSTORAGEOESPROC) (GLenum target, GLeglImageOES image);
+#endif /* GL_GLEXT_LEGACY */
+#ifdef __cplusplus
+}
 #endif
 
 #endif /* __gl_h_ */

@@ -306,42 +306,6 @@ fn copy_ptr(b: &Option<Vec<u8>>) -> *const c_void {
         .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
 }
 
-/// glTexImage3DEXT: glTexImage3D under its EXT_texture3D name, whose header declares the
-/// internal format as a `GLenum`.
-///
-/// # Safety
-/// As [`glTexImage3D`].
-#[no_mangle]
-#[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn glTexImage3DEXT(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    width: GLsizei,
-    height: GLsizei,
-    depth: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    // SAFETY: the caller upholds glTexImage3D's contract; the arguments pass through.
-    unsafe {
-        glTexImage3D(
-            target,
-            level,
-            internalformat as GLint,
-            width,
-            height,
-            depth,
-            border,
-            format,
-            type_,
-            pixels,
-        )
-    }
-}
-
 /// glTexImage3D.
 ///
 /// # Safety
