@@ -6,6 +6,10 @@
 //!   `SOFTGLUT_*` settings (frames, keys) and their PNG frames are compared pixel by
 //!   pixel (`TUTORIALS` gives each one's frame count, keys and allowed difference);
 //! - the softgl build runs twice and must write byte-identical files;
+//! - the GLU tutorials (`glu: true`: the tessellator ones) are also linked with SGI's
+//!   libGLU ahead of softglut (`-lGLU -lsoftglut -lOSMesa`, Debian's libglu1-mesa):
+//!   softglut's GLU on Mesa must draw the same pixels and print the same lines
+//!   (errors, properties) as SGI's GLU on Mesa;
 //! - `scripts/install.sh` installs GLUT, and `cc prog.c $(pkg-config --cflags --libs
 //!   softgl-glut)` builds an unchanged tutorial that writes the configured frames;
 //! - the hand-written headers `glut/include/GL/{glut,freeglut,glu}.h` declare exactly
@@ -29,6 +33,8 @@ struct Tutorial {
     keys: &'static str,
     /// Largest allowed channel difference against Mesa (0: bit-identical).
     max_diff: u8,
+    /// Also compared with the program linked with SGI's libGLU (on Mesa).
+    glu: bool,
 }
 
 /// The tutorials and how they are driven. Every one is bit-identical to OSMesa.
@@ -38,30 +44,57 @@ const TUTORIALS: &[Tutorial] = &[
         frames: 6,
         keys: "1:UP,2:RIGHT,3:+,4:l,5:s",
         max_diff: 0,
+        glu: false,
     },
     Tutorial {
         name: "texture",
         frames: 6,
         keys: "3:m",
         max_diff: 0,
+        glu: false,
     },
     Tutorial {
         name: "fog",
         frames: 6,
         keys: "2:f,3:+,4:f,5:-",
         max_diff: 0,
+        glu: false,
     },
     Tutorial {
         name: "blend",
         frames: 6,
         keys: "2:a,3:b,4:b,5:A",
         max_diff: 0,
+        glu: false,
     },
     Tutorial {
         name: "robot",
         frames: 6,
         keys: "1:s,1:s,2:e,2:e,3:f,4:r,5:E",
         max_diff: 0,
+        glu: false,
+    },
+    // Every winding rule filled, then boundary-only loops and edge-flagged lines.
+    Tutorial {
+        name: "tess",
+        frames: 8,
+        keys: "1:w,2:w,3:w,4:w,5:m,6:w,7:m",
+        max_diff: 0,
+        glu: true,
+    },
+    Tutorial {
+        name: "tesswind",
+        frames: 10,
+        keys: "1:w,2:w,3:w,4:w,5:b,6:w,7:w,8:w,9:w",
+        max_diff: 0,
+        glu: true,
+    },
+    Tutorial {
+        name: "tessmisc",
+        frames: 3,
+        keys: "1:e,2:e",
+        max_diff: 0,
+        glu: true,
     },
 ];
 
@@ -137,6 +170,8 @@ fn cc() -> String {
 enum Gl {
     Softgl,
     Osmesa,
+    /// Mesa's OSMesa with SGI's libGLU linked ahead of softglut (its glu* win).
+    SgiGlu,
 }
 
 /// Compiles `tutorials/NAME.c` against softglut and the chosen GL, once per test run
@@ -163,9 +198,11 @@ fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
     cmd.arg(src)
         .args(["-O1", "-Wall", "-Werror", "-o"])
         .arg(out)
-        .arg(format!("-I{}", root().join("glut/include").display()))
-        .arg(format!("-L{}", glut.display()))
-        .arg("-lsoftglut");
+        .arg(format!("-I{}", root().join("glut/include").display()));
+    if gl == Gl::SgiGlu {
+        cmd.args(["-Wl,--no-as-needed", "-lGLU"]);
+    }
+    cmd.arg(format!("-L{}", glut.display())).arg("-lsoftglut");
     match gl {
         Gl::Softgl => {
             let sg = softgl_dir();
@@ -174,7 +211,7 @@ fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
                 .arg("-lsoftgl")
                 .arg(format!("-Wl,-rpath,{}:{}", glut.display(), sg.display()));
         }
-        Gl::Osmesa => {
+        Gl::Osmesa | Gl::SgiGlu => {
             cmd.arg("-lOSMesa")
                 .arg(format!("-Wl,-rpath,{}", glut.display()));
         }
@@ -191,6 +228,11 @@ fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
 
 /// Runs a tutorial binary into a fresh folder; returns the sorted PNG paths.
 fn run(bin: &Path, t: &Tutorial, out: &Path) -> Vec<PathBuf> {
+    run_with_stdout(bin, t, out).0
+}
+
+/// [`run`], also returning what the program printed.
+fn run_with_stdout(bin: &Path, t: &Tutorial, out: &Path) -> (Vec<PathBuf>, String) {
     let _ = fs::remove_dir_all(out);
     let o = Command::new(bin)
         .env("SOFTGLUT_FRAMES", t.frames.to_string())
@@ -216,7 +258,7 @@ fn run(bin: &Path, t: &Tutorial, out: &Path) -> Vec<PathBuf> {
         .map(|e| e.path())
         .collect();
     files.sort();
-    files
+    (files, String::from_utf8_lossy(&o.stdout).into_owned())
 }
 
 /// (% identical pixels, largest channel difference) between two PNG files.
@@ -279,6 +321,47 @@ fn tutorial_test(t: &Tutorial) {
         t.max_diff,
         failures.join("\n")
     );
+    if t.glu {
+        compare_with_sgi_glu(t, &dir);
+    }
+}
+
+/// softglut's GLU against SGI's libGLU, both on Mesa: same pixels, same output.
+fn compare_with_sgi_glu(t: &Tutorial, dir: &Path) {
+    if !Path::new("/usr/include/GL/glu.h").exists() {
+        eprintln!(
+            "{}: SGI libGLU comparison skipped (no libglu1-mesa-dev)",
+            t.name
+        );
+        return;
+    }
+    let (ours, ours_out) =
+        run_with_stdout(&compile(t.name, Gl::Osmesa), t, &dir.join("osmesa.glu"));
+    let (sgi, sgi_out) = run_with_stdout(&compile(t.name, Gl::SgiGlu), t, &dir.join("sgi-glu"));
+    assert_eq!(ours.len(), sgi.len(), "{}: frame counts", t.name);
+    let mut failures = Vec::new();
+    for (x, y) in ours.iter().zip(&sgi) {
+        let (pct, max) = compare(x, y);
+        let frame = x.file_name().unwrap().to_string_lossy();
+        println!(
+            "{:8} {frame}: {pct:8.4}% identical to SGI's GLU, max diff {max}",
+            t.name
+        );
+        if max > 0 {
+            failures.push(format!("{frame}: {pct:.4}% identical, max diff {max}"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}: softglut's GLU draws differently from SGI's libGLU:\n{}",
+        t.name,
+        failures.join("\n")
+    );
+    assert_eq!(
+        ours_out, sgi_out,
+        "{}: printed output differs from SGI's GLU",
+        t.name
+    );
 }
 
 #[test]
@@ -304,6 +387,51 @@ fn tutorial_blend() {
 #[test]
 fn tutorial_robot() {
     tutorial_test(&TUTORIALS[4]);
+}
+
+#[test]
+fn tutorial_tess() {
+    tutorial_test(&TUTORIALS[5]);
+}
+
+#[test]
+fn tutorial_tesswind() {
+    tutorial_test(&TUTORIALS[6]);
+}
+
+#[test]
+fn tutorial_tessmisc() {
+    tutorial_test(&TUTORIALS[7]);
+}
+
+/// The SGI-GLU build really calls SGI's libGLU (not softglut's glu*).
+#[test]
+fn sgi_glu_build_binds_glu_to_libglu() {
+    if !Path::new("/usr/include/GL/glu.h").exists()
+        || !Path::new("/usr/include/GL/osmesa.h").exists()
+    {
+        return;
+    }
+    let bin = compile("tess", Gl::SgiGlu);
+    let out = work_dir().join("out/tess.bindings");
+    let _ = fs::remove_dir_all(&out);
+    let o = Command::new(&bin)
+        .env("SOFTGLUT_FRAMES", "1")
+        .env("SOFTGLUT_OUTPUT", &out)
+        .env("LD_DEBUG", "bindings")
+        .output()
+        .expect("run tess");
+    assert!(o.status.success());
+    let log = String::from_utf8_lossy(&o.stderr);
+    let bound: Vec<&str> = log
+        .lines()
+        .filter(|l| l.contains("normal symbol `gluTessVertex'") && l.contains("tess.sgiglu"))
+        .collect();
+    assert!(!bound.is_empty(), "no binding of gluTessVertex in the log");
+    assert!(
+        bound.iter().all(|l| l.contains("libGLU.so")),
+        "gluTessVertex not bound to libGLU: {bound:?}"
+    );
 }
 
 #[test]
@@ -410,6 +538,7 @@ fn pkg_config_builds_a_tutorial() {
         frames: 2,
         keys: "1:s",
         max_diff: 0,
+        glu: false,
     };
     let files = run(&bin, &t, &work_dir().join("out").join("pkgconfig"));
     assert_eq!(files.len(), 2);
@@ -589,6 +718,7 @@ fn run_snippet(name: &'static str, code: &str, gl: Gl) -> image::RgbImage {
         frames: 1,
         keys: "",
         max_diff: 0,
+        glu: false,
     };
     let files = run(&bin, &t, &dir.join(format!("{name}.{gl:?}.out")));
     image::open(&files[0]).unwrap().to_rgb8()

@@ -303,6 +303,13 @@ pub extern "C" fn gluErrorString(code: GLenum) -> *const u8 {
         100902 => b"out of memory\0",
         100903 => b"incompatible gl version\0",
         100904 => b"invalid operation\0",
+        // The tessellator's errors, worded as SGI's GLU words them.
+        100151 => b"gluTessBeginPolygon() must precede a gluTessEndPolygon()\0",
+        100152 => b"gluTessBeginContour() must precede a gluTessEndContour()\0",
+        100153 => b"gluTessEndPolygon() must follow a gluTessBeginPolygon()\0",
+        100154 => b"gluTessEndContour() must follow a gluTessBeginContour()\0",
+        100155 => b"a coordinate is too large\0",
+        100156 => b"need combine callback\0",
         _ => return std::ptr::null(),
     };
     s.as_ptr()

@@ -21,4 +21,5 @@ pub mod gl;
 pub mod glu;
 pub mod shapes;
 pub mod teapot;
+pub mod tess;
 pub mod window;
