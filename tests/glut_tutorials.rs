@@ -35,9 +35,12 @@ struct Tutorial {
     max_diff: u8,
     /// Also compared with the program linked with SGI's libGLU (on Mesa).
     glu: bool,
+    /// Pixels per frame allowed beyond `max_diff` on softgl (known GL differences).
+    odd_pixels: usize,
 }
 
-/// The tutorials and how they are driven. Every one is bit-identical to OSMesa.
+/// The tutorials and how they are driven. Every one is bit-identical to OSMesa but for
+/// the `odd_pixels` noted.
 const TUTORIALS: &[Tutorial] = &[
     Tutorial {
         name: "cube",
@@ -45,6 +48,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "1:UP,2:RIGHT,3:+,4:l,5:s",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "texture",
@@ -52,6 +56,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "3:m",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "fog",
@@ -59,6 +64,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "2:f,3:+,4:f,5:-",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "blend",
@@ -66,6 +72,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "2:a,3:b,4:b,5:A",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "robot",
@@ -73,6 +80,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "1:s,1:s,2:e,2:e,3:f,4:r,5:E",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     },
     // Every winding rule filled, then boundary-only loops and edge-flagged lines.
     Tutorial {
@@ -81,6 +89,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "1:w,2:w,3:w,4:w,5:m,6:w,7:m",
         max_diff: 0,
         glu: true,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "tesswind",
@@ -88,6 +97,7 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "1:w,2:w,3:w,4:w,5:b,6:w,7:w,8:w,9:w",
         max_diff: 0,
         glu: true,
+        odd_pixels: 0,
     },
     Tutorial {
         name: "tessmisc",
@@ -95,6 +105,20 @@ const TUTORIALS: &[Tutorial] = &[
         keys: "1:e,2:e",
         max_diff: 0,
         glu: true,
+        odd_pixels: 0,
+    },
+    // Random self-intersecting polygons: filled, boundary-only, edge-flagged lines.
+    // Frame 11 has a sliver triangle (area ~2e-4 px²) drawn in GL_LINE mode: Mesa's
+    // draw module drops it as zero-area, softgl draws its one flagged edge (2 pixels,
+    // one of them also lit by a neighbour). SGI's GLU and softglut's emit the same
+    // pixels on Mesa; this is softgl against Mesa only.
+    Tutorial {
+        name: "tessrand",
+        frames: 15,
+        keys: "",
+        max_diff: 0,
+        glu: true,
+        odd_pixels: 1,
     },
 ];
 
@@ -263,18 +287,26 @@ fn run_with_stdout(bin: &Path, t: &Tutorial, out: &Path) -> (Vec<PathBuf>, Strin
 
 /// (% identical pixels, largest channel difference) between two PNG files.
 fn compare(a: &Path, b: &Path) -> (f64, u8) {
+    let (pct, max, _) = compare_count(a, b, 0);
+    (pct, max)
+}
+
+/// [`compare`], plus the number of pixels differing by more than `tolerance`.
+fn compare_count(a: &Path, b: &Path, tolerance: u8) -> (f64, u8, usize) {
     let ia = image::open(a).expect("decode png").to_rgb8();
     let ib = image::open(b).expect("decode png").to_rgb8();
     assert_eq!(ia.dimensions(), ib.dimensions(), "{}", a.display());
     let mut same = 0usize;
+    let mut over = 0usize;
     let mut max = 0u8;
     for (pa, pb) in ia.pixels().zip(ib.pixels()) {
         let d = (0..3).map(|c| pa[c].abs_diff(pb[c])).max().unwrap_or(0);
         same += usize::from(d == 0);
+        over += usize::from(d > tolerance);
         max = max.max(d);
     }
     let total = ia.pixels().len().max(1);
-    (100.0 * same as f64 / total as f64, max)
+    (100.0 * same as f64 / total as f64, max, over)
 }
 
 fn tutorial_test(t: &Tutorial) {
@@ -307,10 +339,10 @@ fn tutorial_test(t: &Tutorial) {
     }
     let mut failures = Vec::new();
     for (x, y) in a.iter().zip(&b) {
-        let (pct, max) = compare(x, y);
+        let (pct, max, over) = compare_count(x, y, t.max_diff);
         let frame = x.file_name().unwrap().to_string_lossy();
         println!("{:8} {frame}: {pct:8.4}% identical, max diff {max}", t.name);
-        if max > t.max_diff {
+        if over > t.odd_pixels {
             failures.push(format!("{frame}: {pct:.4}% identical, max diff {max}"));
         }
     }
@@ -402,6 +434,11 @@ fn tutorial_tesswind() {
 #[test]
 fn tutorial_tessmisc() {
     tutorial_test(&TUTORIALS[7]);
+}
+
+#[test]
+fn tutorial_tessrand() {
+    tutorial_test(&TUTORIALS[8]);
 }
 
 /// The SGI-GLU build really calls SGI's libGLU (not softglut's glu*).
@@ -539,6 +576,7 @@ fn pkg_config_builds_a_tutorial() {
         keys: "1:s",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     };
     let files = run(&bin, &t, &work_dir().join("out").join("pkgconfig"));
     assert_eq!(files.len(), 2);
@@ -719,6 +757,7 @@ fn run_snippet(name: &'static str, code: &str, gl: Gl) -> image::RgbImage {
         keys: "",
         max_diff: 0,
         glu: false,
+        odd_pixels: 0,
     };
     let files = run(&bin, &t, &dir.join(format!("{name}.{gl:?}.out")));
     image::open(&files[0]).unwrap().to_rgb8()
