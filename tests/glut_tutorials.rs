@@ -471,6 +471,36 @@ fn sgi_glu_build_binds_glu_to_libglu() {
     );
 }
 
+/// `tests/glu/mipmaps.c` (mipmap builders, gluUnProject4, gluCheckExtension) prints
+/// the same with softglut's GLU as with SGI's libGLU, both on Mesa.
+#[test]
+fn glu_mipmaps_match_sgi() {
+    if !Path::new("/usr/include/GL/glu.h").exists()
+        || !Path::new("/usr/include/GL/osmesa.h").exists()
+    {
+        return;
+    }
+    let src = root().join("tests/glu/mipmaps.c");
+    let bin = work_dir().join("bin");
+    fs::create_dir_all(&bin).expect("mkdir bin");
+    let print = |gl: Gl| {
+        let exe = build(
+            &src,
+            &bin.join(format!("mipmaps.{gl:?}").to_lowercase()),
+            gl,
+        );
+        let o = Command::new(&exe).output().expect("run mipmaps");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stdout).expect("utf-8")
+    };
+    let (ours, sgi) = (print(Gl::Osmesa), print(Gl::SgiGlu));
+    assert!(sgi.lines().count() > 100, "{sgi}");
+    for (a, b) in ours.lines().zip(sgi.lines()) {
+        assert_eq!(a, b, "softglut (left) against SGI's GLU (right)");
+    }
+    assert_eq!(ours.lines().count(), sgi.lines().count());
+}
+
 #[test]
 fn every_tutorial_is_in_the_table() {
     let mut on_disk: Vec<String> = fs::read_dir(root().join("tutorials"))
