@@ -112,6 +112,15 @@ const TUTORIALS: &[Tutorial] = &[
     // draw module drops it as zero-area, softgl draws its one flagged edge (2 pixels,
     // one of them also lit by a neighbour). SGI's GLU and softglut's emit the same
     // pixels on Mesa; this is softgl against Mesa only.
+    // GLUT_ACCUM: motion blur through the accumulation buffer.
+    Tutorial {
+        name: "accum",
+        frames: 4,
+        keys: "1:j,2:r,3:j",
+        max_diff: 0,
+        glu: false,
+        odd_pixels: 0,
+    },
     Tutorial {
         name: "tessrand",
         frames: 15,
@@ -437,8 +446,13 @@ fn tutorial_tessmisc() {
 }
 
 #[test]
-fn tutorial_tessrand() {
+fn tutorial_accum() {
     tutorial_test(&TUTORIALS[8]);
+}
+
+#[test]
+fn tutorial_tessrand() {
+    tutorial_test(&TUTORIALS[9]);
 }
 
 /// The SGI-GLU build really calls SGI's libGLU (not softglut's glu*).
@@ -499,6 +513,46 @@ fn glu_mipmaps_match_sgi() {
         assert_eq!(a, b, "softglut (left) against SGI's GLU (right)");
     }
     assert_eq!(ours.lines().count(), sgi.lines().count());
+}
+
+/// `tests/glu/menus.c` (menu ids and state, context requests, options) prints the
+/// same with softglut as with the system freeglut run under Xvfb.
+#[test]
+fn glut_menus_match_freeglut() {
+    let freeglut = Path::new("/usr/include/GL/freeglut.h").exists();
+    if !freeglut || !have_program("xvfb-run") || !Path::new("/usr/include/GL/osmesa.h").exists() {
+        eprintln!("glut_menus_match_freeglut: skipped (needs freeglut3-dev, xvfb, OSMesa)");
+        return;
+    }
+    let src = root().join("tests/glu/menus.c");
+    let bin = work_dir().join("bin");
+    fs::create_dir_all(&bin).expect("mkdir bin");
+    let ours = build(&src, &bin.join("menus.softglut"), Gl::Osmesa);
+    let theirs = bin.join("menus.freeglut");
+    let o = Command::new(cc())
+        .arg(&src)
+        .args(["-O1", "-Wall", "-Werror", "-o"])
+        .arg(&theirs)
+        .args(["-lglut", "-lGL"])
+        .output()
+        .expect("cc");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let run = |cmd: &mut Command| {
+        let o = cmd.output().expect("run menus");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stdout).expect("utf-8")
+    };
+    let a = run(&mut Command::new(&ours));
+    let b = run(Command::new("xvfb-run").arg("-a").arg(&theirs));
+    assert!(b.lines().count() > 15, "{b}");
+    assert_eq!(a, b, "softglut (left) against freeglut (right)");
+}
+
+/// Whether `program` is on PATH.
+fn have_program(program: &str) -> bool {
+    std::env::var_os("PATH")
+        .map(|p| std::env::split_paths(&p).any(|d| d.join(program).is_file()))
+        .unwrap_or(false)
 }
 
 #[test]

@@ -19,6 +19,7 @@ pub mod config;
 pub mod font;
 pub mod gl;
 pub mod glu;
+pub mod menu;
 pub mod mipmap;
 pub mod shapes;
 pub mod teapot;
