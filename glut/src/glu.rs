@@ -240,6 +240,29 @@ pub extern "C" fn gluProject(
     1
 }
 
+/// Window coordinates (x, y, z already in [-1, 1], clip w) back through the inverse
+/// of proj × model; None for bad matrices or viewport, or a point at infinity.
+fn unproject(
+    win: [f64; 4],
+    model: *const GLdouble,
+    proj: *const GLdouble,
+    view: *const GLint,
+) -> Option<[f64; 4]> {
+    let (mv, pr, vp) = (read16(model)?, read16(proj)?, read4(view)?);
+    let inv = invert(&mul(&pr, &mv))?;
+    if vp[2] == 0.0 || vp[3] == 0.0 {
+        return None;
+    }
+    let n = [
+        (win[0] - vp[0]) / vp[2] * 2.0 - 1.0,
+        (win[1] - vp[1]) / vp[3] * 2.0 - 1.0,
+        win[2],
+        win[3],
+    ];
+    let o = transform(&inv, n);
+    (o[3] != 0.0).then_some(o)
+}
+
 /// `gluUnProject`: window coordinates back to object coordinates.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
@@ -254,25 +277,9 @@ pub extern "C" fn gluUnProject(
     obj_y: *mut GLdouble,
     obj_z: *mut GLdouble,
 ) -> GLint {
-    let (Some(mv), Some(pr), Some(vp)) = (read16(model), read16(proj), read4(view)) else {
+    let Some(o) = unproject([win_x, win_y, win_z * 2.0 - 1.0, 1.0], model, proj, view) else {
         return 0;
     };
-    let Some(inv) = invert(&mul(&pr, &mv)) else {
-        return 0;
-    };
-    if vp[2] == 0.0 || vp[3] == 0.0 {
-        return 0;
-    }
-    let n = [
-        (win_x - vp[0]) / vp[2] * 2.0 - 1.0,
-        (win_y - vp[1]) / vp[3] * 2.0 - 1.0,
-        win_z * 2.0 - 1.0,
-        1.0,
-    ];
-    let o = transform(&inv, n);
-    if o[3] == 0.0 {
-        return 0;
-    }
     write3(
         [obj_x, obj_y, obj_z],
         [o[0] / o[3], o[1] / o[3], o[2] / o[3]],
@@ -299,25 +306,13 @@ pub extern "C" fn gluUnProject4(
     obj_z: *mut GLdouble,
     obj_w: *mut GLdouble,
 ) -> GLint {
-    let (Some(mv), Some(pr), Some(vp)) = (read16(model), read16(proj), read4(view)) else {
-        return 0;
-    };
-    let Some(inv) = invert(&mul(&pr, &mv)) else {
-        return 0;
-    };
-    if vp[2] == 0.0 || vp[3] == 0.0 || near == far {
+    if near == far {
         return 0;
     }
-    let n = [
-        (win_x - vp[0]) / vp[2] * 2.0 - 1.0,
-        (win_y - vp[1]) / vp[3] * 2.0 - 1.0,
-        (win_z - near) / (far - near) * 2.0 - 1.0,
-        clip_w,
-    ];
-    let o = transform(&inv, n);
-    if o[3] == 0.0 {
+    let z = (win_z - near) / (far - near) * 2.0 - 1.0;
+    let Some(o) = unproject([win_x, win_y, z, clip_w], model, proj, view) else {
         return 0;
-    }
+    };
     write3([obj_x, obj_y, obj_z], [o[0], o[1], o[2]]);
     write3(
         [obj_w, std::ptr::null_mut(), std::ptr::null_mut()],

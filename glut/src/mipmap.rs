@@ -396,7 +396,6 @@ fn load_chain(
 }
 
 /// Reads the image for a mipmap call after checking format, type and sizes.
-#[allow(clippy::too_many_arguments)]
 fn checked_image(
     w: GLsizei,
     h: GLsizei,
@@ -421,14 +420,9 @@ fn checked_image(
 
 /// The `Mipmaps` calls: scale to the nearest powers of two (within the GL's maximum),
 /// then load every level.
-#[allow(clippy::too_many_arguments)]
 fn build_mipmaps(
-    dims: Dims,
-    target: GLenum,
-    internal: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    d: GLsizei,
+    (dims, target, internal): (Dims, GLenum, GLint),
+    (w, h, d): (GLsizei, GLsizei, GLsizei),
     format: GLenum,
     ty: GLenum,
     data: *const c_void,
@@ -507,7 +501,7 @@ pub extern "C" fn gluBuild1DMipmaps(
     ty: GLenum,
     data: *const c_void,
 ) -> GLint {
-    build_mipmaps(Dims::One, target, internal, w, 1, 1, format, ty, data)
+    build_mipmaps((Dims::One, target, internal), (w, 1, 1), format, ty, data)
 }
 
 /// `gluBuild2DMipmaps`: scales to the nearest powers of two and loads every level.
@@ -521,7 +515,7 @@ pub extern "C" fn gluBuild2DMipmaps(
     ty: GLenum,
     data: *const c_void,
 ) -> GLint {
-    build_mipmaps(Dims::Two, target, internal, w, h, 1, format, ty, data)
+    build_mipmaps((Dims::Two, target, internal), (w, h, 1), format, ty, data)
 }
 
 /// `gluBuild3DMipmaps`: scales to the nearest powers of two and loads every level.
@@ -537,7 +531,7 @@ pub extern "C" fn gluBuild3DMipmaps(
     ty: GLenum,
     data: *const c_void,
 ) -> GLint {
-    build_mipmaps(Dims::Three, target, internal, w, h, d, format, ty, data)
+    build_mipmaps((Dims::Three, target, internal), (w, h, d), format, ty, data)
 }
 
 /// `gluBuild1DMipmapLevels`: `data` is level `level`; levels `base..=max` load.
