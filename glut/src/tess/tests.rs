@@ -166,3 +166,45 @@ fn grid_aligned_polygons_with_shared_edges() {
         check(&[a.clone(), b.iter().rev().copied().collect()], rule);
     }
 }
+
+#[test]
+fn degenerate_input_never_panics() {
+    let mut seed = 99u64;
+    let mut rnd = |k: u64| {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (seed >> 33) % k
+    };
+    let specials = [0.0, 1.0, -1.0, 1e-300, 1e300, f64::NAN, f64::INFINITY, 0.5, 2.0];
+    for _ in 0..2000 {
+        let mut contours = Vec::new();
+        for _ in 0..1 + rnd(3) {
+            let n = rnd(7) as usize;
+            let c: Vec<(f64, f64)> = (0..n)
+                .map(|_| {
+                    let pick = |r: u64| {
+                        if r < 9 {
+                            specials[r as usize]
+                        } else {
+                            (r % 4) as f64
+                        }
+                    };
+                    (pick(rnd(14)), pick(rnd(14)))
+                })
+                .collect();
+            contours.push(c);
+        }
+        let mut input = Vec::new();
+        let mut ids = Vec::new();
+        for c in &contours {
+            ids.push((input.len()..input.len() + c.len()).collect::<Vec<_>>());
+            input.extend(c.iter().map(|&p| vtx(p)));
+        }
+        for rule in RULES {
+            let mut combine = |_, _, _, _| None;
+            let arr = arrange(&input, &ids, &mut combine);
+            let bounds = classify(&arr.verts, &arr.segs, rule);
+            let _ = triangulate(&arr.verts, &bounds);
+            let _ = boundaries(&arr.verts, &bounds);
+        }
+    }
+}
