@@ -112,6 +112,15 @@ const TUTORIALS: &[Tutorial] = &[
     // draw module drops it as zero-area, softgl draws its one flagged edge (2 pixels,
     // one of them also lit by a neighbour). SGI's GLU and softglut's emit the same
     // pixels on Mesa; this is softgl against Mesa only.
+    // Shared edges, touching holes, T-junctions, overlaps, zero area, repeats.
+    Tutorial {
+        name: "tessdegen",
+        frames: 15,
+        keys: "",
+        max_diff: 0,
+        glu: true,
+        odd_pixels: 0,
+    },
     // GLUT_ACCUM: motion blur through the accumulation buffer.
     Tutorial {
         name: "accum",
@@ -446,13 +455,18 @@ fn tutorial_tessmisc() {
 }
 
 #[test]
-fn tutorial_accum() {
+fn tutorial_tessdegen() {
     tutorial_test(&TUTORIALS[8]);
 }
 
 #[test]
-fn tutorial_tessrand() {
+fn tutorial_accum() {
     tutorial_test(&TUTORIALS[9]);
+}
+
+#[test]
+fn tutorial_tessrand() {
+    tutorial_test(&TUTORIALS[10]);
 }
 
 /// The SGI-GLU build really calls SGI's libGLU (not softglut's glu*).

@@ -171,10 +171,22 @@ fn grid_aligned_polygons_with_shared_edges() {
 fn degenerate_input_never_panics() {
     let mut seed = 99u64;
     let mut rnd = |k: u64| {
-        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (seed >> 33) % k
     };
-    let specials = [0.0, 1.0, -1.0, 1e-300, 1e300, f64::NAN, f64::INFINITY, 0.5, 2.0];
+    let specials = [
+        0.0,
+        1.0,
+        -1.0,
+        1e-300,
+        1e300,
+        f64::NAN,
+        f64::INFINITY,
+        0.5,
+        2.0,
+    ];
     for _ in 0..2000 {
         let mut contours = Vec::new();
         for _ in 0..1 + rnd(3) {
