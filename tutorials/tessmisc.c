@@ -5,7 +5,9 @@
  * with a hole; edge flags come through GLU_TESS_EDGE_FLAG_DATA; begin/end sequence
  * mistakes, bad properties and a self-intersecting polygon without a combine
  * callback are reported through GLU_TESS_ERROR_DATA. The errors and property values
- * are printed on stdout. Key 'e' toggles drawing the triangles' flagged edges only.
+ * are printed on stdout, and so are the combine calls for contours sharing vertices
+ * and edges, repeating vertices and crossing. Key 'e' toggles drawing the triangles'
+ * flagged edges only.
  */
 #include <GL/glut.h>
 #include <GL/glu.h>
@@ -77,6 +79,64 @@ static void contour(GLdouble (*v)[3], int n)
     gluTessEndContour(tess);
 }
 
+static GLdouble probe_pool[64][3];
+static int probe_n = 0;
+
+static void probe_vertex(void *v)
+{
+    (void)v;
+}
+
+static void probe_combine(GLdouble c[3], void *d[4], GLfloat w[4], void **out)
+{
+    GLdouble *v = probe_pool[probe_n++ % 64];
+    printf("  combine at (%g, %g): %s%.4f %s%.4f %s%.4f %s%.4f\n", c[0], c[1],
+           d[0] ? "" : "-", w[0], d[1] ? "" : "-", w[1], d[2] ? "" : "-", w[2],
+           d[3] ? "" : "-", w[3]);
+    v[0] = c[0];
+    v[1] = c[1];
+    v[2] = c[2];
+    *out = v;
+}
+
+/* Tessellates contours of (x, y) pairs with a tessellator that prints its combines. */
+static void probe(const char *name, const double *xy, const int *counts, int ncontours)
+{
+    GLUtesselator *t = gluNewTess();
+    int c, i, k = 0;
+    printf("%s\n", name);
+    gluTessCallback(t, GLU_TESS_VERTEX, (_GLUfuncptr)probe_vertex);
+    gluTessCallback(t, GLU_TESS_COMBINE, (_GLUfuncptr)probe_combine);
+    gluTessBeginPolygon(t, NULL);
+    for (c = 0; c < ncontours; c++) {
+        gluTessBeginContour(t);
+        for (i = 0; i < counts[c]; i++, k++) {
+            GLdouble *v = probe_pool[probe_n++ % 64];
+            v[0] = xy[2 * k];
+            v[1] = xy[2 * k + 1];
+            v[2] = 0.0;
+            gluTessVertex(t, v, v);
+        }
+        gluTessEndContour(t);
+    }
+    gluTessEndPolygon(t);
+    gluDeleteTess(t);
+}
+
+static void probes(void)
+{
+    static const double shared[] = { 0, 0, 30, 0, 30, 40, 0, 40, 30, 0, 60, 0, 60, 40, 30, 40 };
+    static const double repeats[] = { 0, 0, 0, 0, 55, 5, 55, 5, 55, 5, 30, 50, 0, 0 };
+    static const double touching[] = { 0, 0, 60, 0, 60, 60, 0, 60, 0, 0, 20, 40, 40, 20 };
+    static const double crossing[] = { 0, 0, 10, 2, 10, 0, 2, 8, 3, -1, 4, 9, 20, 0, 30, 4, 20, 6, 27, -3 };
+    static const int two_fours[] = { 4, 4 }, seven[] = { 7 }, four_three[] = { 4, 3 };
+    static const int four_two[] = { 4, 2, 4 };
+    probe("shared edge", shared, two_fours, 2);
+    probe("repeated vertices", repeats, seven, 1);
+    probe("hole touching at a corner", touching, four_three, 2);
+    probe("crossings", crossing, four_two, 3);
+}
+
 static void display(void)
 {
     static struct poly holed = { "holed", { 0.9f, 0.5f, 0.2f }, 0 };
@@ -86,6 +146,8 @@ static void display(void)
     GLdouble value = -1.0;
     int i;
 
+    if (frame == 0)
+        probes();
     glClear(GL_COLOR_BUFFER_BIT);
     glPolygonMode(GL_FRONT_AND_BACK, edges_only ? GL_LINE : GL_FILL);
     gluTessCallback(tess, GLU_TESS_EDGE_FLAG_DATA, edges_only ? (_GLUfuncptr)edge_data : NULL);

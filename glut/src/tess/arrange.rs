@@ -142,14 +142,18 @@ impl Builder<'_, '_> {
         let v = o1 / (o1 - o2);
         let s = a.0 + u * (b.0 - a.0);
         let t = a.1 + u * (b.1 - a.1);
-        let ends = [p.lo, p.hi, q.lo, q.hi];
-        let weights = [
-            (0.5 * (1.0 - u)) as f32,
-            (0.5 * u) as f32,
-            (0.5 * (1.0 - v)) as f32,
-            (0.5 * v) as f32,
+        // The combine callback sees the upper segment (left of the crossing) first,
+        // each segment's later endpoint first, as SGI's GLU passes them.
+        let p_upper = o3 > 0.0;
+        let (up, lo, u_up, u_lo) = if p_upper { (p, q, u, v) } else { (q, p, v, u) };
+        let ends = [up.hi, up.lo, lo.hi, lo.lo];
+        let wd = [
+            0.5 * u_up,
+            0.5 * (1.0 - u_up),
+            0.5 * u_lo,
+            0.5 * (1.0 - u_lo),
         ];
-        let wd = [0.5 * (1.0 - u), 0.5 * u, 0.5 * (1.0 - v), 0.5 * v];
+        let weights = wd.map(|w| w as f32);
         let mut xyz = [0.0; 3];
         for (e, w) in ends.iter().zip(wd) {
             for (k, c) in xyz.iter_mut().enumerate() {
@@ -276,7 +280,22 @@ pub fn arrange(input: &[Vtx], contours: &[Vec<usize>], combine: &mut Combine) ->
     };
     let mut segs = Vec::new();
     for c in contours {
-        let mut ids: Vec<usize> = c.iter().map(|&i| b.add(input[i])).collect();
+        // A vertex repeating its predecessor (or the contour's first, at the end) only
+        // makes a zero-length edge: dropped without a combine, as SGI's GLU drops it.
+        let mut own: Vec<usize> = c.clone();
+        own.dedup_by_key(|&mut i| key(input[i].s, input[i].t));
+        while own.len() > 1 && {
+            let (f, l) = (input[own[0]], input[own[own.len() - 1]]);
+            key(f.s, f.t) == key(l.s, l.t)
+        } {
+            own.pop();
+        }
+        // Contours of one or two edges enclose nothing and cut nothing: SGI's GLU
+        // drops them before looking for crossings.
+        if own.len() < 3 {
+            continue;
+        }
+        let mut ids: Vec<usize> = own.iter().map(|&i| b.add(input[i])).collect();
         ids.dedup();
         while ids.len() > 1 && ids.first() == ids.last() {
             ids.pop();
