@@ -19,12 +19,13 @@
 //! Everything is built under `target/glut/`. `SOFTGLUT_TEST_SAVE=1` keeps a side-by-side
 //! diff picture for every differing frame in `target/glut/diff/`.
 
+mod glut_common;
+
+use glut_common::*;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::{Mutex, OnceLock};
-use std::time::SystemTime;
 
 /// One tutorial run: program, frames, keys fed, and the allowed difference.
 struct Tutorial {
@@ -139,134 +140,6 @@ const TUTORIALS: &[Tutorial] = &[
         odd_pixels: 1,
     },
 ];
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// `target/<profile>`: the test executable lives in `target/<profile>/deps/`.
-fn profile_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("current_exe");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("profile folder")
-        .to_path_buf()
-}
-
-fn mtime(p: &Path) -> Option<SystemTime> {
-    fs::metadata(p).and_then(|m| m.modified()).ok()
-}
-
-/// The freshest `libsoftgl.so` folder: `SOFTGL_LIB_DIR`, else the newer of
-/// `target/<profile>/` and `target/<profile>/deps/` (as in tests/osmesa_compare.rs).
-fn softgl_dir() -> PathBuf {
-    if let Some(d) = std::env::var_os("SOFTGL_LIB_DIR") {
-        return PathBuf::from(d);
-    }
-    let profile = profile_dir();
-    let up = profile.join("libsoftgl.so");
-    let dep = profile.join("deps").join("libsoftgl.so");
-    match (mtime(&up), mtime(&dep)) {
-        (Some(u), Some(d)) if d > u => profile.join("deps"),
-        (None, Some(_)) => profile.join("deps"),
-        _ => profile,
-    }
-}
-
-/// Builds `libsoftglut.so` once (cargo, this test's profile); returns its folder.
-fn glut_dir() -> &'static Path {
-    static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
-        let profile = profile_dir();
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let mut cmd = Command::new(cargo);
-        cmd.current_dir(root()).args(["build", "-p", "softglut"]);
-        if profile.file_name().and_then(|n| n.to_str()) == Some("release") {
-            cmd.arg("--release");
-        }
-        let target = profile.parent().expect("target dir");
-        cmd.env("CARGO_TARGET_DIR", target);
-        let status = cmd.status().expect("run cargo build -p softglut");
-        assert!(status.success(), "cargo build -p softglut failed");
-        assert!(profile.join("libsoftglut.so").exists());
-        profile
-    })
-}
-
-/// `target/glut/`.
-fn work_dir() -> PathBuf {
-    let d = profile_dir()
-        .parent()
-        .map(|t| t.join("glut"))
-        .unwrap_or_else(|| root().join("target/glut"));
-    fs::create_dir_all(&d).expect("mkdir target/glut");
-    d
-}
-
-fn cc() -> String {
-    std::env::var("CC").unwrap_or_else(|_| "cc".into())
-}
-
-/// Which GL a tutorial is linked with.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Gl {
-    Softgl,
-    Osmesa,
-    /// Mesa's OSMesa with SGI's libGLU linked ahead of softglut (its glu* win).
-    SgiGlu,
-}
-
-/// Compiles `tutorials/NAME.c` against softglut and the chosen GL, once per test run
-/// (tests running in parallel share the binary instead of rewriting it).
-fn compile(name: &str, gl: Gl) -> PathBuf {
-    static BUILT: Mutex<BTreeMap<String, PathBuf>> = Mutex::new(BTreeMap::new());
-    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
-    let key = format!("{name}.{gl:?}").to_lowercase();
-    if let Some(p) = built.get(&key) {
-        return p.clone();
-    }
-    let bin = work_dir().join("bin");
-    fs::create_dir_all(&bin).expect("mkdir bin");
-    let src = root().join("tutorials").join(format!("{name}.c"));
-    let out = build(&src, &bin.join(&key), gl);
-    built.insert(key, out.clone());
-    out
-}
-
-/// Compiles a C file against softglut and the chosen GL into `out`.
-fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
-    let glut = glut_dir();
-    let mut cmd = Command::new(cc());
-    cmd.arg(src)
-        .args(["-O1", "-Wall", "-Werror", "-o"])
-        .arg(out)
-        .arg(format!("-I{}", root().join("glut/include").display()));
-    if gl == Gl::SgiGlu {
-        cmd.args(["-Wl,--no-as-needed", "-lGLU"]);
-    }
-    cmd.arg(format!("-L{}", glut.display())).arg("-lsoftglut");
-    match gl {
-        Gl::Softgl => {
-            let sg = softgl_dir();
-            cmd.arg(format!("-I{}", root().join("include").display()))
-                .arg(format!("-L{}", sg.display()))
-                .arg("-lsoftgl")
-                .arg(format!("-Wl,-rpath,{}:{}", glut.display(), sg.display()));
-        }
-        Gl::Osmesa | Gl::SgiGlu => {
-            cmd.arg("-lOSMesa")
-                .arg(format!("-Wl,-rpath,{}", glut.display()));
-        }
-    }
-    let o = cmd.arg("-lm").output().expect("run cc");
-    assert!(
-        o.status.success(),
-        "compiling {} for {gl:?} failed:\n{}",
-        src.display(),
-        String::from_utf8_lossy(&o.stderr)
-    );
-    out.to_path_buf()
-}
 
 /// Runs a tutorial binary into a fresh folder; returns the sorted PNG paths.
 fn run(bin: &Path, t: &Tutorial, out: &Path) -> Vec<PathBuf> {
@@ -467,106 +340,6 @@ fn tutorial_accum() {
 #[test]
 fn tutorial_tessrand() {
     tutorial_test(&TUTORIALS[10]);
-}
-
-/// The SGI-GLU build really calls SGI's libGLU (not softglut's glu*).
-#[test]
-fn sgi_glu_build_binds_glu_to_libglu() {
-    if !Path::new("/usr/include/GL/glu.h").exists()
-        || !Path::new("/usr/include/GL/osmesa.h").exists()
-    {
-        return;
-    }
-    let bin = compile("tess", Gl::SgiGlu);
-    let out = work_dir().join("out/tess.bindings");
-    let _ = fs::remove_dir_all(&out);
-    let o = Command::new(&bin)
-        .env("SOFTGLUT_FRAMES", "1")
-        .env("SOFTGLUT_OUTPUT", &out)
-        .env("LD_DEBUG", "bindings")
-        .output()
-        .expect("run tess");
-    assert!(o.status.success());
-    let log = String::from_utf8_lossy(&o.stderr);
-    let bound: Vec<&str> = log
-        .lines()
-        .filter(|l| l.contains("normal symbol `gluTessVertex'") && l.contains("tess.sgiglu"))
-        .collect();
-    assert!(!bound.is_empty(), "no binding of gluTessVertex in the log");
-    assert!(
-        bound.iter().all(|l| l.contains("libGLU.so")),
-        "gluTessVertex not bound to libGLU: {bound:?}"
-    );
-}
-
-/// `tests/glu/mipmaps.c` (mipmap builders, gluUnProject4, gluCheckExtension) prints
-/// the same with softglut's GLU as with SGI's libGLU, both on Mesa.
-#[test]
-fn glu_mipmaps_match_sgi() {
-    if !Path::new("/usr/include/GL/glu.h").exists()
-        || !Path::new("/usr/include/GL/osmesa.h").exists()
-    {
-        return;
-    }
-    let src = root().join("tests/glu/mipmaps.c");
-    let bin = work_dir().join("bin");
-    fs::create_dir_all(&bin).expect("mkdir bin");
-    let print = |gl: Gl| {
-        let exe = build(
-            &src,
-            &bin.join(format!("mipmaps.{gl:?}").to_lowercase()),
-            gl,
-        );
-        let o = Command::new(&exe).output().expect("run mipmaps");
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        String::from_utf8(o.stdout).expect("utf-8")
-    };
-    let (ours, sgi) = (print(Gl::Osmesa), print(Gl::SgiGlu));
-    assert!(sgi.lines().count() > 100, "{sgi}");
-    for (a, b) in ours.lines().zip(sgi.lines()) {
-        assert_eq!(a, b, "softglut (left) against SGI's GLU (right)");
-    }
-    assert_eq!(ours.lines().count(), sgi.lines().count());
-}
-
-/// `tests/glu/menus.c` (menu ids and state, context requests, options) prints the
-/// same with softglut as with the system freeglut run under Xvfb.
-#[test]
-fn glut_menus_match_freeglut() {
-    let freeglut = Path::new("/usr/include/GL/freeglut.h").exists();
-    if !freeglut || !have_program("xvfb-run") || !Path::new("/usr/include/GL/osmesa.h").exists() {
-        eprintln!("glut_menus_match_freeglut: skipped (needs freeglut3-dev, xvfb, OSMesa)");
-        return;
-    }
-    let src = root().join("tests/glu/menus.c");
-    let bin = work_dir().join("bin");
-    fs::create_dir_all(&bin).expect("mkdir bin");
-    let ours = build(&src, &bin.join("menus.softglut"), Gl::Osmesa);
-    let theirs = bin.join("menus.freeglut");
-    let o = Command::new(cc())
-        .arg(&src)
-        .args(["-O1", "-Wall", "-Werror", "-o"])
-        .arg(&theirs)
-        .args(["-lglut", "-lGL"])
-        .output()
-        .expect("cc");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let run = |cmd: &mut Command| {
-        let o = cmd.output().expect("run menus");
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        String::from_utf8(o.stdout).expect("utf-8")
-    };
-    let a = run(&mut Command::new(&ours));
-    let b = run(Command::new("xvfb-run").arg("-a").arg(&theirs));
-    assert!(b.lines().count() > 15, "{b}");
-    assert_eq!(a, b, "softglut (left) against freeglut (right)");
-}
-
-/// Whether `program` is on PATH.
-fn have_program(program: &str) -> bool {
-    std::env::var_os("PATH")
-        .map(|p| std::env::split_paths(&p).any(|d| d.join(program).is_file()))
-        .unwrap_or(false)
 }
 
 #[test]
