@@ -21,6 +21,11 @@ pub type SpecialCb = Option<extern "C" fn(c_int, c_int, c_int)>;
 pub type MouseCb = Option<extern "C" fn(c_int, c_int, c_int, c_int)>;
 
 const GLUT_DOUBLE: c_uint = 0x0002;
+const GLUT_ACCUM: c_uint = 0x0004;
+/// `GLUT_MULTISAMPLE`: a display-mode bit, and glutSetOption's sample count.
+const GLUT_MULTISAMPLE: c_uint = 0x0080;
+/// Accumulation bits per channel of a GLUT_ACCUM window.
+const ACCUM_BITS: i32 = 16;
 const GLUT_VISIBLE: c_int = 1;
 
 /// The callbacks of one window.
@@ -80,6 +85,11 @@ struct State {
     now_ms: i32,
     leave: bool,
     action_on_close: c_int,
+    /// glutInitContextVersion's (major, minor), glutInitContextFlags,
+    /// glutInitContextProfile: recorded for glutGet; OSMesa makes a legacy context.
+    context: (c_int, c_int, c_int, c_int),
+    /// glutSetOption(GLUT_MULTISAMPLE): recorded; OSMesa windows are single-sampled.
+    samples: c_int,
 }
 
 impl State {
@@ -97,6 +107,8 @@ impl State {
             now_ms: 0,
             leave: false,
             action_on_close: 0,
+            context: (1, 0, 0, 0),
+            samples: 4,
         }
     }
 
@@ -179,7 +191,9 @@ pub extern "C" fn glutInitWindowPosition(x: c_int, y: c_int) {
     with(|s| s.init_pos = (x, y));
 }
 
-/// `glutCreateWindow`: a new OSMesa context with depth and stencil; returns its id.
+/// `glutCreateWindow`: a new OSMesa context with depth and stencil (and a 16-bit
+/// accumulation buffer with GLUT_ACCUM; GLUT_MULTISAMPLE is accepted, the window
+/// stays single-sampled); returns its id.
 #[no_mangle]
 pub extern "C" fn glutCreateWindow(title: *const c_char) -> c_int {
     let title = if title.is_null() {
@@ -190,9 +204,11 @@ pub extern "C" fn glutCreateWindow(title: *const c_char) -> c_int {
             .to_string_lossy()
             .into_owned()
     };
+    let accum = with(|s| s.init_mode & GLUT_ACCUM != 0);
+    let accum = if accum { ACCUM_BITS } else { 0 };
     // SAFETY: plain constructor call; a NULL share context is allowed.
     let ctx =
-        unsafe { gl::OSMesaCreateContextExt(gl::OSMESA_RGBA, 24, 8, 0, std::ptr::null_mut()) };
+        unsafe { gl::OSMesaCreateContextExt(gl::OSMESA_RGBA, 24, 8, accum, std::ptr::null_mut()) };
     if ctx.is_null() {
         eprintln!("softglut: OSMesaCreateContextExt failed");
         std::process::exit(1);
@@ -233,6 +249,7 @@ pub extern "C" fn glutDestroyWindow(id: c_int) {
         w
     });
     if let Some(w) = w {
+        crate::menu::window_destroyed(id);
         // SAFETY: the context was created by glutCreateWindow and is destroyed once.
         unsafe { gl::OSMesaDestroyContext(w.ctx) };
     }
@@ -413,13 +430,34 @@ pub extern "C" fn glutLeaveMainLoop() {
     with(|s| s.leave = true);
 }
 
-/// `glutSetOption`: GLUT_ACTION_ON_WINDOW_CLOSE is remembered; glutMainLoop always
-/// returns (headless runs end by frame count).
+/// `glutSetOption`: GLUT_ACTION_ON_WINDOW_CLOSE and GLUT_MULTISAMPLE are remembered;
+/// glutMainLoop always returns (headless runs end by frame count).
 #[no_mangle]
 pub extern "C" fn glutSetOption(what: c_uint, value: c_int) {
-    if what == 0x01F9 {
-        with(|s| s.action_on_close = value);
+    match what {
+        0x01F9 => with(|s| s.action_on_close = value),
+        GLUT_MULTISAMPLE => with(|s| s.samples = value),
+        _ => {}
     }
+}
+
+/// `glutInitContextVersion` (freeglut): recorded (glutGet GLUT_INIT_MAJOR_VERSION,
+/// GLUT_INIT_MINOR_VERSION); OSMesa windows get its compatibility context.
+#[no_mangle]
+pub extern "C" fn glutInitContextVersion(major: c_int, minor: c_int) {
+    with(|s| (s.context.0, s.context.1) = (major, minor));
+}
+
+/// `glutInitContextFlags` (freeglut): recorded (glutGet GLUT_INIT_FLAGS).
+#[no_mangle]
+pub extern "C" fn glutInitContextFlags(flags: c_int) {
+    with(|s| s.context.2 = flags);
+}
+
+/// `glutInitContextProfile` (freeglut): recorded (glutGet GLUT_INIT_PROFILE).
+#[no_mangle]
+pub extern "C" fn glutInitContextProfile(profile: c_int) {
+    with(|s| s.context.3 = profile);
 }
 
 /// `glutGetModifiers`: fed keys carry no modifiers.
@@ -465,6 +503,7 @@ pub extern "C" fn glutGet(what: c_uint) -> c_int {
         let mode = s.init_mode as c_int;
         let now = s.now_ms;
         let action = s.action_on_close;
+        let (context, samples) = (s.context, s.samples);
         let win = s.win().map(|w| (w.x, w.y, w.width, w.height, w.double));
         match (what, win) {
             (0x02BC, _) => now,
@@ -477,6 +516,14 @@ pub extern "C" fn glutGet(what: c_uint) -> c_int {
             (0x0069, Some(_)) => 8,
             (0x006A, Some(_)) => 24,
             (0x006B..=0x006E, Some(_)) => 8,
+            // Accumulation sizes: what the window's GL says.
+            (0x006F..=0x0072, Some(_)) => gl::get_int(0x0D58 + what - 0x006F),
+            (0x0200, _) => context.0,
+            (0x0201, _) => context.1,
+            (0x0202, _) => context.2,
+            (0x0203, _) => context.3,
+            (GLUT_MULTISAMPLE, _) => samples,
+            (0x012C, _) => crate::menu::num_items(),
             (0x0074, Some(_)) => 1,
             (0x007C, _) => 1,
             (0x0064..=0x007D, _) => 0,

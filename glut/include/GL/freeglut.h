@@ -68,6 +68,13 @@ extern "C" {
 #define GLUT_BORDERLESS                      0x0800
 #define GLUT_SRGB                            0x1000
 
+GLUTAPI void glutInitContextVersion(int majorVersion, int minorVersion);
+GLUTAPI void glutInitContextFlags(int flags);
+GLUTAPI void glutInitContextProfile(int profile);
+GLUTAPI void glutSetMenuFont(int menuID, void *font);
+GLUTAPI void glutMenuDestroyFunc(void (*callback)(void));
+GLUTAPI void *glutGetMenuData(void);
+GLUTAPI void glutSetMenuData(void *data);
 GLUTAPI void glutMainLoopEvent(void);
 GLUTAPI void glutLeaveMainLoop(void);
 GLUTAPI void glutSetOption(GLenum option_flag, int value);

@@ -2,7 +2,7 @@
  * GL/glu.h: the part of GLU 1.3 that softglut implements (libsoftglut.so), with the
  * standard names, signatures and values. Hand-written; tests/glut_tutorials.rs checks
  * it against libsoftglut.so's exports and the values against the system's glu.h.
- * Tessellators and NURBS are not provided.
+ * NURBS are not provided.
  */
 #ifndef SOFTGLUT_GLU_H
 #define SOFTGLUT_GLU_H
@@ -46,8 +46,64 @@ extern "C" {
 #define GLU_INSIDE                           100021
 #define GLU_ERROR                            100103
 
+#define GLU_TESS_BEGIN                       100100
+#define GLU_BEGIN                            100100
+#define GLU_TESS_VERTEX                      100101
+#define GLU_VERTEX                           100101
+#define GLU_TESS_END                         100102
+#define GLU_END                              100102
+#define GLU_TESS_ERROR                       100103
+#define GLU_TESS_EDGE_FLAG                   100104
+#define GLU_EDGE_FLAG                        100104
+#define GLU_TESS_COMBINE                     100105
+#define GLU_TESS_BEGIN_DATA                  100106
+#define GLU_TESS_VERTEX_DATA                 100107
+#define GLU_TESS_END_DATA                    100108
+#define GLU_TESS_ERROR_DATA                  100109
+#define GLU_TESS_EDGE_FLAG_DATA              100110
+#define GLU_TESS_COMBINE_DATA                100111
+
+#define GLU_CW                               100120
+#define GLU_CCW                              100121
+#define GLU_INTERIOR                         100122
+#define GLU_EXTERIOR                         100123
+#define GLU_UNKNOWN                          100124
+
+#define GLU_TESS_WINDING_RULE                100140
+#define GLU_TESS_BOUNDARY_ONLY               100141
+#define GLU_TESS_TOLERANCE                   100142
+
+#define GLU_TESS_ERROR1                      100151
+#define GLU_TESS_ERROR2                      100152
+#define GLU_TESS_ERROR3                      100153
+#define GLU_TESS_ERROR4                      100154
+#define GLU_TESS_ERROR5                      100155
+#define GLU_TESS_ERROR6                      100156
+#define GLU_TESS_ERROR7                      100157
+#define GLU_TESS_ERROR8                      100158
+#define GLU_TESS_MISSING_BEGIN_POLYGON       100151
+#define GLU_TESS_MISSING_BEGIN_CONTOUR       100152
+#define GLU_TESS_MISSING_END_POLYGON         100153
+#define GLU_TESS_MISSING_END_CONTOUR         100154
+#define GLU_TESS_COORD_TOO_LARGE             100155
+#define GLU_TESS_NEED_COMBINE_CALLBACK       100156
+
+#define GLU_TESS_WINDING_ODD                 100130
+#define GLU_TESS_WINDING_NONZERO             100131
+#define GLU_TESS_WINDING_POSITIVE            100132
+#define GLU_TESS_WINDING_NEGATIVE            100133
+#define GLU_TESS_WINDING_ABS_GEQ_TWO         100134
+
+#define GLU_TESS_MAX_COORD 1.0e150
+
 typedef struct GLUquadric GLUquadric;
 typedef GLUquadric GLUquadricObj;
+typedef struct GLUtesselator GLUtesselator;
+typedef GLUtesselator GLUtesselatorObj;
+typedef GLUtesselator GLUtriangulatorObj;
+
+/* Callbacks are passed as this type and called with their real signatures. */
+typedef void (*_GLUfuncptr)(void);
 
 GLUAPI void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
 GLUAPI void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
@@ -56,6 +112,9 @@ GLUAPI void gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, 
 GLUAPI GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble *model, const GLdouble *proj, const GLint *view, GLdouble *winX, GLdouble *winY, GLdouble *winZ);
 GLUAPI GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble *model, const GLdouble *proj, const GLint *view, GLdouble *objX, GLdouble *objY, GLdouble *objZ);
 
+GLUAPI GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW, const GLdouble *model, const GLdouble *proj, const GLint *view, GLdouble nearVal, GLdouble farVal, GLdouble *objX, GLdouble *objY, GLdouble *objZ, GLdouble *objW);
+
+GLUAPI GLboolean gluCheckExtension(const GLubyte *extName, const GLubyte *extString);
 GLUAPI const GLubyte *gluErrorString(GLenum error);
 GLUAPI const GLubyte *gluGetString(GLenum name);
 
@@ -71,9 +130,28 @@ GLUAPI void gluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GLdouble 
 GLUAPI void gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops);
 GLUAPI void gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops, GLdouble start, GLdouble sweep);
 
+GLUAPI GLUtesselator *gluNewTess(void);
+GLUAPI void gluDeleteTess(GLUtesselator *tess);
+GLUAPI void gluTessCallback(GLUtesselator *tess, GLenum which, _GLUfuncptr CallBackFunc);
+GLUAPI void gluTessProperty(GLUtesselator *tess, GLenum which, GLdouble data);
+GLUAPI void gluGetTessProperty(GLUtesselator *tess, GLenum which, GLdouble *data);
+GLUAPI void gluTessNormal(GLUtesselator *tess, GLdouble valueX, GLdouble valueY, GLdouble valueZ);
+GLUAPI void gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data);
+GLUAPI void gluTessBeginContour(GLUtesselator *tess);
+GLUAPI void gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data);
+GLUAPI void gluTessEndContour(GLUtesselator *tess);
+GLUAPI void gluTessEndPolygon(GLUtesselator *tess);
+GLUAPI void gluBeginPolygon(GLUtesselator *tess);
+GLUAPI void gluNextContour(GLUtesselator *tess, GLenum type);
+GLUAPI void gluEndPolygon(GLUtesselator *tess);
+
 GLUAPI GLint gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum typeIn, const void *dataIn, GLsizei wOut, GLsizei hOut, GLenum typeOut, GLvoid *dataOut);
 GLUAPI GLint gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format, GLenum type, const void *data);
 GLUAPI GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *data);
+GLUAPI GLint gluBuild3DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void *data);
+GLUAPI GLint gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
+GLUAPI GLint gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
+GLUAPI GLint gluBuild3DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
 
 #ifdef __cplusplus
 }

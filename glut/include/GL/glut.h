@@ -254,6 +254,20 @@ GLUTAPI void glutKeyboardUpFunc(void (*callback)(unsigned char, int, int));
 GLUTAPI void glutSpecialUpFunc(void (*callback)(int, int, int));
 
 /* State */
+GLUTAPI int glutCreateMenu(void (*callback)(int menu));
+GLUTAPI void glutDestroyMenu(int menu);
+GLUTAPI int glutGetMenu(void);
+GLUTAPI void glutSetMenu(int menu);
+GLUTAPI void glutAddMenuEntry(const char *label, int value);
+GLUTAPI void glutAddSubMenu(const char *label, int subMenu);
+GLUTAPI void glutChangeToMenuEntry(int item, const char *label, int value);
+GLUTAPI void glutChangeToSubMenu(int item, const char *label, int value);
+GLUTAPI void glutRemoveMenuItem(int item);
+GLUTAPI void glutAttachMenu(int button);
+GLUTAPI void glutDetachMenu(int button);
+GLUTAPI void glutMenuStateFunc(void (*callback)(int));
+GLUTAPI void glutMenuStatusFunc(void (*callback)(int, int, int));
+
 GLUTAPI int glutGet(GLenum query);
 GLUTAPI int glutDeviceGet(GLenum query);
 GLUTAPI int glutGetModifiers(void);
