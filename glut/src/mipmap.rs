@@ -51,9 +51,9 @@ fn components(format: GLenum) -> Option<usize> {
 /// Bytes per component of a supported type.
 fn type_size(ty: GLenum) -> Option<usize> {
     match ty {
-        gl::GL_UNSIGNED_BYTE | 0x1400 => Some(1),
-        0x1402 | 0x1403 => Some(2),
-        0x1404 | 0x1405 | gl::GL_FLOAT => Some(4),
+        gl::GL_UNSIGNED_BYTE | gl::GL_BYTE => Some(1),
+        gl::GL_SHORT | gl::GL_UNSIGNED_SHORT => Some(2),
+        gl::GL_INT | gl::GL_UNSIGNED_INT | gl::GL_FLOAT => Some(4),
         _ => None,
     }
 }
@@ -66,11 +66,11 @@ unsafe fn read_comp(p: *const u8, ty: GLenum) -> f64 {
     // SAFETY: the caller guarantees p points to a value of `ty` (unaligned reads).
     unsafe {
         match ty {
-            0x1400 => f64::from(p.cast::<i8>().read()),
-            0x1402 => f64::from(p.cast::<u16>().read_unaligned()),
-            0x1403 => f64::from(p.cast::<i16>().read_unaligned()),
-            0x1404 => f64::from(p.cast::<u32>().read_unaligned()),
-            0x1405 => f64::from(p.cast::<i32>().read_unaligned()),
+            gl::GL_BYTE => f64::from(p.cast::<i8>().read()),
+            gl::GL_UNSIGNED_SHORT => f64::from(p.cast::<u16>().read_unaligned()),
+            gl::GL_SHORT => f64::from(p.cast::<i16>().read_unaligned()),
+            gl::GL_UNSIGNED_INT => f64::from(p.cast::<u32>().read_unaligned()),
+            gl::GL_INT => f64::from(p.cast::<i32>().read_unaligned()),
             gl::GL_FLOAT => f64::from(p.cast::<f32>().read_unaligned()),
             _ => f64::from(p.read()),
         }
@@ -81,13 +81,13 @@ unsafe fn read_comp(p: *const u8, ty: GLenum) -> f64 {
 /// already whole for them).
 fn to_bytes(v: f64, ty: GLenum) -> Vec<u8> {
     match ty {
-        0x1400 => vec![v.clamp(-128.0, 127.0) as i8 as u8],
-        0x1402 => (v.clamp(0.0, 65535.0) as u16).to_ne_bytes().to_vec(),
-        0x1403 => (v.clamp(-32768.0, 32767.0) as i16).to_ne_bytes().to_vec(),
-        0x1404 => (v.clamp(0.0, u32::MAX as f64) as u32)
+        gl::GL_BYTE => vec![v.clamp(-128.0, 127.0) as i8 as u8],
+        gl::GL_UNSIGNED_SHORT => (v.clamp(0.0, 65535.0) as u16).to_ne_bytes().to_vec(),
+        gl::GL_SHORT => (v.clamp(-32768.0, 32767.0) as i16).to_ne_bytes().to_vec(),
+        gl::GL_UNSIGNED_INT => (v.clamp(0.0, u32::MAX as f64) as u32)
             .to_ne_bytes()
             .to_vec(),
-        0x1405 => (v.clamp(i32::MIN as f64, i32::MAX as f64) as i32)
+        gl::GL_INT => (v.clamp(i32::MIN as f64, i32::MAX as f64) as i32)
             .to_ne_bytes()
             .to_vec(),
         gl::GL_FLOAT => (v as f32).to_ne_bytes().to_vec(),
@@ -277,6 +277,12 @@ fn halve(img: &Img, integer: bool) -> Img {
 
 /// `gluScaleImage`: scales a client image with a box filter; 0 on success or a GLU
 /// error code.
+///
+/// SGI's GLU does this in 16-bit: each component becomes a u16 (`ubyte·257`,
+/// `byte·516`, `short·2`, `uint>>16`, `int>>15`, `float·65535` in f32, wrapping as C's
+/// conversions do; index formats keep the raw value), is scaled by [`scale_u16`], and goes
+/// back (`>>8`, `>>9`, `>>1`, `·65537`, `·65537/2`, `/65535` in f32). The pixels that
+/// result are what programs linked with libGLU upload, so they are reproduced here.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub extern "C" fn gluScaleImage(
@@ -290,24 +296,161 @@ pub extern "C" fn gluScaleImage(
     type_out: GLenum,
     data_out: *mut c_void,
 ) -> GLint {
+    if w_in == 0 || h_in == 0 || w_out == 0 || h_out == 0 {
+        return 0;
+    }
+    if w_in < 0 || h_in < 0 || w_out < 0 || h_out < 0 {
+        return GLU_INVALID_VALUE;
+    }
     let (Some(n), Some(_), Some(_)) = (components(format), type_size(type_in), type_size(type_out))
     else {
         return GLU_INVALID_ENUM;
     };
-    if w_in < 0 || h_in < 0 || w_out < 0 || h_out < 0 {
-        return GLU_INVALID_VALUE;
-    }
-    if w_in == 0 || h_in == 0 || w_out == 0 || h_out == 0 || data_in.is_null() || data_out.is_null()
-    {
+    if data_in.is_null() || data_out.is_null() {
         return 0;
     }
+    // GL_COLOR_INDEX and GL_STENCIL_INDEX carry raw values.
+    let index = matches!(format, 0x1900 | 0x1901);
     let img = read_image(data_in, w_in as usize, h_in as usize, 1, n, type_in);
-    let mut out = scale_image(&img, w_out as usize, h_out as usize, 1, false);
-    if type_out != gl::GL_FLOAT {
-        out.data.iter_mut().for_each(|v| *v = v.round());
-    }
+    let wide: Vec<u16> = img
+        .data
+        .iter()
+        .map(|&v| to_u16(v, type_in, index))
+        .collect();
+    let scaled = scale_u16(
+        n,
+        (w_in as usize, h_in as usize),
+        &wide,
+        (w_out as usize, h_out as usize),
+    );
+    let data = scaled
+        .iter()
+        .map(|&v| from_u16(v, type_out, index))
+        .collect();
+    let out = Img {
+        w: w_out as usize,
+        h: h_out as usize,
+        d: 1,
+        n,
+        data,
+    };
     write_image(&out, data_out, type_out);
     0
+}
+
+/// A component (in its type's scale) as SGI's GLU widens it to 16 bits.
+fn to_u16(v: f64, ty: GLenum, index: bool) -> u16 {
+    // Integer values are whole; C's conversions to unsigned short keep the low 16 bits.
+    let wrap = |x: i64| x as u16;
+    match (ty, index) {
+        (gl::GL_UNSIGNED_BYTE, false) => wrap(v as i64 * 257),
+        (gl::GL_BYTE, false) => wrap(v as i64 * 516),
+        (gl::GL_SHORT, false) => wrap(v as i64 * 2),
+        (gl::GL_UNSIGNED_INT, false) => wrap(v as i64 >> 16),
+        (gl::GL_INT, false) => wrap(v as i64 >> 15),
+        (gl::GL_FLOAT, false) => float_to_u16(65535.0 * v as f32),
+        (gl::GL_FLOAT, true) => float_to_u16(v as f32),
+        _ => wrap(v as i64),
+    }
+}
+
+/// C's float → unsigned short on x86-64: truncated through a 32-bit integer (values that
+/// do not fit come out as its "indefinite" value, whose low bits are 0).
+fn float_to_u16(f: f32) -> u16 {
+    if f.is_finite() && f > -2147483648.0 && f < 2147483648.0 {
+        f as i32 as u16
+    } else {
+        0
+    }
+}
+
+/// A 16-bit component back in `ty`'s scale, as SGI's GLU narrows it.
+fn from_u16(v: u16, ty: GLenum, index: bool) -> f64 {
+    let v32 = u32::from(v);
+    match (ty, index) {
+        (gl::GL_UNSIGNED_BYTE, false) => f64::from(v >> 8),
+        (gl::GL_UNSIGNED_BYTE, true) => f64::from(v as u8),
+        (gl::GL_BYTE, false) => f64::from((v >> 9) as i8),
+        (gl::GL_BYTE, true) => f64::from(v as i8),
+        (gl::GL_SHORT, false) => f64::from((v >> 1) as i16),
+        (gl::GL_SHORT, true) => f64::from(v as i16),
+        (gl::GL_UNSIGNED_INT, false) => f64::from(v32 * 65537),
+        (gl::GL_INT, false) => f64::from((v32 * 65537 / 2) as i32),
+        (gl::GL_FLOAT, false) => f64::from(f32::from(v) / 65535.0),
+        _ => f64::from(v),
+    }
+}
+
+/// SGI GLU's 16-bit box filter (`scale_internal`): an exact halving averages 2×2 texels
+/// rounding half up; otherwise each output texel integrates the input over its footprint
+/// (f32 coordinates and weights, wrapping around the edges when enlarging), and the f32
+/// total plus 0.5 is divided by the covered area in f64 and truncated.
+fn scale_u16(
+    n: usize,
+    (wi, hi): (usize, usize),
+    src: &[u16],
+    (wo, ho): (usize, usize),
+) -> Vec<u16> {
+    let mut out = vec![0u16; wo * ho * n];
+    if wi == wo * 2 && hi == ho * 2 {
+        for (o, px) in out.chunks_mut(n).enumerate() {
+            let (x, y) = (o % wo * 2, o / wo * 2);
+            for (c, v) in px.iter_mut().enumerate() {
+                let at = |xx: usize, yy: usize| u32::from(src[(yy * wi + xx) * n + c]);
+                *v = ((at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1) + 2) / 4) as u16;
+            }
+        }
+        return out;
+    }
+    // The footprint of output index `o` along an axis: [low, high) in input texels.
+    let span = |o: usize, size_in: usize, size_out: usize| {
+        let conv = size_in as f32 / size_out as f32;
+        let centre = (f64::from(conv) * (o as f64 + 0.5)) as f32;
+        if size_in > size_out {
+            (centre - conv / 2.0, centre + conv / 2.0)
+        } else {
+            (
+                (f64::from(centre) - 0.5) as f32,
+                (f64::from(centre) + 0.5) as f32,
+            )
+        }
+    };
+    // Pieces of [low, high) cut at whole texels: (input index, f32 fraction).
+    let pieces = |(low, high): (f32, f32), size: usize| {
+        let mut v = Vec::new();
+        let mut at = low;
+        let mut whole = f64::from(low).floor() as i64;
+        while at < high {
+            let index = (whole + size as i64).rem_euclid(size as i64) as usize;
+            let next = (whole + 1) as f32;
+            v.push((index, if high < next { high - at } else { next - at }));
+            whole += 1;
+            at = whole as f32;
+        }
+        v
+    };
+    for oy in 0..ho {
+        let ys = pieces(span(oy, hi, ho), hi);
+        for ox in 0..wo {
+            let xs = pieces(span(ox, wi, wo), wi);
+            let mut totals = [0f32; 4];
+            let mut area = 0f32;
+            for &(iy, py) in &ys {
+                for &(ix, px) in &xs {
+                    let w = px * py;
+                    area += w;
+                    for (c, t) in totals.iter_mut().enumerate().take(n) {
+                        *t += f32::from(src[(iy * wi + ix) * n + c]) * w;
+                    }
+                }
+            }
+            for c in 0..n {
+                let v = (f64::from(totals[c]) + 0.5) / f64::from(area);
+                out[(oy * wo + ox) * n + c] = v as i32 as u16;
+            }
+        }
+    }
+    out
 }
 
 /// The power of two GLU scales a size to: the nearer one, 1.5 × 2^k rounding up.
