@@ -72,6 +72,12 @@ GL_STENCIL_INDEX16 GL_RENDERBUFFER_RED_SIZE GL_RENDERBUFFER_GREEN_SIZE GL_RENDER
 GL_RENDERBUFFER_ALPHA_SIZE GL_RENDERBUFFER_DEPTH_SIZE GL_RENDERBUFFER_STENCIL_SIZE GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE
 GL_MAX_SAMPLES GL_INDEX GL_TEXTURE_LUMINANCE_TYPE GL_TEXTURE_INTENSITY_TYPE""".split()
 
+# GL 3.0/3.2 tokens of extensions softgl advertises whose glext.h sections are empty
+# (GL_ARB_depth_buffer_float, GL_ARB_seamless_cube_map: their tokens sit in the core
+# version sections).
+CORE_EXT_TOKENS = """GL_DEPTH_COMPONENT32F GL_DEPTH32F_STENCIL8 GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+GL_TEXTURE_CUBE_MAP_SEAMLESS""".split()
+
 DEF = re.compile(r"^#define\s+(GL_\w+)\s+(0x[0-9A-Fa-f]+|\d+)u?\s*$")
 
 
@@ -147,6 +153,12 @@ def main():
     for line in ext:
         m = DEF.match(line.strip())
         if m and m.group(1) in SRGB_TOKENS and m.group(1) not in seen:
+            seen.add(m.group(1))
+            body.append(rust(m.group(1), m.group(2)))
+    body.append("\n// GL_ARB_depth_buffer_float and GL_ARB_seamless_cube_map (core-section tokens)")
+    for line in ext:
+        m = DEF.match(line.strip())
+        if m and m.group(1) in CORE_EXT_TOKENS and m.group(1) not in seen:
             seen.add(m.group(1))
             body.append(rust(m.group(1), m.group(2)))
     with open("src/ffi/glext_enums.rs", "w") as f:

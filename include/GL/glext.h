@@ -687,6 +687,10 @@ typedef ptrdiff_t GLintptr;
 #define GL_SLUMINANCE8                           0x8C47
 #define GL_COMPRESSED_SLUMINANCE                 0x8C4A
 #define GL_COMPRESSED_SLUMINANCE_ALPHA           0x8C4B
+#define GL_DEPTH_COMPONENT32F                    0x8CAC
+#define GL_DEPTH32F_STENCIL8                     0x8CAD
+#define GL_FLOAT_32_UNSIGNED_INT_24_8_REV        0x8DAD
+#define GL_TEXTURE_CUBE_MAP_SEAMLESS             0x884F
 
 /* Function-pointer types: src/ffi/multidraw.rs */
 typedef void (APIENTRYP PFNGLMULTIDRAWARRAYSPROC) (GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
