@@ -201,7 +201,7 @@ int main(int argc, char **argv)
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_POLYGON_OFFSET_LINE);
     /* colour only: softgl adds llvmpipe's per-fragment offset to the z plane's origin
-     * instead, which can differ by one ulp in a float buffer (docs/fbo-rules.md §10) */
+     * instead, which can differ by one ulp in a float buffer (docs/fbo-rules.md §7.4) */
     dump(out, "offset", -1);
 
     /* reversed z: MuJoCo's GL_ZERO_TO_ONE, GL_GREATER, clear depth 0 */

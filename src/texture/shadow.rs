@@ -175,14 +175,8 @@ pub fn is_depth_stencil(internal: u32) -> bool {
 
 /// Mesa's `CLAMP(d, 0, 1)` (NaN and −0 pass through) as stored in a float image.
 fn store_float(d: f32) -> u32 {
-    let d = if d < 0.0 {
-        0.0
-    } else if d > 1.0 {
-        1.0
-    } else {
-        d
-    };
-    d.to_bits()
+    // `f32::clamp` compares as `CLAMP` does
+    d.clamp(0.0, 1.0).to_bits()
 }
 
 /// The largest stored value of `bits` bits.
