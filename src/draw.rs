@@ -196,7 +196,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
             Some(p)
         })
         .collect();
-    let depth_bits = fb.depth_format.bits();
+    // the offset's view of the depth buffer: its bits, or the float tag
+    let depth_bits = fb.depth_format.texel_bits() as i32;
     let mv_flags = ctx.matrices.modelview.top_flags();
     let (normalize, rescale) = (st.caps.get(Cap::Normalize), st.caps.get(Cap::RescaleNormal));
     let texgen_eye = stage.add_texgen(&ctx.texgen, mv_flags, normalize, rescale);
@@ -307,7 +308,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
             let p = &ctx.raster.polygon;
             let units =
                 crate::geometry::unfilled::scaled_units(p.offset_units, depth_bits.max(0) as u32);
-            (p.offset_factor, units)
+            let float = depth_bits == crate::texture::shadow::FLOAT_BITS as i32;
+            (p.offset_factor, (units, float))
         });
     let pipe = TriPipe {
         setup: match plan.ms {
@@ -477,7 +479,7 @@ struct TriPipe<'a> {
     back: Option<usize>,
     flat: bool,
     /// llvmpipe's own polygon offset: factor and scaled units.
-    lp_offset: Option<(f32, f32)>,
+    lp_offset: Option<(f32, (f32, bool))>,
     ucp: &'a UserPlanes,
     viewport: &'a Viewport,
 }
@@ -496,6 +498,7 @@ impl TriPipe<'_> {
             .setup
             .shaded(v, self.nvary, self.cull, self.back, self.flat, tri);
         if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
+            // a float depth buffer scales the units per triangle (`FLOAT_BITS` as bits)
             crate::raster::prims::apply_setup_offset(v, factor, units, tri);
         }
         Self::emit(r, tri, sink, stats);

@@ -53,6 +53,11 @@ pub enum DepthFormat {
     Z16,
     /// 24-bit unorm (Z24X8 or Z24S8).
     Z24,
+    /// 32-bit float (GL_DEPTH_COMPONENT32F, GL_DEPTH32F_STENCIL8: llvmpipe's Z32_FLOAT and
+    /// Z32_FLOAT_S8X24_UINT). The plane holds the f32's bits: the fragment z clamped to
+    /// [0, 1] (NaN and −0 become +0), so the unsigned (and signed) integer order of the
+    /// stored values is the float order and the depth test compares them as integers.
+    Z32F,
 }
 
 impl DepthFormat {
@@ -62,6 +67,7 @@ impl DepthFormat {
             DepthFormat::None => 0,
             DepthFormat::Z16 => 16,
             DepthFormat::Z24 => 24,
+            DepthFormat::Z32F => 32,
         }
     }
     /// The largest stored value (1.0).
@@ -70,6 +76,22 @@ impl DepthFormat {
             DepthFormat::None => 0,
             DepthFormat::Z16 => 0xFFFF,
             DepthFormat::Z24 => 0xFF_FFFF,
+            DepthFormat::Z32F => 1.0f32.to_bits(),
+        }
+    }
+    /// The "bits" argument of the depth conversions in [`crate::texture::shadow`] for
+    /// this format's stored values.
+    pub fn texel_bits(self) -> u8 {
+        match self {
+            DepthFormat::Z32F => crate::texture::shadow::FLOAT_BITS,
+            _ => self.bits() as u8,
+        }
+    }
+    /// The float a stored value stands for (the depth test's and a blit's view of it).
+    pub fn to_float(self, z: u32) -> f32 {
+        match self {
+            DepthFormat::Z32F => f32::from_bits(z),
+            _ => z as f32 / self.max_value() as f32,
         }
     }
     /// A fragment depth (already clamped to [0,1]) quantised as llvmpipe's shader does.
@@ -81,13 +103,22 @@ impl DepthFormat {
                 let t = z * (65535.0f32 / 65536.0f32) + 128.0f32;
                 t.to_bits() & 0xFFFF
             }
+            // llvmpipe clamps z to [0, 1] (`lp_build_depth_clamp`, max then min: NaN
+            // and −0 give +0) and stores the float.
+            DepthFormat::Z32F => {
+                let z = if z > 0.0 { z } else { 0.0 };
+                (if z < 1.0 { z } else { 1.0 }).to_bits()
+            }
             DepthFormat::None => 0,
         }
     }
-    /// A clear value quantised as gallium's `util_pack_z` (double precision, lrint).
+    /// A clear value quantised as gallium's `util_pack_z` (double precision, lrint; the
+    /// float format stores `(float)z`).
     pub fn quantize_clear(self, z: f64) -> u32 {
         let max = self.max_value();
-        if z <= 0.0 {
+        if self == DepthFormat::Z32F {
+            self.quantize(z as f32)
+        } else if z <= 0.0 {
             0
         } else if z >= 1.0 {
             max

@@ -50,8 +50,9 @@ pub enum RbFormat {
     Legacy(BaseFormat),
     /// Depth only.
     Depth(DepthFormat),
-    /// 24-bit depth with 8-bit stencil in one image.
-    Depth24Stencil8,
+    /// Depth of this format with 8-bit stencil in one image (GL_DEPTH24_STENCIL8: Z24,
+    /// GL_DEPTH32F_STENCIL8: Z32F).
+    DepthStencil(DepthFormat),
     /// 8-bit stencil only.
     Stencil8,
 }
@@ -86,7 +87,9 @@ impl RbFormat {
             }
             GL_DEPTH_COMPONENT16 => RbFormat::Depth(DepthFormat::Z16),
             GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => RbFormat::Depth(DepthFormat::Z24),
-            GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => RbFormat::Depth24Stencil8,
+            GL_DEPTH_COMPONENT32F => RbFormat::Depth(DepthFormat::Z32F),
+            GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => RbFormat::DepthStencil(DepthFormat::Z24),
+            GL_DEPTH32F_STENCIL8 => RbFormat::DepthStencil(DepthFormat::Z32F),
             GL_STENCIL_INDEX | GL_STENCIL_INDEX1 | GL_STENCIL_INDEX4 | GL_STENCIL_INDEX8
             | GL_STENCIL_INDEX16 => RbFormat::Stencil8,
             _ => return None,
@@ -102,7 +105,7 @@ impl RbFormat {
             RbFormat::Legacy(BaseFormat::LuminanceAlpha) => [8, 0, 0, 8, 0, 0],
             RbFormat::Legacy(_) => [8, 0, 0, 0, 0, 0],
             RbFormat::Depth(d) => [0, 0, 0, 0, d.bits(), 0],
-            RbFormat::Depth24Stencil8 => [0, 0, 0, 0, 24, 8],
+            RbFormat::DepthStencil(d) => [0, 0, 0, 0, d.bits(), 8],
             RbFormat::Stencil8 => [0, 0, 0, 0, 0, 8],
         }
     }
@@ -149,7 +152,7 @@ impl Renderbuffer {
                 color.try_reserve_exact(n).map_err(oom)?
             }
             RbFormat::Depth(_) => depth.try_reserve_exact(n).map_err(oom)?,
-            RbFormat::Depth24Stencil8 => {
+            RbFormat::DepthStencil(_) => {
                 depth.try_reserve_exact(n).map_err(oom)?;
                 stencil.try_reserve_exact(n).map_err(oom)?;
             }
@@ -421,7 +424,7 @@ impl FboState {
                     RbFormat::Rgb8 => ImageKind::Color(BaseFormat::Rgb),
                     RbFormat::Legacy(b) => ImageKind::Color(b),
                     RbFormat::Depth(d) => ImageKind::Depth(d, false),
-                    RbFormat::Depth24Stencil8 => ImageKind::Depth(DepthFormat::Z24, true),
+                    RbFormat::DepthStencil(d) => ImageKind::Depth(d, true),
                     RbFormat::Stencil8 => ImageKind::Stencil,
                 };
                 Some(ImageInfo {
@@ -446,6 +449,9 @@ impl FboState {
                     BaseFormat::Depth => match img.storage.depth_bits() {
                         16 => ImageKind::Depth(DepthFormat::Z16, false),
                         24 => ImageKind::Depth(DepthFormat::Z24, false),
+                        crate::texture::shadow::FLOAT_BITS => {
+                            ImageKind::Depth(DepthFormat::Z32F, false)
+                        }
                         _ => ImageKind::Unrenderable,
                     },
                     b => ImageKind::Color(b),

@@ -395,7 +395,8 @@ impl Context {
                         let s = fb.stencil.get(i).copied().unwrap_or(0) as u32;
                         out.extend_from_slice(&(fb.depth_at(i) | (s << 24)).to_ne_bytes());
                     }
-                    DepthFormat::None => {}
+                    // the window is never float
+                    DepthFormat::None | DepthFormat::Z32F => {}
                 }
             }
         }
@@ -603,7 +604,9 @@ impl Context {
         }
         if quad_path && mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask && !fb.depth.is_empty() {
             let v = if quad_path {
-                fb.depth_format.quantize(st.clear_depth as f32)
+                // the state tracker's quad: z = f32(2d − 1) through the viewport's ·0.5 + 0.5
+                let z = (st.clear_depth * 2.0 - 1.0) as f32;
+                fb.depth_format.quantize(z * 0.5 + 0.5)
             } else {
                 fb.depth_format.quantize_clear(st.clear_depth)
             };

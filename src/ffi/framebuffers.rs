@@ -659,11 +659,13 @@ fn window_attachment_param(c: &Context, attachment: GLenum, pname: GLenum) -> Gl
             1 => [0, 0, 0, 0, depth, 0],
             _ => [0, 0, 0, 0, 0, stencil],
         },
+        false,
     )
 }
 
-/// The size, component-type and encoding queries common to every attachment.
-fn size_param(pname: GLenum, sizes: [i32; 6]) -> GlResult<GLint> {
+/// The size, component-type and encoding queries common to every attachment (`float`: a
+/// float depth image, whose component type is GL_FLOAT).
+fn size_param(pname: GLenum, sizes: [i32; 6], float: bool) -> GlResult<GLint> {
     Ok(match pname {
         GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => sizes[0],
         GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => sizes[1],
@@ -674,6 +676,8 @@ fn size_param(pname: GLenum, sizes: [i32; 6]) -> GlResult<GLint> {
         GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
             if sizes[..5].iter().all(|&s| s == 0) {
                 GL_INDEX as GLint
+            } else if float {
+                GL_FLOAT as GLint
             } else {
                 GL_UNSIGNED_NORMALIZED as GLint
             }
@@ -740,7 +744,12 @@ fn object_attachment_param(
         _ => {}
     }
     let stencil_point = attachment == GL_STENCIL_ATTACHMENT;
-    let sizes = match c.fbo.image_info(a, &c.textures).map(|i| i.kind) {
+    let kind = c.fbo.image_info(a, &c.textures).map(|i| i.kind);
+    let float = matches!(
+        kind,
+        Some(ImageKind::Depth(crate::framebuffer::DepthFormat::Z32F, _))
+    );
+    let sizes = match kind {
         Some(ImageKind::Color(b)) => {
             let alpha = !matches!(
                 b,
@@ -759,7 +768,7 @@ fn object_attachment_param(
         Some(ImageKind::Stencil) => [0, 0, 0, 0, 0, 8],
         _ => [0; 6],
     };
-    size_param(pname, sizes)
+    size_param(pname, sizes, float)
 }
 
 /// glBlitFramebuffer.

@@ -613,3 +613,9 @@ pub const GL_SLUMINANCE: GLenum = 0x8C46;
 pub const GL_SLUMINANCE8: GLenum = 0x8C47;
 pub const GL_COMPRESSED_SLUMINANCE: GLenum = 0x8C4A;
 pub const GL_COMPRESSED_SLUMINANCE_ALPHA: GLenum = 0x8C4B;
+
+// GL_ARB_depth_buffer_float and GL_ARB_seamless_cube_map (core-section tokens)
+pub const GL_DEPTH_COMPONENT32F: GLenum = 0x8CAC;
+pub const GL_DEPTH32F_STENCIL8: GLenum = 0x8CAD;
+pub const GL_FLOAT_32_UNSIGNED_INT_24_8_REV: GLenum = 0x8DAD;
+pub const GL_TEXTURE_CUBE_MAP_SEAMLESS: GLenum = 0x884F;

@@ -84,7 +84,7 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
 
 /// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
 pub const EXTENSIONS: &str = concat!(
-    "GL_ARB_clip_control GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
+    "GL_ARB_clip_control GL_ARB_depth_buffer_float GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_shadow ",
     "GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_EXT_texture3D ",
     "GL_EXT_texture_cube_map GL_ARB_framebuffer_object GL_EXT_framebuffer_object ",
     "GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil ",
@@ -162,6 +162,8 @@ enum ReadKind {
     Color([usize; 4], usize),
     Depth,
     Stencil,
+    /// GL_DEPTH_STENCIL: GL_UNSIGNED_INT_24_8 or GL_FLOAT_32_UNSIGNED_INT_24_8_REV.
+    DepthStencil,
 }
 
 /// Byte layout of a packed image (GL 1.5 §4.3.2 with the pack parameters).
@@ -205,7 +207,19 @@ fn read_pixels(
     // Mesa's `_mesa_error_check_format_and_type` looks at a packed type before the format:
     // 3-field types need GL_RGB, 4-field types GL_RGBA or GL_BGRA, any other format
     // (even an unknown one) is GL_INVALID_OPERATION.
-    let packed = crate::pixels::image::packed_fields(ty);
+    let ds_type = matches!(
+        ty,
+        super::glext_enums::GL_UNSIGNED_INT_24_8
+            | super::glext_enums::GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+    );
+    if ds_type != (format == super::glext_enums::GL_DEPTH_STENCIL) {
+        return Err(if ds_type {
+            GlError::InvalidOperation
+        } else {
+            GlError::InvalidEnum
+        });
+    }
+    let packed = crate::pixels::image::packed_fields(ty).filter(|_| !ds_type);
     if let Some((_, fields)) = packed {
         let fits = match fields.len() {
             3 => format == GL_RGB,
@@ -228,6 +242,7 @@ fn read_pixels(
         GL_LUMINANCE_ALPHA => ReadKind::Color([usize::MAX, 3, 0, 0], 2),
         GL_DEPTH_COMPONENT => ReadKind::Depth,
         GL_STENCIL_INDEX => ReadKind::Stencil,
+        super::glext_enums::GL_DEPTH_STENCIL => ReadKind::DepthStencil,
         _ => return Err(GlError::InvalidEnum),
     };
     let tsize = match (ty, packed) {
@@ -235,6 +250,7 @@ fn read_pixels(
         (GL_UNSIGNED_BYTE | GL_BYTE, _) => 1,
         (GL_UNSIGNED_SHORT | GL_SHORT, _) => 2,
         (GL_UNSIGNED_INT | GL_INT | GL_FLOAT, _) => 4,
+        _ if ds_type => 4,
         _ => return Err(GlError::InvalidEnum),
     };
     c.check_outside_begin()?;
@@ -249,6 +265,9 @@ fn read_pixels(
     match kind {
         ReadKind::Depth if fb.depth.is_empty() => return Err(GlError::InvalidOperation),
         ReadKind::Stencil if fb.stencil.is_empty() => return Err(GlError::InvalidOperation),
+        ReadKind::DepthStencil if fb.depth.is_empty() || fb.stencil.is_empty() => {
+            return Err(GlError::InvalidOperation)
+        }
         _ => {}
     }
     if out.is_null() {
@@ -256,6 +275,7 @@ fn read_pixels(
     }
     let comps = match kind {
         ReadKind::Color(_, n) if packed.is_none() => n,
+        ReadKind::DepthStencil if ty != super::glext_enums::GL_UNSIGNED_INT_24_8 => 2,
         _ => 1,
     };
     let swap = c.state.pack.swap_bytes && tsize > 1;
@@ -394,10 +414,12 @@ fn read_pixels(
                         (GL_UNSIGNED_INT, DepthFormat::Z24, None) => {
                             put(p, ((z << 8) | (z >> 16)) as f64, false)
                         }
-                        (GL_UNSIGNED_INT, _, None) => put(p, ((z << 16) | z) as f64, false),
+                        (GL_UNSIGNED_INT, DepthFormat::Z16, None) => {
+                            put(p, ((z << 16) | z) as f64, false)
+                        }
                         // otherwise `read_depth_pixels`: float, scale and bias, pack
                         (_, format, sb) => {
-                            let mut d = shadow::readback(z, format.bits() as u8);
+                            let mut d = shadow::readback(z, format.texel_bits());
                             if let Some((scale, bias)) = sb {
                                 d = (d * scale + bias).clamp(0.0, 1.0);
                             }
@@ -413,10 +435,60 @@ fn read_pixels(
                     put(p, s as f64, false)
                 }
                 ReadKind::Stencil => put(p, fb.stencil[idx] as f64, false),
+                ReadKind::DepthStencil => {
+                    let mut s = fb.stencil[idx];
+                    if stencil_ops {
+                        s = stencil_transfer(&tr, maps, s as i64) as u8;
+                    }
+                    let fast = !stencil_ops && depth_scale_bias.is_none();
+                    for (k, word) in depth_stencil_words(fb, idx, s, ty, fast, depth_scale_bias)
+                        .iter()
+                        .enumerate()
+                        .take(comps)
+                    {
+                        let mut b = word.to_ne_bytes();
+                        if swap {
+                            b.reverse();
+                        }
+                        // SAFETY: 4·k < bpp bytes of this pixel, inside the packed image.
+                        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), p.add(4 * k), 4) };
+                    }
+                }
             }
         }
     }
     Ok(())
+}
+
+/// One GL_DEPTH_STENCIL pixel of glReadPixels (stencil `s` already transferred), as
+/// Mesa's `read_depth_stencil_pixels`: a Z24 buffer read as GL_UNSIGNED_INT_24_8 without
+/// transfer or byte swapping is copied (`z24 << 8 | s`); otherwise the depth is read as
+/// float (`_mesa_unpack_float_z_row`), scaled, biased and clamped, and packed by
+/// `_mesa_pack_depth_stencil_span`: `(GLuint)(d·f32(0xffffff)) << 8 | s`, or the float
+/// and then `s` in a second word.
+fn depth_stencil_words(
+    fb: &crate::framebuffer::Framebuffer,
+    idx: usize,
+    s: u8,
+    ty: GLenum,
+    fast: bool,
+    scale_bias: Option<(f32, f32)>,
+) -> [u32; 2] {
+    let z = fb.depth_at(idx);
+    let s = s as u32;
+    let z24 = ty == super::glext_enums::GL_UNSIGNED_INT_24_8;
+    if z24 && fast && fb.depth_format == DepthFormat::Z24 {
+        return [z << 8 | s, 0];
+    }
+    let mut d = shadow::readback(z, fb.depth_format.texel_bits());
+    if let Some((scale, bias)) = scale_bias {
+        d = (d * scale + bias).clamp(0.0, 1.0);
+    }
+    if z24 {
+        [((d * 16_777_215.0) as u32) << 8 | s, 0]
+    } else {
+        [d.to_bits(), s]
+    }
 }
 
 /// One pixel of a GL 1.2 packed type: component `k` of the format (RGBA channel `map[k]`)

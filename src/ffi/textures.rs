@@ -428,10 +428,10 @@ pub(crate) fn read_texels(
     }
     let scale_bias = tr.depth_scale_bias();
     let fb = c.read_fb().ok_or(GlError::InvalidOperation)?;
-    let fb_bits = fb.depth_format.bits();
-    if fb_bits <= 0 {
+    if fb.depth_format == crate::framebuffer::DepthFormat::None {
         return Err(GlError::InvalidOperation);
     }
+    let fb_bits = fb.depth_format.texel_bits();
     let mut out = vec![shadow::texel(0); w * h];
     for row in 0..h {
         let gy = y as i64 + row as i64;
@@ -446,8 +446,8 @@ pub(crate) fn read_texels(
             }
             let z = fb.depth_at(fy * fb.width + gx as usize);
             let z = match scale_bias {
-                Some(sb) => shadow::convert_scaled(z, fb_bits as u8, storage.depth_bits(), sb),
-                None => shadow::convert(z, fb_bits as u8, storage.depth_bits()),
+                Some(sb) => shadow::convert_scaled(z, fb_bits, storage.depth_bits(), sb),
+                None => shadow::convert(z, fb_bits, storage.depth_bits()),
             };
             out[row * w + col] = shadow::texel(z);
         }
@@ -1126,9 +1126,10 @@ fn get_level_parameter(
         GL_TEXTURE_COMPRESSED => 0.0,
         // no image is compressed (Mesa: GL_INVALID_OPERATION unless the image is)
         GL_TEXTURE_COMPRESSED_IMAGE_SIZE => return Err(GlError::InvalidOperation),
-        GL_TEXTURE_DEPTH_SIZE => img
-            .filter(|_| is_depth)
-            .map_or(0, |i| i.storage.depth_bits()) as f64,
+        GL_TEXTURE_DEPTH_SIZE => {
+            img.filter(|_| is_depth)
+                .map_or(0, |i| shadow::depth_size(i.storage.depth_bits())) as f64
+        }
         GL_TEXTURE_STENCIL_SIZE => img
             .filter(|i| shadow::is_depth_stencil(i.internal_format))
             .map_or(0, |_| 8) as f64,

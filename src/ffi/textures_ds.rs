@@ -11,6 +11,9 @@
 //!   here it is 0, or unchanged by glTexSubImage.
 //! - glCopyTexImage/glCopyTexSubImage copy the read framebuffer's stencil as well.
 //! - glGetTexImage(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8) returns `z24 << 8 | s` exactly.
+//! - GL_DEPTH32F_STENCIL8 images (GL_ARB_depth_buffer_float) keep float depth texels the
+//!   same way; their data may also be GL_FLOAT_32_UNSIGNED_INT_24_8_REV (docs/fbo-rules.md
+//!   §7.4).
 
 use super::types::*;
 use crate::context::pixel_transfer::stencil_transfer;

@@ -287,6 +287,9 @@ unsafe fn depth_q<const FMA: bool>(
         let z = sat(eval::<FMA>(&t.z, fx, fy));
         match f {
             DepthFormat::Z24 => _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0))),
+            // `sat` is llvmpipe's clamp (maxps then minps: NaN and −0 give +0), and the
+            // float's bits are stored.
+            DepthFormat::Z32F => _mm256_castps_si256(z),
             _ => {
                 // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
                 let v = _mm256_add_ps(

@@ -83,6 +83,7 @@ fn quantize_depth(format: DepthFormat, z: f32) -> u32 {
             };
             r as u32
         }
+        DepthFormat::Z32F => z.to_bits(),
         _ => format.quantize(z),
     }
 }

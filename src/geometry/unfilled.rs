@@ -13,6 +13,7 @@
 use super::ClipVertex;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Primitive;
+use crate::texture::shadow::FLOAT_BITS;
 
 /// Edge v0→v1.
 pub const EDGE_0: u8 = 1;
@@ -129,11 +130,26 @@ pub fn setup_offset(v: [&ClipVertex; 3], factor: f32, units: f32) -> f32 {
     units + m * factor
 }
 
+/// The offset units for a float depth buffer (the draw module's and llvmpipe's
+/// `floating_point_depth` case): `units · 2^(e − 23)` with `e` the exponent of the largest
+/// |z| of the triangle, taken on the float's bits (0 when `e < 23`).
+pub fn float_units(units: f32, z: [f32; 3]) -> f32 {
+    let m = z[0].abs().max(z[1].abs()).max(z[2].abs());
+    let e = (m.to_bits() & (0xff << 23)) as i32 - (23 << 23);
+    units * f32::from_bits(e.max(0) as u32)
+}
+
 /// The offset units as the draw module and llvmpipe scale them for a depth buffer of
 /// `bits` bits: `(float)(units · mrd · 2)` with `mrd = 1 / (2^bits − 1)` in double.
+///
+/// A float depth buffer ([`FLOAT_BITS`] as `bits`) keeps the units as given: they are
+/// scaled per triangle by [`float_units`].
 pub fn scaled_units(units: f32, bits: u32) -> f32 {
     if bits == 0 {
         return 0.0;
+    }
+    if bits == FLOAT_BITS as u32 {
+        return units;
     }
     let mrd = 1.0f64 / (((1u64 << bits) - 1) as f64);
     (units as f64 * mrd * 2.0) as f32

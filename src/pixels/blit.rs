@@ -243,7 +243,7 @@ impl Job {
         // buffer of the depth-stencil format; otherwise depth takes the blitter's shader.
         let whole = sc == [bx as i64, by as i64, (bx + bw) as i64, (by + bh) as i64];
         let exact_depth = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
-        let bits = s.depth_format.bits() as u8;
+        let bits = s.depth_format.texel_bits();
         let write =
             |d: &mut Framebuffer, px: i64, py: i64, c: Option<[u8; 4]>, t: (usize, usize)| {
                 let di = py as usize * d.width + px as usize;

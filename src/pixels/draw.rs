@@ -426,9 +426,9 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
             run(ctx, &q, Source::Color(&c));
         }
         CopyKind::Depth => {
-            let max = fb.depth_format.max_value() as f32;
+            let f = fb.depth_format;
             let z: Vec<f32> = (0..w * h)
-                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| fb.depth_at(s) as f32 / max))
+                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| f.to_float(fb.depth_at(s))))
                 .collect();
             let c = ctx.state.current.color.map(unorm8);
             run(ctx, &q, Source::Depth(&z, c));

@@ -11,11 +11,12 @@ use crate::framebuffer::Target;
 use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::unfilled::{
-    decompose, determinant, draw_offset, fill_mode, scaled_units, setup_offset, EDGE_0, EDGE_1,
-    EDGE_2,
+    decompose, determinant, draw_offset, fill_mode, float_units, scaled_units, setup_offset,
+    EDGE_0, EDGE_1, EDGE_2,
 };
 use crate::geometry::{ClipVertex, Viewport};
 use crate::stats::Stats;
+use crate::texture::shadow::FLOAT_BITS;
 use crate::texture::UnitPlan;
 
 /// The point size llvmpipe rasterizes without attenuation: glPointSize clamped to
@@ -48,7 +49,15 @@ pub fn draw_point(
 /// Adds llvmpipe's setup-time polygon offset (`lp_do_offset_tri`) to a set-up triangle:
 /// computed on the vertices in setup order (clockwise triangles swap v0 and v1) and, as an
 /// approximation of llvmpipe's per-fragment addition, folded into the z plane's origin.
-pub fn apply_setup_offset(v: [&ClipVertex; 3], factor: f32, units: f32, t: &mut SetupTriangle) {
+///
+/// `units` are scaled already, except for a float depth buffer (`float`), whose units
+/// llvmpipe scales per triangle by the exponent of its largest |z| ([`float_units`]).
+pub fn apply_setup_offset(
+    v: [&ClipVertex; 3],
+    factor: f32,
+    (units, float): (f32, bool),
+    t: &mut SetupTriangle,
+) {
     use crate::geometry::setup::snap;
     let (x0, y0) = (snap(v[0].win[0]), snap(v[0].win[1]));
     let (x1, y1) = (snap(v[1].win[0]), snap(v[1].win[1]));
@@ -58,6 +67,11 @@ pub fn apply_setup_offset(v: [&ClipVertex; 3], factor: f32, units: f32, t: &mut 
         [v[0], v[1], v[2]]
     } else {
         [v[1], v[0], v[2]]
+    };
+    let units = if float {
+        float_units(units, [v[0].win[2], v[1].win[2], v[2].win[2]])
+    } else {
+        units
     };
     t.z.a0 += setup_offset(order, factor, units);
 }
@@ -269,7 +283,11 @@ impl PolyPipeline<'_> {
             FillMode::Point => Cap::PolygonOffsetPoint,
         });
         if offset_on {
-            let units = scaled_units(pol.offset_units, self.depth_bits);
+            let units = if self.depth_bits == FLOAT_BITS as u32 {
+                float_units(pol.offset_units, [p[0].win[2], p[1].win[2], p[2].win[2]])
+            } else {
+                scaled_units(pol.offset_units, self.depth_bits)
+            };
             let off = draw_offset([&p[0], &p[1], &p[2]], det, pol.offset_factor, units);
             for q in &mut p {
                 q.win[2] = (q.win[2] + off).clamp(0.0, 1.0);

@@ -8,6 +8,10 @@
 //! GL_UNSIGNED_INT data) and Z24X8 otherwise (measured with GL_TEXTURE_DEPTH_SIZE).
 //! Client depth values become `z = (GLuint)(d·(GLfloat)max)` (`_mesa_unpack_depth_span`:
 //! f32 product, truncated; f64 for 32 bits), d clamped to [0, 1].
+//! GL_DEPTH_COMPONENT32F and GL_DEPTH32F_STENCIL8 (GL_ARB_depth_buffer_float) are
+//! Z32_FLOAT(_S8X24_UINT): the texel holds the f32's bits, the client value clamped with
+//! Mesa's `CLAMP` (float data always takes that path, never a memcpy). Their "bits" are
+//! [`FLOAT_BITS`], which every conversion here checks first.
 //!
 //! # Sampling (`lp_bld_sample_soa.c`, always the float path)
 //! - A texel becomes `float(z)·f32(1/max)` (16, 24 bits) or, for 32 bits, the 23 top bits
@@ -123,15 +127,29 @@ impl DepthMode {
     }
 }
 
+/// The "bits" of a float depth image (Z32_FLOAT): not a bit count, a tag the conversions
+/// here recognise (GL_TEXTURE_DEPTH_SIZE reports 32 for it: [`depth_size`]).
+pub const FLOAT_BITS: u8 = 0xFF;
+
+/// GL_TEXTURE_DEPTH_SIZE of an image of `bits`.
+pub fn depth_size(bits: u8) -> u8 {
+    if bits == FLOAT_BITS {
+        32
+    } else {
+        bits
+    }
+}
+
 /// Depth bits Mesa stores for a depth internal format given with client type `ty` (0 for
 /// a copy).
 pub fn depth_bits(internal: u32, ty: u32) -> u8 {
     use crate::ffi::enums::{GL_UNSIGNED_INT, GL_UNSIGNED_SHORT};
     use crate::ffi::glext_enums::{
-        GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
-        GL_DEPTH_STENCIL,
+        GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
+        GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F, GL_DEPTH_STENCIL,
     };
     match internal {
+        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => FLOAT_BITS,
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => 24,
         GL_DEPTH_COMPONENT16 => 16,
         GL_DEPTH_COMPONENT24 => 24,
@@ -145,11 +163,20 @@ pub fn depth_bits(internal: u32, ty: u32) -> u8 {
 }
 
 /// Whether a glTexImage internal format is a packed depth-stencil one (GL_DEPTH_STENCIL,
-/// GL_DEPTH24_STENCIL8): stored as Z24 with 8 stencil bits (GL_TEXTURE_DEPTH_SIZE 24,
-/// GL_TEXTURE_STENCIL_SIZE 8, measured).
+/// GL_DEPTH24_STENCIL8: stored as Z24 with 8 stencil bits, GL_TEXTURE_DEPTH_SIZE 24,
+/// GL_TEXTURE_STENCIL_SIZE 8, measured; GL_DEPTH32F_STENCIL8: float depth, 32 and 8).
 pub fn is_depth_stencil(internal: u32) -> bool {
-    use crate::ffi::glext_enums::{GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL};
-    matches!(internal, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8)
+    use crate::ffi::glext_enums::{GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL};
+    matches!(
+        internal,
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 | GL_DEPTH32F_STENCIL8
+    )
+}
+
+/// Mesa's `CLAMP(d, 0, 1)` (NaN and −0 pass through) as stored in a float image.
+fn store_float(d: f32) -> u32 {
+    // `f32::clamp` compares as `CLAMP` does
+    d.clamp(0.0, 1.0).to_bits()
 }
 
 /// The largest stored value of `bits` bits.
@@ -160,6 +187,9 @@ fn zmax(bits: u8) -> u64 {
 
 /// A client depth value in [0, 1] as stored with `bits` bits.
 pub fn store(d: f32, bits: u8) -> u32 {
+    if bits == FLOAT_BITS {
+        return store_float(d);
+    }
     let d = if d > 0.0 { d.min(1.0) } else { 0.0 };
     if bits >= 32 {
         (d as f64 * zmax(32) as f64).min(u32::MAX as f64) as u32
@@ -173,7 +203,9 @@ pub fn store(d: f32, bits: u8) -> u32 {
 /// `round_half_even(f32(d·max))` (llvmpipe-rules §8).
 pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
     let d = sample_value(z, bits).clamp(0.0, 1.0);
-    if to >= 32 {
+    if to == FLOAT_BITS {
+        crate::framebuffer::DepthFormat::Z32F.quantize(d)
+    } else if to >= 32 {
         (d as f64 * zmax(32) as f64).round_ties_even() as u32
     } else {
         (d * zmax(to) as f32).round_ties_even() as u32
@@ -184,7 +216,13 @@ pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
 /// GL_DEPTH_SCALE/GL_DEPTH_BIAS: Mesa's CPU copy (`fallback_copy_texsubimage`) widens it
 /// to 32 bits by bit replication, computes `trunc(clamp(z32·scale + bias·(2³²−1)))` in
 /// f64 and keeps the top `to` bits.
+///
+/// With a float image on either side the copy is taken as float (`d·scale + bias`,
+/// clamped; not measured).
 pub fn convert_scaled(z: u32, bits: u8, to: u8, (scale, bias): (f32, f32)) -> u32 {
+    if bits == FLOAT_BITS || to == FLOAT_BITS {
+        return store(readback(z, bits) * scale + bias, to);
+    }
     let z32 = match bits {
         16 => (z << 16) | z,
         24 => (z << 8) | (z >> 16),
@@ -202,6 +240,7 @@ pub fn convert_scaled(z: u32, bits: u8, to: u8, (scale, bias): (f32, f32)) -> u3
 /// The float Mesa reads a stored value back as (`_mesa_unpack_float_z_row`).
 pub fn readback(z: u32, bits: u8) -> f32 {
     match bits {
+        FLOAT_BITS => f32::from_bits(z),
         16 => z as f32 * (1.0f32 / 65535.0),
         b => (z as f64 * (1.0 / zmax(b) as f64)) as f32,
     }
@@ -210,7 +249,9 @@ pub fn readback(z: u32, bits: u8) -> f32 {
 /// The float the sampler converts a stored value to.
 #[inline(always)]
 pub fn sample_value(z: u32, bits: u8) -> f32 {
-    if bits >= 32 {
+    if bits == FLOAT_BITS {
+        f32::from_bits(z)
+    } else if bits >= 32 {
         let m = f32::from_bits((z >> 9) | 0x3f80_0000) - 1.0;
         m * (8388608.0f64 / 8388607.0) as f32
     } else {
@@ -283,7 +324,12 @@ fn filter_level(
             }
         },
         Some(func) => {
-            let rc = r.clamp(0.0, 1.0);
+            // gallivm clamps the reference only for formats that are not float
+            let rc = if d.bits == FLOAT_BITS {
+                r
+            } else {
+                r.clamp(0.0, 1.0)
+            };
             let pass = |x, y| func.test(rc, value(x, y));
             match filter {
                 Filter::Nearest => {
@@ -464,7 +510,8 @@ pub unsafe fn unpack_stencil(
     let mut out = Vec::with_capacity(w * h);
     for y in 0..h {
         for x in 0..w {
-            let o = lay.start + y * lay.stride + x * lay.bpp;
+            // GL_FLOAT_32_UNSIGNED_INT_24_8_REV keeps it in the second word
+            let o = lay.start + y * lay.stride + x * lay.bpp + (lay.bpp - 4);
             let mut raw = [0u8; 4];
             raw.copy_from_slice(&bytes[o..o + 4]);
             if ps.swap_bytes {
@@ -527,10 +574,12 @@ pub unsafe fn pack(
     }
 }
 
-/// Packs a GL_DEPTH24_STENCIL8 image for glGetTexImage(GL_DEPTH_STENCIL,
-/// GL_UNSIGNED_INT_24_8): `z24 << 8 | stencil`, untouched by GL_DEPTH_SCALE/BIAS
-/// (`_mesa_unpack_uint_24_8_depth_stencil_row`; measured: the uploaded values come back
-/// unchanged). `stencil` holds the image's indices (missing ones read as 0).
+/// Packs a packed depth-stencil image for glGetTexImage(GL_DEPTH_STENCIL, type), untouched
+/// by GL_DEPTH_SCALE/BIAS (`_mesa_unpack_depth_stencil_row`; measured: the uploaded values
+/// come back unchanged). GL_UNSIGNED_INT_24_8: `z24 << 8 | stencil` (a float image's z24
+/// is `(GLuint)(z·f32(0xffffff))`); GL_FLOAT_32_UNSIGNED_INT_24_8_REV: the float depth (a
+/// Z24 image's `z24 / (2²⁴−1)` in f64), then the stencil in the low byte of a second word.
+/// `stencil` holds the image's indices (missing ones read as 0).
 ///
 /// # Safety
 /// `dst` must be writable for the packed image.
@@ -546,18 +595,29 @@ pub unsafe fn pack_depth_stencil(
     if dst.is_null() || w == 0 || h == 0 {
         return;
     }
+    let float = img.storage.depth_bits() == FLOAT_BITS;
     // SAFETY: the caller guarantees `span` writable bytes.
     let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
     for y in 0..h {
         for x in 0..w {
-            let z = texel_z(img.texel(x, y)) & 0xff_ffff;
-            let s = stencil.get(y * w + x).copied().unwrap_or(0);
-            let mut v = (z << 8 | s as u32).to_ne_bytes();
-            if ps.swap_bytes {
-                v.reverse();
-            }
+            let z = texel_z(img.texel(x, y));
+            let s = stencil.get(y * w + x).copied().unwrap_or(0) as u32;
+            let words = match (cf.gl_type, float) {
+                (crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8, false) => [z << 8 | s, 0],
+                (crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8, true) => {
+                    [((f32::from_bits(z) * 16_777_215.0) as u32) << 8 | s, 0]
+                }
+                (_, true) => [z, s],
+                (_, false) => [((z as f64 / 16_777_215.0) as f32).to_bits(), s],
+            };
             let o = lay.start + y * lay.stride + x * lay.bpp;
-            bytes[o..o + 4].copy_from_slice(&v);
+            for (k, word) in words.iter().enumerate().take(lay.bpp / 4) {
+                let mut v = word.to_ne_bytes();
+                if ps.swap_bytes {
+                    v.reverse();
+                }
+                bytes[o + 4 * k..o + 4 * k + 4].copy_from_slice(&v);
+            }
         }
     }
 }

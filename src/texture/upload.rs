@@ -24,6 +24,9 @@ use crate::ffi::glext_enums::{
     GL_DEPTH_STENCIL, GL_SLUMINANCE, GL_SLUMINANCE8, GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA,
     GL_SRGB, GL_SRGB8, GL_SRGB8_ALPHA8, GL_SRGB_ALPHA, GL_UNSIGNED_INT_24_8,
 };
+use crate::ffi::glext_enums::{
+    GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT32F, GL_FLOAT_32_UNSIGNED_INT_24_8_REV,
+};
 
 /// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
 pub fn base_format(internal: i32) -> Option<BaseFormat> {
@@ -55,6 +58,8 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
         // packed depth-stencil images are depth images that also keep stencil indices
         // (see `shadow`)
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => B::Depth,
+        // GL_ARB_depth_buffer_float: float depth images (see `shadow`)
+        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => B::Depth,
         // sRGB: stored like their linear counterparts, decoded when sampled (`srgb`)
         GL_SRGB | GL_SRGB8 => B::Rgb,
         GL_SRGB_ALPHA | GL_SRGB8_ALPHA8 => B::Rgba,
@@ -224,6 +229,8 @@ fn pixel_type(ty: u32) -> Option<Ty> {
         GL_UNSIGNED_INT_2_10_10_10_REV => packed(4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
         // depth in the top 24 bits, stencil in the low 8 (GL_DEPTH_STENCIL only)
         GL_UNSIGNED_INT_24_8 => packed(4, &[(8, 24)]),
+        // a float depth word, then a word with the stencil in its low 8 bits
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV => packed(8, &[(0, 32)]),
         _ => return None,
     })
 }
@@ -242,12 +249,14 @@ pub struct ClientFormat {
 impl ClientFormat {
     /// Validates `format`/`type`: unknown → GL_INVALID_ENUM, a packed type whose component
     /// count does not match the format → GL_INVALID_OPERATION. GL_DEPTH_STENCIL takes only
-    /// GL_UNSIGNED_INT_24_8 (another type is GL_INVALID_ENUM), and GL_UNSIGNED_INT_24_8 only
-    /// GL_DEPTH_STENCIL (GL_INVALID_OPERATION), as Mesa 22.3 checks them.
+    /// GL_UNSIGNED_INT_24_8 and GL_FLOAT_32_UNSIGNED_INT_24_8_REV (another type is
+    /// GL_INVALID_ENUM), and those two only GL_DEPTH_STENCIL (GL_INVALID_OPERATION), as
+    /// Mesa 22.3 checks them.
     pub fn new(format: u32, ty: u32) -> GlResult<ClientFormat> {
         let comps = format_components(format).ok_or(GlError::InvalidEnum)?;
         let t = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
-        if (format == GL_DEPTH_STENCIL) != (ty == GL_UNSIGNED_INT_24_8) {
+        let ds_type = matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV);
+        if (format == GL_DEPTH_STENCIL) != ds_type {
             return Err(if format == GL_DEPTH_STENCIL {
                 GlError::InvalidEnum
             } else {
