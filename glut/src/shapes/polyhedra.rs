@@ -16,8 +16,10 @@ fn phi() -> f64 {
     (1.0 + 5f64.sqrt()) / 2.0
 }
 
+/// Rounds to single precision; a coordinate within 1e-12 of zero (the rounding error
+/// of a cosine or a cross product that is zero in exact arithmetic) becomes 0.
 fn f32v(v: [f64; 3]) -> [f32; 3] {
-    [v[0] as f32, v[1] as f32, v[2] as f32]
+    v.map(|c| if c.abs() < 1e-12 { 0.0 } else { c as f32 })
 }
 
 /// A polyhedron: vertex positions, one normal per face, and each face's vertex
@@ -272,11 +274,16 @@ pub fn rhombic_dodecahedron() -> Solid {
 pub fn tetrahedron() -> Solid {
     let verts = tetra_verts();
     Solid {
-        normals: verts.iter().map(|v| v.map(|c| -c)).collect(),
+        normals: verts.iter().map(|&v| away(v)).collect(),
         verts,
         faces: TETRA_FACES,
         corners: 3,
     }
+}
+
+/// The direction opposite `v`, with zero coordinates +0 (not -0).
+fn away(v: [f32; 3]) -> [f32; 3] {
+    v.map(|c| 0.0 - c)
 }
 
 /// Face `i` of the tetrahedron is the one opposite vertex `i`.
@@ -301,7 +308,7 @@ fn sponge_faces(levels: u32, offset: [f64; 3], scale: f32, t: &[[f32; 3]], m: &m
             for &v in face {
                 let p = t[usize::from(v)];
                 let at = |k: usize| offset[k] as f32 + scale * p[k];
-                m.push([at(0), at(1), at(2)], n.map(|c| -c));
+                m.push([at(0), at(1), at(2)], away(*n));
             }
         }
         return;
