@@ -277,3 +277,35 @@ tea_set! {
     /// `glutWireTeaspoon` (freeglut).
     glutWireTeaspoon, TEASPOON, false, 2.5;
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_and_outward_body_normals() {
+        let m = evaluate(&TEAPOT, SOLID_GRID, 1.0);
+        // 6 patches turned to four quadrants, 4 mirrored once.
+        assert_eq!(m.len(), (6 * 4 + 4 * 2) * SOLID_GRID * SOLID_GRID);
+        // The body patches (1 and 2, all quadrants): normals point away from the y axis.
+        let per = SOLID_GRID * SOLID_GRID;
+        for copy in 0..4 {
+            let start = (4 + copy) * per;
+            for k in start..start + per {
+                let (v, n) = (&m.verts[3 * k..3 * k + 3], &m.norms[3 * k..3 * k + 3]);
+                assert!(v[0] * n[0] + v[2] * n[2] > 0.0, "{v:?} {n:?}");
+            }
+        }
+        assert_eq!(triangles(32, SOLID_GRID).len(), 32 * 49 * 6);
+        assert_eq!(strips(32, WIRE_GRID).len(), 32 * 100 * 2);
+    }
+
+    #[test]
+    fn teacup_and_teaspoon_are_finite_and_sized() {
+        for (obj, patches) in [(&TEACUP, 6 * 4 + 2), (&TEASPOON, 16)] {
+            let m = evaluate(obj, WIRE_GRID, 1.0);
+            assert_eq!(m.len(), patches * WIRE_GRID * WIRE_GRID);
+            assert!(m.verts.iter().all(|c| c.is_finite() && c.abs() < 2.0));
+        }
+    }
+}

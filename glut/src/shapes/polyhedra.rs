@@ -333,3 +333,65 @@ pub fn sponge(levels: i32, offset: [f64; 3], scale: f32, solid: bool) {
         draw::wire(&m, None, 3, GL_LINE_LOOP, &[], 0);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn all() -> Vec<(&'static str, Solid, f32)> {
+        vec![
+            ("cube", cube(), 0.75f32.sqrt()),
+            ("dodecahedron", dodecahedron(), 3f32.sqrt()),
+            ("icosahedron", icosahedron(), 1.0),
+            ("octahedron", octahedron(), 1.0),
+            ("rhombic dodecahedron", rhombic_dodecahedron(), 1.0),
+            ("tetrahedron", tetrahedron(), 1.0),
+        ]
+    }
+
+    #[test]
+    fn faces_are_flat_outward_and_counter_clockwise() {
+        for (name, s, radius) in all() {
+            for v in &s.verts {
+                let r = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+                // The rhombic dodecahedron's side corners lie inside its radius.
+                assert!(r <= radius + 1e-6, "{name}: {v:?}");
+            }
+            for (face, n) in s.faces.chunks_exact(s.corners).zip(&s.normals) {
+                let p: Vec<[f64; 3]> = face
+                    .iter()
+                    .map(|&i| s.verts[usize::from(i)].map(f64::from))
+                    .collect();
+                let dot = |a: [f64; 3]| {
+                    a[0] * f64::from(n[0]) + a[1] * f64::from(n[1]) + a[2] * f64::from(n[2])
+                };
+                for q in &p {
+                    assert!((dot(*q) - dot(p[0])).abs() < 1e-5, "{name}: face not flat");
+                }
+                assert!(dot(p[0]) > 0.0, "{name}: normal points inwards");
+                for k in 0..p.len() {
+                    let (a, b, c) = (p[k], p[(k + 1) % p.len()], p[(k + 2) % p.len()]);
+                    let (u, w) = (sub(b, a), sub(c, b));
+                    let turn = [
+                        u[1] * w[2] - u[2] * w[1],
+                        u[2] * w[0] - u[0] * w[2],
+                        u[0] * w[1] - u[1] * w[0],
+                    ];
+                    assert!(dot(turn) > 0.0, "{name}: face winds clockwise");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_vertex_is_used_and_sponge_levels_multiply() {
+        for (name, s, _) in all() {
+            for i in 0..s.verts.len() {
+                assert!(s.faces.contains(&(i as u8)), "{name}: vertex {i} unused");
+            }
+        }
+        let mut m = Mesh::with_capacity(0);
+        sponge_faces(2, [0.0; 3], 1.0, &tetra_verts(), &mut m);
+        assert_eq!(m.len(), 12 * 16);
+    }
+}

@@ -274,3 +274,33 @@ pub fn torus(inner: f32, outer: f32, sides: i32, rings: i32, solid: bool) {
         draw::wire(&m, Some(&ring_loops), ns, GL_LINE_LOOP, &side_loops, nr);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circle_tables_close_and_run_both_ways() {
+        let (s, c) = circle_table(6, false);
+        assert_eq!((s[6], c[6]), (s[0], c[0]));
+        assert!(s[1] > 0.0 && (c[1] - 0.5).abs() < 1e-6);
+        let (s, _) = circle_table(-6, false);
+        assert!(s[1] < 0.0);
+        let (s, c) = circle_table(4, true);
+        assert_eq!((s[4], c[4]), (0.0, -1.0));
+        assert!((s[2] - 1.0).abs() < 1e-6 && c[2].abs() < 1e-6);
+    }
+
+    #[test]
+    fn sphere_normals_are_unit_and_radial() {
+        let m = sphere_mesh(2.0, 7, 5);
+        assert_eq!(m.len(), 7 * 4 + 2);
+        for (v, n) in m.verts.chunks_exact(3).zip(m.norms.chunks_exact(3)) {
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            assert!((len - 1.0).abs() < 1e-6);
+            for k in 0..3 {
+                assert!((v[k] - 2.0 * n[k]).abs() < 1e-6);
+            }
+        }
+    }
+}
