@@ -173,7 +173,7 @@ fn side(
 
 /// Draws the cone: base of radius `base` on z = 0, apex at z = `height`.
 pub fn cone(base: f32, height: f32, slices: i32, stacks: i32, solid: bool) {
-    if slices < 1 || stacks < 1 || !fits(i64::from(slices) * i64::from(stacks + 2) + 1) {
+    if slices < 1 || stacks < 1 || !fits(i64::from(slices) * (i64::from(stacks) + 2) + 1) {
         return;
     }
     let z_step = height / stacks as f32;
@@ -204,7 +204,7 @@ pub fn cone(base: f32, height: f32, slices: i32, stacks: i32, solid: bool) {
 
 /// Draws the cylinder: radius `radius`, z from 0 to `height`, with both end caps.
 pub fn cylinder(radius: f32, height: f32, slices: i32, stacks: i32, solid: bool) {
-    if slices < 1 || stacks < 1 || !fits(i64::from(slices) * i64::from(stacks + 3) + 2) {
+    if slices < 1 || stacks < 1 || !fits(i64::from(slices) * (i64::from(stacks) + 3) + 2) {
         return;
     }
     let z_step = height / stacks as f32;
