@@ -26,41 +26,13 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::OnceLock;
 
 #[path = "support/paths.rs"]
 mod paths;
-use paths::{profile_dir, root};
-
-/// Builds `libsoftglut.so` and `libsoftgl.so` once (this test's profile); returns the
-/// folder holding both.
-fn libs_dir() -> &'static Path {
-    static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
-        let profile = profile_dir();
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let mut cmd = Command::new(cargo);
-        cmd.current_dir(root())
-            .args(["build", "-p", "softglut", "-p", "softgl", "--lib"]);
-        if profile.file_name().and_then(|n| n.to_str()) == Some("release") {
-            cmd.arg("--release");
-        }
-        cmd.env("CARGO_TARGET_DIR", profile.parent().expect("target dir"));
-        let status = cmd.status().expect("run cargo build");
-        assert!(status.success(), "cargo build -p softglut -p softgl failed");
-        profile
-    })
-}
-
-/// `target/glu_reference/`.
-fn work_dir() -> PathBuf {
-    let d = profile_dir()
-        .parent()
-        .map(|t| t.join("glu_reference"))
-        .unwrap_or_else(|| root().join("target/glu_reference"));
-    fs::create_dir_all(&d).expect("mkdir target/glu_reference");
-    d
-}
+#[path = "support/softglut_libs.rs"]
+mod softglut_libs;
+use paths::root;
+use softglut_libs::libs_dir;
 
 /// Which GLU and which GL a program is linked with.
 #[derive(Clone, Copy, Debug)]
@@ -77,7 +49,8 @@ enum Link {
 fn build(name: &str, link: Link) -> PathBuf {
     let libs = libs_dir();
     let src = root().join("tests/glu_reference").join(format!("{name}.c"));
-    let out = work_dir().join(format!("{name}.{link:?}").to_lowercase());
+    let out =
+        softglut_libs::work_dir("glu_reference").join(format!("{name}.{link:?}").to_lowercase());
     let mut cmd = Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()));
     cmd.arg(&src)
         .args(["-O1", "-Wall", "-Werror", "-o"])
@@ -115,17 +88,7 @@ fn build(name: &str, link: Link) -> PathBuf {
 /// Runs a binary (llvmpipe pinned to one thread) and returns what it wrote.
 fn run(bin: &Path) -> Vec<u8> {
     let out = bin.with_extension("out");
-    let o = Command::new(bin)
-        .arg(&out)
-        .env("LP_NUM_THREADS", "1")
-        .output()
-        .expect("run test program");
-    assert!(
-        o.status.success(),
-        "{} failed: {}",
-        bin.display(),
-        String::from_utf8_lossy(&o.stderr)
-    );
+    softglut_libs::run_checked(Command::new(bin).arg(&out).env("LP_NUM_THREADS", "1"));
     fs::read(&out).expect("read output")
 }
 

@@ -1,531 +1,281 @@
-//! The teapot: Martin Newell's 1975 Utah teapot, 32 bicubic Bézier patches over 306
-//! control points (the published teaset data), evaluated on a grid per patch.
+//! The tea set — teapot, teacup, teaspoon — as freeglut 3.4 tessellates it: each
+//! bicubic Bézier patch of [`data`] evaluated in single precision on an 8 x 8 grid
+//! (solid) or a 10 x 10 grid (wire), with the same Bernstein weights, sums in the same
+//! order, the same normals and the same triangles and line strips, so it rasterises
+//! to freeglut's pixels.
 //!
-//! GLUT's placement: the data's z axis (up) becomes y, the teapot is lowered by 1.5
-//! units and scaled by half the size argument.
+//! Placement: the data's z axis (up) becomes y, the object is lowered by its centre
+//! height and scaled by half the size argument, all folded into the control points.
+//! Quirk kept from freeglut: normals are computed once, at the first size drawn; a
+//! later size only moves the vertices.
 
 #![allow(non_snake_case)]
 
-use crate::gl::im;
-use crate::gl::{GL_LINE_STRIP, GL_QUADS};
+pub mod data;
 
-/// Control-point indices of the patches, four rows of four.
-const PATCHES: [[u16; 16]; 32] = [
-    [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15],
-    [3, 16, 17, 18, 7, 19, 20, 21, 11, 22, 23, 24, 15, 25, 26, 27],
-    [
-        18, 28, 29, 30, 21, 31, 32, 33, 24, 34, 35, 36, 27, 37, 38, 39,
-    ],
-    [30, 40, 41, 0, 33, 42, 43, 4, 36, 44, 45, 8, 39, 46, 47, 12],
-    [
-        12, 13, 14, 15, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59,
-    ],
-    [
-        15, 25, 26, 27, 51, 60, 61, 62, 55, 63, 64, 65, 59, 66, 67, 68,
-    ],
-    [
-        27, 37, 38, 39, 62, 69, 70, 71, 65, 72, 73, 74, 68, 75, 76, 77,
-    ],
-    [
-        39, 46, 47, 12, 71, 78, 79, 48, 74, 80, 81, 52, 77, 82, 83, 56,
-    ],
-    [
-        56, 57, 58, 59, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95,
-    ],
-    [
-        59, 66, 67, 68, 87, 96, 97, 98, 91, 99, 100, 101, 95, 102, 103, 104,
-    ],
-    [
-        68, 75, 76, 77, 98, 105, 106, 107, 101, 108, 109, 110, 104, 111, 112, 113,
-    ],
-    [
-        77, 82, 83, 56, 107, 114, 115, 84, 110, 116, 117, 88, 113, 118, 119, 92,
-    ],
-    [
-        120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135,
-    ],
-    [
-        123, 136, 137, 120, 127, 138, 139, 124, 131, 140, 141, 128, 135, 142, 143, 132,
-    ],
-    [
-        132, 133, 134, 135, 144, 145, 146, 147, 148, 149, 150, 151, 68, 152, 153, 154,
-    ],
-    [
-        135, 142, 143, 132, 147, 155, 156, 144, 151, 157, 158, 148, 154, 159, 160, 68,
-    ],
-    [
-        161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176,
-    ],
-    [
-        164, 177, 178, 161, 168, 179, 180, 165, 172, 181, 182, 169, 176, 183, 184, 173,
-    ],
-    [
-        173, 174, 175, 176, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196,
-    ],
-    [
-        176, 183, 184, 173, 188, 197, 198, 185, 192, 199, 200, 189, 196, 201, 202, 193,
-    ],
-    [
-        203, 203, 203, 203, 206, 207, 208, 209, 210, 210, 210, 210, 211, 212, 213, 214,
-    ],
-    [
-        203, 203, 203, 203, 209, 216, 217, 218, 210, 210, 210, 210, 214, 219, 220, 221,
-    ],
-    [
-        203, 203, 203, 203, 218, 223, 224, 225, 210, 210, 210, 210, 221, 226, 227, 228,
-    ],
-    [
-        203, 203, 203, 203, 225, 229, 230, 206, 210, 210, 210, 210, 228, 231, 232, 211,
-    ],
-    [
-        211, 212, 213, 214, 233, 234, 235, 236, 237, 238, 239, 240, 241, 242, 243, 244,
-    ],
-    [
-        214, 219, 220, 221, 236, 245, 246, 247, 240, 248, 249, 250, 244, 251, 252, 253,
-    ],
-    [
-        221, 226, 227, 228, 247, 254, 255, 256, 250, 257, 258, 259, 253, 260, 261, 262,
-    ],
-    [
-        228, 231, 232, 211, 256, 263, 264, 233, 259, 265, 266, 237, 262, 267, 268, 241,
-    ],
-    [
-        269, 269, 269, 269, 278, 279, 280, 281, 274, 275, 276, 277, 270, 271, 272, 273,
-    ],
-    [
-        269, 269, 269, 269, 281, 288, 289, 290, 277, 285, 286, 287, 273, 282, 283, 284,
-    ],
-    [
-        269, 269, 269, 269, 290, 297, 298, 299, 287, 294, 295, 296, 284, 291, 292, 293,
-    ],
-    [
-        269, 269, 269, 269, 299, 304, 305, 278, 296, 302, 303, 274, 293, 300, 301, 270,
-    ],
-];
+use crate::gl::GL_LINE_STRIP;
+use crate::shapes::draw::{self, Mesh};
+use std::sync::Mutex;
 
-/// The control points (z up).
-const VERTS: [[f32; 3]; 306] = [
-    [1.4, 0.0, 2.4],
-    [1.4, -0.784, 2.4],
-    [0.784, -1.4, 2.4],
-    [0.0, -1.4, 2.4],
-    [1.3375, 0.0, 2.53125],
-    [1.3375, -0.749, 2.53125],
-    [0.749, -1.3375, 2.53125],
-    [0.0, -1.3375, 2.53125],
-    [1.4375, 0.0, 2.53125],
-    [1.4375, -0.805, 2.53125],
-    [0.805, -1.4375, 2.53125],
-    [0.0, -1.4375, 2.53125],
-    [1.5, 0.0, 2.4],
-    [1.5, -0.84, 2.4],
-    [0.84, -1.5, 2.4],
-    [0.0, -1.5, 2.4],
-    [-0.784, -1.4, 2.4],
-    [-1.4, -0.784, 2.4],
-    [-1.4, 0.0, 2.4],
-    [-0.749, -1.3375, 2.53125],
-    [-1.3375, -0.749, 2.53125],
-    [-1.3375, 0.0, 2.53125],
-    [-0.805, -1.4375, 2.53125],
-    [-1.4375, -0.805, 2.53125],
-    [-1.4375, 0.0, 2.53125],
-    [-0.84, -1.5, 2.4],
-    [-1.5, -0.84, 2.4],
-    [-1.5, 0.0, 2.4],
-    [-1.4, 0.784, 2.4],
-    [-0.784, 1.4, 2.4],
-    [0.0, 1.4, 2.4],
-    [-1.3375, 0.749, 2.53125],
-    [-0.749, 1.3375, 2.53125],
-    [0.0, 1.3375, 2.53125],
-    [-1.4375, 0.805, 2.53125],
-    [-0.805, 1.4375, 2.53125],
-    [0.0, 1.4375, 2.53125],
-    [-1.5, 0.84, 2.4],
-    [-0.84, 1.5, 2.4],
-    [0.0, 1.5, 2.4],
-    [0.784, 1.4, 2.4],
-    [1.4, 0.784, 2.4],
-    [0.749, 1.3375, 2.53125],
-    [1.3375, 0.749, 2.53125],
-    [0.805, 1.4375, 2.53125],
-    [1.4375, 0.805, 2.53125],
-    [0.84, 1.5, 2.4],
-    [1.5, 0.84, 2.4],
-    [1.75, 0.0, 1.875],
-    [1.75, -0.98, 1.875],
-    [0.98, -1.75, 1.875],
-    [0.0, -1.75, 1.875],
-    [2.0, 0.0, 1.35],
-    [2.0, -1.12, 1.35],
-    [1.12, -2.0, 1.35],
-    [0.0, -2.0, 1.35],
-    [2.0, 0.0, 0.9],
-    [2.0, -1.12, 0.9],
-    [1.12, -2.0, 0.9],
-    [0.0, -2.0, 0.9],
-    [-0.98, -1.75, 1.875],
-    [-1.75, -0.98, 1.875],
-    [-1.75, 0.0, 1.875],
-    [-1.12, -2.0, 1.35],
-    [-2.0, -1.12, 1.35],
-    [-2.0, 0.0, 1.35],
-    [-1.12, -2.0, 0.9],
-    [-2.0, -1.12, 0.9],
-    [-2.0, 0.0, 0.9],
-    [-1.75, 0.98, 1.875],
-    [-0.98, 1.75, 1.875],
-    [0.0, 1.75, 1.875],
-    [-2.0, 1.12, 1.35],
-    [-1.12, 2.0, 1.35],
-    [0.0, 2.0, 1.35],
-    [-2.0, 1.12, 0.9],
-    [-1.12, 2.0, 0.9],
-    [0.0, 2.0, 0.9],
-    [0.98, 1.75, 1.875],
-    [1.75, 0.98, 1.875],
-    [1.12, 2.0, 1.35],
-    [2.0, 1.12, 1.35],
-    [1.12, 2.0, 0.9],
-    [2.0, 1.12, 0.9],
-    [2.0, 0.0, 0.45],
-    [2.0, -1.12, 0.45],
-    [1.12, -2.0, 0.45],
-    [0.0, -2.0, 0.45],
-    [1.5, 0.0, 0.225],
-    [1.5, -0.84, 0.225],
-    [0.84, -1.5, 0.225],
-    [0.0, -1.5, 0.225],
-    [1.5, 0.0, 0.15],
-    [1.5, -0.84, 0.15],
-    [0.84, -1.5, 0.15],
-    [0.0, -1.5, 0.15],
-    [-1.12, -2.0, 0.45],
-    [-2.0, -1.12, 0.45],
-    [-2.0, 0.0, 0.45],
-    [-0.84, -1.5, 0.225],
-    [-1.5, -0.84, 0.225],
-    [-1.5, 0.0, 0.225],
-    [-0.84, -1.5, 0.15],
-    [-1.5, -0.84, 0.15],
-    [-1.5, 0.0, 0.15],
-    [-2.0, 1.12, 0.45],
-    [-1.12, 2.0, 0.45],
-    [0.0, 2.0, 0.45],
-    [-1.5, 0.84, 0.225],
-    [-0.84, 1.5, 0.225],
-    [0.0, 1.5, 0.225],
-    [-1.5, 0.84, 0.15],
-    [-0.84, 1.5, 0.15],
-    [0.0, 1.5, 0.15],
-    [1.12, 2.0, 0.45],
-    [2.0, 1.12, 0.45],
-    [0.84, 1.5, 0.225],
-    [1.5, 0.84, 0.225],
-    [0.84, 1.5, 0.15],
-    [1.5, 0.84, 0.15],
-    [-1.6, 0.0, 2.025],
-    [-1.6, -0.3, 2.025],
-    [-1.5, -0.3, 2.25],
-    [-1.5, 0.0, 2.25],
-    [-2.3, 0.0, 2.025],
-    [-2.3, -0.3, 2.025],
-    [-2.5, -0.3, 2.25],
-    [-2.5, 0.0, 2.25],
-    [-2.7, 0.0, 2.025],
-    [-2.7, -0.3, 2.025],
-    [-3.0, -0.3, 2.25],
-    [-3.0, 0.0, 2.25],
-    [-2.7, 0.0, 1.8],
-    [-2.7, -0.3, 1.8],
-    [-3.0, -0.3, 1.8],
-    [-3.0, 0.0, 1.8],
-    [-1.5, 0.3, 2.25],
-    [-1.6, 0.3, 2.025],
-    [-2.5, 0.3, 2.25],
-    [-2.3, 0.3, 2.025],
-    [-3.0, 0.3, 2.25],
-    [-2.7, 0.3, 2.025],
-    [-3.0, 0.3, 1.8],
-    [-2.7, 0.3, 1.8],
-    [-2.7, 0.0, 1.575],
-    [-2.7, -0.3, 1.575],
-    [-3.0, -0.3, 1.35],
-    [-3.0, 0.0, 1.35],
-    [-2.5, 0.0, 1.125],
-    [-2.5, -0.3, 1.125],
-    [-2.65, -0.3, 0.9375],
-    [-2.65, 0.0, 0.9375],
-    [-2.0, -0.3, 0.9],
-    [-1.9, -0.3, 0.6],
-    [-1.9, 0.0, 0.6],
-    [-3.0, 0.3, 1.35],
-    [-2.7, 0.3, 1.575],
-    [-2.65, 0.3, 0.9375],
-    [-2.5, 0.3, 1.125],
-    [-1.9, 0.3, 0.6],
-    [-2.0, 0.3, 0.9],
-    [1.7, 0.0, 1.425],
-    [1.7, -0.66, 1.425],
-    [1.7, -0.66, 0.6],
-    [1.7, 0.0, 0.6],
-    [2.6, 0.0, 1.425],
-    [2.6, -0.66, 1.425],
-    [3.1, -0.66, 0.825],
-    [3.1, 0.0, 0.825],
-    [2.3, 0.0, 2.1],
-    [2.3, -0.25, 2.1],
-    [2.4, -0.25, 2.025],
-    [2.4, 0.0, 2.025],
-    [2.7, 0.0, 2.4],
-    [2.7, -0.25, 2.4],
-    [3.3, -0.25, 2.4],
-    [3.3, 0.0, 2.4],
-    [1.7, 0.66, 0.6],
-    [1.7, 0.66, 1.425],
-    [3.1, 0.66, 0.825],
-    [2.6, 0.66, 1.425],
-    [2.4, 0.25, 2.025],
-    [2.3, 0.25, 2.1],
-    [3.3, 0.25, 2.4],
-    [2.7, 0.25, 2.4],
-    [2.8, 0.0, 2.475],
-    [2.8, -0.25, 2.475],
-    [3.525, -0.25, 2.49375],
-    [3.525, 0.0, 2.49375],
-    [2.9, 0.0, 2.475],
-    [2.9, -0.15, 2.475],
-    [3.45, -0.15, 2.5125],
-    [3.45, 0.0, 2.5125],
-    [2.8, 0.0, 2.4],
-    [2.8, -0.15, 2.4],
-    [3.2, -0.15, 2.4],
-    [3.2, 0.0, 2.4],
-    [3.525, 0.25, 2.49375],
-    [2.8, 0.25, 2.475],
-    [3.45, 0.15, 2.5125],
-    [2.9, 0.15, 2.475],
-    [3.2, 0.15, 2.4],
-    [2.8, 0.15, 2.4],
-    [0.0, 0.0, 3.15],
-    [0.0, -0.002, 3.15],
-    [0.002, 0.0, 3.15],
-    [0.8, 0.0, 3.15],
-    [0.8, -0.45, 3.15],
-    [0.45, -0.8, 3.15],
-    [0.0, -0.8, 3.15],
-    [0.0, 0.0, 2.85],
-    [0.2, 0.0, 2.7],
-    [0.2, -0.112, 2.7],
-    [0.112, -0.2, 2.7],
-    [0.0, -0.2, 2.7],
-    [-0.002, 0.0, 3.15],
-    [-0.45, -0.8, 3.15],
-    [-0.8, -0.45, 3.15],
-    [-0.8, 0.0, 3.15],
-    [-0.112, -0.2, 2.7],
-    [-0.2, -0.112, 2.7],
-    [-0.2, 0.0, 2.7],
-    [0.0, 0.002, 3.15],
-    [-0.8, 0.45, 3.15],
-    [-0.45, 0.8, 3.15],
-    [0.0, 0.8, 3.15],
-    [-0.2, 0.112, 2.7],
-    [-0.112, 0.2, 2.7],
-    [0.0, 0.2, 2.7],
-    [0.45, 0.8, 3.15],
-    [0.8, 0.45, 3.15],
-    [0.112, 0.2, 2.7],
-    [0.2, 0.112, 2.7],
-    [0.4, 0.0, 2.55],
-    [0.4, -0.224, 2.55],
-    [0.224, -0.4, 2.55],
-    [0.0, -0.4, 2.55],
-    [1.3, 0.0, 2.55],
-    [1.3, -0.728, 2.55],
-    [0.728, -1.3, 2.55],
-    [0.0, -1.3, 2.55],
-    [1.3, 0.0, 2.4],
-    [1.3, -0.728, 2.4],
-    [0.728, -1.3, 2.4],
-    [0.0, -1.3, 2.4],
-    [-0.224, -0.4, 2.55],
-    [-0.4, -0.224, 2.55],
-    [-0.4, 0.0, 2.55],
-    [-0.728, -1.3, 2.55],
-    [-1.3, -0.728, 2.55],
-    [-1.3, 0.0, 2.55],
-    [-0.728, -1.3, 2.4],
-    [-1.3, -0.728, 2.4],
-    [-1.3, 0.0, 2.4],
-    [-0.4, 0.224, 2.55],
-    [-0.224, 0.4, 2.55],
-    [0.0, 0.4, 2.55],
-    [-1.3, 0.728, 2.55],
-    [-0.728, 1.3, 2.55],
-    [0.0, 1.3, 2.55],
-    [-1.3, 0.728, 2.4],
-    [-0.728, 1.3, 2.4],
-    [0.0, 1.3, 2.4],
-    [0.224, 0.4, 2.55],
-    [0.4, 0.224, 2.55],
-    [0.728, 1.3, 2.55],
-    [1.3, 0.728, 2.55],
-    [0.728, 1.3, 2.4],
-    [1.3, 0.728, 2.4],
-    [0.0, 0.0, 0.0],
-    [1.5, 0.0, 0.15],
-    [1.5, 0.84, 0.15],
-    [0.84, 1.5, 0.15],
-    [0.0, 1.5, 0.15],
-    [1.5, 0.0, 0.075],
-    [1.5, 0.84, 0.075],
-    [0.84, 1.5, 0.075],
-    [0.0, 1.5, 0.075],
-    [1.425, 0.0, 0.0],
-    [1.425, 0.798, 0.0],
-    [0.798, 1.425, 0.0],
-    [0.0, 1.425, 0.0],
-    [-0.84, 1.5, 0.15],
-    [-1.5, 0.84, 0.15],
-    [-1.5, 0.0, 0.15],
-    [-0.84, 1.5, 0.075],
-    [-1.5, 0.84, 0.075],
-    [-1.5, 0.0, 0.075],
-    [-0.798, 1.425, 0.0],
-    [-1.425, 0.798, 0.0],
-    [-1.425, 0.0, 0.0],
-    [-1.5, -0.84, 0.15],
-    [-0.84, -1.5, 0.15],
-    [0.0, -1.5, 0.15],
-    [-1.5, -0.84, 0.075],
-    [-0.84, -1.5, 0.075],
-    [0.0, -1.5, 0.075],
-    [-1.425, -0.798, 0.0],
-    [-0.798, -1.425, 0.0],
-    [0.0, -1.425, 0.0],
-    [0.84, -1.5, 0.15],
-    [1.5, -0.84, 0.15],
-    [0.84, -1.5, 0.075],
-    [1.5, -0.84, 0.075],
-    [0.798, -1.425, 0.0],
-    [1.425, -0.798, 0.0],
-];
+/// Grid points per patch side, filled and wire.
+const SOLID_GRID: usize = 8;
+const WIRE_GRID: usize = 10;
 
-type V3 = [f64; 3];
-
-/// Cubic Bernstein weights and their derivatives at t.
-fn bernstein(t: f64) -> ([f64; 4], [f64; 4]) {
-    let s = 1.0 - t;
-    (
-        [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t],
-        [
-            -3.0 * s * s,
-            3.0 * s * s - 6.0 * t * s,
-            6.0 * t * s - 3.0 * t * t,
-            3.0 * t * t,
-        ],
-    )
+/// One tea-set object: its patches and points, its vertical offset, and which patches
+/// are turned or mirrored.
+struct Object {
+    patches: &'static [[u8; 16]],
+    points: &'static [[f32; 3]],
+    /// Height of the data's origin above the object's centre.
+    z_offset: f32,
+    /// Teapot and teacup: the first six patches are turned to all four quadrants and
+    /// the rest mirrored; the teaspoon's are used as they are.
+    symmetric: bool,
+    /// Teapot only: the lid's knob (patch 3) and the bottom's centre (patch 5) meet
+    /// in a point where the derivatives vanish; their first grid row gets the normal
+    /// straight up or down instead.
+    pole_normals: bool,
 }
 
-/// Point, ∂/∂u and ∂/∂v of patch `p` at (u, v); u runs along the rows of four.
-fn eval(p: &[u16; 16], u: f64, v: f64) -> (V3, V3, V3) {
-    let (bu, du) = bernstein(u);
-    let (bv, dv) = bernstein(v);
-    let mut out = ([0.0; 3], [0.0; 3], [0.0; 3]);
-    for i in 0..4 {
-        for j in 0..4 {
-            let c = VERTS[p[i * 4 + j] as usize];
-            for k in 0..3 {
-                let c = f64::from(c[k]);
-                out.0[k] += bv[i] * bu[j] * c;
-                out.1[k] += bv[i] * du[j] * c;
-                out.2[k] += dv[i] * bu[j] * c;
-            }
-        }
+const TEAPOT: Object = Object {
+    patches: &data::TEAPOT_PATCHES,
+    points: &data::TEAPOT_POINTS,
+    z_offset: 1.575,
+    symmetric: true,
+    pole_normals: true,
+};
+const TEACUP: Object = Object {
+    patches: &data::TEACUP_PATCHES,
+    points: &data::TEACUP_POINTS,
+    z_offset: 1.5121,
+    symmetric: true,
+    pole_normals: false,
+};
+const TEASPOON: Object = Object {
+    patches: &data::TEASPOON_PATCHES,
+    points: &data::TEASPOON_POINTS,
+    z_offset: -0.0315,
+    symmetric: false,
+    pole_normals: false,
+};
+
+/// The cubic Bernstein weights and their derivatives at `grid` equal steps of [0, 1].
+fn bernstein(grid: usize) -> Vec<([f32; 4], [f32; 4])> {
+    (0..grid)
+        .map(|s| {
+            let x = s as f32 / (grid as f32 - 1.0);
+            let y = 1.0 - x;
+            let (yy, xx) = (y * y, x * x);
+            (
+                [y * yy, 3.0 * x * yy, 3.0 * xx * y, x * xx],
+                [
+                    -3.0 * yy,
+                    3.0 * yy - 6.0 * x * y,
+                    6.0 * x * y - 3.0 * xx,
+                    3.0 * xx,
+                ],
+            )
+        })
+        .collect()
+}
+
+type Cp = [[[f32; 3]; 4]; 4];
+
+/// Patch `p`'s control points in GL's axes, lowered and scaled.
+fn control_points(obj: &Object, p: usize, scale: f32) -> Cp {
+    let mut cp = [[[0.0; 3]; 4]; 4];
+    for (i, &k) in obj.patches[p].iter().enumerate() {
+        let c = obj.points[usize::from(k)];
+        cp[i / 4][i % 4] = [
+            c[0] * scale / 2.0,
+            (c[2] - obj.z_offset) * scale / 2.0,
+            -c[1] * scale / 2.0,
+        ];
     }
-    out
+    cp
 }
 
-fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// The unit normal at (u, v); where the patch collapses to a point (the lid's knob,
-/// the bottom's centre) it is taken a little inside the patch.
-fn normal(p: &[u16; 16], u: f64, v: f64) -> V3 {
-    let mut n = [0.0; 3];
-    for eps in [0.0, 1e-3, 1e-2] {
-        let uu = if u > 0.5 { u - eps } else { u + eps };
-        let vv = if v > 0.5 { v - eps } else { v + eps };
-        let (_, du, dv) = eval(p, uu, vv);
-        n = cross(du, dv);
-        let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-        if l > 1e-9 {
-            return [n[0] / l, n[1] / l, n[2] / l];
-        }
+fn add_scaled(acc: &mut [f32; 3], w: f32, v: [f32; 3]) {
+    for k in 0..3 {
+        acc[k] += w * v[k];
     }
-    n
 }
 
-/// Evaluates every patch on a `grid` x `grid` mesh and calls `emit` per row pair.
-fn draw(size: f64, grid: usize, solid: bool) {
-    let s = (0.5 * size) as f32;
-    // GLUT's placement, applied to points and normals: (x, y, z) -> (x, z, -y).
-    let place = |p: V3| [p[0] as f32, p[2] as f32, -p[1] as f32];
-    im::push();
-    im::scale(s, s, s);
-    im::translate(0.0, -1.5, 0.0);
-    let g = grid as f64;
-    for patch in &PATCHES {
-        let at = |i: usize, j: usize| {
-            let (u, v) = (i as f64 / g, j as f64 / g);
-            (place(eval(patch, u, v).0), place(normal(patch, u, v)))
-        };
-        if solid {
-            im::begin(GL_QUADS);
-            for j in 0..grid {
-                for i in 0..grid {
-                    for (a, b) in [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)] {
-                        let (p, n) = at(a, b);
-                        im::n3(n);
-                        im::v3(p);
-                    }
+/// Evaluates one patch on the grid, row by row: positions, and unit normals from the
+/// cross product of the two partial derivatives.
+fn eval_patch(cp: &Cp, bern: &[([f32; 4], [f32; 4])], out: &mut Mesh) {
+    for (b0u, b1u) in bern {
+        for (b0v, b1v) in bern {
+            let (mut pos, mut du, mut dv) = ([0.0f32; 3], [0.0f32; 3], [0.0f32; 3]);
+            for i in 0..4 {
+                let (mut row, mut row_d) = ([0.0f32; 3], [0.0f32; 3]);
+                for j in 0..4 {
+                    add_scaled(&mut row, b0v[j], cp[i][j]);
+                    add_scaled(&mut row_d, b1v[j], cp[i][j]);
                 }
+                add_scaled(&mut pos, b0u[i], row);
+                add_scaled(&mut du, b0u[i], row_d);
+                add_scaled(&mut dv, b1u[i], row);
             }
-            im::end();
-        } else {
-            for j in 0..=grid {
-                for along_u in [true, false] {
-                    im::begin(GL_LINE_STRIP);
-                    for i in 0..=grid {
-                        let (p, n) = if along_u { at(i, j) } else { at(j, i) };
-                        im::n3(n);
-                        im::v3(p);
-                    }
-                    im::end();
-                }
+            let n = [
+                du[1] * dv[2] - du[2] * dv[1],
+                du[2] * dv[0] - du[0] * dv[2],
+                du[0] * dv[1] - du[1] * dv[0],
+            ];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            out.push(pos, [n[0] / len, n[1] / len, n[2] / len]);
+        }
+    }
+}
+
+/// Appends the copies of the patch just evaluated (the last `grid`² entries of `v`,
+/// three floats each): three quarter turns about y, or one mirror image in z = 0 with
+/// the rows reversed to keep the winding.
+fn replicate(v: &mut Vec<f32>, grid: usize, turn: bool) {
+    let start = v.len() - 3 * grid * grid;
+    let base: Vec<[f32; 3]> = v[start..]
+        .chunks_exact(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect();
+    if turn {
+        for f in [
+            |p: [f32; 3]| [p[2], p[1], -p[0]],
+            |p: [f32; 3]| [-p[0], p[1], -p[2]],
+            |p: [f32; 3]| [-p[2], p[1], p[0]],
+        ] {
+            v.extend(base.iter().flat_map(|&p| f(p)));
+        }
+    } else {
+        for row in base.chunks_exact(grid).rev() {
+            v.extend(row.iter().flat_map(|p| [p[0], p[1], -p[2]]));
+        }
+    }
+}
+
+/// Every patch's grid points (copies included), in drawing order.
+fn evaluate(obj: &Object, grid: usize, scale: f32) -> Mesh {
+    let bern = bernstein(grid);
+    let mut m = Mesh::with_capacity(0);
+    for p in 0..obj.patches.len() {
+        eval_patch(&control_points(obj, p, scale), &bern, &mut m);
+        if obj.pole_normals && (p == 3 || p == 5) {
+            let first_row = m.norms.len() - 3 * grid * grid;
+            let y = if p == 3 { 1.0 } else { -1.0 };
+            for n in m.norms[first_row..first_row + 3 * grid].chunks_exact_mut(3) {
+                n.copy_from_slice(&[0.0, y, 0.0]);
+            }
+        }
+        if obj.symmetric {
+            replicate(&mut m.verts, grid, p < 6);
+            replicate(&mut m.norms, grid, p < 6);
+        }
+    }
+    m
+}
+
+/// Triangle indices: each grid square (a, b one row down) as (a, b, b+1), (a, b+1, a+1).
+fn triangles(patches: usize, grid: usize) -> Vec<u16> {
+    let mut idx = Vec::with_capacity(patches * (grid - 1) * (grid - 1) * 6);
+    for p in 0..patches {
+        for r in 0..grid - 1 {
+            for c in 0..grid - 1 {
+                let a = (p * grid * grid + r * grid + c) as u16;
+                let b = a + grid as u16;
+                idx.extend([a, b, b + 1, a, b + 1, a + 1]);
             }
         }
     }
-    im::pop();
+    idx
 }
 
-/// `glutSolidTeapot`.
-#[no_mangle]
-pub extern "C" fn glutSolidTeapot(size: f64) {
-    draw(size, 10, true);
+/// Line-strip indices: every patch's columns, then every patch's rows.
+fn strips(patches: usize, grid: usize) -> Vec<u16> {
+    let at = |p: usize, r: usize, c: usize| (p * grid * grid + r * grid + c) as u16;
+    let mut idx = Vec::with_capacity(patches * grid * grid * 2);
+    for p in 0..patches {
+        idx.extend((0..grid).flat_map(|c| (0..grid).map(move |r| at(p, r, c))));
+    }
+    for p in 0..patches {
+        idx.extend((0..grid).flat_map(|r| (0..grid).map(move |c| at(p, r, c))));
+    }
+    idx
 }
 
-/// `glutWireTeapot`.
-#[no_mangle]
-pub extern "C" fn glutWireTeapot(size: f64) {
-    draw(size, 10, false);
+/// One object's cached tessellation in one mode.
+struct Built {
+    scale: f32,
+    mesh: Mesh,
+    texcs: Vec<f32>,
+    idx: Vec<u16>,
+}
+
+/// Builds (or moves to a new size) and draws one object.
+fn draw(obj: &Object, cache: &Mutex<Option<Built>>, size: f32, solid: bool) {
+    let grid = if solid { SOLID_GRID } else { WIRE_GRID };
+    let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
+    match cache.as_mut() {
+        Some(b) if b.scale == size => {}
+        Some(b) => {
+            b.mesh.verts = evaluate(obj, grid, size).verts;
+            b.scale = size;
+        }
+        None => {
+            let mesh = evaluate(obj, grid, size);
+            let patches = mesh.len() / (grid * grid);
+            let texcs = if solid {
+                let step = |k: usize| k as f32 / (grid as f32 - 1.0);
+                let one: Vec<f32> = (0..grid * grid)
+                    .flat_map(|k| [step(k / grid), step(k % grid)])
+                    .collect();
+                one.repeat(patches)
+            } else {
+                Vec::new()
+            };
+            let idx = if solid {
+                triangles(patches, grid)
+            } else {
+                strips(patches, grid)
+            };
+            *cache = Some(Built {
+                scale: size,
+                mesh,
+                texcs,
+                idx,
+            });
+        }
+    }
+    let b = cache.as_ref().expect("built above");
+    if solid {
+        draw::solid(&b.mesh, Some(&b.texcs), Some(&b.idx), 1);
+    } else {
+        draw::wire(&b.mesh, Some(&b.idx), grid, GL_LINE_STRIP, &[], 0);
+    }
+}
+
+macro_rules! tea_set {
+    ($($(#[$doc:meta])* $name:ident, $obj:expr, $solid:expr, $div:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(size: f64) {
+            static CACHE: Mutex<Option<Built>> = Mutex::new(None);
+            draw(&$obj, &CACHE, size as f32 / $div, $solid);
+        }
+    )*};
+}
+
+tea_set! {
+    /// `glutSolidTeapot`: the Utah teapot, `size` about half its height.
+    glutSolidTeapot, TEAPOT, true, 1.0;
+    /// `glutWireTeapot`.
+    glutWireTeapot, TEAPOT, false, 1.0;
+    /// `glutSolidTeacup` (freeglut): a teacup to go with a teapot of the same size.
+    glutSolidTeacup, TEACUP, true, 2.5;
+    /// `glutWireTeacup` (freeglut).
+    glutWireTeacup, TEACUP, false, 2.5;
+    /// `glutSolidTeaspoon` (freeglut): a teaspoon to go with a teapot of the same size.
+    glutSolidTeaspoon, TEASPOON, true, 2.5;
+    /// `glutWireTeaspoon` (freeglut).
+    glutWireTeaspoon, TEASPOON, false, 2.5;
 }
 
 #[cfg(test)]
@@ -533,11 +283,29 @@ mod tests {
     use super::*;
 
     #[test]
-    fn body_normals_point_away_from_the_axis() {
-        for patch in &PATCHES[4..12] {
-            let (p, _, _) = eval(patch, 0.5, 0.5);
-            let n = normal(patch, 0.5, 0.5);
-            assert!(p[0] * n[0] + p[1] * n[1] > 0.0, "{p:?} {n:?}");
+    fn sizes_and_outward_body_normals() {
+        let m = evaluate(&TEAPOT, SOLID_GRID, 1.0);
+        // 6 patches turned to four quadrants, 4 mirrored once.
+        assert_eq!(m.len(), (6 * 4 + 4 * 2) * SOLID_GRID * SOLID_GRID);
+        // The body patches (1 and 2, all quadrants): normals point away from the y axis.
+        let per = SOLID_GRID * SOLID_GRID;
+        for copy in 0..4 {
+            let start = (4 + copy) * per;
+            for k in start..start + per {
+                let (v, n) = (&m.verts[3 * k..3 * k + 3], &m.norms[3 * k..3 * k + 3]);
+                assert!(v[0] * n[0] + v[2] * n[2] > 0.0, "{v:?} {n:?}");
+            }
+        }
+        assert_eq!(triangles(32, SOLID_GRID).len(), 32 * 49 * 6);
+        assert_eq!(strips(32, WIRE_GRID).len(), 32 * 100 * 2);
+    }
+
+    #[test]
+    fn teacup_and_teaspoon_are_finite_and_sized() {
+        for (obj, patches) in [(&TEACUP, 6 * 4 + 2), (&TEASPOON, 16)] {
+            let m = evaluate(obj, WIRE_GRID, 1.0);
+            assert_eq!(m.len(), patches * WIRE_GRID * WIRE_GRID);
+            assert!(m.verts.iter().all(|c| c.is_finite() && c.abs() < 2.0));
         }
     }
 }

@@ -89,6 +89,12 @@ GLUTAPI void glutWireRhombicDodecahedron(void);
 GLUTAPI void glutSolidRhombicDodecahedron(void);
 GLUTAPI void glutWireCylinder(GLdouble radius, GLdouble height, GLint slices, GLint stacks);
 GLUTAPI void glutSolidCylinder(GLdouble radius, GLdouble height, GLint slices, GLint stacks);
+GLUTAPI void glutWireSierpinskiSponge(int num_levels, GLdouble offset[3], GLdouble scale);
+GLUTAPI void glutSolidSierpinskiSponge(int num_levels, GLdouble offset[3], GLdouble scale);
+GLUTAPI void glutWireTeacup(GLdouble size);
+GLUTAPI void glutSolidTeacup(GLdouble size);
+GLUTAPI void glutWireTeaspoon(GLdouble size);
+GLUTAPI void glutSolidTeaspoon(GLdouble size);
 
 #ifdef __cplusplus
 }
