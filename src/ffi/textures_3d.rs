@@ -135,7 +135,6 @@ unsafe fn tex_image_3d(
     if cf.is_depth() || base == BaseFormat::Depth {
         return Err(GlError::InvalidOperation);
     }
-    c.check_outside_begin()?;
     let storage = upload::choose_storage(internal, base, format, ty);
     let size = size_3d(level, w, h, d, border);
     let header = |w, h| Level {
@@ -201,7 +200,6 @@ unsafe fn tex_sub_image_3d(
     }
     let level = check_level(level)?;
     let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
-    c.check_outside_begin()?;
     c.prepare_read()?;
     let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
@@ -246,7 +244,6 @@ fn copy_tex_sub_image_3d(
     }
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
-    c.check_outside_begin()?;
     let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
     let img = obj.levels[level]
