@@ -242,6 +242,7 @@ const EXACT: Tolerance = Tolerance {
 
 /// Every scene in `c_tests/`; a test checks that this list is complete.
 const SCENES: &[&str] = &[
+    "begin_end_errors",
     "fbo_blit",
     "fbo_errors",
     "fbo_render",
@@ -374,6 +375,7 @@ macro_rules! scene_tests {
 }
 
 scene_tests!(
+    begin_end_errors,
     fbo_blit,
     fbo_errors,
     fbo_render,

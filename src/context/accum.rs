@@ -61,7 +61,6 @@ impl Context {
 
     /// glClearAccum.
     pub fn clear_accum(&mut self, c: [f32; 4]) -> GlResult<()> {
-        self.check_outside_begin()?;
         self.accum.attrib.clear_color = c.map(|v| v.clamp(-1.0, 1.0));
         Ok(())
     }
@@ -96,7 +95,6 @@ impl Context {
 
     /// glAccum.
     pub fn accum(&mut self, op: AccumOp, value: f32) -> GlResult<()> {
-        self.check_outside_begin()?;
         if !self.has_accum() {
             return Err(GlError::InvalidOperation);
         }

@@ -356,7 +356,6 @@ const GROUPS: &[(u32, Restore)] = &[
 impl Context {
     /// glPushAttrib.
     pub fn push_attrib(&mut self, mask: u32) -> GlResult<()> {
-        self.check_outside_begin()?;
         if self.attrib.server.len() >= MAX_ATTRIB_STACK_DEPTH {
             return Err(GlError::StackOverflow);
         }
@@ -396,7 +395,6 @@ impl Context {
 
     /// glPopAttrib.
     pub fn pop_attrib(&mut self) -> GlResult<()> {
-        self.check_outside_begin()?;
         let Some(frame) = self.attrib.server.pop() else {
             return Err(GlError::StackUnderflow);
         };

@@ -180,6 +180,12 @@ impl ListState {
         self.compiling.as_ref().map(|k| k.execute)
     }
 
+    /// Whether the list being compiled is between a glBegin and its glEnd.
+    #[inline]
+    pub fn compiling_inside_begin(&self) -> bool {
+        self.compiling.as_ref().is_some_and(|k| k.in_begin)
+    }
+
     /// Appends a state command to the list being compiled.
     pub fn push_call(&mut self, f: ListFn) {
         if let Some(k) = self.compiling.as_mut() {
@@ -282,7 +288,6 @@ impl Context {
         if name == 0 {
             return Err(GlError::InvalidValue);
         }
-        self.check_outside_begin()?;
         if self.lists.compiling.is_some() {
             return Err(GlError::InvalidOperation);
         }
@@ -329,6 +334,10 @@ impl Context {
                     self.flush_pending();
                     f(self)
                 }
+                Cmd::Node { ops, .. } if self.outside_begin_end().is_err() && begins(ops) => {
+                    // A compiled draw or glBegin inside glBegin/glEnd: Mesa skips the node.
+                    Err(GlError::InvalidOperation)
+                }
                 Cmd::Node { ops, loopback } => {
                     self.immediate.replaying = !loopback;
                     for &op in ops {
@@ -352,7 +361,6 @@ impl Context {
         if n < 0 {
             return Err(GlError::InvalidValue);
         }
-        self.check_outside_begin()?;
         if n == 0 {
             return Ok(0);
         }
@@ -390,7 +398,6 @@ impl Context {
         if range < 0 {
             return Err(GlError::InvalidValue);
         }
-        self.check_outside_begin()?;
         if range == 0 {
             return Ok(());
         }
@@ -484,6 +491,9 @@ impl Context {
             Err(e) => return fail(self, e),
         };
         if !self.arrays.vertex.enabled {
+            // No vertices, but still a primitive (it matters inside glBegin/glEnd).
+            self.lists.push_op(VertexOp::Begin(mode));
+            self.lists.push_op(VertexOp::End);
             return;
         }
         let n = match &elements {
@@ -517,6 +527,14 @@ impl Context {
             self.lists.push_op(op);
         }
     }
+}
+
+/// Whether a vertex node starts a primitive (its first glBegin/glEnd is a glBegin), as
+/// Mesa's `draw_begins`.
+fn begins(ops: &[VertexOp]) -> bool {
+    ops.iter()
+        .find(|op| matches!(op, VertexOp::Begin(_) | VertexOp::End))
+        .is_some_and(|op| matches!(op, VertexOp::Begin(_)))
 }
 
 /// The elements a compiled draw call reads.

@@ -187,7 +187,6 @@ impl Context {
         vorder: usize,
         points: Vec<f32>,
     ) -> GlResult<()> {
-        self.check_outside_begin()?;
         let map = Map {
             uorder,
             vorder,
@@ -205,7 +204,6 @@ impl Context {
 
     /// glMapGrid1 / glMapGrid2.
     pub fn map_grid(&mut self, g: &[Grid]) -> GlResult<()> {
-        self.check_outside_begin()?;
         if g.iter().any(|g| g.n < 1) {
             return Err(GlError::InvalidValue);
         }

@@ -281,6 +281,20 @@ impl Context {
         self.error.take()
     }
 
+    /// The glBegin/glEnd rule of the GL entry points (applied by the `src/ffi` wrappers):
+    /// GL_INVALID_OPERATION between a glBegin and glEnd executed now. A glBegin compiled
+    /// under GL_COMPILE_AND_EXECUTE does not count, as in Mesa, which draws that primitive
+    /// only at its glEnd: commands that are not compiled run as usual there, and the
+    /// compiled ones follow the list's rule ([`dlist::ListState::compiling_inside_begin`]).
+    #[inline]
+    pub fn outside_begin_end(&self) -> GlResult<()> {
+        if self.immediate.active.is_some() && self.lists.compiling.is_none() {
+            Err(GlError::InvalidOperation)
+        } else {
+            Ok(())
+        }
+    }
+
     /// Fails with GL_INVALID_OPERATION between glBegin and glEnd.
     #[inline]
     pub fn check_outside_begin(&self) -> GlResult<()> {
@@ -405,7 +419,6 @@ impl Context {
 
     /// glEnable / glDisable.
     pub fn set_cap(&mut self, cap: Cap, on: bool) -> GlResult<()> {
-        self.check_outside_begin()?;
         self.state.caps.set(cap, on);
         // GL_TEXTURE_1D/2D are per texture unit; `state.caps` mirrors the active unit.
         let unit = &mut self.textures.units[self.state.active_texture];
@@ -470,7 +483,6 @@ impl Context {
         &mut self,
         f: impl FnOnce(&mut Mat4, &mut crate::fixed_function::mesa_matrix::MatFlags),
     ) -> GlResult<()> {
-        self.check_outside_begin()?;
         let (m, fl) = self.current_stack().top_both_mut();
         f(m, fl);
         Ok(())
@@ -478,7 +490,6 @@ impl Context {
 
     /// glViewport.
     pub fn viewport(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
-        self.check_outside_begin()?;
         if w < 0 || h < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -489,7 +500,6 @@ impl Context {
     /// glScissor.
     pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
         crate::pixels::cache::flush(self);
-        self.check_outside_begin()?;
         if w < 0 || h < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -499,7 +509,6 @@ impl Context {
 
     /// glDepthRange (clamped to [0,1]).
     pub fn depth_range(&mut self, n: f64, f: f64) -> GlResult<()> {
-        self.check_outside_begin()?;
         // Mesa keeps the range as f32 (it is then widened again for the viewport transform).
         self.state.depth_range = [clamp01(n) as f32 as f64, clamp01(f) as f32 as f64];
         Ok(())
@@ -528,7 +537,6 @@ impl Context {
     pub fn clear(&mut self, mask: u32) -> GlResult<()> {
         crate::pixels::cache::flush(self);
         use crate::ffi::enums::*;
-        self.check_outside_begin()?;
         let all =
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !all != 0 {

@@ -32,7 +32,6 @@ pub struct QueryState {
 impl Context {
     /// glGenQueries: `n` unused names.
     pub fn gen_queries(&mut self, n: usize) -> GlResult<Vec<u32>> {
-        self.check_outside_begin()?;
         let q = &mut self.queries.objects;
         let mut out = Vec::with_capacity(n.min(1 << 16));
         let mut next = 1u32;
@@ -48,7 +47,6 @@ impl Context {
 
     /// glDeleteQueries (an active query is ended first; unknown names are ignored).
     pub fn delete_queries(&mut self, names: &[u32]) -> GlResult<()> {
-        self.check_outside_begin()?;
         for &name in names {
             if self.queries.active.is_some_and(|(a, _)| a == name) {
                 self.queries.active = None;
@@ -60,7 +58,6 @@ impl Context {
 
     /// glIsQuery.
     pub fn is_query(&self, name: u32) -> GlResult<bool> {
-        self.check_outside_begin()?;
         Ok(self
             .queries
             .objects
@@ -70,7 +67,6 @@ impl Context {
 
     /// glBeginQuery(GL_SAMPLES_PASSED, name).
     pub fn begin_query(&mut self, name: u32) -> GlResult<()> {
-        self.check_outside_begin()?;
         if name == 0 || self.queries.active.is_some() {
             return Err(GlError::InvalidOperation);
         }
@@ -83,7 +79,6 @@ impl Context {
 
     /// glEndQuery(GL_SAMPLES_PASSED).
     pub fn end_query(&mut self) -> GlResult<()> {
-        self.check_outside_begin()?;
         let Some((name, start)) = self.queries.active.take() else {
             return Err(GlError::InvalidOperation);
         };
@@ -96,7 +91,6 @@ impl Context {
     /// glGetQueryObject's GL_QUERY_RESULT (results are always available: softgl draws
     /// synchronously). Fails for names that are not queries or the active one.
     pub fn query_result(&self, name: u32) -> GlResult<u64> {
-        self.check_outside_begin()?;
         match self.queries.objects.get(&name) {
             Some(q) if q.ever_bound && self.queries.active.map(|a| a.0) != Some(name) => {
                 Ok(q.result)

@@ -43,7 +43,6 @@ fn array_mut(c: &mut Context, w: Which) -> &mut ArrayPointer {
 /// keep the old state, as GL requires.
 pub(crate) fn set_pointer(w: Which, size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void) {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         if stride < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -167,7 +166,6 @@ pub(crate) fn is_client_array(cap: GLenum) -> bool {
 /// glEnableClientState/glDisableClientState on the context.
 pub(crate) fn set_client_array(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
     let w = client_array(cap).ok_or(GlError::InvalidEnum)?;
-    c.check_outside_begin()?;
     array_mut(c, w).enabled = on;
     Ok(())
 }
@@ -221,17 +219,15 @@ pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: 
         GL_T4F_C4F_N3F_V4F => Some((4, 4, GL_FLOAT, true, 4, 4 * F, 8 * F, 11 * F, 15 * F)),
         _ => None,
     };
+    if !super::outside_begin_end() {
+        return;
+    }
     let Some((tc, cc, ctype, norm, vc, pc, pn, pv, s)) = layout else {
         with_ctx(|_| Err::<(), _>(GlError::InvalidEnum));
         return;
     };
     if stride < 0 {
         with_ctx(|_| Err::<(), _>(GlError::InvalidValue));
-        return;
-    }
-    let in_begin = with_ctx(|c| Ok(c.immediate.active.is_some()));
-    if in_begin {
-        with_ctx(|_| Err::<(), _>(GlError::InvalidOperation));
         return;
     }
     let stride = if stride == 0 { s } else { stride };
@@ -260,7 +256,7 @@ pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: 
 #[no_mangle]
 pub extern "C" fn glArrayElement(i: GLint) {
     if i < 0 {
-        return super::with_ctx_list(|_| Err(GlError::InvalidValue));
+        return super::with_ctx_list_anywhere(|_| Err(GlError::InvalidValue));
     }
     let ops = super::with_ctx_raw(|c| {
         let mut ops = Vec::new();

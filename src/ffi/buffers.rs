@@ -18,7 +18,6 @@ use libc::c_void;
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if buffers.is_null() || n == 0 {
             return Ok(());
         }
@@ -38,7 +37,6 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if buffers.is_null() {
             return Ok(());
         }
@@ -54,10 +52,7 @@ pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
 /// glIsBuffer: true for a name that has been bound at least once and not deleted.
 #[no_mangle]
 pub extern "C" fn glIsBuffer(buffer: GLuint) -> GLboolean {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        Ok(c.arrays.buffers.get(&buffer).is_some_and(|b| b.is_some()) as GLboolean)
-    })
+    with_ctx(|c| Ok(c.arrays.buffers.get(&buffer).is_some_and(|b| b.is_some()) as GLboolean))
 }
 
 /// glBindBuffer.
@@ -65,7 +60,6 @@ pub extern "C" fn glIsBuffer(buffer: GLuint) -> GLboolean {
 pub extern "C" fn glBindBuffer(target: GLenum, buffer: GLuint) {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.check_outside_begin()?;
         c.arrays.bind_buffer(t, buffer);
         Ok(())
     })
@@ -106,7 +100,6 @@ pub unsafe extern "C" fn glBufferData(
         if !valid_usage(usage) {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         let size = size as usize;
         let store = if data.is_null() {
@@ -135,7 +128,6 @@ pub unsafe extern "C" fn glBufferSubData(
 ) {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
         {
@@ -167,7 +159,6 @@ pub unsafe extern "C" fn glGetBufferSubData(
 ) {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
         {
@@ -199,7 +190,6 @@ pub extern "C" fn glMapBuffer(target: GLenum, access: GLenum) -> *mut GLvoid {
         if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         if b.mapped.is_some() {
             return Err(GlError::InvalidOperation);
@@ -224,7 +214,6 @@ impl Default for MapPtr {
 pub extern "C" fn glUnmapBuffer(target: GLenum) -> GLboolean {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         if b.mapped.take().is_none() {
             return Err(GlError::InvalidOperation);
@@ -241,7 +230,6 @@ pub extern "C" fn glUnmapBuffer(target: GLenum) -> GLboolean {
 pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         let v = match pname {
             GL_BUFFER_SIZE => b.data.len().min(i32::MAX as usize) as GLint,
@@ -273,7 +261,6 @@ pub unsafe extern "C" fn glGetBufferPointerv(
         if pname != GL_BUFFER_MAP_POINTER {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let b = c.arrays.bound_mut(t)?;
         let p = if b.mapped.is_some() {
             b.data.as_mut_ptr() as *mut c_void

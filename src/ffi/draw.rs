@@ -45,7 +45,6 @@ pub(crate) fn draw_arrays(
     if first < 0 {
         return Err(GlError::InvalidValue);
     }
-    c.check_outside_begin()?;
     check_unmapped(c, false)?;
     c.check_draw_framebuffer()?;
     if !c.arrays.vertex.enabled || count == 0 {
@@ -243,7 +242,6 @@ pub(crate) fn draw_elements(
         GL_UNSIGNED_INT => DataType::UInt,
         _ => return Err(GlError::InvalidEnum),
     };
-    c.check_outside_begin()?;
     check_unmapped(c, true)?;
     c.check_draw_framebuffer()?;
     if !c.arrays.vertex.enabled || count == 0 {
@@ -310,12 +308,14 @@ pub(crate) fn listable_draw(
 ) {
     with_ctx_raw(|c| match c.lists.compile_mode() {
         None => {
+            c.outside_begin_end()?;
             c.flush_pending();
             exec(c)
         }
         Some(execute) => {
             compile(c);
             if execute {
+                c.outside_begin_end()?;
                 c.flush_pending();
                 exec(c)
             } else {

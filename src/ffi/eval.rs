@@ -5,7 +5,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::{with_ctx, with_ctx_list};
+use super::{with_ctx, with_ctx_list, with_ctx_list_anywhere};
 use crate::context::dlist::VertexOp;
 use crate::context::error::{GlError, GlResult};
 use crate::context::eval::{Grid, MapKind};
@@ -78,7 +78,6 @@ fn map<T: Copy + Into<f64>>(
 ) {
     match gather(target, u, v, ustride, uorder, vstride, vorder, points) {
         Ok((kind, two, pts)) => with_ctx_list(move |c| {
-            c.check_outside_begin()?;
             if c.state.active_texture != 0 {
                 return Err(GlError::InvalidOperation);
             }
@@ -86,10 +85,7 @@ fn map<T: Copy + Into<f64>>(
             let (uo, vo) = (uorder as usize, vorder as usize);
             c.set_map(kind, two, u, vv, uo, vo, pts.clone())
         }),
-        Err(e) => with_ctx_list(move |c| {
-            c.check_outside_begin()?;
-            Err(e)
-        }),
+        Err(e) => with_ctx_list(move |_| Err(e)),
     }
 }
 
@@ -225,7 +221,7 @@ pub extern "C" fn glMapGrid2d(
 /// glEvalCoord: compiled into display lists as a call (evaluated with the maps current
 /// when the list runs, as Mesa's OPCODE_EVAL_C1/C2 do).
 fn coord(u: f32, v: Option<f32>) {
-    with_ctx_list(move |c| {
+    with_ctx_list_anywhere(move |c| {
         c.eval_coord(u, v);
         Ok(())
     })
@@ -308,7 +304,7 @@ pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
 /// glEvalPoint1: `u = i * du + u1` with Mesa's `du = (u2 - u1) / n`.
 #[no_mangle]
 pub extern "C" fn glEvalPoint1(i: GLint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_anywhere(move |c| {
         let g = c.eval.grid1;
         c.eval_coord(i as f32 * g.step() + g.d[0], None);
         Ok(())
@@ -318,7 +314,7 @@ pub extern "C" fn glEvalPoint1(i: GLint) {
 /// glEvalPoint2.
 #[no_mangle]
 pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_anywhere(move |c| {
         let [gu, gv] = c.eval.grid2;
         let u = i as f32 * gu.step() + gu.d[0];
         let v = j as f32 * gv.step() + gv.d[0];
@@ -334,7 +330,6 @@ fn mesh_setup(
     allowed: &[GLenum],
     two: bool,
 ) -> GlResult<Option<[Grid; 2]>> {
-    c.check_outside_begin()?;
     if !allowed.contains(&mode) {
         return Err(GlError::InvalidEnum);
     }
@@ -451,7 +446,6 @@ pub extern "C" fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2:
 /// The values glGetMap returns for `query`, as f64.
 fn get_map(target: GLenum, query: GLenum) -> Vec<f64> {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         let (kind, two) = map_target(target).ok_or(GlError::InvalidEnum)?;
         let m = c.map(kind, two);
         Ok(match query {

@@ -10,37 +10,27 @@ use super::{with_ctx, with_ctx_list};
 /// (GL_FEEDBACK) of the mode being left, -1 when they overflowed the buffer, 0 otherwise.
 #[no_mangle]
 pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.feedback.render_mode(mode)
-    })
+    with_ctx(|c| c.feedback.render_mode(mode))
 }
 
 /// glFeedbackBuffer: `size` floats at `buffer` receive feedback values.
 #[no_mangle]
 pub extern "C" fn glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) {
     let buffer = buffer as usize;
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.feedback.feedback_buffer(size, type_, buffer)
-    })
+    with_ctx(|c| c.feedback.feedback_buffer(size, type_, buffer))
 }
 
 /// glSelectBuffer: `size` unsigned integers at `buffer` receive hit records.
 #[no_mangle]
 pub extern "C" fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint) {
     let buffer = buffer as usize;
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.feedback.select_buffer(size, buffer)
-    })
+    with_ctx(|c| c.feedback.select_buffer(size, buffer))
 }
 
 /// glPassThrough: a GL_PASS_THROUGH_TOKEN and `token` in feedback mode.
 #[no_mangle]
 pub extern "C" fn glPassThrough(token: GLfloat) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.feedback.pass_through(token);
         Ok(())
     })
@@ -50,7 +40,6 @@ pub extern "C" fn glPassThrough(token: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glInitNames() {
     with_ctx_list(|c| {
-        c.check_outside_begin()?;
         c.feedback.init_names();
         Ok(())
     })
@@ -59,26 +48,17 @@ pub extern "C" fn glInitNames() {
 /// glLoadName: replaces the top of the name stack (selection mode only).
 #[no_mangle]
 pub extern "C" fn glLoadName(name: GLuint) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.feedback.load_name(name)
-    })
+    with_ctx_list(move |c| c.feedback.load_name(name))
 }
 
 /// glPushName: pushes a name (selection mode only; GL_STACK_OVERFLOW past 64).
 #[no_mangle]
 pub extern "C" fn glPushName(name: GLuint) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.feedback.push_name(name)
-    })
+    with_ctx_list(move |c| c.feedback.push_name(name))
 }
 
 /// glPopName: pops a name (selection mode only; GL_STACK_UNDERFLOW when empty).
 #[no_mangle]
 pub extern "C" fn glPopName() {
-    with_ctx_list(|c| {
-        c.check_outside_begin()?;
-        c.feedback.pop_name()
-    })
+    with_ctx_list(|c| c.feedback.pop_name())
 }

@@ -54,7 +54,6 @@ pub(crate) fn blend_func(src_rgb: GLenum, dst_rgb: GLenum, src_a: GLenum, dst_a:
             BlendFactor::from_gl(dst_rgb)?,
         );
         let (sa, da) = (BlendFactor::from_gl(src_a)?, BlendFactor::from_gl(dst_a)?);
-        c.check_outside_begin()?;
         let b = &mut c.state.frag.blend;
         (b.src_rgb, b.dst_rgb, b.src_a, b.dst_a) = (sr, dr, sa, da);
         Ok(())
@@ -65,7 +64,6 @@ pub(crate) fn blend_func(src_rgb: GLenum, dst_rgb: GLenum, src_a: GLenum, dst_a:
 pub(crate) fn blend_equation(rgb: GLenum, alpha: GLenum) {
     with_ctx_list(move |c| {
         let (r, a) = (BlendEquation::from_gl(rgb)?, BlendEquation::from_gl(alpha)?);
-        c.check_outside_begin()?;
         c.state.frag.blend.eq_rgb = r;
         c.state.frag.blend.eq_a = a;
         Ok(())
@@ -76,7 +74,6 @@ pub(crate) fn blend_equation(rgb: GLenum, alpha: GLenum) {
 pub(crate) fn stencil_func(faces: Faces, func: GLenum, reference: GLint, mask: GLuint) {
     with_ctx_list(move |c| {
         let f = CompareFunc::from_gl(func)?;
-        c.check_outside_begin()?;
         stencil_faces(c, faces, |s| {
             s.func = f;
             s.reference = reference;
@@ -94,7 +91,6 @@ pub(crate) fn stencil_op(faces: Faces, fail: GLenum, zfail: GLenum, zpass: GLenu
             StencilOp::from_gl(zfail)?,
             StencilOp::from_gl(zpass)?,
         );
-        c.check_outside_begin()?;
         stencil_faces(c, faces, |s| {
             s.fail = a;
             s.zfail = b;
@@ -107,7 +103,6 @@ pub(crate) fn stencil_op(faces: Faces, fail: GLenum, zfail: GLenum, zpass: GLenu
 /// Shared by glStencilMask and glStencilMaskSeparate.
 pub(crate) fn stencil_mask(faces: Faces, mask: GLuint) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         stencil_faces(c, faces, |s| s.writemask = mask);
         Ok(())
     })
@@ -129,7 +124,6 @@ pub extern "C" fn glBlendEquation(mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.frag.blend.color = [red, green, blue, alpha].map(|v| clamp01(v as f64) as f32);
         Ok(())
     })
@@ -140,7 +134,6 @@ pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 pub extern "C" fn glAlphaFunc(func: GLenum, ref_: GLclampf) {
     with_ctx_list(move |c| {
         let f = CompareFunc::from_gl(func)?;
-        c.check_outside_begin()?;
         c.state.frag.alpha_func = f;
         c.state.frag.alpha_ref = ref_;
         Ok(())
@@ -170,7 +163,6 @@ pub extern "C" fn glStencilMask(mask: GLuint) {
 pub extern "C" fn glLogicOp(opcode: GLenum) {
     with_ctx_list(move |c| {
         let op = LogicOp::from_gl(opcode)?;
-        c.check_outside_begin()?;
         c.state.frag.logic_op = op;
         Ok(())
     })

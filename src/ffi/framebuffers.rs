@@ -7,7 +7,7 @@
 use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx};
+use super::{non_negative, with_ctx, with_ctx_list};
 use crate::context::fbo::{
     Attachment, FboState, ImageKind, RbFormat, Renderbuffer, MAX_COLOR_ATTACHMENTS,
     MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
@@ -131,7 +131,6 @@ pub unsafe extern "C" fn glGenFramebuffers(n: GLsizei, framebuffers: *mut GLuint
 unsafe fn gen_names(n: GLsizei, out: *mut GLuint, gen: fn(&mut FboState, usize) -> Vec<u32>) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if !out.is_null() {
             let names = gen(&mut c.fbo, n);
             // SAFETY: the caller promises room for n names.
@@ -149,7 +148,6 @@ unsafe fn gen_names(n: GLsizei, out: *mut GLuint, gen: fn(&mut FboState, usize) 
 pub unsafe extern "C" fn glDeleteFramebuffers(n: GLsizei, framebuffers: *const GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         // SAFETY: the caller promises n readable names.
         for name in unsafe { read_names(n, framebuffers) } {
             if name == 0 {
@@ -172,7 +170,6 @@ pub unsafe extern "C" fn glDeleteFramebuffers(n: GLsizei, framebuffers: *const G
 fn bind_framebuffer(target: GLenum, name: GLuint, any_name: bool) {
     with_ctx(|c| {
         let b = binding(target)?;
-        c.check_outside_begin()?;
         if name != 0 {
             match c.fbo.framebuffers.get_mut(&name) {
                 Some(Some(_)) => {}
@@ -209,10 +206,7 @@ pub extern "C" fn glBindFramebufferEXT(target: GLenum, framebuffer: GLuint) {
 /// glIsFramebuffer: true for names of objects that have been bound.
 #[no_mangle]
 pub extern "C" fn glIsFramebuffer(framebuffer: GLuint) -> GLboolean {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        Ok(c.fbo.object(framebuffer).is_some() as GLboolean)
-    })
+    with_ctx(|c| Ok(c.fbo.object(framebuffer).is_some() as GLboolean))
 }
 
 /// glCheckFramebufferStatus.
@@ -220,7 +214,6 @@ pub extern "C" fn glIsFramebuffer(framebuffer: GLuint) -> GLboolean {
 pub extern "C" fn glCheckFramebufferStatus(target: GLenum) -> GLenum {
     with_ctx(|c| {
         let name = bound_name(c, target)?;
-        c.check_outside_begin()?;
         Ok(c.fbo.status(name, &c.textures).to_gl())
     })
 }
@@ -292,7 +285,6 @@ fn framebuffer_texture(
     with_ctx(|c| {
         binding(target)?;
         let p = point(attachment)?;
-        c.check_outside_begin()?;
         // The 1D/2D/3D entry points take only their own texture targets.
         let fits = match (dims, textarget) {
             (Some(1), Some(t)) => t == GL_TEXTURE_1D,
@@ -399,7 +391,6 @@ pub extern "C" fn glFramebufferRenderbuffer(
         if renderbuffertarget != GL_RENDERBUFFER {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let a = if renderbuffer == 0 {
             Attachment::None
         } else if matches!(c.fbo.renderbuffers.get(&renderbuffer), Some(Some(_))) {
@@ -429,7 +420,6 @@ pub unsafe extern "C" fn glGenRenderbuffers(n: GLsizei, renderbuffers: *mut GLui
 pub unsafe extern "C" fn glDeleteRenderbuffers(n: GLsizei, renderbuffers: *const GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         // SAFETY: the caller promises n readable names.
         let names = unsafe { read_names(n, renderbuffers) };
         c.fbo_edit(|c| {
@@ -451,7 +441,6 @@ fn bind_renderbuffer(target: GLenum, name: GLuint, any_name: bool) {
         if target != GL_RENDERBUFFER {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         if name != 0 {
             match c.fbo.renderbuffers.get_mut(&name) {
                 Some(Some(_)) => {}
@@ -490,10 +479,7 @@ pub extern "C" fn glBindRenderbufferEXT(target: GLenum, renderbuffer: GLuint) {
 /// glIsRenderbuffer: true for names of objects that have been bound.
 #[no_mangle]
 pub extern "C" fn glIsRenderbuffer(renderbuffer: GLuint) -> GLboolean {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        Ok(matches!(c.fbo.renderbuffers.get(&renderbuffer), Some(Some(_))) as GLboolean)
-    })
+    with_ctx(|c| Ok(matches!(c.fbo.renderbuffers.get(&renderbuffer), Some(Some(_))) as GLboolean))
 }
 
 /// The common body of glRenderbufferStorage(Multisample).
@@ -509,7 +495,6 @@ fn renderbuffer_storage(
             return Err(GlError::InvalidEnum);
         }
         let format = RbFormat::from_internal(internal).ok_or(GlError::InvalidEnum)?;
-        c.check_outside_begin()?;
         let max = MAX_RENDERBUFFER_SIZE as GLsizei;
         if !(0..=max).contains(&w) || !(0..=max).contains(&h) {
             return Err(GlError::InvalidValue);
@@ -577,7 +562,6 @@ pub unsafe extern "C" fn glGetRenderbufferParameteriv(
         if target != GL_RENDERBUFFER {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let rb = c
             .fbo
             .bound_renderbuffer_mut()
@@ -616,7 +600,6 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameteriv(
 ) {
     let v = with_ctx(|c| {
         let name = bound_name(c, target)?;
-        c.check_outside_begin()?;
         let v = if name == 0 {
             window_attachment_param(c, attachment, pname)?
         } else {
@@ -786,7 +769,8 @@ pub extern "C" fn glBlitFramebuffer(
     mask: GLbitfield,
     filter: GLenum,
 ) {
-    with_ctx(|c| {
+    // Compiled into display lists, as Mesa's OPCODE_BLIT_FRAMEBUFFER.
+    with_ctx_list(move |c| {
         let all = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT;
         if mask & !all != 0 {
             return Err(GlError::InvalidValue);
@@ -799,7 +783,6 @@ pub extern "C" fn glBlitFramebuffer(
         if linear && mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
             return Err(GlError::InvalidOperation);
         }
-        c.check_outside_begin()?;
         let m = crate::pixels::blit::BlitMask {
             color: mask & GL_COLOR_BUFFER_BIT != 0,
             depth: mask & GL_DEPTH_BUFFER_BIT != 0,

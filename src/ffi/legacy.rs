@@ -117,7 +117,6 @@ pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
 #[no_mangle]
 pub extern "C" fn glIndexMask(mask: GLuint) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.legacy.index_mask = mask;
         Ok(())
     })
@@ -127,7 +126,6 @@ pub extern "C" fn glIndexMask(mask: GLuint) {
 #[no_mangle]
 pub extern "C" fn glClearIndex(c: GLfloat) {
     with_ctx_list(move |ctx| {
-        ctx.check_outside_begin()?;
         ctx.state.legacy.set_clear_index(c);
         Ok(())
     })
@@ -137,7 +135,6 @@ pub extern "C" fn glClearIndex(c: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.legacy.set_sample_coverage(value, invert != 0);
         Ok(())
     })
@@ -148,7 +145,6 @@ pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
 #[no_mangle]
 pub extern "C" fn glDrawBuffer(mode: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if c.fbo.draw != 0 {
             let b = crate::ffi::framebuffers::object_buffer(mode)?;
             return c.fbo_edit(|c| {
@@ -168,7 +164,6 @@ pub extern "C" fn glDrawBuffer(mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glReadBuffer(mode: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let read = c.fbo.read;
         if let Some(f) = c.fbo.object_mut(read) {
             f.read_buffer = crate::ffi::framebuffers::object_buffer(mode)?;

@@ -78,22 +78,18 @@ fn is_color(pname: GLenum) -> bool {
 
 fn light(light: GLenum, pname: GLenum, p: [f32; 4]) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let mv = c.matrices.modelview.top().0;
         c.light.set_light(light, pname, &p, &mv)
     })
 }
 
 fn light_model(pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.light.set_light_model(pname, &p)
-    })
+    with_ctx_list(move |c| c.light.set_light_model(pname, &p))
 }
 
 fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
     // glMaterial is allowed between glBegin and glEnd.
-    with_ctx_list(move |c| {
+    super::with_ctx_list_anywhere(move |c| {
         let cm = c.state.caps.get(Cap::ColorMaterial);
         c.material_changing();
         c.light.set_material(face, pname, &p, cm)
@@ -101,10 +97,7 @@ fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
 }
 
 fn fog(pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.light.set_fog(pname, &p)
-    })
+    with_ctx_list(move |c| c.light.set_fog(pname, &p))
 }
 
 /// Copies the current colour into the tracked material terms when GL_COLOR_MATERIAL is on
@@ -159,10 +152,7 @@ pub unsafe extern "C" fn glLightiv(light_: GLenum, pname: GLenum, params: *const
 
 /// Shared by glGetLightfv/iv: the values, or an error.
 fn get_light(light_: GLenum, pname: GLenum) -> Option<Vec<f32>> {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.light.get_light(light_, pname).map(Some)
-    })
+    with_ctx(|c| c.light.get_light(light_, pname).map(Some))
 }
 
 /// glGetLightfv.
@@ -286,7 +276,6 @@ pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *cons
 /// Shared by glGetMaterialfv/iv.
 fn get_material(face: GLenum, pname: GLenum) -> Option<Vec<f32>> {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         sync_color_material(c);
         c.light.get_material(face, pname).map(Some)
     })
@@ -336,7 +325,6 @@ pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *m
 #[no_mangle]
 pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.light.set_color_material(face, mode)?;
         sync_color_material(c);
         Ok(())

@@ -5,7 +5,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::{with_ctx, with_ctx_list};
+use super::{with_ctx, with_ctx_list, with_ctx_list_anywhere};
 use crate::context::error::GlError;
 
 /// glNewList.
@@ -34,7 +34,7 @@ pub extern "C" fn glEndList() {
 /// glCallList.
 #[no_mangle]
 pub extern "C" fn glCallList(list: GLuint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_anywhere(move |c| {
         if list == 0 {
             return Err(GlError::InvalidValue);
         }
@@ -98,7 +98,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
         // SAFETY: forwarded caller contract.
         Ok(_) => unsafe { read_names(n as usize, type_, lists) },
     };
-    with_ctx_list(move |c| {
+    with_ctx_list_anywhere(move |c| {
         let names = names.as_ref().map_err(|e| *e)?;
         let base = c.lists.base;
         for &k in names {
@@ -112,7 +112,6 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
 #[no_mangle]
 pub extern "C" fn glListBase(base: GLuint) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.lists.base = base;
         Ok(())
     })
@@ -133,10 +132,7 @@ pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
 /// glIsList.
 #[no_mangle]
 pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        Ok(c.is_list(list) as GLboolean)
-    })
+    with_ctx(|c| Ok(c.is_list(list) as GLboolean))
 }
 
 /// glPushAttrib.

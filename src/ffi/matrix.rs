@@ -19,7 +19,6 @@ pub extern "C" fn glMatrixMode(mode: GLenum) {
             GL_COLOR => MatrixMode::Color,
             _ => return Err(GlError::InvalidEnum),
         };
-        c.check_outside_begin()?;
         c.state.matrix_mode = m;
         Ok(())
     })
@@ -214,7 +213,6 @@ pub extern "C" fn glFrustum(
     zFar: GLdouble,
 ) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if zNear <= 0.0 || zFar <= 0.0 || zNear == zFar || left == right || top == bottom {
             return Err(GlError::InvalidValue);
         }
@@ -244,7 +242,6 @@ pub extern "C" fn glOrtho(
     zFar: GLdouble,
 ) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if left == right || bottom == top || zNear == zFar {
             return Err(GlError::InvalidValue);
         }
@@ -266,17 +263,11 @@ pub extern "C" fn glOrtho(
 /// glPushMatrix.
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.current_stack().push()
-    })
+    with_ctx_list(move |c| c.current_stack().push())
 }
 
 /// glPopMatrix.
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.current_stack().pop()
-    })
+    with_ctx_list(move |c| c.current_stack().pop())
 }

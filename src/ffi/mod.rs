@@ -22,6 +22,17 @@
 //!   glFlush/glFinish, buffer objects, glFeedbackBuffer/glSelectBuffer/glRenderMode);
 //!   [`with_ctx_raw`] only where the deferred immediate-mode batch must not be drawn first.
 //!
+//! The wrappers also enforce the glBegin/glEnd rule (GL 1.5 §2.6.3), so no entry point
+//! checks it itself: between glBegin and glEnd only the per-vertex commands, glMaterial,
+//! glEvalCoord/glEvalPoint, glArrayElement and glCallList(s) may run. Every other command is
+//! GL_INVALID_OPERATION, changes nothing and returns 0, before any argument is looked at,
+//! as Mesa's dispatch table for the inside of glBegin/glEnd does (glGetError and glIsEnabled
+//! included). [`with_ctx`] and [`with_ctx_list`] refuse there; the allowed listable
+//! commands use [`with_ctx_list_anywhere`], OSMesa's own functions [`with_ctx_anywhere`].
+//! A command compiled into a display list keeps the rule: it fails when the list runs
+//! inside glBegin/glEnd, and compiled between a glBegin and glEnd of the list itself it is
+//! compiled as the error (Mesa's `_mesa_compile_error`).
+//!
 //! The headers in `include/GL` are generated from these files by cbindgen
 //! (`cargo run --example gen_headers`); a test fails when they are stale.
 
@@ -88,9 +99,20 @@ pub(crate) fn current() -> *mut Context {
 
 /// Runs `f` on the current context after drawing any deferred glBegin/glEnd batch;
 /// records its error, and turns a panic into GL_OUT_OF_MEMORY. Returns `R::default()`
-/// without a context or on error.
+/// without a context or on error, and between glBegin and glEnd (GL_INVALID_OPERATION).
 #[inline]
 pub(crate) fn with_ctx<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
+    with_ctx_raw(|c| {
+        c.outside_begin_end()?;
+        c.flush_pending();
+        f(c)
+    })
+}
+
+/// As [`with_ctx`] but allowed between glBegin and glEnd: for OSMesa's own functions,
+/// which are not GL commands.
+#[inline]
+pub(crate) fn with_ctx_anywhere<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
     with_ctx_raw(|c| {
         c.flush_pending();
         f(c)
@@ -125,27 +147,72 @@ pub(crate) fn with_ctx_raw<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<
     }
 }
 
+/// Whether a command may run: false without a context, and between glBegin and glEnd,
+/// where it records GL_INVALID_OPERATION (for entry points that do work before [`with_ctx`]).
+pub(crate) fn outside_begin_end() -> bool {
+    with_ctx(|_| Ok(true))
+}
+
 /// Runs a listable command: records `f` into the display list being compiled (running it
 /// too under GL_COMPILE_AND_EXECUTE), or runs it now as [`with_ctx`] does. See the module
-/// documentation for what `f` may capture.
+/// documentation for what `f` may capture, and for the glBegin/glEnd rule it applies.
 #[inline]
 pub(crate) fn with_ctx_list<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
+    listable(f, false)
+}
+
+/// As [`with_ctx_list`] for the listable commands allowed between glBegin and glEnd
+/// (glMaterial, glEvalCoord, glEvalPoint, glCallList(s)).
+#[inline]
+pub(crate) fn with_ctx_list_anywhere<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    listable(f, true)
+}
+
+/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`].
+#[inline]
+fn listable<F>(f: F, anywhere: bool)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
     with_ctx_raw(|c| match c.lists.compile_mode() {
         None => {
+            if !anywhere {
+                c.outside_begin_end()?;
+            }
             c.flush_pending();
             f(c)
         }
         Some(execute) => {
+            if !anywhere && c.lists.compiling_inside_begin() {
+                // Compiled as its error, raised now too under GL_COMPILE_AND_EXECUTE.
+                c.lists
+                    .push_call(Box::new(|_| Err(GlError::InvalidOperation)));
+                return if execute {
+                    Err(GlError::InvalidOperation)
+                } else {
+                    Ok(())
+                };
+            }
             let r = if execute {
                 c.flush_pending();
                 f(c)
             } else {
                 Ok(())
             };
-            c.lists.push_call(Box::new(f));
+            if anywhere {
+                c.lists.push_call(Box::new(f));
+            } else {
+                c.lists.push_call(Box::new(move |c: &mut Context| {
+                    c.outside_begin_end()?;
+                    f(c)
+                }));
+            }
             r
         }
     })
@@ -188,5 +255,5 @@ pub fn current_stats() -> Option<crate::stats::Stats> {
     if p.is_null() {
         return None;
     }
-    Some(with_ctx(|c| Ok(c.stats)))
+    Some(with_ctx_anywhere(|c| Ok(c.stats)))
 }

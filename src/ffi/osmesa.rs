@@ -429,7 +429,7 @@ pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
 /// context.
 #[no_mangle]
 pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
-    super::with_ctx(|c| {
+    super::with_ctx_anywhere(|c| {
         match pname {
             OSMESA_ROW_LENGTH => {
                 if value < 0 {
@@ -454,7 +454,7 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
         return;
     }
     let handle = OSMesaGetCurrentContext();
-    let v = super::with_ctx(|c| {
+    let v = super::with_ctx_anywhere(|c| {
         Ok(Some(match pname {
             OSMESA_WIDTH => c.target.width as GLint,
             OSMESA_HEIGHT => c.target.height as GLint,

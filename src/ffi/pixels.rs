@@ -9,7 +9,6 @@ use crate::pixels::raster_pos::raster_pos;
 
 fn rp(v: [f32; 4]) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         raster_pos(c, v);
         Ok(())
     })
@@ -258,7 +257,6 @@ pub unsafe extern "C" fn glRasterPos4dv(v: *const GLdouble) {
 #[no_mangle]
 pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.pixel_modes.zoom = [xfactor, yfactor];
         Ok(())
     })

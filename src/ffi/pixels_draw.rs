@@ -39,7 +39,6 @@ pub unsafe extern "C" fn glDrawPixels(
         _ => None,
     };
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if width < 0 || height < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -78,7 +77,6 @@ pub unsafe extern "C" fn glDrawPixels(
 #[no_mangle]
 pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if width < 0 || height < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -135,7 +133,6 @@ pub unsafe extern "C" fn glBitmap(
         Vec::new()
     };
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if width < 0 || height < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -152,10 +149,7 @@ pub unsafe extern "C" fn glBitmap(
 /// glPixelTransferf.
 #[no_mangle]
 pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.pixel_modes.transfer.set(pname, param)
-    })
+    with_ctx_list(move |c| c.pixel_modes.transfer.set(pname, param))
 }
 
 /// glPixelTransferi.
@@ -165,10 +159,7 @@ pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
 }
 
 fn pixel_map(map: GLenum, values: Vec<f32>) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
-        c.pixel_maps.set(map, &values)
-    })
+    with_ctx_list(move |c| c.pixel_maps.set(map, &values))
 }
 
 /// Reads `n` values (none for a null pointer or a count outside 1..=256).
@@ -196,8 +187,7 @@ fn from_ints(map: GLenum, v: &[f64], max: f64) -> Vec<f32> {
 }
 
 fn bad_size(map: GLenum, n: GLsizei) {
-    with_ctx_list(move |c| {
-        c.check_outside_begin()?;
+    with_ctx_list(move |_| {
         map_index(map)?;
         let _ = n;
         Err(GlError::InvalidValue)

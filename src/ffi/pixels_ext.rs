@@ -9,7 +9,6 @@ use crate::pixels::raster_pos::window_pos;
 
 fn wp(x: f32, y: f32, z: f32) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         window_pos(c, x, y, z);
         Ok(())
     })

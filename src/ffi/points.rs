@@ -18,7 +18,6 @@ fn count(pname: GLenum) -> usize {
 /// Records or runs glPointParameterfv(pname, v).
 fn point_parameter(pname: GLenum, v: [f32; 3]) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let p = PointParam::from_gl(pname)?;
         c.raster.point.set(p, v)
     })

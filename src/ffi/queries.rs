@@ -83,7 +83,6 @@ pub extern "C" fn glEndQuery(target: GLenum) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetQueryiv(target: GLenum, pname: GLenum, params: *mut GLint) {
     let v: Option<GLint> = with_ctx(|c| {
-        c.check_outside_begin()?;
         samples_target(target)?;
         Ok(Some(match pname {
             GL_CURRENT_QUERY => c.queries.active.map_or(0, |a| a.0 as GLint),

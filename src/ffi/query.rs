@@ -21,7 +21,6 @@ fn get_into<T>(
     conv: impl Fn(&crate::context::get::Value, &mut dyn FnMut(usize, T)),
 ) {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         let v = get(c, pname)?;
         if out.is_null() {
             return Ok(());
@@ -104,8 +103,8 @@ pub const EXTENSIONS: &str = concat!(
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list.
 #[no_mangle]
 pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
-    // Without a current context GL calls do nothing and return 0, as in Mesa.
-    if super::current().is_null() {
+    // Without a current context, and between glBegin and glEnd, GL calls return 0 (Mesa).
+    if !super::outside_begin_end() {
         return std::ptr::null();
     }
     let s: &'static [u8] = match name {
@@ -118,11 +117,6 @@ pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
             return std::ptr::null();
         }
     };
-    let inside = with_ctx(|c| Ok(c.immediate.active.is_some()));
-    if inside {
-        with_ctx(|_| Err::<(), _>(GlError::InvalidOperation));
-        return std::ptr::null();
-    }
     s.as_ptr()
 }
 
@@ -253,7 +247,6 @@ fn read_pixels(
         _ if ds_type => 4,
         _ => return Err(GlError::InvalidEnum),
     };
-    c.check_outside_begin()?;
     c.prepare_read()?;
     if matches!(kind, ReadKind::Color(..)) && !c.reads_color() {
         // glReadBuffer(GL_NONE): no colour buffer to read.

@@ -12,7 +12,6 @@ use crate::context::state::Face;
 #[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if width.is_nan() || width <= 0.0 {
             return Err(GlError::InvalidValue);
         }
@@ -25,7 +24,6 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.raster.line.stipple_repeat = factor.clamp(1, 256) as u32;
         c.raster.line.stipple_pattern = pattern;
         Ok(())
@@ -36,7 +34,6 @@ pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
 #[no_mangle]
 pub extern "C" fn glPointSize(size: GLfloat) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if size.is_nan() || size <= 0.0 {
             return Err(GlError::InvalidValue);
         }
@@ -49,7 +46,6 @@ pub extern "C" fn glPointSize(size: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let face = Face::from_gl(face)?;
         let mode = FillMode::from_gl(mode)?;
         let p = &mut c.raster.polygon;
@@ -67,7 +63,6 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.raster.polygon.offset_factor = factor;
         c.raster.polygon.offset_units = units;
         Ok(())
@@ -99,7 +94,6 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
         b
     });
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         if let Some(b) = bytes {
             c.raster.stipple.0 = stipple_from_bytes(&b, c.state.unpack.lsb_first);
         }
@@ -114,7 +108,6 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
     let rows = with_ctx(|c| {
-        c.check_outside_begin()?;
         let lsb = c.state.pack.lsb_first;
         Ok(Some(c.raster.stipple.0.map(|r| {
             let b = r.to_be_bytes();

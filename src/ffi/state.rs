@@ -14,16 +14,8 @@ use crate::context::Context;
 /// glGetError: the first error since the last call, or GL_NO_ERROR.
 #[no_mangle]
 pub extern "C" fn glGetError() -> GLenum {
-    let p = super::current();
-    if p.is_null() {
-        return GL_NO_ERROR;
-    }
-    with_ctx(|c| {
-        if c.immediate.active.is_some() {
-            return Err(GlError::InvalidOperation);
-        }
-        Ok(c.take_error().map_or(GL_NO_ERROR, GlError::to_gl))
-    })
+    // Between glBegin and glEnd it returns 0 and records GL_INVALID_OPERATION, as Mesa.
+    with_ctx(|c| Ok(c.take_error().map_or(GL_NO_ERROR, GlError::to_gl)))
 }
 
 /// glEnable.
@@ -52,7 +44,6 @@ pub extern "C" fn glDisable(cap: GLenum) {
 #[no_mangle]
 pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         let a = &c.arrays;
         let on = match cap {
             GL_VERTEX_ARRAY => a.vertex.enabled,
@@ -73,7 +64,6 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
 #[no_mangle]
 pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.clear_color = [red, green, blue, alpha].map(|v| clamp01(v as f64) as f32);
         Ok(())
     })
@@ -83,7 +73,6 @@ pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 #[no_mangle]
 pub extern "C" fn glClearDepth(depth: GLclampd) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.clear_depth = clamp01(depth);
         Ok(())
     })
@@ -93,7 +82,6 @@ pub extern "C" fn glClearDepth(depth: GLclampd) {
 #[no_mangle]
 pub extern "C" fn glClearStencil(s: GLint) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.clear_stencil = s;
         Ok(())
     })
@@ -128,7 +116,6 @@ pub extern "C" fn glDepthRange(near_val: GLclampd, far_val: GLclampd) {
 pub extern "C" fn glDepthFunc(func: GLenum) {
     with_ctx_list(move |c| {
         let f = CompareFunc::from_gl(func)?;
-        c.check_outside_begin()?;
         c.state.depth_func = f;
         Ok(())
     })
@@ -138,7 +125,6 @@ pub extern "C" fn glDepthFunc(func: GLenum) {
 #[no_mangle]
 pub extern "C" fn glDepthMask(flag: GLboolean) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.depth_mask = gl_bool(flag);
         Ok(())
     })
@@ -148,7 +134,6 @@ pub extern "C" fn glDepthMask(flag: GLboolean) {
 #[no_mangle]
 pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         c.state.color_mask = [red, green, blue, alpha].map(gl_bool);
         Ok(())
     })
@@ -163,7 +148,6 @@ pub extern "C" fn glShadeModel(mode: GLenum) {
             GL_SMOOTH => ShadeModel::Smooth,
             _ => return Err(GlError::InvalidEnum),
         };
-        c.check_outside_begin()?;
         c.state.shade_model = m;
         Ok(())
     })
@@ -174,7 +158,6 @@ pub extern "C" fn glShadeModel(mode: GLenum) {
 pub extern "C" fn glCullFace(mode: GLenum) {
     with_ctx_list(move |c| {
         let f = Face::from_gl(mode)?;
-        c.check_outside_begin()?;
         c.state.cull_face = f;
         Ok(())
     })
@@ -189,7 +172,6 @@ pub extern "C" fn glFrontFace(mode: GLenum) {
             GL_CW => false,
             _ => return Err(GlError::InvalidEnum),
         };
-        c.check_outside_begin()?;
         c.state.front_ccw = ccw;
         Ok(())
     })
@@ -202,7 +184,6 @@ pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
         if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         let h = &mut c.state.hints;
         let slot = match target {
             GL_PERSPECTIVE_CORRECTION_HINT => &mut h.perspective_correction,
@@ -223,7 +204,6 @@ pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glFlush() {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         c.flush();
         Ok(())
     })
@@ -237,7 +217,6 @@ pub extern "C" fn glFinish() {
 
 fn pixel_store(pname: GLenum, value: f64) {
     with_ctx(|c| {
-        c.check_outside_begin()?;
         let (store, which): (&mut PixelStore, GLenum) = match pname {
             GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST | GL_PACK_ROW_LENGTH | GL_PACK_SKIP_ROWS
             | GL_PACK_SKIP_PIXELS | GL_PACK_ALIGNMENT | GL_PACK_IMAGE_HEIGHT

@@ -21,7 +21,6 @@ fn texgen_count(pname: GLenum) -> usize {
 
 fn texgen(coord: GLenum, pname: GLenum, p: [f32; 4]) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let unit = c.state.active_texture;
         c.texgen.set(unit, coord, pname, p, &c.matrices.modelview)
     })
@@ -86,10 +85,7 @@ pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const
 /// # Safety
 /// `params` must be null or writable for the values `pname` returns.
 unsafe fn get_texgen<T>(coord: GLenum, pname: GLenum, params: *mut T, conv: impl Fn(f64) -> T) {
-    let r = with_ctx(|c| {
-        c.check_outside_begin()?;
-        c.texgen.get(c.state.active_texture, coord, pname).map(Some)
-    });
+    let r = with_ctx(|c| c.texgen.get(c.state.active_texture, coord, pname).map(Some));
     if let Some((v, n)) = r {
         if params.is_null() {
             return;
@@ -142,7 +138,6 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
         return;
     };
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let i = ClipPlanes::index(plane)?;
         c.clip_planes.eye[i] = plane_times_inverse(&c.matrices.modelview, eq.map(|v| v as f32));
         Ok(())
@@ -156,7 +151,6 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble) {
     let r = with_ctx(|c| {
-        c.check_outside_begin()?;
         let i = ClipPlanes::index(plane)?;
         Ok(Some(c.clip_planes.eye[i]))
     });

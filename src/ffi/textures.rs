@@ -166,7 +166,6 @@ unsafe fn tex_image(
     let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     depth_match(base, &cf)?;
-    c.check_outside_begin()?;
     let storage = storage_of(internal, base, sformat, sty);
     let size = image_size(t, level, w, h, border);
     if proxy {
@@ -233,7 +232,6 @@ unsafe fn tex_sub_image(
     let cf = ClientFormat::new(format, ty)?;
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
-    c.check_outside_begin()?;
     let ps = unpack;
     let (base, storage, width, height, internal) = object(c, t, false)
         .face_levels(face)
@@ -546,7 +544,6 @@ fn copy_tex_image(
     let Some((tw, th)) = image_size(t, level, w, h, border)? else {
         return Ok(());
     };
-    c.check_outside_begin()?;
     let b = border;
     let storage = storage_of(internal as i32, base, 0, 0);
     let (sx, sy) = (x + b, y + if dims == 2 { b } else { 0 });
@@ -593,7 +590,6 @@ fn copy_tex_sub_image(
     };
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
-    c.check_outside_begin()?;
     let (base, storage, internal) = object(c, t, false)
         .face_levels(face)
         .get(level)
@@ -637,7 +633,6 @@ fn copy_tex_sub_image(
 pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if textures.is_null() {
             return Ok(());
         }
@@ -657,7 +652,6 @@ pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
 pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if textures.is_null() {
             return Ok(());
         }
@@ -678,7 +672,6 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
     with_ctx_list(move |c| {
         let t = bind_target(target)?;
-        c.check_outside_begin()?;
         if c.textures.high_unit.is_some() {
             // GL_TEXTURE8..31: no binding state here (see TextureState::high_unit)
             return Ok(());
@@ -691,10 +684,7 @@ pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
 /// glIsTexture.
 #[no_mangle]
 pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
-    with_ctx(|c| {
-        c.check_outside_begin()?;
-        Ok(c.textures.is_texture(texture) as GLboolean)
-    })
+    with_ctx(|c| Ok(c.textures.is_texture(texture) as GLboolean))
 }
 
 /// glTexImage1D.
@@ -915,7 +905,6 @@ pub unsafe extern "C" fn glGetTexImage(
         };
         let level = check_level(level)?;
         let cf = ClientFormat::new(format, type_)?;
-        c.check_outside_begin()?;
         let ps = c.state.pack;
         let obj = object(c, t, false);
         let Some(Some(img)) = obj.face_levels(face).get(level) else {
@@ -1055,14 +1044,12 @@ fn tex_parameter(
         }
         _ => return Err(GlError::InvalidEnum),
     }
-    c.check_outside_begin()?;
     object_mut(c, t, false).params = p;
     Ok(())
 }
 
 fn get_tex_parameter(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
     let t = bind_target(target)?;
-    c.check_outside_begin()?;
     let p = &object(c, t, false).params;
     let one = |x: f64| Ok((vec![x], false));
     match pname {
@@ -1099,7 +1086,6 @@ fn get_level_parameter(
 ) -> GlResult<f64> {
     let (t, proxy, face) = image_target(target)?;
     let level = check_level(level)?;
-    c.check_outside_begin()?;
     let obj = object(c, t, proxy);
     let img = obj.face_levels(face).get(level).and_then(|l| l.as_ref());
     let depth = if t == Target::Tex3D {
@@ -1303,7 +1289,6 @@ fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool
             if pname != GL_TEXTURE_LOD_BIAS {
                 return Err(GlError::InvalidEnum);
             }
-            c.check_outside_begin()?;
             c.textures.units[unit].lod_bias = v[0] as f32;
             return Ok(());
         }
@@ -1354,13 +1339,11 @@ fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool
         GL_ALPHA_SCALE => env.alpha_scale = scale_from(v[0])?,
         _ => return Err(GlError::InvalidEnum),
     }
-    c.check_outside_begin()?;
     c.textures.units[unit].env = env;
     Ok(())
 }
 
 fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
-    c.check_outside_begin()?;
     if c.textures.high_unit.is_some() {
         // no texenv state on units ≥ 8: nothing is written
         return Ok((Vec::new(), false));
@@ -1498,7 +1481,6 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
         if u >= MAX_COMBINED_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         if u >= MAX_TEXTURE_UNITS {
             c.textures.high_unit = Some(u as u32);
             c.state.caps.set(Cap::Texture1D, false);
@@ -1532,7 +1514,6 @@ pub extern "C" fn glClientActiveTexture(texture: GLenum) {
         if u >= MAX_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
         }
-        c.check_outside_begin()?;
         c.state.client_active_texture = u;
         Ok(())
     })
@@ -1564,7 +1545,6 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     let arrays = read();
     with_ctx_list(move |c| {
         let (names, prios) = arrays.as_ref().map_err(|e| *e)?;
-        c.check_outside_begin()?;
         for (&name, &p) in names.iter().zip(prios) {
             if let Some(o) = c.textures.objects.get_mut(&name) {
                 o.params.priority = crate::context::clamp01(p as f64) as f32;
@@ -1587,7 +1567,6 @@ pub unsafe extern "C" fn glAreTexturesResident(
 ) -> GLboolean {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        c.check_outside_begin()?;
         if textures.is_null() {
             return Ok(GL_TRUE as GLboolean);
         }

@@ -136,7 +136,6 @@ unsafe fn tex_image_3d(
     if cf.is_depth() || base == BaseFormat::Depth {
         return Err(GlError::InvalidOperation);
     }
-    c.check_outside_begin()?;
     let storage = upload::choose_storage(internal, base, sformat, sty);
     let size = size_3d(level, w, h, d, border);
     let header = |w, h| Level {
@@ -202,7 +201,6 @@ unsafe fn tex_sub_image_3d(
     }
     let level = check_level(level)?;
     let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
-    c.check_outside_begin()?;
     c.prepare_read()?;
     let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
@@ -247,7 +245,6 @@ fn copy_tex_sub_image_3d(
     }
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
-    c.check_outside_begin()?;
     let obj = object(c, Target::Tex3D, false);
     let depth = obj.depths[level];
     let img = obj.levels[level]

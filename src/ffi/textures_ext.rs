@@ -16,7 +16,6 @@ use crate::context::error::GlError;
 pub extern "C" fn glGenerateMipmap(target: GLenum) {
     with_ctx(|c| {
         let t = bind_target(target)?;
-        c.check_outside_begin()?;
         let obj = object_mut(c, t, false);
         let p = obj.params;
         let base = usize::try_from(p.base_level).map_err(|_| GlError::InvalidOperation)?;

@@ -17,7 +17,6 @@ use crate::geometry::ClipConvention;
 #[no_mangle]
 pub extern "C" fn glClipControl(origin: GLenum, depth: GLenum) {
     with_ctx_list(move |c| {
-        c.check_outside_begin()?;
         let cur = c.state.clip_control;
         let cur_origin = if cur.upper_left {
             GL_UPPER_LEFT
