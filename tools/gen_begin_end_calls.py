@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Writes c_tests/begin_end_calls.h: one call with sane arguments for every GL entry point
-softgl exports (every prototype in include/GL/gl.h and glext.h), for the begin_end_errors
-scene. Run from the repository root after adding entry points:
+softgl exports (every prototype in include/GL/gl.h and glext.h that the built
+libsoftgl.so defines; glext.h declares every function of the registry), for the
+begin_end_errors scene. Run from the repository root after adding entry points and
+building the library:
 
-    python3 tools/gen_begin_end_calls.py
+    python3 tools/gen_begin_end_calls.py [path/to/libsoftgl.so]
 
 Each entry is `CALL(name, kind, expr)`: `kind` says how to print the value `expr` returns
 (V void, N number, P pointer). Arguments come from the parameter's type and name, with the
@@ -12,6 +14,7 @@ the scene made (2 is a name no object has; 1 is the scene's texture, buffer, lis
 """
 
 import re
+import subprocess
 import sys
 
 # glEnd closes the pair the scene opens, so it is not one of the calls.
@@ -180,7 +183,7 @@ def pointer_arg(func, ptype, pname):
         return {"v1": "rect_lo", "v2": "rect_hi"}[pname] + "_" + base[2:]
     if OFFSCREEN.match(func):
         return "off_" + base[2:]
-    if base in ("GLvoid", "GLubyte", "GLbyte", "GLboolean"):
+    if base in ("GLvoid", "void", "GLubyte", "GLbyte", "GLboolean"):
         return f"(const {base} *)cub"
     return "c_" + {"GLclampf": "float", "GLclampd": "double"}.get(base, base[2:])
 
@@ -199,7 +202,16 @@ def scalar_arg(func, ptype, pname, enum_map):
     return str(INT_BY_NAME.get(pname, 1))
 
 
+def exports(lib):
+    """The gl* functions the library defines (nm -D --defined-only)."""
+    out = subprocess.run(["nm", "-D", "--defined-only", lib], capture_output=True, text=True,
+                         check=True).stdout
+    return {line.split()[-1] for line in out.splitlines() if line.split()[-1].startswith("gl")}
+
+
 def main():
+    lib = sys.argv[1] if len(sys.argv) > 1 else "target/release/libsoftgl.so"
+    exported = exports(lib)
     txt = open("include/GL/gl.h").read() + open("include/GL/glext.h").read()
     protos = re.findall(
         r"GLAPI\s+([^;]*?)\s*(?:GLAPIENTRY|APIENTRY)\s*\*?\s*(gl\w+)\s*\(([^)]*)\)\s*;", txt)
@@ -207,7 +219,7 @@ def main():
            " edit. */"]
     seen = set()
     for ret, name, params in protos:
-        if name in SKIP or name in seen:
+        if name in SKIP or name in seen or name not in exported:
             continue
         seen.add(name)
         ret = ret.replace("GLAPI", "").strip()
