@@ -85,10 +85,16 @@ fn build(name: &str, link: Link) -> PathBuf {
     out
 }
 
-/// Runs a binary (llvmpipe pinned to one thread) and returns what it wrote.
+/// Runs a binary (llvmpipe pinned to one thread, and its fusing to softgl's level as in
+/// src/cpu.rs; softgl ignores both) and returns what it wrote.
 fn run(bin: &Path) -> Vec<u8> {
     let out = bin.with_extension("out");
-    softglut_libs::run_checked(Command::new(bin).arg(&out).env("LP_NUM_THREADS", "1"));
+    softglut_libs::run_checked(
+        Command::new(bin)
+            .arg(&out)
+            .env("LP_NUM_THREADS", "1")
+            .envs(softgl::cpu::reference_cpu_caps().map(|c| ("GALLIUM_OVERRIDE_CPU_CAPS", c))),
+    );
     fs::read(&out).expect("read output")
 }
 
