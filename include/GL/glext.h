@@ -184,6 +184,14 @@ typedef ptrdiff_t GLintptr;
 #define GL_CLAMP_TO_BORDER_ARB                   0x812D
 #endif /* GL_ARB_texture_border_clamp */
 
+#ifndef GL_ARB_texture_compression_rgtc
+#define GL_ARB_texture_compression_rgtc          1
+#define GL_COMPRESSED_RED_RGTC1                  0x8DBB
+#define GL_COMPRESSED_SIGNED_RED_RGTC1           0x8DBC
+#define GL_COMPRESSED_RG_RGTC2                   0x8DBD
+#define GL_COMPRESSED_SIGNED_RG_RGTC2            0x8DBE
+#endif /* GL_ARB_texture_compression_rgtc */
+
 #ifndef GL_ARB_texture_cube_map
 #define GL_ARB_texture_cube_map                  1
 #define GL_NORMAL_MAP_ARB                        0x8511
@@ -492,6 +500,30 @@ typedef ptrdiff_t GLintptr;
 #define GL_TEXTURE_WRAP_R_EXT                    0x8072
 #define GL_MAX_3D_TEXTURE_SIZE_EXT               0x8073
 #endif /* GL_EXT_texture3D */
+
+#ifndef GL_EXT_texture_compression_latc
+#define GL_EXT_texture_compression_latc          1
+#define GL_COMPRESSED_LUMINANCE_LATC1_EXT        0x8C70
+#define GL_COMPRESSED_SIGNED_LUMINANCE_LATC1_EXT 0x8C71
+#define GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT  0x8C72
+#define GL_COMPRESSED_SIGNED_LUMINANCE_ALPHA_LATC2_EXT 0x8C73
+#endif /* GL_EXT_texture_compression_latc */
+
+#ifndef GL_EXT_texture_compression_rgtc
+#define GL_EXT_texture_compression_rgtc          1
+#define GL_COMPRESSED_RED_RGTC1_EXT              0x8DBB
+#define GL_COMPRESSED_SIGNED_RED_RGTC1_EXT       0x8DBC
+#define GL_COMPRESSED_RED_GREEN_RGTC2_EXT        0x8DBD
+#define GL_COMPRESSED_SIGNED_RED_GREEN_RGTC2_EXT 0x8DBE
+#endif /* GL_EXT_texture_compression_rgtc */
+
+#ifndef GL_EXT_texture_compression_s3tc
+#define GL_EXT_texture_compression_s3tc          1
+#define GL_COMPRESSED_RGB_S3TC_DXT1_EXT          0x83F0
+#define GL_COMPRESSED_RGBA_S3TC_DXT1_EXT         0x83F1
+#define GL_COMPRESSED_RGBA_S3TC_DXT3_EXT         0x83F2
+#define GL_COMPRESSED_RGBA_S3TC_DXT5_EXT         0x83F3
+#endif /* GL_EXT_texture_compression_s3tc */
 
 #ifndef GL_EXT_texture_env_add
 #define GL_EXT_texture_env_add                   1
