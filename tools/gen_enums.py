@@ -27,7 +27,9 @@ GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotro
 GL_EXT_texture_lod_bias GL_NV_blend_square GL_SGIS_generate_mipmap
 GL_SGIS_texture_edge_clamp GL_ARB_texture_cube_map GL_ARB_framebuffer_object
 GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample
-GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB""".split()
+GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB
+GL_EXT_texture_compression_s3tc GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc
+GL_EXT_texture_compression_latc GL_ATI_texture_compression_3dc""".split()
 
 # Tokens of an extension that glext.h lists under the GL version that took it into core
 # (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
@@ -35,6 +37,8 @@ GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB""".split()
 SECTION_TOKENS = {
     "GL_ARB_clip_control": """GL_LOWER_LEFT GL_UPPER_LEFT GL_NEGATIVE_ONE_TO_ONE GL_ZERO_TO_ONE
 GL_CLIP_ORIGIN GL_CLIP_DEPTH_MODE""".split(),
+    "GL_ARB_texture_compression_rgtc": """GL_COMPRESSED_RED_RGTC1 GL_COMPRESSED_SIGNED_RED_RGTC1
+GL_COMPRESSED_RG_RGTC2 GL_COMPRESSED_SIGNED_RG_RGTC2""".split(),
 }
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports

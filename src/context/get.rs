@@ -8,6 +8,7 @@ use super::{Context, MAX_VIEWPORT};
 use crate::ffi::enums::*;
 use crate::ffi::glext_enums::*;
 use crate::fixed_function::matrix::Mat4;
+use crate::texture::compressed::LISTED;
 
 /// How a state value is typed, which decides the conversions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -262,9 +263,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_SAMPLE_COVERAGE_INVERT => b(st.legacy.sample_coverage_invert),
         GL_SAMPLE_BUFFERS => i(&[(c.draw_samples() > 0) as i64]),
         GL_SAMPLES => i(&[c.draw_samples() as i64]),
-        // No compressed internal format is supported (GL 1.5 requires none).
-        GL_NUM_COMPRESSED_TEXTURE_FORMATS => i(&[0]),
-        GL_COMPRESSED_TEXTURE_FORMATS => i(&[]),
+        // The S3TC formats of Mesa's list (see `texture::compressed::LISTED`).
+        GL_NUM_COMPRESSED_TEXTURE_FORMATS => i(&[LISTED.len() as i64]),
+        GL_COMPRESSED_TEXTURE_FORMATS => i(&LISTED.map(|f| f as i64)),
         GL_MAP1_GRID_DOMAIN => f(&c.eval.grid1.d),
         GL_MAP1_GRID_SEGMENTS => i(&[c.eval.grid1.n as i64]),
         GL_MAP2_GRID_DOMAIN => {

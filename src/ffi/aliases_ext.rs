@@ -61,153 +61,166 @@ pub extern "C" fn glCheckFramebufferStatusEXT(target: GLenum) -> GLenum {
 }
 
 /// glCompressedTexImage1DARB: the extension name of [`super::textures_compressed::glCompressedTexImage1D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexImage1D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexImage1DARB(
-    _target: GLenum,
-    _level: GLint,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _border: GLint,
-    _image_size: GLsizei,
+pub unsafe extern "C" fn glCompressedTexImage1DARB(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    width: GLsizei,
+    border: GLint,
+    image_size: GLsizei,
     _data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexImage1D(
-        _target,
-        _level,
-        _internalformat,
-        _width,
-        _border,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexImage1D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexImage1D(
+            target,
+            level,
+            internalformat,
+            width,
+            border,
+            image_size,
+            _data,
+        )
+    }
 }
 
 /// glCompressedTexImage2DARB: the extension name of [`super::textures_compressed::glCompressedTexImage2D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexImage2D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexImage2DARB(
-    _target: GLenum,
-    _level: GLint,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _height: GLsizei,
-    _border: GLint,
-    _image_size: GLsizei,
-    _data: *const GLvoid,
+pub unsafe extern "C" fn glCompressedTexImage2DARB(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+    border: GLint,
+    image_size: GLsizei,
+    data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexImage2D(
-        _target,
-        _level,
-        _internalformat,
-        _width,
-        _height,
-        _border,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexImage2D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexImage2D(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            image_size,
+            data,
+        )
+    }
 }
 
 /// glCompressedTexImage3DARB: the extension name of [`super::textures_compressed::glCompressedTexImage3D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexImage3D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexImage3DARB(
-    _target: GLenum,
-    _level: GLint,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _height: GLsizei,
+pub unsafe extern "C" fn glCompressedTexImage3DARB(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    width: GLsizei,
+    height: GLsizei,
     _depth: GLsizei,
-    _border: GLint,
-    _image_size: GLsizei,
+    border: GLint,
+    image_size: GLsizei,
     _data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexImage3D(
-        _target,
-        _level,
-        _internalformat,
-        _width,
-        _height,
-        _depth,
-        _border,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexImage3D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexImage3D(
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            _depth,
+            border,
+            image_size,
+            _data,
+        )
+    }
 }
 
 /// glCompressedTexSubImage1DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage1D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexSubImage1D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexSubImage1DARB(
+pub unsafe extern "C" fn glCompressedTexSubImage1DARB(
     target: GLenum,
-    _level: GLint,
-    _xoffset: GLint,
-    _width: GLsizei,
+    level: GLint,
+    xoffset: GLint,
+    width: GLsizei,
     format: GLenum,
-    _image_size: GLsizei,
+    image_size: GLsizei,
     _data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexSubImage1D(
-        target,
-        _level,
-        _xoffset,
-        _width,
-        format,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexSubImage1D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexSubImage1D(
+            target, level, xoffset, width, format, image_size, _data,
+        )
+    }
 }
 
 /// glCompressedTexSubImage2DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage2D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexSubImage2D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexSubImage2DARB(
+pub unsafe extern "C" fn glCompressedTexSubImage2DARB(
     target: GLenum,
-    _level: GLint,
-    _xoffset: GLint,
-    _yoffset: GLint,
-    _width: GLsizei,
-    _height: GLsizei,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
     format: GLenum,
-    _image_size: GLsizei,
-    _data: *const GLvoid,
+    image_size: GLsizei,
+    data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexSubImage2D(
-        target,
-        _level,
-        _xoffset,
-        _yoffset,
-        _width,
-        _height,
-        format,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexSubImage2D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexSubImage2D(
+            target, level, xoffset, yoffset, width, height, format, image_size, data,
+        )
+    }
 }
 
 /// glCompressedTexSubImage3DARB: the extension name of [`super::textures_compressed::glCompressedTexSubImage3D`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glCompressedTexSubImage3D`.
 #[no_mangle]
-pub extern "C" fn glCompressedTexSubImage3DARB(
+pub unsafe extern "C" fn glCompressedTexSubImage3DARB(
     target: GLenum,
-    _level: GLint,
-    _xoffset: GLint,
-    _yoffset: GLint,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
     _zoffset: GLint,
-    _width: GLsizei,
-    _height: GLsizei,
+    width: GLsizei,
+    height: GLsizei,
     _depth: GLsizei,
     format: GLenum,
-    _image_size: GLsizei,
+    image_size: GLsizei,
     _data: *const GLvoid,
 ) {
-    super::textures_compressed::glCompressedTexSubImage3D(
-        target,
-        _level,
-        _xoffset,
-        _yoffset,
-        _zoffset,
-        _width,
-        _height,
-        _depth,
-        format,
-        _image_size,
-        _data,
-    )
+    // SAFETY: the caller upholds `glCompressedTexSubImage3D`'s contract; the arguments pass through unchanged.
+    unsafe {
+        super::textures_compressed::glCompressedTexSubImage3D(
+            target, level, xoffset, yoffset, _zoffset, width, height, _depth, format, image_size,
+            _data,
+        )
+    }
 }
 
 /// glCopyTexSubImage3DEXT: the extension name of [`super::textures_3d::glCopyTexSubImage3D`].
@@ -456,9 +469,17 @@ pub unsafe extern "C" fn glGetBufferSubDataARB(
 }
 
 /// glGetCompressedTexImageARB: the extension name of [`super::textures_compressed::glGetCompressedTexImage`].
+///
+/// # Safety
+/// The pointer arguments must be valid as for `glGetCompressedTexImage`.
 #[no_mangle]
-pub extern "C" fn glGetCompressedTexImageARB(target: GLenum, level: GLint, _img: *mut GLvoid) {
-    super::textures_compressed::glGetCompressedTexImage(target, level, _img)
+pub unsafe extern "C" fn glGetCompressedTexImageARB(
+    target: GLenum,
+    level: GLint,
+    img: *mut GLvoid,
+) {
+    // SAFETY: the caller upholds `glGetCompressedTexImage`'s contract; the arguments pass through unchanged.
+    unsafe { super::textures_compressed::glGetCompressedTexImage(target, level, img) }
 }
 
 /// glGetFramebufferAttachmentParameterivEXT: the extension name of [`super::framebuffers::glGetFramebufferAttachmentParameteriv`].

@@ -144,6 +144,13 @@ pub const GL_COMPARE_R_TO_TEXTURE_ARB: GLenum = 0x884E;
 pub const GL_ARB_texture_border_clamp: GLenum = 1;
 pub const GL_CLAMP_TO_BORDER_ARB: GLenum = 0x812D;
 
+// GL_ARB_texture_compression_rgtc
+pub const GL_ARB_texture_compression_rgtc: GLenum = 1;
+pub const GL_COMPRESSED_RED_RGTC1: GLenum = 0x8DBB;
+pub const GL_COMPRESSED_SIGNED_RED_RGTC1: GLenum = 0x8DBC;
+pub const GL_COMPRESSED_RG_RGTC2: GLenum = 0x8DBD;
+pub const GL_COMPRESSED_SIGNED_RG_RGTC2: GLenum = 0x8DBE;
+
 // GL_ARB_texture_cube_map
 pub const GL_ARB_texture_cube_map: GLenum = 1;
 pub const GL_NORMAL_MAP_ARB: GLenum = 0x8511;
@@ -423,6 +430,27 @@ pub const GL_PROXY_TEXTURE_3D_EXT: GLenum = 0x8070;
 pub const GL_TEXTURE_DEPTH_EXT: GLenum = 0x8071;
 pub const GL_TEXTURE_WRAP_R_EXT: GLenum = 0x8072;
 pub const GL_MAX_3D_TEXTURE_SIZE_EXT: GLenum = 0x8073;
+
+// GL_EXT_texture_compression_latc
+pub const GL_EXT_texture_compression_latc: GLenum = 1;
+pub const GL_COMPRESSED_LUMINANCE_LATC1_EXT: GLenum = 0x8C70;
+pub const GL_COMPRESSED_SIGNED_LUMINANCE_LATC1_EXT: GLenum = 0x8C71;
+pub const GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT: GLenum = 0x8C72;
+pub const GL_COMPRESSED_SIGNED_LUMINANCE_ALPHA_LATC2_EXT: GLenum = 0x8C73;
+
+// GL_EXT_texture_compression_rgtc
+pub const GL_EXT_texture_compression_rgtc: GLenum = 1;
+pub const GL_COMPRESSED_RED_RGTC1_EXT: GLenum = 0x8DBB;
+pub const GL_COMPRESSED_SIGNED_RED_RGTC1_EXT: GLenum = 0x8DBC;
+pub const GL_COMPRESSED_RED_GREEN_RGTC2_EXT: GLenum = 0x8DBD;
+pub const GL_COMPRESSED_SIGNED_RED_GREEN_RGTC2_EXT: GLenum = 0x8DBE;
+
+// GL_EXT_texture_compression_s3tc
+pub const GL_EXT_texture_compression_s3tc: GLenum = 1;
+pub const GL_COMPRESSED_RGB_S3TC_DXT1_EXT: GLenum = 0x83F0;
+pub const GL_COMPRESSED_RGBA_S3TC_DXT1_EXT: GLenum = 0x83F1;
+pub const GL_COMPRESSED_RGBA_S3TC_DXT3_EXT: GLenum = 0x83F2;
+pub const GL_COMPRESSED_RGBA_S3TC_DXT5_EXT: GLenum = 0x83F3;
 
 // GL_EXT_texture_env_add
 pub const GL_EXT_texture_env_add: GLenum = 1;

@@ -97,7 +97,9 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture_env_add ",
     "GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotropic GL_EXT_texture_lod_bias ",
     "GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp ",
-    "GL_SGIS_texture_lod\0"
+    "GL_SGIS_texture_lod GL_ARB_texture_compression GL_EXT_texture_compression_s3tc ",
+    "GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc ",
+    "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB\0"
 );
 
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list.

@@ -178,6 +178,7 @@ unsafe fn tex_image(
                 base,
                 storage,
                 texels: Vec::new(),
+                blocks: None,
             }),
             _ => None,
         };
@@ -211,6 +212,7 @@ unsafe fn tex_image(
         base,
         storage,
         texels,
+        blocks: None,
     });
     maybe_generate(obj, level);
     Ok(())
@@ -243,6 +245,11 @@ unsafe fn tex_sub_image(
     depth_match(base, &cf)?;
     if xoff < 0 || yoff < 0 || xoff as usize + w > width || yoff as usize + h > height {
         return Err(GlError::InvalidValue);
+    }
+    if crate::texture::compressed::info(internal).is_some() {
+        // whole blocks only (the data is then stored uncompressed: see the README)
+        let rect = (xoff, yoff, w as i32, h as i32);
+        super::textures_compressed::check_sub_rect((width as i32, height as i32), rect)?;
     }
     // SAFETY: GL's contract: `data` holds the described image.
     let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (w, h), data) };
@@ -566,6 +573,7 @@ fn copy_tex_image(
         base,
         storage,
         texels,
+        blocks: None,
     });
     maybe_generate(obj, level);
     Ok(())
@@ -1095,6 +1103,7 @@ fn get_level_parameter(
     };
     // the sizes of the storage format Mesa chose (upload::choose_storage)
     let is_depth = img.is_some_and(|i| i.base == BaseFormat::Depth);
+    let compressed = img.and_then(|i| crate::texture::compressed::info(i.internal_format));
     let size = |k: usize| img.filter(|_| !is_depth).map_or(0, |i| i.storage.sizes[k]) as f64;
     Ok(match pname {
         GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,
@@ -1109,9 +1118,12 @@ fn get_level_parameter(
         GL_TEXTURE_ALPHA_SIZE => size(3),
         GL_TEXTURE_LUMINANCE_SIZE => size(4),
         GL_TEXTURE_INTENSITY_SIZE => size(5),
-        GL_TEXTURE_COMPRESSED => 0.0,
-        // no image is compressed (Mesa: GL_INVALID_OPERATION unless the image is)
-        GL_TEXTURE_COMPRESSED_IMAGE_SIZE => return Err(GlError::InvalidOperation),
+        GL_TEXTURE_COMPRESSED => compressed.is_some() as u8 as f64,
+        // Mesa: GL_INVALID_OPERATION unless the image is compressed and not a proxy
+        GL_TEXTURE_COMPRESSED_IMAGE_SIZE => match (compressed, img) {
+            (Some(f), Some(i)) if !proxy => f.image_size(i.width as i32, i.height as i32) as f64,
+            _ => return Err(GlError::InvalidOperation),
+        },
         GL_TEXTURE_DEPTH_SIZE => {
             img.filter(|_| is_depth)
                 .map_or(0, |i| shadow::depth_size(i.storage.depth_bits())) as f64

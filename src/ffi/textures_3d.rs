@@ -74,6 +74,7 @@ pub(crate) unsafe fn pack_3d(
             base: img.base,
             storage: img.storage,
             texels: img.texels[z * n..(z + 1) * n].to_vec(),
+            blocks: None,
         };
         let s = slice_store(ps, img.height, z);
         // SAFETY: forwarded caller contract.
@@ -145,6 +146,7 @@ unsafe fn tex_image_3d(
         base,
         storage,
         texels: Vec::new(),
+        blocks: None,
     };
     if proxy {
         let obj = object_mut(c, t, true);

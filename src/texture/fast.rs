@@ -512,6 +512,7 @@ mod tests {
                 base: BaseFormat::Rgba,
                 storage: Storage::of_base(BaseFormat::Rgba),
                 texels: (0..w * h).map(|_| rnd().to_le_bytes()).collect(),
+                blocks: None,
             })
         };
         for (w0, h0) in [(16usize, 8usize), (12, 5)] {

@@ -64,6 +64,7 @@ pub fn downsample(src: &Level) -> Level {
         base: src.base,
         storage: src.storage,
         texels,
+        blocks: None,
     }
 }
 
@@ -101,6 +102,7 @@ mod tests {
             base: BaseFormat::Rgba,
             storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: data.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect(),
+            blocks: None,
         }
     }
 

@@ -25,6 +25,7 @@
 //! Coordinates are already divided by q (`s * (1/q)`). Returned colours are what the
 //! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.
 
+pub mod compressed;
 pub mod cube;
 pub mod env;
 pub mod fast;
@@ -182,6 +183,9 @@ pub struct Level {
     pub storage: Storage,
     /// `width * height` texels.
     pub texels: Vec<[u8; 4]>,
+    /// The blocks of a compressed image as the program gave them (see [`compressed`]);
+    /// `None` for every other image.
+    pub blocks: Option<Vec<u8>>,
 }
 
 impl Level {
@@ -611,11 +615,11 @@ impl TextureState {
             mode: p.shadow.depth_mode,
             bits: base_img.storage.depth_bits(),
         });
-        // sRGB textures: decoded per texel, then filtered on the float path
-        let srgb = srgb::is_srgb(base_img.internal_format).then(|| srgb::table(sample::has_fma()));
+        // sRGB and signed textures: decoded per texel, then filtered on the float path
+        let decode = texel_decode(base_img.internal_format);
         // a depth texture is always sampled on the float path
         let aos = depth.is_none()
-            && srgb.is_none()
+            && decode.is_none()
             && wrap_s.is_simple()
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
@@ -662,7 +666,11 @@ impl TextureState {
             env,
             fast,
             fma: sample::has_fma(),
-            ext: PlanExt { kind, depth, srgb },
+            ext: PlanExt {
+                kind,
+                depth,
+                decode,
+            },
         })
     }
 }
@@ -674,8 +682,22 @@ pub struct PlanExt<'a> {
     pub kind: ExtKind<'a>,
     /// A depth texture's comparison and mode.
     pub depth: Option<shadow::DepthPlan>,
-    /// An sRGB texture's decode table (see [`srgb`]); such a plan is never `aos`.
-    pub srgb: Option<&'static [f32; 256]>,
+    /// The float value of each byte of R, G, B (`[0]`) and of A (`[1]`) for textures
+    /// that are not unorm8: sRGB ones (see [`srgb`]) and signed ones (see
+    /// [`compressed`]); such a plan is never `aos`.
+    pub decode: Option<[&'static [f32; 256]; 2]>,
+}
+
+/// The per-byte decode tables of an image's internal format ([`PlanExt::decode`]).
+fn texel_decode(internal: u32) -> Option<[&'static [f32; 256]; 2]> {
+    let c = compressed::info(internal);
+    if srgb::is_srgb(internal) || c.is_some_and(|c| c.srgb) {
+        Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
+    } else if c.is_some_and(|c| c.signed) {
+        Some([compressed::snorm_table(); 2])
+    } else {
+        None
+    }
 }
 
 /// The sampling kind of a unit's target.
@@ -832,6 +854,7 @@ mod tests {
             base: BaseFormat::Rgba,
             storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: vec![[0; 4]; w * h],
+            blocks: None,
         })
     }
 

@@ -53,12 +53,17 @@ pub(crate) fn to_float(v: [u8; 4]) -> [f32; 4] {
     v.map(|u| u as f32 * INV_255)
 }
 
-/// A texel as the float (SoA) path sees it: `u·f32(1/255)`, or for an sRGB texture with
-/// R, G and B decoded ([`super::srgb`]).
+/// A texel as the float (SoA) path sees it: `u·f32(1/255)`, or through the plan's decode
+/// tables (sRGB, signed; [`super::PlanExt::decode`]).
 #[inline(always)]
 pub(crate) fn texel_float(p: &UnitPlan<'_>, v: [u8; 4]) -> [f32; 4] {
-    match p.ext.srgb {
-        Some(t) => super::srgb::to_float(v, t),
+    match p.ext.decode {
+        Some([rgb, a]) => [
+            rgb[v[0] as usize],
+            rgb[v[1] as usize],
+            rgb[v[2] as usize],
+            a[v[3] as usize],
+        ],
         None => to_float(v),
     }
 }
@@ -334,6 +339,7 @@ mod tests {
             base: BaseFormat::Rgba,
             storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: (0..w * h).map(|i| f(i % w, i / w)).collect(),
+            blocks: None,
         })
     }
 

@@ -182,6 +182,7 @@ pub fn downsample(src: &super::Level, fma: bool) -> super::Level {
         base: src.base,
         storage: src.storage,
         texels,
+        blocks: None,
     }
 }
 

@@ -870,6 +870,7 @@ mod tests {
             base: BaseFormat::Rgba,
             storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]],
+            blocks: None,
         };
         let cf = ClientFormat::new(GL_BGRA, GL_UNSIGNED_BYTE).unwrap();
         let mut out = vec![0u8; 12];

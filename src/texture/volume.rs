@@ -103,6 +103,7 @@ pub fn downsample(src: &Level, d: usize) -> (Level, usize) {
         base: src.base,
         storage: src.storage,
         texels,
+        blocks: None,
     };
     (img, dd)
 }
@@ -274,6 +275,7 @@ mod tests {
             base: BaseFormat::Rgba,
             storage: Storage::of_base(BaseFormat::Rgba),
             texels: vec![[v; 4]; w * h * d],
+            blocks: None,
         }
     }
 
