@@ -211,6 +211,45 @@ int main(int argc, char **argv)
     glEnd();
     n += snprintf(errs + n, sizeof errs - n, "inbegin %x\n", glGetError());
 
+    /* A packed (or depth-stencil) type with a format it does not fit: Mesa checks
+     * the type first, so even a format GL 1.5 does not know (GL_RG, 0x1234) gives
+     * GL_INVALID_OPERATION, and GL_DEPTH_STENCIL with a plain type
+     * GL_INVALID_ENUM (piglit's draw-pixels). Fitting pairs are skipped. */
+    {
+        static const GLenum fmts[] = {GL_RED, 0x8227 /* GL_RG */, GL_RGB, GL_BGR,
+                                      GL_RGBA, GL_BGRA, GL_LUMINANCE,
+                                      GL_LUMINANCE_ALPHA, GL_ALPHA,
+                                      GL_DEPTH_COMPONENT, GL_STENCIL_INDEX,
+                                      GL_COLOR_INDEX, GL_DEPTH_STENCIL, 0x1234};
+        static const GLenum types[] = {
+            GL_UNSIGNED_BYTE_3_3_2, GL_UNSIGNED_SHORT_5_6_5_REV,
+            GL_UNSIGNED_SHORT_4_4_4_4, GL_UNSIGNED_SHORT_1_5_5_5_REV,
+            GL_UNSIGNED_INT_8_8_8_8_REV, GL_UNSIGNED_INT_10_10_10_2,
+            GL_UNSIGNED_INT_24_8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV,
+            GL_UNSIGNED_BYTE, GL_BITMAP};
+        char perrs[2048];
+        int pn = 0;
+        for (unsigned t = 0; t < sizeof types / sizeof types[0]; t++) {
+            pn += snprintf(perrs + pn, sizeof perrs - pn, "type %04x:", types[t]);
+            for (unsigned f = 0; f < sizeof fmts / sizeof fmts[0]; f++) {
+                GLenum fm = fmts[f], ty = types[t];
+                int three = ty == GL_UNSIGNED_BYTE_3_3_2 || ty == GL_UNSIGNED_SHORT_5_6_5_REV;
+                int ds = ty == GL_UNSIGNED_INT_24_8 || ty == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+                int plain = ty == GL_UNSIGNED_BYTE || ty == GL_BITMAP;
+                if ((three && fm == GL_RGB) || (ds && fm == GL_DEPTH_STENCIL) ||
+                    (!three && !ds && !plain && (fm == GL_RGBA || fm == GL_BGRA)) ||
+                    /* (GL_RG with a plain type is ARB_texture_rg, which Mesa has) */
+                    (ty == GL_UNSIGNED_BYTE && fm != GL_DEPTH_STENCIL && fm != 0x1234) ||
+                    (ty == GL_BITMAP && (fm == GL_COLOR_INDEX || fm == GL_STENCIL_INDEX)))
+                    continue;
+                glDrawPixels(2, 2, fm, ty, ub);
+                pn += snprintf(perrs + pn, sizeof perrs - pn, " %x", glGetError());
+            }
+            pn += snprintf(perrs + pn, sizeof perrs - pn, "\n");
+        }
+        sgl_text(out, "packed_errors", "%s", perrs);
+    }
+
     glFinish();
     sgl_image(out, "draw_pixels", W, H, 4, "RGBA", W * 4, 1, buf);
     sgl_text(out, "errors", "%s", errs);

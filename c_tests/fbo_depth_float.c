@@ -460,6 +460,17 @@ int main(int argc, char **argv)
     glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
     sgl_data(out, "copy_24", 16 * 12 * 4, zu);
     errs(out, "copy_err");
+    /* from the window's 24-bit depth-stencil buffer into GL_DEPTH32F_STENCIL8 and
+     * GL_DEPTH24_STENCIL8 (piglit's copyteximage) */
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 10, 5, 16, 12, 0);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    sgl_data(out, "copy_win_f_s8", 16 * 12 * 4, zf);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 10, 5, 16, 12, 0);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
+    sgl_data(out, "copy_win_24_s8", 16 * 12 * 4, zu);
+    errs(out, "copy_win_err");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fb[0]);
 
     /* errors */
     glBindTexture(GL_TEXTURE_2D, tex[1]);

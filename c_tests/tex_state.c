@@ -7,9 +7,10 @@
  * level, border and internal format, a packed type that does not fit the
  * format, glBindTexture with a target mismatch, glTexSubImage2D and
  * glCopyTexSubImage2D outside the texture, bad texture units, texenv enums
- * and scales, and a glTexImage2D inside glBegin/glEnd).  Mesa accepts
- * glActiveTexture up to GL_TEXTURE31 (its combined image unit limit), so the
- * scene also records calls made while such a unit is active. */
+ * and scales, and a glTexImage2D inside glBegin/glEnd).  glActiveTexture
+ * is only tried beyond 191: Mesa accepts units up to its combined image-unit
+ * limit (192), softgl up to GL_MAX_TEXTURE_UNITS (8), as GL 1.5 without
+ * shader units asks (tests/texture_api.rs checks GL_TEXTURE8 there). */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -306,16 +307,25 @@ int main(int argc, char **argv)
     ERR(glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 12, 0, 0, 0, 5, 5));
     ERR(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 8, 4, 3));
     ERR(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -8, 4, 0));
-    ERR(glActiveTexture(GL_TEXTURE0 + 8));
-    ERR(glActiveTexture(GL_TEXTURE0 + 31));
+    ERR(glActiveTexture(GL_TEXTURE0 + 192));
+    ERR(glActiveTexture(GL_TEXTURE0 + 7));
     GETI(GL_ACTIVE_TEXTURE);
-    put("(texenv and texparameter calls on that unit:)\n");
+    put("(texenv and texparameter calls on unit 7:)\n");
     ERR(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_LINEAR));
     ERR(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD));
     ERR(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR));
     ERR(glActiveTexture(0x1234));
     ERR(glActiveTexture(GL_TEXTURE0));
     ERR(glClientActiveTexture(GL_TEXTURE0 + 8));
+    /* glMultiTexCoord with a unit beyond 7 (and a junk target): Mesa uses the
+     * target's low three bits as the unit, with no error */
+    ERR(glMultiTexCoord4f(GL_TEXTURE0 + 9, 0.25f, 0.5f, 0.75f, 2.0f));
+    ERR(glMultiTexCoord2f(0x1236, 0.125f, 4.0f));
+    ERR(glActiveTexture(GL_TEXTURE1));
+    GETF(GL_CURRENT_TEXTURE_COORDS);
+    ERR(glActiveTexture(GL_TEXTURE6));
+    GETF(GL_CURRENT_TEXTURE_COORDS);
+    ERR(glActiveTexture(GL_TEXTURE0));
     flush();
     ERR(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_LINEAR));
     ERR(glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_DOT3_RGB));

@@ -94,6 +94,17 @@ impl DepthFormat {
             _ => z as f32 / self.max_value() as f32,
         }
     }
+    /// A stored depth as llvmpipe's texture sampler unpacks it (glCopyPixels samples a
+    /// copy of the depth buffer): a unorm value times the f32 reciprocal of its maximum
+    /// (`lp_build_unsigned_norm_to_float`), which can differ from [`Self::to_float`]'s
+    /// correctly rounded quotient in the last bit.
+    pub fn sample_float(self, z: u32) -> f32 {
+        match self {
+            DepthFormat::Z32F => f32::from_bits(z),
+            _ => z as f32 * (1.0 / self.max_value() as f64) as f32,
+        }
+    }
+
     /// A fragment depth (already clamped to [0,1]) quantised as llvmpipe's shader does.
     #[inline(always)]
     pub fn quantize(self, z: f32) -> u32 {

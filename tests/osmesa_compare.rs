@@ -243,6 +243,10 @@ const EXACT: Tolerance = Tolerance {
 /// Every scene in `c_tests/`; a test checks that this list is complete.
 const SCENES: &[&str] = &[
     "begin_end_errors",
+    "copypix_depth_stencil",
+    "fbo_legacy_read",
+    "tex_color_index",
+    "tex_proxy_errors",
     "fbo_blit",
     "fbo_errors",
     "fbo_render",
@@ -377,6 +381,10 @@ macro_rules! scene_tests {
 
 scene_tests!(
     begin_end_errors,
+    copypix_depth_stencil,
+    fbo_legacy_read,
+    tex_color_index,
+    tex_proxy_errors,
     fbo_blit,
     fbo_errors,
     fbo_render,

@@ -91,20 +91,18 @@ fn units_and_enables() {
     assert_eq!(glIsEnabled(GL_TEXTURE_2D), 0, "enables are per unit");
     glActiveTexture(GL_TEXTURE0 + 2);
     assert_eq!(glIsEnabled(GL_TEXTURE_2D), 1);
-    // Mesa accepts units up to its combined image-unit limit (32); units 8..31 have no
-    // fixed-function state: nothing enabled or bound there, binds are ignored
-    glActiveTexture(GL_TEXTURE0 + 32);
+    // GL 1.5 §2.7: GL_TEXTUREi with i >= GL_MAX_TEXTURE_UNITS is GL_INVALID_ENUM (softgl
+    // has no shader image units, so 8 is also its combined limit; llvmpipe's is 192). This is
+    // what piglit's `texunits` checks; it passes on Mesa against Mesa's own limits.
+    assert_eq!(get_i(GL_MAX_TEXTURE_UNITS), 8);
+    glActiveTexture(GL_TEXTURE0 + 8);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     assert_eq!(get_i(GL_ACTIVE_TEXTURE), (GL_TEXTURE0 + 2) as i32);
-    glActiveTexture(GL_TEXTURE0 + 31);
+    glActiveTexture(GL_TEXTURE0 + 7);
     assert_eq!(glGetError(), GL_NO_ERROR);
-    assert_eq!(get_i(GL_ACTIVE_TEXTURE), (GL_TEXTURE0 + 31) as i32);
-    assert_eq!(glIsEnabled(GL_TEXTURE_2D), 0);
-    glBindTexture(GL_TEXTURE_2D, 5);
-    assert_eq!(get_i(GL_TEXTURE_BINDING_2D), 0);
+    assert_eq!(get_i(GL_ACTIVE_TEXTURE), (GL_TEXTURE0 + 7) as i32);
     glActiveTexture(GL_TEXTURE0 + 2);
     assert_eq!(glIsEnabled(GL_TEXTURE_2D), 1);
-    assert_eq!(get_i(GL_TEXTURE_BINDING_2D), 0);
     assert_eq!(glGetError(), GL_NO_ERROR);
     glMultiTexCoord2f(GL_TEXTURE0 + 3, 0.25, 0.5);
     glActiveTexture(GL_TEXTURE0 + 3);

@@ -96,7 +96,12 @@ pub const SOURCES: &[(&str, Header)] = &[
 ];
 
 /// Files of `src/ffi` that declare nothing for C.
-pub const NOT_IN_HEADERS: &[&str] = &["mod.rs", "proc_table.rs", "textures_ds.rs"];
+pub const NOT_IN_HEADERS: &[&str] = &[
+    "mod.rs",
+    "proc_table.rs",
+    "textures_ci.rs",
+    "textures_ds.rs",
+];
 
 /// Typedefs of `types.rs` that Mesa declares in glext.h rather than gl.h (kept out of gl.h).
 pub const GLEXT_TYPES: &[&str] = &[

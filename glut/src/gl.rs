@@ -74,6 +74,7 @@ extern "C" {
         height: GLsizei,
     ) -> GLboolean;
     pub fn OSMesaDestroyContext(ctx: OsMesaContext);
+    pub fn OSMesaGetCurrentContext() -> OsMesaContext;
     pub fn OSMesaGetProcAddress(name: *const c_char) -> OsMesaProc;
 
     pub fn glBegin(mode: GLenum);

@@ -250,8 +250,18 @@ pub extern "C" fn glutDestroyWindow(id: c_int) {
     });
     if let Some(w) = w {
         crate::menu::window_destroyed(id);
-        // SAFETY: the context was created by glutCreateWindow and is destroyed once.
-        unsafe { gl::OSMesaDestroyContext(w.ctx) };
+        // Release the context before destroying it, as freeglut's EGL back end does
+        // (eglMakeCurrent with no context, then eglDestroyContext): Mesa 22.3's
+        // OSMesaDestroyContext crashes when handed the current context.
+        // SAFETY: querying the current context has no preconditions; unbinding with all
+        // arguments NULL/0 is OSMesa's documented way to release the current context;
+        // the context was created by glutCreateWindow and is destroyed once.
+        unsafe {
+            if gl::OSMesaGetCurrentContext() == w.ctx {
+                gl::OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+            }
+            gl::OSMesaDestroyContext(w.ctx);
+        }
     }
 }
 

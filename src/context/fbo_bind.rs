@@ -515,6 +515,21 @@ impl Context {
         }
     }
 
+    /// The base format of the colour image reads come from: the read buffer's attachment
+    /// of the read framebuffer object (GL_RGBA for the window and for no image).
+    pub fn read_color_base(&self) -> BaseFormat {
+        let Some(f) = self.fbo.object(self.fbo.read) else {
+            return BaseFormat::Rgba;
+        };
+        let info = f
+            .read_buffer
+            .and_then(|i| self.fbo.image_info(f.color[i], &self.textures));
+        match info.map(|i| i.kind) {
+            Some(ImageKind::Color(b)) => b,
+            _ => BaseFormat::Rgba,
+        }
+    }
+
     /// Whether colour can be read: the read buffer is not GL_NONE (and, for an object,
     /// names an attached image).
     pub fn reads_color(&self) -> bool {

@@ -300,9 +300,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_UNPACK_ALIGNMENT => i(&[st.unpack.alignment as i64]),
         GL_UNPACK_IMAGE_HEIGHT => i(&[st.unpack.image_height as i64]),
         GL_UNPACK_SKIP_IMAGES => i(&[st.unpack.skip_images as i64]),
-        GL_ACTIVE_TEXTURE => {
-            e(GL_TEXTURE0 + c.textures.high_unit.unwrap_or(st.active_texture as u32))
-        }
+        GL_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.active_texture as u32),
         GL_CLIENT_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.client_active_texture as u32),
         GL_VERTEX_ARRAY => b(a.vertex.enabled),
         GL_VERTEX_ARRAY_SIZE => i(&[a.vertex.size as i64]),
@@ -338,24 +336,10 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_NORMAL_ARRAY_BUFFER_BINDING => i(&[a.normal.buffer as i64]),
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => i(&[tc.buffer as i64]),
         // texturing (per active unit)
-        // units 8..31 (TextureState::high_unit) have nothing bound
-        GL_TEXTURE_BINDING_1D
-        | GL_TEXTURE_BINDING_2D
-        | GL_TEXTURE_BINDING_3D
-        | GL_TEXTURE_BINDING_CUBE_MAP
-            if c.textures.high_unit.is_some() =>
-        {
-            i(&[0])
-        }
         GL_TEXTURE_BINDING_3D => i(&[c.textures.units[st.active_texture].bound[2] as i64]),
         GL_TEXTURE_BINDING_CUBE_MAP => i(&[c.textures.units[st.active_texture].bound[3] as i64]),
         GL_TEXTURE_BINDING_1D => i(&[c.textures.units[st.active_texture].bound[0] as i64]),
         GL_TEXTURE_BINDING_2D => i(&[c.textures.units[st.active_texture].bound[1] as i64]),
-        GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP
-            if c.textures.high_unit.is_some() =>
-        {
-            b(false)
-        }
         GL_TEXTURE_3D => b(c.textures.units[st.active_texture].enabled_3d),
         GL_TEXTURE_CUBE_MAP => b(c.textures.units[st.active_texture].enabled_cube),
         GL_TEXTURE_1D => b(c.textures.units[st.active_texture].enabled_1d),

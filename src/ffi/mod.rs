@@ -71,6 +71,7 @@ pub mod state;
 pub mod texgen;
 pub mod textures;
 pub mod textures_3d;
+mod textures_ci;
 pub mod textures_compressed;
 pub mod textures_ds;
 pub mod textures_ext;

@@ -84,6 +84,7 @@ pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsiz
             GL_COLOR => CopyKind::Color,
             GL_DEPTH => CopyKind::Depth,
             GL_STENCIL => CopyKind::Stencil,
+            super::glext_enums::GL_DEPTH_STENCIL => CopyKind::DepthStencil,
             _ => return Err(GlError::InvalidEnum),
         };
         c.check_draw_framebuffer()?;
@@ -95,6 +96,9 @@ pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsiz
                 fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None)
             }
             CopyKind::Stencil => fb.is_none_or(|f| f.stencil.is_empty()),
+            CopyKind::DepthStencil => fb.is_none_or(|f| {
+                f.stencil.is_empty() || f.depth_format == crate::framebuffer::DepthFormat::None
+            }),
         };
         if missing {
             return Err(GlError::InvalidOperation);

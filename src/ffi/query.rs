@@ -96,6 +96,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_fog_coord GL_EXT_point_parameters GL_EXT_secondary_color ",
     "GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture_env_add ",
     "GL_EXT_texture_env_combine GL_EXT_texture_filter_anisotropic GL_EXT_texture_lod_bias ",
+    "GL_EXT_vertex_array ",
     "GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp ",
     "GL_SGIS_texture_lod GL_ARB_texture_compression GL_EXT_texture_compression_s3tc ",
     "GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc ",
@@ -200,31 +201,10 @@ fn read_pixels(
     if w < 0 || h < 0 {
         return Err(GlError::InvalidValue);
     }
-    // Mesa's `_mesa_error_check_format_and_type` looks at a packed type before the format:
-    // 3-field types need GL_RGB, 4-field types GL_RGBA or GL_BGRA, any other format
-    // (even an unknown one) is GL_INVALID_OPERATION.
-    let ds_type = matches!(
-        ty,
-        super::glext_enums::GL_UNSIGNED_INT_24_8
-            | super::glext_enums::GL_FLOAT_32_UNSIGNED_INT_24_8_REV
-    );
-    if ds_type != (format == super::glext_enums::GL_DEPTH_STENCIL) {
-        return Err(if ds_type {
-            GlError::InvalidOperation
-        } else {
-            GlError::InvalidEnum
-        });
-    }
+    // Mesa's `_mesa_error_check_format_and_type` looks at the type before the format.
+    crate::pixels::image::check_type_fits_format(format, ty)?;
+    let ds_type = format == super::glext_enums::GL_DEPTH_STENCIL;
     let packed = crate::pixels::image::packed_fields(ty).filter(|_| !ds_type);
-    if let Some((_, fields)) = packed {
-        let fits = match fields.len() {
-            3 => format == GL_RGB,
-            _ => matches!(format, GL_RGBA | GL_BGRA),
-        };
-        if !fits {
-            return Err(GlError::InvalidOperation);
-        }
-    }
     let kind = match format {
         GL_RGBA => ReadKind::Color([0, 1, 2, 3], 4),
         GL_RGB => ReadKind::Color([0, 1, 2, 0], 3),
@@ -283,6 +263,8 @@ fn read_pixels(
     let depth_scale_bias = tr.depth_scale_bias();
     let bpp = comps * tsize;
     let (start, stride) = packed_layout(&c.state.pack, w as usize, bpp, tsize);
+    let base = c.read_color_base();
+    let color_at = |idx: usize| base.read_rebase(fb.color_at(idx));
     let put = |p: *mut u8, v: f64, norm: bool| {
         // SAFETY: the program promises a destination large enough for the packed image.
         unsafe {
@@ -344,13 +326,13 @@ fn read_pixels(
                     let (size, fields) = packed.unwrap_or_default();
                     let bits = if transfer {
                         let f = |u: u8| u as f32 * (1.0f32 / 255.0);
-                        let mut rgba = tr.apply_scale_bias(fb.color_at(idx).map(f));
+                        let mut rgba = tr.apply_scale_bias(color_at(idx).map(f));
                         if tr.map_color {
                             rgba = maps.map_rgba(rgba);
                         }
                         encode_packed(fields, map, |ch, n| float_to_unorm(rgba[ch], n))
                     } else {
-                        let px = fb.color_at(idx);
+                        let px = color_at(idx);
                         encode_packed(fields, map, |ch, n| unorm8_to_unorm(px[ch], n))
                     };
                     let mut bytes = bits.to_ne_bytes();
@@ -362,7 +344,7 @@ fn read_pixels(
                 }
                 ReadKind::Color(map, n) if transfer => {
                     let f = |u: u8| u as f32 * (1.0f32 / 255.0);
-                    let mut rgba = fb.color_at(idx).map(f);
+                    let mut rgba = color_at(idx).map(f);
                     rgba = tr.apply_scale_bias(rgba);
                     if tr.map_color {
                         rgba = maps.map_rgba(rgba);
@@ -383,7 +365,7 @@ fn read_pixels(
                     }
                 }
                 ReadKind::Color(map, n) => {
-                    let px = fb.color_at(idx);
+                    let px = color_at(idx);
                     for (k, &ch) in map.iter().take(n).enumerate() {
                         // SAFETY: k * tsize < bpp.
                         let q = unsafe { p.add(k * tsize) };

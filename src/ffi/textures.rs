@@ -73,8 +73,6 @@ pub(crate) fn check_level(level: GLint) -> GlResult<usize> {
 pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut TextureObject {
     if proxy {
         &mut c.textures.proxies[target.index()]
-    } else if c.textures.high_unit.is_some() {
-        &mut c.textures.defaults[target.index()]
     } else {
         let unit = c.state.active_texture;
         // The image may be attached to the framebuffer object being drawn.
@@ -88,8 +86,6 @@ pub(crate) fn object_mut(c: &mut Context, target: Target, proxy: bool) -> &mut T
 pub(crate) fn object(c: &Context, target: Target, proxy: bool) -> &TextureObject {
     if proxy {
         &c.textures.proxies[target.index()]
-    } else if c.textures.high_unit.is_some() {
-        &c.textures.defaults[target.index()]
     } else {
         c.textures.bound(c.state.active_texture, target)
     }
@@ -161,8 +157,13 @@ unsafe fn tex_image(
     if !dims_match(t, dims) {
         return Err(GlError::InvalidEnum);
     }
-    let cf = ClientFormat::new(format, ty)?;
+    // Mesa's order: level, border and negative sizes (errors for proxies too), then the
+    // format and type; only a size too large for the level leaves a proxy silently empty.
     let level = check_level(level)?;
+    if !(0..=1).contains(&border) || w < 0 || h < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    let cf = super::textures_ci::client_format(format, ty)?;
     let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     depth_match(base, &cf)?;
@@ -200,7 +201,8 @@ unsafe fn tex_image(
         }
     }
     // SAFETY: GL's contract: `data` (when not null) holds the described image.
-    let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (tw, th), data) };
+    let texels =
+        unsafe { unpack_image(c, &ps, (&cf, format, ty), (base, storage), (tw, th), data) };
     // SAFETY: as above.
     let stencil = unsafe { super::textures_ds::unpack_stencil(c, &ps, &cf, (tw, th), data) };
     let obj = object_mut(c, t, false);
@@ -231,7 +233,7 @@ unsafe fn tex_sub_image(
         (t, false, face) if dims_match(t, dims) => (t, face),
         _ => return Err(GlError::InvalidEnum),
     };
-    let cf = ClientFormat::new(format, ty)?;
+    let cf = super::textures_ci::client_format(format, ty)?;
     let level = check_level(level)?;
     let (w, h) = (non_negative(w)?, non_negative(h)?);
     let ps = unpack;
@@ -252,7 +254,7 @@ unsafe fn tex_sub_image(
         super::textures_compressed::check_sub_rect((width as i32, height as i32), rect)?;
     }
     // SAFETY: GL's contract: `data` holds the described image.
-    let texels = unsafe { unpack_any(c, &ps, &cf, (base, storage), (w, h), data) };
+    let texels = unsafe { unpack_image(c, &ps, (&cf, format, ty), (base, storage), (w, h), data) };
     let stencil = (shadow::is_depth_stencil(internal) && cf.is_depth_stencil())
         // SAFETY: as above.
         .then(|| unsafe { super::textures_ds::unpack_stencil(c, &ps, &cf, (w, h), data) });
@@ -297,13 +299,16 @@ impl ClientImage {
     ) -> Self {
         let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
         let bytes = (|| {
-            let cf = ClientFormat::new(format, ty).ok()?;
             let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
             // Larger images fail validation when the command runs: nothing to copy.
             if data.is_null() || w > MAX_TEXTURE_SIZE + 2 || h > MAX_TEXTURE_SIZE + 2 {
                 return None;
             }
-            let span = Layout::new(&unpack, w, &cf).span(w, h);
+            let span = if format == GL_COLOR_INDEX {
+                super::textures_ci::span(ty, &unpack, w, h)?
+            } else {
+                Layout::new(&unpack, w, &ClientFormat::new(format, ty).ok()?).span(w, h)
+            };
             // SAFETY: the caller promises the described image is readable.
             Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
         })();
@@ -405,6 +410,28 @@ pub(crate) unsafe fn unpack_any(
             let color = upload::ColorTransfer::active(tr, &c.pixel_maps);
             upload::unpack_transfer(ps, cf, (base, storage), w, h, data, color)
         }
+    }
+}
+
+/// [`unpack_any`] for glTexImage/glTexSubImage data of `format`/`ty` (validated as
+/// `cf`), GL_COLOR_INDEX data included.
+///
+/// # Safety
+/// `data` (when not null) must hold the described image under `ps`.
+unsafe fn unpack_image(
+    c: &Context,
+    ps: &PixelStore,
+    (cf, format, ty): (&ClientFormat, GLenum, GLenum),
+    texel: (BaseFormat, Storage),
+    size: (usize, usize),
+    data: *const c_void,
+) -> Vec<[u8; 4]> {
+    if format == GL_COLOR_INDEX {
+        // SAFETY: forwarded caller contract.
+        unsafe { super::textures_ci::unpack(c, ps, ty, texel, size, data) }
+    } else {
+        // SAFETY: forwarded caller contract.
+        unsafe { unpack_any(c, ps, cf, texel, size, data) }
     }
 }
 
@@ -680,10 +707,6 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
     with_ctx_list(move |c| {
         let t = bind_target(target)?;
-        if c.textures.high_unit.is_some() {
-            // GL_TEXTURE8..31: no binding state here (see TextureState::high_unit)
-            return Ok(());
-        }
         let unit = c.state.active_texture;
         c.textures.bind(unit, t, texture)
     })
@@ -1291,10 +1314,6 @@ fn scale_from(v: f64) -> GlResult<f32> {
 
 /// glTexEnv*: `v` holds the values (4 for GL_TEXTURE_ENV_COLOR); `ints` normalises colours.
 fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool) -> GlResult<()> {
-    if c.textures.high_unit.is_some() {
-        // Mesa 22.3 ignores texenv calls on units ≥ 8 without an error, even invalid ones
-        return Ok(());
-    }
     let unit = c.state.active_texture;
     match target {
         GL_TEXTURE_FILTER_CONTROL => {
@@ -1356,10 +1375,6 @@ fn tex_env(c: &mut Context, target: GLenum, pname: GLenum, v: &[f64], ints: bool
 }
 
 fn get_tex_env(c: &mut Context, target: GLenum, pname: GLenum) -> GlResult<(Vec<f64>, bool)> {
-    if c.textures.high_unit.is_some() {
-        // no texenv state on units ≥ 8: nothing is written
-        return Ok((Vec::new(), false));
-    }
     let u = &c.textures.units[c.state.active_texture];
     let one = |x: u32| Ok((vec![x as f64], false));
     match target {
@@ -1483,25 +1498,18 @@ pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *m
     })
 }
 
-/// glActiveTexture (GL_TEXTUREi, i < 32 as in Mesa, whose combined image-unit limit is
-/// 32; units 8..31 have no state here, see `TextureState::high_unit`). `state.caps` for
-/// GL_TEXTURE_1D/2D follows the unit.
+/// glActiveTexture (GL_TEXTUREi, i < GL_MAX_TEXTURE_UNITS). Mesa's rule is i < the larger
+/// of the combined image-unit and texture-coordinate limits; softgl has no shader image
+/// units, so both are GL_MAX_TEXTURE_UNITS (8), where llvmpipe's combined limit is 192 (piglit's
+/// `texunits` expects GL_INVALID_ENUM at the limit the implementation reports).
+/// `state.caps` for GL_TEXTURE_1D/2D follows the unit.
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
     with_ctx_list(move |c| {
         let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_COMBINED_TEXTURE_UNITS {
+        if u >= MAX_TEXTURE_UNITS {
             return Err(GlError::InvalidEnum);
         }
-        if u >= MAX_TEXTURE_UNITS {
-            c.textures.high_unit = Some(u as u32);
-            c.state.caps.set(Cap::Texture1D, false);
-            c.state.caps.set(Cap::Texture2D, false);
-            c.state.caps.set(Cap::Texture3D, false);
-            c.state.caps.set(Cap::TextureCubeMap, false);
-            return Ok(());
-        }
-        c.textures.high_unit = None;
         c.state.active_texture = u;
         let unit = &c.textures.units[u];
         let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
@@ -1514,9 +1522,6 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
         Ok(())
     })
 }
-
-/// Mesa's GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: the units glActiveTexture accepts.
-const MAX_COMBINED_TEXTURE_UNITS: usize = 32;
 
 /// glClientActiveTexture.
 #[no_mangle]
@@ -1594,11 +1599,10 @@ pub unsafe extern "C" fn glAreTexturesResident(
 
 /// Sets the current texture coordinate of unit `target - GL_TEXTURE0`.
 fn multi_texcoord(target: GLenum, v: [f32; 4]) {
-    let u = target.wrapping_sub(GL_TEXTURE0) as usize;
-    if u >= MAX_TEXTURE_UNITS {
-        return super::with_ctx_list(|_| Err(GlError::InvalidEnum));
-    }
-    super::with_ctx_vertex(crate::context::dlist::VertexOp::TexCoord(u as u8, v))
+    // As Mesa (immediate mode and display lists alike): the unit is the target's low three
+    // bits, with no error for a target outside GL_TEXTURE0..7.
+    let u = (target & 7) as u8;
+    super::with_ctx_vertex(crate::context::dlist::VertexOp::TexCoord(u, v))
 }
 
 /// glMultiTexCoord1s.

@@ -129,8 +129,13 @@ unsafe fn tex_image_3d(
     if t != Target::Tex3D {
         return Err(GlError::InvalidEnum);
     }
-    let cf = ClientFormat::new(format, ty)?;
+    // As glTexImage2D (and Mesa): a bad level, border or negative size is an error for
+    // a proxy too, and comes before the format and type checks.
     let level = check_level(level)?;
+    if level >= MAX_3D_LEVELS || !(0..=1).contains(&border) || w < 0 || h < 0 || d < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    let cf = ClientFormat::new(format, ty)?;
     let (internal, sformat, sty) = super::textures::resolve_internal(internal, t, (format, ty));
     let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
     // Mesa: no 3D depth textures; depth data for a colour image is an error too

@@ -111,7 +111,11 @@ pub(crate) fn read_fb_depth_exact(
     (x, y, w, h): (i32, i32, usize, usize),
 ) -> Option<Vec<[u8; 4]>> {
     let fb = c.read_fb()?;
-    if !shadow::is_depth_stencil(internal)
+    // The same format: a 24-bit depth-stencil image (GL_DEPTH32F_STENCIL8 stores floats,
+    // which the general path converts to).
+    let z24s8 =
+        shadow::is_depth_stencil(internal) && internal != super::glext_enums::GL_DEPTH32F_STENCIL8;
+    if !z24s8
         || fb.depth_format.bits() != 24
         || fb.stencil.is_empty()
         || c.pixel_modes.transfer.depth_scale_bias().is_some()

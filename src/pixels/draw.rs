@@ -223,17 +223,7 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
             run(ctx, &q, Source::Color(&c));
         }
         Pixels::Index(ix) => {
-            let maps = &ctx.pixel_maps;
-            let texels: Vec<[f32; 4]> = ix
-                .iter()
-                .map(|&i| {
-                    let i = shift_offset(&tr, i);
-                    std::array::from_fn(|ch| {
-                        let m = &maps.maps[2 + ch];
-                        m[(i as usize) & (m.len() - 1)]
-                    })
-                })
-                .collect();
+            let texels: Vec<[f32; 4]> = ix.iter().map(|&i| index_to_rgba(ctx, i)).collect();
             let c = shade_colors(ctx, &texels, img.w, false);
             run(ctx, &q, Source::Color(&c));
         }
@@ -250,6 +240,18 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
             run(ctx, &q, Source::Stencil(&s));
         }
     }
+}
+
+/// A colour index of an image as RGBA (glDrawPixels, and glTexImage of GL_COLOR_INDEX
+/// data): GL_INDEX_SHIFT and GL_INDEX_OFFSET, then the GL_PIXEL_MAP_I_TO_R/G/B/A maps
+/// (indexed modulo their size, as Mesa's `_mesa_map_ci_to_rgba`), whatever GL_MAP_COLOR
+/// says; no RGBA scale, bias or maps follow.
+pub(crate) fn index_to_rgba(ctx: &Context, i: i64) -> [f32; 4] {
+    let i = shift_offset(&ctx.pixel_modes.transfer, i);
+    std::array::from_fn(|ch| {
+        let m = &ctx.pixel_maps.maps[2 + ch];
+        m[(i as usize) & (m.len() - 1)]
+    })
 }
 
 fn shift_offset(t: &crate::context::pixel_transfer::PixelTransfer, i: i64) -> i64 {
@@ -321,6 +323,8 @@ pub enum CopyKind {
     Depth,
     /// GL_STENCIL
     Stencil,
+    /// GL_DEPTH_STENCIL (EXT_packed_depth_stencil): stencil, then depth.
+    DepthStencil,
 }
 
 /// glCopyPixels of the `w` x `h` rectangle at (sx, sy) (GL window coordinates) to the
@@ -331,6 +335,23 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         return;
     }
     if w == 0 || h == 0 {
+        return;
+    }
+    if kind == CopyKind::DepthStencil {
+        // llvmpipe draws one quad exporting depth and stencil (its Z24S8 buffer cannot
+        // be blitted to), with the depth-stencil-alpha state replaced: stencil ALWAYS /
+        // REPLACE under the write mask, depth ALWAYS under glDepthMask, no alpha test, no
+        // colour written. That is the stencil copy (which writes just so), then a depth
+        // copy under that state.
+        copy_pixels(ctx, sx, sy, w, h, CopyKind::Stencil);
+        let saved = ctx.state.clone();
+        ctx.state.caps.set(Cap::DepthTest, true);
+        ctx.state.depth_func = CompareFunc::Always;
+        ctx.state.caps.set(Cap::StencilTest, false);
+        ctx.state.caps.set(Cap::AlphaTest, false);
+        ctx.state.color_mask = [false; 4];
+        copy_pixels(ctx, sx, sy, w, h, CopyKind::Depth);
+        ctx.state = saved;
         return;
     }
     let Some(fb) = ctx.fb.as_ref() else { return };
@@ -404,7 +425,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
                 match kind {
                     CopyKind::Color => fb.color[d] = fb.color[s],
                     CopyKind::Depth => fb.depth[d] = fb.depth[s],
-                    CopyKind::Stencil => fb.stencil[d] = fb.stencil[s],
+                    CopyKind::Stencil | CopyKind::DepthStencil => fb.stencil[d] = fb.stencil[s],
                 }
             }
         }
@@ -428,12 +449,12 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         CopyKind::Depth => {
             let f = fb.depth_format;
             let z: Vec<f32> = (0..w * h)
-                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| f.to_float(fb.depth_at(s))))
+                .map(|k| src_index(k % w, k / w).map_or(0.0, |s| f.sample_float(fb.depth_at(s))))
                 .collect();
             let c = ctx.state.current.color.map(unorm8);
             run(ctx, &q, Source::Depth(&z, c));
         }
-        CopyKind::Stencil => {
+        CopyKind::Stencil | CopyKind::DepthStencil => {
             let s: Vec<u8> = (0..w * h)
                 .map(|k| src_index(k % w, k / w).map_or(0, |s| fb.stencil[s]))
                 .collect();

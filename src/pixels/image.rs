@@ -89,6 +89,38 @@ pub(crate) fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
     }
 }
 
+/// The checks Mesa's `_mesa_error_check_format_and_type` makes from the type before it
+/// looks at the format (glDrawPixels and glReadPixels alike): GL_DEPTH_STENCIL with a type
+/// other than 24_8 / FLOAT_32_24_8_REV and GL_BITMAP with a non-index format are
+/// GL_INVALID_ENUM; a packed type whose field count does not fit the format (3 fields:
+/// GL_RGB; 4: GL_RGBA or GL_BGRA), and a depth-stencil type with another format, are
+/// GL_INVALID_OPERATION, even when the format is one softgl (or GL) does not know.
+pub(crate) fn check_type_fits_format(format: u32, ty: u32) -> GlResult<()> {
+    use crate::ffi::glext_enums::{
+        GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, GL_UNSIGNED_INT_24_8,
+    };
+    let ds_type = matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV);
+    if format == GL_DEPTH_STENCIL && !ds_type {
+        return Err(GlError::InvalidEnum);
+    }
+    if ds_type && format != GL_DEPTH_STENCIL {
+        return Err(GlError::InvalidOperation);
+    }
+    if ty == GL_BITMAP && !matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX) {
+        return Err(GlError::InvalidEnum);
+    }
+    if let Some((_, fields)) = packed_fields(ty) {
+        let fits = match fields.len() {
+            3 => format == GL_RGB,
+            _ => matches!(format, GL_RGBA | GL_BGRA),
+        };
+        if !fits {
+            return Err(GlError::InvalidOperation);
+        }
+    }
+    Ok(())
+}
+
 /// Which RGBA channel each component of a colour format is (4 = luminance).
 fn components(format: u32) -> Option<&'static [usize]> {
     Some(match format {
@@ -116,28 +148,12 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// Mesa's `_mesa_error_check_format_and_type` for glDrawPixels: unknown names →
-    /// GL_INVALID_ENUM (GL_BITMAP only with index formats), a packed type that does not fit
-    /// the format → GL_INVALID_OPERATION.
+    /// Mesa's `_mesa_error_check_format_and_type` for glDrawPixels: first the type-based
+    /// checks of [`check_type_fits_format`], then unknown names → GL_INVALID_ENUM.
     pub fn new(format: u32, ty: u32) -> GlResult<Layout> {
+        check_type_fits_format(format, ty)?;
         let t = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
         let comps = components(format).ok_or(GlError::InvalidEnum)?;
-        let index = matches!(format, GL_STENCIL_INDEX | GL_COLOR_INDEX);
-        match t {
-            Ty::Bitmap if !index => return Err(GlError::InvalidEnum),
-            Ty::Packed { fields, .. } => {
-                let ok = match fields.len() {
-                    3 => format == GL_RGB,
-                    4 => matches!(format, GL_RGBA | GL_BGRA),
-                    _ => false,
-                };
-                if !ok {
-                    return Err(GlError::InvalidOperation);
-                }
-            }
-            Ty::Plain { float: true, .. } if format == GL_STENCIL_INDEX => {}
-            _ => {}
-        }
         Ok(Layout {
             format,
             comps,

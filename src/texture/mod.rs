@@ -122,6 +122,22 @@ impl BaseFormat {
     }
 }
 
+impl BaseFormat {
+    /// What glReadPixels takes from a colour image of this base format whose working
+    /// RGBA8 value is `v`: Mesa's `_mesa_readpixels` rebases luminance and intensity
+    /// images to (L, 0, 0, 1) and luminance-alpha to (L, 0, 0, A), not (L, L, L, …);
+    /// alpha images read as (0, 0, 0, A) and RGB ones with alpha 1.
+    pub fn read_rebase(self, v: [u8; 4]) -> [u8; 4] {
+        match self {
+            BaseFormat::Luminance | BaseFormat::Intensity => [v[0], 0, 0, 255],
+            BaseFormat::LuminanceAlpha => [v[0], 0, 0, v[3]],
+            BaseFormat::Alpha => [0, 0, 0, v[3]],
+            BaseFormat::Rgb => [v[0], v[1], v[2], 255],
+            BaseFormat::Rgba | BaseFormat::Depth => v,
+        }
+    }
+}
+
 /// The storage format Mesa chose for an image, as the component sizes
 /// glGetTexLevelParameter reports (see [`upload::choose_storage`]). Texels are still kept
 /// as RGBA8; components of fewer than 8 bits are quantised on upload and expanded back by
@@ -449,12 +465,6 @@ pub struct TextureState {
     pub next_name: u32,
     /// The proxy textures (GL_PROXY_TEXTURE_1D/2D/3D/CUBE_MAP): level sizes only.
     pub proxies: [TextureObject; NUM_TARGETS],
-    /// The active texture unit when it is one of GL_TEXTURE8..31: Mesa accepts units up to
-    /// its combined image-unit limit (32), which have no fixed-function state here. The
-    /// context's `active_texture` then keeps the last unit below 8 so nothing indexes out
-    /// of bounds; texture calls see the default (name 0) textures, as on a Mesa unit with
-    /// nothing bound, and glBindTexture/glTexEnv are ignored.
-    pub high_unit: Option<u32>,
 }
 
 impl Default for TextureState {
@@ -465,7 +475,6 @@ impl Default for TextureState {
             units: std::array::from_fn(|_| TexUnit::default()),
             next_name: 1,
             proxies: ALL_TARGETS.map(|t| TextureObject::new(Some(t))),
-            high_unit: None,
         }
     }
 }
