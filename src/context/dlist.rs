@@ -309,10 +309,16 @@ impl Context {
         let Some(mut k) = self.lists.compiling.take() else {
             return Err(GlError::InvalidOperation);
         };
+        // Inside the list's own glBegin under GL_COMPILE_AND_EXECUTE, Mesa still ends the
+        // list but raises GL_INVALID_OPERATION (piglit's beginend-coverage checks it).
+        let inside = k.execute && k.in_begin;
         k.close_node();
         let list = Arc::new(DisplayList { cmds: k.cmds });
         self.lists.lists.insert(k.name, list);
         self.lists.max_key = self.lists.max_key.max(k.name);
+        if inside {
+            return Err(GlError::InvalidOperation);
+        }
         Ok(())
     }
 

@@ -313,7 +313,13 @@ pub(crate) fn listable_draw(
             exec(c)
         }
         Some(execute) => {
+            let inside = c.lists.compiling_inside_begin();
             compile(c);
+            if execute && inside {
+                // Drawn now inside the list's own glBegin: Mesa raises the error and
+                // draws nothing (the compiled copy is skipped when the list runs).
+                return Err(GlError::InvalidOperation);
+            }
             if execute {
                 c.outside_begin_end()?;
                 c.flush_pending();

@@ -165,6 +165,12 @@ where
     listable(f, false)
 }
 
+/// Whether the current context is compiling a display list (for the commands Mesa
+/// compiles differently from how it runs them).
+pub(crate) fn compiling_list() -> bool {
+    with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
+}
+
 /// As [`with_ctx_list`] for the listable commands allowed between glBegin and glEnd
 /// (glMaterial, glEvalCoord, glEvalPoint, glCallList(s)).
 #[inline]

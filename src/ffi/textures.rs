@@ -9,7 +9,7 @@
 use super::enums::*;
 use super::glext_enums::*;
 use super::types::*;
-use super::{non_negative, with_ctx, with_ctx_list};
+use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
 use crate::context::fbo::Attachment;
 use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
@@ -1161,22 +1161,35 @@ fn get_level_parameter(
 /// glTexParameterf.
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    // Mesa compiles the scalar forms as glTexParameterfv with (param, 0, 0, 0)
+    // (`save_TexParameter*`), so in a display list GL_TEXTURE_BORDER_COLOR is accepted.
+    let v = [param as f64, 0.0, 0.0, 0.0];
+    if pname == GL_TEXTURE_BORDER_COLOR && compiling_list() {
+        return with_ctx_list(move |c| tex_parameter(c, target, pname, &v, false));
+    }
     with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
-        tex_parameter(c, target, pname, &[param as f64], false)
+        tex_parameter(c, target, pname, &v[..1], false)
     })
 }
 
 /// glTexParameteri.
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    // Mesa compiles the scalar forms as glTexParameterfv with (param, 0, 0, 0)
+    // (`save_TexParameter*`), so in a display list GL_TEXTURE_BORDER_COLOR is accepted.
+    let v = [param as f64, 0.0, 0.0, 0.0];
+    if pname == GL_TEXTURE_BORDER_COLOR && compiling_list() {
+        // (as glTexParameterfv: the integer is converted, not normalised)
+        return with_ctx_list(move |c| tex_parameter(c, target, pname, &v, false));
+    }
     with_ctx_list(move |c| {
         if pname == GL_TEXTURE_BORDER_COLOR {
             return Err(GlError::InvalidEnum);
         }
-        tex_parameter(c, target, pname, &[param as f64], true)
+        tex_parameter(c, target, pname, &v[..1], true)
     })
 }
 
