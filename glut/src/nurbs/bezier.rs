@@ -34,7 +34,8 @@ pub fn validate(knots: &[f32], order: i64) -> Result<(), KnotError> {
         return Err(KnotError::TooFew);
     }
     let last = knots.len() - 1;
-    if knots[last - (k - 1)] == knots[k - 1] || knots.iter().any(|x| !x.is_finite()) {
+    // SGI's test is one-sided: a range running backwards counts as empty too.
+    if !(knots[last - (k - 1)] - knots[k - 1] >= 1e-5) || knots.iter().any(|x| !x.is_finite()) {
         return Err(KnotError::EmptyRange);
     }
     if knots.windows(2).any(|w| w[0] > w[1]) {

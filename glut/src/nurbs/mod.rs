@@ -9,6 +9,7 @@
 //! trimmed domain for trimmed surfaces ([`trim`]).
 
 pub mod bezier;
+pub mod calls;
 pub mod render;
 pub mod render_cb;
 pub mod trim;
@@ -53,14 +54,14 @@ pub const DOMAIN_DISTANCE: GLenum = 100217;
 pub const OBJECT_PARAMETRIC_ERROR: GLenum = 100208;
 /// `GLU_OBJECT_PATH_LENGTH`.
 pub const OBJECT_PATH_LENGTH: GLenum = 100209;
-const MAP1_TRIM_2: GLenum = 100210;
-const MAP1_TRIM_3: GLenum = 100211;
+pub(crate) const MAP1_TRIM_2: GLenum = 100210;
+pub(crate) const MAP1_TRIM_3: GLenum = 100211;
 /// `GLU_NURBS_BEGIN`: the first of the twelve tessellation callbacks.
 const NURBS_BEGIN: GLenum = 100164;
 
 /// More knots or points than this in one call are refused (as too few knots) rather
 /// than read: no drawable definition comes near it.
-const MAX_KNOTS: i64 = 1 << 16;
+pub(crate) const MAX_KNOTS: i64 = 1 << 16;
 
 /// A client callback as registered.
 type AnyFn = Option<unsafe extern "C" fn()>;
@@ -119,7 +120,7 @@ pub enum TrimPiece {
 
 /// Where a NURBS object is in the begin/end sequence.
 #[derive(Debug)]
-enum Stage {
+pub(crate) enum Stage {
     Idle,
     Curve(Vec<CurveDef>),
     Surface {
@@ -159,9 +160,9 @@ pub struct Nurbs {
     pub callbacks: [AnyFn; 12],
     /// gluNurbsCallbackData's pointer.
     pub user_data: *mut c_void,
-    stage: Stage,
+    pub(crate) stage: Stage,
     /// An error made the current object undrawable.
-    bad: bool,
+    pub(crate) bad: bool,
 }
 
 const IDENTITY: [[f32; 4]; 4] = [
@@ -202,7 +203,7 @@ impl Nurbs {
     }
 
     /// Reports NURBS error `n` (1…37).
-    fn nurbs_error(&mut self, n: u32) {
+    pub(crate) fn nurbs_error(&mut self, n: u32) {
         self.post(GLU_NURBS_ERROR1 + n - 1);
     }
 
@@ -227,7 +228,7 @@ impl Nurbs {
 }
 
 /// The object behind a handle, or None for NULL.
-fn obj<'a>(p: *mut Nurbs) -> Option<&'a mut Nurbs> {
+pub(crate) fn obj<'a>(p: *mut Nurbs) -> Option<&'a mut Nurbs> {
     // SAFETY: non-NULL handles come from gluNewNurbsRenderer and live until deleted.
     unsafe { p.as_mut() }
 }
@@ -320,7 +321,7 @@ pub extern "C" fn gluGetNurbsProperty(nobj: *mut Nurbs, property: GLenum, value:
 }
 
 /// Reads `n` floats from a client array (None for NULL).
-fn read_f32(p: *const GLfloat, n: usize) -> Option<Vec<f32>> {
+pub(crate) fn read_f32(p: *const GLfloat, n: usize) -> Option<Vec<f32>> {
     if p.is_null() {
         return None;
     }
@@ -382,364 +383,6 @@ pub extern "C" fn gluNurbsCallbackData(nobj: *mut Nurbs, data: *mut c_void) {
 #[no_mangle]
 pub extern "C" fn gluNurbsCallbackDataEXT(nobj: *mut Nurbs, data: *mut c_void) {
     gluNurbsCallbackData(nobj, data)
-}
-
-/// `gluBeginCurve`.
-#[no_mangle]
-pub extern "C" fn gluBeginCurve(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    match n.stage {
-        Stage::Idle => {
-            n.stage = Stage::Curve(Vec::new());
-            n.bad = false;
-        }
-        // gluEndCurve must follow gluBeginCurve.
-        _ => n.nurbs_error(6),
-    }
-}
-
-/// `gluEndCurve`: draws the curve.
-#[no_mangle]
-pub extern "C" fn gluEndCurve(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    let Stage::Curve(maps) = std::mem::replace(&mut n.stage, Stage::Idle) else {
-        if matches!(n.stage, Stage::Idle) {
-            n.nurbs_error(7);
-        }
-        return;
-    };
-    if n.bad {
-        return;
-    }
-    if maps.iter().filter(|m| is_vertex(m.target)).count() != 1 {
-        n.nurbs_error(8);
-        return;
-    }
-    render::curve(n, &maps);
-}
-
-/// Validates and packs one curve definition; None after reporting an error.
-fn curve_def(
-    n: &mut Nurbs,
-    knot_count: GLint,
-    knots: *const GLfloat,
-    stride: GLint,
-    ctl: *const GLfloat,
-    order: GLint,
-    target: GLenum,
-) -> Option<CurveDef> {
-    let dim = match target {
-        MAP1_TRIM_2 => 2,
-        MAP1_TRIM_3 => 3,
-        t if (0x0D90..=0x0D98).contains(&t) => map_dim(t)?,
-        _ => {
-            n.nurbs_error(35);
-            return None;
-        }
-    };
-    if knot_count < 0 {
-        n.nurbs_error(33);
-        return None;
-    }
-    if stride < 0 {
-        n.nurbs_error(34);
-        return None;
-    }
-    if i64::from(knot_count) > MAX_KNOTS {
-        n.nurbs_error(2);
-        return None;
-    }
-    let kv = if knot_count == 0 {
-        Vec::new()
-    } else {
-        let Some(kv) = read_f32(knots, knot_count as usize) else {
-            n.nurbs_error(36);
-            return None;
-        };
-        kv
-    };
-    if let Err(e) = bezier::validate(&kv, i64::from(order)) {
-        n.nurbs_error(e as u32);
-        return None;
-    }
-    let basis = Basis {
-        order: order as usize,
-        knots: kv,
-    };
-    let count = basis.count();
-    if ctl.is_null() {
-        n.nurbs_error(36);
-        return None;
-    }
-    let stride = (stride as usize).max(dim);
-    let mut pts = Vec::with_capacity(count * dim);
-    for i in 0..count {
-        // SAFETY: the caller's array holds `count` points `stride` floats apart.
-        let p = unsafe { std::slice::from_raw_parts(ctl.add(i * stride), dim) };
-        pts.extend_from_slice(p);
-    }
-    Some(CurveDef {
-        target,
-        dim,
-        basis,
-        pts,
-    })
-}
-
-/// `gluNurbsCurve`: a curve map, or a trim piece inside gluBeginTrim.
-#[no_mangle]
-pub extern "C" fn gluNurbsCurve(
-    nobj: *mut Nurbs,
-    knot_count: GLint,
-    knots: *const GLfloat,
-    stride: GLint,
-    ctl: *const GLfloat,
-    order: GLint,
-    target: GLenum,
-) {
-    let Some(n) = obj(nobj) else { return };
-    let in_trim = matches!(n.stage, Stage::Surface { in_trim: true, .. });
-    let trim_target = matches!(target, MAP1_TRIM_2 | MAP1_TRIM_3);
-    if in_trim != trim_target {
-        if in_trim {
-            n.nurbs_error(14);
-        } else if matches!(n.stage, Stage::Curve(_)) {
-            n.nurbs_error(22);
-        } else {
-            n.nurbs_error(10);
-        }
-        n.bad = true;
-        return;
-    }
-    if matches!(n.stage, Stage::Idle) || matches!(n.stage, Stage::Surface { in_trim: false, .. }) {
-        // A curve outside gluBeginCurve: SGI draws nothing and reports error 10.
-        n.nurbs_error(10);
-        return;
-    }
-    let Some(def) = curve_def(n, knot_count, knots, stride, ctl, order, target) else {
-        n.bad = true;
-        return;
-    };
-    match &mut n.stage {
-        Stage::Curve(maps) => maps.push(def),
-        Stage::Surface { loops, .. } => {
-            if let Some(l) = loops.last_mut() {
-                l.push(TrimPiece::Curve(def));
-            }
-        }
-        Stage::Idle => {}
-    }
-}
-
-/// `gluBeginSurface`.
-#[no_mangle]
-pub extern "C" fn gluBeginSurface(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    match n.stage {
-        Stage::Idle => {
-            n.stage = Stage::Surface {
-                maps: Vec::new(),
-                loops: Vec::new(),
-                in_trim: false,
-            };
-            n.bad = false;
-        }
-        // gluEndSurface must follow gluBeginSurface.
-        _ => n.nurbs_error(27),
-    }
-}
-
-/// `gluNurbsSurface`.
-#[no_mangle]
-pub extern "C" fn gluNurbsSurface(
-    nobj: *mut Nurbs,
-    s_count: GLint,
-    s_knots: *const GLfloat,
-    t_count: GLint,
-    t_knots: *const GLfloat,
-    s_stride: GLint,
-    t_stride: GLint,
-    ctl: *const GLfloat,
-    s_order: GLint,
-    t_order: GLint,
-    target: GLenum,
-) {
-    let Some(n) = obj(nobj) else { return };
-    if !matches!(n.stage, Stage::Surface { in_trim: false, .. }) {
-        n.nurbs_error(if matches!(n.stage, Stage::Idle) {
-            10
-        } else {
-            22
-        });
-        n.bad = true;
-        return;
-    }
-    let Some(dim) = (0x0DB0..=0x0DB8)
-        .contains(&target)
-        .then(|| map_dim(target))
-        .flatten()
-    else {
-        n.nurbs_error(35);
-        n.bad = true;
-        return;
-    };
-    if s_count < 0 || t_count < 0 || s_stride < 0 || t_stride < 0 {
-        n.nurbs_error(if s_count < 0 || t_count < 0 { 33 } else { 34 });
-        n.bad = true;
-        return;
-    }
-    if i64::from(s_count) > MAX_KNOTS || i64::from(t_count) > MAX_KNOTS {
-        n.nurbs_error(2);
-        n.bad = true;
-        return;
-    }
-    let (Some(sk), Some(tk)) = (
-        read_f32(s_knots, s_count as usize).or_else(|| (s_count == 0).then(Vec::new)),
-        read_f32(t_knots, t_count as usize).or_else(|| (t_count == 0).then(Vec::new)),
-    ) else {
-        n.nurbs_error(36);
-        n.bad = true;
-        return;
-    };
-    for (k, o) in [(&sk, s_order), (&tk, t_order)] {
-        if let Err(e) = bezier::validate(k, i64::from(o)) {
-            n.nurbs_error(e as u32);
-            n.bad = true;
-            return;
-        }
-    }
-    let s = Basis {
-        order: s_order as usize,
-        knots: sk,
-    };
-    let t = Basis {
-        order: t_order as usize,
-        knots: tk,
-    };
-    let (ns, nt) = (s.count(), t.count());
-    if ctl.is_null() || ns.saturating_mul(nt) > MAX_KNOTS as usize {
-        n.nurbs_error(36);
-        n.bad = true;
-        return;
-    }
-    let mut pts = Vec::with_capacity(ns * nt * dim);
-    for i in 0..ns {
-        for j in 0..nt {
-            let off = i * s_stride as usize + j * t_stride as usize;
-            // SAFETY: the caller's array holds the ns × nt points at these strides.
-            pts.extend_from_slice(unsafe { std::slice::from_raw_parts(ctl.add(off), dim) });
-        }
-    }
-    if let Stage::Surface { maps, .. } = &mut n.stage {
-        maps.push(SurfDef {
-            target,
-            dim,
-            s,
-            t,
-            pts,
-        });
-    }
-}
-
-/// `gluBeginTrim`.
-#[no_mangle]
-pub extern "C" fn gluBeginTrim(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    match &mut n.stage {
-        Stage::Surface { loops, in_trim, .. } if !*in_trim => {
-            *in_trim = true;
-            loops.push(Vec::new());
-        }
-        Stage::Surface { .. } => n.nurbs_error(16),
-        _ => n.nurbs_error(15),
-    }
-}
-
-/// `gluPwlCurve`: a polyline trim piece of `count` points `stride` floats apart.
-#[no_mangle]
-pub extern "C" fn gluPwlCurve(
-    nobj: *mut Nurbs,
-    count: GLint,
-    data: *const GLfloat,
-    stride: GLint,
-    target: GLenum,
-) {
-    let Some(n) = obj(nobj) else { return };
-    if !matches!(n.stage, Stage::Surface { in_trim: true, .. }) {
-        n.nurbs_error(19);
-        return;
-    }
-    let dim = match target {
-        MAP1_TRIM_2 => 2,
-        MAP1_TRIM_3 => 3,
-        _ => {
-            n.nurbs_error(35);
-            n.bad = true;
-            return;
-        }
-    };
-    if count < 0 || stride < 0 || i64::from(count) > MAX_KNOTS || data.is_null() {
-        n.nurbs_error(if count < 0 {
-            33
-        } else if stride < 0 {
-            34
-        } else {
-            36
-        });
-        n.bad = true;
-        return;
-    }
-    let stride = (stride as usize).max(dim);
-    let pts: Vec<[f32; 2]> = (0..count as usize)
-        .map(|i| {
-            // SAFETY: the caller's array holds `count` points `stride` floats apart.
-            let p = unsafe { std::slice::from_raw_parts(data.add(i * stride), dim) };
-            if dim == 3 {
-                [p[0] / p[2], p[1] / p[2]]
-            } else {
-                [p[0], p[1]]
-            }
-        })
-        .collect();
-    if let Stage::Surface { loops, .. } = &mut n.stage {
-        if let Some(l) = loops.last_mut() {
-            l.push(TrimPiece::Pwl(pts));
-        }
-    }
-}
-
-/// `gluEndTrim`.
-#[no_mangle]
-pub extern "C" fn gluEndTrim(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    match &mut n.stage {
-        Stage::Surface { in_trim, .. } if *in_trim => *in_trim = false,
-        _ => n.nurbs_error(17),
-    }
-}
-
-/// `gluEndSurface`: draws the surface.
-#[no_mangle]
-pub extern "C" fn gluEndSurface(nobj: *mut Nurbs) {
-    let Some(n) = obj(nobj) else { return };
-    match std::mem::replace(&mut n.stage, Stage::Idle) {
-        Stage::Surface { in_trim: true, .. } => n.nurbs_error(12),
-        Stage::Surface { maps, loops, .. } => {
-            if n.bad {
-                return;
-            }
-            if maps.iter().filter(|m| is_vertex(m.target)).count() != 1 {
-                n.nurbs_error(8);
-                return;
-            }
-            render::surface(n, &maps, &loops);
-        }
-        Stage::Idle => n.nurbs_error(13),
-        s @ Stage::Curve(_) => {
-            n.stage = s;
-            n.nurbs_error(13);
-        }
-    }
 }
 
 /// GLU's NURBS error strings, `GLU_NURBS_ERROR1` … `GLU_NURBS_ERROR37`, worded as SGI's
