@@ -122,6 +122,7 @@ extern "C" {
     pub fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint);
     pub fn glEvalCoord2f(u: GLfloat, v: GLfloat);
     pub fn glEvalCoord1f(u: GLfloat);
+    pub fn glPolygonMode(face: GLenum, mode: GLenum);
     pub fn glGetString(name: GLenum) -> *const GLubyte;
     pub fn glGetIntegerv(pname: GLenum, params: *mut GLint);
     pub fn glPixelStorei(pname: GLenum, param: GLint);

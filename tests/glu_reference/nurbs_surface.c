@@ -1,7 +1,8 @@
 /* The Red Book's surface.c: a bicubic 4x4 bumpy surface over two patches in each
  * direction (uniform interior knot), lit with GL_AUTO_NORMAL, drawn filled and as
  * GLU_OUTLINE_POLYGON, with default and tighter sampling, at two angles; plus a
- * texture-coordinate and a colour map given as extra gluNurbsSurface calls.
+ * texture-coordinate and a colour map given as extra gluNurbsSurface calls; then
+ * filled and outlined under GLU_DOMAIN_DISTANCE (U_STEP 20, V_STEP 13).
  * 200x200 frames, raw RGBA to argv[1]. */
 #include <GL/gl.h>
 #include <GL/glu.h>
@@ -56,8 +57,13 @@ int main(int argc, char **argv) {
   glMatrixMode(GL_PROJECTION);
   gluPerspective(45.0, 1.0, 3.0, 30.0);
   glMatrixMode(GL_MODELVIEW);
-  for (frame = 0; frame < 8; frame++) {
-    int outline = frame & 1, tight = (frame >> 1) & 1, extra = frame >> 2;
+  for (frame = 0; frame < 10; frame++) {
+    int outline = frame & 1, tight = (frame >> 1) & 1, extra = (frame >> 2) & 1;
+    if (frame == 8) {
+      gluNurbsProperty(nb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
+      gluNurbsProperty(nb, GLU_U_STEP, 20);
+      gluNurbsProperty(nb, GLU_V_STEP, 13);
+    }
     gluNurbsProperty(nb, GLU_SAMPLING_TOLERANCE, tight ? 10.0f : 25.0f);
     gluNurbsProperty(nb, GLU_DISPLAY_MODE, outline ? GLU_OUTLINE_POLYGON : GLU_FILL);
     if (outline) { glDisable(GL_LIGHTING); glColor3f(1, 1, 1); }

@@ -10,6 +10,10 @@ use crate::gl::*;
 const GL_EVAL_BIT: u32 = 0x0001_0000;
 const GL_LINE: GLenum = 0x1B01;
 const GL_FILL: GLenum = 0x1B02;
+const GL_POLYGON_MODE: GLenum = 0x0B40;
+const GL_FRONT: GLenum = 0x0404;
+const GL_BACK: GLenum = 0x0405;
+const GL_FRONT_AND_BACK: GLenum = 0x0408;
 /// SGI subdivides a piece at most this many times to honour its sampling rate.
 const MAX_SUBDIVISIONS: u32 = 6;
 /// The most steps one piece gets in one direction.
@@ -429,26 +433,44 @@ pub fn surface(n: &mut Nurbs, maps: &[SurfDef], loops: &[Vec<TrimPiece>]) {
         super::render_cb::surface(n, &patches, geo, loops);
         return;
     }
+    // As SGI's GLU: the display mode is set as the polygon mode for the whole surface
+    // (FILL for GLU_FILL, LINE for GLU_OUTLINE_POLYGON), then the front and back modes
+    // are put back.
+    let outline = n.display == OUTLINE_POLYGON;
+    let mut saved = [GL_FILL as i32; 2];
+    // SAFETY: GL_POLYGON_MODE writes two integers.
+    unsafe {
+        glGetIntegerv(GL_POLYGON_MODE, saved.as_mut_ptr());
+        glPolygonMode(GL_FRONT_AND_BACK, if outline { GL_LINE } else { GL_FILL });
+    }
     if loops.is_empty() && n.display != OUTLINE_PATCH {
-        let mode = if n.display == OUTLINE_POLYGON {
-            GL_LINE
-        } else {
-            GL_FILL
-        };
+        let mode = if outline { GL_LINE } else { GL_FILL };
         // SAFETY: plain GL calls on the current context.
         unsafe {
             glPushAttrib(GL_EVAL_BIT);
             for p in &patches {
                 p.load();
-                // t runs downwards so that the mesh's quads are counterclockwise in
-                // (s, t), as SGI's triangles are: front faces then face along the
-                // evaluator's s × t normal (an upward grid makes them clockwise).
-                glMapGrid2f(p.steps.0, p.s.0, p.s.1, p.steps.1, p.t.1, p.t.0);
-                glEvalMesh2(mode, 0, p.steps.0, 0, p.steps.1);
+                let (nu, nv) = if n.method == DOMAIN_DISTANCE {
+                    // SGI's shortcut for untrimmed surfaces sampled by domain distance:
+                    // the rate times the patch's extent, truncated, at least 1.
+                    let k = |rate: f32, r: (f32, f32)| ((rate * (r.1 - r.0)) as i32).max(1);
+                    (k(n.u_step, p.s), k(n.v_step, p.t))
+                } else {
+                    p.steps
+                };
+                // t runs downwards, as in SGI's grid, so that the mesh's quads are
+                // counterclockwise in (s, t) and face along the evaluator's s × t normal.
+                glMapGrid2f(nu, p.s.0, p.s.1, nv, p.t.1, p.t.0);
+                glEvalMesh2(mode, 0, nu, 0, nv);
             }
             glPopAttrib();
         }
-        return;
+    } else {
+        trim::draw(n, geo, &patches, loops);
     }
-    trim::draw(n, geo, &patches, loops);
+    // SAFETY: plain GL calls on the current context.
+    unsafe {
+        glPolygonMode(GL_FRONT, saved[0] as GLenum);
+        glPolygonMode(GL_BACK, saved[1] as GLenum);
+    }
 }

@@ -8,7 +8,7 @@
 
 use super::bezier::curve_piece;
 use super::render::Patch;
-use super::{Nurbs, SurfDef, TrimPiece, OUTLINE_PATCH, OUTLINE_POLYGON};
+use super::{Nurbs, SurfDef, TrimPiece, OUTLINE_PATCH};
 use crate::gl::*;
 use crate::tess::{arrange, sweep, WINDING_ABS_GEQ_TWO};
 
@@ -204,14 +204,8 @@ pub fn draw(n: &Nurbs, geo: &SurfDef, patches: &[Patch], loops: &[Vec<TrimPiece>
                 continue;
             }
             let tris = triangles(p, &lines);
-            if n.display == OUTLINE_POLYGON {
-                for t in &tris {
-                    glBegin(GL_LINE_LOOP);
-                    t.iter()
-                        .for_each(|q| glEvalCoord2f(q[0] as f32, q[1] as f32));
-                    glEnd();
-                }
-            } else if !tris.is_empty() {
+            // GLU_OUTLINE_POLYGON outlines them through the polygon mode.
+            if !tris.is_empty() {
                 glBegin(GL_TRIANGLES);
                 for t in &tris {
                     t.iter()
