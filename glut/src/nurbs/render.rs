@@ -16,7 +16,7 @@ const GL_BACK: GLenum = 0x0405;
 const GL_FRONT_AND_BACK: GLenum = 0x0408;
 /// SGI subdivides a piece at most this many times to honour its sampling rate.
 const MAX_SUBDIVISIONS: u32 = 6;
-/// The most steps one piece gets in one direction.
+/// The most steps one piece gets in one direction (SGI has no limit).
 const MAX_STEPS: f32 = 4096.0;
 
 /// Reads modelview, projection and viewport into the sampling and culling matrices.
@@ -453,7 +453,9 @@ pub fn surface(n: &mut Nurbs, maps: &[SurfDef], loops: &[Vec<TrimPiece>]) {
                 let (nu, nv) = if n.method == DOMAIN_DISTANCE {
                     // SGI's shortcut for untrimmed surfaces sampled by domain distance:
                     // the rate times the patch's extent, truncated, at least 1.
-                    let k = |rate: f32, r: (f32, f32)| ((rate * (r.1 - r.0)) as i32).max(1);
+                    let k = |rate: f32, r: (f32, f32)| {
+                        ((rate * (r.1 - r.0)).min(MAX_STEPS) as i32).max(1)
+                    };
                     (k(n.u_step, p.s), k(n.v_step, p.t))
                 } else {
                     p.steps
