@@ -444,7 +444,5 @@ pub unsafe extern "C" fn glCompressedTexSubImage3D(
 /// `img` must be writable for GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes of the image.
 #[no_mangle]
 pub unsafe extern "C" fn glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut GLvoid) {
-    super::with_ctx(|c| {
-        get_compressed(c, target, level, img)
-    })
+    super::with_ctx(|c| get_compressed(c, target, level, img))
 }

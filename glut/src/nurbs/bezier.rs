@@ -35,7 +35,8 @@ pub fn validate(knots: &[f32], order: i64) -> Result<(), KnotError> {
     }
     let last = knots.len() - 1;
     // SGI's test is one-sided: a range running backwards counts as empty too.
-    if !(knots[last - (k - 1)] - knots[k - 1] >= 1e-5) || knots.iter().any(|x| !x.is_finite()) {
+    let span = knots[last - (k - 1)] - knots[k - 1];
+    if span < 1e-5 || knots.iter().any(|x| !x.is_finite()) {
         return Err(KnotError::EmptyRange);
     }
     if knots.windows(2).any(|w| w[0] > w[1]) {
@@ -215,7 +216,11 @@ mod tests {
         assert_eq!(validate(&[0., 1.], 0), Err(KnotError::Order));
         assert_eq!(validate(&[0., 1., 2.], 2), Err(KnotError::TooFew));
         assert_eq!(validate(&[0., 0., 0., 0.], 2), Err(KnotError::EmptyRange));
-        assert_eq!(validate(&[0., 2., 1., 3.], 2), Err(KnotError::Decreasing));
+        assert_eq!(validate(&[0., 2., 1., 3.], 2), Err(KnotError::EmptyRange));
+        assert_eq!(
+            validate(&[0., 1., 3., 2., 4., 5.], 2),
+            Err(KnotError::Decreasing)
+        );
         assert_eq!(
             validate(&[0., 1., 1., 1., 2., 3.], 2),
             Err(KnotError::Multiplicity)

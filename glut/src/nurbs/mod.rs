@@ -221,8 +221,8 @@ impl Nurbs {
         self.cmat = v;
         let xs = 0.5 * view[2] as f32;
         let ys = 0.5 * view[3] as f32;
-        for i in 0..4 {
-            self.smat[i] = [v[i][0] * xs, v[i][1] * ys, 0.0, v[i][3]];
+        for (row, r) in self.smat.iter_mut().zip(&v) {
+            *row = [r[0] * xs, r[1] * ys, 0.0, r[3]];
         }
     }
 }

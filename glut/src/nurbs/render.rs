@@ -65,6 +65,11 @@ fn project(n: &Nurbs, pts: &[f32], dim: usize) -> Option<Vec<[f32; 3]>> {
         .collect()
 }
 
+/// a − b.
+fn sub3(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
 /// The largest `partial`-th difference along a row of points, times SGI's scale factor.
 fn velocity(row: &[[f32; 3]], partial: usize, range: f32) -> f32 {
     let k = row.len();
@@ -74,9 +79,8 @@ fn velocity(row: &[[f32; 3]], partial: usize, range: f32) -> f32 {
     let mut tmp: Vec<[f32; 3]> = row.to_vec();
     for t in 0..partial {
         for j in 0..k - t - 1 {
-            for c in 0..3 {
-                tmp[j][c] = tmp[j + 1][c] - tmp[j][c];
-            }
+            let next = tmp[j + 1];
+            tmp[j] = sub3(next, tmp[j]);
         }
     }
     let max = tmp[..k - partial]
@@ -248,18 +252,14 @@ fn velocity2(q: &[[f32; 3]], ks: usize, kt: usize, sp: usize, tp: usize, rs: f32
     for r in 0..sp {
         for i in 0..ks - r - 1 {
             for j in 0..kt {
-                for c in 0..3 {
-                    g[at(i, j)][c] = g[at(i + 1, j)][c] - g[at(i, j)][c];
-                }
+                g[at(i, j)] = sub3(g[at(i + 1, j)], g[at(i, j)]);
             }
         }
     }
     for r in 0..tp {
         for j in 0..kt - r - 1 {
             for i in 0..ks - sp {
-                for c in 0..3 {
-                    g[at(i, j)][c] = g[at(i, j + 1)][c] - g[at(i, j)][c];
-                }
+                g[at(i, j)] = sub3(g[at(i, j + 1)], g[at(i, j)]);
             }
         }
     }
