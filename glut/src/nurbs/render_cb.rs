@@ -2,7 +2,10 @@
 //! here (de Casteljau in f64) and handed to the client's BEGIN/VERTEX/NORMAL/COLOR/
 //! TEXTURE_COORD/END callbacks instead of GL. Curves come as one GL_LINE_STRIP per
 //! piece, surfaces as GL_TRIANGLES per patch; without a normal map the normal is the
-//! cross product of the surface's partial derivatives (central differences).
+//! cross product of the surface's partial derivatives (central differences). Curve
+//! pieces get U_STEP steps (per unit parameter under GLU_DOMAIN_DISTANCE), surfaces the
+//! renderer's grid; libGLU's tessellator mode emits other primitives (its own strips
+//! and fans), so only the geometry, not the call sequence, corresponds.
 
 use super::bezier::curve_piece;
 use super::render::Patch;
