@@ -236,13 +236,17 @@ fn nurbs_curves_equal_libglu() {
 /// Under path length libGLU runs every surface through its trimming tessellator (strips
 /// and fans over its own sample points) while softglut uses a glEvalMesh2 grid with
 /// SGI's per-patch step sizes: the same shape, sampled as densely, but other triangles
-/// and so other Gouraud shading and outlines. Measured: 92.0% of all pixels identical;
-/// the bounds are the measured counts plus about 10%.
+/// and so other Gouraud shading and outlines. A GL_MAP2_NORMAL map (domain distance) is
+/// identical too; with colour and texture maps 39 pixels of an outline differ: softglut
+/// cuts a map that spans several of the vertex map's patches into Bézier pieces in
+/// double precision, libGLU in single, so piece colours differ in the last bits.
+/// Measured: 93.3% of all pixels identical; the bounds are the measured counts plus
+/// about 10%.
 #[test]
 fn nurbs_surfaces_match_libglu() {
     nurbs_frames_within(
         "nurbs_surface",
-        &[8200, 4500, 850, 1900, 8100, 5600, 850, 5400, 0, 0],
+        &[8200, 4500, 850, 1900, 8100, 5600, 850, 5400, 0, 0, 0, 60],
     );
 }
 

@@ -2,7 +2,8 @@
  * direction (uniform interior knot), lit with GL_AUTO_NORMAL, drawn filled and as
  * GLU_OUTLINE_POLYGON, with default and tighter sampling, at two angles; plus a
  * texture-coordinate and a colour map given as extra gluNurbsSurface calls; then
- * filled and outlined under GLU_DOMAIN_DISTANCE (U_STEP 20, V_STEP 13).
+ * filled and outlined under GLU_DOMAIN_DISTANCE (U_STEP 20, V_STEP 13), then with a
+ * GL_MAP2_NORMAL map instead of GL_AUTO_NORMAL, then unlit with colour and texture maps.
  * 200x200 frames, raw RGBA to argv[1]. */
 #include <GL/gl.h>
 #include <GL/glu.h>
@@ -15,6 +16,7 @@
 static GLfloat ctl[5][5][3];
 static GLfloat tex[2][2][2] = {{{0, 0}, {0, 1}}, {{1, 0}, {1, 1}}};
 static GLfloat col[2][2][4] = {{{1, 0, 0, 1}, {0, 1, 0, 1}}, {{0, 0, 1, 1}, {1, 1, 0, 1}}};
+static GLfloat nrm[2][2][3] = {{{-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}}, {{0.5f, -0.5f, 1}, {0.5f, 0.5f, 1}}};
 
 int main(int argc, char **argv) {
   GLfloat knots[9] = {0, 0, 0, 0, 0.5f, 1, 1, 1, 1};
@@ -57,7 +59,7 @@ int main(int argc, char **argv) {
   glMatrixMode(GL_PROJECTION);
   gluPerspective(45.0, 1.0, 3.0, 30.0);
   glMatrixMode(GL_MODELVIEW);
-  for (frame = 0; frame < 10; frame++) {
+  for (frame = 0; frame < 12; frame++) {
     int outline = frame & 1, tight = (frame >> 1) & 1, extra = (frame >> 2) & 1;
     if (frame == 8) {
       gluNurbsProperty(nb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
@@ -81,7 +83,18 @@ int main(int argc, char **argv) {
       gluNurbsSurface(nb, 4, lin, 4, lin, 2 * 2, 2, &tex[0][0][0], 2, 2, GL_MAP2_TEXTURE_COORD_2);
       if (outline) gluNurbsSurface(nb, 4, lin, 4, lin, 2 * 4, 4, &col[0][0][0], 2, 2, GL_MAP2_COLOR_4);
     }
+    if (frame == 10) {
+      gluNurbsSurface(nb, 4, lin, 4, lin, 2 * 3, 3, &nrm[0][0][0], 2, 2, GL_MAP2_NORMAL);
+      glDisable(GL_AUTO_NORMAL);
+    }
+    if (frame == 11) {
+      glDisable(GL_LIGHTING);
+      glEnable(GL_TEXTURE_2D);
+      gluNurbsSurface(nb, 4, lin, 4, lin, 2 * 2, 2, &tex[0][0][0], 2, 2, GL_MAP2_TEXTURE_COORD_2);
+      gluNurbsSurface(nb, 4, lin, 4, lin, 2 * 4, 4, &col[0][0][0], 2, 2, GL_MAP2_COLOR_4);
+    }
     gluEndSurface(nb);
+    glEnable(GL_AUTO_NORMAL);
     glFinish();
     fwrite(buf, 1, S * S * 4, f);
   }
