@@ -92,6 +92,38 @@ extern "C" {
     pub fn glOrtho(l: GLdouble, r: GLdouble, b: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble);
     pub fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei);
     pub fn glFinish();
+    pub fn glEnable(cap: GLenum);
+    pub fn glIsEnabled(cap: GLenum) -> GLboolean;
+    pub fn glPushAttrib(mask: u32);
+    pub fn glPopAttrib();
+    pub fn glGetFloatv(pname: GLenum, params: *mut GLfloat);
+    pub fn glMap1f(
+        target: GLenum,
+        u1: GLfloat,
+        u2: GLfloat,
+        stride: GLint,
+        order: GLint,
+        p: *const GLfloat,
+    );
+    pub fn glMap2f(
+        target: GLenum,
+        u1: GLfloat,
+        u2: GLfloat,
+        ustride: GLint,
+        uorder: GLint,
+        v1: GLfloat,
+        v2: GLfloat,
+        vstride: GLint,
+        vorder: GLint,
+        p: *const GLfloat,
+    );
+    pub fn glMapGrid1f(n: GLint, u1: GLfloat, u2: GLfloat);
+    pub fn glMapGrid2f(nu: GLint, u1: GLfloat, u2: GLfloat, nv: GLint, v1: GLfloat, v2: GLfloat);
+    pub fn glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint);
+    pub fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint);
+    pub fn glEvalCoord2f(u: GLfloat, v: GLfloat);
+    pub fn glEvalCoord1f(u: GLfloat);
+    pub fn glPolygonMode(face: GLenum, mode: GLenum);
     pub fn glGetString(name: GLenum) -> *const GLubyte;
     pub fn glGetIntegerv(pname: GLenum, params: *mut GLint);
     pub fn glPixelStorei(pname: GLenum, param: GLint);

@@ -368,6 +368,7 @@ pub extern "C" fn gluErrorString(code: GLenum) -> *const u8 {
         100154 => b"gluTessEndContour() must follow a gluTessBeginContour()\0",
         100155 => b"a coordinate is too large\0",
         100156 => b"need combine callback\0",
+        c @ 100251..=100287 => crate::nurbs::ERROR_STRINGS[(c - 100251) as usize].as_bytes(),
         _ => return std::ptr::null(),
     };
     s.as_ptr()

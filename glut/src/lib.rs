@@ -21,6 +21,7 @@ pub mod gl;
 pub mod glu;
 pub mod menu;
 pub mod mipmap;
+pub mod nurbs;
 pub mod quadric;
 pub mod shapes;
 pub mod teapot;

@@ -2,7 +2,6 @@
  * GL/glu.h: the part of GLU 1.3 that softglut implements (libsoftglut.so), with the
  * standard names, signatures and values. Hand-written; tests/glut_tutorials.rs checks
  * it against libsoftglut.so's exports and the values against the system's glu.h.
- * NURBS are not provided.
  */
 #ifndef SOFTGLUT_GLU_H
 #define SOFTGLUT_GLU_H
@@ -96,11 +95,102 @@ extern "C" {
 
 #define GLU_TESS_MAX_COORD 1.0e150
 
+/* NURBS */
+#define GLU_AUTO_LOAD_MATRIX                 100200
+#define GLU_CULLING                          100201
+#define GLU_SAMPLING_TOLERANCE               100203
+#define GLU_DISPLAY_MODE                     100204
+#define GLU_PARAMETRIC_TOLERANCE             100202
+#define GLU_SAMPLING_METHOD                  100205
+#define GLU_U_STEP                           100206
+#define GLU_V_STEP                           100207
+#define GLU_NURBS_MODE                       100160
+#define GLU_NURBS_MODE_EXT                   100160
+#define GLU_NURBS_TESSELLATOR                100161
+#define GLU_NURBS_TESSELLATOR_EXT            100161
+#define GLU_NURBS_RENDERER                   100162
+#define GLU_NURBS_RENDERER_EXT               100162
+#define GLU_OBJECT_PARAMETRIC_ERROR          100208
+#define GLU_OBJECT_PARAMETRIC_ERROR_EXT      100208
+#define GLU_OBJECT_PATH_LENGTH               100209
+#define GLU_OBJECT_PATH_LENGTH_EXT           100209
+#define GLU_PATH_LENGTH                      100215
+#define GLU_PARAMETRIC_ERROR                 100216
+#define GLU_DOMAIN_DISTANCE                  100217
+#define GLU_MAP1_TRIM_2                      100210
+#define GLU_MAP1_TRIM_3                      100211
+#define GLU_OUTLINE_POLYGON                  100240
+#define GLU_OUTLINE_PATCH                    100241
+#define GLU_NURBS_ERROR                      100103
+#define GLU_NURBS_BEGIN                      100164
+#define GLU_NURBS_BEGIN_EXT                  100164
+#define GLU_NURBS_VERTEX                     100165
+#define GLU_NURBS_VERTEX_EXT                 100165
+#define GLU_NURBS_NORMAL                     100166
+#define GLU_NURBS_NORMAL_EXT                 100166
+#define GLU_NURBS_COLOR                      100167
+#define GLU_NURBS_COLOR_EXT                  100167
+#define GLU_NURBS_TEXTURE_COORD              100168
+#define GLU_NURBS_TEX_COORD_EXT              100168
+#define GLU_NURBS_END                        100169
+#define GLU_NURBS_END_EXT                    100169
+#define GLU_NURBS_BEGIN_DATA                 100170
+#define GLU_NURBS_BEGIN_DATA_EXT             100170
+#define GLU_NURBS_VERTEX_DATA                100171
+#define GLU_NURBS_VERTEX_DATA_EXT            100171
+#define GLU_NURBS_NORMAL_DATA                100172
+#define GLU_NURBS_NORMAL_DATA_EXT            100172
+#define GLU_NURBS_COLOR_DATA                 100173
+#define GLU_NURBS_COLOR_DATA_EXT             100173
+#define GLU_NURBS_TEXTURE_COORD_DATA         100174
+#define GLU_NURBS_TEX_COORD_DATA_EXT         100174
+#define GLU_NURBS_END_DATA                   100175
+#define GLU_NURBS_END_DATA_EXT               100175
+#define GLU_NURBS_ERROR1                    100251
+#define GLU_NURBS_ERROR2                    100252
+#define GLU_NURBS_ERROR3                    100253
+#define GLU_NURBS_ERROR4                    100254
+#define GLU_NURBS_ERROR5                    100255
+#define GLU_NURBS_ERROR6                    100256
+#define GLU_NURBS_ERROR7                    100257
+#define GLU_NURBS_ERROR8                    100258
+#define GLU_NURBS_ERROR9                    100259
+#define GLU_NURBS_ERROR10                   100260
+#define GLU_NURBS_ERROR11                   100261
+#define GLU_NURBS_ERROR12                   100262
+#define GLU_NURBS_ERROR13                   100263
+#define GLU_NURBS_ERROR14                   100264
+#define GLU_NURBS_ERROR15                   100265
+#define GLU_NURBS_ERROR16                   100266
+#define GLU_NURBS_ERROR17                   100267
+#define GLU_NURBS_ERROR18                   100268
+#define GLU_NURBS_ERROR19                   100269
+#define GLU_NURBS_ERROR20                   100270
+#define GLU_NURBS_ERROR21                   100271
+#define GLU_NURBS_ERROR22                   100272
+#define GLU_NURBS_ERROR23                   100273
+#define GLU_NURBS_ERROR24                   100274
+#define GLU_NURBS_ERROR25                   100275
+#define GLU_NURBS_ERROR26                   100276
+#define GLU_NURBS_ERROR27                   100277
+#define GLU_NURBS_ERROR28                   100278
+#define GLU_NURBS_ERROR29                   100279
+#define GLU_NURBS_ERROR30                   100280
+#define GLU_NURBS_ERROR31                   100281
+#define GLU_NURBS_ERROR32                   100282
+#define GLU_NURBS_ERROR33                   100283
+#define GLU_NURBS_ERROR34                   100284
+#define GLU_NURBS_ERROR35                   100285
+#define GLU_NURBS_ERROR36                   100286
+#define GLU_NURBS_ERROR37                   100287
+
 typedef struct GLUquadric GLUquadric;
 typedef GLUquadric GLUquadricObj;
 typedef struct GLUtesselator GLUtesselator;
 typedef GLUtesselator GLUtesselatorObj;
 typedef GLUtesselator GLUtriangulatorObj;
+typedef struct GLUnurbs GLUnurbs;
+typedef GLUnurbs GLUnurbsObj;
 
 /* Callbacks are passed as this type and called with their real signatures. */
 typedef void (*_GLUfuncptr)(void);
@@ -152,6 +242,24 @@ GLUAPI GLint gluBuild3DMipmaps(GLenum target, GLint internalFormat, GLsizei widt
 GLUAPI GLint gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
 GLUAPI GLint gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
 GLUAPI GLint gluBuild3DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, GLint level, GLint base, GLint max, const void *data);
+
+GLUAPI GLUnurbs *gluNewNurbsRenderer(void);
+GLUAPI void gluDeleteNurbsRenderer(GLUnurbs *nurb);
+GLUAPI void gluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+GLUAPI void gluGetNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat *data);
+GLUAPI void gluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model, const GLfloat *perspective, const GLint *view);
+GLUAPI void gluNurbsCallback(GLUnurbs *nurb, GLenum which, _GLUfuncptr CallBackFunc);
+GLUAPI void gluNurbsCallbackData(GLUnurbs *nurb, GLvoid *userData);
+GLUAPI void gluNurbsCallbackDataEXT(GLUnurbs *nurb, GLvoid *userData);
+GLUAPI void gluBeginCurve(GLUnurbs *nurb);
+GLUAPI void gluEndCurve(GLUnurbs *nurb);
+GLUAPI void gluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride, GLfloat *control, GLint order, GLenum type);
+GLUAPI void gluBeginSurface(GLUnurbs *nurb);
+GLUAPI void gluEndSurface(GLUnurbs *nurb);
+GLUAPI void gluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots, GLint tKnotCount, GLfloat *tKnots, GLint sStride, GLint tStride, GLfloat *control, GLint sOrder, GLint tOrder, GLenum type);
+GLUAPI void gluBeginTrim(GLUnurbs *nurb);
+GLUAPI void gluEndTrim(GLUnurbs *nurb);
+GLUAPI void gluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride, GLenum type);
 
 #ifdef __cplusplus
 }
