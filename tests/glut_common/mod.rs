@@ -11,19 +11,9 @@ use std::process::Command;
 use std::sync::{Mutex, OnceLock};
 use std::time::SystemTime;
 
-/// The repository root.
-pub fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// `target/<profile>`: the test executable lives in `target/<profile>/deps/`.
-pub fn profile_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("current_exe");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("profile folder")
-        .to_path_buf()
-}
+#[path = "../support/paths.rs"]
+mod paths;
+pub use paths::{profile_dir, root};
 
 /// A file's modification time.
 pub fn mtime(p: &Path) -> Option<SystemTime> {
