@@ -57,15 +57,7 @@ pub fn downsample(src: &Level) -> Level {
             texels.push(super::upload::quantise_rgba(v, &src.storage));
         }
     }
-    Level {
-        width: dw,
-        height: dh,
-        internal_format: src.internal_format,
-        base: src.base,
-        storage: src.storage,
-        texels,
-        blocks: None,
-    }
+    Level::derived(src, dw, dh, texels)
 }
 
 /// Regenerates levels `base+1 ..= max_level` (and down to 1x1) from level `base`.

@@ -205,6 +205,20 @@ pub struct Level {
 }
 
 impl Level {
+    /// A level derived from `src` (a mipmap level made from it): `src`'s formats with new
+    /// texels, and no compressed blocks.
+    pub fn derived(src: &Level, width: usize, height: usize, texels: Vec<[u8; 4]>) -> Level {
+        Level {
+            width,
+            height,
+            internal_format: src.internal_format,
+            base: src.base,
+            storage: src.storage,
+            texels,
+            blocks: None,
+        }
+    }
+
     /// The texel at (x, y), which must be in range.
     #[inline]
     pub fn texel(&self, x: usize, y: usize) -> [u8; 4] {

@@ -175,15 +175,7 @@ pub fn downsample(src: &super::Level, fma: bool) -> super::Level {
             texels.push(super::upload::to_texel(src.base, t));
         }
     }
-    super::Level {
-        width: dw,
-        height: dh,
-        internal_format: src.internal_format,
-        base: src.base,
-        storage: src.storage,
-        texels,
-        blocks: None,
-    }
+    super::Level::derived(src, dw, dh, texels)
 }
 
 #[cfg(test)]

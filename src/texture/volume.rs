@@ -96,15 +96,7 @@ pub fn downsample(src: &Level, d: usize) -> (Level, usize) {
             }
         }
     }
-    let img = Level {
-        width: dw,
-        height: dh,
-        internal_format: src.internal_format,
-        base: src.base,
-        storage: src.storage,
-        texels,
-        blocks: None,
-    };
+    let img = Level::derived(src, dw, dh, texels);
     (img, dd)
 }
 
