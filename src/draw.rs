@@ -163,7 +163,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
         .try_reserve_exact(verts.count())
         .is_err()
     {
-        ctx.record_error(crate::context::error::GlError::OutOfMemory);
+        ctx.record_error(crate::gl::error::GlError::OutOfMemory);
         return;
     }
     ctx.stats.draws += 1;

@@ -25,6 +25,7 @@ pub mod fixed_function;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
+pub mod gl;
 pub mod memory;
 pub mod pixels;
 pub mod raster;

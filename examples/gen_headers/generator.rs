@@ -222,7 +222,7 @@ fn fragments(root: &Path) -> Result<HashMap<&'static str, Fragment>, String> {
     check_file_table(&ffi)?;
     let mut parts = HashMap::new();
     for &(file, _) in SOURCES {
-        parts.insert(file, run_cbindgen(&ffi.join(file))?);
+        parts.insert(file, run_cbindgen(&root.join(source_path(file)))?);
     }
     Ok(parts)
 }
@@ -292,6 +292,19 @@ pub fn generate(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
     Ok(out)
 }
 
+/// The files of [`SOURCES`] that live in `src/gl` (the GL vocabulary leaf) rather than
+/// `src/ffi`: the C types and the tokens.
+pub const GL_FILES: &[&str] = &["types.rs", "enums.rs", "glext_enums.rs"];
+
+/// Where a file of [`SOURCES`] lives, relative to the crate root.
+pub fn source_path(file: &str) -> String {
+    if GL_FILES.contains(&file) {
+        format!("src/gl/{file}")
+    } else {
+        format!("src/ffi/{file}")
+    }
+}
+
 /// Fails unless every `.rs` file of `src/ffi` is in exactly one of [`SOURCES`] and
 /// [`NOT_IN_HEADERS`], and every listed file exists.
 fn check_file_table(ffi: &Path) -> Result<(), String> {
@@ -303,6 +316,7 @@ fn check_file_table(ffi: &Path) -> Result<(), String> {
             present.push(name);
         }
     }
+    present.extend(GL_FILES.iter().map(|f| f.to_string()));
     present.sort();
     let mut errors = Vec::new();
     for name in &present {
@@ -317,8 +331,16 @@ fn check_file_table(ffi: &Path) -> Result<(), String> {
         }
     }
     for (f, _) in SOURCES {
-        if !present.iter().any(|p| p == f) {
-            errors.push(format!("SOURCES lists src/ffi/{f}, which does not exist"));
+        if !present.iter().any(|p| p == f)
+            || !ffi
+                .join("..")
+                .join(source_path(f)[4..].to_string())
+                .exists()
+        {
+            errors.push(format!(
+                "SOURCES lists {}, which does not exist",
+                source_path(f)
+            ));
         }
     }
     if errors.is_empty() {
@@ -636,8 +658,9 @@ fn block(out: &mut String, comment: &str, lines: impl IntoIterator<Item = String
 fn reject(file: &str, what: &str, present: bool) -> Result<(), String> {
     if present {
         Err(format!(
-            "src/ffi/{file} declares {what}, which its header does not take; \
-             move it or extend examples/gen_headers/generator.rs"
+            "{} declares {what}, which its header does not take; \
+             move it or extend examples/gen_headers/generator.rs",
+            source_path(file)
         ))
     } else {
         Ok(())
@@ -662,11 +685,15 @@ fn gl_h(files: &[(&str, &Fragment)], all: &HashMap<&str, Fragment>) -> Result<St
             .iter()
             .filter(|(n, _)| !GLEXT_TYPES.contains(&n.as_str()))
             .map(|(_, l)| l.clone());
-        block(&mut out, &format!("Types: src/ffi/{file}"), typedefs);
+        block(&mut out, &format!("Types: {}", source_path(file)), typedefs);
         let defines = f.defines.iter().map(|(n, v)| define(n, v));
-        block(&mut out, &format!("Tokens: src/ffi/{file}"), defines);
+        block(&mut out, &format!("Tokens: {}", source_path(file)), defines);
         let protos = f.protos.iter().map(|p| prototype(p, "GLAPIENTRY", ""));
-        block(&mut out, &format!("Functions: src/ffi/{file}"), protos);
+        block(
+            &mut out,
+            &format!("Functions: {}", source_path(file)),
+            protos,
+        );
     }
     let pfns = files
         .iter()
@@ -707,7 +734,7 @@ fn osmesa_h(files: &[(&str, &Fragment)]) -> Result<String, String> {
     for (file, f) in files {
         block(
             &mut out,
-            &format!("Constants: src/ffi/{file}"),
+            &format!("Constants: {}", source_path(file)),
             f.defines.iter().map(|(n, v)| define(n, v)),
         );
         let types = f
@@ -715,10 +742,10 @@ fn osmesa_h(files: &[(&str, &Fragment)]) -> Result<String, String> {
             .iter()
             .cloned()
             .chain(f.typedefs.iter().map(|(_, l)| l.clone()));
-        block(&mut out, &format!("Types: src/ffi/{file}"), types);
+        block(&mut out, &format!("Types: {}", source_path(file)), types);
         block(
             &mut out,
-            &format!("Functions: src/ffi/{file}"),
+            &format!("Functions: {}", source_path(file)),
             f.protos.iter().map(|p| prototype(p, "GLAPIENTRY", "")),
         );
     }

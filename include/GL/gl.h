@@ -43,7 +43,7 @@
 extern "C" {
 #endif
 
-/* Types: src/ffi/types.rs */
+/* Types: src/gl/types.rs */
 typedef unsigned int GLenum;
 typedef unsigned char GLboolean;
 typedef unsigned int GLbitfield;
@@ -60,7 +60,7 @@ typedef float GLclampf;
 typedef double GLdouble;
 typedef double GLclampd;
 
-/* Tokens: src/ffi/enums.rs */
+/* Tokens: src/gl/enums.rs */
 #define GL_VERSION_1_1                           1
 #define GL_VERSION_1_2                           1
 #define GL_VERSION_1_3                           1

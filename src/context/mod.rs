@@ -8,7 +8,7 @@ pub mod accum;
 pub mod arrays;
 pub mod attrib;
 pub mod dlist;
-pub mod error;
+pub use crate::gl::error;
 pub mod eval;
 pub mod fbo;
 pub mod fbo_bind;

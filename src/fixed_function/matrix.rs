@@ -5,7 +5,7 @@
 //! multiply and add separately and a different order changes the last bit of a vertex.
 
 use super::mesa_matrix::MatFlags;
-use crate::context::error::{GlError, GlResult};
+use crate::gl::error::{GlError, GlResult};
 
 /// A column-major 4x4 f32 matrix.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -208,7 +208,7 @@ fn feedback_token(ctx: &mut Context, token: u32) -> bool {
 /// caller; an invalid raster position draws nothing).
 pub fn draw_pixels(ctx: &mut Context, img: &Image) {
     super::cache::flush(ctx);
-    if !ctx.raster_pos.valid || feedback_token(ctx, crate::ffi::enums::GL_DRAW_PIXEL_TOKEN) {
+    if !ctx.raster_pos.valid || feedback_token(ctx, crate::gl::enums::GL_DRAW_PIXEL_TOKEN) {
         return;
     }
     if img.w == 0 || img.h == 0 {
@@ -270,7 +270,7 @@ pub fn bitmap(ctx: &mut Context, w: usize, h: usize, orig: [f32; 2], mv: [f32; 2
     if !ctx.raster_pos.valid {
         return;
     }
-    if feedback_token(ctx, crate::ffi::enums::GL_BITMAP_TOKEN) {
+    if feedback_token(ctx, crate::gl::enums::GL_BITMAP_TOKEN) {
     } else if w > 0 && h > 0 && bits.len() >= w * h {
         let p = ctx.raster_pos.pos;
         let x = (p[0] + 0.0001 - orig[0]).floor() as i32;
@@ -331,7 +331,7 @@ pub enum CopyKind {
 /// raster position (validated by the caller).
 pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind: CopyKind) {
     super::cache::flush(ctx);
-    if !ctx.raster_pos.valid || feedback_token(ctx, crate::ffi::enums::GL_COPY_PIXEL_TOKEN) {
+    if !ctx.raster_pos.valid || feedback_token(ctx, crate::gl::enums::GL_COPY_PIXEL_TOKEN) {
         return;
     }
     if w == 0 || h == 0 {

@@ -6,9 +6,9 @@
 //! bitmaps as one flag per pixel. Pixel-transfer operations run later, at execution, with
 //! the state then current, as Mesa's display lists replay the raw image.
 
-use crate::context::error::{GlError, GlResult};
 use crate::context::state::PixelStore;
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
+use crate::gl::error::{GlError, GlResult};
 
 /// What a decoded image holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -96,7 +96,7 @@ pub(crate) fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
 /// GL_RGB; 4: GL_RGBA or GL_BGRA), and a depth-stencil type with another format, are
 /// GL_INVALID_OPERATION, even when the format is one softgl (or GL) does not know.
 pub(crate) fn check_type_fits_format(format: u32, ty: u32) -> GlResult<()> {
-    use crate::ffi::glext_enums::{
+    use crate::gl::glext_enums::{
         GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, GL_UNSIGNED_INT_24_8,
     };
     let ds_type = matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV);

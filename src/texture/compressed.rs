@@ -33,7 +33,7 @@
 //! decoded to bytes, then linearised like the other sRGB textures ([`super::srgb`]).
 
 use super::BaseFormat;
-use crate::ffi::glext_enums::*;
+use crate::gl::glext_enums::*;
 use std::sync::OnceLock;
 
 /// A compressed internal format softgl supports.

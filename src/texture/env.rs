@@ -18,7 +18,7 @@
 //! scale combinations of ADD, ADD_SIGNED, SUBTRACT, INTERPOLATE and MODULATE on one unit;
 //! a few two-unit chains where PREVIOUS feeds ADD_SIGNED still round differently.
 
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 
 /// GL_TEXTURE_ENV_MODE.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

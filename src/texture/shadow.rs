@@ -143,8 +143,8 @@ pub fn depth_size(bits: u8) -> u8 {
 /// Depth bits Mesa stores for a depth internal format given with client type `ty` (0 for
 /// a copy).
 pub fn depth_bits(internal: u32, ty: u32) -> u8 {
-    use crate::ffi::enums::{GL_UNSIGNED_INT, GL_UNSIGNED_SHORT};
-    use crate::ffi::glext_enums::{
+    use crate::gl::enums::{GL_UNSIGNED_INT, GL_UNSIGNED_SHORT};
+    use crate::gl::glext_enums::{
         GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
         GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F, GL_DEPTH_STENCIL,
     };
@@ -166,7 +166,7 @@ pub fn depth_bits(internal: u32, ty: u32) -> u8 {
 /// GL_DEPTH24_STENCIL8: stored as Z24 with 8 stencil bits, GL_TEXTURE_DEPTH_SIZE 24,
 /// GL_TEXTURE_STENCIL_SIZE 8, measured; GL_DEPTH32F_STENCIL8: float depth, 32 and 8).
 pub fn is_depth_stencil(internal: u32) -> bool {
-    use crate::ffi::glext_enums::{GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL};
+    use crate::gl::glext_enums::{GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL};
     matches!(
         internal,
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 | GL_DEPTH32F_STENCIL8
@@ -401,8 +401,8 @@ enum Exact {
 /// Reads the client depth value at `b` of type `ty` as a float (signed types may be
 /// negative: the store clamps) and, for the exact paths, the raw integer.
 fn client_value(b: &[u8], ty: u32, swap: bool) -> (f32, Exact) {
-    use crate::ffi::enums::*;
-    use crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8;
+    use crate::gl::enums::*;
+    use crate::gl::glext_enums::GL_UNSIGNED_INT_24_8;
     let mut raw = [0u8; 4];
     let n = match ty {
         GL_UNSIGNED_BYTE | GL_BYTE => 1,
@@ -528,7 +528,7 @@ pub unsafe fn unpack_stencil(
 /// `FLOAT_TO_BYTE` (`(⌊255d⌋ − 1)/2`), `FLOAT_TO_SHORT`, `FLOAT_TO_UINT` and
 /// `FLOAT_TO_INT` (f64), and round-half-even for GL_UNSIGNED_SHORT.
 pub fn pack_depth(d: f32, ty: u32) -> ([u8; 4], usize) {
-    use crate::ffi::enums::*;
+    use crate::gl::enums::*;
     let four = |b: [u8; 4]| (b, 4);
     let two = |b: [u8; 2]| ([b[0], b[1], 0, 0], 2);
     match ty {
@@ -603,8 +603,8 @@ pub unsafe fn pack_depth_stencil(
             let z = texel_z(img.texel(x, y));
             let s = stencil.get(y * w + x).copied().unwrap_or(0) as u32;
             let words = match (cf.gl_type, float) {
-                (crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8, false) => [z << 8 | s, 0],
-                (crate::ffi::glext_enums::GL_UNSIGNED_INT_24_8, true) => {
+                (crate::gl::glext_enums::GL_UNSIGNED_INT_24_8, false) => [z << 8 | s, 0],
+                (crate::gl::glext_enums::GL_UNSIGNED_INT_24_8, true) => {
                     [((f32::from_bits(z) * 16_777_215.0) as u32) << 8 | s, 0]
                 }
                 (_, true) => [z, s],

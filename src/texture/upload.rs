@@ -18,13 +18,13 @@ use super::{BaseFormat, Level, Storage};
 use crate::context::pixel_transfer::{PixelMaps, PixelTransfer};
 use crate::context::state::PixelStore;
 use crate::context::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::glext_enums::{
+use crate::gl::enums::*;
+use crate::gl::glext_enums::{
     GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
     GL_DEPTH_STENCIL, GL_SLUMINANCE, GL_SLUMINANCE8, GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA,
     GL_SRGB, GL_SRGB8, GL_SRGB8_ALPHA8, GL_SRGB_ALPHA, GL_UNSIGNED_INT_24_8,
 };
-use crate::ffi::glext_enums::{
+use crate::gl::glext_enums::{
     GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT32F, GL_FLOAT_32_UNSIGNED_INT_24_8_REV,
 };
 

@@ -1,7 +1,7 @@
 //! GL errors: the values glGetError reports, as a Rust error type for `?`.
 
-use crate::ffi::enums::*;
-use crate::ffi::types::GLenum;
+use super::enums::*;
+use super::types::GLenum;
 
 /// A GL error; the failing call must leave all state unchanged.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,7 +34,7 @@ impl GlError {
             GlError::StackUnderflow => GL_STACK_UNDERFLOW,
             GlError::OutOfMemory => GL_OUT_OF_MEMORY,
             GlError::InvalidFramebufferOperation => {
-                crate::ffi::glext_enums::GL_INVALID_FRAMEBUFFER_OPERATION
+                super::glext_enums::GL_INVALID_FRAMEBUFFER_OPERATION
             }
         }
     }
