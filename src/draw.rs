@@ -5,8 +5,7 @@
 //! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
 
 use crate::context::feedback::{FeedbackSink, RenderMode};
-use crate::context::lighting_state::Material;
-use crate::context::state::{Cap, Face, Primitive};
+use crate::context::state::Cap;
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
 use crate::fixed_function::lighting::LightPlan;
@@ -19,6 +18,8 @@ use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant}
 use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{cpu_has_fma, ClipMask, ClipVertex, Viewport};
+use crate::pipe::Material;
+use crate::pipe::{Face, Primitive};
 use crate::raster::batch::{geom_section, Binner, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
 
@@ -187,8 +188,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
     if feedback_tex0 {
         stage.add_texture_unit(0, ctx.matrices.texture[0].top());
     }
-    let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0
-        ..crate::context::state::MAX_TEXTURE_UNITS)
+    let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0..crate::pipe::MAX_TEXTURE_UNITS)
         .filter(|_| !feedback)
         .filter_map(|u| {
             let p = ctx.textures.unit_plan(u)?;
@@ -780,7 +780,7 @@ fn draw_feedback<S: VertexSource + ?Sized>(
         ucp: &stage.ucp,
         viewport: stage.viewport,
         nvary: stage.nvary(),
-        flat: st.shade_model == crate::context::state::ShadeModel::Flat,
+        flat: st.shade_model == crate::pipe::ShadeModel::Flat,
         cull: CullMode {
             front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
             back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
@@ -872,9 +872,9 @@ fn run_vertices<S: VertexSource + ?Sized>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::state::CurrentAttribs;
     use crate::fixed_function::matrix::Mat4;
     use crate::geometry::fetch::VertexIn;
+    use crate::pipe::CurrentAttribs;
 
     /// Special values mixed into the random inputs.
     const ODD: [f32; 8] = [

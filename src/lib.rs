@@ -27,6 +27,7 @@ pub mod framebuffer;
 pub mod geometry;
 pub mod gl;
 pub mod memory;
+pub mod pipe;
 pub mod pixels;
 pub mod raster;
 pub mod stats;

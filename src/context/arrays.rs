@@ -6,28 +6,8 @@ use super::error::{GlError, GlResult};
 use super::state::MAX_TEXTURE_UNITS;
 use crate::ffi::enums::*;
 use crate::ffi::types::GLenum;
+pub use crate::pipe::{ArrayPointer, DataType};
 use std::collections::HashMap;
-
-/// The component type of an array or index buffer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DataType {
-    /// GL_BYTE
-    Byte,
-    /// GL_UNSIGNED_BYTE
-    UByte,
-    /// GL_SHORT
-    Short,
-    /// GL_UNSIGNED_SHORT
-    UShort,
-    /// GL_INT
-    Int,
-    /// GL_UNSIGNED_INT
-    UInt,
-    /// GL_FLOAT
-    Float,
-    /// GL_DOUBLE
-    Double,
-}
 
 impl DataType {
     /// Converts a GL type token.
@@ -57,55 +37,7 @@ impl DataType {
             Self::Double => GL_DOUBLE,
         }
     }
-    /// Size in bytes.
-    pub fn size(self) -> usize {
-        match self {
-            Self::Byte | Self::UByte => 1,
-            Self::Short | Self::UShort => 2,
-            Self::Int | Self::UInt | Self::Float => 4,
-            Self::Double => 8,
-        }
-    }
 }
-
-/// One client array (gl*Pointer plus its enable bit).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ArrayPointer {
-    /// glEnableClientState.
-    pub enabled: bool,
-    /// Components per element (1-4).
-    pub size: i32,
-    /// Component type.
-    pub ty: DataType,
-    /// The stride the user gave (0 = tightly packed).
-    pub stride: i32,
-    /// The pointer, or the offset into `buffer`.
-    pub ptr: usize,
-    /// The GL_ARRAY_BUFFER bound when the pointer was set (0 = client memory).
-    pub buffer: u32,
-}
-
-impl ArrayPointer {
-    fn new(size: i32, ty: DataType) -> Self {
-        ArrayPointer {
-            enabled: false,
-            size,
-            ty,
-            stride: 0,
-            ptr: 0,
-            buffer: 0,
-        }
-    }
-    /// The effective stride in bytes.
-    pub fn byte_stride(&self) -> usize {
-        if self.stride > 0 {
-            self.stride as usize
-        } else {
-            self.size as usize * self.ty.size()
-        }
-    }
-}
-
 /// A buffer object's store.
 #[derive(Clone, Debug, Default)]
 pub struct BufferObject {

@@ -2,31 +2,12 @@
 //! the GL token conversions done once at the boundary.
 
 use super::error::{GlError, GlResult};
-use super::state::CompareFunc;
 use crate::ffi::enums::*;
 use crate::ffi::glext_enums::*;
 use crate::ffi::types::GLenum;
-
-/// A blend factor (glBlendFunc).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[allow(missing_docs)]
-pub enum BlendFactor {
-    Zero,
-    One,
-    SrcColor,
-    OneMinusSrcColor,
-    DstColor,
-    OneMinusDstColor,
-    SrcAlpha,
-    OneMinusSrcAlpha,
-    DstAlpha,
-    OneMinusDstAlpha,
-    ConstantColor,
-    OneMinusConstantColor,
-    ConstantAlpha,
-    OneMinusConstantAlpha,
-    SrcAlphaSaturate,
-}
+pub use crate::pipe::{
+    BlendEquation, BlendFactor, BlendState, FragmentOps, LogicOp, StencilFace, StencilOp,
+};
 
 const FACTORS: &[(BlendFactor, GLenum)] = &[
     (BlendFactor::Zero, GL_ZERO),
@@ -69,18 +50,6 @@ impl BlendFactor {
             .map_or(GL_ZERO, |(_, g)| *g)
     }
 }
-
-/// A blend equation (glBlendEquation).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[allow(missing_docs)]
-pub enum BlendEquation {
-    Add,
-    Subtract,
-    ReverseSubtract,
-    Min,
-    Max,
-}
-
 impl BlendEquation {
     /// Converts an equation token.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -104,54 +73,6 @@ impl BlendEquation {
         }
     }
 }
-
-/// glBlendFuncSeparate / glBlendEquationSeparate / glBlendColor state.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BlendState {
-    /// Source factor for RGB.
-    pub src_rgb: BlendFactor,
-    /// Destination factor for RGB.
-    pub dst_rgb: BlendFactor,
-    /// Source factor for alpha.
-    pub src_a: BlendFactor,
-    /// Destination factor for alpha.
-    pub dst_a: BlendFactor,
-    /// Equation for RGB.
-    pub eq_rgb: BlendEquation,
-    /// Equation for alpha.
-    pub eq_a: BlendEquation,
-    /// glBlendColor (clamped to [0,1]).
-    pub color: [f32; 4],
-}
-
-impl Default for BlendState {
-    fn default() -> Self {
-        BlendState {
-            src_rgb: BlendFactor::One,
-            dst_rgb: BlendFactor::Zero,
-            src_a: BlendFactor::One,
-            dst_a: BlendFactor::Zero,
-            eq_rgb: BlendEquation::Add,
-            eq_a: BlendEquation::Add,
-            color: [0.0; 4],
-        }
-    }
-}
-
-/// A stencil operation (glStencilOp).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[allow(missing_docs)]
-pub enum StencilOp {
-    Keep,
-    Zero,
-    Replace,
-    Incr,
-    Decr,
-    Invert,
-    IncrWrap,
-    DecrWrap,
-}
-
 impl StencilOp {
     /// Converts an operation token.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -180,78 +101,7 @@ impl StencilOp {
             Self::DecrWrap => GL_DECR_WRAP,
         }
     }
-    /// Applies the operation to stored value `s` with reference `r` (8-bit buffer).
-    #[inline(always)]
-    pub fn apply(self, s: u8, r: u8) -> u8 {
-        match self {
-            Self::Keep => s,
-            Self::Zero => 0,
-            Self::Replace => r,
-            Self::Incr => s.saturating_add(1),
-            Self::Decr => s.saturating_sub(1),
-            Self::Invert => !s,
-            Self::IncrWrap => s.wrapping_add(1),
-            Self::DecrWrap => s.wrapping_sub(1),
-        }
-    }
 }
-
-/// The stencil state of one face.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StencilFace {
-    /// glStencilFunc function.
-    pub func: CompareFunc,
-    /// Reference value (as given; clamped to the buffer's range when used).
-    pub reference: i32,
-    /// Comparison mask.
-    pub value_mask: u32,
-    /// Operation when the stencil test fails.
-    pub fail: StencilOp,
-    /// Operation when the stencil test passes and the depth test fails.
-    pub zfail: StencilOp,
-    /// Operation when both pass.
-    pub zpass: StencilOp,
-    /// glStencilMask.
-    pub writemask: u32,
-}
-
-impl Default for StencilFace {
-    fn default() -> Self {
-        StencilFace {
-            func: CompareFunc::Always,
-            reference: 0,
-            // Mesa starts both masks at the 8-bit buffer's all-ones, 0xFF.
-            value_mask: 0xFF,
-            fail: StencilOp::Keep,
-            zfail: StencilOp::Keep,
-            zpass: StencilOp::Keep,
-            writemask: 0xFF,
-        }
-    }
-}
-
-/// A logic operation (glLogicOp) on 8-bit channels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[allow(missing_docs)]
-pub enum LogicOp {
-    Clear,
-    And,
-    AndReverse,
-    Copy,
-    AndInverted,
-    Noop,
-    Xor,
-    Or,
-    Nor,
-    Equiv,
-    Invert,
-    OrReverse,
-    CopyInverted,
-    OrInverted,
-    Nand,
-    Set,
-}
-
 impl LogicOp {
     /// Converts a token (GL_CLEAR..GL_SET are 0x1500..0x150F in this order).
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -282,60 +132,7 @@ impl LogicOp {
     pub fn to_gl(self) -> GLenum {
         GL_CLEAR + self as GLenum
     }
-    /// Applies the operation to source `s` and destination `d`.
-    #[inline(always)]
-    pub fn apply(self, s: u8, d: u8) -> u8 {
-        match self {
-            Self::Clear => 0,
-            Self::And => s & d,
-            Self::AndReverse => s & !d,
-            Self::Copy => s,
-            Self::AndInverted => !s & d,
-            Self::Noop => d,
-            Self::Xor => s ^ d,
-            Self::Or => s | d,
-            Self::Nor => !(s | d),
-            Self::Equiv => !(s ^ d),
-            Self::Invert => !d,
-            Self::OrReverse => s | !d,
-            Self::CopyInverted => !s,
-            Self::OrInverted => !s | d,
-            Self::Nand => !(s & d),
-            Self::Set => 255,
-        }
-    }
 }
-
-/// All per-fragment operation state other than depth.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FragmentOps {
-    /// Blending.
-    pub blend: BlendState,
-    /// glAlphaFunc function.
-    pub alpha_func: CompareFunc,
-    /// glAlphaFunc reference, unclamped as given (Mesa clamps when it uses it).
-    pub alpha_ref: f32,
-    /// Front-face stencil state.
-    pub stencil_front: StencilFace,
-    /// Back-face stencil state.
-    pub stencil_back: StencilFace,
-    /// glLogicOp.
-    pub logic_op: LogicOp,
-}
-
-impl Default for FragmentOps {
-    fn default() -> Self {
-        FragmentOps {
-            blend: BlendState::default(),
-            alpha_func: CompareFunc::Always,
-            alpha_ref: 0.0,
-            stencil_front: StencilFace::default(),
-            stencil_back: StencilFace::default(),
-            logic_op: LogicOp::Copy,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

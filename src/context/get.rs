@@ -354,7 +354,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         } else {
             GL_SINGLE_COLOR
         }),
-        GL_COLOR_MATERIAL_FACE => e(c.light.color_material.face),
+        GL_COLOR_MATERIAL_FACE => e(c.light.color_material.face.to_gl()),
         GL_COLOR_MATERIAL_PARAMETER => e(c.light.color_material.mode.to_gl()),
         GL_FOG_MODE => e(c.light.fog.mode.to_gl()),
         GL_FOG_DENSITY => f(&[c.light.fog.density]),

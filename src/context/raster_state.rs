@@ -7,62 +7,10 @@
 use super::error::{GlError, GlResult};
 use crate::ffi::enums::*;
 use crate::ffi::types::GLenum;
-
-/// Mesa's implementation limits for llvmpipe (`PIPE_CAPF_MAX_LINE_WIDTH`,
-/// `PIPE_CAPF_MAX_POINT_SIZE` = 255, granularity 0.1).
-pub const MAX_LINE_WIDTH: f32 = 255.0;
-/// Largest point size (aliased and smooth).
-pub const MAX_POINT_SIZE: f32 = 255.0;
-/// GL_LINE_WIDTH_GRANULARITY and GL_POINT_SIZE_GRANULARITY.
-pub const SIZE_GRANULARITY: f32 = 0.1;
-
-/// GL_LINE_BIT state (besides the GL_LINE_SMOOTH / GL_LINE_STIPPLE enables).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LineState {
-    /// glLineWidth as given (clamped only when drawing).
-    pub width: f32,
-    /// glLineStipple pattern.
-    pub stipple_pattern: u16,
-    /// glLineStipple factor, clamped to [1, 256].
-    pub stipple_repeat: u32,
-}
-
-impl Default for LineState {
-    fn default() -> Self {
-        LineState {
-            width: 1.0,
-            stipple_pattern: 0xffff,
-            stipple_repeat: 1,
-        }
-    }
-}
-
-/// GL_POINT_BIT state (besides the GL_POINT_SMOOTH enable).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PointState {
-    /// glPointSize as given.
-    pub size: f32,
-    /// GL_POINT_SIZE_MIN (glPointParameter).
-    pub min_size: f32,
-    /// GL_POINT_SIZE_MAX.
-    pub max_size: f32,
-    /// GL_POINT_FADE_THRESHOLD_SIZE (stored and queried; llvmpipe does not fade).
-    pub fade_threshold: f32,
-    /// GL_POINT_DISTANCE_ATTENUATION: constant, linear and quadratic coefficients.
-    pub attenuation: [f32; 3],
-}
-
-impl Default for PointState {
-    fn default() -> Self {
-        PointState {
-            size: 1.0,
-            min_size: 0.0,
-            max_size: MAX_POINT_SIZE,
-            fade_threshold: 1.0,
-            attenuation: [1.0, 0.0, 0.0],
-        }
-    }
-}
+pub use crate::pipe::{
+    FillMode, LineState, PointState, PolygonState, PolygonStipple, RasterState, MAX_LINE_WIDTH,
+    MAX_POINT_SIZE, SIZE_GRANULARITY,
+};
 
 /// A glPointParameter pname.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -101,11 +49,6 @@ impl PointParam {
 }
 
 impl PointState {
-    /// Whether the size is attenuated per vertex (Mesa's `Point._Attenuated`).
-    pub fn attenuated(&self) -> bool {
-        self.attenuation != [1.0, 0.0, 0.0]
-    }
-
     /// glPointParameterfv: negative sizes and thresholds are GL_INVALID_VALUE (NaN passes,
     /// as Mesa's `< 0` test lets it); the attenuation coefficients are not checked.
     pub fn set(&mut self, p: PointParam, v: [f32; 3]) -> GlResult<()> {
@@ -120,32 +63,7 @@ impl PointState {
         }
         Ok(())
     }
-
-    /// The size llvmpipe rasterizes without attenuation: glPointSize clamped to
-    /// [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] by Mesa's `CLAMP` macro (the minimum is
-    /// tested first, so an inverted range still gives one of its ends).
-    pub fn clamped_size(&self) -> f32 {
-        if self.size < self.min_size {
-            self.min_size
-        } else if self.size > self.max_size {
-            self.max_size
-        } else {
-            self.size
-        }
-    }
 }
-
-/// glPolygonMode's mode.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FillMode {
-    /// Vertices as points.
-    Point,
-    /// Edges as lines.
-    Line,
-    /// Filled.
-    Fill,
-}
-
 impl FillMode {
     /// Converts GL_POINT/GL_LINE/GL_FILL.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -164,61 +82,4 @@ impl FillMode {
             Self::Fill => GL_FILL,
         }
     }
-}
-
-/// GL_POLYGON_BIT state owned here (cull face and front face stay in `State`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PolygonState {
-    /// glPolygonMode for front faces.
-    pub mode_front: FillMode,
-    /// glPolygonMode for back faces.
-    pub mode_back: FillMode,
-    /// glPolygonOffset factor.
-    pub offset_factor: f32,
-    /// glPolygonOffset units.
-    pub offset_units: f32,
-}
-
-impl Default for PolygonState {
-    fn default() -> Self {
-        PolygonState {
-            mode_front: FillMode::Fill,
-            mode_back: FillMode::Fill,
-            offset_factor: 0.0,
-            offset_units: 0.0,
-        }
-    }
-}
-
-/// GL_POLYGON_STIPPLE_BIT: the 32x32 pattern, one `u32` per row from the bottom, bit 31 =
-/// leftmost pixel (the first byte's most significant bit).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PolygonStipple(pub [u32; 32]);
-
-impl Default for PolygonStipple {
-    fn default() -> Self {
-        PolygonStipple([u32::MAX; 32])
-    }
-}
-
-impl PolygonStipple {
-    /// Whether window pixel (x, y) (GL y-up) passes the stipple.
-    #[inline]
-    pub fn passes(&self, x: i64, y: i64) -> bool {
-        let row = self.0[(y & 31) as usize];
-        row & (0x8000_0000u32 >> (x & 31)) != 0
-    }
-}
-
-/// All of this module's state, as `Context::raster`.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RasterState {
-    /// Lines.
-    pub line: LineState,
-    /// Points.
-    pub point: PointState,
-    /// Polygon modes and offset.
-    pub polygon: PolygonState,
-    /// Polygon stipple pattern.
-    pub stipple: PolygonStipple,
 }

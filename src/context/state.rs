@@ -7,27 +7,8 @@ use super::error::{GlError, GlResult};
 use crate::ffi::enums::*;
 use crate::ffi::glext_enums::*;
 use crate::ffi::types::GLenum;
-
-/// A comparison function (depth test; later alpha and stencil tests).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CompareFunc {
-    /// Never passes.
-    Never,
-    /// Passes if the incoming value is less.
-    Less,
-    /// Passes if equal.
-    Equal,
-    /// Passes if less or equal.
-    LEqual,
-    /// Passes if greater.
-    Greater,
-    /// Passes if not equal.
-    NotEqual,
-    /// Passes if greater or equal.
-    GEqual,
-    /// Always passes.
-    Always,
-}
+pub use crate::pipe::CompareFunc;
+pub use crate::pipe::{CurrentAttribs, Face, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
 
 impl CompareFunc {
     /// Converts a GL_NEVER..GL_ALWAYS token.
@@ -57,42 +38,7 @@ impl CompareFunc {
             Self::Always => GL_ALWAYS,
         }
     }
-    /// Applies the function to `incoming` vs `stored`.
-    #[inline(always)]
-    pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
-        match self {
-            Self::Never => false,
-            Self::Less => incoming < stored,
-            Self::Equal => incoming == stored,
-            Self::LEqual => incoming <= stored,
-            Self::Greater => incoming > stored,
-            Self::NotEqual => incoming != stored,
-            Self::GEqual => incoming >= stored,
-            Self::Always => true,
-        }
-    }
 }
-
-/// glShadeModel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShadeModel {
-    /// Colours come from the provoking vertex.
-    Flat,
-    /// Colours are interpolated.
-    Smooth,
-}
-
-/// A polygon face selector (glCullFace).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Face {
-    /// Front faces.
-    Front,
-    /// Back faces.
-    Back,
-    /// Both.
-    FrontAndBack,
-}
-
 impl Face {
     /// Converts GL_FRONT/GL_BACK/GL_FRONT_AND_BACK.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -112,32 +58,6 @@ impl Face {
         }
     }
 }
-
-/// The primitive type of glBegin and the draw calls.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Primitive {
-    /// GL_POINTS
-    Points,
-    /// GL_LINES
-    Lines,
-    /// GL_LINE_LOOP
-    LineLoop,
-    /// GL_LINE_STRIP
-    LineStrip,
-    /// GL_TRIANGLES
-    Triangles,
-    /// GL_TRIANGLE_STRIP
-    TriangleStrip,
-    /// GL_TRIANGLE_FAN
-    TriangleFan,
-    /// GL_QUADS
-    Quads,
-    /// GL_QUAD_STRIP
-    QuadStrip,
-    /// GL_POLYGON
-    Polygon,
-}
-
 impl Primitive {
     /// Converts GL_POINTS..GL_POLYGON.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -156,7 +76,6 @@ impl Primitive {
         })
     }
 }
-
 /// Which matrix stack glMatrixMode selects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MatrixMode {
@@ -389,42 +308,6 @@ impl Default for PixelStore {
             alignment: 4,
             image_height: 0,
             skip_images: 0,
-        }
-    }
-}
-
-/// The current vertex attributes (what glColor/glNormal/glTexCoord set).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CurrentAttribs {
-    /// GL_CURRENT_COLOR
-    pub color: [f32; 4],
-    /// GL_CURRENT_SECONDARY_COLOR
-    pub secondary_color: [f32; 4],
-    /// GL_CURRENT_NORMAL
-    pub normal: [f32; 3],
-    /// GL_CURRENT_TEXTURE_COORDS per texture unit
-    pub texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
-    /// GL_CURRENT_FOG_COORD
-    pub fog_coord: f32,
-    /// GL_EDGE_FLAG
-    pub edge_flag: bool,
-    /// GL_CURRENT_INDEX (kept for glGet; an RGBA context draws nothing with it)
-    pub index: f32,
-}
-
-/// The number of texture units (Mesa's fixed-function count is 8).
-pub const MAX_TEXTURE_UNITS: usize = 8;
-
-impl Default for CurrentAttribs {
-    fn default() -> Self {
-        CurrentAttribs {
-            color: [1.0; 4],
-            secondary_color: [0.0, 0.0, 0.0, 1.0],
-            normal: [0.0, 0.0, 1.0],
-            texcoord: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
-            fog_coord: 0.0,
-            edge_flag: true,
-            index: 1.0,
         }
     }
 }

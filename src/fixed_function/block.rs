@@ -138,10 +138,10 @@ impl VertexStage {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::state::CurrentAttribs;
     use crate::fixed_function::matrix::{Mat4, IDENTITY};
     use crate::geometry::fetch::VertexIn;
     use crate::geometry::Viewport;
+    use crate::pipe::CurrentAttribs;
 
     /// Values that exercise the rounding, the clip tests and the colour clamp: ordinary
     /// coordinates, zeros of both signs, values at and beyond ±w, huge values, infinities

@@ -16,7 +16,7 @@
 
 use super::gallivm_math::exp2;
 use super::matrix::Mat4;
-use crate::context::lighting_state::{FogMode, FogState};
+use crate::pipe::{FogMode, FogState};
 
 /// `ONE_DIV_SQRT_LN2` of `prog_statevars.c` (Mesa's digits).
 #[allow(clippy::excessive_precision)]

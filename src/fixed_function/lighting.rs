@@ -29,8 +29,8 @@
 use super::gallivm_math::{pow, rsq};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
-use crate::context::lighting_state::{LightingState, Material, Tracked, MAX_LIGHTS};
 use crate::context::state::{Cap, Caps};
+use crate::pipe::{LightingState, Material, Tracked, MAX_LIGHTS};
 
 /// `DP3` as llvmpipe lowers it: highest component first.
 #[inline(always)]
@@ -242,7 +242,7 @@ impl LightPlan {
                 let mut p = if need_eye_coords {
                     l.position
                 } else {
-                    crate::context::lighting_state::transform_point(&inv, l.position)
+                    crate::pipe::transform_point(&inv, l.position)
                 };
                 let positional = l.position[3] != 0.0;
                 let mut half = [0.0; 3];

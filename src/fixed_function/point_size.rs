@@ -14,7 +14,7 @@
 //! reads GL_POINT_FADE_THRESHOLD_SIZE, so thin points do not fade.
 
 use super::gallivm_math::rsq;
-use crate::context::raster_state::{PointState, MAX_POINT_SIZE};
+use crate::pipe::{PointState, MAX_POINT_SIZE};
 
 /// llvmpipe's smallest point size (PIPE_CAPF_MIN_POINT_SIZE and its AA twin).
 const MIN_IMPL_POINT_SIZE: f32 = 1.0;

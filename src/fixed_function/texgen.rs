@@ -20,7 +20,7 @@ use super::gallivm_math::rsq;
 use super::lighting::{dp3, inverse_transpose_rows};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
-use crate::context::texgen_state::{TexGenMode, TexGenUnit};
+use crate::pipe::{TexGenMode, TexGenUnit};
 
 /// `DP4` as llvmpipe lowers it: highest component first.
 #[inline(always)]
@@ -161,7 +161,7 @@ pub fn generate(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::texgen_state::TexGenUnit;
+    use crate::pipe::TexGenUnit;
 
     #[test]
     fn object_linear_and_passthrough() {

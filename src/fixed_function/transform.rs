@@ -9,14 +9,14 @@ use super::matrix::{Mat4, IDENTITY};
 use super::mesa_matrix::MatFlags;
 use super::point_size::PointAtten;
 use super::texgen::{generate, NormalXform, TexGenPlan};
-use crate::context::lighting_state::FogState;
-use crate::context::state::MAX_TEXTURE_UNITS;
-use crate::context::texgen_state::TexGenState;
 use crate::geometry::clip::UserPlanes;
 use crate::geometry::fetch::VertexIn;
 use crate::geometry::{
     clip_mask, user_clip_mask, ClipMask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX,
 };
+use crate::pipe::FogState;
+use crate::pipe::TexGenState;
+use crate::pipe::MAX_TEXTURE_UNITS;
 
 /// Per-draw constants of the vertex stage.
 #[derive(Clone, Debug)]

@@ -5,7 +5,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::BlendPlan;
-use crate::context::fragment_state::{BlendEquation, BlendFactor};
+use crate::pipe::{BlendEquation, BlendFactor};
 
 /// llvmpipe's unorm8 multiply (exact for 0 and 255).
 #[inline(always)]

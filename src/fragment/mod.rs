@@ -14,9 +14,10 @@ pub mod simd;
 pub mod simd_tex;
 pub mod span;
 
-use crate::context::fragment_state::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};
-use crate::context::state::{Cap, CompareFunc, ShadeModel, State};
+use crate::context::state::{Cap, State};
 use crate::framebuffer::{float_to_ubyte, DepthFormat};
+use crate::pipe::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};
+use crate::pipe::{CompareFunc, ShadeModel};
 
 /// What the fragment stage does for one draw, derived once from the state.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -12,10 +12,10 @@
 #![cfg(target_arch = "x86_64")]
 
 use super::{BlendPlan, DepthPlan, FragPlan};
-use crate::context::fragment_state::{BlendEquation, BlendFactor};
-use crate::context::state::CompareFunc;
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::pipe::CompareFunc;
+use crate::pipe::{BlendEquation, BlendFactor};
 use crate::stats::Stats;
 use std::arch::x86_64::*;
 

@@ -5,10 +5,10 @@
 
 use super::blend::Lanes;
 use super::FragPlan;
-use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::geometry::{VARY_FOG, VARY_SPEC};
+use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 

@@ -2,7 +2,7 @@
 //! order (llvmpipe-rules §5). The order matters twice: setup uses the first vertex as the
 //! interpolation origin, and a quad's diagonal depends on it.
 
-use crate::context::state::Primitive;
+use crate::pipe::Primitive;
 
 /// How the reference routes a draw, which decides the GL_QUADS / GL_QUAD_STRIP split.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

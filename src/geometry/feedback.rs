@@ -11,8 +11,8 @@ use super::unfilled::{
     decompose, determinant, draw_offset, fill_mode, scaled_units, EDGE_0, EDGE_1, EDGE_2,
 };
 use super::{ClipVertex, Viewport};
-use crate::context::raster_state::{FillMode, PolygonState};
-use crate::context::state::Primitive;
+use crate::pipe::Primitive;
+use crate::pipe::{FillMode, PolygonState};
 
 /// Where the primitives that survive the stages go.
 pub trait PrimSink {

@@ -5,8 +5,9 @@
 //! Reads from buffer objects are bounds-checked: an element past the end of its buffer
 //! reads as (0, 0, 0, 1) rather than outside the store.
 
-use crate::context::arrays::{ArrayPointer, ArrayState, DataType};
-use crate::context::state::{CurrentAttribs, MAX_TEXTURE_UNITS};
+use crate::context::arrays::ArrayState;
+use crate::pipe::{ArrayPointer, DataType};
+use crate::pipe::{CurrentAttribs, MAX_TEXTURE_UNITS};
 
 /// One vertex as the vertex stage receives it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -606,7 +607,7 @@ mod tests {
                 } else {
                     bytes.as_ptr() as usize
                 };
-            let cur = crate::context::state::CurrentAttribs {
+            let cur = crate::pipe::CurrentAttribs {
                 normal: [0.5, -0.25, 2.0],
                 edge_flag: next().is_multiple_of(2),
                 ..Default::default()
@@ -675,7 +676,7 @@ mod tests {
                     bytes.as_ptr() as usize
                 };
             let (base, count) = (next() % 24, 1 + next() as usize % 40);
-            let cur = crate::context::state::CurrentAttribs::default();
+            let cur = crate::pipe::CurrentAttribs::default();
             let fetcher = VertexFetcher::new(&arrays, &cur);
             let a = &arrays.vertex;
             let floats = a.ty == DataType::Float && a.size >= 2;

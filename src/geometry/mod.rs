@@ -16,7 +16,7 @@ pub mod unfilled;
 /// (4..8), the fog coordinate (8), the texture coordinates (s, t, r, q) of each enabled
 /// unit from [`VARY_TEX`], compacted, and with two-sided lighting the back colours (8
 /// floats) after the last texture unit.
-pub const MAX_VARY: usize = VARY_TEX + 4 * crate::context::state::MAX_TEXTURE_UNITS + 8;
+pub const MAX_VARY: usize = VARY_TEX + 4 * crate::pipe::MAX_TEXTURE_UNITS + 8;
 
 /// Where the secondary (specular) colour starts among the varyings.
 pub const VARY_SPEC: usize = 4;

@@ -29,7 +29,7 @@ pub trait VertexSource: Sync {
     fn vertex(&self, i: usize) -> VertexIn;
     /// A slot for [`Self::vertex_into`], made once per draw.
     fn new_slot(&self) -> VertexSlot {
-        let cur = crate::context::state::CurrentAttribs::default();
+        let cur = crate::pipe::CurrentAttribs::default();
         VertexSlot {
             v: VertexIn::with_current([0.0, 0.0, 0.0, 1.0], &cur),
             tag: usize::MAX,

@@ -11,8 +11,8 @@
 //! flag are set), so a polygon's outline starts at its first vertex.
 
 use super::ClipVertex;
-use crate::context::raster_state::FillMode;
-use crate::context::state::Primitive;
+use crate::pipe::FillMode;
+use crate::pipe::Primitive;
 use crate::texture::shadow::FLOAT_BITS;
 
 /// Edge v0→v1.

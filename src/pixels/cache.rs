@@ -17,8 +17,9 @@
 //! - Bitmaps larger than the window are drawn at once, without drawing the cache first.
 
 use super::draw::draw_mask;
-use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
+use crate::context::state::Cap;
 use crate::context::Context;
+use crate::pipe::MAX_TEXTURE_UNITS;
 
 /// Cache width.
 pub const CACHE_W: usize = 512;

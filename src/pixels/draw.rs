@@ -20,12 +20,13 @@
 
 use super::image::{Image, Pixels};
 use super::rect::{rasterize, Dest, Fragments, Quad};
-use crate::context::state::{Cap, CompareFunc, MAX_TEXTURE_UNITS};
+use crate::context::state::Cap;
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
 use crate::fragment::span::unorm8;
 use crate::fragment::FragPlan;
 use crate::geometry::cpu_has_fma;
+use crate::pipe::{CompareFunc, MAX_TEXTURE_UNITS};
 use crate::texture::UnitPlan;
 
 /// The fixed-function colour computation of pixel-rectangle fragments.
@@ -372,8 +373,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         && !t.map_color
         && !st.caps.get(Cap::Blend)
         && !st.caps.get(Cap::AlphaTest)
-        && (!st.caps.get(Cap::ColorLogicOp)
-            || fr.logic_op == crate::context::fragment_state::LogicOp::Copy)
+        && (!st.caps.get(Cap::ColorLogicOp) || fr.logic_op == crate::pipe::LogicOp::Copy)
         && (!st.caps.get(Cap::DepthTest)
             || (st.depth_func == CompareFunc::Always && !st.depth_mask))
         && !st.caps.get(Cap::Fog)
@@ -384,7 +384,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
                 fr.stencil_front.zpass,
             ]
             .iter()
-            .all(|&o| o == crate::context::fragment_state::StencilOp::Keep));
+            .all(|&o| o == crate::pipe::StencilOp::Keep));
     let overlap = {
         let (ax0, ay0, ax1, ay1) = (
             sx as i64,

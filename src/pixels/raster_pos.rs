@@ -14,12 +14,13 @@
 //! generated coordinates from [`crate::fixed_function::texgen`] rather than the C
 //! `compute_texgen`; both may differ from Mesa in the last bits.
 
-use crate::context::lighting_state::transform_point;
-use crate::context::state::{Cap, MAX_TEXTURE_UNITS};
+use crate::context::state::Cap;
 use crate::context::texgen_state::plane_times_inverse;
 use crate::context::Context;
 use crate::fixed_function::lighting::{eye_normal, light_vertex, LightPlan};
 use crate::fixed_function::texgen::{generate, NormalXform, TexGenPlan};
+use crate::pipe::transform_point;
+use crate::pipe::MAX_TEXTURE_UNITS;
 
 /// glRasterPos4f with object coordinates `v`.
 pub fn raster_pos(ctx: &mut Context, v: [f32; 4]) {

@@ -2,7 +2,6 @@
 //! span from the integer edge functions (no per-pixel edge test), and hands spans to the
 //! fragment stage's span shader chosen once per triangle.
 
-use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
 use crate::fragment::span::{
     shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Madd, TexLanes, LANES,
@@ -11,6 +10,7 @@ use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{SetupTriangle, NARROW};
 use crate::geometry::VARY_TEX;
+use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
@@ -441,11 +441,12 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests {
     use super::*;
-    use crate::context::fragment_state::{BlendEquation, BlendFactor};
-    use crate::context::state::{Cap, CompareFunc, ShadeModel, State};
+    use crate::context::state::{Cap, State};
     use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
     use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult};
     use crate::geometry::ClipVertex;
+    use crate::pipe::{BlendEquation, BlendFactor};
+    use crate::pipe::{CompareFunc, ShadeModel};
     use std::cell::Cell;
 
     thread_local! {

@@ -12,14 +12,14 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::variants::{with_flags, Walks};
-use crate::context::raster_state::PolygonStipple;
-use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::cpu::Isa;
 use crate::fragment::span::{shade_chunk, tex_coords, ChunkColors, Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Edge, SetupTriangle};
 use crate::geometry::VARY_TEX;
+use crate::pipe::PolygonStipple;
+use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 

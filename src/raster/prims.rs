@@ -4,7 +4,6 @@
 use super::batch::Rasterizer;
 use super::lines::{raster_line, raster_point, screen_interp, LineStipple};
 use super::stipple::stippled_triangle;
-use crate::context::raster_state::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -15,6 +14,7 @@ use crate::geometry::unfilled::{
     EDGE_0, EDGE_1, EDGE_2,
 };
 use crate::geometry::{ClipVertex, Viewport};
+use crate::pipe::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::stats::Stats;
 use crate::texture::shadow::FLOAT_BITS;
 use crate::texture::UnitPlan;
@@ -371,7 +371,7 @@ impl PolyPipeline<'_> {
     #[allow(clippy::too_many_arguments)]
     pub fn draw<'v>(
         &self,
-        mode: crate::context::state::Primitive,
+        mode: crate::pipe::Primitive,
         n: usize,
         at: impl Fn(usize) -> &'v ClipVertex,
         edge_flag: impl Fn(usize) -> bool,

@@ -4,10 +4,10 @@
 //! GL window (0, 0) with row 0 at the bottom.
 
 use super::lines::shade_span_dispatch;
-use crate::context::raster_state::PolygonStipple;
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
+use crate::pipe::PolygonStipple;
 use crate::stats::Stats;
 
 /// Rasterizes `t` inside `region`, shading only the pixels the stipple lets through

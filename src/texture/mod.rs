@@ -39,8 +39,8 @@ pub mod upload;
 pub mod volume;
 pub mod wrap;
 
-use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::context::{GlError, GlResult};
+use crate::pipe::MAX_TEXTURE_UNITS;
 use env::{Combine, TexEnv};
 use lod::LodParams;
 use std::collections::HashMap;
