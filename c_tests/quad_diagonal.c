@@ -1,4 +1,4 @@
-/* quad_diagonal: which diagonal splits a GL_QUADS quad (llvmpipe-rules §5).
+/* quad_diagonal: which diagonal splits a GL_QUADS quad (docs/llvmpipe-rules.md §5).
  * v0 and v2 are bright, v1 and v3 dark, so a v0-v2 split shows a bright
  * ridge and a v1-v3 split a dark valley.  Cells:
  *   0 smooth quad alone in its glBegin                (v0-v2)

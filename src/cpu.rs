@@ -1,5 +1,7 @@
 //! Which instruction set the hot loops run, chosen once at run time: the one place that
-//! asks the CPU what it has, and the one switch, `SOFTGL_ISA`, that caps it.
+//! asks the CPU what it has, and the one switch, `SOFTGL_ISA`, that caps it. It also says
+//! how many threads rasterize (`SOFTGL_THREADS`) and how the test harnesses pin llvmpipe
+//! to the same arithmetic ([`reference_cpu_caps`]).
 //!
 //! ## Levels
 //! | `SOFTGL_ISA` | code that runs | multiply-adds | needs |

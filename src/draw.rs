@@ -2,7 +2,7 @@
 //!
 //! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
 //! the clip volume the whole draw takes the clipping path, which also changes the
-//! GL_QUADS/GL_QUAD_STRIP triangle split (llvmpipe-rules §5).
+//! GL_QUADS/GL_QUAD_STRIP triangle split (docs/llvmpipe-rules.md §5).
 
 use crate::context::feedback::{FeedbackSink, RenderMode};
 use crate::context::state::Cap;

@@ -8,7 +8,7 @@
 //! geometry into a vertex node. Replaying a node goes through the same immediate-mode code
 //! as glBegin/glEnd ([`Context::vertex_op`]), so attributes the list does not set come from
 //! the current values at execution time; but its primitives are drawn as *indexed* draws,
-//! as Mesa draws vertex nodes, which decides llvmpipe's GL_QUADS split (llvmpipe-rules §5).
+//! as Mesa draws vertex nodes, which decides the GL_QUADS split (docs/llvmpipe-rules.md §5).
 //! Like Mesa, a node whose vertices would reference an attribute that first appears after
 //! them ("dangling" attribute) is replayed through the plain immediate path ("loopback").
 //!

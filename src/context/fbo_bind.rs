@@ -6,7 +6,9 @@
 //! not flipped, so window coordinates round as they do there and loading or writing back is
 //! a plain row copy (the window's buffer is y-down and flipped). Its size is the
 //! smallest of the attached images (GL 3.0 lets them differ); writing back touches only that
-//! region of each image.
+//! region of each image, and happens only when something was drawn. A single-sample
+//! object keeps its written-back working copy between binds: reused as it is when no
+//! attached image changed since, reloaded in place when the layout still fits.
 
 use super::fbo::{Attachment, FboState, ImageKind, Status, SAMPLES};
 use super::{Context, GlError, GlResult};

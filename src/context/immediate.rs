@@ -1,4 +1,7 @@
-//! glBegin/glEnd: the vertices of the primitive being specified.
+//! glBegin/glEnd: the vertices of the primitive being specified, stored compactly
+//! ([`ImmVerts`]), a finished batch kept pending so that the next glBegin of the same mode
+//! can extend it (as Mesa's vbo module merges draws), and a long GL_TRIANGLES batch drawn
+//! in chunks while it is specified ([`Context::stream_immediate`]).
 
 use super::error::{GlError, GlResult};
 use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};

@@ -1,7 +1,9 @@
-//! State that an RGBA OSMesa context keeps without drawing anything with it: the
-//! colour-index values (glIndexMask, glClearIndex; the current index is a current
-//! attribute), glSampleCoverage (no multisample buffer exists) and the draw and read
-//! buffer selection of the single-buffered OSMesa framebuffer.
+//! Small pieces of state outside the other groups: the colour-index values an RGBA
+//! context keeps without drawing with them (glIndexMask, glClearIndex; the current index
+//! is a current attribute), glSampleCoverage's value and invert flag (used when drawing
+//! into a 4x multisample framebuffer object with GL_SAMPLE_COVERAGE on), and the draw and
+//! read buffer selection of the single-buffered OSMesa window (a framebuffer object keeps
+//! its own, [`super::fbo`]).
 
 use super::error::{GlError, GlResult};
 use crate::ffi::enums::*;

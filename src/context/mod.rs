@@ -1,5 +1,9 @@
 //! The GL state machine: one [`Context`] per OSMesa context, holding plain state data,
-//! matrix stacks, named objects, the vertex-input state and the framebuffer.
+//! matrix stacks, named objects, the vertex-input state and the framebuffer. Its modules
+//! own the state of each area (lighting, texgen, rasterization, fragment operations, pixel
+//! transfer …), immediate mode and display lists, the attribute stacks, framebuffer
+//! objects, occlusion queries, feedback and selection, evaluators, the accumulation buffer,
+//! buffer-object storage and the objects shared between contexts.
 //!
 //! Every method validates its arguments first and returns a [`GlError`] without touching
 //! state when they are wrong; the C boundary records the error for glGetError.

@@ -2,11 +2,12 @@
 //! (glPixelMap, in no attribute group), with Mesa's initial values and rules
 //! (`main/pixel.c`, `main/pixeltransfer.c`).
 //!
-//! Numbers: colour maps store values clamped to [0,1]; index maps store the values as
+//! Numbers: colour maps store values clamped to [0, 1]; index maps store the values as
 //! given; a lookup of colour `c` in a map of `n` entries reads entry
 //! `round_half_even(clamp(c, 0, 1) · (n − 1))` on the CPU paths (Mesa's `_mesa_map_rgba`:
-//! glReadPixels), while glDrawPixels/glCopyPixels look the maps up in a texture
-//! ([`PixelMaps::map_rgba_texture`]).
+//! glReadPixels), while glDrawPixels/glCopyPixels look the red and green maps up in a
+//! texture ([`PixelMaps::map_rg_texture`]; Mesa 22.3's blue and alpha lookup reads the
+//! image instead, see `pixels::draw`).
 
 use super::error::{GlError, GlResult};
 use super::get::{Kind, Value};

@@ -1,6 +1,8 @@
-//! GL 1.0–1.5 entry points an RGBA OSMesa context accepts without drawing anything of its
-//! own: colour-index state (glIndex*, glIndexMask, glClearIndex), glSampleCoverage, glDrawBuffer/glReadBuffer, and the ARB_imaging subset,
-//! which Mesa does not implement (each call is GL_INVALID_OPERATION there, and here).
+//! GL 1.0–1.5 entry points of the little-used state: colour-index state (glIndex*,
+//! glIndexMask, glClearIndex), which an RGBA context keeps without drawing with it;
+//! glSampleCoverage (used by 4x multisample framebuffer objects); glDrawBuffer/glReadBuffer
+//! (of the window, or of the bound framebuffer object); and the ARB_imaging subset, which
+//! Mesa does not implement (each call is GL_INVALID_OPERATION there, and here).
 #![allow(non_snake_case)]
 
 use super::types::*;
@@ -131,7 +133,7 @@ pub extern "C" fn glClearIndex(c: GLfloat) {
     })
 }
 
-/// glSampleCoverage: stored (the OSMesa framebuffer has no multisample buffer).
+/// glSampleCoverage: stored, and applied when drawing into a 4x multisample object.
 #[no_mangle]
 pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
     with_ctx_list(move |c| {

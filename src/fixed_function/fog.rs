@@ -1,4 +1,4 @@
-//! Fog as llvmpipe computes it (llvmpipe-rules §11).
+//! Fog as llvmpipe computes it (docs/llvmpipe-rules.md §11).
 //!
 //! Vertex side (`ffvertex_prog.c`, `build_fog`): the fog coordinate is `|z_eye|`
 //! (GL_FRAGMENT_DEPTH; Mesa's default distance mode EYE_PLANE_ABSOLUTE) or `|fog coord|`

@@ -1,7 +1,7 @@
 //! Per-vertex fixed-function lighting, computed the way llvmpipe runs Mesa's generated
 //! vertex program (`main/ffvertex_prog.c`, `build_lighting`), in f32.
 //!
-//! Numbers (llvmpipe-rules §1, §16):
+//! Numbers (docs/llvmpipe-rules.md §1, §16):
 //! - Every MAD is a multiply then an add, never fused; DP3 is `((a2·b2 + a1·b1) + a0·b0)`.
 //! - RSQ is `1/sqrt(|x|)` (two correctly rounded operations); RCP is a division.
 //! - LIT and the spot exponent use gallivm's polynomial `pow` ([`super::gallivm_math`]),
@@ -23,7 +23,7 @@
 //! `sqrt(q)` and `sqrt(q)·sqrt(q)` into `|q|`), so its first component is not exactly 1.
 //! Measured bit-exact in f32 against OSMesa (tests/lighting_osmesa.rs, float buffer).
 //!
-//! The outputs are not clamped; the vertex stage clamps colours to [0,1] as llvmpipe's
+//! The outputs are not clamped; the vertex stage clamps colours to [0, 1] as llvmpipe's
 //! draw module does.
 
 use super::gallivm_math::{pow, rsq};

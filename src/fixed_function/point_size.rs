@@ -9,7 +9,7 @@
 //!   max(GL_POINT_SIZE_MIN, 1) and `hi` = min(GL_POINT_SIZE_MAX, 255) (Mesa's
 //!   STATE_POINT_SIZE_CLAMPED: llvmpipe's implementation limits are 1 and 255).
 //!
-//! The per-vertex size then reaches llvmpipe's legacy point rasterizer (llvmpipe-rules
+//! The per-vertex size then reaches llvmpipe's legacy point rasterizer (docs/llvmpipe-rules.md
 //! §15), which caps it at 255 and rounds it to a whole width. Mesa's gallium path never
 //! reads GL_POINT_FADE_THRESHOLD_SIZE, so thin points do not fade.
 

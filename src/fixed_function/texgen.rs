@@ -2,7 +2,7 @@
 //! program (`main/ffvertex_prog.c`, `build_texture_transform`, `build_sphere_texgen`,
 //! `build_reflect_texgen`), in f32.
 //!
-//! Numbers (llvmpipe-rules §1, §3): DP4/DP3 are lowered to multiply/add chains summed from
+//! Numbers (docs/llvmpipe-rules.md §1, §3): DP4/DP3 become multiply/add chains summed from
 //! the highest component down; MAD is a multiply then an add; RSQ is `1/sqrt(|x|)`.
 //! - object linear: `dp4(object position, object plane)`;
 //! - eye linear: `dp4(eye position, eye plane)`, the eye position being the modelview

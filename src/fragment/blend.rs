@@ -1,5 +1,5 @@
 //! 8-bit fixed-point blending exactly as llvmpipe does it for unorm8 colour buffers
-//! (llvmpipe-rules §13): factors are 8-bit, `mul(a, b) = (t + (t >> 8) + 128) >> 8` with
+//! (docs/llvmpipe-rules.md §13): factors are 8-bit, `mul(a, b) = (t + (t >> 8) + 128) >> 8` with
 //! `t = a·b`, ADD saturates at 255, SUBTRACT clamps at 0, MIN/MAX ignore the factors.
 // Lane loops index several arrays in step; iterators would hide that.
 #![allow(clippy::needless_range_loop)]

@@ -2,10 +2,10 @@
 //! order (alpha test, stencil, depth, blend or logic op, colour mask), specialised per draw
 //! by a small [`FragPlan`] derived from the GL state once.
 //!
-//! Numbers (llvmpipe-rules §7, §8, §12, §13): every attribute is a plane evaluated per
+//! Numbers (docs/llvmpipe-rules.md §7, §8, §12, §13): every attribute is a plane evaluated per
 //! pixel as `fmuladd(dady, py, fmuladd(dadx, px, a0))`; perspective attributes are
-//! multiplied by `1 / w_plane`; z is clamped to [0,1] and quantised with round-half-even;
-//! colours are clamped to [0,1] and converted with `round_half_even(c * 255)`; the alpha
+//! multiplied by `1 / w_plane`; z is clamped to [0, 1] and quantised with round-half-even;
+//! colours are clamped to [0, 1] and converted with `round_half_even(c * 255)`; the alpha
 //! test compares 8-bit integers; blending is 8-bit fixed point with
 //! `mul(a, b) = (t + (t >> 8) + 128) >> 8`, `t = a·b`.
 

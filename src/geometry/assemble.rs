@@ -1,5 +1,5 @@
 //! Primitive assembly: which vertex triples make the triangles of a draw, in llvmpipe's
-//! order (llvmpipe-rules §5). The order matters twice: setup uses the first vertex as the
+//! order (docs/llvmpipe-rules.md §5). The order matters twice: setup uses the first vertex as the
 //! interpolation origin, and a quad's diagonal depends on it.
 
 use crate::pipe::Primitive;

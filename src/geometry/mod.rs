@@ -1,4 +1,8 @@
-//! Geometry: vertex fetch, primitive assembly, homogeneous clipping and triangle setup.
+//! Geometry: vertex fetch ([`fetch`], and where a draw's vertices come from with the
+//! post-transform cache, [`source`]), primitive assembly ([`assemble`]), homogeneous
+//! clipping ([`clip`]), the draw module's cull, offset and unfilled stages ([`unfilled`]),
+//! triangle setup ([`setup`], eight at a time in [`setup8`]), and the primitive stages of
+//! feedback and selection ([`feedback`]).
 //!
 //! Vertices travel as [`ClipVertex`]: clip-space position, window position (x, y in
 //! y-down raster space, z, 1/w) and up to [`MAX_VARY`] floats of varyings (colour first).

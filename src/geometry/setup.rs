@@ -1,7 +1,7 @@
 //! Triangle setup: snapping to 1/256 pixel, orientation and culling, exact integer edge
 //! functions with llvmpipe's fill rule, and float plane equations for the attributes.
 //!
-//! Numbers (llvmpipe-rules §6–§7): a window position is snapped as
+//! Numbers (docs/llvmpipe-rules.md §6–§7): a window position is snapped as
 //! `round_half_even(256 * f32(x - 0.5))`, so integer coordinate 256·p is the centre of
 //! pixel p. Edge functions are 64-bit integers; a pixel exactly on an edge belongs to the
 //! triangle only for left edges and bottom edges (in GL's y-up sense). Plane equations are

@@ -1,4 +1,4 @@
-//! Lines and points exactly as llvmpipe rasterizes them (llvmpipe-rules §15).
+//! Lines and points exactly as llvmpipe rasterizes them (docs/llvmpipe-rules.md §15).
 //!
 //! A line segment is a parallelogram with four exact integer edge functions (the triangle
 //! fill rule): x-major segments are `util_iround(width)` pixels tall, y-major ones as wide,

@@ -1,5 +1,5 @@
 //! GL_TEXTURE_CUBE_MAP: completeness, face selection and sampling as llvmpipe does them
-//! (`lp_build_cube_lookup` in `lp_bld_sample.c`, llvmpipe-rules §9.1).
+//! (`lp_build_cube_lookup` in `lp_bld_sample.c`, docs/llvmpipe-rules.md §9.1).
 //!
 //! - Faces are numbered as gallium does: +X, −X, +Y, −Y, +Z, −Z (GL's order).
 //! - The major axis is z when `|r| ≥ max(|s|, |t|)`, else x when `|s| > |t|`, else y; the

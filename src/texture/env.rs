@@ -1,6 +1,6 @@
 //! The fixed-function texture environment (GL 1.5 §3.8.13, ARB_texture_env_combine,
 //! _crossbar, _dot3) computed as Mesa's generated fragment shader does
-//! (llvmpipe-rules §10.2).
+//! (docs/llvmpipe-rules.md §10.2).
 //!
 //! [`TexEnv`] is the GL state of one unit as Rust enums. [`Combine::derive`] turns it into
 //! Mesa's combiner form once per draw: legacy modes become combiner states exactly as

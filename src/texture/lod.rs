@@ -1,5 +1,5 @@
 //! Level of detail, one per 2x2 quad, as llvmpipe computes it (`lp_build_lod_selector`,
-//! `lp_build_rho`, `lp_build_fast_log2`; llvmpipe-rules §9.3).
+//! `lp_build_rho`, `lp_build_fast_log2`; docs/llvmpipe-rules.md §9.3).
 //!
 //! - Derivatives: `ddx = TR − TL`, `ddy = BL − TL` (y-down quad).
 //! - 2D: `rho² = max((W·dsdx)² + (H·dtdx)², (W·dsdy)² + (H·dtdy)²)` (f32, no fusing).

@@ -13,7 +13,7 @@
 //!
 //! # Interface for the rasterizer
 //! - [`TextureState::unit_plan`]`(unit) -> Option<UnitPlan>`: `None` when the unit is
-//!   disabled or its texture incomplete (Mesa then disables the unit, llvmpipe-rules §9.2).
+//!   disabled or its texture incomplete (Mesa disables such a unit, docs/llvmpipe-rules.md §9.2).
 //!   Build it once per draw; it borrows the levels and holds the sampler state as enums,
 //!   the precomputed LOD parameters, whether the LOD is needed at all
 //!   ([`UnitPlan::needs_lod`]) and the texture environment in combiner form.

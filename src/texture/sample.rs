@@ -1,4 +1,4 @@
-//! Texel filtering with llvmpipe's arithmetic (llvmpipe-rules §9.2).
+//! Texel filtering with llvmpipe's arithmetic (docs/llvmpipe-rules.md §9.2).
 //!
 //! - **AoS path** (8-bit formats with REPEAT/CLAMP_TO_EDGE, no anisotropy): texel indices
 //!   and 8-bit weights from [`wrap::aos_linear`]; each lerp is

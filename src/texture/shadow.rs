@@ -200,7 +200,7 @@ pub fn store(d: f32, bits: u8) -> u32 {
 
 /// A depth-buffer value of `bits` bits as a blit copies it into a texture of `to` bits:
 /// the sampler's float ([`sample_value`]), then the depth write's
-/// `round_half_even(f32(d·max))` (llvmpipe-rules §8).
+/// `round_half_even(f32(d·max))` (docs/llvmpipe-rules.md §8).
 pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
     let d = sample_value(z, bits).clamp(0.0, 1.0);
     if to == FLOAT_BITS {

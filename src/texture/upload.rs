@@ -2,7 +2,7 @@
 //!
 //! Every component becomes an 8-bit unorm value the way Mesa's `_mesa_format_convert`
 //! (`main/format_utils.h`) does it; verified against Mesa 22.3 with glGetTexImage:
-//! - GL_FLOAT: clamp to [0,1], `round_half_even(v·255)` (`_mesa_float_to_unorm`);
+//! - GL_FLOAT: clamp to [0, 1], `round_half_even(v·255)` (`_mesa_float_to_unorm`);
 //! - GL_UNSIGNED_SHORT/INT: `(v·255 + 2^(n−1) − 1) / (2^n − 1)` (`_mesa_unorm_to_unorm`);
 //! - GL_BYTE/SHORT/INT: negative → 0, else the unsigned rule with n−1 bits
 //!   (`_mesa_snorm_to_unorm`, so a byte 1 becomes 2 by bit replication);

@@ -5,7 +5,7 @@
 //! after the other (slice z, row y, column x at `(z·height + y)·width + x`); the depth of
 //! each level is also kept in [`TextureObject::depths`] so proxies know it.
 //!
-//! # Sampling (llvmpipe-rules §9, `lp_bld_sample_aos.c` / `lp_bld_sample_soa.c`)
+//! # Sampling (docs/llvmpipe-rules.md §9, `lp_bld_sample_aos.c` / `lp_bld_sample_soa.c`)
 //! - LOD: `rho² = max((W·dsdx)² + (H·dtdx)² + (D·drdx)², same for y)`, summed in that order
 //!   (`lp_build_rho` with `no_rho_approx`), then the 2D rules ([`lod::from_rho`]).
 //! - AoS (8-bit, REPEAT / CLAMP_TO_EDGE on s, t and r): 8.8 weights on every axis; LINEAR

@@ -1,6 +1,6 @@
 //! Texture coordinate wrapping, per axis, exactly as llvmpipe's samplers compute it
 //! (`lp_bld_sample_aos.c` for the 8-bit AoS path, `lp_bld_sample_soa.c` for the float SoA
-//! path; llvmpipe-rules §9.2).
+//! path; docs/llvmpipe-rules.md §9.2).
 //!
 //! Every function takes the normalised coordinate `s` (already divided by q), the level size
 //! and whether the *resource's* level-0 size on this axis is a power of two (llvmpipe picks
