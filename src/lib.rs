@@ -1,21 +1,39 @@
 //! softgl: a software OpenGL 1.5 implementation with Mesa's OSMesa API.
 //!
-//! A GL call enters at the C boundary ([`ffi`]), which validates and converts raw GL values
-//! into Rust types and calls a safe method of the thread's current [`context::Context`]. The
-//! context is the GL state machine: plain state data, named objects (buffers) and the
-//! [`framebuffer`] the OSMesa user buffer is copied from on glFlush/glFinish.
+//! # The layers
 //!
-//! A draw call flows through the stages in lecture order: [`geometry::fetch`] reads vertices
-//! (immediate mode, client arrays, buffer objects), [`fixed_function`] transforms them into
-//! clip space, [`geometry::assemble`] builds triangles in llvmpipe's vertex order,
-//! [`geometry::clip`] clips them homogeneously, [`geometry::setup`] snaps them to 1/256 pixel
-//! and builds integer edge functions and float plane equations, [`raster`] walks the covered
-//! pixels and [`fragment`] runs the per-fragment operations chosen by a per-draw plan.
+//! A GL call travels down through five layers, and no module imports one above it
+//! (`tests/layering.rs` fails on an upward `use`):
 //!
-//! The arithmetic follows Mesa's llvmpipe (the reference the C tests compare against) so
-//! that images are bit-identical. The rules followed are written down in `docs/llvmpipe-rules.md`
-//! (cited in module docs as "llvmpipe-rules §n") and, for framebuffer objects, blits and
-//! multisampling, in `docs/fbo-rules.md`.
+//! 1. **The C boundary**, [`ffi`]: the `extern "C"` entry points with the Khronos names and
+//!    types. Each reads its pointers, converts the raw values through [`gl`], makes one call
+//!    on the thread's current [`context::Context`] and records the error for glGetError.
+//! 2. **The state machine**, [`context`]: GL's semantics. Every command is validated and
+//!    applied here (texture specification, framebuffer objects, display lists, queries,
+//!    pixel packing), with Mesa's error codes and error order. A command that fails changes
+//!    nothing.
+//! 3. **The plan**, [`plan`]: once per draw, the only translation from the state's values
+//!    to the pipeline's: which vertex stages run, how primitives are assembled, which
+//!    fragment operations and texture units are live. The plan is what the engine of a
+//!    later stage compiles.
+//! 4. **The pipeline**, in the order a vertex meets it: [`geometry`] fetches, assembles
+//!    and clips, [`fixed_function`] transforms, lights, fogs and generates texture
+//!    coordinates, [`raster`] walks the covered pixels (in bands, on a thread pool),
+//!    [`fragment`] runs the per-fragment operations, [`texture`] samples, [`pixels`] draws
+//!    pixel rectangles and bitmaps, and [`framebuffer`] holds the colour, depth and stencil
+//!    storage. The pipeline never sees a GL token or the GL state.
+//! 5. **The leaves**: [`pipe`] (the vocabulary the plan and the pipeline share: compare
+//!    functions, blend factors, primitives, limits, parameter blocks), [`gl`] (tokens, C
+//!    types, [`gl::error::GlError`]), [`cpu`] (instruction-set detection), [`stats`] and
+//!    [`memory`].
+//!
+//! # The reference
+//!
+//! The arithmetic follows Mesa's llvmpipe, which the C scenes in `c_tests/` compare against
+//! pixel by pixel, so that images are bit-identical. The rules followed are written down in
+//! `docs/llvmpipe-rules.md` (cited in module docs as "docs/llvmpipe-rules.md §n") and, for
+//! framebuffer objects, blits and multisampling, in `docs/fbo-rules.md`.
+
 
 pub mod context;
 pub mod cpu;
