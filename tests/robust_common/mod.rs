@@ -256,6 +256,11 @@ pub fn functions() -> Vec<Func> {
             let open = rest.find('(').unwrap();
             let name = rest[..open].trim().to_string();
             let close = rest.find(')').unwrap();
+            // The `$name` of a macro definition (src/ffi/families.rs) declares nothing.
+            if name.starts_with('$') {
+                rest = &rest[close..];
+                continue;
+            }
             let params: Vec<Kind> = rest[open + 1..close]
                 .split(',')
                 .filter(|p| p.contains(':'))
