@@ -1,5 +1,10 @@
 //! Generates the OSMesaGetProcAddress table: every `#[no_mangle] extern "C" fn` in
-//! `src/ffi/*.rs`, so the table can never miss an exported function.
+//! `src/ffi/*.rs`, so the table can never miss an exported function. Functions generated
+//! by the family macros of `src/ffi/families.rs` are read from their invocations
+//! (`tools/ffi_expand.rs`).
+
+#[path = "tools/ffi_expand.rs"]
+mod ffi_expand;
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -14,6 +19,7 @@ fn main() {
     }
     let dir = Path::new("src/ffi");
     println!("cargo:rerun-if-changed=src/ffi");
+    println!("cargo:rerun-if-changed=tools/ffi_expand.rs");
     let mut entries: Vec<(String, String)> = Vec::new();
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .expect("src/ffi")
@@ -31,7 +37,7 @@ fn main() {
             .unwrap_or_default()
             .to_string();
         println!("cargo:rerun-if-changed={}", path.display());
-        let text = std::fs::read_to_string(&path).expect("read ffi source");
+        let text = ffi_expand::expand(&std::fs::read_to_string(&path).expect("read ffi source"));
         let mut no_mangle = false;
         for line in text.lines() {
             let t = line.trim();
@@ -52,7 +58,10 @@ fn main() {
                         .chars()
                         .take_while(|c| c.is_alphanumeric() || *c == '_')
                         .collect();
-                    entries.push((name, module.clone()));
+                    // Empty for the `$name` of a macro definition (src/ffi/families.rs).
+                    if !name.is_empty() {
+                        entries.push((name, module.clone()));
+                    }
                 }
             }
         }

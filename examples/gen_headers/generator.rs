@@ -14,6 +14,10 @@
 //! restored after checking that the values agree).
 #![allow(dead_code)] // the example and the test each use a different part of this module
 
+/// Expands the family macros of `src/ffi` into the declarations they generate.
+#[path = "../../tools/ffi_expand.rs"]
+pub mod ffi_expand;
+
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -97,6 +101,7 @@ pub const SOURCES: &[(&str, Header)] = &[
 
 /// Files of `src/ffi` that declare nothing for C.
 pub const NOT_IN_HEADERS: &[&str] = &[
+    "families.rs",
     "mod.rs",
     "proc_table.rs",
     "textures_ci.rs",
@@ -373,11 +378,32 @@ fn run_cbindgen(path: &Path) -> Result<Fragment, String> {
     // cbindgen emits only types reachable from functions and constants; name the type
     // aliases and structs of the file so that e.g. types.rs yields its typedefs.
     let include = public_type_names(&source);
+    // cbindgen does not expand macros: it reads the functions of the family macros
+    // (src/ffi/families.rs) from a copy of the file with their invocations expanded.
+    let expanded = ffi_expand::expand(&source);
+    let copy = (expanded != source).then(|| {
+        // Tests may run the generator on several threads at once: one name per call.
+        static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let name = format!("softgl-ffi-{}-{n}-{}", std::process::id(), path.display());
+        std::env::temp_dir().join(name.replace('/', "_"))
+    });
+    let src = match &copy {
+        Some(copy) => {
+            std::fs::write(copy, &expanded).map_err(|e| format!("{}: {e}", copy.display()))?;
+            copy.as_path()
+        }
+        None => path,
+    };
     let bindings = cbindgen::Builder::new()
         .with_config(config(include))
-        .with_src(path)
+        .with_src(src)
         .generate()
-        .map_err(|e| format!("cbindgen failed on {}: {e}", path.display()))?;
+        .map_err(|e| format!("cbindgen failed on {}: {e}", path.display()));
+    if let Some(copy) = &copy {
+        let _ = std::fs::remove_file(copy);
+    }
+    let bindings = bindings?;
     let mut bytes = Vec::new();
     bindings.write(&mut bytes);
     let text = String::from_utf8(bytes).map_err(|e| e.to_string())?;

@@ -124,6 +124,85 @@ fn framebuffer_get(c: &Context, pname: u32) -> Option<Value> {
     })
 }
 
+/// The side (pack or unpack, front or back) whose list of names holds `pname`, and its
+/// position in that list.
+fn pick_side<T, const N: usize>(pname: u32, sides: [(&T, [u32; N]); 2]) -> Option<(&T, usize)> {
+    sides
+        .into_iter()
+        .find_map(|(side, names)| Some((side, names.iter().position(|&n| n == pname)?)))
+}
+
+/// The stencil state of the front and back faces (references clamped to `stencil_max`).
+fn stencil_get(c: &Context, pname: u32, stencil_max: i32) -> Option<Value> {
+    let front = [
+        GL_STENCIL_FUNC,
+        GL_STENCIL_REF,
+        GL_STENCIL_VALUE_MASK,
+        GL_STENCIL_WRITEMASK,
+        GL_STENCIL_FAIL,
+        GL_STENCIL_PASS_DEPTH_FAIL,
+        GL_STENCIL_PASS_DEPTH_PASS,
+    ];
+    let back = [
+        GL_STENCIL_BACK_FUNC,
+        GL_STENCIL_BACK_REF,
+        GL_STENCIL_BACK_VALUE_MASK,
+        GL_STENCIL_BACK_WRITEMASK,
+        GL_STENCIL_BACK_FAIL,
+        GL_STENCIL_BACK_PASS_DEPTH_FAIL,
+        GL_STENCIL_BACK_PASS_DEPTH_PASS,
+    ];
+    let f = &c.state.frag;
+    let (s, k) = pick_side(pname, [(&f.stencil_front, front), (&f.stencil_back, back)])?;
+    Some(match k {
+        0 => e(s.func.to_gl()),
+        1 => i(&[s.reference.clamp(0, stencil_max) as i64]),
+        2 => u(s.value_mask),
+        3 => u(s.writemask),
+        4 => e(s.fail.to_gl()),
+        5 => e(s.zfail.to_gl()),
+        _ => e(s.zpass.to_gl()),
+    })
+}
+
+/// The glPixelStore values: GL_PACK_* and GL_UNPACK_*.
+fn pixel_store_get(c: &Context, pname: u32) -> Option<Value> {
+    let pack = [
+        GL_PACK_SWAP_BYTES,
+        GL_PACK_LSB_FIRST,
+        GL_PACK_ROW_LENGTH,
+        GL_PACK_SKIP_ROWS,
+        GL_PACK_SKIP_PIXELS,
+        GL_PACK_ALIGNMENT,
+        GL_PACK_IMAGE_HEIGHT,
+        GL_PACK_SKIP_IMAGES,
+    ];
+    let unpack = [
+        GL_UNPACK_SWAP_BYTES,
+        GL_UNPACK_LSB_FIRST,
+        GL_UNPACK_ROW_LENGTH,
+        GL_UNPACK_SKIP_ROWS,
+        GL_UNPACK_SKIP_PIXELS,
+        GL_UNPACK_ALIGNMENT,
+        GL_UNPACK_IMAGE_HEIGHT,
+        GL_UNPACK_SKIP_IMAGES,
+    ];
+    let (ps, k) = pick_side(pname, [(&c.state.pack, pack), (&c.state.unpack, unpack)])?;
+    let ints = [
+        ps.row_length,
+        ps.skip_rows,
+        ps.skip_pixels,
+        ps.alignment,
+        ps.image_height,
+        ps.skip_images,
+    ];
+    Some(match k {
+        0 => b(ps.swap_bytes),
+        1 => b(ps.lsb_first),
+        _ => i(&[ints[k - 2] as i64]),
+    })
+}
+
 /// The value of `pname`, or GL_INVALID_ENUM.
 pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let st = &c.state;
@@ -137,6 +216,12 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         return Ok(v);
     }
     if let Some(v) = framebuffer_get(c, pname) {
+        return Ok(v);
+    }
+    if let Some(v) = pixel_store_get(c, pname) {
+        return Ok(v);
+    }
+    if let Some(v) = stencil_get(c, pname, stencil_max) {
         return Ok(v);
     }
     Ok(match pname {
@@ -201,20 +286,6 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_ALPHA_TEST_FUNC => e(st.frag.alpha_func.to_gl()),
         GL_ALPHA_TEST_REF => n(&[st.frag.alpha_ref.clamp(0.0, 1.0)]),
         GL_LOGIC_OP_MODE => e(st.frag.logic_op.to_gl()),
-        GL_STENCIL_FUNC => e(st.frag.stencil_front.func.to_gl()),
-        GL_STENCIL_REF => i(&[st.frag.stencil_front.reference.clamp(0, stencil_max) as i64]),
-        GL_STENCIL_VALUE_MASK => u(st.frag.stencil_front.value_mask),
-        GL_STENCIL_WRITEMASK => u(st.frag.stencil_front.writemask),
-        GL_STENCIL_FAIL => e(st.frag.stencil_front.fail.to_gl()),
-        GL_STENCIL_PASS_DEPTH_FAIL => e(st.frag.stencil_front.zfail.to_gl()),
-        GL_STENCIL_PASS_DEPTH_PASS => e(st.frag.stencil_front.zpass.to_gl()),
-        GL_STENCIL_BACK_FUNC => e(st.frag.stencil_back.func.to_gl()),
-        GL_STENCIL_BACK_REF => i(&[st.frag.stencil_back.reference.clamp(0, stencil_max) as i64]),
-        GL_STENCIL_BACK_VALUE_MASK => u(st.frag.stencil_back.value_mask),
-        GL_STENCIL_BACK_WRITEMASK => u(st.frag.stencil_back.writemask),
-        GL_STENCIL_BACK_FAIL => e(st.frag.stencil_back.fail.to_gl()),
-        GL_STENCIL_BACK_PASS_DEPTH_FAIL => e(st.frag.stencil_back.zfail.to_gl()),
-        GL_STENCIL_BACK_PASS_DEPTH_PASS => e(st.frag.stencil_back.zpass.to_gl()),
         GL_FRONT_FACE => e(if st.front_ccw { GL_CCW } else { GL_CW }),
         GL_CLIP_ORIGIN => e(if st.clip_control.upper_left {
             GL_UPPER_LEFT
@@ -284,22 +355,6 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_FOG_HINT => e(st.hints.fog),
         GL_GENERATE_MIPMAP_HINT => e(st.hints.generate_mipmap),
         GL_TEXTURE_COMPRESSION_HINT => e(st.hints.texture_compression),
-        GL_PACK_SWAP_BYTES => b(st.pack.swap_bytes),
-        GL_PACK_LSB_FIRST => b(st.pack.lsb_first),
-        GL_PACK_ROW_LENGTH => i(&[st.pack.row_length as i64]),
-        GL_PACK_SKIP_ROWS => i(&[st.pack.skip_rows as i64]),
-        GL_PACK_SKIP_PIXELS => i(&[st.pack.skip_pixels as i64]),
-        GL_PACK_ALIGNMENT => i(&[st.pack.alignment as i64]),
-        GL_PACK_IMAGE_HEIGHT => i(&[st.pack.image_height as i64]),
-        GL_PACK_SKIP_IMAGES => i(&[st.pack.skip_images as i64]),
-        GL_UNPACK_SWAP_BYTES => b(st.unpack.swap_bytes),
-        GL_UNPACK_LSB_FIRST => b(st.unpack.lsb_first),
-        GL_UNPACK_ROW_LENGTH => i(&[st.unpack.row_length as i64]),
-        GL_UNPACK_SKIP_ROWS => i(&[st.unpack.skip_rows as i64]),
-        GL_UNPACK_SKIP_PIXELS => i(&[st.unpack.skip_pixels as i64]),
-        GL_UNPACK_ALIGNMENT => i(&[st.unpack.alignment as i64]),
-        GL_UNPACK_IMAGE_HEIGHT => i(&[st.unpack.image_height as i64]),
-        GL_UNPACK_SKIP_IMAGES => i(&[st.unpack.skip_images as i64]),
         GL_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.active_texture as u32),
         GL_CLIENT_ACTIVE_TEXTURE => e(GL_TEXTURE0 + st.client_active_texture as u32),
         GL_VERTEX_ARRAY => b(a.vertex.enabled),

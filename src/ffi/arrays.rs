@@ -163,6 +163,11 @@ pub(crate) fn is_client_array(cap: GLenum) -> bool {
     client_array(cap).is_some()
 }
 
+/// Whether the client array `cap` names is enabled (None when `cap` names none).
+pub(crate) fn client_array_enabled(c: &mut Context, cap: GLenum) -> Option<bool> {
+    client_array(cap).map(|w| array_mut(c, w).enabled)
+}
+
 /// glEnableClientState/glDisableClientState on the context.
 pub(crate) fn set_client_array(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
     let w = client_array(cap).ok_or(GlError::InvalidEnum)?;

@@ -18,12 +18,10 @@ use libc::c_void;
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        if buffers.is_null() || n == 0 {
-            return Ok(());
-        }
-        for (i, name) in c.arrays.gen_buffers(n).into_iter().enumerate() {
+        if !buffers.is_null() && n != 0 {
+            let names = c.arrays.gen_buffers(n);
             // SAFETY: the caller promises room for n names.
-            unsafe { *buffers.add(i) = name };
+            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), buffers, names.len()) };
         }
         Ok(())
     })
@@ -37,13 +35,10 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        if buffers.is_null() {
-            return Ok(());
-        }
-        for i in 0..n {
+        if !buffers.is_null() {
             // SAFETY: the caller promises n readable names.
-            let name = unsafe { *buffers.add(i) };
-            c.arrays.delete_buffer(name);
+            let names = unsafe { std::slice::from_raw_parts(buffers, n) };
+            names.iter().for_each(|&name| c.arrays.delete_buffer(name));
         }
         Ok(())
     })
@@ -115,6 +110,31 @@ pub unsafe extern "C" fn glBufferData(
     })
 }
 
+/// glBufferSubData and glGetBufferSubData: `copy` gets the bytes they name in the buffer
+/// bound to `target`, after their checks (in Mesa's order), unless there is nothing to copy.
+fn copy_sub_range(
+    target: GLenum,
+    offset: GLintptr,
+    size: GLsizeiptr,
+    null: bool,
+    copy: impl FnOnce(&mut [u8]),
+) {
+    with_ctx(|c| {
+        let b = c.arrays.bound_mut(BufferTarget::from_gl(target)?)?;
+        if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
+        {
+            return Err(GlError::InvalidValue);
+        }
+        if b.mapped.is_some() {
+            return Err(GlError::InvalidOperation);
+        }
+        if size != 0 && !null {
+            copy(&mut b.data[offset as usize..offset as usize + size as usize]);
+        }
+        Ok(())
+    })
+}
+
 /// glBufferSubData.
 ///
 /// # Safety
@@ -126,23 +146,9 @@ pub unsafe extern "C" fn glBufferSubData(
     size: GLsizeiptr,
     data: *const GLvoid,
 ) {
-    with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        let b = c.arrays.bound_mut(t)?;
-        if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
-        {
-            return Err(GlError::InvalidValue);
-        }
-        if b.mapped.is_some() {
-            return Err(GlError::InvalidOperation);
-        }
-        if size == 0 || data.is_null() {
-            return Ok(());
-        }
+    copy_sub_range(target, offset, size, data.is_null(), |dst| {
         // SAFETY: the caller promises `size` readable bytes; the range was checked.
-        let src = unsafe { std::slice::from_raw_parts(data as *const u8, size as usize) };
-        b.data[offset as usize..offset as usize + size as usize].copy_from_slice(src);
-        Ok(())
+        dst.copy_from_slice(unsafe { std::slice::from_raw_parts(data as *const u8, dst.len()) })
     })
 }
 
@@ -157,28 +163,9 @@ pub unsafe extern "C" fn glGetBufferSubData(
     size: GLsizeiptr,
     data: *mut GLvoid,
 ) {
-    with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        let b = c.arrays.bound_mut(t)?;
-        if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
-        {
-            return Err(GlError::InvalidValue);
-        }
-        if b.mapped.is_some() {
-            return Err(GlError::InvalidOperation);
-        }
-        if size == 0 || data.is_null() {
-            return Ok(());
-        }
+    copy_sub_range(target, offset, size, data.is_null(), |src| {
         // SAFETY: the caller promises `size` writable bytes; the range was checked.
-        unsafe {
-            std::ptr::copy_nonoverlapping(
-                b.data.as_ptr().add(offset as usize),
-                data as *mut u8,
-                size as usize,
-            )
-        };
-        Ok(())
+        unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), data as *mut u8, src.len()) }
     })
 }
 

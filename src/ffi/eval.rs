@@ -23,19 +23,29 @@ fn map_target(target: GLenum) -> Option<(MapKind, bool)> {
     Some((MapKind::ALL[(target - base) as usize], two))
 }
 
-/// Reads a control net (`uorder` x `vorder` points of `dim` components, strides in
-/// elements) into u-major f32 points, after Mesa's checks.
-#[allow(clippy::too_many_arguments)]
-fn gather<T: Copy + Into<f64>>(
+/// The control net of a glMap1/glMap2 call: the u and v parameter ranges (no v for
+/// glMap1), the strides and orders of u and v (in elements; 0 and 1 for glMap1's v) and
+/// the points.
+struct Net<T> {
     target: GLenum,
     u: [f32; 2],
     v: Option<[f32; 2]>,
-    ustride: GLint,
-    uorder: GLint,
-    vstride: GLint,
-    vorder: GLint,
+    stride: [GLint; 2],
+    order: [GLint; 2],
     points: *const T,
-) -> GlResult<(MapKind, bool, Vec<f32>)> {
+}
+
+/// Reads a control net (`uorder` x `vorder` points of `dim` components, strides in
+/// elements) into u-major f32 points, after Mesa's checks.
+fn gather<T: Copy + Into<f64>>(net: &Net<T>) -> GlResult<(MapKind, bool, Vec<f32>)> {
+    let Net {
+        target,
+        u,
+        v,
+        stride: [ustride, vstride],
+        order: [uorder, vorder],
+        points,
+    } = *net;
     let order_ok = |o: GLint| (1..=MAX_ORDER as GLint).contains(&o);
     if u[0] == u[1] || v.is_some_and(|v| v[0] == v[1]) {
         return Err(GlError::InvalidValue);
@@ -65,25 +75,18 @@ fn gather<T: Copy + Into<f64>>(
 
 /// glMap1/glMap2: the control points are read now (a display list keeps this copy);
 /// the map is set, or the error raised, when the call runs.
-#[allow(clippy::too_many_arguments)]
-fn map<T: Copy + Into<f64>>(
-    target: GLenum,
-    u: [f32; 2],
-    v: Option<[f32; 2]>,
-    ustride: GLint,
-    uorder: GLint,
-    vstride: GLint,
-    vorder: GLint,
-    points: *const T,
-) {
-    match gather(target, u, v, ustride, uorder, vstride, vorder, points) {
+fn map<T: Copy + Into<f64>>(net: Net<T>) {
+    let (u, v, [uo, vo]) = (
+        net.u,
+        net.v.unwrap_or([0.0, 1.0]),
+        net.order.map(|o| o as usize),
+    );
+    match gather(&net) {
         Ok((kind, two, pts)) => with_ctx_list(move |c| {
             if c.state.active_texture != 0 {
                 return Err(GlError::InvalidOperation);
             }
-            let vv = v.unwrap_or([0.0, 1.0]);
-            let (uo, vo) = (uorder as usize, vorder as usize);
-            c.set_map(kind, two, u, vv, uo, vo, pts.clone())
+            c.set_map(kind, two, u, v, uo, vo, pts.clone())
         }),
         Err(e) => with_ctx_list(move |_| Err(e)),
     }
@@ -102,7 +105,15 @@ pub unsafe extern "C" fn glMap1f(
     order: GLint,
     points: *const GLfloat,
 ) {
-    map(target, [u1, u2], None, stride, order, 0, 1, points)
+    let (stride, order) = ([stride, 0], [order, 1]);
+    map(Net {
+        target,
+        u: [u1, u2],
+        v: None,
+        stride,
+        order,
+        points,
+    })
 }
 
 /// glMap1d.
@@ -118,16 +129,15 @@ pub unsafe extern "C" fn glMap1d(
     order: GLint,
     points: *const GLdouble,
 ) {
-    map(
+    let (u, stride, order) = ([u1 as f32, u2 as f32], [stride, 0], [order, 1]);
+    map(Net {
         target,
-        [u1 as f32, u2 as f32],
-        None,
+        u,
+        v: None,
         stride,
         order,
-        0,
-        1,
         points,
-    )
+    })
 }
 
 /// glMap2f.
@@ -147,16 +157,15 @@ pub unsafe extern "C" fn glMap2f(
     vorder: GLint,
     points: *const GLfloat,
 ) {
-    map(
+    let (stride, order) = ([ustride, vstride], [uorder, vorder]);
+    map(Net {
         target,
-        [u1, u2],
-        Some([v1, v2]),
-        ustride,
-        uorder,
-        vstride,
-        vorder,
+        u: [u1, u2],
+        v: Some([v1, v2]),
+        stride,
+        order,
         points,
-    )
+    })
 }
 
 /// glMap2d.
@@ -176,8 +185,16 @@ pub unsafe extern "C" fn glMap2d(
     vorder: GLint,
     points: *const GLdouble,
 ) {
-    let (u, v) = ([u1 as f32, u2 as f32], [v1 as f32, v2 as f32]);
-    map(target, u, Some(v), ustride, uorder, vstride, vorder, points)
+    let (u, v) = ([u1 as f32, u2 as f32], Some([v1 as f32, v2 as f32]));
+    let (stride, order) = ([ustride, vstride], [uorder, vorder]);
+    map(Net {
+        target,
+        u,
+        v,
+        stride,
+        order,
+        points,
+    })
 }
 
 /// glMapGrid1f.

@@ -2,6 +2,7 @@
 //! equations, and separate front/back stencil state.
 #![allow(non_snake_case)]
 
+use super::families::c_fns;
 use super::fragment::{blend_equation, blend_func, stencil_func, stencil_mask, stencil_op, Faces};
 use super::types::*;
 use super::with_ctx_list;
@@ -57,31 +58,11 @@ pub extern "C" fn glStencilMaskSeparate(face: GLenum, mask: GLuint) {
     }
 }
 
-/// glBlendFuncSeparateEXT (GL_EXT_blend_func_separate alias).
-#[no_mangle]
-pub extern "C" fn glBlendFuncSeparateEXT(
-    sfactorRGB: GLenum,
-    dfactorRGB: GLenum,
-    sfactorAlpha: GLenum,
-    dfactorAlpha: GLenum,
-) {
-    blend_func(sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha)
-}
-
-/// glBlendEquationSeparateEXT (GL_EXT_blend_equation_separate alias).
-#[no_mangle]
-pub extern "C" fn glBlendEquationSeparateEXT(modeRGB: GLenum, modeAlpha: GLenum) {
-    blend_equation(modeRGB, modeAlpha)
-}
-
-/// glBlendEquationEXT (GL_EXT_blend_minmax alias).
-#[no_mangle]
-pub extern "C" fn glBlendEquationEXT(mode: GLenum) {
-    blend_equation(mode, mode)
-}
-
-/// glBlendColorEXT (GL_EXT_blend_color alias).
-#[no_mangle]
-pub extern "C" fn glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    super::fragment::glBlendColor(red, green, blue, alpha)
+// The extension names of GL_EXT_blend_func_separate, GL_EXT_blend_equation_separate,
+// GL_EXT_blend_minmax and GL_EXT_blend_color.
+c_fns! {
+    safe fn glBlendFuncSeparateEXT(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) = fragment_ext::glBlendFuncSeparate;
+    safe fn glBlendEquationSeparateEXT(modeRGB: GLenum, modeAlpha: GLenum) = fragment_ext::glBlendEquationSeparate;
+    safe fn glBlendEquationEXT(mode: GLenum) = fragment::glBlendEquation;
+    safe fn glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) = fragment::glBlendColor;
 }

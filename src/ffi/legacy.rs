@@ -5,6 +5,7 @@
 //! Mesa does not implement (each call is GL_INVALID_OPERATION there, and here).
 #![allow(non_snake_case)]
 
+use super::families::c_fns;
 use super::types::*;
 use super::{with_ctx, with_ctx_list, with_ctx_vertex};
 use crate::context::dlist::VertexOp;
@@ -25,94 +26,17 @@ unsafe fn read1<T: Copy>(p: *const T) -> Option<T> {
     (!p.is_null()).then(|| unsafe { p.read_unaligned() })
 }
 
-/// glIndexd.
-#[no_mangle]
-pub extern "C" fn glIndexd(c: GLdouble) {
-    index(c as f32)
-}
-
-/// glIndexf.
-#[no_mangle]
-pub extern "C" fn glIndexf(c: GLfloat) {
-    index(c)
-}
-
-/// glIndexi.
-#[no_mangle]
-pub extern "C" fn glIndexi(c: GLint) {
-    index(c as f32)
-}
-
-/// glIndexs.
-#[no_mangle]
-pub extern "C" fn glIndexs(c: GLshort) {
-    index(c as f32)
-}
-
-/// glIndexub.
-#[no_mangle]
-pub extern "C" fn glIndexub(c: GLubyte) {
-    index(c as f32)
-}
-
-/// glIndexdv.
-///
-/// # Safety
-/// `c` must be null or point to one value.
-#[no_mangle]
-pub unsafe extern "C" fn glIndexdv(c: *const GLdouble) {
-    // SAFETY: forwarded caller contract.
-    if let Some(v) = unsafe { read1(c) } {
-        index(v as f32)
-    }
-}
-
-/// glIndexfv.
-///
-/// # Safety
-/// `c` must be null or point to one value.
-#[no_mangle]
-pub unsafe extern "C" fn glIndexfv(c: *const GLfloat) {
-    // SAFETY: forwarded caller contract.
-    if let Some(v) = unsafe { read1(c) } {
-        index(v)
-    }
-}
-
-/// glIndexiv.
-///
-/// # Safety
-/// `c` must be null or point to one value.
-#[no_mangle]
-pub unsafe extern "C" fn glIndexiv(c: *const GLint) {
-    // SAFETY: forwarded caller contract.
-    if let Some(v) = unsafe { read1(c) } {
-        index(v as f32)
-    }
-}
-
-/// glIndexsv.
-///
-/// # Safety
-/// `c` must be null or point to one value.
-#[no_mangle]
-pub unsafe extern "C" fn glIndexsv(c: *const GLshort) {
-    // SAFETY: forwarded caller contract.
-    if let Some(v) = unsafe { read1(c) } {
-        index(v as f32)
-    }
-}
-
-/// glIndexubv.
-///
-/// # Safety
-/// `c` must be null or point to one value.
-#[no_mangle]
-pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
-    // SAFETY: forwarded caller contract.
-    if let Some(v) = unsafe { read1(c) } {
-        index(v as f32)
-    }
+c_fns! {
+    safe fn glIndexd(c: GLdouble) => index(c as f32);
+    safe fn glIndexf(c: GLfloat) => index(c);
+    safe fn glIndexi(c: GLint) => index(c as f32);
+    safe fn glIndexs(c: GLshort) => index(c as f32);
+    safe fn glIndexub(c: GLubyte) => index(c as f32);
+    unsafe fn glIndexdv(c: *const GLdouble) => if let Some(v) = read1(c) { index(v as f32) };
+    unsafe fn glIndexfv(c: *const GLfloat) => if let Some(v) = read1(c) { index(v) };
+    unsafe fn glIndexiv(c: *const GLint) => if let Some(v) = read1(c) { index(v as f32) };
+    unsafe fn glIndexsv(c: *const GLshort) => if let Some(v) = read1(c) { index(v as f32) };
+    unsafe fn glIndexubv(c: *const GLubyte) => if let Some(v) = read1(c) { index(v as f32) };
 }
 
 /// glIndexMask (GL_INDEX_WRITEMASK; an RGBA context writes no indices).
@@ -182,315 +106,38 @@ fn imaging_unsupported() {
     with_ctx(|_| Err::<(), _>(GlError::InvalidOperation))
 }
 
-/// glColorTable: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glColorTable(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _format: GLenum,
-    _type_: GLenum,
-    _table: *const GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glColorSubTable: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glColorSubTable(
-    _target: GLenum,
-    _start: GLsizei,
-    _count: GLsizei,
-    _format: GLenum,
-    _type_: GLenum,
-    _data: *const GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glColorTableParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glColorTableParameterfv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *const GLfloat,
-) {
-    imaging_unsupported()
-}
-
-/// glColorTableParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glColorTableParameteriv(_target: GLenum, _pname: GLenum, _params: *const GLint) {
-    imaging_unsupported()
-}
-
-/// glCopyColorTable: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glCopyColorTable(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _x: GLint,
-    _y: GLint,
-    _width: GLsizei,
-) {
-    imaging_unsupported()
-}
-
-/// glCopyColorSubTable: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glCopyColorSubTable(
-    _target: GLenum,
-    _start: GLsizei,
-    _x: GLint,
-    _y: GLint,
-    _width: GLsizei,
-) {
-    imaging_unsupported()
-}
-
-/// glGetColorTable: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetColorTable(
-    _target: GLenum,
-    _format: GLenum,
-    _type_: GLenum,
-    _table: *mut GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glGetColorTableParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetColorTableParameterfv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *mut GLfloat,
-) {
-    imaging_unsupported()
-}
-
-/// glGetColorTableParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetColorTableParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) {
-    imaging_unsupported()
-}
-
-/// glConvolutionFilter1D: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionFilter1D(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _format: GLenum,
-    _type_: GLenum,
-    _image: *const GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glConvolutionFilter2D: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionFilter2D(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _height: GLsizei,
-    _format: GLenum,
-    _type_: GLenum,
-    _image: *const GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glConvolutionParameterf: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionParameterf(_target: GLenum, _pname: GLenum, _params: GLfloat) {
-    imaging_unsupported()
-}
-
-/// glConvolutionParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionParameterfv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *const GLfloat,
-) {
-    imaging_unsupported()
-}
-
-/// glConvolutionParameteri: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionParameteri(_target: GLenum, _pname: GLenum, _params: GLint) {
-    imaging_unsupported()
-}
-
-/// glConvolutionParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glConvolutionParameteriv(_target: GLenum, _pname: GLenum, _params: *const GLint) {
-    imaging_unsupported()
-}
-
-/// glCopyConvolutionFilter1D: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glCopyConvolutionFilter1D(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _x: GLint,
-    _y: GLint,
-    _width: GLsizei,
-) {
-    imaging_unsupported()
-}
-
-/// glCopyConvolutionFilter2D: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glCopyConvolutionFilter2D(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _x: GLint,
-    _y: GLint,
-    _width: GLsizei,
-    _height: GLsizei,
-) {
-    imaging_unsupported()
-}
-
-/// glGetConvolutionFilter: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetConvolutionFilter(
-    _target: GLenum,
-    _format: GLenum,
-    _type_: GLenum,
-    _image: *mut GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glGetConvolutionParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetConvolutionParameterfv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *mut GLfloat,
-) {
-    imaging_unsupported()
-}
-
-/// glGetConvolutionParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetConvolutionParameteriv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *mut GLint,
-) {
-    imaging_unsupported()
-}
-
-/// glSeparableFilter2D: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glSeparableFilter2D(
-    _target: GLenum,
-    _internalformat: GLenum,
-    _width: GLsizei,
-    _height: GLsizei,
-    _format: GLenum,
-    _type_: GLenum,
-    _row: *const GLvoid,
-    _column: *const GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glGetSeparableFilter: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetSeparableFilter(
-    _target: GLenum,
-    _format: GLenum,
-    _type_: GLenum,
-    _row: *mut GLvoid,
-    _column: *mut GLvoid,
-    _span: *mut GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glHistogram: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glHistogram(
-    _target: GLenum,
-    _width: GLsizei,
-    _internalformat: GLenum,
-    _sink: GLboolean,
-) {
-    imaging_unsupported()
-}
-
-/// glGetHistogram: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetHistogram(
-    _target: GLenum,
-    _reset: GLboolean,
-    _format: GLenum,
-    _type_: GLenum,
-    _values: *mut GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glGetHistogramParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetHistogramParameterfv(
-    _target: GLenum,
-    _pname: GLenum,
-    _params: *mut GLfloat,
-) {
-    imaging_unsupported()
-}
-
-/// glGetHistogramParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetHistogramParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) {
-    imaging_unsupported()
-}
-
-/// glResetHistogram: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glResetHistogram(_target: GLenum) {
-    imaging_unsupported()
-}
-
-/// glMinmax: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glMinmax(_target: GLenum, _internalformat: GLenum, _sink: GLboolean) {
-    imaging_unsupported()
-}
-
-/// glGetMinmax: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetMinmax(
-    _target: GLenum,
-    _reset: GLboolean,
-    _format: GLenum,
-    _types: GLenum,
-    _values: *mut GLvoid,
-) {
-    imaging_unsupported()
-}
-
-/// glGetMinmaxParameterfv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetMinmaxParameterfv(_target: GLenum, _pname: GLenum, _params: *mut GLfloat) {
-    imaging_unsupported()
-}
-
-/// glGetMinmaxParameteriv: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glGetMinmaxParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) {
-    imaging_unsupported()
-}
-
-/// glResetMinmax: ARB_imaging, unsupported (GL_INVALID_OPERATION, as in Mesa).
-#[no_mangle]
-pub extern "C" fn glResetMinmax(_target: GLenum) {
-    imaging_unsupported()
+// The ARB_imaging entry points: unsupported (GL_INVALID_OPERATION, as in Mesa).
+c_fns! {
+    safe fn glColorTable(_target: GLenum, _internalformat: GLenum, _width: GLsizei, _format: GLenum, _type_: GLenum, _table: *const GLvoid) => imaging_unsupported();
+    safe fn glColorSubTable(_target: GLenum, _start: GLsizei, _count: GLsizei, _format: GLenum, _type_: GLenum, _data: *const GLvoid) => imaging_unsupported();
+    safe fn glColorTableParameterfv(_target: GLenum, _pname: GLenum, _params: *const GLfloat) => imaging_unsupported();
+    safe fn glColorTableParameteriv(_target: GLenum, _pname: GLenum, _params: *const GLint) => imaging_unsupported();
+    safe fn glCopyColorTable(_target: GLenum, _internalformat: GLenum, _x: GLint, _y: GLint, _width: GLsizei) => imaging_unsupported();
+    safe fn glCopyColorSubTable(_target: GLenum, _start: GLsizei, _x: GLint, _y: GLint, _width: GLsizei) => imaging_unsupported();
+    safe fn glGetColorTable(_target: GLenum, _format: GLenum, _type_: GLenum, _table: *mut GLvoid) => imaging_unsupported();
+    safe fn glGetColorTableParameterfv(_target: GLenum, _pname: GLenum, _params: *mut GLfloat) => imaging_unsupported();
+    safe fn glGetColorTableParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) => imaging_unsupported();
+    safe fn glConvolutionFilter1D(_target: GLenum, _internalformat: GLenum, _width: GLsizei, _format: GLenum, _type_: GLenum, _image: *const GLvoid) => imaging_unsupported();
+    safe fn glConvolutionFilter2D(_target: GLenum, _internalformat: GLenum, _width: GLsizei, _height: GLsizei, _format: GLenum, _type_: GLenum, _image: *const GLvoid) => imaging_unsupported();
+    safe fn glConvolutionParameterf(_target: GLenum, _pname: GLenum, _params: GLfloat) => imaging_unsupported();
+    safe fn glConvolutionParameterfv(_target: GLenum, _pname: GLenum, _params: *const GLfloat) => imaging_unsupported();
+    safe fn glConvolutionParameteri(_target: GLenum, _pname: GLenum, _params: GLint) => imaging_unsupported();
+    safe fn glConvolutionParameteriv(_target: GLenum, _pname: GLenum, _params: *const GLint) => imaging_unsupported();
+    safe fn glCopyConvolutionFilter1D(_target: GLenum, _internalformat: GLenum, _x: GLint, _y: GLint, _width: GLsizei) => imaging_unsupported();
+    safe fn glCopyConvolutionFilter2D(_target: GLenum, _internalformat: GLenum, _x: GLint, _y: GLint, _width: GLsizei, _height: GLsizei) => imaging_unsupported();
+    safe fn glGetConvolutionFilter(_target: GLenum, _format: GLenum, _type_: GLenum, _image: *mut GLvoid) => imaging_unsupported();
+    safe fn glGetConvolutionParameterfv(_target: GLenum, _pname: GLenum, _params: *mut GLfloat) => imaging_unsupported();
+    safe fn glGetConvolutionParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) => imaging_unsupported();
+    safe fn glSeparableFilter2D(_target: GLenum, _internalformat: GLenum, _width: GLsizei, _height: GLsizei, _format: GLenum, _type_: GLenum, _row: *const GLvoid, _column: *const GLvoid) => imaging_unsupported();
+    safe fn glGetSeparableFilter(_target: GLenum, _format: GLenum, _type_: GLenum, _row: *mut GLvoid, _column: *mut GLvoid, _span: *mut GLvoid) => imaging_unsupported();
+    safe fn glHistogram(_target: GLenum, _width: GLsizei, _internalformat: GLenum, _sink: GLboolean) => imaging_unsupported();
+    safe fn glGetHistogram(_target: GLenum, _reset: GLboolean, _format: GLenum, _type_: GLenum, _values: *mut GLvoid) => imaging_unsupported();
+    safe fn glGetHistogramParameterfv(_target: GLenum, _pname: GLenum, _params: *mut GLfloat) => imaging_unsupported();
+    safe fn glGetHistogramParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) => imaging_unsupported();
+    safe fn glResetHistogram(_target: GLenum) => imaging_unsupported();
+    safe fn glMinmax(_target: GLenum, _internalformat: GLenum, _sink: GLboolean) => imaging_unsupported();
+    safe fn glGetMinmax(_target: GLenum, _reset: GLboolean, _format: GLenum, _types: GLenum, _values: *mut GLvoid) => imaging_unsupported();
+    safe fn glGetMinmaxParameterfv(_target: GLenum, _pname: GLenum, _params: *mut GLfloat) => imaging_unsupported();
+    safe fn glGetMinmaxParameteriv(_target: GLenum, _pname: GLenum, _params: *mut GLint) => imaging_unsupported();
+    safe fn glResetMinmax(_target: GLenum) => imaging_unsupported();
 }

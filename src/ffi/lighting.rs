@@ -5,6 +5,7 @@
 #![allow(non_snake_case)]
 
 use super::enums::*;
+use super::families::c_fns;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
 use crate::context::lighting_state::{float_to_int, int_to_float};
@@ -109,44 +110,39 @@ pub(crate) fn sync_color_material(c: &mut Context) {
     }
 }
 
-/// glLightf.
-#[no_mangle]
-pub extern "C" fn glLightf(light_: GLenum, pname: GLenum, param: GLfloat) {
-    light(light_, pname, [param, 0.0, 0.0, 0.0])
-}
-
-/// glLighti.
-#[no_mangle]
-pub extern "C" fn glLighti(light_: GLenum, pname: GLenum, param: GLint) {
-    light(light_, pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glLightfv.
+/// Reads the integer form of a parameter vector: colours (`color`) with Mesa's
+/// `INT_TO_FLOAT`, other values directly.
 ///
 /// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glLightfv(light_: GLenum, pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, light_count(pname)) } {
-        light(light_, pname, p)
+/// As [`read4`].
+unsafe fn read4i(p: *const GLint, n: usize, color: bool) -> Option<[f32; 4]> {
+    // SAFETY: forwarded caller contract.
+    let p = unsafe { read4(p, n) }?;
+    Some(if color {
+        p.map(int_to_float)
+    } else {
+        p.map(|v| v as f32)
+    })
+}
+
+/// A scalar parameter as the parameter vector the setters take.
+fn one(param: f32) -> [f32; 4] {
+    [param, 0.0, 0.0, 0.0]
+}
+
+/// Writes the values of a glGet*v query, converted by `f`, to `params` (nothing when the
+/// query failed or `params` is null).
+///
+/// # Safety
+/// `params` must be null or writable for `v.len()` values.
+unsafe fn write_all<T>(params: *mut T, v: Option<Vec<f32>>, f: impl Fn(f32) -> T) {
+    let Some(v) = v else { return };
+    if params.is_null() {
+        return;
     }
-}
-
-/// glLightiv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glLightiv(light_: GLenum, pname: GLenum, params: *const GLint) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, light_count(pname)) } {
-        let f = if is_color(pname) {
-            p.map(int_to_float)
-        } else {
-            p.map(|v| v as f32)
-        };
-        light(light_, pname, f)
+    for (i, x) in v.into_iter().enumerate() {
+        // SAFETY: the caller promises room for the values.
+        unsafe { params.add(i).write_unaligned(f(x)) };
     }
 }
 
@@ -155,122 +151,10 @@ fn get_light(light_: GLenum, pname: GLenum) -> Option<Vec<f32>> {
     with_ctx(|c| c.light.get_light(light_, pname).map(Some))
 }
 
-/// glGetLightfv.
-///
-/// # Safety
-/// `params` must be writable for as many values as `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetLightfv(light_: GLenum, pname: GLenum, params: *mut GLfloat) {
-    if let Some(v) = get_light(light_, pname) {
-        if params.is_null() {
-            return;
-        }
-        for (i, x) in v.into_iter().enumerate() {
-            // SAFETY: the caller promises room for the values.
-            unsafe { params.add(i).write_unaligned(x) };
-        }
-    }
-}
-
-/// glGetLightiv.
-///
-/// # Safety
-/// `params` must be writable for as many values as `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetLightiv(light_: GLenum, pname: GLenum, params: *mut GLint) {
-    if let Some(v) = get_light(light_, pname) {
-        if params.is_null() {
-            return;
-        }
-        let color = matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR);
-        for (i, x) in v.into_iter().enumerate() {
-            let n = if color { float_to_int(x) } else { x as i32 };
-            // SAFETY: the caller promises room for the values.
-            unsafe { params.add(i).write_unaligned(n) };
-        }
-    }
-}
-
-/// glLightModelf.
-#[no_mangle]
-pub extern "C" fn glLightModelf(pname: GLenum, param: GLfloat) {
-    light_model(pname, [param, 0.0, 0.0, 0.0])
-}
-
-/// glLightModeli.
-#[no_mangle]
-pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
-    light_model(pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glLightModelfv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, light_model_count(pname)) } {
-        light_model(pname, p)
-    }
-}
-
-/// glLightModeliv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, light_model_count(pname)) } {
-        let f = if pname == GL_LIGHT_MODEL_AMBIENT {
-            p.map(int_to_float)
-        } else {
-            p.map(|v| v as f32)
-        };
-        light_model(pname, f)
-    }
-}
-
-/// glMaterialf.
-#[no_mangle]
-pub extern "C" fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) {
-    material(face, pname, [param, 0.0, 0.0, 0.0])
-}
-
-/// glMateriali.
-#[no_mangle]
-pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
-    material(face, pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glMaterialfv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, material_count(pname)) } {
-        material(face, pname, p)
-    }
-}
-
-/// glMaterialiv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, material_count(pname)) } {
-        let f = if is_color(pname) {
-            p.map(int_to_float)
-        } else {
-            p.map(|v| v as f32)
-        };
-        material(face, pname, f)
-    }
+/// glGetLightiv's conversion: colours with Mesa's `FLOAT_TO_INT`, other values truncated.
+fn light_int(pname: GLenum) -> impl Fn(f32) -> GLint {
+    let color = matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR);
+    move |x| if color { float_to_int(x) } else { x as i32 }
 }
 
 /// Shared by glGetMaterialfv/iv.
@@ -281,44 +165,38 @@ fn get_material(face: GLenum, pname: GLenum) -> Option<Vec<f32>> {
     })
 }
 
-/// glGetMaterialfv.
-///
-/// # Safety
-/// `params` must be writable for as many values as `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) {
-    if let Some(v) = get_material(face, pname) {
-        if params.is_null() {
-            return;
-        }
-        for (i, x) in v.into_iter().enumerate() {
-            // SAFETY: the caller promises room for the values.
-            unsafe { params.add(i).write_unaligned(x) };
+/// glGetMaterialiv's conversion: colours with Mesa's `FLOAT_TO_INT`, other values rounded
+/// (`lroundf`).
+fn material_int(pname: GLenum) -> impl Fn(f32) -> GLint {
+    let color = is_color(pname);
+    move |x| {
+        if color {
+            float_to_int(x)
+        } else {
+            x.round() as i32
         }
     }
 }
 
-/// glGetMaterialiv.
-///
-/// # Safety
-/// `params` must be writable for as many values as `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) {
-    if let Some(v) = get_material(face, pname) {
-        if params.is_null() {
-            return;
-        }
-        let color = is_color(pname);
-        for (i, x) in v.into_iter().enumerate() {
-            let n = if color {
-                float_to_int(x)
-            } else {
-                x.round() as i32 // lroundf
-            };
-            // SAFETY: the caller promises room for the values.
-            unsafe { params.add(i).write_unaligned(n) };
-        }
-    }
+// glLight, glLightModel and glMaterial: the vector forms read as many values as `pname`
+// takes.
+c_fns! {
+    safe fn glLightf(light_: GLenum, pname: GLenum, param: GLfloat) => light(light_, pname, one(param));
+    safe fn glLighti(light_: GLenum, pname: GLenum, param: GLint) => light(light_, pname, one(param as f32));
+    unsafe fn glLightfv(light_: GLenum, pname: GLenum, params: *const GLfloat) => if let Some(p) = read4(params, light_count(pname)) { light(light_, pname, p) };
+    unsafe fn glLightiv(light_: GLenum, pname: GLenum, params: *const GLint) => if let Some(p) = read4i(params, light_count(pname), is_color(pname)) { light(light_, pname, p) };
+    unsafe fn glGetLightfv(light_: GLenum, pname: GLenum, params: *mut GLfloat) => write_all(params, get_light(light_, pname), |x| x);
+    unsafe fn glGetLightiv(light_: GLenum, pname: GLenum, params: *mut GLint) => write_all(params, get_light(light_, pname), light_int(pname));
+    safe fn glLightModelf(pname: GLenum, param: GLfloat) => light_model(pname, one(param));
+    safe fn glLightModeli(pname: GLenum, param: GLint) => light_model(pname, one(param as f32));
+    unsafe fn glLightModelfv(pname: GLenum, params: *const GLfloat) => if let Some(p) = read4(params, light_model_count(pname)) { light_model(pname, p) };
+    unsafe fn glLightModeliv(pname: GLenum, params: *const GLint) => if let Some(p) = read4i(params, light_model_count(pname), pname == GL_LIGHT_MODEL_AMBIENT) { light_model(pname, p) };
+    safe fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) => material(face, pname, one(param));
+    safe fn glMateriali(face: GLenum, pname: GLenum, param: GLint) => material(face, pname, one(param as f32));
+    unsafe fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) => if let Some(p) = read4(params, material_count(pname)) { material(face, pname, p) };
+    unsafe fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) => if let Some(p) = read4i(params, material_count(pname), is_color(pname)) { material(face, pname, p) };
+    unsafe fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) => write_all(params, get_material(face, pname), |x| x);
+    unsafe fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) => write_all(params, get_material(face, pname), material_int(pname));
 }
 
 /// glColorMaterial.
@@ -331,43 +209,10 @@ pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
     })
 }
 
-/// glFogf.
-#[no_mangle]
-pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
-    fog(pname, [param, 0.0, 0.0, 0.0])
-}
-
-/// glFogi.
-#[no_mangle]
-pub extern "C" fn glFogi(pname: GLenum, param: GLint) {
-    fog(pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glFogfv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, fog_count(pname)) } {
-        fog(pname, p)
-    }
-}
-
-/// glFogiv.
-///
-/// # Safety
-/// `params` must point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glFogiv(pname: GLenum, params: *const GLint) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, fog_count(pname)) } {
-        let f = if pname == GL_FOG_COLOR {
-            p.map(int_to_float)
-        } else {
-            p.map(|v| v as f32)
-        };
-        fog(pname, f)
-    }
+// glFog: the vector forms read as many values as `pname` takes.
+c_fns! {
+    safe fn glFogf(pname: GLenum, param: GLfloat) => fog(pname, one(param));
+    safe fn glFogi(pname: GLenum, param: GLint) => fog(pname, one(param as f32));
+    unsafe fn glFogfv(pname: GLenum, params: *const GLfloat) => if let Some(p) = read4(params, fog_count(pname)) { fog(pname, p) };
+    unsafe fn glFogiv(pname: GLenum, params: *const GLint) => if let Some(p) = read4i(params, fog_count(pname), pname == GL_FOG_COLOR) { fog(pname, p) };
 }

@@ -2,11 +2,13 @@
 #![allow(non_snake_case)]
 
 use super::enums::*;
+use super::families::c_fns;
 use super::types::*;
 use super::with_ctx_list;
 use crate::context::error::GlError;
 use crate::context::state::MatrixMode;
 use crate::fixed_function::matrix::{Mat4, IDENTITY};
+use crate::fixed_function::mesa_matrix::MatFlags;
 
 /// glMatrixMode.
 #[no_mangle]
@@ -69,84 +71,15 @@ fn load(m: Option<Mat4>, transpose: bool, multiply: bool) {
     })
 }
 
-/// glLoadMatrixf.
-///
-/// # Safety
-/// `m` must point to 16 floats.
-#[no_mangle]
-pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, false, false)
-}
-
-/// glLoadMatrixd.
-///
-/// # Safety
-/// `m` must point to 16 doubles.
-#[no_mangle]
-pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, false, false)
-}
-
-/// glMultMatrixf.
-///
-/// # Safety
-/// `m` must point to 16 floats.
-#[no_mangle]
-pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, false, true)
-}
-
-/// glMultMatrixd.
-///
-/// # Safety
-/// `m` must point to 16 doubles.
-#[no_mangle]
-pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, false, true)
-}
-
-/// glLoadTransposeMatrixf.
-///
-/// # Safety
-/// `m` must point to 16 floats.
-#[no_mangle]
-pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, true, false)
-}
-
-/// glLoadTransposeMatrixd.
-///
-/// # Safety
-/// `m` must point to 16 doubles.
-#[no_mangle]
-pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, true, false)
-}
-
-/// glMultTransposeMatrixf.
-///
-/// # Safety
-/// `m` must point to 16 floats.
-#[no_mangle]
-pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, true, true)
-}
-
-/// glMultTransposeMatrixd.
-///
-/// # Safety
-/// `m` must point to 16 doubles.
-#[no_mangle]
-pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
-    // SAFETY: forwarded caller contract.
-    load(unsafe { read16(m) }, true, true)
+c_fns! {
+    unsafe fn glLoadMatrixf(m: *const GLfloat) => load(read16(m), false, false);
+    unsafe fn glLoadMatrixd(m: *const GLdouble) => load(read16(m), false, false);
+    unsafe fn glMultMatrixf(m: *const GLfloat) => load(read16(m), false, true);
+    unsafe fn glMultMatrixd(m: *const GLdouble) => load(read16(m), false, true);
+    unsafe fn glLoadTransposeMatrixf(m: *const GLfloat) => load(read16(m), true, false);
+    unsafe fn glLoadTransposeMatrixd(m: *const GLdouble) => load(read16(m), true, false);
+    unsafe fn glMultTransposeMatrixf(m: *const GLfloat) => load(read16(m), true, true);
+    unsafe fn glMultTransposeMatrixd(m: *const GLdouble) => load(read16(m), true, true);
 }
 
 /// glTranslatef.
@@ -202,62 +135,41 @@ pub extern "C" fn glRotated(angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdoub
     glRotatef(angle as f32, x as f32, y as f32, z as f32)
 }
 
-/// glFrustum.
-#[no_mangle]
-pub extern "C" fn glFrustum(
-    left: GLdouble,
-    right: GLdouble,
-    bottom: GLdouble,
-    top: GLdouble,
-    zNear: GLdouble,
-    zFar: GLdouble,
+/// glFrustum and glOrtho: GL_INVALID_VALUE when `invalid` says so of the planes (left,
+/// right, bottom, top, near, far), else multiplies the current matrix by `make` of the
+/// planes (converted to f32) and records the kind of matrix.
+fn projection(
+    planes: [GLdouble; 6],
+    invalid: fn([GLdouble; 6]) -> bool,
+    make: fn(f32, f32, f32, f32, f32, f32) -> Mat4,
+    flag: fn(&mut MatFlags) -> bool,
 ) {
     with_ctx_list(move |c| {
-        if zNear <= 0.0 || zFar <= 0.0 || zNear == zFar || left == right || top == bottom {
+        if invalid(planes) {
             return Err(GlError::InvalidValue);
         }
-        let f = Mat4::frustum(
-            left as f32,
-            right as f32,
-            bottom as f32,
-            top as f32,
-            zNear as f32,
-            zFar as f32,
-        );
+        let [l, r, b, t, n, f] = planes.map(|v| v as f32);
+        let p = make(l, r, b, t, n, f);
         c.with_matrix_flags(|m, fl| {
-            *m = m.mul(&f);
-            fl.on_frustum();
+            *m = m.mul(&p);
+            flag(fl);
         })
     })
 }
 
-/// glOrtho.
-#[no_mangle]
-pub extern "C" fn glOrtho(
-    left: GLdouble,
-    right: GLdouble,
-    bottom: GLdouble,
-    top: GLdouble,
-    zNear: GLdouble,
-    zFar: GLdouble,
-) {
-    with_ctx_list(move |c| {
-        if left == right || bottom == top || zNear == zFar {
-            return Err(GlError::InvalidValue);
-        }
-        let o = Mat4::ortho(
-            left as f32,
-            right as f32,
-            bottom as f32,
-            top as f32,
-            zNear as f32,
-            zFar as f32,
-        );
-        c.with_matrix_flags(|m, fl| {
-            *m = m.mul(&o);
-            fl.on_ortho();
-        })
-    })
+/// glFrustum's invalid planes.
+fn bad_frustum([left, right, bottom, top, near, far]: [GLdouble; 6]) -> bool {
+    near <= 0.0 || far <= 0.0 || near == far || left == right || top == bottom
+}
+
+/// glOrtho's invalid planes.
+fn bad_ortho([left, right, bottom, top, near, far]: [GLdouble; 6]) -> bool {
+    left == right || bottom == top || near == far
+}
+
+c_fns! {
+    safe fn glFrustum(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble) => projection([left, right, bottom, top, zNear, zFar], bad_frustum, Mat4::frustum, MatFlags::on_frustum);
+    safe fn glOrtho(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble) => projection([left, right, bottom, top, zNear, zFar], bad_ortho, Mat4::ortho, MatFlags::on_ortho);
 }
 
 /// glPushMatrix.

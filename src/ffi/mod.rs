@@ -46,6 +46,7 @@ pub mod buffers;
 pub mod draw;
 pub use crate::gl::enums;
 pub mod eval;
+mod families;
 pub mod feedback;
 pub mod fragment;
 pub mod fragment_ext;

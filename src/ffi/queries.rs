@@ -2,6 +2,7 @@
 //! aliases. Only GL_SAMPLES_PASSED is a query target in GL 1.5.
 #![allow(non_snake_case)]
 
+use super::families::c_fns;
 use super::glext_enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
@@ -132,70 +133,13 @@ pub unsafe extern "C" fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: 
     }
 }
 
-/// glGenQueriesARB.
-///
-/// # Safety
-/// As [`glGenQueries`].
-#[no_mangle]
-pub unsafe extern "C" fn glGenQueriesARB(n: GLsizei, ids: *mut GLuint) {
-    // SAFETY: same contract.
-    unsafe { glGenQueries(n, ids) }
-}
-
-/// glDeleteQueriesARB.
-///
-/// # Safety
-/// As [`glDeleteQueries`].
-#[no_mangle]
-pub unsafe extern "C" fn glDeleteQueriesARB(n: GLsizei, ids: *const GLuint) {
-    // SAFETY: same contract.
-    unsafe { glDeleteQueries(n, ids) }
-}
-
-/// glIsQueryARB.
-#[no_mangle]
-pub extern "C" fn glIsQueryARB(id: GLuint) -> GLboolean {
-    glIsQuery(id)
-}
-
-/// glBeginQueryARB.
-#[no_mangle]
-pub extern "C" fn glBeginQueryARB(target: GLenum, id: GLuint) {
-    glBeginQuery(target, id)
-}
-
-/// glEndQueryARB.
-#[no_mangle]
-pub extern "C" fn glEndQueryARB(target: GLenum) {
-    glEndQuery(target)
-}
-
-/// glGetQueryivARB.
-///
-/// # Safety
-/// As [`glGetQueryiv`].
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryivARB(target: GLenum, pname: GLenum, params: *mut GLint) {
-    // SAFETY: same contract.
-    unsafe { glGetQueryiv(target, pname, params) }
-}
-
-/// glGetQueryObjectivARB.
-///
-/// # Safety
-/// As [`glGetQueryObjectiv`].
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryObjectivARB(id: GLuint, pname: GLenum, params: *mut GLint) {
-    // SAFETY: same contract.
-    unsafe { glGetQueryObjectiv(id, pname, params) }
-}
-
-/// glGetQueryObjectuivARB.
-///
-/// # Safety
-/// As [`glGetQueryObjectuiv`].
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryObjectuivARB(id: GLuint, pname: GLenum, params: *mut GLuint) {
-    // SAFETY: same contract.
-    unsafe { glGetQueryObjectuiv(id, pname, params) }
+c_fns! {
+    unsafe fn glGenQueriesARB(n: GLsizei, ids: *mut GLuint) = queries::glGenQueries;
+    unsafe fn glDeleteQueriesARB(n: GLsizei, ids: *const GLuint) = queries::glDeleteQueries;
+    safe fn glIsQueryARB(id: GLuint) -> GLboolean = queries::glIsQuery;
+    safe fn glBeginQueryARB(target: GLenum, id: GLuint) = queries::glBeginQuery;
+    safe fn glEndQueryARB(target: GLenum) = queries::glEndQuery;
+    unsafe fn glGetQueryivARB(target: GLenum, pname: GLenum, params: *mut GLint) = queries::glGetQueryiv;
+    unsafe fn glGetQueryObjectivARB(id: GLuint, pname: GLenum, params: *mut GLint) = queries::glGetQueryObjectiv;
+    unsafe fn glGetQueryObjectuivARB(id: GLuint, pname: GLenum, params: *mut GLuint) = queries::glGetQueryObjectuiv;
 }

@@ -7,17 +7,23 @@ use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::error::GlError;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Face;
+use crate::context::Context;
+
+/// Stores a line width or point size: GL_INVALID_VALUE unless it is positive.
+fn set_size(size: f32, field: fn(&mut Context) -> &mut f32) {
+    with_ctx_list(move |c| {
+        if size.is_nan() || size <= 0.0 {
+            return Err(GlError::InvalidValue);
+        }
+        *field(c) = size;
+        Ok(())
+    })
+}
 
 /// glLineWidth (GL_INVALID_VALUE for width <= 0; stored unclamped as Mesa does).
 #[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
-    with_ctx_list(move |c| {
-        if width.is_nan() || width <= 0.0 {
-            return Err(GlError::InvalidValue);
-        }
-        c.raster.line.width = width;
-        Ok(())
-    })
+    set_size(width, |c| &mut c.raster.line.width)
 }
 
 /// glLineStipple (the factor is clamped to [1, 256]).
@@ -33,13 +39,7 @@ pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
 /// glPointSize (GL_INVALID_VALUE for size <= 0; stored unclamped).
 #[no_mangle]
 pub extern "C" fn glPointSize(size: GLfloat) {
-    with_ctx_list(move |c| {
-        if size.is_nan() || size <= 0.0 {
-            return Err(GlError::InvalidValue);
-        }
-        c.raster.point.size = size;
-        Ok(())
-    })
+    set_size(size, |c| &mut c.raster.point.size)
 }
 
 /// glPolygonMode.

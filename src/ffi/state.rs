@@ -3,6 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::enums::*;
+use super::families::c_fns;
 use super::glext_enums::*;
 use super::types::*;
 use super::{gl_bool, with_ctx, with_ctx_list};
@@ -44,137 +45,59 @@ pub extern "C" fn glDisable(cap: GLenum) {
 #[no_mangle]
 pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
     with_ctx(|c| {
-        let a = &c.arrays;
-        let on = match cap {
-            GL_VERTEX_ARRAY => a.vertex.enabled,
-            GL_COLOR_ARRAY => a.color.enabled,
-            GL_NORMAL_ARRAY => a.normal.enabled,
-            GL_TEXTURE_COORD_ARRAY => a.texcoord[c.state.client_active_texture].enabled,
-            GL_EDGE_FLAG_ARRAY => a.edge_flag.enabled,
-            GL_INDEX_ARRAY => a.index.enabled,
-            GL_SECONDARY_COLOR_ARRAY => a.secondary_color.enabled,
-            GL_FOG_COORD_ARRAY => a.fog_coord.enabled,
-            _ => c.state.caps.get(Cap::from_gl(cap)?),
+        let on = match super::arrays::client_array_enabled(c, cap) {
+            Some(on) => on,
+            None => c.state.caps.get(Cap::from_gl(cap)?),
         };
         Ok(on as GLboolean)
     })
 }
 
-/// glClearColor (clamped to [0,1]).
-#[no_mangle]
-pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
+/// Stores `value` (or raises its error when the command runs) in the state `field`
+/// selects, as a listable command.
+fn set_state<T: Clone + Send + Sync + 'static>(
+    value: GlResult<T>,
+    field: fn(&mut Context) -> &mut T,
+) {
     with_ctx_list(move |c| {
-        c.state.clear_color = [red, green, blue, alpha].map(|v| clamp01(v as f64) as f32);
+        *field(c) = value.clone()?;
         Ok(())
     })
 }
 
-/// glClearDepth (clamped to [0,1]).
-#[no_mangle]
-pub extern "C" fn glClearDepth(depth: GLclampd) {
-    with_ctx_list(move |c| {
-        c.state.clear_depth = clamp01(depth);
-        Ok(())
-    })
+/// glShadeModel's mode.
+fn shade_model(mode: GLenum) -> GlResult<ShadeModel> {
+    match mode {
+        GL_FLAT => Ok(ShadeModel::Flat),
+        GL_SMOOTH => Ok(ShadeModel::Smooth),
+        _ => Err(GlError::InvalidEnum),
+    }
 }
 
-/// glClearStencil.
-#[no_mangle]
-pub extern "C" fn glClearStencil(s: GLint) {
-    with_ctx_list(move |c| {
-        c.state.clear_stencil = s;
-        Ok(())
-    })
+/// glFrontFace's mode: true for counter-clockwise.
+fn front_ccw(mode: GLenum) -> GlResult<bool> {
+    match mode {
+        GL_CCW => Ok(true),
+        GL_CW => Ok(false),
+        _ => Err(GlError::InvalidEnum),
+    }
 }
 
-/// glClear.
-#[no_mangle]
-pub extern "C" fn glClear(mask: GLbitfield) {
-    with_ctx_list(move |c| c.clear(mask))
-}
-
-/// glViewport.
-#[no_mangle]
-pub extern "C" fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_ctx_list(move |c| c.viewport(x, y, width, height))
-}
-
-/// glScissor.
-#[no_mangle]
-pub extern "C" fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_ctx_list(move |c| c.scissor(x, y, width, height))
-}
-
-/// glDepthRange.
-#[no_mangle]
-pub extern "C" fn glDepthRange(near_val: GLclampd, far_val: GLclampd) {
-    with_ctx_list(move |c| c.depth_range(near_val, far_val))
-}
-
-/// glDepthFunc.
-#[no_mangle]
-pub extern "C" fn glDepthFunc(func: GLenum) {
-    with_ctx_list(move |c| {
-        let f = CompareFunc::from_gl(func)?;
-        c.state.depth_func = f;
-        Ok(())
-    })
-}
-
-/// glDepthMask.
-#[no_mangle]
-pub extern "C" fn glDepthMask(flag: GLboolean) {
-    with_ctx_list(move |c| {
-        c.state.depth_mask = gl_bool(flag);
-        Ok(())
-    })
-}
-
-/// glColorMask.
-#[no_mangle]
-pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
-    with_ctx_list(move |c| {
-        c.state.color_mask = [red, green, blue, alpha].map(gl_bool);
-        Ok(())
-    })
-}
-
-/// glShadeModel.
-#[no_mangle]
-pub extern "C" fn glShadeModel(mode: GLenum) {
-    with_ctx_list(move |c| {
-        let m = match mode {
-            GL_FLAT => ShadeModel::Flat,
-            GL_SMOOTH => ShadeModel::Smooth,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        c.state.shade_model = m;
-        Ok(())
-    })
-}
-
-/// glCullFace.
-#[no_mangle]
-pub extern "C" fn glCullFace(mode: GLenum) {
-    with_ctx_list(move |c| {
-        let f = Face::from_gl(mode)?;
-        c.state.cull_face = f;
-        Ok(())
-    })
-}
-
-/// glFrontFace.
-#[no_mangle]
-pub extern "C" fn glFrontFace(mode: GLenum) {
-    with_ctx_list(move |c| {
-        let ccw = match mode {
-            GL_CCW => true,
-            GL_CW => false,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        c.state.front_ccw = ccw;
-        Ok(())
-    })
+// The clear values are clamped to [0, 1] (but for the stencil index).
+c_fns! {
+    safe fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => set_state(Ok([red, green, blue, alpha].map(|v| clamp01(v as f64) as f32)), |c| &mut c.state.clear_color);
+    safe fn glClearDepth(depth: GLclampd) => set_state(Ok(clamp01(depth)), |c| &mut c.state.clear_depth);
+    safe fn glClearStencil(s: GLint) => set_state(Ok(s), |c| &mut c.state.clear_stencil);
+    safe fn glClear(mask: GLbitfield) => with_ctx_list(move |c| c.clear(mask));
+    safe fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list(move |c| c.viewport(x, y, width, height));
+    safe fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list(move |c| c.scissor(x, y, width, height));
+    safe fn glDepthRange(near_val: GLclampd, far_val: GLclampd) => with_ctx_list(move |c| c.depth_range(near_val, far_val));
+    safe fn glDepthFunc(func: GLenum) => set_state(CompareFunc::from_gl(func), |c| &mut c.state.depth_func);
+    safe fn glDepthMask(flag: GLboolean) => set_state(Ok(gl_bool(flag)), |c| &mut c.state.depth_mask);
+    safe fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) => set_state(Ok([red, green, blue, alpha].map(gl_bool)), |c| &mut c.state.color_mask);
+    safe fn glShadeModel(mode: GLenum) => set_state(shade_model(mode), |c| &mut c.state.shade_model);
+    safe fn glCullFace(mode: GLenum) => set_state(Face::from_gl(mode), |c| &mut c.state.cull_face);
+    safe fn glFrontFace(mode: GLenum) => set_state(front_ccw(mode), |c| &mut c.state.front_ccw);
 }
 
 /// glHint (stored; the rasterizer ignores hints, as llvmpipe does).

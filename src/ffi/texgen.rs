@@ -4,6 +4,7 @@
 #![allow(non_snake_case)]
 
 use super::enums::*;
+use super::families::c_fns;
 use super::lighting::read4;
 use super::types::*;
 use super::with_ctx;
@@ -26,60 +27,6 @@ fn texgen(coord: GLenum, pname: GLenum, p: [f32; 4]) {
     })
 }
 
-/// glTexGenf.
-#[no_mangle]
-pub extern "C" fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) {
-    texgen(coord, pname, [param, 0.0, 0.0, 0.0])
-}
-
-/// glTexGeni.
-#[no_mangle]
-pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
-    texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glTexGend.
-#[no_mangle]
-pub extern "C" fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) {
-    texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0])
-}
-
-/// glTexGenfv.
-///
-/// # Safety
-/// `params` must be null or point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
-        texgen(coord, pname, p)
-    }
-}
-
-/// glTexGeniv.
-///
-/// # Safety
-/// `params` must be null or point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
-        texgen(coord, pname, p.map(|v| v as f32))
-    }
-}
-
-/// glTexGendv.
-///
-/// # Safety
-/// `params` must be null or point to as many values as `pname` takes.
-#[no_mangle]
-pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
-    // SAFETY: the caller promises the values `pname` takes.
-    if let Some(p) = unsafe { read4(params, texgen_count(pname)) } {
-        texgen(coord, pname, p.map(|v| v as f32))
-    }
-}
-
 /// Reads a texgen value of the active unit and writes it converted by `conv`.
 ///
 /// # Safety
@@ -97,34 +44,18 @@ unsafe fn get_texgen<T>(coord: GLenum, pname: GLenum, params: *mut T, conv: impl
     }
 }
 
-/// glGetTexGenfv.
-///
-/// # Safety
-/// `params` must be null or writable for the values `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
-    // SAFETY: forwarded from the caller.
-    unsafe { get_texgen(coord, pname, params, |v| v as f32) }
-}
-
-/// glGetTexGeniv (planes truncate to integers, as Mesa's `(GLint)` casts do).
-///
-/// # Safety
-/// `params` must be null or writable for the values `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) {
-    // SAFETY: forwarded from the caller.
-    unsafe { get_texgen(coord, pname, params, |v| v as i32) }
-}
-
-/// glGetTexGendv.
-///
-/// # Safety
-/// `params` must be null or writable for the values `pname` returns.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) {
-    // SAFETY: forwarded from the caller.
-    unsafe { get_texgen(coord, pname, params, |v| v) }
+// glTexGen: glTexGeni/f/d set `(param, 0, 0, 0)`, the vector forms read as many values as
+// `pname` takes. glGetTexGeniv truncates planes to integers, as Mesa's `(GLint)` casts do.
+c_fns! {
+    safe fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) => texgen(coord, pname, [param, 0.0, 0.0, 0.0]);
+    safe fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) => texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0]);
+    safe fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) => texgen(coord, pname, [param as f32, 0.0, 0.0, 0.0]);
+    unsafe fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) => if let Some(p) = read4(params, texgen_count(pname)) { texgen(coord, pname, p) };
+    unsafe fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) => if let Some(p) = read4(params, texgen_count(pname)) { texgen(coord, pname, p.map(|v| v as f32)) };
+    unsafe fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) => if let Some(p) = read4(params, texgen_count(pname)) { texgen(coord, pname, p.map(|v| v as f32)) };
+    unsafe fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) => get_texgen(coord, pname, params, |v| v as f32);
+    unsafe fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) => get_texgen(coord, pname, params, |v| v as i32);
+    unsafe fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) => get_texgen(coord, pname, params, |v| v);
 }
 
 /// glClipPlane: the equation is converted to f32 and moved to eye space.

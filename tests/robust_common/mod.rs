@@ -5,6 +5,9 @@
 //! argument values.
 #![allow(dead_code)]
 
+#[path = "../../tools/ffi_expand.rs"]
+mod ffi_expand;
+
 use softgl::ffi::enums::*;
 use softgl::ffi::glext_enums::*;
 use softgl::ffi::osmesa::*;
@@ -246,13 +249,18 @@ pub fn functions() -> Vec<Func> {
         .collect();
     files.sort();
     for path in files {
-        let text = std::fs::read_to_string(&path).unwrap();
+        let text = ffi_expand::expand(&std::fs::read_to_string(&path).unwrap());
         let mut rest = text.as_str();
         while let Some(i) = rest.find("extern \"C\" fn ") {
             rest = &rest[i + "extern \"C\" fn ".len()..];
             let open = rest.find('(').unwrap();
             let name = rest[..open].trim().to_string();
             let close = rest.find(')').unwrap();
+            // The `$name` of a macro definition (src/ffi/families.rs) declares nothing.
+            if name.starts_with('$') {
+                rest = &rest[close..];
+                continue;
+            }
             let params: Vec<Kind> = rest[open + 1..close]
                 .split(',')
                 .filter(|p| p.contains(':'))
