@@ -34,7 +34,6 @@
 //! `docs/llvmpipe-rules.md` (cited in module docs as "docs/llvmpipe-rules.md §n") and, for
 //! framebuffer objects, blits and multisampling, in `docs/fbo-rules.md`.
 
-
 pub mod context;
 pub mod cpu;
 pub mod draw;

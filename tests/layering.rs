@@ -153,7 +153,8 @@ fn grouped_use_modules(text: &str) -> BTreeSet<String> {
         let code = line.split("//").next().unwrap_or("").trim();
         if depth == 0 {
             if code.starts_with("use crate::{") || code.starts_with("pub use crate::{") {
-                depth = code.matches('{').count() - code.matches('}').count().min(code.matches('{').count());
+                depth = code.matches('{').count()
+                    - code.matches('}').count().min(code.matches('{').count());
             }
             continue;
         }

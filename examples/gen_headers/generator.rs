@@ -336,12 +336,7 @@ fn check_file_table(ffi: &Path) -> Result<(), String> {
         }
     }
     for (f, _) in SOURCES {
-        if !present.iter().any(|p| p == f)
-            || !ffi
-                .join("..")
-                .join(source_path(f)[4..].to_string())
-                .exists()
-        {
+        if !present.iter().any(|p| p == f) || !ffi.join("..").join(&source_path(f)[4..]).exists() {
             errors.push(format!(
                 "SOURCES lists {}, which does not exist",
                 source_path(f)
