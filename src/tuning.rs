@@ -149,7 +149,7 @@ impl Tuning {
             Duration::from_micros(int(k).map_or(d, |v| v.clamp(0, 1_000_000) as u64))
         };
         Tuning {
-            isa: text("SOFTGL_ISA").filter(|v| !v.is_empty()),
+            isa: text(ISA_VAR).filter(|v| !v.is_empty()),
             threads: size("SOFTGL_THREADS")
                 .filter(|&n| n >= 1)
                 .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),

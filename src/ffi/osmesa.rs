@@ -298,7 +298,7 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
                     eprintln!(
                         "softgl tuning (instruction set in effect: {}):\n{}",
                         crate::cpu::level().name(),
-                        crate::tuning::tuning().report()
+                        crate::tuning::tuning().report().trim_end()
                     );
                 });
                 // SAFETY: no thread has this context current (checked above).
