@@ -194,23 +194,24 @@ pub fn supported_levels() -> Vec<Level> {
         .collect()
 }
 
-/// The level the library runs: the best the CPU has within the cap `SOFTGL_ISA` (read
-/// once; an unknown value is reported on stderr once and ignored).
+/// The level the library runs: the best the CPU has within the cap `SOFTGL_ISA`
+/// ([`crate::tuning::Tuning::isa`]; an unknown value is reported on stderr once and ignored).
 #[inline]
 pub fn level() -> Level {
     static LEVEL: OnceLock<Level> = OnceLock::new();
     *LEVEL.get_or_init(|| {
         let cpu = cpu_features();
-        let cap = match std::env::var("SOFTGL_ISA") {
-            Ok(v) if !v.is_empty() => Level::parse(&v).unwrap_or_else(|| {
+        let cap = match &crate::tuning::tuning().isa {
+            Some(v) => Level::parse(v).unwrap_or_else(|| {
                 let names: Vec<_> = Level::ALL.iter().map(|l| l.name()).collect();
                 eprintln!(
-                    "softgl: SOFTGL_ISA={v:?} is not one of {}; using the CPU's best",
+                    "softgl: {}={v:?} is not one of {}; using the CPU's best",
+                    crate::tuning::ISA_VAR,
                     names.join(", ")
                 );
                 Level::Avx512
             }),
-            _ => Level::Avx512,
+            None => Level::Avx512,
         }
         .features();
         Level::best_within(Features {
@@ -253,26 +254,19 @@ pub fn avx512() -> bool {
 /// The `GALLIUM_OVERRIDE_CPU_CAPS` that pins llvmpipe to this [`level`]'s arithmetic, for
 /// the harnesses that compare against it: `SOFTGL_REF_CPU_CAPS` when set (empty for none),
 /// else `sse4.1` (no AVX, AVX2 or FMA, so nothing fuses) for a level without FMA, else
-/// none.
+/// none ([`crate::tuning::Tuning::ref_cpu_caps`]).
 pub fn reference_cpu_caps() -> Option<String> {
-    match std::env::var("SOFTGL_REF_CPU_CAPS") {
-        Ok(v) => Some(v).filter(|v| !v.is_empty()),
-        Err(_) => (!level().fused()).then(|| "sse4.1".to_string()),
+    match &crate::tuning::tuning().ref_cpu_caps {
+        Some(v) => Some(v.clone()).filter(|v| !v.is_empty()),
+        None => (!level().fused()).then(|| "sse4.1".to_string()),
     }
 }
 
 /// How many threads rasterize large draws: `SOFTGL_THREADS` (1 turns threading off), else
-/// the machine's cores. Images are byte-identical either way: every pixel is shaded by one
-/// thread, in primitive order.
+/// the machine's cores ([`crate::tuning::Tuning::threads`]). Images are byte-identical
+/// either way: every pixel is shaded by one thread, in primitive order.
 pub fn threads() -> usize {
-    static N: OnceLock<usize> = OnceLock::new();
-    *N.get_or_init(|| {
-        std::env::var("SOFTGL_THREADS")
-            .ok()
-            .and_then(|v| v.parse::<usize>().ok())
-            .filter(|&n| n >= 1)
-            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-    })
+    crate::tuning::tuning().threads
 }
 
 #[cfg(test)]

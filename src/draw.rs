@@ -525,9 +525,8 @@ impl TriPipe<'_> {
     /// the AVX2 setup, without two-sided colours or llvmpipe's polygon offset (both look
     /// at a triangle's vertices after setup), and `SOFTGL_SETUP8=0` turns it off for A/B.
     fn queue_ok(&self) -> bool {
-        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-        let on = *ON.get_or_init(|| std::env::var("SOFTGL_SETUP8").as_deref() != Ok("0"));
-        on && self.setup.is_avx2()
+        crate::tuning::tuning().setup8
+            && self.setup.is_avx2()
             && self.back.is_none()
             && self.lp_offset.is_none()
             && self.nvary <= QUEUE_VARY
@@ -740,19 +739,10 @@ const BLOCK: usize = 32;
 const SPLIT_MAX_AREA: f64 = 32.0;
 
 /// Triangles a draw that may be split sets up the ordinary way first, to measure their
-/// boxes (`SOFTGL_SPLIT_PROBE` for measurements; at most a section).
+/// boxes (`SOFTGL_SPLIT_PROBE` for measurements, default 1024; at most a section).
 fn split_probe() -> usize {
-    static P: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
-    *P.get_or_init(|| {
-        std::env::var("SOFTGL_SPLIT_PROBE")
-            .ok()
-            .and_then(|v| v.parse::<usize>().ok())
-            .unwrap_or(SPLIT_PROBE)
-    })
+    crate::tuning::tuning().split_probe
 }
-
-/// [`split_probe`]'s default.
-const SPLIT_PROBE: usize = 1024;
 
 /// A draw in feedback or selection mode: the vertex stage, then the draw module's
 /// primitive stages into the feedback buffer or the hit record; nothing is rasterized.

@@ -59,3 +59,4 @@ extern crate self as softgl;
 #[path = "../tests/small_stack/scene.rs"]
 mod small_stack;
 pub mod texture;
+pub mod tuning;

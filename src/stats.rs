@@ -1,5 +1,6 @@
 //! Counters of the work the pipeline did and skipped, readable by tests and printed at
-//! context destruction when `SOFTGL_STATS=1`.
+//! context destruction when `SOFTGL_STATS=1` (after the knobs in effect, printed once:
+//! [`crate::tuning::Tuning::report`]).
 
 /// Work counters of one context (cumulative since creation or the last reset).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

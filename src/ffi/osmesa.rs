@@ -291,7 +291,16 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
         // Claims (made under the LIVE lock) are over; if another thread has it current,
         // that thread frees it when it lets go. Do not touch `c` after this otherwise.
         if c.owner.fetch_or(ORPHAN, Ordering::AcqRel) == 0 {
-            if std::env::var_os("SOFTGL_STATS").is_some_and(|v| v != "0") {
+            if crate::tuning::tuning().stats {
+                // The knobs in effect, once per process, before the first counters.
+                static TUNING_SHOWN: std::sync::Once = std::sync::Once::new();
+                TUNING_SHOWN.call_once(|| {
+                    eprintln!(
+                        "softgl tuning (instruction set in effect: {}):\n{}",
+                        crate::cpu::level().name(),
+                        crate::tuning::tuning().report().trim_end()
+                    );
+                });
                 // SAFETY: no thread has this context current (checked above).
                 eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
             }

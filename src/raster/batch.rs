@@ -35,85 +35,15 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
 
-/// Rows per band (even, so 2x2 quads stay inside one band) unless `SOFTGL_BAND_ROWS`
-/// says otherwise ([`Tuning`]).
-pub const BAND_ROWS: usize = 32;
 /// Pixels of triangle boxes that make a batch worth splitting over threads.
 const PARALLEL_WORK: i64 = 32 * 1024;
-/// Triangles a batch holds at most.
-const MAX_BATCH: usize = 4096;
 /// Triangles of a draw's first threaded batch (later ones double up to the maximum): the
 /// pool waits while it is set up. Measured (22:20, 2 threads, 5 interleaved runs): 4096 →
 /// 512 changed sprites 512² 11.87 → 11.81 ms, immediate_100k 1024² 13.28 → 12.87 ms, small_tris
 /// 1024² 17.06 → 16.85 ms (within the noise, never worse).
 const FIRST_BATCH: usize = 512;
-/// Pixels of triangle boxes after which a batch is handed to the pool. Measured (17:57,
-/// quiet machine, 2 threads, 1024²): 1M px → 32M px took blend_quads 29.5 → 20.6 ms,
-/// depth_back_to_front 12.2 → 9.5, depth_front_to_back 5.0 → 3.5, sprites 32.9 → 29.5;
-/// small-triangle draws are bounded by `MAX_BATCH` first and did not change.
-const MAX_WORK: i64 = 1 << 25;
-/// Single-threaded, triangles whose box covers at least this many pixels are batched and
-/// drawn band by band, so that a band's colour and depth rows stay in the cache while
-/// every triangle of the batch is drawn into them (at 1024x1024 the buffers are 4 MB each,
-/// twice the L2 cache); smaller ones are drawn at once.
-const BAND_AREA: i64 = 4096;
 /// Single-threaded, pixels of triangle boxes after which a batch is drawn.
 const MAX_WORK_LOCAL: i64 = 1 << 26;
-
-/// Microseconds a pool task keeps polling for the next batch of the same draw thread.
-const POOL_STAY_US: u64 = 2000;
-/// Microseconds the draw thread polls for the batch in flight before sleeping.
-const POOL_SPIN_US: u64 = 500;
-
-/// The batching constants, read once; the environment variables `SOFTGL_BAND_ROWS`,
-/// `SOFTGL_MAX_WORK`, `SOFTGL_BAND_AREA` and `SOFTGL_MAX_BATCH` override them for measurements (the images
-/// are the same for any values: each pixel still sees its fragments in primitive order).
-#[derive(Clone, Copy, Debug)]
-struct Tuning {
-    /// Rows per band (even).
-    band_rows: usize,
-    /// Threaded: pixels of boxes after which a batch goes to the pool.
-    max_work: i64,
-    /// Single-threaded: the box size from which triangles are batched into bands.
-    band_area: i64,
-    /// Triangles a batch holds at most.
-    max_batch: usize,
-    /// Whether the draw's thread draws bands of the batch in flight while it waits for it
-    /// (and the pool leaves it a core); `SOFTGL_POOL_HELP=0` turns this off for A/B.
-    help: bool,
-    /// Whether triangles that make an axis-aligned rectangle with bit-identical planes are
-    /// drawn as one ([`pair`]); `SOFTGL_PAIR=0` turns this off for A/B.
-    pair: bool,
-    /// How long a pool task polls for the draw thread's next batch after drawing one
-    /// (`SOFTGL_POOL_STAY_US`, 0 = return at once).
-    stay: Duration,
-    /// How long the draw thread polls for the batch in flight before it sleeps
-    /// (`SOFTGL_POOL_SPIN_US`).
-    wait_spin: Duration,
-}
-
-/// The batching constants ([`Tuning`]).
-fn tuning() -> Tuning {
-    static T: std::sync::OnceLock<Tuning> = std::sync::OnceLock::new();
-    *T.get_or_init(|| {
-        let var = |k: &str| std::env::var(k).ok().and_then(|v| v.parse::<i64>().ok());
-        Tuning {
-            band_rows: var("SOFTGL_BAND_ROWS")
-                .map_or(BAND_ROWS, |v| (v.clamp(2, 4096) as usize) & !1),
-            max_work: var("SOFTGL_MAX_WORK").map_or(MAX_WORK, |v| v.max(1)),
-            band_area: var("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
-            help: var("SOFTGL_POOL_HELP") != Some(0),
-            max_batch: var("SOFTGL_MAX_BATCH").map_or(MAX_BATCH, |v| v.clamp(1, 1 << 20) as usize),
-            pair: var("SOFTGL_PAIR") != Some(0),
-            stay: Duration::from_micros(
-                var("SOFTGL_POOL_STAY_US").map_or(POOL_STAY_US, |v| v.clamp(0, 1_000_000) as u64),
-            ),
-            wait_spin: Duration::from_micros(
-                var("SOFTGL_POOL_SPIN_US").map_or(POOL_SPIN_US, |v| v.clamp(0, 1_000_000) as u64),
-            ),
-        }
-    })
-}
 
 /// A value alone on its 128 bytes (two cache lines, which AMD and Intel prefetch as a
 /// pair): a thread that polls it is not slowed down by another thread writing its
@@ -359,7 +289,7 @@ impl Job {
         // Only a `Task::Start` is handed over without the draw thread waiting for it later;
         // the next task waits until it has run (the pool thread is up by then).
         if self.busy.load(Ordering::Acquire) {
-            self.wait_done(tuning().wait_spin);
+            self.wait_done(crate::tuning::tuning().pool_spin);
         }
         let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
         slot.busy = true;
@@ -486,8 +416,10 @@ pub struct Rasterizer<'a, 'f> {
     region: [i64; 4],
     nvary: usize,
     threads: bool,
-    /// The batching constants.
-    tune: Tuning,
+    /// The batching knobs (bands, batch limits, pool timing: [`crate::tuning`]); the
+    /// images are the same for any values, each pixel still sees its fragments in
+    /// primitive order.
+    tune: &'static crate::tuning::Tuning,
     /// The batch being filled.
     batch: Batch,
     /// The other batch, `None` while it is in flight.
@@ -612,7 +544,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let threads = crate::cpu::threads() > 1 && rayon::current_thread_index().is_none();
         let pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
         let [mut batch, mut spare] = pool.batches;
-        let tune = tuning();
+        let tune = crate::tuning::tuning();
         let nb = fb.height.div_ceil(tune.band_rows);
         for b in [&mut batch, &mut spare] {
             b.clear();
@@ -643,10 +575,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     /// starts (a thread is made, or a sleeping one wakes, a good part of a millisecond on
     /// this kind of machine) while it sets them up. `SOFTGL_POOL_START=0` turns this off.
     pub fn start_pool(&self) {
-        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-        let on = *ON.get_or_init(|| std::env::var("SOFTGL_POOL_START").as_deref() != Ok("0"));
-        if on && self.threads && self.inflight.is_none() && !self.job.busy.load(Ordering::Acquire) {
-            self.job.hand_over(Task::Start, 1, self.tune.stay);
+        if self.tune.pool_start
+            && self.threads
+            && self.inflight.is_none()
+            && !self.job.busy.load(Ordering::Acquire)
+        {
+            self.job.hand_over(Task::Start, 1, self.tune.pool_stay);
         }
     }
 
@@ -805,7 +739,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         Some(InFlight {
             work: Some(work),
             job: Arc::clone(&self.job),
-            spin: self.tune.wait_spin,
+            spin: self.tune.pool_spin,
             fb: None,
         })
     }
@@ -816,10 +750,10 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let Some(work) = self.inflight.as_ref() else {
             return;
         };
-        if self.tune.help {
+        if self.tune.pool_help {
             work.help();
         }
-        self.job.wait_done(self.tune.wait_spin);
+        self.job.wait_done(self.tune.pool_spin);
         // Taken only now, so that a panic above still leaves `Drop` waiting for the job.
         // The job dropped its handle before it reported done.
         let mut b = reclaim(self.inflight.take(), stats);
@@ -858,9 +792,14 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         });
         self.inflight = Some(Arc::clone(&work));
         let threads = crate::cpu::threads();
-        let helpers = if self.tune.help { threads - 1 } else { threads }.max(1);
+        let helpers = if self.tune.pool_help {
+            threads - 1
+        } else {
+            threads
+        }
+        .max(1);
         self.job
-            .hand_over(Task::Bands(work), helpers, self.tune.stay);
+            .hand_over(Task::Bands(work), helpers, self.tune.pool_stay);
     }
 }
 

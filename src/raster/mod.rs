@@ -167,12 +167,11 @@ pub(crate) fn prefetch_row(
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn narrow_blocks() -> bool {
-    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
     #[cfg(test)]
     if tests::SPANS_ONLY.with(|s| s.get()) {
         return false;
     }
-    *ON.get_or_init(|| std::env::var("SOFTGL_NARROW").as_deref() != Ok("0"))
+    crate::tuning::tuning().narrow
 }
 
 /// The row walk for the AVX2 span shader: picks the span shader's variant once per

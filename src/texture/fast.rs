@@ -21,7 +21,6 @@ use super::sample::INV_255;
 use super::{fast_avx2, wrap, Filter, Level, UnitPlan};
 use crate::fragment::blend::Lanes;
 use crate::fragment::span::{unorm8, LANES};
-use std::sync::OnceLock;
 
 /// How one channel group (RGB or alpha) of the environment's result is formed; `t` is the
 /// texture value, `f` the fragment's primary colour (the previous unit's result, since the
@@ -49,15 +48,13 @@ pub struct FastEnv {
 
 /// Whether the fast path may be used (`SOFTGL_TEX_PATH=general` turns it off).
 pub fn enabled() -> bool {
-    static ON: OnceLock<bool> = OnceLock::new();
-    *ON.get_or_init(|| std::env::var("SOFTGL_TEX_PATH").map_or(true, |v| v != "general"))
+    crate::tuning::tuning().tex_path != crate::tuning::TexPath::General
 }
 
 /// Whether the texture fast path keeps a chunk in registers (`raster::textured::vec8`);
 /// `SOFTGL_TEX_PATH=array` keeps the array walk (to compare the two).
 pub fn vec8_enabled() -> bool {
-    static ON: OnceLock<bool> = OnceLock::new();
-    *ON.get_or_init(|| std::env::var("SOFTGL_TEX_PATH").map_or(true, |v| v != "array"))
+    crate::tuning::tuning().tex_path != crate::tuning::TexPath::Array
 }
 
 impl FastEnv {

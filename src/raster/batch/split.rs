@@ -26,24 +26,17 @@ use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use std::cell::UnsafeCell;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
-use std::sync::{Mutex, OnceLock};
+use std::sync::Mutex;
 use std::time::Duration;
 
-/// Triangles per section unless `SOFTGL_GEOM_SECTION` says otherwise.
-const GEOM_SECTION: usize = 4096;
 /// Sections set up ahead of the batch being drawn, at most (the ring of batches).
 const RING: usize = 4;
 
 /// Triangles per section of a split draw: `SOFTGL_GEOM_SECTION` (0 turns the split off),
-/// else 4096. A draw is split when it has at least two sections.
+/// else 4096 ([`crate::tuning::Tuning::geom_section`]). A draw is split when it has at
+/// least two sections.
 pub fn geom_section() -> usize {
-    static S: OnceLock<usize> = OnceLock::new();
-    *S.get_or_init(|| {
-        std::env::var("SOFTGL_GEOM_SECTION")
-            .ok()
-            .and_then(|v| v.parse::<usize>().ok())
-            .map_or(GEOM_SECTION, |v| v.min(1 << 20))
-    })
+    crate::tuning::tuning().geom_section
 }
 
 /// One section's set-up triangles, binned into bands the way the [`Rasterizer`] bins a
@@ -385,8 +378,9 @@ impl Rasterizer<'_, '_> {
             // panic) waits until the pool task has called `f` and returned, before `side`
             // and what it borrows go out of scope.
             let f: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(f) };
-            let _wait = WaitJob(&self.job, self.tune.wait_spin);
-            self.job.hand_over(Task::Side(SideFn(f)), 1, self.tune.stay);
+            let _wait = WaitJob(&self.job, self.tune.pool_spin);
+            self.job
+                .hand_over(Task::Side(SideFn(f)), 1, self.tune.pool_stay);
             let mut state = init();
             shared.work(&mut state, &geom, false, stats);
         }
