@@ -5,7 +5,9 @@
 //! context is the GL state machine: plain state data, named objects (buffers) and the
 //! [`framebuffer`] the OSMesa user buffer is copied from on glFlush/glFinish.
 //!
-//! A draw call flows through the stages in lecture order: [`geometry::fetch`] reads vertices
+//! At a draw, the context gathers its state for [`plan::build`], the one translation from
+//! GL state to pipeline values, and [`render`] runs the resulting plan. A draw call flows
+//! through the stages in lecture order: [`geometry::fetch`] reads vertices
 //! (immediate mode, client arrays, buffer objects), [`fixed_function`] transforms them into
 //! clip space, [`geometry::assemble`] builds triangles in llvmpipe's vertex order,
 //! [`geometry::clip`] clips them homogeneously, [`geometry::setup`] snaps them to 1/256 pixel
@@ -19,7 +21,6 @@
 
 pub mod context;
 pub mod cpu;
-pub mod draw;
 pub mod ffi;
 pub mod fixed_function;
 pub mod fragment;
@@ -29,7 +30,9 @@ pub mod gl;
 pub mod memory;
 pub mod pipe;
 pub mod pixels;
+pub mod plan;
 pub mod raster;
+pub mod render;
 pub mod stats;
 #[cfg(test)]
 mod test_rng;

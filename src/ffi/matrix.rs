@@ -263,11 +263,11 @@ pub extern "C" fn glOrtho(
 /// glPushMatrix.
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_ctx_list(move |c| c.current_stack().push())
+    with_ctx_list(move |c| c.push_matrix())
 }
 
 /// glPopMatrix.
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_ctx_list(move |c| c.current_stack().pop())
+    with_ctx_list(move |c| c.pop_matrix())
 }

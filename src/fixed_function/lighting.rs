@@ -29,7 +29,7 @@
 use super::gallivm_math::{pow, rsq};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
-use crate::context::state::{Cap, Caps};
+use crate::pipe::{Cap, Caps};
 use crate::pipe::{LightingState, Material, Tracked, MAX_LIGHTS};
 
 /// `DP3` as llvmpipe lowers it: highest component first.

@@ -4,7 +4,6 @@
 use super::batch::Rasterizer;
 use super::lines::{raster_line, raster_point, screen_interp, LineStipple};
 use super::stipple::stippled_triangle;
-use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
@@ -14,6 +13,7 @@ use crate::geometry::unfilled::{
     EDGE_0, EDGE_1, EDGE_2,
 };
 use crate::geometry::{ClipVertex, Viewport};
+use crate::pipe::{Cap, Caps};
 use crate::pipe::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::stats::Stats;
 use crate::texture::shadow::FLOAT_BITS;
