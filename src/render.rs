@@ -15,9 +15,9 @@ use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant}
 use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{ClipMask, ClipVertex, Viewport};
-use crate::pipe::{Cap, Caps, Material, Primitive, RasterState};
+use crate::pipe::{Material, Primitive, RasterState};
 use crate::raster::batch::{geom_section, Binner, InFlight, Rasterizer, TriangleSink};
-use crate::raster::prims::{draw_point, LinePlan, PolyPipeline};
+use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
@@ -49,8 +49,8 @@ pub struct DrawPlan<'a> {
     pub depth_bits: u32,
     /// Polygon modes, offsets and stipple.
     pub raster: &'a RasterState,
-    /// The enable bits the primitive stages read (stipples, smoothing, offsets).
-    pub caps: &'a Caps,
+    /// The enables the primitive stages read (stipples, smoothing, offsets).
+    pub prims: PrimEnables,
     /// Feedback or selection mode: nothing is rasterized ([`feedback`]).
     pub feedback: bool,
 }
@@ -87,7 +87,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         point_size: size,
         depth_bits,
         raster,
-        caps,
+        prims,
         feedback: _,
     } = plan;
     let n = indices.map_or(verts.count(), |i| i.len());
@@ -167,7 +167,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                     draw_point(
                         v,
                         if per_vertex { v.psize } else { size },
-                        caps,
+                        prims.point_smooth,
                         nvary,
                         region,
                         &plan,
@@ -207,7 +207,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 lines,
                 point_size: stage.point_atten.is_none().then_some(size),
                 raster,
-                caps,
+                enables: prims,
                 cull,
                 back,
                 depth_bits,
@@ -587,7 +587,6 @@ pub fn feedback<S: VertexSource + ?Sized>(
         }
     };
     let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
-    let caps = plan.caps;
     let stages = crate::geometry::feedback::PrimStages {
         ucp: &stage.ucp,
         viewport: stage.viewport,
@@ -597,11 +596,7 @@ pub fn feedback<S: VertexSource + ?Sized>(
         cull: plan.cull,
         back: stage.two_side().then(|| stage.back_offset()),
         polygon: plan.raster.polygon,
-        offset: [
-            caps.get(Cap::PolygonOffsetFill),
-            caps.get(Cap::PolygonOffsetLine),
-            caps.get(Cap::PolygonOffsetPoint),
-        ],
+        offset: plan.prims.offset,
         // Mesa's private feedback draw context never learns the depth format (its
         // minimum resolvable depth stays 0), so the offset units add nothing.
         depth_bits: 0,

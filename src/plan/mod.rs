@@ -13,7 +13,7 @@ mod fragment;
 pub use fragment::{fragment, FragState};
 
 use crate::fixed_function::fog::FogPlan;
-use crate::fixed_function::lighting::LightPlan;
+use crate::fixed_function::lighting::{LightEnables, LightPlan};
 use crate::fixed_function::matrix::{MatrixStack, IDENTITY};
 use crate::fixed_function::point_size::PointAtten;
 use crate::fixed_function::transform::VertexStage;
@@ -21,9 +21,9 @@ use crate::fragment::MsPass;
 use crate::framebuffer::DepthFormat;
 use crate::geometry::setup::CullMode;
 use crate::geometry::{cpu_has_fma, ClipConvention, Viewport};
-use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::pipe::{Cap, Caps, ClipPlanes, Face, LightingState, RasterState, TexGenState};
-use crate::raster::prims::{point_size, LinePlan, PolyPipeline};
+use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
+use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
 use crate::render::DrawPlan;
 use crate::texture::{TextureState, UnitPlan};
 
@@ -123,7 +123,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     stage.point_atten = PointAtten::new(&s.raster.point);
     stage.light = LightPlan::new(
         s.light,
-        caps,
+        &light_enables(caps),
         s.current_color,
         &modelview,
         Some(mv_flags),
@@ -139,7 +139,8 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     frag.count_samples = s.count_samples;
     // Triangles that take the polygon pipeline (unfilled, smooth, two-sided …) are drawn
     // with the single-sample rules in every plane.
-    let poly = PolyPipeline::needed(s.raster, caps, stage.two_side());
+    let prims = prim_enables(caps);
+    let poly = PolyPipeline::needed(s.raster, &prims, stage.two_side());
     if poly {
         frag.ms = None;
     }
@@ -167,7 +168,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     let nvary = stage.nvary();
     let lines = LinePlan {
         ucp: stage.ucp,
-        ..LinePlan::new(s.raster, caps, nvary)
+        ..LinePlan::new(s.raster, &prims, nvary)
     };
     DrawPlan {
         stage,
@@ -181,7 +182,43 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         point_size: point_size(s.raster),
         depth_bits: depth_bits.max(0) as u32,
         raster: s.raster,
-        caps,
+        prims,
         feedback,
+    }
+}
+
+/// The enables lighting reads.
+pub fn light_enables(caps: &Caps) -> LightEnables {
+    const LIGHTS: [Cap; MAX_LIGHTS] = [
+        Cap::Light0,
+        Cap::Light1,
+        Cap::Light2,
+        Cap::Light3,
+        Cap::Light4,
+        Cap::Light5,
+        Cap::Light6,
+        Cap::Light7,
+    ];
+    LightEnables {
+        lighting: caps.get(Cap::Lighting),
+        lights: LIGHTS.map(|c| caps.get(c)),
+        normalize: caps.get(Cap::Normalize),
+        rescale_normal: caps.get(Cap::RescaleNormal),
+        color_material: caps.get(Cap::ColorMaterial),
+    }
+}
+
+/// The enables the primitive stages read.
+fn prim_enables(caps: &Caps) -> PrimEnables {
+    PrimEnables {
+        point_smooth: caps.get(Cap::PointSmooth),
+        line_smooth: caps.get(Cap::LineSmooth),
+        line_stipple: caps.get(Cap::LineStipple),
+        polygon_stipple: caps.get(Cap::PolygonStipple),
+        offset: [
+            caps.get(Cap::PolygonOffsetFill),
+            caps.get(Cap::PolygonOffsetLine),
+            caps.get(Cap::PolygonOffsetPoint),
+        ],
     }
 }
