@@ -1,4 +1,4 @@
-//! Runs a draw's plan ([`DrawPlan`], made by `crate::plan::build`), stage by stage:
+//! Runs a draw's plan ([`DrawPlan`], made by the plan step, `plan/`), stage by stage:
 //! vertex stage → assembly → clipping → setup → raster.
 //!
 //! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
@@ -21,7 +21,7 @@ use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
-/// What every stage of one draw does, derived from the state once (`crate::plan::build`).
+/// What every stage of one draw does, derived from the state once (by `plan/`).
 pub struct DrawPlan<'a> {
     /// The vertex stage: transforms, user clip planes, lighting, fog, texgen, point
     /// attenuation and the texture units' matrices.

@@ -1,7 +1,7 @@
 //! Per-fragment work: interpolation of the varyings and the fragment operations in GL
 //! order (alpha test, stencil, depth, blend or logic op, colour mask), specialised per draw
 //! by a small [`FragPlan`] that the plan derives from the GL state once per draw
-//! (`crate::plan::fragment`).
+//! (in `plan/fragment.rs`).
 //!
 //! Numbers (llvmpipe-rules §7, §8, §12, §13): every attribute is a plane evaluated per
 //! pixel as `fmuladd(dady, py, fmuladd(dadx, px, a0))`; perspective attributes are
