@@ -497,14 +497,6 @@ pub enum WideType {
 }
 
 impl WideType {
-    /// The wide type of an OSMesaMakeCurrent `type`, `None` for 8-bit types.
-    pub fn from_gl(ty: u32) -> Option<Self> {
-        match ty {
-            crate::gl::enums::GL_UNSIGNED_SHORT => Some(WideType::U16),
-            crate::gl::enums::GL_FLOAT => Some(WideType::F32),
-            _ => None,
-        }
-    }
     /// Bytes per channel.
     pub fn bytes(self) -> usize {
         match self {

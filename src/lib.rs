@@ -12,11 +12,13 @@
 //!    applied here (texture specification, framebuffer objects, display lists, queries,
 //!    pixel packing), with Mesa's error codes and error order. A command that fails changes
 //!    nothing.
-//! 3. **The plan**, [`plan`]: once per draw, the only translation from the state's values
-//!    to the pipeline's: which vertex stages run, how primitives are assembled, which
-//!    fragment operations and texture units are live. The plan is what the engine of a
-//!    later stage compiles.
-//! 4. **The pipeline**, in the order a vertex meets it: [`geometry`] fetches, assembles
+//! 3. **The plan**, [`plan`]: once per draw, the context gathers references to its
+//!    parameter blocks and [`plan::build`] makes the only translation from the state's
+//!    values to the pipeline's: which vertex stages run, how primitives are assembled,
+//!    which fragment operations and texture units are live. The plan is what the engine of
+//!    a later stage compiles.
+//! 4. **The pipeline**, in the order a vertex meets it ([`render`] runs a plan through
+//!    it): [`geometry`] fetches, assembles
 //!    and clips, [`fixed_function`] transforms, lights, fogs and generates texture
 //!    coordinates, [`raster`] walks the covered pixels (in bands, on a thread pool),
 //!    [`fragment`] runs the per-fragment operations, [`texture`] samples, [`pixels`] draws
@@ -24,8 +26,8 @@
 //!    storage. The pipeline never sees a GL token or the GL state.
 //! 5. **The leaves**: [`pipe`] (the vocabulary the plan and the pipeline share: compare
 //!    functions, blend factors, primitives, limits, parameter blocks), [`gl`] (tokens, C
-//!    types, [`gl::error::GlError`]), [`cpu`] (instruction-set detection), [`stats`] and
-//!    [`memory`].
+//!    types, [`gl::error::GlError`]), [`cpu`] (instruction-set detection), [`tuning`]
+//!    (every `SOFTGL_*` knob, read once), [`stats`] and [`memory`].
 //!
 //! # The reference
 //!
@@ -36,7 +38,6 @@
 
 pub mod context;
 pub mod cpu;
-pub mod draw;
 pub mod ffi;
 pub mod fixed_function;
 pub mod fragment;
@@ -46,7 +47,9 @@ pub mod gl;
 pub mod memory;
 pub mod pipe;
 pub mod pixels;
+pub mod plan;
 pub mod raster;
+pub mod render;
 pub mod stats;
 #[cfg(test)]
 mod test_rng;

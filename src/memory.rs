@@ -4,7 +4,7 @@
 //! slow on the virtual machines softgl runs on (about 2.2 µs per 4 KiB page measured,
 //! 0.6–0.7 ms to first touch 2 MiB against 0.07–0.2 ms on one huge page), and a one-frame
 //! program first touches every buffer it draws into. Buffer objects' bytes
-//! ([`crate::context::store::Store`]) and the framebuffer ([`HugeBuf`]) use it; small
+//! (the state's `Store`) and the framebuffer ([`HugeBuf`]) use it; small
 //! buffers, other systems and every buffer whose mapping fails stay on the heap.
 
 use std::ops::{Deref, DerefMut};

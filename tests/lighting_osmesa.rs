@@ -244,7 +244,8 @@ fn ours(v: &[f32], fma: bool, flags: &mut MatFlags) -> [f32; 3] {
         flags.on_scale(v[55], v[55], v[55]);
     }
     let force_eye = std::env::var("SOFTGL_LIGHT_FORCE_EYE").is_ok();
-    let plan = LightPlan::new(&ls, &caps, [1.0; 4], &mv, Some(*flags), force_eye, fma).unwrap();
+    let en = softgl::plan::light_enables(&caps);
+    let plan = LightPlan::new(&ls, &en, [1.0; 4], &mv, Some(*flags), force_eye, fma).unwrap();
     let p = [v[57], v[59], v[58], 1.0]; // the last (provoking) vertex
     let eye = eye_position(&mv, [-0.5, p[1], p[2], 1.0]);
     let n = eye_normal(&plan, [v[47], v[48], v[49]]);

@@ -138,6 +138,31 @@ impl ArrayState {
             .ok_or(GlError::InvalidOperation)
     }
 
+    /// `arr` with the store of its buffer object looked up.
+    pub fn input<'a>(&'a self, arr: &'a ArrayPointer) -> crate::pipe::ArrayInput<'a> {
+        crate::pipe::ArrayInput {
+            arr,
+            data: if arr.buffer != 0 {
+                self.buffer_data(arr.buffer)
+            } else {
+                None
+            },
+        }
+    }
+
+    /// Every array with its buffer object looked up: what a draw hands the vertex fetch.
+    pub fn inputs(&self) -> crate::pipe::VertexArrays<'_> {
+        crate::pipe::VertexArrays {
+            vertex: self.input(&self.vertex),
+            color: self.input(&self.color),
+            normal: self.input(&self.normal),
+            texcoord: std::array::from_fn(|u| self.input(&self.texcoord[u])),
+            edge_flag: self.input(&self.edge_flag),
+            secondary_color: self.input(&self.secondary_color),
+            fog_coord: self.input(&self.fog_coord),
+        }
+    }
+
     /// The store of buffer `name`, if it exists.
     pub fn buffer_data(&self, name: u32) -> Option<&[u8]> {
         self.buffers

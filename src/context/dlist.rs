@@ -448,39 +448,39 @@ impl Context {
         // buffer-object arrays are bounds-checked.
         unsafe {
             if a.color.enabled {
-                if let Some(v) = fetch_attr(a, &a.color, i, true, fill) {
+                if let Some(v) = fetch_attr(a.input(&a.color), i, true, fill) {
                     out.push(VertexOp::Color(v));
                 }
             }
             if a.normal.enabled {
-                if let Some(n) = fetch_attr(a, &a.normal, i, true, [0.0; 4]) {
+                if let Some(n) = fetch_attr(a.input(&a.normal), i, true, [0.0; 4]) {
                     out.push(VertexOp::Normal([n[0], n[1], n[2]]));
                 }
             }
             for (u, arr) in a.texcoord.iter().enumerate() {
                 if arr.enabled {
-                    if let Some(t) = fetch_attr(a, arr, i, false, fill) {
+                    if let Some(t) = fetch_attr(a.input(arr), i, false, fill) {
                         out.push(VertexOp::TexCoord(u as u8, t));
                     }
                 }
             }
             if a.edge_flag.enabled {
-                if let Some(e) = fetch_attr(a, &a.edge_flag, i, false, fill) {
+                if let Some(e) = fetch_attr(a.input(&a.edge_flag), i, false, fill) {
                     out.push(VertexOp::EdgeFlag(e[0] != 0.0));
                 }
             }
             if a.secondary_color.enabled {
-                if let Some(s) = fetch_attr(a, &a.secondary_color, i, true, fill) {
+                if let Some(s) = fetch_attr(a.input(&a.secondary_color), i, true, fill) {
                     out.push(VertexOp::SecondaryColor([s[0], s[1], s[2]]));
                 }
             }
             if a.fog_coord.enabled {
-                if let Some(f) = fetch_attr(a, &a.fog_coord, i, false, fill) {
+                if let Some(f) = fetch_attr(a.input(&a.fog_coord), i, false, fill) {
                     out.push(VertexOp::FogCoord(f[0]));
                 }
             }
             if a.vertex.enabled {
-                if let Some(p) = fetch_attr(a, &a.vertex, i, false, fill) {
+                if let Some(p) = fetch_attr(a.input(&a.vertex), i, false, fill) {
                     out.push(VertexOp::Vertex(p));
                 }
             }

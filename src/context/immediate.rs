@@ -75,7 +75,7 @@ impl Context {
             return;
         }
         let verts = std::mem::take(&mut self.immediate.verts);
-        crate::draw::draw_chunk(self, Primitive::Triangles, &verts);
+        super::draw::draw_chunk(self, Primitive::Triangles, &verts);
         let im = &mut self.immediate;
         im.verts = verts;
         im.verts.clear();

@@ -12,6 +12,7 @@ pub mod accum;
 pub mod arrays;
 pub mod attrib;
 pub mod dlist;
+pub mod draw;
 pub use crate::gl::error;
 pub mod eval;
 pub mod fbo;
@@ -259,7 +260,7 @@ impl Context {
                 .immediate
                 .indexed
                 .then(|| (0..verts.len() as u32).collect());
-            crate::draw::draw_lit(self, mode, &verts, idx.as_deref(), mats.as_deref());
+            draw::draw_lit(self, mode, &verts, idx.as_deref(), mats.as_deref());
             let im = &mut self.immediate;
             let total = std::mem::take(&mut im.streamed) + verts.len();
             im.verts = verts;
@@ -349,7 +350,7 @@ impl Context {
         if !self.dirty || self.target.ptr == 0 {
             return;
         }
-        let wide = crate::framebuffer::WideType::from_gl(self.target.ty);
+        let wide = wide_type(self.target.ty);
         let bpp = fb.format.bytes_per_pixel() * wide.map_or(1, |w| w.bytes());
         let row_px = if self.target.row_length > 0 {
             self.target.row_length as usize
@@ -389,7 +390,7 @@ impl Context {
     /// GL_UNSIGNED_SHORT and GL_FLOAT user buffers.
     pub fn color_bits(&self) -> [i32; 4] {
         let bits = self.visual.format.channel_bits();
-        match crate::framebuffer::WideType::from_gl(self.target.ty) {
+        match wide_type(self.target.ty) {
             Some(t) => bits.map(|b| if b > 0 { 8 * t.bytes() as i32 } else { 0 }),
             None => bits,
         }
@@ -474,6 +475,24 @@ impl Context {
             MatrixMode::Projection => &mut self.matrices.projection,
             MatrixMode::Texture => &mut self.matrices.texture[self.state.active_texture],
             MatrixMode::Color => &mut self.matrices.color,
+        }
+    }
+
+    /// glPushMatrix: GL_STACK_OVERFLOW when the selected stack is full.
+    pub fn push_matrix(&mut self) -> GlResult<()> {
+        if self.current_stack().push() {
+            Ok(())
+        } else {
+            Err(GlError::StackOverflow)
+        }
+    }
+
+    /// glPopMatrix: GL_STACK_UNDERFLOW when the selected stack holds one matrix.
+    pub fn pop_matrix(&mut self) -> GlResult<()> {
+        if self.current_stack().pop() {
+            Ok(())
+        } else {
+            Err(GlError::StackUnderflow)
         }
     }
 
@@ -650,5 +669,15 @@ pub fn clamp01(v: f64) -> f64 {
         v.min(1.0)
     } else {
         0.0
+    }
+}
+
+/// The wide channel type of an OSMesaMakeCurrent `type`, `None` for 8-bit types.
+fn wide_type(ty: u32) -> Option<crate::framebuffer::WideType> {
+    use crate::framebuffer::WideType;
+    match ty {
+        crate::gl::enums::GL_UNSIGNED_SHORT => Some(WideType::U16),
+        crate::gl::enums::GL_FLOAT => Some(WideType::F32),
+        _ => None,
     }
 }

@@ -8,6 +8,7 @@ use crate::ffi::enums::*;
 use crate::ffi::glext_enums::*;
 use crate::ffi::types::GLenum;
 pub use crate::pipe::CompareFunc;
+pub use crate::pipe::{Cap, Caps};
 pub use crate::pipe::{CurrentAttribs, Face, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
 
 impl CompareFunc {
@@ -89,83 +90,6 @@ pub enum MatrixMode {
     Color,
 }
 
-/// The capabilities of glEnable/glDisable/glIsEnabled that GL 1.5 defines.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-#[allow(missing_docs)]
-pub enum Cap {
-    AlphaTest,
-    AutoNormal,
-    Blend,
-    ColorLogicOp,
-    ColorMaterial,
-    ColorSum,
-    CullFace,
-    DepthTest,
-    Dither,
-    Fog,
-    Lighting,
-    LineSmooth,
-    LineStipple,
-    IndexLogicOp,
-    Multisample,
-    Normalize,
-    PointSmooth,
-    PolygonOffsetFill,
-    PolygonOffsetLine,
-    PolygonOffsetPoint,
-    PolygonSmooth,
-    PolygonStipple,
-    RescaleNormal,
-    SampleAlphaToCoverage,
-    SampleAlphaToOne,
-    SampleCoverage,
-    ScissorTest,
-    StencilTest,
-    Texture1D,
-    Texture2D,
-    Texture3D,
-    TextureCubeMap,
-    TexGenS,
-    TexGenT,
-    TexGenR,
-    TexGenQ,
-    Map1Color4,
-    Map1Index,
-    Map1Normal,
-    Map1TexCoord1,
-    Map1TexCoord2,
-    Map1TexCoord3,
-    Map1TexCoord4,
-    Map1Vertex3,
-    Map1Vertex4,
-    Map2Color4,
-    Map2Index,
-    Map2Normal,
-    Map2TexCoord1,
-    Map2TexCoord2,
-    Map2TexCoord3,
-    Map2TexCoord4,
-    Map2Vertex3,
-    Map2Vertex4,
-    ClipPlane0,
-    ClipPlane1,
-    ClipPlane2,
-    ClipPlane3,
-    ClipPlane4,
-    ClipPlane5,
-    ClipPlane6,
-    ClipPlane7,
-    Light0,
-    Light1,
-    Light2,
-    Light3,
-    Light4,
-    Light5,
-    Light6,
-    Light7,
-}
-
 /// Every [`Cap`] with its GL token, in declaration order (index = `Cap as usize`).
 pub const CAPS: &[(Cap, GLenum)] = &[
     (Cap::AlphaTest, GL_ALPHA_TEST),
@@ -240,6 +164,9 @@ pub const CAPS: &[(Cap, GLenum)] = &[
     (Cap::Light7, GL_LIGHT7),
 ];
 
+// The token table names every capability, in order.
+const _: () = assert!(CAPS.len() == crate::pipe::CAP_COUNT);
+
 impl Cap {
     /// Converts a glEnable token.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
@@ -247,32 +174,6 @@ impl Cap {
             .find(|(_, g)| *g == e)
             .map(|(c, _)| *c)
             .ok_or(GlError::InvalidEnum)
-    }
-}
-
-/// The enable bits, indexed by [`Cap`].
-#[derive(Clone, Debug)]
-pub struct Caps([bool; CAPS.len()]);
-
-impl Default for Caps {
-    fn default() -> Self {
-        let mut c = Caps([false; CAPS.len()]);
-        // Mesa's initial state: dithering and multisampling are on (both have no effect).
-        c.set(Cap::Dither, true);
-        c.set(Cap::Multisample, true);
-        c
-    }
-}
-
-impl Caps {
-    /// Whether `cap` is enabled.
-    #[inline]
-    pub fn get(&self, cap: Cap) -> bool {
-        self.0[cap as usize]
-    }
-    /// Enables or disables `cap`.
-    pub fn set(&mut self, cap: Cap, on: bool) {
-        self.0[cap as usize] = on;
     }
 }
 

@@ -10,6 +10,7 @@
 use super::error::{GlError, GlResult};
 use crate::ffi::enums::*;
 use crate::ffi::types::GLenum;
+pub use crate::fixed_function::matrix::plane_times_inverse;
 use crate::fixed_function::matrix::MatrixStack;
 pub use crate::pipe::{ClipPlanes, TexGenMode, TexGenState, TexGenUnit, MAX_CLIP_PLANES};
 
@@ -46,17 +47,6 @@ pub fn coord_index(coord: GLenum) -> GlResult<usize> {
         GL_Q => Ok(3),
         _ => Err(GlError::InvalidEnum),
     }
-}
-
-/// Plane `p` times the inverse of the stack's top matrix (Mesa's
-/// `_mesa_transform_vector(u, p, inv)`): object to eye space with the modelview, eye to
-/// clip space with the projection.
-pub fn plane_times_inverse(modelview: &MatrixStack, p: [f32; 4]) -> [f32; 4] {
-    let mut flags = modelview.top_flags();
-    let m = flags.inverse(&modelview.top().0);
-    std::array::from_fn(|i| {
-        p[0] * m[i * 4] + p[1] * m[i * 4 + 1] + p[2] * m[i * 4 + 2] + p[3] * m[i * 4 + 3]
-    })
 }
 
 impl TexGenState {

@@ -54,10 +54,10 @@ pub(crate) fn draw_arrays(
     let count = count.min((u32::MAX - first as u32) as usize + 1);
     with_arrays(c, |c, arrays| {
         let cur = c.state.current;
-        let fetch = VertexFetcher::new(arrays, &cur);
+        let fetch = VertexFetcher::new(&arrays.inputs(), &cur);
         // SAFETY: enabled client arrays are the program's promise; buffers are bounds-checked.
         let src = unsafe { FetchSource::new(fetch, first as u32, count) };
-        crate::draw::draw(c, mode, &src, None);
+        crate::context::draw::draw(c, mode, &src, None);
     });
     Ok(())
 }
@@ -204,10 +204,10 @@ fn draw_range(
     idx: &[u32],
 ) {
     let cur = c.state.current;
-    let fetch = VertexFetcher::new(arrays, &cur);
+    let fetch = VertexFetcher::new(&arrays.inputs(), &cur);
     // SAFETY: as in draw_arrays.
     let src = unsafe { FetchSource::new(fetch, lo, range) };
-    crate::draw::draw(c, mode, &src, Some(idx));
+    crate::context::draw::draw(c, mode, &src, Some(idx));
 }
 
 /// The `count` 32-bit indices at byte offset `ptr` of the bound element buffer, borrowed
@@ -281,7 +281,7 @@ pub(crate) fn draw_elements(
         with_arrays(c, |c, arrays| draw_range(c, arrays, mode, lo, range, &idx));
         return Ok(());
     }
-    let fetch = VertexFetcher::new(&c.arrays, &c.state.current);
+    let fetch = VertexFetcher::new(&c.arrays.inputs(), &c.state.current);
     let (verts, local): (Vec<VertexIn>, Vec<u32>) = {
         let mut map: HashMap<u32, u32> = HashMap::new();
         let mut v = Vec::new();
@@ -296,7 +296,7 @@ pub(crate) fn draw_elements(
         }
         (v, local)
     };
-    crate::draw::draw(c, mode, verts.as_slice(), Some(&local));
+    crate::context::draw::draw(c, mode, verts.as_slice(), Some(&local));
     Ok(())
 }
 

@@ -175,11 +175,11 @@ c_fns! {
 /// glPushMatrix.
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_ctx_list(move |c| c.current_stack().push())
+    with_ctx_list(move |c| c.push_matrix())
 }
 
 /// glPopMatrix.
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_ctx_list(move |c| c.current_stack().pop())
+    with_ctx_list(move |c| c.pop_matrix())
 }

@@ -29,7 +29,6 @@
 use super::gallivm_math::{pow, rsq};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
-use crate::context::state::{Cap, Caps};
 use crate::pipe::{LightingState, Material, Tracked, MAX_LIGHTS};
 
 /// `DP3` as llvmpipe lowers it: highest component first.
@@ -109,6 +108,21 @@ struct PlannedLight {
     prod: [[[f32; 4]; 3]; 2],
 }
 
+/// The enables lighting reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LightEnables {
+    /// GL_LIGHTING.
+    pub lighting: bool,
+    /// GL_LIGHT0 … GL_LIGHT7.
+    pub lights: [bool; MAX_LIGHTS],
+    /// GL_NORMALIZE.
+    pub normalize: bool,
+    /// GL_RESCALE_NORMAL.
+    pub rescale_normal: bool,
+    /// GL_COLOR_MATERIAL.
+    pub color_material: bool,
+}
+
 /// Everything the per-vertex lighting needs, computed once per draw from the state.
 #[derive(Clone, Debug)]
 pub struct LightPlan {
@@ -155,29 +169,17 @@ impl LightPlan {
     /// point-size attenuation), which moves lighting into eye space.
     pub fn new(
         ls: &LightingState,
-        caps: &Caps,
+        en: &LightEnables,
         current_color: [f32; 4],
         mv: &Mat4,
         mv_flags: Option<MatFlags>,
         other_eye_coords: bool,
         fma: bool,
     ) -> Option<LightPlan> {
-        if !caps.get(Cap::Lighting) {
+        if !en.lighting {
             return None;
         }
-        const LIGHT_CAPS: [Cap; MAX_LIGHTS] = [
-            Cap::Light0,
-            Cap::Light1,
-            Cap::Light2,
-            Cap::Light3,
-            Cap::Light4,
-            Cap::Light5,
-            Cap::Light6,
-            Cap::Light7,
-        ];
-        let enabled: Vec<usize> = (0..MAX_LIGHTS)
-            .filter(|&i| caps.get(LIGHT_CAPS[i]))
-            .collect();
+        let enabled: Vec<usize> = (0..MAX_LIGHTS).filter(|&i| en.lights[i]).collect();
         let model = &ls.model;
         let mut flags = mv_flags.unwrap_or_else(|| MatFlags::from_scratch(&mv.0));
         flags.analyse(&mv.0);
@@ -190,8 +192,8 @@ impl LightPlan {
         let (invtrans, inv) = inverse_transpose_rows(mv, Some(flags));
         let m = &mv.0;
 
-        let normalize = caps.get(Cap::Normalize);
-        let rescale = caps.get(Cap::RescaleNormal);
+        let normalize = en.normalize;
+        let rescale = en.rescale_normal;
         // update_modelview_scale
         let mut inv_scale = 1.0f32;
         if !flags.is_length_preserving() {
@@ -207,7 +209,7 @@ impl LightPlan {
         }
         let normal_scale = (need_eye_coords == rescale).then_some(inv_scale);
 
-        let cm = caps.get(Cap::ColorMaterial);
+        let cm = en.color_material;
         let tracked = if cm {
             [ls.color_material.tracked(0), ls.color_material.tracked(1)]
         } else {
@@ -563,18 +565,22 @@ mod tests {
     use super::*;
     use crate::fixed_function::matrix::IDENTITY;
 
-    fn caps(list: &[Cap]) -> Caps {
-        let mut c = Caps::default();
-        for &x in list {
-            c.set(x, true);
+    /// GL_LIGHTING on, light 0 on when `light0`, colour material when `cm`.
+    fn caps(light0: bool, cm: bool) -> LightEnables {
+        let mut lights = [false; MAX_LIGHTS];
+        lights[0] = light0;
+        LightEnables {
+            lighting: true,
+            lights,
+            color_material: cm,
+            ..Default::default()
         }
-        c
     }
 
     #[test]
     fn default_light0_diffuse() {
         let ls = LightingState::default();
-        let c = caps(&[Cap::Lighting, Cap::Light0]);
+        let c = caps(true, false);
         let plan = LightPlan::new(&ls, &c, [1.0; 4], &IDENTITY, None, false, false).unwrap();
         assert!(
             !plan.need_eye_coords,
@@ -597,7 +603,7 @@ mod tests {
         ls.material[0].emission = [0.1, 0.2, 0.3, 1.0];
         let plan = LightPlan::new(
             &ls,
-            &caps(&[Cap::Lighting]),
+            &caps(false, false),
             [1.0; 4],
             &IDENTITY,
             None,
@@ -609,7 +615,7 @@ mod tests {
         assert_eq!(out.front[2], 0.2f32 * 0.2 + 0.3);
         assert!(LightPlan::new(
             &ls,
-            &Caps::default(),
+            &LightEnables::default(),
             [1.0; 4],
             &IDENTITY,
             None,
@@ -623,7 +629,7 @@ mod tests {
     #[allow(clippy::needless_range_loop)]
     fn color_material_tracks_vertex_colour() {
         let ls = LightingState::default();
-        let c = caps(&[Cap::Lighting, Cap::Light0, Cap::ColorMaterial]);
+        let c = caps(true, true);
         let plan = LightPlan::new(&ls, &c, [1.0; 4], &IDENTITY, None, false, false).unwrap();
         let col = [0.5, 0.25, 1.0, 0.75];
         let out = light_vertex(&plan, [0.0; 4], [0.0, 0.0, 1.0], col);
@@ -646,7 +652,7 @@ mod tests {
             .unwrap();
         ls.set_light(0x4000, 0x1208, &[0.1, 0.0, 0.0, 0.0], &mv)
             .unwrap();
-        let c = caps(&[Cap::Lighting, Cap::Light0]);
+        let c = caps(true, false);
         let plan = LightPlan::new(&ls, &c, [1.0; 4], &IDENTITY, None, false, false).unwrap();
         assert!(plan.need_eye_coords && plan.needs_eye_position());
         let on_axis = light_vertex(&plan, [0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [1.0; 4]);

@@ -5,7 +5,6 @@
 //! multiply and add separately and a different order changes the last bit of a vertex.
 
 use super::mesa_matrix::MatFlags;
-use crate::gl::error::{GlError, GlResult};
 
 /// A column-major 4x4 f32 matrix.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -214,24 +213,24 @@ impl MatrixStack {
             .expect("a matrix stack is never empty");
         (m, f)
     }
-    /// glPushMatrix.
-    pub fn push(&mut self) -> GlResult<()> {
+    /// Pushes a copy of the top; `false` (and nothing changes) when the stack is full.
+    pub fn push(&mut self) -> bool {
         if self.stack.len() >= self.max_depth {
-            return Err(GlError::StackOverflow);
+            return false;
         }
         let top = *self.top();
         self.stack.push(top);
         self.flags.push(self.top_flags());
-        Ok(())
+        true
     }
-    /// glPopMatrix.
-    pub fn pop(&mut self) -> GlResult<()> {
+    /// Pops the top; `false` (and nothing changes) when only one entry is left.
+    pub fn pop(&mut self) -> bool {
         if self.stack.len() <= 1 {
-            return Err(GlError::StackUnderflow);
+            return false;
         }
         self.stack.pop();
         self.flags.pop();
-        Ok(())
+        true
     }
     /// The number of entries (GL_*_STACK_DEPTH).
     pub fn depth(&self) -> usize {
@@ -241,6 +240,17 @@ impl MatrixStack {
     pub fn max_depth(&self) -> usize {
         self.max_depth
     }
+}
+
+/// Plane `p` times the inverse of the stack's top matrix (Mesa's
+/// `_mesa_transform_vector(u, p, inv)`): object to eye space with the modelview, eye to
+/// clip space with the projection.
+pub fn plane_times_inverse(modelview: &MatrixStack, p: [f32; 4]) -> [f32; 4] {
+    let mut flags = modelview.top_flags();
+    let m = flags.inverse(&modelview.top().0);
+    std::array::from_fn(|i| {
+        p[0] * m[i * 4] + p[1] * m[i * 4 + 1] + p[2] * m[i * 4 + 2] + p[3] * m[i * 4 + 3]
+    })
 }
 
 #[cfg(test)]
@@ -263,11 +273,11 @@ mod tests {
     }
 
     #[test]
-    fn stack_errors() {
+    fn stack_limits() {
         let mut s = MatrixStack::new(2);
-        assert_eq!(s.pop(), Err(GlError::StackUnderflow));
-        s.push().unwrap();
-        assert_eq!(s.push(), Err(GlError::StackOverflow));
+        assert!(!s.pop());
+        assert!(s.push());
+        assert!(!s.push());
         assert_eq!(s.depth(), 2);
     }
 

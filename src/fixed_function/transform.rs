@@ -136,7 +136,7 @@ impl VertexStage {
         self.ucp_enabled = enabled;
         for (i, (dst, p)) in self.ucp.iter_mut().zip(eye_planes).enumerate() {
             if enabled & (1 << i) != 0 {
-                *dst = crate::context::texgen_state::plane_times_inverse(projection, *p);
+                *dst = crate::fixed_function::matrix::plane_times_inverse(projection, *p);
             }
         }
     }

@@ -1,6 +1,7 @@
 //! Per-fragment work: interpolation of the varyings and the fragment operations in GL
 //! order (alpha test, stencil, depth, blend or logic op, colour mask), specialised per draw
-//! by a small [`FragPlan`] derived from the GL state once.
+//! by a small [`FragPlan`] that the plan derives from the GL state once per draw
+//! (in `plan/fragment.rs`).
 //!
 //! Numbers (docs/llvmpipe-rules.md §7, §8, §12, §13): every attribute is a plane evaluated per
 //! pixel as `fmuladd(dady, py, fmuladd(dadx, px, a0))`; perspective attributes are
@@ -14,10 +15,8 @@ pub mod simd;
 pub mod simd_tex;
 pub mod span;
 
-use crate::context::state::{Cap, State};
-use crate::framebuffer::{float_to_ubyte, DepthFormat};
-use crate::pipe::{BlendEquation, BlendFactor, LogicOp, StencilFace, StencilOp};
-use crate::pipe::{CompareFunc, ShadeModel};
+use crate::framebuffer::DepthFormat;
+use crate::pipe::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilFace, StencilOp};
 
 /// What the fragment stage does for one draw, derived once from the state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -118,7 +117,8 @@ pub struct StencilFacePlan {
 }
 
 impl StencilFacePlan {
-    fn new(f: &StencilFace) -> Self {
+    /// The plan of one face's stencil state.
+    pub fn new(f: &StencilFace) -> Self {
         let reference = f.reference.clamp(0, 255) as u8;
         let mask = (f.value_mask & 0xFF) as u8;
         StencilFacePlan {
@@ -173,70 +173,6 @@ pub struct BlendPlan {
 }
 
 impl FragPlan {
-    /// Derives the plan from the state and the framebuffer's buffers.
-    pub fn new(state: &State, depth_format: DepthFormat, has_stencil: bool, fma: bool) -> Self {
-        let caps = &state.caps;
-        let fr = &state.frag;
-        let depth =
-            (caps.get(Cap::DepthTest) && depth_format != DepthFormat::None).then_some(DepthPlan {
-                func: state.depth_func,
-                write: state.depth_mask,
-                format: depth_format,
-            });
-        let alpha = (caps.get(Cap::AlphaTest) && fr.alpha_func != CompareFunc::Always)
-            .then(|| (fr.alpha_func, float_to_ubyte(fr.alpha_ref)));
-        let stencil = (caps.get(Cap::StencilTest) && has_stencil).then(|| StencilPlan {
-            front: StencilFacePlan::new(&fr.stencil_front),
-            back: StencilFacePlan::new(&fr.stencil_back),
-        });
-        let logic =
-            (caps.get(Cap::ColorLogicOp) && fr.logic_op != LogicOp::Copy).then_some(fr.logic_op);
-        let b = &fr.blend;
-        let blend = (caps.get(Cap::Blend) && !caps.get(Cap::ColorLogicOp)).then(|| {
-            // The state tracker forces ONE, ONE for MIN and MAX.
-            let fix = |eq: BlendEquation, f: BlendFactor| {
-                if matches!(eq, BlendEquation::Min | BlendEquation::Max) {
-                    BlendFactor::One
-                } else {
-                    f
-                }
-            };
-            BlendPlan {
-                src_rgb: fix(b.eq_rgb, b.src_rgb),
-                dst_rgb: fix(b.eq_rgb, b.dst_rgb),
-                src_a: fix(b.eq_a, b.src_a),
-                dst_a: fix(b.eq_a, b.dst_a),
-                eq_rgb: b.eq_rgb,
-                eq_a: b.eq_a,
-                color: b.color.map(float_to_ubyte),
-            }
-        });
-        // Blending that leaves the source unchanged (ONE, ZERO, ADD) is no blending.
-        let blend = blend.filter(|p| {
-            !(p.src_rgb == BlendFactor::One
-                && p.src_a == BlendFactor::One
-                && p.dst_rgb == BlendFactor::Zero
-                && p.dst_a == BlendFactor::Zero
-                && p.eq_rgb == BlendEquation::Add
-                && p.eq_a == BlendEquation::Add)
-        });
-        FragPlan {
-            depth,
-            flat: state.shade_model == ShadeModel::Flat,
-            color_mask: state.color_write_mask(),
-            fma,
-            alpha,
-            stencil,
-            blend,
-            logic,
-            separate_specular: false,
-            fog: None,
-            count_samples: false,
-            smooth: None,
-            ms: None,
-        }
-    }
-
     /// Whether fragments of this plan can change anything.
     pub fn writes_anything(&self) -> bool {
         self.color_mask.iter().any(|&m| m)

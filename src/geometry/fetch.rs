@@ -5,8 +5,7 @@
 //! Reads from buffer objects are bounds-checked: an element past the end of its buffer
 //! reads as (0, 0, 0, 1) rather than outside the store.
 
-use crate::context::arrays::ArrayState;
-use crate::pipe::{ArrayPointer, DataType};
+use crate::pipe::{ArrayInput, ArrayPointer, DataType, VertexArrays};
 use crate::pipe::{CurrentAttribs, MAX_TEXTURE_UNITS};
 
 /// One vertex as the vertex stage receives it.
@@ -117,14 +116,14 @@ const NULL_PAGE: usize = 4096;
 /// For client-memory arrays (`arr.buffer == 0`) the pointer must be valid for the element,
 /// as the GL API requires of the calling program.
 pub unsafe fn fetch_attr(
-    arrays: &ArrayState,
-    arr: &ArrayPointer,
+    input: ArrayInput<'_>,
     index: u32,
     normalized: bool,
     fill: [f32; 4],
 ) -> Option<[f32; 4]> {
+    let arr = input.arr;
     let data = if arr.buffer != 0 {
-        Some(arrays.buffer_data(arr.buffer)?)
+        Some(input.data?)
     } else {
         None
     };
@@ -300,19 +299,15 @@ struct Source<'a> {
 impl<'a> Source<'a> {
     /// The array `arr` when enabled and readable; `Err(())` when its buffer object is gone
     /// (every element then reads as missing).
-    fn new(arrays: &'a ArrayState, arr: &'a ArrayPointer) -> Option<Result<Self, ()>> {
+    fn new(input: &ArrayInput<'a>) -> Option<Result<Self, ()>> {
+        let arr = input.arr;
         if !arr.enabled {
             return None;
         }
         if arr.buffer == 0 {
             return Some(Ok(Source { arr, data: None }));
         }
-        Some(
-            arrays
-                .buffer_data(arr.buffer)
-                .map(|d| Source { arr, data: Some(d) })
-                .ok_or(()),
-        )
+        Some(input.data.map(|d| Source { arr, data: Some(d) }).ok_or(()))
     }
 
     /// Element `index`, as [`fetch_attr`].
@@ -350,19 +345,19 @@ pub struct VertexFetcher<'a> {
 
 impl<'a> VertexFetcher<'a> {
     /// Resolves the enabled arrays of `arrays`; disabled ones read from `cur`.
-    pub fn new(arrays: &'a ArrayState, cur: &'a CurrentAttribs) -> Self {
+    pub fn new(arrays: &VertexArrays<'a>, cur: &'a CurrentAttribs) -> Self {
         let texcoord: [_; MAX_TEXTURE_UNITS] =
-            std::array::from_fn(|u| Source::new(arrays, &arrays.texcoord[u]));
+            std::array::from_fn(|u| Source::new(&arrays.texcoord[u]));
         VertexFetcher {
             base: VertexIn::with_current([0.0, 0.0, 0.0, 1.0], cur),
             any_texcoord: texcoord.iter().any(Option::is_some),
             texcoord,
-            vertex: Source::new(arrays, &arrays.vertex),
-            color: Source::new(arrays, &arrays.color),
-            normal: Source::new(arrays, &arrays.normal),
-            edge_flag: Source::new(arrays, &arrays.edge_flag),
-            secondary: Source::new(arrays, &arrays.secondary_color),
-            fog_coord: Source::new(arrays, &arrays.fog_coord),
+            vertex: Source::new(&arrays.vertex),
+            color: Source::new(&arrays.color),
+            normal: Source::new(&arrays.normal),
+            edge_flag: Source::new(&arrays.edge_flag),
+            secondary: Source::new(&arrays.secondary_color),
+            fog_coord: Source::new(&arrays.fog_coord),
         }
     }
 
@@ -495,7 +490,11 @@ impl<'a> VertexFetcher<'a> {
 ///
 /// # Safety
 /// As [`fetch_attr`]: enabled client-memory arrays must be valid for `index`.
-pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32) -> VertexIn {
+pub unsafe fn fetch_vertex(
+    arrays: &VertexArrays<'_>,
+    cur: &CurrentAttribs,
+    index: u32,
+) -> VertexIn {
     // SAFETY: forwarded from the caller.
     unsafe { VertexFetcher::new(arrays, cur).fetch(index) }
 }
@@ -503,8 +502,6 @@ pub unsafe fn fetch_vertex(arrays: &ArrayState, cur: &CurrentAttribs, index: u32
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::arrays::BufferObject;
-    use crate::context::store::Store;
 
     /// Element `index` of `arr` component by component with `read_component`, the plain
     /// reading the vector fast paths of `fetch_from` must agree with. `data` is the
@@ -530,20 +527,58 @@ mod tests {
         Some(out)
     }
 
-    /// Array state whose buffer object 1 holds a copy of `bytes` when `in_buffer`.
-    fn arrays_over(bytes: &[u8], in_buffer: bool) -> ArrayState {
-        let mut arrays = ArrayState::default();
-        if in_buffer {
-            let data = Store::copy_of(bytes).unwrap();
-            arrays.buffers.insert(
-                1,
-                Some(BufferObject {
-                    data,
-                    ..Default::default()
-                }),
-            );
+    /// A draw's arrays (initially GL's) and the bytes of buffer object 1, if any.
+    struct Arrays {
+        vertex: ArrayPointer,
+        color: ArrayPointer,
+        normal: ArrayPointer,
+        texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+        edge_flag: ArrayPointer,
+        secondary_color: ArrayPointer,
+        fog_coord: ArrayPointer,
+        buffer: Option<Vec<u8>>,
+    }
+
+    impl Arrays {
+        /// The store of buffer `name` (only 1 exists).
+        fn buffer_data(&self, name: u32) -> Option<&[u8]> {
+            self.buffer.as_deref().filter(|_| name == 1)
         }
-        arrays
+
+        /// `arr` with its buffer's bytes.
+        fn input<'a>(&'a self, arr: &'a ArrayPointer) -> ArrayInput<'a> {
+            ArrayInput {
+                arr,
+                data: self.buffer_data(arr.buffer),
+            }
+        }
+
+        /// What a draw hands the fetch.
+        fn inputs(&self) -> VertexArrays<'_> {
+            VertexArrays {
+                vertex: self.input(&self.vertex),
+                color: self.input(&self.color),
+                normal: self.input(&self.normal),
+                texcoord: std::array::from_fn(|u| self.input(&self.texcoord[u])),
+                edge_flag: self.input(&self.edge_flag),
+                secondary_color: self.input(&self.secondary_color),
+                fog_coord: self.input(&self.fog_coord),
+            }
+        }
+    }
+
+    /// Initial arrays whose buffer object 1 holds a copy of `bytes` when `in_buffer`.
+    fn arrays_over(bytes: &[u8], in_buffer: bool) -> Arrays {
+        Arrays {
+            vertex: ArrayPointer::new(4, DataType::Float),
+            color: ArrayPointer::new(4, DataType::Float),
+            normal: ArrayPointer::new(3, DataType::Float),
+            texcoord: [ArrayPointer::new(4, DataType::Float); MAX_TEXTURE_UNITS],
+            edge_flag: ArrayPointer::new(1, DataType::UByte),
+            secondary_color: ArrayPointer::new(3, DataType::Float),
+            fog_coord: ArrayPointer::new(1, DataType::Float),
+            buffer: in_buffer.then(|| bytes.to_vec()),
+        }
     }
 
     #[test]
@@ -612,7 +647,8 @@ mod tests {
                 edge_flag: next().is_multiple_of(2),
                 ..Default::default()
             };
-            let fetcher = VertexFetcher::new(&arrays, &cur);
+            let inputs = arrays.inputs();
+            let fetcher = VertexFetcher::new(&inputs, &cur);
             let data = arrays.buffer_data(1);
             let origin = [0.0, 0.0, 0.0, 1.0];
             let mut slot = fetcher.base();
@@ -677,7 +713,8 @@ mod tests {
                 };
             let (base, count) = (next() % 24, 1 + next() as usize % 40);
             let cur = crate::pipe::CurrentAttribs::default();
-            let fetcher = VertexFetcher::new(&arrays, &cur);
+            let inputs = arrays.inputs();
+            let fetcher = VertexFetcher::new(&inputs, &cur);
             let a = &arrays.vertex;
             let floats = a.ty == DataType::Float && a.size >= 2;
             let end = a.ptr + (base as usize + count - 1) * a.byte_stride() + a.size as usize * 4;

@@ -6,6 +6,8 @@
 //! (`from_gl`/`to_gl` impls in `context`), so the pipeline, which imports only this module
 //! for its vocabulary, never sees a GL enum.
 
+pub mod arrays;
+pub mod caps;
 pub mod fragment;
 pub mod lighting;
 pub mod primitive;
@@ -13,6 +15,8 @@ pub mod raster;
 pub mod texgen;
 pub mod vertex;
 
+pub use arrays::*;
+pub use caps::*;
 pub use fragment::*;
 pub use lighting::*;
 pub use primitive::*;

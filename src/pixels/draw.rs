@@ -24,7 +24,6 @@ use crate::context::state::Cap;
 use crate::context::Context;
 use crate::fixed_function::fog::FogPlan;
 use crate::fragment::span::unorm8;
-use crate::fragment::FragPlan;
 use crate::geometry::cpu_has_fma;
 use crate::pipe::{CompareFunc, MAX_TEXTURE_UNITS};
 use crate::texture::UnitPlan;
@@ -86,7 +85,8 @@ fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
         return;
     };
     let Some(fbr) = ctx.fb.as_ref() else { return };
-    let mut plan = FragPlan::new(&ctx.state, fbr.depth_format, !fbr.stencil.is_empty(), fma);
+    let mut plan =
+        crate::context::draw::frag_plan(&ctx.state, fbr.depth_format, !fbr.stencil.is_empty(), fma);
     plan.count_samples = ctx.queries.active.is_some();
     ctx.dirty = true;
     ctx.fbo.drawn = true;

@@ -80,7 +80,7 @@ pub fn raster_pos(ctx: &mut Context, v: [f32; 4]) {
     let cur = st.current;
     match LightPlan::new(
         &ctx.light,
-        &st.caps,
+        &crate::plan::light_enables(&st.caps),
         cur.color,
         &mv,
         Some(flags),

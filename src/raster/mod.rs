@@ -444,12 +444,12 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests {
     use super::*;
-    use crate::context::state::{Cap, State};
+    use crate::fragment::{BlendPlan, DepthPlan};
     use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
     use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult};
     use crate::geometry::ClipVertex;
+    use crate::pipe::CompareFunc;
     use crate::pipe::{BlendEquation, BlendFactor};
-    use crate::pipe::{CompareFunc, ShadeModel};
     use std::cell::Cell;
 
     thread_local! {
@@ -493,26 +493,40 @@ mod tests {
         let mut unit = move || next() as f32 / u32::MAX as f32;
         let mut narrow = 0;
         for round in 0..96 {
-            let mut st = State::default();
-            st.caps.set(Cap::DepthTest, round % 4 != 0);
-            st.depth_func =
-                [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3];
-            st.depth_mask = round % 5 != 0;
-            st.shade_model = if round % 6 == 5 {
-                ShadeModel::Flat
+            let depth = (round % 4 != 0).then_some(DepthPlan {
+                func: [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3],
+                write: round % 5 != 0,
+                format: DepthFormat::Z24,
+            });
+            let (src, dst) = if round % 8 >= 6 {
+                (BlendFactor::DstColor, BlendFactor::One)
             } else {
-                ShadeModel::Smooth
+                (BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
             };
-            st.caps.set(Cap::Blend, round % 4 >= 2);
-            let b = &mut st.frag.blend;
-            if round % 8 >= 6 {
-                (b.src_rgb, b.dst_rgb, b.eq_rgb) =
-                    (BlendFactor::DstColor, BlendFactor::One, BlendEquation::Add);
-            } else {
-                (b.src_rgb, b.dst_rgb) = (BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha);
-            }
-            (b.src_a, b.dst_a) = (b.src_rgb, b.dst_rgb);
-            let plan = FragPlan::new(&st, DepthFormat::Z24, false, crate::cpu::isa().fused());
+            let blend = (round % 4 >= 2).then_some(BlendPlan {
+                src_rgb: src,
+                dst_rgb: dst,
+                src_a: src,
+                dst_a: dst,
+                eq_rgb: BlendEquation::Add,
+                eq_a: BlendEquation::Add,
+                color: [0; 4],
+            });
+            let plan = FragPlan {
+                depth,
+                flat: round % 6 == 5,
+                color_mask: [true; 4],
+                fma: crate::cpu::isa().fused(),
+                alpha: None,
+                stencil: None,
+                blend,
+                logic: None,
+                separate_specular: false,
+                fog: None,
+                count_samples: false,
+                smooth: None,
+                ms: None,
+            };
             let persp = round % 2 == 0;
             // Small triangles (boxes of 1 to 6 pixels a side), some crossing the edges of
             // the buffer, some thin and tall.

@@ -4,7 +4,6 @@
 use super::batch::Rasterizer;
 use super::lines::{raster_line, raster_point, screen_interp, LineStipple};
 use super::stipple::stippled_triangle;
-use crate::context::state::{Cap, Caps};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
@@ -25,13 +24,39 @@ pub fn point_size(r: &RasterState) -> f32 {
     r.point.clamped_size().min(MAX_POINT_SIZE)
 }
 
-/// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage under
-/// GL_POINT_SMOOTH, else as llvmpipe's legacy square.
+/// The enables the primitive stages read.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PrimEnables {
+    /// GL_POINT_SMOOTH.
+    pub point_smooth: bool,
+    /// GL_LINE_SMOOTH.
+    pub line_smooth: bool,
+    /// GL_LINE_STIPPLE.
+    pub line_stipple: bool,
+    /// GL_POLYGON_STIPPLE.
+    pub polygon_stipple: bool,
+    /// GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE and GL_POLYGON_OFFSET_POINT.
+    pub offset: [bool; 3],
+}
+
+impl PrimEnables {
+    /// Whether polygon offset is on for polygons drawn as `mode`.
+    pub fn offset(&self, mode: FillMode) -> bool {
+        self.offset[match mode {
+            FillMode::Fill => 0,
+            FillMode::Line => 1,
+            FillMode::Point => 2,
+        }]
+    }
+}
+
+/// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage when
+/// `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
 #[allow(clippy::too_many_arguments)]
 pub fn draw_point(
     v: &ClipVertex,
     size: f32,
-    caps: &Caps,
+    smooth: bool,
     nvary: usize,
     region: [i64; 4],
     plan: &FragPlan,
@@ -39,7 +64,7 @@ pub fn draw_point(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    if caps.get(Cap::PointSmooth) {
+    if smooth {
         super::smooth::point(v, size, nvary, region, plan, units, fb, stats);
     } else {
         raster_point(v, size, nvary, region, plan, units, fb, stats);
@@ -92,19 +117,19 @@ pub struct LinePlan {
 }
 
 impl LinePlan {
-    /// The plan for the current state.
-    pub fn new(r: &RasterState, caps: &Caps, nvary: usize) -> Self {
+    /// The plan for lines of `r` with the enables `e`.
+    pub fn new(r: &RasterState, e: &PrimEnables, nvary: usize) -> Self {
         LinePlan {
             width: r.line.width.clamp(1.0, MAX_LINE_WIDTH),
-            stipple: caps.get(Cap::LineStipple).then_some(LineStipple {
+            stipple: e.line_stipple.then_some(LineStipple {
                 pattern: r.line.stipple_pattern,
                 factor: r.line.stipple_repeat,
                 counter: 0.0,
-                rectangular: caps.get(Cap::LineSmooth),
+                rectangular: e.line_smooth,
             }),
             nvary,
             ucp: [[0.0; 4]; 8],
-            smooth: caps.get(Cap::LineSmooth),
+            smooth: e.line_smooth,
         }
     }
 
@@ -200,8 +225,8 @@ pub struct PolyPipeline<'a> {
     pub point_size: Option<f32>,
     /// Polygon modes, offsets and enables.
     pub raster: &'a RasterState,
-    /// glEnable bits.
-    pub caps: &'a Caps,
+    /// Stipple and offset enables.
+    pub enables: PrimEnables,
     /// Face culling.
     pub cull: CullMode,
     /// Where the back colours start, with two-sided lighting.
@@ -218,18 +243,12 @@ impl PolyPipeline<'_> {
     /// Whether llvmpipe hands triangles of this state to the draw module's pipeline even
     /// when nothing needs clipping (`draw_need_pipeline` with llvmpipe's split of the
     /// rasterizer state, `lp_state_rasterizer.c`).
-    pub fn needed(r: &RasterState, caps: &Caps, two_side: bool) -> bool {
+    pub fn needed(r: &RasterState, e: &PrimEnables, two_side: bool) -> bool {
         let unfilled =
             r.polygon.mode_front != FillMode::Fill || r.polygon.mode_back != FillMode::Fill;
-        let pstipple = caps.get(Cap::PolygonStipple);
-        let lp_pipeline = unfilled
-            || pstipple
-            || caps.get(Cap::LineStipple)
-            || caps.get(Cap::LineSmooth)
-            || caps.get(Cap::PointSmooth);
-        let offset = caps.get(Cap::PolygonOffsetFill)
-            || caps.get(Cap::PolygonOffsetLine)
-            || caps.get(Cap::PolygonOffsetPoint);
+        let pstipple = e.polygon_stipple;
+        let lp_pipeline = unfilled || pstipple || e.line_stipple || e.line_smooth || e.point_smooth;
+        let offset = e.offset.iter().any(|&o| o);
         unfilled || pstipple || (lp_pipeline && (offset || two_side))
     }
 
@@ -277,11 +296,7 @@ impl PolyPipeline<'_> {
         }
         let pol = &self.raster.polygon;
         let mode = fill_mode(det, self.cull.front_ccw, pol.mode_front, pol.mode_back);
-        let offset_on = self.caps.get(match mode {
-            FillMode::Fill => Cap::PolygonOffsetFill,
-            FillMode::Line => Cap::PolygonOffsetLine,
-            FillMode::Point => Cap::PolygonOffsetPoint,
-        });
+        let offset_on = self.enables.offset(mode);
         if offset_on {
             let units = if self.depth_bits == FLOAT_BITS as u32 {
                 float_units(pol.offset_units, [p[0].win[2], p[1].win[2], p[2].win[2]])
@@ -307,7 +322,7 @@ impl PolyPipeline<'_> {
                     top_left: self.cull.top_left,
                 };
                 match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
-                    SetupResult::Draw if self.caps.get(Cap::PolygonStipple) => {
+                    SetupResult::Draw if self.enables.polygon_stipple => {
                         let units = rast.units();
                         let mut target = rast.target(stats).target();
                         stippled_triangle(
@@ -351,7 +366,7 @@ impl PolyPipeline<'_> {
                         draw_point(
                             &p[k],
                             self.point_size.unwrap_or(p[k].psize),
-                            self.caps,
+                            self.enables.point_smooth,
                             nvary,
                             self.region,
                             plan,

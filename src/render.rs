@@ -1,251 +1,96 @@
-//! A draw call, stage by stage: vertex stage → assembly → clipping → setup → raster.
+//! Runs a draw's plan ([`DrawPlan`], made by the plan step, `plan/`), stage by stage:
+//! vertex stage → assembly → clipping → setup → raster.
 //!
 //! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
 //! the clip volume the whole draw takes the clipping path, which also changes the
 //! GL_QUADS/GL_QUAD_STRIP triangle split (docs/llvmpipe-rules.md §5).
 
-use crate::context::feedback::{FeedbackSink, RenderMode};
-use crate::context::state::Cap;
-use crate::context::Context;
-use crate::fixed_function::fog::FogPlan;
-use crate::fixed_function::lighting::LightPlan;
-use crate::fixed_function::point_size::PointAtten;
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
+use crate::framebuffer::Framebuffer;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::{clip_triangle, UserPlanes};
+use crate::geometry::feedback::PrimSink;
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
 use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
-use crate::geometry::{cpu_has_fma, ClipMask, ClipVertex, Viewport};
-use crate::pipe::Material;
-use crate::pipe::{Face, Primitive};
-use crate::raster::batch::{geom_section, Binner, Rasterizer, TriangleSink};
-use crate::raster::prims::{draw_point, point_size, LinePlan, PolyPipeline};
+use crate::geometry::{ClipMask, ClipVertex, Viewport};
+use crate::pipe::{Material, Primitive, RasterState};
+use crate::raster::batch::{geom_section, Binner, InFlight, Rasterizer, TriangleSink};
+use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
+use crate::stats::Stats;
+use crate::texture::UnitPlan;
 
-/// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()).
-pub fn draw<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-) {
-    draw_lit(ctx, mode, verts, indices, None)
+/// What every stage of one draw does, derived from the state once (by `plan/`).
+pub struct DrawPlan<'a> {
+    /// The vertex stage: transforms, user clip planes, lighting, fog, texgen, point
+    /// attenuation and the texture units' matrices.
+    pub stage: VertexStage,
+    /// The fragment operations.
+    pub frag: FragPlan,
+    /// The texture units with a complete enabled texture, in unit order (none in feedback
+    /// mode).
+    pub tex: Vec<UnitPlan<'a>>,
+    /// The viewport transform.
+    pub viewport: Viewport,
+    /// Face culling and winding.
+    pub cull: CullMode,
+    /// Triangles go through the draw module's polygon pipeline (unfilled, stippled,
+    /// offset or smooth polygons, two-sided colours, …) ([`PolyPipeline::needed`]).
+    pub poly: bool,
+    /// llvmpipe's own polygon offset for filled triangles: factor and scaled units (and
+    /// whether the depth buffer is float).
+    pub lp_offset: Option<(f32, (f32, bool))>,
+    /// How lines are drawn.
+    pub lines: LinePlan,
+    /// The point size (when points are not attenuated).
+    pub point_size: f32,
+    /// Depth buffer bits (the polygon pipeline's offset units scale with them).
+    pub depth_bits: u32,
+    /// Polygon modes, offsets and stipple.
+    pub raster: &'a RasterState,
+    /// The enables the primitive stages read (stipples, smoothing, offsets).
+    pub prims: PrimEnables,
+    /// Feedback or selection mode: nothing is rasterized ([`feedback`]).
+    pub feedback: bool,
 }
 
-/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
-pub fn draw_lit<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
-) {
-    draw_inner(ctx, mode, verts, indices, materials, false)
-}
-
-/// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
-/// specified ([`Context::stream_immediate`]): the chunk's last batch of triangles may be
-/// left drawing on the pool ([`Context::settle_draws`]) while the program sends the next
-/// chunk's vertices.
-pub fn draw_chunk<S: VertexSource + ?Sized>(ctx: &mut Context, mode: Primitive, verts: &S) {
-    draw_inner(ctx, mode, verts, None, None, true)
-}
-
-/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
-/// a 4x multisample object is one pass per sample plane ([`draw_multisample`]).
-fn draw_inner<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
-    detach: bool,
-) {
-    if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {
-        return draw_pass(ctx, mode, verts, indices, materials, detach, None);
-    }
-    draw_multisample(ctx, mode, verts, indices, materials);
-}
-
-/// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
+/// Runs `plan` for `verts` drawn as `mode` (through `indices` when given) into `fb`, inside
+/// `region`; `materials`, when given, is each vertex's own material. With `detach`, the
+/// last batch of triangles may be left drawing on the pool: it is returned.
 ///
-/// With GL_MULTISAMPLE on, filled triangles are drawn once per sample plane, each pass
-/// rasterised at its sample point ([`crate::geometry::setup::setup_triangle_ms`]) and
-/// shaded as [`crate::fragment::MsPass`] says; a sample that glSampleCoverage's mask
-/// leaves out (`(1 << (int)(v·4)) − 1`, inverted on request) is not drawn at all. Points
-/// and lines are drawn into every plane with the single-sample rules (llvmpipe draws them
-/// as rectangles sampled at the sample points: not reproduced).
-///
-/// With GL_MULTISAMPLE off, llvmpipe rasterises at pixel centres, tests and writes depth
-/// and stencil of sample 0 only, and writes the colour of the fragments that pass into
-/// every sample (blending with each sample's colour). Each plane s > 0 is drawn with a
-/// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
-/// same tests pass, in the same order), its own depth and stencil put back afterwards;
-/// plane 0 is drawn last, normally.
-fn draw_multisample<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
+/// # Safety
+/// With `detach`, as [`Rasterizer::flush_detached`]: the caller must put `fb` into the
+/// returned batch before anything else touches it, and start no other rasterizer before
+/// the batch is settled.
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn run<S: VertexSource + ?Sized>(
+    plan: DrawPlan<'_>,
     mode: Primitive,
     verts: &S,
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
-) {
-    ctx.settle_draws();
-    crate::pixels::cache::flush(ctx);
-    let caps = &ctx.state.caps;
-    if !caps.get(Cap::Multisample) {
-        let Some(fb) = ctx.fb.as_mut() else { return };
-        fb.resolve();
-        let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
-        ctx.for_each_sample(|c, s| {
-            if s == 0 {
-                return;
-            }
-            let Some(fb) = c.fb.as_mut() else { return };
-            fb.resolve();
-            let own_d = std::mem::replace(&mut fb.depth, depth0.clone());
-            let own_s = std::mem::replace(&mut fb.stencil, stencil0.clone());
-            draw_pass(c, mode, verts, indices, materials, false, None);
-            if let Some(fb) = c.fb.as_mut() {
-                fb.depth = own_d;
-                fb.stencil = own_s;
-            }
-        });
-        return draw_pass(ctx, mode, verts, indices, materials, false, None);
-    }
-    // glSampleCoverage's mask (only with GL_SAMPLE_COVERAGE on; st_atom_msaa.c).
-    let mut mask = 0xF_u32;
-    if caps.get(Cap::SampleCoverage) {
-        let l = &ctx.state.legacy;
-        let nr = (l.sample_coverage_value * 4.0) as u32;
-        let m = (1u32 << nr.min(4)) - 1;
-        mask = if l.sample_coverage_invert {
-            !m & 0xF
-        } else {
-            m
-        };
-    }
-    let a2c = caps.get(Cap::SampleAlphaToCoverage);
-    let triangles = !matches!(
-        mode,
-        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
-    );
-    ctx.for_each_sample(|c, s| {
-        if mask & (1 << s) != 0 {
-            let pass = triangles.then(|| crate::fragment::MsPass::new(s, a2c));
-            draw_pass(c, mode, verts, indices, materials, false, pass);
-        }
-    });
-}
-
-/// One pass of a draw: the whole pipeline into the framebuffer in `ctx.fb` (for a
-/// multisample pass `ms`, the plane of its sample).
-fn draw_pass<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
+    fb: &mut Framebuffer,
+    region: [i64; 4],
+    stats: &mut Stats,
     detach: bool,
-    ms: Option<crate::fragment::MsPass>,
-) {
-    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
-    ctx.settle_draws();
-    crate::pixels::cache::flush(ctx);
-    let Some(fb) = ctx.fb.as_ref() else { return };
+) -> Option<InFlight> {
+    let DrawPlan {
+        mut stage,
+        frag: plan,
+        tex: tex_plans,
+        viewport,
+        cull,
+        poly,
+        lp_offset,
+        lines,
+        point_size: size,
+        depth_bits,
+        raster,
+        prims,
+        feedback: _,
+    } = plan;
     let n = indices.map_or(verts.count(), |i| i.len());
-    if n == 0 {
-        return;
-    }
-    // A draw whose vertices could not all be held at once is refused with
-    // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
-    // streamed for minutes: the probe reserves address space and touches none of it.
-    if Vec::<ClipVertex>::new()
-        .try_reserve_exact(verts.count())
-        .is_err()
-    {
-        ctx.record_error(crate::gl::error::GlError::OutOfMemory);
-        return;
-    }
-    ctx.stats.draws += 1;
-    ctx.dirty = true;
-    ctx.fbo.drawn = true;
-    let fma = cpu_has_fma();
-    let st = &ctx.state;
-    let cc = st.clip_control;
-    let viewport = Viewport::with_convention(st.viewport, st.depth_range, fb.height, fb.y_flip, cc);
-    let y_flip = fb.y_flip;
-    let modelview = *ctx.matrices.modelview.top();
-    let mvp = ctx.matrices.projection.top().mul(&modelview);
-    let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
-    let ucp = &ctx.clip_planes;
-    stage.set_user_planes(&ucp.eye, ucp.enabled, &ctx.matrices.projection);
-    stage.fog = st.caps.get(Cap::Fog).then_some(ctx.light.fog);
-    // Mesa's feedback vertex program always writes unit 0's texture coordinates; the
-    // texture matrix and texgen apply only when the unit has a complete enabled texture.
-    let feedback = ctx.feedback.mode != RenderMode::Render;
-    let feedback_tex0 = feedback && ctx.textures.unit_plan(0).is_some();
-    if feedback_tex0 {
-        stage.add_texture_unit(0, ctx.matrices.texture[0].top());
-    }
-    let tex_plans: Vec<crate::texture::UnitPlan<'_>> = (0..crate::pipe::MAX_TEXTURE_UNITS)
-        .filter(|_| !feedback)
-        .filter_map(|u| {
-            let p = ctx.textures.unit_plan(u)?;
-            stage.add_texture_unit(u, ctx.matrices.texture[u].top());
-            Some(p)
-        })
-        .collect();
-    // the offset's view of the depth buffer: its bits, or the float tag
-    let depth_bits = fb.depth_format.texel_bits() as i32;
-    let mv_flags = ctx.matrices.modelview.top_flags();
-    let (normalize, rescale) = (st.caps.get(Cap::Normalize), st.caps.get(Cap::RescaleNormal));
-    let texgen_eye = stage.add_texgen(&ctx.texgen, mv_flags, normalize, rescale);
-    if feedback && !feedback_tex0 {
-        stage.add_texture_unit(0, &crate::fixed_function::matrix::IDENTITY);
-    }
-    stage.point_atten = PointAtten::new(&ctx.raster.point);
-    stage.light = LightPlan::new(
-        &ctx.light,
-        &st.caps,
-        st.current.color,
-        &modelview,
-        Some(mv_flags),
-        texgen_eye || stage.point_atten.is_some(),
-        fma,
-    );
-    let mut plan = FragPlan::new(st, fb.depth_format, !fb.stencil.is_empty(), fma);
-    plan.ms = ms;
-    stage.color_sum = stage.light.is_none() && st.caps.get(Cap::ColorSum);
-    if feedback {
-        drop(tex_plans);
-        return draw_feedback(ctx, &mut stage, mode, verts, indices, materials);
-    }
-    plan.separate_specular =
-        stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
-    plan.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
-    plan.count_samples = ctx.queries.active.is_some();
-    // Triangles that take the polygon pipeline (unfilled, smooth, two-sided …) are drawn
-    // with the single-sample rules in every plane.
-    if PolyPipeline::needed(&ctx.raster, &st.caps, stage.two_side()) {
-        plan.ms = None;
-    }
-    let Some(region) = ctx.draw_region() else {
-        return;
-    };
-    if !plan.writes_anything() {
-        return;
-    }
-    let cull_on = st.caps.get(Cap::CullFace);
-    let cull = CullMode {
-        front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
-        back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
-        // Unflipped (object) rows turn the winding over, and so does GL_UPPER_LEFT; each
-        // also toggles llvmpipe's `bottom_edge_rule` (st_atom_rasterizer.c).
-        front_ccw: (st.front_ccw == y_flip) != cc.upper_left,
-        top_left: y_flip == cc.upper_left,
-    };
-
     // Filled triangles, strips, fans, polygons, quads and quad strips stream through the
     // post-transform cache; points, lines and draws that need edge flags or per-vertex
     // materials transform every vertex first.
@@ -259,13 +104,13 @@ fn draw_pass<S: VertexSource + ?Sized>(
                 | Primitive::Quads
                 | Primitive::QuadStrip
         )
-        && !PolyPipeline::needed(&ctx.raster, &st.caps, stage.two_side());
+        && !poly;
     let cv = if streamed {
         Vec::new()
     } else {
         run_vertices(&mut stage, verts, materials)
     };
-    ctx.stats.vertices += cv.len() as u64;
+    stats.vertices += cv.len() as u64;
     let any_outside = if streamed {
         // Only the split of quads and quad strips depends on whether any vertex is
         // outside (llvmpipe-rules §5; indexed or flat quads split one way on both paths):
@@ -297,20 +142,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
     };
     let nvary = stage.nvary();
     let back = stage.two_side().then(|| stage.back_offset());
-    let stats = &mut ctx.stats;
-    let Some(fb) = ctx.fb.as_mut() else { return };
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
-    // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
-    let lp_offset = (st.caps.get(Cap::PolygonOffsetFill)
-        && (ctx.raster.polygon.offset_factor != 0.0 || ctx.raster.polygon.offset_units != 0.0))
-        .then(|| {
-            let p = &ctx.raster.polygon;
-            let units =
-                crate::geometry::unfilled::scaled_units(p.offset_units, depth_bits.max(0) as u32);
-            let float = depth_bits == crate::texture::shadow::FLOAT_BITS as i32;
-            (p.offset_factor, (units, float))
-        });
     let pipe = TriPipe {
         setup: match plan.ms {
             Some(m) => SetupVariant::multisample(m.sample),
@@ -326,7 +159,6 @@ fn draw_pass<S: VertexSource + ?Sized>(
     };
     match mode {
         Primitive::Points => {
-            let size = point_size(&ctx.raster);
             let per_vertex = stage.point_atten.is_some();
             let mut target = rast.target(stats).target();
             for k in 0..n {
@@ -335,7 +167,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
                     draw_point(
                         v,
                         if per_vertex { v.psize } else { size },
-                        &st.caps,
+                        prims.point_smooth,
                         nvary,
                         region,
                         &plan,
@@ -347,8 +179,6 @@ fn draw_pass<S: VertexSource + ?Sized>(
             }
         }
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
-            let mut lines = LinePlan::new(&ctx.raster, &st.caps, nvary);
-            lines.ucp = stage.ucp;
             let mut stipple = lines.stipple;
             let mut target = rast.target(stats).target();
             assemble::lines(mode, n, |a, b, reset| {
@@ -372,18 +202,15 @@ fn draw_pass<S: VertexSource + ?Sized>(
                 );
             });
         }
-        _ if PolyPipeline::needed(&ctx.raster, &st.caps, back.is_some()) => {
+        _ if poly => {
             let pp = PolyPipeline {
-                lines: LinePlan {
-                    ucp: stage.ucp,
-                    ..LinePlan::new(&ctx.raster, &st.caps, nvary)
-                },
-                point_size: stage.point_atten.is_none().then(|| point_size(&ctx.raster)),
-                raster: &ctx.raster,
-                caps: &st.caps,
+                lines,
+                point_size: stage.point_atten.is_none().then_some(size),
+                raster,
+                enables: prims,
                 cull,
                 back,
-                depth_bits: depth_bits.max(0) as u32,
+                depth_bits,
                 viewport,
                 region,
             };
@@ -448,10 +275,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
         }
     }
     let kept = if detach {
-        // SAFETY: the framebuffer goes into the returned batch below (`keep_inflight`)
-        // before anything else touches it, and `ctx.settle_draws` (run by every draw
-        // before it starts a rasterizer) hands it back once the batch is drawn; this draw
-        // settled the previous one first.
+        // SAFETY: forwarded from the caller.
         unsafe { rast.flush_detached(stats) }
     } else {
         rast.flush(stats);
@@ -459,14 +283,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
     };
     drop(rast);
     drop(tex_plans);
-    if ctx.state.caps.get(Cap::ColorMaterial) {
-        ctx.light.sync_color_material(ctx.state.current.color);
-    }
-    if let Some(f) = kept {
-        // SAFETY: `f` draws into `ctx.fb`, untouched since the rasterizer was dropped
-        // (only the colour-material sync ran), and this draw settled everything first.
-        unsafe { ctx.keep_inflight(f) };
-    }
+    kept
 }
 
 /// The per-triangle stages after the vertex stage: clipping, setup, llvmpipe's polygon
@@ -492,7 +309,7 @@ impl TriPipe<'_> {
         v: [&ClipVertex; 3],
         tri: &mut SetupTriangle,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         let r = self
             .setup
@@ -506,12 +323,7 @@ impl TriPipe<'_> {
 
     /// Passes a set-up triangle to `sink`, or counts why setup dropped it.
     #[inline(always)]
-    fn emit<K: TriangleSink>(
-        r: SetupResult,
-        tri: &SetupTriangle,
-        sink: &mut K,
-        stats: &mut crate::stats::Stats,
-    ) {
+    fn emit<K: TriangleSink>(r: SetupResult, tri: &SetupTriangle, sink: &mut K, stats: &mut Stats) {
         match r {
             SetupResult::Draw => sink.triangle(tri, stats),
             SetupResult::Degenerate => stats.tris_degenerate += 1,
@@ -539,7 +351,7 @@ impl TriPipe<'_> {
         queue: &mut SetupQueue,
         tri: &mut SetupTriangle,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         // SAFETY: a draw has a queue only when its setup is the AVX2 copy
         // (`Self::queue_ok`), which `SetupVariant::detect` picks only on AVX2 CPUs.
@@ -564,7 +376,7 @@ impl TriPipe<'_> {
         queue: Option<&mut SetupQueue>,
         tri: &mut SetupTriangle,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         stats.triangles += 1;
         let or = va.mask | vb.mask | vc.mask;
@@ -595,7 +407,7 @@ impl TriPipe<'_> {
         or: ClipMask,
         tri: &mut SetupTriangle,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         stats.tris_clipped += 1;
         clip_triangle(
@@ -660,7 +472,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         count: usize,
         state: &mut StreamState,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         self.stream(
             Primitive::Triangles,
@@ -680,7 +492,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         n: usize,
         state: &mut StreamState,
         sink: &mut K,
-        stats: &mut crate::stats::Stats,
+        stats: &mut Stats,
     ) {
         let StreamState {
             cache,
@@ -745,17 +557,17 @@ fn split_probe() -> usize {
 }
 
 /// A draw in feedback or selection mode: the vertex stage, then the draw module's
-/// primitive stages into the feedback buffer or the hit record; nothing is rasterized.
-fn draw_feedback<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    stage: &mut VertexStage,
+/// primitive stages into `sink` (the feedback buffer or the hit record); nothing is
+/// rasterized.
+pub fn feedback<S: VertexSource + ?Sized>(
+    plan: &mut DrawPlan<'_>,
     mode: Primitive,
     verts: &S,
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
+    sink: &mut impl PrimSink,
 ) {
-    let Some(fb) = ctx.fb.as_ref() else { return };
-    let st = &ctx.state;
+    let stage = &mut plan.stage;
     let n = indices.map_or(verts.count(), |i| i.len());
     let cv = run_vertices(stage, verts, materials);
     let at = |k: usize| -> &ClipVertex {
@@ -765,36 +577,21 @@ fn draw_feedback<S: VertexSource + ?Sized>(
         }
     };
     let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
-    let cull_on = st.caps.get(Cap::CullFace);
     let stages = crate::geometry::feedback::PrimStages {
         ucp: &stage.ucp,
         viewport: stage.viewport,
         nvary: stage.nvary(),
-        flat: st.shade_model == crate::pipe::ShadeModel::Flat,
-        cull: CullMode {
-            front: cull_on && matches!(st.cull_face, Face::Front | Face::FrontAndBack),
-            back: cull_on && matches!(st.cull_face, Face::Back | Face::FrontAndBack),
-            // As the rasterizer state the draw module reads (see `draw_inner`).
-            front_ccw: (st.front_ccw == fb.y_flip) != st.clip_control.upper_left,
-            top_left: fb.y_flip == st.clip_control.upper_left,
-        },
+        flat: plan.frag.flat,
+        // As the rasterizer state the draw module reads.
+        cull: plan.cull,
         back: stage.two_side().then(|| stage.back_offset()),
-        polygon: ctx.raster.polygon,
-        offset: [
-            st.caps.get(Cap::PolygonOffsetFill),
-            st.caps.get(Cap::PolygonOffsetLine),
-            st.caps.get(Cap::PolygonOffsetPoint),
-        ],
+        polygon: plan.raster.polygon,
+        offset: plan.prims.offset,
         // Mesa's private feedback draw context never learns the depth format (its
         // minimum resolvable depth stays 0), so the offset units add nothing.
         depth_bits: 0,
     };
-    let mut sink = FeedbackSink {
-        state: &mut ctx.feedback,
-        height: fb.height as f32,
-        tex0: crate::geometry::VARY_TEX,
-    };
-    stages.run(mode, n, at, edge, &mut sink);
+    stages.run(mode, n, at, edge, sink);
 }
 
 /// Whether any vertex the draw reads (every vertex of `verts`, or those `indices` name)

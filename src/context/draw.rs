@@ -1,0 +1,270 @@
+//! The state's side of a draw: flush what must be settled first, gather references to
+//! the parameter blocks into one [`DrawState`], have [`crate::plan::build`] translate them
+//! into a [`DrawPlan`], and hand that to the pipeline ([`crate::render`]). Multisample
+//! draws are one pass per sample plane.
+
+use super::feedback::{FeedbackSink, RenderMode};
+use super::state::{Cap, State};
+use super::Context;
+use crate::fragment::FragPlan;
+use crate::framebuffer::DepthFormat;
+use crate::geometry::source::VertexSource;
+use crate::geometry::ClipVertex;
+use crate::pipe::{Material, Primitive};
+use crate::plan::{DrawState, FragState, Target};
+use crate::render::DrawPlan;
+
+/// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()).
+pub fn draw<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+) {
+    draw_lit(ctx, mode, verts, indices, None)
+}
+
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
+pub fn draw_lit<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+) {
+    draw_inner(ctx, mode, verts, indices, materials, false)
+}
+
+/// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
+/// specified ([`Context::stream_immediate`]): the chunk's last batch of triangles may be
+/// left drawing on the pool ([`Context::settle_draws`]) while the program sends the next
+/// chunk's vertices.
+pub fn draw_chunk<S: VertexSource + ?Sized>(ctx: &mut Context, mode: Primitive, verts: &S) {
+    draw_inner(ctx, mode, verts, None, None, true)
+}
+
+/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
+/// a 4x multisample object is one pass per sample plane ([`draw_multisample`]).
+fn draw_inner<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    detach: bool,
+) {
+    if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {
+        return draw_pass(ctx, mode, verts, indices, materials, detach, None);
+    }
+    draw_multisample(ctx, mode, verts, indices, materials);
+}
+
+/// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
+///
+/// With GL_MULTISAMPLE on, filled triangles are drawn once per sample plane, each pass
+/// rasterised at its sample point ([`crate::geometry::setup::setup_triangle_ms`]) and
+/// shaded as [`crate::fragment::MsPass`] says; a sample that glSampleCoverage's mask
+/// leaves out (`(1 << (int)(v·4)) − 1`, inverted on request) is not drawn at all. Points
+/// and lines are drawn into every plane with the single-sample rules (llvmpipe draws them
+/// as rectangles sampled at the sample points: not reproduced).
+///
+/// With GL_MULTISAMPLE off, llvmpipe rasterises at pixel centres, tests and writes depth
+/// and stencil of sample 0 only, and writes the colour of the fragments that pass into
+/// every sample (blending with each sample's colour). Each plane s > 0 is drawn with a
+/// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
+/// same tests pass, in the same order), its own depth and stencil put back afterwards;
+/// plane 0 is drawn last, normally.
+fn draw_multisample<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+) {
+    ctx.settle_draws();
+    crate::pixels::cache::flush(ctx);
+    let caps = &ctx.state.caps;
+    if !caps.get(Cap::Multisample) {
+        let Some(fb) = ctx.fb.as_mut() else { return };
+        fb.resolve();
+        let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
+        ctx.for_each_sample(|c, s| {
+            if s == 0 {
+                return;
+            }
+            let Some(fb) = c.fb.as_mut() else { return };
+            fb.resolve();
+            let own_d = std::mem::replace(&mut fb.depth, depth0.clone());
+            let own_s = std::mem::replace(&mut fb.stencil, stencil0.clone());
+            draw_pass(c, mode, verts, indices, materials, false, None);
+            if let Some(fb) = c.fb.as_mut() {
+                fb.depth = own_d;
+                fb.stencil = own_s;
+            }
+        });
+        return draw_pass(ctx, mode, verts, indices, materials, false, None);
+    }
+    // glSampleCoverage's mask (only with GL_SAMPLE_COVERAGE on; st_atom_msaa.c).
+    let mut mask = 0xF_u32;
+    if caps.get(Cap::SampleCoverage) {
+        let l = &ctx.state.legacy;
+        let nr = (l.sample_coverage_value * 4.0) as u32;
+        let m = (1u32 << nr.min(4)) - 1;
+        mask = if l.sample_coverage_invert {
+            !m & 0xF
+        } else {
+            m
+        };
+    }
+    let a2c = caps.get(Cap::SampleAlphaToCoverage);
+    let triangles = !matches!(
+        mode,
+        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
+    );
+    ctx.for_each_sample(|c, s| {
+        if mask & (1 << s) != 0 {
+            let pass = triangles.then(|| crate::fragment::MsPass::new(s, a2c));
+            draw_pass(c, mode, verts, indices, materials, false, pass);
+        }
+    });
+}
+
+/// One pass of a draw: the whole pipeline into the framebuffer in `ctx.fb` (for a
+/// multisample pass `ms`, the plane of its sample).
+fn draw_pass<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    detach: bool,
+    ms: Option<crate::fragment::MsPass>,
+) {
+    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
+    ctx.settle_draws();
+    crate::pixels::cache::flush(ctx);
+    let Some(fb) = ctx.fb.as_ref() else { return };
+    let n = indices.map_or(verts.count(), |i| i.len());
+    if n == 0 {
+        return;
+    }
+    // A draw whose vertices could not all be held at once is refused with
+    // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
+    // streamed for minutes: the probe reserves address space and touches none of it.
+    if Vec::<ClipVertex>::new()
+        .try_reserve_exact(verts.count())
+        .is_err()
+    {
+        ctx.record_error(crate::gl::error::GlError::OutOfMemory);
+        return;
+    }
+    ctx.stats.draws += 1;
+    ctx.dirty = true;
+    ctx.fbo.drawn = true;
+    let target = Target {
+        height: fb.height,
+        y_flip: fb.y_flip,
+        depth_format: fb.depth_format,
+        has_stencil: !fb.stencil.is_empty(),
+    };
+    let region = ctx.draw_region();
+    let st = &ctx.state;
+    let input = DrawState {
+        caps: &st.caps,
+        viewport: st.viewport,
+        depth_range: st.depth_range,
+        clip_control: st.clip_control,
+        frag: frag_state(st),
+        cull_face: st.cull_face,
+        front_ccw: st.front_ccw,
+        current_color: st.current.color,
+        modelview: &ctx.matrices.modelview,
+        projection: &ctx.matrices.projection,
+        texture: &ctx.matrices.texture,
+        clip_planes: &ctx.clip_planes,
+        light: &ctx.light,
+        texgen: &ctx.texgen,
+        raster: &ctx.raster,
+        textures: &ctx.textures,
+        target,
+        feedback: ctx.feedback.mode != RenderMode::Render,
+        count_samples: ctx.queries.active.is_some(),
+        ms,
+    };
+    let mut plan = crate::plan::build(&input);
+    if plan.feedback {
+        let mut sink = FeedbackSink {
+            state: &mut ctx.feedback,
+            height: target.height as f32,
+            tex0: crate::geometry::VARY_TEX,
+        };
+        return crate::render::feedback(&mut plan, mode, verts, indices, materials, &mut sink);
+    }
+    let Some(region) = region else {
+        return;
+    };
+    if !plan.frag.writes_anything() {
+        return;
+    }
+    let Some(fb) = ctx.fb.as_mut() else { return };
+    let kept = run(
+        plan,
+        mode,
+        verts,
+        indices,
+        materials,
+        fb,
+        region,
+        &mut ctx.stats,
+        detach,
+    );
+    if ctx.state.caps.get(Cap::ColorMaterial) {
+        ctx.light.sync_color_material(ctx.state.current.color);
+    }
+    if let Some(f) = kept {
+        // SAFETY: `f` draws into `ctx.fb`, untouched since the pipeline returned it (only
+        // the colour-material sync ran), and this draw settled everything first.
+        unsafe { ctx.keep_inflight(f) };
+    }
+}
+
+/// [`crate::render::run`], for a draw that settled the previous one first.
+#[allow(clippy::too_many_arguments)]
+fn run<S: VertexSource + ?Sized>(
+    plan: DrawPlan<'_>,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    fb: &mut crate::framebuffer::Framebuffer,
+    region: [i64; 4],
+    stats: &mut crate::stats::Stats,
+    detach: bool,
+) -> Option<crate::raster::batch::InFlight> {
+    // SAFETY: with `detach`, the caller keeps the returned batch (`keep_inflight`) before
+    // anything else touches `fb`, and every draw settles the draws on the pool
+    // (`Context::settle_draws`) before it starts a rasterizer; this one did.
+    unsafe {
+        crate::render::run(
+            plan, mode, verts, indices, materials, fb, region, stats, detach,
+        )
+    }
+}
+
+/// The fragment operations' part of `st`.
+fn frag_state(st: &State) -> FragState<'_> {
+    FragState {
+        caps: &st.caps,
+        ops: &st.frag,
+        depth_func: st.depth_func,
+        depth_mask: st.depth_mask,
+        shade_model: st.shade_model,
+        color_mask: st.color_write_mask(),
+    }
+}
+
+/// The fragment plan of `st` for buffers of `depth_format` (and a stencil buffer when
+/// `has_stencil`), for the pixel-rectangle paths.
+pub fn frag_plan(st: &State, depth_format: DepthFormat, has_stencil: bool, fma: bool) -> FragPlan {
+    crate::plan::fragment(&frag_state(st), depth_format, has_stencil, fma)
+}

@@ -1,0 +1,224 @@
+//! The one translation from GL state to pipeline values, done once per draw (the role
+//! Mesa's state tracker plays).
+//!
+//! The state gathers references to its parameter blocks into a [`DrawState`] and calls
+//! [`build`], which returns one [`DrawPlan`]: the vertex stage (transforms, user clip
+//! planes, lighting, fog, texgen, point attenuation), the texture units, the primitive
+//! stages (culling, polygon offset, the polygon pipeline), lines, points and the
+//! fragment operations. The pipeline then runs that plan without looking at the state
+//! again. This module imports only the pipeline and `pipe/`; the state calls it.
+
+mod fragment;
+
+pub use fragment::{fragment, FragState};
+
+use crate::fixed_function::fog::FogPlan;
+use crate::fixed_function::lighting::{LightEnables, LightPlan};
+use crate::fixed_function::matrix::{MatrixStack, IDENTITY};
+use crate::fixed_function::point_size::PointAtten;
+use crate::fixed_function::transform::VertexStage;
+use crate::fragment::MsPass;
+use crate::framebuffer::DepthFormat;
+use crate::geometry::setup::CullMode;
+use crate::geometry::{cpu_has_fma, ClipConvention, Viewport};
+use crate::pipe::{Cap, Caps, ClipPlanes, Face, LightingState, RasterState, TexGenState};
+use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
+use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
+use crate::render::DrawPlan;
+use crate::texture::{TextureState, UnitPlan};
+
+/// The buffers a draw goes into, as far as the plan depends on them.
+#[derive(Clone, Copy, Debug)]
+pub struct Target {
+    /// Rows (window y is flipped with it).
+    pub height: usize,
+    /// Whether rows are stored top-down (the OSMesa default).
+    pub y_flip: bool,
+    /// The depth buffer's format.
+    pub depth_format: DepthFormat,
+    /// Whether a stencil buffer exists.
+    pub has_stencil: bool,
+}
+
+/// What a draw is planned from: the state's parameter blocks, borrowed for the draw.
+pub struct DrawState<'a> {
+    /// glEnable bits.
+    pub caps: &'a Caps,
+    /// glViewport.
+    pub viewport: [i32; 4],
+    /// glDepthRange.
+    pub depth_range: [f64; 2],
+    /// glClipControl.
+    pub clip_control: ClipConvention,
+    /// The fragment operations' state.
+    pub frag: FragState<'a>,
+    /// glCullFace.
+    pub cull_face: Face,
+    /// glFrontFace: true for GL_CCW.
+    pub front_ccw: bool,
+    /// The current colour (lit through colour material).
+    pub current_color: [f32; 4],
+    /// The modelview stack.
+    pub modelview: &'a MatrixStack,
+    /// The projection stack.
+    pub projection: &'a MatrixStack,
+    /// The texture matrix stack of each unit.
+    pub texture: &'a [MatrixStack],
+    /// User clip planes (eye space) and their enable bits.
+    pub clip_planes: &'a ClipPlanes,
+    /// Lights, materials and fog.
+    pub light: &'a LightingState,
+    /// Texture coordinate generation.
+    pub texgen: &'a TexGenState,
+    /// Lines, points and polygons.
+    pub raster: &'a RasterState,
+    /// Texture units and their objects.
+    pub textures: &'a TextureState,
+    /// The buffers drawn into.
+    pub target: Target,
+    /// Feedback or selection mode: the vertex and primitive stages only.
+    pub feedback: bool,
+    /// An occlusion query is counting samples.
+    pub count_samples: bool,
+    /// One sample's pass of a multisample draw.
+    pub ms: Option<MsPass>,
+}
+
+/// Plans a draw of `s`.
+pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
+    let fma = cpu_has_fma();
+    let caps = s.caps;
+    let t = s.target;
+    let cc = s.clip_control;
+    let viewport = Viewport::with_convention(s.viewport, s.depth_range, t.height, t.y_flip, cc);
+    let modelview = *s.modelview.top();
+    let mvp = s.projection.top().mul(&modelview);
+    let mut stage = VertexStage::new(mvp, modelview, viewport, fma);
+    let ucp = s.clip_planes;
+    stage.set_user_planes(&ucp.eye, ucp.enabled, s.projection);
+    stage.fog = caps.get(Cap::Fog).then_some(s.light.fog);
+    // Mesa's feedback vertex program always writes unit 0's texture coordinates; the
+    // texture matrix and texgen apply only when the unit has a complete enabled texture.
+    let feedback = s.feedback;
+    let feedback_tex0 = feedback && s.textures.unit_plan(0).is_some();
+    if feedback_tex0 {
+        stage.add_texture_unit(0, s.texture[0].top());
+    }
+    let tex: Vec<UnitPlan<'a>> = (0..MAX_TEXTURE_UNITS)
+        .filter(|_| !feedback)
+        .filter_map(|u| {
+            let p = s.textures.unit_plan(u)?;
+            stage.add_texture_unit(u, s.texture[u].top());
+            Some(p)
+        })
+        .collect();
+    // the offset's view of the depth buffer: its bits, or the float tag
+    let depth_bits = t.depth_format.texel_bits() as i32;
+    let mv_flags = s.modelview.top_flags();
+    let (normalize, rescale) = (caps.get(Cap::Normalize), caps.get(Cap::RescaleNormal));
+    let texgen_eye = stage.add_texgen(s.texgen, mv_flags, normalize, rescale);
+    if feedback && !feedback_tex0 {
+        stage.add_texture_unit(0, &IDENTITY);
+    }
+    stage.point_atten = PointAtten::new(&s.raster.point);
+    stage.light = LightPlan::new(
+        s.light,
+        &light_enables(caps),
+        s.current_color,
+        &modelview,
+        Some(mv_flags),
+        texgen_eye || stage.point_atten.is_some(),
+        fma,
+    );
+    let mut frag = fragment(&s.frag, t.depth_format, t.has_stencil, fma);
+    frag.ms = s.ms;
+    stage.color_sum = stage.light.is_none() && caps.get(Cap::ColorSum);
+    frag.separate_specular =
+        stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
+    frag.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
+    frag.count_samples = s.count_samples;
+    // Triangles that take the polygon pipeline (unfilled, smooth, two-sided …) are drawn
+    // with the single-sample rules in every plane.
+    let prims = prim_enables(caps);
+    let poly = PolyPipeline::needed(s.raster, &prims, stage.two_side());
+    if poly {
+        frag.ms = None;
+    }
+    let cull_on = caps.get(Cap::CullFace);
+    let cull = CullMode {
+        front: cull_on && matches!(s.cull_face, Face::Front | Face::FrontAndBack),
+        back: cull_on && matches!(s.cull_face, Face::Back | Face::FrontAndBack),
+        // Unflipped (object) rows turn the winding over, and so does GL_UPPER_LEFT; each
+        // also toggles llvmpipe's `bottom_edge_rule` (st_atom_rasterizer.c).
+        front_ccw: (s.front_ccw == t.y_flip) != cc.upper_left,
+        top_left: t.y_flip == cc.upper_left,
+    };
+    // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
+    let polygon = &s.raster.polygon;
+    let lp_offset = (caps.get(Cap::PolygonOffsetFill)
+        && (polygon.offset_factor != 0.0 || polygon.offset_units != 0.0))
+        .then(|| {
+            let units = crate::geometry::unfilled::scaled_units(
+                polygon.offset_units,
+                depth_bits.max(0) as u32,
+            );
+            let float = depth_bits == crate::texture::shadow::FLOAT_BITS as i32;
+            (polygon.offset_factor, (units, float))
+        });
+    let nvary = stage.nvary();
+    let lines = LinePlan {
+        ucp: stage.ucp,
+        ..LinePlan::new(s.raster, &prims, nvary)
+    };
+    DrawPlan {
+        stage,
+        frag,
+        tex,
+        viewport,
+        cull,
+        poly,
+        lp_offset,
+        lines,
+        point_size: point_size(s.raster),
+        depth_bits: depth_bits.max(0) as u32,
+        raster: s.raster,
+        prims,
+        feedback,
+    }
+}
+
+/// The enables lighting reads.
+pub fn light_enables(caps: &Caps) -> LightEnables {
+    const LIGHTS: [Cap; MAX_LIGHTS] = [
+        Cap::Light0,
+        Cap::Light1,
+        Cap::Light2,
+        Cap::Light3,
+        Cap::Light4,
+        Cap::Light5,
+        Cap::Light6,
+        Cap::Light7,
+    ];
+    LightEnables {
+        lighting: caps.get(Cap::Lighting),
+        lights: LIGHTS.map(|c| caps.get(c)),
+        normalize: caps.get(Cap::Normalize),
+        rescale_normal: caps.get(Cap::RescaleNormal),
+        color_material: caps.get(Cap::ColorMaterial),
+    }
+}
+
+/// The enables the primitive stages read.
+fn prim_enables(caps: &Caps) -> PrimEnables {
+    PrimEnables {
+        point_smooth: caps.get(Cap::PointSmooth),
+        line_smooth: caps.get(Cap::LineSmooth),
+        line_stipple: caps.get(Cap::LineStipple),
+        polygon_stipple: caps.get(Cap::PolygonStipple),
+        offset: [
+            caps.get(Cap::PolygonOffsetFill),
+            caps.get(Cap::PolygonOffsetLine),
+            caps.get(Cap::PolygonOffsetPoint),
+        ],
+    }
+}
