@@ -6,7 +6,8 @@
 //! - `plan` (state values → pipeline values, once per draw): the pipeline and the leaves,
 //!   never `context` or `ffi`.
 //! - the pipeline (`geometry`, `fixed_function`, `raster`, `fragment`, `texture`, `pixels`,
-//!   `framebuffer`, and `render`, which runs a plan through them): other pipeline modules and the leaves, never `context`, `plan`, `ffi`
+//!   `framebuffer`, and `render`, which runs a plan through them): other pipeline modules
+//!   and the leaves, never `context`, `plan`, `ffi`
 //!   or `gl` (the pipeline never sees a GL token).
 //! - the leaves (`pipe`, `gl`, `simd`, `cpu`, `stats`, `tuning`, `memory`): one another
 //!   at most, never a layer above.
