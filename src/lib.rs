@@ -17,8 +17,11 @@
 //! (cited in module docs as "llvmpipe-rules §n") and, for framebuffer objects, blits and
 //! multisampling, in `docs/fbo-rules.md`.
 
+#![deny(unsafe_op_in_unsafe_fn)]
+#![deny(clippy::undocumented_unsafe_blocks)]
+
 pub mod context;
-pub mod cpu;
+pub use simd::cpu;
 pub mod draw;
 pub mod ffi;
 pub mod fixed_function;
@@ -28,6 +31,7 @@ pub mod geometry;
 pub mod memory;
 pub mod pixels;
 pub mod raster;
+pub mod simd;
 pub mod stats;
 #[cfg(test)]
 mod test_rng;
