@@ -21,6 +21,7 @@
 #![deny(clippy::undocumented_unsafe_blocks)]
 
 pub mod context;
+/// CPU detection at its first path: [`simd::cpu`].
 pub use simd::cpu;
 pub mod draw;
 pub mod ffi;

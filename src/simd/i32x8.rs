@@ -1,6 +1,6 @@
 //! Eight `i32` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, F32x8, I64x4, U16x16};
+use super::{avx2, bitwise_256, F32x8, I64x4, U16x16};
 use std::arch::x86_64::*;
 
 /// Eight `i32` lanes (`__m256i`); the unsigned operations say so in their names. Made
@@ -163,18 +163,6 @@ impl I32x8 {
         Self(avx2!(_mm256_mullo_epi32(self.0, o.0)))
     }
 
-    /// Bitwise and.
-    #[inline(always)]
-    pub fn and(self, o: Self) -> Self {
-        Self(avx2!(_mm256_and_si256(self.0, o.0)))
-    }
-
-    /// Bitwise or.
-    #[inline(always)]
-    pub fn or(self, o: Self) -> Self {
-        Self(avx2!(_mm256_or_si256(self.0, o.0)))
-    }
-
     /// Bitwise exclusive or.
     #[inline(always)]
     pub fn xor(self, o: Self) -> Self {
@@ -317,3 +305,5 @@ impl I32x8 {
         U16x16(avx2!(_mm256_unpackhi_epi8(self.0, o.0)))
     }
 }
+
+bitwise_256!(I32x8);

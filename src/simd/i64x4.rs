@@ -1,6 +1,6 @@
 //! Four `i64` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, I32x8};
+use super::{avx2, bitwise_256, I32x8};
 use std::arch::x86_64::*;
 
 /// Four `i64` lanes (`__m256i`). Made only where the CPU has AVX2 (see [`super`]).
@@ -76,12 +76,6 @@ impl I64x4 {
         Self(avx2!(_mm256_mul_epi32(self.0, o.0)))
     }
 
-    /// Bitwise and.
-    #[inline(always)]
-    pub fn and(self, o: Self) -> Self {
-        Self(avx2!(_mm256_and_si256(self.0, o.0)))
-    }
-
     /// Shifted left by `N` bits.
     #[inline(always)]
     pub fn shl<const N: i32>(self) -> Self {
@@ -106,3 +100,5 @@ impl I64x4 {
         avx2!(_mm256_movemask_pd(_mm256_castsi256_pd(self.0))) as u32
     }
 }
+
+bitwise_256!(I64x4);

@@ -61,6 +61,28 @@ macro_rules! avx2 {
 #[cfg(target_arch = "x86_64")]
 use avx2;
 
+/// `and` and `or` of a 256-bit integer type: the same instructions whatever the lanes.
+#[cfg(target_arch = "x86_64")]
+macro_rules! bitwise_256 {
+    ($t:ident) => {
+        impl $t {
+            /// Bitwise and.
+            #[inline(always)]
+            pub fn and(self, o: Self) -> Self {
+                Self(avx2!(std::arch::x86_64::_mm256_and_si256(self.0, o.0)))
+            }
+
+            /// Bitwise or.
+            #[inline(always)]
+            pub fn or(self, o: Self) -> Self {
+                Self(avx2!(std::arch::x86_64::_mm256_or_si256(self.0, o.0)))
+            }
+        }
+    };
+}
+#[cfg(target_arch = "x86_64")]
+use bitwise_256;
+
 /// Hints the CPU to bring the cache line holding `p` into all cache levels. Never faults,
 /// whatever `p` is.
 #[inline(always)]

@@ -1,6 +1,6 @@
 //! Sixteen 16-bit lanes in a 256-bit AVX2 register: pixels' channels widened to words.
 
-use super::{avx2, I32x8};
+use super::{avx2, bitwise_256, I32x8};
 use std::arch::x86_64::*;
 
 /// Sixteen 16-bit lanes (`__m256i`), unsigned unless an operation says otherwise. Made
@@ -92,25 +92,13 @@ impl U16x16 {
         Self(avx2!(_mm256_max_epu16(self.0, o.0)))
     }
 
-    /// Bitwise and.
-    #[inline(always)]
-    pub fn and(self, o: Self) -> Self {
-        Self(avx2!(_mm256_and_si256(self.0, o.0)))
-    }
-
-    /// Bitwise or.
-    #[inline(always)]
-    pub fn or(self, o: Self) -> Self {
-        Self(avx2!(_mm256_or_si256(self.0, o.0)))
-    }
-
-    /// Shifted left by `N` bits.
+    /// Each 16-bit lane shifted left by `N` bits.
     #[inline(always)]
     pub fn shl<const N: i32>(self) -> Self {
         Self(avx2!(_mm256_slli_epi16::<N>(self.0)))
     }
 
-    /// Shifted right by `N` bits, zeros in.
+    /// Each 16-bit lane shifted right by `N` bits, zeros in.
     #[inline(always)]
     pub fn shr<const N: i32>(self) -> Self {
         Self(avx2!(_mm256_srli_epi16::<N>(self.0)))
@@ -138,3 +126,5 @@ impl U16x16 {
         I32x8(avx2!(_mm256_packus_epi16(self.0, o.0)))
     }
 }
+
+bitwise_256!(U16x16);
