@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds the library and runs every
 # test (unit, API, header, and the C scenes compared against Mesa's OSMesa) under every
-# instruction-set level this CPU supports (SOFTGL_ISA, see src/cpu.rs).
+# instruction-set level this CPU supports (SOFTGL_ISA, see src/simd/cpu.rs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
@@ -19,7 +19,7 @@ echo "test.sh: ISA levels on this CPU: ${levels[*]} (default $best)"
 # Integration tests (the C scenes against OSMesa among them) and examples on the release
 # library, as it ships, once per level, the default first. A level without FMA runs the
 # reference llvmpipe with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, so that both sides fuse alike
-# (src/cpu.rs); the reference's output is reused between levels that pin it alike. Each
+# (src/simd/cpu.rs); the reference's output is reused between levels that pin it alike. Each
 # level's raw outputs are kept for the cross-level check below.
 outs=target/ctests/levels
 rm -rf "$outs"

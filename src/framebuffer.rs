@@ -408,8 +408,7 @@ impl Framebuffer {
         #[cfg(target_arch = "x86_64")]
         if self.streamed() {
             // Orders the streaming stores before whatever the program does next.
-            // SAFETY: sfence has no preconditions (SSE is part of x86-64).
-            unsafe { std::arch::x86_64::_mm_sfence() };
+            crate::simd::store_fence();
         }
     }
 
@@ -706,27 +705,7 @@ const STREAM_COPY_BYTES: usize = 2 << 20;
 /// Copies `src` into `out` (the same length) with non-temporal 16-byte stores where `out`
 /// is aligned (the caller issues the store fence once the whole copy is done).
 fn stream_copy(out: &mut [u8], src: &[u8]) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_loadu_si128, _mm_stream_si128};
-        let n = out.len().min(src.len());
-        let head = out.as_ptr().align_offset(16).min(n);
-        out[..head].copy_from_slice(&src[..head]);
-        let mut i = head;
-        while i + 16 <= n {
-            // SAFETY: `i + 16 <= n` keeps both 16-byte accesses inside the slices, and
-            // `out + i` is 16-byte aligned (from `head` on, in steps of 16) as the
-            // streaming store requires; SSE2 is part of x86-64.
-            unsafe {
-                let v = _mm_loadu_si128(src.as_ptr().add(i).cast());
-                _mm_stream_si128(out.as_mut_ptr().add(i).cast(), v);
-            }
-            i += 16;
-        }
-        out[i..n].copy_from_slice(&src[i..n]);
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    out.copy_from_slice(src);
+    crate::simd::stream_copy(out, src);
 }
 
 /// Writes the recorded clears `color` and `depth` into the rows of `color_rows` and

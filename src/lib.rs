@@ -26,7 +26,8 @@
 //!    storage. The pipeline never sees a GL token or the GL state.
 //! 5. **The leaves**: [`pipe`] (the vocabulary the plan and the pipeline share: compare
 //!    functions, blend factors, primitives, limits, parameter blocks), [`gl`] (tokens, C
-//!    types, [`gl::error::GlError`]), [`cpu`] (instruction-set detection), [`tuning`]
+//!    types, [`gl::error::GlError`]), [`simd`] (the only home of intrinsics, and CPU
+//!    detection in [`simd::cpu`]), [`tuning`]
 //!    (every `SOFTGL_*` knob, read once), [`stats`] and [`memory`].
 //!
 //! # The reference
@@ -36,8 +37,12 @@
 //! `docs/llvmpipe-rules.md` (cited in module docs as "docs/llvmpipe-rules.md §n") and, for
 //! framebuffer objects, blits and multisampling, in `docs/fbo-rules.md`.
 
+#![deny(unsafe_op_in_unsafe_fn)]
+#![deny(clippy::undocumented_unsafe_blocks)]
+
 pub mod context;
-pub mod cpu;
+/// CPU detection at its first path: [`simd::cpu`].
+pub use simd::cpu;
 pub mod ffi;
 pub mod fixed_function;
 pub mod fragment;
@@ -50,6 +55,7 @@ pub mod pixels;
 pub mod plan;
 pub mod raster;
 pub mod render;
+pub mod simd;
 pub mod stats;
 #[cfg(test)]
 mod test_rng;

@@ -90,7 +90,7 @@ fn build(name: &str, link: Link) -> PathBuf {
 }
 
 /// Runs a binary (llvmpipe pinned to one thread, and its fusing to softgl's level as in
-/// src/cpu.rs; softgl ignores both) and returns what it wrote.
+/// src/simd/cpu.rs; softgl ignores both) and returns what it wrote.
 fn run(bin: &Path) -> Vec<u8> {
     // NAME.<link>.out: the two builds of a program must not share one output file.
     let mut out = bin.as_os_str().to_owned();

@@ -274,3 +274,27 @@ fn the_parser_finds_edges() {
         ["context", "pipe"].iter().map(|s| s.to_string()).collect()
     );
 }
+
+/// Intrinsics and inline assembly live only in `src/simd/`: every other module reaches the
+/// CPU's vector instructions through its wide types.
+#[test]
+fn intrinsics_only_in_simd() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    let mut found = Vec::new();
+    for f in &files {
+        let rel = f.strip_prefix(&src).unwrap();
+        if rel.starts_with("simd") {
+            continue;
+        }
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in text.lines().enumerate() {
+            let code = line.split("//").next().unwrap_or("");
+            if code.contains("std::arch") || code.contains("core::arch") || code.contains("_mm") {
+                found.push(format!("src/{}:{}: {}", rel.display(), n + 1, line.trim()));
+            }
+        }
+    }
+    assert!(found.is_empty(), "intrinsics outside src/simd:\n{}", found.join("\n"));
+}

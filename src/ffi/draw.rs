@@ -134,34 +134,27 @@ fn min_max(idx: &[u32]) -> Option<(u32, u32)> {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn min_max_avx2(idx: &[u32]) -> Option<(u32, u32)> {
-    use std::arch::x86_64::*;
+    use crate::simd::I32x8;
     const STEP: usize = 32;
     let first = *idx.first()?;
     let mut chunks = idx.chunks_exact(STEP);
-    let mut lo = [_mm256_set1_epi32(first as i32); 4];
+    // SAFETY: the caller vouches for AVX2.
+    let mut lo = [unsafe { I32x8::splat(first as i32) }; 4];
     let mut hi = lo;
     for c in &mut chunks {
         for k in 0..4 {
             // SAFETY: `c` holds 32 u32, so lanes 8k..8k+8 are in bounds; unaligned load.
-            let v = unsafe { _mm256_loadu_si256(c.as_ptr().add(8 * k) as *const __m256i) };
-            lo[k] = _mm256_min_epu32(lo[k], v);
-            hi[k] = _mm256_max_epu32(hi[k], v);
+            let v = unsafe { I32x8::load(c.as_ptr().add(8 * k)) };
+            lo[k] = lo[k].min_u32(v);
+            hi[k] = hi[k].max_u32(v);
         }
     }
-    let lo = _mm256_min_epu32(
-        _mm256_min_epu32(lo[0], lo[1]),
-        _mm256_min_epu32(lo[2], lo[3]),
+    let lo = lo[0].min_u32(lo[1]).min_u32(lo[2].min_u32(lo[3]));
+    let hi = hi[0].max_u32(hi[1]).max_u32(hi[2].max_u32(hi[3]));
+    let (l, h) = (
+        lo.to_array().map(|v| v as u32),
+        hi.to_array().map(|v| v as u32),
     );
-    let hi = _mm256_max_epu32(
-        _mm256_max_epu32(hi[0], hi[1]),
-        _mm256_max_epu32(hi[2], hi[3]),
-    );
-    let (mut l, mut h) = ([0u32; 8], [0u32; 8]);
-    // SAFETY: each array is 8 u32 (32 bytes); unaligned stores.
-    unsafe {
-        _mm256_storeu_si256(l.as_mut_ptr() as *mut __m256i, lo);
-        _mm256_storeu_si256(h.as_mut_ptr() as *mut __m256i, hi);
-    }
     let rest = chunks.remainder();
     let l = l.iter().chain(rest).fold(first, |m, &i| m.min(i));
     let h = h.iter().chain(rest).fold(first, |m, &i| m.max(i));

@@ -335,8 +335,8 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
 fn flush_current() {
     let p = super::current();
     if !p.is_null() {
-        // SAFETY: the current context is live and owned by this thread.
         let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            // SAFETY: the current context is live and owned by this thread.
             unsafe { &mut *p }.flush_pending()
         }));
     }

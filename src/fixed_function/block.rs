@@ -65,7 +65,7 @@ impl VertexStage {
         slot: &mut VertexSlot,
         out: &mut [ClipVertex],
     ) {
-        use std::arch::x86_64::*;
+        use crate::simd::F32x4;
         // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
         // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
         const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
@@ -73,54 +73,54 @@ impl VertexStage {
         let m = &self.mvp.0;
         let vp = &self.viewport;
         let tex = &self.tex_units[..self.n_tex];
-        // SAFETY (whole body): SSE/AVX2/FMA context (this function's features); the loads
-        // and stores are of 4-float arrays.
+        // SAFETY: (whole body) AVX2/FMA context (this function's features, the caller's
+        // promise); the loads and stores are of 4-float arrays.
         unsafe {
-            let col = [0, 4, 8, 12].map(|c| _mm_loadu_ps(m[c..c + 4].as_ptr()));
-            let scale = _mm_setr_ps(vp.scale[0], vp.scale[1], vp.scale[2], 0.0);
-            let trans = _mm_setr_ps(vp.translate[0], vp.translate[1], vp.translate[2], 0.0);
-            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let col = [0, 4, 8, 12].map(|c| F32x4::load(m[c..c + 4].as_ptr()));
+            let scale = F32x4::new([vp.scale[0], vp.scale[1], vp.scale[2], 0.0]);
+            let trans = F32x4::new([vp.translate[0], vp.translate[1], vp.translate[2], 0.0]);
+            let (zero, one) = (F32x4::zero(), F32x4::splat(1.0));
             let halfz = vp.halfz;
             // w in the x and y lanes, 0 in the z lane.
-            let cw_halfz = |w: __m128| _mm_blend_ps::<0b0100>(w, zero);
+            let cw_halfz = |w: F32x4| w.blend::<0b0100>(zero);
             // `clamp_color`: `max(min(v, 1), 0)`, NaN to 1 (`minps` gives its second
             // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
             // values), the comparisons the scalar `clamp_color` makes (the test below
             // checks both).
-            let clamp = |c: __m128| _mm_max_ps(_mm_min_ps(c, one), zero);
+            let clamp = |c: F32x4| c.min(one).max(zero);
             for (j, o) in out.iter_mut().enumerate() {
                 verts.vertex_into(first + j, slot);
                 let v = &slot.v;
-                let p = _mm_loadu_ps(v.pos.as_ptr());
+                let p = F32x4::load(v.pos.as_ptr());
                 // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
-                let x = _mm_mul_ps(_mm_shuffle_ps::<0x00>(p, p), col[0]);
-                let y = _mm_mul_ps(_mm_shuffle_ps::<0x55>(p, p), col[1]);
-                let z = _mm_mul_ps(_mm_shuffle_ps::<0xAA>(p, p), col[2]);
-                let w = _mm_mul_ps(_mm_shuffle_ps::<0xFF>(p, p), col[3]);
-                let clip = _mm_add_ps(_mm_add_ps(_mm_add_ps(x, y), z), w);
-                let cw = _mm_shuffle_ps::<0xFF>(clip, clip);
-                let above = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NLE_UQ>(clip, cw)) & 7;
+                let x = p.broadcast::<0x00>().mul(col[0]);
+                let y = p.broadcast::<0x55>().mul(col[1]);
+                let z = p.broadcast::<0xAA>().mul(col[2]);
+                let w = p.broadcast::<0xFF>().mul(col[3]);
+                let clip = x.add(y).add(z).add(w);
+                let cw = clip.broadcast::<0xFF>();
+                let above = clip.cmp_nle(cw).movemask() & 7;
                 // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so
                 // the same comparison gives `!(z >= 0)`.
-                let sum = _mm_add_ps(clip, if halfz { cw_halfz(cw) } else { cw });
-                let below = _mm_movemask_ps(_mm_cmp_ps::<_CMP_NGE_UQ>(sum, zero)) & 7;
+                let sum = clip.add(if halfz { cw_halfz(cw) } else { cw });
+                let below = sum.cmp_nge(zero).movemask() & 7;
                 // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
-                let inv = _mm_div_ps(one, cw);
-                let q = _mm_mul_ps(clip, inv);
+                let inv = one.div(cw);
+                let q = clip.mul(inv);
                 let win = if FMA {
-                    _mm_fmadd_ps(q, scale, trans)
+                    q.mul_add(scale, trans)
                 } else {
-                    _mm_add_ps(_mm_mul_ps(q, scale), trans)
+                    q.mul(scale).add(trans)
                 };
-                let win = _mm_blend_ps::<0b1000>(win, inv);
-                _mm_storeu_ps(o.clip.as_mut_ptr(), clip);
-                _mm_storeu_ps(o.win.as_mut_ptr(), win);
+                let win = win.blend::<0b1000>(inv);
+                clip.store(o.clip.as_mut_ptr());
+                win.store(o.win.as_mut_ptr());
                 o.mask = (ABOVE[above as usize] | BELOW[below as usize]) as _;
-                let c = clamp(_mm_loadu_ps(v.color.as_ptr()));
-                _mm_storeu_ps(o.vary.as_mut_ptr(), c);
+                let c = clamp(F32x4::load(v.color.as_ptr()));
+                c.store(o.vary.as_mut_ptr());
                 if self.color_sum {
-                    let s = clamp(_mm_loadu_ps(v.secondary.as_ptr()));
-                    _mm_storeu_ps(o.vary[VARY_SPEC..].as_mut_ptr(), s);
+                    let s = clamp(F32x4::load(v.secondary.as_ptr()));
+                    s.store(o.vary[VARY_SPEC..].as_mut_ptr());
                 }
                 for (k, (unit, tm)) in tex.iter().enumerate() {
                     let tc = v.texcoord[*unit];

@@ -16,54 +16,51 @@ use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::pipe::CompareFunc;
 use crate::pipe::{BlendEquation, BlendFactor};
+use crate::simd::{F32x8, I32x8, U16x16};
 use crate::stats::Stats;
-use std::arch::x86_64::*;
 
 /// Evaluates `p` at lanes `fx`, row `fy`.
 #[inline(always)]
-pub(super) unsafe fn eval<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
+pub(super) unsafe fn eval<const FMA: bool>(p: &Plane, fx: F32x8, fy: F32x8) -> F32x8 {
     // SAFETY: called only from functions compiled with AVX2 (and FMA when FMA is set).
     unsafe {
         let (a0, dx, dy) = (
-            _mm256_set1_ps(p.a0),
-            _mm256_set1_ps(p.dadx),
-            _mm256_set1_ps(p.dady),
+            F32x8::splat(p.a0),
+            F32x8::splat(p.dadx),
+            F32x8::splat(p.dady),
         );
         if FMA {
-            _mm256_fmadd_ps(dy, fy, _mm256_fmadd_ps(dx, fx, a0))
+            dy.mul_add(fy, dx.mul_add(fx, a0))
         } else {
-            _mm256_add_ps(
-                _mm256_mul_ps(dy, fy),
-                _mm256_add_ps(_mm256_mul_ps(dx, fx), a0),
-            )
+            dy.mul(fy).add(dx.mul(fx).add(a0))
         }
     }
 }
 
 /// Clamps to [0,1] with NaN → 0 (`maxps` returns its second operand for NaN).
 #[inline(always)]
-pub(super) unsafe fn sat(v: __m256) -> __m256 {
+pub(super) unsafe fn sat(v: F32x8) -> F32x8 {
     // SAFETY: AVX2 context (see `eval`).
-    unsafe { _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0)) }
+    unsafe { v.max(F32x8::zero()).min(F32x8::splat(1.0)) }
 }
 
 /// `d FUNC q` as a lane mask, for unsigned values below 2^31.
 #[inline(always)]
-pub(super) unsafe fn depth_pass(func: CompareFunc, q: __m256i, d: __m256i) -> __m256i {
+pub(super) unsafe fn depth_pass(func: CompareFunc, q: I32x8, d: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let ones = _mm256_set1_epi32(-1);
-        let gt = _mm256_cmpgt_epi32(q, d);
-        let lt = _mm256_cmpgt_epi32(d, q);
-        let eq = _mm256_cmpeq_epi32(q, d);
+        let ones = I32x8::splat(-1);
+        let gt = q.cmpgt(d);
+        let lt = d.cmpgt(q);
+        let eq = q.cmpeq(d);
         match func {
-            CompareFunc::Never => _mm256_setzero_si256(),
+            CompareFunc::Never => I32x8::zero(),
             CompareFunc::Less => lt,
             CompareFunc::Equal => eq,
-            CompareFunc::LEqual => _mm256_xor_si256(gt, ones),
+            CompareFunc::LEqual => gt.xor(ones),
             CompareFunc::Greater => gt,
-            CompareFunc::NotEqual => _mm256_xor_si256(eq, ones),
-            CompareFunc::GEqual => _mm256_xor_si256(lt, ones),
+            CompareFunc::NotEqual => eq.xor(ones),
+            CompareFunc::GEqual => lt.xor(ones),
             CompareFunc::Always => ones,
         }
     }
@@ -82,16 +79,16 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
     d: &DepthPlan,
     fb: &mut Target<'_>,
     idx: usize,
-    fx: __m256,
-    fy: __m256,
-    live: __m256i,
-) -> __m256i {
+    fx: F32x8,
+    fy: F32x8,
+    live: I32x8,
+) -> I32x8 {
     // SAFETY: forwarded from the caller; the masked load and store touch live lanes only.
     unsafe {
         let q = depth_q::<FMA>(t, d.format, fx, fy);
         let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
-        let old = _mm256_maskload_epi32(dptr as *const i32, live);
-        let pass = _mm256_and_si256(live, depth_pass(d.func, q, old));
+        let old = I32x8::maskload(dptr as *const i32, live);
+        let pass = live.and(depth_pass(d.func, q, old));
         if d.write {
             store_masked(dptr, fb.depth.len().saturating_sub(idx), pass, q);
         }
@@ -111,15 +108,15 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
 /// AVX2 context; the passing lanes lie inside the buffer, and `avail` is the number of
 /// values from `ptr` to its end.
 #[inline(always)]
-pub(super) unsafe fn store_masked(ptr: *mut i32, avail: usize, pass: __m256i, v: __m256i) {
+pub(super) unsafe fn store_masked(ptr: *mut i32, avail: usize, pass: I32x8, v: I32x8) {
     // SAFETY: forwarded from the caller; the plain load and store touch 8 values only
     // when `avail` says they are inside the buffer.
     unsafe {
-        let m = _mm256_movemask_ps(_mm256_castsi256_ps(pass));
+        let m = pass.movemask();
         if m == 0xff && avail >= 8 {
-            _mm256_storeu_si256(ptr as *mut __m256i, v);
+            v.store(ptr);
         } else {
-            _mm256_maskstore_epi32(ptr, pass, v);
+            v.maskstore(ptr, pass);
         }
     }
 }
@@ -137,8 +134,8 @@ pub(super) unsafe fn write8<const BLEND: bool>(
     fb: &mut Target<'_>,
     idx: usize,
     n: usize,
-    pass: __m256i,
-    px: __m256i,
+    pass: I32x8,
+    px: I32x8,
     stats: &mut Stats,
 ) {
     // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
@@ -146,14 +143,14 @@ pub(super) unsafe fn write8<const BLEND: bool>(
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
         let px = if BLEND {
             let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
-            let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
+            let dst = I32x8::maskload(cptr as *const i32, pass);
             stats.color_reads += n as u64;
             blend8(b, px, dst)
         } else {
             px
         };
         store_masked(cptr, fb.color.len().saturating_sub(idx), pass, px);
-        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+        stats.color_writes += pass.movemask().count_ones() as u64;
     }
 }
 
@@ -179,14 +176,14 @@ pub(super) unsafe fn write8_over(
     fb: &mut Target<'_>,
     idx: usize,
     n: usize,
-    pass: __m256i,
-    px: __m256i,
+    pass: I32x8,
+    px: I32x8,
     stats: &mut Stats,
 ) {
     // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
     unsafe {
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
-        let dst = _mm256_maskload_epi32(cptr as *const i32, pass);
+        let dst = I32x8::maskload(cptr as *const i32, pass);
         stats.color_reads += n as u64;
         store_masked(
             cptr,
@@ -194,36 +191,33 @@ pub(super) unsafe fn write8_over(
             pass,
             over8(px, dst),
         );
-        stats.color_writes += _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+        stats.color_writes += pass.movemask().count_ones() as u64;
     }
 }
 
 /// The "over" blend of eight packed RGBA8 source pixels over eight destination pixels:
 /// [`blend8`] for a plan that [`blend_is_over`] accepts.
 #[inline(always)]
-pub(super) unsafe fn over8(px: __m256i, dst: __m256i) -> __m256i {
+pub(super) unsafe fn over8(px: I32x8, dst: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let z = _mm256_setzero_si256();
+        let z = I32x8::zero();
         // Not closures: they would be compiled without AVX2 and not inlined.
-        let lo = over16(_mm256_unpacklo_epi8(px, z), _mm256_unpacklo_epi8(dst, z));
-        let hi = over16(_mm256_unpackhi_epi8(px, z), _mm256_unpackhi_epi8(dst, z));
-        _mm256_packus_epi16(lo, hi)
+        let lo = over16(px.unpack_lo_u8(z), dst.unpack_lo_u8(z));
+        let hi = over16(px.unpack_hi_u8(z), dst.unpack_hi_u8(z));
+        lo.pack_u8(hi)
     }
 }
 
 /// The "over" blend of four pixels held as 16-bit channel words: `blend16` for a plan
 /// that [`blend_is_over`] accepts.
 #[inline(always)]
-unsafe fn over16(s: __m256i, d: __m256i) -> __m256i {
+unsafe fn over16(s: U16x16, d: U16x16) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let c255 = _mm256_set1_epi16(255);
+        let c255 = U16x16::splat(255);
         let a = alpha_words(s);
-        _mm256_min_epu16(
-            _mm256_add_epi16(mul8x16(s, a), mul8x16(d, _mm256_sub_epi16(c255, a))),
-            c255,
-        )
+        mul8x16(s, a).add(mul8x16(d, c255.sub(a))).min(c255)
     }
 }
 
@@ -263,12 +257,12 @@ pub fn blend_code(plan: &FragPlan) -> u8 {
 
 /// `q FUNC old` as a lane mask, with the function fixed at compile time when `D` names it.
 #[inline(always)]
-unsafe fn depth_pass_d<const D: u8>(func: CompareFunc, q: __m256i, old: __m256i) -> __m256i {
+unsafe fn depth_pass_d<const D: u8>(func: CompareFunc, q: I32x8, old: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         match D {
-            D_LESS => _mm256_cmpgt_epi32(old, q),
-            D_LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(q, old), _mm256_set1_epi32(-1)),
+            D_LESS => old.cmpgt(q),
+            D_LEQUAL => q.cmpgt(old).xor(I32x8::splat(-1)),
             _ => depth_pass(func, q, old),
         }
     }
@@ -279,24 +273,23 @@ unsafe fn depth_pass_d<const D: u8>(func: CompareFunc, q: __m256i, old: __m256i)
 unsafe fn depth_q<const FMA: bool>(
     t: &SetupTriangle,
     f: DepthFormat,
-    fx: __m256,
-    fy: __m256,
-) -> __m256i {
+    fx: F32x8,
+    fy: F32x8,
+) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let z = sat(eval::<FMA>(&t.z, fx, fy));
         match f {
-            DepthFormat::Z24 => _mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(16_777_215.0))),
+            DepthFormat::Z24 => z.mul(F32x8::splat(16_777_215.0)).to_i32(),
             // `sat` is llvmpipe's clamp (maxps then minps: NaN and −0 give +0), and the
             // float's bits are stored.
-            DepthFormat::Z32F => _mm256_castps_si256(z),
+            DepthFormat::Z32F => z.bits(),
             _ => {
                 // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
-                let v = _mm256_add_ps(
-                    _mm256_mul_ps(z, _mm256_set1_ps(65535.0 / 65536.0)),
-                    _mm256_set1_ps(128.0),
-                );
-                _mm256_and_si256(_mm256_castps_si256(v), _mm256_set1_epi32(0xFFFF))
+                let v = z
+                    .mul(F32x8::splat(65535.0 / 65536.0))
+                    .add(F32x8::splat(128.0));
+                v.bits().and(I32x8::splat(0xFFFF))
             }
         }
     }
@@ -307,28 +300,28 @@ unsafe fn depth_q<const FMA: bool>(
 #[inline(always)]
 unsafe fn color8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
-    flat: __m256i,
-    fx: __m256,
-    fy: __m256,
-) -> __m256i {
+    flat: I32x8,
+    fx: F32x8,
+    fy: F32x8,
+) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         if FLAT {
             return flat;
         }
         let oow = if PERSP {
-            _mm256_div_ps(_mm256_set1_ps(1.0), eval::<FMA>(&t.w, fx, fy))
+            F32x8::splat(1.0).div(eval::<FMA>(&t.w, fx, fy))
         } else {
-            _mm256_set1_ps(1.0)
+            F32x8::splat(1.0)
         };
-        let mut acc = _mm256_setzero_si256();
+        let mut acc = I32x8::zero();
         for ch in 0..4 {
             let mut a = eval::<FMA>(&t.vary[ch], fx, fy);
             if PERSP {
-                a = _mm256_mul_ps(a, oow);
+                a = a.mul(oow);
             }
-            let u = _mm256_cvtps_epi32(_mm256_mul_ps(sat(a), _mm256_set1_ps(255.0)));
-            acc = _mm256_or_si256(acc, _mm256_sllv_epi32(u, _mm256_set1_epi32(8 * ch as i32)));
+            let u = sat(a).mul(F32x8::splat(255.0)).to_i32();
+            acc = acc.or(u.shl_var(I32x8::splat(8 * ch as i32)));
         }
         acc
     }
@@ -384,14 +377,14 @@ unsafe fn chunk8<
     plan: &FragPlan,
     fb: &mut Target<'_>,
     idx: usize,
-    fx: __m256,
-    fy: __m256,
+    fx: F32x8,
+    fy: F32x8,
     n: usize,
-    live: __m256i,
-    flat: __m256i,
+    live: I32x8,
+    flat: I32x8,
     tally: &mut Tally,
 ) {
-    // SAFETY (whole body): forwarded from the caller; full loads and stores cover
+    // SAFETY: (whole body) forwarded from the caller; full loads and stores cover
     // `idx..idx + 8` only when `FULL`, masked ones only live (passing) lanes otherwise.
     unsafe {
         let mut pass = live;
@@ -406,17 +399,17 @@ unsafe fn chunk8<
             let q = depth_q::<FMA>(t, format, fx, fy);
             let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
             let old = if FULL {
-                _mm256_loadu_si256(dptr as *const __m256i)
+                I32x8::load(dptr)
             } else if PAIR {
                 load_pair(dptr, fb.width, live)
             } else {
-                _mm256_maskload_epi32(dptr as *const i32, live)
+                I32x8::maskload(dptr as *const i32, live)
             };
             pass = depth_pass_d::<DEPTH>(d.func, q, old);
             if !FULL {
-                pass = _mm256_and_si256(live, pass);
+                pass = live.and(pass);
             }
-            let m = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u32;
+            let m = pass.movemask();
             if m == 0 {
                 return;
             }
@@ -424,8 +417,8 @@ unsafe fn chunk8<
             all = FULL && m == 0xFF;
             if d.write {
                 if FULL {
-                    let v = _mm256_blendv_epi8(old, q, pass);
-                    _mm256_storeu_si256(dptr as *mut __m256i, v);
+                    let v = old.blendv(q, pass);
+                    v.store(dptr);
                 } else if PAIR {
                     store_pair(dptr, fb.width, pass, q);
                 } else {
@@ -442,19 +435,16 @@ unsafe fn chunk8<
             px
         } else {
             let dst = if FULL {
-                _mm256_loadu_si256(cptr as *const __m256i)
+                I32x8::load(cptr)
             } else if PAIR {
                 load_pair(cptr, fb.width, pass)
             } else {
-                _mm256_maskload_epi32(cptr as *const i32, pass)
+                I32x8::maskload(cptr as *const i32, pass)
             };
             tally.reads += if PAIR {
                 // Counted as the two rows' spans count: a row's live lanes, when one of
                 // them passed the depth test.
-                let (l, m) = (
-                    _mm256_movemask_ps(_mm256_castsi256_ps(live)) as u32,
-                    _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u32,
-                );
+                let (l, m) = (live.movemask(), pass.movemask());
                 let row = |r: u32| if m & r != 0 { (l & r).count_ones() } else { 0 };
                 u64::from(row(0x0F) + row(0xF0))
             } else {
@@ -467,13 +457,13 @@ unsafe fn chunk8<
             };
             if FULL && !all {
                 // Failing lanes keep their stored colour.
-                _mm256_blendv_epi8(dst, out, pass)
+                dst.blendv(out, pass)
             } else {
                 out
             }
         };
         if FULL && (all || BLEND != B_NONE) {
-            _mm256_storeu_si256(cptr as *mut __m256i, px);
+            px.store(cptr);
         } else if PAIR {
             store_pair(cptr, fb.width, pass, px);
         } else {
@@ -511,18 +501,18 @@ pub unsafe fn shade_span<
 ) {
     let count = (x1 + 1 - x0) as u64;
     let mut tally = Tally::default();
-    // SAFETY (whole body): AVX2 (+FMA) context guaranteed by the caller; every chunk
+    // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; every chunk
     // covers lanes `x..x + n` with `x + n <= x1 + 1 <= w`, inside row `py`.
     unsafe {
-        let lane = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
-        let fy = _mm256_set1_ps(py as f32);
-        let flat = _mm256_set1_epi32(u32::from_le_bytes(t.flat_u8) as i32);
+        let lane = F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+        let fy = F32x8::splat(py as f32);
+        let flat = I32x8::splat(u32::from_le_bytes(t.flat_u8) as i32);
         let row = (py - fb.y0) * fb.width;
         let end = x1 + 1;
         let mut x = x0;
         // Pixel coordinates are integers below 2^24: stepping by 8 is exact.
-        let mut fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane);
-        let all = _mm256_set1_epi32(-1);
+        let mut fx = F32x8::splat(x as f32).add(lane);
+        let all = I32x8::splat(-1);
         while x + 8 <= end {
             chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, true, false>(
                 t,
@@ -537,12 +527,12 @@ pub unsafe fn shade_span<
                 &mut tally,
             );
             x += 8;
-            fx = _mm256_add_ps(fx, _mm256_set1_ps(8.0));
+            fx = fx.add(F32x8::splat(8.0));
         }
         if x < end {
             let n = end - x;
-            let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n as i32), lane_i);
+            let lane_i = I32x8::new([0, 1, 2, 3, 4, 5, 6, 7]);
+            let live = I32x8::splat(n as i32).cmpgt(lane_i);
             chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false, false>(
                 t,
                 plan,
@@ -592,17 +582,11 @@ pub unsafe fn shade_pair<
     unsafe {
         // Pixel coordinates are integers below 2^24: the sums are exact, the same values
         // as a span's lanes.
-        let fx = _mm256_add_ps(
-            _mm256_set1_ps(x0 as f32),
-            _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 0.0, 1.0, 2.0, 3.0),
-        );
-        let fy = _mm256_add_ps(
-            _mm256_set1_ps(py as f32),
-            _mm256_setr_ps(0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0),
-        );
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let live = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(mask as i32), bits), bits);
-        let flat = _mm256_set1_epi32(u32::from_le_bytes(t.flat_u8) as i32);
+        let fx = F32x8::splat(x0 as f32).add(F32x8::new([0.0, 1.0, 2.0, 3.0, 0.0, 1.0, 2.0, 3.0]));
+        let fy = F32x8::splat(py as f32).add(F32x8::new([0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]));
+        let bits = I32x8::new([1, 2, 4, 8, 16, 32, 64, 128]);
+        let live = I32x8::splat(mask as i32).and(bits).cmpeq(bits);
+        let flat = I32x8::splat(u32::from_le_bytes(t.flat_u8) as i32);
         let idx = (py - fb.y0) * fb.width + x0;
         chunk8::<FMA, DEPTH, FLAT, PERSP, BLEND, false, true>(
             t,
@@ -626,18 +610,11 @@ pub unsafe fn shade_pair<
 /// # Safety
 /// AVX2 context; the live lanes lie inside the buffer.
 #[inline(always)]
-unsafe fn load_pair(ptr: *const i32, stride: usize, live: __m256i) -> __m256i {
+unsafe fn load_pair(ptr: *const i32, stride: usize, live: I32x8) -> I32x8 {
     // SAFETY: forwarded from the caller; masked loads touch live lanes only, and the second
     // row's address is formed with wrapping arithmetic (it may lie past the buffer when
     // none of its lanes is live).
-    unsafe {
-        let lo = _mm_maskload_epi32(ptr, _mm256_castsi256_si128(live));
-        let hi = _mm_maskload_epi32(
-            ptr.wrapping_add(stride),
-            _mm256_extracti128_si256::<1>(live),
-        );
-        _mm256_set_m128i(hi, lo)
-    }
+    unsafe { I32x8::maskload_halves(ptr, ptr.wrapping_add(stride), live) }
 }
 
 /// Stores the `pass` lanes of a 4x2 block (see [`load_pair`]).
@@ -645,39 +622,34 @@ unsafe fn load_pair(ptr: *const i32, stride: usize, live: __m256i) -> __m256i {
 /// # Safety
 /// AVX2 context; the passing lanes lie inside the buffer.
 #[inline(always)]
-unsafe fn store_pair(ptr: *mut i32, stride: usize, pass: __m256i, v: __m256i) {
+unsafe fn store_pair(ptr: *mut i32, stride: usize, pass: I32x8, v: I32x8) {
     // SAFETY: as in `load_pair`.
     unsafe {
-        _mm_maskstore_epi32(ptr, _mm256_castsi256_si128(pass), _mm256_castsi256_si128(v));
-        _mm_maskstore_epi32(
-            ptr.wrapping_add(stride),
-            _mm256_extracti128_si256::<1>(pass),
-            _mm256_extracti128_si256::<1>(v),
-        );
+        v.maskstore_halves(ptr, ptr.wrapping_add(stride), pass);
     }
 }
 
 /// Broadcasts each pixel's alpha word to its four channel words (16-bit lanes).
 #[inline(always)]
-unsafe fn alpha_words(v: __m256i) -> __m256i {
+unsafe fn alpha_words(v: U16x16) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
-    unsafe { _mm256_shufflehi_epi16(_mm256_shufflelo_epi16(v, 0xFF), 0xFF) }
+    v.shuffle4::<0xFF>()
 }
 
 /// A blend factor for four pixels in 16-bit lanes (`rgb` selects the RGB factor rules).
 #[inline(always)]
-unsafe fn factor16(f: BlendFactor, s: __m256i, d: __m256i, k: __m256i, rgb: bool) -> __m256i {
+unsafe fn factor16(f: BlendFactor, s: U16x16, d: U16x16, k: U16x16, rgb: bool) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let c255 = _mm256_set1_epi16(255);
+        let c255 = U16x16::splat(255);
         // A function, not a closure, so it is compiled with the caller's AVX2.
         #[inline(always)]
-        unsafe fn inv(v: __m256i) -> __m256i {
+        unsafe fn inv(v: U16x16) -> U16x16 {
             // SAFETY: AVX2 context (see `eval`).
-            unsafe { _mm256_sub_epi16(_mm256_set1_epi16(255), v) }
+            unsafe { U16x16::splat(255).sub(v) }
         }
         match f {
-            BlendFactor::Zero => _mm256_setzero_si256(),
+            BlendFactor::Zero => U16x16::zero(),
             BlendFactor::One => c255,
             BlendFactor::SrcColor => s,
             BlendFactor::OneMinusSrcColor => inv(s),
@@ -693,7 +665,7 @@ unsafe fn factor16(f: BlendFactor, s: __m256i, d: __m256i, k: __m256i, rgb: bool
             BlendFactor::OneMinusConstantAlpha => inv(alpha_words(k)),
             BlendFactor::SrcAlphaSaturate => {
                 if rgb {
-                    _mm256_min_epu16(alpha_words(s), inv(alpha_words(d)))
+                    alpha_words(s).min(inv(alpha_words(d)))
                 } else {
                     c255
                 }
@@ -704,46 +676,31 @@ unsafe fn factor16(f: BlendFactor, s: __m256i, d: __m256i, k: __m256i, rgb: bool
 
 /// llvmpipe's unorm8 multiply on 16-bit lanes: `(t + (t >> 8) + 128) >> 8`, `t = a·b`.
 #[inline(always)]
-unsafe fn mul8x16(a: __m256i, b: __m256i) -> __m256i {
+unsafe fn mul8x16(a: U16x16, b: U16x16) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let t = _mm256_mullo_epi16(a, b);
-        _mm256_srli_epi16(
-            _mm256_add_epi16(
-                _mm256_add_epi16(t, _mm256_srli_epi16(t, 8)),
-                _mm256_set1_epi16(128),
-            ),
-            8,
-        )
+        let t = a.mullo(b);
+        t.add(t.shr::<8>()).add(U16x16::splat(128)).shr::<8>()
     }
 }
 
 #[inline(always)]
-unsafe fn equation16(
-    eq: BlendEquation,
-    s: __m256i,
-    sf: __m256i,
-    d: __m256i,
-    df: __m256i,
-) -> __m256i {
+unsafe fn equation16(eq: BlendEquation, s: U16x16, sf: U16x16, d: U16x16, df: U16x16) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         match eq {
-            BlendEquation::Add => _mm256_min_epu16(
-                _mm256_add_epi16(mul8x16(s, sf), mul8x16(d, df)),
-                _mm256_set1_epi16(255),
-            ),
-            BlendEquation::Subtract => _mm256_subs_epu16(mul8x16(s, sf), mul8x16(d, df)),
-            BlendEquation::ReverseSubtract => _mm256_subs_epu16(mul8x16(d, df), mul8x16(s, sf)),
-            BlendEquation::Min => _mm256_min_epu16(s, d),
-            BlendEquation::Max => _mm256_max_epu16(s, d),
+            BlendEquation::Add => mul8x16(s, sf).add(mul8x16(d, df)).min(U16x16::splat(255)),
+            BlendEquation::Subtract => mul8x16(s, sf).sub_sat(mul8x16(d, df)),
+            BlendEquation::ReverseSubtract => mul8x16(d, df).sub_sat(mul8x16(s, sf)),
+            BlendEquation::Min => s.min(d),
+            BlendEquation::Max => s.max(d),
         }
     }
 }
 
 /// Blends four pixels held as 16-bit channel words.
 #[inline(always)]
-unsafe fn blend16(p: &BlendPlan, s: __m256i, d: __m256i, k: __m256i) -> __m256i {
+unsafe fn blend16(p: &BlendPlan, s: U16x16, d: U16x16, k: U16x16) -> U16x16 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let rgb = equation16(
@@ -768,48 +725,21 @@ unsafe fn blend16(p: &BlendPlan, s: __m256i, d: __m256i, k: __m256i) -> __m256i 
             d,
             factor16(p.dst_a, s, d, k, false),
         );
-        _mm256_blend_epi16(rgb, a, 0b1000_1000)
+        rgb.blend::<0b1000_1000>(a)
     }
 }
 
 /// Blends eight packed RGBA8 source pixels over eight destination pixels exactly as
 /// [`super::blend::blend`] does.
 #[inline(always)]
-pub(super) unsafe fn blend8(p: &BlendPlan, src: __m256i, dst: __m256i) -> __m256i {
+pub(super) unsafe fn blend8(p: &BlendPlan, src: I32x8, dst: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
-        let z = _mm256_setzero_si256();
+        let z = I32x8::zero();
         let kc = p.color;
-        let k = _mm256_set_epi16(
-            kc[3] as i16,
-            kc[2] as i16,
-            kc[1] as i16,
-            kc[0] as i16,
-            kc[3] as i16,
-            kc[2] as i16,
-            kc[1] as i16,
-            kc[0] as i16,
-            kc[3] as i16,
-            kc[2] as i16,
-            kc[1] as i16,
-            kc[0] as i16,
-            kc[3] as i16,
-            kc[2] as i16,
-            kc[1] as i16,
-            kc[0] as i16,
-        );
-        let lo = blend16(
-            p,
-            _mm256_unpacklo_epi8(src, z),
-            _mm256_unpacklo_epi8(dst, z),
-            k,
-        );
-        let hi = blend16(
-            p,
-            _mm256_unpackhi_epi8(src, z),
-            _mm256_unpackhi_epi8(dst, z),
-            k,
-        );
-        _mm256_packus_epi16(lo, hi)
+        let k = U16x16::splat4(kc.map(u16::from));
+        let lo = blend16(p, src.unpack_lo_u8(z), dst.unpack_lo_u8(z), k);
+        let hi = blend16(p, src.unpack_hi_u8(z), dst.unpack_hi_u8(z), k);
+        lo.pack_u8(hi)
     }
 }

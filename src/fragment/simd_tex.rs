@@ -16,10 +16,10 @@ use super::simd::{depth_test8, eval, sat, write8, write8_over};
 use super::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::simd::{F32x8, I32x8};
 use crate::stats::Stats;
 use crate::texture::fast::{EnvOp, FastEnv};
 use crate::texture::sample::INV_255;
-use std::arch::x86_64::*;
 
 /// Whether [`tex_row`] covers this plan: no alpha test, stencil, logic op or occlusion
 /// count, a full colour mask or none, and a colour format stored as RGBA8 unchanged.
@@ -40,7 +40,7 @@ pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
 #[inline(always)]
-pub unsafe fn eval8<const FMA: bool>(p: &Plane, fx: __m256, fy: __m256) -> __m256 {
+pub unsafe fn eval8<const FMA: bool>(p: &Plane, fx: F32x8, fy: F32x8) -> F32x8 {
     // SAFETY: forwarded from the caller.
     unsafe { eval::<FMA>(p, fx, fy) }
 }
@@ -123,17 +123,17 @@ pub struct Row8<'a> {
     /// First pixel column.
     pub x: usize,
     /// Covered lanes.
-    pub live: __m256i,
+    pub live: I32x8,
     /// Texture values.
-    pub tex: __m256i,
+    pub tex: I32x8,
     /// Pixel x of each lane as f32.
-    pub fx: __m256,
+    pub fx: F32x8,
     /// Pixel y as f32.
-    pub fy: __m256,
+    pub fy: F32x8,
     /// The `1/w` plane at each lane (PERSP).
-    pub w: __m256,
+    pub w: F32x8,
     /// `1 / w` (PERSP).
-    pub oow: __m256,
+    pub oow: F32x8,
 }
 
 /// Shades the `live` lanes of the 8 pixels from `x` in row `py` with texture values
@@ -166,16 +166,13 @@ pub unsafe fn tex_row<
     // SAFETY: forwarded from the caller; `tex` is 32 bytes.
     unsafe {
         let m = |i: usize| -(live[i] as i32);
-        let fx = _mm256_add_ps(
-            _mm256_set1_ps(x as f32),
-            _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
-        );
-        let fy = _mm256_set1_ps(py as f32);
+        let fx = F32x8::splat(x as f32).add(F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]));
+        let fy = F32x8::splat(py as f32);
         let (w, oow) = if PERSP && !FLAT {
             let w = eval::<FMA>(&t.w, fx, fy);
-            (w, _mm256_div_ps(_mm256_set1_ps(1.0), w))
+            (w, F32x8::splat(1.0).div(w))
         } else {
-            (_mm256_set1_ps(1.0), _mm256_set1_ps(1.0))
+            (F32x8::splat(1.0), F32x8::splat(1.0))
         };
         let row = Row8 {
             t,
@@ -184,8 +181,8 @@ pub unsafe fn tex_row<
             white: White::No,
             py,
             x,
-            live: _mm256_setr_epi32(m(0), m(1), m(2), m(3), m(4), m(5), m(6), m(7)),
-            tex: _mm256_loadu_si256(tex.as_ptr() as *const __m256i),
+            live: I32x8::new([m(0), m(1), m(2), m(3), m(4), m(5), m(6), m(7)]),
+            tex: I32x8::load(tex.as_ptr()),
             fx,
             fy,
             w,
@@ -200,13 +197,11 @@ pub unsafe fn tex_row<
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn channel(v: __m256i, ch: usize) -> __m256i {
+unsafe fn channel(v: I32x8, ch: usize) -> I32x8 {
     // SAFETY: forwarded from the caller.
     unsafe {
-        _mm256_and_si256(
-            _mm256_srlv_epi32(v, _mm256_set1_epi32(8 * ch as i32)),
-            _mm256_set1_epi32(255),
-        )
+        v.shr_var(I32x8::splat(8 * ch as i32))
+            .and(I32x8::splat(255))
     }
 }
 
@@ -215,9 +210,9 @@ unsafe fn channel(v: __m256i, ch: usize) -> __m256i {
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn tex_f(v: __m256i, ch: usize) -> __m256 {
+unsafe fn tex_f(v: I32x8, ch: usize) -> F32x8 {
     // SAFETY: forwarded from the caller.
-    unsafe { _mm256_mul_ps(_mm256_cvtepi32_ps(channel(v, ch)), _mm256_set1_ps(INV_255)) }
+    unsafe { channel(v, ch).to_f32().mul(F32x8::splat(INV_255)) }
 }
 
 /// `unorm8`: clamp (NaN → 0), ·255, round half to even.
@@ -225,9 +220,9 @@ unsafe fn tex_f(v: __m256i, ch: usize) -> __m256 {
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn unorm(c: __m256) -> __m256i {
+unsafe fn unorm(c: F32x8) -> I32x8 {
     // SAFETY: forwarded from the caller.
-    unsafe { _mm256_cvtps_epi32(_mm256_mul_ps(sat(c), _mm256_set1_ps(255.0))) }
+    unsafe { sat(c).mul(F32x8::splat(255.0)).to_i32() }
 }
 
 /// The primary colour's channel `ch` of a row.
@@ -238,15 +233,15 @@ unsafe fn unorm(c: __m256) -> __m256i {
 unsafe fn frag<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     r: &Row8<'_>,
     ch: usize,
-) -> __m256 {
+) -> F32x8 {
     // SAFETY: forwarded from the caller.
     unsafe {
         if FLAT {
-            _mm256_set1_ps(r.t.flat[ch])
+            F32x8::splat(r.t.flat[ch])
         } else {
             let a = eval::<FMA>(&r.t.vary[ch], r.fx, r.fy);
             if PERSP {
-                _mm256_mul_ps(a, r.oow)
+                a.mul(r.oow)
             } else {
                 a
             }
@@ -275,18 +270,18 @@ pub unsafe fn shade8<
     let (t, plan, env) = (r.t, r.plan, r.env);
     let w = fb.width;
     let n = 8.min(w - r.x);
-    // SAFETY (whole body): AVX2 (+FMA) context guaranteed by the caller; masked loads and
+    // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; masked loads and
     // stores touch only live lanes, which lie in `x..x + n` of row `py`.
     unsafe {
         let live_v = r.live;
-        let count = _mm256_movemask_ps(_mm256_castsi256_ps(live_v)).count_ones() as u64;
+        let count = live_v.movemask().count_ones() as u64;
         stats.fragments += count;
         let idx = (r.py - fb.y0) * w + r.x;
         let mut pass = live_v;
         if DEPTH {
             let d = plan.depth.expect("DEPTH implies a depth plan");
             pass = depth_test8::<FMA>(t, &d, fb, idx, r.fx, r.fy, live_v);
-            let np = _mm256_movemask_ps(_mm256_castsi256_ps(pass)).count_ones() as u64;
+            let np = pass.movemask().count_ones() as u64;
             stats.depth_reads += count;
             stats.depth_failed += count - np;
             if np == 0 {
@@ -301,40 +296,34 @@ pub unsafe fn shade8<
             White::No => false,
             White::Exact => true,
             White::PerLane => {
-                let f = _mm256_mul_ps(r.w, r.oow);
-                let ok = _mm256_and_ps(
-                    _mm256_cmp_ps::<_CMP_GE_OQ>(f, _mm256_set1_ps(WHITE_LO)),
-                    _mm256_cmp_ps::<_CMP_LE_OQ>(f, _mm256_set1_ps(WHITE_HI)),
-                );
-                let need = _mm256_movemask_ps(_mm256_castsi256_ps(pass));
-                _mm256_movemask_ps(ok) & need == need
+                let f = r.w.mul(r.oow);
+                let ok = f
+                    .cmp_ge(F32x8::splat(WHITE_LO))
+                    .and(f.cmp_le(F32x8::splat(WHITE_HI)));
+                let need = pass.movemask();
+                ok.movemask() & need == need
             }
         };
         let px = if white || (env.rgb == EnvOp::Tex && env.alpha == EnvOp::Tex) {
             texv
         } else {
-            let mut acc = _mm256_setzero_si256();
+            let mut acc = I32x8::zero();
             for ch in 0..4 {
                 let op = if ch == 3 { env.alpha } else { env.rgb };
                 let v = match op {
                     EnvOp::Tex => channel(texv, ch),
                     EnvOp::Frag => unorm(frag::<FMA, FLAT, PERSP>(r, ch)),
-                    EnvOp::Modulate => unorm(_mm256_mul_ps(
-                        tex_f(texv, ch),
-                        frag::<FMA, FLAT, PERSP>(r, ch),
-                    )),
+                    EnvOp::Modulate => unorm(tex_f(texv, ch).mul(frag::<FMA, FLAT, PERSP>(r, ch))),
                     EnvOp::Decal => {
                         let a = tex_f(texv, 3);
-                        unorm(_mm256_add_ps(
-                            _mm256_mul_ps(tex_f(texv, ch), a),
-                            _mm256_mul_ps(
-                                frag::<FMA, FLAT, PERSP>(r, ch),
-                                _mm256_sub_ps(_mm256_set1_ps(1.0), a),
-                            ),
-                        ))
+                        unorm(
+                            tex_f(texv, ch)
+                                .mul(a)
+                                .add(frag::<FMA, FLAT, PERSP>(r, ch).mul(F32x8::splat(1.0).sub(a))),
+                        )
                     }
                 };
-                acc = _mm256_or_si256(acc, _mm256_sllv_epi32(v, _mm256_set1_epi32(8 * ch as i32)));
+                acc = acc.or(v.shl_var(I32x8::splat(8 * ch as i32)));
             }
             acc
         };

@@ -167,7 +167,7 @@ unsafe fn fetch_from(
         arr.ptr.checked_add(off)? as *const u8
     };
     let n = arr.size as usize;
-    // SAFETY (all arms): buffer reads were bounds-checked; client pointers are the
+    // SAFETY: (all arms) buffer reads were bounds-checked; client pointers are the
     // program's promise. The common layouts are read as whole vectors: filled component
     // by component, `out` went through the stack in four 4-byte stores read back as one
     // 16-byte load, a store-forwarding stall that was 5% of a 200k-triangle frame. The
@@ -196,7 +196,7 @@ unsafe fn fetch_from(
 /// `p` must be readable for `n` floats.
 #[inline(always)]
 unsafe fn floats(p: *const u8, n: usize, fill: [f32; 4]) -> [f32; 4] {
-    // SAFETY (all arms): forwarded from the caller.
+    // SAFETY: (all arms) forwarded from the caller.
     unsafe {
         match n {
             4 => p.cast::<[f32; 4]>().read_unaligned(),
@@ -226,7 +226,7 @@ unsafe fn convert_other(
     fill: [f32; 4],
 ) -> [f32; 4] {
     let mut out = fill;
-    // SAFETY (all arms): forwarded from the caller.
+    // SAFETY: (all arms) forwarded from the caller.
     unsafe {
         match ty {
             DataType::Float => {

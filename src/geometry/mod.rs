@@ -162,35 +162,10 @@ impl Viewport {
 #[inline(always)]
 pub fn madd(a: f32, b: f32, c: f32, fma: bool) -> f32 {
     if fma {
-        #[cfg(target_arch = "x86_64")]
-        if crate::cpu::has_fma_instructions() {
-            return fused_inline(a, b, c);
-        }
-        a.mul_add(b, c)
+        crate::simd::mul_add_fused(a, b, c)
     } else {
         a * b + c
     }
-}
-
-/// `a * b + c` with one rounding by the CPU's FMA instruction, inline: code compiled
-/// without the `fma` target feature would otherwise call libm's `fmaf` (same result).
-/// Callers check that the CPU has FMA.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn fused_inline(a: f32, b: f32, c: f32) -> f32 {
-    let mut r = a;
-    // SAFETY: the caller checked that the CPU has FMA; the instruction reads and writes
-    // only these registers (r = r * b + c).
-    unsafe {
-        std::arch::asm!(
-            "vfmadd213ss {r}, {b}, {c}",
-            r = inout(xmm_reg) r,
-            b = in(xmm_reg) b,
-            c = in(xmm_reg) c,
-            options(pure, nomem, nostack, preserves_flags)
-        );
-    }
-    r
 }
 
 /// `v` rounded to the nearest integer, ties to even (`f32::round_ties_even`), without a

@@ -238,7 +238,7 @@ fn classes(fast: u32, degenerate: u32, culled: u32, empty: u32) -> [Class; LANES
 }
 
 /// The setup of every lane (see [`SetupQueue::flush`]) in AVX2 vectors: eight f32 or i32 lanes, or two halves of four i64 lanes for
-/// the products (`_mm256_mul_epi32` of sign-extended i32 values is the exact i64 product).
+/// the products (`vpmuldq` of sign-extended i32 values is the exact i64 product).
 ///
 /// # Safety
 /// The CPU must have AVX2.
@@ -251,125 +251,81 @@ unsafe fn lanes_avx2(
     cull: CullMode,
     o: &mut Lanes,
 ) {
-    use std::arch::x86_64::*;
+    use crate::simd::{F32x8, I32x8, I64x4};
     // SAFETY: AVX2 is present (the caller's promise); every load and store is of a
     // `[f32; 8]`, `[i64; 8]` or `[i64; 4]`-sized part of the arrays named, unaligned.
     unsafe {
-        let ld = |a: &[f32; LANES]| _mm256_loadu_ps(a.as_ptr());
-        let st = |a: &mut [f32; LANES], v: __m256| _mm256_storeu_ps(a.as_mut_ptr(), v);
+        let ld = |a: &[f32; LANES]| F32x8::load(a.as_ptr());
+        let st = |a: &mut [f32; LANES], v: F32x8| v.store(a.as_mut_ptr());
         // The two halves of eight i32 lanes, sign-extended to i64.
-        let wide = |v: __m256i| {
-            (
-                _mm256_cvtepi32_epi64(_mm256_castsi256_si128(v)),
-                _mm256_cvtepi32_epi64(_mm256_extracti128_si256::<1>(v)),
-            )
-        };
-        let st64 = |a: &mut [i64; LANES], (lo, hi): (__m256i, __m256i)| {
-            _mm256_storeu_si256(a.as_mut_ptr() as *mut __m256i, lo);
-            _mm256_storeu_si256(a.as_mut_ptr().add(4) as *mut __m256i, hi);
+        let wide = |v: I32x8| (v.widen_lo(), v.widen_hi());
+        let st64 = |a: &mut [i64; LANES], (lo, hi): (I64x4, I64x4)| {
+            lo.store(a.as_mut_ptr());
+            hi.store(a.as_mut_ptr().add(4));
         };
         // Lane masks as bits: eight f32/i32 lanes, four i64 lanes.
-        let bits32 = |m: __m256i| _mm256_movemask_ps(_mm256_castsi256_ps(m)) as u32;
-        let bits64 = |(lo, hi): (__m256i, __m256i)| {
-            (_mm256_movemask_pd(_mm256_castsi256_pd(lo))
-                | _mm256_movemask_pd(_mm256_castsi256_pd(hi)) << 4) as u32
-        };
+        let bits32 = |m: I32x8| m.movemask();
+        let bits64 = |(lo, hi): (I64x4, I64x4)| lo.movemask() | hi.movemask() << 4;
         // A bit mask back as eight i32 lanes of all ones or zero.
         let lanes_of = |m: u32| {
-            let b = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-            _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(m as i32), b), b)
+            let b = I32x8::new([1, 2, 4, 8, 16, 32, 64, 128]);
+            I32x8::splat(m as i32).and(b).cmpeq(b)
         };
 
         let x = [0, 1, 2].map(|k| ld(&win[k][0]));
         let y = [0, 1, 2].map(|k| ld(&win[k][1]));
         // Lanes whose six coordinates are below FAST_LIMIT in magnitude (NaN is not).
-        let abs = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFF_FFFF));
-        let lim = _mm256_set1_ps(FAST_LIMIT);
-        let mut fastv = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+        let abs = I32x8::splat(0x7FFF_FFFF).as_f32();
+        let lim = F32x8::splat(FAST_LIMIT);
+        let mut fastv = I32x8::splat(-1).as_f32();
         for v in x.iter().chain(&y) {
-            fastv = _mm256_and_ps(
-                fastv,
-                _mm256_cmp_ps::<_CMP_LT_OQ>(_mm256_and_ps(*v, abs), lim),
-            );
+            fastv = fastv.and((*v).and(abs).cmp_lt(lim));
         }
-        let fast = _mm256_movemask_ps(fastv) as u32;
+        let fast = fastv.movemask();
         // `snap`: round half to even of (v - 0.5) * 256 (0 in the other lanes), as i32.
-        let snap = |v: __m256| {
-            let t = _mm256_mul_ps(_mm256_sub_ps(v, _mm256_set1_ps(0.5)), _mm256_set1_ps(256.0));
-            let t = _mm256_and_ps(t, fastv);
-            _mm256_cvttps_epi32(_mm256_round_ps::<
-                { _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC },
-            >(t))
+        let snap = |v: F32x8| {
+            let t = v.sub(F32x8::splat(0.5)).mul(F32x8::splat(256.0));
+            let t = t.and(fastv);
+            t.round_even().to_i32_trunc()
         };
         let sx = x.map(snap);
         let sy = y.map(snap);
         // |snapped| < 2^30: the differences fit i32 and their products i64.
-        let mul64 = |a: (__m256i, __m256i), b: (__m256i, __m256i)| {
-            (_mm256_mul_epi32(a.0, b.0), _mm256_mul_epi32(a.1, b.1))
-        };
-        let sub64 = |a: (__m256i, __m256i), b: (__m256i, __m256i)| {
-            (_mm256_sub_epi64(a.0, b.0), _mm256_sub_epi64(a.1, b.1))
-        };
+        let mul64 = |a: (I64x4, I64x4), b: (I64x4, I64x4)| (a.0.mul_i32(b.0), a.1.mul_i32(b.1));
+        let sub64 = |a: (I64x4, I64x4), b: (I64x4, I64x4)| (a.0.sub(b.0), a.1.sub(b.1));
         let area = sub64(
-            mul64(
-                wide(_mm256_sub_epi32(sx[0], sx[1])),
-                wide(_mm256_sub_epi32(sy[2], sy[0])),
-            ),
-            mul64(
-                wide(_mm256_sub_epi32(sx[2], sx[0])),
-                wide(_mm256_sub_epi32(sy[0], sy[1])),
-            ),
+            mul64(wide(sx[0].sub(sx[1])), wide(sy[2].sub(sy[0]))),
+            mul64(wide(sx[2].sub(sx[0])), wide(sy[0].sub(sy[1]))),
         );
-        let z64 = _mm256_setzero_si256();
-        let degenerate = bits64((
-            _mm256_cmpeq_epi64(area.0, z64),
-            _mm256_cmpeq_epi64(area.1, z64),
-        ));
-        let ccw = bits64((
-            _mm256_cmpgt_epi64(area.0, z64),
-            _mm256_cmpgt_epi64(area.1, z64),
-        ));
+        let z64 = I64x4::zero();
+        let degenerate = bits64((area.0.cmpeq(z64), area.1.cmpeq(z64)));
+        let ccw = bits64((area.0.cmpgt(z64), area.1.cmpgt(z64)));
         let front = if cull.front_ccw { ccw } else { !ccw & 0xFF };
         let culled =
             (if cull.front { front } else { 0 }) | (if cull.back { !front & 0xFF } else { 0 });
         // Clockwise lanes swap vertices 0 and 1 (setup_rest).
         let ccwv = lanes_of(ccw);
-        let ccwf = _mm256_castsi256_ps(ccwv);
-        let pick = |v: [__m256; 3]| {
-            [
-                _mm256_blendv_ps(v[1], v[0], ccwf),
-                _mm256_blendv_ps(v[0], v[1], ccwf),
-                v[2],
-            ]
-        };
-        let pick_i = |v: [__m256i; 3]| {
-            [
-                _mm256_blendv_epi8(v[1], v[0], ccwv),
-                _mm256_blendv_epi8(v[0], v[1], ccwv),
-                v[2],
-            ]
-        };
+        let ccwf = ccwv.as_f32();
+        let pick = |v: [F32x8; 3]| [v[1].blendv(v[0], ccwf), v[0].blendv(v[1], ccwf), v[2]];
+        let pick_i = |v: [I32x8; 3]| [v[1].blendv(v[0], ccwv), v[0].blendv(v[1], ccwv), v[2]];
         let xs = pick_i(sx);
         let ys = pick_i(sy);
         let mut edge = [[(z64, z64); 3]; 3];
         for i in 0..3 {
             let j = (i + 1) % 3;
-            let a = _mm256_sub_epi32(ys[i], ys[j]);
-            let b = _mm256_sub_epi32(xs[i], xs[j]);
+            let a = ys[i].sub(ys[j]);
+            let b = xs[i].sub(xs[j]);
             let (aw, bw) = (wide(a), wide(b));
             let c = sub64(mul64(aw, wide(xs[i])), mul64(bw, wide(ys[i])));
             // Left edges (a < 0) and bottom edges (a == 0, b < 0) take +1; by the top-left
             // rule, top edges (a == 0, b > 0) instead.
-            let zero = _mm256_setzero_si256();
+            let zero = I32x8::zero();
             let horizontal_in = if cull.top_left {
-                _mm256_cmpgt_epi32(b, zero)
+                b.cmpgt(zero)
             } else {
-                _mm256_cmpgt_epi32(zero, b)
+                zero.cmpgt(b)
             };
-            let left = _mm256_or_si256(
-                _mm256_cmpgt_epi32(zero, a),
-                _mm256_and_si256(_mm256_cmpeq_epi32(a, zero), horizontal_in),
-            );
+            let left = zero.cmpgt(a).or(a.cmpeq(zero).and(horizontal_in));
             let c = sub64(c, wide(left));
             edge[i] = [aw, bw, c];
             st64(&mut o.edge[i][0], aw);
@@ -377,58 +333,41 @@ unsafe fn lanes_avx2(
             st64(&mut o.edge[i][2], c);
         }
         let (min3, max3) = (
-            |v: [__m256i; 3]| _mm256_min_epi32(_mm256_min_epi32(v[0], v[1]), v[2]),
-            |v: [__m256i; 3]| _mm256_max_epi32(_mm256_max_epi32(v[0], v[1]), v[2]),
+            |v: [I32x8; 3]| v[0].min(v[1]).min(v[2]),
+            |v: [I32x8; 3]| v[0].max(v[1]).max(v[2]),
         );
-        let up = _mm256_set1_epi32(ONE - 1);
-        let bx0 = _mm256_srai_epi32::<8>(_mm256_add_epi32(min3(xs), up));
-        let by0 = _mm256_srai_epi32::<8>(_mm256_add_epi32(min3(ys), up));
-        let bx1 = _mm256_srai_epi32::<8>(max3(xs));
-        let by1 = _mm256_srai_epi32::<8>(max3(ys));
+        let up = I32x8::splat(ONE - 1);
+        let bx0 = min3(xs).add(up).sra::<8>();
+        let by0 = min3(ys).add(up).sra::<8>();
+        let bx1 = max3(xs).sra::<8>();
+        let by1 = max3(ys).sra::<8>();
         for (k, b) in [bx0, by0, bx1, by1].into_iter().enumerate() {
             st64(&mut o.bbox[k], wide(b));
         }
-        let no_box = bits32(_mm256_or_si256(
-            _mm256_cmpgt_epi32(bx0, bx1),
-            _mm256_cmpgt_epi32(by0, by1),
-        ));
+        let no_box = bits32(bx0.cmpgt(bx1).or(by0.cmpgt(by1)));
         // `tiny_box_covered`: a box of at most 2x2 centres must hold one inside all edges.
-        let (wx, wy) = (_mm256_sub_epi32(bx1, bx0), _mm256_sub_epi32(by1, by0));
-        let one = _mm256_set1_epi32(1);
-        let big = bits32(_mm256_or_si256(
-            _mm256_cmpgt_epi32(wx, one),
-            _mm256_cmpgt_epi32(wy, one),
-        ));
-        let neg = |v: __m256i| _mm256_sub_epi32(_mm256_setzero_si256(), v);
+        let (wx, wy) = (bx1.sub(bx0), by1.sub(by0));
+        let one = I32x8::splat(1);
+        let big = bits32(wx.cmpgt(one).or(wy.cmpgt(one)));
+        let neg = |v: I32x8| I32x8::zero().sub(v);
         let (mx, my) = (wide(neg(wx)), wide(neg(wy)));
         let (bx0w, by0w) = (wide(bx0), wide(by0));
-        let mut inside = [(_mm256_set1_epi64x(-1), _mm256_set1_epi64x(-1)); 4];
+        let mut inside = [(I64x4::splat(-1), I64x4::splat(-1)); 4];
         for e in &edge {
             let [a, b, c] = *e;
             let half = |h: usize| {
-                let sel = |v: (__m256i, __m256i)| if h == 0 { v.0 } else { v.1 };
+                let sel = |v: (I64x4, I64x4)| if h == 0 { v.0 } else { v.1 };
                 let (a, b, c) = (sel(a), sel(b), sel(c));
-                let v00 = _mm256_add_epi64(
-                    _mm256_sub_epi64(c, _mm256_slli_epi64::<8>(_mm256_mul_epi32(a, sel(bx0w)))),
-                    _mm256_slli_epi64::<8>(_mm256_mul_epi32(b, sel(by0w))),
-                );
-                let v10 =
-                    _mm256_sub_epi64(v00, _mm256_and_si256(_mm256_slli_epi64::<8>(a), sel(mx)));
-                let dy = _mm256_and_si256(_mm256_slli_epi64::<8>(b), sel(my));
-                [
-                    v00,
-                    v10,
-                    _mm256_add_epi64(v00, dy),
-                    _mm256_add_epi64(v10, dy),
-                ]
-                .map(|v| _mm256_cmpgt_epi64(v, _mm256_setzero_si256()))
+                let v00 = c
+                    .sub(a.mul_i32(sel(bx0w)).shl::<8>())
+                    .add(b.mul_i32(sel(by0w)).shl::<8>());
+                let v10 = v00.sub(a.shl::<8>().and(sel(mx)));
+                let dy = b.shl::<8>().and(sel(my));
+                [v00, v10, v00.add(dy), v10.add(dy)].map(|v| v.cmpgt(I64x4::zero()))
             };
             let (lo, hi) = (half(0), half(1));
             for k in 0..4 {
-                inside[k] = (
-                    _mm256_and_si256(inside[k].0, lo[k]),
-                    _mm256_and_si256(inside[k].1, hi[k]),
-                );
+                inside[k] = (inside[k].0.and(lo[k]), inside[k].1.and(hi[k]));
             }
         }
         let covered = big | inside.iter().fold(0, |m, v| m | bits64(*v));
@@ -439,52 +378,43 @@ unsafe fn lanes_avx2(
         // positions; no fused multiply-add.
         let fx = pick(x);
         let fy = pick(y);
-        let half = _mm256_set1_ps(0.5);
-        let x0c = _mm256_sub_ps(fx[0], half);
-        let y0c = _mm256_sub_ps(fy[0], half);
-        let dx01 = _mm256_sub_ps(fx[0], fx[1]);
-        let dy01 = _mm256_sub_ps(fy[0], fy[1]);
-        let dx20 = _mm256_sub_ps(fx[2], fx[0]);
-        let dy20 = _mm256_sub_ps(fy[2], fy[0]);
-        let ooa = _mm256_div_ps(
-            _mm256_set1_ps(1.0),
-            _mm256_sub_ps(_mm256_mul_ps(dx01, dy20), _mm256_mul_ps(dy01, dx20)),
-        );
-        let dx20o = _mm256_mul_ps(dx20, ooa);
-        let dy20o = _mm256_mul_ps(dy20, ooa);
-        let dx01o = _mm256_mul_ps(dx01, ooa);
-        let dy01o = _mm256_mul_ps(dy01, ooa);
-        let plane = |a: [__m256; 3], out: &mut [[f32; LANES]; 3]| {
-            let da01 = _mm256_sub_ps(a[0], a[1]);
-            let da20 = _mm256_sub_ps(a[2], a[0]);
-            let dadx = _mm256_sub_ps(_mm256_mul_ps(da01, dy20o), _mm256_mul_ps(da20, dy01o));
-            let dady = _mm256_sub_ps(_mm256_mul_ps(da20, dx01o), _mm256_mul_ps(da01, dx20o));
-            let a0 = _mm256_sub_ps(
-                a[0],
-                _mm256_add_ps(_mm256_mul_ps(dadx, x0c), _mm256_mul_ps(dady, y0c)),
-            );
+        let half = F32x8::splat(0.5);
+        let x0c = fx[0].sub(half);
+        let y0c = fy[0].sub(half);
+        let dx01 = fx[0].sub(fx[1]);
+        let dy01 = fy[0].sub(fy[1]);
+        let dx20 = fx[2].sub(fx[0]);
+        let dy20 = fy[2].sub(fy[0]);
+        let ooa = F32x8::splat(1.0).div(dx01.mul(dy20).sub(dy01.mul(dx20)));
+        let dx20o = dx20.mul(ooa);
+        let dy20o = dy20.mul(ooa);
+        let dx01o = dx01.mul(ooa);
+        let dy01o = dy01.mul(ooa);
+        let plane = |a: [F32x8; 3], out: &mut [[f32; LANES]; 3]| {
+            let da01 = a[0].sub(a[1]);
+            let da20 = a[2].sub(a[0]);
+            let dadx = da01.mul(dy20o).sub(da20.mul(dy01o));
+            let dady = da20.mul(dx01o).sub(da01.mul(dx20o));
+            let a0 = a[0].sub(dadx.mul(x0c).add(dady.mul(y0c)));
             st(&mut out[0], a0);
             st(&mut out[1], dadx);
             st(&mut out[2], dady);
         };
         plane(pick([0, 1, 2].map(|k| ld(&win[k][2]))), &mut o.z);
         let w = pick([0, 1, 2].map(|k| ld(&win[k][3])));
-        let onev = _mm256_set1_ps(1.0);
-        let unit = _mm256_and_ps(
-            _mm256_and_ps(
-                _mm256_cmp_ps::<_CMP_EQ_OQ>(w[0], onev),
-                _mm256_cmp_ps::<_CMP_EQ_OQ>(w[1], onev),
-            ),
-            _mm256_cmp_ps::<_CMP_EQ_OQ>(w[2], onev),
-        );
-        let unit = _mm256_movemask_ps(unit) as u32;
+        let onev = F32x8::splat(1.0);
+        let unit = w[0]
+            .cmp_eq(onev)
+            .and(w[1].cmp_eq(onev))
+            .and(w[2].cmp_eq(onev));
+        let unit = unit.movemask();
         o.persp = std::array::from_fn(|l| unit >> l & 1 == 0);
         plane(w, &mut o.w);
         for (i, out) in o.vary.iter_mut().enumerate().take(nvary) {
             // Pre-multiplied by 1/w; when the triangle is not perspective every w is
             // exactly 1.0 and the product is the value itself, as setup's plain path.
             let a = pick([0, 1, 2].map(|k| ld(&vary[k][i])));
-            plane([0, 1, 2].map(|k| _mm256_mul_ps(a[k], w[k])), out);
+            plane([0, 1, 2].map(|k| a[k].mul(w[k])), out);
         }
     }
 }

@@ -491,7 +491,7 @@ pub fn shade_span_dispatch(
     x1: usize,
     stats: &mut Stats,
 ) {
-    // SAFETY (both): `cpu::isa` only reports a variant whose features the CPU has. Lines
+    // SAFETY: (both) `cpu::isa` only reports a variant whose features the CPU has. Lines
     // and points are few pixels: the general span shader serves every plan, fused or not.
     unsafe {
         match crate::cpu::isa() {

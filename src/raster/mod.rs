@@ -66,7 +66,7 @@ pub fn raster_triangle(
         }
         return true;
     }
-    // SAFETY (all five): `cpu::isa` and `cpu::avx512` only report features the CPU has,
+    // SAFETY: (all five) `cpu::isa` and `cpu::avx512` only report features the CPU has,
     // and each arm runs that level's walks.
     unsafe {
         match crate::cpu::isa() {
@@ -100,7 +100,7 @@ unsafe fn tri_simd<W: Walks + SimdWalks>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    // SAFETY (both): forwarded from the caller.
+    // SAFETY: (both) forwarded from the caller.
     unsafe {
         if simd_ok(plan, units, fb) {
             rows_simd::<W>(t, b, plan, fb, stats)
@@ -141,7 +141,6 @@ pub(crate) fn prefetch_row(
     depth: bool,
     max_lines: usize,
 ) {
-    use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
     let (y0, y1) = (fb.y0 as i64, (fb.y0 + fb.rows) as i64);
     if py < y0 || py >= y1 || lo > hi || lo < 0 {
         return;
@@ -150,13 +149,11 @@ pub(crate) fn prefetch_row(
     // 16 four-byte pixels per line.
     let lines = (((hi - lo) / 16) as usize + 1).min(max_lines);
     for k in 0..lines {
-        // SAFETY: a prefetch is a hint that never faults, and the addresses are formed with
-        // wrapping arithmetic (they lie inside the band's rows anyway).
-        unsafe {
-            _mm_prefetch::<_MM_HINT_T0>(fb.color.as_ptr().wrapping_add(i + 16 * k).cast());
-            if depth {
-                _mm_prefetch::<_MM_HINT_T0>(fb.depth.as_ptr().wrapping_add(i + 16 * k).cast());
-            }
+        // The addresses are formed with wrapping arithmetic (they lie inside the band's
+        // rows anyway); a prefetch never faults.
+        crate::simd::prefetch(fb.color.as_ptr().wrapping_add(i + 16 * k));
+        if depth {
+            crate::simd::prefetch(fb.depth.as_ptr().wrapping_add(i + 16 * k));
         }
     }
 }
@@ -191,7 +188,6 @@ unsafe fn rows_simd<W: SimdWalks>(
     use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
     use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
     let (flat, persp) = (plan.flat, !plan.flat && t.persp);
-    // SAFETY: forwarded from the caller.
     macro_rules! blend {
         ($d:expr) => {
             match blend_code(plan) {
@@ -203,16 +199,15 @@ unsafe fn rows_simd<W: SimdWalks>(
     }
     macro_rules! shapes {
         ($d:expr, $b:expr) => {
-            match (flat, persp) {
-                (true, _) => unsafe {
-                    W::simd::<{ $d }, true, false, { $b }>(t, b, plan, fb, stats)
-                },
-                (false, true) => unsafe {
-                    W::simd::<{ $d }, false, true, { $b }>(t, b, plan, fb, stats)
-                },
-                (false, false) => unsafe {
-                    W::simd::<{ $d }, false, false, { $b }>(t, b, plan, fb, stats)
-                },
+            // SAFETY: forwarded from the caller.
+            unsafe {
+                match (flat, persp) {
+                    (true, _) => W::simd::<{ $d }, true, false, { $b }>(t, b, plan, fb, stats),
+                    (false, true) => W::simd::<{ $d }, false, true, { $b }>(t, b, plan, fb, stats),
+                    (false, false) => {
+                        W::simd::<{ $d }, false, false, { $b }>(t, b, plan, fb, stats)
+                    }
+                }
             }
         };
     }
@@ -311,26 +306,29 @@ unsafe fn raster_rows<W: Walks>(
     stats: &mut Stats,
 ) {
     let depth = plan.depth.is_some();
-    // SAFETY (all): forwarded from the caller.
     if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none()) {
         let u = &units[0];
-        with_flags!((depth, plan.flat, t.persp), |D, F, P| unsafe {
-            W::tex_fast::<D, F, P>(t, b, plan, u, env, fb, stats)
+        with_flags!((depth, plan.flat, t.persp), |D, F, P| {
+            // SAFETY: forwarded from the caller.
+            unsafe { W::tex_fast::<D, F, P>(t, b, plan, u, env, fb, stats) }
         })
     } else if !units.is_empty() {
-        with_flags!((depth, plan.flat, t.persp), |D, F, P| unsafe {
-            W::textured::<D, F, P>(t, b, plan, units, fb, stats)
+        with_flags!((depth, plan.flat, t.persp), |D, F, P| {
+            // SAFETY: forwarded from the caller.
+            unsafe { W::textured::<D, F, P>(t, b, plan, units, fb, stats) }
         })
     } else {
         // Flat colours need no divide, but the fog coordinate is still perspective-correct.
         let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
         if plan.needs_full_path() {
-            with_flags!((depth, plan.flat, persp), |D, F, P| unsafe {
-                W::full::<D, F, P, true>(t, b, plan, fb, stats)
+            with_flags!((depth, plan.flat, persp), |D, F, P| {
+                // SAFETY: forwarded from the caller.
+                unsafe { W::full::<D, F, P, true>(t, b, plan, fb, stats) }
             })
         } else {
-            with_flags!((depth, plan.flat, persp), |D, F, P| unsafe {
-                W::full::<D, F, P, false>(t, b, plan, fb, stats)
+            with_flags!((depth, plan.flat, persp), |D, F, P| {
+                // SAFETY: forwarded from the caller.
+                unsafe { W::full::<D, F, P, false>(t, b, plan, fb, stats) }
             })
         }
     }

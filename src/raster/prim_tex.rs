@@ -104,7 +104,7 @@ pub fn shade_covered<C: Cover>(
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
-    // SAFETY (both): `cpu::isa` only reports a variant whose features the CPU has. The
+    // SAFETY: (both) `cpu::isa` only reports a variant whose features the CPU has. The
     // textured walk of lines and points runs no AVX2 code: only the fusing differs.
     unsafe {
         match crate::cpu::isa() {

@@ -18,7 +18,7 @@
 //! run only when the CPU has AVX2 ([`available`]).
 
 #[cfg(target_arch = "x86_64")]
-use std::arch::x86_64::*;
+use crate::simd::{F32x8, I32x8, I64x4, U16x16};
 
 pub mod chunk;
 
@@ -100,49 +100,49 @@ impl<'a> LevelV<'a> {
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 unsafe fn axis(
-    s: __m256,
+    s: F32x8,
     lv: &LevelV<'_>,
     ax: usize,
     wrap: Wrap,
     linear: bool,
-    ok: &mut __m256,
-) -> (__m256i, __m256i, __m256i) {
-    let last = _mm256_set1_epi32(lv.last[ax]);
-    let zero = _mm256_setzero_si256();
-    let limit = _mm256_set1_ps(1_073_741_824.0);
-    let abs_mask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fff_ffff));
-    #[inline(always)]
-    unsafe fn wrap_index(i: __m256i, repeat: bool, last: __m256i) -> __m256i {
-        if repeat {
-            _mm256_and_si256(i, last)
-        } else {
-            _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), last)
+    ok: &mut F32x8,
+) -> (I32x8, I32x8, I32x8) {
+    // SAFETY: AVX2 context (the caller's promise).
+    unsafe {
+        let last = I32x8::splat(lv.last[ax]);
+        let zero = I32x8::zero();
+        let limit = F32x8::splat(1_073_741_824.0);
+        let abs_mask = I32x8::splat(0x7fff_ffff).as_f32();
+        #[inline(always)]
+        unsafe fn wrap_index(i: I32x8, repeat: bool, last: I32x8) -> I32x8 {
+            // SAFETY: AVX2 context (the caller's promise).
+            unsafe {
+                if repeat {
+                    i.and(last)
+                } else {
+                    i.max(I32x8::zero()).min(last)
+                }
+            }
         }
-    }
-    let repeat = wrap == Wrap::Repeat;
-    if linear {
-        let u = _mm256_mul_ps(s, _mm256_set1_ps(lv.size256[ax]));
-        // NaN compares false: such lanes make the row decline.
-        *ok = _mm256_and_ps(
-            *ok,
-            _mm256_cmp_ps(_mm256_and_ps(u, abs_mask), limit, _CMP_LT_OQ),
-        );
-        let fx = _mm256_sub_epi32(_mm256_cvtps_epi32(u), _mm256_set1_epi32(128));
-        let w = _mm256_and_si256(fx, _mm256_set1_epi32(255));
-        let i0 = _mm256_srai_epi32(fx, 8);
-        let i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
-        (
-            wrap_index(i0, repeat, last),
-            wrap_index(i1, repeat, last),
-            w,
-        )
-    } else {
-        let u = _mm256_floor_ps(_mm256_mul_ps(s, _mm256_set1_ps(lv.size[ax])));
-        *ok = _mm256_and_ps(
-            *ok,
-            _mm256_cmp_ps(_mm256_and_ps(u, abs_mask), limit, _CMP_LT_OQ),
-        );
-        (wrap_index(_mm256_cvttps_epi32(u), repeat, last), zero, zero)
+        let repeat = wrap == Wrap::Repeat;
+        if linear {
+            let u = s.mul(F32x8::splat(lv.size256[ax]));
+            // NaN compares false: such lanes make the row decline.
+            *ok = (*ok).and(u.and(abs_mask).cmp_lt(limit));
+            let fx = u.to_i32().sub(I32x8::splat(128));
+            let w = fx.and(I32x8::splat(255));
+            let i0 = fx.sra::<8>();
+            let i1 = i0.add(I32x8::splat(1));
+            (
+                wrap_index(i0, repeat, last),
+                wrap_index(i1, repeat, last),
+                w,
+            )
+        } else {
+            let u = s.mul(F32x8::splat(lv.size[ax])).floor();
+            *ok = (*ok).and(u.and(abs_mask).cmp_lt(limit));
+            (wrap_index(u.to_i32_trunc(), repeat, last), zero, zero)
+        }
     }
 }
 
@@ -151,7 +151,7 @@ unsafe fn axis(
 /// this form without any shuffle; [`pack`] puts the bytes back.
 #[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy)]
-struct Wide(__m256i, __m256i);
+struct Wide(U16x16, U16x16);
 
 /// Splits 8 RGBA8 pixels into [`Wide`] fields.
 ///
@@ -159,21 +159,17 @@ struct Wide(__m256i, __m256i);
 /// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn widen(v: __m256i) -> Wide {
-    Wide(
-        _mm256_and_si256(v, _mm256_set1_epi16(0xff)),
-        _mm256_srli_epi16::<8>(v),
-    )
+unsafe fn widen(v: I32x8) -> Wide {
+    let v = v.as_u16();
+    // SAFETY: AVX2 context (the caller's promise).
+    Wide(v.and(unsafe { U16x16::splat(0xff) }), v.shr::<8>())
 }
 
 /// The bytes of [`Wide`] fields that hold values in 0..=255.
-///
-/// # Safety
-/// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn pack(v: Wide) -> __m256i {
-    _mm256_or_si256(v.0, _mm256_slli_epi16::<8>(v.1))
+fn pack(v: Wide) -> I32x8 {
+    v.0.or(v.1.shl::<8>()).as_i32()
 }
 
 /// A per-pixel weight (`w` in 0..=255 per 32-bit lane) as [`lerp16`] takes it: `w · 128`
@@ -182,13 +178,10 @@ unsafe fn pack(v: Wide) -> __m256i {
 /// floor(lod)` of a positive LOD, which that subtraction gives exactly, so below 1. (A
 /// magnified lane's `fpart` may round to 1.0, but it samples one level, whose row ignores
 /// the mip weight; any lane would only get a wrong value, never leave its bounds.)
-///
-/// # Safety
-/// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn weight(w: __m256i) -> __m256i {
-    _mm256_or_si256(_mm256_slli_epi32::<7>(w), _mm256_slli_epi32::<23>(w))
+fn weight(w: I32x8) -> U16x16 {
+    w.shl::<7>().or(w.shl::<23>()).as_u16()
 }
 
 /// llvmpipe's 8-bit lerp `(a·(256 − w) + b·w + 128) >> 8` on 16-bit fields holding
@@ -199,22 +192,16 @@ unsafe fn weight(w: __m256i) -> __m256i {
 /// the shift-multiply-round form takes six. A function, not a closure: a closure in an
 /// `#[inline(always)]` function without `target_feature` is compiled without AVX2 and
 /// called out of line (measured: 4x the frame time of tex_trilinear_plane).
-///
-/// # Safety
-/// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn lerp16(a: __m256i, b: __m256i, w7: __m256i) -> __m256i {
-    _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), w7))
+fn lerp16(a: U16x16, b: U16x16, w7: U16x16) -> U16x16 {
+    a.add(b.sub(a).mulhrs(w7))
 }
 
 /// [`lerp16`] of both halves of [`Wide`] pixels with weights from [`weight`].
-///
-/// # Safety
-/// Must be called from a function compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn lerp_wide(a: Wide, b: Wide, w: __m256i) -> Wide {
+fn lerp_wide(a: Wide, b: Wide, w: U16x16) -> Wide {
     Wide(lerp16(a.0, b.0, w), lerp16(a.1, b.1, w))
 }
 
@@ -228,52 +215,59 @@ unsafe fn level8(
     lv: &LevelV<'_>,
     linear: bool,
     wrap: [Wrap; 2],
-    s: __m256,
-    t: __m256,
-    ok: &mut __m256,
+    s: F32x8,
+    t: F32x8,
+    ok: &mut F32x8,
 ) -> Wide {
-    let base = lv.texels.as_ptr() as *const i32;
-    let (x0, x1, wx) = axis(s, lv, 0, wrap[0], linear, ok);
-    let (y0, y1, wy) = axis(t, lv, 1, wrap[1], linear, ok);
-    if _mm256_movemask_ps(*ok) != 0xff {
-        let z = _mm256_setzero_si256();
-        return Wide(z, z);
-    }
-    // Not a closure: see `lerp16`.
-    #[inline(always)]
-    unsafe fn row(lv: &LevelV<'_>, y: __m256i) -> __m256i {
-        match lv.shift {
-            Some(k) => _mm256_sllv_epi32(y, _mm256_set1_epi32(k as i32)),
-            None => _mm256_mullo_epi32(y, _mm256_set1_epi32(lv.stride)),
+    // SAFETY: AVX2 context (the caller's promise); the gathers' indices are checked below.
+    unsafe {
+        let base = lv.texels.as_ptr() as *const i32;
+        let (x0, x1, wx) = axis(s, lv, 0, wrap[0], linear, ok);
+        let (y0, y1, wy) = axis(t, lv, 1, wrap[1], linear, ok);
+        if (*ok).movemask() != 0xff {
+            let z = U16x16::zero();
+            return Wide(z, z);
         }
+        // Not a closure: see `lerp16`.
+        #[inline(always)]
+        unsafe fn row(lv: &LevelV<'_>, y: I32x8) -> I32x8 {
+            // SAFETY: AVX2 context (the caller's promise).
+            unsafe {
+                match lv.shift {
+                    Some(k) => y.shl_var(I32x8::splat(k as i32)),
+                    None => y.mullo(I32x8::splat(lv.stride)),
+                }
+            }
+        }
+        let r0 = row(lv, y0);
+        // SAFETY: (all gathers) every index is wrapped or clamped into 0..w and 0..h above
+        // (the lanes passed the range check), so y·w + x < w·h = texels.len(); the texels are
+        // 4 bytes each, read as unaligned i32.
+        #[inline(always)]
+        unsafe fn gather(base: *const i32, r: I32x8, x: I32x8) -> I32x8 {
+            // SAFETY: AVX2 context; the caller's indices are in bounds (see above).
+            unsafe { I32x8::gather(base, r.add(x)) }
+        }
+        if !linear {
+            return widen(gather(base, r0, x0));
+        }
+        let r1 = row(lv, y1);
+        let [tl, tr, bl, br] = if lv.last[0] == 0 {
+            // A one-texel-wide level has no pairs to load.
+            [
+                gather(base, r0, x0),
+                gather(base, r0, x1),
+                gather(base, r1, x0),
+                gather(base, r1, x1),
+            ]
+        } else {
+            quad_texels(base, lv.last[0], [r0, r1], x0, x1)
+        };
+        let wx = weight(wx);
+        let top = lerp_wide(widen(tl), widen(tr), wx);
+        let bottom = lerp_wide(widen(bl), widen(br), wx);
+        lerp_wide(top, bottom, weight(wy))
     }
-    let r0 = row(lv, y0);
-    // SAFETY (all gathers): every index is wrapped or clamped into 0..w and 0..h above
-    // (the lanes passed the range check), so y·w + x < w·h = texels.len(); the texels are
-    // 4 bytes each, read as unaligned i32.
-    #[inline(always)]
-    unsafe fn gather(base: *const i32, r: __m256i, x: __m256i) -> __m256i {
-        _mm256_i32gather_epi32::<4>(base, _mm256_add_epi32(r, x))
-    }
-    if !linear {
-        return widen(gather(base, r0, x0));
-    }
-    let r1 = row(lv, y1);
-    let [tl, tr, bl, br] = if lv.last[0] == 0 {
-        // A one-texel-wide level has no pairs to load.
-        [
-            gather(base, r0, x0),
-            gather(base, r0, x1),
-            gather(base, r1, x0),
-            gather(base, r1, x1),
-        ]
-    } else {
-        quad_texels(base, lv.last[0], [r0, r1], x0, x1)
-    };
-    let wx = weight(wx);
-    let top = lerp_wide(widen(tl), widen(tr), wx);
-    let bottom = lerp_wide(widen(bl), widen(br), wx);
-    lerp_wide(top, bottom, weight(wy))
 }
 
 /// The four texels of 8 LINEAR pixels, (row `r[0]`, x0), (`r[0]`, x1), (`r[1]`, x0),
@@ -292,63 +286,66 @@ unsafe fn level8(
 unsafe fn quad_texels(
     base: *const i32,
     last: i32,
-    r: [__m256i; 2],
-    x0: __m256i,
-    x1: __m256i,
-) -> [__m256i; 4] {
-    /// The pairs of texels (x, x + 1) at row offsets `r` for 8 lanes, split into the
-    /// first and second texels, where `x = min(xs, last − 1)`: always inside the row.
-    #[inline(always)]
-    unsafe fn row_pairs(base: *const i32, r: __m256i, x: __m256i) -> (__m256i, __m256i) {
-        let mut ix = [0i32; 8];
-        _mm256_storeu_si256(ix.as_mut_ptr() as *mut __m256i, _mm256_add_epi32(r, x));
-        /// Texels `ix[k]` and `ix[k] + 1` as one 64-bit value (not a closure: see
-        /// `lerp16`).
+    r: [I32x8; 2],
+    x0: I32x8,
+    x1: I32x8,
+) -> [I32x8; 4] {
+    // SAFETY: AVX2 context and in-bounds indices (the caller's promise).
+    unsafe {
+        /// The pairs of texels (x, x + 1) at row offsets `r` for 8 lanes, split into the
+        /// first and second texels, where `x = min(xs, last − 1)`: always inside the row.
         #[inline(always)]
-        unsafe fn pair(base: *const i32, ix: &[i32; 8], k: usize) -> i64 {
-            // SAFETY (by the caller): `ix[k]` and `ix[k] + 1` index texels of `base`.
-            unsafe { std::ptr::read_unaligned(base.add(ix[k] as usize) as *const i64) }
+        unsafe fn row_pairs(base: *const i32, r: I32x8, x: I32x8) -> (I32x8, I32x8) {
+            // SAFETY: AVX2 context (the caller's promise); `ix` is 8 i32 (32 bytes), and each `pair` reads texels `x` and `x + 1` of a row, `x <= last - 1` (the caller's bound).
+            unsafe {
+                let mut ix = [0i32; 8];
+                r.add(x).store(ix.as_mut_ptr());
+                /// Texels `ix[k]` and `ix[k] + 1` as one 64-bit value (not a closure: see
+                /// `lerp16`).
+                #[inline(always)]
+                unsafe fn pair(base: *const i32, ix: &[i32; 8], k: usize) -> i64 {
+                    // SAFETY: (by the caller) `ix[k]` and `ix[k] + 1` index texels of `base`.
+                    unsafe { std::ptr::read_unaligned(base.add(ix[k] as usize) as *const i64) }
+                }
+                // Lanes (0, 1, 4, 5) and (2, 3, 6, 7): one `shufps` per output then puts the
+                // lanes in order within each 128-bit half.
+                let p = I64x4::new([
+                    pair(base, &ix, 0),
+                    pair(base, &ix, 1),
+                    pair(base, &ix, 4),
+                    pair(base, &ix, 5),
+                ]);
+                let o = I64x4::new([
+                    pair(base, &ix, 2),
+                    pair(base, &ix, 3),
+                    pair(base, &ix, 6),
+                    pair(base, &ix, 7),
+                ]);
+                let (p, o) = (p.as_i32().as_f32(), o.as_i32().as_f32());
+                (p.shuffle::<0x88>(o).bits(), p.shuffle::<0xDD>(o).bits())
+            }
         }
-        // Lanes (0, 1, 4, 5) and (2, 3, 6, 7): one `shufps` per output then puts the
-        // lanes in order within each 128-bit half.
-        let p = _mm256_set_epi64x(
-            pair(base, &ix, 5),
-            pair(base, &ix, 4),
-            pair(base, &ix, 1),
-            pair(base, &ix, 0),
-        );
-        let o = _mm256_set_epi64x(
-            pair(base, &ix, 7),
-            pair(base, &ix, 6),
-            pair(base, &ix, 3),
-            pair(base, &ix, 2),
-        );
-        let (p, o) = (_mm256_castsi256_ps(p), _mm256_castsi256_ps(o));
-        (
-            _mm256_castps_si256(_mm256_shuffle_ps::<0x88>(p, o)),
-            _mm256_castps_si256(_mm256_shuffle_ps::<0xDD>(p, o)),
-        )
+        let lastv = I32x8::splat(last);
+        let pmax = I32x8::splat(last - 1);
+        let xa = x0.min(pmax);
+        let (tl, tr) = row_pairs(base, r[0], xa);
+        let (bl, br) = row_pairs(base, r[1], xa);
+        let adjacent = x1.cmpeq(x0.add(I32x8::splat(1)));
+        if adjacent.movemask() == 0xff {
+            return [tl, tr, bl, br];
+        }
+        // Seams: x0 is the pair's second texel where x0 = last; x1 comes from its own pair.
+        let (a_hi, b_hi) = (x0.cmpeq(lastv), x1.cmpeq(lastv));
+        let xb = x1.min(pmax);
+        let (tr_lo, tr_hi) = row_pairs(base, r[0], xb);
+        let (br_lo, br_hi) = row_pairs(base, r[1], xb);
+        [
+            tl.blendv(tr, a_hi),
+            tr_lo.blendv(tr_hi, b_hi),
+            bl.blendv(br, a_hi),
+            br_lo.blendv(br_hi, b_hi),
+        ]
     }
-    let lastv = _mm256_set1_epi32(last);
-    let pmax = _mm256_set1_epi32(last - 1);
-    let xa = _mm256_min_epi32(x0, pmax);
-    let (tl, tr) = row_pairs(base, r[0], xa);
-    let (bl, br) = row_pairs(base, r[1], xa);
-    let adjacent = _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1)));
-    if _mm256_movemask_ps(_mm256_castsi256_ps(adjacent)) == 0xff {
-        return [tl, tr, bl, br];
-    }
-    // Seams: x0 is the pair's second texel where x0 = last; x1 comes from its own pair.
-    let (a_hi, b_hi) = (_mm256_cmpeq_epi32(x0, lastv), _mm256_cmpeq_epi32(x1, lastv));
-    let xb = _mm256_min_epi32(x1, pmax);
-    let (tr_lo, tr_hi) = row_pairs(base, r[0], xb);
-    let (br_lo, br_hi) = row_pairs(base, r[1], xb);
-    [
-        _mm256_blendv_epi8(tl, tr, a_hi),
-        _mm256_blendv_epi8(tr_lo, tr_hi, b_hi),
-        _mm256_blendv_epi8(bl, br, a_hi),
-        _mm256_blendv_epi8(br_lo, br_hi, b_hi),
-    ]
 }
 
 /// [`RowSampler`] with its levels' constants prepared ([`LevelV`]); the 8-wide walk
@@ -372,16 +369,16 @@ impl RowSamplerV<'_> {
     /// As [`RowSampler::row`].
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    pub unsafe fn row_v(&self, s: __m256, t: __m256, wmip: __m256i) -> (__m256i, bool) {
+    pub unsafe fn row_v(&self, s: F32x8, t: F32x8, wmip: I32x8) -> (I32x8, bool) {
         // SAFETY: forwarded from the caller.
         unsafe {
-            let mut ok = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+            let mut ok = I32x8::splat(-1).as_f32();
             let mut v = level8(&self.a, self.linear, self.wrap, s, t, &mut ok);
             if let Some(b) = &self.b {
                 let vb = level8(b, self.linear, self.wrap, s, t, &mut ok);
                 v = lerp_wide(v, vb, weight(wmip));
             }
-            (pack(v), _mm256_movemask_ps(ok) == 0xff)
+            (pack(v), ok.movemask() == 0xff)
         }
     }
 }
@@ -405,11 +402,11 @@ impl<'a> RowSampler<'a> {
     ) -> bool {
         // SAFETY: the arrays are 8 f32 / i32 (32 bytes); unaligned loads and store.
         unsafe {
-            let (vs, vt) = (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr()));
-            let w = _mm256_loadu_si256(wmip.as_ptr() as *const __m256i);
+            let (vs, vt) = (F32x8::load(s.as_ptr()), F32x8::load(t.as_ptr()));
+            let w = I32x8::load(wmip.as_ptr());
             let (v, ok) = self.row_v(vs, vt, w);
             if ok {
-                _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, v);
+                v.store(out.as_mut_ptr());
             }
             ok
         }
@@ -422,7 +419,7 @@ impl<'a> RowSampler<'a> {
     /// As [`RowSampler::row`].
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    pub unsafe fn row_v(&self, s: __m256, t: __m256, wmip: __m256i) -> (__m256i, bool) {
+    pub unsafe fn row_v(&self, s: F32x8, t: F32x8, wmip: I32x8) -> (I32x8, bool) {
         // SAFETY: forwarded from the caller.
         unsafe { self.prepared().row_v(s, t, wmip) }
     }
@@ -474,12 +471,12 @@ mod tests {
             // SAFETY: AVX2 (this function's feature); the arrays are 32 bytes each.
             unsafe {
                 let (va, vb) = (
-                    widen(_mm256_loadu_si256(a.as_ptr() as *const __m256i)),
-                    widen(_mm256_loadu_si256(b.as_ptr() as *const __m256i)),
+                    widen(I32x8::load(a.as_ptr())),
+                    widen(I32x8::load(b.as_ptr())),
                 );
-                let vw = weight(_mm256_loadu_si256(w.as_ptr() as *const __m256i));
+                let vw = weight(I32x8::load(w.as_ptr()));
                 let v = pack(lerp_wide(va, vb, vw));
-                _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, v);
+                v.store(out.as_mut_ptr());
             }
             out
         }

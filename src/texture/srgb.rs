@@ -101,16 +101,7 @@ pub fn to_float(t: [u8; 4], table: &[f32; 256]) -> [f32; 4] {
 /// `lp_build_fast_rsqrt` uses it; an exact `1/sqrt` elsewhere.
 #[inline]
 fn fast_rsqrt(x: f32) -> f32 {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_cvtss_f32, _mm_rsqrt_ss, _mm_set_ss};
-        // SAFETY: SSE is part of the x86-64 baseline.
-        unsafe { _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x))) }
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        1.0 / x.sqrt()
-    }
+    crate::simd::rsqrt_approx(x)
 }
 
 /// `lp_build_linear_to_srgb` of one channel, as an 8-bit value.

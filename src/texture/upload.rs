@@ -724,6 +724,7 @@ mod tests {
         for (i, b) in data.iter_mut().enumerate() {
             *b = i as u8;
         }
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps,
@@ -742,6 +743,7 @@ mod tests {
             alignment: 1,
             ..Default::default()
         };
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps1,
@@ -763,6 +765,7 @@ mod tests {
             ..Default::default()
         };
         let data = (0..36u8).collect::<Vec<_>>();
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps2,
@@ -786,6 +789,7 @@ mod tests {
             ..Default::default()
         };
         let px = [10u8, 20, 30, 40];
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let get = |b| unsafe { unpack(&ps, &cf, b, Storage::of_base(b), 1, 1, px.as_ptr()) }[0];
         assert_eq!(get(BaseFormat::Luminance), [10, 10, 10, 255]);
         assert_eq!(get(BaseFormat::Alpha), [0, 0, 0, 40]);
@@ -793,6 +797,7 @@ mod tests {
         assert_eq!(get(BaseFormat::LuminanceAlpha), [10, 10, 10, 40]);
         assert_eq!(get(BaseFormat::Rgb), [10, 20, 30, 255]);
         let la = ClientFormat::new(GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE).unwrap();
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps,
@@ -817,6 +822,7 @@ mod tests {
         let cf = ClientFormat::new(GL_RGB, GL_UNSIGNED_SHORT_5_6_5).unwrap();
         let v: u16 = (3 << 11) | (1 << 5) | 31;
         let b = v.swap_bytes().to_ne_bytes();
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps,
@@ -843,6 +849,7 @@ mod tests {
             ..Default::default()
         };
         let px = 0x4411_2233u32.to_ne_bytes();
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps,
@@ -874,8 +881,10 @@ mod tests {
         };
         let cf = ClientFormat::new(GL_BGRA, GL_UNSIGNED_BYTE).unwrap();
         let mut out = vec![0u8; 12];
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         unsafe { pack(&ps, &cf, &img, out.as_mut_ptr()) };
         assert_eq!(&out[..4], &[3, 2, 1, 4]);
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let back = unsafe {
             unpack(
                 &ps,
@@ -890,7 +899,9 @@ mod tests {
         assert_eq!(back, img.texels);
         let f = ClientFormat::new(GL_RGBA, GL_FLOAT).unwrap();
         let mut outf = vec![0f32; 12];
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         unsafe { pack(&ps, &f, &img, outf.as_mut_ptr() as *mut u8) };
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let back = unsafe {
             unpack(
                 &ps,
@@ -972,6 +983,7 @@ mod tests {
         let st = choose_storage(GL_RGBA4 as i32, BaseFormat::Rgba, GL_RGBA, GL_FLOAT);
         // 0.0333·15 = 0.4995 → 0, 0.0334·15 = 0.501 → 1 (17); a u8 detour would give 9 → 17
         let px = [0.0333f32, 0.0334, 1.5, -1.0];
+        // SAFETY: the buffer holds the whole image for this size and pixel store.
         let t = unsafe {
             unpack(
                 &ps,

@@ -14,11 +14,11 @@ use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::geometry::VARY_TEX;
+use crate::simd::{F32x8, I32x8};
 use crate::stats::Stats;
 use crate::texture::fast::FastEnv;
 use crate::texture::fast_avx2::chunk::{bits, Sampling};
 use crate::texture::UnitPlan;
-use std::arch::x86_64::*;
 
 /// The most 64-byte lines per row the walk asks for ahead (64 pixels, a 1024² sprite's
 /// row and then some); longer rows are sequential, which the hardware prefetcher follows.
@@ -34,23 +34,20 @@ fn is_one(p: &Plane) -> bool {
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn bounds(s: Option<(i64, i64)>) -> (__m256i, __m256i) {
-    match s {
-        Some((a, z)) => (
-            _mm256_set1_epi32(a as i32 - 1),
-            _mm256_set1_epi32(z as i32 + 1),
-        ),
-        None => (_mm256_set1_epi32(i32::MAX), _mm256_set1_epi32(i32::MIN)),
+unsafe fn bounds(s: Option<(i64, i64)>) -> (I32x8, I32x8) {
+    // SAFETY: AVX2 context (the caller's promise).
+    unsafe {
+        match s {
+            Some((a, z)) => (I32x8::splat(a as i32 - 1), I32x8::splat(z as i32 + 1)),
+            None => (I32x8::splat(i32::MAX), I32x8::splat(i32::MIN)),
+        }
     }
 }
 
 /// Lanes `xi` with `a <= xi <= z`, from [`bounds`].
-///
-/// # Safety
-/// AVX2 context.
 #[inline(always)]
-unsafe fn inside(xi: __m256i, (am1, zp1): (__m256i, __m256i)) -> __m256i {
-    _mm256_and_si256(_mm256_cmpgt_epi32(xi, am1), _mm256_cmpgt_epi32(zp1, xi))
+fn inside(xi: I32x8, (am1, zp1): (I32x8, I32x8)) -> I32x8 {
+    xi.cmpgt(am1).and(zp1.cmpgt(xi))
 }
 
 /// `1 / q` in every lane, bit for bit what `vdivps` gives, without the division when every
@@ -63,20 +60,22 @@ unsafe fn inside(xi: __m256i, (am1, zp1): (__m256i, __m256i)) -> __m256i {
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn recip(q: __m256) -> __m256 {
+unsafe fn recip(q: F32x8) -> F32x8 {
     const ULP: f32 = f32::EPSILON; // 2^-23
-    let one = _mm256_set1_ps(1.0);
-    let lo = _mm256_set1_ps(1.0 - ULP);
-    let hi = _mm256_set1_ps(1.0 + ULP);
-    let near = _mm256_and_ps(
-        _mm256_cmp_ps::<_CMP_GE_OQ>(q, lo),
-        _mm256_cmp_ps::<_CMP_LE_OQ>(q, hi),
-    );
-    if _mm256_movemask_ps(near) != 0xff {
-        return _mm256_div_ps(one, q);
+                                   // SAFETY: AVX2 context (the caller's promise).
+    let (one, lo, hi) = unsafe {
+        (
+            F32x8::splat(1.0),
+            F32x8::splat(1.0 - ULP),
+            F32x8::splat(1.0 + ULP),
+        )
+    };
+    let near = q.cmp_ge(lo).and(q.cmp_le(hi));
+    if near.movemask() != 0xff {
+        return one.div(q);
     }
-    let below = _mm256_blendv_ps(one, hi, _mm256_cmp_ps::<_CMP_LT_OQ>(q, one));
-    _mm256_blendv_ps(below, lo, _mm256_cmp_ps::<_CMP_GT_OQ>(q, one))
+    let below = one.blendv(hi, q.cmp_lt(one));
+    below.blendv(lo, q.cmp_gt(one))
 }
 
 /// Shades the rows `b` of `t` through the 8-wide walk (see the module comment). The
@@ -107,7 +106,7 @@ pub(in crate::raster) unsafe fn rows<
         .as_ref()
         .is_some_and(crate::fragment::simd::blend_is_over);
     let blend = plan.blend.is_some();
-    // SAFETY (whole loop): AVX2 (+FMA) context from the caller; `shade8` gets lanes
+    // SAFETY: (whole loop) AVX2 (+FMA) context from the caller; `shade8` gets lanes
     // inside their row (the spans lie in `b`, which lies in the target).
     unsafe {
         let mut sampling = Sampling::new(u);
@@ -115,9 +114,9 @@ pub(in crate::raster) unsafe fn rows<
         // pixel is sampled on its own, and starting at the span (a 16-px sprite row that
         // begins at an odd x fits 2 chunks instead of 3) gives the same bytes.
         let align = if sampling.quads() { !1 } else { !0 };
-        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-        let lane_f = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
-        let one = _mm256_set1_ps(1.0);
+        let lane_i = I32x8::new([0, 1, 2, 3, 4, 5, 6, 7]);
+        let lane_f = F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+        let one = F32x8::splat(1.0);
         let vary = &t.vary[VARY_TEX..];
         let mut qy = b[1] & align;
         while qy <= b[3] {
@@ -135,10 +134,10 @@ pub(in crate::raster) unsafe fn rows<
                 prefetch_row(fb, py, lo, hi, DEPTH, PREFETCH_LINES);
             }
             let bnd = [bounds(spans[0]), bounds(spans[1])];
-            let fy = [_mm256_set1_ps(qy as f32), _mm256_set1_ps((qy + 1) as f32)];
+            let fy = [F32x8::splat(qy as f32), F32x8::splat((qy + 1) as f32)];
             let mut x = lo & align;
             while x <= hi {
-                let xi = _mm256_add_epi32(_mm256_set1_epi32(x as i32), lane_i);
+                let xi = I32x8::splat(x as i32).add(lane_i);
                 let live = [inside(xi, bnd[0]), inside(xi, bnd[1])];
                 let lm = [bits(live[0]), bits(live[1])];
                 if lm[0] | lm[1] == 0 {
@@ -146,7 +145,7 @@ pub(in crate::raster) unsafe fn rows<
                     continue;
                 }
                 // Integers below 2^24 are exact in f32: this is `(x + i) as f32`.
-                let fx = _mm256_add_ps(_mm256_set1_ps(x as f32), lane_f);
+                let fx = F32x8::splat(x as f32).add(lane_f);
                 let mut xw = [one; 2];
                 let mut oow = [one; 2];
                 let mut s = [one; 2];
@@ -156,16 +155,16 @@ pub(in crate::raster) unsafe fn rows<
                     let mut tv = eval8::<FMA>(&vary[1], fx, fy[r]);
                     if PERSP {
                         xw[r] = eval8::<FMA>(&t.w, fx, fy[r]);
-                        oow[r] = _mm256_div_ps(one, xw[r]);
-                        sr = _mm256_mul_ps(sr, oow[r]);
-                        tv = _mm256_mul_ps(tv, oow[r]);
+                        oow[r] = one.div(xw[r]);
+                        sr = sr.mul(oow[r]);
+                        tv = tv.mul(oow[r]);
                     }
                     if !q_one {
                         let q = eval8::<FMA>(&vary[3], fx, fy[r]);
-                        let q = if PERSP { _mm256_mul_ps(q, oow[r]) } else { q };
+                        let q = if PERSP { q.mul(oow[r]) } else { q };
                         let rq = recip(q);
-                        sr = _mm256_mul_ps(sr, rq);
-                        tv = _mm256_mul_ps(tv, rq);
+                        sr = sr.mul(rq);
+                        tv = tv.mul(rq);
                     }
                     s[r] = sr;
                     tt[r] = tv;
@@ -218,7 +217,7 @@ mod tests {
         let mut out = [0f32; 8];
         // SAFETY: AVX2 (this function's feature); the arrays are 8 f32.
         unsafe {
-            _mm256_storeu_ps(out.as_mut_ptr(), recip(_mm256_loadu_ps(q.as_ptr())));
+            recip(F32x8::load(q.as_ptr())).store(out.as_mut_ptr());
         }
         out
     }

@@ -15,34 +15,24 @@ use super::super::sample::select_levels;
 use super::super::{Filter, Level, Lod, MipFilter, UnitPlan};
 use super::{handles, LevelV, RowSamplerV};
 use crate::fragment::span::LANES;
-use std::arch::x86_64::*;
+use crate::simd::{F32x8, I32x8};
 
 /// Integer bitmask of a lane mask.
-///
-/// # Safety
-/// AVX2 context.
 #[inline(always)]
-pub unsafe fn bits(m: __m256i) -> u32 {
-    // SAFETY: forwarded from the caller.
-    unsafe { _mm256_movemask_ps(_mm256_castsi256_ps(m)) as u32 }
+pub fn bits(m: I32x8) -> u32 {
+    m.movemask()
 }
 
 /// Each lane's quad's top-left value (lanes [0, 0, 2, 2] of each 128-bit half).
-///
-/// # Safety
-/// AVX2 context.
 #[inline(always)]
-unsafe fn tl(v: __m256) -> __m256 {
-    _mm256_permute_ps::<0xA0>(v)
+fn tl(v: F32x8) -> F32x8 {
+    v.permute::<0xA0>()
 }
 
 /// Each lane's quad's top-right value (lanes [1, 1, 3, 3] of each 128-bit half).
-///
-/// # Safety
-/// AVX2 context.
 #[inline(always)]
-unsafe fn tr(v: __m256) -> __m256 {
-    _mm256_permute_ps::<0xF5>(v)
+fn tr(v: F32x8) -> F32x8 {
+    v.permute::<0xF5>()
 }
 
 /// What the level of detail needs, per triangle (the base level's size, the LOD
@@ -83,88 +73,82 @@ struct LodConsts {
 #[inline(always)]
 unsafe fn lod_key(
     c: &LodConsts,
-    s: [__m256; 2],
-    t: [__m256; 2],
+    s: [F32x8; 2],
+    t: [F32x8; 2],
     qlive: u32,
-) -> (__m256i, i32, __m256i, bool) {
+) -> (I32x8, i32, I32x8, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
-        let (w, h) = (_mm256_set1_ps(c.w), _mm256_set1_ps(c.h));
+        let (w, h) = (F32x8::splat(c.w), F32x8::splat(c.h));
         let s0 = tl(s[0]);
         let t0 = tl(t[0]);
-        let a = _mm256_mul_ps(_mm256_sub_ps(tr(s[0]), s0), w);
-        let b = _mm256_mul_ps(_mm256_sub_ps(tr(t[0]), t0), h);
-        let cc = _mm256_mul_ps(_mm256_sub_ps(tl(s[1]), s0), w);
-        let d = _mm256_mul_ps(_mm256_sub_ps(tl(t[1]), t0), h);
-        let rx = _mm256_add_ps(_mm256_mul_ps(a, a), _mm256_mul_ps(b, b));
-        let ry = _mm256_add_ps(_mm256_mul_ps(cc, cc), _mm256_mul_ps(d, d));
+        let a = tr(s[0]).sub(s0).mul(w);
+        let b = tr(t[0]).sub(t0).mul(h);
+        let cc = tl(s[1]).sub(s0).mul(w);
+        let d = tl(t[1]).sub(t0).mul(h);
+        let rx = a.mul(a).add(b.mul(b));
+        let ry = cc.mul(cc).add(d.mul(d));
         // `rx.max(ry)` ignores a NaN operand, then non-finite → 0; both are sums of
         // squares (≥ 0 or NaN), so NaN → 0 before `maxps` is the same.
-        let rx = _mm256_and_ps(rx, _mm256_cmp_ps::<_CMP_ORD_Q>(rx, rx));
-        let ry = _mm256_and_ps(ry, _mm256_cmp_ps::<_CMP_ORD_Q>(ry, ry));
-        let r = _mm256_max_ps(rx, ry);
-        let r = _mm256_and_ps(
-            r,
-            _mm256_cmp_ps::<_CMP_LT_OQ>(r, _mm256_set1_ps(f32::INFINITY)),
-        );
-        let rb = _mm256_castps_si256(r);
+        let rx = rx.and(rx.cmp_ord(rx));
+        let ry = ry.and(ry.cmp_ord(ry));
+        let r = rx.max(ry);
+        let r = r.and(r.cmp_lt(F32x8::splat(f32::INFINITY)));
+        let rb = r.bits();
         if c.nearest && c.exponent_only {
             // `from_rho`'s fast path: level `(exponent(rho²) + 1) >> 1`, minified where
             // rho² > 1.
-            let e = _mm256_sub_epi32(
-                _mm256_and_si256(_mm256_srli_epi32::<23>(rb), _mm256_set1_epi32(0xff)),
-                _mm256_set1_epi32(127),
-            );
-            let ipart = _mm256_srai_epi32::<1>(_mm256_add_epi32(e, _mm256_set1_epi32(1)));
-            let pos = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(r, _mm256_set1_ps(1.0)));
+            let e = rb
+                .shr::<23>()
+                .and(I32x8::splat(0xff))
+                .sub(I32x8::splat(127));
+            let ipart = e.add(I32x8::splat(1)).sra::<1>();
+            let pos = r.cmp_gt(F32x8::splat(1.0)).bits();
             return nearest_key(c, ipart, pos, qlive);
         }
         // fast_log2: (exponent − 1) + mantissa in [1, 2).
-        let e = _mm256_sub_epi32(
-            _mm256_and_si256(_mm256_srli_epi32::<23>(rb), _mm256_set1_epi32(0xff)),
-            _mm256_set1_epi32(128),
-        );
-        let m = _mm256_castsi256_ps(_mm256_or_si256(
-            _mm256_and_si256(rb, _mm256_set1_epi32(0x007f_ffff)),
-            _mm256_set1_epi32(0x3f80_0000),
-        ));
-        let mut lod = _mm256_mul_ps(_mm256_add_ps(_mm256_cvtepi32_ps(e), m), _mm256_set1_ps(0.5));
+        let e = rb
+            .shr::<23>()
+            .and(I32x8::splat(0xff))
+            .sub(I32x8::splat(128));
+        let m = rb
+            .and(I32x8::splat(0x007f_ffff))
+            .or(I32x8::splat(0x3f80_0000))
+            .as_f32();
+        let mut lod = e.to_f32().add(m).mul(F32x8::splat(0.5));
         if c.bias != 0.0 {
-            lod = _mm256_add_ps(lod, _mm256_set1_ps(c.bias));
+            lod = lod.add(F32x8::splat(c.bias));
         }
         if let Some(mx) = c.max_lod {
-            lod = _mm256_min_ps(lod, _mm256_set1_ps(mx));
+            lod = lod.min(F32x8::splat(mx));
         }
         if let Some(mn) = c.min_lod {
-            lod = _mm256_max_ps(lod, _mm256_set1_ps(mn));
+            lod = lod.max(F32x8::splat(mn));
         }
         // The LOD is finite (rho² is, and so are the bias and the applied clamps) but a
         // huge min_lod makes it overflow the float → int conversions below, which give
         // i32::MIN where the scalar `as i32` saturates: within ±2^24 both pick the level
         // `select_levels` picks (the first or the last), with the same zero fraction.
-        let big = _mm256_set1_ps(16_777_216.0);
-        lod = _mm256_min_ps(
-            _mm256_max_ps(lod, _mm256_sub_ps(_mm256_setzero_ps(), big)),
-            big,
-        );
-        let pos = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(lod, _mm256_setzero_ps()));
+        let big = F32x8::splat(16_777_216.0);
+        lod = lod.max(F32x8::zero().sub(big)).min(big);
+        let pos = lod.cmp_gt(F32x8::zero()).bits();
         if c.nearest {
             // `Lod::from_value`: `round_ties_even(lod) as i32`.
-            let lr = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(lod);
-            return nearest_key(c, _mm256_cvttps_epi32(lr), pos, qlive);
+            let lr = lod.round_even();
+            return nearest_key(c, lr.to_i32_trunc(), pos, qlive);
         }
-        let f = _mm256_floor_ps(lod);
-        let fpart = _mm256_sub_ps(lod, f);
-        let l0 = _mm256_add_epi32(_mm256_cvttps_epi32(f), _mm256_set1_epi32(c.first));
-        let first = _mm256_set1_epi32(c.first);
-        let below = _mm256_cmpgt_epi32(first, l0);
-        let in_hi = _mm256_cmpgt_epi32(_mm256_set1_epi32(c.last), l0);
-        let blend_key = _mm256_or_si256(_mm256_slli_epi32::<1>(l0), _mm256_set1_epi32(1));
-        let k = _mm256_blendv_epi8(_mm256_set1_epi32(c.last * 2), blend_key, in_hi);
-        let k = _mm256_blendv_epi8(k, _mm256_slli_epi32::<1>(first), below);
-        let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), k, pos);
+        let f = lod.floor();
+        let fpart = lod.sub(f);
+        let l0 = f.to_i32_trunc().add(I32x8::splat(c.first));
+        let first = I32x8::splat(c.first);
+        let below = first.cmpgt(l0);
+        let in_hi = I32x8::splat(c.last).cmpgt(l0);
+        let blend_key = l0.shl::<1>().or(I32x8::splat(1));
+        let k = I32x8::splat(c.last * 2).blendv(blend_key, in_hi);
+        let k = k.blendv(first.shl::<1>(), below);
+        let key = I32x8::splat(c.mag_key).blendv(k, pos);
         let (k0, uniform) = shared_key(key, qlive);
-        let wmip = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0)));
+        let wmip = fpart.mul(F32x8::splat(256.0)).to_i32_trunc();
         (key, k0, wmip, uniform)
     }
 }
@@ -178,21 +162,18 @@ unsafe fn lod_key(
 #[inline(always)]
 unsafe fn nearest_key(
     c: &LodConsts,
-    ipart: __m256i,
-    pos: __m256i,
+    ipart: I32x8,
+    pos: I32x8,
     qlive: u32,
-) -> (__m256i, i32, __m256i, bool) {
+) -> (I32x8, i32, I32x8, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
         // |ipart| ≤ 2^24 and first is a level index: the sum does not overflow.
-        let l = _mm256_add_epi32(ipart, _mm256_set1_epi32(c.first));
-        let l = _mm256_min_epi32(
-            _mm256_max_epi32(l, _mm256_set1_epi32(c.first)),
-            _mm256_set1_epi32(c.last),
-        );
-        let key = _mm256_blendv_epi8(_mm256_set1_epi32(c.mag_key), _mm256_slli_epi32::<1>(l), pos);
+        let l = ipart.add(I32x8::splat(c.first));
+        let l = l.max(I32x8::splat(c.first)).min(I32x8::splat(c.last));
+        let key = I32x8::splat(c.mag_key).blendv(l.shl::<1>(), pos);
         let (k0, uniform) = shared_key(key, qlive);
-        (key, k0, _mm256_setzero_si256(), uniform)
+        (key, k0, I32x8::zero(), uniform)
     }
 }
 
@@ -202,13 +183,13 @@ unsafe fn nearest_key(
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
-unsafe fn shared_key(key: __m256i, qlive: u32) -> (i32, bool) {
+unsafe fn shared_key(key: I32x8, qlive: u32) -> (i32, bool) {
     // SAFETY: AVX2 context (the caller).
     unsafe {
-        let lane0 = _mm256_set1_epi32(qlive.trailing_zeros() as i32);
-        let kb = _mm256_permutevar8x32_epi32(key, lane0);
-        let uniform = bits(_mm256_cmpeq_epi32(key, kb)) & qlive == qlive;
-        (_mm256_cvtsi256_si32(kb), uniform)
+        let lane0 = I32x8::splat(qlive.trailing_zeros() as i32);
+        let kb = key.permute_var(lane0);
+        let uniform = bits(key.cmpeq(kb)) & qlive == qlive;
+        (kb.first(), uniform)
     }
 }
 
@@ -217,7 +198,7 @@ pub struct Sampling<'a> {
     /// The unit.
     u: &'a UnitPlan<'a>,
     /// Without a LOD: the one sampler and its mip weights for every chunk.
-    fixed: Option<(RowSamplerV<'a>, __m256i)>,
+    fixed: Option<(RowSamplerV<'a>, I32x8)>,
     /// The LOD form [`lod_key`] vectorises (2D, min and max LOD not equal), every level it
     /// can choose in the vector sampler's range.
     vec_lod: bool,
@@ -245,7 +226,7 @@ impl<'a> Sampling<'a> {
         } else {
             let lv = select_levels(u, Lod::MAG);
             // SAFETY: AVX2 context.
-            let w = unsafe { _mm256_set1_epi32((lv.3 * 256.0) as i32) };
+            let w = unsafe { I32x8::splat((lv.3 * 256.0) as i32) };
             (fits(u.image(lv.1)) && fits(u.image(lv.2)))
                 .then(|| (Self::sampler(u, lv.0, lv.1, lv.2), w))
         };
@@ -326,29 +307,29 @@ impl<'a> Sampling<'a> {
     #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
     unsafe fn mixed(
         &self,
-        key: __m256i,
-        wm: __m256i,
+        key: I32x8,
+        wm: I32x8,
         qlive: u32,
-        s: [__m256; 2],
-        t: [__m256; 2],
+        s: [F32x8; 2],
+        t: [F32x8; 2],
         lm: [u32; 2],
-    ) -> Option<[__m256i; 2]> {
+    ) -> Option<[I32x8; 2]> {
         // SAFETY: AVX2 (this function's feature, on a CPU that has it: the caller).
         unsafe {
-            let mut texv = [_mm256_setzero_si256(); 2];
+            let mut texv = [I32x8::zero(); 2];
             let mut todo = qlive;
             while todo != 0 {
-                let lane = _mm256_set1_epi32(todo.trailing_zeros() as i32);
-                let kv = _mm256_permutevar8x32_epi32(key, lane);
-                let m = _mm256_cmpeq_epi32(key, kv);
-                let rs = self.keyed(_mm256_cvtsi256_si32(kv));
+                let lane = I32x8::splat(todo.trailing_zeros() as i32);
+                let kv = key.permute_var(lane);
+                let m = key.cmpeq(kv);
+                let rs = self.keyed(kv.first());
                 for r in 0..2 {
                     if lm[r] & bits(m) != 0 {
                         let (v, ok) = rs.row_v(s[r], t[r], wm);
                         if !ok {
                             return None;
                         }
-                        texv[r] = _mm256_blendv_epi8(texv[r], v, m);
+                        texv[r] = texv[r].blendv(v, m);
                     }
                 }
                 todo &= !bits(m);
@@ -364,21 +345,16 @@ impl<'a> Sampling<'a> {
     /// # Safety
     /// AVX2 context on a CPU that has it.
     #[inline(always)]
-    pub unsafe fn texels(
-        &mut self,
-        s: [__m256; 2],
-        t: [__m256; 2],
-        live: [__m256i; 2],
-    ) -> [__m256i; 2] {
+    pub unsafe fn texels(&mut self, s: [F32x8; 2], t: [F32x8; 2], live: [I32x8; 2]) -> [I32x8; 2] {
         // SAFETY: AVX2 context (the caller).
         unsafe {
             let lm = [bits(live[0]), bits(live[1])];
             let chosen = if let Some((rs, w)) = &self.fixed {
                 Some((*rs, *w))
             } else if self.vec_lod {
-                let any = _mm256_or_si256(live[0], live[1]);
-                let pair = _mm256_castps_si256(_mm256_permute_ps::<0xB1>(_mm256_castsi256_ps(any)));
-                let qlive = bits(_mm256_or_si256(any, pair));
+                let any = live[0].or(live[1]);
+                let pair = any.as_f32().permute::<0xB1>().bits();
+                let qlive = bits(any.or(pair));
                 match lod_key(&self.lc, s, t, qlive) {
                     (_, k, wm, true) => match self.last {
                         Some((lk, rs)) if lk == k => Some((rs, wm)),
@@ -399,7 +375,7 @@ impl<'a> Sampling<'a> {
                 None
             };
             if let Some((rs, wm)) = chosen {
-                let mut texv = [_mm256_setzero_si256(); 2];
+                let mut texv = [I32x8::zero(); 2];
                 let mut done = true;
                 for r in 0..2 {
                     if lm[r] != 0 {
@@ -422,7 +398,7 @@ impl<'a> Sampling<'a> {
 /// # Safety
 /// AVX2 context on a CPU that has it.
 #[inline(always)]
-unsafe fn fallback(u: &UnitPlan<'_>, s: [__m256; 2], t: [__m256; 2], lm: [u32; 2]) -> [__m256i; 2] {
+unsafe fn fallback(u: &UnitPlan<'_>, s: [F32x8; 2], t: [F32x8; 2], lm: [u32; 2]) -> [I32x8; 2] {
     let mut sa = [[0f32; LANES]; 2];
     let mut ta = [[0f32; LANES]; 2];
     let mut live = [[false; LANES]; 2];
@@ -430,17 +406,14 @@ unsafe fn fallback(u: &UnitPlan<'_>, s: [__m256; 2], t: [__m256; 2], lm: [u32; 2
     // SAFETY: AVX2 context; the arrays are 8 f32 / 8 RGBA8 (32 bytes) each.
     unsafe {
         for r in 0..2 {
-            _mm256_storeu_ps(sa[r].as_mut_ptr(), s[r]);
-            _mm256_storeu_ps(ta[r].as_mut_ptr(), t[r]);
+            s[r].store(sa[r].as_mut_ptr());
+            t[r].store(ta[r].as_mut_ptr());
             for (i, l) in live[r].iter_mut().enumerate() {
                 *l = (lm[r] >> i) & 1 == 1;
             }
         }
         fast::chunk_u8::<true>(u, &sa, &ta, &live, true, &mut out);
-        [
-            _mm256_loadu_si256(out[0].as_ptr() as *const __m256i),
-            _mm256_loadu_si256(out[1].as_ptr() as *const __m256i),
-        ]
+        [I32x8::load(out[0].as_ptr()), I32x8::load(out[1].as_ptr())]
     }
 }
 
@@ -463,18 +436,18 @@ pub unsafe fn texels_seq(u: &UnitPlan<'_>, chunks: &[ArrayChunk]) -> Vec<[[[u8; 
         let mut sampling = Sampling::new(u);
         for (s, t, live) in chunks {
             let mut out = [[[0u8; 4]; LANES]; 2];
-            let mut lv = [_mm256_setzero_si256(); 2];
-            let mut sv = [_mm256_setzero_ps(); 2];
-            let mut tv = [_mm256_setzero_ps(); 2];
+            let mut lv = [I32x8::zero(); 2];
+            let mut sv = [F32x8::zero(); 2];
+            let mut tv = [F32x8::zero(); 2];
             for r in 0..2 {
                 let m: [i32; LANES] = std::array::from_fn(|i| -(live[r][i] as i32));
-                lv[r] = _mm256_loadu_si256(m.as_ptr() as *const __m256i);
-                sv[r] = _mm256_loadu_ps(s[r].as_ptr());
-                tv[r] = _mm256_loadu_ps(t[r].as_ptr());
+                lv[r] = I32x8::load(m.as_ptr());
+                sv[r] = F32x8::load(s[r].as_ptr());
+                tv[r] = F32x8::load(t[r].as_ptr());
             }
             let v = sampling.texels(sv, tv, lv);
             for r in 0..2 {
-                _mm256_storeu_si256(out[r].as_mut_ptr() as *mut __m256i, v[r]);
+                v[r].store(out[r].as_mut_ptr());
             }
             outs.push(out);
         }

@@ -1,0 +1,309 @@
+//! Eight `i32` lanes in a 256-bit AVX2 register.
+
+use super::{avx2, bitwise_256, F32x8, I64x4, U16x16};
+use std::arch::x86_64::*;
+
+/// Eight `i32` lanes (`__m256i`); the unsigned operations say so in their names. Made
+/// only where the CPU has AVX2 (see [`super`]).
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub struct I32x8(pub(super) __m256i);
+
+// Named methods rather than `std::ops` operators: a kernel reads as the sequence of
+// instructions it compiles to.
+#[allow(clippy::should_implement_trait)]
+impl I32x8 {
+    /// Every lane `v`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn splat(v: i32) -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_set1_epi32(v) })
+    }
+
+    /// Every lane 0.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn zero() -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_setzero_si256() })
+    }
+
+    /// Lane `i` is `a[i]`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn new(a: [i32; 8]) -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_setr_epi32(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]) })
+    }
+
+    /// The 32 bytes at `p` (unaligned).
+    ///
+    /// # Safety
+    /// The CPU has AVX2 and the 32 bytes at `p` are readable.
+    #[inline(always)]
+    pub unsafe fn load<T>(p: *const T) -> Self {
+        // SAFETY: forwarded from the caller.
+        Self(unsafe { _mm256_loadu_si256(p.cast()) })
+    }
+
+    /// Stores the lanes at `p` (unaligned).
+    ///
+    /// # Safety
+    /// The 32 bytes at `p` are writable.
+    #[inline(always)]
+    pub unsafe fn store<T>(self, p: *mut T) {
+        // SAFETY: AVX2 as `self` proves; the caller vouches for the address.
+        unsafe { _mm256_storeu_si256(p.cast(), self.0) }
+    }
+
+    /// `vpmaskmovd` load: lane `i` from `p + i` where the sign bit of lane `i` of `mask`
+    /// is set, else 0; other lanes' memory is not touched.
+    ///
+    /// # Safety
+    /// The masked lanes' addresses are readable (AVX2 as `mask` proves).
+    #[inline(always)]
+    pub unsafe fn maskload(p: *const i32, mask: Self) -> Self {
+        // SAFETY: forwarded from the caller.
+        Self(unsafe { _mm256_maskload_epi32(p, mask.0) })
+    }
+
+    /// `vpmaskmovd` store of the lanes whose sign bit in `mask` is set.
+    ///
+    /// # Safety
+    /// The masked lanes' addresses are writable.
+    #[inline(always)]
+    pub unsafe fn maskstore(self, p: *mut i32, mask: Self) {
+        // SAFETY: forwarded from the caller; AVX2 as `self` proves.
+        unsafe { _mm256_maskstore_epi32(p, mask.0, self.0) }
+    }
+
+    /// [`Self::maskload`] of lanes 0–3 from `lo` and lanes 4–7 from `hi` (two 128-bit
+    /// `vpmaskmovd`).
+    ///
+    /// # Safety
+    /// The masked lanes' addresses are readable.
+    #[inline(always)]
+    pub unsafe fn maskload_halves(lo: *const i32, hi: *const i32, mask: Self) -> Self {
+        // SAFETY: forwarded from the caller; AVX2 as `mask` proves.
+        unsafe {
+            let l = _mm_maskload_epi32(lo, _mm256_castsi256_si128(mask.0));
+            let h = _mm_maskload_epi32(hi, _mm256_extracti128_si256::<1>(mask.0));
+            Self(_mm256_set_m128i(h, l))
+        }
+    }
+
+    /// [`Self::maskstore`] of lanes 0–3 at `lo` and lanes 4–7 at `hi`.
+    ///
+    /// # Safety
+    /// The masked lanes' addresses are writable.
+    #[inline(always)]
+    pub unsafe fn maskstore_halves(self, lo: *mut i32, hi: *mut i32, mask: Self) {
+        // SAFETY: forwarded from the caller; AVX2 as `self` proves.
+        unsafe {
+            _mm_maskstore_epi32(
+                lo,
+                _mm256_castsi256_si128(mask.0),
+                _mm256_castsi256_si128(self.0),
+            );
+            _mm_maskstore_epi32(
+                hi,
+                _mm256_extracti128_si256::<1>(mask.0),
+                _mm256_extracti128_si256::<1>(self.0),
+            );
+        }
+    }
+
+    /// `vpgatherdd`: lane `i` is the i32 at `base + idx[i]` (in elements).
+    ///
+    /// # Safety
+    /// Every lane's address is readable.
+    #[inline(always)]
+    pub unsafe fn gather(base: *const i32, idx: Self) -> Self {
+        // SAFETY: forwarded from the caller; AVX2 as `idx` proves.
+        Self(unsafe { _mm256_i32gather_epi32::<4>(base, idx.0) })
+    }
+
+    /// The lanes as an array.
+    #[inline(always)]
+    pub fn to_array(self) -> [i32; 8] {
+        let mut a = [0; 8];
+        // SAFETY: AVX2 as `self` proves; `a` is 32 writable bytes.
+        unsafe { self.store(a.as_mut_ptr()) };
+        a
+    }
+
+    /// Lane 0.
+    #[inline(always)]
+    pub fn first(self) -> i32 {
+        avx2!(_mm256_cvtsi256_si32(self.0))
+    }
+
+    /// Wrapping `self + o` per lane.
+    #[inline(always)]
+    pub fn add(self, o: Self) -> Self {
+        Self(avx2!(_mm256_add_epi32(self.0, o.0)))
+    }
+
+    /// Wrapping `self - o` per lane.
+    #[inline(always)]
+    pub fn sub(self, o: Self) -> Self {
+        Self(avx2!(_mm256_sub_epi32(self.0, o.0)))
+    }
+
+    /// The low 32 bits of `self * o` per lane.
+    #[inline(always)]
+    pub fn mullo(self, o: Self) -> Self {
+        Self(avx2!(_mm256_mullo_epi32(self.0, o.0)))
+    }
+
+    /// Bitwise exclusive or.
+    #[inline(always)]
+    pub fn xor(self, o: Self) -> Self {
+        Self(avx2!(_mm256_xor_si256(self.0, o.0)))
+    }
+
+    /// `self > o` per lane (signed) as a mask.
+    #[inline(always)]
+    pub fn cmpgt(self, o: Self) -> Self {
+        Self(avx2!(_mm256_cmpgt_epi32(self.0, o.0)))
+    }
+
+    /// `self == o` per lane as a mask.
+    #[inline(always)]
+    pub fn cmpeq(self, o: Self) -> Self {
+        Self(avx2!(_mm256_cmpeq_epi32(self.0, o.0)))
+    }
+
+    /// Signed minimum per lane.
+    #[inline(always)]
+    pub fn min(self, o: Self) -> Self {
+        Self(avx2!(_mm256_min_epi32(self.0, o.0)))
+    }
+
+    /// Signed maximum per lane.
+    #[inline(always)]
+    pub fn max(self, o: Self) -> Self {
+        Self(avx2!(_mm256_max_epi32(self.0, o.0)))
+    }
+
+    /// Unsigned minimum per lane.
+    #[inline(always)]
+    pub fn min_u32(self, o: Self) -> Self {
+        Self(avx2!(_mm256_min_epu32(self.0, o.0)))
+    }
+
+    /// Unsigned maximum per lane.
+    #[inline(always)]
+    pub fn max_u32(self, o: Self) -> Self {
+        Self(avx2!(_mm256_max_epu32(self.0, o.0)))
+    }
+
+    /// Shifted left by `N` bits.
+    #[inline(always)]
+    pub fn shl<const N: i32>(self) -> Self {
+        Self(avx2!(_mm256_slli_epi32::<N>(self.0)))
+    }
+
+    /// Shifted right by `N` bits, zeros in.
+    #[inline(always)]
+    pub fn shr<const N: i32>(self) -> Self {
+        Self(avx2!(_mm256_srli_epi32::<N>(self.0)))
+    }
+
+    /// Shifted right by `N` bits, the sign in.
+    #[inline(always)]
+    pub fn sra<const N: i32>(self) -> Self {
+        Self(avx2!(_mm256_srai_epi32::<N>(self.0)))
+    }
+
+    /// Each lane shifted left by the same lane of `n` (0 from 32 on).
+    #[inline(always)]
+    pub fn shl_var(self, n: Self) -> Self {
+        Self(avx2!(_mm256_sllv_epi32(self.0, n.0)))
+    }
+
+    /// Each lane shifted right by the same lane of `n`, zeros in (0 from 32 on).
+    #[inline(always)]
+    pub fn shr_var(self, n: Self) -> Self {
+        Self(avx2!(_mm256_srlv_epi32(self.0, n.0)))
+    }
+
+    /// `vpblendvb`: per byte `o` where the byte's sign bit in `mask` is set, else `self`
+    /// (per lane, for masks of all ones or zero).
+    #[inline(always)]
+    pub fn blendv(self, o: Self, mask: Self) -> Self {
+        Self(avx2!(_mm256_blendv_epi8(self.0, o.0, mask.0)))
+    }
+
+    /// `vpermd`: lane `i` is lane `idx[i] & 7` of `self`.
+    #[inline(always)]
+    pub fn permute_var(self, idx: Self) -> Self {
+        Self(avx2!(_mm256_permutevar8x32_epi32(self.0, idx.0)))
+    }
+
+    /// Converted to f32 (rounded to nearest).
+    #[inline(always)]
+    pub fn to_f32(self) -> F32x8 {
+        F32x8(avx2!(_mm256_cvtepi32_ps(self.0)))
+    }
+
+    /// The same bits as eight f32 lanes.
+    #[inline(always)]
+    pub fn as_f32(self) -> F32x8 {
+        F32x8(avx2!(_mm256_castsi256_ps(self.0)))
+    }
+
+    /// The same bits as sixteen u16 lanes.
+    #[inline(always)]
+    pub fn as_u16(self) -> U16x16 {
+        U16x16(self.0)
+    }
+
+    /// The same bits as four i64 lanes.
+    #[inline(always)]
+    pub fn as_i64(self) -> I64x4 {
+        I64x4(self.0)
+    }
+
+    /// The sign bits of the lanes, bit `i` for lane `i`.
+    #[inline(always)]
+    pub fn movemask(self) -> u32 {
+        self.as_f32().movemask()
+    }
+
+    /// Lanes 0–3 sign-extended to i64.
+    #[inline(always)]
+    pub fn widen_lo(self) -> I64x4 {
+        I64x4(avx2!(_mm256_cvtepi32_epi64(_mm256_castsi256_si128(self.0))))
+    }
+
+    /// Lanes 4–7 sign-extended to i64.
+    #[inline(always)]
+    pub fn widen_hi(self) -> I64x4 {
+        I64x4(avx2!(_mm256_cvtepi32_epi64(_mm256_extracti128_si256::<1>(
+            self.0
+        ))))
+    }
+
+    /// `vpunpcklbw`: the low 8 bytes of each 128-bit half interleaved with those of `o`
+    /// (with `o` zero: those bytes zero-extended to u16).
+    #[inline(always)]
+    pub fn unpack_lo_u8(self, o: Self) -> U16x16 {
+        U16x16(avx2!(_mm256_unpacklo_epi8(self.0, o.0)))
+    }
+
+    /// `vpunpckhbw`: as [`Self::unpack_lo_u8`] for the high 8 bytes of each half.
+    #[inline(always)]
+    pub fn unpack_hi_u8(self, o: Self) -> U16x16 {
+        U16x16(avx2!(_mm256_unpackhi_epi8(self.0, o.0)))
+    }
+}
+
+bitwise_256!(I32x8);

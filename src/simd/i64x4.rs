@@ -1,0 +1,104 @@
+//! Four `i64` lanes in a 256-bit AVX2 register.
+
+use super::{avx2, bitwise_256, I32x8};
+use std::arch::x86_64::*;
+
+/// Four `i64` lanes (`__m256i`). Made only where the CPU has AVX2 (see [`super`]).
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub struct I64x4(pub(super) __m256i);
+
+// Named methods rather than `std::ops` operators: a kernel reads as the sequence of
+// instructions it compiles to.
+#[allow(clippy::should_implement_trait)]
+impl I64x4 {
+    /// Every lane `v`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn splat(v: i64) -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_set1_epi64x(v) })
+    }
+
+    /// Every lane 0.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn zero() -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_setzero_si256() })
+    }
+
+    /// Lane `i` is `a[i]`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn new(a: [i64; 4]) -> Self {
+        // SAFETY: the caller vouches for AVX2.
+        Self(unsafe { _mm256_set_epi64x(a[3], a[2], a[1], a[0]) })
+    }
+
+    /// Stores the lanes at `p` (unaligned).
+    ///
+    /// # Safety
+    /// `p..p + 4` is writable.
+    #[inline(always)]
+    pub unsafe fn store(self, p: *mut i64) {
+        // SAFETY: AVX2 as `self` proves; the caller vouches for the address.
+        unsafe { _mm256_storeu_si256(p.cast(), self.0) }
+    }
+
+    /// The same bits as eight i32 lanes.
+    #[inline(always)]
+    pub fn as_i32(self) -> I32x8 {
+        I32x8(self.0)
+    }
+
+    /// Wrapping `self + o` per lane.
+    #[inline(always)]
+    pub fn add(self, o: Self) -> Self {
+        Self(avx2!(_mm256_add_epi64(self.0, o.0)))
+    }
+
+    /// Wrapping `self - o` per lane.
+    #[inline(always)]
+    pub fn sub(self, o: Self) -> Self {
+        Self(avx2!(_mm256_sub_epi64(self.0, o.0)))
+    }
+
+    /// `vpmuldq`: the exact products of the lanes' low 32 bits, as signed i32 values.
+    #[inline(always)]
+    pub fn mul_i32(self, o: Self) -> Self {
+        Self(avx2!(_mm256_mul_epi32(self.0, o.0)))
+    }
+
+    /// Shifted left by `N` bits.
+    #[inline(always)]
+    pub fn shl<const N: i32>(self) -> Self {
+        Self(avx2!(_mm256_slli_epi64::<N>(self.0)))
+    }
+
+    /// `self > o` per lane (signed) as a mask.
+    #[inline(always)]
+    pub fn cmpgt(self, o: Self) -> Self {
+        Self(avx2!(_mm256_cmpgt_epi64(self.0, o.0)))
+    }
+
+    /// `self == o` per lane as a mask.
+    #[inline(always)]
+    pub fn cmpeq(self, o: Self) -> Self {
+        Self(avx2!(_mm256_cmpeq_epi64(self.0, o.0)))
+    }
+
+    /// The sign bits of the lanes, bit `i` for lane `i`.
+    #[inline(always)]
+    pub fn movemask(self) -> u32 {
+        avx2!(_mm256_movemask_pd(_mm256_castsi256_pd(self.0))) as u32
+    }
+}
+
+bitwise_256!(I64x4);
