@@ -37,6 +37,7 @@ pub mod texture_copy;
 pub mod texture_ds;
 pub mod texture_params;
 pub mod texture_spec;
+pub mod user_buffer;
 pub mod vertex_material;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};
