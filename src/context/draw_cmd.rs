@@ -15,6 +15,16 @@ use crate::gl::types::*;
 use std::collections::HashMap;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 
+/// The index type of glDrawElements (GL_UNSIGNED_BYTE, _SHORT or _INT).
+fn index_type(type_: GLenum) -> GlResult<DataType> {
+    Ok(match type_ {
+        GL_UNSIGNED_BYTE => DataType::UByte,
+        GL_UNSIGNED_SHORT => DataType::UShort,
+        GL_UNSIGNED_INT => DataType::UInt,
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
 /// GL_INVALID_OPERATION when an array or index buffer the draw reads is mapped.
 fn check_unmapped(c: &Context, indexed: bool) -> GlResult<()> {
     let a = &c.arrays;
@@ -160,12 +170,7 @@ pub(crate) fn draw_elements(
 ) -> GlResult<()> {
     let mode = Primitive::from_gl(mode)?;
     let count = non_negative(count)?;
-    let ty = match type_ {
-        GL_UNSIGNED_BYTE => DataType::UByte,
-        GL_UNSIGNED_SHORT => DataType::UShort,
-        GL_UNSIGNED_INT => DataType::UInt,
-        _ => return Err(GlError::InvalidEnum),
-    };
+    let ty = index_type(type_)?;
     check_unmapped(c, true)?;
     c.check_draw_framebuffer()?;
     if !c.arrays.vertex.enabled || count == 0 {
@@ -242,12 +247,7 @@ pub(crate) fn element_list(
     indices: *const GLvoid,
 ) -> GlResult<Elements> {
     let count = non_negative(count)?;
-    let ty = match type_ {
-        GL_UNSIGNED_BYTE => DataType::UByte,
-        GL_UNSIGNED_SHORT => DataType::UShort,
-        GL_UNSIGNED_INT => DataType::UInt,
-        _ => return Err(GlError::InvalidEnum),
-    };
+    let ty = index_type(type_)?;
     if count == 0 || !c.arrays.vertex.enabled {
         return Ok(Elements::List(Vec::new()));
     }

@@ -209,15 +209,7 @@ impl Context {
         let level = check_level(level)?;
         let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
         self.prepare_read()?;
-        let obj = self.tex_object(Target::Tex3D, false);
-        let depth = obj.depths[level];
-        let img = obj.levels[level]
-            .as_ref()
-            .ok_or(GlError::InvalidOperation)?;
-        let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
-        if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], d, depth)) {
-            return Err(GlError::InvalidValue);
-        }
+        let img = self.sub_box_3d(level, off, (w, h, d))?;
         let format = (img.base, img.storage);
         // SAFETY: forwarded caller contract.
         let texels = unsafe { unpack_3d(self, &unpack, &cf, format, (w, h, d), data) };
@@ -237,6 +229,27 @@ impl Context {
         Ok(())
     }
 
+    /// The 3D level a sub-image command writes, after checking that the `w x h x d` box at
+    /// `off` lies inside it (GL_INVALID_OPERATION without the level, GL_INVALID_VALUE
+    /// outside it).
+    fn sub_box_3d(
+        &self,
+        level: usize,
+        off: [GLint; 3],
+        (w, h, d): (usize, usize, usize),
+    ) -> GlResult<&Level> {
+        let obj = self.tex_object(Target::Tex3D, false);
+        let depth = obj.depths[level];
+        let img = obj.levels[level]
+            .as_ref()
+            .ok_or(GlError::InvalidOperation)?;
+        let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
+        if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], d, depth)) {
+            return Err(GlError::InvalidValue);
+        }
+        Ok(img)
+    }
+
     /// glCopyTexSubImage3D: a framebuffer rectangle into slice `zoff`.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn copy_tex_sub_image_3d(
@@ -252,15 +265,7 @@ impl Context {
         }
         let level = check_level(level)?;
         let (w, h) = (non_negative(w)?, non_negative(h)?);
-        let obj = self.tex_object(Target::Tex3D, false);
-        let depth = obj.depths[level];
-        let img = obj.levels[level]
-            .as_ref()
-            .ok_or(GlError::InvalidOperation)?;
-        let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
-        if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], 1, depth)) {
-            return Err(GlError::InvalidValue);
-        }
+        let img = self.sub_box_3d(level, off, (w, h, 1))?;
         let src = read_texels(self, (x, y, w, h), img.base, &img.storage)?;
         let obj = self.tex_object_mut(Target::Tex3D, false);
         let img = obj.levels[level]

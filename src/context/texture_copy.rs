@@ -2,19 +2,24 @@
 //! colours or depth as texels, with pixel transfer as Mesa's CPU copy applies it.
 
 use super::texture_spec::{
-    check_level, dims_match, image_size, image_target, maybe_generate, non_negative,
-    resolve_internal, storage_of,
+    check_level, image_size, maybe_generate, non_negative, resolve_internal, storage_of,
+    store_level, sub_image_target,
 };
 use super::{Context, GlError, GlResult};
+use crate::framebuffer::Framebuffer;
 use crate::gl::types::*;
 use crate::texture::shadow;
 use crate::texture::upload;
 use crate::texture::{BaseFormat, Level, Storage};
 
-/// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
-pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
-    let mut out = vec![[0u8; 4]; w * h];
-    let Some(fb) = c.read_fb() else { return out };
+/// Calls `f(i, j)` for each pixel of the GL-window rectangle `(x, y, w, h)` (y up) that
+/// lies inside `fb`: `i` is its index in the row-major `w`-wide rectangle, `j` its index in
+/// the framebuffer's planes.
+pub(crate) fn each_fb_pixel(
+    fb: &Framebuffer,
+    (x, y, w, h): (i32, i32, usize, usize),
+    mut f: impl FnMut(usize, usize),
+) {
     for row in 0..h {
         let gy = y as i64 + row as i64;
         if gy < 0 || gy >= fb.height as i64 {
@@ -26,9 +31,18 @@ pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u
             if gx < 0 || gx >= fb.width as i64 {
                 continue;
             }
-            out[row * w + col] = fb.color_at(fy * fb.width + gx as usize);
+            f(row * w + col, fy * fb.width + gx as usize);
         }
     }
+}
+
+/// Reads a GL-window rectangle (y up) of the framebuffer as RGBA8; outside pixels are 0.
+pub(crate) fn read_fb(c: &Context, x: i32, y: i32, w: usize, h: usize) -> Vec<[u8; 4]> {
+    let mut out = vec![[0u8; 4]; w * h];
+    let Some(fb) = c.read_fb() else { return out };
+    each_fb_pixel(fb, (x, y, w, h), |i, j| {
+        out[i] = fb.color_at(j);
+    });
     out
 }
 
@@ -62,25 +76,14 @@ pub(crate) fn read_texels(
     }
     let fb_bits = fb.depth_format.texel_bits();
     let mut out = vec![shadow::texel(0); w * h];
-    for row in 0..h {
-        let gy = y as i64 + row as i64;
-        if gy < 0 || gy >= fb.height as i64 {
-            continue;
-        }
-        let fy = fb.row(gy as usize);
-        for col in 0..w {
-            let gx = x as i64 + col as i64;
-            if gx < 0 || gx >= fb.width as i64 {
-                continue;
-            }
-            let z = fb.depth_at(fy * fb.width + gx as usize);
-            let z = match scale_bias {
-                Some(sb) => shadow::convert_scaled(z, fb_bits, storage.depth_bits(), sb),
-                None => shadow::convert(z, fb_bits, storage.depth_bits()),
-            };
-            out[row * w + col] = shadow::texel(z);
-        }
-    }
+    each_fb_pixel(fb, (x, y, w, h), |i, j| {
+        let z = fb.depth_at(j);
+        let z = match scale_bias {
+            Some(sb) => shadow::convert_scaled(z, fb_bits, storage.depth_bits(), sb),
+            None => shadow::convert(z, fb_bits, storage.depth_bits()),
+        };
+        out[i] = shadow::texel(z);
+    });
     Ok(out)
 }
 
@@ -99,10 +102,7 @@ impl Context {
         border: GLint,
         dims: u8,
     ) -> GlResult<()> {
-        let (t, face) = match image_target(target)? {
-            (t, false, face) if dims_match(t, dims) => (t, face),
-            _ => return Err(GlError::InvalidEnum),
-        };
+        let (t, face) = sub_image_target(target, dims)?;
         let level = check_level(level)?;
         // Mesa: an unknown internal format of a copy is GL_INVALID_ENUM (not VALUE as for
         // glTexImage), and so are the legacy component counts 1-4, which only glTexImage
@@ -129,9 +129,7 @@ impl Context {
             true => super::texture_ds::read_fb_stencil(self, sx, sy, tw, th),
             false => Vec::new(),
         };
-        let obj = self.tex_object_mut(t, false);
-        super::texture_ds::set(obj, (face, level), internal, stencil);
-        obj.face_levels_mut(face)[level] = Some(Level {
+        let img = Level {
             width: tw,
             height: th,
             internal_format: internal,
@@ -139,8 +137,8 @@ impl Context {
             storage,
             texels,
             blocks: None,
-        });
-        maybe_generate(obj, level);
+        };
+        store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
 
@@ -158,10 +156,7 @@ impl Context {
         h: GLsizei,
         dims: u8,
     ) -> GlResult<()> {
-        let (t, face) = match image_target(target)? {
-            (t, false, face) if dims_match(t, dims) => (t, face),
-            _ => return Err(GlError::InvalidEnum),
-        };
+        let (t, face) = sub_image_target(target, dims)?;
         let level = check_level(level)?;
         let (w, h) = (non_negative(w)?, non_negative(h)?);
         let (base, storage, internal) = self

@@ -74,6 +74,7 @@ fn get_shadow_parameter(p: &ShadowParams, pname: GLenum) -> GLenum {
     }
 }
 
+/// A GL_TEXTURE_WRAP_* value.
 fn wrap_from_gl(v: u32) -> GlResult<Wrap> {
     Ok(match v {
         GL_REPEAT => Wrap::Repeat,
@@ -85,6 +86,7 @@ fn wrap_from_gl(v: u32) -> GlResult<Wrap> {
     })
 }
 
+/// The token of a wrap mode.
 fn wrap_to_gl(w: Wrap) -> u32 {
     match w {
         Wrap::Repeat => GL_REPEAT,
@@ -95,6 +97,7 @@ fn wrap_to_gl(w: Wrap) -> u32 {
     }
 }
 
+/// The GL_TEXTURE_MIN_FILTER token of a filter and mipmap filter.
 fn min_filter_to_gl(f: Filter, m: MipFilter) -> u32 {
     match (f, m) {
         (Filter::Nearest, MipFilter::None) => GL_NEAREST,
@@ -106,6 +109,23 @@ fn min_filter_to_gl(f: Filter, m: MipFilter) -> u32 {
     }
 }
 
+/// A GL_TEXTURE_BORDER_COLOR or GL_TEXTURE_ENV_COLOR value: four components clamped to
+/// [0, 1], integers (`ints`) normalised first; fewer than four values are GL_INVALID_ENUM.
+fn color_param(v: &[f64], ints: bool) -> GlResult<[f32; 4]> {
+    if v.len() < 4 {
+        return Err(GlError::InvalidEnum);
+    }
+    Ok(std::array::from_fn(|i| {
+        let x = if ints {
+            (2.0 * v[i] + 1.0) / 4294967295.0
+        } else {
+            v[i]
+        };
+        crate::context::clamp01(x) as f32
+    }))
+}
+
+/// GL_RGB_SCALE / GL_ALPHA_SCALE: 1, 2 or 4 (GL_INVALID_VALUE otherwise).
 fn scale_from(v: f64) -> GlResult<f32> {
     if v == 1.0 || v == 2.0 || v == 4.0 {
         Ok(v as f32)
@@ -150,17 +170,7 @@ impl Context {
             GL_TEXTURE_WRAP_T => p.wrap_t = wrap_from_gl(e)?,
             GL_TEXTURE_WRAP_R => p.wrap_r = wrap_from_gl(e)?,
             GL_TEXTURE_BORDER_COLOR => {
-                if v.len() < 4 {
-                    return Err(GlError::InvalidEnum);
-                }
-                p.border_color = std::array::from_fn(|i| {
-                    let x = if ints {
-                        (2.0 * v[i] + 1.0) / 4294967295.0
-                    } else {
-                        v[i]
-                    };
-                    crate::context::clamp01(x) as f32
-                });
+                p.border_color = color_param(v, ints)?;
             }
             GL_TEXTURE_MIN_LOD => p.min_lod = v[0] as f32,
             GL_TEXTURE_MAX_LOD => p.max_lod = v[0] as f32,
@@ -307,17 +317,7 @@ impl Context {
         match pname {
             GL_TEXTURE_ENV_MODE => env.mode = EnvMode::from_gl(e).ok_or(GlError::InvalidEnum)?,
             GL_TEXTURE_ENV_COLOR => {
-                if v.len() < 4 {
-                    return Err(GlError::InvalidEnum);
-                }
-                env.color = std::array::from_fn(|i| {
-                    let x = if ints {
-                        (2.0 * v[i] + 1.0) / 4294967295.0
-                    } else {
-                        v[i]
-                    };
-                    crate::context::clamp01(x) as f32
-                });
+                env.color = color_param(v, ints)?;
             }
             GL_COMBINE_RGB => {
                 env.combine_rgb = CombineFn::from_gl(e, true).ok_or(GlError::InvalidEnum)?

@@ -64,6 +64,15 @@ pub(crate) fn dims_match(t: Target, dims: u8) -> bool {
     }
 }
 
+/// The (target, cube face) of a command of `dims` dimensions that writes an existing
+/// texture (no proxies): GL_INVALID_ENUM otherwise.
+pub(crate) fn sub_image_target(target: GLenum, dims: u8) -> GlResult<(Target, usize)> {
+    match image_target(target)? {
+        (t, false, face) if dims_match(t, dims) => Ok((t, face)),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
 /// A mipmap level number (GL_INVALID_VALUE outside 0..MAX_LEVELS).
 pub(crate) fn check_level(level: GLint) -> GlResult<usize> {
     if level < 0 || level as usize >= MAX_LEVELS {
@@ -71,6 +80,19 @@ pub(crate) fn check_level(level: GLint) -> GlResult<usize> {
     } else {
         Ok(level as usize)
     }
+}
+
+/// Stores `img` as image (`face`, `level`) of `obj`, with the stencil of a depth-stencil
+/// image (see [`super::texture_ds::set`]), and regenerates the mipmaps from it if asked.
+pub(crate) fn store_level(
+    obj: &mut TextureObject,
+    (face, level): (usize, usize),
+    img: Level,
+    stencil: Vec<u8>,
+) {
+    super::texture_ds::set(obj, (face, level), img.internal_format, stencil);
+    obj.face_levels_mut(face)[level] = Some(img);
+    maybe_generate(obj, level);
 }
 
 /// Regenerates the mipmaps after the base level changed, if GL_GENERATE_MIPMAP is set.
@@ -311,9 +333,7 @@ impl Context {
         };
         // SAFETY: as above.
         let stencil = unsafe { super::texture_ds::unpack_stencil(self, &ps, &cf, (tw, th), data) };
-        let obj = self.tex_object_mut(t, false);
-        super::texture_ds::set(obj, (face, level), internal as u32, stencil);
-        obj.face_levels_mut(face)[level] = Some(Level {
+        let img = Level {
             width: tw,
             height: th,
             internal_format: internal as u32,
@@ -321,8 +341,8 @@ impl Context {
             storage,
             texels,
             blocks: None,
-        });
-        maybe_generate(obj, level);
+        };
+        store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
 
@@ -339,10 +359,7 @@ impl Context {
         dims: u8,
         unpack: PixelStore,
     ) -> GlResult<()> {
-        let (t, face) = match image_target(target)? {
-            (t, false, face) if dims_match(t, dims) => (t, face),
-            _ => return Err(GlError::InvalidEnum),
-        };
+        let (t, face) = sub_image_target(target, dims)?;
         let cf = super::texture_ci::client_format(format, ty)?;
         let level = check_level(level)?;
         let (w, h) = (non_negative(w)?, non_negative(h)?);

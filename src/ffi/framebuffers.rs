@@ -61,23 +61,17 @@ pub unsafe extern "C" fn glDeleteFramebuffers(n: GLsizei, framebuffers: *const G
     })
 }
 
-/// Binds `name` to `target`; `any_name` lets names never generated create objects (the
-/// EXT entry point's rule).
-fn bind_framebuffer(target: GLenum, name: GLuint, any_name: bool) {
-    with_ctx(|c| c.bind_framebuffer_object(target, name, any_name))
-}
-
 /// glBindFramebuffer (the compatibility profile, like the EXT call, takes names never
 /// generated; only a core profile refuses them, as Mesa does).
 #[no_mangle]
 pub extern "C" fn glBindFramebuffer(target: GLenum, framebuffer: GLuint) {
-    bind_framebuffer(target, framebuffer, true)
+    with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true))
 }
 
 /// glBindFramebufferEXT (any name creates an object).
 #[no_mangle]
 pub extern "C" fn glBindFramebufferEXT(target: GLenum, framebuffer: GLuint) {
-    bind_framebuffer(target, framebuffer, true)
+    with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true))
 }
 
 /// glIsFramebuffer: true for names of objects that have been bound.
@@ -92,19 +86,6 @@ pub extern "C" fn glCheckFramebufferStatus(target: GLenum) -> GLenum {
     with_ctx(|c| c.check_framebuffer_status(target))
 }
 
-/// The common body of the glFramebufferTexture* calls.
-fn framebuffer_texture(
-    target: GLenum,
-    attachment: GLenum,
-    textarget: Option<GLenum>,
-    dims: Option<u8>,
-    texture: GLuint,
-    level: GLint,
-    layer: GLint,
-) {
-    with_ctx(|c| c.framebuffer_texture(target, attachment, textarget, dims, texture, level, layer))
-}
-
 /// glFramebufferTexture1D.
 #[no_mangle]
 pub extern "C" fn glFramebufferTexture1D(
@@ -114,15 +95,17 @@ pub extern "C" fn glFramebufferTexture1D(
     texture: GLuint,
     level: GLint,
 ) {
-    framebuffer_texture(
-        target,
-        attachment,
-        Some(textarget),
-        Some(1),
-        texture,
-        level,
-        0,
-    )
+    with_ctx(|c| {
+        c.framebuffer_texture(
+            target,
+            attachment,
+            Some(textarget),
+            Some(1),
+            texture,
+            level,
+            0,
+        )
+    })
 }
 
 /// glFramebufferTexture2D.
@@ -134,15 +117,17 @@ pub extern "C" fn glFramebufferTexture2D(
     texture: GLuint,
     level: GLint,
 ) {
-    framebuffer_texture(
-        target,
-        attachment,
-        Some(textarget),
-        Some(2),
-        texture,
-        level,
-        0,
-    )
+    with_ctx(|c| {
+        c.framebuffer_texture(
+            target,
+            attachment,
+            Some(textarget),
+            Some(2),
+            texture,
+            level,
+            0,
+        )
+    })
 }
 
 /// glFramebufferTexture3D: slice `zoffset` of a 3D texture.
@@ -155,15 +140,17 @@ pub extern "C" fn glFramebufferTexture3D(
     level: GLint,
     zoffset: GLint,
 ) {
-    framebuffer_texture(
-        target,
-        attachment,
-        Some(textarget),
-        Some(3),
-        texture,
-        level,
-        zoffset,
-    )
+    with_ctx(|c| {
+        c.framebuffer_texture(
+            target,
+            attachment,
+            Some(textarget),
+            Some(3),
+            texture,
+            level,
+            zoffset,
+        )
+    })
 }
 
 /// glFramebufferTextureLayer: layer `layer` of a 3D texture.
@@ -175,7 +162,7 @@ pub extern "C" fn glFramebufferTextureLayer(
     level: GLint,
     layer: GLint,
 ) {
-    framebuffer_texture(target, attachment, None, None, texture, level, layer)
+    with_ctx(|c| c.framebuffer_texture(target, attachment, None, None, texture, level, layer))
 }
 
 /// glFramebufferRenderbuffer.
@@ -212,38 +199,22 @@ pub unsafe extern "C" fn glDeleteRenderbuffers(n: GLsizei, renderbuffers: *const
     })
 }
 
-/// Binds renderbuffer `name`; `any_name` as for [`bind_framebuffer`].
-fn bind_renderbuffer(target: GLenum, name: GLuint, any_name: bool) {
-    with_ctx(|c| c.bind_renderbuffer(target, name, any_name))
-}
-
 /// glBindRenderbuffer (names never generated are taken, as by glBindFramebuffer).
 #[no_mangle]
 pub extern "C" fn glBindRenderbuffer(target: GLenum, renderbuffer: GLuint) {
-    bind_renderbuffer(target, renderbuffer, true)
+    with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true))
 }
 
 /// glBindRenderbufferEXT (any name creates an object).
 #[no_mangle]
 pub extern "C" fn glBindRenderbufferEXT(target: GLenum, renderbuffer: GLuint) {
-    bind_renderbuffer(target, renderbuffer, true)
+    with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true))
 }
 
 /// glIsRenderbuffer: true for names of objects that have been bound.
 #[no_mangle]
 pub extern "C" fn glIsRenderbuffer(renderbuffer: GLuint) -> GLboolean {
     with_ctx(|c| Ok(c.is_renderbuffer(renderbuffer) as GLboolean))
-}
-
-/// The common body of glRenderbufferStorage(Multisample).
-fn renderbuffer_storage(
-    target: GLenum,
-    samples: GLsizei,
-    internal: GLenum,
-    w: GLsizei,
-    h: GLsizei,
-) {
-    with_ctx(|c| c.renderbuffer_storage(target, samples, internal, w, h))
 }
 
 /// glRenderbufferStorage.
@@ -254,7 +225,7 @@ pub extern "C" fn glRenderbufferStorage(
     width: GLsizei,
     height: GLsizei,
 ) {
-    renderbuffer_storage(target, 0, internalformat, width, height)
+    with_ctx(|c| c.renderbuffer_storage(target, 0, internalformat, width, height))
 }
 
 /// glRenderbufferStorageMultisample: `samples` above GL_MAX_SAMPLES is GL_INVALID_OPERATION.
@@ -266,7 +237,7 @@ pub extern "C" fn glRenderbufferStorageMultisample(
     width: GLsizei,
     height: GLsizei,
 ) {
-    renderbuffer_storage(target, samples, internalformat, width, height)
+    with_ctx(|c| c.renderbuffer_storage(target, samples, internalformat, width, height))
 }
 
 /// glGetRenderbufferParameteriv.
