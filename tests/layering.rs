@@ -296,5 +296,9 @@ fn intrinsics_only_in_simd() {
             }
         }
     }
-    assert!(found.is_empty(), "intrinsics outside src/simd:\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "intrinsics outside src/simd:\n{}",
+        found.join("\n")
+    );
 }

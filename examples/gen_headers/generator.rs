@@ -100,13 +100,7 @@ pub const SOURCES: &[(&str, Header)] = &[
 ];
 
 /// Files of `src/ffi` that declare nothing for C.
-pub const NOT_IN_HEADERS: &[&str] = &[
-    "families.rs",
-    "mod.rs",
-    "proc_table.rs",
-    "textures_ci.rs",
-    "textures_ds.rs",
-];
+pub const NOT_IN_HEADERS: &[&str] = &["families.rs", "mod.rs", "proc_table.rs"];
 
 /// Typedefs of `types.rs` that Mesa declares in glext.h rather than gl.h (kept out of gl.h).
 pub const GLEXT_TYPES: &[&str] = &[

@@ -418,13 +418,12 @@ fn make_current(
     if prev != ctx {
         c.group.check_out(gl);
     }
-    gl.visual.format = format;
-    let retyped = gl.target.ty != type_;
-    gl.bind_framebuffer(width as usize, height as usize, retyped);
-    gl.target.ptr = buffer as usize;
-    gl.target.ty = type_;
-    gl.target.width = width as usize;
-    gl.target.height = height as usize;
+    gl.attach_user_buffer(
+        format,
+        buffer as usize,
+        type_,
+        (width as usize, height as usize),
+    );
     GL_TRUE as GLboolean
 }
 
@@ -438,18 +437,13 @@ pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
 /// context.
 #[no_mangle]
 pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
-    super::with_ctx_anywhere(|c| {
-        match pname {
-            OSMESA_ROW_LENGTH => {
-                if value < 0 {
-                    return Err(crate::context::GlError::InvalidValue);
-                }
-                c.target.row_length = value;
-            }
-            OSMESA_Y_UP => c.target.y_up = value != 0,
-            _ => return Err(crate::context::GlError::InvalidEnum),
+    super::with_ctx_anywhere(|c| match pname {
+        OSMESA_ROW_LENGTH => c.set_user_row_length(value),
+        OSMESA_Y_UP => {
+            c.set_user_y_up(value != 0);
+            Ok(())
         }
-        Ok(())
+        _ => Err(crate::context::GlError::InvalidEnum),
     })
 }
 
@@ -495,33 +489,15 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
     bytesPerValue: *mut GLint,
     buffer: *mut *mut c_void,
 ) -> GLboolean {
-    let mut out = (0, 0, 0, std::ptr::null_mut::<c_void>());
-    let ok = is_live(c) && {
+    let view = if is_live(c) {
         // SAFETY: live handle. Reading the context from another thread while it draws would
         // race; Mesa has the same contract (call it from the rendering thread).
-        let gl = unsafe { &mut *(*c).ctx.get() };
-        gl.settle_draws();
-        match gl.window_fb() {
-            Some(fb) if fb.depth_format != DepthFormat::None => {
-                let (w, h) = (fb.width as GLint, fb.height as GLint);
-                let bpv = if fb.depth_format == DepthFormat::Z16 {
-                    2
-                } else {
-                    4
-                };
-                if gl.depth_copy.is_none() {
-                    gl.depth_copy = Some(gl.depth_snapshot());
-                }
-                let p = gl
-                    .depth_copy
-                    .as_mut()
-                    .map_or(std::ptr::null_mut(), |v| v.as_mut_ptr() as *mut c_void);
-                out = (w, h, bpv, p);
-                true
-            }
-            _ => false,
-        }
+        unsafe { &mut *(*c).ctx.get() }.depth_buffer_view()
+    } else {
+        None
     };
+    let ok = view.is_some();
+    let out = view.unwrap_or((0, 0, 0, std::ptr::null_mut()));
     // SAFETY: each out pointer is checked for NULL; the caller promises writability.
     unsafe {
         if !width.is_null() {

@@ -257,7 +257,7 @@ pub unsafe extern "C" fn glRasterPos4dv(v: *const GLdouble) {
 #[no_mangle]
 pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
     with_ctx_list(move |c| {
-        c.pixel_modes.zoom = [xfactor, yfactor];
+        c.pixel_zoom(xfactor, yfactor);
         Ok(())
     })
 }

@@ -1,15 +1,13 @@
 //! Pixel rectangles of `GL/gl.h`: glDrawPixels, glCopyPixels, glBitmap, glPixelTransfer,
 //! glPixelMap and glGetPixelMap. Images are decoded with the unpack state when the call
-//! is made (so display lists keep an owned copy); errors are raised when the command
-//! executes, in Mesa's order (size, format/type, missing buffer).
+//! is made (so display lists keep an owned copy); the commands are validated, when they
+//! execute, by [`crate::context::pixel_api`].
 #![allow(non_snake_case)]
 
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
-use crate::context::error::GlError;
 use crate::context::pixel_transfer::{is_index_map, map_index};
-use crate::pixels::draw::{bitmap, copy_pixels, draw_pixels, CopyKind};
 use crate::pixels::image::{Layout, Pixels};
 
 /// Reads the current unpack state from the context (default state without one).
@@ -38,74 +36,13 @@ pub unsafe extern "C" fn glDrawPixels(
         },
         _ => None,
     };
-    with_ctx_list(move |c| {
-        if width < 0 || height < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        let l = layout?;
-        c.check_draw_framebuffer()?;
-        let fb = c.fb.as_ref();
-        match l.format() {
-            GL_STENCIL_INDEX if fb.is_none_or(|f| f.stencil.is_empty()) => {
-                return Err(GlError::InvalidOperation)
-            }
-            GL_DEPTH_COMPONENT
-                if fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None) =>
-            {
-                return Err(GlError::InvalidOperation)
-            }
-            _ => {}
-        }
-        match &img {
-            // Into a multisample object: every sample plane gets the pixels (llvmpipe's
-            // pixel-aligned quad covers every sample of the pixels it covers).
-            Some(img) if c.feedback.mode == crate::context::feedback::RenderMode::Render => {
-                c.for_each_sample(|c, _| draw_pixels(c, img))
-            }
-            Some(img) => draw_pixels(c, img),
-            // Mesa cannot map a null image into its texture: GL_OUT_OF_MEMORY.
-            None if c.raster_pos.valid && width > 0 && height > 0 => {
-                return Err(GlError::OutOfMemory)
-            }
-            None => {}
-        }
-        Ok(())
-    })
+    with_ctx_list(move |c| c.draw_pixel_rect((width, height), layout, img.as_ref()))
 }
 
 /// glCopyPixels.
 #[no_mangle]
 pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
-    with_ctx_list(move |c| {
-        if width < 0 || height < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        let kind = match type_ {
-            GL_COLOR => CopyKind::Color,
-            GL_DEPTH => CopyKind::Depth,
-            GL_STENCIL => CopyKind::Stencil,
-            super::glext_enums::GL_DEPTH_STENCIL => CopyKind::DepthStencil,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        c.check_draw_framebuffer()?;
-        c.check_read_framebuffer()?;
-        let fb = c.fb.as_ref();
-        let missing = match kind {
-            CopyKind::Color => !c.reads_color(),
-            CopyKind::Depth => {
-                fb.is_none_or(|f| f.depth_format == crate::framebuffer::DepthFormat::None)
-            }
-            CopyKind::Stencil => fb.is_none_or(|f| f.stencil.is_empty()),
-            CopyKind::DepthStencil => fb.is_none_or(|f| {
-                f.stencil.is_empty() || f.depth_format == crate::framebuffer::DepthFormat::None
-            }),
-        };
-        if missing {
-            return Err(GlError::InvalidOperation);
-        }
-        copy_pixels(c, x, y, width as usize, height as usize, kind);
-        Ok(())
-    })
+    with_ctx_list(move |c| c.copy_pixel_rect((x, y), (width, height), type_))
 }
 
 /// glBitmap.
@@ -136,18 +73,8 @@ pub unsafe extern "C" fn glBitmap(
     } else {
         Vec::new()
     };
-    with_ctx_list(move |c| {
-        if width < 0 || height < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        let (w, h) = if bits.is_empty() {
-            (0, 0)
-        } else {
-            (width as usize, height as usize)
-        };
-        bitmap(c, w, h, [xorig, yorig], [xmove, ymove], &bits);
-        Ok(())
-    })
+    let (orig, mv) = ([xorig, yorig], [xmove, ymove]);
+    with_ctx_list(move |c| c.draw_bitmap((width, height), orig, mv, &bits))
 }
 
 /// glPixelTransferf.
@@ -190,12 +117,8 @@ fn from_ints(map: GLenum, v: &[f64], max: f64) -> Vec<f32> {
         .collect()
 }
 
-fn bad_size(map: GLenum, n: GLsizei) {
-    with_ctx_list(move |_| {
-        map_index(map)?;
-        let _ = n;
-        Err(GlError::InvalidValue)
-    })
+fn bad_size(map: GLenum) {
+    with_ctx_list(move |c| c.pixel_map_size_error(map))
 }
 
 /// glPixelMapfv.
@@ -207,7 +130,7 @@ pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *co
     // SAFETY: the caller promises `mapsize` values.
     match unsafe { read_values(values, mapsize) } {
         Some(v) => pixel_map(map, v),
-        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None if !(1..=256).contains(&mapsize) => bad_size(map),
         None => {}
     }
 }
@@ -224,7 +147,7 @@ pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *c
             let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
             pixel_map(map, from_ints(map, &v, u32::MAX as f64))
         }
-        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None if !(1..=256).contains(&mapsize) => bad_size(map),
         None => {}
     }
 }
@@ -241,7 +164,7 @@ pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *c
             let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
             pixel_map(map, from_ints(map, &v, u16::MAX as f64))
         }
-        None if !(1..=256).contains(&mapsize) => bad_size(map, mapsize),
+        None if !(1..=256).contains(&mapsize) => bad_size(map),
         None => {}
     }
 }
@@ -249,9 +172,9 @@ pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *c
 /// Writes map `map`'s values through `put(i, value, is_index_map)`.
 fn get_map(map: GLenum, mut put: impl FnMut(usize, f32, bool)) {
     with_ctx(|c| {
-        let i = map_index(map)?;
-        for (k, &v) in c.pixel_maps.maps[i].iter().enumerate() {
-            put(k, v, is_index_map(i));
+        let (values, index) = c.pixel_map_values(map)?;
+        for (k, &v) in values.iter().enumerate() {
+            put(k, v, index);
         }
         Ok(())
     })

@@ -1,279 +1,16 @@
 //! GL_TEXTURE_3D images (GL 1.2, GL_EXT_texture3D): glTexImage3D, glTexSubImage3D,
-//! glCopyTexSubImage3D. A 3D image is unpacked slice by slice: slice z starts
-//! `(SKIP_IMAGES + z)·IMAGE_HEIGHT` rows after the first (IMAGE_HEIGHT 0 = the height),
-//! GL 1.5 §3.8.1. Borders are stripped as for 1D/2D images.
+//! glCopyTexSubImage3D. The images are specified by [`crate::context::texture_3d`]; this
+//! file copies client images for display lists and forwards the calls.
 #![allow(non_snake_case)]
 
-use super::textures::{
-    check_level, compiling, image_target, maybe_generate, object, object_mut, read_texels,
-    unpack_any,
-};
+use super::textures::compiling;
 use super::types::*;
-use super::{non_negative, with_ctx, with_ctx_list};
+use super::{with_ctx, with_ctx_list};
 use crate::context::state::PixelStore;
-use crate::context::{Context, GlError, GlResult};
-use crate::texture::upload::{self, ClientFormat, Layout};
-use crate::texture::{BaseFormat, Level, Storage, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
+use crate::context::texture_3d::slice_store;
+use crate::texture::upload::{ClientFormat, Layout};
+use crate::texture::MAX_3D_TEXTURE_SIZE;
 use libc::c_void;
-
-/// The unpack state of slice `z` of a 3D client image of `h` rows per image.
-fn slice_store(ps: &PixelStore, h: usize, z: usize) -> PixelStore {
-    let rows = if ps.image_height > 0 {
-        ps.image_height as usize
-    } else {
-        h
-    };
-    let mut s = *ps;
-    s.skip_rows += ((ps.skip_images.max(0) as usize + z) * rows) as i32;
-    s.skip_images = 0;
-    s
-}
-
-/// Unpacks a `w x h x d` client image into slice-major texels.
-///
-/// # Safety
-/// `data` (when not null) must hold the described image.
-#[allow(clippy::too_many_arguments)]
-unsafe fn unpack_3d(
-    c: &Context,
-    ps: &PixelStore,
-    cf: &ClientFormat,
-    (base, storage): (BaseFormat, Storage),
-    (w, h, d): (usize, usize, usize),
-    data: *const c_void,
-) -> Vec<[u8; 4]> {
-    let mut out = Vec::with_capacity(w * h * d);
-    for z in 0..d {
-        let s = slice_store(ps, h, z);
-        // SAFETY: forwarded caller contract (slice z lies inside the image).
-        out.extend(unsafe { unpack_any(c, &s, cf, (base, storage), (w, h), data) });
-    }
-    out
-}
-
-/// Packs every slice of a 3D level for glGetTexImage.
-///
-/// # Safety
-/// `dst` must be writable for the packed image.
-pub(crate) unsafe fn pack_3d(
-    ps: &PixelStore,
-    cf: &ClientFormat,
-    img: &Level,
-    d: usize,
-    dst: *mut c_void,
-) {
-    if dst.is_null() {
-        return;
-    }
-    let n = img.width * img.height;
-    for z in 0..d {
-        let slice = Level {
-            width: img.width,
-            height: img.height,
-            internal_format: img.internal_format,
-            base: img.base,
-            storage: img.storage,
-            texels: img.texels[z * n..(z + 1) * n].to_vec(),
-            blocks: None,
-        };
-        let s = slice_store(ps, img.height, z);
-        // SAFETY: forwarded caller contract.
-        unsafe { upload::pack(&s, cf, &slice, dst as *mut u8) };
-    }
-}
-
-/// Validated 3D sizes after border stripping.
-fn size_3d(
-    level: usize,
-    w: GLsizei,
-    h: GLsizei,
-    d: GLsizei,
-    border: GLint,
-) -> GlResult<(usize, usize, usize)> {
-    if border != 0 && border != 1 {
-        return Err(GlError::InvalidValue);
-    }
-    let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
-    let b = 2 * border as usize;
-    if w < b || h < b || d < b || level >= MAX_3D_LEVELS {
-        return Err(GlError::InvalidValue);
-    }
-    let max = (MAX_3D_TEXTURE_SIZE >> level).max(1);
-    let (w, h, d) = (w - b, h - b, d - b);
-    if w > max || h > max || d > max {
-        return Err(GlError::InvalidValue);
-    }
-    // llvmpipe refuses resources over 1 GiB (LP_MAX_TEXTURE_SIZE): GL_OUT_OF_MEMORY, and a
-    // proxy that does not fit
-    if w * h * d * 4 > 1 << 30 {
-        return Err(GlError::OutOfMemory);
-    }
-    Ok((w, h, d))
-}
-
-/// glTexImage3D's work.
-///
-/// # Safety
-/// `data` (when not null) must hold the described image under `unpack`.
-#[allow(clippy::too_many_arguments)]
-unsafe fn tex_image_3d(
-    c: &mut Context,
-    target: GLenum,
-    level: GLint,
-    (internal, w, h, d, border): (GLint, GLsizei, GLsizei, GLsizei, GLint),
-    (format, ty): (GLenum, GLenum),
-    data: *const c_void,
-    unpack: PixelStore,
-) -> GlResult<()> {
-    let (t, proxy, _) = image_target(target)?;
-    if t != Target::Tex3D {
-        return Err(GlError::InvalidEnum);
-    }
-    // As glTexImage2D (and Mesa): a bad level, border or negative size is an error for
-    // a proxy too, and comes before the format and type checks.
-    let level = check_level(level)?;
-    if level >= MAX_3D_LEVELS || !(0..=1).contains(&border) || w < 0 || h < 0 || d < 0 {
-        return Err(GlError::InvalidValue);
-    }
-    let cf = ClientFormat::new(format, ty)?;
-    let (internal, sformat, sty) = super::textures::resolve_internal(internal, t, (format, ty));
-    let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
-    // Mesa: no 3D depth textures; depth data for a colour image is an error too
-    if cf.is_depth() || base == BaseFormat::Depth {
-        return Err(GlError::InvalidOperation);
-    }
-    let storage = upload::choose_storage(internal, base, sformat, sty);
-    let size = size_3d(level, w, h, d, border);
-    let header = |w, h| Level {
-        width: w,
-        height: h,
-        internal_format: internal as u32,
-        base,
-        storage,
-        texels: Vec::new(),
-        blocks: None,
-    };
-    if proxy {
-        let obj = object_mut(c, t, true);
-        (obj.levels[level], obj.depths[level]) = match size {
-            Ok((w, h, d)) => (Some(header(w, h)), d),
-            Err(_) => (None, 0),
-        };
-        return Ok(());
-    }
-    let (tw, th, td) = size?;
-    let mut ps = unpack;
-    if border == 1 {
-        if ps.row_length == 0 {
-            ps.row_length = (tw + 2) as i32;
-        }
-        if ps.image_height == 0 {
-            ps.image_height = (th + 2) as i32;
-        }
-        ps.skip_pixels += 1;
-        ps.skip_rows += 1;
-        ps.skip_images += 1;
-    }
-    let mut img = header(tw, th);
-    // SAFETY: forwarded caller contract.
-    img.texels = unsafe { unpack_3d(c, &ps, &cf, (base, storage), (tw, th, td), data) };
-    let obj = object_mut(c, t, false);
-    obj.levels[level] = Some(img);
-    obj.depths[level] = td;
-    maybe_generate(obj, level);
-    Ok(())
-}
-
-/// glTexSubImage3D's work.
-///
-/// # Safety
-/// `data` must hold the described image under `unpack`.
-#[allow(clippy::too_many_arguments)]
-unsafe fn tex_sub_image_3d(
-    c: &mut Context,
-    target: GLenum,
-    level: GLint,
-    off: [GLint; 3],
-    (w, h, d): (GLsizei, GLsizei, GLsizei),
-    (format, ty): (GLenum, GLenum),
-    data: *const c_void,
-    unpack: PixelStore,
-) -> GlResult<()> {
-    if !matches!(image_target(target)?, (Target::Tex3D, false, _)) {
-        return Err(GlError::InvalidEnum);
-    }
-    let cf = ClientFormat::new(format, ty)?;
-    if cf.is_depth() {
-        return Err(GlError::InvalidOperation);
-    }
-    let level = check_level(level)?;
-    let (w, h, d) = (non_negative(w)?, non_negative(h)?, non_negative(d)?);
-    c.prepare_read()?;
-    let obj = object(c, Target::Tex3D, false);
-    let depth = obj.depths[level];
-    let img = obj.levels[level]
-        .as_ref()
-        .ok_or(GlError::InvalidOperation)?;
-    let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
-    if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], d, depth)) {
-        return Err(GlError::InvalidValue);
-    }
-    let format = (img.base, img.storage);
-    // SAFETY: forwarded caller contract.
-    let texels = unsafe { unpack_3d(c, &unpack, &cf, format, (w, h, d), data) };
-    let obj = object_mut(c, Target::Tex3D, false);
-    let img = obj.levels[level]
-        .as_mut()
-        .ok_or(GlError::InvalidOperation)?;
-    let [x0, y0, z0] = off.map(|o| o as usize);
-    for z in 0..d {
-        for y in 0..h {
-            let dst = ((z0 + z) * img.height + y0 + y) * img.width + x0;
-            let src = (z * h + y) * w;
-            img.texels[dst..dst + w].copy_from_slice(&texels[src..src + w]);
-        }
-    }
-    maybe_generate(obj, level);
-    Ok(())
-}
-
-/// glCopyTexSubImage3D's work: a framebuffer rectangle into slice `zoff`.
-#[allow(clippy::too_many_arguments)]
-fn copy_tex_sub_image_3d(
-    c: &mut Context,
-    target: GLenum,
-    level: GLint,
-    off: [GLint; 3],
-    (x, y): (GLint, GLint),
-    (w, h): (GLsizei, GLsizei),
-) -> GlResult<()> {
-    if !matches!(image_target(target)?, (Target::Tex3D, false, _)) {
-        return Err(GlError::InvalidEnum);
-    }
-    let level = check_level(level)?;
-    let (w, h) = (non_negative(w)?, non_negative(h)?);
-    let obj = object(c, Target::Tex3D, false);
-    let depth = obj.depths[level];
-    let img = obj.levels[level]
-        .as_ref()
-        .ok_or(GlError::InvalidOperation)?;
-    let fits = |o: GLint, n: usize, size: usize| o >= 0 && o as usize + n <= size;
-    if !(fits(off[0], w, img.width) && fits(off[1], h, img.height) && fits(off[2], 1, depth)) {
-        return Err(GlError::InvalidValue);
-    }
-    let src = read_texels(c, (x, y, w, h), img.base, &img.storage)?;
-    let obj = object_mut(c, Target::Tex3D, false);
-    let img = obj.levels[level]
-        .as_mut()
-        .ok_or(GlError::InvalidOperation)?;
-    let [x0, y0, z0] = off.map(|o| o as usize);
-    for row in 0..h {
-        let dst = ((z0 * img.height) + y0 + row) * img.width + x0;
-        img.texels[dst..dst + w].copy_from_slice(&src[row * w..(row + 1) * w]);
-    }
-    maybe_generate(obj, level);
-    Ok(())
-}
 
 /// Copies a 3D client image for a display list (read under the current unpack state).
 ///
@@ -335,13 +72,13 @@ pub unsafe extern "C" fn glTexImage3D(
         // SAFETY: the copy holds the described image.
         return with_ctx_list(move |c| unsafe {
             let p = copy_ptr(&bytes);
-            tex_image_3d(c, target, level, sizes, (format, type_), p, unpack)
+            c.tex_image_3d(target, level, sizes, (format, type_), p, unpack)
         });
     }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
         let u = c.state.unpack;
-        tex_image_3d(c, target, level, sizes, (format, type_), pixels, u)
+        c.tex_image_3d(target, level, sizes, (format, type_), pixels, u)
     })
 }
 
@@ -371,13 +108,13 @@ pub unsafe extern "C" fn glTexSubImage3D(
         // SAFETY: the copy holds the described image.
         return with_ctx_list(move |c| unsafe {
             let p = copy_ptr(&bytes);
-            tex_sub_image_3d(c, target, level, off, size, (format, type_), p, unpack)
+            c.tex_sub_image_3d(target, level, off, size, (format, type_), p, unpack)
         });
     }
     // SAFETY: forwarded caller contract.
     with_ctx(|c| unsafe {
         let u = c.state.unpack;
-        tex_sub_image_3d(c, target, level, off, size, (format, type_), pixels, u)
+        c.tex_sub_image_3d(target, level, off, size, (format, type_), pixels, u)
     })
 }
 
@@ -396,6 +133,6 @@ pub extern "C" fn glCopyTexSubImage3D(
 ) {
     with_ctx_list(move |c| {
         let off = [xoffset, yoffset, zoffset];
-        copy_tex_sub_image_3d(c, target, level, off, (x, y), (width, height))
+        c.copy_tex_sub_image_3d(target, level, off, (x, y), (width, height))
     })
 }

@@ -1,56 +1,12 @@
-//! glCompressedTexImage*, glCompressedTexSubImage* and glGetCompressedTexImage for the
-//! S3TC, RGTC and LATC formats (see [`crate::texture::compressed`]), with Mesa 22.3's
-//! checks in Mesa's order (`teximage.c`: `compressed_texture_error_check`,
-//! `compressed_subtexture_error_check`; `texgetimage.c`). Only 2D and cube-map images can
-//! be compressed: the 1D and 3D calls end in Mesa's target errors. The generic
-//! GL_COMPRESSED_* asked of glTexImage and glCopyTexImage store the texture uncompressed
-//! (see [`generic_base`]).
+//! glCompressedTexImage*, glCompressedTexSubImage* and glGetCompressedTexImage: the
+//! client's blocks are copied here and the calls forwarded to
+//! [`crate::context::texture_compressed`], which holds Mesa's checks.
 #![allow(non_snake_case)]
 
-use super::enums::*;
-use super::textures::{check_level, image_target, maybe_generate, object, object_mut};
 use super::types::*;
 use super::with_ctx_list;
-use crate::context::error::{GlError, GlResult};
-use crate::context::Context;
-use crate::texture::compressed::{self, Format, Info};
-use crate::texture::{BaseFormat, Level, Storage, Target, MAX_TEXTURE_SIZE};
-
-/// GL 1.3's generic compressed internal formats and the base internal format each names.
-///
-/// softgl stores them uncompressed, as their base format (the GL 1.3 spec allows it: "if
-/// no specific compressed format is available, internalformat is instead replaced by the
-/// corresponding base internal format"), so GL_TEXTURE_INTERNAL_FORMAT answers the base
-/// format and GL_TEXTURE_COMPRESSED 0. Mesa 22.3 (llvmpipe) does the same for a 1D
-/// texture and for ALPHA and INTENSITY; it compresses RGB, RGBA, LUMINANCE and
-/// LUMINANCE_ALPHA of the other targets (DXT1, DXT5, LATC1, LATC2): see README's
-/// known differences.
-pub(crate) fn generic_base(f: GLenum) -> Option<GLenum> {
-    Some(match f {
-        GL_COMPRESSED_ALPHA => GL_ALPHA,
-        GL_COMPRESSED_LUMINANCE => GL_LUMINANCE,
-        GL_COMPRESSED_LUMINANCE_ALPHA => GL_LUMINANCE_ALPHA,
-        GL_COMPRESSED_INTENSITY => GL_INTENSITY,
-        GL_COMPRESSED_RGB => GL_RGB,
-        GL_COMPRESSED_RGBA => GL_RGBA,
-        _ => return None,
-    })
-}
-
-/// The generic compressed formats (glTexImage's GL_COMPRESSED_RGB ...; GL 3.0's RED/RG and
-/// EXT_texture_sRGB's too), which glCompressedTexSubImage rejects with GL_INVALID_ENUM.
-fn is_generic_compressed(f: GLenum) -> bool {
-    generic_base(f).is_some()
-        || matches!(
-            f,
-            0x8225 // GL_COMPRESSED_RED
-            | 0x8226 // GL_COMPRESSED_RG
-            | 0x8C48 // GL_COMPRESSED_SRGB
-            | 0x8C49 // GL_COMPRESSED_SRGB_ALPHA
-            | 0x8C4A // GL_COMPRESSED_SLUMINANCE
-            | 0x8C4B // GL_COMPRESSED_SLUMINANCE_ALPHA
-        )
-}
+use crate::context::texture_compressed::{ImageArgs, SubArgs};
+use crate::texture::compressed;
 
 /// The client's blocks, copied when `size` is what the format needs for `w x h` (GL's
 /// contract then makes `data` readable for that many bytes); `None` otherwise, when the
@@ -71,205 +27,6 @@ unsafe fn copy_blocks(
     }
     // SAFETY: the caller's contract for a matching size.
     Some(unsafe { std::slice::from_raw_parts(data as *const u8, size as usize) }.to_vec())
-}
-
-/// The image targets glCompressedTexImage{dims}D takes (`legal_teximage_target`), and
-/// whether the target can hold a compressed image (2D and cube maps only).
-fn compressed_target(dims: u32, target: GLenum) -> GlResult<(Target, bool, usize)> {
-    let legal = match dims {
-        1 => matches!(target, GL_TEXTURE_1D | GL_PROXY_TEXTURE_1D),
-        2 => {
-            target != GL_TEXTURE_CUBE_MAP
-                && matches!(image_target(target), Ok((t, _, _)) if t == Target::Tex2D || t == Target::Cube)
-        }
-        _ => matches!(target, GL_TEXTURE_3D | GL_PROXY_TEXTURE_3D),
-    };
-    // legal, but `_mesa_target_can_be_compressed` refuses 1D and 3D for these formats
-    if !legal || dims != 2 {
-        return Err(GlError::InvalidEnum);
-    }
-    image_target(target)
-}
-
-/// Arguments of glCompressedTexImage2D after the target.
-struct ImageArgs {
-    level: GLint,
-    internal: GLenum,
-    w: GLsizei,
-    h: GLsizei,
-    border: GLint,
-    size: GLsizei,
-}
-
-/// glCompressedTexImage{1,2,3}D.
-fn compressed_image(
-    c: &mut Context,
-    dims: u32,
-    target: GLenum,
-    a: &ImageArgs,
-    data: Option<&[u8]>,
-) -> GlResult<()> {
-    let (t, proxy, face) = compressed_target(dims, target)?;
-    let info = compressed::info(a.internal).ok_or(GlError::InvalidEnum)?;
-    let level = check_level(a.level)?;
-    if a.border != 0 {
-        return Err(GlError::InvalidOperation);
-    }
-    if info.image_size(a.w, a.h) != a.size as u32 {
-        return Err(GlError::InvalidValue);
-    }
-    let max = (MAX_TEXTURE_SIZE >> level).max(1) as i64;
-    let (w, h) = (a.w as i64, a.h as i64);
-    let dims_ok = (0..=max).contains(&w) && (0..=max).contains(&h) && (t != Target::Cube || w == h);
-    let (w, h) = (a.w.max(0) as usize, a.h.max(0) as usize);
-    let header = |texels, blocks| Level {
-        width: w,
-        height: h,
-        internal_format: a.internal,
-        base: info.base(),
-        storage: storage(&info),
-        texels,
-        blocks,
-    };
-    if proxy {
-        object_mut(c, t, true).face_levels_mut(face)[level] =
-            dims_ok.then(|| header(Vec::new(), None));
-        return Ok(());
-    }
-    if !dims_ok {
-        return Err(GlError::InvalidValue);
-    }
-    let blocks = data.map_or_else(|| vec![0; a.size as usize], |d| d.to_vec());
-    let texels = compressed::decode(&info, w, h, &blocks);
-    let obj = object_mut(c, t, false);
-    obj.stencil.remove(&(face, level));
-    obj.face_levels_mut(face)[level] = Some(header(texels, Some(blocks)));
-    maybe_generate(obj, level);
-    Ok(())
-}
-
-/// The component sizes glGetTexLevelParameter reports for a compressed image (measured on
-/// Mesa 22.3): 4 bits for each S3TC channel the base format has, 8 for RGTC and LATC.
-fn storage(info: &Info) -> Storage {
-    let sizes = match info.base() {
-        BaseFormat::Rgb if info.format == Format::One => [8, 0, 0, 0, 0, 0],
-        BaseFormat::Rgb if info.format == Format::Two => [8, 8, 0, 0, 0, 0],
-        BaseFormat::Rgb => [4, 4, 4, 0, 0, 0],
-        BaseFormat::Luminance => [0, 0, 0, 0, 8, 0],
-        BaseFormat::LuminanceAlpha => [0, 0, 0, 8, 8, 0],
-        _ => [4, 4, 4, 4, 0, 0],
-    };
-    Storage { sizes }
-}
-
-/// Arguments of glCompressedTexSubImage2D after the target.
-struct SubArgs {
-    level: GLint,
-    x: GLint,
-    y: GLint,
-    w: GLsizei,
-    h: GLsizei,
-    format: GLenum,
-    size: GLsizei,
-}
-
-/// Mesa's `compressed_subtexture_target_check`: 2D images and cube faces; a 3D texture
-/// holds none of these formats.
-fn sub_target(dims: u32, target: GLenum) -> GlResult<(Target, usize)> {
-    match dims {
-        2 if target == GL_TEXTURE_2D => Ok((Target::Tex2D, 0)),
-        2 if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..GL_TEXTURE_CUBE_MAP_POSITIVE_X + 6)
-            .contains(&target) =>
-        {
-            Ok((
-                Target::Cube,
-                (target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize,
-            ))
-        }
-        3 if target == GL_TEXTURE_3D => Err(GlError::InvalidOperation),
-        _ => Err(GlError::InvalidEnum),
-    }
-}
-
-/// glCompressedTexSubImage{1,2,3}D.
-fn compressed_sub_image(
-    c: &mut Context,
-    dims: u32,
-    target: GLenum,
-    a: &SubArgs,
-    data: Option<&[u8]>,
-) -> GlResult<()> {
-    let (t, face) = sub_target(dims, target)?;
-    let Some(info) = compressed::info(a.format) else {
-        return Err(if is_generic_compressed(a.format) {
-            GlError::InvalidEnum
-        } else {
-            GlError::InvalidOperation
-        });
-    };
-    let level = check_level(a.level)?;
-    if info.image_size(a.w, a.h) != a.size as u32 {
-        return Err(GlError::InvalidValue);
-    }
-    let img = object(c, t, false).face_levels(face)[level]
-        .as_ref()
-        .ok_or(GlError::InvalidOperation)?;
-    if img.internal_format != a.format {
-        return Err(GlError::InvalidOperation);
-    }
-    let (iw, ih) = (img.width as i32, img.height as i32);
-    check_sub_rect((iw, ih), (a.x, a.y, a.w, a.h))?;
-    let Some(data) = data else { return Ok(()) };
-    let rect = (a.x as usize, a.y as usize, a.w as usize, a.h as usize);
-    let obj = object_mut(c, t, false);
-    let img = obj.face_levels_mut(face)[level].as_mut().expect("checked");
-    let (w, h) = (img.width, img.height);
-    compressed::write_rect(&info, (w, h), rect, data, &mut img.texels);
-    if let Some(b) = img.blocks.as_mut() {
-        compressed::replace_blocks(&info, w, rect, data, b);
-    }
-    maybe_generate(obj, level);
-    Ok(())
-}
-
-/// Mesa's sub-image rectangle checks for a block-compressed `iw x ih` image
-/// (`error_check_subtexture_negative_dimensions`, `error_check_subtexture_dimensions`):
-/// negative sizes and rectangles outside the image are GL_INVALID_VALUE; offsets that are
-/// not multiples of 4, and sizes that are not unless they reach the image's edge,
-/// GL_INVALID_OPERATION. Used by glTexSubImage on a compressed image too.
-pub(crate) fn check_sub_rect(
-    (iw, ih): (i32, i32),
-    (x, y, w, h): (i32, i32, i32, i32),
-) -> GlResult<()> {
-    if w < 0 || h < 0 || x < 0 || x.wrapping_add(w) > iw || y < 0 || y.wrapping_add(h) > ih {
-        return Err(GlError::InvalidValue);
-    }
-    if x % 4 != 0 || y % 4 != 0 || (w % 4 != 0 && x + w != iw) || (h % 4 != 0 && y + h != ih) {
-        return Err(GlError::InvalidOperation);
-    }
-    Ok(())
-}
-
-/// glGetCompressedTexImage: the target and level are checked, then the image must exist
-/// (Mesa: a missing 1D/2D level has depth 0, GL_INVALID_VALUE) and be compressed.
-fn get_compressed(c: &Context, target: GLenum, level: GLint, img: *mut GLvoid) -> GlResult<()> {
-    let (t, face) = match image_target(target)? {
-        (t, false, face) => (t, face),
-        _ => return Err(GlError::InvalidEnum),
-    };
-    let level = check_level(level)?;
-    let Some(image) = object(c, t, false).face_levels(face)[level].as_ref() else {
-        return Err(match t {
-            Target::Tex1D | Target::Tex2D => GlError::InvalidValue,
-            _ => GlError::InvalidOperation,
-        });
-    };
-    let blocks = image.blocks.as_ref().ok_or(GlError::InvalidOperation)?;
-    if !img.is_null() {
-        // SAFETY: GL's contract: `img` holds GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes.
-        unsafe { std::ptr::copy_nonoverlapping(blocks.as_ptr(), img as *mut u8, blocks.len()) };
-    }
-    Ok(())
 }
 
 /// glCompressedTexImage1D.
@@ -294,7 +51,7 @@ pub unsafe extern "C" fn glCompressedTexImage1D(
         border,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_image(c, 1, target, &a, None))
+    with_ctx_list(move |c| c.compressed_tex_image(1, target, &a, None))
 }
 
 /// glCompressedTexImage2D.
@@ -322,7 +79,7 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
         border,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_image(c, 2, target, &a, blocks.as_deref()))
+    with_ctx_list(move |c| c.compressed_tex_image(2, target, &a, blocks.as_deref()))
 }
 
 /// glCompressedTexImage3D.
@@ -349,7 +106,7 @@ pub unsafe extern "C" fn glCompressedTexImage3D(
         border,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_image(c, 3, target, &a, None))
+    with_ctx_list(move |c| c.compressed_tex_image(3, target, &a, None))
 }
 
 /// glCompressedTexSubImage1D.
@@ -375,7 +132,7 @@ pub unsafe extern "C" fn glCompressedTexSubImage1D(
         format,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_sub_image(c, 1, target, &a, None))
+    with_ctx_list(move |c| c.compressed_tex_sub_image(1, target, &a, None))
 }
 
 /// glCompressedTexSubImage2D.
@@ -405,7 +162,7 @@ pub unsafe extern "C" fn glCompressedTexSubImage2D(
         format,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_sub_image(c, 2, target, &a, blocks.as_deref()))
+    with_ctx_list(move |c| c.compressed_tex_sub_image(2, target, &a, blocks.as_deref()))
 }
 
 /// glCompressedTexSubImage3D.
@@ -435,7 +192,7 @@ pub unsafe extern "C" fn glCompressedTexSubImage3D(
         format,
         size: image_size,
     };
-    with_ctx_list(move |c| compressed_sub_image(c, 3, target, &a, None))
+    with_ctx_list(move |c| c.compressed_tex_sub_image(3, target, &a, None))
 }
 
 /// glGetCompressedTexImage.
@@ -444,5 +201,12 @@ pub unsafe extern "C" fn glCompressedTexSubImage3D(
 /// `img` must be writable for GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes of the image.
 #[no_mangle]
 pub unsafe extern "C" fn glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut GLvoid) {
-    super::with_ctx(|c| get_compressed(c, target, level, img))
+    super::with_ctx(|c| {
+        let blocks = c.compressed_blocks(target, level)?;
+        if !img.is_null() {
+            // SAFETY: GL's contract: `img` holds GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes.
+            unsafe { std::ptr::copy_nonoverlapping(blocks.as_ptr(), img as *mut u8, blocks.len()) };
+        }
+        Ok(())
+    })
 }

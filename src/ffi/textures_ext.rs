@@ -4,32 +4,15 @@
 //! pointer of that name when it includes gl.h without GL_GLEXT_PROTOTYPES).
 #![allow(non_snake_case)]
 
-use super::textures::{bind_target, object_mut, regenerate};
 use super::textures_3d::glTexImage3D;
 use super::types::*;
 use super::with_ctx;
-use crate::context::error::GlError;
 
 /// glGenerateMipmap: rebuilds levels base+1..=max from the base level with the same
 /// filter GL_GENERATE_MIPMAP uses (Mesa's `st_generate_mipmap` serves both).
 #[no_mangle]
 pub extern "C" fn glGenerateMipmap(target: GLenum) {
-    with_ctx(|c| {
-        let t = bind_target(target)?;
-        let obj = object_mut(c, t, false);
-        let p = obj.params;
-        let base = usize::try_from(p.base_level).map_err(|_| GlError::InvalidOperation)?;
-        if obj.levels.get(base).is_none_or(|l| l.is_none()) {
-            return Err(GlError::InvalidOperation);
-        }
-        // Mesa: no mipmaps of a packed depth-stencil image
-        let internal = obj.levels[base].as_ref().map_or(0, |l| l.internal_format);
-        if crate::texture::shadow::is_depth_stencil(internal) {
-            return Err(GlError::InvalidOperation);
-        }
-        regenerate(obj, base);
-        Ok(())
-    })
+    with_ctx(|c| c.generate_mipmap(target))
 }
 
 /// glGenerateMipmapEXT (GL_EXT_framebuffer_object alias).

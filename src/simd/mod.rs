@@ -25,6 +25,7 @@
 //! the CPU themselves, and have plain fallbacks off x86-64.
 
 pub mod cpu;
+pub mod scan;
 
 #[cfg(target_arch = "x86_64")]
 mod f32x4;

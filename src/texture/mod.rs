@@ -9,7 +9,7 @@
 //! looks at the format; the base format is kept for the texture environment. Two kinds of
 //! image are told apart by their internal format instead: sRGB images (decoded when
 //! sampled, see [`srgb`]) and packed depth-stencil ones (depth texels, stencil in
-//! [`TextureObject::stencil`], see `ffi/textures_ds.rs`).
+//! [`TextureObject::stencil`], see `context/texture_ds.rs`).
 //!
 //! # Interface for the rasterizer
 //! - [`TextureState::unit_plan`]`(unit) -> Option<UnitPlan>`: `None` when the unit is

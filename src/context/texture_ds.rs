@@ -15,10 +15,11 @@
 //!   same way; their data may also be GL_FLOAT_32_UNSIGNED_INT_24_8_REV (docs/fbo-rules.md
 //!   §7.4).
 
-use super::types::*;
+use super::texture_copy::each_fb_pixel;
 use crate::context::pixel_transfer::stencil_transfer;
 use crate::context::state::PixelStore;
 use crate::context::Context;
+use crate::gl::types::*;
 use crate::texture::upload::ClientFormat;
 use crate::texture::{shadow, TextureObject};
 use libc::c_void;
@@ -83,20 +84,9 @@ pub(crate) fn read_fb_stencil(c: &Context, x: i32, y: i32, w: usize, h: usize) -
     if fb.stencil.is_empty() {
         return out;
     }
-    for row in 0..h {
-        let gy = y as i64 + row as i64;
-        if gy < 0 || gy >= fb.height as i64 {
-            continue;
-        }
-        let fy = fb.row(gy as usize);
-        for col in 0..w {
-            let gx = x as i64 + col as i64;
-            if gx < 0 || gx >= fb.width as i64 {
-                continue;
-            }
-            out[row * w + col] = fb.stencil[fy * fb.width + gx as usize];
-        }
-    }
+    each_fb_pixel(fb, (x, y, w, h), |i, j| {
+        out[i] = fb.stencil[j];
+    });
     out
 }
 
@@ -104,7 +94,7 @@ pub(crate) fn read_fb_stencil(c: &Context, x: i32, y: i32, w: usize, h: usize) -
 /// when Mesa copies the buffer as is: a read framebuffer of the same format (24-bit depth
 /// with stencil) and no GL_DEPTH_SCALE/BIAS (`st_CopyTexSubImage` then copies the region,
 /// so the stored values are the buffer's; measured: the blit's float round trip would
-/// raise some by one). `None`: the general path (`read_texels`) applies.
+/// raise some by one). `None`: the general path ([`read_texels`](super::texture_copy::read_texels)) applies.
 pub(crate) fn read_fb_depth_exact(
     c: &Context,
     internal: GLenum,
@@ -113,8 +103,8 @@ pub(crate) fn read_fb_depth_exact(
     let fb = c.read_fb()?;
     // The same format: a 24-bit depth-stencil image (GL_DEPTH32F_STENCIL8 stores floats,
     // which the general path converts to).
-    let z24s8 =
-        shadow::is_depth_stencil(internal) && internal != super::glext_enums::GL_DEPTH32F_STENCIL8;
+    let z24s8 = shadow::is_depth_stencil(internal)
+        && internal != crate::gl::glext_enums::GL_DEPTH32F_STENCIL8;
     if !z24s8
         || fb.depth_format.bits() != 24
         || fb.stencil.is_empty()
@@ -123,19 +113,8 @@ pub(crate) fn read_fb_depth_exact(
         return None;
     }
     let mut out = vec![shadow::texel(0); w * h];
-    for row in 0..h {
-        let gy = y as i64 + row as i64;
-        if gy < 0 || gy >= fb.height as i64 {
-            continue;
-        }
-        let fy = fb.row(gy as usize);
-        for col in 0..w {
-            let gx = x as i64 + col as i64;
-            if gx < 0 || gx >= fb.width as i64 {
-                continue;
-            }
-            out[row * w + col] = shadow::texel(fb.depth_at(fy * fb.width + gx as usize));
-        }
-    }
+    each_fb_pixel(fb, (x, y, w, h), |i, j| {
+        out[i] = shadow::texel(fb.depth_at(j));
+    });
     Some(out)
 }

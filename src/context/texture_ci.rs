@@ -4,11 +4,11 @@
 //! As Mesa's `texstore_rgba` does, the result is clamped to RGBA8 first and then stored
 //! like GL_RGBA/GL_UNSIGNED_BYTE data, with no further pixel transfer.
 
-use super::enums::{GL_COLOR_INDEX, GL_RGBA, GL_UNSIGNED_BYTE};
 use crate::context::error::GlResult;
 use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::framebuffer::float_to_ubyte;
+use crate::gl::enums::{GL_COLOR_INDEX, GL_RGBA, GL_UNSIGNED_BYTE};
 use crate::pixels::image::{Layout, Pixels};
 use crate::texture::upload::{self, ClientFormat};
 use crate::texture::{BaseFormat, Storage};

@@ -1,0 +1,197 @@
+//! The framebuffer-object queries: glGetRenderbufferParameteriv and
+//! glGetFramebufferAttachmentParameteriv, on the window's buffers and on objects.
+
+use super::fbo::{Attachment, ImageKind};
+use super::fbo_api::{bound_name, point, Point};
+use super::{Context, GlError, GlResult};
+use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
+use crate::gl::types::*;
+use crate::texture::Target;
+
+/// An attachment query on the window (GL_FRAMEBUFFER_DEFAULT attachments).
+fn window_attachment_param(c: &Context, attachment: GLenum, pname: GLenum) -> GlResult<GLint> {
+    let fb = c.window_fb();
+    let (kind, present) = match attachment {
+        GL_FRONT_LEFT | GL_BACK_LEFT | GL_FRONT | GL_BACK | GL_LEFT => (0, true),
+        GL_DEPTH => (1, fb.is_some_and(|f| !f.depth.is_empty())),
+        GL_STENCIL => (2, fb.is_some_and(|f| !f.stencil.is_empty())),
+        _ => return Err(GlError::InvalidEnum),
+    };
+    if pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE {
+        return Ok(if present {
+            GL_FRAMEBUFFER_DEFAULT
+        } else {
+            GL_NONE
+        } as GLint);
+    }
+    if !present {
+        return Err(GlError::InvalidOperation);
+    }
+    let bits = c.color_bits();
+    let depth = fb.map_or(0, |f| f.depth_format.bits());
+    let stencil = fb.map_or(0, |f| f.stencil_bits());
+    size_param(
+        pname,
+        match kind {
+            0 => [bits[0], bits[1], bits[2], bits[3], 0, 0],
+            1 => [0, 0, 0, 0, depth, 0],
+            _ => [0, 0, 0, 0, 0, stencil],
+        },
+        false,
+    )
+}
+
+/// The size, component-type and encoding queries common to every attachment (`float`: a
+/// float depth image, whose component type is GL_FLOAT).
+fn size_param(pname: GLenum, sizes: [i32; 6], float: bool) -> GlResult<GLint> {
+    Ok(match pname {
+        GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => sizes[0],
+        GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => sizes[1],
+        GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => sizes[2],
+        GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => sizes[3],
+        GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => sizes[4],
+        GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => sizes[5],
+        GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
+            if sizes[..5].iter().all(|&s| s == 0) {
+                GL_INDEX as GLint
+            } else if float {
+                GL_FLOAT as GLint
+            } else {
+                GL_UNSIGNED_NORMALIZED as GLint
+            }
+        }
+        GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => GL_LINEAR as GLint,
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// An attachment query on object `name`.
+fn object_attachment_param(
+    c: &Context,
+    name: u32,
+    attachment: GLenum,
+    pname: GLenum,
+) -> GlResult<GLint> {
+    let f = c.fbo.object(name).ok_or(GlError::InvalidOperation)?;
+    let a = match point(attachment).map_err(|_| GlError::InvalidEnum)? {
+        Point::Color(i) => f.color[i],
+        Point::Depth => f.depth,
+        Point::Stencil => f.stencil,
+        Point::DepthStencil if f.depth != f.stencil => return Err(GlError::InvalidOperation),
+        Point::DepthStencil => f.depth,
+    };
+    match (pname, a) {
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::None) => return Ok(GL_NONE as GLint),
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::None) => return Ok(0),
+        (_, Attachment::None) => return Err(GlError::InvalidOperation),
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Renderbuffer(_)) => {
+            return Ok(GL_RENDERBUFFER as GLint)
+        }
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Texture { .. }) => {
+            return Ok(GL_TEXTURE as GLint)
+        }
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Renderbuffer(n)) => {
+            return Ok(n as GLint)
+        }
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Texture { name, .. }) => {
+            return Ok(name as GLint)
+        }
+        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Attachment::Texture { level, .. }) => {
+            return Ok(level as GLint)
+        }
+        (
+            GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
+            Attachment::Texture { name, face, .. },
+        ) => {
+            let cube = c.textures.objects.get(&name).and_then(|o| o.target) == Some(Target::Cube);
+            return Ok(if cube {
+                (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face as u32) as GLint
+            } else {
+                0
+            });
+        }
+        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Attachment::Texture { layer, .. }) => {
+            return Ok(layer as GLint)
+        }
+        (
+            GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL
+            | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
+            | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
+            Attachment::Renderbuffer(_),
+        ) => return Err(GlError::InvalidEnum),
+        _ => {}
+    }
+    let stencil_point = attachment == GL_STENCIL_ATTACHMENT;
+    let kind = c.fbo.image_info(a, &c.textures).map(|i| i.kind);
+    let float = matches!(
+        kind,
+        Some(ImageKind::Depth(crate::framebuffer::DepthFormat::Z32F, _))
+    );
+    let sizes = match kind {
+        Some(ImageKind::Color(b)) => {
+            let alpha = !matches!(
+                b,
+                crate::texture::BaseFormat::Rgb | crate::texture::BaseFormat::Luminance
+            );
+            [8, 8, 8, if alpha { 8 } else { 0 }, 0, 0]
+        }
+        Some(ImageKind::Depth(d, s)) => {
+            let st = if s { 8 } else { 0 };
+            if stencil_point {
+                [0, 0, 0, 0, 0, st]
+            } else {
+                [0, 0, 0, 0, d.bits(), st]
+            }
+        }
+        Some(ImageKind::Stencil) => [0, 0, 0, 0, 0, 8],
+        _ => [0; 6],
+    };
+    size_param(pname, sizes, float)
+}
+
+impl Context {
+    /// glGetRenderbufferParameteriv of the bound renderbuffer.
+    pub(crate) fn get_renderbuffer_parameter(
+        &mut self,
+        target: GLenum,
+        pname: GLenum,
+    ) -> GlResult<GLint> {
+        if target != GL_RENDERBUFFER {
+            return Err(GlError::InvalidEnum);
+        }
+        let rb = self
+            .fbo
+            .bound_renderbuffer_mut()
+            .ok_or(GlError::InvalidOperation)?;
+        let sizes = rb.format.map_or([0; 6], |f| f.sizes());
+        Ok(match pname {
+            GL_RENDERBUFFER_WIDTH => rb.width as GLint,
+            GL_RENDERBUFFER_HEIGHT => rb.height as GLint,
+            GL_RENDERBUFFER_INTERNAL_FORMAT => rb.internal as GLint,
+            GL_RENDERBUFFER_RED_SIZE => sizes[0],
+            GL_RENDERBUFFER_GREEN_SIZE => sizes[1],
+            GL_RENDERBUFFER_BLUE_SIZE => sizes[2],
+            GL_RENDERBUFFER_ALPHA_SIZE => sizes[3],
+            GL_RENDERBUFFER_DEPTH_SIZE => sizes[4],
+            GL_RENDERBUFFER_STENCIL_SIZE => sizes[5],
+            GL_RENDERBUFFER_SAMPLES => rb.samples as GLint,
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+
+    /// glGetFramebufferAttachmentParameteriv of the window or the bound object.
+    pub(crate) fn get_framebuffer_attachment_parameter(
+        &self,
+        target: GLenum,
+        attachment: GLenum,
+        pname: GLenum,
+    ) -> GlResult<GLint> {
+        let name = bound_name(self, target)?;
+        if name == 0 {
+            window_attachment_param(self, attachment, pname)
+        } else {
+            object_attachment_param(self, name, attachment, pname)
+        }
+    }
+}
