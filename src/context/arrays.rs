@@ -4,8 +4,8 @@
 
 use super::error::{GlError, GlResult};
 use super::state::MAX_TEXTURE_UNITS;
-use crate::ffi::enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::{ArrayPointer, DataType};
 use std::collections::HashMap;
 
@@ -63,7 +63,7 @@ pub enum BufferTarget {
 impl BufferTarget {
     /// Converts a target token (GL 1.5 and the ARB names share values).
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
-        use crate::ffi::glext_enums::*;
+        use crate::gl::glext_enums::*;
         match e {
             GL_ARRAY_BUFFER => Ok(Self::Array),
             GL_ELEMENT_ARRAY_BUFFER => Ok(Self::ElementArray),
@@ -211,8 +211,8 @@ impl ArrayState {
             let e = self.buffers.entry(name).or_insert(None);
             if e.is_none() {
                 *e = Some(BufferObject {
-                    usage: crate::ffi::glext_enums::GL_STATIC_DRAW,
-                    access: crate::ffi::glext_enums::GL_READ_WRITE,
+                    usage: crate::gl::glext_enums::GL_STATIC_DRAW,
+                    access: crate::gl::glext_enums::GL_READ_WRITE,
                     ..Default::default()
                 });
             }

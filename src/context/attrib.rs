@@ -13,7 +13,7 @@ use super::error::{GlError, GlResult};
 use super::lighting_state::LightingState;
 use super::state::{Cap, PixelStore, State, CAPS, MAX_TEXTURE_UNITS};
 use super::Context;
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 use crate::texture::{SamplerParams, TexUnit};
 
 /// GL_MAX_ATTRIB_STACK_DEPTH (Mesa's value).

@@ -61,8 +61,8 @@ impl RbFormat {
     /// The layout for a glRenderbufferStorage internal format; `None` when the format is
     /// not colour-, depth- or stencil-renderable (GL_INVALID_ENUM).
     pub fn from_internal(internal: u32) -> Option<RbFormat> {
-        use crate::ffi::enums::*;
-        use crate::ffi::glext_enums::*;
+        use crate::gl::enums::*;
+        use crate::gl::glext_enums::*;
         Some(match internal {
             GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2 | GL_RGBA12
             | GL_RGBA16 => RbFormat::Rgba8,
@@ -282,7 +282,7 @@ pub enum Status {
 impl Status {
     /// The GL enum.
     pub fn to_gl(self) -> u32 {
-        use crate::ffi::glext_enums::*;
+        use crate::gl::glext_enums::*;
         match self {
             Status::Complete => GL_FRAMEBUFFER_COMPLETE,
             Status::IncompleteAttachment => GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT,

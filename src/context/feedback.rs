@@ -4,7 +4,7 @@
 
 use super::error::{GlError, GlResult};
 use super::get::Value;
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 use crate::geometry::feedback::PrimSink;
 use crate::geometry::ClipVertex;
 

@@ -2,9 +2,9 @@
 //! the GL token conversions done once at the boundary.
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::glext_enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::{
     BlendEquation, BlendFactor, BlendState, FragmentOps, LogicOp, StencilFace, StencilOp,
 };

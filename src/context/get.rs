@@ -5,8 +5,8 @@
 use super::error::{GlError, GlResult};
 use super::state::{Cap, MatrixMode, ShadeModel};
 use super::{Context, MAX_VIEWPORT};
-use crate::ffi::enums::*;
-use crate::ffi::glext_enums::*;
+use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
 use crate::fixed_function::matrix::Mat4;
 use crate::texture::compressed::LISTED;
 

@@ -6,7 +6,7 @@
 //! its own, [`super::fbo`]).
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 
 /// A colour buffer named by glDrawBuffer / glReadBuffer, among those an OSMesa
 /// framebuffer accepts (it has one, front-left, colour buffer; Mesa also accepts the

@@ -6,9 +6,9 @@
 //! call (the caller passes it in), exactly as Mesa's `_mesa_Lightfv` does.
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::glext_enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::{
     transform_direction, transform_point, ColorMaterial, Face, FogMode, FogState, Light,
     LightModel, LightingState, Material, MaterialParam, Tracked, MAX_EXPONENT, MAX_LIGHTS,

@@ -572,7 +572,7 @@ impl Context {
     /// glClear.
     pub fn clear(&mut self, mask: u32) -> GlResult<()> {
         crate::pixels::cache::flush(self);
-        use crate::ffi::enums::*;
+        use crate::gl::enums::*;
         let all =
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !all != 0 {
@@ -590,7 +590,7 @@ impl Context {
     /// glClear's writes into the draw framebuffer in `fb` (one sample plane of a
     /// multisample object).
     fn clear_plane(&mut self, mask: u32) {
-        use crate::ffi::enums::*;
+        use crate::gl::enums::*;
         let Some(region) = self.draw_region() else {
             return;
         };

@@ -7,7 +7,7 @@
 use super::error::GlResult;
 use super::get::Value;
 use super::state::MAX_TEXTURE_UNITS;
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 
 /// GL_CURRENT_RASTER_SECONDARY_COLOR (GL 3.0 compatibility token, not in gl.h).
 pub const GL_CURRENT_RASTER_SECONDARY_COLOR: u32 = 0x845F;

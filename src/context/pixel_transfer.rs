@@ -11,7 +11,7 @@
 
 use super::error::{GlError, GlResult};
 use super::get::{Kind, Value};
-use crate::ffi::enums::*;
+use crate::gl::enums::*;
 
 /// Mesa's MAX_PIXEL_MAP_TABLE.
 pub const MAX_PIXEL_MAP_TABLE: usize = 256;

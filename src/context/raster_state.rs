@@ -5,8 +5,8 @@
 //! enables of those groups live in the shared `Caps`.
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::{
     FillMode, LineState, PointState, PolygonState, PolygonStipple, RasterState, MAX_LINE_WIDTH,
     MAX_POINT_SIZE, SIZE_GRANULARITY,
@@ -28,7 +28,7 @@ pub enum PointParam {
 impl PointParam {
     /// Converts a pname (the ARB/EXT tokens share the values).
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
-        use crate::ffi::glext_enums::*;
+        use crate::gl::glext_enums::*;
         Ok(match e {
             GL_POINT_SIZE_MIN => Self::SizeMin,
             GL_POINT_SIZE_MAX => Self::SizeMax,

@@ -4,9 +4,9 @@
 //! the pipeline never looks at raw GL values.
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::glext_enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::CompareFunc;
 pub use crate::pipe::{Cap, Caps};
 pub use crate::pipe::{CurrentAttribs, Face, Primitive, ShadeModel, MAX_TEXTURE_UNITS};

@@ -8,8 +8,8 @@
 //! can save and restore them whole.
 
 use super::error::{GlError, GlResult};
-use crate::ffi::enums::*;
-use crate::ffi::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 pub use crate::fixed_function::matrix::plane_times_inverse;
 use crate::fixed_function::matrix::MatrixStack;
 pub use crate::pipe::{ClipPlanes, TexGenMode, TexGenState, TexGenUnit, MAX_CLIP_PLANES};
