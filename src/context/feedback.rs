@@ -4,9 +4,9 @@
 
 use super::error::{GlError, GlResult};
 use super::get::Value;
-use crate::gl::enums::*;
 use crate::geometry::feedback::PrimSink;
 use crate::geometry::ClipVertex;
+use crate::gl::enums::*;
 
 /// The deepest name stack (Mesa's `MAX_NAME_STACK_DEPTH`).
 pub const MAX_NAME_STACK_DEPTH: usize = 64;

@@ -5,9 +5,9 @@
 use super::error::{GlError, GlResult};
 use super::state::{Cap, MatrixMode, ShadeModel};
 use super::{Context, MAX_VIEWPORT};
+use crate::fixed_function::matrix::Mat4;
 use crate::gl::enums::*;
 use crate::gl::glext_enums::*;
-use crate::fixed_function::matrix::Mat4;
 use crate::texture::compressed::LISTED;
 
 /// How a state value is typed, which decides the conversions.

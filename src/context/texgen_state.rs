@@ -8,10 +8,10 @@
 //! can save and restore them whole.
 
 use super::error::{GlError, GlResult};
-use crate::gl::enums::*;
-use crate::gl::types::GLenum;
 pub use crate::fixed_function::matrix::plane_times_inverse;
 use crate::fixed_function::matrix::MatrixStack;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 pub use crate::pipe::{ClipPlanes, TexGenMode, TexGenState, TexGenUnit, MAX_CLIP_PLANES};
 
 impl TexGenMode {

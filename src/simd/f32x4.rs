@@ -1,7 +1,7 @@
 //! Four `f32` lanes in a 128-bit register, with the AVX encodings of the kernels that
 //! use them (so, like the 256-bit types, made only where the CPU has AVX2).
 
-use super::avx2;
+use super::{avx2, binary_ops};
 use std::arch::x86_64::*;
 
 /// Four `f32` lanes (`__m128`). Made only where the CPU has AVX2 (see [`super`]).
@@ -63,36 +63,6 @@ impl F32x4 {
         unsafe { _mm_storeu_ps(p, self.0) }
     }
 
-    /// `self + o` per lane.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        Self(avx2!(_mm_add_ps(self.0, o.0)))
-    }
-
-    /// `self * o` per lane.
-    #[inline(always)]
-    pub fn mul(self, o: Self) -> Self {
-        Self(avx2!(_mm_mul_ps(self.0, o.0)))
-    }
-
-    /// `self / o` per lane (exact).
-    #[inline(always)]
-    pub fn div(self, o: Self) -> Self {
-        Self(avx2!(_mm_div_ps(self.0, o.0)))
-    }
-
-    /// `minps`: per lane the smaller, `o` when either is NaN.
-    #[inline(always)]
-    pub fn min(self, o: Self) -> Self {
-        Self(avx2!(_mm_min_ps(self.0, o.0)))
-    }
-
-    /// `maxps`: per lane the larger, `o` when either is NaN.
-    #[inline(always)]
-    pub fn max(self, o: Self) -> Self {
-        Self(avx2!(_mm_max_ps(self.0, o.0)))
-    }
-
     /// `self * b + c` with one rounding (`vfmadd`).
     ///
     /// # Safety
@@ -138,4 +108,18 @@ impl F32x4 {
     pub fn movemask(self) -> u32 {
         avx2!(_mm_movemask_ps(self.0)) as u32
     }
+}
+
+binary_ops! {
+    F32x4;
+    /// `self + o` per lane.
+    add => _mm_add_ps,
+    /// `self * o` per lane.
+    mul => _mm_mul_ps,
+    /// `self / o` per lane (exact).
+    div => _mm_div_ps,
+    /// `minps`: per lane the smaller, `o` when either is NaN.
+    min => _mm_min_ps,
+    /// `maxps`: per lane the larger, `o` when either is NaN.
+    max => _mm_max_ps,
 }

@@ -1,37 +1,17 @@
 //! Eight `f32` lanes in a 256-bit AVX register.
 
-use super::{avx2, I32x8};
+use super::{avx2, binary_ops, wide_type, I32x8};
 use std::arch::x86_64::*;
 
-/// Eight `f32` lanes (`__m256`). Made only where the CPU has AVX2 (see [`super`]).
-#[derive(Clone, Copy, Debug)]
-#[repr(transparent)]
-pub struct F32x8(pub(super) __m256);
+wide_type! {
+    /// Eight `f32` lanes (`__m256`). Made only where the CPU has AVX2 (see [`super`]).
+    F32x8(__m256, f32): splat => _mm256_set1_ps, zero => _mm256_setzero_ps
+}
 
 // Named methods rather than `std::ops` operators: a kernel reads as the sequence of
 // instructions it compiles to.
 #[allow(clippy::should_implement_trait)]
 impl F32x8 {
-    /// Every lane `v`.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn splat(v: f32) -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_set1_ps(v) })
-    }
-
-    /// Every lane 0.0.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn zero() -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_setzero_ps() })
-    }
-
     /// Lane `i` is `a[i]`.
     ///
     /// # Safety
@@ -69,48 +49,6 @@ impl F32x8 {
         // SAFETY: AVX2 as `self` proves; `a` is 32 writable bytes.
         unsafe { self.store(a.as_mut_ptr()) };
         a
-    }
-
-    /// `self + o` per lane.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        Self(avx2!(_mm256_add_ps(self.0, o.0)))
-    }
-
-    /// `self - o` per lane.
-    #[inline(always)]
-    pub fn sub(self, o: Self) -> Self {
-        Self(avx2!(_mm256_sub_ps(self.0, o.0)))
-    }
-
-    /// `self * o` per lane.
-    #[inline(always)]
-    pub fn mul(self, o: Self) -> Self {
-        Self(avx2!(_mm256_mul_ps(self.0, o.0)))
-    }
-
-    /// `self / o` per lane (exact, `vdivps`).
-    #[inline(always)]
-    pub fn div(self, o: Self) -> Self {
-        Self(avx2!(_mm256_div_ps(self.0, o.0)))
-    }
-
-    /// `vminps`: per lane the smaller, `o` when either is NaN.
-    #[inline(always)]
-    pub fn min(self, o: Self) -> Self {
-        Self(avx2!(_mm256_min_ps(self.0, o.0)))
-    }
-
-    /// `vmaxps`: per lane the larger, `o` when either is NaN.
-    #[inline(always)]
-    pub fn max(self, o: Self) -> Self {
-        Self(avx2!(_mm256_max_ps(self.0, o.0)))
-    }
-
-    /// Bitwise and.
-    #[inline(always)]
-    pub fn and(self, o: Self) -> Self {
-        Self(avx2!(_mm256_and_ps(self.0, o.0)))
     }
 
     /// `self * b + c` with one rounding (`vfmadd`).
@@ -214,4 +152,22 @@ impl F32x8 {
     pub fn shuffle<const IMM: i32>(self, o: Self) -> Self {
         Self(avx2!(_mm256_shuffle_ps::<IMM>(self.0, o.0)))
     }
+}
+
+binary_ops! {
+    F32x8;
+    /// `self + o` per lane.
+    add => _mm256_add_ps,
+    /// `self - o` per lane.
+    sub => _mm256_sub_ps,
+    /// `self * o` per lane.
+    mul => _mm256_mul_ps,
+    /// `self / o` per lane (exact, `vdivps`).
+    div => _mm256_div_ps,
+    /// `vminps`: per lane the smaller, `o` when either is NaN.
+    min => _mm256_min_ps,
+    /// `vmaxps`: per lane the larger, `o` when either is NaN.
+    max => _mm256_max_ps,
+    /// Bitwise and.
+    and => _mm256_and_ps,
 }

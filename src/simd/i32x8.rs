@@ -1,38 +1,18 @@
 //! Eight `i32` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, bitwise_256, F32x8, I64x4, U16x16};
+use super::{avx2, binary_ops, bitwise_256, wide_type, F32x8, I64x4, U16x16};
 use std::arch::x86_64::*;
 
-/// Eight `i32` lanes (`__m256i`); the unsigned operations say so in their names. Made
-/// only where the CPU has AVX2 (see [`super`]).
-#[derive(Clone, Copy, Debug)]
-#[repr(transparent)]
-pub struct I32x8(pub(super) __m256i);
+wide_type! {
+    /// Eight `i32` lanes (`__m256i`); the unsigned operations say so in their names. Made
+    /// only where the CPU has AVX2 (see [`super`]).
+    I32x8(__m256i, i32): splat => _mm256_set1_epi32, zero => _mm256_setzero_si256
+}
 
 // Named methods rather than `std::ops` operators: a kernel reads as the sequence of
 // instructions it compiles to.
 #[allow(clippy::should_implement_trait)]
 impl I32x8 {
-    /// Every lane `v`.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn splat(v: i32) -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_set1_epi32(v) })
-    }
-
-    /// Every lane 0.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn zero() -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_setzero_si256() })
-    }
-
     /// Lane `i` is `a[i]`.
     ///
     /// # Safety
@@ -145,66 +125,6 @@ impl I32x8 {
         avx2!(_mm256_cvtsi256_si32(self.0))
     }
 
-    /// Wrapping `self + o` per lane.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        Self(avx2!(_mm256_add_epi32(self.0, o.0)))
-    }
-
-    /// Wrapping `self - o` per lane.
-    #[inline(always)]
-    pub fn sub(self, o: Self) -> Self {
-        Self(avx2!(_mm256_sub_epi32(self.0, o.0)))
-    }
-
-    /// The low 32 bits of `self * o` per lane.
-    #[inline(always)]
-    pub fn mullo(self, o: Self) -> Self {
-        Self(avx2!(_mm256_mullo_epi32(self.0, o.0)))
-    }
-
-    /// Bitwise exclusive or.
-    #[inline(always)]
-    pub fn xor(self, o: Self) -> Self {
-        Self(avx2!(_mm256_xor_si256(self.0, o.0)))
-    }
-
-    /// `self > o` per lane (signed) as a mask.
-    #[inline(always)]
-    pub fn cmpgt(self, o: Self) -> Self {
-        Self(avx2!(_mm256_cmpgt_epi32(self.0, o.0)))
-    }
-
-    /// `self == o` per lane as a mask.
-    #[inline(always)]
-    pub fn cmpeq(self, o: Self) -> Self {
-        Self(avx2!(_mm256_cmpeq_epi32(self.0, o.0)))
-    }
-
-    /// Signed minimum per lane.
-    #[inline(always)]
-    pub fn min(self, o: Self) -> Self {
-        Self(avx2!(_mm256_min_epi32(self.0, o.0)))
-    }
-
-    /// Signed maximum per lane.
-    #[inline(always)]
-    pub fn max(self, o: Self) -> Self {
-        Self(avx2!(_mm256_max_epi32(self.0, o.0)))
-    }
-
-    /// Unsigned minimum per lane.
-    #[inline(always)]
-    pub fn min_u32(self, o: Self) -> Self {
-        Self(avx2!(_mm256_min_epu32(self.0, o.0)))
-    }
-
-    /// Unsigned maximum per lane.
-    #[inline(always)]
-    pub fn max_u32(self, o: Self) -> Self {
-        Self(avx2!(_mm256_max_epu32(self.0, o.0)))
-    }
-
     /// Shifted left by `N` bits.
     #[inline(always)]
     pub fn shl<const N: i32>(self) -> Self {
@@ -307,3 +227,27 @@ impl I32x8 {
 }
 
 bitwise_256!(I32x8);
+
+binary_ops! {
+    I32x8;
+    /// Wrapping `self + o` per lane.
+    add => _mm256_add_epi32,
+    /// Wrapping `self - o` per lane.
+    sub => _mm256_sub_epi32,
+    /// The low 32 bits of `self * o` per lane.
+    mullo => _mm256_mullo_epi32,
+    /// Bitwise exclusive or.
+    xor => _mm256_xor_si256,
+    /// `self > o` per lane (signed) as a mask.
+    cmpgt => _mm256_cmpgt_epi32,
+    /// `self == o` per lane as a mask.
+    cmpeq => _mm256_cmpeq_epi32,
+    /// Signed minimum per lane.
+    min => _mm256_min_epi32,
+    /// Signed maximum per lane.
+    max => _mm256_max_epi32,
+    /// Unsigned minimum per lane.
+    min_u32 => _mm256_min_epu32,
+    /// Unsigned maximum per lane.
+    max_u32 => _mm256_max_epu32,
+}

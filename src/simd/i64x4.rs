@@ -1,37 +1,17 @@
 //! Four `i64` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, bitwise_256, I32x8};
+use super::{avx2, binary_ops, bitwise_256, wide_type, I32x8};
 use std::arch::x86_64::*;
 
-/// Four `i64` lanes (`__m256i`). Made only where the CPU has AVX2 (see [`super`]).
-#[derive(Clone, Copy, Debug)]
-#[repr(transparent)]
-pub struct I64x4(pub(super) __m256i);
+wide_type! {
+    /// Four `i64` lanes (`__m256i`). Made only where the CPU has AVX2 (see [`super`]).
+    I64x4(__m256i, i64): splat => _mm256_set1_epi64x, zero => _mm256_setzero_si256
+}
 
 // Named methods rather than `std::ops` operators: a kernel reads as the sequence of
 // instructions it compiles to.
 #[allow(clippy::should_implement_trait)]
 impl I64x4 {
-    /// Every lane `v`.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn splat(v: i64) -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_set1_epi64x(v) })
-    }
-
-    /// Every lane 0.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn zero() -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_setzero_si256() })
-    }
-
     /// Lane `i` is `a[i]`.
     ///
     /// # Safety
@@ -58,40 +38,10 @@ impl I64x4 {
         I32x8(self.0)
     }
 
-    /// Wrapping `self + o` per lane.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        Self(avx2!(_mm256_add_epi64(self.0, o.0)))
-    }
-
-    /// Wrapping `self - o` per lane.
-    #[inline(always)]
-    pub fn sub(self, o: Self) -> Self {
-        Self(avx2!(_mm256_sub_epi64(self.0, o.0)))
-    }
-
-    /// `vpmuldq`: the exact products of the lanes' low 32 bits, as signed i32 values.
-    #[inline(always)]
-    pub fn mul_i32(self, o: Self) -> Self {
-        Self(avx2!(_mm256_mul_epi32(self.0, o.0)))
-    }
-
     /// Shifted left by `N` bits.
     #[inline(always)]
     pub fn shl<const N: i32>(self) -> Self {
         Self(avx2!(_mm256_slli_epi64::<N>(self.0)))
-    }
-
-    /// `self > o` per lane (signed) as a mask.
-    #[inline(always)]
-    pub fn cmpgt(self, o: Self) -> Self {
-        Self(avx2!(_mm256_cmpgt_epi64(self.0, o.0)))
-    }
-
-    /// `self == o` per lane as a mask.
-    #[inline(always)]
-    pub fn cmpeq(self, o: Self) -> Self {
-        Self(avx2!(_mm256_cmpeq_epi64(self.0, o.0)))
     }
 
     /// The sign bits of the lanes, bit `i` for lane `i`.
@@ -102,3 +52,17 @@ impl I64x4 {
 }
 
 bitwise_256!(I64x4);
+
+binary_ops! {
+    I64x4;
+    /// Wrapping `self + o` per lane.
+    add => _mm256_add_epi64,
+    /// Wrapping `self - o` per lane.
+    sub => _mm256_sub_epi64,
+    /// `vpmuldq`: the exact products of the lanes' low 32 bits, as signed i32 values.
+    mul_i32 => _mm256_mul_epi32,
+    /// `self > o` per lane (signed) as a mask.
+    cmpgt => _mm256_cmpgt_epi64,
+    /// `self == o` per lane as a mask.
+    cmpeq => _mm256_cmpeq_epi64,
+}

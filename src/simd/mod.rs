@@ -62,6 +62,67 @@ macro_rules! avx2 {
 #[cfg(target_arch = "x86_64")]
 use avx2;
 
+/// A wide type: the newtype over its register (documented by the doc lines before the
+/// invocation) and its two constructors that read no memory, `splat` (every lane `v`) and
+/// `zero` (every bit 0), both `unsafe` because a value may only exist where the CPU has
+/// AVX2.
+#[cfg(target_arch = "x86_64")]
+macro_rules! wide_type {
+    ($(#[$doc:meta])* $t:ident($reg:ident, $lane:ty): splat => $splat:ident, zero => $zero:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug)]
+        #[repr(transparent)]
+        pub struct $t(pub(super) std::arch::x86_64::$reg);
+
+        impl $t {
+            /// Every lane `v`.
+            ///
+            /// # Safety
+            /// The CPU has AVX2.
+            #[inline(always)]
+            pub unsafe fn splat(v: $lane) -> Self {
+                // SAFETY: the caller vouches for AVX2.
+                Self(unsafe { std::arch::x86_64::$splat(v) })
+            }
+
+            /// Every lane 0.
+            ///
+            /// # Safety
+            /// The CPU has AVX2.
+            #[inline(always)]
+            pub unsafe fn zero() -> Self {
+                // SAFETY: the caller vouches for AVX2.
+                Self(unsafe { std::arch::x86_64::$zero() })
+            }
+        }
+    };
+}
+#[cfg(target_arch = "x86_64")]
+use wide_type;
+
+/// The lane-wise operations of a wide type that are one intrinsic of `self` and `o`:
+/// `name => intrinsic,` after the operation's doc lines, each an `#[inline(always)]`
+/// `fn name(self, o: Self) -> Self` (safe, as every [`avx2!`] operation).
+#[cfg(target_arch = "x86_64")]
+macro_rules! binary_ops {
+    ($t:ident; $($(#[$doc:meta])* $name:ident => $intr:ident,)+) => {
+        // Named methods rather than `std::ops` operators: a kernel reads as the sequence
+        // of instructions it compiles to.
+        #[allow(clippy::should_implement_trait)]
+        impl $t {
+            $(
+                $(#[$doc])*
+                #[inline(always)]
+                pub fn $name(self, o: Self) -> Self {
+                    Self(avx2!(std::arch::x86_64::$intr(self.0, o.0)))
+                }
+            )+
+        }
+    };
+}
+#[cfg(target_arch = "x86_64")]
+use binary_ops;
+
 /// `and` and `or` of a 256-bit integer type: the same instructions whatever the lanes.
 #[cfg(target_arch = "x86_64")]
 macro_rules! bitwise_256 {

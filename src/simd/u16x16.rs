@@ -1,6 +1,6 @@
 //! Sixteen 16-bit lanes in a 256-bit AVX2 register: pixels' channels widened to words.
 
-use super::{avx2, bitwise_256, I32x8};
+use super::{avx2, binary_ops, bitwise_256, I32x8};
 use std::arch::x86_64::*;
 
 /// Sixteen 16-bit lanes (`__m256i`), unsigned unless an operation says otherwise. Made
@@ -50,48 +50,6 @@ impl U16x16 {
         I32x8(self.0)
     }
 
-    /// Wrapping `self + o` per lane.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        Self(avx2!(_mm256_add_epi16(self.0, o.0)))
-    }
-
-    /// Wrapping `self - o` per lane.
-    #[inline(always)]
-    pub fn sub(self, o: Self) -> Self {
-        Self(avx2!(_mm256_sub_epi16(self.0, o.0)))
-    }
-
-    /// `self - o` per lane, saturated at 0.
-    #[inline(always)]
-    pub fn sub_sat(self, o: Self) -> Self {
-        Self(avx2!(_mm256_subs_epu16(self.0, o.0)))
-    }
-
-    /// The low 16 bits of `self * o` per lane.
-    #[inline(always)]
-    pub fn mullo(self, o: Self) -> Self {
-        Self(avx2!(_mm256_mullo_epi16(self.0, o.0)))
-    }
-
-    /// `vpmulhrsw`: `(self·o + 2^14) >> 15` per lane, signed.
-    #[inline(always)]
-    pub fn mulhrs(self, o: Self) -> Self {
-        Self(avx2!(_mm256_mulhrs_epi16(self.0, o.0)))
-    }
-
-    /// Unsigned minimum per lane.
-    #[inline(always)]
-    pub fn min(self, o: Self) -> Self {
-        Self(avx2!(_mm256_min_epu16(self.0, o.0)))
-    }
-
-    /// Unsigned maximum per lane.
-    #[inline(always)]
-    pub fn max(self, o: Self) -> Self {
-        Self(avx2!(_mm256_max_epu16(self.0, o.0)))
-    }
-
     /// Each 16-bit lane shifted left by `N` bits.
     #[inline(always)]
     pub fn shl<const N: i32>(self) -> Self {
@@ -128,3 +86,21 @@ impl U16x16 {
 }
 
 bitwise_256!(U16x16);
+
+binary_ops! {
+    U16x16;
+    /// Wrapping `self + o` per lane.
+    add => _mm256_add_epi16,
+    /// Wrapping `self - o` per lane.
+    sub => _mm256_sub_epi16,
+    /// `self - o` per lane, saturated at 0.
+    sub_sat => _mm256_subs_epu16,
+    /// The low 16 bits of `self * o` per lane.
+    mullo => _mm256_mullo_epi16,
+    /// `vpmulhrsw`: `(self·o + 2^14) >> 15` per lane, signed.
+    mulhrs => _mm256_mulhrs_epi16,
+    /// Unsigned minimum per lane.
+    min => _mm256_min_epu16,
+    /// Unsigned maximum per lane.
+    max => _mm256_max_epu16,
+}
