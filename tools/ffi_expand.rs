@@ -44,13 +44,19 @@ fn declare(out: &mut String, unsafe_: bool, name: &str, params: &str, ret: &str)
 }
 
 /// `(p, q) glXs glXsv GLshort, glXi glXiv GLint;`: for each entry the scalar function
-/// (one `p: T` per name) and the vector one (`v: *const T`). Other lines (a family
+/// (one `p: T` per name) and the vector one (`v: *const T`); `(target: GLenum; p, q)`
+/// puts `target: GLenum` first in both. Other lines (a family
 /// header `sink conv [defaults] {`, its `}`, comments) declare nothing.
 fn vector_line(t: &str, out: &mut String) {
     let Some(rest) = t.strip_prefix('(') else {
         return;
     };
     let (names, entries) = rest.split_once(')').expect("vector_fns!: `(params)`");
+    // `(target: GLenum; s, t)`: parameters before the `;` lead both forms unchanged.
+    let (fixed, names) = match names.split_once(';') {
+        Some((f, n)) => (format!("{}, ", f.trim()), n),
+        None => (String::new(), names),
+    };
     let names: Vec<&str> = names.split(',').map(str::trim).collect();
     let entries = entries
         .trim()
@@ -62,8 +68,14 @@ fn vector_line(t: &str, out: &mut String) {
             panic!("vector_fns!: `scalar vector type` expected, found `{entry}`");
         };
         let params: Vec<String> = names.iter().map(|p| format!("{p}: {ty}")).collect();
-        declare(out, false, scalar, &params.join(", "), "");
-        declare(out, true, vector, &format!("v: *const {ty}"), "");
+        declare(
+            out,
+            false,
+            scalar,
+            &format!("{fixed}{}", params.join(", ")),
+            "",
+        );
+        declare(out, true, vector, &format!("{fixed}v: *const {ty}"), "");
     }
 }
 

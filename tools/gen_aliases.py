@@ -40,11 +40,15 @@ def expand_families(src):
             family = None
         elif family == "vector" and t.startswith("("):
             names, entries = t[1:].split(")", 1)
+            fixed = ""
+            if ";" in names:
+                fixed, names = names.split(";", 1)
+                fixed = fixed.strip() + ", "
             names = [n.strip() for n in names.split(",")]
             for entry in entries.strip().rstrip(";").split(","):
                 scalar, vector, ty = entry.split()
-                decl("pub extern", scalar, ", ".join(f"{n}: {ty}" for n in names), "")
-                decl("pub unsafe extern", vector, f"v: *const {ty}", "")
+                decl("pub extern", scalar, fixed + ", ".join(f"{n}: {ty}" for n in names), "")
+                decl("pub unsafe extern", vector, f"{fixed}v: *const {ty}", "")
         elif family == "c" and (t.startswith("safe fn ") or t.startswith("unsafe fn ")):
             kw = "pub unsafe extern" if t.startswith("unsafe") else "pub extern"
             rest = t.split(" fn ", 1)[1]

@@ -6,7 +6,9 @@
 //!   one arity and, per C type, the scalar function, the vector function and the type:
 //!   `(x, y) glVertex2s glVertex2sv GLshort, glVertex2i glVertex2iv GLint;`. The family
 //!   header names the sink (`fn([f32; N])`), the [`Component`] conversion (`cast` or
-//!   `norm`) and the values of the components the function does not give.
+//!   `norm`) and the values of the components the function does not give. A parameter
+//!   list `(target: GLenum; s, t)` puts `target` first in both forms and passes it to the
+//!   sink first (glMultiTexCoord).
 //! - [`c_fns!`]: functions of one line each, `safe fn NAME(PARAMS) -> RET => EXPR;`, and
 //!   extension names that forward to their core function,
 //!   `safe fn glBindBufferARB(target: GLenum, buffer: GLuint) = buffers::glBindBuffer;`
@@ -130,13 +132,24 @@ macro_rules! vector_fns {
             $crate::ffi::families::vector_fns!(@one $sink $conv $defaults $params $name $vname $t);
         )+)+)+
     };
-    (@one $sink:ident $conv:ident $defaults:tt ($($p:ident),+) $name:ident $vname:ident $t:ty) => {
+    (@one $sink:ident $conv:ident $defaults:tt ($f:ident: $ft:ty; $($p:ident),+)
+        $name:ident $vname:ident $t:ty) => {
+        $crate::ffi::families::vector_fns!(@gen [$f: $ft] $sink $conv $defaults ($($p),+)
+            $name $vname $t);
+    };
+    (@one $sink:ident $conv:ident $defaults:tt ($($p:ident),+) $name:ident $vname:ident
+        $t:ty) => {
+        $crate::ffi::families::vector_fns!(@gen [] $sink $conv $defaults ($($p),+) $name
+            $vname $t);
+    };
+    (@gen [$($f:ident: $ft:ty)?] $sink:ident $conv:ident $defaults:tt ($($p:ident),+)
+        $name:ident $vname:ident $t:ty) => {
         #[doc = concat!("`", stringify!($name), "`: calls `", stringify!($sink), "` with ",
             "the `", stringify!($conv), "` conversion of its arguments.")]
         #[no_mangle]
-        pub extern "C" fn $name($($p: $t),+) {
+        pub extern "C" fn $name($($f: $ft,)? $($p: $t),+) {
             use $crate::ffi::families::Component as _;
-            $sink($crate::ffi::families::fill($defaults, [$($p.$conv()),+]))
+            $sink($($f,)? $crate::ffi::families::fill($defaults, [$($p.$conv()),+]))
         }
 
         #[doc = concat!("`", stringify!($vname), "`: `", stringify!($name),
@@ -145,7 +158,7 @@ macro_rules! vector_fns {
         /// # Safety
         /// `v` must be null or point to as many values as the scalar form takes.
         #[no_mangle]
-        pub unsafe extern "C" fn $vname(v: *const $t) {
+        pub unsafe extern "C" fn $vname($($f: $ft,)? v: *const $t) {
             use $crate::ffi::families::Component as _;
             const N: usize = [$(stringify!($p)),+].len();
             if v.is_null() {
@@ -155,7 +168,7 @@ macro_rules! vector_fns {
                 // SAFETY: the caller promises N readable values (aligned or not).
                 unsafe { v.add(i).read_unaligned() }.$conv()
             });
-            $sink($crate::ffi::families::fill($defaults, given))
+            $sink($($f,)? $crate::ffi::families::fill($defaults, given))
         }
     };
 }
