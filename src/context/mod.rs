@@ -18,6 +18,7 @@ pub mod get;
 pub mod immediate;
 pub mod legacy_state;
 pub mod lighting_state;
+pub mod pack;
 pub mod pixel_state;
 pub mod pixel_transfer;
 pub mod queries;

@@ -11,11 +11,12 @@ use super::glext_enums::*;
 use super::types::*;
 use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
 use crate::context::fbo::Attachment;
+use crate::context::pack::depth as shadow;
+use crate::context::pack::tex::{self as upload, ClientFormat, Layout};
 use crate::context::state::{Cap, PixelStore, MAX_TEXTURE_UNITS};
 use crate::context::{Context, GlError, GlResult};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
-use crate::texture::shadow::{self, CompareFunc, DepthMode, ShadowParams};
-use crate::texture::upload::{self, ClientFormat, Layout};
+use crate::texture::shadow::{CompareFunc, DepthMode, ShadowParams};
 use crate::texture::{
     mipmap, BaseFormat, Filter, Level, MipFilter, Storage, Target, TextureObject, Wrap,
     MAX_ANISOTROPY, MAX_LEVELS, MAX_TEXTURE_SIZE,

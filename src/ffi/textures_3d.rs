@@ -10,9 +10,9 @@ use super::textures::{
 };
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
+use crate::context::pack::tex::{self as upload, ClientFormat, Layout};
 use crate::context::state::PixelStore;
 use crate::context::{Context, GlError, GlResult};
-use crate::texture::upload::{self, ClientFormat, Layout};
 use crate::texture::{BaseFormat, Level, Storage, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
 use libc::c_void;
 

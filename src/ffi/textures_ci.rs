@@ -6,11 +6,12 @@
 
 use super::enums::{GL_COLOR_INDEX, GL_RGBA, GL_UNSIGNED_BYTE};
 use crate::context::error::GlResult;
+use crate::context::pack::draw_image::Layout;
+use crate::context::pack::tex::{self as upload, ClientFormat};
 use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::framebuffer::float_to_ubyte;
-use crate::pixels::image::{Layout, Pixels};
-use crate::texture::upload::{self, ClientFormat};
+use crate::pixels::image::Pixels;
 use crate::texture::{BaseFormat, Storage};
 use std::ffi::c_void;
 

@@ -24,7 +24,7 @@ pub extern "C" fn glGenerateMipmap(target: GLenum) {
         }
         // Mesa: no mipmaps of a packed depth-stencil image
         let internal = obj.levels[base].as_ref().map_or(0, |l| l.internal_format);
-        if crate::texture::shadow::is_depth_stencil(internal) {
+        if crate::context::pack::depth::is_depth_stencil(internal) {
             return Err(GlError::InvalidOperation);
         }
         regenerate(obj, base);
