@@ -27,6 +27,7 @@ pub mod share;
 pub mod state;
 pub mod store;
 pub mod texgen_state;
+pub mod texture_gl;
 pub mod vertex_material;
 
 use crate::fixed_function::matrix::{Mat4, MatrixStack};

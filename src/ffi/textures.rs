@@ -249,7 +249,7 @@ unsafe fn tex_sub_image(
     if xoff < 0 || yoff < 0 || xoff as usize + w > width || yoff as usize + h > height {
         return Err(GlError::InvalidValue);
     }
-    if crate::texture::compressed::info(internal).is_some() {
+    if crate::context::pack::tex_format::compressed_info(internal).is_some() {
         // whole blocks only (the data is then stored uncompressed: see the README)
         let rect = (xoff, yoff, w as i32, h as i32);
         super::textures_compressed::check_sub_rect((width as i32, height as i32), rect)?;
@@ -381,6 +381,7 @@ fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: GLenum) -> 
     if base == BaseFormat::Depth {
         Storage {
             sizes: [shadow::depth_bits(internal as u32, ty), 0, 0, 0, 0, 0],
+            encoding: crate::texture::Encoding::Unorm,
         }
     } else {
         upload::choose_storage(internal, base, format, ty)
@@ -1127,7 +1128,8 @@ fn get_level_parameter(
     };
     // the sizes of the storage format Mesa chose (upload::choose_storage)
     let is_depth = img.is_some_and(|i| i.base == BaseFormat::Depth);
-    let compressed = img.and_then(|i| crate::texture::compressed::info(i.internal_format));
+    let compressed =
+        img.and_then(|i| crate::context::pack::tex_format::compressed_info(i.internal_format));
     let size = |k: usize| img.filter(|_| !is_depth).map_or(0, |i| i.storage.sizes[k]) as f64;
     Ok(match pname {
         GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,

@@ -65,7 +65,7 @@ unsafe fn copy_blocks(
     size: GLsizei,
     data: *const GLvoid,
 ) -> Option<Vec<u8>> {
-    let info = compressed::info(internal)?;
+    let info = crate::context::pack::tex_format::compressed_info(internal)?;
     if data.is_null() || size <= 0 || info.image_size(w, h) != size as u32 {
         return None;
     }
@@ -110,7 +110,8 @@ fn compressed_image(
     data: Option<&[u8]>,
 ) -> GlResult<()> {
     let (t, proxy, face) = compressed_target(dims, target)?;
-    let info = compressed::info(a.internal).ok_or(GlError::InvalidEnum)?;
+    let info = crate::context::pack::tex_format::compressed_info(a.internal)
+        .ok_or(GlError::InvalidEnum)?;
     let level = check_level(a.level)?;
     if a.border != 0 {
         return Err(GlError::InvalidOperation);
@@ -159,7 +160,10 @@ fn storage(info: &Info) -> Storage {
         BaseFormat::LuminanceAlpha => [0, 0, 0, 8, 8, 0],
         _ => [4, 4, 4, 4, 0, 0],
     };
-    Storage { sizes }
+    Storage {
+        sizes,
+        encoding: info.encoding(),
+    }
 }
 
 /// Arguments of glCompressedTexSubImage2D after the target.
@@ -200,7 +204,7 @@ fn compressed_sub_image(
     data: Option<&[u8]>,
 ) -> GlResult<()> {
     let (t, face) = sub_target(dims, target)?;
-    let Some(info) = compressed::info(a.format) else {
+    let Some(info) = crate::context::pack::tex_format::compressed_info(a.format) else {
         return Err(if is_generic_compressed(a.format) {
             GlError::InvalidEnum
         } else {

@@ -28,26 +28,7 @@
 //! approximate `rsqrtps` (used here too, so the result matches llvmpipe on the same CPU);
 //! then `round_half_even`. Alpha is `round_half_even(clamp(a)·255)`.
 
-use crate::gl::glext_enums::{
-    GL_SLUMINANCE, GL_SLUMINANCE8, GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA, GL_SRGB, GL_SRGB8,
-    GL_SRGB8_ALPHA8, GL_SRGB_ALPHA,
-};
 use std::sync::OnceLock;
-
-/// Whether a glTexImage internal format is an (uncompressed) sRGB one.
-pub fn is_srgb(internal: u32) -> bool {
-    matches!(
-        internal,
-        GL_SRGB
-            | GL_SRGB8
-            | GL_SRGB_ALPHA
-            | GL_SRGB8_ALPHA8
-            | GL_SLUMINANCE
-            | GL_SLUMINANCE8
-            | GL_SLUMINANCE_ALPHA
-            | GL_SLUMINANCE8_ALPHA8
-    )
-}
 
 /// llvmpipe's multiply-add: fused or with two roundings.
 #[inline(always)]

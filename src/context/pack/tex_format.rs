@@ -2,12 +2,14 @@
 //! Mesa 22.3 (llvmpipe) picks for an internal format with a client format and type.
 
 use crate::gl::enums::*;
+use crate::gl::glext_enums::*;
 use crate::gl::glext_enums::{
     GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
     GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F, GL_DEPTH_STENCIL, GL_SLUMINANCE, GL_SLUMINANCE8,
     GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA, GL_SRGB, GL_SRGB8, GL_SRGB8_ALPHA8, GL_SRGB_ALPHA,
 };
-use crate::texture::{BaseFormat, Storage};
+use crate::texture::compressed::{Format, Info};
+use crate::texture::{BaseFormat, Encoding, Storage};
 
 /// The base internal format of a glTexImage internalformat, or `None` (GL_INVALID_VALUE).
 pub fn base_format(internal: i32) -> Option<BaseFormat> {
@@ -65,15 +67,22 @@ pub fn base_format(internal: i32) -> Option<BaseFormat> {
 ///
 /// `format`/`ty` are 0 when there is no client image (glCopyTexImage).
 pub fn choose_storage(internal: i32, base: BaseFormat, format: u32, ty: u32) -> Storage {
-    let rgb = |r: u8, g: u8, b: u8| Storage {
-        sizes: [r, g, b, 0, 0, 0],
+    let encoding = if is_srgb(internal as u32) {
+        Encoding::Srgb
+    } else {
+        Encoding::Unorm
     };
-    let rgba = |r: u8, g: u8, b: u8, a: u8| Storage {
-        sizes: [r, g, b, a, 0, 0],
-    };
-    let la = |l: u8, a: u8| Storage {
-        sizes: [0, 0, 0, a, l, 0],
-    };
+    Storage {
+        sizes: choose_sizes(internal, base, format, ty),
+        encoding,
+    }
+}
+
+/// The component sizes of [`choose_storage`].
+fn choose_sizes(internal: i32, base: BaseFormat, format: u32, ty: u32) -> [u8; 6] {
+    let rgb = |r: u8, g: u8, b: u8| [r, g, b, 0, 0, 0];
+    let rgba = |r: u8, g: u8, b: u8, a: u8| [r, g, b, a, 0, 0];
+    let la = |l: u8, a: u8| [0, 0, 0, a, l, 0];
     let rgba_fmt = format == GL_RGBA || format == GL_BGRA;
     match internal as u32 {
         GL_RGB => match ty {
@@ -81,7 +90,7 @@ pub fn choose_storage(internal: i32, base: BaseFormat, format: u32, ty: u32) -> 
             GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV => rgb(3, 3, 2),
             GL_UNSIGNED_SHORT_5_5_5_1 if rgba_fmt => rgb(5, 5, 5),
             GL_UNSIGNED_INT_2_10_10_10_REV if format == GL_RGBA => rgb(10, 10, 10),
-            _ => Storage::of_base(base),
+            _ => Storage::of_base(base).sizes,
         },
         GL_RGBA => match ty {
             GL_UNSIGNED_SHORT_4_4_4_4 | GL_UNSIGNED_SHORT_4_4_4_4_REV => rgba(4, 4, 4, 4),
@@ -90,7 +99,7 @@ pub fn choose_storage(internal: i32, base: BaseFormat, format: u32, ty: u32) -> 
                 rgba(10, 10, 10, 2)
             }
             GL_UNSIGNED_SHORT if format == GL_RGBA => rgba(16, 16, 16, 16),
-            _ => Storage::of_base(base),
+            _ => Storage::of_base(base).sizes,
         },
         GL_LUMINANCE if ty == GL_UNSIGNED_SHORT && format == GL_LUMINANCE => la(16, 0),
         GL_ALPHA if ty == GL_UNSIGNED_SHORT && format == GL_ALPHA => la(0, 16),
@@ -108,9 +117,77 @@ pub fn choose_storage(internal: i32, base: BaseFormat, format: u32, ty: u32) -> 
         GL_LUMINANCE12 | GL_LUMINANCE16 => la(16, 0),
         GL_LUMINANCE4_ALPHA4 => la(4, 4),
         GL_LUMINANCE12_ALPHA4 | GL_LUMINANCE12_ALPHA12 | GL_LUMINANCE16_ALPHA16 => la(16, 16),
-        GL_INTENSITY12 | GL_INTENSITY16 => Storage {
-            sizes: [0, 0, 0, 0, 0, 16],
-        },
-        _ => Storage::of_base(base),
+        GL_INTENSITY12 | GL_INTENSITY16 => [0, 0, 0, 0, 0, 16],
+        _ => Storage::of_base(base).sizes,
     }
+}
+
+/// Whether a glTexImage internal format is an (uncompressed) sRGB one.
+pub fn is_srgb(internal: u32) -> bool {
+    matches!(
+        internal,
+        GL_SRGB
+            | GL_SRGB8
+            | GL_SRGB_ALPHA
+            | GL_SRGB8_ALPHA8
+            | GL_SLUMINANCE
+            | GL_SLUMINANCE8
+            | GL_SLUMINANCE_ALPHA
+            | GL_SLUMINANCE8_ALPHA8
+    )
+}
+
+/// The compressed internal formats, in the order of [`info`]'s table.
+pub const FORMATS: [u32; 16] = [
+    GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT5_EXT,
+    GL_COMPRESSED_SRGB_S3TC_DXT1_EXT,
+    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT,
+    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT,
+    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
+    GL_COMPRESSED_RED_RGTC1,
+    GL_COMPRESSED_SIGNED_RED_RGTC1,
+    GL_COMPRESSED_RG_RGTC2,
+    GL_COMPRESSED_SIGNED_RG_RGTC2,
+    GL_COMPRESSED_LUMINANCE_LATC1_EXT,
+    GL_COMPRESSED_SIGNED_LUMINANCE_LATC1_EXT,
+    GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT,
+    GL_COMPRESSED_SIGNED_LUMINANCE_ALPHA_LATC2_EXT,
+];
+
+/// GL_COMPRESSED_TEXTURE_FORMATS: Mesa lists S3TC's DXT1 RGB, DXT3 and DXT5 (never RGBA
+/// DXT1, RGTC, LATC or sRGB; its FXT1 and ETC2 entries are formats softgl lacks).
+pub const LISTED: [u32; 3] = [
+    GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT5_EXT,
+];
+
+/// The compressed format behind an internal format enum, if softgl supports it.
+pub fn compressed_info(internal: u32) -> Option<Info> {
+    let i = FORMATS.iter().position(|&f| f == internal)?;
+    let s3tc = [
+        Format::Dxt1Rgb,
+        Format::Dxt1Rgba,
+        Format::Dxt3,
+        Format::Dxt5,
+    ];
+    Some(if i < 8 {
+        Info {
+            format: s3tc[i % 4],
+            srgb: i >= 4,
+            signed: false,
+            luminance: false,
+        }
+    } else {
+        let k = i - 8;
+        Info {
+            format: if k % 4 < 2 { Format::One } else { Format::Two },
+            srgb: false,
+            signed: k % 2 == 1,
+            luminance: k >= 4,
+        }
+    })
 }
