@@ -19,6 +19,7 @@ pub mod immediate;
 pub mod legacy_state;
 pub mod lighting_state;
 pub mod pack;
+pub mod pixel_ops;
 pub mod pixel_state;
 pub mod pixel_transfer;
 pub mod queries;
@@ -127,7 +128,7 @@ pub struct Context {
     /// glPixelMap tables (in no attribute group).
     pub pixel_maps: pixel_transfer::PixelMaps,
     /// glBitmap calls not drawn yet (Mesa's bitmap cache).
-    pub bitmap_cache: crate::pixels::cache::BitmapCache,
+    pub bitmap_cache: crate::context::pixel_ops::bitmap_cache::BitmapCache,
     /// Display lists.
     pub lists: dlist::ListState,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -342,7 +343,7 @@ impl Context {
     /// glFlush/glFinish: copies the colour buffer into the user buffer if anything was drawn
     /// or cleared since the last copy (Mesa's `rb->defined`), and refreshes the depth copy.
     pub fn flush(&mut self) {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         let Some(fb) = self.window_fb() else { return };
         if !self.dirty || self.target.ptr == 0 {
             return;
@@ -501,7 +502,7 @@ impl Context {
 
     /// glScissor.
     pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         if w < 0 || h < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -537,7 +538,7 @@ impl Context {
 
     /// glClear.
     pub fn clear(&mut self, mask: u32) -> GlResult<()> {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         use crate::ffi::enums::*;
         let all =
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;

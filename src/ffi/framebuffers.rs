@@ -788,7 +788,7 @@ pub extern "C" fn glBlitFramebuffer(
             depth: mask & GL_DEPTH_BUFFER_BIT != 0,
             stencil: mask & GL_STENCIL_BUFFER_BIT != 0,
         };
-        crate::pixels::blit::blit(
+        crate::context::pixel_ops::blit::blit(
             c,
             [srcX0, srcY0, srcX1, srcY1],
             [dstX0, dstY0, dstX1, dstY1],

@@ -9,8 +9,9 @@ use super::types::*;
 use super::{with_ctx, with_ctx_list};
 use crate::context::error::GlError;
 use crate::context::pack::draw_image::Layout;
+use crate::context::pixel_ops::{bitmap, copy_pixels, draw_pixels};
 use crate::context::pixel_transfer::{is_index_map, map_index};
-use crate::pixels::draw::{bitmap, copy_pixels, draw_pixels, CopyKind};
+use crate::pixels::draw::CopyKind;
 use crate::pixels::image::Pixels;
 
 /// Reads the current unpack state from the context (default state without one).

@@ -5,7 +5,7 @@
 use super::pixels::read;
 use super::types::*;
 use super::with_ctx_list;
-use crate::pixels::raster_pos::window_pos;
+use crate::context::pixel_ops::raster_pos::window_pos;
 
 fn wp(x: f32, y: f32, z: f32) {
     with_ctx_list(move |c| {

@@ -53,7 +53,7 @@ pub(crate) unsafe fn unpack(
     let rgba: Option<Vec<u8>> = decoded.and_then(|img| match img.pixels {
         Pixels::Index(ix) => Some(
             ix.iter()
-                .flat_map(|&i| crate::pixels::draw::index_to_rgba(c, i).map(float_to_ubyte))
+                .flat_map(|&i| crate::context::pixel_ops::index_to_rgba(c, i).map(float_to_ubyte))
                 .collect(),
         ),
         _ => None,

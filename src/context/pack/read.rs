@@ -38,7 +38,7 @@ pub unsafe fn read_pixels(
     ty: u32,
     out: *mut u8,
 ) -> GlResult<()> {
-    crate::pixels::cache::flush(c);
+    crate::context::pixel_ops::bitmap_cache::flush(c);
     if w < 0 || h < 0 {
         return Err(GlError::InvalidValue);
     }
