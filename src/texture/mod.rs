@@ -137,8 +137,8 @@ impl BaseFormat {
     }
 }
 
-/// The storage format Mesa chose for an image, as the component sizes
-/// glGetTexLevelParameter reports (see [`upload::choose_storage`]). Texels are still kept
+/// The storage format Mesa chose for an image (by `context::pack::tex_format`), as the
+/// component sizes glGetTexLevelParameter reports and the encoding. Texels are still kept
 /// as RGBA8; components of fewer than 8 bits are quantised on upload and expanded back by
 /// bit replication, which is what llvmpipe samples and glGetTexImage returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

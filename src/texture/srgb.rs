@@ -4,8 +4,8 @@
 //! # Storage and readback
 //! The bytes are stored as given (8 bits a channel, like GL_RGB8 …; float data is stored
 //! linearly, `round_half_even(v·255)`, measured) and glGetTexImage returns them undecoded
-//! (Mesa's `_mesa_get_srgb_format_linear`; measured also for GL_FLOAT). The image keeps its
-//! sRGB internal format; [`is_srgb`] tells.
+//! (Mesa's `_mesa_get_srgb_format_linear`; measured also for GL_FLOAT). The image's
+//! storage says so ([`super::Encoding::Srgb`], set from the internal format by the state).
 //!
 //! # Sampling (`lp_bld_format_srgb.c`, `lp_build_srgb_to_linear`)
 //! sRGB formats never take llvmpipe's 8-bit AoS path (`util_format_fits_8unorm` is false

@@ -183,3 +183,18 @@ pub(crate) fn read_uint(bytes: &[u8], swap: bool) -> u64 {
         v
     }
 }
+
+/// Writes the low `size` bytes of `raw` into `out` in native order, byte-swapped when
+/// `swap` and `size` > 1 (the inverse of [`read_uint`]).
+pub(crate) fn write_uint(out: &mut [u8], raw: u64, size: usize, swap: bool) {
+    let b = raw.to_ne_bytes();
+    let bytes = if cfg!(target_endian = "big") {
+        &b[8 - size..]
+    } else {
+        &b[..size]
+    };
+    out[..size].copy_from_slice(bytes);
+    if swap && size > 1 {
+        out[..size].reverse();
+    }
+}

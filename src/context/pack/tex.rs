@@ -15,7 +15,7 @@
 //! R=G=B), then reduced to the base internal format (L and I take R), then stored after the
 //! base-format swizzle (see the module root).
 
-use super::{components, packed_layout, pixel_type, read_uint, Ty};
+use super::{components, packed_layout, pixel_type, read_uint, write_uint, Ty};
 use crate::context::pixel_transfer::{PixelMaps, PixelTransfer};
 use crate::context::state::PixelStore;
 use crate::gl::enums::*;
@@ -331,24 +331,12 @@ fn readback_rgba(base: BaseFormat, t: [u8; 4]) -> [u8; 4] {
         BaseFormat::LuminanceAlpha => [t[0], 0, 0, t[3]],
         BaseFormat::Rgb => [t[0], t[1], t[2], 255],
         BaseFormat::Rgba => t,
-        // depth images are read back by `shadow::pack`
+        // depth images are read back by `depth::pack`
         BaseFormat::Depth => [0, 0, 0, 255],
     }
 }
 
 fn encode_u8(v: u8, ty: Ty, out: &mut [u8], swap: bool) {
-    let put = |out: &mut [u8], raw: u64, size: usize| {
-        let b = raw.to_ne_bytes();
-        let bytes = if cfg!(target_endian = "big") {
-            &b[8 - size..]
-        } else {
-            &b[..size]
-        };
-        out[..size].copy_from_slice(bytes);
-        if swap && size > 1 {
-            out[..size].reverse();
-        }
-    };
     if let Ty::Plain {
         size,
         signed,
@@ -369,7 +357,7 @@ fn encode_u8(v: u8, ty: Ty, out: &mut [u8], swap: bool) {
             };
             v as u64 * (max / 255)
         };
-        put(out, raw, size);
+        write_uint(out, raw, size, swap);
     }
 }
 
@@ -404,16 +392,7 @@ pub unsafe fn pack(ps: &PixelStore, cf: &ClientFormat, img: &Level, dst: *mut u8
                         let max = (1u64 << bits) - 1;
                         raw |= ((v * max + 127) / 255) << shift;
                     }
-                    let b = raw.to_ne_bytes();
-                    let bytes = if cfg!(target_endian = "big") {
-                        &b[8 - size..]
-                    } else {
-                        &b[..size]
-                    };
-                    px[..size].copy_from_slice(bytes);
-                    if ps.swap_bytes && size > 1 {
-                        px[..size].reverse();
-                    }
+                    write_uint(px, raw, size, ps.swap_bytes);
                 }
                 // refused by `ClientFormat::new`
                 Ty::Bitmap => {}

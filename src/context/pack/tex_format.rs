@@ -137,7 +137,7 @@ pub fn is_srgb(internal: u32) -> bool {
     )
 }
 
-/// The compressed internal formats, in the order of [`info`]'s table.
+/// The compressed internal formats, in the order of [`compressed_info`]'s table.
 pub const FORMATS: [u32; 16] = [
     GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
     GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
