@@ -82,7 +82,7 @@ fn draw_multisample<S: VertexSource + ?Sized>(
     materials: Option<&[[Material; 2]]>,
 ) {
     ctx.settle_draws();
-    crate::pixels::cache::flush(ctx);
+    crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let caps = &ctx.state.caps;
     if !caps.get(Cap::Multisample) {
         let Some(fb) = ctx.fb.as_mut() else { return };
@@ -142,7 +142,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
 ) {
     // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
     ctx.settle_draws();
-    crate::pixels::cache::flush(ctx);
+    crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
     let n = indices.map_or(verts.count(), |i| i.len());
     if n == 0 {

@@ -406,6 +406,6 @@ impl Context {
             depth: mask & GL_DEPTH_BUFFER_BIT != 0,
             stencil: mask & GL_STENCIL_BUFFER_BIT != 0,
         };
-        crate::pixels::blit::blit(self, src, dst, m, linear)
+        crate::context::pixel_ops::blit::blit(self, src, dst, m, linear)
     }
 }

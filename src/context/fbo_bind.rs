@@ -292,7 +292,7 @@ impl Context {
     pub fn fbo_sync(&mut self) {
         if self.fbo.draw != 0 {
             self.settle_draws();
-            crate::pixels::cache::flush(self);
+            crate::context::pixel_ops::bitmap_cache::flush(self);
             self.write_back();
         }
     }
@@ -359,7 +359,7 @@ impl Context {
     /// Makes object `name` (0: the window) the draw binding, moving the working copy.
     pub fn set_draw_framebuffer(&mut self, name: u32) {
         self.settle_draws();
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         if name == self.fbo.draw {
             return;
         }
@@ -399,16 +399,16 @@ impl Context {
             return f(self, 0);
         }
         self.settle_draws();
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         f(self, 0);
         for s in 1..SAMPLES {
             self.settle_draws();
-            crate::pixels::cache::flush(self);
+            crate::context::pixel_ops::bitmap_cache::flush(self);
             let Some(fb) = self.fb.as_mut() else { return };
             std::mem::swap(fb, &mut self.fbo.ms_planes[s - 1]);
             f(self, s);
             self.settle_draws();
-            crate::pixels::cache::flush(self);
+            crate::context::pixel_ops::bitmap_cache::flush(self);
             if let Some(fb) = self.fb.as_mut() {
                 std::mem::swap(fb, &mut self.fbo.ms_planes[s - 1]);
             }
@@ -452,7 +452,7 @@ impl Context {
             return f(self);
         }
         self.settle_draws();
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         std::mem::swap(&mut self.fb, &mut self.fbo.window);
         let planes = std::mem::take(&mut self.fbo.ms_planes);
         let r = f(self);

@@ -5,10 +5,10 @@
 use super::error::{GlError, GlResult};
 use super::state::{Cap, MatrixMode, ShadeModel};
 use super::{Context, MAX_VIEWPORT};
+use crate::context::pack::tex_format::LISTED;
 use crate::fixed_function::matrix::Mat4;
 use crate::gl::enums::*;
 use crate::gl::glext_enums::*;
-use crate::texture::compressed::LISTED;
 
 /// How a state value is typed, which decides the conversions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -334,7 +334,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_SAMPLE_COVERAGE_INVERT => b(st.legacy.sample_coverage_invert),
         GL_SAMPLE_BUFFERS => i(&[(c.draw_samples() > 0) as i64]),
         GL_SAMPLES => i(&[c.draw_samples() as i64]),
-        // The S3TC formats of Mesa's list (see `texture::compressed::LISTED`).
+        // The S3TC formats of Mesa's list (see `context::pack::tex_format::LISTED`).
         GL_NUM_COMPRESSED_TEXTURE_FORMATS => i(&[LISTED.len() as i64]),
         GL_COMPRESSED_TEXTURE_FORMATS => i(&LISTED.map(|f| f as i64)),
         GL_MAP1_GRID_DOMAIN => f(&c.eval.grid1.d),

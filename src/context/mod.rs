@@ -27,7 +27,9 @@ pub mod get;
 pub mod immediate;
 pub mod legacy_state;
 pub mod lighting_state;
+pub mod pack;
 pub mod pixel_api;
+pub mod pixel_ops;
 pub mod pixel_state;
 pub mod pixel_transfer;
 pub mod queries;
@@ -41,6 +43,7 @@ pub mod texture_ci;
 pub mod texture_compressed;
 pub mod texture_copy;
 pub mod texture_ds;
+pub mod texture_gl;
 pub mod texture_params;
 pub mod texture_spec;
 pub mod user_buffer;
@@ -143,7 +146,7 @@ pub struct Context {
     /// glPixelMap tables (in no attribute group).
     pub pixel_maps: pixel_transfer::PixelMaps,
     /// glBitmap calls not drawn yet (Mesa's bitmap cache).
-    pub bitmap_cache: crate::pixels::cache::BitmapCache,
+    pub bitmap_cache: crate::context::pixel_ops::bitmap_cache::BitmapCache,
     /// Display lists.
     pub lists: dlist::ListState,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -358,7 +361,7 @@ impl Context {
     /// glFlush/glFinish: copies the colour buffer into the user buffer if anything was drawn
     /// or cleared since the last copy (Mesa's `rb->defined`), and refreshes the depth copy.
     pub fn flush(&mut self) {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         let Some(fb) = self.window_fb() else { return };
         if !self.dirty || self.target.ptr == 0 {
             return;
@@ -535,7 +538,7 @@ impl Context {
 
     /// glScissor.
     pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<()> {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         if w < 0 || h < 0 {
             return Err(GlError::InvalidValue);
         }
@@ -571,7 +574,7 @@ impl Context {
 
     /// glClear.
     pub fn clear(&mut self, mask: u32) -> GlResult<()> {
-        crate::pixels::cache::flush(self);
+        crate::context::pixel_ops::bitmap_cache::flush(self);
         use crate::gl::enums::*;
         let all =
             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;

@@ -5,12 +5,14 @@
 
 use super::pixel_transfer::{is_index_map, map_index};
 use super::{Context, GlError, GlResult};
+use crate::context::pack::draw_image::Layout;
+use crate::context::pixel_ops::{bitmap, copy_pixels, draw_pixels};
 use crate::framebuffer::DepthFormat;
 use crate::gl::enums::*;
 use crate::gl::glext_enums::GL_DEPTH_STENCIL;
 use crate::gl::types::*;
-use crate::pixels::draw::{bitmap, copy_pixels, draw_pixels, CopyKind};
-use crate::pixels::image::{Image, Layout};
+use crate::pixels::draw::CopyKind;
+use crate::pixels::image::Image;
 
 impl Context {
     /// glDrawPixels of a `width` x `height` image of `layout`, decoded by the caller

@@ -10,8 +10,8 @@ use super::texture_spec::{
     check_level, image_target, maybe_generate, non_negative, resolve_internal, unpack_any,
 };
 use super::{Context, GlError, GlResult};
+use crate::context::pack::tex::{self as upload, ClientFormat};
 use crate::gl::types::*;
-use crate::texture::upload::{self, ClientFormat};
 use crate::texture::{BaseFormat, Level, Storage, Target, MAX_3D_LEVELS, MAX_3D_TEXTURE_SIZE};
 use std::ffi::c_void;
 

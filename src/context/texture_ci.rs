@@ -5,12 +5,13 @@
 //! like GL_RGBA/GL_UNSIGNED_BYTE data, with no further pixel transfer.
 
 use crate::context::error::GlResult;
+use crate::context::pack::draw_image::Layout;
+use crate::context::pack::tex::{self as upload, ClientFormat};
 use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::framebuffer::float_to_ubyte;
 use crate::gl::enums::{GL_COLOR_INDEX, GL_RGBA, GL_UNSIGNED_BYTE};
-use crate::pixels::image::{Layout, Pixels};
-use crate::texture::upload::{self, ClientFormat};
+use crate::pixels::image::Pixels;
 use crate::texture::{BaseFormat, Storage};
 use std::ffi::c_void;
 
@@ -52,7 +53,7 @@ pub(crate) unsafe fn unpack(
     let rgba: Option<Vec<u8>> = decoded.and_then(|img| match img.pixels {
         Pixels::Index(ix) => Some(
             ix.iter()
-                .flat_map(|&i| crate::pixels::draw::index_to_rgba(c, i).map(float_to_ubyte))
+                .flat_map(|&i| crate::context::pixel_ops::index_to_rgba(c, i).map(float_to_ubyte))
                 .collect(),
         ),
         _ => None,

@@ -95,7 +95,10 @@ fn storage(info: &Info) -> Storage {
         BaseFormat::LuminanceAlpha => [0, 0, 0, 8, 8, 0],
         _ => [4, 4, 4, 4, 0, 0],
     };
-    Storage { sizes }
+    Storage {
+        sizes,
+        encoding: info.encoding(),
+    }
 }
 
 /// Arguments of glCompressedTexSubImage2D after the target.
@@ -163,7 +166,8 @@ impl Context {
         data: Option<&[u8]>,
     ) -> GlResult<()> {
         let (t, proxy, face) = compressed_target(dims, target)?;
-        let info = compressed::info(a.internal).ok_or(GlError::InvalidEnum)?;
+        let info = crate::context::pack::tex_format::compressed_info(a.internal)
+            .ok_or(GlError::InvalidEnum)?;
         let level = check_level(a.level)?;
         if a.border != 0 {
             return Err(GlError::InvalidOperation);
@@ -212,7 +216,7 @@ impl Context {
         data: Option<&[u8]>,
     ) -> GlResult<()> {
         let (t, face) = sub_target(dims, target)?;
-        let Some(info) = compressed::info(a.format) else {
+        let Some(info) = crate::context::pack::tex_format::compressed_info(a.format) else {
             return Err(if is_generic_compressed(a.format) {
                 GlError::InvalidEnum
             } else {

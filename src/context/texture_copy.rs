@@ -6,10 +6,10 @@ use super::texture_spec::{
     store_level, sub_image_target,
 };
 use super::{Context, GlError, GlResult};
+use crate::context::pack::depth as shadow;
+use crate::context::pack::tex as upload;
 use crate::framebuffer::Framebuffer;
 use crate::gl::types::*;
-use crate::texture::shadow;
-use crate::texture::upload;
 use crate::texture::{BaseFormat, Level, Storage};
 
 /// Calls `f(i, j)` for each pixel of the GL-window rectangle `(x, y, w, h)` (y up) that

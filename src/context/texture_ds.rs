@@ -16,12 +16,13 @@
 //!   §7.4).
 
 use super::texture_copy::each_fb_pixel;
+use crate::context::pack::depth as shadow;
+use crate::context::pack::tex::ClientFormat;
 use crate::context::pixel_transfer::stencil_transfer;
 use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::gl::types::*;
-use crate::texture::upload::ClientFormat;
-use crate::texture::{shadow, TextureObject};
+use crate::texture::TextureObject;
 use libc::c_void;
 
 /// The stencil indices of a client image for a depth-stencil image (zeros unless the

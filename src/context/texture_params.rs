@@ -7,11 +7,12 @@ use super::fbo::Attachment;
 use super::state::{Cap, MAX_TEXTURE_UNITS};
 use super::texture_spec::{bind_target, check_level, image_target};
 use super::{Context, GlError, GlResult};
+use crate::context::pack::depth as shadow;
 use crate::gl::enums::*;
 use crate::gl::glext_enums::*;
 use crate::gl::types::*;
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source};
-use crate::texture::shadow::{self, CompareFunc, DepthMode, ShadowParams};
+use crate::texture::shadow::{CompareFunc, DepthMode, ShadowParams};
 use crate::texture::{BaseFormat, Filter, MipFilter, Target, Wrap, MAX_ANISOTROPY};
 
 /// GL_DEPTH_TEXTURE_MODE.
@@ -257,7 +258,8 @@ impl Context {
         };
         // the sizes of the storage format Mesa chose (upload::choose_storage)
         let is_depth = img.is_some_and(|i| i.base == BaseFormat::Depth);
-        let compressed = img.and_then(|i| crate::texture::compressed::info(i.internal_format));
+        let compressed =
+            img.and_then(|i| crate::context::pack::tex_format::compressed_info(i.internal_format));
         let size = |k: usize| img.filter(|_| !is_depth).map_or(0, |i| i.storage.sizes[k]) as f64;
         Ok(match pname {
             GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width) as f64,

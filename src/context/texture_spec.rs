@@ -10,10 +10,10 @@
 
 use super::state::PixelStore;
 use super::{Context, GlError, GlResult};
+use crate::context::pack::depth as shadow;
+use crate::context::pack::tex::{self as upload, ClientFormat, Layout};
 use crate::gl::enums::*;
 use crate::gl::types::*;
-use crate::texture::shadow;
-use crate::texture::upload::{self, ClientFormat, Layout};
 use crate::texture::{
     mipmap, BaseFormat, Level, Storage, Target, TextureObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
@@ -179,6 +179,7 @@ pub(crate) fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: 
     if base == BaseFormat::Depth {
         Storage {
             sizes: [shadow::depth_bits(internal as u32, ty), 0, 0, 0, 0, 0],
+            encoding: crate::texture::Encoding::Unorm,
         }
     } else {
         upload::choose_storage(internal, base, format, ty)
@@ -376,7 +377,7 @@ impl Context {
         if xoff < 0 || yoff < 0 || xoff as usize + w > width || yoff as usize + h > height {
             return Err(GlError::InvalidValue);
         }
-        if crate::texture::compressed::info(internal).is_some() {
+        if crate::context::pack::tex_format::compressed_info(internal).is_some() {
             // whole blocks only (the data is then stored uncompressed: see the README)
             let rect = (xoff, yoff, w as i32, h as i32);
             super::texture_compressed::check_sub_rect((width as i32, height as i32), rect)?;

@@ -6,7 +6,7 @@
 use super::families::vector_fns;
 use super::types::*;
 use super::with_ctx_list;
-use crate::pixels::raster_pos::raster_pos;
+use crate::context::pixel_ops::raster_pos::raster_pos;
 
 fn rp(v: [f32; 4]) {
     with_ctx_list(move |c| {

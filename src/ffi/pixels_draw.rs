@@ -7,8 +7,9 @@
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
+use crate::context::pack::draw_image::Layout;
 use crate::context::pixel_transfer::{is_index_map, map_index};
-use crate::pixels::image::{Layout, Pixels};
+use crate::pixels::image::Pixels;
 
 /// Reads the current unpack state from the context (default state without one).
 fn unpack_state() -> crate::context::state::PixelStore {

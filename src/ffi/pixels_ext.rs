@@ -5,7 +5,7 @@
 use super::families::vector_fns;
 use super::types::*;
 use super::with_ctx_list;
-use crate::pixels::raster_pos::window_pos;
+use crate::context::pixel_ops::raster_pos::window_pos;
 
 fn wp([x, y, z]: [f32; 3]) {
     with_ctx_list(move |c| {

@@ -9,9 +9,9 @@ use super::enums::*;
 use super::families::vector_fns;
 use super::types::*;
 use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
+use crate::context::pack::tex::{ClientFormat, Layout};
 use crate::context::state::PixelStore;
 use crate::context::GlError;
-use crate::texture::upload::{ClientFormat, Layout};
 use crate::texture::MAX_TEXTURE_SIZE;
 use libc::c_void;
 

@@ -6,9 +6,9 @@
 use super::textures::compiling;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
+use crate::context::pack::tex::{ClientFormat, Layout};
 use crate::context::state::PixelStore;
 use crate::context::texture_3d::slice_store;
-use crate::texture::upload::{ClientFormat, Layout};
 use crate::texture::MAX_3D_TEXTURE_SIZE;
 use libc::c_void;
 

@@ -6,7 +6,6 @@
 use super::types::*;
 use super::with_ctx_list;
 use crate::context::texture_compressed::{ImageArgs, SubArgs};
-use crate::texture::compressed;
 
 /// The client's blocks, copied when `size` is what the format needs for `w x h` (GL's
 /// contract then makes `data` readable for that many bytes); `None` otherwise, when the
@@ -21,7 +20,7 @@ unsafe fn copy_blocks(
     size: GLsizei,
     data: *const GLvoid,
 ) -> Option<Vec<u8>> {
-    let info = compressed::info(internal)?;
+    let info = crate::context::pack::tex_format::compressed_info(internal)?;
     if data.is_null() || size <= 0 || info.image_size(w, h) != size as u32 {
         return None;
     }

@@ -1,4 +1,6 @@
-//! glBlitFramebuffer as Mesa 22.3 and llvmpipe do it (docs/fbo-rules.md §2).
+//! glBlitFramebuffer as Mesa 22.3 and llvmpipe do it (docs/fbo-rules.md §2): the
+//! rectangle clipping, the multisample resolve and the copy; `context::pixel_ops::blit`
+//! checks the buffers and runs them.
 //!
 //! # Rectangles
 //! Mesa first clips the destination rectangle to the draw buffer ∩ scissor and the source
@@ -23,7 +25,6 @@
 //! Not followed yet: a destination rectangle that leaves the draw buffer, whose quad
 //! llvmpipe clips geometrically first (its ties can fall the other way).
 
-use crate::context::{Context, GlError, GlResult};
 use crate::fragment::span::{eval, Fused, Madd, Unfused};
 use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
@@ -49,7 +50,7 @@ fn cut(s_from: i32, s_to: i32, d_from: i32, d_to: i32, limit: i32) -> i32 {
 
 /// Clips one axis of `dst` to `[lo, hi)` and `src` to `[0, size)` as `_mesa_clip_blit`
 /// does; `false` when nothing is left.
-fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32) -> bool {
+pub fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32) -> bool {
     if d[0] == d[1] || (d[0] <= lo && d[1] <= lo) || (d[0] >= hi && d[1] >= hi) {
         return false;
     }
@@ -78,131 +79,11 @@ fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32) ->
     true
 }
 
-/// glBlitFramebuffer after argument checks: `src`/`dst` are (x0, y0, x1, y1) in GL window
-/// coordinates (y up).
-pub fn blit(
-    ctx: &mut Context,
-    src: [i32; 4],
-    dst: [i32; 4],
-    mask: BlitMask,
-    linear: bool,
-) -> GlResult<()> {
-    ctx.check_draw_framebuffer()?;
-    ctx.check_read_framebuffer()?;
-    // Mesa's blit_framebuffer: with a multisample buffer on either side the rectangles
-    // must have the same size (offsets and mirroring are allowed).
-    let (read_ms, draw_ms) = (ctx.read_samples() > 0, ctx.draw_samples() > 0);
-    if (read_ms || draw_ms)
-        && ((src[2] - src[0]).abs() != (dst[2] - dst[0]).abs()
-            || (src[3] - src[1]).abs() != (dst[3] - dst[1]).abs())
-    {
-        return Err(GlError::InvalidOperation);
-    }
-    // Every sample plane of a multisample source (a resolve averages them).
-    let mut planes = Vec::new();
-    let mut sfb = if read_ms {
-        planes = ctx.read_planes().unwrap_or_default();
-        for p in &mut planes {
-            p.resolve();
-        }
-        if planes.len() != crate::context::fbo::SAMPLES {
-            return Ok(());
-        }
-        resolve_samples(&planes)
-    } else {
-        // Reading and drawing one buffer: read a snapshot.
-        match ctx.read_framebuffer_copy() {
-            Some(f) => f,
-            None => match ctx.fb.as_ref() {
-                Some(f) => f.clone(),
-                None => return Ok(()),
-            },
-        }
-    };
-    sfb.resolve();
-    let Some(dfb) = ctx.fb.as_ref() else {
-        return Ok(());
-    };
-    if mask.depth && (sfb.depth.is_empty() || dfb.depth.is_empty()) {
-        return Ok(());
-    }
-    if mask.depth && sfb.depth_format != dfb.depth_format {
-        return Err(GlError::InvalidOperation);
-    }
-    // The draw buffer ∩ scissor in GL coordinates (Mesa's _Xmin.._Ymax).
-    let Some(region) = ctx.draw_region() else {
-        return Ok(());
-    };
-    let dh = dfb.height as i32;
-    let (sw, sh) = (sfb.width as i32, sfb.height as i32);
-    let gl_rows = |r: [i64; 4]| {
-        if dfb.y_flip {
-            (dh - r[3] as i32, dh - r[1] as i32)
-        } else {
-            (r[1] as i32, r[3] as i32)
-        }
-    };
-    let (ylo, yhi) = gl_rows(region);
-    let (mut cs, mut cd) = ([src[0], src[2]], [dst[0], dst[2]]);
-    let (mut ct, mut ce) = ([src[1], src[3]], [dst[1], dst[3]]);
-    if !clip_axis(&mut cs, &mut cd, region[0] as i32, region[2] as i32, sw)
-        || !clip_axis(&mut ct, &mut ce, ylo, yhi, sh)
-    {
-        return Ok(());
-    }
-    // The clipped destination, as a scissor in memory rows.
-    let flip = |y: i32, h: i32, f: bool| if f { h - y } else { y };
-    let (sy0, sy1) = (flip(ce[0], dh, dfb.y_flip), flip(ce[1], dh, dfb.y_flip));
-    let scissor = [
-        cd[0].min(cd[1]) as i64,
-        sy0.min(sy1) as i64,
-        cd[0].max(cd[1]) as i64,
-        sy0.max(sy1) as i64,
-    ];
-    // The unclipped rectangles in memory rows, right side up, destination positive.
-    let (mut dy0, mut dy1) = (flip(dst[1], dh, dfb.y_flip), flip(dst[3], dh, dfb.y_flip));
-    let (mut sy0, mut sy1) = (flip(src[1], sh, sfb.y_flip), flip(src[3], sh, sfb.y_flip));
-    if sy0 > sy1 && dy0 > dy1 {
-        (sy0, sy1, dy0, dy1) = (sy1, sy0, dy1, dy0);
-    }
-    let (bx, sx, bw, swid) = if dst[0] < dst[2] {
-        (dst[0], src[0], dst[2] - dst[0], src[2] - src[0])
-    } else {
-        (dst[2], src[2], dst[0] - dst[2], src[0] - src[2])
-    };
-    let (by, sy, bh, shgt) = if dy0 < dy1 {
-        (dy0, sy0, dy1 - dy0, sy1 - sy0)
-    } else {
-        (dy1, sy1, dy0 - dy1, sy0 - sy1)
-    };
-    let job = Job {
-        dst: [bx, by, bw, bh],
-        src: [sx, sy, swid, shgt],
-        scissor,
-        normalized: !sfb.y_flip,
-        linear: linear && (bw != swid.abs() || bh != shgt.abs()),
-        fma: crate::geometry::cpu_has_fma(),
-    };
-    // Into a multisample object: sample for sample from a multisample source, else every
-    // sample gets the source's value.
-    ctx.for_each_sample(|c, s| {
-        let src = if draw_ms && read_ms { &planes[s] } else { &sfb };
-        if let Some(fb) = c.fb.as_mut() {
-            fb.resolve();
-            fb.uniform_color = None;
-            job.run(src, fb, mask);
-        }
-    });
-    ctx.dirty = true;
-    ctx.fbo.drawn = true;
-    Ok(())
-}
-
 /// The single-sample image a multisample resolve reads: per pixel and channel llvmpipe's
 /// resolve shader (`util_make_fs_msaa_resolve`): `sum = 0; sum += s_i` in sample order
 /// in f32, each sample `u · f32(1/255)`, then `round_half_even(sum · 0.25 · 255)`. Depth
 /// and stencil are sample 0's.
-fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
+pub fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
     let mut out = planes[0].clone();
     let scale = 1.0f32 / 255.0;
     for (i, px) in out.color.iter_mut().enumerate() {
@@ -219,23 +100,24 @@ fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
 }
 
 /// One blit in memory coordinates.
-struct Job {
+pub struct Job {
     /// Destination box: x, y, width, height (positive).
-    dst: [i32; 4],
+    pub dst: [i32; 4],
     /// Source box: x, y, width, height (negative: mirrored).
-    src: [i32; 4],
+    pub src: [i32; 4],
     /// Pixels that may be written, `[x0, y0, x1, y1)`.
-    scissor: [i64; 4],
+    pub scissor: [i64; 4],
     /// Texture coordinates are normalised (an object's image) or texel units (window).
-    normalized: bool,
+    pub normalized: bool,
     /// Scaled GL_LINEAR.
-    linear: bool,
+    pub linear: bool,
     /// Whether llvmpipe's multiply-adds fuse on this CPU level.
-    fma: bool,
+    pub fma: bool,
 }
 
 impl Job {
-    fn run(&self, s: &Framebuffer, d: &mut Framebuffer, mask: BlitMask) {
+    /// Copies the masked buffers of `s` into `d`.
+    pub fn run(&self, s: &Framebuffer, d: &mut Framebuffer, mask: BlitMask) {
         let sc = self.scissor;
         let [bx, by, bw, bh] = self.dst;
         let [sx, sy, sw, sh] = self.src;

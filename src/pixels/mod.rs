@@ -1,12 +1,11 @@
-//! Pixel rectangles and the raster position: glRasterPos/glWindowPos ([`raster_pos`],
-//! computed in C arithmetic on the CPU, as Mesa's `main/rastpos.c` does for fixed function,
-//! not through the vertex program); glDrawPixels, glCopyPixels and glBitmap drawn as Mesa's
-//! state tracker draws them ([`draw`]: decoded client images in [`image`], the textured
-//! rectangle in [`rect`], the bitmap cache in [`cache`]); and glBlitFramebuffer ([`blit`]).
+//! Pixel rectangles in the pipeline: the textured quad of glDrawPixels, glCopyPixels and
+//! glBitmap with its zoom and per-fragment operations ([`rect`], [`draw`]), the decoded
+//! client images they draw ([`image`]) and glBlitFramebuffer's clipping, resolve and copy
+//! ([`blit`]). Everything here takes plain values; reading the GL state (raster position,
+//! pixel transfer, the bitmap cache) is `context::pixel_ops`'s work, and decoding client
+//! memory `context::pack`'s.
 
 pub mod blit;
-pub mod cache;
 pub mod draw;
 pub mod image;
-pub mod raster_pos;
 pub mod rect;

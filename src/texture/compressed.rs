@@ -32,8 +32,7 @@
 //! as `max(i8 · f32(1/127), −1)` (R8G8B8A8_SNORM, [`snorm_table`]). The sRGB forms are
 //! decoded to bytes, then linearised like the other sRGB textures ([`super::srgb`]).
 
-use super::BaseFormat;
-use crate::gl::glext_enums::*;
+use super::{BaseFormat, Encoding};
 use std::sync::OnceLock;
 
 /// A compressed internal format softgl supports.
@@ -67,6 +66,17 @@ pub struct Info {
 }
 
 impl Info {
+    /// How the decoded bytes are read when sampled.
+    pub fn encoding(&self) -> Encoding {
+        if self.srgb {
+            Encoding::SrgbBlocks
+        } else if self.signed {
+            Encoding::Snorm
+        } else {
+            Encoding::Unorm
+        }
+    }
+
     /// Bytes per 4x4 block.
     pub fn block_bytes(&self) -> usize {
         match self.format {
@@ -94,61 +104,6 @@ impl Info {
             .wrapping_mul(blocks(h))
             .wrapping_mul(self.block_bytes() as u32)
     }
-}
-
-/// The compressed internal formats, in the order of [`info`]'s table.
-pub const FORMATS: [u32; 16] = [
-    GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
-    GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
-    GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
-    GL_COMPRESSED_RGBA_S3TC_DXT5_EXT,
-    GL_COMPRESSED_SRGB_S3TC_DXT1_EXT,
-    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT,
-    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT,
-    GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
-    GL_COMPRESSED_RED_RGTC1,
-    GL_COMPRESSED_SIGNED_RED_RGTC1,
-    GL_COMPRESSED_RG_RGTC2,
-    GL_COMPRESSED_SIGNED_RG_RGTC2,
-    GL_COMPRESSED_LUMINANCE_LATC1_EXT,
-    GL_COMPRESSED_SIGNED_LUMINANCE_LATC1_EXT,
-    GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT,
-    GL_COMPRESSED_SIGNED_LUMINANCE_ALPHA_LATC2_EXT,
-];
-
-/// GL_COMPRESSED_TEXTURE_FORMATS: Mesa lists S3TC's DXT1 RGB, DXT3 and DXT5 (never RGBA
-/// DXT1, RGTC, LATC or sRGB; its FXT1 and ETC2 entries are formats softgl lacks).
-pub const LISTED: [u32; 3] = [
-    GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
-    GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
-    GL_COMPRESSED_RGBA_S3TC_DXT5_EXT,
-];
-
-/// The format behind a compressed internal format enum, if softgl supports it.
-pub fn info(internal: u32) -> Option<Info> {
-    let i = FORMATS.iter().position(|&f| f == internal)?;
-    let s3tc = [
-        Format::Dxt1Rgb,
-        Format::Dxt1Rgba,
-        Format::Dxt3,
-        Format::Dxt5,
-    ];
-    Some(if i < 8 {
-        Info {
-            format: s3tc[i % 4],
-            srgb: i >= 4,
-            signed: false,
-            luminance: false,
-        }
-    } else {
-        let k = i - 8;
-        Info {
-            format: if k % 4 < 2 { Format::One } else { Format::Two },
-            srgb: false,
-            signed: k % 2 == 1,
-            luminance: k >= 4,
-        }
-    })
 }
 
 /// A 565 colour expanded to 8 bits a channel by bit replication.
@@ -337,7 +292,12 @@ mod tests {
 
     #[test]
     fn dxt1_modes() {
-        let i = info(GL_COMPRESSED_RGBA_S3TC_DXT1_EXT).unwrap();
+        let i = Info {
+            format: Format::Dxt1Rgba,
+            srgb: false,
+            signed: false,
+            luminance: false,
+        };
         // color0 = white > color1 = black: thirds, index 2 and 3
         let t = decode_block(&i, &[0xff, 0xff, 0, 0, 0b1110_0100, 0, 0, 0]);
         assert_eq!(t[0], [255, 255, 255, 255]);
@@ -352,7 +312,12 @@ mod tests {
 
     #[test]
     fn rgtc_signed_modes() {
-        let i = info(GL_COMPRESSED_SIGNED_RED_RGTC1).unwrap();
+        let i = Info {
+            format: Format::One,
+            srgb: false,
+            signed: true,
+            luminance: false,
+        };
         // a0 = -128 <= a1 = 127: codes 6 and 7 are -127 and 127
         let codes: u64 = 6 | 7 << 3 | 1 << 6;
         let mut b = [0x80u8, 0x7f, 0, 0, 0, 0, 0, 0];

@@ -18,8 +18,6 @@
 //! scale combinations of ADD, ADD_SIGNED, SUBTRACT, INTERPOLATE and MODULATE on one unit;
 //! a few two-unit chains where PREVIOUS feeds ADD_SIGNED still round differently.
 
-use crate::gl::enums::*;
-
 /// GL_TEXTURE_ENV_MODE.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EnvMode {
@@ -35,32 +33,6 @@ pub enum EnvMode {
     Add,
     /// GL_COMBINE.
     Combine,
-}
-
-impl EnvMode {
-    /// From a GL enum.
-    pub fn from_gl(e: u32) -> Option<EnvMode> {
-        Some(match e {
-            GL_REPLACE => EnvMode::Replace,
-            GL_MODULATE => EnvMode::Modulate,
-            GL_DECAL => EnvMode::Decal,
-            GL_BLEND => EnvMode::Blend,
-            GL_ADD => EnvMode::Add,
-            GL_COMBINE => EnvMode::Combine,
-            _ => return None,
-        })
-    }
-    /// To the GL enum.
-    pub fn to_gl(self) -> u32 {
-        match self {
-            EnvMode::Replace => GL_REPLACE,
-            EnvMode::Modulate => GL_MODULATE,
-            EnvMode::Decal => GL_DECAL,
-            EnvMode::Blend => GL_BLEND,
-            EnvMode::Add => GL_ADD,
-            EnvMode::Combine => GL_COMBINE,
-        }
-    }
 }
 
 /// GL_COMBINE_RGB / GL_COMBINE_ALPHA function.
@@ -85,33 +57,6 @@ pub enum CombineFn {
 }
 
 impl CombineFn {
-    /// From a GL enum; the DOT3 functions only for RGB.
-    pub fn from_gl(e: u32, rgb: bool) -> Option<CombineFn> {
-        Some(match e {
-            GL_REPLACE => CombineFn::Replace,
-            GL_MODULATE => CombineFn::Modulate,
-            GL_ADD => CombineFn::Add,
-            GL_ADD_SIGNED => CombineFn::AddSigned,
-            GL_INTERPOLATE => CombineFn::Interpolate,
-            GL_SUBTRACT => CombineFn::Subtract,
-            GL_DOT3_RGB if rgb => CombineFn::Dot3Rgb,
-            GL_DOT3_RGBA if rgb => CombineFn::Dot3Rgba,
-            _ => return None,
-        })
-    }
-    /// To the GL enum.
-    pub fn to_gl(self) -> u32 {
-        match self {
-            CombineFn::Replace => GL_REPLACE,
-            CombineFn::Modulate => GL_MODULATE,
-            CombineFn::Add => GL_ADD,
-            CombineFn::AddSigned => GL_ADD_SIGNED,
-            CombineFn::Interpolate => GL_INTERPOLATE,
-            CombineFn::Subtract => GL_SUBTRACT,
-            CombineFn::Dot3Rgb => GL_DOT3_RGB,
-            CombineFn::Dot3Rgba => GL_DOT3_RGBA,
-        }
-    }
     fn num_args(self) -> usize {
         match self {
             CombineFn::Replace => 1,
@@ -142,32 +87,6 @@ pub enum Source {
     Previous,
 }
 
-impl Source {
-    /// From a GL enum (`units` = number of texture units for GL_TEXTUREn).
-    pub fn from_gl(e: u32, units: usize) -> Option<Source> {
-        Some(match e {
-            GL_TEXTURE => Source::Texture,
-            GL_CONSTANT => Source::Constant,
-            GL_PRIMARY_COLOR => Source::PrimaryColor,
-            GL_PREVIOUS => Source::Previous,
-            _ if e >= GL_TEXTURE0 && ((e - GL_TEXTURE0) as usize) < units => {
-                Source::TextureN((e - GL_TEXTURE0) as u8)
-            }
-            _ => return None,
-        })
-    }
-    /// To the GL enum.
-    pub fn to_gl(self) -> u32 {
-        match self {
-            Source::Texture => GL_TEXTURE,
-            Source::TextureN(n) => GL_TEXTURE0 + n as u32,
-            Source::Constant => GL_CONSTANT,
-            Source::PrimaryColor => GL_PRIMARY_COLOR,
-            Source::Previous => GL_PREVIOUS,
-        }
-    }
-}
-
 /// GL_OPERANDn_RGB / GL_OPERANDn_ALPHA.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Operand {
@@ -179,28 +98,6 @@ pub enum Operand {
     SrcAlpha,
     /// GL_ONE_MINUS_SRC_ALPHA.
     OneMinusSrcAlpha,
-}
-
-impl Operand {
-    /// From a GL enum; alpha operands may only be the alpha ones.
-    pub fn from_gl(e: u32, alpha: bool) -> Option<Operand> {
-        Some(match e {
-            GL_SRC_COLOR if !alpha => Operand::SrcColor,
-            GL_ONE_MINUS_SRC_COLOR if !alpha => Operand::OneMinusSrcColor,
-            GL_SRC_ALPHA => Operand::SrcAlpha,
-            GL_ONE_MINUS_SRC_ALPHA => Operand::OneMinusSrcAlpha,
-            _ => return None,
-        })
-    }
-    /// To the GL enum.
-    pub fn to_gl(self) -> u32 {
-        match self {
-            Operand::SrcColor => GL_SRC_COLOR,
-            Operand::OneMinusSrcColor => GL_ONE_MINUS_SRC_COLOR,
-            Operand::SrcAlpha => GL_SRC_ALPHA,
-            Operand::OneMinusSrcAlpha => GL_ONE_MINUS_SRC_ALPHA,
-        }
-    }
 }
 
 /// The GL texture-environment state of one unit.

@@ -71,7 +71,7 @@ pub fn generate(levels: &mut [Option<Level>], base: usize, max_level: usize) {
             return;
         }
         // sRGB levels: decoded, filtered in float and encoded (see `srgb`)
-        let next = if super::srgb::is_srgb(src.internal_format) {
+        let next = if src.storage.encoding == super::Encoding::Srgb {
             super::srgb::downsample(src, super::sample::has_fma())
         } else {
             downsample(src)

@@ -39,7 +39,6 @@ pub mod upload;
 pub mod volume;
 pub mod wrap;
 
-use crate::context::{GlError, GlResult};
 use crate::pipe::MAX_TEXTURE_UNITS;
 use env::{Combine, TexEnv};
 use lod::LodParams;
@@ -138,14 +137,32 @@ impl BaseFormat {
     }
 }
 
-/// The storage format Mesa chose for an image, as the component sizes
-/// glGetTexLevelParameter reports (see [`upload::choose_storage`]). Texels are still kept
+/// The storage format Mesa chose for an image (by `context::pack::tex_format`), as the
+/// component sizes glGetTexLevelParameter reports and the encoding. Texels are still kept
 /// as RGBA8; components of fewer than 8 bits are quantised on upload and expanded back by
 /// bit replication, which is what llvmpipe samples and glGetTexImage returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Storage {
     /// GL_TEXTURE_RED_SIZE, GREEN, BLUE, ALPHA, LUMINANCE, INTENSITY.
     pub sizes: [u8; 6],
+    /// How the stored bytes are read.
+    pub encoding: Encoding,
+}
+
+/// How the bytes of a stored texel are read when sampled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Encoding {
+    /// Unsigned normalized bytes.
+    #[default]
+    Unorm,
+    /// sRGB colour of an uncompressed image: linearised when sampled, and mipmaps are
+    /// filtered in linear space (see [`srgb`]).
+    Srgb,
+    /// sRGB colour of a compressed image: linearised when sampled; mipmaps filter the
+    /// stored bytes.
+    SrgbBlocks,
+    /// Signed bytes (signed RGTC/LATC, see [`compressed`]).
+    Snorm,
 }
 
 impl Storage {
@@ -161,7 +178,10 @@ impl Storage {
             B::Rgba => [8, 8, 8, 8, 0, 0],
             B::Depth => [24, 0, 0, 0, 0, 0],
         };
-        Storage { sizes }
+        Storage {
+            sizes,
+            encoding: Encoding::Unorm,
+        }
     }
     /// GL_TEXTURE_DEPTH_SIZE of a depth image (kept in the first slot, whose colour size
     /// a depth image does not have).
@@ -530,25 +550,6 @@ impl TextureState {
         out
     }
 
-    /// glBindTexture on `unit`.
-    pub fn bind(&mut self, unit: usize, target: Target, name: u32) -> GlResult<()> {
-        if name != 0 {
-            match self.objects.get(&name).map(|o| o.target) {
-                Some(Some(t)) if t != target => return Err(GlError::InvalidOperation),
-                Some(Some(_)) => {}
-                Some(None) => {
-                    *self.objects.get_mut(&name).expect("present") =
-                        TextureObject::new(Some(target));
-                }
-                None => {
-                    self.objects.insert(name, TextureObject::new(Some(target)));
-                }
-            }
-        }
-        self.units[unit].bound[target.index()] = name;
-        Ok(())
-    }
-
     /// glDeleteTextures: deletes the objects and rebinds 0 wherever they were bound.
     pub fn delete(&mut self, names: &[u32]) {
         for &name in names {
@@ -639,7 +640,7 @@ impl TextureState {
             bits: base_img.storage.depth_bits(),
         });
         // sRGB and signed textures: decoded per texel, then filtered on the float path
-        let decode = texel_decode(base_img.internal_format);
+        let decode = texel_decode(base_img.storage.encoding);
         // a depth texture is always sampled on the float path
         let aos = depth.is_none()
             && decode.is_none()
@@ -711,15 +712,14 @@ pub struct PlanExt<'a> {
     pub decode: Option<[&'static [f32; 256]; 2]>,
 }
 
-/// The per-byte decode tables of an image's internal format ([`PlanExt::decode`]).
-fn texel_decode(internal: u32) -> Option<[&'static [f32; 256]; 2]> {
-    let c = compressed::info(internal);
-    if srgb::is_srgb(internal) || c.is_some_and(|c| c.srgb) {
-        Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
-    } else if c.is_some_and(|c| c.signed) {
-        Some([compressed::snorm_table(); 2])
-    } else {
-        None
+/// The per-byte decode tables of an image's encoding ([`PlanExt::decode`]).
+fn texel_decode(encoding: Encoding) -> Option<[&'static [f32; 256]; 2]> {
+    match encoding {
+        Encoding::Srgb | Encoding::SrgbBlocks => {
+            Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
+        }
+        Encoding::Snorm => Some([compressed::snorm_table(); 2]),
+        Encoding::Unorm => None,
     }
 }
 
@@ -913,23 +913,5 @@ mod tests {
         o.levels[1] = level(2, 2);
         o.levels[2] = level(2, 1);
         assert_eq!(o.complete_range(), None);
-    }
-
-    #[test]
-    fn bind_target_mismatch_and_delete_unbinds() {
-        let mut ts = TextureState::default();
-        let n = ts.gen(2);
-        assert!(!ts.is_texture(n[0]));
-        ts.bind(0, Target::Tex2D, n[0]).unwrap();
-        assert!(ts.is_texture(n[0]));
-        assert_eq!(
-            ts.bind(1, Target::Tex1D, n[0]),
-            Err(GlError::InvalidOperation)
-        );
-        ts.bind(3, Target::Tex2D, n[0]).unwrap();
-        ts.delete(&[n[0]]);
-        assert_eq!(ts.units[0].bound[1], 0);
-        assert_eq!(ts.units[3].bound[1], 0);
-        assert!(!ts.is_texture(n[0]));
     }
 }

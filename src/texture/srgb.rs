@@ -4,8 +4,8 @@
 //! # Storage and readback
 //! The bytes are stored as given (8 bits a channel, like GL_RGB8 …; float data is stored
 //! linearly, `round_half_even(v·255)`, measured) and glGetTexImage returns them undecoded
-//! (Mesa's `_mesa_get_srgb_format_linear`; measured also for GL_FLOAT). The image keeps its
-//! sRGB internal format; [`is_srgb`] tells.
+//! (Mesa's `_mesa_get_srgb_format_linear`; measured also for GL_FLOAT). The image's
+//! storage says so ([`super::Encoding::Srgb`], set from the internal format by the state).
 //!
 //! # Sampling (`lp_bld_format_srgb.c`, `lp_build_srgb_to_linear`)
 //! sRGB formats never take llvmpipe's 8-bit AoS path (`util_format_fits_8unorm` is false
@@ -28,26 +28,7 @@
 //! approximate `rsqrtps` (used here too, so the result matches llvmpipe on the same CPU);
 //! then `round_half_even`. Alpha is `round_half_even(clamp(a)·255)`.
 
-use crate::gl::glext_enums::{
-    GL_SLUMINANCE, GL_SLUMINANCE8, GL_SLUMINANCE8_ALPHA8, GL_SLUMINANCE_ALPHA, GL_SRGB, GL_SRGB8,
-    GL_SRGB8_ALPHA8, GL_SRGB_ALPHA,
-};
 use std::sync::OnceLock;
-
-/// Whether a glTexImage internal format is an (uncompressed) sRGB one.
-pub fn is_srgb(internal: u32) -> bool {
-    matches!(
-        internal,
-        GL_SRGB
-            | GL_SRGB8
-            | GL_SRGB_ALPHA
-            | GL_SRGB8_ALPHA8
-            | GL_SLUMINANCE
-            | GL_SLUMINANCE8
-            | GL_SLUMINANCE_ALPHA
-            | GL_SLUMINANCE8_ALPHA8
-    )
-}
 
 /// llvmpipe's multiply-add: fused or with two roundings.
 #[inline(always)]

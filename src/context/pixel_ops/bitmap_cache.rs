@@ -16,8 +16,8 @@
 //! - Overlapping bitmaps in one cache light each pixel once (the mask is a union).
 //! - Bitmaps larger than the window are drawn at once, without drawing the cache first.
 
-use super::draw::draw_mask;
-use crate::context::state::Cap;
+use super::draw_mask;
+use crate::context::state::{Cap, State};
 use crate::context::Context;
 use crate::pipe::MAX_TEXTURE_UNITS;
 
@@ -32,7 +32,7 @@ pub struct BitmapCache {
     /// Bitmaps not drawn yet.
     pub pending: Option<Pending>,
     /// The state of the last glBitmap call.
-    pub state: Option<Box<crate::context::state::State>>,
+    pub state: Option<Box<State>>,
 }
 
 /// The pending bitmaps.
