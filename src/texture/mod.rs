@@ -35,6 +35,7 @@ pub mod mipmap;
 pub mod sample;
 pub mod shadow;
 pub mod srgb;
+pub mod unit;
 pub mod upload;
 pub mod volume;
 pub mod wrap;
@@ -640,7 +641,7 @@ impl TextureState {
             bits: base_img.storage.depth_bits(),
         });
         // sRGB and signed textures: decoded per texel, then filtered on the float path
-        let decode = texel_decode(base_img.storage.encoding);
+        let decode = unit::texel_decode(base_img.storage.encoding);
         // a depth texture is always sampled on the float path
         let aos = depth.is_none()
             && decode.is_none()
@@ -699,219 +700,9 @@ impl TextureState {
     }
 }
 
-/// What a unit's plan adds for the targets beyond 1D/2D.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct PlanExt<'a> {
-    /// The target's sampling kind.
-    pub kind: ExtKind<'a>,
-    /// A depth texture's comparison and mode.
-    pub depth: Option<shadow::DepthPlan>,
-    /// The float value of each byte of R, G, B (`[0]`) and of A (`[1]`) for textures
-    /// that are not unorm8: sRGB ones (see [`srgb`]) and signed ones (see
-    /// [`compressed`]); such a plan is never `aos`.
-    pub decode: Option<[&'static [f32; 256]; 2]>,
-}
-
-/// The per-byte decode tables of an image's encoding ([`PlanExt::decode`]).
-fn texel_decode(encoding: Encoding) -> Option<[&'static [f32; 256]; 2]> {
-    match encoding {
-        Encoding::Srgb | Encoding::SrgbBlocks => {
-            Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
-        }
-        Encoding::Snorm => Some([compressed::snorm_table(); 2]),
-        Encoding::Unorm => None,
-    }
-}
-
-/// The sampling kind of a unit's target.
-#[derive(Clone, Copy, Debug, Default)]
-pub enum ExtKind<'a> {
-    /// GL_TEXTURE_1D / GL_TEXTURE_2D: (s, t) only.
-    #[default]
-    Flat,
-    /// GL_TEXTURE_3D.
-    Volume(volume::VolumePlan<'a>),
-    /// GL_TEXTURE_CUBE_MAP: the six faces' levels.
-    Cube(cube::Faces<'a>),
-}
-
-/// Everything sampling and the environment of one unit need for one draw.
-#[derive(Clone, Debug)]
-pub struct UnitPlan<'a> {
-    /// All level slots of the texture; `first..=last` are present and consistent.
-    pub levels: &'a [Option<Level>],
-    /// Base level.
-    pub first: usize,
-    /// Last level sampling may use.
-    pub last: usize,
-    /// 1 for GL_TEXTURE_1D, 2 for GL_TEXTURE_2D.
-    pub dims: u8,
-    /// Minification image filter.
-    pub min_filter: Filter,
-    /// Magnification filter.
-    pub mag_filter: Filter,
-    /// Mipmap filter.
-    pub mip_filter: MipFilter,
-    /// Wrap mode of s (after llvmpipe's GL_CLAMP→CLAMP_TO_EDGE for nearest-only sampling).
-    pub wrap_s: Wrap,
-    /// Wrap mode of t (REPEAT for 1D, unused).
-    pub wrap_t: Wrap,
-    /// Border colour after the base-format swizzle.
-    pub border: [f32; 4],
-    /// llvmpipe's 8-bit fixed-point AoS path (else the float SoA path).
-    pub aos: bool,
-    /// Whether the level-0 width and height are powers of two (selects the REPEAT code).
-    pub pot: [bool; 2],
-    /// Max anisotropy (1 = off).
-    pub max_anisotropy: f32,
-    /// LOD bias/clamp parameters.
-    pub lod: LodParams,
-    /// Whether a LOD must be computed at all (false: min == mag and no mipmapping).
-    pub needs_lod: bool,
-    /// Base internal format of the base level.
-    pub base_format: BaseFormat,
-    /// The texture environment in combiner form.
-    pub env: Combine,
-    /// The fast path's form of this unit (8-bit 2D sampling with a simple environment),
-    /// when it qualifies (see [`fast`]).
-    pub fast: Option<fast::FastEnv>,
-    /// Whether float lerps fuse (llvmpipe uses `llvm.fmuladd`, fused on FMA CPUs).
-    pub fma: bool,
-    /// 3D and cube-map sampling.
-    pub ext: PlanExt<'a>,
-}
-
-impl UnitPlan<'_> {
-    /// The image of `level` (which must be in `first..=last`).
-    #[inline]
-    pub fn image(&self, level: usize) -> &Level {
-        self.levels[level].as_ref().expect("complete texture")
-    }
-
-    /// The LOD of a 2x2 quad (TL, TR, BL, BR, y-down), computed only when the filters
-    /// need it (magnification at the base level otherwise).
-    #[inline(always)]
-    pub fn quad_lod(&self, s: [f32; 4], t: [f32; 4]) -> Lod {
-        if !self.needs_lod {
-            return Lod::MAG;
-        }
-        let b = self.image(self.first);
-        let (w, h) = (b.width as f32, b.height as f32);
-        lod::compute(&self.lod, self.mip_filter, self.dims, w, h, s, t)
-    }
-
-    /// Samples a 2x2 quad (TL, TR, BL, BR in y-down order) with one LOD computed from
-    /// TL/TR/BL, as llvmpipe does.
-    #[inline(always)]
-    #[allow(clippy::needless_range_loop)]
-    pub fn sample_quad(&self, s: [f32; 4], t: [f32; 4]) -> [[f32; 4]; 4] {
-        if self.max_anisotropy > 1.0 {
-            return sample::sample_quad_aniso(self, s, t);
-        }
-        let lod = self.quad_lod(s, t);
-        let mut out = [[0.0f32; 4]; 4];
-        for i in 0..4 {
-            out[i] = self.sample_one(s[i], t[i], lod);
-        }
-        out
-    }
-
-    /// Whether sampling reads the r coordinate (3D and cube-map textures).
-    #[inline(always)]
-    pub fn needs_r(&self) -> bool {
-        !matches!(self.ext.kind, ExtKind::Flat) || self.ext.depth.is_some()
-    }
-
-    /// [`UnitPlan::sample_quad`] with r (3D textures, cube maps).
-    #[inline(always)]
-    pub fn sample_quad_str(&self, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> [[f32; 4]; 4] {
-        if let (Some(d), ExtKind::Flat) = (&self.ext.depth, &self.ext.kind) {
-            return shadow::sample_quad(self, d, s, t, r);
-        }
-        match &self.ext.kind {
-            ExtKind::Flat => self.sample_quad(s, t),
-            ExtKind::Volume(v) => volume::sample_quad(self, v, s, t, r),
-            ExtKind::Cube(f) => cube::sample_quad(self, f, s, t, r),
-        }
-    }
-
-    /// Samples one coordinate with a given LOD.
-    #[inline(always)]
-    pub fn sample_one(&self, s: f32, t: f32, lod: Lod) -> [f32; 4] {
-        sample::sample(self, s, t, lod)
-    }
-
-    /// Applies the unit's texture environment: `frag` is the primary colour, `tex` this
-    /// unit's texture value, `prev` the previous unit's output (the primary colour on the
-    /// first enabled unit).
-    #[inline]
-    pub fn env(&self, frag: [f32; 4], tex: [f32; 4], prev: [f32; 4]) -> [f32; 4] {
-        self.env.apply(frag, tex, prev, &[])
-    }
-
-    /// As [`UnitPlan::env`] with the values of all units for GL_TEXTUREn sources
-    /// (ARB_texture_env_crossbar); `textures[n]` of a disabled unit should be zero.
-    #[inline]
-    pub fn env_crossbar(
-        &self,
-        frag: [f32; 4],
-        tex: [f32; 4],
-        prev: [f32; 4],
-        textures: &[[f32; 4]],
-    ) -> [f32; 4] {
-        self.env.apply(frag, tex, prev, textures)
-    }
-}
+pub use unit::{ExtKind, PlanExt, UnitPlan};
 
 pub use lod::Lod;
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn level(w: usize, h: usize) -> Option<Level> {
-        Some(Level {
-            width: w,
-            height: h,
-            internal_format: 0x1908,
-            base: BaseFormat::Rgba,
-            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
-            texels: vec![[0; 4]; w * h],
-            blocks: None,
-        })
-    }
-
-    #[test]
-    fn default_min_filter_makes_single_level_incomplete() {
-        let mut o = TextureObject::new(Some(Target::Tex2D));
-        o.levels[0] = level(4, 4);
-        assert_eq!(o.complete_range(), None);
-        o.params.mip_filter = MipFilter::None;
-        assert_eq!(o.complete_range(), Some((0, 0)));
-    }
-
-    #[test]
-    fn full_chain_is_complete_and_npot_halves_floor() {
-        let mut o = TextureObject::new(Some(Target::Tex2D));
-        o.levels[0] = level(5, 3);
-        o.levels[1] = level(2, 1);
-        assert_eq!(o.complete_range(), None);
-        o.levels[2] = level(1, 1);
-        assert_eq!(o.complete_range(), Some((0, 2)));
-        o.params.max_level = 1;
-        assert_eq!(o.complete_range(), Some((0, 1)));
-        o.params.base_level = 2;
-        assert_eq!(o.complete_range(), None);
-        o.params.max_level = 5;
-        assert_eq!(o.complete_range(), Some((2, 2)));
-    }
-
-    #[test]
-    fn wrong_level_size_is_incomplete() {
-        let mut o = TextureObject::new(Some(Target::Tex2D));
-        o.levels[0] = level(4, 4);
-        o.levels[1] = level(2, 2);
-        o.levels[2] = level(2, 1);
-        assert_eq!(o.complete_range(), None);
-    }
-}
+mod tests;
