@@ -117,16 +117,7 @@ pub fn de_casteljau_surf(
                 a[j] = d[at(1, j)] - d[at(0, j)];
                 p[j] = us * d[at(0, j)] + u * d[at(1, j)];
             }
-            while nv > 2 {
-                for j in 0..nv - 1 {
-                    a[j] = vs * a[j] + v * a[j + 1];
-                    p[j] = vs * p[j] + v * p[j + 1];
-                }
-                nv -= 1;
-            }
-            dv[k] = p[1] - p[0];
-            du[k] = vs * a[0] + v * a[1];
-            out[k] = vs * p[0] + v * p[1];
+            (dv[k], du[k], out[k]) = finish_line(a, p, nv, v, vs);
         } else if nv == 2 && nu > 2 {
             // Finish v: a column of v-differences and a column of points, then steps in u.
             let (mut a, mut p) = ([0f32; MAX_ORDER], [0f32; MAX_ORDER]);
@@ -134,16 +125,7 @@ pub fn de_casteljau_surf(
                 a[i] = d[at(i, 1)] - d[at(i, 0)];
                 p[i] = vs * d[at(i, 0)] + v * d[at(i, 1)];
             }
-            while nu > 2 {
-                for i in 0..nu - 1 {
-                    a[i] = us * a[i] + u * a[i + 1];
-                    p[i] = us * p[i] + u * p[i + 1];
-                }
-                nu -= 1;
-            }
-            du[k] = p[1] - p[0];
-            dv[k] = us * a[0] + u * a[1];
-            out[k] = us * p[0] + u * p[1];
+            (du[k], dv[k], out[k]) = finish_line(a, p, nu, u, us);
         } else if nu == 2 && nv == 2 {
             let (p00, p01, p10, p11) = (d[at(0, 0)], d[at(0, 1)], d[at(1, 0)], d[at(1, 1)]);
             du[k] = vs * (p10 - p00) + v * (p11 - p01);
@@ -158,6 +140,28 @@ pub fn de_casteljau_surf(
             out[k] = pt[k];
         }
     }
+}
+
+/// Finishes a patch reduced to two rows in one direction: linear de Casteljau steps at
+/// `t` (`ts` = 1 − t) along the other, over the `n` differences `a` across the rows and
+/// points `p` between them. Returns the derivative along, the derivative across and the
+/// point.
+#[inline]
+fn finish_line(
+    mut a: [f32; MAX_ORDER],
+    mut p: [f32; MAX_ORDER],
+    mut n: usize,
+    t: f32,
+    ts: f32,
+) -> (f32, f32, f32) {
+    while n > 2 {
+        for j in 0..n - 1 {
+            a[j] = ts * a[j] + t * a[j + 1];
+            p[j] = ts * p[j] + t * p[j + 1];
+        }
+        n -= 1;
+    }
+    (p[1] - p[0], ts * a[0] + t * a[1], ts * p[0] + t * p[1])
 }
 
 #[cfg(test)]

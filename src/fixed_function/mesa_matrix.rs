@@ -234,55 +234,15 @@ impl MatFlags {
         }
         const MASK_NO_TRX: u32 = zero(12) | zero(13) | zero(14);
         const MASK_NO_2D_SCALE: u32 = one(0) | one(5);
-        const MASK_IDENTITY: u32 = one(0)
-            | zero(4)
-            | zero(8)
-            | zero(12)
-            | zero(1)
-            | one(5)
-            | zero(9)
-            | zero(13)
-            | zero(2)
-            | zero(6)
-            | one(10)
-            | zero(14)
-            | zero(3)
-            | zero(7)
-            | zero(11)
-            | one(15);
-        const MASK_2D_NO_ROT: u32 = zero(4)
-            | zero(8)
-            | zero(1)
-            | zero(9)
-            | zero(2)
-            | zero(6)
-            | one(10)
-            | zero(14)
-            | zero(3)
-            | zero(7)
-            | zero(11)
-            | one(15);
-        const MASK_2D: u32 = zero(8)
-            | zero(9)
-            | zero(2)
-            | zero(6)
-            | one(10)
-            | zero(14)
-            | zero(3)
-            | zero(7)
-            | zero(11)
-            | one(15);
-        const MASK_3D_NO_ROT: u32 = zero(4)
-            | zero(8)
-            | zero(1)
-            | zero(9)
-            | zero(2)
-            | zero(6)
-            | zero(3)
-            | zero(7)
-            | zero(11)
-            | one(15);
+        // The third row and column of the identity with a last column (0, 0, 0, 1): the
+        // part the 2D masks share; MASK_3D is its last column.
         const MASK_3D: u32 = zero(3) | zero(7) | zero(11) | one(15);
+        const Z_IDENTITY: u32 = zero(2) | zero(6) | one(10) | zero(14) | MASK_3D;
+        const MASK_2D: u32 = zero(8) | zero(9) | Z_IDENTITY;
+        const MASK_2D_NO_ROT: u32 = zero(4) | zero(1) | MASK_2D;
+        const MASK_IDENTITY: u32 = one(0) | zero(12) | one(5) | zero(13) | MASK_2D_NO_ROT;
+        const MASK_3D_NO_ROT: u32 =
+            zero(4) | zero(8) | zero(1) | zero(9) | zero(2) | zero(6) | MASK_3D;
         const MASK_PERSPECTIVE: u32 = zero(4)
             | zero(12)
             | zero(1)
@@ -396,9 +356,9 @@ pub fn invert(m: &[f32; 16], ty: MatrixType, flags: u32) -> Option<[f32; 16]> {
     match ty {
         MatrixType::General | MatrixType::Perspective => invert_general(m),
         MatrixType::Identity => Some(IDENTITY),
-        MatrixType::NoRot3D => invert_3d_no_rot(m, flags),
+        MatrixType::NoRot3D => invert_no_rot::<3>(m, flags),
         MatrixType::TwoD | MatrixType::ThreeD => invert_3d(m, flags),
-        MatrixType::NoRot2D => invert_2d_no_rot(m, flags),
+        MatrixType::NoRot2D => invert_no_rot::<2>(m, flags),
     }
 }
 
@@ -493,33 +453,18 @@ fn invert_3d(m: &[f32; 16], flags: u32) -> Option<[f32; 16]> {
     Some(o)
 }
 
-fn invert_3d_no_rot(m: &[f32; 16], flags: u32) -> Option<[f32; 16]> {
-    if at(m, 0, 0) == 0.0 || at(m, 1, 1) == 0.0 || at(m, 2, 2) == 0.0 {
+/// `invert_matrix_3d_no_rot` (`N` = 3) and `invert_matrix_2d_no_rot` (`N` = 2): a scale
+/// of the first `N` axes and a translation.
+fn invert_no_rot<const N: usize>(m: &[f32; 16], flags: u32) -> Option<[f32; 16]> {
+    if (0..N).any(|i| at(m, i, i) == 0.0) {
         return None;
     }
     let mut o = IDENTITY;
-    for i in 0..3 {
+    for i in 0..N {
         set(&mut o, i, i, 1.0 / at(m, i, i));
     }
     if flags & MAT_FLAG_TRANSLATION != 0 {
-        for i in 0..3 {
-            let v = -(at(m, i, 3) * at(&o, i, i));
-            set(&mut o, i, 3, v);
-        }
-    }
-    Some(o)
-}
-
-fn invert_2d_no_rot(m: &[f32; 16], flags: u32) -> Option<[f32; 16]> {
-    if at(m, 0, 0) == 0.0 || at(m, 1, 1) == 0.0 {
-        return None;
-    }
-    let mut o = IDENTITY;
-    for i in 0..2 {
-        set(&mut o, i, i, 1.0 / at(m, i, i));
-    }
-    if flags & MAT_FLAG_TRANSLATION != 0 {
-        for i in 0..2 {
+        for i in 0..N {
             let v = -(at(m, i, 3) * at(&o, i, i));
             set(&mut o, i, 3, v);
         }
@@ -540,98 +485,54 @@ pub fn invert_general(m: &[f32; 16]) -> Option<[f32; 16]> {
     // Row "pointers" r0..r3 as indices into w.
     let mut r = [0usize, 1, 2, 3];
     let fab = |w: &[[f32; 8]; 4], i: usize, c: usize| w[i][c].abs();
-    if fab(&w, r[3], 0) > fab(&w, r[2], 0) {
-        r.swap(3, 2);
-    }
-    if fab(&w, r[2], 0) > fab(&w, r[1], 0) {
-        r.swap(2, 1);
-    }
-    if fab(&w, r[1], 0) > fab(&w, r[0], 0) {
-        r.swap(1, 0);
-    }
-    if w[r[0]][0] == 0.0 {
-        return None;
-    }
-    // Eliminate the first variable.
-    let m1 = w[r[1]][0] / w[r[0]][0];
-    let m2 = w[r[2]][0] / w[r[0]][0];
-    let m3 = w[r[3]][0] / w[r[0]][0];
-    for c in 1..8 {
-        let s = w[r[0]][c];
-        if c < 4 || s != 0.0 {
-            w[r[1]][c] -= m1 * s;
-            w[r[2]][c] -= m2 * s;
-            w[r[3]][c] -= m3 * s;
+    for k in 0..3 {
+        // Pivot: the largest of column k bubbles up from the last row to row k.
+        for i in (k + 1..4).rev() {
+            if fab(&w, r[i], k) > fab(&w, r[i - 1], k) {
+                r.swap(i, i - 1);
+            }
         }
-    }
-    if fab(&w, r[3], 1) > fab(&w, r[2], 1) {
-        r.swap(3, 2);
-    }
-    if fab(&w, r[2], 1) > fab(&w, r[1], 1) {
-        r.swap(2, 1);
-    }
-    if w[r[1]][1] == 0.0 {
-        return None;
-    }
-    // Eliminate the second variable.
-    let m2 = w[r[2]][1] / w[r[1]][1];
-    let m3 = w[r[3]][1] / w[r[1]][1];
-    for c in 2..8 {
-        let s = w[r[1]][c];
-        if c < 4 || s != 0.0 {
-            w[r[2]][c] -= m2 * s;
-            w[r[3]][c] -= m3 * s;
+        if w[r[k]][k] == 0.0 {
+            return None;
         }
-    }
-    if fab(&w, r[3], 2) > fab(&w, r[2], 2) {
-        r.swap(3, 2);
-    }
-    if w[r[2]][2] == 0.0 {
-        return None;
-    }
-    // Eliminate the third variable.
-    let m3 = w[r[3]][2] / w[r[2]][2];
-    for c in 3..8 {
-        w[r[3]][c] -= m3 * w[r[2]][c];
+        // Eliminate variable k from the rows below.
+        let mut m = [0f32; 4];
+        for i in k + 1..4 {
+            m[i] = w[r[i]][k] / w[r[k]][k];
+        }
+        for c in k + 1..8 {
+            let s = w[r[k]][c];
+            // Mesa skips the right half's zeros, except in the last step.
+            if c < 4 || s != 0.0 || k == 2 {
+                for i in k + 1..4 {
+                    w[r[i]][c] -= m[i] * s;
+                }
+            }
+        }
     }
     if w[r[3]][3] == 0.0 {
         return None;
     }
+    let s = 1.0 / w[r[3]][3];
+    for c in 4..8 {
+        w[r[3]][c] *= s;
+    }
+    for k in (1..4).rev() {
+        // Back substitute row k - 1, then take column k out of the rows above it.
+        let (ik, ip) = (r[k], r[k - 1]);
+        let m = w[ip][k];
+        let s = 1.0 / w[ip][k - 1];
+        for c in 4..8 {
+            w[ip][c] = s * (w[ip][c] - w[ik][c] * m);
+        }
+        for &ij in &r[..k - 1] {
+            let m = w[ij][k];
+            for c in 4..8 {
+                w[ij][c] -= w[ik][c] * m;
+            }
+        }
+    }
     let (i0, i1, i2, i3) = (r[0], r[1], r[2], r[3]);
-    let s = 1.0 / w[i3][3];
-    for c in 4..8 {
-        w[i3][c] *= s;
-    }
-    // Back substitute row 2.
-    let m2 = w[i2][3];
-    let s = 1.0 / w[i2][2];
-    for c in 4..8 {
-        w[i2][c] = s * (w[i2][c] - w[i3][c] * m2);
-    }
-    let m1 = w[i1][3];
-    for c in 4..8 {
-        w[i1][c] -= w[i3][c] * m1;
-    }
-    let m0 = w[i0][3];
-    for c in 4..8 {
-        w[i0][c] -= w[i3][c] * m0;
-    }
-    // Back substitute row 1.
-    let m1 = w[i1][2];
-    let s = 1.0 / w[i1][1];
-    for c in 4..8 {
-        w[i1][c] = s * (w[i1][c] - w[i2][c] * m1);
-    }
-    let m0 = w[i0][2];
-    for c in 4..8 {
-        w[i0][c] -= w[i2][c] * m0;
-    }
-    // Back substitute row 0.
-    let m0 = w[i0][1];
-    let s = 1.0 / w[i0][0];
-    for c in 4..8 {
-        w[i0][c] = s * (w[i0][c] - w[i1][c] * m0);
-    }
     let mut out = [0f32; 16];
     for (row, &i) in [i0, i1, i2, i3].iter().enumerate() {
         for c in 0..4 {

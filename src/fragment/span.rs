@@ -141,6 +141,23 @@ pub fn one_over_w<M: Madd, const PERSP: bool>(
     oow
 }
 
+/// Varying `k` at pixel (fx, fy): its plane, times the pixel's `1 / w` when `PERSP`.
+#[inline(always)]
+pub(crate) fn vary_at<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    k: usize,
+    fx: f32,
+    fy: f32,
+    oow: f32,
+) -> f32 {
+    let a = eval::<M>(&t.vary[k], fx, fy);
+    if PERSP {
+        a * oow
+    } else {
+        a
+    }
+}
+
 /// Perspective-correct, projected texture coordinates (s, t) of one unit at [`LANES`]
 /// pixels of row `fy`: `a_plane * (1 / w_plane)`, then `coord * (1 / q)` as llvmpipe's
 /// lowered projective sampling does.
@@ -166,14 +183,7 @@ pub fn tex_coords_oow<M: Madd, const PERSP: bool>(
 ) -> ([f32; LANES], [f32; LANES]) {
     let (mut s, mut tt, mut q) = ([0f32; LANES], [0f32; LANES], [0f32; LANES]);
     for i in 0..LANES {
-        let e = |k: usize| {
-            let a = eval::<M>(&t.vary[base + k], fx[i], fy);
-            if PERSP {
-                a * oow[i]
-            } else {
-                a
-            }
-        };
+        let e = |k: usize| vary_at::<M, PERSP>(t, base + k, fx[i], fy, oow[i]);
         s[i] = e(0);
         tt[i] = e(1);
         q[i] = e(3);
@@ -197,14 +207,7 @@ pub fn tex_r<M: Madd, const PERSP: bool>(
 ) -> [f32; LANES] {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
     std::array::from_fn(|i| {
-        let e = |k: usize| {
-            let a = eval::<M>(&t.vary[base + k], fx[i], fy);
-            if PERSP {
-                a * oow[i]
-            } else {
-                a
-            }
-        };
+        let e = |k: usize| vary_at::<M, PERSP>(t, base + k, fx[i], fy, oow[i]);
         e(2) * (1.0f32 / e(3))
     })
 }
@@ -226,8 +229,7 @@ pub fn frag_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     } else {
         for ch in 0..4 {
             for i in 0..LANES {
-                let a = eval::<M>(&t.vary[ch], fx[i], fy);
-                frag[ch][i] = if PERSP { a * oow[i] } else { a };
+                frag[ch][i] = vary_at::<M, PERSP>(t, ch, fx[i], fy, oow[i]);
             }
         }
     }
@@ -267,12 +269,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         if FLAT && k < VARY_FOG {
             return t.flat[k];
         }
-        let a = eval::<M>(&t.vary[k], fx[i], fy);
-        if PERSP {
-            a * oow[i]
-        } else {
-            a
-        }
+        vary_at::<M, PERSP>(t, k, fx[i], fy, oow[i])
     };
     let mut c = [[0u8; LANES]; 4];
     for i in 0..LANES {

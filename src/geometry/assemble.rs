@@ -121,22 +121,16 @@ mod tests {
 
     #[test]
     fn quad_diagonal_depends_on_path() {
-        assert_eq!(
-            collect(Primitive::Quads, 4, DrawPath::ArraysNoClip, false),
-            vec![(0, 1, 2), (0, 2, 3)]
-        );
-        assert_eq!(
-            collect(Primitive::Quads, 4, DrawPath::Clip, false),
-            vec![(0, 1, 3), (1, 2, 3)]
-        );
-        assert_eq!(
-            collect(Primitive::Quads, 4, DrawPath::ArraysNoClip, true),
-            vec![(0, 1, 3), (1, 2, 3)]
-        );
-        assert_eq!(
-            collect(Primitive::Quads, 4, DrawPath::ElementsNoClip, false),
-            vec![(0, 1, 3), (1, 2, 3)]
-        );
+        let split_02 = vec![(0, 1, 2), (0, 2, 3)];
+        let split_13 = vec![(0, 1, 3), (1, 2, 3)];
+        for (path, flat, want) in [
+            (DrawPath::ArraysNoClip, false, &split_02),
+            (DrawPath::Clip, false, &split_13),
+            (DrawPath::ArraysNoClip, true, &split_13),
+            (DrawPath::ElementsNoClip, false, &split_13),
+        ] {
+            assert_eq!(&collect(Primitive::Quads, 4, path, flat), want);
+        }
     }
 
     #[test]

@@ -77,6 +77,22 @@ impl SetupTriangle {
         self.flat_u8 = [u(0), u(1), u(2), u(3)];
     }
 
+    /// The covered columns of row `py` within `lo..=hi`, cut by each edge's span: empty
+    /// (`hi < lo`) when an edge covers none of the row.
+    #[inline]
+    pub(crate) fn cut_span(&self, py: i64, mut lo: i64, mut hi: i64) -> (i64, i64) {
+        for e in &self.edges {
+            match e.span(py) {
+                Some((a, b)) => {
+                    lo = lo.max(a);
+                    hi = hi.min(b);
+                }
+                None => hi = lo - 1,
+            }
+        }
+        (lo, hi)
+    }
+
     /// The covered pixels of row `py` among columns `x0..=x1` (a box at most [`NARROW`]
     /// pixels wide; of a wider one, its first `NARROW` columns) as a bit mask, bit k for
     /// pixel `x0 + k`. Exact: the pixels whose centre is inside all three edges, tested one
@@ -123,6 +139,12 @@ impl SetupTriangle {
             let last = 31 - mask.leading_zeros() as i64;
             return Some((x0 + first, x0 + last));
         }
+        self.divided_span(x0, x1, py)
+    }
+
+    /// [`SetupTriangle::row_span`] by the three edges' divisions, intersected.
+    #[inline(always)]
+    fn divided_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
         let (mut lo, mut hi) = (x0, x1);
         for e in &self.edges {
             let (a, z) = e.span(py)?;
@@ -167,22 +189,19 @@ pub fn snap(v: f32) -> i64 {
 /// operation for the four).
 #[inline(always)]
 fn snap4(v: [f32; 4]) -> [f32; 4] {
-    const BIG: f32 = 8_388_608.0;
-    let t = v.map(|v| (v - 0.5) * 256.0);
-    let mut out = [0f32; 4];
-    for l in 0..4 {
-        let c = BIG.copysign(t[l]);
-        let r = (t[l] + c) - c;
-        out[l] = if t[l].abs() < BIG { r } else { t[l] };
-    }
-    out
+    round_even4(v.map(|v| (v - 0.5) * 256.0))
 }
 
 /// [`snap4`] without the half-pixel offset (multisample set-up): `round_half_even(256·v)`.
 #[inline(always)]
 fn snap4_ms(v: [f32; 4]) -> [f32; 4] {
+    round_even4(v.map(|v| v * 256.0))
+}
+
+/// `round_even` of four values, lane by lane without branches.
+#[inline(always)]
+fn round_even4(t: [f32; 4]) -> [f32; 4] {
     const BIG: f32 = 8_388_608.0;
-    let t = v.map(|v| v * 256.0);
     let mut out = [0f32; 4];
     for l in 0..4 {
         let c = BIG.copysign(t[l]);
@@ -239,39 +258,36 @@ pub fn setup_triangle(
     setup_inner(v, nvary, cull, back, (true, false), None, fill)
 }
 
-/// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
-/// (`fill.flat`, `fill.flat_u8`) are only written when `flat`, since only flat-shaded
-/// spans read them. A triangle that covers no pixel centre is reported as
-/// [`SetupResult::Empty`] without its planes (most of setup's work).
-pub fn setup_triangle_shaded(
-    v: [&ClipVertex; 3],
-    nvary: usize,
-    cull: CullMode,
-    back: Option<usize>,
-    flat: bool,
-    fill: &mut SetupTriangle,
-) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (flat, true), None, fill)
+/// Defines a copy of [`setup_triangle_shaded`] with the given attributes (and `unsafe`
+/// when given): the one body, compiled once per instruction set.
+macro_rules! shaded_copy {
+    ($(#[$attr:meta])* $vis:vis $name:ident $($unsafe:tt)?) => {
+        $(#[$attr])*
+        $vis $($unsafe)? fn $name(v: [&ClipVertex; 3], nvary: usize, cull: CullMode, back: Option<usize>, flat: bool, fill: &mut SetupTriangle) -> SetupResult {
+            setup_inner(v, nvary, cull, back, (flat, true), None, fill)
+        }
+    };
 }
 
-/// [`setup_triangle_shaded`] compiled for AVX2: the same f32 and i64 operations (Rust
-/// never fuses a multiply and an add on its own), so the same results, with three-operand
-/// instructions instead of SSE2's register copies.
-///
-/// # Safety
-/// The CPU must have AVX2 and the bit instructions of `cpu::isa`'s AVX2 variants.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
-unsafe fn setup_triangle_shaded_avx2(
-    v: [&ClipVertex; 3],
-    nvary: usize,
-    cull: CullMode,
-    back: Option<usize>,
-    flat: bool,
-    fill: &mut SetupTriangle,
-) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (flat, true), None, fill)
-}
+shaded_copy!(
+    /// [`setup_triangle`] for a draw that knows its shading: the flat-shading values
+    /// (`fill.flat`, `fill.flat_u8`) are only written when `flat`, since only flat-shaded
+    /// spans read them. A triangle that covers no pixel centre is reported as
+    /// [`SetupResult::Empty`] without its planes (most of setup's work).
+    pub setup_triangle_shaded
+);
+
+shaded_copy!(
+    /// [`setup_triangle_shaded`] compiled for AVX2: the same f32 and i64 operations (Rust
+    /// never fuses a multiply and an add on its own), so the same results, with
+    /// three-operand instructions instead of SSE2's register copies.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and the bit instructions of `cpu::isa`'s AVX2 variants.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
+    setup_triangle_shaded_avx2 unsafe
+);
 
 /// Which compiled copy of [`setup_triangle_shaded`] a draw runs, chosen once per draw.
 #[derive(Clone, Copy, Debug)]
@@ -749,17 +765,7 @@ mod tests {
         let brute = coverage(&t);
         let mut spans = vec![];
         for py in t.bbox[1]..=t.bbox[3] {
-            let mut lo = t.bbox[0];
-            let mut hi = t.bbox[2];
-            for e in &t.edges {
-                match e.span(py) {
-                    Some((a, b)) => {
-                        lo = lo.max(a);
-                        hi = hi.min(b);
-                    }
-                    None => hi = lo - 1,
-                }
-            }
+            let (lo, hi) = t.cut_span(py, t.bbox[0], t.bbox[2]);
             for px in lo..=hi {
                 spans.push((px, py));
             }
@@ -815,13 +821,7 @@ mod tests {
 
     /// The reference for `row_span`: the three edges' divisions, intersected.
     fn reference_span(t: &SetupTriangle, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
-        let (mut lo, mut hi) = (x0, x1);
-        for e in &t.edges {
-            let (a, z) = e.span(py)?;
-            lo = lo.max(a);
-            hi = hi.min(z);
-        }
-        (lo <= hi).then_some((lo, hi))
+        t.divided_span(x0, x1, py)
     }
 
     #[test]

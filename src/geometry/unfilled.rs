@@ -171,10 +171,10 @@ pub fn fill_mode(det: f32, front_ccw: bool, front: FillMode, back: FillMode) -> 
 mod tests {
     use super::*;
 
-    #[test]
-    fn polygon_edges_walk_the_outline() {
+    /// The boundary edges `decompose` draws for `n` vertices of `mode`, in its order.
+    fn outline(mode: Primitive, n: usize) -> Vec<(usize, usize)> {
         let mut lines = vec![];
-        decompose(Primitive::Polygon, 5, |a, b, c, f, _| {
+        decompose(mode, n, |a, b, c, f, _| {
             let v = [a, b, c];
             for (bit, (s, e)) in [(EDGE_2, (2, 0)), (EDGE_0, (0, 1)), (EDGE_1, (1, 2))] {
                 if f & bit != 0 {
@@ -182,20 +182,18 @@ mod tests {
                 }
             }
         });
+        lines
+    }
+
+    #[test]
+    fn polygon_edges_walk_the_outline() {
+        let lines = outline(Primitive::Polygon, 5);
         assert_eq!(lines, vec![(0, 1), (1, 2), (2, 3), (3, 4), (4, 0)]);
     }
 
     #[test]
     fn quad_edges() {
-        let mut lines = vec![];
-        decompose(Primitive::Quads, 4, |a, b, c, f, _| {
-            let v = [a, b, c];
-            for (bit, (s, e)) in [(EDGE_2, (2, 0)), (EDGE_0, (0, 1)), (EDGE_1, (1, 2))] {
-                if f & bit != 0 {
-                    lines.push((v[s], v[e]));
-                }
-            }
-        });
+        let lines = outline(Primitive::Quads, 4);
         assert_eq!(lines, vec![(3, 0), (0, 1), (1, 2), (2, 3)]);
     }
 }

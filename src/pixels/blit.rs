@@ -27,7 +27,7 @@
 
 use crate::fragment::span::{eval, Fused, Madd, Unfused};
 use crate::framebuffer::Framebuffer;
-use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::setup::SetupTriangle;
 use crate::geometry::{ClipVertex, Viewport, VARY_TEX};
 
 /// Which buffers a blit copies.
@@ -206,44 +206,17 @@ impl Job {
             corner(bx + bw, by + bh, sx + sw, sy + sh),
             corner(bx, by + bh, sx, sy + sh),
         ];
-        // The blitter's rasterizer state: the rule the window's draws use (measured).
-        let cull = CullMode {
-            front: false,
-            back: false,
-            front_ccw: true,
-            top_left: false,
-        };
-        let mut tri = SetupTriangle::default();
-        for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
-            if !matches!(
-                setup_triangle([&v[a], &v[b], &v[c]], VARY_TEX + 2, cull, None, &mut tri),
-                SetupResult::Draw
-            ) {
-                continue;
-            }
-            for py in tri.bbox[1].max(sc[1])..=tri.bbox[3].min(sc[3] - 1) {
-                let (mut lo, mut hi) = (tri.bbox[0].max(sc[0]), tri.bbox[2].min(sc[2] - 1));
-                for e in &tri.edges {
-                    match e.span(py) {
-                        Some((a, b)) => {
-                            lo = lo.max(a);
-                            hi = hi.min(b);
-                        }
-                        None => hi = lo - 1,
-                    }
-                }
-                for px in lo..=hi {
-                    let (u, t) = if self.fma {
-                        st::<Fused>(&tri, px, py)
-                    } else {
-                        st::<Unfused>(&tri, px, py)
-                    };
-                    let nearest = (texel(u * nx, s.width), texel(t * ny, s.height));
-                    let c = self.linear.then(|| bilinear(s, u * nx, t * ny));
-                    write(d, px, py, c, nearest);
-                }
-            }
-        }
+        // The blitter's rasterizer state is the rule the window's draws use (measured).
+        super::rect::quad_pixels(&v, sc, |tri, px, py| {
+            let (u, t) = if self.fma {
+                st::<Fused>(tri, px, py)
+            } else {
+                st::<Unfused>(tri, px, py)
+            };
+            let nearest = (texel(u * nx, s.width), texel(t * ny, s.height));
+            let c = self.linear.then(|| bilinear(s, u * nx, t * ny));
+            write(d, px, py, c, nearest);
+        });
     }
 }
 

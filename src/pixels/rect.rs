@@ -107,13 +107,32 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
         corner(x1, y0, 1.0, t_top),
         corner(x0, y0, 0.0, t_top),
     ];
+    let (wf, hf) = (q.w as f32, q.h as f32);
+    quad_pixels(&v, d.region, |tri, px, py| {
+        let (fx, fy) = (px as f32, py as f32);
+        let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
+        let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
+        let col = ((s * wf).floor().max(0.0) as usize).min(q.w - 1);
+        let row = ((t * hf).floor().max(0.0) as usize).min(q.h - 1);
+        f(tri, px as usize, py as usize, col, row);
+    });
+}
+
+/// Calls `f` for each pixel (px, py) inside `region` (x0, y0, x1, y1, end exclusive) that
+/// the quad `v` covers, drawn as the fan (v0, v1, v2), (v0, v2, v3) with llvmpipe's setup
+/// and the rasterizer state of its blitter and `st_draw_quad` (no culling, bottom-left
+/// fill rule), with the triangle that covers it.
+pub(super) fn quad_pixels(
+    v: &[ClipVertex; 4],
+    region: [i64; 4],
+    mut f: impl FnMut(&SetupTriangle, i64, i64),
+) {
     let cull = CullMode {
         front: false,
         back: false,
         front_ccw: true,
         top_left: false,
     };
-    let (wf, hf) = (q.w as f32, q.h as f32);
     let mut tri = SetupTriangle::default();
     for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
         if !matches!(
@@ -122,28 +141,14 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
         ) {
             continue;
         }
-        let y_lo = tri.bbox[1].max(d.region[1]);
-        let y_hi = tri.bbox[3].min(d.region[3] - 1);
-        for py in y_lo..=y_hi {
-            let mut lo = tri.bbox[0].max(d.region[0]);
-            let mut hi = tri.bbox[2].min(d.region[2] - 1);
-            for e in &tri.edges {
-                match e.span(py) {
-                    Some((a, b)) => {
-                        lo = lo.max(a);
-                        hi = hi.min(b);
-                    }
-                    None => hi = lo - 1,
-                }
-            }
-            let fy = py as f32;
+        for py in tri.bbox[1].max(region[1])..=tri.bbox[3].min(region[3] - 1) {
+            let (lo, hi) = tri.cut_span(
+                py,
+                tri.bbox[0].max(region[0]),
+                tri.bbox[2].min(region[2] - 1),
+            );
             for px in lo..=hi {
-                let fx = px as f32;
-                let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
-                let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
-                let col = ((s * wf).floor().max(0.0) as usize).min(q.w - 1);
-                let row = ((t * hf).floor().max(0.0) as usize).min(q.h - 1);
-                f(&tri, px as usize, py as usize, col, row);
+                f(&tri, px, py);
             }
         }
     }

@@ -104,37 +104,22 @@ pub fn shade_covered<C: Cover>(
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
-    // SAFETY: (both) `cpu::isa` only reports a variant whose features the CPU has. The
-    // textured walk of lines and points runs no AVX2 code: only the fusing differs.
-    unsafe {
-        match crate::cpu::isa() {
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma | Isa::Fma => {
-                covered_with::<super::variants::Fma, C>(t, b, cover, plan, units, fb, stats)
-            }
-            _ => covered_with::<super::variants::Base, C>(t, b, cover, plan, units, fb, stats),
-        }
+    // Level `$w`'s variant for the plan.
+    macro_rules! walk {
+        ($w:ty) => {
+            with_flags!((plan.depth.is_some(), plan.flat, t.persp), |D, F, P| {
+                // SAFETY: `cpu::isa` only reports a variant whose features the CPU has. The
+                // textured walk of lines and points runs no AVX2 code: only the fusing
+                // differs.
+                unsafe { <$w as Walks>::covered::<C, D, F, P>(t, b, cover, plan, units, fb, stats) }
+            })
+        };
     }
-}
-
-/// Picks `W`'s variant for the plan.
-///
-/// # Safety
-/// `W`'s instruction set is the CPU's ([`Walks`]).
-#[inline(always)]
-unsafe fn covered_with<W: Walks, C: Cover>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    cover: &C,
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    with_flags!((plan.depth.is_some(), plan.flat, t.persp), |D, F, P| {
-        // SAFETY: forwarded from the caller.
-        unsafe { W::covered::<C, D, F, P>(t, b, cover, plan, units, fb, stats) }
-    })
+    match crate::cpu::isa() {
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma | Isa::Fma => walk!(super::variants::Fma),
+        _ => walk!(super::variants::Base),
+    }
 }
 
 /// The covered range of row `py` inside `b`.

@@ -25,7 +25,7 @@
 //! points are round, nearly hard-edged discs.
 
 use super::raster_triangle;
-use crate::fragment::span::{eval, one_over_w, Madd, LANES};
+use crate::fragment::span::{one_over_w, vary_at, Madd, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
@@ -79,14 +79,7 @@ pub fn coverage<M: Madd, const PERSP: bool>(
     let sat = |v: f32| if v > 0.0 { v.min(1.0) } else { 0.0 };
     let mut cov = [1f32; LANES];
     for i in 0..LANES {
-        let e = |k: usize| {
-            let a = eval::<M>(&t.vary[base + k], fx[i], fy);
-            if PERSP {
-                a * oow[i]
-            } else {
-                a
-            }
-        };
+        let e = |k: usize| vary_at::<M, PERSP>(t, base + k, fx[i], fy, oow[i]);
         let (x, y, z, w) = (e(0), e(1), e(2), e(3));
         cov[i] = match s {
             Smooth::Line(_) => sat(y - x.abs()) * sat(w - z.abs()),
@@ -106,13 +99,10 @@ pub fn coverage<M: Madd, const PERSP: bool>(
     cov
 }
 
-/// Sets up and fills triangles `tris` of `v` with the coverage `smooth` (the stage's
-/// replacement fragment shader).
-#[allow(clippy::too_many_arguments)]
+/// Sets up and fills the two triangles of quad `v` with the coverage `smooth` (the
+/// stage's replacement fragment shader), whose four varyings follow the draw's.
 fn fill(
     v: &[ClipVertex; 4],
-    tris: [[usize; 3]; 2],
-    nvary: usize,
     smooth: Smooth,
     region: [i64; 4],
     plan: &FragPlan,
@@ -123,6 +113,10 @@ fn fill(
     let plan = FragPlan {
         smooth: Some(smooth),
         ..*plan
+    };
+    let (tris, nvary) = match smooth {
+        Smooth::Line(k) => ([[2, 1, 0], [3, 1, 2]], k + 4),
+        Smooth::Point(k) => ([[0, 1, 2], [0, 2, 3]], k + 4),
     };
     let mut t = SetupTriangle::default();
     for [a, b, c] in tris {
@@ -187,17 +181,7 @@ pub fn line(
         );
         v[i].vary[k..k + 4].copy_from_slice(&[x, half_width, z, half_length]);
     }
-    fill(
-        &v,
-        [[2, 1, 0], [3, 1, 2]],
-        k + 4,
-        Smooth::Line(k),
-        region,
-        plan,
-        units,
-        fb,
-        stats,
-    );
+    fill(&v, Smooth::Line(k), region, plan, units, fb, stats);
 }
 
 /// Draws the antialiased point `v` (inside the clip volume) of `size` (glPointSize).
@@ -233,15 +217,5 @@ pub fn point(
         };
         q[i].vary[s..s + 4].copy_from_slice(&[sx, sy, k, 1.0]);
     }
-    fill(
-        &q,
-        [[0, 1, 2], [0, 2, 3]],
-        s + 4,
-        Smooth::Point(s),
-        region,
-        plan,
-        units,
-        fb,
-        stats,
-    );
+    fill(&q, Smooth::Point(s), region, plan, units, fb, stats);
 }

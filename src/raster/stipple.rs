@@ -40,16 +40,7 @@ pub fn stippled_triangle(
         return;
     }
     for py in y_lo..=y_hi {
-        let (mut lo, mut hi) = (x_lo, x_hi);
-        for e in &t.edges {
-            match e.span(py) {
-                Some((a, b)) => {
-                    lo = lo.max(a);
-                    hi = hi.min(b);
-                }
-                None => hi = lo - 1,
-            }
-        }
+        let (lo, hi) = t.cut_span(py, x_lo, x_hi);
         let gl_y = if fb.y_flip { h - 1 - py } else { py };
         let mut x = lo;
         while x <= hi {

@@ -211,25 +211,21 @@ pub(super) fn rows_tex_fast<
                 // `M::FUSED` in the callers that reach here, and a plan `plan_ok` accepts;
                 // live lanes are inside the row.
                 unsafe {
+                    // The row of variant (fused, blend, over).
+                    macro_rules! row {
+                        ($f:literal, $b:literal, $o:literal) => {
+                            tex_row::<$f, DEPTH, FLAT, PERSP, $b, $o>(
+                                t, plan, env, fb, py, x, l, tx, stats,
+                            )
+                        };
+                    }
                     match (M::FUSED, plan.blend.is_some(), over) {
-                        (true, false, _) => tex_row::<true, DEPTH, FLAT, PERSP, false, false>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
-                        (true, true, false) => tex_row::<true, DEPTH, FLAT, PERSP, true, false>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
-                        (true, true, true) => tex_row::<true, DEPTH, FLAT, PERSP, true, true>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
-                        (false, false, _) => tex_row::<false, DEPTH, FLAT, PERSP, false, false>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
-                        (false, true, false) => tex_row::<false, DEPTH, FLAT, PERSP, true, false>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
-                        (false, true, true) => tex_row::<false, DEPTH, FLAT, PERSP, true, true>(
-                            t, plan, env, fb, py, x, l, tx, stats,
-                        ),
+                        (true, false, _) => row!(true, false, false),
+                        (true, true, false) => row!(true, true, false),
+                        (true, true, true) => row!(true, true, true),
+                        (false, false, _) => row!(false, false, false),
+                        (false, true, false) => row!(false, true, false),
+                        (false, true, true) => row!(false, true, true),
                     }
                 }
                 continue;

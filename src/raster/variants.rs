@@ -49,84 +49,61 @@ macro_rules! with_flags {
 }
 pub(crate) use with_flags;
 
-/// The row walks of one instruction-set level.
-///
-/// # Safety
-/// Every method is compiled for the level's instruction set: call it only when
-/// [`crate::cpu::isa`] reports that level (or one with all of its features).
-pub(crate) trait Walks {
-    /// Untextured triangle rows through the general span shader
-    /// ([`super::rows`]); `FULL` when the plan needs the whole per-fragment pipeline.
-    ///
-    /// # Safety
-    /// See the trait.
-    unsafe fn full<const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool>(
-        t: &SetupTriangle,
-        b: [i64; 4],
-        plan: &FragPlan,
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
-    );
-
-    /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
-    ///
-    /// # Safety
-    /// See the trait.
-    unsafe fn textured<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-        t: &SetupTriangle,
-        b: [i64; 4],
-        plan: &FragPlan,
-        units: &[UnitPlan<'_>],
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
-    );
-
-    /// Triangle rows through the one-unit texture fast path
-    /// ([`super::textured::rows_tex_fast`]).
-    ///
-    /// # Safety
-    /// See the trait.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn tex_fast<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-        t: &SetupTriangle,
-        b: [i64; 4],
-        plan: &FragPlan,
-        u: &UnitPlan<'_>,
-        env: FastEnv,
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
-    );
-
-    /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
-    ///
-    /// # Safety
-    /// See the trait.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn covered<C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-        t: &SetupTriangle,
-        b: [i64; 4],
-        cover: &C,
-        plan: &FragPlan,
-        units: &[UnitPlan<'_>],
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
-    );
-
-    /// One span of a line, point or stippled polygon through the general span shader.
-    ///
-    /// # Safety
-    /// See the trait.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn span<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-        t: &SetupTriangle,
-        plan: &FragPlan,
-        fb: &mut Target<'_>,
-        py: usize,
-        x0: usize,
-        x1: usize,
-        stats: &mut Stats,
-    );
+/// The row walks, listed once: each entry's doc, name, generic parameters, the generic
+/// arguments that forward them, the arguments, and the walk it runs (with `M`, the level's
+/// fusing, and `AVX2`, whether the level has AVX2). Calls `$callback!` with the list
+/// after the tokens `$pre`; the trait [`Walks`] and each level's functions are made from it.
+macro_rules! walk_list {
+    ($callback:ident!($($pre:tt)*)) => {
+        $callback!($($pre)* {
+            /// Untextured triangle rows through the general span shader
+            /// ([`super::rows`]); `FULL` when the plan needs the whole per-fragment pipeline.
+            full [const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool] [DEPTH, FLAT, PERSP, FULL]
+                (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::rows::<M, DEPTH, FLAT, PERSP, FULL> };
+            /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
+            textured [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::rows_textured::<M, DEPTH, FLAT, PERSP> };
+            /// Triangle rows through the one-unit texture fast path
+            /// ([`super::textured::rows_tex_fast`]).
+            tex_fast [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, u: &UnitPlan<'_>, env: FastEnv, fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::textured::rows_tex_fast::<M, AVX2, DEPTH, FLAT, PERSP> };
+            /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
+            covered [C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool] [C, DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, b: [i64; 4], cover: &C, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::prim_tex::rows::<M, C, DEPTH, FLAT, PERSP> };
+            /// One span of a line, point or stippled polygon through the general span shader.
+            span [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, plan: &FragPlan, fb: &mut Target<'_>, py: usize, x0: usize, x1: usize, stats: &mut Stats)
+                => { crate::fragment::span::shade_span::<M, DEPTH, FLAT, PERSP, true> };
+        });
+    };
 }
+
+/// Declares the trait [`Walks`] from the list of [`walk_list!`].
+macro_rules! walks_trait {
+    ({ $($(#[$doc:meta])* $walk:ident [$($gen:tt)*] [$($garg:tt)*] ($($arg:ident: $ty:ty),*) => { $($call:tt)* };)* }) => {
+        /// The row walks of one instruction-set level.
+        ///
+        /// # Safety
+        /// Every method is compiled for the level's instruction set: call it only when
+        /// [`crate::cpu::isa`] reports that level (or one with all of its features).
+        pub(crate) trait Walks {
+            $(
+                $(#[$doc])*
+                ///
+                /// # Safety
+                /// See the trait.
+                #[allow(clippy::too_many_arguments)]
+                unsafe fn $walk<$($gen)*>($($arg: $ty),*);
+            )*
+        }
+    };
+}
+
+walk_list!(walks_trait!());
 
 /// The AVX2 span shader's row walk ([`super::rows_simd_walk`]), for the AVX2 levels.
 ///
@@ -147,204 +124,63 @@ pub(crate) trait SimdWalks {
     );
 }
 
-/// Defines a level's [`Walks`]: each walk is a thin `#[inline(never)]` function compiled
+/// Defines the levels' [`Walks`]: each walk is a thin `#[inline(never)]` function compiled
 /// with the level's target features around the one inlined body, in a module of its own
-/// (`$module::walk`) so that it lands in a codegen unit of its own: rustc places a
+/// (`$module::walk::run`) so that it lands in a codegen unit of its own: rustc places a
 /// generic function's instances in its defining module's unit, and LLVM compiles a unit
 /// on one thread, so one module holding every variant compiled on one core. The trait's
-/// methods only forward.
+/// methods only forward. A level is written `Name, module, fusing, avx2, [features];`;
+/// all but the first are x86-64 only.
 macro_rules! walks {
-    ($(#[$doc:meta])* $name:ident, $module:ident, $m:ty, avx2 = $avx2:literal, [$($feat:tt)*]) => {
-        $(#[$doc])*
+    ($(#[$bdoc:meta])* $base:ident, $bmod:ident, $bm:ident, $bavx2:literal, $bfeat:tt;
+     $($(#[$doc:meta])* $name:ident, $module:ident, $m:ident, $avx2:literal, $feat:tt;)*) => {
+        walk_list!(level_walks!([$(#[$bdoc])*] $base, $bmod, $bm, $bavx2, $bfeat));
+        $(
+            #[cfg(target_arch = "x86_64")]
+            walk_list!(level_walks!([$(#[$doc])*] $name, $module, $m, $avx2, $feat));
+        )*
+    };
+}
+
+/// One level of [`walks!`], given the list of [`walk_list!`].
+macro_rules! level_walks {
+    ([$(#[$ldoc:meta])*] $name:ident, $module:ident, $m:ident, $avx2:literal, $feat:tt {
+        $($(#[$doc:meta])* $walk:ident [$($gen:tt)*] [$($garg:tt)*] ($($arg:ident: $ty:ty),*) => { $($call:tt)* };)*
+    }) => {
+        $(#[$ldoc])*
         pub(crate) struct $name;
 
         /// The walks of one level, a module (and codegen unit) each.
         mod $module {
-            pub(super) mod full {
-                use super::super::*;
-                $($feat)*
-                #[inline(never)]
-                pub(crate) unsafe fn run<
-                    const DEPTH: bool,
-                    const FLAT: bool,
-                    const PERSP: bool,
-                    const FULL: bool,
-                >(
-                    t: &SetupTriangle,
-                    b: [i64; 4],
-                    plan: &FragPlan,
-                    fb: &mut Target<'_>,
-                    stats: &mut Stats,
-                ) {
-                    crate::raster::rows::<$m, DEPTH, FLAT, PERSP, FULL>(t, b, plan, fb, stats)
-                }
-            }
-
-            pub(super) mod textured {
-                use super::super::*;
-                $($feat)*
-                #[inline(never)]
-                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                    t: &SetupTriangle,
-                    b: [i64; 4],
-                    plan: &FragPlan,
-                    units: &[UnitPlan<'_>],
-                    fb: &mut Target<'_>,
-                    stats: &mut Stats,
-                ) {
-                    crate::raster::rows_textured::<$m, DEPTH, FLAT, PERSP>(
-                        t, b, plan, units, fb, stats,
-                    )
-                }
-            }
-
-            pub(super) mod tex_fast {
-                use super::super::*;
-                $($feat)*
-                #[inline(never)]
-                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                    t: &SetupTriangle,
-                    b: [i64; 4],
-                    plan: &FragPlan,
-                    u: &UnitPlan<'_>,
-                    env: FastEnv,
-                    fb: &mut Target<'_>,
-                    stats: &mut Stats,
-                ) {
-                    crate::raster::textured::rows_tex_fast::<$m, $avx2, DEPTH, FLAT, PERSP>(
-                        t, b, plan, u, env, fb, stats,
-                    )
-                }
-            }
-
-            pub(super) mod covered {
-                use super::super::*;
-                $($feat)*
-                #[inline(never)]
-                pub(crate) unsafe fn run<
-                    C: Cover,
-                    const DEPTH: bool,
-                    const FLAT: bool,
-                    const PERSP: bool,
-                >(
-                    t: &SetupTriangle,
-                    b: [i64; 4],
-                    cover: &C,
-                    plan: &FragPlan,
-                    units: &[UnitPlan<'_>],
-                    fb: &mut Target<'_>,
-                    stats: &mut Stats,
-                ) {
-                    crate::raster::prim_tex::rows::<$m, C, DEPTH, FLAT, PERSP>(
-                        t, b, cover, plan, units, fb, stats,
-                    )
-                }
-            }
-
-            pub(super) mod span {
-                use super::super::*;
-                $($feat)*
-                #[inline(never)]
-                pub(crate) unsafe fn run<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                    t: &SetupTriangle,
-                    plan: &FragPlan,
-                    fb: &mut Target<'_>,
-                    py: usize,
-                    x0: usize,
-                    x1: usize,
-                    stats: &mut Stats,
-                ) {
-                    crate::fragment::span::shade_span::<$m, DEPTH, FLAT, PERSP, true>(
-                        t, plan, fb, py, x0, x1, stats,
-                    )
-                }
-            }
+            /// The level's fusing.
+            type M = super::$m;
+            /// Whether the level has AVX2.
+            #[allow(dead_code)]
+            const AVX2: bool = $avx2;
+            $(
+                level_walks!(@walk $feat $walk [$($gen)*] ($($arg: $ty),*) => { $($call)* });
+            )*
         }
 
         impl Walks for $name {
-            #[inline(always)]
-            unsafe fn full<
-                const DEPTH: bool,
-                const FLAT: bool,
-                const PERSP: bool,
-                const FULL: bool,
-            >(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                plan: &FragPlan,
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
-                // SAFETY: forwarded from the caller.
-                unsafe { $module::full::run::<DEPTH, FLAT, PERSP, FULL>(t, b, plan, fb, stats) }
-            }
-
-            #[inline(always)]
-            unsafe fn textured<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                plan: &FragPlan,
-                units: &[UnitPlan<'_>],
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
-                // SAFETY: forwarded from the caller.
-                unsafe {
-                    $module::textured::run::<DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            $(
+                #[inline(always)]
+                unsafe fn $walk<$($gen)*>($($arg: $ty),*) {
+                    // SAFETY: forwarded from the caller.
+                    unsafe { $module::$walk::run::<$($garg)*>($($arg),*) }
                 }
-            }
-
-            #[inline(always)]
-            unsafe fn tex_fast<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                plan: &FragPlan,
-                u: &UnitPlan<'_>,
-                env: FastEnv,
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
-                // SAFETY: forwarded from the caller.
-                unsafe {
-                    $module::tex_fast::run::<DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
-                }
-            }
-
-            #[inline(always)]
-            unsafe fn covered<
-                C: Cover,
-                const DEPTH: bool,
-                const FLAT: bool,
-                const PERSP: bool,
-            >(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                cover: &C,
-                plan: &FragPlan,
-                units: &[UnitPlan<'_>],
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
-                // SAFETY: forwarded from the caller.
-                unsafe {
-                    $module::covered::run::<C, DEPTH, FLAT, PERSP>(
-                        t, b, cover, plan, units, fb, stats,
-                    )
-                }
-            }
-
-            #[inline(always)]
-            unsafe fn span<const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
-                t: &SetupTriangle,
-                plan: &FragPlan,
-                fb: &mut Target<'_>,
-                py: usize,
-                x0: usize,
-                x1: usize,
-                stats: &mut Stats,
-            ) {
-                // SAFETY: forwarded from the caller.
-                unsafe { $module::span::run::<DEPTH, FLAT, PERSP>(t, plan, fb, py, x0, x1, stats) }
+            )*
+        }
+    };
+    (@walk [$($feat:tt)*] $walk:ident [$($gen:tt)*] ($($arg:ident: $ty:ty),*) => { $($call:tt)* }) => {
+        pub(super) mod $walk {
+            use super::super::*;
+            use super::*;
+            $($feat)*
+            #[inline(never)]
+            #[allow(clippy::too_many_arguments)]
+            pub(crate) unsafe fn run<$($gen)*>($($arg: $ty),*) {
+                $($call)*($($arg),*)
             }
         }
     };
@@ -353,19 +189,13 @@ macro_rules! walks {
 /// Defines a level's [`SimdWalks`] like [`walks!`], in module `$module`.
 #[cfg(target_arch = "x86_64")]
 macro_rules! simd_walks {
-    ($name:ident, $module:ident, fma = $fma:literal, [$($feat:tt)*]) => {
+    ($($name:ident, $module:ident, fma = $fma:literal, [$($feat:tt)*];)*) => {$(
         /// The AVX2 span shader's walk of one level, a module (and codegen unit) of its own.
         mod $module {
             use super::*;
             $($feat)*
             #[inline(never)]
-            pub(crate) unsafe fn run<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                plan: &FragPlan,
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
+            pub(crate) unsafe fn run<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats) {
                 // SAFETY: this function is compiled with AVX2 (and FMA when `$fma`).
                 unsafe {
                     crate::raster::rows_simd_walk::<$fma, D, FLAT, PERSP, B>(t, b, plan, fb, stats)
@@ -375,58 +205,24 @@ macro_rules! simd_walks {
 
         impl SimdWalks for $name {
             #[inline(always)]
-            unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
-                t: &SetupTriangle,
-                b: [i64; 4],
-                plan: &FragPlan,
-                fb: &mut Target<'_>,
-                stats: &mut Stats,
-            ) {
+            unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats) {
                 // SAFETY: forwarded from the caller.
                 unsafe { $module::run::<D, FLAT, PERSP, B>(t, b, plan, fb, stats) }
             }
         }
-    };
+    )*};
 }
 
-walks!(
+walks! {
     /// Baseline x86-64 (SSE2), or another architecture: not fused.
-    Base,
-    base,
-    Unfused,
-    avx2 = false,
-    []
-);
-
-#[cfg(target_arch = "x86_64")]
-walks!(
+    Base, base, Unfused, false, [];
     /// FMA without AVX2: fused, 128-bit.
-    Fma,
-    fma,
-    Fused,
-    avx2 = false,
-    [#[target_feature(enable = "fma")]]
-);
-
-#[cfg(target_arch = "x86_64")]
-walks!(
+    Fma, fma, Fused, false, [#[target_feature(enable = "fma")]];
     /// AVX2 (and the bit instructions every AVX2 CPU has), not fused.
-    Avx2,
-    avx2,
-    Unfused,
-    avx2 = true,
-    [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]]
-);
-
-#[cfg(target_arch = "x86_64")]
-walks!(
+    Avx2, avx2, Unfused, true, [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]];
     /// AVX2 and FMA: the common case.
-    Avx2Fma,
-    avx2fma,
-    Fused,
-    avx2 = true,
-    [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]]
-);
+    Avx2Fma, avx2fma, Fused, true, [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]];
+}
 
 /// The untextured span shader of [`Avx2Fma`] compiled for CPUs with AVX-512 (F, BW, VL,
 /// DQ): the same 256-bit code, which the compiler may then give masked moves and 32
@@ -437,30 +233,11 @@ walks!(
 pub(crate) struct Avx512;
 
 #[cfg(target_arch = "x86_64")]
-simd_walks!(
-    Avx2,
-    avx2_simd,
-    fma = false,
-    [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]]
-);
-
-#[cfg(target_arch = "x86_64")]
-simd_walks!(
-    Avx2Fma,
-    avx2fma_simd,
-    fma = true,
-    [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]]
-);
-
-#[cfg(target_arch = "x86_64")]
-simd_walks!(
-    Avx512,
-    avx512_simd,
-    fma = true,
-    [#[target_feature(
-        enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt"
-    )]]
-);
+simd_walks! {
+    Avx2, avx2_simd, fma = false, [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]];
+    Avx2Fma, avx2fma_simd, fma = true, [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]];
+    Avx512, avx512_simd, fma = true, [#[target_feature(enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt")]];
+}
 
 /// Samples a 2x2 quad of unit `u` (with `r` for 3D, cube-map and depth textures) through
 /// the sampler compiled once per fusing and called out of line: the sampler serves every
@@ -483,35 +260,29 @@ pub(crate) fn sample_quad<M: crate::fragment::span::Madd>(
     sample_quad_base(u, s, t, r)
 }
 
-/// The body of both copies of [`sample_quad`].
-#[inline(always)]
-fn sample_any(u: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4], r: Option<[f32; 4]>) -> [[f32; 4]; 4] {
-    match r {
-        None => u.sample_quad(s, t),
-        Some(r) => u.sample_quad_str(s, t, r),
-    }
+/// Defines a copy of [`sample_quad`]'s body, `sample_any`, as an `#[inline(never)]`
+/// function with the given attributes (and `unsafe` when given).
+macro_rules! sampler_copy {
+    ($(#[$attr:meta])* $name:ident $($unsafe:tt)?) => {
+        $(#[$attr])*
+        #[inline(never)]
+        $($unsafe)? fn $name(u: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4], r: Option<[f32; 4]>) -> [[f32; 4]; 4] {
+            match r {
+                None => u.sample_quad(s, t),
+                Some(r) => u.sample_quad_str(s, t, r),
+            }
+        }
+    };
 }
 
-/// [`sample_quad`] for baseline x86-64.
-#[inline(never)]
-fn sample_quad_base(
-    u: &UnitPlan<'_>,
-    s: [f32; 4],
-    t: [f32; 4],
-    r: Option<[f32; 4]>,
-) -> [[f32; 4]; 4] {
-    sample_any(u, s, t, r)
-}
+sampler_copy!(
+    /// [`sample_quad`] for baseline x86-64.
+    sample_quad_base
+);
 
-/// [`sample_quad`] compiled with FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-#[inline(never)]
-unsafe fn sample_quad_fma(
-    u: &UnitPlan<'_>,
-    s: [f32; 4],
-    t: [f32; 4],
-    r: Option<[f32; 4]>,
-) -> [[f32; 4]; 4] {
-    sample_any(u, s, t, r)
-}
+sampler_copy!(
+    /// [`sample_quad`] compiled with FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "fma")]
+    sample_quad_fma unsafe
+);

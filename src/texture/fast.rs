@@ -220,16 +220,7 @@ pub fn chunk_u8<const VECTOR: bool>(
         for j in 0..QUADS {
             let (l, r) = (2 * j, 2 * j + 1);
             if live[0][l] || live[0][r] || live[1][l] || live[1][r] {
-                let v = quad_u8_levels(
-                    p,
-                    lv,
-                    [s[0][l], s[0][r], s[1][l], s[1][r]],
-                    [t[0][l], t[0][r], t[1][l], t[1][r]],
-                );
-                out[0][l] = v[0];
-                out[0][r] = v[1];
-                out[1][l] = v[2];
-                out[1][r] = v[3];
+                quad_into(p, lv, s, t, j, out);
             }
         }
         return;
@@ -270,19 +261,33 @@ pub fn chunk_u8<const VECTOR: bool>(
     }
     for j in 0..QUADS {
         if let Some(lv) = sel[j] {
-            let (l, r) = (2 * j, 2 * j + 1);
-            let v = quad_u8_levels(
-                p,
-                lv,
-                [s[0][l], s[0][r], s[1][l], s[1][r]],
-                [t[0][l], t[0][r], t[1][l], t[1][r]],
-            );
-            out[0][l] = v[0];
-            out[0][r] = v[1];
-            out[1][l] = v[2];
-            out[1][r] = v[3];
+            quad_into(p, lv, s, t, j, out);
         }
     }
+}
+
+/// Samples quad `j` of a chunk (columns `2j` and `2j + 1` of both rows) from levels `lv`
+/// by [`quad_u8_levels`] into `out`.
+#[inline(always)]
+fn quad_into(
+    p: &UnitPlan<'_>,
+    lv: (Filter, usize, usize, f32),
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    j: usize,
+    out: &mut [[[u8; 4]; LANES]; 2],
+) {
+    let (l, r) = (2 * j, 2 * j + 1);
+    let v = quad_u8_levels(
+        p,
+        lv,
+        [s[0][l], s[0][r], s[1][l], s[1][r]],
+        [t[0][l], t[0][r], t[1][l], t[1][r]],
+    );
+    out[0][l] = v[0];
+    out[0][r] = v[1];
+    out[1][l] = v[2];
+    out[1][r] = v[3];
 }
 
 /// The vector half of [`chunk_u8`]: `false` when the rows must be sampled by the scalar

@@ -278,25 +278,20 @@ mod tests {
         };
         let p = LodParams::new(&sp, 0.0, false);
         assert!(p.apply_min && p.apply_max);
-        let l = compute(
-            &p,
-            MipFilter::Linear,
-            2,
-            1.0,
-            1.0,
-            [0.0, 1.0, 0.0, 0.0],
-            [0.0; 4],
-        );
+        let at_width = |w: f32| {
+            compute(
+                &p,
+                MipFilter::Linear,
+                2,
+                w,
+                1.0,
+                [0.0, 1.0, 0.0, 0.0],
+                [0.0; 4],
+            )
+        };
+        let l = at_width(1.0);
         assert_eq!((l.ipart, l.fpart, l.positive), (1, 0.5, true));
-        let l = compute(
-            &p,
-            MipFilter::Linear,
-            2,
-            64.0,
-            1.0,
-            [0.0, 1.0, 0.0, 0.0],
-            [0.0; 4],
-        );
+        let l = at_width(64.0);
         assert_eq!((l.ipart, l.fpart), (2, 0.25));
         // default −1000/1000: no clamp applies
         let d = LodParams::new(&SamplerParams::default(), 0.0, false);

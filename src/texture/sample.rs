@@ -129,25 +129,42 @@ fn soa_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> 
         (Some(x), Some(y)) => texel_float(p, img.texel(x, y)),
         _ => p.border,
     };
+    let lerp = |w, a, b| lerpfx4(p.fma, w, a, b);
+    soa_taps(p, filter, (w, h), (s, t), fetch, lerp)
+}
+
+/// SoA (float) filtering of a `w`×`h` level at (s, t) (1D when `p.dims` is 1): `get`
+/// gives a texel's value (a coordinate outside the level is `None`: the border), `lerp`
+/// blends two by a weight.
+#[inline(always)]
+pub(super) fn soa_taps<T>(
+    p: &UnitPlan<'_>,
+    filter: Filter,
+    (w, h): (usize, usize),
+    (s, t): (f32, f32),
+    get: impl Fn(Option<usize>, Option<usize>) -> T,
+    lerp: impl Fn(f32, T, T) -> T,
+) -> T {
+    let two_d = p.dims >= 2;
     match filter {
         Filter::Nearest => {
             let x = wrap::soa_nearest(s, w, p.pot[0], p.wrap_s);
-            let y = if p.dims == 2 {
+            let y = if two_d {
                 wrap::soa_nearest(t, h, p.pot[1], p.wrap_t)
             } else {
                 Some(0)
             };
-            fetch(x, y)
+            get(x, y)
         }
         Filter::Linear => {
             let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
-            if p.dims == 1 {
-                return lerpfx4(p.fma, wx, fetch(x0, Some(0)), fetch(x1, Some(0)));
+            if !two_d {
+                return lerp(wx, get(x0, Some(0)), get(x1, Some(0)));
             }
             let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
-            let r0 = lerpfx4(p.fma, wx, fetch(x0, y0), fetch(x1, y0));
-            let r1 = lerpfx4(p.fma, wx, fetch(x0, y1), fetch(x1, y1));
-            lerpfx4(p.fma, wy, r0, r1)
+            let r0 = lerp(wx, get(x0, y0), get(x1, y0));
+            let r1 = lerp(wx, get(x0, y1), get(x1, y1));
+            lerp(wy, r0, r1)
         }
     }
 }
@@ -343,6 +360,13 @@ mod tests {
         })
     }
 
+    /// A 2x2 texture, red = 0, 100 / 200, 255.
+    fn red_2x2() -> Vec<Option<Level>> {
+        vec![img(2, 2, |x, y| {
+            [[[0u8, 100], [200, 255]][y][x], 0, 0, 255]
+        })]
+    }
+
     #[test]
     fn lerp8_matches_pmulhrsw_model() {
         assert_eq!(lerp8(0, 1, 128), 1);
@@ -354,10 +378,7 @@ mod tests {
 
     #[test]
     fn aos_bilinear_hand_computed() {
-        // 2x2 texture, red = 0, 100 / 200, 255
-        let lv = vec![img(2, 2, |x, y| {
-            [[[0u8, 100], [200, 255]][y][x], 0, 0, 255]
-        })];
+        let lv = red_2x2();
         let p = plan(&lv, true, Wrap::ClampToEdge, 0);
         // s = 0.6: u·256 = 307.2 → 307 − 128 = 179 → x0 = 0, wx = 179
         // t = 0.4: u·256 = 204.8 → 205 − 128 = 77 → y0 = 0, wy = 77
@@ -370,9 +391,7 @@ mod tests {
 
     #[test]
     fn soa_bilinear_float_weights() {
-        let lv = vec![img(2, 2, |x, y| {
-            [[[0u8, 100], [200, 255]][y][x], 0, 0, 255]
-        })];
+        let lv = red_2x2();
         let p = plan(&lv, false, Wrap::MirroredRepeat, 0);
         let c = sample(&p, 0.6, 0.4, Lod::MAG);
         let t = |v: u8| v as f32 * INV_255;

@@ -28,8 +28,7 @@
 //!   format.
 
 use super::lod::Lod;
-use super::sample::{lerpf, select_levels};
-use super::wrap;
+use super::sample::{lerpf, select_levels, soa_taps};
 use super::{BaseFormat, Filter, Level, UnitPlan};
 
 /// GL_TEXTURE_COMPARE_FUNC.
@@ -261,35 +260,15 @@ fn filter_level(
     r: f32,
 ) -> f32 {
     let (w, h) = (img.width, img.height);
-    let two_d = p.dims >= 2;
     let value = |x: Option<usize>, y: Option<usize>| -> f32 {
         match (x, y) {
             (Some(x), Some(y)) => sample_value(texel_z(img.texel(x, y)), d.bits),
             _ => p.border[0],
         }
     };
+    let lerp = |w, a, b| lerpf(p.fma, w, a, b);
     match d.func {
-        None => match filter {
-            Filter::Nearest => {
-                let x = wrap::soa_nearest(s, w, p.pot[0], p.wrap_s);
-                let y = if two_d {
-                    wrap::soa_nearest(t, h, p.pot[1], p.wrap_t)
-                } else {
-                    Some(0)
-                };
-                value(x, y)
-            }
-            Filter::Linear => {
-                let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
-                if !two_d {
-                    return lerpf(p.fma, wx, value(x0, Some(0)), value(x1, Some(0)));
-                }
-                let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
-                let r0 = lerpf(p.fma, wx, value(x0, y0), value(x1, y0));
-                let r1 = lerpf(p.fma, wx, value(x0, y1), value(x1, y1));
-                lerpf(p.fma, wy, r0, r1)
-            }
-        },
+        None => soa_taps(p, filter, (w, h), (s, t), value, lerp),
         Some(func) => {
             // gallivm clamps the reference only for formats that are not float
             let rc = if d.bits == FLOAT_BITS {
@@ -297,33 +276,8 @@ fn filter_level(
             } else {
                 r.clamp(0.0, 1.0)
             };
-            let pass = |x, y| func.test(rc, value(x, y));
-            match filter {
-                Filter::Nearest => {
-                    let x = wrap::soa_nearest(s, w, p.pot[0], p.wrap_s);
-                    let y = if two_d {
-                        wrap::soa_nearest(t, h, p.pot[1], p.wrap_t)
-                    } else {
-                        Some(0)
-                    };
-                    if pass(x, y) {
-                        1.0
-                    } else {
-                        0.0
-                    }
-                }
-                Filter::Linear => {
-                    let one = |x, y| if pass(x, y) { 1.0 } else { 0.0 };
-                    let (x0, x1, wx) = wrap::soa_linear(s, w, p.pot[0], p.wrap_s);
-                    if !two_d {
-                        return lerpf(p.fma, wx, one(x0, Some(0)), one(x1, Some(0)));
-                    }
-                    let (y0, y1, wy) = wrap::soa_linear(t, h, p.pot[1], p.wrap_t);
-                    let r0 = lerpf(p.fma, wx, one(x0, y0), one(x1, y0));
-                    let r1 = lerpf(p.fma, wx, one(x0, y1), one(x1, y1));
-                    lerpf(p.fma, wy, r0, r1)
-                }
-            }
+            let pass = |x, y| if func.test(rc, value(x, y)) { 1.0 } else { 0.0 };
+            soa_taps(p, filter, (w, h), (s, t), pass, lerp)
         }
     }
 }
