@@ -107,43 +107,26 @@ pub unsafe fn read_pixels(
     let base = c.read_color_base();
     let color_at = |idx: usize| base.read_rebase(fb.color_at(idx));
     let put = |p: *mut u8, v: f64, norm: bool| {
+        // `v` written at `p` as a `$t`: scaled from [`$lo`, 1] to the type's range when
+        // `norm`, converted as it is otherwise.
+        macro_rules! write_as {
+            ($t:ty, $lo:expr) => {
+                (p as *mut $t).write_unaligned(if norm {
+                    (v.clamp($lo, 1.0) * <$t>::MAX as f64).round() as $t
+                } else {
+                    v as $t
+                })
+            };
+        }
         // SAFETY: the program promises a destination large enough for the packed image.
         unsafe {
             match ty {
-                GL_UNSIGNED_BYTE => {
-                    *p = if norm {
-                        (v.clamp(0.0, 1.0) * 255.0).round() as u8
-                    } else {
-                        v as u8
-                    }
-                }
-                GL_BYTE => {
-                    *(p as *mut i8) = if norm {
-                        (v.clamp(-1.0, 1.0) * 127.0).round() as i8
-                    } else {
-                        v as i8
-                    }
-                }
-                GL_UNSIGNED_SHORT => (p as *mut u16).write_unaligned(if norm {
-                    (v.clamp(0.0, 1.0) * 65535.0).round() as u16
-                } else {
-                    v as u16
-                }),
-                GL_SHORT => (p as *mut i16).write_unaligned(if norm {
-                    (v.clamp(-1.0, 1.0) * 32767.0).round() as i16
-                } else {
-                    v as i16
-                }),
-                GL_UNSIGNED_INT => (p as *mut u32).write_unaligned(if norm {
-                    (v.clamp(0.0, 1.0) * 4294967295.0).round() as u32
-                } else {
-                    v as u32
-                }),
-                GL_INT => (p as *mut i32).write_unaligned(if norm {
-                    (v.clamp(-1.0, 1.0) * 2147483647.0).round() as i32
-                } else {
-                    v as i32
-                }),
+                GL_UNSIGNED_BYTE => write_as!(u8, 0.0),
+                GL_BYTE => write_as!(i8, -1.0),
+                GL_UNSIGNED_SHORT => write_as!(u16, 0.0),
+                GL_SHORT => write_as!(i16, -1.0),
+                GL_UNSIGNED_INT => write_as!(u32, 0.0),
+                GL_INT => write_as!(i32, -1.0),
                 _ => (p as *mut f32).write_unaligned(v as f32),
             }
         }
