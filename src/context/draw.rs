@@ -32,7 +32,13 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
 ) {
-    draw_inner(ctx, mode, verts, indices, materials, false)
+    let prims = Prims {
+        mode,
+        verts,
+        indices,
+        materials,
+    };
+    draw_inner(ctx, prims, false)
 }
 
 /// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
@@ -40,23 +46,39 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
 /// left drawing on the pool ([`Context::settle_draws`]) while the program sends the next
 /// chunk's vertices.
 pub fn draw_chunk<S: VertexSource + ?Sized>(ctx: &mut Context, mode: Primitive, verts: &S) {
-    draw_inner(ctx, mode, verts, None, None, true)
+    let prims = Prims {
+        mode,
+        verts,
+        indices: None,
+        materials: None,
+    };
+    draw_inner(ctx, prims, true)
 }
+
+/// What one draw draws: `verts` as `mode`, through `indices` when given, with a material
+/// per vertex when given.
+struct Prims<'a, S: ?Sized> {
+    mode: Primitive,
+    verts: &'a S,
+    indices: Option<&'a [u32]>,
+    materials: Option<&'a [[Material; 2]]>,
+}
+
+impl<S: ?Sized> Clone for Prims<'_, S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S: ?Sized> Copy for Prims<'_, S> {}
 
 /// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
 /// a 4x multisample object is one pass per sample plane ([`draw_multisample`]).
-fn draw_inner<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
-    detach: bool,
-) {
+fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, detach: bool) {
     if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {
-        return draw_pass(ctx, mode, verts, indices, materials, detach, None);
+        return draw_pass(ctx, prims, detach, None);
     }
-    draw_multisample(ctx, mode, verts, indices, materials);
+    draw_multisample(ctx, prims);
 }
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
@@ -74,13 +96,7 @@ fn draw_inner<S: VertexSource + ?Sized>(
 /// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
 /// same tests pass, in the same order), its own depth and stencil put back afterwards;
 /// plane 0 is drawn last, normally.
-fn draw_multisample<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
-) {
+fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>) {
     ctx.settle_draws();
     crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let caps = &ctx.state.caps;
@@ -96,13 +112,13 @@ fn draw_multisample<S: VertexSource + ?Sized>(
             fb.resolve();
             let own_d = std::mem::replace(&mut fb.depth, depth0.clone());
             let own_s = std::mem::replace(&mut fb.stencil, stencil0.clone());
-            draw_pass(c, mode, verts, indices, materials, false, None);
+            draw_pass(c, prims, false, None);
             if let Some(fb) = c.fb.as_mut() {
                 fb.depth = own_d;
                 fb.stencil = own_s;
             }
         });
-        return draw_pass(ctx, mode, verts, indices, materials, false, None);
+        return draw_pass(ctx, prims, false, None);
     }
     // glSampleCoverage's mask (only with GL_SAMPLE_COVERAGE on; st_atom_msaa.c).
     let mut mask = 0xF_u32;
@@ -118,13 +134,13 @@ fn draw_multisample<S: VertexSource + ?Sized>(
     }
     let a2c = caps.get(Cap::SampleAlphaToCoverage);
     let triangles = !matches!(
-        mode,
+        prims.mode,
         Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
     );
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
             let pass = triangles.then(|| crate::fragment::MsPass::new(s, a2c));
-            draw_pass(c, mode, verts, indices, materials, false, pass);
+            draw_pass(c, prims, false, pass);
         }
     });
 }
@@ -133,10 +149,7 @@ fn draw_multisample<S: VertexSource + ?Sized>(
 /// multisample pass `ms`, the plane of its sample).
 fn draw_pass<S: VertexSource + ?Sized>(
     ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
+    prims: Prims<'_, S>,
     detach: bool,
     ms: Option<crate::fragment::MsPass>,
 ) {
@@ -144,7 +157,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
     ctx.settle_draws();
     crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else { return };
-    let n = indices.map_or(verts.count(), |i| i.len());
+    let n = prims.indices.map_or(prims.verts.count(), |i| i.len());
     if n == 0 {
         return;
     }
@@ -152,7 +165,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
     // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
     // streamed for minutes: the probe reserves address space and touches none of it.
     if Vec::<ClipVertex>::new()
-        .try_reserve_exact(verts.count())
+        .try_reserve_exact(prims.verts.count())
         .is_err()
     {
         ctx.record_error(crate::gl::error::GlError::OutOfMemory);
@@ -198,6 +211,12 @@ fn draw_pass<S: VertexSource + ?Sized>(
             height: target.height as f32,
             tex0: crate::geometry::VARY_TEX,
         };
+        let Prims {
+            mode,
+            verts,
+            indices,
+            materials,
+        } = prims;
         return crate::render::feedback(&mut plan, mode, verts, indices, materials, &mut sink);
     }
     let Some(region) = region else {
@@ -207,17 +226,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
         return;
     }
     let Some(fb) = ctx.fb.as_mut() else { return };
-    let kept = run(
-        plan,
-        mode,
-        verts,
-        indices,
-        materials,
-        fb,
-        region,
-        &mut ctx.stats,
-        detach,
-    );
+    let kept = run(plan, prims, fb, region, &mut ctx.stats, detach);
     if ctx.state.caps.get(Cap::ColorMaterial) {
         ctx.light.sync_color_material(ctx.state.current.color);
     }
@@ -229,13 +238,9 @@ fn draw_pass<S: VertexSource + ?Sized>(
 }
 
 /// [`crate::render::run`], for a draw that settled the previous one first.
-#[allow(clippy::too_many_arguments)]
 fn run<S: VertexSource + ?Sized>(
     plan: DrawPlan<'_>,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
+    prims: Prims<'_, S>,
     fb: &mut crate::framebuffer::Framebuffer,
     region: [i64; 4],
     stats: &mut crate::stats::Stats,
@@ -246,7 +251,15 @@ fn run<S: VertexSource + ?Sized>(
     // (`Context::settle_draws`) before it starts a rasterizer; this one did.
     unsafe {
         crate::render::run(
-            plan, mode, verts, indices, materials, fb, region, stats, detach,
+            plan,
+            prims.mode,
+            prims.verts,
+            prims.indices,
+            prims.materials,
+            fb,
+            region,
+            stats,
+            detach,
         )
     }
 }
