@@ -118,6 +118,15 @@ impl Default for ArrayState {
 }
 
 impl ArrayState {
+    /// A copy of every array pointer and buffer binding, without the buffer objects (what
+    /// glPushClientAttrib saves).
+    pub fn bindings(&mut self) -> ArrayState {
+        let buffers = std::mem::take(&mut self.buffers);
+        let copy = self.clone();
+        self.buffers = buffers;
+        copy
+    }
+
     /// The buffer bound to `target` (0 = none).
     pub fn binding(&self, target: BufferTarget) -> u32 {
         match target {

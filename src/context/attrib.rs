@@ -2,13 +2,14 @@
 //!
 //! A push takes a snapshot of the plain state sub-structs (cheap `Clone`s of data, no
 //! texel or buffer storage) together with the mask; a pop copies back, group by group, the
-//! members of the groups in the mask. Each group is one restore function below listing its
+//! members of the groups in the mask. Each group is one entry of `GROUPS` listing its
 //! members one per line, so a new piece of state joins a group by adding one line there
-//! (the snapshot already holds every field of `State` and `LightingState`).
+//! (the snapshot already holds every field of `State` and `LightingState`); which group
+//! restores each enable bit is `cap_group`.
 //!
 //! Stack depths are Mesa's (`MAX_ATTRIB_STACK_DEPTH`, `MAX_CLIENT_ATTRIB_STACK_DEPTH`: 16).
 
-use super::arrays::ArrayPointer;
+use super::arrays::ArrayState;
 use super::error::{GlError, GlResult};
 use super::lighting_state::LightingState;
 use super::state::{Cap, PixelStore, State, CAPS, MAX_TEXTURE_UNITS};
@@ -55,18 +56,11 @@ pub struct AttribFrame {
 }
 
 /// The vertex-array part of a glPushClientAttrib entry.
-#[derive(Clone)]
 struct ClientArrays {
-    vertex: ArrayPointer,
-    color: ArrayPointer,
-    normal: ArrayPointer,
-    texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
-    edge_flag: ArrayPointer,
-    index: ArrayPointer,
-    secondary_color: ArrayPointer,
-    fog_coord: ArrayPointer,
-    array_buffer: u32,
-    element_buffer: u32,
+    /// Every array pointer and buffer binding, without the buffer objects
+    /// ([`ArrayState::bindings`]).
+    arrays: ArrayState,
+    /// glClientActiveTexture.
     client_active_texture: usize,
 }
 
@@ -89,9 +83,37 @@ pub struct AttribStacks {
     pub client: Vec<ClientFrame>,
 }
 
-/// Copies the enable bits `caps` from the snapshot.
-fn caps(c: &mut Context, s: &AttribFrame, caps: &[Cap]) {
-    for &cap in caps {
+/// The group whose pop restores the enable bit `cap` besides GL_ENABLE_BIT (which restores
+/// them all), or 0 for none: GL_TEXTURE_1D/2D follow the units' enables instead
+/// ([`sync_texture_caps`]), and GL_COLOR_SUM belongs to no group here.
+fn cap_group(cap: Cap) -> u32 {
+    use Cap::*;
+    let within = |first: Cap, last: Cap| (first as usize..=last as usize).contains(&(cap as usize));
+    match cap {
+        AlphaTest | Blend | Dither | ColorLogicOp | IndexLogicOp => GL_COLOR_BUFFER_BIT,
+        _ if within(Map1Color4, Map2Vertex4) => GL_EVAL_BIT,
+        AutoNormal => GL_EVAL_BIT,
+        Lighting | ColorMaterial => GL_LIGHTING_BIT,
+        _ if within(Light0, Light7) => GL_LIGHTING_BIT,
+        Normalize | RescaleNormal => GL_TRANSFORM_BIT,
+        _ if within(ClipPlane0, ClipPlane7) => GL_TRANSFORM_BIT,
+        CullFace | PolygonSmooth | PolygonStipple => GL_POLYGON_BIT,
+        PolygonOffsetFill | PolygonOffsetLine | PolygonOffsetPoint => GL_POLYGON_BIT,
+        Multisample | SampleAlphaToCoverage | SampleAlphaToOne | SampleCoverage => MULTISAMPLE_BIT,
+        Texture3D | TextureCubeMap | TexGenS | TexGenT | TexGenR | TexGenQ => GL_TEXTURE_BIT,
+        LineSmooth | LineStipple => GL_LINE_BIT,
+        PointSmooth => GL_POINT_BIT,
+        DepthTest => GL_DEPTH_BUFFER_BIT,
+        StencilTest => GL_STENCIL_BUFFER_BIT,
+        ScissorTest => GL_SCISSOR_BIT,
+        Fog => GL_FOG_BIT,
+        _ => 0,
+    }
+}
+
+/// Copies from the snapshot the enable bits that group `bit` restores.
+fn caps(c: &mut Context, s: &AttribFrame, bit: u32) {
+    for &(cap, _) in CAPS.iter().filter(|&&(cap, _)| cap_group(cap) == bit) {
         c.state.caps.set(cap, s.state.caps.get(cap));
     }
 }
@@ -104,110 +126,6 @@ fn sync_texture_caps(c: &mut Context) {
     c.state.caps.set(Cap::Texture2D, e2);
     c.state.caps.set(Cap::Texture3D, e3);
     c.state.caps.set(Cap::TextureCubeMap, ec);
-}
-
-fn current(c: &mut Context, s: &AttribFrame) {
-    c.state.current = s.state.current;
-    c.raster_pos = s.raster_pos;
-}
-
-fn point(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::PointSmooth]);
-    c.raster.point = s.raster.point;
-    // missing: size min/max, fade threshold, distance attenuation (glPointParameter not
-    // implemented)
-}
-
-fn line(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::LineSmooth, Cap::LineStipple]);
-    c.raster.line = s.raster.line;
-}
-
-fn polygon(c: &mut Context, s: &AttribFrame) {
-    caps(
-        c,
-        s,
-        &[
-            Cap::CullFace,
-            Cap::PolygonSmooth,
-            Cap::PolygonStipple,
-            Cap::PolygonOffsetFill,
-            Cap::PolygonOffsetLine,
-            Cap::PolygonOffsetPoint,
-        ],
-    );
-    c.state.cull_face = s.state.cull_face;
-    c.state.front_ccw = s.state.front_ccw;
-    c.raster.polygon = s.raster.polygon;
-}
-
-fn polygon_stipple(c: &mut Context, s: &AttribFrame) {
-    c.raster.stipple = s.raster.stipple;
-}
-
-fn pixel_mode(c: &mut Context, s: &AttribFrame) {
-    c.pixel_modes = s.pixel_modes;
-    c.state.legacy.read_buffer = s.state.legacy.read_buffer;
-    // pixel maps belong to no group
-}
-
-fn lighting(c: &mut Context, s: &AttribFrame) {
-    let mut list = vec![Cap::Lighting, Cap::ColorMaterial];
-    list.extend((0..8).map(|i| CAPS[Cap::Light0 as usize + i].0));
-    caps(c, s, &list);
-    c.state.shade_model = s.state.shade_model;
-    c.light.lights = s.light.lights;
-    c.light.model = s.light.model;
-    c.light.material = s.light.material;
-    c.light.color_material = s.light.color_material;
-}
-
-fn fog(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::Fog]);
-    c.light.fog = s.light.fog;
-}
-
-fn depth_buffer(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::DepthTest]);
-    c.state.depth_func = s.state.depth_func;
-    c.state.clear_depth = s.state.clear_depth;
-    c.state.depth_mask = s.state.depth_mask;
-}
-
-fn accum_buffer(c: &mut Context, s: &AttribFrame) {
-    c.accum.attrib = s.accum;
-}
-
-fn stencil_buffer(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::StencilTest]);
-    c.state.clear_stencil = s.state.clear_stencil;
-    c.state.frag.stencil_front = s.state.frag.stencil_front;
-    c.state.frag.stencil_back = s.state.frag.stencil_back;
-}
-
-fn viewport(c: &mut Context, s: &AttribFrame) {
-    c.state.viewport = s.state.viewport;
-    c.state.depth_range = s.state.depth_range;
-}
-
-fn transform(c: &mut Context, s: &AttribFrame) {
-    let mut list = vec![Cap::Normalize, Cap::RescaleNormal];
-    list.extend([
-        Cap::ClipPlane0,
-        Cap::ClipPlane1,
-        Cap::ClipPlane2,
-        Cap::ClipPlane3,
-        Cap::ClipPlane4,
-        Cap::ClipPlane5,
-        Cap::ClipPlane6,
-        Cap::ClipPlane7,
-    ]);
-    caps(c, s, &list);
-    c.state.matrix_mode = s.state.matrix_mode;
-    // The plane equations and their enable bits (which mirror the caps above).
-    c.clip_planes = s.clip_planes;
-    // glClipControl (Mesa's attrib.c restores it with the transform group).
-    c.state.clip_control = s.state.clip_control;
 }
 
 fn enable(c: &mut Context, s: &AttribFrame) {
@@ -224,51 +142,6 @@ fn enable(c: &mut Context, s: &AttribFrame) {
         u.enabled = saved.enabled;
     }
     c.sync_texgen_caps();
-}
-
-fn color_buffer(c: &mut Context, s: &AttribFrame) {
-    caps(
-        c,
-        s,
-        &[
-            Cap::AlphaTest,
-            Cap::Blend,
-            Cap::Dither,
-            Cap::ColorLogicOp,
-            Cap::IndexLogicOp,
-        ],
-    );
-    c.state.frag.alpha_func = s.state.frag.alpha_func;
-    c.state.frag.alpha_ref = s.state.frag.alpha_ref;
-    c.state.frag.blend = s.state.frag.blend;
-    c.state.frag.logic_op = s.state.frag.logic_op;
-    c.state.color_mask = s.state.color_mask;
-    c.state.clear_color = s.state.clear_color;
-    c.state.legacy.draw_buffer = s.state.legacy.draw_buffer;
-    c.state.legacy.index_mask = s.state.legacy.index_mask;
-    c.state.legacy.clear_index = s.state.legacy.clear_index;
-}
-
-fn hint(c: &mut Context, s: &AttribFrame) {
-    c.state.hints = s.state.hints;
-}
-
-fn eval(c: &mut Context, s: &AttribFrame) {
-    let maps: Vec<Cap> = CAPS
-        .iter()
-        .map(|&(cap, _)| cap)
-        .filter(|&cap| {
-            (Cap::Map1Color4 as usize..=Cap::Map2Vertex4 as usize).contains(&(cap as usize))
-        })
-        .chain([Cap::AutoNormal])
-        .collect();
-    caps(c, s, &maps);
-    c.eval.grid1 = s.grids.0;
-    c.eval.grid2 = s.grids.1;
-}
-
-fn list(c: &mut Context, s: &AttribFrame) {
-    c.lists.base = s.list_base;
 }
 
 fn texture(c: &mut Context, s: &AttribFrame) {
@@ -288,69 +161,89 @@ fn texture(c: &mut Context, s: &AttribFrame) {
         }
     }
     c.state.active_texture = s.state.active_texture;
-    caps(
-        c,
-        s,
-        &[
-            Cap::Texture3D,
-            Cap::TextureCubeMap,
-            Cap::TexGenS,
-            Cap::TexGenT,
-            Cap::TexGenR,
-            Cap::TexGenQ,
-        ],
-    );
     sync_texture_caps(c);
     c.texgen = (*s.texgen).clone();
     c.sync_texgen_caps();
 }
 
-fn scissor(c: &mut Context, s: &AttribFrame) {
-    caps(c, s, &[Cap::ScissorTest]);
-    c.state.scissor = s.state.scissor;
-}
-
-fn multisample(c: &mut Context, s: &AttribFrame) {
-    caps(
-        c,
-        s,
-        &[
-            Cap::Multisample,
-            Cap::SampleAlphaToCoverage,
-            Cap::SampleAlphaToOne,
-            Cap::SampleCoverage,
-        ],
-    );
-    c.state.legacy.sample_coverage_value = s.state.legacy.sample_coverage_value;
-    c.state.legacy.sample_coverage_invert = s.state.legacy.sample_coverage_invert;
-}
-
-/// A group's restore function.
+/// A group's restore function (after its enable bits).
 type Restore = fn(&mut Context, &AttribFrame);
 
-/// The groups in the order a pop restores them.
+/// The groups in the order a pop restores them: each first gets back its enable bits
+/// ([`cap_group`]), then what it copies back, one member a line.
 const GROUPS: &[(u32, Restore)] = &[
-    (GL_ACCUM_BUFFER_BIT, accum_buffer),
-    (GL_COLOR_BUFFER_BIT, color_buffer),
-    (GL_CURRENT_BIT, current),
-    (GL_DEPTH_BUFFER_BIT, depth_buffer),
+    (GL_ACCUM_BUFFER_BIT, |c, s| c.accum.attrib = s.accum),
+    (GL_COLOR_BUFFER_BIT, |c, s| {
+        c.state.frag.alpha_func = s.state.frag.alpha_func;
+        c.state.frag.alpha_ref = s.state.frag.alpha_ref;
+        c.state.frag.blend = s.state.frag.blend;
+        c.state.frag.logic_op = s.state.frag.logic_op;
+        c.state.color_mask = s.state.color_mask;
+        c.state.clear_color = s.state.clear_color;
+        c.state.legacy.draw_buffer = s.state.legacy.draw_buffer;
+        c.state.legacy.index_mask = s.state.legacy.index_mask;
+        c.state.legacy.clear_index = s.state.legacy.clear_index;
+    }),
+    (GL_CURRENT_BIT, |c, s| {
+        c.state.current = s.state.current;
+        c.raster_pos = s.raster_pos;
+    }),
+    (GL_DEPTH_BUFFER_BIT, |c, s| {
+        c.state.depth_func = s.state.depth_func;
+        c.state.clear_depth = s.state.clear_depth;
+        c.state.depth_mask = s.state.depth_mask;
+    }),
     (GL_ENABLE_BIT, enable),
-    (GL_EVAL_BIT, eval),
-    (GL_FOG_BIT, fog),
-    (GL_HINT_BIT, hint),
-    (GL_LIGHTING_BIT, lighting),
-    (GL_LINE_BIT, line),
-    (GL_LIST_BIT, list),
-    (GL_PIXEL_MODE_BIT, pixel_mode),
-    (GL_POINT_BIT, point),
-    (GL_POLYGON_BIT, polygon),
-    (GL_POLYGON_STIPPLE_BIT, polygon_stipple),
-    (GL_SCISSOR_BIT, scissor),
-    (GL_STENCIL_BUFFER_BIT, stencil_buffer),
+    (GL_EVAL_BIT, |c, s| (c.eval.grid1, c.eval.grid2) = s.grids),
+    (GL_FOG_BIT, |c, s| c.light.fog = s.light.fog),
+    (GL_HINT_BIT, |c, s| c.state.hints = s.state.hints),
+    (GL_LIGHTING_BIT, |c, s| {
+        c.state.shade_model = s.state.shade_model;
+        c.light.lights = s.light.lights;
+        c.light.model = s.light.model;
+        c.light.material = s.light.material;
+        c.light.color_material = s.light.color_material;
+    }),
+    (GL_LINE_BIT, |c, s| c.raster.line = s.raster.line),
+    (GL_LIST_BIT, |c, s| c.lists.base = s.list_base),
+    (GL_PIXEL_MODE_BIT, |c, s| {
+        c.pixel_modes = s.pixel_modes;
+        c.state.legacy.read_buffer = s.state.legacy.read_buffer;
+        // pixel maps belong to no group
+    }),
+    // missing: size min/max, fade threshold, distance attenuation (glPointParameter not
+    // implemented)
+    (GL_POINT_BIT, |c, s| c.raster.point = s.raster.point),
+    (GL_POLYGON_BIT, |c, s| {
+        c.state.cull_face = s.state.cull_face;
+        c.state.front_ccw = s.state.front_ccw;
+        c.raster.polygon = s.raster.polygon;
+    }),
+    (GL_POLYGON_STIPPLE_BIT, |c, s| {
+        c.raster.stipple = s.raster.stipple
+    }),
+    (GL_SCISSOR_BIT, |c, s| c.state.scissor = s.state.scissor),
+    (GL_STENCIL_BUFFER_BIT, |c, s| {
+        c.state.clear_stencil = s.state.clear_stencil;
+        c.state.frag.stencil_front = s.state.frag.stencil_front;
+        c.state.frag.stencil_back = s.state.frag.stencil_back;
+    }),
     (GL_TEXTURE_BIT, texture),
-    (GL_TRANSFORM_BIT, transform),
-    (GL_VIEWPORT_BIT, viewport),
-    (MULTISAMPLE_BIT, multisample),
+    (GL_TRANSFORM_BIT, |c, s| {
+        c.state.matrix_mode = s.state.matrix_mode;
+        // The plane equations and their enable bits (which mirror the caps).
+        c.clip_planes = s.clip_planes;
+        // glClipControl (Mesa's attrib.c restores it with the transform group).
+        c.state.clip_control = s.state.clip_control;
+    }),
+    (GL_VIEWPORT_BIT, |c, s| {
+        c.state.viewport = s.state.viewport;
+        c.state.depth_range = s.state.depth_range;
+    }),
+    (MULTISAMPLE_BIT, |c, s| {
+        c.state.legacy.sample_coverage_value = s.state.legacy.sample_coverage_value;
+        c.state.legacy.sample_coverage_invert = s.state.legacy.sample_coverage_invert;
+    }),
 ];
 
 impl Context {
@@ -400,6 +293,7 @@ impl Context {
         };
         for &(bit, restore) in GROUPS {
             if frame.mask & bit != 0 {
+                caps(self, &frame, bit);
                 restore(self, &frame);
             }
         }
@@ -411,21 +305,11 @@ impl Context {
         if self.attrib.client.len() >= MAX_CLIENT_ATTRIB_STACK_DEPTH {
             return Err(GlError::StackOverflow);
         }
-        let a = &self.arrays;
         self.attrib.client.push(ClientFrame {
             mask,
             pixel: (self.state.pack, self.state.unpack),
             arrays: Box::new(ClientArrays {
-                vertex: a.vertex,
-                color: a.color,
-                normal: a.normal,
-                texcoord: a.texcoord,
-                edge_flag: a.edge_flag,
-                index: a.index,
-                secondary_color: a.secondary_color,
-                fog_coord: a.fog_coord,
-                array_buffer: a.array_buffer,
-                element_buffer: a.element_buffer,
+                arrays: self.arrays.bindings(),
                 client_active_texture: self.state.client_active_texture,
             }),
         });
@@ -441,25 +325,23 @@ impl Context {
             (self.state.pack, self.state.unpack) = f.pixel;
         }
         if f.mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0 {
-            let s = *f.arrays;
+            let ClientArrays {
+                arrays: mut saved,
+                client_active_texture,
+            } = *f.arrays;
             let a = &mut self.arrays;
-            a.vertex = s.vertex;
-            a.color = s.color;
-            a.normal = s.normal;
-            a.texcoord = s.texcoord;
-            a.edge_flag = s.edge_flag;
-            a.index = s.index;
-            a.secondary_color = s.secondary_color;
-            a.fog_coord = s.fog_coord;
-            // A buffer deleted since the push is not revived.
-            let live = |a: &super::arrays::ArrayState, n: u32| n == 0 || a.buffers.contains_key(&n);
-            if live(a, s.array_buffer) {
-                a.array_buffer = s.array_buffer;
+            // A buffer deleted since the push is not revived: the binding stays as it is.
+            for (name, now) in [
+                (&mut saved.array_buffer, a.array_buffer),
+                (&mut saved.element_buffer, a.element_buffer),
+            ] {
+                if *name != 0 && !a.buffers.contains_key(&*name) {
+                    *name = now;
+                }
             }
-            if live(a, s.element_buffer) {
-                a.element_buffer = s.element_buffer;
-            }
-            self.state.client_active_texture = s.client_active_texture;
+            saved.buffers = std::mem::take(&mut a.buffers);
+            *a = saved;
+            self.state.client_active_texture = client_active_texture;
         }
         Ok(())
     }
