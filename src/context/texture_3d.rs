@@ -7,7 +7,8 @@
 use super::state::PixelStore;
 use super::texture_copy::read_texels;
 use super::texture_spec::{
-    check_level, image_target, maybe_generate, non_negative, resolve_internal, unpack_any,
+    check_level, image_target, level_format, maybe_generate, new_level, non_negative, skip_border,
+    unpack_any,
 };
 use super::{Context, GlError, GlResult};
 use crate::context::pack::tex::{self as upload, ClientFormat};
@@ -66,15 +67,13 @@ pub(crate) unsafe fn pack_3d(
     }
     let n = img.width * img.height;
     for z in 0..d {
-        let slice = Level {
-            width: img.width,
-            height: img.height,
-            internal_format: img.internal_format,
-            base: img.base,
-            storage: img.storage,
-            texels: img.texels[z * n..(z + 1) * n].to_vec(),
-            blocks: None,
-        };
+        let texels = img.texels[z * n..(z + 1) * n].to_vec();
+        let slice = new_level(
+            img.internal_format,
+            (img.base, img.storage),
+            (img.width, img.height),
+            texels,
+        );
         let s = slice_store(ps, img.height, z);
         // SAFETY: forwarded caller contract.
         unsafe { upload::pack(&s, cf, &slice, dst as *mut u8) };
@@ -136,49 +135,29 @@ impl Context {
             return Err(GlError::InvalidValue);
         }
         let cf = ClientFormat::new(format, ty)?;
-        let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
-        let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
+        let (internal, texel) = level_format(internal, t, (format, ty))?;
         // Mesa: no 3D depth textures; depth data for a colour image is an error too
-        if cf.is_depth() || base == BaseFormat::Depth {
+        if cf.is_depth() || texel.0 == BaseFormat::Depth {
             return Err(GlError::InvalidOperation);
         }
-        let storage = upload::choose_storage(internal, base, sformat, sty);
         let size = size_3d(level, w, h, d, border);
-        let header = |w, h| Level {
-            width: w,
-            height: h,
-            internal_format: internal as u32,
-            base,
-            storage,
-            texels: Vec::new(),
-            blocks: None,
-        };
         if proxy {
             let obj = self.tex_object_mut(t, true);
             (obj.levels[level], obj.depths[level]) = match size {
-                Ok((w, h, d)) => (Some(header(w, h)), d),
+                Ok((w, h, d)) => (Some(new_level(internal, texel, (w, h), Vec::new())), d),
                 Err(_) => (None, 0),
             };
             return Ok(());
         }
         let (tw, th, td) = size?;
-        let mut ps = unpack;
-        if border == 1 {
-            if ps.row_length == 0 {
-                ps.row_length = (tw + 2) as i32;
-            }
-            if ps.image_height == 0 {
-                ps.image_height = (th + 2) as i32;
-            }
-            ps.skip_pixels += 1;
-            ps.skip_rows += 1;
-            ps.skip_images += 1;
-        }
-        let mut img = header(tw, th);
+        let ps = match border {
+            1 => skip_border(unpack, (tw, th), true, true),
+            _ => unpack,
+        };
         // SAFETY: forwarded caller contract.
-        img.texels = unsafe { unpack_3d(self, &ps, &cf, (base, storage), (tw, th, td), data) };
+        let texels = unsafe { unpack_3d(self, &ps, &cf, texel, (tw, th, td), data) };
         let obj = self.tex_object_mut(t, false);
-        obj.levels[level] = Some(img);
+        obj.levels[level] = Some(new_level(internal, texel, (tw, th), texels));
         obj.depths[level] = td;
         maybe_generate(obj, level);
         Ok(())

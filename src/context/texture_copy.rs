@@ -2,7 +2,7 @@
 //! colours or depth as texels, with pixel transfer as Mesa's CPU copy applies it.
 
 use super::texture_spec::{
-    check_level, image_size, maybe_generate, non_negative, resolve_internal, storage_of,
+    check_level, image_size, maybe_generate, new_level, non_negative, resolve_internal, storage_of,
     store_level, sub_image_target,
 };
 use super::{Context, GlError, GlResult};
@@ -10,7 +10,7 @@ use crate::context::pack::depth as shadow;
 use crate::context::pack::tex as upload;
 use crate::framebuffer::Framebuffer;
 use crate::gl::types::*;
-use crate::texture::{BaseFormat, Level, Storage};
+use crate::texture::{BaseFormat, Storage};
 
 /// Calls `f(i, j)` for each pixel of the GL-window rectangle `(x, y, w, h)` (y up) that
 /// lies inside `fb`: `i` is its index in the row-major `w`-wide rectangle, `j` its index in
@@ -129,15 +129,7 @@ impl Context {
             true => super::texture_ds::read_fb_stencil(self, sx, sy, tw, th),
             false => Vec::new(),
         };
-        let img = Level {
-            width: tw,
-            height: th,
-            internal_format: internal,
-            base,
-            storage,
-            texels,
-            blocks: None,
-        };
+        let img = new_level(internal, (base, storage), (tw, th), texels);
         store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }

@@ -174,6 +174,65 @@ pub(crate) fn resolve_internal(
     }
 }
 
+/// The internal format of a new glTexImage1D/2D/3D level of `internal` on `t` for client
+/// data of `format`/`ty` ([`resolve_internal`]), with its base format and storage
+/// ([`storage_of`]); an unknown internal format is GL_INVALID_VALUE.
+pub(crate) fn level_format(
+    internal: GLint,
+    t: Target,
+    (format, ty): (GLenum, GLenum),
+) -> GlResult<(u32, (BaseFormat, Storage))> {
+    let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
+    let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
+    let storage = storage_of(internal, base, sformat, sty);
+    Ok((internal as u32, (base, storage)))
+}
+
+/// A `w` x `h` level of `texels` in internal format `internal`, with its base format and
+/// storage, and no compressed blocks.
+pub(crate) fn new_level(
+    internal: u32,
+    (base, storage): (BaseFormat, Storage),
+    (w, h): (usize, usize),
+    texels: Vec<[u8; 4]>,
+) -> Level {
+    Level {
+        width: w,
+        height: h,
+        internal_format: internal,
+        base,
+        storage,
+        texels,
+        blocks: None,
+    }
+}
+
+/// The unpack state that skips the one-texel border of a `w` x `h` image (stripped of its
+/// border): the first pixel of each row, the first row when `rows`, and the first image
+/// with its height when `images` (GL 1.5 §3.8.1).
+pub(crate) fn skip_border(
+    unpack: PixelStore,
+    (w, h): (usize, usize),
+    rows: bool,
+    images: bool,
+) -> PixelStore {
+    let mut ps = unpack;
+    if ps.row_length == 0 {
+        ps.row_length = (w + 2) as i32;
+    }
+    ps.skip_pixels += 1;
+    if rows {
+        ps.skip_rows += 1;
+    }
+    if images {
+        if ps.image_height == 0 {
+            ps.image_height = (h + 2) as i32;
+        }
+        ps.skip_images += 1;
+    }
+    ps
+}
+
 /// The storage Mesa picks for an image (depth images: their depth bits).
 pub(crate) fn storage_of(internal: GLint, base: BaseFormat, format: GLenum, ty: GLenum) -> Storage {
     if base == BaseFormat::Depth {
@@ -285,23 +344,13 @@ impl Context {
             return Err(GlError::InvalidValue);
         }
         let cf = super::texture_ci::client_format(format, ty)?;
-        let (internal, sformat, sty) = resolve_internal(internal, t, (format, ty));
-        let base = upload::base_format(internal).ok_or(GlError::InvalidValue)?;
-        depth_match(base, &cf)?;
-        let storage = storage_of(internal, base, sformat, sty);
+        let (internal, texel) = level_format(internal, t, (format, ty))?;
+        depth_match(texel.0, &cf)?;
         let size = image_size(t, level, w, h, border);
         if proxy {
             let obj = self.tex_object_mut(t, true);
             obj.face_levels_mut(face)[level] = match size {
-                Ok(Some((w, h))) => Some(Level {
-                    width: w,
-                    height: h,
-                    internal_format: internal as u32,
-                    base,
-                    storage,
-                    texels: Vec::new(),
-                    blocks: None,
-                }),
+                Ok(Some(size)) => Some(new_level(internal, texel, size, Vec::new())),
                 _ => None,
             };
             return Ok(());
@@ -310,39 +359,15 @@ impl Context {
             return Ok(());
         };
         // Border stripping: skip the first border pixel and row of the client image.
-        let mut ps = unpack;
-        let (fw, _fh) = (tw + 2 * border as usize, th + 2 * border as usize);
-        if border == 1 {
-            if ps.row_length == 0 {
-                ps.row_length = fw as i32;
-            }
-            ps.skip_pixels += 1;
-            if t == Target::Tex2D {
-                ps.skip_rows += 1;
-            }
-        }
-        // SAFETY: GL's contract: `data` (when not null) holds the described image.
-        let texels = unsafe {
-            unpack_image(
-                self,
-                &ps,
-                (&cf, format, ty),
-                (base, storage),
-                (tw, th),
-                data,
-            )
+        let ps = match border {
+            1 => skip_border(unpack, (tw, th), t == Target::Tex2D, false),
+            _ => unpack,
         };
+        // SAFETY: GL's contract: `data` (when not null) holds the described image.
+        let texels = unsafe { unpack_image(self, &ps, (&cf, format, ty), texel, (tw, th), data) };
         // SAFETY: as above.
         let stencil = unsafe { super::texture_ds::unpack_stencil(self, &ps, &cf, (tw, th), data) };
-        let img = Level {
-            width: tw,
-            height: th,
-            internal_format: internal as u32,
-            base,
-            storage,
-            texels,
-            blocks: None,
-        };
+        let img = new_level(internal, texel, (tw, th), texels);
         store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
