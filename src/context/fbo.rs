@@ -26,7 +26,7 @@
 
 use super::{GlError, GlResult};
 use crate::framebuffer::{DepthFormat, Framebuffer};
-use crate::texture::{BaseFormat, TextureState};
+use crate::texture::{BaseFormat, Level, TextureObject, TextureState};
 use std::collections::HashMap;
 
 /// GL_MAX_COLOR_ATTACHMENTS (Mesa's value).
@@ -184,18 +184,36 @@ pub enum Attachment {
     None,
     /// A renderbuffer, by name.
     Renderbuffer(u32),
-    /// A texture image: object name, cube face (0 for other targets), level, and the
-    /// layer of a 3D texture (0 otherwise).
-    Texture {
-        /// The texture object's name.
-        name: u32,
-        /// The cube face (0..6, GL's order), 0 for other targets.
-        face: usize,
-        /// The mipmap level.
-        level: usize,
-        /// The z slice of a 3D texture.
-        layer: usize,
-    },
+    /// A texture image.
+    Texture(TexImage),
+}
+
+/// A texture image as an attachment names it: object name, cube face (0 for other
+/// targets), level, and the layer of a 3D texture (0 otherwise).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TexImage {
+    /// The texture object's name.
+    pub name: u32,
+    /// The cube face (0..6, GL's order), 0 for other targets.
+    pub face: usize,
+    /// The mipmap level.
+    pub level: usize,
+    /// The z slice of a 3D texture.
+    pub layer: usize,
+}
+
+impl TexImage {
+    /// The texture object and the level image this names, if both exist.
+    pub fn find<'a>(&self, textures: &'a TextureState) -> Option<(&'a TextureObject, &'a Level)> {
+        let obj = textures.objects.get(&self.name)?;
+        Some((obj, obj.face_levels(self.face).get(self.level)?.as_ref()?))
+    }
+
+    /// The level image this names, mutably, if it exists.
+    pub fn find_mut<'a>(&self, textures: &'a mut TextureState) -> Option<&'a mut Level> {
+        let obj = textures.objects.get_mut(&self.name)?;
+        obj.face_levels_mut(self.face).get_mut(self.level)?.as_mut()
+    }
 }
 
 /// A framebuffer object's working copy, kept while another framebuffer is bound so that
@@ -361,7 +379,7 @@ impl FboState {
     /// Marks every image of texture `name` changed (a texture call may have changed it).
     pub fn touch_texture(&mut self, name: u32) {
         for (a, v) in self.versions.iter_mut() {
-            if matches!(*a, Attachment::Texture { name: n, .. } if n == name) {
+            if matches!(*a, Attachment::Texture(t) if t.name == name) {
                 self.last_version += 1;
                 *v = self.last_version;
             }
@@ -434,15 +452,11 @@ impl FboState {
                     samples: rb.samples,
                 })
             }
-            Attachment::Texture {
-                name,
-                face,
-                level,
-                layer,
-            } => {
-                let obj = textures.objects.get(&name)?;
-                let img = obj.face_levels(face).get(level)?.as_ref()?;
-                if obj.target == Some(crate::texture::Target::Tex3D) && layer >= obj.depths[level] {
+            Attachment::Texture(t) => {
+                let (obj, img) = t.find(textures)?;
+                if obj.target == Some(crate::texture::Target::Tex3D)
+                    && t.layer >= obj.depths[t.level]
+                {
                     return None;
                 }
                 let kind = match img.base {

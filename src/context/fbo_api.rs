@@ -4,7 +4,8 @@
 //! [`super::fbo_query`]; the C entry points in `ffi/framebuffers.rs`.
 
 use super::fbo::{
-    Attachment, RbFormat, Renderbuffer, MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
+    Attachment, RbFormat, Renderbuffer, TexImage, MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE,
+    MAX_SAMPLES,
 };
 use super::{Context, GlError, GlResult};
 use crate::gl::enums::*;
@@ -52,6 +53,14 @@ pub(crate) enum Point {
     Stencil,
     /// GL_DEPTH_STENCIL_ATTACHMENT.
     DepthStencil,
+}
+
+/// Checks a renderbuffer target: GL_RENDERBUFFER is the only one (GL_INVALID_ENUM).
+pub(crate) fn renderbuffer_target(target: GLenum) -> GlResult<()> {
+    if target != GL_RENDERBUFFER {
+        return Err(GlError::InvalidEnum);
+    }
+    Ok(())
 }
 
 /// The attachment point a token names: beyond GL_MAX_COLOR_ATTACHMENTS
@@ -120,12 +129,12 @@ fn texture_attachment(
     if layer < 0 || layer as usize >= MAX_3D_TEXTURE_SIZE {
         return Err(GlError::InvalidValue);
     }
-    Ok(Attachment::Texture {
+    Ok(Attachment::Texture(TexImage {
         name: texture,
         face,
         level: level as usize,
         layer: layer as usize,
-    })
+    }))
 }
 
 /// A renderbuffer object as first bound: no storage, internal format GL_RGBA.
@@ -153,8 +162,18 @@ pub(crate) fn object_buffer(mode: GLenum) -> GlResult<Option<usize>> {
 }
 
 impl Context {
-    /// Sets attachment `p` of the object bound to `target` to `a`.
-    pub(crate) fn attach(&mut self, target: GLenum, p: Point, a: Attachment) -> GlResult<()> {
+    /// The glFramebuffer* attach calls: once `target` and `attachment` are known tokens,
+    /// sets that attachment point of the object bound to `target` to what `image` names
+    /// (its checks come after the tokens', before the binding's).
+    fn attach(
+        &mut self,
+        target: GLenum,
+        attachment: GLenum,
+        image: impl FnOnce(&Context) -> GlResult<Attachment>,
+    ) -> GlResult<()> {
+        binding(target)?;
+        let p = point(attachment)?;
+        let a = image(self)?;
         let name = bound_name(self, target)?;
         if name == 0 {
             return Err(GlError::InvalidOperation);
@@ -251,24 +270,23 @@ impl Context {
         level: GLint,
         layer: GLint,
     ) -> GlResult<()> {
-        binding(target)?;
-        let p = point(attachment)?;
-        // The 1D/2D/3D entry points take only their own texture targets.
-        let fits = match (dims, textarget) {
-            (Some(1), Some(t)) => t == GL_TEXTURE_1D,
-            (Some(2), Some(t)) => {
-                t == GL_TEXTURE_2D
-                    || (GL_TEXTURE_CUBE_MAP_POSITIVE_X..GL_TEXTURE_CUBE_MAP_POSITIVE_X + 6)
-                        .contains(&t)
+        self.attach(target, attachment, |c| {
+            // The 1D/2D/3D entry points take only their own texture targets.
+            let fits = match (dims, textarget) {
+                (Some(1), Some(t)) => t == GL_TEXTURE_1D,
+                (Some(2), Some(t)) => {
+                    t == GL_TEXTURE_2D
+                        || (GL_TEXTURE_CUBE_MAP_POSITIVE_X..GL_TEXTURE_CUBE_MAP_POSITIVE_X + 6)
+                            .contains(&t)
+                }
+                (Some(3), Some(t)) => t == GL_TEXTURE_3D,
+                _ => true,
+            };
+            if !fits && texture != 0 {
+                return Err(GlError::InvalidOperation);
             }
-            (Some(3), Some(t)) => t == GL_TEXTURE_3D,
-            _ => true,
-        };
-        if !fits && texture != 0 {
-            return Err(GlError::InvalidOperation);
-        }
-        let a = texture_attachment(self, textarget, texture, level, layer)?;
-        self.attach(target, p, a)
+            texture_attachment(c, textarget, texture, level, layer)
+        })
     }
 
     /// glFramebufferRenderbuffer.
@@ -279,19 +297,16 @@ impl Context {
         renderbuffertarget: GLenum,
         renderbuffer: GLuint,
     ) -> GlResult<()> {
-        binding(target)?;
-        let p = point(attachment)?;
-        if renderbuffertarget != GL_RENDERBUFFER {
-            return Err(GlError::InvalidEnum);
-        }
-        let a = if renderbuffer == 0 {
-            Attachment::None
-        } else if matches!(self.fbo.renderbuffers.get(&renderbuffer), Some(Some(_))) {
-            Attachment::Renderbuffer(renderbuffer)
-        } else {
-            return Err(GlError::InvalidOperation);
-        };
-        self.attach(target, p, a)
+        self.attach(target, attachment, |c| {
+            renderbuffer_target(renderbuffertarget)?;
+            if renderbuffer == 0 {
+                Ok(Attachment::None)
+            } else if matches!(c.fbo.renderbuffers.get(&renderbuffer), Some(Some(_))) {
+                Ok(Attachment::Renderbuffer(renderbuffer))
+            } else {
+                Err(GlError::InvalidOperation)
+            }
+        })
     }
 
     /// glDeleteRenderbuffers: detached from the bound framebuffers, unbound if bound.
@@ -315,9 +330,7 @@ impl Context {
         name: GLuint,
         any_name: bool,
     ) -> GlResult<()> {
-        if target != GL_RENDERBUFFER {
-            return Err(GlError::InvalidEnum);
-        }
+        renderbuffer_target(target)?;
         if name != 0 {
             match self.fbo.renderbuffers.get_mut(&name) {
                 Some(Some(_)) => {}
@@ -348,9 +361,7 @@ impl Context {
         w: GLsizei,
         h: GLsizei,
     ) -> GlResult<()> {
-        if target != GL_RENDERBUFFER {
-            return Err(GlError::InvalidEnum);
-        }
+        renderbuffer_target(target)?;
         let format = RbFormat::from_internal(internal).ok_or(GlError::InvalidEnum)?;
         let max = MAX_RENDERBUFFER_SIZE as GLsizei;
         if !(0..=max).contains(&w) || !(0..=max).contains(&h) {

@@ -88,16 +88,10 @@ fn image_mut<'a>(
             };
             Some((img, w))
         }
-        Attachment::Texture {
-            name,
-            face,
-            level,
-            layer,
-        } => {
-            let obj = textures.objects.get_mut(&name)?;
-            let img = obj.face_levels_mut(face).get_mut(level)?.as_mut()?;
+        Attachment::Texture(t) => {
+            let img = t.find_mut(textures)?;
             let (w, h) = (img.width, img.height);
-            let start = layer * w * h;
+            let start = t.layer * w * h;
             let texels = img.texels.get_mut(start..start + w * h)?;
             let v = match img.base {
                 BaseFormat::Depth => ImageMut::DepthTexels(texels),
@@ -303,9 +297,10 @@ impl Context {
     /// call ends ([`Context::fbo_refresh`]), so that the change is seen either way.
     pub fn fbo_touch(&mut self, texture: u32) {
         let attached = self.fbo.draw_object().is_some_and(|f| {
-            f.color.iter().chain([&f.depth, &f.stencil]).any(
-                |a| matches!(*a, Attachment::Texture { name, .. } if name == texture && name != 0),
-            )
+            f.color
+                .iter()
+                .chain([&f.depth, &f.stencil])
+                .any(|a| matches!(*a, Attachment::Texture(t) if t.name == texture && t.name != 0))
         });
         if attached && !self.fbo.stale {
             self.fbo_sync();

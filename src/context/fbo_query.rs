@@ -2,7 +2,7 @@
 //! glGetFramebufferAttachmentParameteriv, on the window's buffers and on objects.
 
 use super::fbo::{Attachment, ImageKind};
-use super::fbo_api::{bound_name, point, Point};
+use super::fbo_api::{bound_name, point, renderbuffer_target, Point};
 use super::{Context, GlError, GlResult};
 use crate::gl::enums::*;
 use crate::gl::glext_enums::*;
@@ -46,12 +46,10 @@ fn window_attachment_param(c: &Context, attachment: GLenum, pname: GLenum) -> Gl
 /// float depth image, whose component type is GL_FLOAT).
 fn size_param(pname: GLenum, sizes: [i32; 6], float: bool) -> GlResult<GLint> {
     Ok(match pname {
-        GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => sizes[0],
-        GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => sizes[1],
-        GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => sizes[2],
-        GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => sizes[3],
-        GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => sizes[4],
-        GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => sizes[5],
+        // The six size tokens are consecutive, in the order of `sizes`.
+        p @ GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE..=GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => {
+            sizes[(p - GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE) as usize]
+        }
         GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
             if sizes[..5].iter().all(|&s| s == 0) {
                 GL_INDEX as GLint
@@ -88,31 +86,28 @@ fn object_attachment_param(
         (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Renderbuffer(_)) => {
             return Ok(GL_RENDERBUFFER as GLint)
         }
-        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Texture { .. }) => {
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Texture(_)) => {
             return Ok(GL_TEXTURE as GLint)
         }
         (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Renderbuffer(n)) => {
             return Ok(n as GLint)
         }
-        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Texture { name, .. }) => {
-            return Ok(name as GLint)
+        (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Texture(t)) => {
+            return Ok(t.name as GLint)
         }
-        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Attachment::Texture { level, .. }) => {
-            return Ok(level as GLint)
+        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Attachment::Texture(t)) => {
+            return Ok(t.level as GLint)
         }
-        (
-            GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
-            Attachment::Texture { name, face, .. },
-        ) => {
-            let cube = c.textures.objects.get(&name).and_then(|o| o.target) == Some(Target::Cube);
-            return Ok(if cube {
-                (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face as u32) as GLint
+        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, Attachment::Texture(t)) => {
+            let obj = c.textures.objects.get(&t.name);
+            return Ok(if obj.and_then(|o| o.target) == Some(Target::Cube) {
+                (GL_TEXTURE_CUBE_MAP_POSITIVE_X + t.face as u32) as GLint
             } else {
                 0
             });
         }
-        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Attachment::Texture { layer, .. }) => {
-            return Ok(layer as GLint)
+        (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Attachment::Texture(t)) => {
+            return Ok(t.layer as GLint)
         }
         (
             GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL
@@ -157,9 +152,7 @@ impl Context {
         target: GLenum,
         pname: GLenum,
     ) -> GlResult<GLint> {
-        if target != GL_RENDERBUFFER {
-            return Err(GlError::InvalidEnum);
-        }
+        renderbuffer_target(target)?;
         let rb = self
             .fbo
             .bound_renderbuffer_mut()
@@ -169,12 +162,10 @@ impl Context {
             GL_RENDERBUFFER_WIDTH => rb.width as GLint,
             GL_RENDERBUFFER_HEIGHT => rb.height as GLint,
             GL_RENDERBUFFER_INTERNAL_FORMAT => rb.internal as GLint,
-            GL_RENDERBUFFER_RED_SIZE => sizes[0],
-            GL_RENDERBUFFER_GREEN_SIZE => sizes[1],
-            GL_RENDERBUFFER_BLUE_SIZE => sizes[2],
-            GL_RENDERBUFFER_ALPHA_SIZE => sizes[3],
-            GL_RENDERBUFFER_DEPTH_SIZE => sizes[4],
-            GL_RENDERBUFFER_STENCIL_SIZE => sizes[5],
+            // As for attachments: consecutive tokens in the order of `sizes`.
+            p @ GL_RENDERBUFFER_RED_SIZE..=GL_RENDERBUFFER_STENCIL_SIZE => {
+                sizes[(p - GL_RENDERBUFFER_RED_SIZE) as usize]
+            }
             GL_RENDERBUFFER_SAMPLES => rb.samples as GLint,
             _ => return Err(GlError::InvalidEnum),
         })

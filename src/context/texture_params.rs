@@ -420,9 +420,7 @@ impl Context {
             self.fbo_touch(name);
             self.fbo.touch_texture(name);
         }
-        self.detach_bound(
-            |a| matches!(a, Attachment::Texture { name, .. } if names.contains(&name)),
-        );
+        self.detach_bound(|a| matches!(a, Attachment::Texture(t) if names.contains(&t.name)));
         self.textures.delete(names);
     }
 
