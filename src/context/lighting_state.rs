@@ -61,12 +61,7 @@ fn faces(face: GLenum) -> GlResult<&'static [usize]> {
 impl LightingState {
     /// The index of GL_LIGHTi.
     pub fn light_index(light: GLenum) -> GlResult<usize> {
-        let i = light.wrapping_sub(GL_LIGHT0) as usize;
-        if i < MAX_LIGHTS {
-            Ok(i)
-        } else {
-            Err(GlError::InvalidEnum)
-        }
+        super::state::token_index(light, GL_LIGHT0, MAX_LIGHTS)
     }
 
     /// glLightfv with Mesa's validation; `modelview` is the current modelview matrix.

@@ -167,6 +167,17 @@ pub const CAPS: &[(Cap, GLenum)] = &[
 // The token table names every capability, in order.
 const _: () = assert!(CAPS.len() == crate::pipe::CAP_COUNT);
 
+/// The index `i` of the token `first + i` of a family of `count` (GL_LIGHTi,
+/// GL_CLIP_PLANEi, GL_TEXTUREi); any other token is GL_INVALID_ENUM.
+pub fn token_index(e: GLenum, first: GLenum, count: usize) -> GlResult<usize> {
+    let i = e.wrapping_sub(first) as usize;
+    if i < count {
+        Ok(i)
+    } else {
+        Err(GlError::InvalidEnum)
+    }
+}
+
 impl Cap {
     /// Converts a glEnable token.
     pub fn from_gl(e: GLenum) -> GlResult<Self> {

@@ -86,11 +86,6 @@ impl TexGenState {
 impl ClipPlanes {
     /// The index of GL_CLIP_PLANEi.
     pub fn index(plane: GLenum) -> GlResult<usize> {
-        let i = plane.wrapping_sub(GL_CLIP_PLANE0) as usize;
-        if i < MAX_CLIP_PLANES {
-            Ok(i)
-        } else {
-            Err(GlError::InvalidEnum)
-        }
+        super::state::token_index(plane, GL_CLIP_PLANE0, MAX_CLIP_PLANES)
     }
 }

@@ -4,7 +4,7 @@
 //! objects and units themselves (glGenTextures, glBindTexture, glActiveTexture …).
 
 use super::fbo::Attachment;
-use super::state::{Cap, MAX_TEXTURE_UNITS};
+use super::state::{token_index, Cap, MAX_TEXTURE_UNITS};
 use super::texture_spec::{bind_target, check_level, image_target};
 use super::{Context, GlError, GlResult};
 use crate::context::pack::depth as shadow;
@@ -316,32 +316,24 @@ impl Context {
         let mut env = self.textures.units[unit].env;
         let e = v[0] as i64 as u32;
         let idx = |base: u32| (pname - base) as usize;
+        // The token `e` as each kind of value; one it does not name is GL_INVALID_ENUM.
+        let combine = |rgb| CombineFn::from_gl(e, rgb).ok_or(GlError::InvalidEnum);
+        let source = || Source::from_gl(e, MAX_TEXTURE_UNITS).ok_or(GlError::InvalidEnum);
+        let operand = |alpha| Operand::from_gl(e, alpha).ok_or(GlError::InvalidEnum);
         match pname {
             GL_TEXTURE_ENV_MODE => env.mode = EnvMode::from_gl(e).ok_or(GlError::InvalidEnum)?,
-            GL_TEXTURE_ENV_COLOR => {
-                env.color = color_param(v, ints)?;
-            }
-            GL_COMBINE_RGB => {
-                env.combine_rgb = CombineFn::from_gl(e, true).ok_or(GlError::InvalidEnum)?
-            }
-            GL_COMBINE_ALPHA => {
-                env.combine_alpha = CombineFn::from_gl(e, false).ok_or(GlError::InvalidEnum)?
-            }
-            GL_SOURCE0_RGB..=GL_SOURCE2_RGB => {
-                env.source_rgb[idx(GL_SOURCE0_RGB)] =
-                    Source::from_gl(e, MAX_TEXTURE_UNITS).ok_or(GlError::InvalidEnum)?
-            }
+            GL_TEXTURE_ENV_COLOR => env.color = color_param(v, ints)?,
+            GL_COMBINE_RGB => env.combine_rgb = combine(true)?,
+            GL_COMBINE_ALPHA => env.combine_alpha = combine(false)?,
+            GL_SOURCE0_RGB..=GL_SOURCE2_RGB => env.source_rgb[idx(GL_SOURCE0_RGB)] = source()?,
             GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA => {
-                env.source_alpha[idx(GL_SOURCE0_ALPHA)] =
-                    Source::from_gl(e, MAX_TEXTURE_UNITS).ok_or(GlError::InvalidEnum)?
+                env.source_alpha[idx(GL_SOURCE0_ALPHA)] = source()?
             }
             GL_OPERAND0_RGB..=GL_OPERAND2_RGB => {
-                env.operand_rgb[idx(GL_OPERAND0_RGB)] =
-                    Operand::from_gl(e, false).ok_or(GlError::InvalidEnum)?
+                env.operand_rgb[idx(GL_OPERAND0_RGB)] = operand(false)?
             }
             GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA => {
-                env.operand_alpha[idx(GL_OPERAND0_ALPHA)] =
-                    Operand::from_gl(e, true).ok_or(GlError::InvalidEnum)?
+                env.operand_alpha[idx(GL_OPERAND0_ALPHA)] = operand(true)?
             }
             GL_RGB_SCALE => env.rgb_scale = scale_from(v[0])?,
             GL_ALPHA_SCALE => env.alpha_scale = scale_from(v[0])?,
@@ -435,10 +427,7 @@ impl Context {
     /// glActiveTexture (GL_TEXTUREi, i < GL_MAX_TEXTURE_UNITS). `state.caps` for the texture
     /// targets and texgen follow the unit.
     pub(crate) fn active_texture(&mut self, texture: GLenum) -> GlResult<()> {
-        let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_TEXTURE_UNITS {
-            return Err(GlError::InvalidEnum);
-        }
+        let u = token_index(texture, GL_TEXTURE0, MAX_TEXTURE_UNITS)?;
         self.state.active_texture = u;
         let unit = &self.textures.units[u];
         let (e1, e2) = (unit.enabled_1d, unit.enabled_2d);
@@ -453,11 +442,7 @@ impl Context {
 
     /// glClientActiveTexture.
     pub(crate) fn client_active_texture(&mut self, texture: GLenum) -> GlResult<()> {
-        let u = texture.wrapping_sub(GL_TEXTURE0) as usize;
-        if u >= MAX_TEXTURE_UNITS {
-            return Err(GlError::InvalidEnum);
-        }
-        self.state.client_active_texture = u;
+        self.state.client_active_texture = token_index(texture, GL_TEXTURE0, MAX_TEXTURE_UNITS)?;
         Ok(())
     }
 
