@@ -44,8 +44,8 @@ impl RenderMode {
     }
 }
 
-/// What each feedback vertex holds (glFeedbackBuffer's type).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// What each feedback vertex holds (glFeedbackBuffer's type; GL_2D initially).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FeedbackLayout {
     /// The GL enum (GL_2D … GL_4D_COLOR_TEXTURE), for glGet.
     pub gl: u32,
@@ -57,6 +57,18 @@ pub struct FeedbackLayout {
     pub color: bool,
     /// Four texture coordinates follow.
     pub texture: bool,
+}
+
+impl Default for FeedbackLayout {
+    fn default() -> Self {
+        FeedbackLayout {
+            gl: GL_2D,
+            z: false,
+            w: false,
+            color: false,
+            texture: false,
+        }
+    }
 }
 
 impl FeedbackLayout {
@@ -92,8 +104,38 @@ pub struct FeedbackVertex {
     pub texcoord: [f32; 4],
 }
 
+/// Selection mode's pending hit: whether a primitive hit since the last hit record, and
+/// the window-z range of the hits.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PendingHit {
+    /// A primitive hit since the last record.
+    pub hit: bool,
+    /// Smallest window z of the hits.
+    pub min_z: f32,
+    /// Largest window z of the hits.
+    pub max_z: f32,
+}
+
+impl PendingHit {
+    /// No hit, the range starting from [1, `max_z`]: Mesa starts the largest z at 0
+    /// initially and after glSelectBuffer and glInitNames, at −1 after a hit record.
+    fn cleared(max_z: f32) -> Self {
+        PendingHit {
+            hit: false,
+            min_z: 1.0,
+            max_z,
+        }
+    }
+}
+
+impl Default for PendingHit {
+    fn default() -> Self {
+        PendingHit::cleared(0.0)
+    }
+}
+
 /// Render mode, buffers and name stack of a context.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct FeedbackState {
     /// The current render mode.
     pub mode: RenderMode,
@@ -113,38 +155,13 @@ pub struct FeedbackState {
     pub sel_count: usize,
     /// Hit records written.
     pub hits: i32,
-    /// A primitive hit since the last record.
-    pub hit: bool,
-    /// Smallest window z of the hits.
-    pub hit_min_z: f32,
-    /// Largest window z of the hits.
-    pub hit_max_z: f32,
+    /// The hit not yet recorded.
+    pub pending: PendingHit,
     /// The name stack.
     pub names: Vec<u32>,
     /// The next feedback line is a GL_LINE_RESET_TOKEN (Mesa's feedback stage keeps this
     /// across draws until a line is written).
     pub line_reset: bool,
-}
-
-impl Default for FeedbackState {
-    fn default() -> Self {
-        FeedbackState {
-            mode: RenderMode::Render,
-            fb_buffer: 0,
-            fb_size: 0,
-            fb_layout: FeedbackLayout::from_gl(GL_2D).unwrap_or_default(),
-            fb_count: 0,
-            sel_buffer: 0,
-            sel_size: 0,
-            sel_count: 0,
-            hits: 0,
-            hit: false,
-            hit_min_z: 1.0,
-            hit_max_z: 0.0,
-            names: Vec::new(),
-            line_reset: false,
-        }
-    }
 }
 
 /// Mesa's conversion of a hit depth in [0,1] to an unsigned integer: the product with
@@ -202,39 +219,36 @@ impl FeedbackState {
 
     /// Notes a hit at window depth `z` (selection mode).
     pub fn update_hit(&mut self, z: f32) {
-        self.hit = true;
-        if z < self.hit_min_z {
-            self.hit_min_z = z;
+        let p = &mut self.pending;
+        p.hit = true;
+        if z < p.min_z {
+            p.min_z = z;
         }
-        if z > self.hit_max_z {
-            self.hit_max_z = z;
+        if z > p.max_z {
+            p.max_z = z;
         }
     }
 
     /// Writes the pending hit record, if any: the name-stack depth, the depth range and
     /// the names.
     fn write_hit_record(&mut self) {
-        if !self.hit {
+        if !self.pending.hit {
             return;
         }
-        let (lo, hi) = (hit_depth(self.hit_min_z), hit_depth(self.hit_max_z));
+        let (lo, hi) = (hit_depth(self.pending.min_z), hit_depth(self.pending.max_z));
         self.record(self.names.len() as u32);
         self.record(lo);
         self.record(hi);
         for k in 0..self.names.len() {
             self.record(self.names[k]);
         }
-        self.hit = false;
-        self.hit_min_z = 1.0;
-        self.hit_max_z = -1.0;
+        self.pending = PendingHit::cleared(-1.0);
         self.hits += 1;
     }
 
     fn reset_names(&mut self) {
         self.names.clear();
-        self.hit = false;
-        self.hit_min_z = 1.0;
-        self.hit_max_z = 0.0;
+        self.pending = PendingHit::cleared(0.0);
     }
 
     /// glFeedbackBuffer.
@@ -263,9 +277,7 @@ impl FeedbackState {
         self.sel_buffer = buffer;
         self.sel_size = size;
         self.sel_count = 0;
-        self.hit = false;
-        self.hit_min_z = 1.0;
-        self.hit_max_z = 0.0;
+        self.pending = PendingHit::cleared(0.0);
         Ok(())
     }
 
