@@ -105,27 +105,8 @@ impl StencilOp {
 impl LogicOp {
     /// Converts a token (GL_CLEAR..GL_SET are 0x1500..0x150F in this order).
     pub fn from_gl(e: GLenum) -> GlResult<Self> {
-        use LogicOp::*;
-        const ALL: [LogicOp; 16] = [
-            Clear,
-            And,
-            AndReverse,
-            Copy,
-            AndInverted,
-            Noop,
-            Xor,
-            Or,
-            Nor,
-            Equiv,
-            Invert,
-            OrReverse,
-            CopyInverted,
-            OrInverted,
-            Nand,
-            Set,
-        ];
         e.checked_sub(GL_CLEAR)
-            .and_then(|i| ALL.get(i as usize).copied())
+            .and_then(|i| LogicOp::ALL.get(i as usize).copied())
             .ok_or(GlError::InvalidEnum)
     }
     /// The GL token.

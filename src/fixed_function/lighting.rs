@@ -29,7 +29,7 @@
 use super::gallivm_math::{pow, rsq};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
-use crate::pipe::{LightingState, Material, Tracked, MAX_LIGHTS};
+use crate::pipe::{LightModel, LightingState, Material, Tracked, MAX_LIGHTS};
 
 /// `DP3` as llvmpipe lowers it: highest component first.
 #[inline(always)]
@@ -135,11 +135,9 @@ pub struct LightPlan {
     normal_scale: Option<f32>,
     /// Rows of the inverse-transpose modelview (columns of Mesa's inverse).
     invtrans: [[f32; 3]; 3],
-    two_side: bool,
-    separate: bool,
-    local_viewer: bool,
+    /// glLightModel: ambient, local viewer, two-sided, separate specular.
+    model: LightModel,
     shininess_is_zero: bool,
-    lm_ambient: [f32; 4],
     material: [Material; 2],
     tracked: [Tracked; 2],
     scene: [[f32; 4]; 2],
@@ -295,11 +293,8 @@ impl LightPlan {
             normalize,
             normal_scale,
             invtrans,
-            two_side,
-            separate: model.separate_specular,
-            local_viewer: model.local_viewer,
+            model: *model,
             shininess_is_zero,
-            lm_ambient: model.ambient,
             material,
             tracked,
             scene,
@@ -311,7 +306,7 @@ impl LightPlan {
     /// Prepares for per-vertex materials `mats`: a shininess given per vertex counts as
     /// active (Mesa's `check_active_shininess` sees the material attribute).
     pub fn vary_material(&mut self, mats: &[[Material; 2]]) {
-        let two = self.two_side;
+        let two = self.model.two_side;
         if mats
             .iter()
             .any(|m| m[0].shininess != 0.0 || (two && m[1].shininess != 0.0))
@@ -324,17 +319,18 @@ impl LightPlan {
     /// viewer with a specular term). When it does, Mesa's fog coordinate comes from the
     /// same eye position (see [`super::fog::vertex_fog_coord`]).
     pub fn needs_eye_position(&self) -> bool {
-        self.lights.iter().any(|l| l.positional) || (self.local_viewer && !self.shininess_is_zero)
+        self.lights.iter().any(|l| l.positional)
+            || (self.model.local_viewer && !self.shininess_is_zero)
     }
 
     /// Whether the back colours differ from the front ones (GL_LIGHT_MODEL_TWO_SIDE).
     pub fn two_side(&self) -> bool {
-        self.two_side
+        self.model.two_side
     }
 
     /// Whether the secondary colour carries the specular sum.
     pub fn separate_specular(&self) -> bool {
-        self.separate
+        self.model.separate_specular
     }
 }
 
@@ -418,39 +414,26 @@ pub fn light_vertex(
     color: [f32; 4],
 ) -> LitColors {
     let fma = plan.fma;
-    let faces = if plan.two_side { 2 } else { 1 };
-    let any_tracked = |t: &Tracked| t.ambient || t.diffuse || t.emission || t.specular;
+    let faces = if plan.model.two_side { 2 } else { 1 };
     // Per-face material with the tracked terms replaced by the vertex colour.
     let mut mat = plan.vertex_material.unwrap_or(plan.material);
     let mut scene = plan.scene;
     let varying = plan.vertex_material.is_some();
     for f in 0..faces {
         let t = plan.tracked[f];
-        if varying && !any_tracked(&t) {
-            scene[f] = scene_color(&plan.lm_ambient, &mat[f]);
+        if varying && !t.any() {
+            scene[f] = scene_color(&plan.model.ambient, &mat[f]);
         }
-        if any_tracked(&t) {
-            let m = &mut mat[f];
-            if t.emission {
-                m.emission = color;
-            }
-            if t.ambient {
-                m.ambient = color;
-            }
-            if t.diffuse {
-                m.diffuse = color;
-            }
-            if t.specular {
-                m.specular = color;
-            }
-            scene[f] = scene_color(&plan.lm_ambient, m);
+        if t.any() {
+            mat[f].apply_tracked(t, color);
+            scene[f] = scene_color(&plan.model.ambient, &mat[f]);
         }
     }
     let mut col0 = scene;
     let mut col1 = [[0.0, 0.0, 0.0, 1.0]; 2];
 
     let v = xyz(eye_pos);
-    let eye_hat = if plan.local_viewer && !plan.shininess_is_zero {
+    let eye_hat = if plan.model.local_viewer && !plan.shininess_is_zero {
         normalize_shader(v)
     } else {
         [0.0; 3]
@@ -484,7 +467,7 @@ pub fn light_vertex(
         }
         let half = if plan.shininess_is_zero {
             [0.0; 3]
-        } else if plan.local_viewer {
+        } else if plan.model.local_viewer {
             normalize_shader([vp[0] - eye_hat[0], vp[1] - eye_hat[1], vp[2] - eye_hat[2]])
         } else if !l.positional {
             l.half
@@ -504,7 +487,7 @@ pub fn light_vertex(
             } else {
                 (-dots[0], -dots[1], -dots[2])
             };
-            let [amb, diff, spec] = if varying || any_tracked(&plan.tracked[f]) {
+            let [amb, diff, spec] = if varying || plan.tracked[f].any() {
                 let m = &mat[f];
                 [
                     mul4(l.colors[0], m.ambient),
@@ -530,7 +513,7 @@ pub fn light_vertex(
                 col0[f] = add4(amb, col0[f]);
             }
             col0[f] = mad4(ly, diff, col0[f]);
-            if plan.separate {
+            if plan.model.separate_specular {
                 col1[f] = mad4(lz, spec, col1[f]);
             } else {
                 col0[f] = mad4(lz, spec, col0[f]);
@@ -547,7 +530,7 @@ pub fn light_vertex(
     };
     let front = out(0);
     let front_spec = spec_out(0);
-    let (back, back_spec) = if plan.two_side {
+    let (back, back_spec) = if plan.model.two_side {
         (out(1), spec_out(1))
     } else {
         (front, front_spec)

@@ -78,33 +78,27 @@ impl Mat4 {
         let (s, c) = (rad.sin(), rad.cos());
         let mut m = IDENTITY.0;
         let set = |m: &mut [f32; 16], r: usize, col: usize, v: f32| m[col * 4 + r] = v;
-        let mut optimized = false;
-        if x == 0.0 {
-            if y == 0.0 {
-                if z != 0.0 {
-                    optimized = true;
-                    set(&mut m, 0, 0, c);
-                    set(&mut m, 1, 1, c);
-                    let (a, b) = if z < 0.0 { (s, -s) } else { (-s, s) };
-                    set(&mut m, 0, 1, a);
-                    set(&mut m, 1, 0, b);
-                }
-            } else if z == 0.0 {
-                optimized = true;
-                set(&mut m, 0, 0, c);
-                set(&mut m, 2, 2, c);
-                let (a, b) = if y < 0.0 { (-s, s) } else { (s, -s) };
-                set(&mut m, 0, 2, a);
-                set(&mut m, 2, 0, b);
-            }
-        } else if y == 0.0 && z == 0.0 {
-            optimized = true;
-            set(&mut m, 1, 1, c);
-            set(&mut m, 2, 2, c);
-            let (a, b) = if x < 0.0 { (s, -s) } else { (-s, s) };
-            set(&mut m, 1, 2, a);
-            set(&mut m, 2, 1, b);
-        }
+        // Mesa's shortcut for a rotation about a coordinate axis: the plane of axes `i`
+        // and `j`, turned the other way when the axis is negative.
+        let plane = |m: &mut [f32; 16], i: usize, j: usize, negative: bool| {
+            set(m, i, i, c);
+            set(m, j, j, c);
+            let (a, b) = if negative { (s, -s) } else { (-s, s) };
+            set(m, i, j, a);
+            set(m, j, i, b);
+        };
+        let optimized = if x == 0.0 && y == 0.0 && z != 0.0 {
+            plane(&mut m, 0, 1, z < 0.0);
+            true
+        } else if x == 0.0 && y != 0.0 && z == 0.0 {
+            plane(&mut m, 2, 0, y < 0.0);
+            true
+        } else if x != 0.0 && y == 0.0 && z == 0.0 {
+            plane(&mut m, 1, 2, x < 0.0);
+            true
+        } else {
+            false
+        };
         if !optimized {
             let mag = (x * x + y * y + z * z).sqrt();
             if mag <= 1.0e-4 || mag.is_nan() {
@@ -270,6 +264,23 @@ mod tests {
         m.rotate(90.0, 0.0, 0.0, 1.0);
         let v = m.transform([1.0, 0.0, 0.0, 1.0]);
         assert!((v[0]).abs() < 1e-7 && (v[1] - 1.0).abs() < 1e-7, "{v:?}");
+    }
+
+    #[test]
+    fn axis_shortcuts_agree_with_the_general_rotation() {
+        // A tiny off-axis component takes the general path; each signed coordinate axis
+        // the shortcut.
+        for axis in [[1.0f32, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] {
+            for sign in [1.0f32, -1.0] {
+                let [x, y, z] = axis.map(|a| a * sign);
+                let (mut fast, mut general) = (IDENTITY, IDENTITY);
+                fast.rotate(30.0, x, y, z);
+                general.rotate(30.0, x + 1e-9, y + 1e-9, z + 1e-9);
+                for i in 0..16 {
+                    assert!((fast.0[i] - general.0[i]).abs() < 1e-6, "{axis:?} {sign}");
+                }
+            }
+        }
     }
 
     #[test]

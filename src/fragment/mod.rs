@@ -16,7 +16,7 @@ pub mod simd_tex;
 pub mod span;
 
 use crate::framebuffer::DepthFormat;
-use crate::pipe::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilFace, StencilOp};
+use crate::pipe::{BlendState, CompareFunc, LogicOp, StencilFace, StencilOp};
 
 /// What the fragment stage does for one draw, derived once from the state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,24 +153,9 @@ pub struct StencilPlan {
     pub back: StencilFacePlan,
 }
 
-/// Blending of a draw, in 8-bit terms.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BlendPlan {
-    /// RGB source factor.
-    pub src_rgb: BlendFactor,
-    /// RGB destination factor.
-    pub dst_rgb: BlendFactor,
-    /// Alpha source factor.
-    pub src_a: BlendFactor,
-    /// Alpha destination factor.
-    pub dst_a: BlendFactor,
-    /// RGB equation.
-    pub eq_rgb: BlendEquation,
-    /// Alpha equation.
-    pub eq_a: BlendEquation,
-    /// The constant colour converted like a fragment colour.
-    pub color: [u8; 4],
-}
+/// Blending of a draw, in 8-bit terms: the factors and equations, and the constant colour
+/// converted like a fragment colour.
+pub type BlendPlan = BlendState<[u8; 4]>;
 
 impl FragPlan {
     /// Whether fragments of this plan can change anything.

@@ -42,63 +42,54 @@ impl VertexIn {
     }
 }
 
+/// A component read as f32 (`v`), normalised when `normalized`: times `scale` as an f32
+/// product, clamped at −1 when `SIGNED`.
+#[inline(always)]
+fn norm_f32<const SIGNED: bool>(v: f32, normalized: bool, scale: f32) -> f32 {
+    match (normalized, SIGNED) {
+        (false, _) => v,
+        (true, false) => v * scale,
+        (true, true) => (v * scale).max(-1.0),
+    }
+}
+
+/// A 32-bit integer component (`v`, exact in f64) as f32, normalised when `normalized`:
+/// divided by `max` in f64, clamped at −1 when `SIGNED`.
+#[inline(always)]
+fn norm_f64<const SIGNED: bool>(v: f64, normalized: bool, max: f64) -> f32 {
+    match (normalized, SIGNED) {
+        (false, _) => v as f32,
+        (true, false) => (v / max) as f32,
+        (true, true) => ((v / max) as f32).max(-1.0),
+    }
+}
+
 /// Reads a component of `ty` at `p` as f32, normalised or not.
 ///
 /// # Safety
 /// `p` must be readable for `ty.size()` bytes (any alignment).
 #[inline]
 unsafe fn read_component(p: *const u8, ty: DataType, normalized: bool) -> f32 {
+    let n = normalized;
     // SAFETY: the caller guarantees `p` is readable for the component's size; unaligned
     // reads are used because client arrays need not be aligned.
     unsafe {
         match ty {
             DataType::Byte => {
-                let v = p.cast::<i8>().read_unaligned() as f32;
-                if normalized {
-                    (v * (1.0 / 127.0)).max(-1.0)
-                } else {
-                    v
-                }
+                norm_f32::<true>(p.cast::<i8>().read_unaligned() as f32, n, 1.0 / 127.0)
             }
-            DataType::UByte => {
-                let v = p.read_unaligned() as f32;
-                if normalized {
-                    v * (1.0f32 / 255.0)
-                } else {
-                    v
-                }
-            }
+            DataType::UByte => norm_f32::<false>(p.read_unaligned() as f32, n, 1.0 / 255.0),
             DataType::Short => {
-                let v = p.cast::<i16>().read_unaligned() as f32;
-                if normalized {
-                    (v * (1.0 / 32767.0)).max(-1.0)
-                } else {
-                    v
-                }
+                norm_f32::<true>(p.cast::<i16>().read_unaligned() as f32, n, 1.0 / 32767.0)
             }
             DataType::UShort => {
-                let v = p.cast::<u16>().read_unaligned() as f32;
-                if normalized {
-                    v * (1.0f32 / 65535.0)
-                } else {
-                    v
-                }
+                norm_f32::<false>(p.cast::<u16>().read_unaligned() as f32, n, 1.0 / 65535.0)
             }
             DataType::Int => {
-                let v = p.cast::<i32>().read_unaligned();
-                if normalized {
-                    ((v as f64 / 2147483647.0) as f32).max(-1.0)
-                } else {
-                    v as f32
-                }
+                norm_f64::<true>(p.cast::<i32>().read_unaligned() as f64, n, 2147483647.0)
             }
             DataType::UInt => {
-                let v = p.cast::<u32>().read_unaligned();
-                if normalized {
-                    (v as f64 / 4294967295.0) as f32
-                } else {
-                    v as f32
-                }
+                norm_f64::<false>(p.cast::<u32>().read_unaligned() as f64, n, 4294967295.0)
             }
             DataType::Float => p.cast::<f32>().read_unaligned(),
             DataType::Double => p.cast::<f64>().read_unaligned() as f32,

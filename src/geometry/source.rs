@@ -234,20 +234,21 @@ impl VertexCache {
 mod tests {
     use super::*;
 
+    /// Draws `tris` through the cache, checking that every corner is its own vertex.
+    fn draw(c: &mut VertexCache, tris: &[[usize; 3]]) {
+        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
+        for &t in tris {
+            assert_eq!(c.triangle(t, run).map(|v| v.win[0]), t.map(|i| i as f32));
+        }
+    }
+
     #[test]
     fn cache_transforms_shared_vertices_once_and_survives_clashes() {
         let mut c = VertexCache::for_draw(CACHE_SIZE);
-        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
-        let t = c.triangle([0, 1, 2], run);
-        assert_eq!(t.map(|v| v.win[0]), [0.0, 1.0, 2.0]);
-        let t = c.triangle([2, 1, 3], run);
-        assert_eq!(t.map(|v| v.win[0]), [2.0, 1.0, 3.0]);
+        draw(&mut c, &[[0, 1, 2], [2, 1, 3]]);
         assert_eq!(c.transformed, 4);
         // 5 and 5 + CACHE_SIZE share a slot.
-        let t = c.triangle([5, CACHE_SIZE + 5, 6], run);
-        assert_eq!(t.map(|v| v.win[0]), [5.0, (CACHE_SIZE + 5) as f32, 6.0]);
-        let t = c.triangle([1, 2, 3], run);
-        assert_eq!(t.map(|v| v.win[0]), [1.0, 2.0, 3.0]);
+        draw(&mut c, &[[5, CACHE_SIZE + 5, 6], [1, 2, 3]]);
         assert_eq!(c.transformed, 7);
     }
 
@@ -256,14 +257,8 @@ mod tests {
         let mut c = VertexCache::for_draw(6);
         assert_eq!(c.slots.len(), 8);
         assert_eq!(VertexCache::for_draw(100_000).slots.len(), CACHE_SIZE);
-        let run = |i: usize, out: &mut ClipVertex| out.win[0] = i as f32;
         // 1 and 9 share a slot of the 8-entry cache; 0 and 8 too, in two triangles.
-        let t = c.triangle([1, 9, 2], run);
-        assert_eq!(t.map(|v| v.win[0]), [1.0, 9.0, 2.0]);
-        let t = c.triangle([0, 2, 3], run);
-        assert_eq!(t.map(|v| v.win[0]), [0.0, 2.0, 3.0]);
-        let t = c.triangle([8, 2, 3], run);
-        assert_eq!(t.map(|v| v.win[0]), [8.0, 2.0, 3.0]);
+        draw(&mut c, &[[1, 9, 2], [0, 2, 3], [8, 2, 3]]);
         // 3 (the spill caches nothing) + 3 (0, 2, 3) + 1 (8 evicts 0).
         assert_eq!(c.transformed, 7);
     }

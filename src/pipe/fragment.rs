@@ -74,9 +74,10 @@ pub enum BlendEquation {
     Max,
 }
 
-/// glBlendFuncSeparate / glBlendEquationSeparate / glBlendColor state.
+/// glBlendFuncSeparate / glBlendEquationSeparate / glBlendColor state; with `C = [u8; 4]`
+/// a draw's blending in 8-bit terms (`fragment::BlendPlan`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BlendState {
+pub struct BlendState<C = [f32; 4]> {
     /// Source factor for RGB.
     pub src_rgb: BlendFactor,
     /// Destination factor for RGB.
@@ -89,8 +90,9 @@ pub struct BlendState {
     pub eq_rgb: BlendEquation,
     /// Equation for alpha.
     pub eq_a: BlendEquation,
-    /// glBlendColor (clamped to [0,1]).
-    pub color: [f32; 4],
+    /// glBlendColor: in the state as given, clamped to [0,1]; in a plan converted like a
+    /// fragment colour.
+    pub color: C,
 }
 
 impl Default for BlendState {
@@ -172,26 +174,28 @@ impl Default for StencilFace {
     }
 }
 
-/// A logic operation (glLogicOp) on 8-bit channels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[allow(missing_docs)]
-pub enum LogicOp {
-    Clear,
-    And,
-    AndReverse,
-    Copy,
-    AndInverted,
-    Noop,
-    Xor,
-    Or,
-    Nor,
-    Equiv,
-    Invert,
-    OrReverse,
-    CopyInverted,
-    OrInverted,
-    Nand,
-    Set,
+listed_enum! {
+    /// A logic operation (glLogicOp) on 8-bit channels.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+    #[allow(missing_docs)]
+    pub enum LogicOp {
+        Clear,
+        And,
+        AndReverse,
+        Copy,
+        AndInverted,
+        Noop,
+        Xor,
+        Or,
+        Nor,
+        Equiv,
+        Invert,
+        OrReverse,
+        CopyInverted,
+        OrInverted,
+        Nand,
+        Set,
+    }
 }
 
 impl LogicOp {

@@ -81,6 +81,25 @@ impl Default for Material {
     }
 }
 
+impl Material {
+    /// Replaces the terms `t` tracks with `color` (GL_COLOR_MATERIAL).
+    #[inline]
+    pub fn apply_tracked(&mut self, t: Tracked, color: [f32; 4]) {
+        if t.emission {
+            self.emission = color;
+        }
+        if t.ambient {
+            self.ambient = color;
+        }
+        if t.diffuse {
+            self.diffuse = color;
+        }
+        if t.specular {
+            self.specular = color;
+        }
+    }
+}
+
 /// Which material terms follow the vertex colour (per face: [front, back]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Tracked {
@@ -92,6 +111,14 @@ pub struct Tracked {
     pub diffuse: bool,
     /// Specular follows the colour.
     pub specular: bool,
+}
+
+impl Tracked {
+    /// Whether any term follows the colour.
+    #[inline]
+    pub fn any(&self) -> bool {
+        self.ambient || self.diffuse || self.emission || self.specular
+    }
 }
 
 /// glLightModel state.
@@ -205,20 +232,7 @@ impl LightingState {
     /// it is enabled, on glColorMaterial, and before glGetMaterial.
     pub fn sync_color_material(&mut self, color: [f32; 4]) {
         for f in 0..2 {
-            let t = self.color_material.tracked(f);
-            let m = &mut self.material[f];
-            if t.emission {
-                m.emission = color;
-            }
-            if t.ambient {
-                m.ambient = color;
-            }
-            if t.diffuse {
-                m.diffuse = color;
-            }
-            if t.specular {
-                m.specular = color;
-            }
+            self.material[f].apply_tracked(self.color_material.tracked(f), color);
         }
     }
 }

@@ -6,6 +6,25 @@
 //! (`from_gl`/`to_gl` impls in `context`), so the pipeline, which imports only this module
 //! for its vocabulary, never sees a GL enum.
 
+/// An enum whose variants are written once and also listed, in declaration order, in its
+/// `ALL` constant (what a contiguous range of GL tokens maps onto, by position).
+macro_rules! listed_enum {
+    (
+        $(#[$m:meta])*
+        pub enum $t:ident { $($v:ident,)+ }
+    ) => {
+        $(#[$m])*
+        pub enum $t {
+            $($v,)+
+        }
+
+        impl $t {
+            /// Every variant, in declaration order (`ALL[v as usize] == v`).
+            pub const ALL: &'static [$t] = &[$($t::$v),+];
+        }
+    };
+}
+
 pub mod arrays;
 pub mod caps;
 pub mod fragment;

@@ -1,28 +1,17 @@
 //! Eight `i32` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, binary_ops, bitwise_256, wide_type, F32x8, I64x4, U16x16};
+use super::{avx2, bitwise_256, lane_ops, wide_type, F32x8, I64x4, U16x16};
 use std::arch::x86_64::*;
 
 wide_type! {
     /// Eight `i32` lanes (`__m256i`); the unsigned operations say so in their names. Made
     /// only where the CPU has AVX2 (see [`super`]).
-    I32x8(__m256i, i32): splat => _mm256_set1_epi32, zero => _mm256_setzero_si256
+    I32x8(__m256i, [i32; 8]):
+        splat => _mm256_set1_epi32, zero => _mm256_setzero_si256,
+        new => _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)
 }
 
-// Named methods rather than `std::ops` operators: a kernel reads as the sequence of
-// instructions it compiles to.
-#[allow(clippy::should_implement_trait)]
 impl I32x8 {
-    /// Lane `i` is `a[i]`.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn new(a: [i32; 8]) -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_setr_epi32(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]) })
-    }
-
     /// The 32 bytes at `p` (unaligned).
     ///
     /// # Safety
@@ -125,61 +114,6 @@ impl I32x8 {
         avx2!(_mm256_cvtsi256_si32(self.0))
     }
 
-    /// Shifted left by `N` bits.
-    #[inline(always)]
-    pub fn shl<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_slli_epi32::<N>(self.0)))
-    }
-
-    /// Shifted right by `N` bits, zeros in.
-    #[inline(always)]
-    pub fn shr<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_srli_epi32::<N>(self.0)))
-    }
-
-    /// Shifted right by `N` bits, the sign in.
-    #[inline(always)]
-    pub fn sra<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_srai_epi32::<N>(self.0)))
-    }
-
-    /// Each lane shifted left by the same lane of `n` (0 from 32 on).
-    #[inline(always)]
-    pub fn shl_var(self, n: Self) -> Self {
-        Self(avx2!(_mm256_sllv_epi32(self.0, n.0)))
-    }
-
-    /// Each lane shifted right by the same lane of `n`, zeros in (0 from 32 on).
-    #[inline(always)]
-    pub fn shr_var(self, n: Self) -> Self {
-        Self(avx2!(_mm256_srlv_epi32(self.0, n.0)))
-    }
-
-    /// `vpblendvb`: per byte `o` where the byte's sign bit in `mask` is set, else `self`
-    /// (per lane, for masks of all ones or zero).
-    #[inline(always)]
-    pub fn blendv(self, o: Self, mask: Self) -> Self {
-        Self(avx2!(_mm256_blendv_epi8(self.0, o.0, mask.0)))
-    }
-
-    /// `vpermd`: lane `i` is lane `idx[i] & 7` of `self`.
-    #[inline(always)]
-    pub fn permute_var(self, idx: Self) -> Self {
-        Self(avx2!(_mm256_permutevar8x32_epi32(self.0, idx.0)))
-    }
-
-    /// Converted to f32 (rounded to nearest).
-    #[inline(always)]
-    pub fn to_f32(self) -> F32x8 {
-        F32x8(avx2!(_mm256_cvtepi32_ps(self.0)))
-    }
-
-    /// The same bits as eight f32 lanes.
-    #[inline(always)]
-    pub fn as_f32(self) -> F32x8 {
-        F32x8(avx2!(_mm256_castsi256_ps(self.0)))
-    }
-
     /// The same bits as sixteen u16 lanes.
     #[inline(always)]
     pub fn as_u16(self) -> U16x16 {
@@ -211,43 +145,54 @@ impl I32x8 {
             self.0
         ))))
     }
-
-    /// `vpunpcklbw`: the low 8 bytes of each 128-bit half interleaved with those of `o`
-    /// (with `o` zero: those bytes zero-extended to u16).
-    #[inline(always)]
-    pub fn unpack_lo_u8(self, o: Self) -> U16x16 {
-        U16x16(avx2!(_mm256_unpacklo_epi8(self.0, o.0)))
-    }
-
-    /// `vpunpckhbw`: as [`Self::unpack_lo_u8`] for the high 8 bytes of each half.
-    #[inline(always)]
-    pub fn unpack_hi_u8(self, o: Self) -> U16x16 {
-        U16x16(avx2!(_mm256_unpackhi_epi8(self.0, o.0)))
-    }
 }
 
 bitwise_256!(I32x8);
 
-binary_ops! {
+lane_ops! {
     I32x8;
+    /// Shifted left by `N` bits.
+    fn shl<const N>() -> Self = _mm256_slli_epi32::<N>;
+    /// Shifted right by `N` bits, zeros in.
+    fn shr<const N>() -> Self = _mm256_srli_epi32::<N>;
+    /// Shifted right by `N` bits, the sign in.
+    fn sra<const N>() -> Self = _mm256_srai_epi32::<N>;
+    /// Each lane shifted left by the same lane of `n` (0 from 32 on).
+    fn shl_var(n) -> Self = _mm256_sllv_epi32;
+    /// Each lane shifted right by the same lane of `n`, zeros in (0 from 32 on).
+    fn shr_var(n) -> Self = _mm256_srlv_epi32;
+    /// `vpblendvb`: per byte `o` where the byte's sign bit in `mask` is set, else `self`
+    /// (per lane, for masks of all ones or zero).
+    fn blendv(o, mask) -> Self = _mm256_blendv_epi8;
+    /// `vpermd`: lane `i` is lane `idx[i] & 7` of `self`.
+    fn permute_var(idx) -> Self = _mm256_permutevar8x32_epi32;
+    /// Converted to f32 (rounded to nearest).
+    fn to_f32() -> F32x8 = _mm256_cvtepi32_ps;
+    /// The same bits as eight f32 lanes.
+    fn as_f32() -> F32x8 = _mm256_castsi256_ps;
+    /// `vpunpcklbw`: the low 8 bytes of each 128-bit half interleaved with those of `o`
+    /// (with `o` zero: those bytes zero-extended to u16).
+    fn unpack_lo_u8(o) -> U16x16 = _mm256_unpacklo_epi8;
+    /// `vpunpckhbw`: as [`Self::unpack_lo_u8`] for the high 8 bytes of each half.
+    fn unpack_hi_u8(o) -> U16x16 = _mm256_unpackhi_epi8;
     /// Wrapping `self + o` per lane.
-    add => _mm256_add_epi32,
+    fn add(o) -> Self = _mm256_add_epi32;
     /// Wrapping `self - o` per lane.
-    sub => _mm256_sub_epi32,
+    fn sub(o) -> Self = _mm256_sub_epi32;
     /// The low 32 bits of `self * o` per lane.
-    mullo => _mm256_mullo_epi32,
+    fn mullo(o) -> Self = _mm256_mullo_epi32;
     /// Bitwise exclusive or.
-    xor => _mm256_xor_si256,
+    fn xor(o) -> Self = _mm256_xor_si256;
     /// `self > o` per lane (signed) as a mask.
-    cmpgt => _mm256_cmpgt_epi32,
+    fn cmpgt(o) -> Self = _mm256_cmpgt_epi32;
     /// `self == o` per lane as a mask.
-    cmpeq => _mm256_cmpeq_epi32,
+    fn cmpeq(o) -> Self = _mm256_cmpeq_epi32;
     /// Signed minimum per lane.
-    min => _mm256_min_epi32,
+    fn min(o) -> Self = _mm256_min_epi32;
     /// Signed maximum per lane.
-    max => _mm256_max_epi32,
+    fn max(o) -> Self = _mm256_max_epi32;
     /// Unsigned minimum per lane.
-    min_u32 => _mm256_min_epu32,
+    fn min_u32(o) -> Self = _mm256_min_epu32;
     /// Unsigned maximum per lane.
-    max_u32 => _mm256_max_epu32,
+    fn max_u32(o) -> Self = _mm256_max_epu32;
 }

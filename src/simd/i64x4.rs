@@ -1,27 +1,16 @@
 //! Four `i64` lanes in a 256-bit AVX2 register.
 
-use super::{avx2, binary_ops, bitwise_256, wide_type, I32x8};
+use super::{avx2, bitwise_256, lane_ops, wide_type, I32x8};
 use std::arch::x86_64::*;
 
 wide_type! {
     /// Four `i64` lanes (`__m256i`). Made only where the CPU has AVX2 (see [`super`]).
-    I64x4(__m256i, i64): splat => _mm256_set1_epi64x, zero => _mm256_setzero_si256
+    I64x4(__m256i, [i64; 4]):
+        splat => _mm256_set1_epi64x, zero => _mm256_setzero_si256,
+        new => _mm256_set_epi64x(3, 2, 1, 0)
 }
 
-// Named methods rather than `std::ops` operators: a kernel reads as the sequence of
-// instructions it compiles to.
-#[allow(clippy::should_implement_trait)]
 impl I64x4 {
-    /// Lane `i` is `a[i]`.
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    pub unsafe fn new(a: [i64; 4]) -> Self {
-        // SAFETY: the caller vouches for AVX2.
-        Self(unsafe { _mm256_set_epi64x(a[3], a[2], a[1], a[0]) })
-    }
-
     /// Stores the lanes at `p` (unaligned).
     ///
     /// # Safety
@@ -38,12 +27,6 @@ impl I64x4 {
         I32x8(self.0)
     }
 
-    /// Shifted left by `N` bits.
-    #[inline(always)]
-    pub fn shl<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_slli_epi64::<N>(self.0)))
-    }
-
     /// The sign bits of the lanes, bit `i` for lane `i`.
     #[inline(always)]
     pub fn movemask(self) -> u32 {
@@ -53,16 +36,18 @@ impl I64x4 {
 
 bitwise_256!(I64x4);
 
-binary_ops! {
+lane_ops! {
     I64x4;
+    /// Shifted left by `N` bits.
+    fn shl<const N>() -> Self = _mm256_slli_epi64::<N>;
     /// Wrapping `self + o` per lane.
-    add => _mm256_add_epi64,
+    fn add(o) -> Self = _mm256_add_epi64;
     /// Wrapping `self - o` per lane.
-    sub => _mm256_sub_epi64,
+    fn sub(o) -> Self = _mm256_sub_epi64;
     /// `vpmuldq`: the exact products of the lanes' low 32 bits, as signed i32 values.
-    mul_i32 => _mm256_mul_epi32,
+    fn mul_i32(o) -> Self = _mm256_mul_epi32;
     /// `self > o` per lane (signed) as a mask.
-    cmpgt => _mm256_cmpgt_epi64,
+    fn cmpgt(o) -> Self = _mm256_cmpgt_epi64;
     /// `self == o` per lane as a mask.
-    cmpeq => _mm256_cmpeq_epi64,
+    fn cmpeq(o) -> Self = _mm256_cmpeq_epi64;
 }

@@ -62,13 +62,22 @@ macro_rules! avx2 {
 #[cfg(target_arch = "x86_64")]
 use avx2;
 
-/// A wide type: the newtype over its register (documented by the doc lines before the
-/// invocation) and its two constructors that read no memory, `splat` (every lane `v`) and
-/// `zero` (every bit 0), both `unsafe` because a value may only exist where the CPU has
-/// AVX2.
+/// A wide type: the newtype over its register of `$n` lanes (documented by the doc lines
+/// before the invocation) and its constructors that read no memory, `splat` (every lane `v`), `zero`
+/// (every bit 0) and `new` (lane `i` from `a[i]`: the set intrinsic takes the array's
+/// elements in the order listed), all `unsafe` because a value may only exist where the
+/// CPU has AVX2. With `memory(*lane) => load, store` it also has the unaligned `load` and
+/// `store` of its lanes through a typed pointer, and `to_array`; with `float => fmadd,
+/// movemask` the fused `mul_add` and the lanes' sign bits.
 #[cfg(target_arch = "x86_64")]
 macro_rules! wide_type {
-    ($(#[$doc:meta])* $t:ident($reg:ident, $lane:ty): splat => $splat:ident, zero => $zero:ident) => {
+    (
+        $(#[$doc:meta])*
+        $t:ident($reg:ident, [$lane:ty; $n:literal]):
+            splat => $splat:ident, zero => $zero:ident, new => $set:ident($($i:literal),+)
+            $(, memory(*lane) => $load:ident, $store:ident)?
+            $(, float => $fma:ident, $movemask:ident)?
+    ) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug)]
         #[repr(transparent)]
@@ -94,18 +103,88 @@ macro_rules! wide_type {
                 // SAFETY: the caller vouches for AVX2.
                 Self(unsafe { std::arch::x86_64::$zero() })
             }
+
+            /// Lane `i` is `a[i]`.
+            ///
+            /// # Safety
+            /// The CPU has AVX2.
+            #[inline(always)]
+            pub unsafe fn new(a: [$lane; $n]) -> Self {
+                // SAFETY: the caller vouches for AVX2.
+                Self(unsafe { std::arch::x86_64::$set($(a[$i]),+) })
+            }
         }
+
+        $(
+            impl $t {
+                #[doc = concat!("The ", stringify!($n), " lanes at `p` (unaligned).")]
+                ///
+                /// # Safety
+                #[doc = concat!("The CPU has AVX2 and `p..p + ", stringify!($n), "` is readable.")]
+                #[inline(always)]
+                pub unsafe fn load(p: *const $lane) -> Self {
+                    // SAFETY: forwarded from the caller.
+                    Self(unsafe { std::arch::x86_64::$load(p.cast()) })
+                }
+
+                /// Stores the lanes at `p` (unaligned).
+                ///
+                /// # Safety
+                #[doc = concat!("`p..p + ", stringify!($n), "` is writable.")]
+                #[inline(always)]
+                pub unsafe fn store(self, p: *mut $lane) {
+                    // SAFETY: AVX2 as `self` proves; the caller vouches for the address.
+                    unsafe { std::arch::x86_64::$store(p.cast(), self.0) }
+                }
+
+                /// The lanes as an array.
+                #[inline(always)]
+                pub fn to_array(self) -> [$lane; $n] {
+                    let mut a = [<$lane>::default(); $n];
+                    // SAFETY: AVX2 as `self` proves; `a` holds the register's bytes.
+                    unsafe { self.store(a.as_mut_ptr()) };
+                    a
+                }
+            }
+        )?
+
+        $(
+            impl $t {
+                /// `self * b + c` with one rounding (`vfmadd`).
+                ///
+                /// # Safety
+                /// The CPU has FMA.
+                #[inline(always)]
+                pub unsafe fn mul_add(self, b: Self, c: Self) -> Self {
+                    // SAFETY: AVX2 as `self` proves; the caller vouches for FMA.
+                    Self(unsafe { std::arch::x86_64::$fma(self.0, b.0, c.0) })
+                }
+
+                /// The sign bits of the lanes, bit `i` for lane `i`.
+                #[inline(always)]
+                pub fn movemask(self) -> u32 {
+                    $crate::simd::avx2!(std::arch::x86_64::$movemask(self.0)) as u32
+                }
+            }
+        )?
     };
 }
 #[cfg(target_arch = "x86_64")]
 use wide_type;
 
-/// The lane-wise operations of a wide type that are one intrinsic of `self` and `o`:
-/// `name => intrinsic,` after the operation's doc lines, each an `#[inline(always)]`
-/// `fn name(self, o: Self) -> Self` (safe, as every [`avx2!`] operation).
+/// The operations of a wide type that are one intrinsic of `self`'s register and those of
+/// its operands: after the operation's doc lines, `fn name(o, ...) -> Ret = intrinsic;`
+/// becomes the `#[inline(always)]` `fn name(self, o: Self, ...) -> Ret` that returns
+/// `Ret(intrinsic(self.0, o.0, ...))` (safe, as every [`avx2!`] operation; `Ret` is `Self`
+/// or another wide type). An immediate goes after the intrinsic, `= intrinsic::<IMM>`,
+/// either a constant or the operation's own `<const IMM>` parameter.
 #[cfg(target_arch = "x86_64")]
-macro_rules! binary_ops {
-    ($t:ident; $($(#[$doc:meta])* $name:ident => $intr:ident,)+) => {
+macro_rules! lane_ops {
+    ($t:ident; $(
+        $(#[$doc:meta])*
+        fn $name:ident $(<const $n:ident>)? ($($o:ident),*) -> $ret:ident
+            = $intr:ident $(::<$imm:tt>)?;
+    )+) => {
         // Named methods rather than `std::ops` operators: a kernel reads as the sequence
         // of instructions it compiles to.
         #[allow(clippy::should_implement_trait)]
@@ -113,32 +192,26 @@ macro_rules! binary_ops {
             $(
                 $(#[$doc])*
                 #[inline(always)]
-                pub fn $name(self, o: Self) -> Self {
-                    Self(avx2!(std::arch::x86_64::$intr(self.0, o.0)))
+                pub fn $name $(<const $n: i32>)? (self $(, $o: Self)*) -> $ret {
+                    $ret($crate::simd::avx2!(std::arch::x86_64::$intr $(::<$imm>)? (self.0 $(, $o.0)*)))
                 }
             )+
         }
     };
 }
 #[cfg(target_arch = "x86_64")]
-use binary_ops;
+use lane_ops;
 
 /// `and` and `or` of a 256-bit integer type: the same instructions whatever the lanes.
 #[cfg(target_arch = "x86_64")]
 macro_rules! bitwise_256 {
     ($t:ident) => {
-        impl $t {
+        $crate::simd::lane_ops! {
+            $t;
             /// Bitwise and.
-            #[inline(always)]
-            pub fn and(self, o: Self) -> Self {
-                Self(avx2!(std::arch::x86_64::_mm256_and_si256(self.0, o.0)))
-            }
-
+            fn and(o) -> Self = _mm256_and_si256;
             /// Bitwise or.
-            #[inline(always)]
-            pub fn or(self, o: Self) -> Self {
-                Self(avx2!(std::arch::x86_64::_mm256_or_si256(self.0, o.0)))
-            }
+            fn or(o) -> Self = _mm256_or_si256;
         }
     };
 }

@@ -1,6 +1,6 @@
 //! Sixteen 16-bit lanes in a 256-bit AVX2 register: pixels' channels widened to words.
 
-use super::{avx2, binary_ops, bitwise_256, I32x8};
+use super::{avx2, bitwise_256, lane_ops, I32x8};
 use std::arch::x86_64::*;
 
 /// Sixteen 16-bit lanes (`__m256i`), unsigned unless an operation says otherwise. Made
@@ -9,9 +9,6 @@ use std::arch::x86_64::*;
 #[repr(transparent)]
 pub struct U16x16(pub(super) __m256i);
 
-// Named methods rather than `std::ops` operators: a kernel reads as the sequence of
-// instructions it compiles to.
-#[allow(clippy::should_implement_trait)]
 impl U16x16 {
     /// Every lane `v`.
     ///
@@ -50,24 +47,6 @@ impl U16x16 {
         I32x8(self.0)
     }
 
-    /// Each 16-bit lane shifted left by `N` bits.
-    #[inline(always)]
-    pub fn shl<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_slli_epi16::<N>(self.0)))
-    }
-
-    /// Each 16-bit lane shifted right by `N` bits, zeros in.
-    #[inline(always)]
-    pub fn shr<const N: i32>(self) -> Self {
-        Self(avx2!(_mm256_srli_epi16::<N>(self.0)))
-    }
-
-    /// `vpblendw` with an immediate: lane `i` from `o` where bit `i % 8` of `IMM` is set.
-    #[inline(always)]
-    pub fn blend<const IMM: i32>(self, o: Self) -> Self {
-        Self(avx2!(_mm256_blend_epi16::<IMM>(self.0, o.0)))
-    }
-
     /// `vpshuflw` then `vpshufhw` with the same immediate: the four words of every 64 bits
     /// permuted by `IMM`.
     #[inline(always)]
@@ -76,31 +55,33 @@ impl U16x16 {
             _mm256_shufflelo_epi16::<IMM>(self.0)
         )))
     }
-
-    /// `vpackuswb`: the lanes of `self` then `o` per 128-bit half, as bytes saturated to
-    /// 0..=255 (the inverse of [`I32x8::unpack_lo_u8`] / [`I32x8::unpack_hi_u8`]).
-    #[inline(always)]
-    pub fn pack_u8(self, o: Self) -> I32x8 {
-        I32x8(avx2!(_mm256_packus_epi16(self.0, o.0)))
-    }
 }
 
 bitwise_256!(U16x16);
 
-binary_ops! {
+lane_ops! {
     U16x16;
+    /// Each 16-bit lane shifted left by `N` bits.
+    fn shl<const N>() -> Self = _mm256_slli_epi16::<N>;
+    /// Each 16-bit lane shifted right by `N` bits, zeros in.
+    fn shr<const N>() -> Self = _mm256_srli_epi16::<N>;
+    /// `vpblendw` with an immediate: lane `i` from `o` where bit `i % 8` of `IMM` is set.
+    fn blend<const IMM>(o) -> Self = _mm256_blend_epi16::<IMM>;
+    /// `vpackuswb`: the lanes of `self` then `o` per 128-bit half, as bytes saturated to
+    /// 0..=255 (the inverse of [`I32x8::unpack_lo_u8`] / [`I32x8::unpack_hi_u8`]).
+    fn pack_u8(o) -> I32x8 = _mm256_packus_epi16;
     /// Wrapping `self + o` per lane.
-    add => _mm256_add_epi16,
+    fn add(o) -> Self = _mm256_add_epi16;
     /// Wrapping `self - o` per lane.
-    sub => _mm256_sub_epi16,
+    fn sub(o) -> Self = _mm256_sub_epi16;
     /// `self - o` per lane, saturated at 0.
-    sub_sat => _mm256_subs_epu16,
+    fn sub_sat(o) -> Self = _mm256_subs_epu16;
     /// The low 16 bits of `self * o` per lane.
-    mullo => _mm256_mullo_epi16,
+    fn mullo(o) -> Self = _mm256_mullo_epi16;
     /// `vpmulhrsw`: `(self·o + 2^14) >> 15` per lane, signed.
-    mulhrs => _mm256_mulhrs_epi16,
+    fn mulhrs(o) -> Self = _mm256_mulhrs_epi16;
     /// Unsigned minimum per lane.
-    min => _mm256_min_epu16,
+    fn min(o) -> Self = _mm256_min_epu16;
     /// Unsigned maximum per lane.
-    max => _mm256_max_epu16,
+    fn max(o) -> Self = _mm256_max_epu16;
 }

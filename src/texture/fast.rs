@@ -359,7 +359,7 @@ pub fn env_lanes(e: FastEnv, tex: &[[u8; 4]; LANES], frag: &[[f32; LANES]; 4]) -
 mod tests {
     use super::super::env::{EnvMode, TexEnv};
     use super::super::sample::lerp8;
-    use super::super::{BaseFormat, LodParams, MipFilter, SamplerParams, Storage, Wrap};
+    use super::super::{BaseFormat, LodParams, MipFilter, SamplerParams, Wrap};
     use super::*;
 
     #[test]
@@ -507,15 +507,8 @@ mod tests {
     fn quads_match_general_sampler() {
         let mut rnd = crate::test_rng::xorshift32(0x1234_5678);
         let mk = |w: usize, h: usize, rnd: &mut dyn FnMut() -> u32| -> Option<Level> {
-            Some(Level {
-                width: w,
-                height: h,
-                internal_format: 0x1908,
-                base: BaseFormat::Rgba,
-                storage: Storage::of_base(BaseFormat::Rgba),
-                texels: (0..w * h).map(|_| rnd().to_le_bytes()).collect(),
-                blocks: None,
-            })
+            let texels = (0..w * h).map(|_| rnd().to_le_bytes()).collect();
+            Some(crate::texture::tests::rgba_level(w, h, texels))
         };
         for (w0, h0) in [(16usize, 8usize), (12, 5)] {
             let mut levels = Vec::new();

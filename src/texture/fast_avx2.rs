@@ -390,8 +390,8 @@ impl<'a> RowSampler<'a> {
     ///
     /// # Safety
     /// Must be called from a function compiled with AVX2 (the raster entry points), on a
-    /// CPU that has it ([`available`]). Elsewhere it compiles to calls that must not run.
-    #[cfg(target_arch = "x86_64")]
+    /// CPU that has it ([`available`]). Elsewhere it compiles to calls that must not run;
+    /// off x86-64 it is never called ([`available`] is false) and declines.
     #[inline(always)]
     pub unsafe fn row(
         &self,
@@ -400,6 +400,7 @@ impl<'a> RowSampler<'a> {
         wmip: &[i32; 8],
         out: &mut [[u8; 4]; 8],
     ) -> bool {
+        #[cfg(target_arch = "x86_64")]
         // SAFETY: the arrays are 8 f32 / i32 (32 bytes); unaligned loads and store.
         unsafe {
             let (vs, vt) = (F32x8::load(s.as_ptr()), F32x8::load(t.as_ptr()));
@@ -409,6 +410,11 @@ impl<'a> RowSampler<'a> {
                 v.store(out.as_mut_ptr());
             }
             ok
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = (s, t, wmip, out);
+            false
         }
     }
 
@@ -433,21 +439,6 @@ impl<'a> RowSampler<'a> {
             linear: self.linear,
             wrap: self.wrap,
         }
-    }
-
-    /// Without AVX2 the vector sampler never runs.
-    ///
-    /// # Safety
-    /// Never called ([`available`] is false).
-    #[cfg(not(target_arch = "x86_64"))]
-    pub unsafe fn row(
-        &self,
-        _s: &[f32; 8],
-        _t: &[f32; 8],
-        _wmip: &[i32; 8],
-        _out: &mut [[u8; 4]; 8],
-    ) -> bool {
-        false
     }
 }
 

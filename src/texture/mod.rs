@@ -424,16 +424,24 @@ impl TextureObject {
 
     /// [`TextureObject::complete_range`] of a 1D or 2D texture.
     pub fn complete_range_2d(&self) -> Option<(usize, usize)> {
+        self.complete_chain(|_| 1)
+    }
+
+    /// [`TextureObject::complete_range`] of a texture whose level `l` has depth `depth(l)`
+    /// (1 for 1D and 2D textures): the base level is non-empty, and every level up to the
+    /// last has the base's format and its size halved per level (floored, at least 1).
+    pub(crate) fn complete_chain(&self, depth: impl Fn(usize) -> usize) -> Option<(usize, usize)> {
         let p = &self.params;
         if p.base_level < 0 || p.base_level > p.max_level || p.base_level as usize >= MAX_LEVELS {
             return None;
         }
         let base = p.base_level as usize;
         let b = self.level(base)?;
-        if b.width == 0 || b.height == 0 {
+        let d = depth(base);
+        if b.width == 0 || b.height == 0 || d == 0 {
             return None;
         }
-        let log2 = usize::BITS - 1 - b.width.max(b.height).leading_zeros();
+        let log2 = usize::BITS - 1 - b.width.max(b.height).max(d).leading_zeros();
         let last = (base + log2 as usize)
             .min(p.max_level as usize)
             .min(MAX_LEVELS - 1);
@@ -445,6 +453,7 @@ impl TextureObject {
             let k = l - base;
             if img.width != (b.width >> k).max(1)
                 || img.height != (b.height >> k).max(1)
+                || depth(l) != (d >> k).max(1)
                 || img.base != b.base
             {
                 return None;

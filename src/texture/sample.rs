@@ -349,15 +349,8 @@ mod tests {
     }
 
     fn img(w: usize, h: usize, f: impl Fn(usize, usize) -> [u8; 4]) -> Option<Level> {
-        Some(Level {
-            width: w,
-            height: h,
-            internal_format: 0x1908,
-            base: BaseFormat::Rgba,
-            storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
-            texels: (0..w * h).map(|i| f(i % w, i / w)).collect(),
-            blocks: None,
-        })
+        let texels = (0..w * h).map(|i| f(i % w, i / w)).collect();
+        Some(crate::texture::tests::rgba_level(w, h, texels))
     }
 
     /// A 2x2 texture, red = 0, 100 / 200, 255.

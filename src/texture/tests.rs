@@ -1,23 +1,33 @@
-//! Unit tests of `texture/mod.rs`.
+//! Unit tests of `texture/mod.rs`, and the texture tests' shared helpers.
 
 use super::*;
 
-fn level(w: usize, h: usize) -> Option<Level> {
-    Some(Level {
+/// An RGBA level of `w`x`h` (or, for a 3D level, of `texels.len() / (w·h)` slices)
+/// holding `texels`.
+pub(crate) fn rgba_level(w: usize, h: usize, texels: Vec<[u8; 4]>) -> Level {
+    Level {
         width: w,
         height: h,
         internal_format: 0x1908,
         base: BaseFormat::Rgba,
-        storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
-        texels: vec![[0; 4]; w * h],
+        storage: Storage::of_base(BaseFormat::Rgba),
+        texels,
         blocks: None,
-    })
+    }
+}
+
+/// A 2D texture whose levels 0, 1, ... have the sizes `sizes`.
+fn chain(sizes: &[(usize, usize)]) -> TextureObject {
+    let mut o = TextureObject::new(Some(Target::Tex2D));
+    for (l, &(w, h)) in sizes.iter().enumerate() {
+        o.levels[l] = Some(rgba_level(w, h, vec![[0; 4]; w * h]));
+    }
+    o
 }
 
 #[test]
 fn default_min_filter_makes_single_level_incomplete() {
-    let mut o = TextureObject::new(Some(Target::Tex2D));
-    o.levels[0] = level(4, 4);
+    let mut o = chain(&[(4, 4)]);
     assert_eq!(o.complete_range(), None);
     o.params.mip_filter = MipFilter::None;
     assert_eq!(o.complete_range(), Some((0, 0)));
@@ -25,11 +35,8 @@ fn default_min_filter_makes_single_level_incomplete() {
 
 #[test]
 fn full_chain_is_complete_and_npot_halves_floor() {
-    let mut o = TextureObject::new(Some(Target::Tex2D));
-    o.levels[0] = level(5, 3);
-    o.levels[1] = level(2, 1);
-    assert_eq!(o.complete_range(), None);
-    o.levels[2] = level(1, 1);
+    assert_eq!(chain(&[(5, 3), (2, 1)]).complete_range(), None);
+    let mut o = chain(&[(5, 3), (2, 1), (1, 1)]);
     assert_eq!(o.complete_range(), Some((0, 2)));
     o.params.max_level = 1;
     assert_eq!(o.complete_range(), Some((0, 1)));
@@ -41,9 +48,5 @@ fn full_chain_is_complete_and_npot_halves_floor() {
 
 #[test]
 fn wrong_level_size_is_incomplete() {
-    let mut o = TextureObject::new(Some(Target::Tex2D));
-    o.levels[0] = level(4, 4);
-    o.levels[1] = level(2, 2);
-    o.levels[2] = level(2, 1);
-    assert_eq!(o.complete_range(), None);
+    assert_eq!(chain(&[(4, 4), (2, 2), (2, 1)]).complete_range(), None);
 }

@@ -154,17 +154,4 @@ impl UnitPlan<'_> {
     pub fn env(&self, frag: [f32; 4], tex: [f32; 4], prev: [f32; 4]) -> [f32; 4] {
         self.env.apply(frag, tex, prev, &[])
     }
-
-    /// As [`UnitPlan::env`] with the values of all units for GL_TEXTUREn sources
-    /// (ARB_texture_env_crossbar); `textures[n]` of a disabled unit should be zero.
-    #[inline]
-    pub fn env_crossbar(
-        &self,
-        frag: [f32; 4],
-        tex: [f32; 4],
-        prev: [f32; 4],
-        textures: &[[f32; 4]],
-    ) -> [f32; 4] {
-        self.env.apply(frag, tex, prev, textures)
-    }
 }

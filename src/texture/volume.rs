@@ -19,7 +19,7 @@ use super::lod::{self, Lod};
 use super::mipmap::axis;
 use super::sample::{lerp8, lerp8x4, lerpf, lerpfx4, select_levels, texel_float, to_float};
 use super::wrap;
-use super::{Filter, Level, MipFilter, TextureObject, UnitPlan, Wrap, MAX_LEVELS};
+use super::{Filter, Level, TextureObject, UnitPlan, Wrap, MAX_LEVELS};
 
 /// The 3D part of a unit's sampling plan.
 #[derive(Clone, Copy, Debug)]
@@ -34,35 +34,7 @@ pub struct VolumePlan<'a> {
 
 /// `(base, last)` of a complete 3D texture (GL 1.5 §3.8.10), `None` when incomplete.
 pub fn complete_range(obj: &TextureObject) -> Option<(usize, usize)> {
-    let p = &obj.params;
-    if p.base_level < 0 || p.base_level > p.max_level || p.base_level as usize >= MAX_LEVELS {
-        return None;
-    }
-    let base = p.base_level as usize;
-    let b = obj.level(base)?;
-    let d = obj.depths[base];
-    if b.width == 0 || b.height == 0 || d == 0 {
-        return None;
-    }
-    let log2 = usize::BITS - 1 - b.width.max(b.height).max(d).leading_zeros();
-    let last = (base + log2 as usize)
-        .min(p.max_level as usize)
-        .min(MAX_LEVELS - 1);
-    if p.mip_filter == MipFilter::None {
-        return Some((base, base));
-    }
-    for l in base + 1..=last {
-        let img = obj.level(l)?;
-        let k = l - base;
-        if img.width != (b.width >> k).max(1)
-            || img.height != (b.height >> k).max(1)
-            || obj.depths[l] != (d >> k).max(1)
-            || img.base != b.base
-        {
-            return None;
-        }
-    }
-    Some((base, last))
+    obj.complete_chain(|l| obj.depths[l])
 }
 
 /// The texel at (x, y, z) of a 3D level.
@@ -257,18 +229,10 @@ fn soa_filter(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::texture::{BaseFormat, Storage, Target};
+    use crate::texture::{MipFilter, Target};
 
     fn level(w: usize, h: usize, d: usize, v: u8) -> Level {
-        Level {
-            width: w,
-            height: h,
-            internal_format: 0x1908,
-            base: BaseFormat::Rgba,
-            storage: Storage::of_base(BaseFormat::Rgba),
-            texels: vec![[v; 4]; w * h * d],
-            blocks: None,
-        }
+        crate::texture::tests::rgba_level(w, h, vec![[v; 4]; w * h * d])
     }
 
     #[test]
