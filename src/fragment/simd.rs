@@ -11,6 +11,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
+use super::span::Span;
 use super::{BlendPlan, DepthPlan, FragPlan};
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
@@ -472,7 +473,7 @@ unsafe fn chunk8<
     }
 }
 
-/// Shades pixels `x0..=x1` of row `py`. The caller guarantees the plan has no alpha test,
+/// Shades span `s`. The caller guarantees the plan has no alpha test,
 /// stencil, logic op or texture, a colour format with 8-bit alpha layout that stores
 /// values unchanged (RGBA, BGRA, ARGB), a full colour mask or none, and that `DEPTH`
 /// ([`depth_code`]) and `BLEND` ([`blend_code`]) match the plan.
@@ -483,7 +484,6 @@ unsafe fn chunk8<
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub unsafe fn shade_span<
     const FMA: bool,
     const DEPTH: u8,
@@ -494,11 +494,10 @@ pub unsafe fn shade_span<
     t: &SetupTriangle,
     plan: &FragPlan,
     fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
+    s: Span,
     stats: &mut Stats,
 ) {
+    let Span { y: py, x0, x1 } = s;
     let count = (x1 + 1 - x0) as u64;
     let mut tally = Tally::default();
     // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; every chunk

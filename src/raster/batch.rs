@@ -26,7 +26,7 @@ use pairing::Pairing;
 
 pub use split::{geom_section, Binner};
 
-use super::raster_triangle;
+use super::{raster_triangle, Draw};
 use crate::fragment::FragPlan;
 use crate::framebuffer::{Framebuffer, Target};
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
@@ -220,16 +220,8 @@ impl Work {
             // SAFETY: band `b` was claimed by this call alone (see `Work`'s `Sync`).
             let band = unsafe { &mut *cell.0.get() };
             let bin = &self.batch.bins[b];
-            draw_bin(
-                &self.batch,
-                bin,
-                self.nvary,
-                self.region,
-                &self.plan,
-                units,
-                band,
-                &mut s,
-            );
+            let d = &mut Draw::new(self.region, &self.plan, units, band, &mut s);
+            draw_bin(&self.batch, bin, self.nvary, d);
         }
         self.stats
             .lock()
@@ -581,14 +573,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             }
             // Only the triangle's rows leave a deferred glClear behind.
             let (y0, y1) = box_rows(t, self.region);
-            raster_triangle(
-                t,
-                self.region,
-                self.plan,
-                self.units,
-                &mut self.fb.target_rows(y0..y1 + 1),
-                stats,
-            );
+            let (region, plan, units) = (self.region, self.plan, self.units);
+            let mut target = self.fb.target_rows(y0..y1 + 1);
+            raster_triangle(t, &mut Draw::new(region, plan, units, &mut target, stats));
             return;
         }
         if self.batch.heads.is_empty() {
@@ -631,7 +618,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             // One band after the other, each with all of its triangles.
             let mut bands = self.fb.bands(self.tune.band_rows);
             for (band, bin) in bands.iter_mut().zip(&self.batch.bins) {
-                draw_bin(&self.batch, bin, nvary, region, plan, units, band, stats);
+                draw_bin(
+                    &self.batch,
+                    bin,
+                    nvary,
+                    &mut Draw::new(region, plan, units, band, stats),
+                );
             }
         } else if !self.threads || self.batch.work < PARALLEL_WORK {
             // Only the bands the batch reaches leave a deferred glClear behind.
@@ -643,10 +635,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .map_or(0, |l| l + 1);
             let br = self.tune.band_rows;
             let mut target = self.fb.target_rows(first * br..end * br);
+            let d = &mut Draw::new(region, plan, units, &mut target, stats);
             let mut t = SetupTriangle::default();
             for i in 0..self.batch.heads.len() {
                 self.batch.load(i, nvary, &mut t);
-                raster_triangle(&t, region, plan, units, &mut target, stats);
+                raster_triangle(&t, d);
             }
         } else {
             // Over the pool's threads and this one.
@@ -816,28 +809,18 @@ fn box_rows(t: &SetupTriangle, region: [i64; 4]) -> (usize, usize) {
     (y0 as usize, y1 as usize)
 }
 
-/// Draws the triangles of one band's bin into the band, counting into `s`.
-#[allow(clippy::too_many_arguments)]
-fn draw_bin(
-    batch: &Batch,
-    bin: &[u32],
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    band: &mut Target<'_>,
-    s: &mut Stats,
-) {
+/// Draws the triangles of one band's bin into the band `d` draws into.
+fn draw_bin(batch: &Batch, bin: &[u32], nvary: usize, d: &mut Draw<'_, '_>) {
     if bin.is_empty() {
         // Nothing to draw here: the band keeps a deferred glClear pending.
         return;
     }
     // The band's share of a deferred glClear, written while the band is in the cache.
-    band.resolve();
+    d.fb.resolve();
     let mut t = SetupTriangle::default();
     for &i in bin {
         batch.load(i as usize, nvary, &mut t);
-        raster_triangle(&t, region, plan, units, band, s);
+        raster_triangle(&t, d);
     }
 }
 

@@ -12,6 +12,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::variants::{with_flags, Walks};
+use super::Draw;
 use crate::cpu::Isa;
 use crate::fragment::span::{shade_chunk, tex_coords, ChunkColors, Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
@@ -91,19 +92,12 @@ impl Cover for StippleCover<'_> {
 }
 
 /// Shades the pixels of `cover` inside the inclusive box `b` (already cut to the region
-/// and the target's rows) with the planes of `t`, sampling `units` per 2x2 quad.
-pub fn shade_covered<C: Cover>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    cover: &C,
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+/// and the target's rows) with the planes of `t`, sampling the units per 2x2 quad.
+pub fn shade_covered<C: Cover>(t: &SetupTriangle, b: [i64; 4], cover: &C, d: &mut Draw<'_, '_>) {
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
+    let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     // Level `$w`'s variant for the plan.
     macro_rules! walk {
         ($w:ty) => {
