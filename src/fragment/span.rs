@@ -344,10 +344,9 @@ pub fn shade_span<
     s: Span,
     stats: &mut Stats,
 ) {
-    let Span { y: py, x0, x1 } = s;
-    let mut x = x0;
-    while x <= x1 {
-        let n = LANES.min(x1 + 1 - x);
+    let mut x = s.x0;
+    while x <= s.x1 {
+        let n = LANES.min(s.x1 + 1 - x);
         let mut live = [false; LANES];
         for (i, l) in live.iter_mut().enumerate() {
             *l = i < n;
@@ -358,7 +357,7 @@ pub fn shade_span<
             &[],
             ChunkColors::Shaded,
             fb,
-            py,
+            s.y,
             x,
             live,
             stats,

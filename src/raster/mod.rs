@@ -386,58 +386,77 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    for textured::Chunk {
-        qy,
-        x,
-        fx,
-        fy,
-        live,
-    } in textured::Chunks::new(t, b)
-    {
+    for mut c in textured::Chunks::new(t, b) {
         // A multisample pass samples at the pixel centres (see `FragPlan::ms`).
-        let (fx, fy) = match plan.ms {
-            None => (fx, fy),
-            Some(_) => (fx.map(|v| v + 0.5), fy.map(|v| v + 0.5)),
-        };
-        let fx = &fx;
-        for (k, u) in units.iter().enumerate() {
-            let base = VARY_TEX + 4 * k;
-            let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
-            let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
-            let rr = u.needs_r().then(|| {
-                [
-                    tex_r::<M, PERSP>(t, base, fx, fy[0]),
-                    tex_r::<M, PERSP>(t, base, fx, fy[1]),
-                ]
-            });
-            for j in 0..LANES / 2 {
-                let (l, r) = (2 * j, 2 * j + 1);
-                if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                    continue;
-                }
-                let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
-                let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
-                let v = variants::sample_quad::<M>(u, s, tt, rq);
-                texels[0][k][l] = v[0];
-                texels[0][k][r] = v[1];
-                texels[1][k][l] = v[2];
-                texels[1][k][r] = v[3];
-            }
+        if plan.ms.is_some() {
+            c.fx = c.fx.map(|v| v + 0.5);
+            c.fy = c.fy.map(|v| v + 0.5);
         }
-        for r in 0..2 {
-            if live[r].iter().any(|&l| l) {
-                shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
-                    t,
-                    plan,
-                    units,
-                    ChunkColors::Textured(&texels[r]),
-                    fb,
-                    (qy + r as i64) as usize,
-                    x as usize,
-                    live[r],
-                    stats,
-                );
+        sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
+        shade_chunk_rows::<M, DEPTH, FLAT, PERSP>(t, plan, units, &texels, fb, &c, stats);
+    }
+}
+
+/// Samples every unit for the 2x2 quads of chunk `c` that hold a live pixel, into
+/// `texels` (lanes of the other quads keep stale values); with `STR` also the r
+/// coordinate of the units that need it.
+#[inline(always)]
+fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
+    t: &SetupTriangle,
+    units: &[UnitPlan<'_>],
+    c: &textured::Chunk,
+    texels: &mut [TexLanes; 2],
+) {
+    let (fx, fy, live) = (&c.fx, c.fy, &c.live);
+    for (k, u) in units.iter().enumerate() {
+        let base = VARY_TEX + 4 * k;
+        let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
+        let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
+        let rr = (STR && u.needs_r()).then(|| {
+            [
+                tex_r::<M, PERSP>(t, base, fx, fy[0]),
+                tex_r::<M, PERSP>(t, base, fx, fy[1]),
+            ]
+        });
+        for j in 0..LANES / 2 {
+            let (l, r) = (2 * j, 2 * j + 1);
+            if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                continue;
             }
+            let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+            let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
+            let v = variants::sample_quad::<M>(u, s, tt, rq);
+            texels[0][k][l] = v[0];
+            texels[0][k][r] = v[1];
+            texels[1][k][l] = v[2];
+            texels[1][k][r] = v[3];
+        }
+    }
+}
+
+/// Shades the live lanes of both rows of chunk `c` through the full per-fragment path,
+/// with the units' `texels` (as untextured fragments when there are no units).
+#[inline(always)]
+fn shade_chunk_rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    texels: &[TexLanes; 2],
+    fb: &mut Target<'_>,
+    c: &textured::Chunk,
+    stats: &mut Stats,
+) {
+    for (r, (tex, live)) in texels.iter().zip(c.live).enumerate() {
+        if live.iter().any(|&l| l) {
+            let colors = if units.is_empty() {
+                ChunkColors::Shaded
+            } else {
+                ChunkColors::Textured(tex)
+            };
+            let (y, x) = ((c.qy + r as i64) as usize, c.x as usize);
+            shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                t, plan, units, colors, fb, y, x, live, stats,
+            );
         }
     }
 }

@@ -353,6 +353,19 @@ impl PolyPipeline<'_> {
     ) {
         let mut stipple = self.lines.stipple;
         let mut tri = SetupTriangle::default();
+        let mut triangle = |v: [&ClipVertex; 3], edges, reset, stats: &mut Stats| {
+            self.triangle(
+                v,
+                edges,
+                reset,
+                &mut stipple,
+                nvary,
+                plan,
+                rast,
+                &mut tri,
+                stats,
+            );
+        };
         decompose(mode, n, |a, b, c, flags, reset| {
             let (va, vb, vc) = (at(a), at(b), at(c));
             stats.triangles += 1;
@@ -381,30 +394,10 @@ impl PolyPipeline<'_> {
                 );
                 // The stipple counter restarts only at the polygon's first piece.
                 for (k, ([p, q, r], e)) in out.iter().enumerate() {
-                    self.triangle(
-                        [p, q, r],
-                        *e,
-                        k == 0,
-                        &mut stipple,
-                        nvary,
-                        plan,
-                        rast,
-                        &mut tri,
-                        stats,
-                    );
+                    triangle([p, q, r], *e, k == 0, stats);
                 }
             } else {
-                self.triangle(
-                    [va, vb, vc],
-                    edges,
-                    reset,
-                    &mut stipple,
-                    nvary,
-                    plan,
-                    rast,
-                    &mut tri,
-                    stats,
-                );
+                triangle([va, vb, vc], edges, reset, stats);
             }
         });
     }
