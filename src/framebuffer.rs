@@ -329,11 +329,24 @@ impl Framebuffer {
         }
     }
 
-    /// Converts an RGBA8 value to what the buffer stores (RGB565 truncates and replicates
-    /// bits, formats without alpha store 255).
+    /// Converts an RGBA8 value to what the buffer stores ([`ColorFormat::store_rgba8`]).
     #[inline(always)]
     pub fn store_rgba8(&self, c: [u8; 4]) -> [u8; 4] {
-        match self.format {
+        self.format.store_rgba8(c)
+    }
+
+    /// The stored colour of a glClear value (already clamped to [0,1]).
+    pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
+        self.format.pack_float(c)
+    }
+}
+
+impl ColorFormat {
+    /// What a buffer of this format stores for the RGBA8 value `c`: RGB565 truncates and
+    /// replicates bits, formats without alpha store 255.
+    #[inline(always)]
+    pub fn store_rgba8(self, c: [u8; 4]) -> [u8; 4] {
+        match self {
             ColorFormat::Rgb565 => {
                 let (r, g, b) = (c[0] >> 3, c[1] >> 2, c[2] >> 3);
                 [
@@ -348,13 +361,6 @@ impl Framebuffer {
         }
     }
 
-    /// The stored colour of a glClear value (already clamped to [0,1]).
-    pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
-        self.format.pack_float(c)
-    }
-}
-
-impl ColorFormat {
     /// The bytes [`Framebuffer::copy_to_user`] writes for stored colour `c` (the first
     /// [`ColorFormat::bytes_per_pixel`] of them).
     pub fn user_bytes(self, c: [u8; 4]) -> [u8; 4] {

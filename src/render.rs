@@ -18,6 +18,7 @@ use crate::geometry::{ClipMask, ClipVertex, Viewport};
 use crate::pipe::{Material, Primitive, RasterState};
 use crate::raster::batch::{geom_section, Binner, InFlight, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
+use crate::raster::Draw;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
@@ -161,45 +162,26 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         Primitive::Points => {
             let per_vertex = stage.point_atten.is_some();
             let mut target = rast.target(stats).target();
+            let d = &mut Draw::new(region, &plan, &tex_plans, &mut target, stats);
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
-                    draw_point(
-                        v,
-                        if per_vertex { v.psize } else { size },
-                        prims.point_smooth,
-                        nvary,
-                        region,
-                        &plan,
-                        &tex_plans,
-                        &mut target,
-                        stats,
-                    );
+                    let size = if per_vertex { v.psize } else { size };
+                    draw_point(v, size, prims.point_smooth, nvary, d);
                 }
             }
         }
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
             let mut stipple = lines.stipple;
             let mut target = rast.target(stats).target();
+            let d = &mut Draw::new(region, &plan, &tex_plans, &mut target, stats);
             assemble::lines(mode, n, |a, b, reset| {
                 if reset {
                     if let Some(s) = stipple.as_mut() {
                         s.counter = 0.0;
                     }
                 }
-                let (va, vb) = (at(a), at(b));
-                lines.draw(
-                    va,
-                    vb,
-                    &viewport,
-                    plan.flat,
-                    stipple.as_mut(),
-                    region,
-                    &plan,
-                    &tex_plans,
-                    &mut target,
-                    stats,
-                );
+                lines.draw(at(a), at(b), &viewport, stipple.as_mut(), d);
             });
         }
         _ if poly => {

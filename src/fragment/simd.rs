@@ -11,6 +11,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
+use super::span::Span;
 use super::{BlendPlan, DepthPlan, FragPlan};
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
@@ -123,13 +124,15 @@ pub(super) unsafe fn store_masked(ptr: *mut i32, avail: usize, pass: I32x8, v: I
 
 /// Writes the packed RGBA8 colours `px` of the `pass` lanes of 8 pixels at `idx` of the
 /// colour buffer, blended over the stored colours when `BLEND` (`n`: the lanes inside the
-/// row, counted as colour reads as [`super::span::shade_chunk`] counts them).
+/// row, counted as colour reads as [`super::span::shade_chunk`] counts them). With `OVER`
+/// the plan is one that [`blend_is_over`] accepts, blended by [`over8`]: the same
+/// arithmetic as [`blend8`] for that plan, without the per-call factor dispatch.
 ///
 /// # Safety
 /// AVX2 context; the passing lanes lie inside the colour buffer.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub(super) unsafe fn write8<const BLEND: bool>(
+pub(super) unsafe fn write8<const BLEND: bool, const OVER: bool>(
     plan: &FragPlan,
     fb: &mut Target<'_>,
     idx: usize,
@@ -141,11 +144,15 @@ pub(super) unsafe fn write8<const BLEND: bool>(
     // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
     unsafe {
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
-        let px = if BLEND {
-            let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
+        let px = if BLEND || OVER {
             let dst = I32x8::maskload(cptr as *const i32, pass);
             stats.color_reads += n as u64;
-            blend8(b, px, dst)
+            if OVER {
+                over8(px, dst)
+            } else {
+                let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
+                blend8(b, px, dst)
+            }
         } else {
             px
         };
@@ -155,7 +162,7 @@ pub(super) unsafe fn write8<const BLEND: bool>(
 }
 
 /// Whether `p` is the classic "over" blend: SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD for RGB
-/// and alpha alike, which [`write8_over`] computes without dispatching on the factors.
+/// and alpha alike, which [`over8`] computes without dispatching on the factors.
 pub fn blend_is_over(p: &BlendPlan) -> bool {
     p.src_rgb == BlendFactor::SrcAlpha
         && p.dst_rgb == BlendFactor::OneMinusSrcAlpha
@@ -163,36 +170,6 @@ pub fn blend_is_over(p: &BlendPlan) -> bool {
         && p.dst_a == BlendFactor::OneMinusSrcAlpha
         && p.eq_rgb == BlendEquation::Add
         && p.eq_a == BlendEquation::Add
-}
-
-/// [`write8`] with blending, for a plan that [`blend_is_over`] accepts: the same
-/// arithmetic as [`blend8`] for that plan (`min(s·a + d·(255 − a), 255)` with llvmpipe's
-/// unorm8 multiply on every channel), without the per-call factor dispatch.
-///
-/// # Safety
-/// AVX2 context; the passing lanes lie inside the colour buffer.
-#[inline(always)]
-pub(super) unsafe fn write8_over(
-    fb: &mut Target<'_>,
-    idx: usize,
-    n: usize,
-    pass: I32x8,
-    px: I32x8,
-    stats: &mut Stats,
-) {
-    // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
-    unsafe {
-        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
-        let dst = I32x8::maskload(cptr as *const i32, pass);
-        stats.color_reads += n as u64;
-        store_masked(
-            cptr,
-            fb.color.len().saturating_sub(idx),
-            pass,
-            over8(px, dst),
-        );
-        stats.color_writes += pass.movemask().count_ones() as u64;
-    }
 }
 
 /// The "over" blend of eight packed RGBA8 source pixels over eight destination pixels:
@@ -472,7 +449,7 @@ unsafe fn chunk8<
     }
 }
 
-/// Shades pixels `x0..=x1` of row `py`. The caller guarantees the plan has no alpha test,
+/// Shades span `s`. The caller guarantees the plan has no alpha test,
 /// stencil, logic op or texture, a colour format with 8-bit alpha layout that stores
 /// values unchanged (RGBA, BGRA, ARGB), a full colour mask or none, and that `DEPTH`
 /// ([`depth_code`]) and `BLEND` ([`blend_code`]) match the plan.
@@ -483,7 +460,6 @@ unsafe fn chunk8<
 /// # Safety
 /// Must be called from a function compiled with AVX2 (and FMA when `FMA`).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub unsafe fn shade_span<
     const FMA: bool,
     const DEPTH: u8,
@@ -494,11 +470,10 @@ pub unsafe fn shade_span<
     t: &SetupTriangle,
     plan: &FragPlan,
     fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
+    s: Span,
     stats: &mut Stats,
 ) {
+    let Span { y: py, x0, x1 } = s;
     let count = (x1 + 1 - x0) as u64;
     let mut tally = Tally::default();
     // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; every chunk

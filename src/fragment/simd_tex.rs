@@ -12,7 +12,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::simd::{depth_test8, eval, sat, write8, write8_over};
+use super::simd::{depth_test8, eval, sat, write8};
 use super::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
@@ -327,11 +327,7 @@ pub unsafe fn shade8<
             }
             acc
         };
-        if OVER {
-            write8_over(fb, idx, n, pass, px, stats);
-        } else {
-            write8::<BLEND>(plan, fb, idx, n, pass, px, stats);
-        }
+        write8::<BLEND, OVER>(plan, fb, idx, n, pass, px, stats);
     }
 }
 

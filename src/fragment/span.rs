@@ -50,6 +50,29 @@ pub fn eval<M: Madd>(p: &Plane, fx: f32, fy: f32) -> f32 {
 /// Pixels shaded together: one AVX2 register of f32.
 pub const LANES: usize = 8;
 
+/// What a span shader shades: pixels `x0..=x1` of row `y` (y-down, inside the target).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Span {
+    /// The row.
+    pub y: usize,
+    /// The first pixel.
+    pub x0: usize,
+    /// The last pixel (inclusive).
+    pub x1: usize,
+}
+
+impl Span {
+    /// Pixels `x0..=x1` of row `y` (a rasterizer's clipped, non-negative coordinates).
+    #[inline(always)]
+    pub fn of(y: i64, x0: i64, x1: i64) -> Self {
+        Span {
+            y: y as usize,
+            x0: x0 as usize,
+            x1: x1 as usize,
+        }
+    }
+}
+
 /// `round_half_even(v)` for 0 <= v < 2^23 - 1 as an integer, without a rounding
 /// instruction: adding 2^23 leaves the rounded value in the low mantissa bits (vectorises
 /// everywhere). Only for values whose rounding cannot reach 2^23.
@@ -303,12 +326,11 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     c
 }
 
-/// Shades pixels `x0..=x1` of row `py` (y-down) of triangle `t`, [`LANES`] at a time.
+/// Shades span `s` of triangle `t`, [`LANES`] pixels at a time.
 ///
 /// `FULL` selects the general path (alpha test, stencil, blending, logic op, read from
 /// the plan at run time); without it only the depth test and the colour write run.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub fn shade_span<
     M: Madd,
     const DEPTH: bool,
@@ -319,14 +341,12 @@ pub fn shade_span<
     t: &SetupTriangle,
     plan: &FragPlan,
     fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
+    s: Span,
     stats: &mut Stats,
 ) {
-    let mut x = x0;
-    while x <= x1 {
-        let n = LANES.min(x1 + 1 - x);
+    let mut x = s.x0;
+    while x <= s.x1 {
+        let n = LANES.min(s.x1 + 1 - x);
         let mut live = [false; LANES];
         for (i, l) in live.iter_mut().enumerate() {
             *l = i < n;
@@ -337,7 +357,7 @@ pub fn shade_span<
             &[],
             ChunkColors::Shaded,
             fb,
-            py,
+            s.y,
             x,
             live,
             stats,
@@ -529,7 +549,7 @@ pub fn shade_chunk<
         }
         let mut v = [c[0][i], c[1][i], c[2][i], c[3][i]];
         if !store_plain {
-            v = store_rgba8(fb.format, v);
+            v = fb.format.store_rgba8(v);
         }
         if full_mask {
             dst[i] = v;
@@ -541,25 +561,6 @@ pub fn shade_chunk<
             }
         }
         stats.color_writes += 1;
-    }
-}
-
-/// What a colour buffer of `format` stores for `c` (see [`Framebuffer::store_rgba8`]).
-#[inline(always)]
-fn store_rgba8(format: crate::framebuffer::ColorFormat, c: [u8; 4]) -> [u8; 4] {
-    use crate::framebuffer::ColorFormat;
-    match format {
-        ColorFormat::Rgb565 => {
-            let (r, g, b) = (c[0] >> 3, c[1] >> 2, c[2] >> 3);
-            [
-                (r << 3) | (r >> 2),
-                (g << 2) | (g >> 4),
-                (b << 3) | (b >> 2),
-                255,
-            ]
-        }
-        ColorFormat::Rgb => [c[0], c[1], c[2], 255],
-        _ => c,
     }
 }
 

@@ -20,22 +20,24 @@
 //! polls for the next batch for a while after drawing one and the draw's thread polls
 //! briefly for the last band before it sleeps ([`Job`]).
 
+mod job;
 mod pairing;
 mod split;
+use job::{Job, Padded, SideFn, Task};
 use pairing::Pairing;
 
 pub use split::{geom_section, Binner};
 
-use super::raster_triangle;
+use super::{raster_triangle, Draw};
 use crate::fragment::FragPlan;
 use crate::framebuffer::{Framebuffer, Target};
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use std::cell::{RefCell, UnsafeCell};
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::{Arc, Condvar, Mutex};
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
 
 /// Pixels of triangle boxes that make a batch worth splitting over threads.
 const PARALLEL_WORK: i64 = 32 * 1024;
@@ -46,19 +48,6 @@ const PARALLEL_WORK: i64 = 32 * 1024;
 const FIRST_BATCH: usize = 512;
 /// Single-threaded, pixels of triangle boxes after which a batch is drawn.
 const MAX_WORK_LOCAL: i64 = 1 << 26;
-
-/// A value alone on its 128 bytes (two cache lines, which AMD and Intel prefetch as a
-/// pair): a thread that polls it is not slowed down by another thread writing its
-/// neighbours, and writes to it do not slow down readers of theirs (false sharing).
-#[repr(align(128))]
-struct Padded<T>(T);
-
-impl<T> std::ops::Deref for Padded<T> {
-    type Target = T;
-    fn deref(&self) -> &T {
-        &self.0
-    }
-}
 
 /// A batched triangle without its varyings (those are in [`Batch::planes`], `nvary` per
 /// triangle, and for flat shading in [`Batch::flats`]). Its box is kept clipped to the
@@ -220,179 +209,13 @@ impl Work {
             // SAFETY: band `b` was claimed by this call alone (see `Work`'s `Sync`).
             let band = unsafe { &mut *cell.0.get() };
             let bin = &self.batch.bins[b];
-            draw_bin(
-                &self.batch,
-                bin,
-                self.nvary,
-                self.region,
-                &self.plan,
-                units,
-                band,
-                &mut s,
-            );
+            let d = &mut Draw::new(self.region, &self.plan, units, band, &mut s);
+            draw_bin(&self.batch, bin, self.nvary, d);
         }
         self.stats
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .add_pixels(&s);
-    }
-}
-
-/// The pool's side of a draw thread's batches: whether the batch handed over is drawn,
-/// and the hand-over slot of a pool task that stays on after a batch ([`Job::run`]).
-/// Aligned to lines of its own: a pool task polls `posted` while the draw thread works on
-/// whatever the allocator would have put next to it.
-#[derive(Default)]
-#[repr(align(128))]
-struct Job {
-    /// The same as `slot.busy`, for waiting without the lock.
-    busy: AtomicBool,
-    /// Set when `slot.next` holds a batch for the task that waits in [`Job::run`].
-    posted: AtomicBool,
-    slot: Mutex<Slot>,
-    /// Signalled when `busy` goes false.
-    done: Condvar,
-}
-
-/// The state of a [`Job`] behind its lock.
-#[derive(Default)]
-struct Slot {
-    /// A batch was handed over and is not drawn yet.
-    busy: bool,
-    /// A pool task has finished its batch and waits for the next one in [`Job::run`].
-    waiting: bool,
-    /// The task handed to that pool task.
-    next: Option<Task>,
-}
-
-/// What a [`Job`] runs on the pool.
-enum Task {
-    /// A batch, drawn band by band.
-    Bands(Arc<Work>),
-    /// A closure on the draw thread's stack ([`Rasterizer::split_geometry`]), called once.
-    Side(SideFn),
-    /// Nothing: gets a pool thread running, which then waits for the next task
-    /// ([`Rasterizer::start_pool`]).
-    Start,
-}
-
-/// A pointer to a closure that the draw thread keeps alive (and waits for, through
-/// [`Job::wait_done`]) until the pool task that calls it has reported done.
-struct SideFn(*const (dyn Fn() + Sync + 'static));
-
-// SAFETY: the closure is `Sync`, so calling it from the pool thread through a shared
-// pointer is allowed; the draw thread keeps it alive until the call has returned.
-unsafe impl Send for SideFn {}
-
-impl Job {
-    /// Runs `work` on the pool, using a task that waits for more if there is one
-    /// (see [`Job::run`]).
-    fn hand_over(self: &Arc<Self>, work: Task, helpers: usize, stay: Duration) {
-        // Only a `Task::Start` is handed over without the draw thread waiting for it later;
-        // the next task waits until it has run (the pool thread is up by then).
-        if self.busy.load(Ordering::Acquire) {
-            self.wait_done(crate::tuning::tuning().pool_spin);
-        }
-        let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
-        slot.busy = true;
-        self.busy.store(true, Ordering::Release);
-        if slot.waiting {
-            slot.waiting = false;
-            slot.next = Some(work);
-            self.posted.store(true, Ordering::Release);
-            return;
-        }
-        drop(slot);
-        let job = Arc::clone(self);
-        rayon::spawn(move || job.run(work, helpers, stay));
-    }
-
-    /// A pool task: draws `work` on `helpers` threads, reports it done, then keeps polling
-    /// for the next batch of this draw thread for `stay` before it returns the pool thread.
-    /// Waking a sleeping pool thread takes a good part of a millisecond on this kind of
-    /// virtual machine, longer than the work of a small frame; frames follow each other
-    /// within that time.
-    fn run(&self, mut work: Task, helpers: usize, stay: Duration) {
-        loop {
-            match work {
-                Task::Bands(work) => {
-                    let helpers = helpers.min(rayon::current_num_threads());
-                    if helpers > 1 {
-                        let w = &work;
-                        rayon::scope(|s| {
-                            for _ in 1..helpers {
-                                s.spawn(|_| w.help());
-                            }
-                            w.help();
-                        });
-                    } else {
-                        work.help();
-                    }
-                    // The draw thread takes the batch back with `Arc::into_inner`: drop
-                    // ours first.
-                    drop(work);
-                }
-                Task::Side(f) => {
-                    // A panic stays on this thread (the closure tells the draw thread to
-                    // stop through its own state); the job still reports done.
-                    // SAFETY: the draw thread keeps the closure alive until `busy` goes
-                    // false below (see `SideFn`).
-                    let f = unsafe { &*f.0 };
-                    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-                }
-                Task::Start => {}
-            }
-            {
-                let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
-                slot.busy = false;
-                slot.waiting = !stay.is_zero();
-                self.busy.store(false, Ordering::Release);
-            }
-            self.done.notify_all();
-            if stay.is_zero() {
-                return;
-            }
-            let until = Instant::now() + stay;
-            let mut spins = 0u32;
-            while !self.posted.load(Ordering::Acquire) {
-                std::hint::spin_loop();
-                spins = spins.wrapping_add(1);
-                if spins.is_multiple_of(64) && Instant::now() >= until {
-                    break;
-                }
-            }
-            let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
-            match slot.next.take() {
-                Some(next) => {
-                    self.posted.store(false, Ordering::Relaxed);
-                    work = next;
-                }
-                None => {
-                    slot.waiting = false;
-                    return;
-                }
-            }
-        }
-    }
-
-    /// Waits until the batch handed over is drawn: polls for `spin` first (the pool
-    /// thread is finishing its last band), then sleeps.
-    fn wait_done(&self, spin: Duration) {
-        if self.busy.load(Ordering::Acquire) && !spin.is_zero() {
-            let until = Instant::now() + spin;
-            let mut spins = 0u32;
-            while self.busy.load(Ordering::Acquire) {
-                std::hint::spin_loop();
-                spins = spins.wrapping_add(1);
-                if spins.is_multiple_of(64) && Instant::now() >= until {
-                    break;
-                }
-            }
-        }
-        let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
-        while slot.busy {
-            slot = self.done.wait(slot).unwrap_or_else(|e| e.into_inner());
-        }
     }
 }
 
@@ -581,14 +404,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             }
             // Only the triangle's rows leave a deferred glClear behind.
             let (y0, y1) = box_rows(t, self.region);
-            raster_triangle(
-                t,
-                self.region,
-                self.plan,
-                self.units,
-                &mut self.fb.target_rows(y0..y1 + 1),
-                stats,
-            );
+            let (region, plan, units) = (self.region, self.plan, self.units);
+            let mut target = self.fb.target_rows(y0..y1 + 1);
+            raster_triangle(t, &mut Draw::new(region, plan, units, &mut target, stats));
             return;
         }
         if self.batch.heads.is_empty() {
@@ -631,7 +449,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             // One band after the other, each with all of its triangles.
             let mut bands = self.fb.bands(self.tune.band_rows);
             for (band, bin) in bands.iter_mut().zip(&self.batch.bins) {
-                draw_bin(&self.batch, bin, nvary, region, plan, units, band, stats);
+                draw_bin(
+                    &self.batch,
+                    bin,
+                    nvary,
+                    &mut Draw::new(region, plan, units, band, stats),
+                );
             }
         } else if !self.threads || self.batch.work < PARALLEL_WORK {
             // Only the bands the batch reaches leave a deferred glClear behind.
@@ -643,10 +466,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .map_or(0, |l| l + 1);
             let br = self.tune.band_rows;
             let mut target = self.fb.target_rows(first * br..end * br);
+            let d = &mut Draw::new(region, plan, units, &mut target, stats);
             let mut t = SetupTriangle::default();
             for i in 0..self.batch.heads.len() {
                 self.batch.load(i, nvary, &mut t);
-                raster_triangle(&t, region, plan, units, &mut target, stats);
+                raster_triangle(&t, d);
             }
         } else {
             // Over the pool's threads and this one.
@@ -816,28 +640,18 @@ fn box_rows(t: &SetupTriangle, region: [i64; 4]) -> (usize, usize) {
     (y0 as usize, y1 as usize)
 }
 
-/// Draws the triangles of one band's bin into the band, counting into `s`.
-#[allow(clippy::too_many_arguments)]
-fn draw_bin(
-    batch: &Batch,
-    bin: &[u32],
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    band: &mut Target<'_>,
-    s: &mut Stats,
-) {
+/// Draws the triangles of one band's bin into the band `d` draws into.
+fn draw_bin(batch: &Batch, bin: &[u32], nvary: usize, d: &mut Draw<'_, '_>) {
     if bin.is_empty() {
         // Nothing to draw here: the band keeps a deferred glClear pending.
         return;
     }
     // The band's share of a deferred glClear, written while the band is in the cache.
-    band.resolve();
+    d.fb.resolve();
     let mut t = SetupTriangle::default();
     for &i in bin {
         batch.load(i as usize, nvary, &mut t);
-        raster_triangle(&t, region, plan, units, band, s);
+        raster_triangle(&t, d);
     }
 }
 

@@ -14,13 +14,11 @@
 #[cfg(target_arch = "x86_64")]
 use super::variants::Fma;
 use super::variants::{with_flags, Base, Walks};
+use super::Draw;
 use crate::cpu::Isa;
-use crate::fragment::FragPlan;
-use crate::framebuffer::Target;
+use crate::fragment::span::Span;
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
-use crate::stats::Stats;
-use crate::texture::UnitPlan;
 
 /// Sub-pixel units per pixel.
 const ONE: i64 = 256;
@@ -224,19 +222,14 @@ fn line_plane(a1: f32, a2: f32, dx: f32, dy: f32, ooa: f32, x1: f32, y1: f32) ->
 }
 
 /// Draws segment `v1`–`v2` (window coordinates, y-down) of integer-rounded `width` inside
-/// `region`; `flat` is the provoking vertex's varyings (used under GL_FLAT).
-#[allow(clippy::too_many_arguments)]
+/// the region; `flat` is the provoking vertex's varyings (used under GL_FLAT).
 pub fn raster_line(
     v1: &ClipVertex,
     v2: &ClipVertex,
     flat: &[f32; MAX_VARY],
     width: f32,
     nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
+    d: &mut Draw<'_, '_>,
 ) {
     let (p1, p2) = ([v1.win[0], v1.win[1]], [v2.win[0], v2.win[1]]);
     if !p1.iter().chain(p2.iter()).all(|c| c.is_finite()) {
@@ -262,16 +255,12 @@ pub fn raster_line(
     let miny = *ys.iter().min().unwrap_or(&0);
     let maxy = *ys.iter().max().unwrap_or(&0);
     // llvmpipe's bounding box, with the bottom-edge rule's +1 in y.
-    let bx0 = (minx + ONE - 1) >> 8;
-    let bx1 = ((maxx + ONE - 1) >> 8) - 1;
-    let by0 = (miny + ONE) >> 8;
-    let by1 = ((maxy + ONE) >> 8) - 1;
-    let b = [
-        bx0.max(region[0]),
-        by0.max(region[1]).max(fb.y0 as i64),
-        bx1.min(region[2] - 1),
-        by1.min(region[3] - 1).min((fb.y0 + fb.rows) as i64 - 1),
-    ];
+    let b = d.clip([
+        (minx + ONE - 1) >> 8,
+        (miny + ONE) >> 8,
+        ((maxx + ONE - 1) >> 8) - 1,
+        ((maxy + ONE) >> 8) - 1,
+    ]);
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
@@ -314,9 +303,8 @@ pub fn raster_line(
             plane(v1.vary[i], v2.vary[i])
         };
     }
-    if !units.is_empty() {
-        let cover = super::prim_tex::EdgeCover(&edges);
-        super::prim_tex::shade_covered(&t, b, &cover, plan, units, fb, stats);
+    if !d.units.is_empty() {
+        super::prim_tex::shade_covered(&t, b, &super::prim_tex::EdgeCover(&edges), d);
         return;
     }
     for py in b[1]..=b[3] {
@@ -331,23 +319,13 @@ pub fn raster_line(
             }
         }
         if lo <= hi {
-            shade_span_dispatch(&t, plan, fb, py as usize, lo as usize, hi as usize, stats);
+            shade_span_dispatch(&t, d, Span::of(py, lo, hi));
         }
     }
 }
 
 /// Draws a point of `size` (glPointSize, already clamped) at `v`.
-#[allow(clippy::too_many_arguments)]
-pub fn raster_point(
-    v: &ClipVertex,
-    size: f32,
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+pub fn raster_point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
     let (x, y) = (v.win[0], v.win[1]);
     if !(x.is_finite() && y.is_finite() && x.abs() < MAX_COORD && y.abs() < MAX_COORD) {
         return;
@@ -366,14 +344,7 @@ pub fn raster_point(
             ((y0 + ONE / 2) >> 8) - width / 2,
         )
     };
-    let b = [
-        bx.max(region[0]),
-        by.max(region[1]).max(fb.y0 as i64),
-        (bx + width - 1).min(region[2] - 1),
-        (by + width - 1)
-            .min(region[3] - 1)
-            .min((fb.y0 + fb.rows) as i64 - 1),
-    ];
+    let b = d.clip([bx, by, bx + width - 1, by + width - 1]);
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
@@ -395,20 +366,12 @@ pub fn raster_point(
     for i in 0..nvary {
         t.vary[i] = constant(if persp { v.vary[i] * w0 } else { v.vary[i] });
     }
-    if !units.is_empty() {
-        super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, plan, units, fb, stats);
+    if !d.units.is_empty() {
+        super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, d);
         return;
     }
     for py in b[1]..=b[3] {
-        shade_span_dispatch(
-            &t,
-            plan,
-            fb,
-            py as usize,
-            b[0] as usize,
-            b[2] as usize,
-            stats,
-        );
+        shade_span_dispatch(&t, d, Span::of(py, b[0], b[2]));
     }
 }
 
@@ -480,24 +443,16 @@ pub fn screen_interp(t: f32, a: &ClipVertex, b: &ClipVertex, nvary: usize) -> Cl
     v
 }
 
-/// Shades pixels `x0..=x1` of row `py` with the planes of `t` (the general span shader,
-/// specialised for depth, flat and perspective like the triangle path).
-pub fn shade_span_dispatch(
-    t: &SetupTriangle,
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
-    stats: &mut Stats,
-) {
+/// Shades span `s` with the planes of `t` (the general span shader, specialised for
+/// depth, flat and perspective like the triangle path).
+pub fn shade_span_dispatch(t: &SetupTriangle, d: &mut Draw<'_, '_>, s: Span) {
     // SAFETY: (both) `cpu::isa` only reports a variant whose features the CPU has. Lines
     // and points are few pixels: the general span shader serves every plan, fused or not.
     unsafe {
         match crate::cpu::isa() {
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma | Isa::Fma => span_with::<Fma>(t, plan, fb, py, x0, x1, stats),
-            _ => span_with::<Base>(t, plan, fb, py, x0, x1, stats),
+            Isa::Avx2Fma | Isa::Fma => span_with::<Fma>(t, d, s),
+            _ => span_with::<Base>(t, d, s),
         }
     }
 }
@@ -507,20 +462,13 @@ pub fn shade_span_dispatch(
 /// # Safety
 /// `W`'s instruction set is the CPU's ([`Walks`]).
 #[inline(always)]
-unsafe fn span_with<W: Walks>(
-    t: &SetupTriangle,
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    py: usize,
-    x0: usize,
-    x1: usize,
-    stats: &mut Stats,
-) {
+unsafe fn span_with<W: Walks>(t: &SetupTriangle, d: &mut Draw<'_, '_>, s: Span) {
+    let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
     // Flat shading keeps the perspective divide for the fog coordinate.
     let persp = t.persp && (!plan.flat || plan.fog.is_some());
     with_flags!((plan.depth.is_some(), plan.flat, persp), |D, F, P| {
         // SAFETY: forwarded from the caller.
-        unsafe { W::span::<D, F, P>(t, plan, fb, py, x0, x1, stats) }
+        unsafe { W::span::<D, F, P>(t, plan, fb, s, stats) }
     })
 }
 

@@ -8,7 +8,7 @@
 
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Madd, TexLanes, LANES,
+    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Madd, Span, TexLanes, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -31,37 +31,73 @@ mod variants;
 use variants::SimdWalks;
 use variants::{with_flags, Walks};
 
-/// Rasterizes `t` inside `region` (y-down pixels, exclusive high end) and the target's
-/// rows; returns whether any row of the triangle's box was inside them.
-pub fn raster_triangle(
-    t: &SetupTriangle,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) -> bool {
-    let x_lo = t.bbox[0].max(region[0]);
-    let x_hi = t.bbox[2].min(region[2] - 1);
-    let y_lo = t.bbox[1].max(region[1]).max(fb.y0 as i64);
-    let y_hi = t.bbox[3]
-        .min(region[3] - 1)
-        .min((fb.y0 + fb.rows) as i64 - 1);
-    if x_lo > x_hi || y_lo > y_hi {
+/// What a primitive is drawn with and into: the per-draw references every entry point
+/// of the rasterizer takes (the drawable region, the fragment plan, the enabled texture
+/// units, the rows being drawn and the counters), made once per draw (or per band of a
+/// batch) and passed by reference. The walks compiled per instruction-set level
+/// ([`variants`]) still take the references one by one.
+pub struct Draw<'d, 'f> {
+    /// The drawable region (y-down pixels, exclusive high end).
+    pub region: [i64; 4],
+    /// The per-fragment plan.
+    pub plan: &'d FragPlan,
+    /// The enabled texture units' plans.
+    pub units: &'d [UnitPlan<'d>],
+    /// The rows drawn into.
+    pub fb: &'d mut Target<'f>,
+    /// The counters.
+    pub stats: &'d mut Stats,
+}
+
+impl<'d, 'f> Draw<'d, 'f> {
+    /// The references of one draw into `fb`.
+    #[inline]
+    pub fn new(
+        region: [i64; 4],
+        plan: &'d FragPlan,
+        units: &'d [UnitPlan<'d>],
+        fb: &'d mut Target<'f>,
+        stats: &'d mut Stats,
+    ) -> Self {
+        Draw {
+            region,
+            plan,
+            units,
+            fb,
+            stats,
+        }
+    }
+
+    /// The inclusive box `bbox` cut to the region and to the target's rows (empty when
+    /// x0 > x1 or y0 > y1).
+    #[inline(always)]
+    pub fn clip(&self, bbox: [i64; 4]) -> [i64; 4] {
+        let (r, fb) = (self.region, &self.fb);
+        [
+            bbox[0].max(r[0]),
+            bbox[1].max(r[1]).max(fb.y0 as i64),
+            bbox[2].min(r[2] - 1),
+            bbox[3].min(r[3] - 1).min((fb.y0 + fb.rows) as i64 - 1),
+        ]
+    }
+}
+
+/// Rasterizes `t` inside the region and the target's rows; returns whether any row of
+/// the triangle's box was inside them.
+pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
+    let b = d.clip(t.bbox);
+    if b[0] > b[2] || b[1] > b[3] {
         return false;
     }
-    let b = [x_lo, y_lo, x_hi, y_hi];
-    if plan.ms.is_some() {
+    if d.plan.ms.is_some() {
         // A multisample pass takes the general walks of the scalar levels only (the SIMD
         // span shaders know no sample offsets); FMA still follows the CPU, as llvmpipe's.
         // SAFETY: `Fma` runs only when `cpu::isa` reports FMA.
         unsafe {
             match crate::cpu::isa() {
                 #[cfg(target_arch = "x86_64")]
-                Isa::Fma | Isa::Avx2Fma => {
-                    raster_rows::<variants::Fma>(t, b, plan, units, fb, stats)
-                }
-                _ => raster_rows::<variants::Base>(t, b, plan, units, fb, stats),
+                Isa::Fma | Isa::Avx2Fma => raster_rows::<variants::Fma>(t, b, d),
+                _ => raster_rows::<variants::Base>(t, b, d),
             }
         }
         return true;
@@ -71,16 +107,16 @@ pub fn raster_triangle(
     unsafe {
         match crate::cpu::isa() {
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma if crate::cpu::avx512() && simd_ok(plan, units, fb) => {
-                rows_simd::<variants::Avx512>(t, b, plan, fb, stats)
+            Isa::Avx2Fma if crate::cpu::avx512() && simd_ok(d) => {
+                rows_simd::<variants::Avx512>(t, b, d)
             }
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma => tri_simd::<variants::Avx2Fma>(t, b, plan, units, fb, stats),
+            Isa::Avx2Fma => tri_simd::<variants::Avx2Fma>(t, b, d),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => tri_simd::<variants::Avx2>(t, b, plan, units, fb, stats),
+            Isa::Avx2 => tri_simd::<variants::Avx2>(t, b, d),
             #[cfg(target_arch = "x86_64")]
-            Isa::Fma => raster_rows::<variants::Fma>(t, b, plan, units, fb, stats),
-            _ => raster_rows::<variants::Base>(t, b, plan, units, fb, stats),
+            Isa::Fma => raster_rows::<variants::Fma>(t, b, d),
+            _ => raster_rows::<variants::Base>(t, b, d),
         }
     }
     true
@@ -92,29 +128,23 @@ pub fn raster_triangle(
 /// `W`'s instruction set is the CPU's ([`Walks`]).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn tri_simd<W: Walks + SimdWalks>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+unsafe fn tri_simd<W: Walks + SimdWalks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     // SAFETY: (both) forwarded from the caller.
     unsafe {
-        if simd_ok(plan, units, fb) {
-            rows_simd::<W>(t, b, plan, fb, stats)
+        if simd_ok(d) {
+            rows_simd::<W>(t, b, d)
         } else {
-            raster_rows::<W>(t, b, plan, units, fb, stats)
+            raster_rows::<W>(t, b, d)
         }
     }
 }
 
 /// Whether the AVX2 span shader covers this plan (see `fragment::simd`).
 #[cfg(target_arch = "x86_64")]
-fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
+fn simd_ok(d: &Draw<'_, '_>) -> bool {
     use crate::framebuffer::ColorFormat;
-    units.is_empty()
+    let plan = d.plan;
+    d.units.is_empty()
         && plan.alpha.is_none()
         && plan.stencil.is_none()
         && plan.logic.is_none()
@@ -124,7 +154,7 @@ fn simd_ok(plan: &FragPlan, units: &[UnitPlan<'_>], fb: &Target<'_>) -> bool {
         && plan.smooth.is_none()
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
-            fb.format,
+            d.fb.format,
             ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
         )
 }
@@ -178,15 +208,10 @@ fn narrow_blocks() -> bool {
 /// `W`'s instruction set is the CPU's ([`SimdWalks`]), and [`simd_ok`] holds.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn rows_simd<W: SimdWalks>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+unsafe fn rows_simd<W: SimdWalks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
     use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
+    let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
     let (flat, persp) = (plan.flat, !plan.flat && t.persp);
     macro_rules! blend {
         ($d:expr) => {
@@ -277,15 +302,7 @@ unsafe fn rows_simd_walk<
             prefetch_row(fb, py + 2, lo, hi, depth, 1);
             // SAFETY: forwarded from the caller.
             unsafe {
-                shade_span::<FMA, D, FLAT, PERSP, B>(
-                    t,
-                    plan,
-                    fb,
-                    py as usize,
-                    lo as usize,
-                    hi as usize,
-                    stats,
-                )
+                shade_span::<FMA, D, FLAT, PERSP, B>(t, plan, fb, Span::of(py, lo, hi), stats)
             }
         }
     }
@@ -297,14 +314,8 @@ unsafe fn rows_simd_walk<
 /// # Safety
 /// `W`'s instruction set is the CPU's ([`Walks`]).
 #[inline(always)]
-unsafe fn raster_rows<W: Walks>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
+    let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let depth = plan.depth.is_some();
     if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none()) {
         let u = &units[0];
@@ -355,15 +366,7 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
 ) {
     for py in b[1]..=b[3] {
         if let Some((lo, hi)) = row_span(t, b, py) {
-            shade_span::<M, DEPTH, FLAT, PERSP, FULL>(
-                t,
-                plan,
-                fb,
-                py as usize,
-                lo as usize,
-                hi as usize,
-                stats,
-            );
+            shade_span::<M, DEPTH, FLAT, PERSP, FULL>(t, plan, fb, Span::of(py, lo, hi), stats);
         }
     }
 }
@@ -383,58 +386,77 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    for textured::Chunk {
-        qy,
-        x,
-        fx,
-        fy,
-        live,
-    } in textured::Chunks::new(t, b)
-    {
+    for mut c in textured::Chunks::new(t, b) {
         // A multisample pass samples at the pixel centres (see `FragPlan::ms`).
-        let (fx, fy) = match plan.ms {
-            None => (fx, fy),
-            Some(_) => (fx.map(|v| v + 0.5), fy.map(|v| v + 0.5)),
-        };
-        let fx = &fx;
-        for (k, u) in units.iter().enumerate() {
-            let base = VARY_TEX + 4 * k;
-            let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
-            let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
-            let rr = u.needs_r().then(|| {
-                [
-                    tex_r::<M, PERSP>(t, base, fx, fy[0]),
-                    tex_r::<M, PERSP>(t, base, fx, fy[1]),
-                ]
-            });
-            for j in 0..LANES / 2 {
-                let (l, r) = (2 * j, 2 * j + 1);
-                if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                    continue;
-                }
-                let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
-                let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
-                let v = variants::sample_quad::<M>(u, s, tt, rq);
-                texels[0][k][l] = v[0];
-                texels[0][k][r] = v[1];
-                texels[1][k][l] = v[2];
-                texels[1][k][r] = v[3];
-            }
+        if plan.ms.is_some() {
+            c.fx = c.fx.map(|v| v + 0.5);
+            c.fy = c.fy.map(|v| v + 0.5);
         }
-        for r in 0..2 {
-            if live[r].iter().any(|&l| l) {
-                shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
-                    t,
-                    plan,
-                    units,
-                    ChunkColors::Textured(&texels[r]),
-                    fb,
-                    (qy + r as i64) as usize,
-                    x as usize,
-                    live[r],
-                    stats,
-                );
+        sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
+        shade_chunk_rows::<M, DEPTH, FLAT, PERSP>(t, plan, units, &texels, fb, &c, stats);
+    }
+}
+
+/// Samples every unit for the 2x2 quads of chunk `c` that hold a live pixel, into
+/// `texels` (lanes of the other quads keep stale values); with `STR` also the r
+/// coordinate of the units that need it.
+#[inline(always)]
+fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
+    t: &SetupTriangle,
+    units: &[UnitPlan<'_>],
+    c: &textured::Chunk,
+    texels: &mut [TexLanes; 2],
+) {
+    let (fx, fy, live) = (&c.fx, c.fy, &c.live);
+    for (k, u) in units.iter().enumerate() {
+        let base = VARY_TEX + 4 * k;
+        let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
+        let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
+        let rr = (STR && u.needs_r()).then(|| {
+            [
+                tex_r::<M, PERSP>(t, base, fx, fy[0]),
+                tex_r::<M, PERSP>(t, base, fx, fy[1]),
+            ]
+        });
+        for j in 0..LANES / 2 {
+            let (l, r) = (2 * j, 2 * j + 1);
+            if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
+                continue;
             }
+            let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+            let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
+            let v = variants::sample_quad::<M>(u, s, tt, rq);
+            texels[0][k][l] = v[0];
+            texels[0][k][r] = v[1];
+            texels[1][k][l] = v[2];
+            texels[1][k][r] = v[3];
+        }
+    }
+}
+
+/// Shades the live lanes of both rows of chunk `c` through the full per-fragment path,
+/// with the units' `texels` (as untextured fragments when there are no units).
+#[inline(always)]
+fn shade_chunk_rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    texels: &[TexLanes; 2],
+    fb: &mut Target<'_>,
+    c: &textured::Chunk,
+    stats: &mut Stats,
+) {
+    for (r, (tex, live)) in texels.iter().zip(c.live).enumerate() {
+        if live.iter().any(|&l| l) {
+            let colors = if units.is_empty() {
+                ChunkColors::Shaded
+            } else {
+                ChunkColors::Textured(tex)
+            };
+            let (y, x) = ((c.qy + r as i64) as usize, c.x as usize);
+            shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
+                t, plan, units, colors, fb, y, x, live, stats,
+            );
         }
     }
 }
@@ -475,7 +497,8 @@ mod tests {
             let mut target = fb.target();
             for t in tris {
                 let region = [0, 0, w as i64, h as i64];
-                raster_triangle(t, region, plan, &[], &mut target, &mut stats);
+                let mut d = Draw::new(region, plan, &[], &mut target, &mut stats);
+                raster_triangle(t, &mut d);
             }
         }
         SPANS_ONLY.with(|s| s.set(false));

@@ -11,13 +11,14 @@
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
+use super::textured::Chunk;
 use super::variants::{with_flags, Walks};
+use super::Draw;
 use crate::cpu::Isa;
-use crate::fragment::span::{shade_chunk, tex_coords, ChunkColors, Madd, TexLanes, LANES};
+use crate::fragment::span::{Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Edge, SetupTriangle};
-use crate::geometry::VARY_TEX;
 use crate::pipe::PolygonStipple;
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
@@ -91,19 +92,12 @@ impl Cover for StippleCover<'_> {
 }
 
 /// Shades the pixels of `cover` inside the inclusive box `b` (already cut to the region
-/// and the target's rows) with the planes of `t`, sampling `units` per 2x2 quad.
-pub fn shade_covered<C: Cover>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    cover: &C,
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+/// and the target's rows) with the planes of `t`, sampling the units per 2x2 quad.
+pub fn shade_covered<C: Cover>(t: &SetupTriangle, b: [i64; 4], cover: &C, d: &mut Draw<'_, '_>) {
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
+    let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     // Level `$w`'s variant for the plan.
     macro_rules! walk {
         ($w:ty) => {
@@ -166,49 +160,17 @@ pub(super) fn rows<M: Madd, C: Cover, const DEPTH: bool, const FLAT: bool, const
                 }
             }
             if live.iter().flatten().any(|&l| l) {
-                let fx: [f32; LANES] = std::array::from_fn(|i| (x + i as i64) as f32);
-                let fy = [qy as f32, (qy + 1) as f32];
-                for (k, u) in units.iter().enumerate() {
-                    let base = VARY_TEX + 4 * k;
-                    let (s0, t0) = tex_coords::<M, PERSP>(t, base, &fx, fy[0]);
-                    let (s1, t1) = tex_coords::<M, PERSP>(t, base, &fx, fy[1]);
-                    for j in 0..LANES / 2 {
-                        let (l, r) = (2 * j, 2 * j + 1);
-                        if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                            continue;
-                        }
-                        let v = super::variants::sample_quad::<M>(
-                            u,
-                            [s0[l], s0[r], s1[l], s1[r]],
-                            [t0[l], t0[r], t1[l], t1[r]],
-                            None,
-                        );
-                        texels[0][k][l] = v[0];
-                        texels[0][k][r] = v[1];
-                        texels[1][k][l] = v[2];
-                        texels[1][k][r] = v[3];
-                    }
-                }
-                for r in 0..2 {
-                    if live[r].iter().any(|&l| l) {
-                        let colors = if units.is_empty() {
-                            ChunkColors::Shaded
-                        } else {
-                            ChunkColors::Textured(&texels[r])
-                        };
-                        shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
-                            t,
-                            plan,
-                            units,
-                            colors,
-                            fb,
-                            (qy + r as i64) as usize,
-                            x as usize,
-                            live[r],
-                            stats,
-                        );
-                    }
-                }
+                let c = Chunk {
+                    qy,
+                    x,
+                    fx: std::array::from_fn(|i| (x + i as i64) as f32),
+                    fy: [qy as f32, (qy + 1) as f32],
+                    live,
+                };
+                super::sample_chunk::<M, PERSP, false>(t, units, &c, &mut texels);
+                super::shade_chunk_rows::<M, DEPTH, FLAT, PERSP>(
+                    t, plan, units, &texels, fb, &c, stats,
+                );
             }
             x += LANES as i64;
         }

@@ -4,8 +4,8 @@
 use super::batch::Rasterizer;
 use super::lines::{raster_line, raster_point, screen_interp, LineStipple};
 use super::stipple::stippled_triangle;
+use super::Draw;
 use crate::fragment::FragPlan;
-use crate::framebuffer::Target;
 use crate::geometry::clip::{clip_line, clip_triangle_edges, UserPlanes};
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::unfilled::{
@@ -16,7 +16,6 @@ use crate::geometry::{ClipVertex, Viewport};
 use crate::pipe::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::stats::Stats;
 use crate::texture::shadow::FLOAT_BITS;
-use crate::texture::UnitPlan;
 
 /// The point size llvmpipe rasterizes without attenuation: glPointSize clamped to
 /// GL_POINT_SIZE_MIN/MAX by the state tracker, then capped at llvmpipe's maximum.
@@ -52,22 +51,11 @@ impl PrimEnables {
 
 /// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage when
 /// `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
-#[allow(clippy::too_many_arguments)]
-pub fn draw_point(
-    v: &ClipVertex,
-    size: f32,
-    smooth: bool,
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+pub fn draw_point(v: &ClipVertex, size: f32, smooth: bool, nvary: usize, d: &mut Draw<'_, '_>) {
     if smooth {
-        super::smooth::point(v, size, nvary, region, plan, units, fb, stats);
+        super::smooth::point(v, size, nvary, d);
     } else {
-        raster_point(v, size, nvary, region, plan, units, fb, stats);
+        raster_point(v, size, nvary, d);
     }
 }
 
@@ -134,19 +122,13 @@ impl LinePlan {
     }
 
     /// Clips, stipples and rasterizes segment `va`–`vb` (vertex-stage outputs).
-    #[allow(clippy::too_many_arguments)]
     pub fn draw(
         &self,
         va: &ClipVertex,
         vb: &ClipVertex,
         viewport: &Viewport,
-        flat: bool,
         stipple: Option<&mut LineStipple>,
-        region: [i64; 4],
-        plan: &FragPlan,
-        units: &[UnitPlan<'_>],
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
+        d: &mut Draw<'_, '_>,
     ) {
         if va.mask & vb.mask != 0 {
             return;
@@ -159,7 +141,7 @@ impl LinePlan {
                 &self.ucp,
                 viewport,
                 self.nvary,
-                flat,
+                d.plan.flat,
             ) {
                 Some(pq) => pq,
                 None => return,
@@ -167,36 +149,31 @@ impl LinePlan {
         } else {
             (*va, *vb)
         };
-        self.draw_window(&p, &q, &vb.vary, stipple, region, plan, units, fb, stats);
+        self.draw_window(&p, &q, &vb.vary, stipple, d);
     }
 
     /// Stipples and rasterizes a segment already in window coordinates; `flat_vary` is the
     /// provoking vertex's varyings.
-    #[allow(clippy::too_many_arguments)]
     pub fn draw_window(
         &self,
         p: &ClipVertex,
         q: &ClipVertex,
         flat_vary: &[f32; crate::geometry::MAX_VARY],
         stipple: Option<&mut LineStipple>,
-        region: [i64; 4],
-        plan: &FragPlan,
-        units: &[UnitPlan<'_>],
-        fb: &mut Target<'_>,
-        stats: &mut Stats,
+        d: &mut Draw<'_, '_>,
     ) {
         let n = self.nvary;
         // Under GL_FLAT the draw module's flat-shade stage gives both ends the provoking colour.
-        let (width, smooth, flat) = (self.width, self.smooth, plan.flat.then_some(flat_vary));
-        let seg = |a: &ClipVertex, b: &ClipVertex, fb: &mut Target<'_>, stats: &mut Stats| {
+        let (width, smooth, flat) = (self.width, self.smooth, d.plan.flat.then_some(flat_vary));
+        let seg = |a: &ClipVertex, b: &ClipVertex, d: &mut Draw<'_, '_>| {
             if smooth {
-                super::smooth::line(a, b, flat, width, n, region, plan, units, fb, stats);
+                super::smooth::line(a, b, flat, width, n, d);
             } else {
-                raster_line(a, b, flat_vary, width, n, region, plan, units, fb, stats);
+                raster_line(a, b, flat_vary, width, n, d);
             }
         };
         match stipple {
-            None => seg(p, q, fb, stats),
+            None => seg(p, q, d),
             Some(s) => {
                 s.split([p.win[0], p.win[1]], [q.win[0], q.win[1]], |t0, t1| {
                     let a = if t0 > 0.0 {
@@ -209,7 +186,7 @@ impl LinePlan {
                     } else {
                         *q
                     };
-                    seg(&a, &b, fb, stats);
+                    seg(&a, &b, d);
                 });
             }
         }
@@ -313,67 +290,46 @@ impl PolyPipeline<'_> {
             p[0].vary[..8].copy_from_slice(&c);
             p[1].vary[..8].copy_from_slice(&c);
         }
-        match mode {
-            FillMode::Fill => {
-                let nocull = CullMode {
-                    front: false,
-                    back: false,
-                    front_ccw: self.cull.front_ccw,
-                    top_left: self.cull.top_left,
-                };
-                match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
-                    SetupResult::Draw if self.enables.polygon_stipple => {
-                        let units = rast.units();
-                        let mut target = rast.target(stats).target();
-                        stippled_triangle(
-                            tri,
-                            &self.raster.stipple,
-                            self.region,
-                            plan,
-                            units,
-                            &mut target,
-                            stats,
-                        );
-                    }
-                    SetupResult::Draw => rast.triangle(tri, stats),
-                    _ => stats.tris_degenerate += 1,
+        if mode == FillMode::Fill {
+            let nocull = CullMode {
+                front: false,
+                back: false,
+                front_ccw: self.cull.front_ccw,
+                top_left: self.cull.top_left,
+            };
+            match setup_triangle([&p[0], &p[1], &p[2]], nvary, nocull, None, tri) {
+                SetupResult::Draw if self.enables.polygon_stipple => {}
+                SetupResult::Draw => {
+                    rast.triangle(tri, stats);
+                    return;
+                }
+                _ => {
+                    stats.tris_degenerate += 1;
+                    return;
                 }
             }
+        }
+        // Stippled polygons, lines and points are drawn at once, after the batched
+        // triangles before them (primitive order).
+        let units = rast.units();
+        let mut target = rast.target(stats).target();
+        let d = &mut Draw::new(self.region, plan, units, &mut target, stats);
+        match mode {
+            FillMode::Fill => stippled_triangle(tri, &self.raster.stipple, d),
             FillMode::Line => {
-                let units = rast.units();
-                let mut target = rast.target(stats).target();
                 for (bit, s, e) in [(EDGE_2, 2, 0), (EDGE_0, 0, 1), (EDGE_1, 1, 2)] {
                     if edges & bit != 0 {
-                        self.lines.draw_window(
-                            &p[s],
-                            &p[e],
-                            &p[e].vary,
-                            stipple.as_mut(),
-                            self.region,
-                            plan,
-                            units,
-                            &mut target,
-                            stats,
-                        );
+                        let (a, b) = (&p[s], &p[e]);
+                        self.lines.draw_window(a, b, &b.vary, stipple.as_mut(), d);
                     }
                 }
             }
             FillMode::Point => {
-                let units = rast.units();
-                let mut target = rast.target(stats).target();
+                let smooth = self.enables.point_smooth;
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
-                        draw_point(
-                            &p[k],
-                            self.point_size.unwrap_or(p[k].psize),
-                            self.enables.point_smooth,
-                            nvary,
-                            self.region,
-                            plan,
-                            units,
-                            &mut target,
-                            stats,
-                        );
+                        let size = self.point_size.unwrap_or(p[k].psize);
+                        draw_point(&p[k], size, smooth, nvary, d);
                     }
                 }
             }
@@ -397,6 +353,19 @@ impl PolyPipeline<'_> {
     ) {
         let mut stipple = self.lines.stipple;
         let mut tri = SetupTriangle::default();
+        let mut triangle = |v: [&ClipVertex; 3], edges, reset, stats: &mut Stats| {
+            self.triangle(
+                v,
+                edges,
+                reset,
+                &mut stipple,
+                nvary,
+                plan,
+                rast,
+                &mut tri,
+                stats,
+            );
+        };
         decompose(mode, n, |a, b, c, flags, reset| {
             let (va, vb, vc) = (at(a), at(b), at(c));
             stats.triangles += 1;
@@ -425,30 +394,10 @@ impl PolyPipeline<'_> {
                 );
                 // The stipple counter restarts only at the polygon's first piece.
                 for (k, ([p, q, r], e)) in out.iter().enumerate() {
-                    self.triangle(
-                        [p, q, r],
-                        *e,
-                        k == 0,
-                        &mut stipple,
-                        nvary,
-                        plan,
-                        rast,
-                        &mut tri,
-                        stats,
-                    );
+                    triangle([p, q, r], *e, k == 0, stats);
                 }
             } else {
-                self.triangle(
-                    [va, vb, vc],
-                    edges,
-                    reset,
-                    &mut stipple,
-                    nvary,
-                    plan,
-                    rast,
-                    &mut tri,
-                    stats,
-                );
+                triangle([va, vb, vc], edges, reset, stats);
             }
         });
     }

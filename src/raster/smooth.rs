@@ -24,14 +24,11 @@
 //! saturates), and the ring between `k` and 1 keeps the full alpha: llvmpipe's smooth
 //! points are round, nearly hard-edged discs.
 
-use super::raster_triangle;
+use super::{raster_triangle, Draw};
 use crate::fragment::span::{one_over_w, vary_at, Madd, LANES};
 use crate::fragment::FragPlan;
-use crate::framebuffer::Target;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
-use crate::stats::Stats;
-use crate::texture::UnitPlan;
 
 /// The coverage the fragment stage multiplies into alpha, with the varying slot that
 /// carries the stage's vec4.
@@ -101,53 +98,41 @@ pub fn coverage<M: Madd, const PERSP: bool>(
 
 /// Sets up and fills the two triangles of quad `v` with the coverage `smooth` (the
 /// stage's replacement fragment shader), whose four varyings follow the draw's.
-fn fill(
-    v: &[ClipVertex; 4],
-    smooth: Smooth,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+fn fill(v: &[ClipVertex; 4], smooth: Smooth, d: &mut Draw<'_, '_>) {
     let plan = FragPlan {
         smooth: Some(smooth),
-        ..*plan
+        ..*d.plan
     };
+    let d = &mut Draw::new(d.region, &plan, d.units, d.fb, d.stats);
     let (tris, nvary) = match smooth {
         Smooth::Line(k) => ([[2, 1, 0], [3, 1, 2]], k + 4),
         Smooth::Point(k) => ([[0, 1, 2], [0, 2, 3]], k + 4),
     };
     let mut t = SetupTriangle::default();
     for [a, b, c] in tris {
-        stats.triangles += 1;
+        d.stats.triangles += 1;
         match setup_triangle([&v[a], &v[b], &v[c]], nvary, NOCULL, None, &mut t) {
             SetupResult::Draw => {
-                if raster_triangle(&t, region, &plan, units, fb, stats) {
-                    stats.tris_rasterized += 1;
+                if raster_triangle(&t, d) {
+                    d.stats.tris_rasterized += 1;
                 } else {
-                    stats.tris_offscreen += 1;
+                    d.stats.tris_offscreen += 1;
                 }
             }
-            _ => stats.tris_degenerate += 1,
+            _ => d.stats.tris_degenerate += 1,
         }
     }
 }
 
 /// Draws the antialiased segment `p`–`q` (clipped, window coordinates) of `width`
 /// (already clamped to [1, 255]); under flat shading the colours are `flat`'s.
-#[allow(clippy::too_many_arguments)]
 pub fn line(
     p: &ClipVertex,
     q: &ClipVertex,
     flat: Option<&[f32; MAX_VARY]>,
     width: f32,
     nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
+    d: &mut Draw<'_, '_>,
 ) {
     let half_width = if width <= 1.0 { 1.0 } else { 0.5 * width + 0.5 };
     let dx = q.win[0] - p.win[0];
@@ -181,21 +166,11 @@ pub fn line(
         );
         v[i].vary[k..k + 4].copy_from_slice(&[x, half_width, z, half_length]);
     }
-    fill(&v, Smooth::Line(k), region, plan, units, fb, stats);
+    fill(&v, Smooth::Line(k), d);
 }
 
 /// Draws the antialiased point `v` (inside the clip volume) of `size` (glPointSize).
-#[allow(clippy::too_many_arguments)]
-pub fn point(
-    v: &ClipVertex,
-    size: f32,
-    nvary: usize,
-    region: [i64; 4],
-    plan: &FragPlan,
-    units: &[UnitPlan<'_>],
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
+pub fn point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
     let radius = if size <= 2.0 { 1.0f32 } else { 0.5 * size };
     let k = 1.0f32 / radius;
     let k = 1.0f32 - 2.0 * k + k * k;
@@ -217,5 +192,5 @@ pub fn point(
         };
         q[i].vary[s..s + 4].copy_from_slice(&[sx, sy, k, 1.0]);
     }
-    fill(&q, Smooth::Point(s), region, plan, units, fb, stats);
+    fill(&q, Smooth::Point(s), d);
 }

@@ -17,7 +17,7 @@
 //! holds one variant's locals, and the call costs one jump per triangle.
 
 use super::prim_tex::Cover;
-use crate::fragment::span::{Fused, Unfused};
+use crate::fragment::span::{Fused, Span, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
@@ -76,7 +76,7 @@ macro_rules! walk_list {
                 => { crate::raster::prim_tex::rows::<M, C, DEPTH, FLAT, PERSP> };
             /// One span of a line, point or stippled polygon through the general span shader.
             span [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
-                (t: &SetupTriangle, plan: &FragPlan, fb: &mut Target<'_>, py: usize, x0: usize, x1: usize, stats: &mut Stats)
+                (t: &SetupTriangle, plan: &FragPlan, fb: &mut Target<'_>, s: Span, stats: &mut Stats)
                 => { crate::fragment::span::shade_span::<M, DEPTH, FLAT, PERSP, true> };
         });
     };

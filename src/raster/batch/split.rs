@@ -22,6 +22,7 @@ use super::{
 };
 use crate::fragment::FragPlan;
 use crate::geometry::setup::SetupTriangle;
+use crate::raster::Draw;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use std::cell::UnsafeCell;
@@ -251,10 +252,8 @@ impl Shared<'_, '_> {
         if !bin.is_empty() {
             // SAFETY: band `b` of batch `d` was claimed by this thread alone.
             let band = unsafe { &mut *self.bands[b].0.get() };
-            let (nvary, region) = (self.nvary, self.region);
-            draw_bin(
-                batch, bin, nvary, region, self.plan, self.units, band, stats,
-            );
+            let d = &mut Draw::new(self.region, self.plan, self.units, band, stats);
+            draw_bin(batch, bin, self.nvary, d);
         }
         if self.bands_done.fetch_add(1, Ordering::AcqRel) + 1 == nb {
             self.bands_done.store(0, Ordering::Relaxed);
