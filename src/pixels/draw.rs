@@ -24,6 +24,7 @@ use crate::fixed_function::fog::FogPlan;
 use crate::fragment::span::unorm8;
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
+use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
@@ -52,9 +53,13 @@ impl<'a> Shader<'a> {
 
     /// The final colour of a fragment with primary colour `primary`.
     pub fn shade(&self, primary: [f32; 4]) -> [u8; 4] {
+        let mut texels = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
+        for (k, (_, tex)) in self.units.iter().enumerate() {
+            texels[k] = *tex;
+        }
         let mut prev = primary;
         for (u, tex) in &self.units {
-            prev = u.env(primary, *tex, prev);
+            prev = u.env(primary, *tex, prev, &texels[..self.units.len()]);
         }
         if let Some(f) = &self.fog {
             prev = f.apply(prev, f.factor(0.0));

@@ -168,7 +168,13 @@ pub struct Combine {
     /// [`Combine::add_signed_reassociates`] of RGB and alpha, kept up to date by
     /// `derive` and `canonicalise` so that `apply` does not work it out per fragment.
     pub reassoc: (bool, bool),
+    /// Whether a source reads another unit's texel (GL_TEXTUREn after
+    /// [`Combine::canonicalise`]): `apply` then needs every active unit's texel.
+    pub crossbar: bool,
 }
+
+/// The crossbar slot of a unit that is not active: past any texel list, so it reads zero.
+pub const NO_SLOT: u8 = u8::MAX;
 
 impl Combine {
     /// Mesa's `args_match` and equal functions: RGB and alpha are one vec4 combine.
@@ -202,6 +208,7 @@ impl Combine {
                 color: env.color,
                 one_vec4: false,
                 reassoc: (true, true),
+                crossbar: false,
             };
             c.one_vec4 = c.compute_one_vec4();
             c.reassoc = c.add_signed_reassociates();
@@ -298,6 +305,7 @@ impl Combine {
             color: env.color,
             one_vec4: false,
             reassoc: (true, true),
+            crossbar: false,
         };
         c.one_vec4 = c.compute_one_vec4();
         c.reassoc = c.add_signed_reassociates();
@@ -349,11 +357,27 @@ impl Combine {
     /// unit's own number is its GL_TEXTURE, and GL_PREVIOUS is the primary colour when
     /// no earlier unit is enabled (`prev_is_primary`). The values are the same either
     /// way; this only matters where identical expressions merge (ADD_SIGNED).
-    pub fn canonicalise(&mut self, unit: usize, prev_is_primary: bool) {
+    ///
+    /// Every other GL_TEXTUREn (crossbar) is renumbered by `slot`: the unit's place among
+    /// the draw's active units, whose texels [`Combine::apply`] receives in that order,
+    /// or `None` for a unit that is not active (disabled or incomplete), which Mesa's
+    /// generated shader reads as zero (`load_texture`'s `dummy_tex`); it becomes
+    /// [`NO_SLOT`], past any list.
+    pub fn canonicalise(
+        &mut self,
+        unit: usize,
+        prev_is_primary: bool,
+        slot: impl Fn(usize) -> Option<usize>,
+    ) {
         for args in [&mut self.args_rgb, &mut self.args_a] {
             for a in args.iter_mut() {
                 match a.0 {
                     Source::TextureN(n) if n as usize == unit => a.0 = Source::Texture,
+                    Source::TextureN(n) => {
+                        let k = slot(n as usize).map_or(NO_SLOT, |k| k as u8);
+                        a.0 = Source::TextureN(k);
+                        self.crossbar = true;
+                    }
                     Source::Previous if prev_is_primary => a.0 = Source::PrimaryColor,
                     _ => {}
                 }
@@ -362,8 +386,10 @@ impl Combine {
         self.reassoc = self.add_signed_reassociates();
     }
 
-    /// Evaluates the combiner. `textures` holds every unit's texture value for GL_TEXTUREn
-    /// sources (missing entries read as zero, as Mesa's shader does for disabled units).
+    /// Evaluates the combiner. `textures` holds every active unit's texture value, in the
+    /// order of [`Combine::canonicalise`]'s slots, for GL_TEXTUREn sources (only read
+    /// when `crossbar`; missing entries read as zero, as Mesa's shader does for disabled
+    /// units).
     #[inline(always)]
     pub fn apply(
         &self,

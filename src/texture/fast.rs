@@ -415,7 +415,7 @@ mod tests {
                 ..Default::default()
             };
             let mut c = Combine::derive(&env, base);
-            c.canonicalise(0, true);
+            c.canonicalise(0, true, |_| None);
             let got = FastEnv::classify(&c).map(|e| (e.rgb, e.alpha));
             assert_eq!(got, want, "{mode:?} {base:?}");
         }

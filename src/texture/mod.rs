@@ -674,7 +674,11 @@ impl TextureState {
             _ => ExtKind::Flat,
         };
         let mut env = Combine::derive(&u.env, depth.map_or(base, |d| d.mode.base()));
-        env.canonicalise(unit, !(0..unit).any(|j| self.unit_active(j)));
+        let slot = |n: usize| {
+            let before = (0..n).filter(|&j| self.unit_active(j)).count();
+            self.unit_active(n).then_some(before)
+        };
+        env.canonicalise(unit, !(0..unit).any(|j| self.unit_active(j)), slot);
         let fast = if fast::enabled() && aos && dims == 2 && matches!(kind, ExtKind::Flat) {
             fast::FastEnv::classify(&env)
         } else {

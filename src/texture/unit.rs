@@ -149,9 +149,16 @@ impl UnitPlan<'_> {
 
     /// Applies the unit's texture environment: `frag` is the primary colour, `tex` this
     /// unit's texture value, `prev` the previous unit's output (the primary colour on the
-    /// first enabled unit).
+    /// first enabled unit), `textures` every active unit's texture value in plan order
+    /// (read only by a crossbar environment, [`super::env::Combine::crossbar`]).
     #[inline]
-    pub fn env(&self, frag: [f32; 4], tex: [f32; 4], prev: [f32; 4]) -> [f32; 4] {
-        self.env.apply(frag, tex, prev, &[])
+    pub fn env(
+        &self,
+        frag: [f32; 4],
+        tex: [f32; 4],
+        prev: [f32; 4],
+        textures: &[[f32; 4]],
+    ) -> [f32; 4] {
+        self.env.apply(frag, tex, prev, textures)
     }
 }
