@@ -11,6 +11,7 @@
 pub mod accum;
 pub mod arrays;
 pub mod attrib;
+pub mod client_image;
 pub mod dlist;
 
 pub mod draw;
@@ -43,6 +44,7 @@ pub mod texture_ci;
 pub mod texture_compressed;
 pub mod texture_copy;
 pub mod texture_ds;
+pub mod texture_get;
 pub mod texture_gl;
 pub mod texture_params;
 pub mod texture_spec;

@@ -43,6 +43,7 @@ pub mod arrays;
 pub mod arrays_ext;
 pub mod arrays_gl14;
 pub mod buffers;
+mod client;
 pub mod draw;
 pub use crate::gl::enums;
 pub mod eval;

@@ -5,69 +5,12 @@
 //! all arguments before changing any state.
 #![allow(non_snake_case)]
 
+use super::client::{image_command, read_f64, read_vec, write_all, write_one};
 use super::enums::*;
 use super::families::vector_fns;
 use super::types::*;
 use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
-use crate::context::pack::tex::{ClientFormat, Layout};
-use crate::context::state::PixelStore;
-use crate::context::GlError;
-use crate::texture::MAX_TEXTURE_SIZE;
-use libc::c_void;
-
-/// A client image copied while a display list is being compiled (GL 1.5 §5.4: the pixels
-/// are unpacked from client memory when the command is compiled), with the pixel-store
-/// state that describes the copy.
-struct ClientImage {
-    /// The bytes the image spans, or `None` for a null pointer or an invalid description
-    /// (whose error the compiled command raises when it runs).
-    bytes: Option<Vec<u8>>,
-    /// The unpack state at compile time.
-    unpack: PixelStore,
-}
-
-impl ClientImage {
-    /// Copies the `w` x `h` image at `data` under the current unpack state.
-    ///
-    /// # Safety
-    /// `data` (if not null) must hold the image the arguments and unpack state describe.
-    unsafe fn read(
-        format: GLenum,
-        ty: GLenum,
-        w: GLsizei,
-        h: GLsizei,
-        data: *const c_void,
-    ) -> Self {
-        let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
-        let bytes = (|| {
-            let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
-            // Larger images fail validation when the command runs: nothing to copy.
-            if data.is_null() || w > MAX_TEXTURE_SIZE + 2 || h > MAX_TEXTURE_SIZE + 2 {
-                return None;
-            }
-            let span = if format == GL_COLOR_INDEX {
-                crate::context::texture_ci::span(ty, &unpack, w, h)?
-            } else {
-                Layout::new(&unpack, w, &ClientFormat::new(format, ty).ok()?).span(w, h)
-            };
-            // SAFETY: the caller promises the described image is readable.
-            Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
-        })();
-        ClientImage { bytes, unpack }
-    }
-
-    /// The copy's address (null when there is none).
-    fn ptr(&self) -> *const c_void {
-        self.bytes
-            .as_ref()
-            .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
-    }
-}
-
-/// Whether a display list is being compiled on the current context.
-pub(crate) fn compiling() -> bool {
-    super::with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
-}
+use crate::context::Context;
 
 /// glGenTextures.
 ///
@@ -129,20 +72,11 @@ pub unsafe extern "C" fn glTexImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (internalformat, width, 1, border, format, type_);
-            c.tex_image(target, level, args, img.ptr(), 1, img.unpack)
-        });
-    }
+    let args = (internalformat, width, 1, border, format, type_);
+    // SAFETY: `p` is the caller's image or the display list's copy of it.
+    let run = move |c: &mut Context, p, u| unsafe { c.tex_image(target, level, args, p, 1, u) };
     // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (internalformat, width, 1, border, format, type_);
-        c.tex_image(target, level, args, pixels, 1, c.state.unpack)
-    })
+    unsafe { image_command(1, (format, type_), (width, 1, 1), pixels, run) }
 }
 
 /// glTexImage2D.
@@ -161,20 +95,11 @@ pub unsafe extern "C" fn glTexImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (internalformat, width, height, border, format, type_);
-            c.tex_image(target, level, args, img.ptr(), 2, img.unpack)
-        });
-    }
+    let args = (internalformat, width, height, border, format, type_);
+    // SAFETY: `p` is the caller's image or the display list's copy of it.
+    let run = move |c: &mut Context, p, u| unsafe { c.tex_image(target, level, args, p, 2, u) };
     // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (internalformat, width, height, border, format, type_);
-        c.tex_image(target, level, args, pixels, 2, c.state.unpack)
-    })
+    unsafe { image_command(2, (format, type_), (width, height, 1), pixels, run) }
 }
 
 /// glTexSubImage1D.
@@ -191,20 +116,11 @@ pub unsafe extern "C" fn glTexSubImage1D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (xoffset, 0, width, 1, format, type_);
-            c.tex_sub_image(target, level, args, img.ptr(), 1, img.unpack)
-        });
-    }
+    let args = (xoffset, 0, width, 1, format, type_);
+    // SAFETY: `p` is the caller's image or the display list's copy of it.
+    let run = move |c: &mut Context, p, u| unsafe { c.tex_sub_image(target, level, args, p, 1, u) };
     // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (xoffset, 0, width, 1, format, type_);
-        c.tex_sub_image(target, level, args, pixels, 1, c.state.unpack)
-    })
+    unsafe { image_command(1, (format, type_), (width, 1, 1), pixels, run) }
 }
 
 /// glTexSubImage2D.
@@ -223,20 +139,11 @@ pub unsafe extern "C" fn glTexSubImage2D(
     type_: GLenum,
     pixels: *const GLvoid,
 ) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (xoffset, yoffset, width, height, format, type_);
-            c.tex_sub_image(target, level, args, img.ptr(), 2, img.unpack)
-        });
-    }
+    let args = (xoffset, yoffset, width, height, format, type_);
+    // SAFETY: `p` is the caller's image or the display list's copy of it.
+    let run = move |c: &mut Context, p, u| unsafe { c.tex_sub_image(target, level, args, p, 2, u) };
     // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (xoffset, yoffset, width, height, format, type_);
-        c.tex_sub_image(target, level, args, pixels, 2, c.state.unpack)
-    })
+    unsafe { image_command(2, (format, type_), (width, height, 1), pixels, run) }
 }
 
 /// glCopyTexImage1D.
@@ -359,17 +266,15 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    if params.is_null() {
-        return;
-    }
     let n = if pname == GL_TEXTURE_BORDER_COLOR {
         4
     } else {
         1
     };
     // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    let Some(v) = (unsafe { read_f64(params, n) }) else {
+        return;
+    };
     with_ctx_list(move |c| c.tex_parameter(target, pname, &v, false))
 }
 
@@ -379,17 +284,15 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    if params.is_null() {
-        return;
-    }
     let n = if pname == GL_TEXTURE_BORDER_COLOR {
         4
     } else {
         1
     };
     // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    let Some(v) = (unsafe { read_f64(params, n) }) else {
+        return;
+    };
     with_ctx_list(move |c| c.tex_parameter(target, pname, &v, true))
 }
 
@@ -400,13 +303,9 @@ pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params:
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
     with_ctx(|c| {
-        let (v, _) = c.get_tex_parameter(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = *x as f32 };
-            }
-        }
+        let v = c.get_tex_parameter_f(target, pname)?;
+        // SAFETY: the caller promises room for the values.
+        unsafe { write_all(params, &v, |x| x as f32) };
         Ok(())
     })
 }
@@ -418,19 +317,9 @@ pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, para
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
     with_ctx(|c| {
-        let (v, normalized) = c.get_tex_parameter(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                let iv = if normalized {
-                    // Mesa's FLOAT_TO_INT truncates: 0.25 → 536870911
-                    (x * 2147483647.0) as i32
-                } else {
-                    x.round() as i32
-                };
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = iv };
-            }
-        }
+        let v = c.get_tex_parameter_i(target, pname)?;
+        // SAFETY: the caller promises room for the values.
+        unsafe { write_all(params, &v, |x| x) };
         Ok(())
     })
 }
@@ -448,10 +337,8 @@ pub unsafe extern "C" fn glGetTexLevelParameterfv(
 ) {
     with_ctx(|c| {
         let v = c.get_tex_level_parameter(target, level, pname)?;
-        if !params.is_null() {
-            // SAFETY: the caller promises a writable value.
-            unsafe { *params = v as f32 };
-        }
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, v as f32) };
         Ok(())
     })
 }
@@ -469,10 +356,8 @@ pub unsafe extern "C" fn glGetTexLevelParameteriv(
 ) {
     with_ctx(|c| {
         let v = c.get_tex_level_parameter(target, level, pname)?;
-        if !params.is_null() {
-            // SAFETY: the caller promises a writable value.
-            unsafe { *params = v as i32 };
-        }
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, v as i32) };
         Ok(())
     })
 }
@@ -495,13 +380,11 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    if params.is_null() {
-        return;
-    }
     let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
     // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    let Some(v) = (unsafe { read_f64(params, n) }) else {
+        return;
+    };
     with_ctx_list(move |c| c.tex_env(target, pname, &v, false))
 }
 
@@ -511,13 +394,11 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 /// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-    if params.is_null() {
-        return;
-    }
     let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
     // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
+    let Some(v) = (unsafe { read_f64(params, n) }) else {
+        return;
+    };
     with_ctx_list(move |c| c.tex_env(target, pname, &v, true))
 }
 
@@ -528,13 +409,9 @@ pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *cons
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
     with_ctx(|c| {
-        let (v, _) = c.get_tex_env(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = *x as f32 };
-            }
-        }
+        let v = c.get_tex_env_f(target, pname)?;
+        // SAFETY: the caller promises room for the values.
+        unsafe { write_all(params, &v, |x| x as f32) };
         Ok(())
     })
 }
@@ -546,18 +423,9 @@ pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *m
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
     with_ctx(|c| {
-        let (v, normalized) = c.get_tex_env(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                let iv = if normalized {
-                    (x * 2147483647.0).round() as i32
-                } else {
-                    x.round() as i32
-                };
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = iv };
-            }
-        }
+        let v = c.get_tex_env_i(target, pname)?;
+        // SAFETY: the caller promises room for the values.
+        unsafe { write_all(params, &v, |x| x) };
         Ok(())
     })
 }
@@ -588,20 +456,9 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     textures: *const GLuint,
     priorities: *const GLclampf,
 ) {
-    let read = || -> Result<(Vec<GLuint>, Vec<GLclampf>), GlError> {
-        let n = non_negative(n)?;
-        if textures.is_null() || priorities.is_null() {
-            return Ok((Vec::new(), Vec::new()));
-        }
-        // SAFETY: the caller promises n readable values in each array.
-        Ok(unsafe {
-            (
-                std::slice::from_raw_parts(textures, n).to_vec(),
-                std::slice::from_raw_parts(priorities, n).to_vec(),
-            )
-        })
-    };
-    let arrays = read();
+    // SAFETY: the caller promises n readable values in each array.
+    let arrays =
+        non_negative(n).map(|n| unsafe { (read_vec(textures, n), read_vec(priorities, n)) });
     with_ctx_list(move |c| {
         let (names, prios) = arrays.as_ref().map_err(|e| *e)?;
         c.prioritize_textures(names, prios);
