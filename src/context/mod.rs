@@ -11,6 +11,7 @@
 pub mod accum;
 pub mod arrays;
 pub mod attrib;
+pub mod client_arrays;
 pub mod client_image;
 pub mod dlist;
 
@@ -28,6 +29,7 @@ pub mod get;
 pub mod immediate;
 pub mod legacy_state;
 pub mod lighting_state;
+pub mod multi_draw;
 pub mod pack;
 pub mod pixel_api;
 pub mod pixel_ops;

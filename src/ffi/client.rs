@@ -101,3 +101,22 @@ pub(crate) unsafe fn image_command<F>(
         f(c, p, unpack)
     })
 }
+
+/// The `(a[i], b[i])` pairs of a multi-draw call's two arrays: GL_INVALID_VALUE for a
+/// negative `n`, no pairs when either array is null.
+///
+/// # Safety
+/// `a` and `b`, when not null, must be readable for `n` values each.
+pub(crate) unsafe fn read_pairs<A: Copy, B: Copy>(
+    a: *const A,
+    b: *const B,
+    n: GLsizei,
+) -> GlResult<Vec<(A, B)>> {
+    let n = super::non_negative(n)?;
+    if a.is_null() || b.is_null() {
+        return Ok(Vec::new());
+    }
+    // SAFETY: forwarded caller contract.
+    let (a, b) = unsafe { (read_vec(a, n), read_vec(b, n)) };
+    Ok(a.into_iter().zip(b).collect())
+}

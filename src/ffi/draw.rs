@@ -77,19 +77,9 @@ pub extern "C" fn glDrawRangeElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    let range = if end < start {
-        Err(GlError::InvalidValue)
-    } else {
-        Ok(())
-    };
+    let (range, sizes) = ((start, end), (count, type_));
     listable_draw(
-        |c| {
-            range?;
-            draw_elements(c, mode, count, type_, indices)
-        },
-        |c| {
-            let idx = range.and_then(|_| element_list(c, count, type_, indices));
-            c.compile_draw(Primitive::from_gl(mode), idx)
-        },
+        |c| c.draw_range_elements(mode, range, sizes, indices),
+        |c| c.compile_draw_range_elements(mode, range, sizes, indices),
     )
 }

@@ -8,6 +8,7 @@ use super::glext_enums::*;
 use super::types::*;
 use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::clamp01;
+use crate::context::client_arrays::ClientArray;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::{Cap, CompareFunc, Face, PixelStore, ShadeModel};
 use crate::context::Context;
@@ -29,8 +30,8 @@ pub extern "C" fn glEnable(cap: GLenum) {
 /// makes them INVALID_ENUM), the client arrays are accepted as glEnableClientState /
 /// glDisableClientState: real programs rely on it (README, known differences).
 fn enable(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
-    if super::arrays::is_client_array(cap) {
-        return super::arrays::set_client_array(c, cap, on);
+    if ClientArray::from_cap(cap).is_some() {
+        return c.set_client_array(cap, on);
     }
     c.set_cap(Cap::from_gl(cap)?, on)
 }
@@ -45,7 +46,7 @@ pub extern "C" fn glDisable(cap: GLenum) {
 #[no_mangle]
 pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
     with_ctx(|c| {
-        let on = match super::arrays::client_array_enabled(c, cap) {
+        let on = match c.client_array_enabled(cap) {
             Some(on) => on,
             None => c.state.caps.get(Cap::from_gl(cap)?),
         };
