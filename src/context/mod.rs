@@ -11,6 +11,7 @@
 pub mod accum;
 pub mod arrays;
 pub mod attrib;
+pub mod buffer_api;
 pub mod client_arrays;
 pub mod client_image;
 pub mod dlist;
