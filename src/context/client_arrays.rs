@@ -4,6 +4,7 @@
 
 use super::arrays::{ArrayPointer, DataType};
 use super::error::{GlError, GlResult};
+use super::state::Cap;
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::glext_enums::*;
@@ -204,5 +205,24 @@ impl Context {
         }
         self.set_client_array(GL_VERTEX_ARRAY, true)?;
         self.set_array_pointer(ClientArray::Vertex, (l.vc, GL_FLOAT, stride), at(l.pv))
+    }
+
+    /// glEnable/glDisable. Like Mesa's compatibility profile (and unlike the GL 1.5 spec,
+    /// which makes them INVALID_ENUM), the client arrays are accepted as
+    /// glEnableClientState / glDisableClientState: real programs rely on it (README, known
+    /// differences).
+    pub(crate) fn enable(&mut self, cap: GLenum, on: bool) -> GlResult<()> {
+        if ClientArray::from_cap(cap).is_some() {
+            return self.set_client_array(cap, on);
+        }
+        self.set_cap(Cap::from_gl(cap)?, on)
+    }
+
+    /// glIsEnabled (also answers the client array states).
+    pub(crate) fn is_enabled(&mut self, cap: GLenum) -> GlResult<bool> {
+        match self.client_array_enabled(cap) {
+            Some(on) => Ok(on),
+            None => Ok(self.state.caps.get(Cap::from_gl(cap)?)),
+        }
     }
 }

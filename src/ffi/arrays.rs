@@ -91,12 +91,8 @@ pub extern "C" fn glArrayElement(i: GLint) {
     if i < 0 {
         return super::with_ctx_list_anywhere(|_| Err(GlError::InvalidValue));
     }
-    let ops = super::with_ctx_raw(|c| {
-        let mut ops = Vec::new();
-        c.array_element_ops(i as u32, &mut ops);
-        Ok(ops)
-    });
-    for op in ops {
-        super::with_ctx_vertex(op);
-    }
+    super::with_ctx_raw(|c| {
+        c.array_element(i as u32);
+        Ok(())
+    })
 }

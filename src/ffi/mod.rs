@@ -148,12 +148,6 @@ pub(crate) fn with_ctx_raw<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<
     }
 }
 
-/// Whether a command may run: false without a context, and between glBegin and glEnd,
-/// where it records GL_INVALID_OPERATION (for entry points that do work before [`with_ctx`]).
-pub(crate) fn outside_begin_end() -> bool {
-    with_ctx(|_| Ok(true))
-}
-
 /// Runs a listable command: records `f` into the display list being compiled (running it
 /// too under GL_COMPILE_AND_EXECUTE), or runs it now as [`with_ctx`] does. See the module
 /// documentation for what `f` may capture, and for the glBegin/glEnd rule it applies.
@@ -230,17 +224,7 @@ where
 /// the deferred batch first.
 #[inline]
 pub(crate) fn with_ctx_vertex(op: VertexOp) {
-    with_ctx_raw(|c| match c.lists.compile_mode() {
-        None => c.vertex_op(op),
-        Some(execute) => {
-            c.lists.push_op(op);
-            if execute {
-                c.vertex_op(op)
-            } else {
-                Ok(())
-            }
-        }
-    })
+    with_ctx_raw(|c| c.vertex_command(op))
 }
 
 /// Converts a C GLboolean.

@@ -7,6 +7,7 @@
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
+use crate::context::bitmap_read::bitmap_bits;
 use crate::context::pack::draw_image::Layout;
 use crate::context::pixel_transfer::{is_index_map, map_index};
 use crate::pixels::image::Pixels;
@@ -61,19 +62,8 @@ pub unsafe extern "C" fn glBitmap(
     bitmap_: *const GLubyte,
 ) {
     let ps = unpack_state();
-    let bits: Vec<bool> = if width > 0 && height > 0 {
-        let l = Layout::new(GL_COLOR_INDEX, GL_BITMAP).expect("a valid layout");
-        // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
-        match unsafe { l.decode(&ps, width as usize, height as usize, bitmap_) } {
-            Some(img) => match img.pixels {
-                Pixels::Index(v) => v.iter().map(|&b| b != 0).collect(),
-                _ => Vec::new(),
-            },
-            None => Vec::new(),
-        }
-    } else {
-        Vec::new()
-    };
+    // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
+    let bits = unsafe { bitmap_bits(&ps, (width, height), bitmap_) };
     let (orig, mv) = ([xorig, yorig], [xmove, ymove]);
     with_ctx_list(move |c| c.draw_bitmap((width, height), orig, mv, &bits))
 }

@@ -175,17 +175,8 @@ pub extern "C" fn glCopyTexImage2D(
     border: GLint,
 ) {
     with_ctx_list(move |c| {
-        c.copy_tex_image(
-            target,
-            level,
-            internalformat,
-            x,
-            y,
-            width,
-            height,
-            border,
-            2,
-        )
+        let (w, h) = (width, height);
+        c.copy_tex_image(target, level, internalformat, x, y, w, h, border, 2)
     })
 }
 
