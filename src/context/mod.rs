@@ -46,6 +46,7 @@ pub mod queries;
 pub mod raster_state;
 pub mod share;
 pub mod state;
+pub mod state_setters;
 pub mod store;
 pub mod texgen_state;
 pub mod texture_3d;

@@ -88,28 +88,31 @@ impl Context {
 
     /// glDrawRangeElements (the range is a hint; indices outside it are still drawn, but
     /// `end < start` is GL_INVALID_VALUE before anything else).
-    pub(crate) fn draw_range_elements(
-        &mut self,
-        mode: GLenum,
-        (start, end): (GLuint, GLuint),
-        (count, type_): (GLsizei, GLenum),
-        indices: *const GLvoid,
-    ) -> GlResult<()> {
-        check_range(start, end)?;
-        draw_elements(self, mode, count, type_, indices)
+    pub(crate) fn draw_range_elements(&mut self, mode: GLenum, d: &RangeDraw) -> GlResult<()> {
+        check_range(d.start, d.end)?;
+        draw_elements(self, mode, d.count, d.type_, d.indices)
     }
 
     /// glDrawRangeElements compiled into the display list.
-    pub(crate) fn compile_draw_range_elements(
-        &mut self,
-        mode: GLenum,
-        (start, end): (GLuint, GLuint),
-        (count, type_): (GLsizei, GLenum),
-        indices: *const GLvoid,
-    ) {
-        let idx = check_range(start, end).and_then(|_| element_list(self, count, type_, indices));
+    pub(crate) fn compile_draw_range_elements(&mut self, mode: GLenum, d: &RangeDraw) {
+        let idx = check_range(d.start, d.end)
+            .and_then(|_| element_list(self, d.count, d.type_, d.indices));
         self.compile_draw(Primitive::from_gl(mode), idx)
     }
+}
+
+/// The arguments of glDrawRangeElements after its mode.
+pub(crate) struct RangeDraw {
+    /// The smallest index the call promises.
+    pub start: GLuint,
+    /// The largest index the call promises.
+    pub end: GLuint,
+    /// How many indices.
+    pub count: GLsizei,
+    /// Their type.
+    pub type_: GLenum,
+    /// Where they are (client memory, or an offset into the element buffer).
+    pub indices: *const GLvoid,
 }
 
 /// GL_INVALID_VALUE when a glDrawRangeElements range ends before it starts.

@@ -323,8 +323,7 @@ pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
 #[no_mangle]
 pub extern "C" fn glEvalPoint1(i: GLint) {
     with_ctx_list_anywhere(move |c| {
-        let g = c.eval.grid1;
-        c.eval_coord(i as f32 * g.step() + g.d[0], None);
+        c.eval_point1(i);
         Ok(())
     })
 }
@@ -333,10 +332,7 @@ pub extern "C" fn glEvalPoint1(i: GLint) {
 #[no_mangle]
 pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
     with_ctx_list_anywhere(move |c| {
-        let [gu, gv] = c.eval.grid2;
-        let u = i as f32 * gu.step() + gu.d[0];
-        let v = j as f32 * gv.step() + gv.d[0];
-        c.eval_coord(u, Some(v));
+        c.eval_point2(i, j);
         Ok(())
     })
 }

@@ -8,6 +8,7 @@
 
 use super::client::write_one;
 use super::enums::*;
+use super::families::c_fns;
 use super::types::*;
 use crate::context::share::ShareGroup;
 use crate::context::{Context, GlError, GlResult, Visual};
@@ -230,8 +231,11 @@ pub extern "C" fn OSMesaCreateContextExt(
 unsafe fn parse_attribs(list: *const c_int) -> Option<(GLenum, c_int, c_int, c_int)> {
     let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 0, 0, 0);
     let (mut major, mut minor) = (1, 0);
+    if list.is_null() {
+        return Some((format, depth, stencil, accum));
+    }
     let mut i = 0usize;
-    while !list.is_null() {
+    loop {
         // SAFETY: the list is zero-terminated (caller contract); we stop at the key 0.
         let key = unsafe { *list.add(i) };
         if key == 0 {
@@ -317,7 +321,6 @@ fn destroy(ctx: OSMesaContext) {
 /// OSMesaDestroyContext. A context current on another thread is not freed (that would
 /// leave the other thread a dangling context); it is only unregistered.
 #[no_mangle]
-#[allow(clippy::not_unsafe_ptr_arg_deref)] // the handle is checked against LIVE first
 pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
     let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| destroy(ctx)));
 }
@@ -445,18 +448,23 @@ pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
     CURRENT_HANDLE.with(|h| h.get())
 }
 
-/// OSMesaPixelStore: OSMESA_ROW_LENGTH (pixels, 0 = width) and OSMESA_Y_UP for the current
-/// context.
-#[no_mangle]
-pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
-    super::with_ctx_anywhere(|c| match pname {
+/// OSMesaPixelStore on the context current on this thread.
+fn pixel_store(c: &mut Context, pname: GLint, value: GLint) -> GlResult<()> {
+    match pname {
         OSMESA_ROW_LENGTH => c.set_user_row_length(value),
         OSMESA_Y_UP => {
             c.set_user_y_up(value != 0);
             Ok(())
         }
         _ => Err(GlError::InvalidEnum),
-    })
+    }
+}
+
+/// OSMesaPixelStore: OSMESA_ROW_LENGTH (pixels, 0 = width) and OSMESA_Y_UP for the current
+/// context.
+#[no_mangle]
+pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
+    super::with_ctx_anywhere(|c| pixel_store(c, pname, value))
 }
 
 /// An OSMesaGetIntegerv value of the context current on this thread.
@@ -542,37 +550,13 @@ unsafe fn write_buffer_info(
     ok as GLboolean
 }
 
-/// OSMesaGetDepthBuffer: a copy of the depth buffer (bottom-up rows; 4 bytes per value
-/// for 24-bit depth with stencil in the high byte, 2 for 16-bit), refreshed at each flush.
-///
-/// # Safety
-/// The out pointers must be NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn OSMesaGetDepthBuffer(
-    c: OSMesaContext,
-    width: *mut GLint,
-    height: *mut GLint,
-    bytesPerValue: *mut GLint,
-    buffer: *mut *mut c_void,
-) -> GLboolean {
-    // SAFETY: forwarded caller contract.
-    unsafe { write_buffer_info(depth_buffer(c), [width, height, bytesPerValue], buffer) }
-}
-
-/// OSMesaGetColorBuffer: the user buffer bound by OSMesaMakeCurrent.
-///
-/// # Safety
-/// The out pointers must be NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn OSMesaGetColorBuffer(
-    c: OSMesaContext,
-    width: *mut GLint,
-    height: *mut GLint,
-    format: *mut GLint,
-    buffer: *mut *mut c_void,
-) -> GLboolean {
-    // SAFETY: forwarded caller contract.
-    unsafe { write_buffer_info(color_buffer(c), [width, height, format], buffer) }
+c_fns! {
+    /// OSMesaGetDepthBuffer: a copy of the depth buffer (bottom-up rows; 4 bytes per value
+    /// for 24-bit depth with stencil in the high byte, 2 for 16-bit), refreshed at each
+    /// flush.
+    unsafe fn OSMesaGetDepthBuffer(c: OSMesaContext, width: *mut GLint, height: *mut GLint, bytesPerValue: *mut GLint, buffer: *mut *mut c_void) -> GLboolean => write_buffer_info(depth_buffer(c), [width, height, bytesPerValue], buffer);
+    /// OSMesaGetColorBuffer: the user buffer bound by OSMesaMakeCurrent.
+    unsafe fn OSMesaGetColorBuffer(c: OSMesaContext, width: *mut GLint, height: *mut GLint, format: *mut GLint, buffer: *mut *mut c_void) -> GLboolean => write_buffer_info(color_buffer(c), [width, height, format], buffer);
 }
 
 /// OSMesaColorClamp: accepted. Mesa sets GL_CLAMP_FRAGMENT_COLOR (TRUE or FIXED_ONLY);

@@ -30,8 +30,7 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
     with_ctx_list(move |c| {
-        c.raster.line.stipple_repeat = factor.clamp(1, 256) as u32;
-        c.raster.line.stipple_pattern = pattern;
+        c.line_stipple(factor, pattern);
         Ok(())
     })
 }
@@ -56,8 +55,7 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
     with_ctx_list(move |c| {
-        c.raster.polygon.offset_factor = factor;
-        c.raster.polygon.offset_units = units;
+        c.polygon_offset(factor, units);
         Ok(())
     })
 }

@@ -8,7 +8,7 @@ use super::types::*;
 use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::clamp01;
 use crate::context::error::{GlError, GlResult};
-use crate::context::state::{Cap, CompareFunc, Face, PixelStore, ShadeModel};
+use crate::context::state::{CompareFunc, Face, PixelStore, ShadeModel};
 use crate::context::Context;
 
 /// glGetError: the first error since the last call, or GL_NO_ERROR.

@@ -7,10 +7,11 @@
 
 use super::client::{image_command, read_f64, read_vec, write_all, write_one};
 use super::enums::*;
-use super::families::vector_fns;
+use super::families::{c_fns, vector_fns};
 use super::types::*;
 use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
-use crate::context::Context;
+use crate::context::texture_get::{ints_rounded, ints_truncated};
+use crate::context::{Context, GlResult};
 
 /// glGenTextures.
 ///
@@ -251,68 +252,49 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
     with_ctx_list(move |c| c.tex_parameter_scalar(target, pname, v[0]))
 }
 
-/// glTexParameterfv.
+/// The parameter vector calls: as many values as `pname` takes (4 for `color`, the
+/// colour parameter, otherwise 1), converted to `f64`, for `set` (nothing for NULL).
 ///
 /// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    let n = if pname == GL_TEXTURE_BORDER_COLOR {
-        4
-    } else {
-        1
-    };
+/// `params` must be NULL or readable for the values `pname` takes.
+unsafe fn set_params<T: Copy + Into<f64>>(
+    params: *const T,
+    (pname, color): (GLenum, GLenum),
+    set: impl Fn(&mut Context, &[f64]) -> GlResult<()> + Send + Sync + 'static,
+) {
+    let n = if pname == color { 4 } else { 1 };
     // SAFETY: the caller promises n readable values.
-    let Some(v) = (unsafe { read_f64(params, n) }) else {
-        return;
-    };
-    with_ctx_list(move |c| c.tex_parameter(target, pname, &v, false))
+    if let Some(v) = unsafe { read_f64(params, n) } {
+        with_ctx_list(move |c| set(c, &v))
+    }
 }
 
-/// glTexParameteriv.
+/// The parameter queries: the values `get` answers, each converted by `conv`, written
+/// through `params`.
 ///
 /// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    let n = if pname == GL_TEXTURE_BORDER_COLOR {
-        4
-    } else {
-        1
-    };
-    // SAFETY: the caller promises n readable values.
-    let Some(v) = (unsafe { read_f64(params, n) }) else {
-        return;
-    };
-    with_ctx_list(move |c| c.tex_parameter(target, pname, &v, true))
-}
-
-/// glGetTexParameterfv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+/// `params` must be NULL or writable for the values.
+unsafe fn get_params<S: Copy, T>(
+    params: *mut T,
+    get: impl FnOnce(&mut Context) -> GlResult<Vec<S>>,
+    conv: impl Fn(S) -> T,
+) {
     with_ctx(|c| {
-        let v = c.get_tex_parameter_f(target, pname)?;
+        let v = get(c)?;
         // SAFETY: the caller promises room for the values.
-        unsafe { write_all(params, &v, |x| x as f32) };
+        unsafe { write_all(params, &v, conv) };
         Ok(())
     })
 }
 
-/// glGetTexParameteriv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_ctx(|c| {
-        let v = c.get_tex_parameter_i(target, pname)?;
-        // SAFETY: the caller promises room for the values.
-        unsafe { write_all(params, &v, |x| x) };
-        Ok(())
-    })
+c_fns! {
+    /// glTexParameterfv (4 values for GL_TEXTURE_BORDER_COLOR).
+    unsafe fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) => set_params(params, (pname, GL_TEXTURE_BORDER_COLOR), move |c, v| c.tex_parameter(target, pname, v, false));
+    /// glTexParameteriv (4 values for GL_TEXTURE_BORDER_COLOR).
+    unsafe fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) => set_params(params, (pname, GL_TEXTURE_BORDER_COLOR), move |c, v| c.tex_parameter(target, pname, v, true));
+    unsafe fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(c.get_tex_parameter(target, pname)?.0), |x| x as f32);
+    /// glGetTexParameteriv (normalized values truncated, as Mesa's FLOAT_TO_INT).
+    unsafe fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(ints_truncated(c.get_tex_parameter(target, pname)?)), |x| x);
 }
 
 /// glGetTexLevelParameterfv.
@@ -365,60 +347,14 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
     with_ctx_list(move |c| c.tex_env_scalar(target, pname, param as f64))
 }
 
-/// glTexEnvfv.
-///
-/// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-    // SAFETY: the caller promises n readable values.
-    let Some(v) = (unsafe { read_f64(params, n) }) else {
-        return;
-    };
-    with_ctx_list(move |c| c.tex_env(target, pname, &v, false))
-}
-
-/// glTexEnviv.
-///
-/// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-    // SAFETY: the caller promises n readable values.
-    let Some(v) = (unsafe { read_f64(params, n) }) else {
-        return;
-    };
-    with_ctx_list(move |c| c.tex_env(target, pname, &v, true))
-}
-
-/// glGetTexEnvfv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
-    with_ctx(|c| {
-        let v = c.get_tex_env_f(target, pname)?;
-        // SAFETY: the caller promises room for the values.
-        unsafe { write_all(params, &v, |x| x as f32) };
-        Ok(())
-    })
-}
-
-/// glGetTexEnviv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_ctx(|c| {
-        let v = c.get_tex_env_i(target, pname)?;
-        // SAFETY: the caller promises room for the values.
-        unsafe { write_all(params, &v, |x| x) };
-        Ok(())
-    })
+c_fns! {
+    /// glTexEnvfv (4 values for GL_TEXTURE_ENV_COLOR).
+    unsafe fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) => set_params(params, (pname, GL_TEXTURE_ENV_COLOR), move |c, v| c.tex_env(target, pname, v, false));
+    /// glTexEnviv (4 values for GL_TEXTURE_ENV_COLOR).
+    unsafe fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) => set_params(params, (pname, GL_TEXTURE_ENV_COLOR), move |c, v| c.tex_env(target, pname, v, true));
+    unsafe fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(c.get_tex_env(target, pname)?.0), |x| x as f32);
+    /// glGetTexEnviv (normalized values rounded).
+    unsafe fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(ints_rounded(c.get_tex_env(target, pname)?)), |x| x);
 }
 
 /// glActiveTexture (GL_TEXTUREi, i < GL_MAX_TEXTURE_UNITS). Mesa's rule is i < the larger
