@@ -146,6 +146,11 @@ fn default_type(format: GLenum) -> GLenum {
     }
 }
 
+/// `f()`, or `fallback` when it panics (no panic crosses the C boundary).
+fn no_panic<R>(fallback: R, f: impl FnOnce() -> R) -> R {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or(fallback)
+}
+
 /// Creates a context from parsed attributes (Mesa's `OSMesaCreateContextAttribs` rules).
 fn create(
     format: GLenum,
@@ -216,10 +221,8 @@ pub extern "C" fn OSMesaCreateContextExt(
     accumBits: GLint,
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        create(format, depthBits, stencilBits, accumBits, sharelist)
-    }))
-    .unwrap_or(std::ptr::null_mut())
+    let create = || create(format, depthBits, stencilBits, accumBits, sharelist);
+    no_panic(std::ptr::null_mut(), create)
 }
 
 /// The format, depth, stencil and accumulation bits of an OSMesaCreateContextAttribs
@@ -322,7 +325,7 @@ fn destroy(ctx: OSMesaContext) {
 /// leave the other thread a dangling context); it is only unregistered.
 #[no_mangle]
 pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
-    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| destroy(ctx)));
+    no_panic((), || destroy(ctx))
 }
 
 /// OSMesaMakeCurrent: binds `ctx` to this thread and `buffer` as its colour buffer.
@@ -340,10 +343,9 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     width: GLsizei,
     height: GLsizei,
 ) -> GLboolean {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+    no_panic(GL_FALSE as GLboolean, || {
         make_current(ctx, buffer, type_, width, height)
-    }))
-    .unwrap_or(GL_FALSE as GLboolean)
+    })
 }
 
 /// Draws the deferred immediate-mode batch of the context current on this thread.

@@ -58,93 +58,17 @@ pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
     with_ctx(|c| Ok(c.textures.is_texture(texture) as GLboolean))
 }
 
-/// glTexImage1D.
-///
-/// # Safety
-/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexImage1D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLint,
-    width: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    let args = (internalformat, width, 1, border, format, type_);
-    // SAFETY: `p` is the caller's image or the display list's copy of it.
-    let run = move |c: &mut Context, p, u| unsafe { c.tex_image(target, level, args, p, 1, u) };
-    // SAFETY: forwarded caller contract.
-    unsafe { image_command(1, (format, type_), (width, 1, 1), pixels, run) }
-}
-
-/// glTexImage2D.
-///
-/// # Safety
-/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexImage2D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    let args = (internalformat, width, height, border, format, type_);
-    // SAFETY: `p` is the caller's image or the display list's copy of it.
-    let run = move |c: &mut Context, p, u| unsafe { c.tex_image(target, level, args, p, 2, u) };
-    // SAFETY: forwarded caller contract.
-    unsafe { image_command(2, (format, type_), (width, height, 1), pixels, run) }
-}
-
-/// glTexSubImage1D.
-///
-/// # Safety
-/// `pixels` must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexSubImage1D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    width: GLsizei,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    let args = (xoffset, 0, width, 1, format, type_);
-    // SAFETY: `p` is the caller's image or the display list's copy of it.
-    let run = move |c: &mut Context, p, u| unsafe { c.tex_sub_image(target, level, args, p, 1, u) };
-    // SAFETY: forwarded caller contract.
-    unsafe { image_command(1, (format, type_), (width, 1, 1), pixels, run) }
-}
-
-/// glTexSubImage2D.
-///
-/// # Safety
-/// `pixels` must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexSubImage2D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    yoffset: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    let args = (xoffset, yoffset, width, height, format, type_);
-    // SAFETY: `p` is the caller's image or the display list's copy of it.
-    let run = move |c: &mut Context, p, u| unsafe { c.tex_sub_image(target, level, args, p, 2, u) };
-    // SAFETY: forwarded caller contract.
-    unsafe { image_command(2, (format, type_), (width, height, 1), pixels, run) }
+// The image calls: the image is read now, or copied into the display list being
+// compiled (GL 1.5 §5.4), by [`image_command`].
+c_fns! {
+    /// glTexImage1D (`pixels`, if not null, holds the image the arguments and unpack state describe).
+    unsafe fn glTexImage1D(target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(1, (format, type_), (width, 1, 1), pixels, move |c: &mut Context, p, u| c.tex_image(target, level, (internalformat, width, 1, border, format, type_), p, 1, u));
+    /// glTexImage2D (`pixels`, if not null, holds the image the arguments and unpack state describe).
+    unsafe fn glTexImage2D(target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(2, (format, type_), (width, height, 1), pixels, move |c: &mut Context, p, u| c.tex_image(target, level, (internalformat, width, height, border, format, type_), p, 2, u));
+    /// glTexSubImage1D (`pixels` holds the image the arguments and unpack state describe).
+    unsafe fn glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(1, (format, type_), (width, 1, 1), pixels, move |c: &mut Context, p, u| c.tex_sub_image(target, level, (xoffset, 0, width, 1, format, type_), p, 1, u));
+    /// glTexSubImage2D (`pixels` holds the image the arguments and unpack state describe).
+    unsafe fn glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(2, (format, type_), (width, height, 1), pixels, move |c: &mut Context, p, u| c.tex_sub_image(target, level, (xoffset, yoffset, width, height, format, type_), p, 2, u));
 }
 
 /// glCopyTexImage1D.
