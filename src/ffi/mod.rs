@@ -279,13 +279,12 @@ pub(crate) mod client {
     /// `p`, when not null, must be readable for `n` values.
     #[inline]
     pub(crate) unsafe fn read_f64<T: Copy + Into<f64>>(p: *const T, n: usize) -> Option<Vec<f64>> {
+        if p.is_null() {
+            return None;
+        }
         // SAFETY: forwarded caller contract.
-        (!p.is_null()).then(|| {
-            unsafe { read_vec(p, n) }
-                .into_iter()
-                .map(Into::into)
-                .collect()
-        })
+        let v = unsafe { read_vec(p, n) };
+        Some(v.into_iter().map(Into::into).collect())
     }
 
     /// Writes `vals`, each converted by `f`, to `dst` (nothing when `dst` is null).

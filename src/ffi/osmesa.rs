@@ -221,8 +221,8 @@ pub extern "C" fn OSMesaCreateContextExt(
     accumBits: GLint,
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    let create = || create(format, depthBits, stencilBits, accumBits, sharelist);
-    no_panic(std::ptr::null_mut(), create)
+    let make = || create(format, depthBits, stencilBits, accumBits, sharelist);
+    no_panic(std::ptr::null_mut(), make)
 }
 
 /// The format, depth, stencil and accumulation bits of an OSMesaCreateContextAttribs
