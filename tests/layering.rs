@@ -16,6 +16,9 @@
 //! `use crate::{NAME, …}` group and every `super::` chain that climbs to the crate root is
 //! an edge. Doc comments and ordinary comments are skipped.
 
+#[path = "../tools/ffi_expand.rs"]
+mod ffi_expand;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -290,4 +293,259 @@ fn intrinsics_only_in_simd() {
         "intrinsics outside src/simd:\n{}",
         found.join("\n")
     );
+}
+
+/// The most non-blank, non-comment lines an `extern "C"` body may have: enough to read
+/// pointer arguments, convert, make the call and write results back.
+const MAX_BODY_LINES: usize = 12;
+
+/// The functions through which a C entry point reaches the context (`src/ffi/mod.rs` and
+/// the record-or-execute helpers). Every other `extern "C"` function's name counts too (a
+/// body that forwards to another entry point).
+const CONTEXT_ENTRIES: &[&str] = &[
+    "with_ctx",
+    "with_ctx_raw",
+    "with_ctx_anywhere",
+    "with_ctx_list",
+    "with_ctx_list_anywhere",
+    "with_ctx_vertex",
+    "listable_draw",
+    "image_command",
+];
+
+/// Bodies allowed to break the rules of [`ffi_bodies_only_convert`], with the reason.
+const BODY_EXCEPTIONS: &[(&str, &str)] = &[];
+
+/// `line` without its `//` comment and the text of its string literals (`""` stays).
+fn code_of(line: &str) -> String {
+    let mut out = String::new();
+    let mut in_str = false;
+    let mut prev = ' ';
+    let mut chars = line.chars().peekable();
+    while let Some(ch) = chars.next() {
+        if !in_str && ch == '/' && chars.peek() == Some(&'/') {
+            break;
+        }
+        if ch == '"' && prev != '\\' {
+            in_str = !in_str;
+            out.push(ch);
+        } else if !in_str {
+            out.push(ch);
+        }
+        prev = ch;
+    }
+    out
+}
+
+/// The identifiers of a code line.
+fn words(code: &str) -> impl Iterator<Item = &str> {
+    code.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .filter(|w| !w.is_empty())
+}
+
+/// Every `extern "C" fn` of a source text: (name, line number, code lines of its body).
+fn extern_bodies(text: &str) -> Vec<(String, usize, Vec<String>)> {
+    let lines: Vec<String> = text.lines().map(code_of).collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < lines.len() {
+        let Some(at) = lines[i].find("extern \"\" fn ") else {
+            i += 1;
+            continue;
+        };
+        let name: String = lines[i][at + "extern \"\" fn ".len()..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        // The body: from the first `{` after the parameters to its matching `}`.
+        let (mut depth, mut started, mut parens) = (0i32, false, 0i32);
+        let mut body = Vec::new();
+        let start = i;
+        'outer: while i < lines.len() {
+            let mut cur = String::new();
+            for ch in lines[i].chars() {
+                match ch {
+                    '(' => parens += 1,
+                    ')' => parens -= 1,
+                    '{' if parens == 0 => {
+                        depth += 1;
+                        if !started {
+                            started = true;
+                            continue;
+                        }
+                    }
+                    '}' if started => {
+                        depth -= 1;
+                        if depth == 0 {
+                            if !cur.trim().is_empty() {
+                                body.push(cur);
+                            }
+                            break 'outer;
+                        }
+                    }
+                    _ => {}
+                }
+                if started {
+                    cur.push(ch);
+                }
+            }
+            if started && !cur.trim().is_empty() {
+                body.push(cur);
+            }
+            i += 1;
+        }
+        out.push((name, start + 1, body));
+        i += 1;
+    }
+    out
+}
+
+/// What is wrong with one `extern "C"` body: a loop, too many lines, or more than one way
+/// into the context. Early `return`s through an entry (an argument error raised, the
+/// display-list form of a command: at most two) and the pair of closures of a
+/// record-or-execute helper (`listable_draw`, or a `compiling_list()` branch) do not count
+/// as further calls.
+fn body_violations(name: &str, body: &[String], externs: &BTreeSet<String>) -> Vec<String> {
+    let mut v = Vec::new();
+    let all: Vec<&str> = body.iter().flat_map(|l| words(l)).collect();
+    for kw in ["for", "while", "loop"] {
+        if all.contains(&kw) {
+            v.push(format!("a `{kw}` loop"));
+        }
+    }
+    if body.len() > MAX_BODY_LINES {
+        v.push(format!("{} lines (at most {MAX_BODY_LINES})", body.len()));
+    }
+    let is_entry = |w: &str| CONTEXT_ENTRIES.contains(&w) || (externs.contains(w) && w != name);
+    let (mut calls, mut returns) = (0, 0);
+    for line in body {
+        let n = words(line).filter(|w| is_entry(w)).count();
+        if line.contains("return ") {
+            returns += n;
+        } else {
+            calls += n;
+        }
+    }
+    if calls > 1 || returns > 2 {
+        v.push(format!(
+            "{calls} calls into the context (+{returns} in a return)"
+        ));
+    }
+    let paired = all.contains(&"listable_draw") || all.contains(&"compiling_list");
+    let touches: usize = body
+        .iter()
+        .map(|l| {
+            let b = l.as_bytes();
+            (0..b.len())
+                .filter(|&i| {
+                    (b[i..].starts_with(b"c.") || b[i..].starts_with(b"ctx."))
+                        && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'))
+                })
+                .count()
+        })
+        .sum();
+    if touches > if paired { 2 } else { 1 } {
+        v.push(format!("{touches} uses of the context"));
+    }
+    v
+}
+
+/// The `extern "C"` functions of `src/ffi`: each body.
+fn ffi_bodies() -> Vec<(String, String, usize, Vec<String>)> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/ffi");
+    let mut files = Vec::new();
+    rust_files(&dir, &mut files);
+    files.sort();
+    let mut out = Vec::new();
+    for f in files {
+        // Macro families expand to their declarations (empty bodies): their names count
+        // as entry points, and the macros' own bodies are one expression each.
+        let text = ffi_expand::expand(&std::fs::read_to_string(&f).unwrap());
+        let rel = f.strip_prefix(&dir).unwrap().display().to_string();
+        for (name, line, body) in extern_bodies(&text) {
+            out.push((rel.clone(), name, line, body));
+        }
+    }
+    out
+}
+
+/// Issue 41: every `extern "C"` body only converts — reads its pointer arguments,
+/// converts, makes one call into the context and lets the wrapper record the error. The
+/// logic (loops, validation, state decisions, multi-step sequences) lives below `ffi`.
+#[test]
+fn ffi_bodies_only_convert() {
+    let bodies = ffi_bodies();
+    assert!(
+        bodies.len() > 300,
+        "found only {} extern bodies",
+        bodies.len()
+    );
+    let externs: BTreeSet<String> = bodies.iter().map(|b| b.1.clone()).collect();
+    let mut errors = Vec::new();
+    for (file, name, line, body) in &bodies {
+        if BODY_EXCEPTIONS.iter().any(|(n, _)| n == name) {
+            continue;
+        }
+        for v in body_violations(name, body, &externs) {
+            errors.push(format!("src/ffi/{file}:{line} {name}: {v}"));
+        }
+    }
+    assert!(
+        errors.is_empty(),
+        "{} extern \"C\" bodies do more than convert and call:\n{}",
+        errors.len(),
+        errors.join("\n")
+    );
+}
+
+/// The body checker sees what it must: a loop, a long body, two calls into the context,
+/// two uses of `c`; and accepts a record-or-execute pair and an early error return.
+#[test]
+fn the_body_checker_finds_logic() {
+    let text = r#"
+/// doc: for while loop in a comment
+#[no_mangle]
+pub unsafe extern "C" fn glBad(n: GLsizei, p: *const GLuint) {
+    for i in 0..n {
+        with_ctx(|c| c.thing(i));
+    }
+}
+pub extern "C" fn glTwo(a: GLenum) {
+    with_ctx(|c| c.one(a));
+    with_ctx_list(move |c| c.two(a))
+}
+pub extern "C" fn glTouch(a: GLenum) {
+    with_ctx(|c| { c.state.x = c.other(a); Ok(()) })
+}
+pub extern "C" fn glFine(a: GLenum, n: GLint) {
+    if n < 0 {
+        return with_ctx_list(|_| Err(GlError::InvalidValue));
+    }
+    if a == 0 && compiling_list() {
+        return with_ctx_list(move |c| c.vector(a, n));
+    }
+    with_ctx_list(move |c| c.scalar(a, n))
+}
+pub extern "C" fn glForward(a: GLenum) {
+    glFine(a, 0)
+}
+"#;
+    let bodies = extern_bodies(text);
+    let names: BTreeSet<String> = bodies.iter().map(|b| b.0.clone()).collect();
+    assert_eq!(names.len(), 5, "{bodies:?}");
+    let found: BTreeMap<String, Vec<String>> = bodies
+        .iter()
+        .map(|(n, _, b)| (n.clone(), body_violations(n, b, &names)))
+        .collect();
+    assert_eq!(found["glBad"], ["a `for` loop"], "{found:?}");
+    assert!(found["glTwo"][0].contains("2 calls"), "{found:?}");
+    assert_eq!(found["glTouch"], ["2 uses of the context"], "{found:?}");
+    assert!(found["glFine"].is_empty(), "{found:?}");
+    assert!(found["glForward"].is_empty(), "{found:?}");
+    let long = format!(
+        "pub extern \"C\" fn glLong() {{\n{}}}\n",
+        "    let x = 1;\n".repeat(13)
+    );
+    let b = extern_bodies(&long);
+    assert_eq!(body_violations("glLong", &b[0].2, &names).len(), 1, "{b:?}");
 }

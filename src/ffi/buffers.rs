@@ -1,13 +1,12 @@
 //! Buffer objects (GL 1.5, `GL/glext.h`): names, binding, data store, mapping and queries.
 #![allow(non_snake_case)]
 
+use super::client::{read_vec, write_all, write_one};
 use super::enums::*;
-use super::glext_enums::*;
 use super::types::*;
 use super::{non_negative, with_ctx};
 use crate::context::arrays::BufferTarget;
 use crate::context::error::GlError;
-use crate::context::store::Store;
 use libc::c_void;
 
 /// glGenBuffers.
@@ -18,11 +17,9 @@ use libc::c_void;
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     with_ctx(|c| {
         let n = non_negative(n)?;
-        if !buffers.is_null() && n != 0 {
-            let names = c.arrays.gen_buffers(n);
-            // SAFETY: the caller promises room for n names.
-            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), buffers, names.len()) };
-        }
+        let n = if buffers.is_null() { 0 } else { n };
+        // SAFETY: the caller promises room for n names.
+        unsafe { write_all(buffers, &c.gen_buffer_names(n), |x| x) };
         Ok(())
     })
 }
@@ -34,12 +31,8 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
     with_ctx(|c| {
-        let n = non_negative(n)?;
-        if !buffers.is_null() {
-            // SAFETY: the caller promises n readable names.
-            let names = unsafe { std::slice::from_raw_parts(buffers, n) };
-            names.iter().for_each(|&name| c.arrays.delete_buffer(name));
-        }
+        // SAFETY: the caller promises n readable names.
+        c.delete_buffers(&unsafe { read_vec(buffers, non_negative(n)?) });
         Ok(())
     })
 }
@@ -60,21 +53,6 @@ pub extern "C" fn glBindBuffer(target: GLenum, buffer: GLuint) {
     })
 }
 
-fn valid_usage(usage: GLenum) -> bool {
-    matches!(
-        usage,
-        GL_STREAM_DRAW
-            | GL_STREAM_READ
-            | GL_STREAM_COPY
-            | GL_STATIC_DRAW
-            | GL_STATIC_READ
-            | GL_STATIC_COPY
-            | GL_DYNAMIC_DRAW
-            | GL_DYNAMIC_READ
-            | GL_DYNAMIC_COPY
-    )
-}
-
 /// glBufferData: replaces the store of the bound buffer (GL_OUT_OF_MEMORY when it cannot be
 /// allocated, leaving the old store).
 ///
@@ -87,27 +65,8 @@ pub unsafe extern "C" fn glBufferData(
     data: *const GLvoid,
     usage: GLenum,
 ) {
-    with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        if size < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        if !valid_usage(usage) {
-            return Err(GlError::InvalidEnum);
-        }
-        let b = c.arrays.bound_mut(t)?;
-        let size = size as usize;
-        let store = if data.is_null() {
-            Store::zeroed(size)
-        } else {
-            // SAFETY: the caller promises `size` readable bytes at `data`.
-            Store::copy_of(unsafe { std::slice::from_raw_parts(data as *const u8, size) })
-        };
-        b.data = store.map_err(|_| GlError::OutOfMemory)?;
-        b.usage = usage;
-        b.mapped = None;
-        Ok(())
-    })
+    // SAFETY: forwarded caller contract (read after the checks).
+    with_ctx(|c| unsafe { c.buffer_data(target, size, data as *const u8, usage) })
 }
 
 /// glBufferSubData and glGetBufferSubData: `copy` gets the bytes they name in the buffer
@@ -120,16 +79,8 @@ fn copy_sub_range(
     copy: impl FnOnce(&mut [u8]),
 ) {
     with_ctx(|c| {
-        let b = c.arrays.bound_mut(BufferTarget::from_gl(target)?)?;
-        if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
-        {
-            return Err(GlError::InvalidValue);
-        }
-        if b.mapped.is_some() {
-            return Err(GlError::InvalidOperation);
-        }
-        if size != 0 && !null {
-            copy(&mut b.data[offset as usize..offset as usize + size as usize]);
+        if let Some(range) = c.buffer_sub_range(target, (offset, size), null)? {
+            copy(range);
         }
         Ok(())
     })
@@ -172,28 +123,7 @@ pub unsafe extern "C" fn glGetBufferSubData(
 /// glMapBuffer: a pointer to the bound buffer's store until glUnmapBuffer.
 #[no_mangle]
 pub extern "C" fn glMapBuffer(target: GLenum, access: GLenum) -> *mut GLvoid {
-    with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
-            return Err(GlError::InvalidEnum);
-        }
-        let b = c.arrays.bound_mut(t)?;
-        if b.mapped.is_some() {
-            return Err(GlError::InvalidOperation);
-        }
-        b.mapped = Some(access);
-        b.access = access;
-        Ok(MapPtr(b.data.as_mut_ptr() as *mut c_void))
-    })
-    .0
-}
-
-/// A pointer with a null default (for `with_ctx`).
-struct MapPtr(*mut c_void);
-impl Default for MapPtr {
-    fn default() -> Self {
-        MapPtr(std::ptr::null_mut())
-    }
+    with_ctx(|c| c.map_buffer(target, access)) as *mut GLvoid
 }
 
 /// glUnmapBuffer.
@@ -216,19 +146,9 @@ pub extern "C" fn glUnmapBuffer(target: GLenum) -> GLboolean {
 #[no_mangle]
 pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
     with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        let b = c.arrays.bound_mut(t)?;
-        let v = match pname {
-            GL_BUFFER_SIZE => b.data.len().min(i32::MAX as usize) as GLint,
-            GL_BUFFER_USAGE => b.usage as GLint,
-            GL_BUFFER_ACCESS => b.access as GLint,
-            GL_BUFFER_MAPPED => b.mapped.is_some() as GLint,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        if !params.is_null() {
-            // SAFETY: checked non-null; the caller promises it is writable.
-            unsafe { *params = v };
-        }
+        let v = c.get_buffer_parameter(target, pname)?;
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, v) };
         Ok(())
     })
 }
@@ -244,20 +164,9 @@ pub unsafe extern "C" fn glGetBufferPointerv(
     params: *mut *mut GLvoid,
 ) {
     with_ctx(|c| {
-        let t = BufferTarget::from_gl(target)?;
-        if pname != GL_BUFFER_MAP_POINTER {
-            return Err(GlError::InvalidEnum);
-        }
-        let b = c.arrays.bound_mut(t)?;
-        let p = if b.mapped.is_some() {
-            b.data.as_mut_ptr() as *mut c_void
-        } else {
-            std::ptr::null_mut()
-        };
-        if !params.is_null() {
-            // SAFETY: checked non-null; the caller promises it is writable.
-            unsafe { *params = p };
-        }
+        let p = c.get_buffer_pointer(target, pname)? as *mut c_void;
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, p) };
         Ok(())
     })
 }

@@ -7,6 +7,7 @@ use super::types::*;
 use super::with_ctx_raw;
 pub(crate) use crate::context::draw_cmd::{array_range, draw_arrays, draw_elements, element_list};
 use crate::context::error::{GlError, GlResult};
+use crate::context::multi_draw::RangeDraw;
 use crate::context::state::Primitive;
 use crate::context::Context;
 
@@ -77,19 +78,15 @@ pub extern "C" fn glDrawRangeElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    let range = if end < start {
-        Err(GlError::InvalidValue)
-    } else {
-        Ok(())
+    let d = RangeDraw {
+        start,
+        end,
+        count,
+        type_,
+        indices,
     };
     listable_draw(
-        |c| {
-            range?;
-            draw_elements(c, mode, count, type_, indices)
-        },
-        |c| {
-            let idx = range.and_then(|_| element_list(c, count, type_, indices));
-            c.compile_draw(Primitive::from_gl(mode), idx)
-        },
+        |c| c.draw_range_elements(mode, &d),
+        |c| c.compile_draw_range_elements(mode, &d),
     )
 }

@@ -3,6 +3,7 @@
 //! glEvalCoord per grid point and glEnd, as Mesa's vbo module issues it.
 #![allow(non_snake_case)]
 
+use super::client::write_all;
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list, with_ctx_list_anywhere};
@@ -322,8 +323,7 @@ pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
 #[no_mangle]
 pub extern "C" fn glEvalPoint1(i: GLint) {
     with_ctx_list_anywhere(move |c| {
-        let g = c.eval.grid1;
-        c.eval_coord(i as f32 * g.step() + g.d[0], None);
+        c.eval_point1(i);
         Ok(())
     })
 }
@@ -332,10 +332,7 @@ pub extern "C" fn glEvalPoint1(i: GLint) {
 #[no_mangle]
 pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
     with_ctx_list_anywhere(move |c| {
-        let [gu, gv] = c.eval.grid2;
-        let u = i as f32 * gu.step() + gu.d[0];
-        let v = j as f32 * gv.step() + gv.d[0];
-        c.eval_coord(u, Some(v));
+        c.eval_point2(i, j);
         Ok(())
     })
 }
@@ -482,12 +479,8 @@ fn get_map(target: GLenum, query: GLenum) -> Vec<f64> {
 /// `v` must be NULL or writable for the values of `query`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) {
-    for (i, x) in get_map(target, query).into_iter().enumerate() {
-        if !v.is_null() {
-            // SAFETY: the caller promises room for the values.
-            unsafe { *v.add(i) = x };
-        }
-    }
+    // SAFETY: the caller promises room for the values.
+    unsafe { write_all(v, &get_map(target, query), |x| x) }
 }
 
 /// glGetMapfv.
@@ -496,12 +489,8 @@ pub unsafe extern "C" fn glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdou
 /// `v` must be NULL or writable for the values of `query`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) {
-    for (i, x) in get_map(target, query).into_iter().enumerate() {
-        if !v.is_null() {
-            // SAFETY: the caller promises room for the values.
-            unsafe { *v.add(i) = x as f32 };
-        }
-    }
+    // SAFETY: the caller promises room for the values.
+    unsafe { write_all(v, &get_map(target, query), |x| x as f32) }
 }
 
 /// glGetMapiv (coefficients and domain rounded to the nearest integer).
@@ -510,17 +499,9 @@ pub unsafe extern "C" fn glGetMapfv(target: GLenum, query: GLenum, v: *mut GLflo
 /// `v` must be NULL or writable for the values of `query`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) {
-    let vals = get_map(target, query);
+    // Coefficients and domain are rounded to the nearest integer, the order is exact.
     let round = query != GL_ORDER;
-    for (i, x) in vals.into_iter().enumerate() {
-        if !v.is_null() {
-            let x = if round {
-                (x as f32 + 0.5).floor()
-            } else {
-                x as f32
-            };
-            // SAFETY: the caller promises room for the values.
-            unsafe { *v.add(i) = x as GLint };
-        }
-    }
+    let conv = |x: f64| if round { (x as f32 + 0.5).floor() } else { x as f32 } as GLint;
+    // SAFETY: the caller promises room for the values.
+    unsafe { write_all(v, &get_map(target, query), conv) }
 }

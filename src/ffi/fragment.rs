@@ -133,9 +133,7 @@ pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 #[no_mangle]
 pub extern "C" fn glAlphaFunc(func: GLenum, ref_: GLclampf) {
     with_ctx_list(move |c| {
-        let f = CompareFunc::from_gl(func)?;
-        c.state.frag.alpha_func = f;
-        c.state.frag.alpha_ref = ref_;
+        c.alpha_func(CompareFunc::from_gl(func)?, ref_);
         Ok(())
     })
 }

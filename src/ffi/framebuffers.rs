@@ -5,22 +5,11 @@
 //! are here too; the other EXT names are aliases (`aliases_ext.rs`).
 #![allow(non_snake_case)]
 
+use super::client::read_vec;
+use super::families::c_fns;
 use super::types::*;
 use super::{non_negative, with_ctx, with_ctx_list};
-pub(crate) use crate::context::fbo_api::object_buffer;
 use crate::context::Context;
-
-/// Reads `n` names (empty when `p` is null).
-///
-/// # Safety
-/// `p` must be readable for `n` names or null.
-unsafe fn read_names(n: usize, p: *const GLuint) -> Vec<u32> {
-    if p.is_null() {
-        return Vec::new();
-    }
-    // SAFETY: the caller promises n readable names.
-    unsafe { std::slice::from_raw_parts(p, n) }.to_vec()
-}
 
 /// glGenFramebuffers.
 ///
@@ -56,101 +45,23 @@ pub unsafe extern "C" fn glDeleteFramebuffers(n: GLsizei, framebuffers: *const G
     with_ctx(|c| {
         let n = non_negative(n)?;
         // SAFETY: the caller promises n readable names.
-        c.delete_framebuffers(&unsafe { read_names(n, framebuffers) });
+        c.delete_framebuffers(&unsafe { read_vec(framebuffers, n) });
         Ok(())
     })
 }
 
-/// glBindFramebuffer (the compatibility profile, like the EXT call, takes names never
-/// generated; only a core profile refuses them, as Mesa does).
-#[no_mangle]
-pub extern "C" fn glBindFramebuffer(target: GLenum, framebuffer: GLuint) {
-    with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true))
-}
-
-/// glBindFramebufferEXT (any name creates an object).
-#[no_mangle]
-pub extern "C" fn glBindFramebufferEXT(target: GLenum, framebuffer: GLuint) {
-    with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true))
-}
-
-/// glIsFramebuffer: true for names of objects that have been bound.
-#[no_mangle]
-pub extern "C" fn glIsFramebuffer(framebuffer: GLuint) -> GLboolean {
-    with_ctx(|c| Ok(c.is_framebuffer(framebuffer) as GLboolean))
-}
-
-/// glCheckFramebufferStatus.
-#[no_mangle]
-pub extern "C" fn glCheckFramebufferStatus(target: GLenum) -> GLenum {
-    with_ctx(|c| c.check_framebuffer_status(target))
-}
-
-/// glFramebufferTexture1D.
-#[no_mangle]
-pub extern "C" fn glFramebufferTexture1D(
-    target: GLenum,
-    attachment: GLenum,
-    textarget: GLenum,
-    texture: GLuint,
-    level: GLint,
-) {
-    with_ctx(|c| {
-        c.framebuffer_texture(
-            target,
-            attachment,
-            Some(textarget),
-            Some(1),
-            texture,
-            level,
-            0,
-        )
-    })
-}
-
-/// glFramebufferTexture2D.
-#[no_mangle]
-pub extern "C" fn glFramebufferTexture2D(
-    target: GLenum,
-    attachment: GLenum,
-    textarget: GLenum,
-    texture: GLuint,
-    level: GLint,
-) {
-    with_ctx(|c| {
-        c.framebuffer_texture(
-            target,
-            attachment,
-            Some(textarget),
-            Some(2),
-            texture,
-            level,
-            0,
-        )
-    })
-}
-
-/// glFramebufferTexture3D: slice `zoffset` of a 3D texture.
-#[no_mangle]
-pub extern "C" fn glFramebufferTexture3D(
-    target: GLenum,
-    attachment: GLenum,
-    textarget: GLenum,
-    texture: GLuint,
-    level: GLint,
-    zoffset: GLint,
-) {
-    with_ctx(|c| {
-        c.framebuffer_texture(
-            target,
-            attachment,
-            Some(textarget),
-            Some(3),
-            texture,
-            level,
-            zoffset,
-        )
-    })
+c_fns! {
+    /// glBindFramebuffer (the compatibility profile, like the EXT call, takes names never
+    /// generated; only a core profile refuses them, as Mesa does).
+    safe fn glBindFramebuffer(target: GLenum, framebuffer: GLuint) => with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true));
+    /// glBindFramebufferEXT (any name creates an object).
+    safe fn glBindFramebufferEXT(target: GLenum, framebuffer: GLuint) => with_ctx(|c| c.bind_framebuffer_object(target, framebuffer, true));
+    /// glIsFramebuffer: true for names of objects that have been bound.
+    safe fn glIsFramebuffer(framebuffer: GLuint) -> GLboolean => with_ctx(|c| Ok(c.is_framebuffer(framebuffer) as GLboolean));
+    safe fn glCheckFramebufferStatus(target: GLenum) -> GLenum => with_ctx(|c| c.check_framebuffer_status(target));
+    safe fn glFramebufferTexture1D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) => with_ctx(|c| c.framebuffer_texture(target, attachment, Some(textarget), Some(1), texture, level, 0));
+    safe fn glFramebufferTexture2D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) => with_ctx(|c| c.framebuffer_texture(target, attachment, Some(textarget), Some(2), texture, level, 0));
+    safe fn glFramebufferTexture3D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint) => with_ctx(|c| c.framebuffer_texture(target, attachment, Some(textarget), Some(3), texture, level, zoffset));
 }
 
 /// glFramebufferTextureLayer: layer `layer` of a 3D texture.
@@ -195,26 +106,17 @@ pub unsafe extern "C" fn glDeleteRenderbuffers(n: GLsizei, renderbuffers: *const
     with_ctx(|c| {
         let n = non_negative(n)?;
         // SAFETY: the caller promises n readable names.
-        c.delete_renderbuffers(&unsafe { read_names(n, renderbuffers) })
+        c.delete_renderbuffers(&unsafe { read_vec(renderbuffers, n) })
     })
 }
 
-/// glBindRenderbuffer (names never generated are taken, as by glBindFramebuffer).
-#[no_mangle]
-pub extern "C" fn glBindRenderbuffer(target: GLenum, renderbuffer: GLuint) {
-    with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true))
-}
-
-/// glBindRenderbufferEXT (any name creates an object).
-#[no_mangle]
-pub extern "C" fn glBindRenderbufferEXT(target: GLenum, renderbuffer: GLuint) {
-    with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true))
-}
-
-/// glIsRenderbuffer: true for names of objects that have been bound.
-#[no_mangle]
-pub extern "C" fn glIsRenderbuffer(renderbuffer: GLuint) -> GLboolean {
-    with_ctx(|c| Ok(c.is_renderbuffer(renderbuffer) as GLboolean))
+c_fns! {
+    /// glBindRenderbuffer (names never generated are taken, as by glBindFramebuffer).
+    safe fn glBindRenderbuffer(target: GLenum, renderbuffer: GLuint) => with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true));
+    /// glBindRenderbufferEXT (any name creates an object).
+    safe fn glBindRenderbufferEXT(target: GLenum, renderbuffer: GLuint) => with_ctx(|c| c.bind_renderbuffer(target, renderbuffer, true));
+    /// glIsRenderbuffer: true for names of objects that have been bound.
+    safe fn glIsRenderbuffer(renderbuffer: GLuint) -> GLboolean => with_ctx(|c| Ok(c.is_renderbuffer(renderbuffer) as GLboolean));
 }
 
 /// glRenderbufferStorage.
@@ -300,23 +202,9 @@ pub extern "C" fn glBlitFramebuffer(
     })
 }
 
-/// glBlitFramebufferEXT (GL_EXT_framebuffer_blit; Mesa resolves it through
-/// OSMesaGetProcAddress without exporting it).
-#[no_mangle]
-#[allow(clippy::too_many_arguments)]
-pub extern "C" fn glBlitFramebufferEXT(
-    srcX0: GLint,
-    srcY0: GLint,
-    srcX1: GLint,
-    srcY1: GLint,
-    dstX0: GLint,
-    dstY0: GLint,
-    dstX1: GLint,
-    dstY1: GLint,
-    mask: GLbitfield,
-    filter: GLenum,
-) {
-    glBlitFramebuffer(
-        srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1, mask, filter,
-    )
+c_fns! {
+    /// glBlitFramebufferEXT (GL_EXT_framebuffer_blit; Mesa resolves it through
+    /// OSMesaGetProcAddress without exporting it).
+    #[allow(clippy::too_many_arguments)]
+    safe fn glBlitFramebufferEXT(srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum) = framebuffers::glBlitFramebuffer;
 }

@@ -12,11 +12,12 @@ use crate::context::state::Primitive;
 /// glBegin.
 #[no_mangle]
 pub extern "C" fn glBegin(mode: GLenum) {
-    match Primitive::from_gl(mode) {
-        Ok(m) => with_ctx_vertex(VertexOp::Begin(m)),
+    let m = match Primitive::from_gl(mode) {
+        Ok(m) => m,
         // An invalid mode is compiled as the error it raises when the list runs.
-        Err(e) => with_ctx_list(move |_| Err(e)),
-    }
+        Err(e) => return with_ctx_list(move |_| Err(e)),
+    };
+    with_ctx_vertex(VertexOp::Begin(m))
 }
 
 /// glEnd: draws the vertices given since glBegin (or defers them to merge with the next

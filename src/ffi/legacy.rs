@@ -10,7 +10,6 @@ use super::types::*;
 use super::{with_ctx, with_ctx_list, with_ctx_vertex};
 use crate::context::dlist::VertexOp;
 use crate::context::error::GlError;
-use crate::context::legacy_state::ColorBuffer;
 
 /// Sets the current colour index (allowed between glBegin and glEnd).
 fn index(i: f32) {
@@ -70,34 +69,13 @@ pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
 /// buffer (front, back, left, front-and-back) draws into it, as Mesa's OSMesa does.
 #[no_mangle]
 pub extern "C" fn glDrawBuffer(mode: GLenum) {
-    with_ctx_list(move |c| {
-        if c.fbo.draw != 0 {
-            let b = crate::ffi::framebuffers::object_buffer(mode)?;
-            return c.fbo_edit(|c| {
-                let name = c.fbo.draw;
-                if let Some(f) = c.fbo.object_mut(name) {
-                    f.draw_buffer = b;
-                }
-                Ok(())
-            });
-        }
-        c.state.legacy.draw_buffer = ColorBuffer::from_gl(mode)?;
-        Ok(())
-    })
+    with_ctx_list(move |c| c.draw_buffer(mode))
 }
 
 /// glReadBuffer: GL_NONE makes colour reads GL_INVALID_OPERATION.
 #[no_mangle]
 pub extern "C" fn glReadBuffer(mode: GLenum) {
-    with_ctx_list(move |c| {
-        let read = c.fbo.read;
-        if let Some(f) = c.fbo.object_mut(read) {
-            f.read_buffer = crate::ffi::framebuffers::object_buffer(mode)?;
-            return Ok(());
-        }
-        c.state.legacy.read_buffer = ColorBuffer::from_gl(mode)?;
-        Ok(())
-    })
+    with_ctx_list(move |c| c.read_buffer(mode))
 }
 
 /// An ARB_imaging call: Mesa has no imaging subset, so its dispatch reports

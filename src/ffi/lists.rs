@@ -99,11 +99,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
         Ok(_) => unsafe { read_names(n as usize, type_, lists) },
     };
     with_ctx_list_anywhere(move |c| {
-        let names = names.as_ref().map_err(|e| *e)?;
-        let base = c.lists.base;
-        for &k in names {
-            c.call_list(base.wrapping_add(k));
-        }
+        c.call_lists(names.as_ref().map_err(|e| *e)?);
         Ok(())
     })
 }

@@ -6,10 +6,12 @@
 
 #![allow(non_camel_case_types, non_snake_case)]
 
+use super::client::write_one;
 use super::enums::*;
+use super::families::c_fns;
 use super::types::*;
 use crate::context::share::ShareGroup;
-use crate::context::{Context, Visual};
+use crate::context::{Context, GlError, GlResult, Visual};
 use crate::framebuffer::{ColorFormat, DepthFormat};
 use libc::{c_char, c_int, c_void};
 use std::cell::{Cell, UnsafeCell};
@@ -144,6 +146,11 @@ fn default_type(format: GLenum) -> GLenum {
     }
 }
 
+/// `f()`, or `fallback` when it panics (no panic crosses the C boundary).
+fn no_panic<R>(fallback: R, f: impl FnOnce() -> R) -> R {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or(fallback)
+}
+
 /// Creates a context from parsed attributes (Mesa's `OSMesaCreateContextAttribs` rules).
 fn create(
     format: GLenum,
@@ -214,10 +221,44 @@ pub extern "C" fn OSMesaCreateContextExt(
     accumBits: GLint,
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        create(format, depthBits, stencilBits, accumBits, sharelist)
-    }))
-    .unwrap_or(std::ptr::null_mut())
+    let make = || create(format, depthBits, stencilBits, accumBits, sharelist);
+    no_panic(std::ptr::null_mut(), make)
+}
+
+/// The format, depth, stencil and accumulation bits of an OSMesaCreateContextAttribs
+/// list; `None` for an unknown key, a core profile or a version above 1.5 (softgl
+/// implements the GL 1.5 compatibility profile).
+///
+/// # Safety
+/// `list` must be NULL or point to a zero-terminated list of int pairs.
+unsafe fn parse_attribs(list: *const c_int) -> Option<(GLenum, c_int, c_int, c_int)> {
+    let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 0, 0, 0);
+    let (mut major, mut minor) = (1, 0);
+    if list.is_null() {
+        return Some((format, depth, stencil, accum));
+    }
+    let mut i = 0usize;
+    loop {
+        // SAFETY: the list is zero-terminated (caller contract); we stop at the key 0.
+        let key = unsafe { *list.add(i) };
+        if key == 0 {
+            break;
+        }
+        // SAFETY: every non-zero key is followed by its value.
+        let val = unsafe { *list.add(i + 1) };
+        match key {
+            OSMESA_FORMAT => format = val as GLenum,
+            OSMESA_DEPTH_BITS => depth = val,
+            OSMESA_STENCIL_BITS => stencil = val,
+            OSMESA_ACCUM_BITS => accum = val,
+            OSMESA_PROFILE if val == OSMESA_COMPAT_PROFILE => {}
+            OSMESA_CONTEXT_MAJOR_VERSION => major = val,
+            OSMESA_CONTEXT_MINOR_VERSION => minor = val,
+            _ => return None,
+        }
+        i += 2;
+    }
+    ((major, minor) <= (1, 5)).then_some((format, depth, stencil, accum))
 }
 
 /// OSMesaCreateContextAttribs: a zero-terminated key/value list. softgl implements the GL
@@ -230,84 +271,61 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attribList: *const c_int,
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 0, 0, 0);
-    let (mut major, mut minor) = (1, 0);
-    if !attribList.is_null() {
-        let mut i = 0usize;
-        loop {
-            // SAFETY: the list is zero-terminated (caller contract); we stop at the key 0.
-            let key = unsafe { *attribList.add(i) };
-            if key == 0 {
-                break;
-            }
-            // SAFETY: every non-zero key is followed by its value.
-            let val = unsafe { *attribList.add(i + 1) };
-            match key {
-                OSMESA_FORMAT => format = val as GLenum,
-                OSMESA_DEPTH_BITS => depth = val,
-                OSMESA_STENCIL_BITS => stencil = val,
-                OSMESA_ACCUM_BITS => accum = val,
-                OSMESA_PROFILE => {
-                    if val != OSMESA_COMPAT_PROFILE {
-                        return std::ptr::null_mut();
-                    }
-                }
-                OSMESA_CONTEXT_MAJOR_VERSION => major = val,
-                OSMESA_CONTEXT_MINOR_VERSION => minor = val,
-                _ => return std::ptr::null_mut(),
-            }
-            i += 2;
+    // SAFETY: forwarded caller contract.
+    match unsafe { parse_attribs(attribList) } {
+        Some((format, depth, stencil, accum)) => {
+            OSMesaCreateContextExt(format, depth, stencil, accum, sharelist)
         }
+        None => std::ptr::null_mut(),
     }
-    if (major, minor) > (1, 5) {
-        return std::ptr::null_mut();
+}
+
+/// Unregisters `ctx` and frees it, unless another thread has it current (that thread
+/// frees it when it lets go).
+fn destroy(ctx: OSMesaContext) {
+    let Ok(mut live) = LIVE.lock() else { return };
+    let Some(pos) = live.iter().position(|&p| p == ctx as usize) else {
+        return;
+    };
+    live.swap_remove(pos);
+    drop(live);
+    // SAFETY: `ctx` was registered in LIVE, so it is a valid, not yet freed context (only
+    // this call, which removed it, or its owner after ORPHAN is set, frees it).
+    let c = unsafe { &*ctx };
+    if CURRENT_HANDLE.with(|h| h.get()) == ctx {
+        flush_current();
+        // SAFETY: current on this thread, so this thread has the only reference.
+        c.group.check_in(unsafe { &mut *c.ctx.get() });
+        CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
+        super::set_current(std::ptr::null_mut());
+        c.owner.store(0, Ordering::Release);
     }
-    OSMesaCreateContextExt(format, depth, stencil, accum, sharelist)
+    // Claims (made under the LIVE lock) are over; if another thread has it current,
+    // that thread frees it when it lets go. Do not touch `c` after this otherwise.
+    if c.owner.fetch_or(ORPHAN, Ordering::AcqRel) == 0 {
+        if crate::tuning::tuning().stats {
+            // The knobs in effect, once per process, before the first counters.
+            static TUNING_SHOWN: std::sync::Once = std::sync::Once::new();
+            TUNING_SHOWN.call_once(|| {
+                eprintln!(
+                    "softgl tuning (instruction set in effect: {}):\n{}",
+                    crate::cpu::level().name(),
+                    crate::tuning::tuning().report().trim_end()
+                );
+            });
+            // SAFETY: no thread has this context current (checked above).
+            eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
+        }
+        // SAFETY: unregistered above and current on no thread: nobody else can reach it.
+        drop(unsafe { Box::from_raw(ctx) });
+    }
 }
 
 /// OSMesaDestroyContext. A context current on another thread is not freed (that would
 /// leave the other thread a dangling context); it is only unregistered.
 #[no_mangle]
-#[allow(clippy::not_unsafe_ptr_arg_deref)] // the handle is checked against LIVE first
 pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
-    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        let Ok(mut live) = LIVE.lock() else { return };
-        let Some(pos) = live.iter().position(|&p| p == ctx as usize) else {
-            return;
-        };
-        live.swap_remove(pos);
-        drop(live);
-        // SAFETY: `ctx` was registered in LIVE, so it is a valid, not yet freed context (only
-        // this call, which removed it, or its owner after ORPHAN is set, frees it).
-        let c = unsafe { &*ctx };
-        if CURRENT_HANDLE.with(|h| h.get()) == ctx {
-            flush_current();
-            // SAFETY: current on this thread, so this thread has the only reference.
-            c.group.check_in(unsafe { &mut *c.ctx.get() });
-            CURRENT_HANDLE.with(|h| h.set(std::ptr::null_mut()));
-            super::set_current(std::ptr::null_mut());
-            c.owner.store(0, Ordering::Release);
-        }
-        // Claims (made under the LIVE lock) are over; if another thread has it current,
-        // that thread frees it when it lets go. Do not touch `c` after this otherwise.
-        if c.owner.fetch_or(ORPHAN, Ordering::AcqRel) == 0 {
-            if crate::tuning::tuning().stats {
-                // The knobs in effect, once per process, before the first counters.
-                static TUNING_SHOWN: std::sync::Once = std::sync::Once::new();
-                TUNING_SHOWN.call_once(|| {
-                    eprintln!(
-                        "softgl tuning (instruction set in effect: {}):\n{}",
-                        crate::cpu::level().name(),
-                        crate::tuning::tuning().report().trim_end()
-                    );
-                });
-                // SAFETY: no thread has this context current (checked above).
-                eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
-            }
-            // SAFETY: unregistered above and current on no thread: nobody else can reach it.
-            drop(unsafe { Box::from_raw(ctx) });
-        }
-    }));
+    no_panic((), || destroy(ctx))
 }
 
 /// OSMesaMakeCurrent: binds `ctx` to this thread and `buffer` as its colour buffer.
@@ -325,10 +343,9 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     width: GLsizei,
     height: GLsizei,
 ) -> GLboolean {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+    no_panic(GL_FALSE as GLboolean, || {
         make_current(ctx, buffer, type_, width, height)
-    }))
-    .unwrap_or(GL_FALSE as GLboolean)
+    })
 }
 
 /// Draws the deferred immediate-mode batch of the context current on this thread.
@@ -433,17 +450,38 @@ pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
     CURRENT_HANDLE.with(|h| h.get())
 }
 
-/// OSMesaPixelStore: OSMESA_ROW_LENGTH (pixels, 0 = width) and OSMESA_Y_UP for the current
-/// context.
-#[no_mangle]
-pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
-    super::with_ctx_anywhere(|c| match pname {
+/// OSMesaPixelStore on the context current on this thread.
+fn pixel_store(c: &mut Context, pname: GLint, value: GLint) -> GlResult<()> {
+    match pname {
         OSMESA_ROW_LENGTH => c.set_user_row_length(value),
         OSMESA_Y_UP => {
             c.set_user_y_up(value != 0);
             Ok(())
         }
-        _ => Err(crate::context::GlError::InvalidEnum),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// OSMesaPixelStore: OSMESA_ROW_LENGTH (pixels, 0 = width) and OSMESA_Y_UP for the current
+/// context.
+#[no_mangle]
+pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
+    super::with_ctx_anywhere(|c| pixel_store(c, pname, value))
+}
+
+/// An OSMesaGetIntegerv value of the context current on this thread.
+fn buffer_parameter(c: &Context, pname: GLint) -> GlResult<GLint> {
+    let handle = OSMesaGetCurrentContext();
+    Ok(match pname {
+        OSMESA_WIDTH => c.target.width as GLint,
+        OSMESA_HEIGHT => c.target.height as GLint,
+        // SAFETY: the current handle is live while its context is current.
+        OSMESA_FORMAT => unsafe { &*handle }.format as GLint,
+        OSMESA_TYPE => c.target.ty as GLint,
+        OSMESA_ROW_LENGTH => c.target.row_length,
+        OSMESA_Y_UP => c.target.y_up as GLint,
+        OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => MAX_SIZE,
+        _ => return Err(GlError::InvalidEnum),
     })
 }
 
@@ -456,108 +494,71 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
     if value.is_null() {
         return;
     }
-    let handle = OSMesaGetCurrentContext();
-    let v = super::with_ctx_anywhere(|c| {
-        Ok(Some(match pname {
-            OSMESA_WIDTH => c.target.width as GLint,
-            OSMESA_HEIGHT => c.target.height as GLint,
-            // SAFETY: the current handle is live while its context is current.
-            OSMESA_FORMAT => unsafe { &*handle }.format as GLint,
-            OSMESA_TYPE => c.target.ty as GLint,
-            OSMESA_ROW_LENGTH => c.target.row_length,
-            OSMESA_Y_UP => c.target.y_up as GLint,
-            OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => MAX_SIZE,
-            _ => return Err(crate::context::GlError::InvalidEnum),
-        }))
-    });
-    if let Some(v) = v {
+    if let Some(v) = super::with_ctx_anywhere(|c| buffer_parameter(c, pname).map(Some)) {
         // SAFETY: checked non-null; the caller promises it is writable.
-        unsafe { *value = v };
+        unsafe { write_one(value, v) };
     }
 }
 
-/// OSMesaGetDepthBuffer: a copy of the depth buffer (bottom-up rows; 4 bytes per value
-/// for 24-bit depth with stencil in the high byte, 2 for 16-bit), refreshed at each flush.
+/// Whether there is a buffer, and its width, height, format or bytes per value, and
+/// address (zeros and NULL for no context).
+type BufferInfo = (bool, [GLint; 3], *mut c_void);
+
+/// No buffer: zeros and NULL.
+const NO_BUFFER: BufferInfo = (false, [0; 3], std::ptr::null_mut());
+
+/// The depth buffer copy of a live handle (see [`OSMesaGetDepthBuffer`]).
+fn depth_buffer(c: OSMesaContext) -> BufferInfo {
+    if !is_live(c) {
+        return NO_BUFFER;
+    }
+    // SAFETY: live handle. Reading the context from another thread while it draws would
+    // race; Mesa has the same contract (call it from the rendering thread).
+    match unsafe { &mut *(*c).ctx.get() }.depth_buffer_view() {
+        Some((w, h, bytes, p)) => (true, [w, h, bytes], p),
+        None => NO_BUFFER,
+    }
+}
+
+/// The user buffer a live handle was bound to by OSMesaMakeCurrent (its numbers are
+/// reported even before it has one, when the call answers GL_FALSE).
+fn color_buffer(c: OSMesaContext) -> BufferInfo {
+    if !is_live(c) {
+        return NO_BUFFER;
+    }
+    // SAFETY: live handle; only plain fields are read.
+    let h = unsafe { &*c };
+    // SAFETY: as above.
+    let t = unsafe { &*h.ctx.get() }.target;
+    let nums = [t.width as GLint, t.height as GLint, h.format as GLint];
+    (t.ptr != 0, nums, t.ptr as *mut c_void)
+}
+
+/// Writes a buffer's three numbers and address through the out pointers that are not
+/// NULL; GL_TRUE when there is a buffer.
 ///
 /// # Safety
 /// The out pointers must be NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn OSMesaGetDepthBuffer(
-    c: OSMesaContext,
-    width: *mut GLint,
-    height: *mut GLint,
-    bytesPerValue: *mut GLint,
+unsafe fn write_buffer_info(
+    (ok, nums, p): BufferInfo,
+    out: [*mut GLint; 3],
     buffer: *mut *mut c_void,
 ) -> GLboolean {
-    let view = if is_live(c) {
-        // SAFETY: live handle. Reading the context from another thread while it draws would
-        // race; Mesa has the same contract (call it from the rendering thread).
-        unsafe { &mut *(*c).ctx.get() }.depth_buffer_view()
-    } else {
-        None
-    };
-    let ok = view.is_some();
-    let out = view.unwrap_or((0, 0, 0, std::ptr::null_mut()));
-    // SAFETY: each out pointer is checked for NULL; the caller promises writability.
+    // SAFETY: the caller promises each out pointer is NULL or writable.
     unsafe {
-        if !width.is_null() {
-            *width = out.0;
-        }
-        if !height.is_null() {
-            *height = out.1;
-        }
-        if !bytesPerValue.is_null() {
-            *bytesPerValue = out.2;
-        }
-        if !buffer.is_null() {
-            *buffer = out.3;
-        }
+        out.iter().zip(nums).for_each(|(&o, v)| write_one(o, v));
+        write_one(buffer, p);
     }
     ok as GLboolean
 }
 
-/// OSMesaGetColorBuffer: the user buffer bound by OSMesaMakeCurrent.
-///
-/// # Safety
-/// The out pointers must be NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn OSMesaGetColorBuffer(
-    c: OSMesaContext,
-    width: *mut GLint,
-    height: *mut GLint,
-    format: *mut GLint,
-    buffer: *mut *mut c_void,
-) -> GLboolean {
-    let mut out = (0, 0, 0, std::ptr::null_mut::<c_void>());
-    let ok = is_live(c) && {
-        // SAFETY: live handle; only plain fields are read.
-        let h = unsafe { &*c };
-        // SAFETY: as above.
-        let t = unsafe { &*h.ctx.get() }.target;
-        out = (
-            t.width as GLint,
-            t.height as GLint,
-            h.format as GLint,
-            t.ptr as *mut c_void,
-        );
-        t.ptr != 0
-    };
-    // SAFETY: each out pointer is checked for NULL; the caller promises writability.
-    unsafe {
-        if !width.is_null() {
-            *width = out.0;
-        }
-        if !height.is_null() {
-            *height = out.1;
-        }
-        if !format.is_null() {
-            *format = out.2;
-        }
-        if !buffer.is_null() {
-            *buffer = out.3;
-        }
-    }
-    ok as GLboolean
+c_fns! {
+    /// OSMesaGetDepthBuffer: a copy of the depth buffer (bottom-up rows; 4 bytes per value
+    /// for 24-bit depth with stencil in the high byte, 2 for 16-bit), refreshed at each
+    /// flush.
+    unsafe fn OSMesaGetDepthBuffer(c: OSMesaContext, width: *mut GLint, height: *mut GLint, bytesPerValue: *mut GLint, buffer: *mut *mut c_void) -> GLboolean => write_buffer_info(depth_buffer(c), [width, height, bytesPerValue], buffer);
+    /// OSMesaGetColorBuffer: the user buffer bound by OSMesaMakeCurrent.
+    unsafe fn OSMesaGetColorBuffer(c: OSMesaContext, width: *mut GLint, height: *mut GLint, format: *mut GLint, buffer: *mut *mut c_void) -> GLboolean => write_buffer_info(color_buffer(c), [width, height, format], buffer);
 }
 
 /// OSMesaColorClamp: accepted. Mesa sets GL_CLAMP_FRAGMENT_COLOR (TRUE or FIXED_ONLY);

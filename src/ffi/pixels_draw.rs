@@ -7,9 +7,9 @@
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
+use crate::context::bitmap_read::bitmap_bits;
 use crate::context::pack::draw_image::Layout;
 use crate::context::pixel_transfer::{is_index_map, map_index};
-use crate::pixels::image::Pixels;
 
 /// Reads the current unpack state from the context (default state without one).
 fn unpack_state() -> crate::context::state::PixelStore {
@@ -61,19 +61,8 @@ pub unsafe extern "C" fn glBitmap(
     bitmap_: *const GLubyte,
 ) {
     let ps = unpack_state();
-    let bits: Vec<bool> = if width > 0 && height > 0 {
-        let l = Layout::new(GL_COLOR_INDEX, GL_BITMAP).expect("a valid layout");
-        // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
-        match unsafe { l.decode(&ps, width as usize, height as usize, bitmap_) } {
-            Some(img) => match img.pixels {
-                Pixels::Index(v) => v.iter().map(|&b| b != 0).collect(),
-                _ => Vec::new(),
-            },
-            None => Vec::new(),
-        }
-    } else {
-        Vec::new()
-    };
+    // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
+    let bits = unsafe { bitmap_bits(&ps, (width, height), bitmap_) };
     let (orig, mv) = ([xorig, yorig], [xmove, ymove]);
     with_ctx_list(move |c| c.draw_bitmap((width, height), orig, mv, &bits))
 }
@@ -136,21 +125,36 @@ pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *co
     }
 }
 
+/// glPixelMapuiv and glPixelMapusv: integers scaled by `max` (the type's largest value),
+/// except for the index maps.
+///
+/// # Safety
+/// `values` must be null or readable for `mapsize` values.
+unsafe fn pixel_map_ints<T: Copy + Into<f64>>(
+    map: GLenum,
+    mapsize: GLsizei,
+    values: *const T,
+    max: f64,
+) {
+    // SAFETY: the caller promises `mapsize` values.
+    match unsafe { read_values(values, mapsize) } {
+        Some(v) => {
+            let v: Vec<f64> = v.into_iter().map(Into::into).collect();
+            pixel_map(map, from_ints(map, &v, max))
+        }
+        None if !(1..=256).contains(&mapsize) => bad_size(map),
+        None => {}
+    }
+}
+
 /// glPixelMapuiv.
 ///
 /// # Safety
 /// `values` must be null or readable for `mapsize` values.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
-    // SAFETY: the caller promises `mapsize` values.
-    match unsafe { read_values(values, mapsize) } {
-        Some(v) => {
-            let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-            pixel_map(map, from_ints(map, &v, u32::MAX as f64))
-        }
-        None if !(1..=256).contains(&mapsize) => bad_size(map),
-        None => {}
-    }
+    // SAFETY: forwarded caller contract.
+    unsafe { pixel_map_ints(map, mapsize, values, u32::MAX as f64) }
 }
 
 /// glPixelMapusv.
@@ -159,15 +163,8 @@ pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *c
 /// `values` must be null or readable for `mapsize` values.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
-    // SAFETY: the caller promises `mapsize` values.
-    match unsafe { read_values(values, mapsize) } {
-        Some(v) => {
-            let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-            pixel_map(map, from_ints(map, &v, u16::MAX as f64))
-        }
-        None if !(1..=256).contains(&mapsize) => bad_size(map),
-        None => {}
-    }
+    // SAFETY: forwarded caller contract.
+    unsafe { pixel_map_ints(map, mapsize, values, u16::MAX as f64) }
 }
 
 /// Writes map `map`'s values through `put(i, value, is_index_map)`.

@@ -2,6 +2,7 @@
 //! aliases. Only GL_SAMPLES_PASSED is a query target in GL 1.5.
 #![allow(non_snake_case)]
 
+use super::client::write_all;
 use super::families::c_fns;
 use super::glext_enums::*;
 use super::types::*;
@@ -28,12 +29,8 @@ pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
         // Mesa makes no names when there is nowhere to put them.
         c.gen_queries(if ids.is_null() { 0 } else { n })
     });
-    if !ids.is_null() {
-        for (i, name) in names.into_iter().enumerate() {
-            // SAFETY: the caller promises room for n names.
-            unsafe { *ids.add(i) = name };
-        }
-    }
+    // SAFETY: the caller promises room for n names.
+    unsafe { write_all(ids, &names, |x| x) }
 }
 
 /// glDeleteQueries.

@@ -30,8 +30,7 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
     with_ctx_list(move |c| {
-        c.raster.line.stipple_repeat = factor.clamp(1, 256) as u32;
-        c.raster.line.stipple_pattern = pattern;
+        c.line_stipple(factor, pattern);
         Ok(())
     })
 }
@@ -46,15 +45,8 @@ pub extern "C" fn glPointSize(size: GLfloat) {
 #[no_mangle]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
     with_ctx_list(move |c| {
-        let face = Face::from_gl(face)?;
-        let mode = FillMode::from_gl(mode)?;
-        let p = &mut c.raster.polygon;
-        if face != Face::Back {
-            p.mode_front = mode;
-        }
-        if face != Face::Front {
-            p.mode_back = mode;
-        }
+        let (face, mode) = (Face::from_gl(face)?, FillMode::from_gl(mode)?);
+        c.polygon_mode(face, mode);
         Ok(())
     })
 }
@@ -63,20 +55,8 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
     with_ctx_list(move |c| {
-        c.raster.polygon.offset_factor = factor;
-        c.raster.polygon.offset_units = units;
+        c.polygon_offset(factor, units);
         Ok(())
-    })
-}
-
-/// Reads the 32x32 stipple from 128 bytes (rows bottom-up, 4 bytes each).
-fn stipple_from_bytes(b: &[u8; 128], lsb_first: bool) -> [u32; 32] {
-    std::array::from_fn(|r| {
-        let mut row = [b[4 * r], b[4 * r + 1], b[4 * r + 2], b[4 * r + 3]];
-        if lsb_first {
-            row = row.map(u8::reverse_bits);
-        }
-        u32::from_be_bytes(row)
     })
 }
 
@@ -86,19 +66,10 @@ fn stipple_from_bytes(b: &[u8; 128], lsb_first: bool) -> [u32; 32] {
 /// `mask` must be NULL or readable for 128 bytes.
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
-    let bytes: Option<[u8; 128]> = (!mask.is_null()).then(|| {
-        let mut b = [0u8; 128];
-        // SAFETY: the GL contract makes `mask` point to a 32x32 bitmap (128 bytes); it was
-        // checked for NULL.
-        unsafe { std::ptr::copy_nonoverlapping(mask, b.as_mut_ptr(), 128) };
-        b
-    });
-    with_ctx_list(move |c| {
-        if let Some(b) = bytes {
-            c.raster.stipple.0 = stipple_from_bytes(&b, c.state.unpack.lsb_first);
-        }
-        Ok(())
-    })
+    // SAFETY: the GL contract makes a non-NULL `mask` point to a 32x32 bitmap (128 bytes).
+    let bytes: Option<[u8; 128]> =
+        (!mask.is_null()).then(|| unsafe { mask.cast::<[u8; 128]>().read_unaligned() });
+    with_ctx_list(move |c| c.polygon_stipple(bytes.as_ref()))
 }
 
 /// glGetPolygonStipple (honours GL_PACK_LSB_FIRST; a NULL mask is ignored).
@@ -107,20 +78,10 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 /// `mask` must be NULL or writable for 128 bytes.
 #[no_mangle]
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
-    let rows = with_ctx(|c| {
-        let lsb = c.state.pack.lsb_first;
-        Ok(Some(c.raster.stipple.0.map(|r| {
-            let b = r.to_be_bytes();
-            if lsb {
-                b.map(u8::reverse_bits)
-            } else {
-                b
-            }
-        })))
-    });
+    let rows = with_ctx(|c| Ok(Some(c.polygon_stipple_rows())));
     if let (Some(rows), false) = (rows, mask.is_null()) {
         // SAFETY: the GL contract makes `mask` writable for 128 bytes; checked for NULL.
-        unsafe { std::ptr::copy_nonoverlapping(rows.as_ptr().cast::<u8>(), mask, 128) };
+        unsafe { mask.cast::<[[u8; 4]; 32]>().write_unaligned(rows) };
     }
 }
 

@@ -4,12 +4,11 @@
 
 use super::enums::*;
 use super::families::c_fns;
-use super::glext_enums::*;
 use super::types::*;
 use super::{gl_bool, with_ctx, with_ctx_list};
 use crate::context::clamp01;
 use crate::context::error::{GlError, GlResult};
-use crate::context::state::{Cap, CompareFunc, Face, PixelStore, ShadeModel};
+use crate::context::state::{CompareFunc, Face, PixelStore, ShadeModel};
 use crate::context::Context;
 
 /// glGetError: the first error since the last call, or GL_NO_ERROR.
@@ -22,35 +21,19 @@ pub extern "C" fn glGetError() -> GLenum {
 /// glEnable.
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_ctx_list(move |c| enable(c, cap, true))
-}
-
-/// glEnable/glDisable. Like Mesa's compatibility profile (and unlike the GL 1.5 spec, which
-/// makes them INVALID_ENUM), the client arrays are accepted as glEnableClientState /
-/// glDisableClientState: real programs rely on it (README, known differences).
-fn enable(c: &mut Context, cap: GLenum, on: bool) -> GlResult<()> {
-    if super::arrays::is_client_array(cap) {
-        return super::arrays::set_client_array(c, cap, on);
-    }
-    c.set_cap(Cap::from_gl(cap)?, on)
+    with_ctx_list(move |c| c.enable(cap, true))
 }
 
 /// glDisable.
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_ctx_list(move |c| enable(c, cap, false))
+    with_ctx_list(move |c| c.enable(cap, false))
 }
 
 /// glIsEnabled (also answers the client array states).
 #[no_mangle]
 pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
-    with_ctx(|c| {
-        let on = match super::arrays::client_array_enabled(c, cap) {
-            Some(on) => on,
-            None => c.state.caps.get(Cap::from_gl(cap)?),
-        };
-        Ok(on as GLboolean)
-    })
+    with_ctx(|c| Ok(c.is_enabled(cap)? as GLboolean))
 }
 
 /// Stores `value` (or raises its error when the command runs) in the state `field`
@@ -103,24 +86,7 @@ c_fns! {
 /// glHint (stored; the rasterizer ignores hints, as llvmpipe does).
 #[no_mangle]
 pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_ctx_list(move |c| {
-        if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
-            return Err(GlError::InvalidEnum);
-        }
-        let h = &mut c.state.hints;
-        let slot = match target {
-            GL_PERSPECTIVE_CORRECTION_HINT => &mut h.perspective_correction,
-            GL_POINT_SMOOTH_HINT => &mut h.point_smooth,
-            GL_LINE_SMOOTH_HINT => &mut h.line_smooth,
-            GL_POLYGON_SMOOTH_HINT => &mut h.polygon_smooth,
-            GL_FOG_HINT => &mut h.fog,
-            GL_GENERATE_MIPMAP_HINT => &mut h.generate_mipmap,
-            GL_TEXTURE_COMPRESSION_HINT => &mut h.texture_compression,
-            _ => return Err(GlError::InvalidEnum),
-        };
-        *slot = mode;
-        Ok(())
-    })
+    with_ctx_list(move |c| c.hint(target, mode))
 }
 
 /// glFlush: makes the rendering visible in the OSMesa buffer.

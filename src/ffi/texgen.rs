@@ -3,6 +3,7 @@
 //! `texgen.c` and `clip.c` do (glTexGeni/f/d set a plane to `(param, 0, 0, 0)`).
 #![allow(non_snake_case)]
 
+use super::client::write_all;
 use super::enums::*;
 use super::families::c_fns;
 use super::lighting::read4;
@@ -81,14 +82,9 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
 /// `equation` must be null or writable for four values.
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble) {
-    let r = with_ctx(|c| {
-        let i = ClipPlanes::index(plane)?;
-        Ok(Some(c.clip_planes.eye[i]))
-    });
-    if let (Some(p), false) = (r, equation.is_null()) {
-        for (i, x) in p.into_iter().enumerate() {
-            // SAFETY: the caller promises room for four values.
-            unsafe { equation.add(i).write_unaligned(x as f64) };
-        }
+    let r = with_ctx(|c| Ok(Some(c.clip_planes.eye[ClipPlanes::index(plane)?])));
+    if let Some(p) = r {
+        // SAFETY: the caller promises room for four values.
+        unsafe { write_all(equation, &p, |x| x as f64) };
     }
 }

@@ -5,69 +5,13 @@
 //! all arguments before changing any state.
 #![allow(non_snake_case)]
 
+use super::client::{image_command, read_f64, read_vec, write_all, write_one};
 use super::enums::*;
-use super::families::vector_fns;
+use super::families::{c_fns, vector_fns};
 use super::types::*;
 use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
-use crate::context::pack::tex::{ClientFormat, Layout};
-use crate::context::state::PixelStore;
-use crate::context::GlError;
-use crate::texture::MAX_TEXTURE_SIZE;
-use libc::c_void;
-
-/// A client image copied while a display list is being compiled (GL 1.5 §5.4: the pixels
-/// are unpacked from client memory when the command is compiled), with the pixel-store
-/// state that describes the copy.
-struct ClientImage {
-    /// The bytes the image spans, or `None` for a null pointer or an invalid description
-    /// (whose error the compiled command raises when it runs).
-    bytes: Option<Vec<u8>>,
-    /// The unpack state at compile time.
-    unpack: PixelStore,
-}
-
-impl ClientImage {
-    /// Copies the `w` x `h` image at `data` under the current unpack state.
-    ///
-    /// # Safety
-    /// `data` (if not null) must hold the image the arguments and unpack state describe.
-    unsafe fn read(
-        format: GLenum,
-        ty: GLenum,
-        w: GLsizei,
-        h: GLsizei,
-        data: *const c_void,
-    ) -> Self {
-        let unpack = super::with_ctx_raw(|c| Ok(c.state.unpack));
-        let bytes = (|| {
-            let (w, h) = (usize::try_from(w).ok()?, usize::try_from(h).ok()?);
-            // Larger images fail validation when the command runs: nothing to copy.
-            if data.is_null() || w > MAX_TEXTURE_SIZE + 2 || h > MAX_TEXTURE_SIZE + 2 {
-                return None;
-            }
-            let span = if format == GL_COLOR_INDEX {
-                crate::context::texture_ci::span(ty, &unpack, w, h)?
-            } else {
-                Layout::new(&unpack, w, &ClientFormat::new(format, ty).ok()?).span(w, h)
-            };
-            // SAFETY: the caller promises the described image is readable.
-            Some(unsafe { std::slice::from_raw_parts(data as *const u8, span) }.to_vec())
-        })();
-        ClientImage { bytes, unpack }
-    }
-
-    /// The copy's address (null when there is none).
-    fn ptr(&self) -> *const c_void {
-        self.bytes
-            .as_ref()
-            .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void)
-    }
-}
-
-/// Whether a display list is being compiled on the current context.
-pub(crate) fn compiling() -> bool {
-    super::with_ctx_raw(|c| Ok(c.lists.compile_mode().is_some()))
-}
+use crate::context::texture_get::{ints_rounded, ints_truncated};
+use crate::context::{Context, GlResult};
 
 /// glGenTextures.
 ///
@@ -114,129 +58,17 @@ pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
     with_ctx(|c| Ok(c.textures.is_texture(texture) as GLboolean))
 }
 
-/// glTexImage1D.
-///
-/// # Safety
-/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexImage1D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLint,
-    width: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (internalformat, width, 1, border, format, type_);
-            c.tex_image(target, level, args, img.ptr(), 1, img.unpack)
-        });
-    }
-    // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (internalformat, width, 1, border, format, type_);
-        c.tex_image(target, level, args, pixels, 1, c.state.unpack)
-    })
-}
-
-/// glTexImage2D.
-///
-/// # Safety
-/// `pixels` (if not null) must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexImage2D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (internalformat, width, height, border, format, type_);
-            c.tex_image(target, level, args, img.ptr(), 2, img.unpack)
-        });
-    }
-    // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (internalformat, width, height, border, format, type_);
-        c.tex_image(target, level, args, pixels, 2, c.state.unpack)
-    })
-}
-
-/// glTexSubImage1D.
-///
-/// # Safety
-/// `pixels` must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexSubImage1D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    width: GLsizei,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, 1, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (xoffset, 0, width, 1, format, type_);
-            c.tex_sub_image(target, level, args, img.ptr(), 1, img.unpack)
-        });
-    }
-    // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (xoffset, 0, width, 1, format, type_);
-        c.tex_sub_image(target, level, args, pixels, 1, c.state.unpack)
-    })
-}
-
-/// glTexSubImage2D.
-///
-/// # Safety
-/// `pixels` must hold the image described by the arguments and unpack state.
-#[no_mangle]
-pub unsafe extern "C" fn glTexSubImage2D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    yoffset: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    if compiling() {
-        // SAFETY: forwarded caller contract.
-        let img = unsafe { ClientImage::read(format, type_, width, height, pixels) };
-        // SAFETY: the copy holds the described image.
-        return with_ctx_list(move |c| unsafe {
-            let args = (xoffset, yoffset, width, height, format, type_);
-            c.tex_sub_image(target, level, args, img.ptr(), 2, img.unpack)
-        });
-    }
-    // SAFETY: forwarded caller contract.
-    with_ctx(|c| unsafe {
-        let args = (xoffset, yoffset, width, height, format, type_);
-        c.tex_sub_image(target, level, args, pixels, 2, c.state.unpack)
-    })
+// The image calls: the image is read now, or copied into the display list being
+// compiled (GL 1.5 §5.4), by [`image_command`].
+c_fns! {
+    /// glTexImage1D (`pixels`, if not null, holds the image the arguments and unpack state describe).
+    unsafe fn glTexImage1D(target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(1, (format, type_), (width, 1, 1), pixels, move |c: &mut Context, p, u| c.tex_image(target, level, (internalformat, width, 1, border, format, type_), p, 1, u));
+    /// glTexImage2D (`pixels`, if not null, holds the image the arguments and unpack state describe).
+    unsafe fn glTexImage2D(target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(2, (format, type_), (width, height, 1), pixels, move |c: &mut Context, p, u| c.tex_image(target, level, (internalformat, width, height, border, format, type_), p, 2, u));
+    /// glTexSubImage1D (`pixels` holds the image the arguments and unpack state describe).
+    unsafe fn glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(1, (format, type_), (width, 1, 1), pixels, move |c: &mut Context, p, u| c.tex_sub_image(target, level, (xoffset, 0, width, 1, format, type_), p, 1, u));
+    /// glTexSubImage2D (`pixels` holds the image the arguments and unpack state describe).
+    unsafe fn glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(2, (format, type_), (width, height, 1), pixels, move |c: &mut Context, p, u| c.tex_sub_image(target, level, (xoffset, yoffset, width, height, format, type_), p, 2, u));
 }
 
 /// glCopyTexImage1D.
@@ -268,17 +100,8 @@ pub extern "C" fn glCopyTexImage2D(
     border: GLint,
 ) {
     with_ctx_list(move |c| {
-        c.copy_tex_image(
-            target,
-            level,
-            internalformat,
-            x,
-            y,
-            width,
-            height,
-            border,
-            2,
-        )
+        let (w, h) = (width, height);
+        c.copy_tex_image(target, level, internalformat, x, y, w, h, border, 2)
     })
 }
 
@@ -353,86 +176,49 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
     with_ctx_list(move |c| c.tex_parameter_scalar(target, pname, v[0]))
 }
 
-/// glTexParameterfv.
+/// The parameter vector calls: as many values as `pname` takes (4 for `color`, the
+/// colour parameter, otherwise 1), converted to `f64`, for `set` (nothing for NULL).
 ///
 /// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    if params.is_null() {
-        return;
-    }
-    let n = if pname == GL_TEXTURE_BORDER_COLOR {
-        4
-    } else {
-        1
-    };
+/// `params` must be NULL or readable for the values `pname` takes.
+unsafe fn set_params<T: Copy + Into<f64>>(
+    params: *const T,
+    (pname, color): (GLenum, GLenum),
+    set: impl Fn(&mut Context, &[f64]) -> GlResult<()> + Send + Sync + 'static,
+) {
+    let n = if pname == color { 4 } else { 1 };
     // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-    with_ctx_list(move |c| c.tex_parameter(target, pname, &v, false))
+    if let Some(v) = unsafe { read_f64(params, n) } {
+        with_ctx_list(move |c| set(c, &v))
+    }
 }
 
-/// glTexParameteriv.
+/// The parameter queries: the values `get` answers, each converted by `conv`, written
+/// through `params`.
 ///
 /// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_BORDER_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    if params.is_null() {
-        return;
-    }
-    let n = if pname == GL_TEXTURE_BORDER_COLOR {
-        4
-    } else {
-        1
-    };
-    // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-    with_ctx_list(move |c| c.tex_parameter(target, pname, &v, true))
-}
-
-/// glGetTexParameterfv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+/// `params` must be NULL or writable for the values.
+unsafe fn get_params<S: Copy, T>(
+    params: *mut T,
+    get: impl FnOnce(&mut Context) -> GlResult<Vec<S>>,
+    conv: impl Fn(S) -> T,
+) {
     with_ctx(|c| {
-        let (v, _) = c.get_tex_parameter(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = *x as f32 };
-            }
-        }
+        let v = get(c)?;
+        // SAFETY: the caller promises room for the values.
+        unsafe { write_all(params, &v, conv) };
         Ok(())
     })
 }
 
-/// glGetTexParameteriv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_ctx(|c| {
-        let (v, normalized) = c.get_tex_parameter(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                let iv = if normalized {
-                    // Mesa's FLOAT_TO_INT truncates: 0.25 → 536870911
-                    (x * 2147483647.0) as i32
-                } else {
-                    x.round() as i32
-                };
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = iv };
-            }
-        }
-        Ok(())
-    })
+c_fns! {
+    /// glTexParameterfv (4 values for GL_TEXTURE_BORDER_COLOR).
+    unsafe fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) => set_params(params, (pname, GL_TEXTURE_BORDER_COLOR), move |c, v| c.tex_parameter(target, pname, v, false));
+    /// glTexParameteriv (4 values for GL_TEXTURE_BORDER_COLOR).
+    unsafe fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) => set_params(params, (pname, GL_TEXTURE_BORDER_COLOR), move |c, v| c.tex_parameter(target, pname, v, true));
+    unsafe fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(c.get_tex_parameter(target, pname)?.0), |x| x as f32);
+    /// glGetTexParameteriv (normalized values truncated, as Mesa's FLOAT_TO_INT).
+    unsafe fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(ints_truncated(c.get_tex_parameter(target, pname)?)), |x| x);
 }
 
 /// glGetTexLevelParameterfv.
@@ -448,10 +234,8 @@ pub unsafe extern "C" fn glGetTexLevelParameterfv(
 ) {
     with_ctx(|c| {
         let v = c.get_tex_level_parameter(target, level, pname)?;
-        if !params.is_null() {
-            // SAFETY: the caller promises a writable value.
-            unsafe { *params = v as f32 };
-        }
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, v as f32) };
         Ok(())
     })
 }
@@ -469,10 +253,8 @@ pub unsafe extern "C" fn glGetTexLevelParameteriv(
 ) {
     with_ctx(|c| {
         let v = c.get_tex_level_parameter(target, level, pname)?;
-        if !params.is_null() {
-            // SAFETY: the caller promises a writable value.
-            unsafe { *params = v as i32 };
-        }
+        // SAFETY: the caller promises a writable value.
+        unsafe { write_one(params, v as i32) };
         Ok(())
     })
 }
@@ -489,77 +271,14 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
     with_ctx_list(move |c| c.tex_env_scalar(target, pname, param as f64))
 }
 
-/// glTexEnvfv.
-///
-/// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    if params.is_null() {
-        return;
-    }
-    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-    // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-    with_ctx_list(move |c| c.tex_env(target, pname, &v, false))
-}
-
-/// glTexEnviv.
-///
-/// # Safety
-/// `params` must hold the parameter's values (4 for GL_TEXTURE_ENV_COLOR).
-#[no_mangle]
-pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-    if params.is_null() {
-        return;
-    }
-    let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
-    // SAFETY: the caller promises n readable values.
-    let v = unsafe { std::slice::from_raw_parts(params, n) };
-    let v: Vec<f64> = v.iter().map(|&x| x as f64).collect();
-    with_ctx_list(move |c| c.tex_env(target, pname, &v, true))
-}
-
-/// glGetTexEnvfv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
-    with_ctx(|c| {
-        let (v, _) = c.get_tex_env(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = *x as f32 };
-            }
-        }
-        Ok(())
-    })
-}
-
-/// glGetTexEnviv.
-///
-/// # Safety
-/// `params` must be writable for the parameter's values.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_ctx(|c| {
-        let (v, normalized) = c.get_tex_env(target, pname)?;
-        if !params.is_null() {
-            for (i, x) in v.iter().enumerate() {
-                let iv = if normalized {
-                    (x * 2147483647.0).round() as i32
-                } else {
-                    x.round() as i32
-                };
-                // SAFETY: the caller promises room for the values.
-                unsafe { *params.add(i) = iv };
-            }
-        }
-        Ok(())
-    })
+c_fns! {
+    /// glTexEnvfv (4 values for GL_TEXTURE_ENV_COLOR).
+    unsafe fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) => set_params(params, (pname, GL_TEXTURE_ENV_COLOR), move |c, v| c.tex_env(target, pname, v, false));
+    /// glTexEnviv (4 values for GL_TEXTURE_ENV_COLOR).
+    unsafe fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) => set_params(params, (pname, GL_TEXTURE_ENV_COLOR), move |c, v| c.tex_env(target, pname, v, true));
+    unsafe fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(c.get_tex_env(target, pname)?.0), |x| x as f32);
+    /// glGetTexEnviv (normalized values rounded).
+    unsafe fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(ints_rounded(c.get_tex_env(target, pname)?)), |x| x);
 }
 
 /// glActiveTexture (GL_TEXTUREi, i < GL_MAX_TEXTURE_UNITS). Mesa's rule is i < the larger
@@ -588,20 +307,9 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     textures: *const GLuint,
     priorities: *const GLclampf,
 ) {
-    let read = || -> Result<(Vec<GLuint>, Vec<GLclampf>), GlError> {
-        let n = non_negative(n)?;
-        if textures.is_null() || priorities.is_null() {
-            return Ok((Vec::new(), Vec::new()));
-        }
-        // SAFETY: the caller promises n readable values in each array.
-        Ok(unsafe {
-            (
-                std::slice::from_raw_parts(textures, n).to_vec(),
-                std::slice::from_raw_parts(priorities, n).to_vec(),
-            )
-        })
-    };
-    let arrays = read();
+    // SAFETY: the caller promises n readable values in each array.
+    let arrays =
+        non_negative(n).map(|n| unsafe { (read_vec(textures, n), read_vec(priorities, n)) });
     with_ctx_list(move |c| {
         let (names, prios) = arrays.as_ref().map_err(|e| *e)?;
         c.prioritize_textures(names, prios);

@@ -3,6 +3,7 @@
 //! [`crate::context::texture_compressed`], which holds Mesa's checks.
 #![allow(non_snake_case)]
 
+use super::families::c_fns;
 use super::types::*;
 use super::with_ctx_list;
 use crate::context::texture_compressed::{ImageArgs, SubArgs};
@@ -28,170 +29,40 @@ unsafe fn copy_blocks(
     Some(unsafe { std::slice::from_raw_parts(data as *const u8, size as usize) }.to_vec())
 }
 
-/// glCompressedTexImage1D.
+/// glCompressedTexImage{1,2,3}D (`dims`) with the client's blocks (read for 2D only).
 ///
 /// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexImage1D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    width: GLsizei,
-    border: GLint,
-    image_size: GLsizei,
-    _data: *const GLvoid,
-) {
-    let a = ImageArgs {
-        level,
-        internal: internalformat,
-        w: width,
-        h: 1,
-        border,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_image(1, target, &a, None))
-}
-
-/// glCompressedTexImage2D.
-///
-/// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexImage2D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    width: GLsizei,
-    height: GLsizei,
-    border: GLint,
-    image_size: GLsizei,
-    data: *const GLvoid,
-) {
+/// As [`copy_blocks`] for a 2D image.
+unsafe fn image(dims: u32, target: GLenum, a: ImageArgs, data: *const GLvoid) {
     // SAFETY: forwarded caller contract.
-    let blocks = unsafe { copy_blocks(internalformat, width, height, image_size, data) };
-    let a = ImageArgs {
-        level,
-        internal: internalformat,
-        w: width,
-        h: height,
-        border,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_image(2, target, &a, blocks.as_deref()))
+    let blocks = (dims == 2)
+        .then(|| unsafe { copy_blocks(a.internal, a.w, a.h, a.size, data) })
+        .flatten();
+    with_ctx_list(move |c| c.compressed_tex_image(dims, target, &a, blocks.as_deref()))
 }
 
-/// glCompressedTexImage3D.
+/// glCompressedTexSubImage{1,2,3}D (`dims`) with the client's blocks (read for 2D only).
 ///
 /// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexImage3D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    width: GLsizei,
-    height: GLsizei,
-    _depth: GLsizei,
-    border: GLint,
-    image_size: GLsizei,
-    _data: *const GLvoid,
-) {
-    let a = ImageArgs {
-        level,
-        internal: internalformat,
-        w: width,
-        h: height,
-        border,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_image(3, target, &a, None))
-}
-
-/// glCompressedTexSubImage1D.
-///
-/// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexSubImage1D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    width: GLsizei,
-    format: GLenum,
-    image_size: GLsizei,
-    _data: *const GLvoid,
-) {
-    let a = SubArgs {
-        level,
-        x: xoffset,
-        y: 0,
-        w: width,
-        h: 1,
-        format,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_sub_image(1, target, &a, None))
-}
-
-/// glCompressedTexSubImage2D.
-///
-/// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexSubImage2D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    yoffset: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    format: GLenum,
-    image_size: GLsizei,
-    data: *const GLvoid,
-) {
+/// As [`copy_blocks`] for a 2D image.
+unsafe fn sub_image(dims: u32, target: GLenum, a: SubArgs, data: *const GLvoid) {
     // SAFETY: forwarded caller contract.
-    let blocks = unsafe { copy_blocks(format, width, height, image_size, data) };
-    let a = SubArgs {
-        level,
-        x: xoffset,
-        y: yoffset,
-        w: width,
-        h: height,
-        format,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_sub_image(2, target, &a, blocks.as_deref()))
+    let blocks = (dims == 2)
+        .then(|| unsafe { copy_blocks(a.format, a.w, a.h, a.size, data) })
+        .flatten();
+    with_ctx_list(move |c| c.compressed_tex_sub_image(dims, target, &a, blocks.as_deref()))
 }
 
-/// glCompressedTexSubImage3D.
-///
-/// # Safety
-/// `data` must hold `image_size` bytes.
-#[no_mangle]
-pub unsafe extern "C" fn glCompressedTexSubImage3D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    yoffset: GLint,
-    _zoffset: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    _depth: GLsizei,
-    format: GLenum,
-    image_size: GLsizei,
-    _data: *const GLvoid,
-) {
-    let a = SubArgs {
-        level,
-        x: xoffset,
-        y: yoffset,
-        w: width,
-        h: height,
-        format,
-        size: image_size,
-    };
-    with_ctx_list(move |c| c.compressed_tex_sub_image(3, target, &a, None))
+// The compressed image calls: `data` is read for the 2D forms (the only targets with
+// compressed formats); the 1D and 3D forms fail their checks before any data is read.
+c_fns! {
+    unsafe fn glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, _data: *const GLvoid) => image(1, target, ImageArgs { level, internal: internalformat, w: width, h: 1, border, size: image_size }, _data);
+    unsafe fn glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const GLvoid) => image(2, target, ImageArgs { level, internal: internalformat, w: width, h: height, border, size: image_size }, data);
+    unsafe fn glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, _depth: GLsizei, border: GLint, image_size: GLsizei, _data: *const GLvoid) => image(3, target, ImageArgs { level, internal: internalformat, w: width, h: height, border, size: image_size }, _data);
+    unsafe fn glCompressedTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, _data: *const GLvoid) => sub_image(1, target, SubArgs { level, x: xoffset, y: 0, w: width, h: 1, format, size: image_size }, _data);
+    unsafe fn glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const GLvoid) => sub_image(2, target, SubArgs { level, x: xoffset, y: yoffset, w: width, h: height, format, size: image_size }, data);
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _zoffset: GLint, width: GLsizei, height: GLsizei, _depth: GLsizei, format: GLenum, image_size: GLsizei, _data: *const GLvoid) => sub_image(3, target, SubArgs { level, x: xoffset, y: yoffset, w: width, h: height, format, size: image_size }, _data);
 }
 
 /// glGetCompressedTexImage.

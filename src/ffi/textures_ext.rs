@@ -4,6 +4,7 @@
 //! pointer of that name when it includes gl.h without GL_GLEXT_PROTOTYPES).
 #![allow(non_snake_case)]
 
+use super::families::c_fns;
 use super::textures_3d::glTexImage3D;
 use super::types::*;
 use super::with_ctx;
@@ -21,38 +22,9 @@ pub extern "C" fn glGenerateMipmapEXT(target: GLenum) {
     glGenerateMipmap(target)
 }
 
-/// glTexImage3DEXT: glTexImage3D under its EXT_texture3D name, whose header declares the
-/// internal format as a `GLenum`.
-///
-/// # Safety
-/// As [`glTexImage3D`](super::textures_3d::glTexImage3D).
-#[no_mangle]
-#[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn glTexImage3DEXT(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    width: GLsizei,
-    height: GLsizei,
-    depth: GLsizei,
-    border: GLint,
-    format: GLenum,
-    type_: GLenum,
-    pixels: *const GLvoid,
-) {
-    // SAFETY: the caller upholds glTexImage3D's contract; the arguments pass through.
-    unsafe {
-        glTexImage3D(
-            target,
-            level,
-            internalformat as GLint,
-            width,
-            height,
-            depth,
-            border,
-            format,
-            type_,
-            pixels,
-        )
-    }
+c_fns! {
+    /// glTexImage3DEXT: glTexImage3D under its EXT_texture3D name, whose header declares
+    /// the internal format as a `GLenum`.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexImage3DEXT(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const GLvoid) => glTexImage3D(target, level, internalformat as GLint, width, height, depth, border, format, type_, pixels);
 }
