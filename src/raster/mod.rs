@@ -412,12 +412,16 @@ fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
         let base = VARY_TEX + 4 * k;
         let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
         let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
-        let rr = (STR && u.needs_r()).then(|| {
-            [
+        // An `if`, not `bool::then`: a closure that is not inlined loses the caller's
+        // target features, and its fused multiply-adds become calls to `fmaf`.
+        let rr = if STR && u.needs_r() {
+            Some([
                 tex_r::<M, PERSP>(t, base, fx, fy[0]),
                 tex_r::<M, PERSP>(t, base, fx, fy[1]),
-            ]
-        });
+            ])
+        } else {
+            None
+        };
         for j in 0..LANES / 2 {
             let (l, r) = (2 * j, 2 * j + 1);
             if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
