@@ -295,21 +295,22 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         vary_at::<M, PERSP>(t, k, fx[i], fy, oow[i])
     };
     // A crossbar environment (GL_TEXTUREn) reads every active unit's texel of the lane.
-    let crossbar = units.iter().any(|u| u.env.crossbar);
+    let crossbar = if units.iter().any(|u| u.env.crossbar) {
+        units.len()
+    } else {
+        0
+    };
+    let mut all = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
     let mut c = [[0u8; LANES]; 4];
     for i in 0..LANES {
         let f = [frag[0][i], frag[1][i], frag[2][i], frag[3][i]];
         let mut prev = f;
         if let Some(tx) = texels {
-            let mut all = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
-            if crossbar {
-                for (k, a) in all.iter_mut().enumerate().take(units.len()) {
-                    *a = tx[k][i];
-                }
+            for (k, a) in all.iter_mut().enumerate().take(crossbar) {
+                *a = tx[k][i];
             }
-            let all = &all[..if crossbar { units.len() } else { 0 }];
             for (k, u) in units.iter().enumerate() {
-                prev = u.env(f, tx[k][i], prev, all);
+                prev = u.env(f, tx[k][i], prev, &all[..crossbar]);
             }
         }
         if plan.separate_specular {
