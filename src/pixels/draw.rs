@@ -24,13 +24,14 @@ use crate::fixed_function::fog::FogPlan;
 use crate::fragment::span::unorm8;
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
-use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
 /// The fixed-function colour computation of pixel-rectangle fragments.
 pub struct Shader<'a> {
     units: Vec<(UnitPlan<'a>, [f32; 4])>,
+    /// Every unit's texel in unit order, for crossbar sources (fixed for the draw).
+    texels: Vec<[f32; 4]>,
     fog: Option<FogPlan>,
 }
 
@@ -38,7 +39,7 @@ impl<'a> Shader<'a> {
     /// The shader of the enabled units (each with the current texture coordinates, which
     /// every fragment samples alike) and the fog, if enabled.
     pub fn new(units: Vec<(UnitPlan<'a>, [f32; 4])>, fog: Option<FogPlan>) -> Self {
-        let units = units
+        let units: Vec<_> = units
             .into_iter()
             .map(|(p, tc)| {
                 let r = 1.0f32 / tc[3];
@@ -48,18 +49,15 @@ impl<'a> Shader<'a> {
                 (p, texel)
             })
             .collect();
-        Shader { units, fog }
+        let texels = units.iter().map(|(_, tex)| *tex).collect();
+        Shader { units, texels, fog }
     }
 
     /// The final colour of a fragment with primary colour `primary`.
     pub fn shade(&self, primary: [f32; 4]) -> [u8; 4] {
-        let mut texels = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
-        for (k, (_, tex)) in self.units.iter().enumerate() {
-            texels[k] = *tex;
-        }
         let mut prev = primary;
         for (u, tex) in &self.units {
-            prev = u.env(primary, *tex, prev, &texels[..self.units.len()]);
+            prev = u.env(primary, *tex, prev, &self.texels);
         }
         if let Some(f) = &self.fog {
             prev = f.apply(prev, f.factor(0.0));
