@@ -215,6 +215,10 @@ impl Context {
         if ClientArray::from_cap(cap).is_some() {
             return self.set_client_array(cap, on);
         }
+        if cap == GL_TEXTURE_CUBE_MAP_SEAMLESS {
+            self.textures.cube_seamless = on;
+            return Ok(());
+        }
         self.set_cap(Cap::from_gl(cap)?, on)
     }
 
@@ -222,6 +226,7 @@ impl Context {
     pub(crate) fn is_enabled(&mut self, cap: GLenum) -> GlResult<bool> {
         match self.client_array_enabled(cap) {
             Some(on) => Ok(on),
+            None if cap == GL_TEXTURE_CUBE_MAP_SEAMLESS => Ok(self.textures.cube_seamless),
             None => Ok(self.state.caps.get(Cap::from_gl(cap)?)),
         }
     }

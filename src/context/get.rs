@@ -399,6 +399,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_TEXTURE_CUBE_MAP => b(c.textures.units[st.active_texture].enabled_cube),
         GL_TEXTURE_1D => b(c.textures.units[st.active_texture].enabled_1d),
         GL_TEXTURE_2D => b(c.textures.units[st.active_texture].enabled_2d),
+        GL_TEXTURE_CUBE_MAP_SEAMLESS => b(c.textures.cube_seamless),
         GL_MAX_TEXTURE_LOD_BIAS => f(&[crate::texture::MAX_LOD_BIAS]),
         GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => f(&[crate::texture::MAX_ANISOTROPY]),
         GL_LIGHT_MODEL_AMBIENT => n(&c.light.model.ambient),

@@ -10,9 +10,10 @@
 //!   coordinates are `(d.sc − (d.ma·(1/ma))·sc)·(0.5·(1/ma))`, from the pixel's own
 //!   row differences; the quad's LOD comes from its top-left pixel (per-quad LOD), with
 //!   `rho² = max((W·dsdx)² + (W·dtdx)², …)` of the face size.
-//! - A GL 1.x context does not enable GL_TEXTURE_CUBE_MAP_SEAMLESS, so each face is
-//!   sampled on its own with every wrap mode forced to CLAMP_TO_EDGE (llvmpipe does this
-//!   for cube maps whatever the program set), on the 8-bit AoS path for 8-bit formats.
+//! - Without GL_TEXTURE_CUBE_MAP_SEAMLESS each face is sampled on its own with every wrap
+//!   mode forced to CLAMP_TO_EDGE (llvmpipe does this for cube maps whatever the program
+//!   set), on the 8-bit AoS path for 8-bit formats. With it, LINEAR filtering reads
+//!   across the face edges ([`super::cube_seamless`]).
 
 use super::lod::{self, Lod};
 use super::sample::{sample_levels_in, select_levels};
@@ -95,7 +96,7 @@ fn minor(axis: usize, ma_sign: u32, v: [f32; 3]) -> (f32, f32) {
 /// Face index and face coordinates of one pixel; `lod` selects the `need_derivs`
 /// projection.
 #[inline(always)]
-fn project(s: f32, t: f32, r: f32, lod: bool) -> (usize, f32, f32) {
+pub(super) fn project(s: f32, t: f32, r: f32, lod: bool) -> (usize, f32, f32) {
     let axis = major(s, t, r);
     let ma = [s, t, r][axis];
     let ms = sign(ma);
@@ -139,15 +140,15 @@ fn quad_lod(p: &UnitPlan<'_>, size: f32, s: [f32; 4], t: [f32; 4], r: [f32; 4]) 
     lod::from_rho(&p.lod, p.mip_filter, true, rho)
 }
 
-/// Samples a 2x2 quad (TL, TR, BL, BR) of direction vectors.
+/// The filter and levels of a 2x2 quad of direction vectors, and whether the faces are
+/// projected with `need_derivs`.
 #[inline(always)]
-pub fn sample_quad(
+pub(super) fn quad_levels(
     p: &UnitPlan<'_>,
-    faces: &Faces<'_>,
     s: [f32; 4],
     t: [f32; 4],
     r: [f32; 4],
-) -> [[f32; 4]; 4] {
+) -> (LevelSel, bool) {
     let need_derivs = p.needs_lod && !p.lod.min_max_equal;
     let lod = if need_derivs {
         quad_lod(p, p.image(p.first).width as f32, s, t, r)
@@ -156,7 +157,22 @@ pub fn sample_quad(
     } else {
         Lod::MAG
     };
-    let sel = select_levels(p, lod);
+    (select_levels(p, lod), need_derivs)
+}
+
+/// What [`select_levels`] returns: `(filter, level0, level1, fraction)`.
+pub(super) type LevelSel = (super::Filter, usize, usize, f32);
+
+/// Samples a 2x2 quad (TL, TR, BL, BR) of direction vectors, each face on its own.
+#[inline(always)]
+pub fn sample_quad(
+    p: &UnitPlan<'_>,
+    faces: &Faces<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: [f32; 4],
+) -> [[f32; 4]; 4] {
+    let (sel, need_derivs) = quad_levels(p, s, t, r);
     std::array::from_fn(|i| {
         let (face, fs, ft) = project(s[i], t[i], r[i], need_derivs);
         sample_levels_in(p, faces[face], sel, fs, ft)

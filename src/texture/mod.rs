@@ -27,6 +27,7 @@
 
 pub mod compressed;
 pub mod cube;
+pub mod cube_seamless;
 pub mod env;
 pub mod fast;
 pub mod fast_avx2;
@@ -509,6 +510,9 @@ pub struct TextureState {
     pub next_name: u32,
     /// The proxy textures (GL_PROXY_TEXTURE_1D/2D/3D/CUBE_MAP): level sizes only.
     pub proxies: [TextureObject; NUM_TARGETS],
+    /// GL_TEXTURE_CUBE_MAP_SEAMLESS (context-wide; not part of any attribute group, as in
+    /// Mesa).
+    pub cube_seamless: bool,
 }
 
 impl Default for TextureState {
@@ -519,6 +523,7 @@ impl Default for TextureState {
             units: std::array::from_fn(|_| TexUnit::default()),
             next_name: 1,
             proxies: ALL_TARGETS.map(|t| TextureObject::new(Some(t))),
+            cube_seamless: false,
         }
     }
 }
@@ -644,6 +649,10 @@ impl TextureState {
         };
         let wrap_r = fix(p.wrap_r);
         let aniso = p.max_anisotropy > 1.0;
+        // llvmpipe filters a seamless cube map on the float path when a filter is LINEAR
+        let seamless = target == Target::Cube
+            && self.cube_seamless
+            && (p.min_filter == Filter::Linear || p.mag_filter == Filter::Linear);
         let depth = (base == BaseFormat::Depth).then(|| shadow::DepthPlan {
             func: p.shadow.compare.then_some(p.shadow.func),
             mode: p.shadow.depth_mode,
@@ -657,7 +666,8 @@ impl TextureState {
             && wrap_s.is_simple()
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
-            && !aniso;
+            && !aniso
+            && !seamless;
         let lod = LodParams::new(p, u.lod_bias, dims == 1);
         let border = base.swizzle(p.border_color, 0.0, 1.0);
         let needs_lod = !(p.min_filter == p.mag_filter && p.mip_filter == MipFilter::None);
@@ -670,6 +680,9 @@ impl TextureState {
                 pot_r: obj.depths[0].is_power_of_two() || obj.level(0).is_none(),
                 depths: &obj.depths,
             }),
+            Target::Cube if seamless => {
+                ExtKind::CubeSeamless(std::array::from_fn(|f| obj.face_levels(f)))
+            }
             Target::Cube => ExtKind::Cube(std::array::from_fn(|f| obj.face_levels(f))),
             _ => ExtKind::Flat,
         };

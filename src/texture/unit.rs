@@ -39,6 +39,8 @@ pub enum ExtKind<'a> {
     Volume(volume::VolumePlan<'a>),
     /// GL_TEXTURE_CUBE_MAP: the six faces' levels.
     Cube(cube::Faces<'a>),
+    /// GL_TEXTURE_CUBE_MAP with GL_TEXTURE_CUBE_MAP_SEAMLESS and a LINEAR filter.
+    CubeSeamless(cube::Faces<'a>),
 }
 
 /// Everything sampling and the environment of one unit need for one draw.
@@ -138,6 +140,7 @@ impl UnitPlan<'_> {
             ExtKind::Flat => self.sample_quad(s, t),
             ExtKind::Volume(v) => volume::sample_quad(self, v, s, t, r),
             ExtKind::Cube(f) => cube::sample_quad(self, f, s, t, r),
+            ExtKind::CubeSeamless(f) => cube_seamless::sample_quad(self, f, s, t, r),
         }
     }
 
