@@ -369,6 +369,7 @@ const SCENES: &[&str] = &[
     "secondary_color_array",
     "fog_coord_array",
     "tex_cube_seamless",
+    "fbo_attach_types",
 ];
 
 macro_rules! scene_tests {
@@ -510,6 +511,7 @@ scene_tests!(
     secondary_color_array,
     fog_coord_array,
     tex_cube_seamless,
+    fbo_attach_types,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -26,7 +26,11 @@ fn window_attachment_param(c: &Context, attachment: GLenum, pname: GLenum) -> Gl
         } as GLint);
     }
     if !present {
-        return Err(GlError::InvalidOperation);
+        // Mesa answers the encoding of a missing window depth or stencil buffer
+        return match (kind, pname) {
+            (1 | 2, GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING) => Ok(GL_LINEAR as GLint),
+            _ => Err(GlError::InvalidOperation),
+        };
     }
     let bits = c.color_bits();
     let depth = fb.map_or(0, |f| f.depth_format.bits());
@@ -35,11 +39,21 @@ fn window_attachment_param(c: &Context, attachment: GLenum, pname: GLenum) -> Gl
         pname,
         match kind {
             0 => [bits[0], bits[1], bits[2], bits[3], 0, 0],
+            // Mesa's window depth and stencil are one buffer when both exist (Z24S8)
+            _ if depth > 0 && stencil > 0 => [0, 0, 0, 0, depth, stencil],
             1 => [0, 0, 0, 0, depth, 0],
             _ => [0, 0, 0, 0, 0, stencil],
         },
         false,
     )
+    // With a depth buffer the window's stencil is the stencil of Mesa's Z24S8 buffer,
+    // whose component type is GL_UNSIGNED_NORMALIZED (GL_INDEX for a stencil-only S8).
+    .map(|v| match (kind, pname) {
+        (2, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) if depth > 0 => {
+            GL_UNSIGNED_NORMALIZED as GLint
+        }
+        _ => v,
+    })
 }
 
 /// The size, component-type and encoding queries common to every attachment (`float`: a
@@ -79,6 +93,12 @@ fn object_attachment_param(
         Point::DepthStencil if f.depth != f.stencil => return Err(GlError::InvalidOperation),
         Point::DepthStencil => f.depth,
     };
+    // GL 4.4 (Mesa in every profile): a combined depth+stencil point has no single type
+    if attachment == GL_DEPTH_STENCIL_ATTACHMENT
+        && pname == GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE
+    {
+        return Err(GlError::InvalidOperation);
+    }
     match (pname, a) {
         (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::None) => return Ok(GL_NONE as GLint),
         (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::None) => return Ok(0),
@@ -117,12 +137,19 @@ fn object_attachment_param(
         ) => return Err(GlError::InvalidEnum),
         _ => {}
     }
-    let stencil_point = attachment == GL_STENCIL_ATTACHMENT;
     let kind = c.fbo.image_info(a, &c.textures).map(|i| i.kind);
     let float = matches!(
         kind,
         Some(ImageKind::Depth(crate::framebuffer::DepthFormat::Z32F, _))
     );
+    // A packed depth-stencil image (renderbuffer or texture) reports its format's depth
+    // and stencil bits at either attachment point, as Mesa does.
+    let packed = match a {
+        Attachment::Texture(t) => t
+            .find(&c.textures)
+            .is_some_and(|(_, img)| super::pack::depth::is_depth_stencil(img.internal_format)),
+        _ => matches!(kind, Some(ImageKind::Depth(_, true))),
+    };
     let sizes = match kind {
         Some(ImageKind::Color(b)) => {
             let alpha = !matches!(
@@ -131,18 +158,28 @@ fn object_attachment_param(
             );
             [8, 8, 8, if alpha { 8 } else { 0 }, 0, 0]
         }
-        Some(ImageKind::Depth(d, s)) => {
-            let st = if s { 8 } else { 0 };
-            if stencil_point {
-                [0, 0, 0, 0, 0, st]
-            } else {
-                [0, 0, 0, 0, d.bits(), st]
-            }
-        }
+        Some(ImageKind::Depth(d, _)) => [0, 0, 0, 0, d.bits(), if packed { 8 } else { 0 }],
         Some(ImageKind::Stencil) => [0, 0, 0, 0, 0, 8],
         _ => [0; 6],
     };
-    size_param(pname, sizes, float)
+    // The component type is the format's: GL_INDEX only for S8 and for Z32F_S8's stencil
+    // (a Z24S8 stencil is GL_UNSIGNED_NORMALIZED).
+    let index = match kind {
+        Some(ImageKind::Stencil) => true,
+        Some(ImageKind::Depth(_, _)) => float && attachment == GL_STENCIL_ATTACHMENT,
+        _ => false,
+    };
+    size_param(pname, sizes, float).map(|v| match pname {
+        GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if index => GL_INDEX as GLint,
+        GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if matches!(kind, Some(ImageKind::Depth(..))) => {
+            if float {
+                GL_FLOAT as GLint
+            } else {
+                GL_UNSIGNED_NORMALIZED as GLint
+            }
+        }
+        _ => v,
+    })
 }
 
 impl Context {
