@@ -370,6 +370,7 @@ const SCENES: &[&str] = &[
     "fog_coord_array",
     "tex_cube_seamless",
     "fbo_attach_types",
+    "fbo_share",
 ];
 
 macro_rules! scene_tests {
@@ -512,6 +513,7 @@ scene_tests!(
     fog_coord_array,
     tex_cube_seamless,
     fbo_attach_types,
+    fbo_share,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -363,7 +363,41 @@ fn gen_names<T>(used: &mut HashMap<u32, Option<T>>, next: &mut u32, n: usize) ->
     out
 }
 
+/// The part of the framebuffer-object state a share group shares: Mesa 22.3 keeps both
+/// framebuffer and renderbuffer objects in the shared state (`shared.c`), so a context
+/// created with a `sharelist` sees the other's objects of both kinds.
+#[derive(Debug, Default)]
+pub struct FboTables {
+    framebuffers: HashMap<u32, Option<FramebufferObject>>,
+    renderbuffers: HashMap<u32, Option<Renderbuffer>>,
+    next_fb: u32,
+    next_rb: u32,
+}
+
 impl FboState {
+    /// Moves the shared tables out (into the share group). The objects' cached working
+    /// copies are dropped: their image versions are this context's own.
+    pub fn take_tables(&mut self) -> FboTables {
+        let mut framebuffers = std::mem::take(&mut self.framebuffers);
+        for f in framebuffers.values_mut().flatten() {
+            f.cache = None;
+        }
+        FboTables {
+            framebuffers,
+            renderbuffers: std::mem::take(&mut self.renderbuffers),
+            next_fb: std::mem::replace(&mut self.next_fb, 1),
+            next_rb: std::mem::replace(&mut self.next_rb, 1),
+        }
+    }
+
+    /// Moves the share group's tables in.
+    pub fn put_tables(&mut self, t: FboTables) {
+        self.framebuffers = t.framebuffers;
+        self.renderbuffers = t.renderbuffers;
+        self.next_fb = t.next_fb;
+        self.next_rb = t.next_rb;
+    }
+
     /// The version of image `a` (0 if it never changed).
     pub fn version(&self, a: Attachment) -> u64 {
         self.versions.get(&a).copied().unwrap_or(0)

@@ -351,6 +351,26 @@ impl Context {
         r
     }
 
+    /// Before the share group's tables leave this context: writes pending draws into the
+    /// bound draw object's images and drops its working copy (another context of the
+    /// group may change the images meanwhile).
+    pub fn fbo_check_in(&mut self) {
+        if self.fbo.draw != 0 {
+            self.fbo_sync();
+            self.fbo.ms_planes.clear();
+            self.fbo.stale = false;
+            self.fb = None;
+        }
+    }
+
+    /// After the share group's tables came back: assembles the bound draw object's
+    /// working copy anew from its images.
+    pub fn fbo_check_out(&mut self) {
+        if self.fbo.draw != 0 {
+            self.fb = self.assemble_draw(self.fbo.draw);
+        }
+    }
+
     /// Makes object `name` (0: the window) the draw binding, moving the working copy.
     pub fn set_draw_framebuffer(&mut self, name: u32) {
         self.settle_draws();

@@ -1,5 +1,6 @@
 //! Objects that OSMesa contexts created with a `sharelist` share: texture objects, buffer
-//! objects and display lists (GL's share group).
+//! objects, display lists, and (as in Mesa 22.3) framebuffer and renderbuffer objects
+//! (GL's share group). The bindings stay each context's own.
 //!
 //! The tables live in one [`ShareGroup`] per group. A context that becomes current on a
 //! thread checks the tables out into its own state (so the drawing code reads them as plain
@@ -25,6 +26,8 @@ pub struct SharedObjects {
     pub buffers: HashMap<u32, Option<BufferObject>>,
     /// Display lists and their names.
     pub lists: super::dlist::ListTable,
+    /// Framebuffer and renderbuffer objects and their names.
+    pub fbo: super::fbo::FboTables,
 }
 
 /// A share group: the tables, while no context of the group has them checked out.
@@ -40,6 +43,8 @@ impl ShareGroup {
             c.textures.next_name = s.next_texture;
             c.arrays.buffers = s.buffers;
             c.lists.put_table(s.lists);
+            c.fbo.put_tables(s.fbo);
+            c.fbo_check_out();
         }
     }
 
@@ -47,11 +52,13 @@ impl ShareGroup {
     pub fn check_in(&self, c: &mut Context) {
         let Ok(mut g) = self.0.lock() else { return };
         if g.is_none() {
+            c.fbo_check_in();
             *g = Some(SharedObjects {
                 textures: std::mem::take(&mut c.textures.objects),
                 next_texture: std::mem::replace(&mut c.textures.next_name, 1),
                 buffers: std::mem::take(&mut c.arrays.buffers),
                 lists: c.lists.take_table(),
+                fbo: c.fbo.take_tables(),
             });
         }
     }
