@@ -185,10 +185,11 @@ fn filter(fma: bool, tp: &Taps, n: [[f32; 4]; 4], corners: bool) -> [f32; 4] {
     }
     let (wx0, wy0) = (1.0 - fs, 1.0 - ft);
     let w = [wx0 * wy0, fs * wy0, wx0 * ft, fs * ft];
+    // (llvmpipe selects c00, c01, c10, c11 in turn; at most one is a corner)
     let mut cw = 0.0;
-    for k in 0..4 {
-        if tp.corner[k] {
-            cw = w[k];
+    for (&wk, &corner) in w.iter().zip(&tp.corner) {
+        if corner {
+            cw = wk;
         }
     }
     let cw = cw * (1.0f32 / 3.0);
