@@ -368,6 +368,7 @@ const SCENES: &[&str] = &[
     "point_params",
     "secondary_color_array",
     "fog_coord_array",
+    "wide_buffers",
 ];
 
 macro_rules! scene_tests {
@@ -508,6 +509,7 @@ scene_tests!(
     point_params,
     secondary_color_array,
     fog_coord_array,
+    wide_buffers,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
