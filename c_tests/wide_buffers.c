@@ -140,6 +140,9 @@ static void run(FILE *out, const char *name, GLenum format, GLenum type, int cha
     glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_SHORT, rs);
     snprintf(label, sizeof label, "%s_read_ushort", name);
     sgl_data(out, label, (size_t)W * H * 4 * sizeof(unsigned short), rs);
+    glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, rs);
+    snprintf(label, sizeof label, "%s_read_ubyte", name);
+    sgl_data(out, label, (size_t)W * H * 4, rs);
     sgl_text(out, "err", "%s err=0x%x\n", name, glGetError());
     OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
     OSMesaDestroyContext(ctx);
