@@ -358,6 +358,7 @@ const SCENES: &[&str] = &[
     "secondary_color_array",
     "fog_coord_array",
     "wide_buffers",
+    "fbo_float_color",
 ];
 
 macro_rules! scene_tests {
@@ -499,6 +500,7 @@ scene_tests!(
     secondary_color_array,
     fog_coord_array,
     wide_buffers,
+    fbo_float_color,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

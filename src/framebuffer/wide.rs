@@ -17,7 +17,7 @@ use super::float_to_ubyte;
 pub enum WideKind {
     /// R16G16B16A16_UNORM (R16G16B16_UNORM): the channel's integer, 0..=65535.
     Unorm16,
-    /// R16G16B16A16_FLOAT: the half float's value.
+    /// R16G16B16A16_FLOAT: the half float's value (converted toward zero).
     Float16,
     /// R32G32B32A32_FLOAT: the float.
     Float32,
@@ -50,7 +50,7 @@ impl WideKind {
     /// A shader's output channel as llvmpipe stores it: unorm16 clamps to [0, 1] (NaN
     /// gives 0) and converts with `lp_build_clamped_float_to_unsigned_norm`
     /// (`c·(65535/65536) + 128`, the low 16 mantissa bits); floats are not clamped, half
-    /// floats round to nearest even.
+    /// floats are converted toward zero ([`f16_round`]).
     #[inline(always)]
     pub fn from_shader(self, c: f32) -> f32 {
         match self {
@@ -126,17 +126,17 @@ pub fn unorm16(c: f32) -> u16 {
     (c * (65535.0f32 / 65536.0f32) + 128.0f32).to_bits() as u16
 }
 
-/// `x` rounded to the nearest half float (ties to even), as F16C's `vcvtps2ph` with
-/// round-to-nearest does: overflow gives ±infinity, NaN stays NaN, small values become
-/// half denormals or ±0.
+/// `x` converted to a half float as llvmpipe's store does (`lp_build_float_to_half`:
+/// F16C's `vcvtps2ph` with rounding mode 3, toward zero): finite values above the
+/// largest half (65504) give 65504, infinities and NaN stay, small values become half
+/// denormals or ±0.
 pub fn f16_round(x: f32) -> f32 {
     if !x.is_finite() {
         return x;
     }
     let a = x.abs();
-    // Largest finite half (65504) and the rounding boundary to infinity (65520).
-    if a >= 65520.0 {
-        return f32::INFINITY.copysign(x);
+    if a >= 65504.0 {
+        return 65504.0f32.copysign(x);
     }
     // Half keeps 11 significant bits down to 2^-14; below, a fixed step of 2^-24.
     let step = if a < 2.0f32.powi(-14) {
@@ -146,8 +146,8 @@ pub fn f16_round(x: f32) -> f32 {
         let e = ((a.to_bits() >> 23) as i32) - 127;
         2.0f32.powi(e - 10)
     };
-    // Exact: `a / step` is a power-of-two scaling, and its rounding is the half's.
-    ((a / step).round_ties_even() * step).copysign(x)
+    // Exact: `a / step` is a power-of-two scaling, and its truncation is the half's.
+    ((a / step).trunc() * step).copysign(x)
 }
 
 impl super::Target<'_> {
@@ -187,10 +187,10 @@ mod tests {
         assert_eq!(f16_round(1.0), 1.0);
         assert_eq!(f16_round(65504.0), 65504.0);
         assert_eq!(f16_round(65519.0), 65504.0);
-        assert_eq!(f16_round(65520.0), f32::INFINITY);
-        // 1 + 2^-11 is a tie between 1 and 1 + 2^-10: to even.
-        assert_eq!(f16_round(1.0 + 2.0f32.powi(-11)), 1.0);
-        assert_eq!(f16_round(1.0 + 3.0 * 2.0f32.powi(-11)), 1.0 + 2.0 * 2.0f32.powi(-10));
+        assert_eq!(f16_round(1e9), 65504.0);
+        assert_eq!(f16_round(f32::INFINITY), f32::INFINITY);
+        // Toward zero: 1 + 3·2^-11 lies between 1 + 2^-10 and 1 + 2^-9.
+        assert_eq!(f16_round(1.0 + 3.0 * 2.0f32.powi(-11)), 1.0 + 2.0f32.powi(-10));
         assert_eq!(f16_round(2.0f32.powi(-25)), 0.0);
         assert_eq!(f16_round(-0.1), -0.099975586);
         for k in 0..2048u32 {
