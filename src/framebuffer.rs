@@ -14,6 +14,8 @@ use crate::memory::HugeBuf;
 mod user;
 pub mod wide;
 
+#[cfg(test)]
+use user::stream_copy;
 pub use user::WideType;
 pub use wide::WideKind;
 
@@ -249,7 +251,11 @@ impl Framebuffer {
         self.wide = kind;
         self.wide_color = Vec::new();
         if let Some(k) = kind {
-            let a = if self.format.has_alpha() { 0.0 } else { k.one() };
+            let a = if self.format.has_alpha() {
+                0.0
+            } else {
+                k.one()
+            };
             let v = [0.0, 0.0, 0.0, a];
             self.wide_color = vec![v; self.width * self.height];
             fill_color(&mut self.color, k.mirror(v));
@@ -596,7 +602,10 @@ impl Framebuffer {
                 pending_depth,
                 pending_rows: marks.next().unwrap_or_default(),
                 wide,
-                wide_color: wide_color.as_mut().and_then(|c| c.next()).unwrap_or_default(),
+                wide_color: wide_color
+                    .as_mut()
+                    .and_then(|c| c.next())
+                    .unwrap_or_default(),
             });
             y0 += rows;
         }

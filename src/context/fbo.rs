@@ -464,10 +464,12 @@ impl FboState {
     /// The wide precision of the colour image `a` names (a wide renderbuffer), if any.
     pub fn wide_kind(&self, a: Option<Attachment>) -> Option<WideKind> {
         match a? {
-            Attachment::Renderbuffer(name) => match self.renderbuffers.get(&name)?.as_ref()?.format? {
-                RbFormat::Wide(k, _) => Some(k),
-                _ => None,
-            },
+            Attachment::Renderbuffer(name) => {
+                match self.renderbuffers.get(&name)?.as_ref()?.format? {
+                    RbFormat::Wide(k, _) => Some(k),
+                    _ => None,
+                }
+            }
             _ => None,
         }
     }

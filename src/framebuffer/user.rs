@@ -25,7 +25,7 @@ impl Framebuffer {
     }
 
     /// Whether [`Framebuffer::copy_to_user`] copies RGBA rows with streaming stores.
-    fn streamed(&self) -> bool {
+    pub(super) fn streamed(&self) -> bool {
         self.format == ColorFormat::Rgba && self.color.len() * 4 > STREAM_COPY_BYTES
     }
 
@@ -199,7 +199,6 @@ const STREAM_COPY_BYTES: usize = 2 << 20;
 
 /// Copies `src` into `out` (the same length) with non-temporal 16-byte stores where `out`
 /// is aligned (the caller issues the store fence once the whole copy is done).
-fn stream_copy(out: &mut [u8], src: &[u8]) {
+pub(super) fn stream_copy(out: &mut [u8], src: &[u8]) {
     crate::simd::stream_copy(out, src);
 }
-

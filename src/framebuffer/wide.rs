@@ -190,7 +190,10 @@ mod tests {
         assert_eq!(f16_round(1e9), 65504.0);
         assert_eq!(f16_round(f32::INFINITY), f32::INFINITY);
         // Toward zero: 1 + 3·2^-11 lies between 1 + 2^-10 and 1 + 2^-9.
-        assert_eq!(f16_round(1.0 + 3.0 * 2.0f32.powi(-11)), 1.0 + 2.0f32.powi(-10));
+        assert_eq!(
+            f16_round(1.0 + 3.0 * 2.0f32.powi(-11)),
+            1.0 + 2.0f32.powi(-10)
+        );
         assert_eq!(f16_round(2.0f32.powi(-25)), 0.0);
         assert_eq!(f16_round(-0.1), -0.099975586);
         for k in 0..2048u32 {

@@ -191,9 +191,10 @@ pub unsafe fn read_pixels(
                         }
                     }
                 }
-                ReadKind::Color(map, n) if fb.wide.is_some() => {
+                // SAFETY: `p` addresses this pixel's `n * tsize` bytes of the packed image.
+                ReadKind::Color(map, n) if fb.wide.is_some() => unsafe {
                     super::wide::read_wide_pixel(fb, idx, map, n, ty, p, tsize, put)
-                }
+                },
                 ReadKind::Color(map, n) => {
                     let px = color_at(idx);
                     for (k, &ch) in map.iter().take(n).enumerate() {

@@ -11,8 +11,11 @@ use crate::gl::enums::*;
 /// Writes pixel `idx` of wide buffer `fb` at `p`: `n` components of `tsize` bytes, channel
 /// `map[k]` in component `k` (`usize::MAX` for luminance, R + G + B); `put` writes a value
 /// of the read type (normalised when asked).
+///
+/// # Safety
+/// `p` must be writable for `n * tsize` bytes.
 #[allow(clippy::too_many_arguments)]
-pub fn read_wide_pixel(
+pub unsafe fn read_wide_pixel(
     fb: &Framebuffer,
     idx: usize,
     map: [usize; 4],
@@ -35,8 +38,7 @@ pub fn read_wide_pixel(
         }
     });
     for (k, &ch) in map.iter().take(n).enumerate() {
-        // SAFETY: k * tsize is inside this pixel's bytes of the packed image the caller
-        // addresses with `p`.
+        // SAFETY: k * tsize < n * tsize, inside the bytes the caller vouches for.
         let q = unsafe { p.add(k * tsize) };
         let v = if ch == usize::MAX {
             let l = rgba[0] + rgba[1] + rgba[2];
@@ -49,11 +51,13 @@ pub fn read_wide_pixel(
             rgba[ch]
         };
         match ty {
-            // SAFETY: (all three) `q` addresses `tsize` bytes of the packed image.
+            // SAFETY: `q` addresses `tsize` (4) bytes of the caller's pixel.
             GL_FLOAT => unsafe { (q as *mut f32).write_unaligned(v) },
+            // SAFETY: `q` addresses `tsize` (2) bytes of the caller's pixel.
             GL_UNSIGNED_SHORT if ch != usize::MAX => unsafe {
                 (q as *mut u16).write_unaligned(kind.to_u16(raw[ch]))
             },
+            // SAFETY: `q` addresses `tsize` (1) byte of the caller's pixel.
             GL_UNSIGNED_BYTE => unsafe { *q = float_to_ubyte(v) },
             _ => put(q, v as f64, true),
         }
