@@ -385,7 +385,8 @@ pub fn shade_span<
 
 /// Shades the `live` lanes of the chunk of [`LANES`] pixels starting at `x` in row `py`.
 /// `units` are the enabled texture units, whose sampled values `source` carries (textured
-/// draws always take the `FULL` path).
+/// draws always take the `FULL` path). A wide target (which the rasterizer draws through
+/// the `FULL` path) takes [`shade_chunk_wide`].
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub fn shade_chunk<
@@ -394,6 +395,58 @@ pub fn shade_chunk<
     const FLAT: bool,
     const PERSP: bool,
     const FULL: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    source: ChunkColors<'_>,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: [bool; LANES],
+    stats: &mut Stats,
+) {
+    if FULL && fb.wide.is_some() {
+        shade_chunk_wide::<M, DEPTH, FLAT, PERSP>(t, plan, units, source, fb, py, x, live, stats);
+    } else {
+        shade_chunk_as::<M, DEPTH, FLAT, PERSP, FULL, false>(
+            t, plan, units, source, fb, py, x, live, stats,
+        );
+    }
+}
+
+/// [`shade_chunk`] into a wide target: the colours stay f32 to the store
+/// ([`super::wide`]). Out of line: it serves the rare 16-bit and float buffers, and the
+/// 8-bit paths keep their size (a fused multiply-add here may become a call to `fmaf`,
+/// which rounds alike).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn shade_chunk_wide<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    source: ChunkColors<'_>,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: [bool; LANES],
+    stats: &mut Stats,
+) {
+    shade_chunk_as::<M, DEPTH, FLAT, PERSP, true, true>(
+        t, plan, units, source, fb, py, x, live, stats,
+    );
+}
+
+/// [`shade_chunk`]'s body; `WIDE` keeps the float colours for [`super::wide::store`].
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn shade_chunk_as<
+    M: Madd,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+    const FULL: bool,
+    const WIDE: bool,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -452,7 +505,7 @@ pub fn shade_chunk<
         let a2c = ms.filter(|m| m.alpha_to_coverage);
         let alpha_out = a2c.is_some().then_some(&mut alpha);
         // A wide buffer stores the float colours ([`super::wide`]).
-        let float_out = fb.wide.is_some().then_some(&mut cf);
+        let float_out = if WIDE { Some(&mut cf) } else { None };
         c = match source {
             ChunkColors::Ready(c) => *c,
             ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
@@ -555,7 +608,7 @@ pub fn shade_chunk<
     if !FULL {
         c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
     }
-    if let (true, Some(k)) = (FULL, fb.wide) {
+    if let (true, Some(k)) = (WIDE, fb.wide) {
         // Wide buffers convert, blend and store at their own precision (the rasterizer
         // takes the FULL path for them).
         stats.color_writes += super::wide::store(k, plan, fb, row, n, &live, &cf);
