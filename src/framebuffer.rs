@@ -11,6 +11,14 @@
 
 use crate::memory::HugeBuf;
 
+mod user;
+pub mod wide;
+
+#[cfg(test)]
+use user::stream_copy;
+pub use user::WideType;
+pub use wide::WideKind;
+
 /// The colour layout of the OSMesa user buffer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColorFormat {
@@ -181,6 +189,12 @@ pub struct Framebuffer {
     /// Whether row 0 is the top row (the OSMesa window, y flipped as llvmpipe's window
     /// surfaces are) or GL's row 0 (framebuffer objects, which llvmpipe draws unflipped).
     pub y_flip: bool,
+    /// The precision of a colour buffer wider than 8 bits ([`wide`]); `None` for 8-bit
+    /// buffers.
+    pub wide: Option<WideKind>,
+    /// The wide colour plane (empty for 8-bit buffers), row-major like `color`, which
+    /// then holds its 8-bit mirror ([`wide`]).
+    pub wide_color: Vec<[f32; 4]>,
 }
 
 impl Framebuffer {
@@ -224,6 +238,66 @@ impl Framebuffer {
             pending_depth: None,
             pending_rows: vec![false; height],
             y_flip: true,
+            wide: None,
+            wide_color: Vec::new(),
+        }
+    }
+
+    /// Gives the buffer a wide colour plane of `kind` (or takes it away), zero as a new
+    /// buffer is (alpha 1 without alpha), and the 8-bit plane its mirror.
+    pub fn set_wide(&mut self, kind: Option<WideKind>) {
+        self.resolve();
+        self.uniform_color = None;
+        self.wide = kind;
+        self.wide_color = Vec::new();
+        if let Some(k) = kind {
+            let a = if self.format.has_alpha() {
+                0.0
+            } else {
+                k.one()
+            };
+            let v = [0.0, 0.0, 0.0, a];
+            self.wide_color = vec![v; self.width * self.height];
+            fill_color(&mut self.color, k.mirror(v));
+        }
+    }
+
+    /// Stored wide colour of pixel `i` (y-down row-major) of a wide buffer: the wide
+    /// plane's value, or the 8-bit value widened where a path that only knows 8 bits wrote
+    /// the pixel last ([`wide`]).
+    #[inline]
+    pub fn wide_at(&self, i: usize) -> [f32; 4] {
+        let k = self.wide.expect("a wide buffer");
+        let c8 = self.color_at(i);
+        let w = self.wide_color[i];
+        if k.mirror(w) == c8 {
+            w
+        } else {
+            k.from_u8(c8)
+        }
+    }
+
+    /// Writes the stored wide colour `v` into the channels `mask` of the pixels `x0..x1`
+    /// of memory rows `y0..y1` of a wide buffer (glClear), with their 8-bit mirror.
+    pub fn clear_wide(&mut self, [x0, y0, x1, y1]: [usize; 4], mask: [bool; 4], v: [f32; 4]) {
+        let Some(k) = self.wide else { return };
+        self.resolve();
+        self.uniform_color = None;
+        let w = self.width;
+        for y in y0..y1 {
+            for i in y * w + x0..y * w + x1 {
+                let mut p = self.wide_at(i);
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = v[c];
+                    }
+                }
+                if !self.format.has_alpha() {
+                    p[3] = k.one();
+                }
+                self.wide_color[i] = p;
+                self.color[i] = k.mirror(p);
+            }
         }
     }
 
@@ -399,156 +473,6 @@ impl ColorFormat {
     }
 }
 
-impl Framebuffer {
-    /// Copies the whole buffer into the user's memory (bottom-up when `y_up`).
-    ///
-    /// # Safety
-    /// `dst` must be valid for writes of `stride * (height - 1) + width * bpp` bytes.
-    pub unsafe fn copy_to_user(&self, dst: *mut u8, stride: usize, y_up: bool) {
-        // Memory-bound: measured slower split over two threads (1024² clear + copy 0.686 ms
-        // against 0.576 ms on one), so it stays on the calling thread.
-        for row in 0..self.height {
-            // SAFETY: forwarded from the caller.
-            unsafe { self.copy_row(row, dst, stride, y_up) }
-        }
-        #[cfg(target_arch = "x86_64")]
-        if self.streamed() {
-            // Orders the streaming stores before whatever the program does next.
-            crate::simd::store_fence();
-        }
-    }
-
-    /// Whether [`Framebuffer::copy_to_user`] copies RGBA rows with streaming stores.
-    fn streamed(&self) -> bool {
-        self.format == ColorFormat::Rgba && self.color.len() * 4 > STREAM_COPY_BYTES
-    }
-
-    /// Copies colour row `row` into the user buffer (see [`Framebuffer::copy_to_user`]).
-    ///
-    /// # Safety
-    /// As [`Framebuffer::copy_to_user`].
-    unsafe fn copy_row(&self, row: usize, dst: *mut u8, stride: usize, y_up: bool) {
-        let bpp = self.format.bytes_per_pixel();
-        let w = self.width;
-        let dst_row = if y_up { self.height - 1 - row } else { row };
-        // Every pixel holds `uniform_color`, or this row still holds the recorded clear (no
-        // draw reached it): write the colour's user form without reading the buffer back.
-        let fill = self.uniform_color.or(match self.pending_color {
-            Some(c) if self.row_pending(row) => Some(c),
-            _ => None,
-        });
-        if let Some(c) = fill {
-            let px = self.format.user_bytes(c);
-            // SAFETY: as below, `out` is row `dst_row`'s first `width * bpp` bytes.
-            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
-            if bpp == 4 {
-                fill_color_bytes(out, [px[0], px[1], px[2], px[3]]);
-            } else {
-                for o in out.chunks_exact_mut(bpp) {
-                    o.copy_from_slice(&px[..bpp]);
-                }
-            }
-            return;
-        }
-        {
-            let src = &self.color[row * w..(row + 1) * w];
-            // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
-            // least `width * bpp` bytes; `out` is exactly that row's first `width * bpp` bytes.
-            let out = unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * bpp) };
-            match self.format {
-                ColorFormat::Rgba if self.streamed() => stream_copy(out, src.as_flattened()),
-                ColorFormat::Rgba => out.copy_from_slice(src.as_flattened()),
-                ColorFormat::Bgra => {
-                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
-                        let v = u32::from_le_bytes(*c);
-                        let v = (v & 0xFF00_FF00) | ((v >> 16) & 0xFF) | ((v & 0xFF) << 16);
-                        o.copy_from_slice(&v.to_le_bytes());
-                    }
-                }
-                ColorFormat::Argb => {
-                    for (o, c) in out.chunks_exact_mut(4).zip(src) {
-                        let v = u32::from_le_bytes(*c).rotate_left(8);
-                        o.copy_from_slice(&v.to_le_bytes());
-                    }
-                }
-                ColorFormat::Rgb => {
-                    for (o, c) in out.chunks_exact_mut(3).zip(src) {
-                        o.copy_from_slice(&c[..3]);
-                    }
-                }
-                ColorFormat::Rgb565 => {
-                    for (o, c) in out.chunks_exact_mut(2).zip(src) {
-                        let v = ((c[0] as u16 >> 3) << 11)
-                            | ((c[1] as u16 >> 2) << 5)
-                            | (c[2] as u16 >> 3);
-                        o.copy_from_slice(&v.to_ne_bytes());
-                    }
-                }
-            }
-        }
-    }
-}
-
-/// A user buffer wider than 8 bits per channel (OSMesaMakeCurrent's GL_UNSIGNED_SHORT and
-/// GL_FLOAT types). Mesa stores these as R16G16B16A16_UNORM / R32G32B32A32_FLOAT (or the
-/// RGB forms) whatever the OSMESA_RGBA/BGRA/ARGB order; softgl renders them through its
-/// 8-bit colour path and widens at the copy (`v * 257`, `v / 255`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WideType {
-    /// GL_UNSIGNED_SHORT: native-endian u16 channels.
-    U16,
-    /// GL_FLOAT: native-endian f32 channels.
-    F32,
-}
-
-impl WideType {
-    /// Bytes per channel.
-    pub fn bytes(self) -> usize {
-        match self {
-            WideType::U16 => 2,
-            WideType::F32 => 4,
-        }
-    }
-}
-
-impl Framebuffer {
-    /// Copies the whole buffer into a user buffer of `ty` channels, in R, G, B(, A) order
-    /// (4 channels for Rgba, 3 for Rgb), bottom-up when `y_up`.
-    ///
-    /// # Safety
-    /// `dst` must be valid for writes of `stride * (height - 1) + width * channels * bytes`.
-    pub unsafe fn copy_to_user_wide(&self, dst: *mut u8, stride: usize, y_up: bool, ty: WideType) {
-        let n = if self.format == ColorFormat::Rgb {
-            3
-        } else {
-            4
-        };
-        let px_bytes = n * ty.bytes();
-        let w = self.width;
-        // Rows that still hold a recorded clear are the clear colour.
-        let uniform = self.pending_color.map(|c| vec![c; w]);
-        for row in 0..self.height {
-            let src = match &uniform {
-                Some(u) if self.row_pending(row) => &u[..],
-                _ => &self.color[row * w..(row + 1) * w],
-            };
-            let dst_row = if y_up { self.height - 1 - row } else { row };
-            // SAFETY: the caller guarantees `height` rows of `stride` bytes, each holding at
-            // least `width * px_bytes` bytes; `out` is that row's first `width * px_bytes`.
-            let out =
-                unsafe { std::slice::from_raw_parts_mut(dst.add(dst_row * stride), w * px_bytes) };
-            for (o, c) in out.chunks_exact_mut(px_bytes).zip(src) {
-                for (k, oc) in o.chunks_exact_mut(ty.bytes()).enumerate() {
-                    match ty {
-                        WideType::U16 => oc.copy_from_slice(&(c[k] as u16 * 257).to_ne_bytes()),
-                        WideType::F32 => oc.copy_from_slice(&(c[k] as f32 / 255.0).to_ne_bytes()),
-                    }
-                }
-            }
-        }
-    }
-}
-
 /// A band of framebuffer rows that one thread rasterizes into: rows `y0..y0 + rows` of the
 /// colour, depth and stencil buffers (indices inside are relative to row `y0`).
 pub struct Target<'a> {
@@ -576,6 +500,10 @@ pub struct Target<'a> {
     pub pending_depth: Option<u32>,
     /// The band's rows' marks in [`Framebuffer::pending_rows`].
     pub pending_rows: &'a mut [bool],
+    /// The precision of a wide colour buffer ([`Framebuffer::wide`]).
+    pub wide: Option<WideKind>,
+    /// The band's rows of the wide colour plane (empty for 8-bit buffers).
+    pub wide_color: &'a mut [[f32; 4]],
 }
 
 impl Framebuffer {
@@ -615,6 +543,8 @@ impl Framebuffer {
             pending_depth: None,
             // Nothing for `Target::resolve` to do: the rows drawn into are written.
             pending_rows: &mut [],
+            wide: self.wide,
+            wide_color: &mut self.wide_color,
         }
     }
 
@@ -652,6 +582,8 @@ impl Framebuffer {
         let mut depth = (!self.depth.is_empty()).then(|| self.depth.chunks_mut(n));
         let mut stencil = (!self.stencil.is_empty()).then(|| self.stencil.chunks_mut(n));
         let mut marks = self.pending_rows.chunks_mut(band_rows);
+        let wide = self.wide;
+        let mut wide_color = (wide.is_some()).then(|| self.wide_color.chunks_mut(n));
         let mut out = Vec::new();
         let mut y0 = 0;
         while y0 < h {
@@ -669,6 +601,11 @@ impl Framebuffer {
                 pending_color,
                 pending_depth,
                 pending_rows: marks.next().unwrap_or_default(),
+                wide,
+                wide_color: wide_color
+                    .as_mut()
+                    .and_then(|c| c.next())
+                    .unwrap_or_default(),
             });
             y0 += rows;
         }
@@ -701,17 +638,6 @@ impl Target<'_> {
             self.depth.fill(d);
         }
     }
-}
-
-/// Colour buffers above this many bytes are copied to the user with non-temporal stores:
-/// the copy is larger than a core's L2 cache, so its lines would be evicted before anyone
-/// reads them, and streaming them saves reading each destination line first.
-const STREAM_COPY_BYTES: usize = 2 << 20;
-
-/// Copies `src` into `out` (the same length) with non-temporal 16-byte stores where `out`
-/// is aligned (the caller issues the store fence once the whole copy is done).
-fn stream_copy(out: &mut [u8], src: &[u8]) {
-    crate::simd::stream_copy(out, src);
 }
 
 /// Writes the recorded clears `color` and `depth` into the rows of `color_rows` and

@@ -122,17 +122,6 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
     (
-        "osmesa_wide_formats",
-        Tolerance {
-            max_channel_diff: 1,
-            max_percent_off: 13.0,
-            reason: "16-bit and float OSMesa buffers: Mesa renders and blends in \
-                     R16G16B16A16_UNORM / R32G32B32A32_FLOAT (llvmpipe-rules §13), softgl in \
-                     its 8-bit path, widened at the copy; measured at full precision: max \
-                     |diff| 0.0056 (1.44/255), 88% of pixels identical after rounding to 8 bits",
-        },
-    ),
-    (
         "evaluators",
         Tolerance {
             max_channel_diff: 1,
@@ -229,8 +218,8 @@ const REFERENCE_UNPINNED: &[(&str, &str)] = &[(
     "osmesa_wide_formats",
     "llvmpipe's 16-bit RGB (no alpha) buffer, R16G16B16_UNORM, comes out up to 138 apart \
      under GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 from its AVX2 rendering, in 54% of the \
-     rgb_ushort image; softgl's widened 8-bit path matches the AVX2 rendering within this \
-     scene's tolerance at every level",
+     rgb_ushort image; softgl's 16-bit path (fragment/wide.rs) matches the AVX2 rendering \
+     exactly at every level",
 )];
 
 /// Exactness: the default tolerance of every scene.
@@ -371,6 +360,8 @@ const SCENES: &[&str] = &[
     "tex_cube_seamless",
     "fbo_attach_types",
     "fbo_share",
+    "wide_buffers",
+    "fbo_float_color",
 ];
 
 macro_rules! scene_tests {
@@ -514,6 +505,8 @@ scene_tests!(
     tex_cube_seamless,
     fbo_attach_types,
     fbo_share,
+    wide_buffers,
+    fbo_float_color,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

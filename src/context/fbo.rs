@@ -25,7 +25,7 @@
 //! Attachments with different sample counts are GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE.
 
 use super::{GlError, GlResult};
-use crate::framebuffer::{DepthFormat, Framebuffer};
+use crate::framebuffer::{DepthFormat, Framebuffer, WideKind};
 use crate::texture::{BaseFormat, Level, TextureObject, TextureState};
 use std::collections::HashMap;
 
@@ -55,7 +55,19 @@ pub enum RbFormat {
     DepthStencil(DepthFormat),
     /// 8-bit stencil only.
     Stencil8,
+    /// Colour wider than 8 bits (GL_RGBA16, GL_RGBA16F, GL_RGBA32F; with `false` the RGB
+    /// forms, whose alpha reads as 1), drawn through the wide colour plane.
+    Wide(WideKind, bool),
 }
+
+/// GL_RGBA32F (ARB_texture_float; not in the generated enums).
+const RGBA32F: u32 = 0x8814;
+/// GL_RGB32F.
+const RGB32F: u32 = 0x8815;
+/// GL_RGBA16F.
+const RGBA16F: u32 = 0x881A;
+/// GL_RGB16F.
+const RGB16F: u32 = 0x881B;
 
 impl RbFormat {
     /// The layout for a glRenderbufferStorage internal format; `None` when the format is
@@ -64,11 +76,18 @@ impl RbFormat {
         use crate::gl::enums::*;
         use crate::gl::glext_enums::*;
         Some(match internal {
-            GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2 | GL_RGBA12
-            | GL_RGBA16 => RbFormat::Rgba8,
-            GL_RGB | GL_RGB8 | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB10 | GL_RGB12 | GL_RGB16 => {
+            GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2 | GL_RGBA12 => {
+                RbFormat::Rgba8
+            }
+            GL_RGB | GL_RGB8 | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB10 | GL_RGB12 => {
                 RbFormat::Rgb8
             }
+            GL_RGBA16 => RbFormat::Wide(WideKind::Unorm16, true),
+            GL_RGB16 => RbFormat::Wide(WideKind::Unorm16, false),
+            RGBA16F => RbFormat::Wide(WideKind::Float16, true),
+            RGB16F => RbFormat::Wide(WideKind::Float16, false),
+            RGBA32F => RbFormat::Wide(WideKind::Float32, true),
+            RGB32F => RbFormat::Wide(WideKind::Float32, false),
             GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => {
                 RbFormat::Legacy(BaseFormat::Alpha)
             }
@@ -107,6 +126,10 @@ impl RbFormat {
             RbFormat::Depth(d) => [0, 0, 0, 0, d.bits(), 0],
             RbFormat::DepthStencil(d) => [0, 0, 0, 0, d.bits(), 8],
             RbFormat::Stencil8 => [0, 0, 0, 0, 0, 8],
+            RbFormat::Wide(k, alpha) => {
+                let b = k.bits();
+                [b, b, b, if alpha { b } else { 0 }, 0, 0]
+            }
         }
     }
 }
@@ -128,6 +151,8 @@ pub struct Renderbuffer {
     pub depth: Vec<u32>,
     /// Stencil values (stencil formats).
     pub stencil: Vec<u8>,
+    /// Wide colour values, stored as the wide plane keeps them ([`RbFormat::Wide`]).
+    pub wide: Vec<[f32; 4]>,
     /// GL_RENDERBUFFER_SAMPLES: 0, or [`SAMPLES`] planes of `width * height` values each.
     pub samples: u32,
 }
@@ -146,6 +171,7 @@ impl Renderbuffer {
     ) -> GlResult<()> {
         let n = w * h * (samples as usize).max(1);
         let (mut color, mut depth, mut stencil) = (Vec::new(), Vec::new(), Vec::new());
+        let mut wide = Vec::new();
         let oom = |_| GlError::OutOfMemory;
         match format {
             RbFormat::Rgba8 | RbFormat::Rgb8 | RbFormat::Legacy(_) => {
@@ -157,6 +183,10 @@ impl Renderbuffer {
                 stencil.try_reserve_exact(n).map_err(oom)?;
             }
             RbFormat::Stencil8 => stencil.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Wide(..) => wide.try_reserve_exact(n).map_err(oom)?,
+        }
+        if let RbFormat::Wide(k, alpha) = format {
+            wide.resize(n, [0.0, 0.0, 0.0, if alpha { 0.0 } else { k.one() }]);
         }
         let a = if format == RbFormat::Rgb8 { 255 } else { 0 };
         color.resize(color.capacity().min(n), [0, 0, 0, a]);
@@ -170,6 +200,7 @@ impl Renderbuffer {
             color,
             depth,
             stencil,
+            wide,
             samples,
         };
         Ok(())
@@ -464,6 +495,19 @@ impl FboState {
         self.renderbuffers.get_mut(&self.renderbuffer)?.as_mut()
     }
 
+    /// The wide precision of the colour image `a` names (a wide renderbuffer), if any.
+    pub fn wide_kind(&self, a: Option<Attachment>) -> Option<WideKind> {
+        match a? {
+            Attachment::Renderbuffer(name) => {
+                match self.renderbuffers.get(&name)?.as_ref()?.format? {
+                    RbFormat::Wide(k, _) => Some(k),
+                    _ => None,
+                }
+            }
+            _ => None,
+        }
+    }
+
     /// The size and kind of the image `a` names; `None` when it names nothing or an image
     /// that does not exist (yet).
     pub fn image_info(&self, a: Attachment, textures: &TextureState) -> Option<ImageInfo> {
@@ -478,6 +522,8 @@ impl FboState {
                     RbFormat::Depth(d) => ImageKind::Depth(d, false),
                     RbFormat::DepthStencil(d) => ImageKind::Depth(d, true),
                     RbFormat::Stencil8 => ImageKind::Stencil,
+                    RbFormat::Wide(_, true) => ImageKind::Color(BaseFormat::Rgba),
+                    RbFormat::Wide(_, false) => ImageKind::Color(BaseFormat::Rgb),
                 };
                 Some(ImageInfo {
                     width: rb.width,

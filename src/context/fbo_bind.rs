@@ -47,6 +47,8 @@ enum ImageMut<'a> {
     DepthStencil(&'a mut [u32], &'a mut [u8]),
     /// Renderbuffer stencil.
     Stencil(&'a mut [u8]),
+    /// Wide renderbuffer colour ([`super::fbo::RbFormat::Wide`]).
+    Wide(&'a mut [[f32; 4]]),
 }
 
 /// Sample plane `plane` of a renderbuffer's values (`v` itself when it has no planes).
@@ -78,6 +80,8 @@ fn image_mut<'a>(
                     _ => BaseFormat::Rgba,
                 };
                 ImageMut::Color(plane_of(&mut rb.color, n, ns, plane), base)
+            } else if !rb.wide.is_empty() {
+                ImageMut::Wide(plane_of(&mut rb.wide, n, ns, plane))
             } else if !rb.depth.is_empty() {
                 ImageMut::DepthStencil(
                     plane_of(&mut rb.depth, n, ns, plane),
@@ -174,6 +178,7 @@ impl Context {
             _ => DepthFormat::None,
         };
         let stencil = parts.stencil.is_some();
+        let wide = self.fbo.wide_kind(parts.color);
         let seen: Vec<(Attachment, u64)> = parts
             .roles()
             .map(|(a, _)| (a, self.fbo.version(a)))
@@ -185,7 +190,8 @@ impl Context {
                 f.format,
                 f.depth_format,
                 f.stencil.is_empty(),
-            ) == (w, h, format, depth, !stencil)
+                f.wide,
+            ) == (w, h, format, depth, !stencil, wide)
         };
         let mut fb = match cached {
             Some(c) if fits(&c.fb) && c.seen == seen => return Some(c.fb),
@@ -199,6 +205,7 @@ impl Context {
                 let mut fb = Framebuffer::new(w, h, format, depth, stencil);
                 // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
                 fb.y_flip = false;
+                fb.set_wide(wide);
                 fb
             }
         };
@@ -604,6 +611,15 @@ fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
                     fb.depth[dst + x] = u32::from_le_bytes(px[src + x]);
                 }
             }
+            ImageMut::Wide(px) => {
+                if let Some(k) = fb.wide {
+                    for x in 0..w {
+                        let v = px[src + x];
+                        fb.wide_color[dst + x] = v;
+                        fb.color[dst + x] = k.mirror(v);
+                    }
+                }
+            }
             ImageMut::DepthStencil(d, s) => {
                 if !stencil && !fb.depth.is_empty() {
                     fb.depth[dst..dst + w].copy_from_slice(&d[src..src + w]);
@@ -636,6 +652,11 @@ fn store(fb: &Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
             ImageMut::DepthTexels(px) if !stencil && !fb.depth.is_empty() => {
                 for x in 0..w {
                     px[dst + x] = fb.depth[src + x].to_le_bytes();
+                }
+            }
+            ImageMut::Wide(px) if fb.wide.is_some() => {
+                for x in 0..w {
+                    px[dst + x] = fb.wide_at(src + x);
                 }
             }
             ImageMut::DepthStencil(d, s) => {

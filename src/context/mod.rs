@@ -662,6 +662,18 @@ impl Context {
                 }
             }
         }
+        if let (Some(k), true) = (fb.wide, mask & GL_COLOR_BUFFER_BIT != 0) {
+            // A wide buffer gets the clear colour at its own precision: packed as the fast
+            // clear does, or converted as the quad's shader output.
+            let v = st.clear_color.map(|c| {
+                if quad_path {
+                    k.from_shader(c)
+                } else {
+                    k.from_clear(c)
+                }
+            });
+            fb.clear_wide([x0, y0, x1, y1], color_mask, v);
+        }
         if quad_path && mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask && !fb.depth.is_empty() {
             let v = if quad_path {
                 // the state tracker's quad: z = f32(2d − 1) through the viewport's ·0.5 + 0.5
@@ -702,7 +714,7 @@ pub fn clamp01(v: f64) -> f64 {
 }
 
 /// The wide channel type of an OSMesaMakeCurrent `type`, `None` for 8-bit types.
-fn wide_type(ty: u32) -> Option<crate::framebuffer::WideType> {
+pub(crate) fn wide_type(ty: u32) -> Option<crate::framebuffer::WideType> {
     use crate::framebuffer::WideType;
     match ty {
         crate::gl::enums::GL_UNSIGNED_SHORT => Some(WideType::U16),

@@ -29,6 +29,13 @@ impl Context {
         self.target.ty = ty;
         self.target.width = width;
         self.target.height = height;
+        // 16-bit and float buffers are rendered at their own precision.
+        let kind = super::wide_type(ty).map(|t| t.kind());
+        self.with_window(|c| {
+            if let Some(fb) = c.fb.as_mut().filter(|fb| fb.wide != kind) {
+                fb.set_wide(kind);
+            }
+        });
     }
 
     /// OSMESA_ROW_LENGTH: the user buffer's row length in pixels (0 = its width).

@@ -14,6 +14,7 @@ pub mod blend;
 pub mod simd;
 pub mod simd_tex;
 pub mod span;
+pub mod wide;
 
 use crate::framebuffer::DepthFormat;
 use crate::pipe::{BlendState, CompareFunc, LogicOp, StencilFace, StencilOp};
@@ -47,6 +48,8 @@ pub struct FragPlan {
     pub smooth: Option<crate::raster::smooth::Smooth>,
     /// One sample's pass of a multisample triangle draw (general path only).
     pub ms: Option<MsPass>,
+    /// glBlendColor as floats, for blending into wide buffers ([`wide`]).
+    pub blend_color: [f32; 4],
 }
 
 /// One pass of a 4x multisample triangle draw: the rasterizer tests this sample's point,

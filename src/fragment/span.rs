@@ -272,7 +272,8 @@ pub enum ChunkColors<'a> {
 
 /// The colours of [`LANES`] pixels as Mesa's fixed-function fragment shader computes them
 /// in f32: the texture environment of every enabled unit, then the separate specular
-/// colour, then fog; converted to 8 bits.
+/// colour, then fog; converted to 8 bits (and kept as floats in `float_out` for wide
+/// buffers).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
@@ -284,6 +285,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     texels: Option<&TexLanes>,
     cov: Option<&[f32; LANES]>,
     mut alpha_out: Option<&mut [f32; LANES]>,
+    mut float_out: Option<&mut [[f32; LANES]; 4]>,
 ) -> Lanes {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
     let frag = frag_colors::<M, FLAT, PERSP>(t, fx, fy, &oow);
@@ -328,6 +330,11 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         }
         if let Some(a) = alpha_out.as_deref_mut() {
             a[i] = prev[3];
+        }
+        if let Some(f) = float_out.as_deref_mut() {
+            for ch in 0..4 {
+                f[ch][i] = prev[ch];
+            }
         }
         for ch in 0..4 {
             c[ch][i] = unorm8(prev[ch]);
@@ -378,7 +385,8 @@ pub fn shade_span<
 
 /// Shades the `live` lanes of the chunk of [`LANES`] pixels starting at `x` in row `py`.
 /// `units` are the enabled texture units, whose sampled values `source` carries (textured
-/// draws always take the `FULL` path).
+/// draws always take the `FULL` path). A wide target (which the rasterizer draws through
+/// the `FULL` path) takes [`shade_chunk_wide`].
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub fn shade_chunk<
@@ -387,6 +395,58 @@ pub fn shade_chunk<
     const FLAT: bool,
     const PERSP: bool,
     const FULL: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    source: ChunkColors<'_>,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: [bool; LANES],
+    stats: &mut Stats,
+) {
+    if FULL && fb.wide.is_some() {
+        shade_chunk_wide::<M, DEPTH, FLAT, PERSP>(t, plan, units, source, fb, py, x, live, stats);
+    } else {
+        shade_chunk_as::<M, DEPTH, FLAT, PERSP, FULL, false>(
+            t, plan, units, source, fb, py, x, live, stats,
+        );
+    }
+}
+
+/// [`shade_chunk`] into a wide target: the colours stay f32 to the store
+/// ([`super::wide`]). Out of line: it serves the rare 16-bit and float buffers, and the
+/// 8-bit paths keep their size (a fused multiply-add here may become a call to `fmaf`,
+/// which rounds alike).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn shade_chunk_wide<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    source: ChunkColors<'_>,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: [bool; LANES],
+    stats: &mut Stats,
+) {
+    shade_chunk_as::<M, DEPTH, FLAT, PERSP, true, true>(
+        t, plan, units, source, fb, py, x, live, stats,
+    );
+}
+
+/// [`shade_chunk`]'s body; `WIDE` keeps the float colours for [`super::wide::store`].
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn shade_chunk_as<
+    M: Madd,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+    const FULL: bool,
+    const WIDE: bool,
 >(
     t: &SetupTriangle,
     plan: &FragPlan,
@@ -435,6 +495,7 @@ pub fn shade_chunk<
     };
     let fy = if ms.is_some() { fy + 0.5 } else { fy };
     let mut c: Lanes = [[0u8; LANES]; 4];
+    let mut cf = [[0f32; LANES]; 4];
     if FULL {
         let cov = plan
             .smooth
@@ -443,18 +504,31 @@ pub fn shade_chunk<
         let mut alpha = [0f32; LANES];
         let a2c = ms.filter(|m| m.alpha_to_coverage);
         let alpha_out = a2c.is_some().then_some(&mut alpha);
+        // A wide buffer stores the float colours ([`super::wide`]).
+        let float_out = if WIDE { Some(&mut cf) } else { None };
         c = match source {
             ChunkColors::Ready(c) => *c,
-            ChunkColors::Textured(tx) => {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, Some(tx), cov, alpha_out)
-            }
+            ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
+                t,
+                plan,
+                &fx,
+                fy,
+                units,
+                Some(tx),
+                cov,
+                alpha_out,
+                float_out,
+            ),
             ChunkColors::Shaded
                 if plan.separate_specular
                     || plan.fog.is_some()
                     || cov.is_some()
-                    || alpha_out.is_some() =>
+                    || alpha_out.is_some()
+                    || float_out.is_some() =>
             {
-                shaded_colors::<M, FLAT, PERSP>(t, plan, &fx, fy, units, None, cov, alpha_out)
+                shaded_colors::<M, FLAT, PERSP>(
+                    t, plan, &fx, fy, units, None, cov, alpha_out, float_out,
+                )
             }
             ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
         };
@@ -533,6 +607,12 @@ pub fn shade_chunk<
     }
     if !FULL {
         c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
+    }
+    if let (true, Some(k)) = (WIDE, fb.wide) {
+        // Wide buffers convert, blend and store at their own precision (the rasterizer
+        // takes the FULL path for them).
+        stats.color_writes += super::wide::store(k, plan, fb, row, n, &live, &cf);
+        return;
     }
     let dst = &mut fb.color[row..row + n];
     if FULL && (plan.blend.is_some() || plan.logic.is_some()) {

@@ -91,5 +91,6 @@ pub fn fragment(
         count_samples: false,
         smooth: None,
         ms: None,
+        blend_color: b.color,
     }
 }

@@ -152,6 +152,7 @@ fn simd_ok(d: &Draw<'_, '_>) -> bool {
         && plan.fog.is_none()
         && !plan.count_samples
         && plan.smooth.is_none()
+        && d.fb.wide.is_none()
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             d.fb.format,
@@ -317,7 +318,9 @@ unsafe fn rows_simd_walk<
 unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let depth = plan.depth.is_some();
-    if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none()) {
+    // Wide buffers take the general per-fragment path (`fragment::wide`).
+    let wide = fb.wide.is_some();
+    if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none() && !wide) {
         let u = &units[0];
         with_flags!((depth, plan.flat, t.persp), |D, F, P| {
             // SAFETY: forwarded from the caller.
@@ -331,7 +334,7 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     } else {
         // Flat colours need no divide, but the fog coordinate is still perspective-correct.
         let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
-        if plan.needs_full_path() {
+        if plan.needs_full_path() || wide {
             with_flags!((depth, plan.flat, persp), |D, F, P| {
                 // SAFETY: forwarded from the caller.
                 unsafe { W::full::<D, F, P, true>(t, b, plan, fb, stats) }
@@ -551,6 +554,7 @@ mod tests {
                 count_samples: false,
                 smooth: None,
                 ms: None,
+                blend_color: [0.0; 4],
             };
             let persp = round % 2 == 0;
             // Small triangles (boxes of 1 to 6 pixels a side), some crossing the edges of

@@ -16,6 +16,7 @@ pub mod draw_image;
 pub mod read;
 pub mod tex;
 pub mod tex_format;
+pub mod wide;
 
 use super::state::PixelStore;
 use crate::gl::enums::*;

@@ -106,6 +106,12 @@ pub unsafe fn read_pixels(
     let (start, stride) = packed_layout(&c.state.pack, w as usize, bpp, tsize);
     let base = c.read_color_base();
     let color_at = |idx: usize| base.read_rebase(fb.color_at(idx));
+    // The colour as floats: a wide buffer's at its own precision, else unorm8 to float
+    // as Mesa's unpack does (u · f32(1/255)).
+    let float_at = |idx: usize| match fb.wide {
+        Some(k) => fb.wide_at(idx).map(|v| k.to_float(v)),
+        None => color_at(idx).map(|u| u as f32 * (1.0f32 / 255.0)),
+    };
     let put = |p: *mut u8, v: f64, norm: bool| {
         // `v` written at `p` as a `$t`: scaled from [`$lo`, 1] to the type's range when
         // `norm`, converted as it is otherwise.
@@ -149,8 +155,7 @@ pub unsafe fn read_pixels(
                 ReadKind::Color(map, _) if packed.is_some() => {
                     let (size, fields) = packed.unwrap_or_default();
                     let bits = if transfer {
-                        let f = |u: u8| u as f32 * (1.0f32 / 255.0);
-                        let mut rgba = tr.apply_scale_bias(color_at(idx).map(f));
+                        let mut rgba = tr.apply_scale_bias(float_at(idx));
                         if tr.map_color {
                             rgba = maps.map_rgba(rgba);
                         }
@@ -167,9 +172,7 @@ pub unsafe fn read_pixels(
                     unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), p, size) };
                 }
                 ReadKind::Color(map, n) if transfer => {
-                    let f = |u: u8| u as f32 * (1.0f32 / 255.0);
-                    let mut rgba = color_at(idx).map(f);
-                    rgba = tr.apply_scale_bias(rgba);
+                    let mut rgba = tr.apply_scale_bias(float_at(idx));
                     if tr.map_color {
                         rgba = maps.map_rgba(rgba);
                     }
@@ -188,6 +191,10 @@ pub unsafe fn read_pixels(
                         }
                     }
                 }
+                // SAFETY: `p` addresses this pixel's `n * tsize` bytes of the packed image.
+                ReadKind::Color(map, n) if fb.wide.is_some() => unsafe {
+                    super::wide::read_wide_pixel(fb, idx, map, n, ty, p, tsize, put)
+                },
                 ReadKind::Color(map, n) => {
                     let px = color_at(idx);
                     for (k, &ch) in map.iter().take(n).enumerate() {

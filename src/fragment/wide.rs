@@ -1,0 +1,196 @@
+//! The colour write of wide buffers (16-bit unorm, half and single float; docs/
+//! llvmpipe-rules.md §23): the shader's float colour is converted to the buffer's
+//! precision and blended there, as llvmpipe's `generate_unswizzled_blend` does for
+//! R16G16B16A16_UNORM (16-bit fixed point, `mul(a, b) = (t + (t >> 16) + 2^15) >> 16`)
+//! and the float formats (f32 arithmetic, no clamping, half floats rounded at the store).
+// Lane loops index several arrays in step; iterators would hide that.
+#![allow(clippy::needless_range_loop)]
+
+use super::span::LANES;
+use super::{BlendPlan, FragPlan};
+use crate::framebuffer::wide::unorm16;
+use crate::framebuffer::{Target, WideKind};
+use crate::pipe::{BlendEquation, BlendFactor};
+
+/// Writes the live lanes of the chunk at `row` (`n` pixels inside the row) of a wide
+/// target with the shader colours `cf` (`[channel][lane]`): conversion, blending or
+/// logic op, colour mask, and the 8-bit mirror. Returns the number of pixels written.
+#[inline(never)]
+pub fn store(
+    k: WideKind,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    row: usize,
+    n: usize,
+    live: &[bool; LANES],
+    cf: &[[f32; LANES]; 4],
+) -> u64 {
+    let alpha = fb.format.has_alpha();
+    let mask = plan.color_mask;
+    let mut written = 0;
+    for i in 0..n {
+        if !live[i] {
+            continue;
+        }
+        let j = row + i;
+        let src = [cf[0][i], cf[1][i], cf[2][i], cf[3][i]];
+        let d = fb.wide_at(j);
+        let mut v = match (&plan.blend, plan.logic) {
+            (Some(b), _) => blend(k, b, plan.blend_color, src, d),
+            (None, Some(op)) if k == WideKind::Unorm16 => {
+                // Bitwise operations act on each byte of the 16-bit values alike.
+                let s = src.map(unorm16);
+                std::array::from_fn(|c| {
+                    let (sb, db) = (s[c].to_le_bytes(), (d[c] as u16).to_le_bytes());
+                    let lo = op.apply(sb[0], db[0]);
+                    let hi = op.apply(sb[1], db[1]);
+                    u16::from_le_bytes([lo, hi]) as f32
+                })
+            }
+            // Float buffers ignore the logic op.
+            _ => src.map(|c| k.from_shader(c)),
+        };
+        if !alpha {
+            v[3] = k.one();
+        }
+        for c in 0..4 {
+            if !mask[c] {
+                v[c] = d[c];
+            }
+        }
+        fb.wide_color[j] = v;
+        fb.color[j] = k.mirror(v);
+        written += 1;
+    }
+    written
+}
+
+/// Blends shader colour `s` (float) over stored colour `d` at precision `k` with the
+/// constant colour `kf`; returns the stored result.
+#[inline]
+fn blend(k: WideKind, p: &BlendPlan, kf: [f32; 4], s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    match k {
+        WideKind::Unorm16 => {
+            let s = s.map(|c| unorm16(c) as u32);
+            let d = d.map(|c| c as u32);
+            let kc = kf.map(|c| unorm16(c) as u32);
+            let f = |f, ch| factor16(f, s, d, kc, ch);
+            let mut out = [0f32; 4];
+            for ch in 0..4 {
+                let (eq, sf, df) = if ch < 3 {
+                    (p.eq_rgb, f(p.src_rgb, ch), f(p.dst_rgb, ch))
+                } else {
+                    (p.eq_a, f(p.src_a, ch), f(p.dst_a, ch))
+                };
+                out[ch] = equation16(eq, s[ch], sf, d[ch], df) as f32;
+            }
+            out
+        }
+        _ => {
+            let kc = kf;
+            let f = |f, ch| factor_f(f, s, d, kc, ch);
+            let mut out = [0f32; 4];
+            for ch in 0..4 {
+                let (eq, sf, df) = if ch < 3 {
+                    (p.eq_rgb, f(p.src_rgb, ch), f(p.dst_rgb, ch))
+                } else {
+                    (p.eq_a, f(p.src_a, ch), f(p.dst_a, ch))
+                };
+                out[ch] = k.from_shader(equation_f(eq, s[ch], sf, d[ch], df));
+            }
+            out
+        }
+    }
+}
+
+/// llvmpipe's unorm16 multiply (`lp_build_mul_norm` in 32-bit lanes; exact for 0 and
+/// 65535).
+#[inline(always)]
+pub fn mul16(a: u32, b: u32) -> u32 {
+    let t = a * b;
+    (t + (t >> 16) + 0x8000) >> 16
+}
+
+/// A blend factor in 16-bit fixed point (ONE is 65535, ONE_MINUS_x is `65535 − x`).
+#[inline(always)]
+fn factor16(f: BlendFactor, s: [u32; 4], d: [u32; 4], k: [u32; 4], ch: usize) -> u32 {
+    const ONE: u32 = 65535;
+    match f {
+        BlendFactor::Zero => 0,
+        BlendFactor::One => ONE,
+        BlendFactor::SrcColor => s[ch],
+        BlendFactor::OneMinusSrcColor => ONE - s[ch],
+        BlendFactor::DstColor => d[ch],
+        BlendFactor::OneMinusDstColor => ONE - d[ch],
+        BlendFactor::SrcAlpha => s[3],
+        BlendFactor::OneMinusSrcAlpha => ONE - s[3],
+        BlendFactor::DstAlpha => d[3],
+        BlendFactor::OneMinusDstAlpha => ONE - d[3],
+        BlendFactor::ConstantColor => k[ch],
+        BlendFactor::OneMinusConstantColor => ONE - k[ch],
+        BlendFactor::ConstantAlpha => k[3],
+        BlendFactor::OneMinusConstantAlpha => ONE - k[3],
+        BlendFactor::SrcAlphaSaturate if ch == 3 => ONE,
+        BlendFactor::SrcAlphaSaturate => s[3].min(ONE - d[3]),
+    }
+}
+
+/// A blend equation in 16-bit fixed point: saturating add and subtract.
+#[inline(always)]
+fn equation16(eq: BlendEquation, s: u32, sf: u32, d: u32, df: u32) -> u32 {
+    match eq {
+        BlendEquation::Add => (mul16(s, sf) + mul16(d, df)).min(65535),
+        BlendEquation::Subtract => mul16(s, sf).saturating_sub(mul16(d, df)),
+        BlendEquation::ReverseSubtract => mul16(d, df).saturating_sub(mul16(s, sf)),
+        BlendEquation::Min => s.min(d),
+        BlendEquation::Max => s.max(d),
+    }
+}
+
+/// A blend factor in f32 (ONE_MINUS_x is `1 − x`).
+#[inline(always)]
+fn factor_f(f: BlendFactor, s: [f32; 4], d: [f32; 4], k: [f32; 4], ch: usize) -> f32 {
+    match f {
+        BlendFactor::Zero => 0.0,
+        BlendFactor::One => 1.0,
+        BlendFactor::SrcColor => s[ch],
+        BlendFactor::OneMinusSrcColor => 1.0 - s[ch],
+        BlendFactor::DstColor => d[ch],
+        BlendFactor::OneMinusDstColor => 1.0 - d[ch],
+        BlendFactor::SrcAlpha => s[3],
+        BlendFactor::OneMinusSrcAlpha => 1.0 - s[3],
+        BlendFactor::DstAlpha => d[3],
+        BlendFactor::OneMinusDstAlpha => 1.0 - d[3],
+        BlendFactor::ConstantColor => k[ch],
+        BlendFactor::OneMinusConstantColor => 1.0 - k[ch],
+        BlendFactor::ConstantAlpha => k[3],
+        BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
+        BlendFactor::SrcAlphaSaturate if ch == 3 => 1.0,
+        BlendFactor::SrcAlphaSaturate => s[3].min(1.0 - d[3]),
+    }
+}
+
+/// A blend equation in f32: each product rounded, then the sum (no clamping).
+#[inline(always)]
+fn equation_f(eq: BlendEquation, s: f32, sf: f32, d: f32, df: f32) -> f32 {
+    match eq {
+        BlendEquation::Add => s * sf + d * df,
+        BlendEquation::Subtract => s * sf - d * df,
+        BlendEquation::ReverseSubtract => d * df - s * sf,
+        BlendEquation::Min => s.min(d),
+        BlendEquation::Max => s.max(d),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul16_ends() {
+        for a in [0u32, 1, 255, 32768, 65534, 65535] {
+            assert_eq!(mul16(a, 65535), a);
+            assert_eq!(mul16(a, 0), 0);
+        }
+    }
+}
