@@ -55,13 +55,13 @@ impl VertexStage {
         {
             use crate::cpu::Isa;
             match (crate::cpu::isa(), self.fma) {
-                // SAFETY: the level (`cpu::isa`) says the CPU has AVX2 and FMA.
                 (Isa::Avx2Fma, true) => {
-                    return unsafe { self.run_block_fma(verts, first, slot, out) }
+                    // SAFETY: the level (`cpu::isa`) says the CPU has AVX2 and FMA.
+                    return unsafe { self.run_block_fma(verts, first, slot, out) };
                 }
-                // SAFETY: the level says the CPU has AVX2.
                 (Isa::Avx2Fma | Isa::Avx2, false) => {
-                    return unsafe { self.run_block_avx2(verts, first, slot, out) }
+                    // SAFETY: the level says the CPU has AVX2.
+                    return unsafe { self.run_block_avx2(verts, first, slot, out) };
                 }
                 _ => {}
             }
@@ -166,12 +166,14 @@ impl VertexStage {
                 let v = &slot.v;
                 // SAFETY: forwarded.
                 unsafe { self.position_x86::<FMA>(&k, v, o) };
-                for i in 0..4 {
-                    pos[i][j] = v.pos[i];
-                    col[i][j] = v.color[i];
+                for (lanes, x) in pos.iter_mut().zip(v.pos) {
+                    lanes[j] = x;
                 }
-                for i in 0..3 {
-                    nrm[i][j] = v.normal[i];
+                for (lanes, x) in col.iter_mut().zip(v.color) {
+                    lanes[j] = x;
+                }
+                for (lanes, x) in nrm.iter_mut().zip(v.normal) {
+                    lanes[j] = x;
                 }
             }
             // SAFETY: forwarded.
@@ -228,15 +230,16 @@ impl VertexStage {
                 }
             }
             let b = self.back_offset();
+            let [front, back, front_spec, back_spec] = &v;
             for (j, o) in out.iter_mut().enumerate() {
                 for i in 0..4 {
-                    o.vary[i] = v[0][i][j];
-                    o.vary[VARY_SPEC + i] = v[2][i][j];
+                    o.vary[i] = front[i][j];
+                    o.vary[VARY_SPEC + i] = front_spec[i][j];
                 }
                 if faces == 4 {
                     for i in 0..4 {
-                        o.vary[b + i] = v[1][i][j];
-                        o.vary[b + 4 + i] = v[3][i][j];
+                        o.vary[b + i] = back[i][j];
+                        o.vary[b + 4 + i] = back_spec[i][j];
                     }
                 }
             }

@@ -15,7 +15,7 @@ use crate::pipe::{
 /// Random values with some specials mixed in (zeros of both signs, ±1, huge, NaN).
 fn value(r: u32, scale: f32) -> f32 {
     const SPECIAL: [f32; 8] = [0.0, -0.0, 1.0, -1.0, 0.5, 1e30, f32::NAN, 2.0];
-    if r % 23 == 0 {
+    if r.is_multiple_of(23) {
         SPECIAL[(r / 23) as usize % SPECIAL.len()]
     } else {
         (f32::from_bits((r >> 9) | 0x3f80_0000) - 1.5) * scale
@@ -153,13 +153,14 @@ fn lit_run_block_writes_what_run_into_writes() {
             en.rescale_normal,
         );
         if case % 3 != 0 {
-            let mut f = FogState::default();
-            f.mode = [FogMode::Linear, FogMode::Exp, FogMode::Exp2][case as usize % 3];
-            f.start = 1.0;
-            f.end = 9.0;
-            f.density = 0.3;
-            f.coord_from_attrib = case & 0x4000 != 0;
-            stage.fog = Some(f);
+            stage.fog = Some(FogState {
+                mode: [FogMode::Linear, FogMode::Exp, FogMode::Exp2][case as usize % 3],
+                start: 1.0,
+                end: 9.0,
+                density: 0.3,
+                coord_from_attrib: case & 0x4000 != 0,
+                ..Default::default()
+            });
         }
         let color = [0.5, 0.25, 1.0, 0.75];
         stage.light = LightPlan::new(&ls, &en, color, &mv, None, other_eye, fma);

@@ -133,6 +133,7 @@ unsafe fn polynomial<const FMA: bool>(x: V, coeffs: &[f64]) -> V {
         let c = unsafe { s(coeffs[i] as f32) };
         let chain = if i % 2 == 0 { &mut even } else { &mut odd };
         *chain = Some(match *chain {
+            // SAFETY: forwarded.
             Some(e) => unsafe { mad::<FMA>(x2, e, c) },
             None => c,
         });
@@ -185,7 +186,10 @@ unsafe fn log2_safe<const FMA: bool>(x: V) -> V {
     }
 }
 
-/// [`crate::fixed_function::gallivm_math::pow`]. Safety: as [`mad`].
+/// [`crate::fixed_function::gallivm_math::pow`].
+///
+/// # Safety
+/// The CPU has AVX2, and FMA when `FMA`.
 #[inline(always)]
 pub unsafe fn pow<const FMA: bool>(x: V, y: V) -> V {
     // SAFETY: forwarded.
@@ -224,16 +228,19 @@ unsafe fn material(m: &crate::pipe::Material, t: Tracked, color: [V; 4]) -> [[V;
     }
 }
 
-/// [`super::eye_normal`] of eight normals (x, y, z lanes). Safety: AVX2.
+/// [`super::eye_normal`] of eight normals (x, y, z lanes).
+///
+/// # Safety
+/// The CPU has AVX2.
 #[inline(always)]
 pub unsafe fn eye_normal(plan: &LightPlan, normal: [V; 3]) -> [V; 3] {
     if !plan.need_eye_coords && !plan.normalize && plan.normal_scale.is_none() {
         return normal;
     }
     let mut n = normal;
-    // SAFETY: (rest) forwarded.
     if plan.need_eye_coords {
         let r = &plan.invtrans;
+        // SAFETY: forwarded.
         n = unsafe {
             [
                 dp3(normal, s3(r[0])),
@@ -243,8 +250,10 @@ pub unsafe fn eye_normal(plan: &LightPlan, normal: [V; 3]) -> [V; 3] {
         };
     }
     if plan.normalize {
+        // SAFETY: forwarded.
         n = unsafe { normalize(n) };
     } else if let Some(k) = plan.normal_scale {
+        // SAFETY: forwarded.
         n = scale3(n, unsafe { s(k) });
     }
     n
