@@ -6,21 +6,38 @@
 //! function's dependency chain (transform, divide, viewport) was most of its cost when it
 //! ran vertex by vertex from the post-transform cache.
 
+use super::fog::vertex_fog_coord;
+use super::lighting::eye_position;
+use super::texgen::generate;
 use super::transform::VertexStage;
 use crate::geometry::source::{VertexSlot, VertexSource};
-use crate::geometry::{ClipVertex, VARY_SPEC, VARY_TEX};
+use crate::geometry::{ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
+
+/// Vertices lit together, one per lane of an AVX2 register.
+#[cfg(target_arch = "x86_64")]
+const LANES: usize = 8;
+
+/// The per-run constants of the block transform, in SSE registers.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Consts {
+    col: [crate::simd::F32x4; 4],
+    scale: crate::simd::F32x4,
+    trans: crate::simd::F32x4,
+    zero: crate::simd::F32x4,
+    one: crate::simd::F32x4,
+}
 
 impl VertexStage {
-    /// Whether [`VertexStage::run_block`] may run this stage: nothing beyond the position,
-    /// the colours and the texture coordinates through their matrices, and a CPU with
-    /// AVX2 and FMA.
+    /// Whether [`VertexStage::run_block`] may run this stage: anything but per-vertex
+    /// materials, point attenuation and user clip planes, on an AVX2 level.
     pub fn block_ok(&self) -> bool {
-        self.light.is_none()
-            && self.fog.is_none()
+        self.light
+            .as_ref()
+            .is_none_or(|l| l.vertex_material.is_none() && l.fma == self.fma)
             && self.point_atten.is_none()
             && self.ucp_enabled == 0
-            && self.texgen[..self.n_tex].iter().all(Option::is_none)
-            && matches!(crate::cpu::isa(), crate::cpu::Isa::Avx2Fma)
+            && crate::cpu::isa().avx2()
     }
 
     /// Runs vertices `first..first + out.len()` of `verts` through the stage into `out`,
@@ -36,28 +53,65 @@ impl VertexStage {
     ) {
         #[cfg(target_arch = "x86_64")]
         {
-            // SAFETY: `block_ok` found AVX2 and FMA on this CPU (`cpu::isa`).
-            unsafe {
-                if self.fma {
-                    self.run_block_x86::<S, true>(verts, first, slot, out)
-                } else {
-                    self.run_block_x86::<S, false>(verts, first, slot, out)
+            use crate::cpu::Isa;
+            match (crate::cpu::isa(), self.fma) {
+                (Isa::Avx2Fma, true) => {
+                    // SAFETY: the level (`cpu::isa`) says the CPU has AVX2 and FMA.
+                    return unsafe { self.run_block_fma(verts, first, slot, out) };
                 }
+                (Isa::Avx2Fma | Isa::Avx2, false) => {
+                    // SAFETY: the level says the CPU has AVX2.
+                    return unsafe { self.run_block_avx2(verts, first, slot, out) };
+                }
+                _ => {}
             }
         }
-        #[cfg(not(target_arch = "x86_64"))]
         for (j, o) in out.iter_mut().enumerate() {
             verts.vertex_into(first + j, slot);
             self.run_into(&slot.v, o);
         }
     }
 
-    /// [`VertexStage::run_block`] in SSE registers; `FMA` is `self.fma`.
+    /// [`VertexStage::run_block`] compiled for AVX2 and FMA, fused.
     ///
     /// # Safety
     /// The CPU has AVX2 and FMA.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
+    unsafe fn run_block_fma<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        slot: &mut VertexSlot,
+        out: &mut [ClipVertex],
+    ) {
+        // SAFETY: forwarded.
+        unsafe { self.run_block_x86::<S, true>(verts, first, slot, out) }
+    }
+
+    /// [`VertexStage::run_block`] compiled for AVX2, not fused.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_block_avx2<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        slot: &mut VertexSlot,
+        out: &mut [ClipVertex],
+    ) {
+        // SAFETY: forwarded.
+        unsafe { self.run_block_x86::<S, false>(verts, first, slot, out) }
+    }
+
+    /// [`VertexStage::run_block`] in SSE and AVX registers; `FMA` is `self.fma`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when `FMA`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
     unsafe fn run_block_x86<S: VertexSource + ?Sized, const FMA: bool>(
         &self,
         verts: &S,
@@ -66,74 +120,240 @@ impl VertexStage {
         out: &mut [ClipVertex],
     ) {
         use crate::simd::F32x4;
-        // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
-        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
-        const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
-        const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
         let m = &self.mvp.0;
         let vp = &self.viewport;
-        let tex = &self.tex_units[..self.n_tex];
-        // SAFETY: (whole body) AVX2/FMA context (this function's features, the caller's
-        // promise); the loads and stores are of 4-float arrays.
-        unsafe {
-            let col = [0, 4, 8, 12].map(|c| F32x4::load(m[c..c + 4].as_ptr()));
-            let scale = F32x4::new([vp.scale[0], vp.scale[1], vp.scale[2], 0.0]);
-            let trans = F32x4::new([vp.translate[0], vp.translate[1], vp.translate[2], 0.0]);
-            let (zero, one) = (F32x4::zero(), F32x4::splat(1.0));
-            let halfz = vp.halfz;
-            // w in the x and y lanes, 0 in the z lane.
-            let cw_halfz = |w: F32x4| w.blend::<0b0100>(zero);
-            // `clamp_color`: `max(min(v, 1), 0)`, NaN to 1 (`minps` gives its second
-            // operand for NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal
-            // values), the comparisons the scalar `clamp_color` makes (the test below
-            // checks both).
-            let clamp = |c: F32x4| c.min(one).max(zero);
+        // SAFETY: AVX2 (the caller's promise); the loads are of 4-float arrays.
+        let k = unsafe {
+            Consts {
+                col: [
+                    F32x4::load(m[0..4].as_ptr()),
+                    F32x4::load(m[4..8].as_ptr()),
+                    F32x4::load(m[8..12].as_ptr()),
+                    F32x4::load(m[12..16].as_ptr()),
+                ],
+                scale: F32x4::new([vp.scale[0], vp.scale[1], vp.scale[2], 0.0]),
+                trans: F32x4::new([vp.translate[0], vp.translate[1], vp.translate[2], 0.0]),
+                zero: F32x4::zero(),
+                one: F32x4::splat(1.0),
+            }
+        };
+        let Some(lp) = &self.light else {
             for (j, o) in out.iter_mut().enumerate() {
                 verts.vertex_into(first + j, slot);
                 let v = &slot.v;
-                let p = F32x4::load(v.pos.as_ptr());
-                // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
-                let x = p.broadcast::<0x00>().mul(col[0]);
-                let y = p.broadcast::<0x55>().mul(col[1]);
-                let z = p.broadcast::<0xAA>().mul(col[2]);
-                let w = p.broadcast::<0xFF>().mul(col[3]);
-                let clip = x.add(y).add(z).add(w);
-                let cw = clip.broadcast::<0xFF>();
-                let above = clip.cmp_nle(cw).movemask() & 7;
-                // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so
-                // the same comparison gives `!(z >= 0)`.
-                let sum = clip.add(if halfz { cw_halfz(cw) } else { cw });
-                let below = sum.cmp_nge(zero).movemask() & 7;
-                // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
-                let inv = one.div(cw);
-                let q = clip.mul(inv);
-                let win = if FMA {
-                    q.mul_add(scale, trans)
-                } else {
-                    q.mul(scale).add(trans)
-                };
-                let win = win.blend::<0b1000>(inv);
-                clip.store(o.clip.as_mut_ptr());
-                win.store(o.win.as_mut_ptr());
-                o.mask = (ABOVE[above as usize] | BELOW[below as usize]) as _;
-                let c = clamp(F32x4::load(v.color.as_ptr()));
-                c.store(o.vary.as_mut_ptr());
-                if self.color_sum {
-                    let s = clamp(F32x4::load(v.secondary.as_ptr()));
-                    s.store(o.vary[VARY_SPEC..].as_mut_ptr());
+                // SAFETY: forwarded.
+                unsafe { self.position_x86::<FMA>(&k, v, o) };
+                // SAFETY: AVX2; the loads and stores are of 4-float arrays.
+                unsafe {
+                    let c = clamp4(&k, F32x4::load(v.color.as_ptr()));
+                    c.store(o.vary.as_mut_ptr());
+                    if self.color_sum {
+                        let s = clamp4(&k, F32x4::load(v.secondary.as_ptr()));
+                        s.store(o.vary[VARY_SPEC..].as_mut_ptr());
+                    }
                 }
-                for (k, (unit, tm)) in tex.iter().enumerate() {
-                    let tc = v.texcoord[*unit];
-                    let tc = match tm {
-                        Some(tm) => tm.transform(tc),
-                        None => tc,
-                    };
-                    o.vary[VARY_TEX + 4 * k..VARY_TEX + 4 * k + 4].copy_from_slice(&tc);
+            }
+            return;
+        };
+        for (c, chunk) in out.chunks_mut(LANES).enumerate() {
+            let base = first + c * LANES;
+            // The lighting inputs of the chunk's vertices as lanes (unused lanes 0).
+            let mut pos = [[0f32; LANES]; 4];
+            let mut nrm = [[0f32; LANES]; 3];
+            let mut col = [[0f32; LANES]; 4];
+            for (j, o) in chunk.iter_mut().enumerate() {
+                verts.vertex_into(base + j, slot);
+                let v = &slot.v;
+                // SAFETY: forwarded.
+                unsafe { self.position_x86::<FMA>(&k, v, o) };
+                for (lanes, x) in pos.iter_mut().zip(v.pos) {
+                    lanes[j] = x;
+                }
+                for (lanes, x) in col.iter_mut().zip(v.color) {
+                    lanes[j] = x;
+                }
+                for (lanes, x) in nrm.iter_mut().zip(v.normal) {
+                    lanes[j] = x;
+                }
+            }
+            // SAFETY: forwarded.
+            unsafe { self.light_lanes::<FMA>(lp, &pos, &nrm, &col, chunk) };
+        }
+    }
+
+    /// Lights the vertices of `out` (at most [`LANES`]) whose object positions, normals
+    /// and colours are the lanes of `pos`, `nrm` and `col`, writing the clamped colours
+    /// as [`VertexStage::run_into`] does.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when `FMA`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn light_lanes<const FMA: bool>(
+        &self,
+        lp: &super::lighting::LightPlan,
+        pos: &[[f32; LANES]; 4],
+        nrm: &[[f32; LANES]; 3],
+        col: &[[f32; LANES]; 4],
+        out: &mut [ClipVertex],
+    ) {
+        use super::lighting::lanes;
+        use crate::simd::F32x8;
+        // SAFETY: (whole body) forwarded; the loads are of 8-float arrays.
+        unsafe {
+            let zero = F32x8::zero();
+            let eye = if lp.needs_eye_position() {
+                // `eye_position`: ((x·C0 + y·C1) + z·C2) + w·C3 per row, each step rounded.
+                let mv = &self.modelview.0;
+                let p = [ld(&pos[0]), ld(&pos[1]), ld(&pos[2]), ld(&pos[3])];
+                let mut e = [zero; 3];
+                for (r, e) in e.iter_mut().enumerate() {
+                    let t = p[0].mul(F32x8::splat(mv[r]));
+                    let t = p[1].mul(F32x8::splat(mv[4 + r])).add(t);
+                    let t = p[2].mul(F32x8::splat(mv[8 + r])).add(t);
+                    *e = p[3].mul(F32x8::splat(mv[12 + r])).add(t);
+                }
+                e
+            } else {
+                [zero; 3]
+            };
+            let n = lanes::eye_normal(lp, [ld(&nrm[0]), ld(&nrm[1]), ld(&nrm[2])]);
+            let c = [ld(&col[0]), ld(&col[1]), ld(&col[2]), ld(&col[3])];
+            let lit = lanes::light_vertex::<FMA>(lp, eye, n, c);
+            // `clamp_color` (see `clamp4`), then each vertex's four colours.
+            let one = F32x8::splat(1.0);
+            let mut v = [[[0f32; LANES]; 4]; 4];
+            let faces = if lp.two_side() { 4 } else { 3 };
+            for (dst, src) in v.iter_mut().zip(&lit).take(faces) {
+                for (d, s) in dst.iter_mut().zip(src) {
+                    s.min(one).max(zero).store(d.as_mut_ptr());
+                }
+            }
+            let b = self.back_offset();
+            let [front, back, front_spec, back_spec] = &v;
+            for (j, o) in out.iter_mut().enumerate() {
+                for i in 0..4 {
+                    o.vary[i] = front[i][j];
+                    o.vary[VARY_SPEC + i] = front_spec[i][j];
+                }
+                if faces == 4 {
+                    for i in 0..4 {
+                        o.vary[b + i] = back[i][j];
+                        o.vary[b + 4 + i] = back_spec[i][j];
+                    }
                 }
             }
         }
     }
+
+    /// The part of [`VertexStage::run_into`] beside the colours for one vertex: clip
+    /// position, mask and window position in SSE registers, the fog coordinate and the
+    /// texture coordinates (generated, through their matrices) as `run_into` computes
+    /// them.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when `FMA`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn position_x86<const FMA: bool>(
+        &self,
+        k: &Consts,
+        v: &crate::geometry::fetch::VertexIn,
+        o: &mut ClipVertex,
+    ) {
+        use crate::simd::F32x4;
+        // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
+        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
+        const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
+        const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
+        let tex = &self.tex_units[..self.n_tex];
+        // SAFETY: (whole body) AVX2 (and FMA when `FMA`), the caller's promise; the
+        // loads and stores are of 4-float arrays.
+        unsafe {
+            let p = F32x4::load(v.pos.as_ptr());
+            // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
+            let x = p.broadcast::<0x00>().mul(k.col[0]);
+            let y = p.broadcast::<0x55>().mul(k.col[1]);
+            let z = p.broadcast::<0xAA>().mul(k.col[2]);
+            let w = p.broadcast::<0xFF>().mul(k.col[3]);
+            let clip = x.add(y).add(z).add(w);
+            let cw = clip.broadcast::<0xFF>();
+            let above = clip.cmp_nle(cw).movemask() & 7;
+            // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so the
+            // same comparison gives `!(z >= 0)`; w in the x and y lanes, 0 in z.
+            let sum = clip.add(if self.viewport.halfz {
+                cw.blend::<0b0100>(k.zero)
+            } else {
+                cw
+            });
+            let below = sum.cmp_nge(k.zero).movemask() & 7;
+            // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
+            let inv = k.one.div(cw);
+            let q = clip.mul(inv);
+            let win = if FMA {
+                q.mul_add(k.scale, k.trans)
+            } else {
+                q.mul(k.scale).add(k.trans)
+            };
+            let win = win.blend::<0b1000>(inv);
+            clip.store(o.clip.as_mut_ptr());
+            win.store(o.win.as_mut_ptr());
+            o.mask = (ABOVE[above as usize] | BELOW[below as usize]) as _;
+        }
+        if let Some(f) = &self.fog {
+            // The eye position lighting made, if it made one (it decides the formula).
+            let lit_eye = match &self.light {
+                Some(lp) if lp.needs_eye_position() => Some(eye_position(&self.modelview, v.pos)),
+                _ => None,
+            };
+            o.vary[VARY_FOG] = vertex_fog_coord(f, &self.modelview, v.pos, lit_eye, v.fog_coord);
+        }
+        let mut eye = None;
+        let n = match &self.normal_xform {
+            Some(x) => x.apply(v.normal),
+            None => [0.0; 3],
+        };
+        for (k, (unit, tm)) in tex.iter().enumerate() {
+            let mut tc = v.texcoord[*unit];
+            if let Some(g) = &self.texgen[k] {
+                let e = match eye {
+                    Some(e) => e,
+                    None => *eye.insert(eye_position(&self.modelview, v.pos)),
+                };
+                tc = generate(g, tc, v.pos, e, n);
+            }
+            let tc = match tm {
+                Some(tm) => tm.transform(tc),
+                None => tc,
+            };
+            o.vary[VARY_TEX + 4 * k..VARY_TEX + 4 * k + 4].copy_from_slice(&tc);
+        }
+    }
 }
+
+/// Eight lanes from `a`.
+///
+/// # Safety
+/// The CPU has AVX2. (A function, not a closure: a closure is compiled without the
+/// kernel's target features, so its intrinsics would be calls.)
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn ld(a: &[f32; LANES]) -> crate::simd::F32x8 {
+    // SAFETY: AVX2 (the caller's promise); `a` holds eight floats.
+    unsafe { crate::simd::F32x8::load(a.as_ptr()) }
+}
+
+/// `clamp_color`: `max(min(v, 1), 0)`, NaN to 1 (`minps` gives its second operand for
+/// NaN) and -0.0 to 0.0 (`maxps` gives its second operand for equal values), the
+/// comparisons the scalar `clamp_color` makes (the test below checks both).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn clamp4(k: &Consts, c: crate::simd::F32x4) -> crate::simd::F32x4 {
+    c.min(k.one).max(k.zero)
+}
+
+#[cfg(test)]
+mod lit_tests;
 
 #[cfg(test)]
 mod tests {

@@ -22,7 +22,7 @@
 
 /// `lp_build_exp2_polynomial` (EXP_POLY_DEGREE 5): 2^x on [0, 1). Mesa's digits, verbatim.
 #[allow(clippy::excessive_precision)]
-const EXP2_POLY: [f64; 6] = [
+pub(crate) const EXP2_POLY: [f64; 6] = [
     1.000000000000000000000,
     0.693153073200168932794,
     0.240153617044375388211,
@@ -33,7 +33,7 @@ const EXP2_POLY: [f64; 6] = [
 
 /// `lp_build_log2_polynomial` (LOG_POLY_DEGREE 4). Mesa's digits, verbatim.
 #[allow(clippy::excessive_precision)]
-const LOG2_POLY: [f64; 5] = [
+pub(crate) const LOG2_POLY: [f64; 5] = [
     2.88539009343309178325,
     0.961791550404184197881,
     0.577440339438736392009,
@@ -52,7 +52,7 @@ pub fn mad(a: f32, b: f32, c: f32, fma: bool) -> f32 {
 }
 
 /// `lp_build_polynomial`: `coeffs[0] + x·coeffs[1] + x²·coeffs[2] + …` in gallivm's order.
-#[inline]
+#[inline(always)]
 pub fn polynomial(x: f32, coeffs: &[f64], fma: bool) -> f32 {
     let x2 = x * x;
     let mut even: Option<f32> = None;
@@ -79,7 +79,7 @@ pub fn polynomial(x: f32, coeffs: &[f64], fma: bool) -> f32 {
 }
 
 /// `lp_build_exp2` for f32.
-#[inline]
+#[inline(always)]
 pub fn exp2(x: f32, fma: bool) -> f32 {
     // min/max that keep NaN (GALLIVM_NAN_RETURN_NAN_FIRST_NONNAN).
     let x = if x.is_nan() {
@@ -97,7 +97,7 @@ pub fn exp2(x: f32, fma: bool) -> f32 {
 }
 
 /// `lp_build_log2_approx` without edge-case handling (`lp_build_log2`).
-#[inline]
+#[inline(always)]
 pub fn log2_approx(x: f32, fma: bool) -> f32 {
     let i = x.to_bits();
     let exp = i & 0x7f80_0000;
@@ -111,7 +111,7 @@ pub fn log2_approx(x: f32, fma: bool) -> f32 {
 
 /// `lp_build_log2_safe`: as [`log2_approx`], then +inf for x ≥ +inf, -inf for x == ±0 and
 /// NaN for x < 0 (a NaN input is not caught, exactly as in gallivm).
-#[inline]
+#[inline(always)]
 pub fn log2_safe(x: f32, fma: bool) -> f32 {
     let mut r = log2_approx(x, fma);
     if x >= f32::INFINITY {
@@ -127,7 +127,7 @@ pub fn log2_safe(x: f32, fma: bool) -> f32 {
 }
 
 /// `lp_build_pow`: `exp2(log2_safe(x)·y)`, and 0 when `x == 0`.
-#[inline]
+#[inline(always)]
 pub fn pow(x: f32, y: f32, fma: bool) -> f32 {
     if x == 0.0 {
         return 0.0;

@@ -26,6 +26,9 @@
 //! The outputs are not clamped; the vertex stage clamps colours to [0, 1] as llvmpipe's
 //! draw module does.
 
+#[cfg(target_arch = "x86_64")]
+pub mod lanes;
+
 use super::gallivm_math::{pow, rsq};
 use super::matrix::Mat4;
 use super::mesa_matrix::MatFlags;
@@ -359,6 +362,7 @@ fn scene_color(lm: &[f32; 4], m: &Material) -> [f32; 4] {
 /// The normal the lighting uses (`get_transformed_normal`): transformed by the
 /// inverse-transpose modelview in eye space, then normalised (GL_NORMALIZE, with
 /// `rsq`) or rescaled (GL_RESCALE_NORMAL's CPU-computed factor).
+#[inline(always)]
 pub fn eye_normal(plan: &LightPlan, normal: [f32; 3]) -> [f32; 3] {
     if !plan.need_eye_coords && !plan.normalize && plan.normal_scale.is_none() {
         return normal;
@@ -407,6 +411,11 @@ fn mul4(a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
 /// Lights one vertex. `eye_pos` is [`eye_position`] of the vertex (read only when
 /// [`LightPlan::needs_eye_position`]), `normal` is [`eye_normal`]'s result and `color` the
 /// vertex's primary colour (used for GL_COLOR_MATERIAL).
+///
+/// Always inlined: the vertex stage has a copy compiled with FMA
+/// ([`super::transform::VertexStage::run_into`]), where gallivm's fused multiply-adds and
+/// floors are instructions rather than calls into libm.
+#[inline(always)]
 pub fn light_vertex(
     plan: &LightPlan,
     eye_pos: [f32; 4],
@@ -416,19 +425,28 @@ pub fn light_vertex(
     let fma = plan.fma;
     let faces = if plan.model.two_side { 2 } else { 1 };
     // Per-face material with the tracked terms replaced by the vertex colour.
-    let mut mat = plan.vertex_material.unwrap_or(plan.material);
-    let mut scene = plan.scene;
+    // Copied only when something changes it (a per-draw copy of both faces' materials
+    // was a visible part of lit vertices).
     let varying = plan.vertex_material.is_some();
-    for f in 0..faces {
-        let t = plan.tracked[f];
-        if varying && !t.any() {
-            scene[f] = scene_color(&plan.model.ambient, &mat[f]);
+    let base = plan.vertex_material.as_ref().unwrap_or(&plan.material);
+    let mut mat_buf;
+    let mut scene = plan.scene;
+    let mat: &[Material; 2] = if varying || plan.tracked[..faces].iter().any(|t| t.any()) {
+        mat_buf = *base;
+        for f in 0..faces {
+            let t = plan.tracked[f];
+            if varying && !t.any() {
+                scene[f] = scene_color(&plan.model.ambient, &mat_buf[f]);
+            }
+            if t.any() {
+                mat_buf[f].apply_tracked(t, color);
+                scene[f] = scene_color(&plan.model.ambient, &mat_buf[f]);
+            }
         }
-        if t.any() {
-            mat[f].apply_tracked(t, color);
-            scene[f] = scene_color(&plan.model.ambient, &mat[f]);
-        }
-    }
+        &mat_buf
+    } else {
+        base
+    };
     let mut col0 = scene;
     let mut col1 = [[0.0, 0.0, 0.0, 1.0]; 2];
 

@@ -192,6 +192,31 @@ impl VertexStage {
     /// entry reused within a draw needs nothing cleared).
     #[inline]
     pub fn run_into(&self, v: &VertexIn, out: &mut ClipVertex) {
+        // On FMA levels the viewport transform and lighting's gallivm `pow` fuse their
+        // multiply-adds, and `pow` floors: compiled without FMA (and SSE4.1) those are
+        // calls into libm.
+        #[cfg(target_arch = "x86_64")]
+        if self.fma && crate::cpu::has_fma_instructions() {
+            // SAFETY: the CPU has FMA.
+            return unsafe { self.run_into_fma(v, out) };
+        }
+        self.run_into_any(v, out)
+    }
+
+    /// [`Self::run_into`] compiled with FMA (which implies SSE4.1's `roundss`).
+    ///
+    /// # Safety
+    /// The CPU has FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "fma")]
+    #[inline(never)]
+    unsafe fn run_into_fma(&self, v: &VertexIn, out: &mut ClipVertex) {
+        self.run_into_any(v, out)
+    }
+
+    /// [`Self::run_into`]'s body, for whatever instruction set its caller is compiled for.
+    #[inline(always)]
+    pub(super) fn run_into_any(&self, v: &VertexIn, out: &mut ClipVertex) {
         let (clip, mask) = self.clip_position(v.pos);
         out.clip = clip;
         out.win = self.viewport.apply_shader(clip, self.fma);

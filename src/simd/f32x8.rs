@@ -51,6 +51,8 @@ lane_ops! {
     fn mul(o) -> Self = _mm256_mul_ps;
     /// `self / o` per lane (exact, `vdivps`).
     fn div(o) -> Self = _mm256_div_ps;
+    /// The square root per lane (correctly rounded, `vsqrtps`).
+    fn sqrt() -> Self = _mm256_sqrt_ps;
     /// `vminps`: per lane the smaller, `o` when either is NaN.
     fn min(o) -> Self = _mm256_min_ps;
     /// `vmaxps`: per lane the larger, `o` when either is NaN.
