@@ -286,6 +286,9 @@ impl Context {
                 .filter(|_| is_depth)
                 .map_or(0, |i| shadow::depth_size(i.storage.depth_bits()))
                 as f64,
+            GL_TEXTURE_RED_TYPE..=GL_TEXTURE_DEPTH_TYPE => {
+                img.map_or(0, |i| super::texture_get::channel_type(i, pname)) as f64
+            }
             GL_TEXTURE_STENCIL_SIZE => img
                 .filter(|i| shadow::is_depth_stencil(i.internal_format))
                 .map_or(0, |_| 8) as f64,
