@@ -52,6 +52,47 @@ pub fn half_rtz(x: f32) -> u16 {
     sign | ((e as u16) << 10) | (man >> 13) as u16
 }
 
+/// `x` as binary16, rounded to nearest even (F16C `vcvtps2ph` mode 0): too large a
+/// magnitude becomes infinite.
+pub fn half_rne(x: f32) -> u16 {
+    let b = x.to_bits();
+    let sign = ((b >> 16) & 0x8000) as u16;
+    let exp = ((b >> 23) & 0xff) as i32;
+    let man = b & 0x7f_ffff;
+    if exp == 0xff {
+        let nan = if man != 0 {
+            0x200 | (man >> 13) as u16
+        } else {
+            0
+        };
+        return sign | 0x7c00 | nan;
+    }
+    // the significand with its implicit bit, and how far it shifts into half units
+    let (sig, shift) = if exp - 112 >= 1 {
+        (man | 0x80_0000, 13)
+    } else if exp == 0 {
+        return sign;
+    } else {
+        (man | 0x80_0000, (14 - (exp - 112)) as u32)
+    };
+    if shift >= 32 {
+        return sign;
+    }
+    let half = 1u32 << (shift - 1);
+    let rest = sig & ((1u32 << shift) - 1);
+    let mut m = sig >> shift;
+    if rest > half || (rest == half && m & 1 == 1) {
+        m += 1;
+    }
+    let v = if shift == 13 {
+        // normal: exponent field plus the rounded significand (a carry bumps the exponent)
+        (((exp - 112) as u32) << 10) + (m - 0x400)
+    } else {
+        m
+    };
+    sign | v.min(0x7c00) as u16
+}
+
 /// The value of binary16 `h` (exact).
 pub fn half_to_f32(h: u16) -> f32 {
     let sign = ((h as u32) & 0x8000) << 16;
@@ -97,8 +138,15 @@ fn is_half(storage: &Storage) -> bool {
 /// A float colour as an image of `storage` stores it (see the module doc); other storages
 /// return it unchanged.
 pub fn quantise(storage: &Storage, v: [f32; 4]) -> [f32; 4] {
+    quantise_rounding(storage, v, true)
+}
+
+/// [`quantise`], with half floats rounded toward zero (`rtz`, a blit's conversion) or to
+/// nearest even (Mesa's CPU texstore, `_mesa_float_to_half`).
+pub fn quantise_rounding(storage: &Storage, v: [f32; 4], rtz: bool) -> [f32; 4] {
     match storage.encoding {
-        Encoding::Float if is_half(storage) => v.map(round_half),
+        Encoding::Float if is_half(storage) && rtz => v.map(round_half),
+        Encoding::Float if is_half(storage) => v.map(|x| half_to_f32(half_rne(x))),
         Encoding::Unorm16 => v.map(|x| float_to_u16(x) as f32 * INV_65535),
         _ => v,
     }

@@ -16,7 +16,8 @@
 use super::tex::{decode_pixel_f32, ClientFormat, ColorTransfer, Layout};
 use super::{write_uint, Ty};
 use crate::context::state::PixelStore;
-use crate::texture::float::{half_to_f32, quantise};
+use crate::gl::enums::{GL_FLOAT, GL_UNSIGNED_BYTE};
+use crate::texture::float::{half_rne, half_to_f32, quantise_rounding};
 use crate::texture::{BaseFormat, Storage};
 
 /// The pixel type of GL_HALF_FLOAT: one 2-byte float per component.
@@ -34,47 +35,6 @@ pub(crate) fn float_of(raw: u64, size: usize) -> f32 {
     } else {
         f32::from_bits(raw as u32)
     }
-}
-
-/// `x` as binary16, rounded to nearest even (F16C `vcvtps2ph` mode 0): too large a
-/// magnitude becomes infinite.
-pub fn half_rne(x: f32) -> u16 {
-    let b = x.to_bits();
-    let sign = ((b >> 16) & 0x8000) as u16;
-    let exp = ((b >> 23) & 0xff) as i32;
-    let man = b & 0x7f_ffff;
-    if exp == 0xff {
-        let nan = if man != 0 {
-            0x200 | (man >> 13) as u16
-        } else {
-            0
-        };
-        return sign | 0x7c00 | nan;
-    }
-    // the significand with its implicit bit, and how far it shifts into half units
-    let (sig, shift) = if exp - 112 >= 1 {
-        (man | 0x80_0000, 13)
-    } else if exp == 0 {
-        return sign;
-    } else {
-        (man | 0x80_0000, (14 - (exp - 112)) as u32)
-    };
-    if shift >= 32 {
-        return sign;
-    }
-    let half = 1u32 << (shift - 1);
-    let rest = sig & ((1u32 << shift) - 1);
-    let mut m = sig >> shift;
-    if rest > half || (rest == half && m & 1 == 1) {
-        m += 1;
-    }
-    let v = if shift == 13 {
-        // normal: exponent field plus the rounded significand (a carry bumps the exponent)
-        (((exp - 112) as u32) << 10) + (m - 0x400)
-    } else {
-        m
-    };
-    sign | v.min(0x7c00) as u16
 }
 
 /// The client bits of float `v` as a component of `size` bytes.
@@ -186,7 +146,14 @@ pub unsafe fn unpack(
     tr: Option<ColorTransfer<'_>>,
 ) -> Vec<[f32; 4]> {
     let lay = Layout::new(ps, w, cf);
-    let store = |c: [f32; 4]| quantise(&storage, base.swizzle(c, 0.0, 1.0));
+    // Mesa uploads GL_RGBA/GL_BGRA float and unsigned-byte data by a blit (whose half
+    // conversion truncates) and the rest on the CPU (`_mesa_float_to_half`, to nearest
+    // even): measured on every 16F format with RGBA, RG, RED, RGB and LUMINANCE data of
+    // GL_FLOAT, GL_UNSIGNED_SHORT and GL_UNSIGNED_BYTE
+    let blit = cf.comps.len() == 4
+        && cf.comps[3] == 3
+        && matches!(cf.gl_type, GL_FLOAT | GL_UNSIGNED_BYTE);
+    let store = |c: [f32; 4]| quantise_rounding(&storage, base.swizzle(c, 0.0, 1.0), blit);
     if data.is_null() || w == 0 || h == 0 {
         return vec![store([0.0; 4]); w * h];
     }
