@@ -248,10 +248,10 @@ mod tests {
     #[test]
     fn half_rounds_toward_zero_as_mesa_stores() {
         // glGetTexImage of GL_RGBA16F images uploaded from GL_FLOAT (Mesa 22.3 probe)
-        assert_eq!(round_half(0.1), 0.099_975_586);
-        assert_eq!(round_half(0.3), 0.299_804_7);
-        assert_eq!(round_half(0.9), 0.899_902_3);
-        assert_eq!(round_half(1e-6), 9.536_743e-7);
+        assert_eq!(round_half(0.1), 1638.0 / 16384.0);
+        assert_eq!(round_half(0.3), 1228.0 / 4096.0);
+        assert_eq!(round_half(0.9), 1843.0 / 2048.0);
+        assert_eq!(round_half(1e-6), 16.0 / 16_777_216.0);
         assert_eq!(round_half(70000.0), 65504.0);
         assert_eq!(round_half(-2.0), -2.0);
         assert_eq!(round_half(f32::INFINITY), f32::INFINITY);
