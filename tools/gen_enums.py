@@ -29,7 +29,8 @@ GL_SGIS_texture_edge_clamp GL_ARB_texture_cube_map GL_ARB_framebuffer_object
 GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample
 GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB
 GL_EXT_texture_compression_s3tc GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc
-GL_EXT_texture_compression_latc GL_ATI_texture_compression_3dc""".split()
+GL_EXT_texture_compression_latc GL_ATI_texture_compression_3dc
+GL_ARB_texture_float GL_ARB_half_float_pixel GL_ARB_texture_rg""".split()
 
 # Tokens of an extension that glext.h lists under the GL version that took it into core
 # (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
@@ -39,6 +40,11 @@ SECTION_TOKENS = {
 GL_CLIP_ORIGIN GL_CLIP_DEPTH_MODE""".split(),
     "GL_ARB_texture_compression_rgtc": """GL_COMPRESSED_RED_RGTC1 GL_COMPRESSED_SIGNED_RED_RGTC1
 GL_COMPRESSED_RG_RGTC2 GL_COMPRESSED_SIGNED_RG_RGTC2""".split(),
+    # GL 3.0's names of the formats and type (the core section lists them)
+    "GL_ARB_texture_float": "GL_RGBA32F GL_RGB32F GL_RGBA16F GL_RGB16F".split(),
+    "GL_ARB_half_float_pixel": ["GL_HALF_FLOAT"],
+    "GL_ARB_texture_rg": """GL_RG GL_RG_INTEGER GL_R8 GL_R16 GL_RG8 GL_RG16 GL_R16F GL_R32F
+GL_RG16F GL_RG32F""".split(),
 }
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports

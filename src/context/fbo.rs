@@ -548,6 +548,9 @@ impl FboState {
                         }
                         _ => ImageKind::Unrenderable,
                     },
+                    // float and 16-bit colour images are not rendered to (yet): the
+                    // framebuffer object is GL_FRAMEBUFFER_UNSUPPORTED
+                    _ if img.storage.has_floats() => ImageKind::Unrenderable,
                     b => ImageKind::Color(b),
                 };
                 Some(ImageInfo {

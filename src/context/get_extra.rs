@@ -25,7 +25,8 @@ pub const EXTENSIONS: &str = concat!(
     "GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp ",
     "GL_SGIS_texture_lod GL_ARB_texture_compression GL_EXT_texture_compression_s3tc ",
     "GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc ",
-    "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB\0"
+    "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB ",
+    "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg\0"
 );
 
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list, each

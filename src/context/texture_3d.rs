@@ -8,7 +8,7 @@ use super::state::PixelStore;
 use super::texture_copy::read_texels;
 use super::texture_spec::{
     check_level, image_target, level_format, maybe_generate, new_level, non_negative, skip_border,
-    unpack_any,
+    unpack_rect,
 };
 use super::{Context, GlError, GlResult};
 use crate::context::pack::tex::{self as upload, ClientFormat};
@@ -41,14 +41,19 @@ unsafe fn unpack_3d(
     (base, storage): (BaseFormat, Storage),
     (w, h, d): (usize, usize, usize),
     data: *const c_void,
-) -> Vec<[u8; 4]> {
+) -> (Vec<[u8; 4]>, Option<Vec<[f32; 4]>>) {
     let mut out = Vec::with_capacity(w * h * d);
+    let mut floats = storage.has_floats().then(|| Vec::with_capacity(w * h * d));
     for z in 0..d {
         let s = slice_store(ps, h, z);
         // SAFETY: forwarded caller contract (slice z lies inside the image).
-        out.extend(unsafe { unpack_any(c, &s, cf, (base, storage), (w, h), data) });
+        let (t, f) = unsafe { unpack_rect(c, &s, (cf, 0, 0), (base, storage), (w, h), data) };
+        out.extend(t);
+        if let (Some(all), Some(f)) = (&mut floats, f) {
+            all.extend(f);
+        }
     }
-    out
+    (out, floats)
 }
 
 /// Packs every slice of a 3D level for glGetTexImage.
@@ -68,12 +73,13 @@ pub(crate) unsafe fn pack_3d(
     let n = img.width * img.height;
     for z in 0..d {
         let texels = img.texels[z * n..(z + 1) * n].to_vec();
-        let slice = new_level(
+        let mut slice = new_level(
             img.internal_format,
             (img.base, img.storage),
             (img.width, img.height),
             texels,
         );
+        slice.floats = img.floats.as_ref().map(|f| f[z * n..(z + 1) * n].to_vec());
         let s = slice_store(ps, img.height, z);
         // SAFETY: forwarded caller contract.
         unsafe { upload::pack(&s, cf, &slice, dst as *mut u8) };
@@ -155,9 +161,11 @@ impl Context {
             _ => unpack,
         };
         // SAFETY: forwarded caller contract.
-        let texels = unsafe { unpack_3d(self, &ps, &cf, texel, (tw, th, td), data) };
+        let (texels, floats) = unsafe { unpack_3d(self, &ps, &cf, texel, (tw, th, td), data) };
         let obj = self.tex_object_mut(t, false);
-        obj.levels[level] = Some(new_level(internal, texel, (tw, th), texels));
+        let mut img = new_level(internal, texel, (tw, th), texels);
+        img.floats = floats;
+        obj.levels[level] = Some(img);
         obj.depths[level] = td;
         maybe_generate(obj, level);
         Ok(())
@@ -191,7 +199,7 @@ impl Context {
         let img = self.sub_box_3d(level, off, (w, h, d))?;
         let format = (img.base, img.storage);
         // SAFETY: forwarded caller contract.
-        let texels = unsafe { unpack_3d(self, &unpack, &cf, format, (w, h, d), data) };
+        let (texels, floats) = unsafe { unpack_3d(self, &unpack, &cf, format, (w, h, d), data) };
         let obj = self.tex_object_mut(Target::Tex3D, false);
         let img = obj.levels[level]
             .as_mut()
@@ -202,6 +210,9 @@ impl Context {
                 let dst = ((z0 + z) * img.height + y0 + y) * img.width + x0;
                 let src = (z * h + y) * w;
                 img.texels[dst..dst + w].copy_from_slice(&texels[src..src + w]);
+                if let Some(f) = &floats {
+                    img.write_floats(dst, &f[src..src + w]);
+                }
             }
         }
         maybe_generate(obj, level);
@@ -254,6 +265,7 @@ impl Context {
         for row in 0..h {
             let dst = ((z0 * img.height) + y0 + row) * img.width + x0;
             img.texels[dst..dst + w].copy_from_slice(&src[row * w..(row + 1) * w]);
+            img.refresh_floats(dst, w);
         }
         maybe_generate(obj, level);
         Ok(())

@@ -188,6 +188,7 @@ impl Context {
             storage: storage(&info),
             texels,
             blocks,
+            floats: None,
         };
         if proxy {
             self.tex_object_mut(t, true).face_levels_mut(face)[level] =

@@ -129,7 +129,8 @@ impl Context {
             true => super::texture_ds::read_fb_stencil(self, sx, sy, tw, th),
             false => Vec::new(),
         };
-        let img = new_level(internal, (base, storage), (tw, th), texels);
+        let mut img = new_level(internal, (base, storage), (tw, th), texels);
+        img.set_floats(None);
         store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
@@ -175,6 +176,7 @@ impl Context {
         for row in 0..h {
             let d = (yoff as usize + row) * img.width + xoff as usize;
             img.texels[d..d + w].copy_from_slice(&src[row * w..(row + 1) * w]);
+            img.refresh_floats(d, w);
         }
         if let Some(s) = stencil {
             let (size, rect) = (

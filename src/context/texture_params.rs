@@ -286,16 +286,8 @@ impl Context {
                 .filter(|_| is_depth)
                 .map_or(0, |i| shadow::depth_size(i.storage.depth_bits()))
                 as f64,
-            // ARB_texture_float's type query (Mesa answers it: llvmpipe has the extension)
-            GL_TEXTURE_DEPTH_TYPE => {
-                let ty = match img.filter(|_| is_depth) {
-                    Some(i) if i.storage.depth_bits() == crate::texture::shadow::FLOAT_BITS => {
-                        GL_FLOAT
-                    }
-                    Some(_) => GL_UNSIGNED_NORMALIZED,
-                    None => GL_NONE,
-                };
-                ty as f64
+            GL_TEXTURE_RED_TYPE..=GL_TEXTURE_DEPTH_TYPE => {
+                img.map_or(0, |i| super::texture_get::channel_type(i, pname)) as f64
             }
             GL_TEXTURE_STENCIL_SIZE => img
                 .filter(|i| shadow::is_depth_stencil(i.internal_format))

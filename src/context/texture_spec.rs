@@ -12,10 +12,11 @@ use super::state::PixelStore;
 use super::{Context, GlError, GlResult};
 use crate::context::pack::depth as shadow;
 use crate::context::pack::tex::{self as upload, ClientFormat, Layout};
+use crate::context::pack::tex_float;
 use crate::gl::enums::*;
 use crate::gl::types::*;
 use crate::texture::{
-    mipmap, BaseFormat, Level, Storage, Target, TextureObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    float, mipmap, BaseFormat, Level, Storage, Target, TextureObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 use std::ffi::c_void;
 
@@ -204,6 +205,7 @@ pub(crate) fn new_level(
         storage,
         texels,
         blocks: None,
+        floats: None,
     }
 }
 
@@ -294,6 +296,46 @@ unsafe fn unpack_image(
     }
 }
 
+/// [`unpack_image`] with the float values of an image that keeps them
+/// ([`Storage::has_floats`]): unpacked as floats (the texels are their clamped bytes), or
+/// for GL_COLOR_INDEX data made from the texels.
+///
+/// # Safety
+/// `data` (when not null) must hold the described image under `ps`.
+pub(crate) unsafe fn unpack_rect(
+    c: &Context,
+    ps: &PixelStore,
+    (cf, format, ty): (&ClientFormat, GLenum, GLenum),
+    texel: (BaseFormat, Storage),
+    size: (usize, usize),
+    data: *const c_void,
+) -> (Vec<[u8; 4]>, Option<Vec<[f32; 4]>>) {
+    let storage = texel.1;
+    if !storage.has_floats() {
+        // SAFETY: forwarded caller contract.
+        return (
+            unsafe { unpack_image(c, ps, (cf, format, ty), texel, size, data) },
+            None,
+        );
+    }
+    if format == GL_COLOR_INDEX {
+        // SAFETY: forwarded caller contract.
+        let texels = unsafe { unpack_image(c, ps, (cf, format, ty), texel, size, data) };
+        let floats = texels
+            .iter()
+            .map(|&t| float::from_bytes(&storage, t))
+            .collect();
+        return (texels, Some(floats));
+    }
+    let tr = upload::ColorTransfer::active(&c.pixel_modes.transfer, &c.pixel_maps);
+    // SAFETY: forwarded caller contract.
+    let floats = unsafe { tex_float::unpack(ps, cf, texel, size, data as *const u8, tr) };
+    (
+        floats.iter().map(|&v| float::to_bytes(v)).collect(),
+        Some(floats),
+    )
+}
+
 impl Context {
     /// The texture object a command on `target` changes: the proxy, or the object bound to
     /// the active unit (marking a framebuffer object it is attached to as changed).
@@ -364,10 +406,12 @@ impl Context {
             _ => unpack,
         };
         // SAFETY: GL's contract: `data` (when not null) holds the described image.
-        let texels = unsafe { unpack_image(self, &ps, (&cf, format, ty), texel, (tw, th), data) };
+        let (texels, floats) =
+            unsafe { unpack_rect(self, &ps, (&cf, format, ty), texel, (tw, th), data) };
         // SAFETY: as above.
         let stencil = unsafe { super::texture_ds::unpack_stencil(self, &ps, &cf, (tw, th), data) };
-        let img = new_level(internal, texel, (tw, th), texels);
+        let mut img = new_level(internal, texel, (tw, th), texels);
+        img.floats = floats;
         store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
@@ -408,8 +452,8 @@ impl Context {
             super::texture_compressed::check_sub_rect((width as i32, height as i32), rect)?;
         }
         // SAFETY: GL's contract: `data` holds the described image.
-        let texels =
-            unsafe { unpack_image(self, &ps, (&cf, format, ty), (base, storage), (w, h), data) };
+        let (texels, floats) =
+            unsafe { unpack_rect(self, &ps, (&cf, format, ty), (base, storage), (w, h), data) };
         let stencil = (shadow::is_depth_stencil(internal) && cf.is_depth_stencil())
             // SAFETY: as above.
             .then(|| unsafe { super::texture_ds::unpack_stencil(self, &ps, &cf, (w, h), data) });
@@ -424,6 +468,9 @@ impl Context {
         for y in 0..h {
             let dst = (yoff as usize + y) * img.width + xoff as usize;
             img.texels[dst..dst + w].copy_from_slice(&texels[y * w..(y + 1) * w]);
+            if let Some(f) = &floats {
+                img.write_floats(dst, &f[y * w..(y + 1) * w]);
+            }
         }
         maybe_generate(obj, level);
         Ok(())

@@ -119,6 +119,11 @@ pub const GL_DEPTH_TEXTURE_MODE_ARB: GLenum = 0x884B;
 // GL_ARB_framebuffer_object
 pub const GL_ARB_framebuffer_object: GLenum = 1;
 
+// GL_ARB_half_float_pixel
+pub const GL_ARB_half_float_pixel: GLenum = 1;
+pub const GL_HALF_FLOAT_ARB: GLenum = 0x140B;
+pub const GL_HALF_FLOAT: GLenum = 0x140B;
+
 // GL_ARB_occlusion_query
 pub const GL_ARB_occlusion_query: GLenum = 1;
 pub const GL_QUERY_COUNTER_BITS_ARB: GLenum = 0x8864;
@@ -202,9 +207,49 @@ pub const GL_ARB_texture_env_dot3: GLenum = 1;
 pub const GL_DOT3_RGB_ARB: GLenum = 0x86AE;
 pub const GL_DOT3_RGBA_ARB: GLenum = 0x86AF;
 
+// GL_ARB_texture_float
+pub const GL_ARB_texture_float: GLenum = 1;
+pub const GL_TEXTURE_RED_TYPE_ARB: GLenum = 0x8C10;
+pub const GL_TEXTURE_GREEN_TYPE_ARB: GLenum = 0x8C11;
+pub const GL_TEXTURE_BLUE_TYPE_ARB: GLenum = 0x8C12;
+pub const GL_TEXTURE_ALPHA_TYPE_ARB: GLenum = 0x8C13;
+pub const GL_TEXTURE_LUMINANCE_TYPE_ARB: GLenum = 0x8C14;
+pub const GL_TEXTURE_INTENSITY_TYPE_ARB: GLenum = 0x8C15;
+pub const GL_TEXTURE_DEPTH_TYPE_ARB: GLenum = 0x8C16;
+pub const GL_UNSIGNED_NORMALIZED_ARB: GLenum = 0x8C17;
+pub const GL_RGBA32F_ARB: GLenum = 0x8814;
+pub const GL_RGB32F_ARB: GLenum = 0x8815;
+pub const GL_ALPHA32F_ARB: GLenum = 0x8816;
+pub const GL_INTENSITY32F_ARB: GLenum = 0x8817;
+pub const GL_LUMINANCE32F_ARB: GLenum = 0x8818;
+pub const GL_LUMINANCE_ALPHA32F_ARB: GLenum = 0x8819;
+pub const GL_RGBA16F_ARB: GLenum = 0x881A;
+pub const GL_RGB16F_ARB: GLenum = 0x881B;
+pub const GL_ALPHA16F_ARB: GLenum = 0x881C;
+pub const GL_INTENSITY16F_ARB: GLenum = 0x881D;
+pub const GL_LUMINANCE16F_ARB: GLenum = 0x881E;
+pub const GL_LUMINANCE_ALPHA16F_ARB: GLenum = 0x881F;
+pub const GL_RGBA32F: GLenum = 0x8814;
+pub const GL_RGB32F: GLenum = 0x8815;
+pub const GL_RGBA16F: GLenum = 0x881A;
+pub const GL_RGB16F: GLenum = 0x881B;
+
 // GL_ARB_texture_mirrored_repeat
 pub const GL_ARB_texture_mirrored_repeat: GLenum = 1;
 pub const GL_MIRRORED_REPEAT_ARB: GLenum = 0x8370;
+
+// GL_ARB_texture_rg
+pub const GL_ARB_texture_rg: GLenum = 1;
+pub const GL_RG: GLenum = 0x8227;
+pub const GL_RG_INTEGER: GLenum = 0x8228;
+pub const GL_R8: GLenum = 0x8229;
+pub const GL_R16: GLenum = 0x822A;
+pub const GL_RG8: GLenum = 0x822B;
+pub const GL_RG16: GLenum = 0x822C;
+pub const GL_R16F: GLenum = 0x822D;
+pub const GL_R32F: GLenum = 0x822E;
+pub const GL_RG16F: GLenum = 0x822F;
+pub const GL_RG32F: GLenum = 0x8230;
 
 // GL_ARB_transpose_matrix
 pub const GL_ARB_transpose_matrix: GLenum = 1;

@@ -214,6 +214,7 @@ impl Combine {
             c.reassoc = c.add_signed_reassociates();
             return c;
         }
+        let base = base.env_base();
         let d = TexEnv::default();
         let mut src_rgb = d.source_rgb;
         let mut src_a = d.source_alpha;
@@ -253,8 +254,9 @@ impl Combine {
                     }
                     B::Rgb => mode_rgb = F::Replace,
                     B::Rgba => src_rgb[2] = S::Texture,
-                    // a depth texture reaches the environment as its depth mode's format
-                    B::Depth => {}
+                    // a depth texture reaches the environment as its depth mode's format;
+                    // red and green ones as RGB (`env_base`)
+                    B::Depth | B::Red | B::Rg => {}
                 }
             }
             EnvMode::Blend => {

@@ -73,6 +73,9 @@ pub fn generate(levels: &mut [Option<Level>], base: usize, max_level: usize) {
         // sRGB levels: decoded, filtered in float and encoded (see `srgb`)
         let next = if src.storage.encoding == super::Encoding::Srgb {
             super::srgb::downsample(src, super::sample::has_fma())
+        } else if src.storage.has_floats() {
+            // float and 16-bit levels: filtered and stored as floats (see `float`)
+            super::float::downsample(src, super::sample::has_fma())
         } else {
             downsample(src)
         };
@@ -95,6 +98,7 @@ mod tests {
             storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
             texels: data.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect(),
             blocks: None,
+            floats: None,
         }
     }
 

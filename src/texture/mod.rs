@@ -31,6 +31,7 @@ pub mod cube_seamless;
 pub mod env;
 pub mod fast;
 pub mod fast_avx2;
+pub mod float;
 pub mod lod;
 pub mod mipmap;
 pub mod sample;
@@ -106,6 +107,10 @@ pub enum BaseFormat {
     /// GL_DEPTH_COMPONENT: texels hold the depth value as a little-endian u32 of
     /// [`Storage::depth_bits`] bits (see [`shadow`]).
     Depth,
+    /// GL_RED (GL_ARB_texture_rg): sampled as (R, 0, 0, 1).
+    Red,
+    /// GL_RG (GL_ARB_texture_rg): sampled as (R, G, 0, 1).
+    Rg,
 }
 
 impl BaseFormat {
@@ -119,6 +124,17 @@ impl BaseFormat {
             BaseFormat::Intensity => [v[0], v[0], v[0], v[0]],
             BaseFormat::Rgb => [v[0], v[1], v[2], one],
             BaseFormat::Rgba | BaseFormat::Depth => v,
+            BaseFormat::Red => [v[0], zero, zero, one],
+            BaseFormat::Rg => [v[0], v[1], zero, one],
+        }
+    }
+
+    /// The base format the texture environment sees: Mesa's `calculate_derived_texenv`
+    /// treats GL_RED and GL_RG images as GL_RGB ones.
+    pub fn env_base(self) -> BaseFormat {
+        match self {
+            BaseFormat::Red | BaseFormat::Rg => BaseFormat::Rgb,
+            b => b,
         }
     }
 }
@@ -135,6 +151,8 @@ impl BaseFormat {
             BaseFormat::Alpha => [0, 0, 0, v[3]],
             BaseFormat::Rgb => [v[0], v[1], v[2], 255],
             BaseFormat::Rgba | BaseFormat::Depth => v,
+            BaseFormat::Red => [v[0], 0, 0, 255],
+            BaseFormat::Rg => [v[0], v[1], 0, 255],
         }
     }
 }
@@ -165,6 +183,12 @@ pub enum Encoding {
     SrgbBlocks,
     /// Signed bytes (signed RGTC/LATC, see [`compressed`]).
     Snorm,
+    /// Float components (GL_ARB_texture_float, GL_R16F … GL_RG32F): the values are in
+    /// [`Level::floats`], 16-bit ones already rounded to half precision (see [`float`]).
+    Float,
+    /// 16-bit unsigned normalized components (GL_R16, GL_RG16): `u·f32(1/65535)` in
+    /// [`Level::floats`] (see [`float`]).
+    Unorm16,
 }
 
 impl Storage {
@@ -179,12 +203,20 @@ impl Storage {
             B::Rgb => [8, 8, 8, 0, 0, 0],
             B::Rgba => [8, 8, 8, 8, 0, 0],
             B::Depth => [24, 0, 0, 0, 0, 0],
+            B::Red => [8, 0, 0, 0, 0, 0],
+            B::Rg => [8, 8, 0, 0, 0, 0],
         };
         Storage {
             sizes,
             encoding: Encoding::Unorm,
         }
     }
+    /// Whether images of this storage keep float values ([`Level::floats`]) and are
+    /// sampled from them on the float path.
+    pub fn has_floats(&self) -> bool {
+        matches!(self.encoding, Encoding::Float | Encoding::Unorm16)
+    }
+
     /// GL_TEXTURE_DEPTH_SIZE of a depth image (kept in the first slot, whose colour size
     /// a depth image does not have).
     pub fn depth_bits(&self) -> u8 {
@@ -224,6 +256,10 @@ pub struct Level {
     /// The blocks of a compressed image as the program gave them (see [`compressed`]);
     /// `None` for every other image.
     pub blocks: Option<Vec<u8>>,
+    /// The texel values of a float or 16-bit image ([`Storage::has_floats`]), after the
+    /// base swizzle, one per texel; `texels` then hold them as unorm8 (clamped) for the
+    /// commands that only read bytes. `None` for every other image.
+    pub floats: Option<Vec<[f32; 4]>>,
 }
 
 impl Level {
@@ -238,6 +274,7 @@ impl Level {
             storage: src.storage,
             texels,
             blocks: None,
+            floats: None,
         }
     }
 
@@ -245,6 +282,16 @@ impl Level {
     #[inline]
     pub fn texel(&self, x: usize, y: usize) -> [u8; 4] {
         self.texels[y * self.width + x]
+    }
+
+    /// The float value of texel `i` (`y·width + x`, slices after each other): from
+    /// [`Level::floats`], or the unorm8 texel as the float path reads it.
+    #[inline(always)]
+    pub fn ftexel(&self, i: usize) -> [f32; 4] {
+        match &self.floats {
+            Some(f) => f[i],
+            None => sample::to_float(self.texels[i]),
+        }
     }
 }
 
@@ -661,8 +708,11 @@ impl TextureState {
         // sRGB and signed textures: decoded per texel, then filtered on the float path
         let decode = unit::texel_decode(base_img.storage.encoding);
         // a depth texture is always sampled on the float path
+        // float and 16-bit textures: float texels, filtered on the float path
+        let floats = base_img.storage.has_floats();
         let aos = depth.is_none()
             && decode.is_none()
+            && !floats
             && wrap_s.is_simple()
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
@@ -721,6 +771,7 @@ impl TextureState {
                 kind,
                 depth,
                 decode,
+                floats,
             },
         })
     }

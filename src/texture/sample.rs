@@ -126,6 +126,7 @@ fn aos_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> 
 fn soa_filter(p: &UnitPlan<'_>, img: &Level, filter: Filter, s: f32, t: f32) -> [f32; 4] {
     let (w, h) = (img.width, img.height);
     let fetch = |x: Option<usize>, y: Option<usize>| match (x, y) {
+        (Some(x), Some(y)) if p.ext.floats => img.ftexel(y * w + x),
         (Some(x), Some(y)) => texel_float(p, img.texel(x, y)),
         _ => p.border,
     };

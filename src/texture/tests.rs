@@ -13,6 +13,7 @@ pub(crate) fn rgba_level(w: usize, h: usize, texels: Vec<[u8; 4]>) -> Level {
         storage: Storage::of_base(BaseFormat::Rgba),
         texels,
         blocks: None,
+        floats: None,
     }
 }
 

@@ -16,6 +16,9 @@ pub struct PlanExt<'a> {
     /// that are not unorm8: sRGB ones (see [`srgb`]) and signed ones (see
     /// [`compressed`]); such a plan is never `aos`.
     pub decode: Option<[&'static [f32; 256]; 2]>,
+    /// The texture keeps float values ([`super::float`]): texels are read from
+    /// [`Level::floats`]; such a plan is never `aos`.
+    pub floats: bool,
 }
 
 /// The per-byte decode tables of an image's encoding ([`PlanExt::decode`]).
@@ -25,7 +28,8 @@ pub(super) fn texel_decode(encoding: Encoding) -> Option<[&'static [f32; 256]; 2
             Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
         }
         Encoding::Snorm => Some([compressed::snorm_table(); 2]),
-        Encoding::Unorm => None,
+        // float and 16-bit images are read from their float values instead
+        Encoding::Unorm | Encoding::Float | Encoding::Unorm16 => None,
     }
 }
 

@@ -83,7 +83,9 @@ pub fn generate(obj: &mut TextureObject, base: usize, max_level: usize) {
         if src.width == 1 && src.height == 1 && d == 1 {
             return;
         }
-        let (next, nd) = downsample(src, d);
+        let (mut next, nd) = downsample(src, d);
+        // float 3D levels keep the 8-bit filtered values (not llvmpipe's float blit)
+        next.set_floats(None);
         obj.levels[l + 1] = Some(next);
         obj.depths[l + 1] = nd;
         l += 1;
@@ -203,6 +205,9 @@ fn soa_filter(
 ) -> [f32; 4] {
     let (img, size, pot, wraps) = axes(p, v, level);
     let fetch = |x: Option<usize>, y: Option<usize>, z: Option<usize>| match (x, y, z) {
+        (Some(x), Some(y), Some(z)) if p.ext.floats => {
+            img.ftexel((z * img.height + y) * img.width + x)
+        }
         (Some(x), Some(y), Some(z)) => texel_float(p, texel(img, x, y, z)),
         _ => p.border,
     };

@@ -7,6 +7,7 @@
 //!   textures, decoded once into [`crate::pixels::image::Image`];
 //! - [`tex`] and [`tex_format`]: glTexImage/glTexSubImage unpacking into texels,
 //!   glGetTexImage packing, and the storage Mesa picks for an internal format;
+//!   [`tex_float`] the same for float and 16-bit images;
 //! - [`depth`]: depth and depth-stencil texture images.
 //!
 //! The layout rules (GL 1.5 §3.6.4 / §4.3.2) and the table of pixel types are shared here.
@@ -15,6 +16,7 @@ pub mod depth;
 pub mod draw_image;
 pub mod read;
 pub mod tex;
+pub mod tex_float;
 pub mod tex_format;
 pub mod wide;
 

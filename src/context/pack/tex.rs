@@ -21,7 +21,7 @@ use crate::context::state::PixelStore;
 use crate::gl::enums::*;
 use crate::gl::error::{GlError, GlResult};
 use crate::gl::glext_enums::{
-    GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, GL_UNSIGNED_INT_24_8,
+    GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, GL_HALF_FLOAT, GL_RG, GL_UNSIGNED_INT_24_8,
 };
 use crate::texture::upload::{float_to_bits_u8, quantise_u8, unorm_to_u8};
 use crate::texture::{BaseFormat, Level, Storage};
@@ -33,8 +33,8 @@ pub use crate::texture::upload::{quantise_rgba, to_texel};
 /// A validated client pixel layout.
 #[derive(Clone, Copy, Debug)]
 pub struct ClientFormat {
-    comps: &'static [usize],
-    ty: Ty,
+    pub(super) comps: &'static [usize],
+    pub(super) ty: Ty,
     depth: bool,
     stencil: bool,
     /// The GL type token.
@@ -48,10 +48,14 @@ impl ClientFormat {
     /// GL_INVALID_ENUM), and those two only GL_DEPTH_STENCIL (GL_INVALID_OPERATION), as
     /// Mesa 22.3 checks them.
     pub fn new(format: u32, ty: u32) -> GlResult<ClientFormat> {
+        // GL_RG (GL_ARB_texture_rg) and GL_HALF_FLOAT (GL_ARB_half_float_pixel) are
+        // texture image formats only here
         let comps = components(format)
+            .or_else(|| (format == GL_RG).then_some(&[0usize, 1][..]))
             .filter(|_| !matches!(format, GL_STENCIL_INDEX | GL_COLOR_INDEX))
             .ok_or(GlError::InvalidEnum)?;
         let t = pixel_type(ty)
+            .or_else(|| (ty == GL_HALF_FLOAT).then_some(super::tex_float::HALF))
             .filter(|t| *t != Ty::Bitmap)
             .ok_or(GlError::InvalidEnum)?;
         let ds_type = matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV);
@@ -128,7 +132,7 @@ fn for_each_component(
                 put(
                     comp,
                     if float {
-                        Component::Float(f32::from_bits(raw as u32))
+                        Component::Float(super::tex_float::float_of(raw, size))
                     } else if signed {
                         Component::Snorm(((raw << (64 - bits)) as i64) >> (64 - bits), bits)
                     } else {
@@ -181,7 +185,7 @@ fn decode_pixel(cf: &ClientFormat, px: &[u8], swap: bool, bits: [u32; 4]) -> [u8
 /// Decodes one client pixel into RGBA float as Mesa's `_mesa_format_convert` does
 /// before pixel transfer: unorm `x·f32(1/max)`, snorm `x·f32(1/max)` (at least −1), float
 /// as is; missing colour 0, missing alpha 1, luminance into R, G and B.
-fn decode_pixel_f32(cf: &ClientFormat, px: &[u8], swap: bool) -> [f32; 4] {
+pub(super) fn decode_pixel_f32(cf: &ClientFormat, px: &[u8], swap: bool) -> [f32; 4] {
     let mut rgba = [0.0, 0.0, 0.0, 1.0];
     for_each_component(cf, px, swap, |comp, c| {
         let v = match c {
@@ -331,6 +335,8 @@ fn readback_rgba(base: BaseFormat, t: [u8; 4]) -> [u8; 4] {
         BaseFormat::LuminanceAlpha => [t[0], 0, 0, t[3]],
         BaseFormat::Rgb => [t[0], t[1], t[2], 255],
         BaseFormat::Rgba => t,
+        BaseFormat::Red => [t[0], 0, 0, 255],
+        BaseFormat::Rg => [t[0], t[1], 0, 255],
         // depth images are read back by `depth::pack`
         BaseFormat::Depth => [0, 0, 0, 255],
     }
@@ -344,7 +350,7 @@ fn encode_u8(v: u8, ty: Ty, out: &mut [u8], swap: bool) {
     } = ty
     {
         let raw: u64 = if float {
-            (v as f32 * (1.0 / 255.0)).to_bits() as u64
+            super::tex_float::float_bits(v as f32 * (1.0 / 255.0), size)
         } else if signed {
             // unorm → snorm: v · (2^(n−1) − 1) / 255, rounded
             let max = (1u64 << (8 * size - 1)) - 1;
@@ -375,9 +381,13 @@ pub unsafe fn pack(ps: &PixelStore, cf: &ClientFormat, img: &Level, dst: *mut u8
     let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
     for y in 0..h {
         for x in 0..w {
-            let rgba = readback_rgba(img.base, img.texel(x, y));
             let o = lay.start + y * lay.stride + x * lay.bpp;
             let px = &mut bytes[o..o + lay.bpp];
+            if let Some(f) = &img.floats {
+                super::tex_float::pack_pixel(cf, img.base, f[y * w + x], px, ps.swap_bytes);
+                continue;
+            }
+            let rgba = readback_rgba(img.base, img.texel(x, y));
             match cf.ty {
                 Ty::Plain { size, .. } => {
                     for (i, &comp) in cf.comps.iter().enumerate() {

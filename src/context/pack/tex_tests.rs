@@ -126,6 +126,7 @@ fn pack_round_trip() {
         storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
         texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]],
         blocks: None,
+        floats: None,
     };
     let cf = ClientFormat::new(GL_BGRA, GL_UNSIGNED_BYTE).unwrap();
     let mut out = vec![0u8; 12];
