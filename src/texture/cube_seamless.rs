@@ -216,7 +216,15 @@ fn linear_level(
     let taps = px.map(|(f, s, t)| taps(f, s, t, n));
     let corners = taps.iter().any(|tp| tp.corner.contains(&true));
     taps.map(|tp| {
-        let texels = tp.at.map(|(f, x, y)| texel_float(p, img(f).texel(x, y)));
+        // Float and 16-bit cube maps keep their float texels (ARB_texture_float).
+        let texels = tp.at.map(|(f, x, y)| {
+            let l = img(f);
+            if p.ext.floats {
+                l.ftexel(y * l.width + x)
+            } else {
+                texel_float(p, l.texel(x, y))
+            }
+        });
         filter(p.fma, &tp, texels, corners)
     })
 }
