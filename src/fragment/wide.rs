@@ -75,32 +75,37 @@ fn blend(k: WideKind, p: &BlendPlan, kf: [f32; 4], s: [f32; 4], d: [f32; 4]) -> 
             let d = d.map(|c| c as u32);
             let kc = kf.map(|c| unorm16(c) as u32);
             let f = |f, ch| factor16(f, s, d, kc, ch);
-            let mut out = [0f32; 4];
-            for ch in 0..4 {
-                let (eq, sf, df) = if ch < 3 {
-                    (p.eq_rgb, f(p.src_rgb, ch), f(p.dst_rgb, ch))
-                } else {
-                    (p.eq_a, f(p.src_a, ch), f(p.dst_a, ch))
-                };
-                out[ch] = equation16(eq, s[ch], sf, d[ch], df) as f32;
-            }
-            out
+            per_channel(p, f, |ch, eq, sf, df| {
+                equation16(eq, s[ch], sf, d[ch], df) as f32
+            })
         }
         _ => {
             let kc = kf;
             let f = |f, ch| factor_f(f, s, d, kc, ch);
-            let mut out = [0f32; 4];
-            for ch in 0..4 {
-                let (eq, sf, df) = if ch < 3 {
-                    (p.eq_rgb, f(p.src_rgb, ch), f(p.dst_rgb, ch))
-                } else {
-                    (p.eq_a, f(p.src_a, ch), f(p.dst_a, ch))
-                };
-                out[ch] = k.from_shader(equation_f(eq, s[ch], sf, d[ch], df));
-            }
-            out
+            per_channel(p, f, |ch, eq, sf, df| {
+                k.from_shader(equation_f(eq, s[ch], sf, d[ch], df))
+            })
         }
     }
+}
+
+/// Blends each channel: `factor(f, ch)` gives a factor's value in channel `ch`, and
+/// `apply(ch, equation, src_factor, dst_factor)` the blended channel (RGB take the plan's
+/// colour equation and factors, alpha its alpha ones).
+#[inline(always)]
+fn per_channel<T: Copy>(
+    p: &BlendPlan,
+    factor: impl Fn(BlendFactor, usize) -> T,
+    apply: impl Fn(usize, BlendEquation, T, T) -> f32,
+) -> [f32; 4] {
+    std::array::from_fn(|ch| {
+        let (eq, sf, df) = if ch < 3 {
+            (p.eq_rgb, factor(p.src_rgb, ch), factor(p.dst_rgb, ch))
+        } else {
+            (p.eq_a, factor(p.src_a, ch), factor(p.dst_a, ch))
+        };
+        apply(ch, eq, sf, df)
+    })
 }
 
 /// llvmpipe's unorm16 multiply (`lp_build_mul_norm` in 32-bit lanes; exact for 0 and

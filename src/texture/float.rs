@@ -20,9 +20,10 @@ use super::sample::lerpfx4;
 use super::upload::float_to_u8;
 use super::{Encoding, Level, Storage};
 
-/// `x` as binary16, rounded toward zero: a finite value too large becomes ±65504,
-/// infinities stay infinite and a NaN stays a NaN.
-pub fn half_rtz(x: f32) -> u16 {
+/// The fields of f32 `x` for a binary16 conversion: `Ok((sign, exponent, mantissa))`, or
+/// `Err(half)` for an infinity or NaN (a NaN keeps its top mantissa bits and stays quiet).
+#[inline]
+fn half_fields(x: f32) -> Result<(u16, i32, u32), u16> {
     let b = x.to_bits();
     let sign = ((b >> 16) & 0x8000) as u16;
     let exp = ((b >> 23) & 0xff) as i32;
@@ -33,8 +34,18 @@ pub fn half_rtz(x: f32) -> u16 {
         } else {
             0
         };
-        return sign | 0x7c00 | nan;
+        return Err(sign | 0x7c00 | nan);
     }
+    Ok((sign, exp, man))
+}
+
+/// `x` as binary16, rounded toward zero: a finite value too large becomes ±65504,
+/// infinities stay infinite and a NaN stays a NaN.
+pub fn half_rtz(x: f32) -> u16 {
+    let (sign, exp, man) = match half_fields(x) {
+        Ok(f) => f,
+        Err(special) => return special,
+    };
     let e = exp - 112;
     if e >= 31 {
         return sign | 0x7bff;
@@ -55,18 +66,10 @@ pub fn half_rtz(x: f32) -> u16 {
 /// `x` as binary16, rounded to nearest even (F16C `vcvtps2ph` mode 0): too large a
 /// magnitude becomes infinite.
 pub fn half_rne(x: f32) -> u16 {
-    let b = x.to_bits();
-    let sign = ((b >> 16) & 0x8000) as u16;
-    let exp = ((b >> 23) & 0xff) as i32;
-    let man = b & 0x7f_ffff;
-    if exp == 0xff {
-        let nan = if man != 0 {
-            0x200 | (man >> 13) as u16
-        } else {
-            0
-        };
-        return sign | 0x7c00 | nan;
-    }
+    let (sign, exp, man) = match half_fields(x) {
+        Ok(f) => f,
+        Err(special) => return special,
+    };
     // the significand with its implicit bit, and how far it shifts into half units
     let (sig, shift) = if exp - 112 >= 1 {
         (man | 0x80_0000, 13)
