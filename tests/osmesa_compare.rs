@@ -74,19 +74,6 @@ const TOLERANCES: &[(&str, Tolerance)] = &[
         },
     ),
     (
-        "tex_cube",
-        Tolerance {
-            max_channel_diff: 130,
-            max_percent_off: 0.15,
-            reason: "llvmpipe's cube-map LOD (lp_build_cube_lookup with need_derivs: the \
-                     derivatives of the projected face coordinates, per-quad from the top-left \
-                     pixel) is reproduced for most quads but not all: the two small \
-                     mipmapped spheres (LINEAR_MIPMAP_LINEAR, NEAREST_MIPMAP_NEAREST) pick \
-                     another level in a few quads. Measured 99.889% identical, 73 of 65536 \
-                     pixels, max diff 125; every unmipmapped cube lookup is exact",
-        },
-    ),
-    (
         "polygon_modes",
         Tolerance {
             max_channel_diff: 255,

@@ -8,8 +8,10 @@
 //! - Without a LOD: `s' = sc·(0.5/|ma|) + 0.5` (0 when ma = 0). With a LOD
 //!   (`need_derivs`): `s' = sc·|0.5·(1/ma)| + 0.5`, and the derivatives of the projected
 //!   coordinates are `(d.sc − (d.ma·(1/ma))·sc)·(0.5·(1/ma))`, from the pixel's own
-//!   row differences; the quad's LOD comes from its top-left pixel (per-quad LOD), with
-//!   `rho² = max((W·dsdx)² + (W·dtdx)², …)` of the face size.
+//!   direction and its row (ddx) and column (ddy) differences in the quad, with
+//!   `rho² = max((W·dsdx)² + (W·dtdx)², …)` of the face size. A mipmapped cube map has
+//!   one LOD per pixel; without a mip filter (min ≠ mag) the quad's top-left pixel
+//!   decides.
 //! - Without GL_TEXTURE_CUBE_MAP_SEAMLESS each face is sampled on its own with every wrap
 //!   mode forced to CLAMP_TO_EDGE (llvmpipe does this for cube maps whatever the program
 //!   set), on the 8-bit AoS path for 8-bit formats. With it, LINEAR filtering reads
@@ -115,12 +117,16 @@ pub(super) fn project(s: f32, t: f32, r: f32, lod: bool) -> (usize, f32, f32) {
     (face, sc * k + 0.5, tc * k + 0.5)
 }
 
-/// The quad's LOD from its top-left pixel, as `lp_build_cube_lookup` derives it.
+/// The LOD of pixel `i` of a quad, as `lp_build_cube_lookup` derives it: from the
+/// pixel's own direction and its quad's row (x) and column (y) differences.
 #[inline(always)]
-fn quad_lod(p: &UnitPlan<'_>, size: f32, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> Lod {
-    let v = [s[0], t[0], r[0]];
-    let ddx = [s[1] - s[0], t[1] - t[0], r[1] - r[0]];
-    let ddy = [s[2] - s[0], t[2] - t[0], r[2] - r[0]];
+fn pixel_lod(p: &UnitPlan<'_>, size: f32, i: usize, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> Lod {
+    let v = [s[i], t[i], r[i]];
+    // ddx: right minus left of the pixel's row; ddy: bottom minus top of its column
+    let (xl, xr) = if i < 2 { (0, 1) } else { (2, 3) };
+    let (yt, yb) = if i & 1 == 0 { (0, 2) } else { (1, 3) };
+    let ddx = [s[xr] - s[xl], t[xr] - t[xl], r[xr] - r[xl]];
+    let ddy = [s[yb] - s[yt], t[yb] - t[yt], r[yb] - r[yt]];
     let axis = major(v[0], v[1], v[2]);
     let ma = v[axis];
     let ms = sign(ma);
@@ -140,24 +146,33 @@ fn quad_lod(p: &UnitPlan<'_>, size: f32, s: [f32; 4], t: [f32; 4], r: [f32; 4]) 
     lod::from_rho(&p.lod, p.mip_filter, true, rho)
 }
 
-/// The filter and levels of a 2x2 quad of direction vectors, and whether the faces are
-/// projected with `need_derivs`.
+/// The filter and levels of each pixel of a 2x2 quad of direction vectors, and whether
+/// the faces are projected with `need_derivs`. llvmpipe computes a cube map's LOD per
+/// pixel when it mipmaps, and per quad (from the top-left pixel) when only the
+/// min/mag switch needs it.
 #[inline(always)]
 pub(super) fn quad_levels(
     p: &UnitPlan<'_>,
     s: [f32; 4],
     t: [f32; 4],
     r: [f32; 4],
-) -> (LevelSel, bool) {
+) -> ([LevelSel; 4], bool) {
     let need_derivs = p.needs_lod && !p.lod.min_max_equal;
-    let lod = if need_derivs {
-        quad_lod(p, p.image(p.first).width as f32, s, t, r)
-    } else if p.needs_lod {
-        lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
-    } else {
-        Lod::MAG
-    };
-    (select_levels(p, lod), need_derivs)
+    if !need_derivs {
+        let lod = if p.needs_lod {
+            lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
+        } else {
+            Lod::MAG
+        };
+        return ([select_levels(p, lod); 4], false);
+    }
+    let size = p.image(p.first).width as f32;
+    if p.mip_filter == MipFilter::None {
+        let sel = select_levels(p, pixel_lod(p, size, 0, s, t, r));
+        return ([sel; 4], true);
+    }
+    let sels = std::array::from_fn(|i| select_levels(p, pixel_lod(p, size, i, s, t, r)));
+    (sels, true)
 }
 
 /// What [`select_levels`] returns: `(filter, level0, level1, fraction)`.
@@ -172,10 +187,10 @@ pub fn sample_quad(
     t: [f32; 4],
     r: [f32; 4],
 ) -> [[f32; 4]; 4] {
-    let (sel, need_derivs) = quad_levels(p, s, t, r);
+    let (sels, need_derivs) = quad_levels(p, s, t, r);
     std::array::from_fn(|i| {
         let (face, fs, ft) = project(s[i], t[i], r[i], need_derivs);
-        sample_levels_in(p, faces[face], sel, fs, ft)
+        sample_levels_in(p, faces[face], sels[i], fs, ft)
     })
 }
 

@@ -2,8 +2,8 @@
 //! llvmpipe does it (`lp_build_sample_image_linear` with `seamless_cube_filter`, and
 //! `lp_build_cube_new_coords`, in `gallivm/lp_bld_sample*.c`).
 //!
-//! - The face and its coordinates come from the same projection and per-quad LOD as
-//!   without seamless filtering ([`super::cube`]). llvmpipe samples on the float (SoA)
+//! - The face and its coordinates come from the same projection and LOD (per pixel when
+//!   mipmapped) as without seamless filtering ([`super::cube`]). llvmpipe samples on the float (SoA)
 //!   path whenever a cube map is seamless and either image filter is LINEAR, so the plan
 //!   is never `aos` then; NEAREST filtering is unchanged (CLAMP_TO_EDGE on the face).
 //! - On a level of size `n`: `u = max(s, 0)·n − 0.5` (NaN → 0; no clamp), `x0 = floor(u)`,
@@ -203,19 +203,24 @@ fn filter(fma: bool, tp: &Taps, n: [[f32; 4]; 4], corners: bool) -> [f32; 4] {
     })
 }
 
-/// One level of a quad, seamless LINEAR: `px` are the pixels' faces and coordinates.
+/// One level per pixel of a quad, seamless LINEAR: `px` are the pixels' faces and
+/// coordinates, `levels` the level each pixel reads.
 #[inline]
 fn linear_level(
     p: &UnitPlan<'_>,
     faces: &Faces<'_>,
-    level: usize,
+    levels: [usize; 4],
     px: &[(usize, f32, f32); 4],
 ) -> [[f32; 4]; 4] {
-    let img = |f: usize| -> &Level { faces[f][level].as_ref().expect("cube complete") };
-    let n = img(0).width;
-    let taps = px.map(|(f, s, t)| taps(f, s, t, n));
+    let taps: [Taps; 4] = std::array::from_fn(|i| {
+        let (f, s, t) = px[i];
+        let n = faces[f][levels[i]].as_ref().expect("cube complete").width;
+        taps(f, s, t, n)
+    });
     let corners = taps.iter().any(|tp| tp.corner.contains(&true));
-    taps.map(|tp| {
+    std::array::from_fn(|i| {
+        let tp = &taps[i];
+        let img = |f: usize| -> &Level { faces[f][levels[i]].as_ref().expect("cube complete") };
         // Float and 16-bit cube maps keep their float texels (ARB_texture_float).
         let texels = tp.at.map(|(f, x, y)| {
             let l = img(f);
@@ -225,7 +230,7 @@ fn linear_level(
                 texel_float(p, l.texel(x, y))
             }
         });
-        filter(p.fma, &tp, texels, corners)
+        filter(p.fma, tp, texels, corners)
     })
 }
 
@@ -238,19 +243,29 @@ pub fn sample_quad(
     t: [f32; 4],
     r: [f32; 4],
 ) -> [[f32; 4]; 4] {
-    let (sel, need_derivs) = quad_levels(p, s, t, r);
+    let (sels, need_derivs) = quad_levels(p, s, t, r);
     let px: [(usize, f32, f32); 4] =
         std::array::from_fn(|i| project(s[i], t[i], r[i], need_derivs));
-    let (filter, l0, l1, frac) = sel;
-    if filter == Filter::Nearest {
-        return px.map(|(f, fs, ft)| sample_levels_in(p, faces[f], sel, fs, ft));
+    if sels.iter().all(|sel| sel.0 == Filter::Nearest) {
+        return std::array::from_fn(|i| {
+            let (f, fs, ft) = px[i];
+            sample_levels_in(p, faces[f], sels[i], fs, ft)
+        });
     }
-    let a = linear_level(p, faces, l0, &px);
-    if l1 == l0 {
-        return a;
-    }
-    let b = linear_level(p, faces, l1, &px);
-    std::array::from_fn(|i| lerpfx4(p.fma, frac, a[i], b[i]))
+    let a = linear_level(p, faces, sels.map(|sel| sel.1), &px);
+    let b = if sels.iter().any(|sel| sel.2 != sel.1) {
+        linear_level(p, faces, sels.map(|sel| sel.2), &px)
+    } else {
+        a
+    };
+    std::array::from_fn(|i| {
+        let (f, fs, ft) = px[i];
+        match sels[i] {
+            (Filter::Nearest, ..) => sample_levels_in(p, faces[f], sels[i], fs, ft),
+            (_, l0, l1, frac) if l1 != l0 => lerpfx4(p.fma, frac, a[i], b[i]),
+            _ => a[i],
+        }
+    })
 }
 
 #[cfg(test)]
