@@ -216,17 +216,7 @@ impl Level {
 pub fn downsample(src: &Level, fma: bool) -> Level {
     let dw = (src.width / 2).max(1);
     let dh = (src.height / 2).max(1);
-    let axis = |d: usize, i: usize, s: usize| {
-        let u = (2 * i + 1) as f32 * s as f32 / (2 * d) as f32 - 0.5;
-        let f = u.floor();
-        let i0 = f as i64;
-        let max = s as i64 - 1;
-        (
-            i0.clamp(0, max) as usize,
-            (i0 + 1).clamp(0, max) as usize,
-            u - f,
-        )
-    };
+    let axis = super::srgb::blit_axis;
     let t = |x: usize, y: usize| src.ftexel(y * src.width + x);
     let mut out = Vec::with_capacity(dw * dh);
     for y in 0..dh {

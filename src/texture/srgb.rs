@@ -101,6 +101,22 @@ pub fn encode(v: f32, fma: bool) -> u8 {
     y.round_ties_even().clamp(0.0, 255.0) as u8
 }
 
+/// One axis of the mipmap blit's bilinear tap (llvmpipe's blitter samples destination texel
+/// `i` of `d` at the centre of its footprint in a source of `s`): the two source texels,
+/// clamped to the edge, and the weight of the second.
+#[inline]
+pub(super) fn blit_axis(d: usize, i: usize, s: usize) -> (usize, usize, f32) {
+    let u = (2 * i + 1) as f32 * s as f32 / (2 * d) as f32 - 0.5;
+    let f = u.floor();
+    let i0 = f as i64;
+    let max = s as i64 - 1;
+    (
+        i0.clamp(0, max) as usize,
+        (i0 + 1).clamp(0, max) as usize,
+        u - f,
+    )
+}
+
 /// The float-path bilinear sample of `src` at the centre of destination texel (`x`, `y`)
 /// of a `dw x dh` level, then encoded: one texel of the next mipmap level.
 fn blit_texel(
@@ -110,17 +126,7 @@ fn blit_texel(
     fma: bool,
 ) -> [u8; 4] {
     let table = table(fma);
-    let axis = |d: usize, i: usize, s: usize| {
-        let u = (2 * i + 1) as f32 * s as f32 / (2 * d) as f32 - 0.5;
-        let f = u.floor();
-        let i0 = f as i64;
-        let max = s as i64 - 1;
-        (
-            i0.clamp(0, max) as usize,
-            (i0 + 1).clamp(0, max) as usize,
-            u - f,
-        )
-    };
+    let axis = blit_axis;
     let (x0, x1, wx) = axis(dw, x, src.width);
     let (y0, y1, wy) = axis(dh, y, src.height);
     let t = |x, y| to_float(src.texel(x, y), table);
