@@ -195,6 +195,9 @@ pub struct Framebuffer {
     /// The wide colour plane (empty for 8-bit buffers), row-major like `color`, which
     /// then holds its 8-bit mirror ([`wide`]).
     pub wide_color: Vec<[f32; 4]>,
+    /// The wide buffer is an image of one channel (red, alpha, luminance or intensity),
+    /// which llvmpipe blends with its single-channel rules (`crate::fragment::wide`).
+    pub wide_single: bool,
 }
 
 impl Framebuffer {
@@ -240,6 +243,7 @@ impl Framebuffer {
             y_flip: true,
             wide: None,
             wide_color: Vec::new(),
+            wide_single: false,
         }
     }
 
@@ -455,7 +459,7 @@ impl ColorFormat {
     pub fn pack_float(self, c: [f32; 4]) -> [u8; 4] {
         match self {
             ColorFormat::Rgb565 => {
-                let q = |v: f32, max: f32| (v * max).round() as u8;
+                let q = |v: f32, max: f32| (v.clamp(0.0, 1.0) * max).round() as u8;
                 let (r, g, b) = (q(c[0], 31.0), q(c[1], 63.0), q(c[2], 31.0));
                 [
                     (r << 3) | (r >> 2),
@@ -504,6 +508,8 @@ pub struct Target<'a> {
     pub wide: Option<WideKind>,
     /// The band's rows of the wide colour plane (empty for 8-bit buffers).
     pub wide_color: &'a mut [[f32; 4]],
+    /// [`Framebuffer::wide_single`].
+    pub wide_single: bool,
 }
 
 impl Framebuffer {
@@ -545,6 +551,7 @@ impl Framebuffer {
             pending_rows: &mut [],
             wide: self.wide,
             wide_color: &mut self.wide_color,
+            wide_single: self.wide_single,
         }
     }
 
@@ -606,6 +613,7 @@ impl Framebuffer {
                     .as_mut()
                     .and_then(|c| c.next())
                     .unwrap_or_default(),
+                wide_single: self.wide_single,
             });
             y0 += rows;
         }

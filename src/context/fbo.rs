@@ -134,6 +134,18 @@ impl RbFormat {
     }
 }
 
+/// The wide precision a float or 16-bit texture image is rendered at (`None` for the
+/// 8-bit storages): Mesa's R16G16B16A16_UNORM / *16_FLOAT / *32_FLOAT render targets.
+pub fn texture_wide_kind(storage: &crate::texture::Storage) -> Option<WideKind> {
+    use crate::texture::Encoding;
+    match storage.encoding {
+        Encoding::Unorm16 => Some(WideKind::Unorm16),
+        Encoding::Float if storage.sizes.iter().max() == Some(&16) => Some(WideKind::Float16),
+        Encoding::Float => Some(WideKind::Float32),
+        _ => None,
+    }
+}
+
 /// A renderbuffer object. Its images are rows bottom-up, `width * height` values each.
 #[derive(Clone, Debug, Default)]
 pub struct Renderbuffer {
@@ -495,8 +507,9 @@ impl FboState {
         self.renderbuffers.get_mut(&self.renderbuffer)?.as_mut()
     }
 
-    /// The wide precision of the colour image `a` names (a wide renderbuffer), if any.
-    pub fn wide_kind(&self, a: Option<Attachment>) -> Option<WideKind> {
+    /// The wide precision of the colour image `a` names (a wide renderbuffer, or a float
+    /// or 16-bit texture image), if any.
+    pub fn wide_kind(&self, a: Option<Attachment>, textures: &TextureState) -> Option<WideKind> {
         match a? {
             Attachment::Renderbuffer(name) => {
                 match self.renderbuffers.get(&name)?.as_ref()?.format? {
@@ -504,8 +517,29 @@ impl FboState {
                     _ => None,
                 }
             }
-            _ => None,
+            Attachment::Texture(t) => texture_wide_kind(&t.find(textures)?.1.storage),
+            Attachment::None => None,
         }
+    }
+
+    /// GL_FRAMEBUFFER_ATTACHMENT_RED … ALPHA_SIZE of a wide colour image (a wide
+    /// renderbuffer or a float or 16-bit texture image) and whether its components are
+    /// floats; `None` for other images. Mesa reports the format's red, green, blue and
+    /// alpha bits: a luminance or intensity image has none of them.
+    pub fn wide_sizes(&self, a: Attachment, textures: &TextureState) -> Option<([i32; 4], bool)> {
+        let k = self.wide_kind(Some(a), textures)?;
+        let sizes = match a {
+            Attachment::Renderbuffer(name) => {
+                let s = self.renderbuffers.get(&name)?.as_ref()?.format?.sizes();
+                [s[0], s[1], s[2], s[3]]
+            }
+            Attachment::Texture(t) => {
+                let s = t.find(textures)?.1.storage.sizes;
+                [s[0], s[1], s[2], s[3]].map(i32::from)
+            }
+            Attachment::None => return None,
+        };
+        Some((sizes, k.is_float()))
     }
 
     /// The size and kind of the image `a` names; `None` when it names nothing or an image
@@ -548,9 +582,8 @@ impl FboState {
                         }
                         _ => ImageKind::Unrenderable,
                     },
-                    // float and 16-bit colour images are not rendered to (yet): the
-                    // framebuffer object is GL_FRAMEBUFFER_UNSUPPORTED
-                    _ if img.storage.has_floats() => ImageKind::Unrenderable,
+                    // float and 16-bit images (every base format, as llvmpipe renders
+                    // them all) are drawn through the wide plane: `wide_kind`
                     b => ImageKind::Color(b),
                 };
                 Some(ImageInfo {

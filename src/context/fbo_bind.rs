@@ -12,7 +12,7 @@
 
 use super::fbo::{Attachment, FboState, ImageKind, Status, SAMPLES};
 use super::{Context, GlError, GlResult};
-use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
+use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer, WideKind};
 use crate::texture::{BaseFormat, TextureState};
 
 /// The colour, depth and stencil images of an object that a working copy is made of.
@@ -49,6 +49,9 @@ enum ImageMut<'a> {
     Stencil(&'a mut [u8]),
     /// Wide renderbuffer colour ([`super::fbo::RbFormat::Wide`]).
     Wide(&'a mut [[f32; 4]]),
+    /// A float or 16-bit texture image: its float values (as sampled, after the base
+    /// swizzle), its unorm8 texels, its base format and the precision it renders at.
+    WideTexels(&'a mut [[f32; 4]], &'a mut [[u8; 4]], BaseFormat, WideKind),
 }
 
 /// Sample plane `plane` of a renderbuffer's values (`v` itself when it has no planes).
@@ -96,7 +99,12 @@ fn image_mut<'a>(
             let img = t.find_mut(textures)?;
             let (w, h) = (img.width, img.height);
             let start = t.layer * w * h;
+            let wide = super::fbo::texture_wide_kind(&img.storage);
             let texels = img.texels.get_mut(start..start + w * h)?;
+            if let (Some(k), Some(f)) = (wide, img.floats.as_mut()) {
+                let floats = f.get_mut(start..start + w * h)?;
+                return Some((ImageMut::WideTexels(floats, texels, img.base, k), w));
+            }
             let v = match img.base {
                 BaseFormat::Depth => ImageMut::DepthTexels(texels),
                 b => ImageMut::Color(texels, b),
@@ -169,20 +177,38 @@ impl Context {
         };
         let (parts, w, h) = self.parts(name)?;
         let info = |a: Option<Attachment>| a.and_then(|a| self.fbo.image_info(a, &self.textures));
-        let format = match info(parts.color).map(|i| i.kind) {
-            Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
-            _ => ColorFormat::Rgba,
-        };
+        let wide = self.fbo.wide_kind(parts.color, &self.textures);
+        let wide_tex = wide.is_some() && matches!(parts.color, Some(Attachment::Texture(_)));
+        let format =
+            match info(parts.color).map(|i| i.kind) {
+                Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
+                // a float or 16-bit red, RG or luminance image has no alpha to blend with
+                // (llvmpipe's destination alpha is 1)
+                Some(ImageKind::Color(
+                    BaseFormat::Red | BaseFormat::Rg | BaseFormat::Luminance,
+                )) if wide_tex => ColorFormat::Rgb,
+                _ => ColorFormat::Rgba,
+            };
         let depth = match info(parts.depth).map(|i| i.kind) {
             Some(ImageKind::Depth(d, _)) => d,
             _ => DepthFormat::None,
         };
         let stencil = parts.stencil.is_some();
-        let wide = self.fbo.wide_kind(parts.color);
         let seen: Vec<(Attachment, u64)> = parts
             .roles()
             .map(|(a, _)| (a, self.fbo.version(a)))
             .collect();
+        // a float or 16-bit image of one channel (llvmpipe's nr_channels == 1)
+        let single = wide_tex
+            && matches!(
+                info(parts.color).map(|i| i.kind),
+                Some(ImageKind::Color(
+                    BaseFormat::Red
+                        | BaseFormat::Alpha
+                        | BaseFormat::Luminance
+                        | BaseFormat::Intensity
+                ))
+            );
         let fits = |f: &Framebuffer| {
             (
                 f.width,
@@ -191,7 +217,8 @@ impl Context {
                 f.depth_format,
                 f.stencil.is_empty(),
                 f.wide,
-            ) == (w, h, format, depth, !stencil, wide)
+                f.wide_single,
+            ) == (w, h, format, depth, !stencil, wide, single)
         };
         let mut fb = match cached {
             Some(c) if fits(&c.fb) && c.seen == seen => return Some(c.fb),
@@ -206,6 +233,7 @@ impl Context {
                 // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
                 fb.y_flip = false;
                 fb.set_wide(wide);
+                fb.wide_single = single;
                 fb
             }
         };
@@ -490,13 +518,37 @@ impl Context {
             let stencil = if self.visual.stencil { 8 } else { 0 };
             return (self.color_bits(), self.visual.depth.bits(), stencil);
         }
+        let color = self
+            .fbo
+            .draw_object()
+            .and_then(|f| f.draw_buffer.map(|i| f.color[i]));
+        let wide = color.and_then(|a| self.fbo.wide_sizes(a, &self.textures));
         match self.fb.as_ref() {
             Some(fb) => (
-                fb.format.channel_bits(),
+                wide.map_or(fb.format.channel_bits(), |w| w.0),
                 fb.depth_format.bits(),
                 fb.stencil_bits(),
             ),
             None => ([0; 4], 0, 0),
+        }
+    }
+
+    /// GL_COLOR_CLEAR_VALUE: the clear colour as given while the draw framebuffer is an
+    /// object drawing into a float colour image, else clamped to [0, 1] (Mesa's
+    /// `_mesa_get_clamp_fragment_color` under GL_CLAMP_FRAGMENT_COLOR = FIXED_ONLY; the
+    /// OSMesa window never has a float visual).
+    pub fn clear_color_query(&self) -> [f32; 4] {
+        let c = self.state.clear_color;
+        let float = self.fbo.draw != 0
+            && self
+                .fb
+                .as_ref()
+                .and_then(|fb| fb.wide)
+                .is_some_and(|k| k.is_float());
+        if float {
+            c
+        } else {
+            c.map(|v| super::clamp01(v as f64) as f32)
         }
     }
 
@@ -588,6 +640,15 @@ impl Context {
     }
 }
 
+/// A float texel of an image rendered at precision `k` as the wide plane keeps it (a
+/// 16-bit unorm texel `u·f32(1/65535)` back to its integer `u`).
+fn texel_to_wide(k: WideKind, v: [f32; 4]) -> [f32; 4] {
+    match k {
+        WideKind::Unorm16 => v.map(|c| (c * 65535.0).round()),
+        _ => v,
+    }
+}
+
 /// Copies image `img` (rows bottom-up, `iw` wide) into the working copy `fb`. `stencil`
 /// says the attachment is the stencil attachment (a depth-stencil image fills both).
 fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
@@ -615,6 +676,15 @@ fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
                 if let Some(k) = fb.wide {
                     for x in 0..w {
                         let v = px[src + x];
+                        fb.wide_color[dst + x] = v;
+                        fb.color[dst + x] = k.mirror(v);
+                    }
+                }
+            }
+            ImageMut::WideTexels(f, _, _, k) => {
+                if fb.wide == Some(*k) {
+                    for x in 0..w {
+                        let v = texel_to_wide(*k, f[src + x]);
                         fb.wide_color[dst + x] = v;
                         fb.color[dst + x] = k.mirror(v);
                     }
@@ -657,6 +727,13 @@ fn store(fb: &Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
             ImageMut::Wide(px) if fb.wide.is_some() => {
                 for x in 0..w {
                     px[dst + x] = fb.wide_at(src + x);
+                }
+            }
+            ImageMut::WideTexels(f, t, base, k) if fb.wide == Some(*k) => {
+                for x in 0..w {
+                    let v = base.swizzle(fb.wide_at(src + x).map(|c| k.to_float(c)), 0.0, 1.0);
+                    f[dst + x] = v;
+                    t[dst + x] = crate::texture::float::to_bytes(v);
                 }
             }
             ImageMut::DepthStencil(d, s) => {

@@ -150,6 +150,15 @@ fn object_attachment_param(
             .is_some_and(|(_, img)| super::pack::depth::is_depth_stencil(img.internal_format)),
         _ => matches!(kind, Some(ImageKind::Depth(_, true))),
     };
+    // A wide image's own sizes and type (GL_FLOAT even for a luminance image, which has
+    // no red, green, blue or alpha bits).
+    if let Some((w, float)) = c.fbo.wide_sizes(a, &c.textures) {
+        return size_param(pname, [w[0], w[1], w[2], w[3], 0, 0], float).map(|v| match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if float => GL_FLOAT as GLint,
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => GL_UNSIGNED_NORMALIZED as GLint,
+            _ => v,
+        });
+    }
     let sizes = match kind {
         Some(ImageKind::Color(b)) => {
             let alpha = !matches!(

@@ -36,6 +36,9 @@ pub fn store(
         let src = [cf[0][i], cf[1][i], cf[2][i], cf[3][i]];
         let d = fb.wide_at(j);
         let mut v = match (&plan.blend, plan.logic) {
+            (Some(b), _) if k.is_float() => {
+                blend_float(k, b, plan.blend_color, src, d, fb.wide_single, plan.fma)
+            }
             (Some(b), _) => blend(k, b, plan.blend_color, src, d),
             (None, Some(op)) if k == WideKind::Unorm16 => {
                 // Bitwise operations act on each byte of the 16-bit values alike.
@@ -87,6 +90,99 @@ fn blend(k: WideKind, p: &BlendPlan, kf: [f32; 4], s: [f32; 4], d: [f32; 4]) -> 
             })
         }
     }
+}
+
+/// Blends float shader colour `s` over stored float colour `d` as llvmpipe's
+/// `lp_build_blend` does when it may fold the factors: that is when the colour and alpha
+/// factors pair up as `src_rgb == dst_rgb && src_a == dst_a`, or always for an image of
+/// one channel (`single`; `lp_build_blend_aos` sets `rgb_alpha_same` for
+/// `nr_channels == 1`). Then equal factors give `(s ∘ d)·f`, and complementary ones
+/// (f and 1 − f, or ONE and ZERO) a lerp: ADD is `fmuladd(f, s − d, d)` with `f` the
+/// positive factor (fused on FMA hosts, `fma`), SUBTRACT `(s + d)·f − d` or
+/// `s − (s + d)·f'`, REVERSE_SUBTRACT the mirror. Otherwise as [`blend`].
+#[inline]
+fn blend_float(
+    k: WideKind,
+    p: &BlendPlan,
+    kf: [f32; 4],
+    s: [f32; 4],
+    d: [f32; 4],
+    single: bool,
+    fma: bool,
+) -> [f32; 4] {
+    let same = single || (p.src_rgb == p.dst_rgb && p.src_a == p.dst_a);
+    if !same {
+        return blend(k, p, kf, s, d);
+    }
+    let f = |f, ch| factor_f(f, s, d, kf, ch);
+    std::array::from_fn(|ch| {
+        let (eq, sfe, dfe) = if ch < 3 {
+            (p.eq_rgb, p.src_rgb, p.dst_rgb)
+        } else {
+            (p.eq_a, p.src_a, p.dst_a)
+        };
+        let (sc, dc) = (s[ch], d[ch]);
+        let (sf, df) = (f(sfe, ch), f(dfe, ch));
+        let lerp = |w: f32, a: f32, b: f32| {
+            if fma {
+                w.mul_add(b - a, a)
+            } else {
+                w * (b - a) + a
+            }
+        };
+        let v = match (complement(sfe) == Some(dfe), eq) {
+            (true, BlendEquation::Add) if positive(sfe) => lerp(sf, dc, sc),
+            (true, BlendEquation::Add) => lerp(df, sc, dc),
+            (true, BlendEquation::Subtract) if positive(sfe) => (sc + dc) * sf - dc,
+            (true, BlendEquation::Subtract) => sc - (sc + dc) * df,
+            (true, BlendEquation::ReverseSubtract) if positive(sfe) => dc - (sc + dc) * sf,
+            (true, BlendEquation::ReverseSubtract) => (sc + dc) * df - sc,
+            (false, BlendEquation::Add) if sfe == dfe => (sc + dc) * sf,
+            (false, BlendEquation::Subtract) if sfe == dfe => (sc - dc) * sf,
+            (false, BlendEquation::ReverseSubtract) if sfe == dfe => (dc - sc) * sf,
+            _ => equation_f(eq, sc, sf, dc, df),
+        };
+        k.from_shader(v)
+    })
+}
+
+/// The factor gallium numbers `f ^ 0x10` (1 − f; ONE and ZERO pair up too).
+fn complement(f: BlendFactor) -> Option<BlendFactor> {
+    use BlendFactor as F;
+    Some(match f {
+        F::Zero => F::One,
+        F::One => F::Zero,
+        F::SrcColor => F::OneMinusSrcColor,
+        F::OneMinusSrcColor => F::SrcColor,
+        F::DstColor => F::OneMinusDstColor,
+        F::OneMinusDstColor => F::DstColor,
+        F::SrcAlpha => F::OneMinusSrcAlpha,
+        F::OneMinusSrcAlpha => F::SrcAlpha,
+        F::DstAlpha => F::OneMinusDstAlpha,
+        F::OneMinusDstAlpha => F::DstAlpha,
+        F::ConstantColor => F::OneMinusConstantColor,
+        F::OneMinusConstantColor => F::ConstantColor,
+        F::ConstantAlpha => F::OneMinusConstantAlpha,
+        F::OneMinusConstantAlpha => F::ConstantAlpha,
+        F::SrcAlphaSaturate => return None,
+    })
+}
+
+/// Whether gallium numbers `f` below its complement (ONE, and the factors that are not
+/// "one minus"): the lerp then weighs by the source factor.
+fn positive(f: BlendFactor) -> bool {
+    use BlendFactor as F;
+    matches!(
+        f,
+        F::One
+            | F::SrcColor
+            | F::DstColor
+            | F::SrcAlpha
+            | F::DstAlpha
+            | F::ConstantColor
+            | F::ConstantAlpha
+            | F::SrcAlphaSaturate
+    )
 }
 
 /// Blends each channel: `factor(f, ch)` gives a factor's value in channel `ch`, and

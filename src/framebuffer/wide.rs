@@ -61,12 +61,13 @@ impl WideKind {
     }
 
     /// A glClear value as gallium's fast clear packs it (`util_pack_color_union`):
-    /// unorm16 is `round_half_even(clamp(c)·65535)`, floats are stored as they are.
+    /// unorm16 is `util_iround(clamp(c)·65535)`, which on x86-64 is `(int)(t + 0.5f)` in
+    /// f32 (ties round up: 0.3 → 19661), floats are stored as they are.
     pub fn from_clear(self, c: f32) -> f32 {
         match self {
             WideKind::Unorm16 => {
                 let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
-                (c * 65535.0).round_ties_even()
+                (c * 65535.0 + 0.5).trunc()
             }
             WideKind::Float16 => f16_round(c),
             WideKind::Float32 => c,

@@ -209,6 +209,22 @@ impl Level {
     }
 }
 
+impl super::BaseFormat {
+    /// [`super::BaseFormat::read_rebase`] of a wide pixel, whose 1 is `one`: what
+    /// glReadPixels takes from a float or 16-bit image of this base format.
+    pub fn read_rebase_wide(self, v: [f32; 4], one: f32) -> [f32; 4] {
+        use super::BaseFormat as B;
+        match self {
+            B::Luminance | B::Intensity | B::Red => [v[0], 0.0, 0.0, one],
+            B::LuminanceAlpha => [v[0], 0.0, 0.0, v[3]],
+            B::Alpha => [0.0, 0.0, 0.0, v[3]],
+            B::Rgb => [v[0], v[1], v[2], one],
+            B::Rg => [v[0], v[1], 0.0, one],
+            B::Rgba | B::Depth => v,
+        }
+    }
+}
+
 /// The next smaller level of a float image, as `util_gen_mipmap`'s blit makes it on
 /// llvmpipe: the float (SoA) bilinear sample of the source at each destination texel's
 /// centre, `u = (x + 0.5)·src/dst − 0.5` clamped to the edge, lerps `fmuladd(w, b − a, a)`

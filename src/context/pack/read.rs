@@ -109,7 +109,9 @@ pub unsafe fn read_pixels(
     // The colour as floats: a wide buffer's at its own precision, else unorm8 to float
     // as Mesa's unpack does (u · f32(1/255)).
     let float_at = |idx: usize| match fb.wide {
-        Some(k) => fb.wide_at(idx).map(|v| k.to_float(v)),
+        Some(k) => base
+            .read_rebase_wide(fb.wide_at(idx), k.one())
+            .map(|v| k.to_float(v)),
         None => color_at(idx).map(|u| u as f32 * (1.0f32 / 255.0)),
     };
     let put = |p: *mut u8, v: f64, norm: bool| {
@@ -193,7 +195,7 @@ pub unsafe fn read_pixels(
                 }
                 // SAFETY: `p` addresses this pixel's `n * tsize` bytes of the packed image.
                 ReadKind::Color(map, n) if fb.wide.is_some() => unsafe {
-                    super::wide::read_wide_pixel(fb, idx, map, n, ty, p, tsize, put)
+                    super::wide::read_wide_pixel(fb, idx, base, map, n, ty, p, tsize, put)
                 },
                 ReadKind::Color(map, n) => {
                     let px = color_at(idx);

@@ -74,6 +74,20 @@ fn float_base_format(internal: u32) -> Option<BaseFormat> {
 fn float_storage(internal: u32, base: BaseFormat) -> Option<Storage> {
     let (bits, encoding) = match internal {
         GL_R16 | GL_RG16 => (16, Encoding::Unorm16),
+        // R16G16B16(A16)_UNORM and the 16-bit legacy formats (12-bit ones get 16 bits in
+        // Mesa too): kept and rendered at 16 bits
+        GL_RGBA16
+        | GL_RGB16
+        | GL_RGBA12
+        | GL_RGB12
+        | GL_ALPHA16
+        | GL_ALPHA12
+        | GL_LUMINANCE16
+        | GL_LUMINANCE12
+        | GL_LUMINANCE16_ALPHA16
+        | GL_LUMINANCE12_ALPHA12
+        | GL_INTENSITY16
+        | GL_INTENSITY12 => (16, Encoding::Unorm16),
         GL_R16F
         | GL_RG16F
         | GL_RGBA16F

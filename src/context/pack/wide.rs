@@ -8,7 +8,7 @@
 use crate::framebuffer::{float_to_ubyte, Framebuffer};
 use crate::gl::enums::*;
 
-/// Writes pixel `idx` of wide buffer `fb` at `p`: `n` components of `tsize` bytes, channel
+/// Writes pixel `idx` of wide buffer `fb`, an image of base format `base`, at `p`: `n` components of `tsize` bytes, channel
 /// `map[k]` in component `k` (`usize::MAX` for luminance, R + G + B); `put` writes a value
 /// of the read type (normalised when asked).
 ///
@@ -18,6 +18,7 @@ use crate::gl::enums::*;
 pub unsafe fn read_wide_pixel(
     fb: &Framebuffer,
     idx: usize,
+    base: crate::texture::BaseFormat,
     map: [usize; 4],
     n: usize,
     ty: u32,
@@ -26,7 +27,7 @@ pub unsafe fn read_wide_pixel(
     put: impl Fn(*mut u8, f64, bool),
 ) {
     let Some(kind) = fb.wide else { return };
-    let raw = fb.wide_at(idx);
+    let raw = base.read_rebase_wide(fb.wide_at(idx), kind.one());
     // The window (rows y-down) is fixed-point to Mesa's read clamp; objects are not.
     let clamp = !kind.is_float() || fb.y_flip;
     let rgba = raw.map(|v| {
