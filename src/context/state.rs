@@ -256,7 +256,8 @@ impl Default for Hints {
 pub struct State {
     /// glEnable bits.
     pub caps: Caps,
-    /// glClearColor (clamped to [0,1] as GL 1.5 requires).
+    /// glClearColor, as given (ARB_color_buffer_float: float colour buffers clear to it
+    /// unclamped; fixed-point ones clamp when packing, and glGet clamps for them).
     pub clear_color: [f32; 4],
     /// glClearDepth (clamped to [0,1]).
     pub clear_depth: f64,
