@@ -681,13 +681,11 @@ fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
                     }
                 }
             }
-            ImageMut::WideTexels(f, _, _, k) => {
-                if fb.wide == Some(*k) {
-                    for x in 0..w {
-                        let v = texel_to_wide(*k, f[src + x]);
-                        fb.wide_color[dst + x] = v;
-                        fb.color[dst + x] = k.mirror(v);
-                    }
+            ImageMut::WideTexels(f, _, _, k) if fb.wide == Some(*k) => {
+                for x in 0..w {
+                    let v = texel_to_wide(*k, f[src + x]);
+                    fb.wide_color[dst + x] = v;
+                    fb.color[dst + x] = k.mirror(v);
                 }
             }
             ImageMut::DepthStencil(d, s) => {
