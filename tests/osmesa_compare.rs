@@ -350,6 +350,7 @@ const SCENES: &[&str] = &[
     "fbo_share",
     "wide_buffers",
     "fbo_float_color",
+    "fbo_srgb",
 ];
 
 macro_rules! scene_tests {
@@ -496,6 +497,7 @@ scene_tests!(
     fbo_share,
     wide_buffers,
     fbo_float_color,
+    fbo_srgb,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.
