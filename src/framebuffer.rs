@@ -11,6 +11,7 @@
 
 use crate::memory::HugeBuf;
 
+pub mod srgb;
 mod user;
 pub mod wide;
 
@@ -195,6 +196,10 @@ pub struct Framebuffer {
     /// The wide colour plane (empty for 8-bit buffers), row-major like `color`, which
     /// then holds its 8-bit mirror ([`wide`]).
     pub wide_color: Vec<[f32; 4]>,
+    /// Whether the colour buffer is sRGB-encoded (an sRGB attachment; [`srgb`]). Its bytes
+    /// are stored like RGBA8 ones; whether a draw encodes is the plan's choice
+    /// (`FragPlan::srgb`).
+    pub srgb: bool,
 }
 
 impl Framebuffer {
@@ -240,6 +245,7 @@ impl Framebuffer {
             y_flip: true,
             wide: None,
             wide_color: Vec::new(),
+            srgb: false,
         }
     }
 
