@@ -113,6 +113,8 @@ pub struct Job {
     pub linear: bool,
     /// Whether llvmpipe's multiply-adds fuse on this CPU level.
     pub fma: bool,
+    /// The sides that are sRGB surfaces (GL_FRAMEBUFFER_SRGB on; [`super::blit_srgb`]).
+    pub srgb: super::blit_srgb::SrgbSides,
 }
 
 impl Job {
@@ -126,12 +128,19 @@ impl Job {
         let whole = sc == [bx as i64, by as i64, (bx + bw) as i64, (by + bh) as i64];
         let exact_depth = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
         let bits = s.depth_format.texel_bits();
+        let unscaled = bw == sw.abs() && bh == sh.abs();
+        let convert = self.srgb.converts(unscaled);
+        let fma = self.fma;
         let write =
             |d: &mut Framebuffer, px: i64, py: i64, c: Option<[u8; 4]>, t: (usize, usize)| {
                 let di = py as usize * d.width + px as usize;
                 let si = t.1 * s.width + t.0;
                 if mask.color {
-                    let c = c.unwrap_or(s.color[si]);
+                    let c = match c {
+                        Some(c) => c,
+                        None if convert => self.srgb.texel(s.color[si], fma),
+                        None => s.color[si],
+                    };
                     d.color[di] = d.store_rgba8(c);
                 }
                 if mask.depth {
@@ -148,7 +157,7 @@ impl Job {
                 }
             };
         let inside = |px: i64, py: i64| px >= sc[0] && px < sc[2] && py >= sc[1] && py < sc[3];
-        if bw == sw.abs() && bh == sh.abs() {
+        if unscaled {
             // Texel for texel (llvmpipe's copy or TXF path).
             for j in 0..bh as i64 {
                 for i in 0..bw as i64 {
@@ -214,7 +223,14 @@ impl Job {
                 st::<Unfused>(tri, px, py)
             };
             let nearest = (texel(u * nx, s.width), texel(t * ny, s.height));
-            let c = self.linear.then(|| bilinear(s, u * nx, t * ny));
+            let c = match (self.linear, convert) {
+                (true, true) => {
+                    let eight_bit = || bilinear(s, u * nx, t * ny);
+                    Some(self.srgb.bilinear(s, (u * nx, t * ny), fma, eight_bit))
+                }
+                (true, false) => Some(bilinear(s, u * nx, t * ny)),
+                _ => None,
+            };
             write(d, px, py, c, nearest);
         });
     }

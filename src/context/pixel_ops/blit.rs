@@ -110,6 +110,10 @@ pub fn blit(
         normalized: !sfb.y_flip,
         linear: linear && (bw != swid.abs() || bh != shgt.abs()),
         fma: crate::geometry::cpu_has_fma(),
+        srgb: crate::pixels::blit_srgb::SrgbSides {
+            src: crate::plan::srgb_store(&ctx.state.caps, sfb.srgb),
+            dst: crate::plan::srgb_store(&ctx.state.caps, dfb.srgb),
+        },
     };
     // Into a multisample object: sample for sample from a multisample source, else every
     // sample gets the source's value.
