@@ -301,6 +301,51 @@ static void blits(FILE *out, GLuint fsrgb, GLuint flin, GLuint fsrgb2)
     }
 }
 
+/* A 4x SRGB8_ALPHA8 renderbuffer drawn with the enable on (per-sample encode and
+ * blending), resolved into the sRGB and the RGBA8 renderbuffers with the enable on and
+ * off (the resolve decodes, averages and encodes only while the enable is on). */
+static void msaa(FILE *out, GLuint fsrgb, GLuint flin)
+{
+    static unsigned char img[W * H * 4];
+    static const struct {
+        const char *name;
+        int to_srgb, on;
+    } cases[] = {{"resolve_srgb_on", 1, 1}, {"resolve_srgb_off", 1, 0},
+                 {"resolve_lin_on", 0, 1}, {"resolve_lin_off", 0, 0}};
+    GLuint fb, rb;
+    unsigned i;
+    glGenFramebuffers(1, &fb);
+    glGenRenderbuffers(1, &rb);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_SRGB8_ALPHA8, W, H);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glViewport(0, 0, W, H);
+    glClearColor(0.5f, 0.2f, 0.8f, 0.6f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    scene();
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        GLuint dst = cases[i].to_srgb ? fsrgb : flin;
+        glDisable(GL_FRAMEBUFFER_SRGB);
+        glBindFramebuffer(GL_FRAMEBUFFER, dst);
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (cases[i].on)
+            glEnable(GL_FRAMEBUFFER_SRGB);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fb);
+        glBlitFramebuffer(0, 0, W, H, 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glDisable(GL_FRAMEBUFFER_SRGB);
+        glBindFramebuffer(GL_FRAMEBUFFER, dst);
+        glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        sgl_image(out, cases[i].name, W, H, 4, "RGBA", W * 4, 1, img);
+        sgl_text(out, "err", "%s err=0x%x\n", cases[i].name, glGetError());
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fb);
+    glDeleteRenderbuffers(1, &rb);
+}
+
 /* glCopyTexImage2D from the sRGB attachment into RGBA8 and SRGB8_ALPHA8 textures, with
  * the enable on; the copies read back with glGetTexImage. */
 static void copytex(FILE *out, GLuint fsrgb)
@@ -369,6 +414,7 @@ int main(int argc, char **argv)
     fsrgb2 = make_fbo(GL_SRGB8_ALPHA8, 0, &rsrgb2);
     blits(out, fsrgb, flin, fsrgb2);
     copytex(out, fsrgb);
+    msaa(out, fsrgb, flin);
 
     /* the window after all that: drawn with the enable on */
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

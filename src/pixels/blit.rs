@@ -25,6 +25,7 @@
 //! Not followed yet: a destination rectangle that leaves the draw buffer, whose quad
 //! llvmpipe clips geometrically first (its ties can fall the other way).
 
+use super::blit_srgb::SrgbSides;
 use crate::fragment::span::{eval, Fused, Madd, Unfused};
 use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::SetupTriangle;
@@ -82,8 +83,12 @@ pub fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32
 /// The single-sample image a multisample resolve reads: per pixel and channel llvmpipe's
 /// resolve shader (`util_make_fs_msaa_resolve`): `sum = 0; sum += s_i` in sample order
 /// in f32, each sample `u · f32(1/255)`, then `round_half_even(sum · 0.25 · 255)`. Depth
-/// and stencil are sample 0's.
-pub fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
+/// and stencil are sample 0's. With sRGB `sides` the samples are decoded and the average
+/// stored as the destination stores it ([`super::blit_srgb`]).
+pub fn resolve_samples(planes: &[Framebuffer], sides: SrgbSides, fma: bool) -> Framebuffer {
+    if sides != SrgbSides::default() {
+        return sides.resolve(planes, fma);
+    }
     let mut out = planes[0].clone();
     let scale = 1.0f32 / 255.0;
     for (i, px) in out.color.iter_mut().enumerate() {

@@ -87,4 +87,22 @@ impl SrgbSides {
         let bot = lerp(wx, at(x0, y1), at(x1, y1));
         self.store(lerp(wy, top, bot), fma)
     }
+
+    /// The multisample resolve (`util_make_fs_msaa_resolve`) of `planes` into the
+    /// destination's stored form: the four samples as the shader sees them, summed in
+    /// sample order in f32, times 0.25.
+    pub fn resolve(self, planes: &[Framebuffer], fma: bool) -> Framebuffer {
+        let mut out = planes[0].clone();
+        for (i, px) in out.color.iter_mut().enumerate() {
+            let mut sum = [0.0f32; 4];
+            for p in planes {
+                let s = self.to_float(p.color[i], fma);
+                for (a, v) in sum.iter_mut().zip(s) {
+                    *a += v;
+                }
+            }
+            *px = self.store(sum.map(|v| v * 0.25), fma);
+        }
+        out
+    }
 }
