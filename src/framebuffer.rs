@@ -11,6 +11,7 @@
 
 use crate::memory::HugeBuf;
 
+pub mod srgb;
 mod user;
 pub mod wide;
 
@@ -198,6 +199,10 @@ pub struct Framebuffer {
     /// The wide buffer is an image of one channel (red, alpha, luminance or intensity),
     /// which llvmpipe blends with its single-channel rules (`crate::fragment::wide`).
     pub wide_single: bool,
+    /// Whether the colour buffer is sRGB-encoded (an sRGB attachment; [`srgb`]). Its bytes
+    /// are stored like RGBA8 ones; whether a draw encodes is the plan's choice
+    /// (`FragPlan::srgb`).
+    pub srgb: bool,
 }
 
 impl Framebuffer {
@@ -244,6 +249,7 @@ impl Framebuffer {
             wide: None,
             wide_color: Vec::new(),
             wide_single: false,
+            srgb: false,
         }
     }
 

@@ -351,6 +351,7 @@ const SCENES: &[&str] = &[
     "wide_buffers",
     "fbo_float_color",
     "fbo_float_tex",
+    "fbo_srgb",
 ];
 
 macro_rules! scene_tests {
@@ -498,6 +499,7 @@ scene_tests!(
     wide_buffers,
     fbo_float_color,
     fbo_float_tex,
+    fbo_srgb,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -30,7 +30,8 @@ GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample
 GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB
 GL_EXT_texture_compression_s3tc GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc
 GL_EXT_texture_compression_latc GL_ATI_texture_compression_3dc
-GL_ARB_texture_float GL_ARB_half_float_pixel GL_ARB_texture_rg""".split()
+GL_ARB_texture_float GL_ARB_half_float_pixel GL_ARB_texture_rg
+GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB""".split()
 
 # Tokens of an extension that glext.h lists under the GL version that took it into core
 # (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
@@ -45,6 +46,8 @@ GL_COMPRESSED_RG_RGTC2 GL_COMPRESSED_SIGNED_RG_RGTC2""".split(),
     "GL_ARB_half_float_pixel": ["GL_HALF_FLOAT"],
     "GL_ARB_texture_rg": """GL_RG GL_RG_INTEGER GL_R8 GL_R16 GL_RG8 GL_RG16 GL_R16F GL_R32F
 GL_RG16F GL_RG32F""".split(),
+    # GL 3.0's name of the enable (the core section lists it)
+    "GL_ARB_framebuffer_sRGB": ["GL_FRAMEBUFFER_SRGB"],
 }
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports

@@ -91,6 +91,8 @@ fn cap_group(cap: Cap) -> u32 {
     let within = |first: Cap, last: Cap| (first as usize..=last as usize).contains(&(cap as usize));
     match cap {
         AlphaTest | Blend | Dither | ColorLogicOp | IndexLogicOp => GL_COLOR_BUFFER_BIT,
+        // Mesa saves GL_FRAMEBUFFER_SRGB with the colour-buffer group too (measured)
+        FramebufferSrgb => GL_COLOR_BUFFER_BIT,
         _ if within(Map1Color4, Map2Vertex4) => GL_EVAL_BIT,
         AutoNormal => GL_EVAL_BIT,
         Lighting | ColorMaterial => GL_LIGHTING_BIT,

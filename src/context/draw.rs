@@ -179,6 +179,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
         y_flip: fb.y_flip,
         depth_format: fb.depth_format,
         has_stencil: !fb.stencil.is_empty(),
+        srgb: fb.srgb,
     };
     let region = ctx.draw_region();
     let st = &ctx.state;

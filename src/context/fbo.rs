@@ -58,6 +58,9 @@ pub enum RbFormat {
     /// Colour wider than 8 bits (GL_RGBA16, GL_RGBA16F, GL_RGBA32F; with `false` the RGB
     /// forms, whose alpha reads as 1), drawn through the wide colour plane.
     Wide(WideKind, bool),
+    /// 8-bit sRGB colour (GL_SRGB8_ALPHA8; with `false` GL_SRGB8, whose alpha reads as 1):
+    /// stored like RGBA8 / RGB8, encoded on write while GL_FRAMEBUFFER_SRGB is on.
+    Srgb(bool),
 }
 
 /// GL_RGBA32F (ARB_texture_float; not in the generated enums).
@@ -88,6 +91,10 @@ impl RbFormat {
             RGB16F => RbFormat::Wide(WideKind::Float16, false),
             RGBA32F => RbFormat::Wide(WideKind::Float32, true),
             RGB32F => RbFormat::Wide(WideKind::Float32, false),
+            // the sized sRGB formats only: GL_SRGB, GL_SRGB_ALPHA and the sluminance ones
+            // are GL_INVALID_ENUM in Mesa (measured)
+            GL_SRGB8_ALPHA8 => RbFormat::Srgb(true),
+            GL_SRGB8 => RbFormat::Srgb(false),
             GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => {
                 RbFormat::Legacy(BaseFormat::Alpha)
             }
@@ -130,6 +137,7 @@ impl RbFormat {
                 let b = k.bits();
                 [b, b, b, if alpha { b } else { 0 }, 0, 0]
             }
+            RbFormat::Srgb(alpha) => [8, 8, 8, if alpha { 8 } else { 0 }, 0, 0],
         }
     }
 }
@@ -186,7 +194,7 @@ impl Renderbuffer {
         let mut wide = Vec::new();
         let oom = |_| GlError::OutOfMemory;
         match format {
-            RbFormat::Rgba8 | RbFormat::Rgb8 | RbFormat::Legacy(_) => {
+            RbFormat::Rgba8 | RbFormat::Rgb8 | RbFormat::Legacy(_) | RbFormat::Srgb(_) => {
                 color.try_reserve_exact(n).map_err(oom)?
             }
             RbFormat::Depth(_) => depth.try_reserve_exact(n).map_err(oom)?,
@@ -200,7 +208,8 @@ impl Renderbuffer {
         if let RbFormat::Wide(k, alpha) = format {
             wide.resize(n, [0.0, 0.0, 0.0, if alpha { 0.0 } else { k.one() }]);
         }
-        let a = if format == RbFormat::Rgb8 { 255 } else { 0 };
+        let no_alpha = matches!(format, RbFormat::Rgb8 | RbFormat::Srgb(false));
+        let a = if no_alpha { 255 } else { 0 };
         color.resize(color.capacity().min(n), [0, 0, 0, a]);
         depth.resize(depth.capacity().min(n), 0);
         stencil.resize(stencil.capacity().min(n), 0);
@@ -542,6 +551,35 @@ impl FboState {
         Some((sizes, k.is_float()))
     }
 
+    /// Whether the image `a` names is sRGB-encoded (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
+    /// is GL_SRGB): an sRGB renderbuffer or an sRGB texture image.
+    pub fn is_srgb(&self, a: Attachment, textures: &TextureState) -> bool {
+        use crate::texture::Encoding;
+        match a {
+            Attachment::None => false,
+            Attachment::Renderbuffer(name) => self
+                .renderbuffers
+                .get(&name)
+                .and_then(|r| r.as_ref()?.format)
+                .is_some_and(|f| matches!(f, RbFormat::Srgb(_))),
+            Attachment::Texture(t) => t.find(textures).is_some_and(|(_, img)| {
+                matches!(img.storage.encoding, Encoding::Srgb | Encoding::SrgbBlocks)
+            }),
+        }
+    }
+
+    /// GL_FRAMEBUFFER_SRGB_CAPABLE_EXT of object `name` (0 is the window, linear): Mesa's
+    /// framebuffer visual takes it from the first colour attachment, and only a complete
+    /// object has a visual.
+    pub fn srgb_capable(&self, name: u32, textures: &TextureState) -> bool {
+        let Some(f) = self.object(name) else {
+            return false;
+        };
+        let first = f.color.iter().find(|&&a| a != Attachment::None);
+        self.status(name, textures) == Status::Complete
+            && first.is_some_and(|&a| self.is_srgb(a, textures))
+    }
+
     /// The size and kind of the image `a` names; `None` when it names nothing or an image
     /// that does not exist (yet).
     pub fn image_info(&self, a: Attachment, textures: &TextureState) -> Option<ImageInfo> {
@@ -558,6 +596,8 @@ impl FboState {
                     RbFormat::Stencil8 => ImageKind::Stencil,
                     RbFormat::Wide(_, true) => ImageKind::Color(BaseFormat::Rgba),
                     RbFormat::Wide(_, false) => ImageKind::Color(BaseFormat::Rgb),
+                    RbFormat::Srgb(true) => ImageKind::Color(BaseFormat::Rgba),
+                    RbFormat::Srgb(false) => ImageKind::Color(BaseFormat::Rgb),
                 };
                 Some(ImageInfo {
                     width: rb.width,
@@ -583,7 +623,14 @@ impl FboState {
                         _ => ImageKind::Unrenderable,
                     },
                     // float and 16-bit images (every base format, as llvmpipe renders
-                    // them all) are drawn through the wide plane: `wide_kind`
+                    // them all) are drawn through the wide plane: `wide_kind`.
+                    // sRGB luminance is not a render target format in llvmpipe:
+                    // GL_FRAMEBUFFER_UNSUPPORTED (measured)
+                    BaseFormat::Luminance | BaseFormat::LuminanceAlpha
+                        if img.storage.encoding == crate::texture::Encoding::Srgb =>
+                    {
+                        ImageKind::Unrenderable
+                    }
                     b => ImageKind::Color(b),
                 };
                 Some(ImageInfo {

@@ -78,7 +78,9 @@ fn image_mut<'a>(
             let (w, n, ns) = (rb.width, rb.width * rb.height, rb.samples);
             let img = if !rb.color.is_empty() {
                 let base = match rb.format {
-                    Some(super::fbo::RbFormat::Rgb8) => BaseFormat::Rgb,
+                    Some(super::fbo::RbFormat::Rgb8 | super::fbo::RbFormat::Srgb(false)) => {
+                        BaseFormat::Rgb
+                    }
                     Some(super::fbo::RbFormat::Legacy(b)) => b,
                     _ => BaseFormat::Rgba,
                 };
@@ -194,6 +196,9 @@ impl Context {
             _ => DepthFormat::None,
         };
         let stencil = parts.stencil.is_some();
+        let srgb = parts
+            .color
+            .is_some_and(|a| self.fbo.is_srgb(a, &self.textures));
         let seen: Vec<(Attachment, u64)> = parts
             .roles()
             .map(|(a, _)| (a, self.fbo.version(a)))
@@ -218,7 +223,8 @@ impl Context {
                 f.stencil.is_empty(),
                 f.wide,
                 f.wide_single,
-            ) == (w, h, format, depth, !stencil, wide, single)
+                f.srgb,
+            ) == (w, h, format, depth, !stencil, wide, single, srgb)
         };
         let mut fb = match cached {
             Some(c) if fits(&c.fb) && c.seen == seen => return Some(c.fb),
@@ -234,6 +240,7 @@ impl Context {
                 fb.y_flip = false;
                 fb.set_wide(wide);
                 fb.wide_single = single;
+                fb.srgb = srgb;
                 fb
             }
         };
@@ -331,16 +338,28 @@ impl Context {
     /// writes the working copy back now, and marks it to be assembled anew when the GL
     /// call ends ([`Context::fbo_refresh`]), so that the change is seen either way.
     pub fn fbo_touch(&mut self, texture: u32) {
-        let attached = self.fbo.draw_object().is_some_and(|f| {
+        if self.draws_into(texture) && !self.fbo.stale {
+            self.fbo_sync();
+            self.fbo.stale_seen = self.held_versions();
+            self.fbo.stale = true;
+        }
+    }
+
+    /// Whether texture `texture` is attached to the object bound for drawing.
+    fn draws_into(&self, texture: u32) -> bool {
+        self.fbo.draw_object().is_some_and(|f| {
             f.color
                 .iter()
                 .chain([&f.depth, &f.stencil])
                 .any(|a| matches!(*a, Attachment::Texture(t) if t.name == texture && t.name != 0))
-        });
-        if attached && !self.fbo.stale {
+        })
+    }
+
+    /// Called before texture `texture`'s images are read directly (glGetTexImage): when
+    /// it is attached to the object bound for drawing, writes the drawing into it.
+    pub fn fbo_sync_texture(&mut self, texture: u32) {
+        if self.draws_into(texture) {
             self.fbo_sync();
-            self.fbo.stale_seen = self.held_versions();
-            self.fbo.stale = true;
         }
     }
 

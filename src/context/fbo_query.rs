@@ -178,8 +178,10 @@ fn object_attachment_param(
         Some(ImageKind::Depth(_, _)) => float && attachment == GL_STENCIL_ATTACHMENT,
         _ => false,
     };
+    let srgb = c.fbo.is_srgb(a, &c.textures);
     size_param(pname, sizes, float).map(|v| match pname {
         GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if index => GL_INDEX as GLint,
+        GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING if srgb => GL_SRGB as GLint,
         GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if matches!(kind, Some(ImageKind::Depth(..))) => {
             if float {
                 GL_FLOAT as GLint

@@ -118,6 +118,7 @@ fn framebuffer_get(c: &Context, pname: u32) -> Option<Value> {
         GL_MAX_RENDERBUFFER_SIZE => i(&[MAX_RENDERBUFFER_SIZE as i64]),
         GL_MAX_COLOR_ATTACHMENTS => i(&[MAX_COLOR_ATTACHMENTS as i64]),
         GL_MAX_SAMPLES => i(&[MAX_SAMPLES as i64]),
+        GL_FRAMEBUFFER_SRGB_CAPABLE_EXT => i(&[c.fbo.srgb_capable(c.fbo.draw, &c.textures) as i64]),
         GL_DRAW_BUFFER => attachment(c.fbo.object(c.fbo.draw)?.draw_buffer),
         GL_READ_BUFFER => attachment(c.fbo.object(c.fbo.read)?.read_buffer),
         _ => return None,

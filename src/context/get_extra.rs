@@ -26,6 +26,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_SGIS_texture_lod GL_ARB_texture_compression GL_EXT_texture_compression_s3tc ",
     "GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc ",
     "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB ",
+    "GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB ",
     "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg\0"
 );
 

@@ -619,13 +619,21 @@ impl Context {
         // Mesa clears with pipe->clear only for full-buffer, full-mask clears; otherwise it
         // draws a quad, whose colour and depth go through the shader's conversions.
         let color_mask = st.color_write_mask();
+        // an sRGB buffer with GL_FRAMEBUFFER_SRGB on encodes the clear colour
+        let srgb = crate::plan::srgb_store(&st.caps, fb.srgb);
         let quad_path = region != [0, 0, fb.width as i64, fb.height as i64]
             || color_mask != [true; 4]
             || (st.frag.stencil_front.writemask & 0xFF) != 0xFF;
         if !quad_path {
             // The whole colour and depth buffers: recorded, written later by whatever
             // reads or draws them (`Framebuffer::defer_clear`).
-            let color = (mask & GL_COLOR_BUFFER_BIT != 0).then(|| fb.clear_value(st.clear_color));
+            let color = (mask & GL_COLOR_BUFFER_BIT != 0).then(|| {
+                if srgb {
+                    crate::framebuffer::srgb::clear_value(st.clear_color)
+                } else {
+                    fb.clear_value(st.clear_color)
+                }
+            });
             let depth = (mask & GL_DEPTH_BUFFER_BIT != 0 && st.depth_mask)
                 .then(|| fb.depth_format.quantize_clear(st.clear_depth));
             fb.defer_clear(color, depth);
@@ -633,7 +641,10 @@ impl Context {
             fb.resolve();
         }
         if quad_path && mask & GL_COLOR_BUFFER_BIT != 0 && color_mask.iter().any(|&m| m) {
-            let v = if quad_path {
+            let v = if srgb {
+                let fma = crate::geometry::cpu_has_fma();
+                fb.store_rgba8(crate::framebuffer::srgb::shader_value(st.clear_color, fma))
+            } else if quad_path {
                 fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte))
             } else {
                 fb.clear_value(st.clear_color)

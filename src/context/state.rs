@@ -102,6 +102,10 @@ pub const CAPS: &[(Cap, GLenum)] = &[
     (Cap::DepthTest, GL_DEPTH_TEST),
     (Cap::Dither, GL_DITHER),
     (Cap::Fog, GL_FOG),
+    (
+        Cap::FramebufferSrgb,
+        crate::gl::glext_enums::GL_FRAMEBUFFER_SRGB,
+    ),
     (Cap::Lighting, GL_LIGHTING),
     (Cap::LineSmooth, GL_LINE_SMOOTH),
     (Cap::LineStipple, GL_LINE_STIPPLE),

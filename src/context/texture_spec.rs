@@ -481,7 +481,7 @@ impl Context {
     /// # Safety
     /// `pixels` must be writable for the packed image of the level.
     pub(crate) unsafe fn get_tex_image(
-        &self,
+        &mut self,
         target: GLenum,
         level: GLint,
         (format, type_): (GLenum, GLenum),
@@ -494,6 +494,9 @@ impl Context {
         let level = check_level(level)?;
         let cf = ClientFormat::new(format, type_)?;
         let ps = self.state.pack;
+        // The image may be attached to the framebuffer object being drawn.
+        let name = self.textures.units[self.state.active_texture].bound[t.index()];
+        self.fbo_sync_texture(name);
         let obj = self.tex_object(t, false);
         let Some(Some(img)) = obj.face_levels(face).get(level) else {
             return Ok(());

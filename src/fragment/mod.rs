@@ -14,6 +14,7 @@ pub mod blend;
 pub mod simd;
 pub mod simd_tex;
 pub mod span;
+pub mod srgb;
 pub mod wide;
 
 use crate::framebuffer::DepthFormat;
@@ -50,6 +51,9 @@ pub struct FragPlan {
     pub ms: Option<MsPass>,
     /// glBlendColor as floats, for blending into wide buffers ([`wide`]).
     pub blend_color: [f32; 4],
+    /// The colour buffer is sRGB and GL_FRAMEBUFFER_SRGB is on: writes are encoded and
+    /// blending is done in linear space ([`srgb`]; general path only).
+    pub srgb: bool,
 }
 
 /// One pass of a 4x multisample triangle draw: the rasterizer tests this sample's point,
@@ -183,5 +187,6 @@ impl FragPlan {
             || self.count_samples
             || self.smooth.is_some()
             || self.ms.is_some()
+            || self.srgb
     }
 }

@@ -406,7 +406,7 @@ pub fn shade_chunk<
     live: [bool; LANES],
     stats: &mut Stats,
 ) {
-    if FULL && fb.wide.is_some() {
+    if FULL && (fb.wide.is_some() || plan.srgb) {
         shade_chunk_wide::<M, DEPTH, FLAT, PERSP>(t, plan, units, source, fb, py, x, live, stats);
     } else {
         shade_chunk_as::<M, DEPTH, FLAT, PERSP, FULL, false>(
@@ -607,6 +607,12 @@ fn shade_chunk_as<
     }
     if !FULL {
         c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
+    }
+    if WIDE && plan.srgb {
+        // sRGB writes encode, blending in linear space (the rasterizer takes the FULL path
+        // for them).
+        stats.color_writes += super::srgb::store(plan, fb, row, n, &live, &cf);
+        return;
     }
     if let (true, Some(k)) = (WIDE, fb.wide) {
         // Wide buffers convert, blend and store at their own precision (the rasterizer

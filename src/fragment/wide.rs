@@ -189,7 +189,7 @@ fn positive(f: BlendFactor) -> bool {
 /// `apply(ch, equation, src_factor, dst_factor)` the blended channel (RGB take the plan's
 /// colour equation and factors, alpha its alpha ones).
 #[inline(always)]
-fn per_channel<T: Copy>(
+pub(super) fn per_channel<T: Copy>(
     p: &BlendPlan,
     factor: impl Fn(BlendFactor, usize) -> T,
     apply: impl Fn(usize, BlendEquation, T, T) -> f32,
@@ -250,7 +250,7 @@ fn equation16(eq: BlendEquation, s: u32, sf: u32, d: u32, df: u32) -> u32 {
 
 /// A blend factor in f32 (ONE_MINUS_x is `1 − x`).
 #[inline(always)]
-fn factor_f(f: BlendFactor, s: [f32; 4], d: [f32; 4], k: [f32; 4], ch: usize) -> f32 {
+pub(super) fn factor_f(f: BlendFactor, s: [f32; 4], d: [f32; 4], k: [f32; 4], ch: usize) -> f32 {
     match f {
         BlendFactor::Zero => 0.0,
         BlendFactor::One => 1.0,
@@ -273,7 +273,7 @@ fn factor_f(f: BlendFactor, s: [f32; 4], d: [f32; 4], k: [f32; 4], ch: usize) ->
 
 /// A blend equation in f32: each product rounded, then the sum (no clamping).
 #[inline(always)]
-fn equation_f(eq: BlendEquation, s: f32, sf: f32, d: f32, df: f32) -> f32 {
+pub(super) fn equation_f(eq: BlendEquation, s: f32, sf: f32, d: f32, df: f32) -> f32 {
     match eq {
         BlendEquation::Add => s * sf + d * df,
         BlendEquation::Subtract => s * sf - d * df,

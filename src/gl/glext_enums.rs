@@ -119,6 +119,10 @@ pub const GL_DEPTH_TEXTURE_MODE_ARB: GLenum = 0x884B;
 // GL_ARB_framebuffer_object
 pub const GL_ARB_framebuffer_object: GLenum = 1;
 
+// GL_ARB_framebuffer_sRGB
+pub const GL_ARB_framebuffer_sRGB: GLenum = 1;
+pub const GL_FRAMEBUFFER_SRGB: GLenum = 0x8DB9;
+
 // GL_ARB_half_float_pixel
 pub const GL_ARB_half_float_pixel: GLenum = 1;
 pub const GL_HALF_FLOAT_ARB: GLenum = 0x140B;
@@ -413,6 +417,11 @@ pub const GL_RENDERBUFFER_BLUE_SIZE_EXT: GLenum = 0x8D52;
 pub const GL_RENDERBUFFER_ALPHA_SIZE_EXT: GLenum = 0x8D53;
 pub const GL_RENDERBUFFER_DEPTH_SIZE_EXT: GLenum = 0x8D54;
 pub const GL_RENDERBUFFER_STENCIL_SIZE_EXT: GLenum = 0x8D55;
+
+// GL_EXT_framebuffer_sRGB
+pub const GL_EXT_framebuffer_sRGB: GLenum = 1;
+pub const GL_FRAMEBUFFER_SRGB_EXT: GLenum = 0x8DB9;
+pub const GL_FRAMEBUFFER_SRGB_CAPABLE_EXT: GLenum = 0x8DBA;
 
 // GL_EXT_multi_draw_arrays
 pub const GL_EXT_multi_draw_arrays: GLenum = 1;

@@ -16,6 +16,8 @@ pub enum Cap {
     DepthTest,
     Dither,
     Fog,
+    /// GL_FRAMEBUFFER_SRGB (ARB/EXT_framebuffer_sRGB): sRGB colour buffers encode writes.
+    FramebufferSrgb,
     Lighting,
     LineSmooth,
     LineStipple,

@@ -25,6 +25,7 @@
 //! Not followed yet: a destination rectangle that leaves the draw buffer, whose quad
 //! llvmpipe clips geometrically first (its ties can fall the other way).
 
+use super::blit_srgb::SrgbSides;
 use crate::fragment::span::{eval, Fused, Madd, Unfused};
 use crate::framebuffer::Framebuffer;
 use crate::geometry::setup::SetupTriangle;
@@ -82,8 +83,12 @@ pub fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32
 /// The single-sample image a multisample resolve reads: per pixel and channel llvmpipe's
 /// resolve shader (`util_make_fs_msaa_resolve`): `sum = 0; sum += s_i` in sample order
 /// in f32, each sample `u · f32(1/255)`, then `round_half_even(sum · 0.25 · 255)`. Depth
-/// and stencil are sample 0's.
-pub fn resolve_samples(planes: &[Framebuffer]) -> Framebuffer {
+/// and stencil are sample 0's. With sRGB `sides` the samples are decoded and the average
+/// stored as the destination stores it ([`super::blit_srgb`]).
+pub fn resolve_samples(planes: &[Framebuffer], sides: SrgbSides, fma: bool) -> Framebuffer {
+    if sides != SrgbSides::default() {
+        return sides.resolve(planes, fma);
+    }
     let mut out = planes[0].clone();
     let scale = 1.0f32 / 255.0;
     for (i, px) in out.color.iter_mut().enumerate() {
@@ -113,6 +118,8 @@ pub struct Job {
     pub linear: bool,
     /// Whether llvmpipe's multiply-adds fuse on this CPU level.
     pub fma: bool,
+    /// The sides that are sRGB surfaces (GL_FRAMEBUFFER_SRGB on; [`super::blit_srgb`]).
+    pub srgb: super::blit_srgb::SrgbSides,
 }
 
 impl Job {
@@ -126,12 +133,19 @@ impl Job {
         let whole = sc == [bx as i64, by as i64, (bx + bw) as i64, (by + bh) as i64];
         let exact_depth = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
         let bits = s.depth_format.texel_bits();
+        let unscaled = bw == sw.abs() && bh == sh.abs();
+        let convert = self.srgb.converts(unscaled);
+        let fma = self.fma;
         let write =
             |d: &mut Framebuffer, px: i64, py: i64, c: Option<[u8; 4]>, t: (usize, usize)| {
                 let di = py as usize * d.width + px as usize;
                 let si = t.1 * s.width + t.0;
                 if mask.color {
-                    let c = c.unwrap_or(s.color[si]);
+                    let c = match c {
+                        Some(c) => c,
+                        None if convert => self.srgb.texel(s.color[si], fma),
+                        None => s.color[si],
+                    };
                     d.color[di] = d.store_rgba8(c);
                 }
                 if mask.depth {
@@ -148,7 +162,7 @@ impl Job {
                 }
             };
         let inside = |px: i64, py: i64| px >= sc[0] && px < sc[2] && py >= sc[1] && py < sc[3];
-        if bw == sw.abs() && bh == sh.abs() {
+        if unscaled {
             // Texel for texel (llvmpipe's copy or TXF path).
             for j in 0..bh as i64 {
                 for i in 0..bw as i64 {
@@ -214,7 +228,14 @@ impl Job {
                 st::<Unfused>(tri, px, py)
             };
             let nearest = (texel(u * nx, s.width), texel(t * ny, s.height));
-            let c = self.linear.then(|| bilinear(s, u * nx, t * ny));
+            let c = match (self.linear, convert) {
+                (true, true) => {
+                    let eight_bit = || bilinear(s, u * nx, t * ny);
+                    Some(self.srgb.bilinear(s, (u * nx, t * ny), fma, eight_bit))
+                }
+                (true, false) => Some(bilinear(s, u * nx, t * ny)),
+                _ => None,
+            };
             write(d, px, py, c, nearest);
         });
     }

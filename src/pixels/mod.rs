@@ -6,6 +6,7 @@
 //! memory `context::pack`'s.
 
 pub mod blit;
+pub mod blit_srgb;
 pub mod draw;
 pub mod image;
 pub mod rect;

@@ -92,5 +92,14 @@ pub fn fragment(
         smooth: None,
         ms: None,
         blend_color: b.color,
+        // set by the draw, which knows the colour buffer (`srgb_store`)
+        srgb: false,
     }
+}
+
+/// Whether a draw into a colour buffer that is sRGB-encoded (`buffer_srgb`) encodes its
+/// writes: only while GL_FRAMEBUFFER_SRGB is on (llvmpipe then views the surface through
+/// its sRGB format; otherwise through the linear one).
+pub fn srgb_store(caps: &Caps, buffer_srgb: bool) -> bool {
+    buffer_srgb && caps.get(Cap::FramebufferSrgb)
 }

@@ -10,7 +10,7 @@
 
 mod fragment;
 
-pub use fragment::{fragment, FragState};
+pub use fragment::{fragment, srgb_store, FragState};
 
 use crate::fixed_function::fog::FogPlan;
 use crate::fixed_function::lighting::{LightEnables, LightPlan};
@@ -38,6 +38,8 @@ pub struct Target {
     pub depth_format: DepthFormat,
     /// Whether a stencil buffer exists.
     pub has_stencil: bool,
+    /// Whether the colour buffer is sRGB-encoded ([`crate::framebuffer::Framebuffer::srgb`]).
+    pub srgb: bool,
 }
 
 /// What a draw is planned from: the state's parameter blocks, borrowed for the draw.
@@ -132,6 +134,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     );
     let mut frag = fragment(&s.frag, t.depth_format, t.has_stencil, fma);
     frag.ms = s.ms;
+    frag.srgb = fragment::srgb_store(caps, t.srgb);
     stage.color_sum = stage.light.is_none() && caps.get(Cap::ColorSum);
     frag.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());

@@ -153,6 +153,7 @@ fn simd_ok(d: &Draw<'_, '_>) -> bool {
         && !plan.count_samples
         && plan.smooth.is_none()
         && d.fb.wide.is_none()
+        && !plan.srgb
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             d.fb.format,
@@ -318,8 +319,9 @@ unsafe fn rows_simd_walk<
 unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let depth = plan.depth.is_some();
-    // Wide buffers take the general per-fragment path (`fragment::wide`).
-    let wide = fb.wide.is_some();
+    // Wide buffers and sRGB writes take the general per-fragment path (`fragment::wide`,
+    // `fragment::srgb`).
+    let wide = fb.wide.is_some() || plan.srgb;
     if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none() && !wide) {
         let u = &units[0];
         with_flags!((depth, plan.flat, t.persp), |D, F, P| {
@@ -555,6 +557,7 @@ mod tests {
                 smooth: None,
                 ms: None,
                 blend_color: [0.0; 4],
+                srgb: false,
             };
             let persp = round % 2 == 0;
             // Small triangles (boxes of 1 to 6 pixels a side), some crossing the edges of

@@ -5,6 +5,7 @@
 use super::super::fbo::SAMPLES;
 use super::super::{Context, GlError, GlResult};
 use crate::pixels::blit::{clip_axis, resolve_samples, BlitMask, Job};
+use crate::pixels::blit_srgb::SrgbSides;
 
 /// glBlitFramebuffer after argument checks: `src`/`dst` are (x0, y0, x1, y1) in GL window
 /// coordinates (y up).
@@ -28,6 +29,13 @@ pub fn blit(
     }
     // Every sample plane of a multisample source (a resolve averages them).
     let mut planes = Vec::new();
+    let fma = crate::geometry::cpu_has_fma();
+    let caps = &ctx.state.caps;
+    let dst_srgb = ctx.fb.as_ref().is_some_and(|f| f.srgb);
+    let mut sides = SrgbSides {
+        src: false,
+        dst: crate::plan::srgb_store(caps, dst_srgb),
+    };
     let mut sfb = if read_ms {
         planes = ctx.read_planes().unwrap_or_default();
         for p in &mut planes {
@@ -36,7 +44,11 @@ pub fn blit(
         if planes.len() != SAMPLES {
             return Ok(());
         }
-        resolve_samples(&planes)
+        sides.src = crate::plan::srgb_store(&ctx.state.caps, planes[0].srgb);
+        let resolved = resolve_samples(&planes, sides, fma);
+        // the resolve has converted the colours: the copy that follows copies
+        sides = SrgbSides::default();
+        resolved
     } else {
         // Reading and drawing one buffer: read a snapshot.
         match ctx.read_framebuffer_copy() {
@@ -48,6 +60,9 @@ pub fn blit(
         }
     };
     sfb.resolve();
+    if !read_ms {
+        sides.src = crate::plan::srgb_store(&ctx.state.caps, sfb.srgb);
+    }
     let Some(dfb) = ctx.fb.as_ref() else {
         return Ok(());
     };
@@ -109,7 +124,8 @@ pub fn blit(
         scissor,
         normalized: !sfb.y_flip,
         linear: linear && (bw != swid.abs() || bh != shgt.abs()),
-        fma: crate::geometry::cpu_has_fma(),
+        fma,
+        srgb: sides,
     };
     // Into a multisample object: sample for sample from a multisample source, else every
     // sample gets the source's value.
