@@ -171,7 +171,7 @@ pub(super) fn quad_levels(
         let sel = select_levels(p, pixel_lod(p, size, 0, s, t, r));
         return ([sel; 4], true);
     }
-    let sels = std::array::from_fn(|i| select_levels(p, pixel_lod(p, size, i, s, t, r)));
+    let sels = each4!(|i| select_levels(p, pixel_lod(p, size, i, s, t, r)));
     (sels, true)
 }
 
@@ -188,7 +188,7 @@ pub fn sample_quad(
     r: [f32; 4],
 ) -> [[f32; 4]; 4] {
     let (sels, need_derivs) = quad_levels(p, s, t, r);
-    std::array::from_fn(|i| {
+    each4!(|i| {
         let (face, fs, ft) = project(s[i], t[i], r[i], need_derivs);
         sample_levels_in(p, faces[face], sels[i], fs, ft)
     })
