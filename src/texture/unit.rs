@@ -164,7 +164,7 @@ impl UnitPlan<'_> {
     /// unit's texture value, `prev` the previous unit's output (the primary colour on the
     /// first enabled unit), `textures` every active unit's texture value in plan order
     /// (read only by a crossbar environment, [`super::env::Combine::crossbar`]).
-    #[inline]
+    #[inline(always)]
     pub fn env(
         &self,
         frag: [f32; 4],
