@@ -227,7 +227,31 @@ impl ListState {
 
 impl Context {
     /// Runs one per-vertex command with immediate-mode semantics (glBegin … glEnd).
+    ///
+    /// The attribute setters and glVertex, which a list replays once per vertex, are
+    /// handled here (inlined into the replay loop); glBegin, glEnd and the rest go through
+    /// [`Context::vertex_op_rare`].
+    #[inline]
     pub fn vertex_op(&mut self, op: VertexOp) -> GlResult<()> {
+        let cur = &mut self.state.current;
+        match op {
+            VertexOp::Vertex(p) => {
+                if self.immediate.active.is_some() {
+                    self.push_immediate_vertex(p)?;
+                    self.stream_immediate();
+                }
+            }
+            VertexOp::Color(v) => cur.color = v,
+            VertexOp::Normal(v) => cur.normal = v,
+            VertexOp::TexCoord(u, v) => cur.texcoord[(u as usize) % MAX_TEXTURE_UNITS] = v,
+            _ => return self.vertex_op_rare(op),
+        }
+        Ok(())
+    }
+
+    /// [`Context::vertex_op`] of the commands that come once per primitive or less.
+    #[inline(never)]
+    fn vertex_op_rare(&mut self, op: VertexOp) -> GlResult<()> {
         let cur = &mut self.state.current;
         match op {
             VertexOp::Begin(m) => {
@@ -260,16 +284,12 @@ impl Context {
                     self.flush_pending();
                 }
             }
-            VertexOp::Vertex(p) => {
-                if self.immediate.active.is_some() {
-                    self.push_immediate_vertex(p)?;
-                    self.stream_immediate();
-                }
-            }
-            VertexOp::Color(v) => cur.color = v,
+            // the per-vertex commands (handled by `vertex_op`; kept so the match is whole)
+            VertexOp::Vertex(_)
+            | VertexOp::Color(_)
+            | VertexOp::Normal(_)
+            | VertexOp::TexCoord(..) => return self.vertex_op(op),
             VertexOp::SecondaryColor(v) => cur.secondary_color = [v[0], v[1], v[2], 1.0],
-            VertexOp::Normal(v) => cur.normal = v,
-            VertexOp::TexCoord(u, v) => cur.texcoord[(u as usize) % MAX_TEXTURE_UNITS] = v,
             VertexOp::FogCoord(f) => cur.fog_coord = f,
             VertexOp::EdgeFlag(f) => cur.edge_flag = f,
             VertexOp::Index(i) => cur.index = i,

@@ -83,11 +83,10 @@ impl Context {
     }
 }
 
-/// The attributes of a vertex other than position and colour, shared by consecutive
-/// vertices that do not change them.
+/// The attributes of a vertex other than position, colour and normal, shared by
+/// consecutive vertices that do not change them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Rest {
-    normal: [f32; 3],
     texcoord: [[f32; 4]; MAX_TEXTURE_UNITS],
     fog_coord: f32,
     edge_flag: bool,
@@ -106,7 +105,6 @@ impl Rest {
                 .fold(0u32, |d, (x, y)| d | (x.to_bits() ^ y.to_bits()))
         };
         diff(self.texcoord.as_flattened(), cur.texcoord.as_flattened())
-            | diff(&self.normal, &cur.normal)
             | diff(&self.secondary, &cur.secondary_color)
             | (self.fog_coord.to_bits() ^ cur.fog_coord.to_bits())
             | (self.edge_flag != cur.edge_flag) as u32
@@ -115,7 +113,6 @@ impl Rest {
 
     fn of(cur: &CurrentAttribs) -> Self {
         Rest {
-            normal: cur.normal,
             texcoord: cur.texcoord,
             fog_coord: cur.fog_coord,
             edge_flag: cur.edge_flag,
@@ -124,13 +121,24 @@ impl Rest {
     }
 }
 
-/// The vertices of an immediate-mode batch, stored compactly: position and colour per
-/// vertex (the attributes that usually change per vertex), the other attributes once per
-/// run of vertices that share them.
+/// One vertex of an [`ImmVerts`]: the attributes that usually change per vertex
+/// (a smooth mesh gives every vertex its own normal) and the index of its entry in
+/// `rest`.
+#[derive(Clone, Copy, Debug)]
+struct Vert {
+    pos: [f32; 4],
+    color: [f32; 4],
+    normal: [f32; 3],
+    rest: u32,
+}
+
+/// The vertices of an immediate-mode batch, stored compactly: position, colour and
+/// normal per vertex, the other attributes (texture coordinates, ...) once per run of
+/// vertices that share them. (With the normal among the shared ones, a mesh that sets a
+/// normal per vertex copied a 160-byte entry per vertex.)
 #[derive(Clone, Debug, Default)]
 pub struct ImmVerts {
-    /// Position, colour and the index of the vertex's entry in `rest`.
-    verts: Vec<([f32; 4], [f32; 4], u32)>,
+    verts: Vec<Vert>,
     rest: Vec<Rest>,
 }
 
@@ -148,6 +156,7 @@ impl ImmVerts {
     /// Appends a vertex at `pos` with the current attributes `cur` (GL_OUT_OF_MEMORY when
     /// memory runs out). Reads `cur` in place: building a [`VertexIn`] first copied its
     /// 200 bytes per glVertex.
+    #[inline]
     pub fn push_current(&mut self, pos: [f32; 4], cur: &CurrentAttribs) -> GlResult<()> {
         if !self.rest.last().is_some_and(|r| r.same_bits(cur)) {
             self.rest.try_reserve(1).map_err(|_| GlError::OutOfMemory)?;
@@ -156,15 +165,19 @@ impl ImmVerts {
         self.verts
             .try_reserve(1)
             .map_err(|_| GlError::OutOfMemory)?;
-        self.verts
-            .push((pos, cur.color, (self.rest.len() - 1) as u32));
+        self.verts.push(Vert {
+            pos,
+            color: cur.color,
+            normal: cur.normal,
+            rest: (self.rest.len() - 1) as u32,
+        });
         Ok(())
     }
 
     /// Keeps the first `n` vertices.
     pub fn truncate(&mut self, n: usize) {
         self.verts.truncate(n);
-        let rest = self.verts.last().map_or(0, |v| v.2 as usize + 1);
+        let rest = self.verts.last().map_or(0, |v| v.rest as usize + 1);
         self.rest.truncate(rest);
     }
 
@@ -195,12 +208,12 @@ impl VertexSource for ImmVerts {
 
     #[inline]
     fn vertex(&self, i: usize) -> VertexIn {
-        let (pos, color, r) = self.verts[i];
-        let r = &self.rest[r as usize];
+        let v = self.verts[i];
+        let r = &self.rest[v.rest as usize];
         VertexIn {
-            pos,
-            color,
-            normal: r.normal,
+            pos: v.pos,
+            color: v.color,
+            normal: v.normal,
             texcoord: r.texcoord,
             fog_coord: r.fog_coord,
             edge_flag: r.edge_flag,
@@ -210,14 +223,19 @@ impl VertexSource for ImmVerts {
 
     #[inline]
     fn vertex_into(&self, i: usize, slot: &mut VertexSlot) {
-        let (pos, color, r) = self.verts[i];
+        let Vert {
+            pos,
+            color,
+            normal,
+            rest: r,
+        } = self.verts[i];
         slot.v.pos = pos;
         slot.v.color = color;
+        slot.v.normal = normal;
         // Consecutive vertices mostly share their `rest` entry: copy it only on a change.
         if slot.tag != r as usize {
             slot.tag = r as usize;
             let r = &self.rest[r as usize];
-            slot.v.normal = r.normal;
             slot.v.texcoord = r.texcoord;
             slot.v.fog_coord = r.fog_coord;
             slot.v.edge_flag = r.edge_flag;
@@ -227,12 +245,12 @@ impl VertexSource for ImmVerts {
 
     #[inline]
     fn position(&self, i: usize) -> [f32; 4] {
-        self.verts[i].0
+        self.verts[i].pos
     }
 
     #[inline]
     fn edge_flag(&self, i: usize) -> bool {
-        self.rest[self.verts[i].2 as usize].edge_flag
+        self.rest[self.verts[i].rest as usize].edge_flag
     }
 }
 
@@ -263,6 +281,7 @@ mod tests {
         iv.push_current(p, &c).unwrap();
         c.fog_coord = 0.25;
         iv.push_current(p, &c).unwrap();
+        // Only the normal changes: kept per vertex, the entry is still shared.
         c.normal[1] = 0.5;
         iv.push_current(p, &c).unwrap();
         c.secondary_color[3] = 0.5;
@@ -273,7 +292,7 @@ mod tests {
         // Only the colour changes: the entry is still shared.
         c.color = [0.25; 4];
         iv.push_current([1.0, 2.0, 3.0, 1.0], &c).unwrap();
-        assert_eq!(iv.rest.len(), 7);
+        assert_eq!(iv.rest.len(), 6);
         assert!(iv.vertex(8).texcoord[0][0].is_nan());
         assert_eq!(iv.vertex(8).color, [0.25; 4]);
         assert_eq!(iv.vertex(8).pos, [1.0, 2.0, 3.0, 1.0]);

@@ -11,6 +11,7 @@ use super::Context;
 impl Context {
     /// Appends an immediate-mode vertex (inside glBegin/glEnd) and, when the batch has
     /// per-vertex materials, the material it is given with.
+    #[inline]
     pub fn push_immediate_vertex(&mut self, pos: [f32; 4]) -> GlResult<()> {
         let im = &mut self.immediate;
         im.verts.push_current(pos, &self.state.current)?;

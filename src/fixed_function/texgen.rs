@@ -130,7 +130,7 @@ fn reflect(n: [f32; 3], eye: [f32; 4]) -> [f32; 3] {
 /// Generates the texture coordinates of one unit: `tc` is the vertex's own coordinate,
 /// `obj` its object position, `eye` its eye position and `n` its transformed normal
 /// (the last two only read when the plan needs them).
-#[inline]
+#[inline(always)]
 pub fn generate(
     plan: &TexGenPlan,
     tc: [f32; 4],

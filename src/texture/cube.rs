@@ -133,17 +133,45 @@ fn pixel_lod(p: &UnitPlan<'_>, size: f32, i: usize, s: [f32; 4], t: [f32; 4], r:
     let ima = 1.0 / ma;
     let imahalf = 0.5 * ima;
     let (sc, tc) = minor(axis, ms, v);
-    let deriv = |d: [f32; 3]| {
-        let (dsc, dtc) = minor(axis, ms, d);
-        let m = d[axis] * ima;
-        ((dsc - m * sc) * imahalf, (dtc - m * tc) * imahalf)
+    let deriv = Deriv {
+        axis,
+        ms,
+        ima,
+        imahalf,
+        sc,
+        tc,
+        size,
     };
-    let sq = |(a, b): (f32, f32)| {
-        let (a, b) = (size * a, size * b);
-        a * a + b * b
-    };
-    let rho = sq(deriv(ddx)).max(sq(deriv(ddy)));
+    let rho = deriv.sq(ddx).max(deriv.sq(ddy));
     lod::from_rho(&p.lod, p.mip_filter, true, rho)
+}
+
+/// What [`pixel_lod`] needs to turn a direction difference into face derivatives (a
+/// struct with inlined methods rather than closures, which the compiler may leave out of
+/// line without the caller's target features).
+struct Deriv {
+    axis: usize,
+    ms: u32,
+    ima: f32,
+    imahalf: f32,
+    sc: f32,
+    tc: f32,
+    size: f32,
+}
+
+impl Deriv {
+    /// The squared length, in texels, of the face derivative of direction difference `d`.
+    #[inline(always)]
+    fn sq(&self, d: [f32; 3]) -> f32 {
+        let (dsc, dtc) = minor(self.axis, self.ms, d);
+        let m = d[self.axis] * self.ima;
+        let (a, b) = (
+            (dsc - m * self.sc) * self.imahalf,
+            (dtc - m * self.tc) * self.imahalf,
+        );
+        let (a, b) = (self.size * a, self.size * b);
+        a * a + b * b
+    }
 }
 
 /// The filter and levels of each pixel of a 2x2 quad of direction vectors, and whether
@@ -171,7 +199,7 @@ pub(super) fn quad_levels(
         let sel = select_levels(p, pixel_lod(p, size, 0, s, t, r));
         return ([sel; 4], true);
     }
-    let sels = std::array::from_fn(|i| select_levels(p, pixel_lod(p, size, i, s, t, r)));
+    let sels = each4!(|i| select_levels(p, pixel_lod(p, size, i, s, t, r)));
     (sels, true)
 }
 
@@ -188,7 +216,7 @@ pub fn sample_quad(
     r: [f32; 4],
 ) -> [[f32; 4]; 4] {
     let (sels, need_derivs) = quad_levels(p, s, t, r);
-    std::array::from_fn(|i| {
+    each4!(|i| {
         let (face, fs, ft) = project(s[i], t[i], r[i], need_derivs);
         sample_levels_in(p, faces[face], sels[i], fs, ft)
     })

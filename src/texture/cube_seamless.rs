@@ -124,7 +124,7 @@ fn neighbours(
 }
 
 /// The taps of face coordinates `(s, t)` on a level of size `n`.
-#[inline]
+#[inline(always)]
 fn taps(face: usize, s: f32, t: f32, n: usize) -> Taps {
     let size = n as f32;
     let max = n as i32 - 1;
@@ -175,7 +175,7 @@ fn taps(face: usize, s: f32, t: f32, n: usize) -> Taps {
 
 /// Filters one pixel's taps `n` (n00, n01, n10, n11): bilinear, or (`corners`: the
 /// quad has a corner tap) the weighted sum of the module comment.
-#[inline]
+#[inline(always)]
 fn filter(fma: bool, tp: &Taps, n: [[f32; 4]; 4], corners: bool) -> [f32; 4] {
     let [fs, ft] = tp.w;
     if !corners {
@@ -193,8 +193,8 @@ fn filter(fma: bool, tp: &Taps, n: [[f32; 4]; 4], corners: bool) -> [f32; 4] {
         }
     }
     let cw = cw * (1.0f32 / 3.0);
-    let w: [f32; 4] = std::array::from_fn(|k| if tp.corner[k] { 0.0 } else { w[k] + cw });
-    std::array::from_fn(|c| {
+    let w: [f32; 4] = each4!(|k| if tp.corner[k] { 0.0 } else { w[k] + cw });
+    each4!(|c| {
         let mut v = w[0] * n[0][c];
         v += w[1] * n[1][c];
         v += w[2] * n[2][c];
@@ -205,24 +205,25 @@ fn filter(fma: bool, tp: &Taps, n: [[f32; 4]; 4], corners: bool) -> [f32; 4] {
 
 /// One level per pixel of a quad, seamless LINEAR: `px` are the pixels' faces and
 /// coordinates, `levels` the level each pixel reads.
-#[inline]
+#[inline(always)]
 fn linear_level(
     p: &UnitPlan<'_>,
     faces: &Faces<'_>,
     levels: [usize; 4],
     px: &[(usize, f32, f32); 4],
 ) -> [[f32; 4]; 4] {
-    let taps: [Taps; 4] = std::array::from_fn(|i| {
+    let taps: [Taps; 4] = each4!(|i| {
         let (f, s, t) = px[i];
         let n = faces[f][levels[i]].as_ref().expect("cube complete").width;
         taps(f, s, t, n)
     });
     let corners = taps.iter().any(|tp| tp.corner.contains(&true));
-    std::array::from_fn(|i| {
+    each4!(|i| {
         let tp = &taps[i];
         let img = |f: usize| -> &Level { faces[f][levels[i]].as_ref().expect("cube complete") };
         // Float and 16-bit cube maps keep their float texels (ARB_texture_float).
-        let texels = tp.at.map(|(f, x, y)| {
+        let texels = each4!(|k| {
+            let (f, x, y) = tp.at[k];
             let l = img(f);
             if p.ext.floats {
                 l.ftexel(y * l.width + x)
@@ -244,10 +245,9 @@ pub fn sample_quad(
     r: [f32; 4],
 ) -> [[f32; 4]; 4] {
     let (sels, need_derivs) = quad_levels(p, s, t, r);
-    let px: [(usize, f32, f32); 4] =
-        std::array::from_fn(|i| project(s[i], t[i], r[i], need_derivs));
+    let px: [(usize, f32, f32); 4] = each4!(|i| project(s[i], t[i], r[i], need_derivs));
     if sels.iter().all(|sel| sel.0 == Filter::Nearest) {
-        return std::array::from_fn(|i| {
+        return each4!(|i| {
             let (f, fs, ft) = px[i];
             sample_levels_in(p, faces[f], sels[i], fs, ft)
         });
@@ -258,7 +258,7 @@ pub fn sample_quad(
     } else {
         a
     };
-    std::array::from_fn(|i| {
+    each4!(|i| {
         let (f, fs, ft) = px[i];
         match sels[i] {
             (Filter::Nearest, ..) => sample_levels_in(p, faces[f], sels[i], fs, ft),

@@ -57,6 +57,7 @@ pub enum CombineFn {
 }
 
 impl CombineFn {
+    #[inline(always)]
     fn num_args(self) -> usize {
         match self {
             CombineFn::Replace => 1,
@@ -64,6 +65,7 @@ impl CombineFn {
             _ => 2,
         }
     }
+    #[inline(always)]
     fn saturates(self) -> bool {
         !matches!(
             self,
@@ -171,6 +173,52 @@ pub struct Combine {
     /// Whether a source reads another unit's texel (GL_TEXTUREn after
     /// [`Combine::canonicalise`]): `apply` then needs every active unit's texel.
     pub crossbar: bool,
+    /// The combiner as a [`Simple`] one when it is (kept up to date by `derive` and
+    /// `canonicalise`, like `reassoc`): `apply` then skips the general evaluation.
+    pub simple: Option<Simple>,
+}
+
+/// A combiner whose RGB and alpha functions are each REPLACE or MODULATE of plain
+/// operands (GL_SRC_COLOR for RGB, GL_SRC_ALPHA for alpha) of sources other than
+/// GL_TEXTUREn, without a scale: no saturation, no reassociation, and per channel the
+/// general evaluation is `v0[c]` or `v0[c]·v1[c]`, which this form computes directly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Simple {
+    /// RGB: the sources of arg0 and arg1 (`None` for REPLACE).
+    pub rgb: (Source, Option<Source>),
+    /// Alpha: the same.
+    pub a: (Source, Option<Source>),
+}
+
+impl Simple {
+    /// The simple form of `c`, if it has one.
+    fn of(c: &Combine) -> Option<Simple> {
+        if c.scale_rgb != 1.0 || c.scale_a != 1.0 || c.crossbar {
+            return None;
+        }
+        let side = |f: CombineFn, args: &[Arg; 3], op: Operand| {
+            let plain = |a: Arg| (a.1 == op && !matches!(a.0, Source::TextureN(_))).then_some(a.0);
+            match f {
+                CombineFn::Replace => Some((plain(args[0])?, None)),
+                CombineFn::Modulate => Some((plain(args[0])?, Some(plain(args[1])?))),
+                _ => None,
+            }
+        };
+        Some(Simple {
+            rgb: side(c.mode_rgb, &c.args_rgb, Operand::SrcColor)?,
+            a: side(c.mode_a, &c.args_a, Operand::SrcAlpha)?,
+        })
+    }
+}
+
+/// What one fragment's combiner reads: the primary colour, this unit's texel, the
+/// previous unit's result and every active unit's texel (crossbar).
+#[derive(Clone, Copy)]
+struct Inputs<'t> {
+    frag: [f32; 4],
+    tex: [f32; 4],
+    prev: [f32; 4],
+    textures: &'t [[f32; 4]],
 }
 
 /// The crossbar slot of a unit that is not active: past any texel list, so it reads zero.
@@ -209,9 +257,10 @@ impl Combine {
                 one_vec4: false,
                 reassoc: (true, true),
                 crossbar: false,
+                simple: None,
             };
             c.one_vec4 = c.compute_one_vec4();
-            c.reassoc = c.add_signed_reassociates();
+            c.refresh();
             return c;
         }
         let base = base.env_base();
@@ -308,10 +357,17 @@ impl Combine {
             one_vec4: false,
             reassoc: (true, true),
             crossbar: false,
+            simple: None,
         };
         c.one_vec4 = c.compute_one_vec4();
-        c.reassoc = c.add_signed_reassociates();
+        c.refresh();
         c
+    }
+
+    /// Recomputes the fields derived from the others (`reassoc`, `simple`).
+    fn refresh(&mut self) {
+        self.reassoc = self.add_signed_reassociates();
+        self.simple = Simple::of(self);
     }
 
     /// Whether NIR reassociates the ADD_SIGNED of RGB and of alpha (see [`add_signed`]).
@@ -385,13 +441,16 @@ impl Combine {
                 }
             }
         }
-        self.reassoc = self.add_signed_reassociates();
+        self.refresh();
     }
 
     /// Evaluates the combiner. `textures` holds every active unit's texture value, in the
     /// order of [`Combine::canonicalise`]'s slots, for GL_TEXTUREn sources (only read
     /// when `crossbar`; missing entries read as zero, as Mesa's shader does for disabled
     /// units).
+    ///
+    /// Every helper is `#[inline(always)]` (no closures): a closure left out of line
+    /// is called per channel and loses the caller's target features.
     #[inline(always)]
     pub fn apply(
         &self,
@@ -400,56 +459,113 @@ impl Combine {
         prev: [f32; 4],
         textures: &[[f32; 4]],
     ) -> [f32; 4] {
-        let value = |s: Source| -> [f32; 4] {
-            match s {
-                Source::Texture => tex,
-                Source::TextureN(n) => textures.get(n as usize).copied().unwrap_or([0.0; 4]),
-                Source::Constant => self.color,
-                Source::PrimaryColor => frag,
-                Source::Previous => prev,
-            }
+        let inp = Inputs {
+            frag,
+            tex,
+            prev,
+            textures,
         };
-        let arg = |a: Arg, ch: usize| -> f32 {
-            let v = value(a.0);
-            match a.1 {
-                Operand::SrcColor => v[ch],
-                Operand::OneMinusSrcColor => 1.0 - v[ch],
-                Operand::SrcAlpha => v[3],
-                Operand::OneMinusSrcAlpha => 1.0 - v[3],
+        if let Some(sm) = &self.simple {
+            return self.apply_simple(sm, &inp);
+        }
+        self.apply_general(&inp)
+    }
+
+    /// [`Combine::apply`] of a [`Simple`] combiner: the same products.
+    #[inline(always)]
+    fn apply_simple(&self, sm: &Simple, inp: &Inputs<'_>) -> [f32; 4] {
+        let r0 = self.value(sm.rgb.0, inp);
+        let a0 = self.value(sm.a.0, inp)[3];
+        let mut out = [r0[0], r0[1], r0[2], a0];
+        if let Some(s1) = sm.rgb.1 {
+            let r1 = self.value(s1, inp);
+            for c in 0..3 {
+                out[c] *= r1[c];
             }
-        };
-        // The value x of a ONE_MINUS operand (its argument is `1 − x`).
-        let minus_of = |a: Arg, ch: usize| -> Option<f32> {
-            let v = value(a.0);
-            match a.1 {
-                Operand::OneMinusSrcColor => Some(v[ch]),
-                Operand::OneMinusSrcAlpha => Some(v[3]),
-                _ => None,
+        }
+        if let Some(s1) = sm.a.1 {
+            out[3] *= self.value(s1, inp)[3];
+        }
+        out
+    }
+
+    /// The value of source `s`.
+    #[inline(always)]
+    fn value(&self, s: Source, inp: &Inputs<'_>) -> [f32; 4] {
+        match s {
+            Source::Texture => inp.tex,
+            Source::TextureN(n) => inp.textures.get(n as usize).copied().unwrap_or([0.0; 4]),
+            Source::Constant => self.color,
+            Source::PrimaryColor => inp.frag,
+            Source::Previous => inp.prev,
+        }
+    }
+
+    /// Channel `ch` of argument `a`.
+    #[inline(always)]
+    fn arg(&self, a: Arg, ch: usize, inp: &Inputs<'_>) -> f32 {
+        let v = self.value(a.0, inp);
+        match a.1 {
+            Operand::SrcColor => v[ch],
+            Operand::OneMinusSrcColor => 1.0 - v[ch],
+            Operand::SrcAlpha => v[3],
+            Operand::OneMinusSrcAlpha => 1.0 - v[3],
+        }
+    }
+
+    /// The value x of a ONE_MINUS operand (its argument is `1 − x`).
+    #[inline(always)]
+    fn minus_of(&self, a: Arg, ch: usize, inp: &Inputs<'_>) -> Option<f32> {
+        let v = self.value(a.0, inp);
+        match a.1 {
+            Operand::OneMinusSrcColor => Some(v[ch]),
+            Operand::OneMinusSrcAlpha => Some(v[3]),
+            _ => None,
+        }
+    }
+
+    /// Function `f` of `args` on channel `ch`, before saturation and scale.
+    #[inline(always)]
+    fn eval(
+        &self,
+        f: CombineFn,
+        args: &[Arg; 3],
+        ch: usize,
+        reassoc: bool,
+        inp: &Inputs<'_>,
+    ) -> f32 {
+        let mut a = [0.0f32; 3];
+        for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
+            *ai = self.arg(args[i], ch, inp);
+        }
+        match f {
+            CombineFn::AddSigned if reassoc => {
+                add_signed(a[0], a[1], self.minus_of(args[0], ch, inp))
             }
-        };
+            // `1 − arg2` with arg2 = `1 − x` folds to x (`#a + −(b + #c)` →
+            // `(#a − #c) + −b`, then `0 + x` → x).
+            CombineFn::Interpolate => match self.minus_of(args[2], ch, inp) {
+                Some(x) => a[0] * a[2] + a[1] * x,
+                None => combine(f, a),
+            },
+            _ => combine(f, a),
+        }
+    }
+
+    /// [`Combine::apply`] of any combiner.
+    #[inline(always)]
+    fn apply_general(&self, inp: &Inputs<'_>) -> [f32; 4] {
         let (reassoc_rgb, reassoc_a) = self.reassoc;
-        let eval = |f: CombineFn, args: &[Arg; 3], ch: usize, reassoc: bool| -> f32 {
-            let mut a = [0.0f32; 3];
-            for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
-                *ai = arg(args[i], ch);
-            }
-            match f {
-                CombineFn::AddSigned if reassoc => add_signed(a[0], a[1], minus_of(args[0], ch)),
-                // `1 − arg2` with arg2 = `1 − x` folds to x (`#a + −(b + #c)` →
-                // `(#a − #c) + −b`, then `0 + x` → x).
-                CombineFn::Interpolate => match minus_of(args[2], ch) {
-                    Some(x) => a[0] * a[2] + a[1] * x,
-                    None => combine(f, a),
-                },
-                _ => combine(f, a),
-            }
-        };
         let shift = self.scale_rgb != 1.0 || self.scale_a != 1.0;
         let mut out = [0.0f32; 4];
         let dot3 = matches!(self.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
         if dot3 {
-            let t0: [f32; 3] = std::array::from_fn(|c| arg(self.args_rgb[0], c) * 2.0 + -1.0);
-            let t1: [f32; 3] = std::array::from_fn(|c| arg(self.args_rgb[1], c) * 2.0 + -1.0);
+            let mut t0 = [0.0f32; 3];
+            let mut t1 = [0.0f32; 3];
+            for c in 0..3 {
+                t0[c] = self.arg(self.args_rgb[0], c, inp) * 2.0 + -1.0;
+                t1[c] = self.arg(self.args_rgb[1], c, inp) * 2.0 + -1.0;
+            }
             let mut d = t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2];
             if self.scale_rgb == 1.0 {
                 d = sat(d);
@@ -462,7 +578,7 @@ impl Combine {
             }
         } else {
             for (c, o) in out.iter_mut().enumerate().take(3) {
-                let mut v = eval(self.mode_rgb, &self.args_rgb, c, reassoc_rgb);
+                let mut v = self.eval(self.mode_rgb, &self.args_rgb, c, reassoc_rgb, inp);
                 if !shift && self.mode_rgb.saturates() {
                     v = sat(v);
                 }
@@ -470,7 +586,7 @@ impl Combine {
             }
         }
         if self.mode_rgb != CombineFn::Dot3Rgba {
-            let mut v = eval(self.mode_a, &self.args_a, 3, reassoc_a);
+            let mut v = self.eval(self.mode_a, &self.args_a, 3, reassoc_a, inp);
             if !shift && self.mode_a.saturates() {
                 v = sat(v);
             }
@@ -487,7 +603,7 @@ impl Combine {
 }
 
 /// Clamp to [0,1], NaN → 0 (llvmpipe's fsat).
-#[inline]
+#[inline(always)]
 pub fn sat(v: f32) -> f32 {
     if v > 0.0 {
         v.min(1.0)
@@ -526,184 +642,4 @@ fn combine(f: CombineFn, a: [f32; 3]) -> f32 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::super::BaseFormat as B;
-    use super::*;
-
-    fn run(mode: EnvMode, base: B, f: [f32; 4], t: [f32; 4]) -> [f32; 4] {
-        let env = TexEnv {
-            mode,
-            color: [0.25, 0.5, 0.75, 0.125],
-            ..Default::default()
-        };
-        let t = base.swizzle(t, 0.0, 1.0);
-        Combine::derive(&env, base).apply(f, t, f, &[])
-    }
-
-    const F: [f32; 4] = [0.2, 0.4, 0.6, 0.8];
-    const T: [f32; 4] = [0.9, 0.5, 0.1, 0.3];
-
-    #[test]
-    fn gl_table_replace_modulate() {
-        assert_eq!(run(EnvMode::Replace, B::Alpha, F, T), [0.2, 0.4, 0.6, 0.3]);
-        assert_eq!(
-            run(EnvMode::Replace, B::Luminance, F, T),
-            [0.9, 0.9, 0.9, 0.8]
-        );
-        assert_eq!(run(EnvMode::Replace, B::Intensity, F, T), [0.9; 4]);
-        assert_eq!(run(EnvMode::Replace, B::Rgb, F, T), [0.9, 0.5, 0.1, 0.8]);
-        assert_eq!(
-            run(EnvMode::Modulate, B::Rgba, F, T),
-            [0.9 * 0.2, 0.5 * 0.4, 0.1 * 0.6, 0.3 * 0.8]
-        );
-        assert_eq!(
-            run(EnvMode::Modulate, B::Luminance, F, T),
-            [0.9 * 0.2, 0.9 * 0.4, 0.9 * 0.6, 0.8]
-        );
-        assert_eq!(
-            run(EnvMode::Modulate, B::Alpha, F, T),
-            [0.2, 0.4, 0.6, 0.3 * 0.8]
-        );
-    }
-
-    #[test]
-    fn decal_blend_add() {
-        // DECAL RGBA: Ct·At + Cf·(1 − At)
-        let d = run(EnvMode::Decal, B::Rgba, F, T);
-        assert_eq!(d[0], 0.9f32 * 0.3 + 0.2 * (1.0 - 0.3));
-        assert_eq!(d[3], 0.8);
-        assert_eq!(run(EnvMode::Decal, B::Luminance, F, T), F);
-        assert_eq!(run(EnvMode::Decal, B::Rgb, F, T), [0.9, 0.5, 0.1, 0.8]);
-        // BLEND RGB: Cc·Ct + Cf·(1 − Ct); A = Af
-        let b = run(EnvMode::Blend, B::Rgb, F, T);
-        assert_eq!(b[0], 0.25f32 * 0.9 + 0.2 * (1.0 - 0.9));
-        assert_eq!(b[3], 0.8);
-        // BLEND INTENSITY alpha: Ac·It + Af·(1 − It)
-        let bi = run(EnvMode::Blend, B::Intensity, F, T);
-        assert_eq!(bi[3], 0.125f32 * 0.9 + 0.8 * (1.0 - 0.9));
-        assert_eq!(
-            run(EnvMode::Blend, B::Alpha, F, T),
-            [0.2, 0.4, 0.6, 0.3 * 0.8]
-        );
-        // ADD saturates; INTENSITY adds alpha
-        let a = run(EnvMode::Add, B::Rgba, F, T);
-        assert_eq!(a, [1.0, 0.5f32 + 0.4, 0.1f32 + 0.6, 0.3f32 * 0.8]);
-        assert_eq!(run(EnvMode::Add, B::Intensity, F, T)[3], 1.0);
-        assert_eq!(run(EnvMode::Add, B::Luminance, F, T)[3], 0.8);
-    }
-
-    #[test]
-    fn combine_functions_and_scale() {
-        let mut env = TexEnv {
-            mode: EnvMode::Combine,
-            combine_rgb: CombineFn::Subtract,
-            combine_alpha: CombineFn::AddSigned,
-            rgb_scale: 2.0,
-            ..Default::default()
-        };
-        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
-        assert_eq!(c[0], sat((0.9f32 - 0.2) * 2.0));
-        assert_eq!(c[2], 0.0);
-        assert_eq!(c[3], sat((0.3f32 + -0.5) + 0.8));
-        env.combine_rgb = CombineFn::Dot3Rgba;
-        env.rgb_scale = 1.0;
-        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
-        let t0 = [0.9f32, 0.5, 0.1].map(|v| v * 2.0 - 1.0);
-        let t1 = [0.2f32, 0.4, 0.6].map(|v| v * 2.0 - 1.0);
-        let d = sat(t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2]);
-        assert_eq!(c, [d; 4]);
-        // crossbar source
-        env.combine_rgb = CombineFn::Replace;
-        env.source_rgb[0] = Source::TextureN(1);
-        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[[0.0; 4], [0.7; 4]]);
-        assert_eq!(c[0], 0.7);
-    }
-
-    fn add_signed_alpha(op0: Operand, op1: Operand, a: f32, rgb_scale: f32) -> f32 {
-        let env = TexEnv {
-            mode: EnvMode::Combine,
-            combine_rgb: CombineFn::Replace,
-            combine_alpha: CombineFn::AddSigned,
-            source_alpha: [Source::PrimaryColor; 3],
-            operand_alpha: [op0, op1, Operand::SrcAlpha],
-            rgb_scale,
-            ..Default::default()
-        };
-        let f = [0.2, 0.4, 0.6, a];
-        Combine::derive(&env, B::Rgba).apply(f, T, f, &[])[3]
-    }
-
-    #[test]
-    fn add_signed_reassociated_like_nir() {
-        use Operand::*;
-        // llvmpipe (c_tests/repro/combine_add_signed.c): (a, 1 − a) gives 127 for odd k
-        // in 65..127, (1 − a, a) gives 128 everywhere.
-        for k in 0..=255u32 {
-            let a = k as f32 / 255.0;
-            let q = |v: f32| (v * 255.0).round_ties_even() as u32;
-            let row0 = q(add_signed_alpha(SrcAlpha, OneMinusSrcAlpha, a, 1.0));
-            let row1 = q(add_signed_alpha(OneMinusSrcAlpha, SrcAlpha, a, 1.0));
-            let expect0 = if (65..=127).contains(&k) && k % 2 == 1 {
-                127
-            } else {
-                128
-            };
-            assert_eq!((k, row0, row1), (k, expect0, 128));
-        }
-        // (a + −0.5) + (1 − a) against the plain (a + (1 − a)) + −0.5
-        let a = 65.0f32 / 255.0;
-        assert_eq!(
-            add_signed_alpha(SrcAlpha, OneMinusSrcAlpha, a, 1.0),
-            (a + -0.5) + (1.0 - a)
-        );
-    }
-
-    #[test]
-    fn add_signed_shared_with_alpha_is_not_reassociated() {
-        let pr = (Source::PrimaryColor, Operand::SrcAlpha);
-        let tx = (Source::Texture, Operand::OneMinusSrcAlpha);
-        let mut c = Combine::derive(
-            &TexEnv {
-                mode: EnvMode::Combine,
-                combine_rgb: CombineFn::AddSigned,
-                combine_alpha: CombineFn::AddSigned,
-                ..Default::default()
-            },
-            B::Rgba,
-        );
-        c.args_rgb = [pr, tx, pr];
-        c.args_a = [tx, pr, pr];
-        c.one_vec4 = false;
-        // no scale: both sides saturate the one merged value → reassociated
-        assert_eq!(c.add_signed_reassociates(), (true, true));
-        // RGB ×2, alpha saturated: two users → left as (arg0 + arg1) − 0.5
-        c.scale_rgb = 2.0;
-        assert_eq!(c.add_signed_reassociates(), (false, false));
-        // alpha ADD of the same two scalars shares the inner sum
-        c.scale_rgb = 1.0;
-        c.mode_a = CombineFn::Add;
-        assert_eq!(c.add_signed_reassociates(), (false, false));
-        // RGB colour operands: per-channel sums, always reassociated
-        c.args_rgb[1].1 = Operand::OneMinusSrcColor;
-        assert_eq!(c.add_signed_reassociates(), (true, true));
-    }
-
-    #[test]
-    fn interpolate_one_minus_arg2_folds() {
-        let env = TexEnv {
-            mode: EnvMode::Combine,
-            combine_rgb: CombineFn::Interpolate,
-            combine_alpha: CombineFn::Interpolate,
-            source_rgb: [Source::Texture, Source::PrimaryColor, Source::Texture],
-            operand_rgb: [
-                Operand::SrcColor,
-                Operand::SrcColor,
-                Operand::OneMinusSrcAlpha,
-            ],
-            ..Default::default()
-        };
-        let c = Combine::derive(&env, B::Rgba).apply(F, T, F, &[]);
-        // 1 − (1 − x) is x itself
-        assert_eq!(c[0], 0.9f32 * (1.0 - 0.3) + 0.2 * 0.3);
-    }
-}
+mod tests;

@@ -25,6 +25,34 @@
 //! Coordinates are already divided by q (`s * (1/q)`). Returned colours are what the
 //! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.
 
+/// `[e(0), e(1), e(2), e(3)]` for `each4!(|i| e)`, written out: the four pixels of a quad
+/// without a closure. `std::array::from_fn` calls its closure, and a closure the compiler
+/// leaves out of line loses the caller's target features (its floors and fused lerps become
+/// library calls) and costs a call per pixel; expanded here, the body is inlined by
+/// construction. The values are the same either way.
+macro_rules! each4 {
+    (|$i:ident| $body:expr) => {
+        [
+            {
+                let $i = 0usize;
+                $body
+            },
+            {
+                let $i = 1usize;
+                $body
+            },
+            {
+                let $i = 2usize;
+                $body
+            },
+            {
+                let $i = 3usize;
+                $body
+            },
+        ]
+    };
+}
+
 pub mod compressed;
 pub mod cube;
 pub mod cube_seamless;

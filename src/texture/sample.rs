@@ -40,17 +40,17 @@ pub fn lerpf(fma: bool, w: f32, a: f32, b: f32) -> f32 {
 
 #[inline(always)]
 pub(crate) fn lerp8x4(a: [u8; 4], b: [u8; 4], w: i32) -> [u8; 4] {
-    std::array::from_fn(|c| lerp8(a[c], b[c], w))
+    each4!(|c| lerp8(a[c], b[c], w))
 }
 
 #[inline(always)]
 pub(crate) fn lerpfx4(fma: bool, w: f32, a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
-    std::array::from_fn(|c| lerpf(fma, w, a[c], b[c]))
+    each4!(|c| lerpf(fma, w, a[c], b[c]))
 }
 
 #[inline(always)]
 pub(crate) fn to_float(v: [u8; 4]) -> [f32; 4] {
-    v.map(|u| u as f32 * INV_255)
+    each4!(|c| v[c] as f32 * INV_255)
 }
 
 /// A texel as the float (SoA) path sees it: `u·f32(1/255)`, or through the plan's decode

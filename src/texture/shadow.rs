@@ -293,12 +293,13 @@ pub fn sample_quad(
 ) -> [[f32; 4]; 4] {
     let lod: Lod = p.quad_lod(s, t);
     let (filter, l0, l1, frac) = select_levels(p, lod);
-    std::array::from_fn(|i| {
-        let a = filter_level(p, d, p.image(l0), filter, s[i], t[i], r[i]);
+    let (img0, img1) = (p.image(l0), p.image(l1));
+    each4!(|i| {
+        let a = filter_level(p, d, img0, filter, s[i], t[i], r[i]);
         let v = if l1 == l0 {
             a
         } else {
-            let b = filter_level(p, d, p.image(l1), filter, s[i], t[i], r[i]);
+            let b = filter_level(p, d, img1, filter, s[i], t[i], r[i]);
             lerpf(p.fma, frac, a, b)
         };
         d.mode.swizzle(v)
