@@ -11,6 +11,7 @@
 
 use crate::memory::HugeBuf;
 
+pub mod samples;
 mod user;
 pub mod wide;
 
@@ -195,6 +196,9 @@ pub struct Framebuffer {
     /// The wide colour plane (empty for 8-bit buffers), row-major like `color`, which
     /// then holds its 8-bit mirror ([`wide`]).
     pub wide_color: Vec<[f32; 4]>,
+    /// A multisample object's planes 1..4 while a one-pass multisample draw runs (empty
+    /// otherwise): [`samples`].
+    pub samples: Vec<Framebuffer>,
 }
 
 impl Framebuffer {
@@ -240,6 +244,7 @@ impl Framebuffer {
             y_flip: true,
             wide: None,
             wide_color: Vec::new(),
+            samples: Vec::new(),
         }
     }
 
@@ -504,6 +509,9 @@ pub struct Target<'a> {
     pub wide: Option<WideKind>,
     /// The band's rows of the wide colour plane (empty for 8-bit buffers).
     pub wide_color: &'a mut [[f32; 4]],
+    /// The same rows of a multisample object's planes 1..4 during a one-pass multisample
+    /// draw (empty otherwise; [`samples`]).
+    pub samples: [samples::PlaneRows<'a>; samples::MORE_SAMPLES],
 }
 
 impl Framebuffer {
@@ -545,6 +553,7 @@ impl Framebuffer {
             pending_rows: &mut [],
             wide: self.wide,
             wide_color: &mut self.wide_color,
+            samples: samples::whole(&mut self.samples),
         }
     }
 
@@ -584,6 +593,7 @@ impl Framebuffer {
         let mut marks = self.pending_rows.chunks_mut(band_rows);
         let wide = self.wide;
         let mut wide_color = (wide.is_some()).then(|| self.wide_color.chunks_mut(n));
+        let mut more = samples::Bands::new(&mut self.samples, n);
         let mut out = Vec::new();
         let mut y0 = 0;
         while y0 < h {
@@ -606,6 +616,7 @@ impl Framebuffer {
                     .as_mut()
                     .and_then(|c| c.next())
                     .unwrap_or_default(),
+                samples: more.next_band(),
             });
             y0 += rows;
         }
