@@ -11,6 +11,7 @@
 
 use crate::memory::HugeBuf;
 
+pub mod samples;
 pub mod srgb;
 mod user;
 pub mod wide;
@@ -203,6 +204,9 @@ pub struct Framebuffer {
     /// are stored like RGBA8 ones; whether a draw encodes is the plan's choice
     /// (`FragPlan::srgb`).
     pub srgb: bool,
+    /// A multisample object's planes 1..4 while a one-pass multisample draw runs (empty
+    /// otherwise): [`samples`].
+    pub samples: Vec<Framebuffer>,
 }
 
 impl Framebuffer {
@@ -250,6 +254,7 @@ impl Framebuffer {
             wide_color: Vec::new(),
             wide_single: false,
             srgb: false,
+            samples: Vec::new(),
         }
     }
 
@@ -516,6 +521,9 @@ pub struct Target<'a> {
     pub wide_color: &'a mut [[f32; 4]],
     /// [`Framebuffer::wide_single`].
     pub wide_single: bool,
+    /// The same rows of a multisample object's planes 1..4 during a one-pass multisample
+    /// draw (empty otherwise; [`samples`]).
+    pub samples: [samples::PlaneRows<'a>; samples::MORE_SAMPLES],
 }
 
 impl Framebuffer {
@@ -558,6 +566,7 @@ impl Framebuffer {
             wide: self.wide,
             wide_color: &mut self.wide_color,
             wide_single: self.wide_single,
+            samples: samples::whole(&mut self.samples),
         }
     }
 
@@ -597,6 +606,7 @@ impl Framebuffer {
         let mut marks = self.pending_rows.chunks_mut(band_rows);
         let wide = self.wide;
         let mut wide_color = (wide.is_some()).then(|| self.wide_color.chunks_mut(n));
+        let mut more = samples::Bands::new(&mut self.samples, n);
         let mut out = Vec::new();
         let mut y0 = 0;
         while y0 < h {
@@ -620,6 +630,7 @@ impl Framebuffer {
                     .and_then(|c| c.next())
                     .unwrap_or_default(),
                 wide_single: self.wide_single,
+                samples: more.next_band(),
             });
             y0 += rows;
         }

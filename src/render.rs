@@ -147,7 +147,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
     let pipe = TriPipe {
         setup: match plan.ms {
-            Some(m) => SetupVariant::multisample(m.sample),
+            Some(_) => SetupVariant::all_samples(),
             None => SetupVariant::detect(),
         },
         nvary,

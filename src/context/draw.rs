@@ -1,7 +1,8 @@
 //! The state's side of a draw: flush what must be settled first, gather references to
 //! the parameter blocks into one [`DrawState`], have [`crate::plan::build`] translate them
 //! into a [`DrawPlan`], and hand that to the pipeline ([`crate::render`]). Multisample
-//! draws are one pass per sample plane.
+//! triangle draws write the four sample planes in one pass; other multisample draws are
+//! one pass per sample plane.
 
 use super::feedback::{FeedbackSink, RenderMode};
 use super::state::{Cap, State};
@@ -73,22 +74,24 @@ impl<S: ?Sized> Clone for Prims<'_, S> {
 impl<S: ?Sized> Copy for Prims<'_, S> {}
 
 /// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
-/// a 4x multisample object is one pass per sample plane ([`draw_multisample`]).
+/// a 4x multisample object goes through [`draw_multisample`].
 fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, detach: bool) {
     if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {
-        return draw_pass(ctx, prims, detach, None);
+        draw_pass(ctx, prims, detach, None);
+        return;
     }
     draw_multisample(ctx, prims);
 }
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
 ///
-/// With GL_MULTISAMPLE on, filled triangles are drawn once per sample plane, each pass
-/// rasterised at its sample point ([`crate::geometry::setup::setup_triangle_ms`]) and
-/// shaded as [`crate::fragment::MsPass`] says; a sample that glSampleCoverage's mask
-/// leaves out (`(1 << (int)(v·4)) − 1`, inverted on request) is not drawn at all. Points
-/// and lines are drawn into every plane with the single-sample rules (llvmpipe draws them
-/// as rectangles sampled at the sample points: not reproduced).
+/// With GL_MULTISAMPLE on, filled triangles are drawn once into the four sample planes
+/// ([`crate::fragment::MsPass`]: rasterised at the four sample points, shaded once per
+/// pixel, tested and written per sample); a sample that glSampleCoverage's mask
+/// (`(1 << (int)(v·4)) − 1`, inverted on request) leaves out is not drawn at all. Points,
+/// lines and triangles that take the polygon pipeline (unfilled, stippled, …) are drawn
+/// into every plane with the single-sample rules, one pass per plane (llvmpipe draws
+/// points and lines as rectangles sampled at the sample points: not reproduced).
 ///
 /// With GL_MULTISAMPLE off, llvmpipe rasterises at pixel centres, tests and writes depth
 /// and stencil of sample 0 only, and writes the colour of the fragments that pass into
@@ -118,7 +121,8 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
                 fb.stencil = own_s;
             }
         });
-        return draw_pass(ctx, prims, false, None);
+        draw_pass(ctx, prims, false, None);
+        return;
     }
     // glSampleCoverage's mask (only with GL_SAMPLE_COVERAGE on; st_atom_msaa.c).
     let mut mask = 0xF_u32;
@@ -132,34 +136,49 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
             m
         };
     }
-    let a2c = caps.get(Cap::SampleAlphaToCoverage);
     let triangles = !matches!(
         prims.mode,
         Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
     );
+    if mask == 0 {
+        return;
+    }
+    if triangles {
+        let pass = crate::fragment::MsPass {
+            mask: mask as u8,
+            alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
+        };
+        if draw_pass(ctx, prims, false, Some(pass)) {
+            return;
+        }
+    }
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
-            let pass = triangles.then(|| crate::fragment::MsPass::new(s, a2c));
-            draw_pass(c, prims, false, pass);
+            draw_pass(c, prims, false, None);
         }
     });
 }
 
-/// One pass of a draw: the whole pipeline into the framebuffer in `ctx.fb` (for a
-/// multisample pass `ms`, the plane of its sample).
+/// One pass of a draw: the whole pipeline into the framebuffer in `ctx.fb`; with `ms`,
+/// the triangles of a multisample draw into all four sample planes at once (plane 0 in
+/// `ctx.fb`, the others in `ctx.fbo.ms_planes`). Returns false only when `ms` was asked
+/// for and the draw's triangles take the polygon pipeline instead, which draws with the
+/// single-sample rules: then nothing was drawn (the caller draws each plane).
 fn draw_pass<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     prims: Prims<'_, S>,
     detach: bool,
     ms: Option<crate::fragment::MsPass>,
-) {
+) -> bool {
     // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
     ctx.settle_draws();
     crate::context::pixel_ops::bitmap_cache::flush(ctx);
-    let Some(fb) = ctx.fb.as_ref() else { return };
+    let Some(fb) = ctx.fb.as_ref() else {
+        return true;
+    };
     let n = prims.indices.map_or(prims.verts.count(), |i| i.len());
     if n == 0 {
-        return;
+        return true;
     }
     // A draw whose vertices could not all be held at once is refused with
     // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
@@ -169,11 +188,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
         .is_err()
     {
         ctx.record_error(crate::gl::error::GlError::OutOfMemory);
-        return;
+        return true;
     }
-    ctx.stats.draws += 1;
-    ctx.dirty = true;
-    ctx.fbo.drawn = true;
     let target = Target {
         height: fb.height,
         y_flip: fb.y_flip,
@@ -206,6 +222,12 @@ fn draw_pass<S: VertexSource + ?Sized>(
         ms,
     };
     let mut plan = crate::plan::build(&input);
+    if ms.is_some() && plan.frag.ms.is_none() {
+        return false;
+    }
+    ctx.stats.draws += 1;
+    ctx.dirty = true;
+    ctx.fbo.drawn = true;
     if plan.feedback {
         let mut sink = FeedbackSink {
             state: &mut ctx.feedback,
@@ -218,16 +240,27 @@ fn draw_pass<S: VertexSource + ?Sized>(
             indices,
             materials,
         } = prims;
-        return crate::render::feedback(&mut plan, mode, verts, indices, materials, &mut sink);
+        crate::render::feedback(&mut plan, mode, verts, indices, materials, &mut sink);
+        return true;
     }
     let Some(region) = region else {
-        return;
+        return true;
     };
     if !plan.frag.writes_anything() {
-        return;
+        return true;
     }
-    let Some(fb) = ctx.fb.as_mut() else { return };
+    let Some(fb) = ctx.fb.as_mut() else {
+        return true;
+    };
+    let one_pass = plan.frag.ms.is_some();
+    if one_pass {
+        // The other planes ride along with plane 0 (`Framebuffer::samples`).
+        fb.hold_samples(std::mem::take(&mut ctx.fbo.ms_planes));
+    }
     let kept = run(plan, prims, fb, region, &mut ctx.stats, detach);
+    if one_pass {
+        ctx.fbo.ms_planes = fb.release_samples();
+    }
     if ctx.state.caps.get(Cap::ColorMaterial) {
         ctx.light.sync_color_material(ctx.state.current.color);
     }
@@ -236,6 +269,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
         // the colour-material sync ran), and this draw settled everything first.
         unsafe { ctx.keep_inflight(f) };
     }
+    true
 }
 
 /// [`crate::render::run`], for a draw that settled the previous one first.

@@ -20,8 +20,9 @@
 //! `s·w·h`). The working copy of a 4x object is four [`Framebuffer`]s, one per sample:
 //! plane 0 in the context's `fb`, planes 1–3 in [`FboState::ms_planes`]. Everything that
 //! writes the draw buffer runs once per plane with that plane in `fb`
-//! (`Context::for_each_sample`): a triangle draw is one rasterizer pass per sample
-//! (`crate::fragment::MsPass`), clears and pixel rectangles write every plane.
+//! (`Context::for_each_sample`) — clears, pixel rectangles, points and lines — except
+//! filled triangles with GL_MULTISAMPLE on, drawn once into the four planes (planes 1–3
+//! lent to `fb` for the draw: `crate::fragment::MsPass`).
 //! Attachments with different sample counts are GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE.
 
 use super::{GlError, GlResult};

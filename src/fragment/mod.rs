@@ -11,6 +11,7 @@
 //! `mul(a, b) = (t + (t >> 8) + 128) >> 8`, `t = a·b`.
 
 pub mod blend;
+pub mod multisample;
 pub mod simd;
 pub mod simd_tex;
 pub mod span;
@@ -47,7 +48,7 @@ pub struct FragPlan {
     pub count_samples: bool,
     /// Antialiased lines or points: the coverage multiplied into alpha (general path).
     pub smooth: Option<crate::raster::smooth::Smooth>,
-    /// One sample's pass of a multisample triangle draw (general path only).
+    /// A one-pass 4x multisample triangle draw ([`MsPass`]).
     pub ms: Option<MsPass>,
     /// glBlendColor as floats, for blending into wide buffers ([`wide`]).
     pub blend_color: [f32; 4],
@@ -56,38 +57,37 @@ pub struct FragPlan {
     pub srgb: bool,
 }
 
-/// One pass of a 4x multisample triangle draw: the rasterizer tests this sample's point,
-/// and the span shader evaluates colour and every other attribute at the pixel centre
-/// `(x + 0.5, y + 0.5)` and depth at the sample point `(x + sx, y + sy)`, each as
+/// A 4x multisample triangle draw, rasterised once for the four samples
+/// ([`crate::raster::multisample`]) and shaded once per pixel ([`multisample`]): a pixel
+/// is shaded when any of its sample points is inside, colour and every other attribute
+/// evaluated at the pixel centre `(x + 0.5, y + 0.5)`; then each covered sample s in turn
+/// gets the alpha-to-coverage test, stencil, depth evaluated at its sample point
+/// `(x + sx, y + sy)`, blending and the write, in plane s. Each value is
 /// `fmuladd(dady, y', fmuladd(dadx, x', a0))` with `a0` at the pixel's corner (llvmpipe's
-/// `attribs_update_simple` with `coverage_samples > 1`). Colour is thus the same in every
-/// pass; depth, stencil and blending are per sample.
+/// `attribs_update_simple` with `coverage_samples > 1`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MsPass {
-    /// The sample (0..4, llvmpipe's order).
-    pub sample: usize,
-    /// The sample point inside the pixel, as fractions (x, y) of a pixel.
-    pub pos: [f32; 2],
-    /// GL_SAMPLE_ALPHA_TO_COVERAGE: the sample is kept only where the shaded (float)
-    /// alpha is above `sample · 0.25` (llvmpipe's `lp_build_sample_alpha_to_coverage`,
-    /// no dither).
+    /// The samples drawn, bit s for sample s: glSampleCoverage's mask (a sample it leaves
+    /// out is not drawn at all).
+    pub mask: u8,
+    /// GL_SAMPLE_ALPHA_TO_COVERAGE: sample s is kept only where the shaded (float) alpha
+    /// is above `s · 0.25` (llvmpipe's `lp_build_sample_alpha_to_coverage`, no dither).
     pub alpha_to_coverage: bool,
 }
 
 impl MsPass {
-    /// The pass of sample `s`.
-    pub fn new(s: usize, alpha_to_coverage: bool) -> Self {
+    /// The sample point of sample `s` (0..4, llvmpipe's order) inside the pixel, as
+    /// fractions (x, y) of a pixel (exact in f32).
+    #[inline(always)]
+    pub fn pos(s: usize) -> [f32; 2] {
         let [x, y] = crate::geometry::setup::SAMPLE_POS[s];
-        MsPass {
-            sample: s,
-            pos: [x as f32 / 256.0, y as f32 / 256.0],
-            alpha_to_coverage,
-        }
+        [x as f32 / 256.0, y as f32 / 256.0]
     }
 
-    /// The alpha the shaded alpha must exceed for this sample to be kept.
-    pub fn coverage_threshold(&self) -> f32 {
-        self.sample as f32 * 0.25
+    /// The alpha the shaded alpha must exceed for sample `s` to be kept.
+    #[inline(always)]
+    pub fn coverage_threshold(s: usize) -> f32 {
+        s as f32 * 0.25
     }
 }
 

@@ -5,6 +5,7 @@
 
 use super::blend::Lanes;
 use super::FragPlan;
+use crate::framebuffer::samples::PlaneRows;
 use crate::framebuffer::{DepthFormat, Target};
 use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::geometry::{VARY_FOG, VARY_SPEC};
@@ -460,100 +461,160 @@ fn shade_chunk_as<
 ) {
     let w = fb.width;
     let fy = py as f32;
-    let mask = plan.color_mask;
-    let full_mask = mask == [true; 4];
-    let no_color = mask == [false; 4];
-    let flat_color = t.flat_u8;
-    let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
-    let store_plain =
-        fb.format.has_alpha() && !matches!(fb.format, crate::framebuffer::ColorFormat::Rgb565);
     // Lanes that address pixels inside the row (lanes past the right edge are never live).
     let n = LANES.min(w - x);
     stats.fragments += live.iter().filter(|&&l| l).count() as u64;
     let row = (py - fb.y0) * w + x;
-    let mut fx = [0f32; LANES];
-    for (i, f) in fx.iter_mut().enumerate() {
-        *f = (x + i) as f32;
-    }
-    // A multisample pass evaluates the attributes at the pixel centre (its planes' a0 is
-    // at the corner) and depth at its sample point (integers and these offsets add
-    // exactly in f32).
-    let ms = plan.ms;
-    let (fx_z, fy_z) = match ms {
-        None => (fx, fy),
-        Some(m) => {
-            let fy_z = fy + m.pos[1];
-            for f in fx.iter_mut() {
-                *f += m.pos[0];
-            }
-            let fx_z = fx;
-            for (i, f) in fx.iter_mut().enumerate() {
-                *f = (x + i) as f32 + 0.5;
-            }
-            (fx_z, fy_z)
-        }
-    };
-    let fy = if ms.is_some() { fy + 0.5 } else { fy };
+    let fx: [f32; LANES] = std::array::from_fn(|i| (x + i) as f32);
     let mut c: Lanes = [[0u8; LANES]; 4];
     let mut cf = [[0f32; LANES]; 4];
     if FULL {
-        let cov = plan
-            .smooth
-            .map(|s| crate::raster::smooth::coverage::<M, PERSP>(t, s, &fx, fy, &mut live));
-        let cov = cov.as_ref();
-        let mut alpha = [0f32; LANES];
-        let a2c = ms.filter(|m| m.alpha_to_coverage);
-        let alpha_out = a2c.is_some().then_some(&mut alpha);
-        // A wide buffer stores the float colours ([`super::wide`]).
-        let float_out = if WIDE { Some(&mut cf) } else { None };
-        c = match source {
-            ChunkColors::Ready(c) => *c,
-            ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
-                t,
-                plan,
-                &fx,
-                fy,
-                units,
-                Some(tx),
-                cov,
-                alpha_out,
-                float_out,
-            ),
-            ChunkColors::Shaded
-                if plan.separate_specular
-                    || plan.fog.is_some()
-                    || cov.is_some()
-                    || alpha_out.is_some()
-                    || float_out.is_some() =>
-            {
-                shaded_colors::<M, FLAT, PERSP>(
-                    t, plan, &fx, fy, units, None, cov, alpha_out, float_out,
-                )
-            }
-            ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color),
+        c = chunk_colors::<M, FLAT, PERSP, WIDE>(
+            t, plan, units, source, &fx, fy, &mut live, None, &mut cf,
+        );
+        alpha_test(plan, &c, &mut live, n, stats);
+    }
+    let (format, wide, single) = (fb.format, fb.wide, fb.wide_single);
+    let mut rows = fb.plane(0);
+    let at = ChunkAt {
+        row,
+        n,
+        fx: &fx,
+        fy,
+    };
+    stencil_depth::<M, DEPTH, FULL>(t, plan, &mut rows, &at, &mut live, stats);
+    if plan.color_mask == [false; 4] || !live[..n].iter().any(|&l| l) {
+        return;
+    }
+    if !FULL {
+        c = colors::<M, FLAT, PERSP>(t, &fx, fy, t.flat_u8);
+    }
+    if WIDE && plan.srgb {
+        // sRGB writes encode, blending in linear space (the rasterizer takes the FULL path
+        // for them).
+        let dst = &mut rows.color[row..row + n];
+        stats.color_writes += super::srgb::store(plan, format.has_alpha(), dst, &live, &cf);
+        return;
+    }
+    if let (true, Some(k)) = (WIDE, wide) {
+        // Wide buffers convert, blend and store at their own precision (the rasterizer
+        // takes the FULL path for them).
+        let dst = super::wide::WideDst {
+            kind: k,
+            alpha: format.has_alpha(),
+            single,
         };
-        if let Some((func, reference)) = plan.alpha {
-            for i in 0..n {
-                if live[i] && !func.test(c[3][i], reference) {
-                    live[i] = false;
-                    stats.alpha_failed += 1;
-                }
+        stats.color_writes += super::wide::store(dst, plan, &mut rows, row, n, &live, &cf);
+        return;
+    }
+    write_colors::<FULL>(plan, format, &mut rows.color[row..row + n], c, &live, stats);
+}
+
+/// Where a chunk's per-sample operations work: its first pixel's index `row` in the
+/// band's rows, the `n` lanes inside the row, and the coordinates its depth is
+/// evaluated at (lane x, row y).
+pub(crate) struct ChunkAt<'a> {
+    /// Index of the chunk's first pixel in the band's rows.
+    pub row: usize,
+    /// Lanes inside the row.
+    pub n: usize,
+    /// Depth's x per lane.
+    pub fx: &'a [f32; LANES],
+    /// Depth's y.
+    pub fy: f32,
+}
+
+/// The colours of a chunk on the `FULL` path, from `source`, at pixel coordinates
+/// (`fx`, `fy`); antialiasing coverage (smooth lines and points) clears the lanes it
+/// leaves out of `live`. With `alpha_out` the final float alpha of each lane is kept,
+/// with `WIDE` the float colours in `cf`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn chunk_colors<M: Madd, const FLAT: bool, const PERSP: bool, const WIDE: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    source: ChunkColors<'_>,
+    fx: &[f32; LANES],
+    fy: f32,
+    live: &mut [bool; LANES],
+    alpha_out: Option<&mut [f32; LANES]>,
+    cf: &mut [[f32; LANES]; 4],
+) -> Lanes {
+    let cov = plan
+        .smooth
+        .map(|s| crate::raster::smooth::coverage::<M, PERSP>(t, s, fx, fy, live));
+    let cov = cov.as_ref();
+    // A wide buffer stores the float colours ([`super::wide`]).
+    let float_out = if WIDE { Some(cf) } else { None };
+    match source {
+        ChunkColors::Ready(c) => *c,
+        ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
+            t,
+            plan,
+            fx,
+            fy,
+            units,
+            Some(tx),
+            cov,
+            alpha_out,
+            float_out,
+        ),
+        ChunkColors::Shaded
+            if plan.separate_specular
+                || plan.fog.is_some()
+                || cov.is_some()
+                || alpha_out.is_some()
+                || float_out.is_some() =>
+        {
+            shaded_colors::<M, FLAT, PERSP>(t, plan, fx, fy, units, None, cov, alpha_out, float_out)
+        }
+        ChunkColors::Shaded => colors::<M, FLAT, PERSP>(t, fx, fy, t.flat_u8),
+    }
+}
+
+/// The alpha test on the 8-bit colours `c`: clears the live lanes (of the `n` inside the
+/// row) that fail.
+#[inline(always)]
+pub(crate) fn alpha_test(
+    plan: &FragPlan,
+    c: &Lanes,
+    live: &mut [bool; LANES],
+    n: usize,
+    stats: &mut Stats,
+) {
+    if let Some((func, reference)) = plan.alpha {
+        for i in 0..n {
+            if live[i] && !func.test(c[3][i], reference) {
+                live[i] = false;
+                stats.alpha_failed += 1;
             }
         }
-        if let Some(m) = a2c {
-            let threshold = m.coverage_threshold();
-            for i in 0..n {
-                // NaN alpha keeps no sample, as the ordered compare.
-                live[i] &= alpha[i] > threshold;
-            }
-        }
+    }
+}
+
+/// The stencil and depth tests of the chunk `at` in `rows` (depth evaluated at `at`'s
+/// coordinates) with their updates, and the occlusion count: clears the lanes that fail.
+/// Without `FULL` only the depth test (no stencil, no count).
+#[inline(always)]
+pub(crate) fn stencil_depth<M: Madd, const DEPTH: bool, const FULL: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    rows: &mut PlaneRows<'_>,
+    at: &ChunkAt<'_>,
+    live: &mut [bool; LANES],
+    stats: &mut Stats,
+) {
+    let (row, n) = (at.row, at.n);
+    let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
+    if FULL {
         if let Some(sp) = &stencil {
             for i in 0..n {
                 if live[i] {
                     stats.stencil_reads += 1;
-                    let s = fb.stencil[row + i];
+                    let s = rows.stencil[row + i];
                     if !sp.test(s) {
-                        fb.stencil[row + i] = sp.update(sp.fail, s);
+                        rows.stencil[row + i] = sp.update(sp.fail, s);
                         live[i] = false;
                         stats.stencil_failed += 1;
                     }
@@ -565,9 +626,9 @@ fn shade_chunk_as<
         let d = plan.depth.expect("DEPTH implies a depth plan");
         let mut q = [0u32; LANES];
         for i in 0..LANES {
-            q[i] = quantize_depth(d.format, eval::<M>(&t.z, fx_z[i], fy_z));
+            q[i] = quantize_depth(d.format, eval::<M>(&t.z, at.fx[i], at.fy));
         }
-        let dst = &mut fb.depth[row..row + n];
+        let dst = &mut rows.depth[row..row + n];
         for i in 0..n {
             if !live[i] {
                 continue;
@@ -582,8 +643,8 @@ fn shade_chunk_as<
                 stats.depth_failed += 1;
                 if FULL {
                     if let Some(sp) = &stencil {
-                        let s = fb.stencil[row + i];
-                        fb.stencil[row + i] = sp.update(sp.zfail, s);
+                        let s = rows.stencil[row + i];
+                        rows.stencil[row + i] = sp.update(sp.zfail, s);
                     }
                 }
             }
@@ -593,8 +654,8 @@ fn shade_chunk_as<
         if let Some(sp) = &stencil {
             for i in 0..n {
                 if live[i] {
-                    let s = fb.stencil[row + i];
-                    fb.stencil[row + i] = sp.update(sp.zpass, s);
+                    let s = rows.stencil[row + i];
+                    rows.stencil[row + i] = sp.update(sp.zpass, s);
                 }
             }
         }
@@ -602,25 +663,25 @@ fn shade_chunk_as<
     if FULL && plan.count_samples {
         stats.samples_passed += live[..n].iter().filter(|&&l| l).count() as u64;
     }
-    if no_color || !live[..n].iter().any(|&l| l) {
-        return;
-    }
-    if !FULL {
-        c = colors::<M, FLAT, PERSP>(t, &fx, fy, flat_color);
-    }
-    if WIDE && plan.srgb {
-        // sRGB writes encode, blending in linear space (the rasterizer takes the FULL path
-        // for them).
-        stats.color_writes += super::srgb::store(plan, fb, row, n, &live, &cf);
-        return;
-    }
-    if let (true, Some(k)) = (WIDE, fb.wide) {
-        // Wide buffers convert, blend and store at their own precision (the rasterizer
-        // takes the FULL path for them).
-        stats.color_writes += super::wide::store(k, plan, fb, row, n, &live, &cf);
-        return;
-    }
-    let dst = &mut fb.color[row..row + n];
+}
+
+/// Blends (or applies the logic op to) the 8-bit colours `c` with `dst` (the chunk's
+/// pixels inside the row) and writes the live lanes through the colour mask, in the
+/// buffer's `format`.
+#[inline(always)]
+pub(crate) fn write_colors<const FULL: bool>(
+    plan: &FragPlan,
+    format: crate::framebuffer::ColorFormat,
+    dst: &mut [[u8; 4]],
+    mut c: Lanes,
+    live: &[bool; LANES],
+    stats: &mut Stats,
+) {
+    let n = dst.len();
+    let mask = plan.color_mask;
+    let full_mask = mask == [true; 4];
+    let store_plain =
+        format.has_alpha() && !matches!(format, crate::framebuffer::ColorFormat::Rgb565);
     if FULL && (plan.blend.is_some() || plan.logic.is_some()) {
         let mut d: Lanes = [[0u8; LANES]; 4];
         for i in 0..n {
@@ -645,7 +706,7 @@ fn shade_chunk_as<
         }
         let mut v = [c[0][i], c[1][i], c[2][i], c[3][i]];
         if !store_plain {
-            v = fb.format.store_rgba8(v);
+            v = format.store_rgba8(v);
         }
         if full_mask {
             dst[i] = v;

@@ -11,7 +11,7 @@
 use super::span::LANES;
 use super::wide::{equation_f, factor_f, per_channel};
 use super::{BlendPlan, FragPlan};
-use crate::framebuffer::{srgb, Target};
+use crate::framebuffer::srgb;
 use crate::pipe::BlendEquation;
 
 /// Clamps to [0, 1], NaN to 0 (`lp_build_clamp_zero_one_nanzero`).
@@ -25,31 +25,28 @@ fn clamp01(v: f32) -> f32 {
     }
 }
 
-/// Writes the live lanes of the chunk at `row` (`n` pixels inside the row) of an sRGB
-/// target with the shader colours `cf` (`[channel][lane]`): blending in linear space,
+/// Writes the live lanes of the chunk `dst` (its pixels inside the row) of an sRGB
+/// target, whose format has alpha if `alpha`, with the shader colours `cf` (`[channel][lane]`): blending in linear space,
 /// encoding and the colour mask. The logic op is ignored, as llvmpipe's float blend type
 /// ignores it. Returns the number of pixels written.
 #[inline(never)]
 pub fn store(
     plan: &FragPlan,
-    fb: &mut Target<'_>,
-    row: usize,
-    n: usize,
+    alpha: bool,
+    dst: &mut [[u8; 4]],
     live: &[bool; LANES],
     cf: &[[f32; LANES]; 4],
 ) -> u64 {
-    let alpha = fb.format.has_alpha();
     let mask = plan.color_mask;
     let table = srgb::table(plan.fma);
     let kc = plan.blend_color.map(clamp01);
     let mut written = 0;
-    for i in 0..n {
+    for (i, px) in dst.iter_mut().enumerate() {
         if !live[i] {
             continue;
         }
-        let j = row + i;
         let src = [cf[0][i], cf[1][i], cf[2][i], cf[3][i]].map(clamp01);
-        let d8 = fb.color[j];
+        let d8 = *px;
         let mut v = match &plan.blend {
             Some(b) => {
                 let d = [
@@ -70,7 +67,7 @@ pub fn store(
                 v[c] = d8[c];
             }
         }
-        fb.color[j] = v;
+        *px = v;
         written += 1;
     }
     written

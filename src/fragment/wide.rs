@@ -8,24 +8,43 @@
 
 use super::span::LANES;
 use super::{BlendPlan, FragPlan};
+use crate::framebuffer::samples::PlaneRows;
 use crate::framebuffer::wide::unorm16;
-use crate::framebuffer::{Target, WideKind};
+use crate::framebuffer::WideKind;
 use crate::pipe::{BlendEquation, BlendFactor};
 
-/// Writes the live lanes of the chunk at `row` (`n` pixels inside the row) of a wide
-/// target with the shader colours `cf` (`[channel][lane]`): conversion, blending or
-/// logic op, colour mask, and the 8-bit mirror. Returns the number of pixels written.
+/// How a wide plane stores: its precision, whether it has alpha, and whether it is an
+/// image of one channel (blended with llvmpipe's single-channel rules).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WideDst {
+    /// The precision.
+    pub kind: WideKind,
+    /// The buffer has alpha.
+    pub alpha: bool,
+    /// [`crate::framebuffer::Framebuffer::wide_single`].
+    pub single: bool,
+}
+
+/// Writes the live lanes of the chunk at `row` (`n` pixels inside the row) of the rows
+/// `fb` of a wide plane stored as `dst` says with the shader colours
+/// `cf` (`[channel][lane]`): conversion, blending or logic op, colour mask, and the 8-bit
+/// mirror. Returns the number of pixels written.
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 pub fn store(
-    k: WideKind,
+    dst: WideDst,
     plan: &FragPlan,
-    fb: &mut Target<'_>,
+    fb: &mut PlaneRows<'_>,
     row: usize,
     n: usize,
     live: &[bool; LANES],
     cf: &[[f32; LANES]; 4],
 ) -> u64 {
-    let alpha = fb.format.has_alpha();
+    let WideDst {
+        kind: k,
+        alpha,
+        single,
+    } = dst;
     let mask = plan.color_mask;
     let mut written = 0;
     for i in 0..n {
@@ -34,10 +53,10 @@ pub fn store(
         }
         let j = row + i;
         let src = [cf[0][i], cf[1][i], cf[2][i], cf[3][i]];
-        let d = fb.wide_at(j);
+        let d = fb.wide_at(k, j);
         let mut v = match (&plan.blend, plan.logic) {
             (Some(b), _) if k.is_float() => {
-                blend_float(k, b, plan.blend_color, src, d, fb.wide_single, plan.fma)
+                blend_float(k, b, plan.blend_color, src, d, single, plan.fma)
             }
             (Some(b), _) => blend(k, b, plan.blend_color, src, d),
             (None, Some(op)) if k == WideKind::Unorm16 => {

@@ -7,7 +7,7 @@
 //! paths that only know 8-bit colour (pixel rectangles, accumulation, copies) keep writing
 //! the 8-bit plane; a pixel whose 8-bit value no longer is the mirror of its wide value
 //! was last written by one of them, and reads as that 8-bit value
-//! ([`super::Framebuffer::wide_at`]).
+//! ([`super::Framebuffer::wide_at`], [`super::samples::PlaneRows::wide_at`]).
 
 use super::float_to_ubyte;
 
@@ -149,21 +149,6 @@ pub fn f16_round(x: f32) -> f32 {
     };
     // Exact: `a / step` is a power-of-two scaling, and its truncation is the half's.
     ((a / step).trunc() * step).copysign(x)
-}
-
-impl super::Target<'_> {
-    /// Stored wide colour of pixel `j` of the band (its recorded clears written): as
-    /// [`super::Framebuffer::wide_at`].
-    #[inline]
-    pub fn wide_at(&self, j: usize) -> [f32; 4] {
-        let k = self.wide.expect("a wide target");
-        let (w, c8) = (self.wide_color[j], self.color[j]);
-        if k.mirror(w) == c8 {
-            w
-        } else {
-            k.from_u8(c8)
-        }
-    }
 }
 
 #[cfg(test)]

@@ -43,6 +43,17 @@ pub struct Edge {
 }
 
 impl Edge {
+    /// The edge of sample `s` of [`SAMPLE_POS`] from the edge of test point (0, 0) (the
+    /// pixel's corner) of a multisample set-up ([`setup_triangle_samples`]).
+    #[inline(always)]
+    pub fn at_sample(self, s: usize) -> Edge {
+        let [sx, sy] = SAMPLE_POS[s];
+        Edge {
+            c: self.c - self.a * sx + self.b * sy,
+            ..self
+        }
+    }
+
     /// The range of pixel x on row `py` where this edge is positive, as (min, max) with
     /// `i64::MIN`/`i64::MAX` for "unbounded"; `None` when no pixel on the row qualifies.
     #[inline]
@@ -99,28 +110,7 @@ impl SetupTriangle {
     /// by one (three integer steps per pixel, no branch per pixel).
     #[inline(always)]
     pub fn row_mask(&self, x0: i64, x1: i64, py: i64) -> u32 {
-        // Written out rather than `self.edges.map(..)`: in the rasterizer's large
-        // specialised functions LLVM left `map` out of line, a call per row whose result
-        // came back through the stack.
-        let [e0, e1, e2] = &self.edges;
-        let e = [
-            e0.c + e0.b * ONE * py - e0.a * ONE * x0,
-            e1.c + e1.b * ONE * py - e1.a * ONE * x0,
-            e2.c + e2.b * ONE * py - e2.a * ONE * x0,
-        ];
-        let s = [e0.a * ONE, e1.a * ONE, e2.a * ONE];
-        let n = x1 - x0;
-        if n < 0 {
-            return 0;
-        }
-        let mut mask = 0u32;
-        let mut ek = e;
-        // At most NARROW pixels; no early exit, so the only branch is the box width.
-        for k in 0..=(n as u32).min(NARROW as u32 - 1) {
-            mask |= (((ek[0] > 0) & (ek[1] > 0) & (ek[2] > 0)) as u32) << k;
-            ek = [ek[0] - s[0], ek[1] - s[1], ek[2] - s[2]];
-        }
-        mask
+        row_mask(&self.edges, x0, x1, py)
     }
 
     /// The covered pixels of row `py` between columns `x0` and `x1` (inclusive), as
@@ -128,31 +118,64 @@ impl SetupTriangle {
     /// the three edges' [`Edge::span`]s.
     #[inline(always)]
     pub fn row_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
-        if x1 - x0 < NARROW {
-            // The covered pixels of a row are consecutive, so the lowest and highest bits
-            // of the row's mask are the span's ends.
-            let mask = self.row_mask(x0, x1, py);
-            if mask == 0 {
-                return None;
-            }
-            let first = mask.trailing_zeros() as i64;
-            let last = 31 - mask.leading_zeros() as i64;
-            return Some((x0 + first, x0 + last));
-        }
-        self.divided_span(x0, x1, py)
+        row_span(&self.edges, x0, x1, py)
     }
+}
 
-    /// [`SetupTriangle::row_span`] by the three edges' divisions, intersected.
-    #[inline(always)]
-    fn divided_span(&self, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
-        let (mut lo, mut hi) = (x0, x1);
-        for e in &self.edges {
-            let (a, z) = e.span(py)?;
-            lo = lo.max(a);
-            hi = hi.min(z);
-        }
-        (lo <= hi).then_some((lo, hi))
+/// [`SetupTriangle::row_mask`] of a triangle with `edges`.
+#[inline(always)]
+pub fn row_mask(edges: &[Edge; 3], x0: i64, x1: i64, py: i64) -> u32 {
+    // Written out rather than `edges.map(..)`: in the rasterizer's large
+    // specialised functions LLVM left `map` out of line, a call per row whose result
+    // came back through the stack.
+    let [e0, e1, e2] = edges;
+    let e = [
+        e0.c + e0.b * ONE * py - e0.a * ONE * x0,
+        e1.c + e1.b * ONE * py - e1.a * ONE * x0,
+        e2.c + e2.b * ONE * py - e2.a * ONE * x0,
+    ];
+    let s = [e0.a * ONE, e1.a * ONE, e2.a * ONE];
+    let n = x1 - x0;
+    if n < 0 {
+        return 0;
     }
+    let mut mask = 0u32;
+    let mut ek = e;
+    // At most NARROW pixels; no early exit, so the only branch is the box width.
+    for k in 0..=(n as u32).min(NARROW as u32 - 1) {
+        mask |= (((ek[0] > 0) & (ek[1] > 0) & (ek[2] > 0)) as u32) << k;
+        ek = [ek[0] - s[0], ek[1] - s[1], ek[2] - s[2]];
+    }
+    mask
+}
+
+/// [`SetupTriangle::row_span`] of a triangle with `edges`.
+#[inline(always)]
+pub fn row_span(edges: &[Edge; 3], x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
+    if x1 - x0 < NARROW {
+        // The covered pixels of a row are consecutive, so the lowest and highest bits
+        // of the row's mask are the span's ends.
+        let mask = row_mask(edges, x0, x1, py);
+        if mask == 0 {
+            return None;
+        }
+        let first = mask.trailing_zeros() as i64;
+        let last = 31 - mask.leading_zeros() as i64;
+        return Some((x0 + first, x0 + last));
+    }
+    divided_span(edges, x0, x1, py)
+}
+
+/// [`row_span`] by the three edges' divisions, intersected.
+#[inline(always)]
+fn divided_span(edges: &[Edge; 3], x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
+    let (mut lo, mut hi) = (x0, x1);
+    for e in edges {
+        let (a, z) = e.span(py)?;
+        lo = lo.max(a);
+        hi = hi.min(z);
+    }
+    (lo <= hi).then_some((lo, hi))
 }
 
 /// A set-up triangle, ready for the rasterizer.
@@ -255,7 +278,7 @@ pub fn setup_triangle(
     back: Option<usize>,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_inner(v, nvary, cull, back, (true, false), None, fill)
+    setup_inner(v, nvary, cull, back, (true, false), Snap::Centre, fill)
 }
 
 /// Defines a copy of [`setup_triangle_shaded`] with the given attributes (and `unsafe`
@@ -264,7 +287,7 @@ macro_rules! shaded_copy {
     ($(#[$attr:meta])* $vis:vis $name:ident $($unsafe:tt)?) => {
         $(#[$attr])*
         $vis $($unsafe)? fn $name(v: [&ClipVertex; 3], nvary: usize, cull: CullMode, back: Option<usize>, flat: bool, fill: &mut SetupTriangle) -> SetupResult {
-            setup_inner(v, nvary, cull, back, (flat, true), None, fill)
+            setup_inner(v, nvary, cull, back, (flat, true), Snap::Centre, fill)
         }
     };
 }
@@ -294,8 +317,9 @@ shaded_copy!(
 pub struct SetupVariant {
     /// Run the AVX2 copy (only ever true on a CPU that has AVX2).
     avx2: bool,
-    /// A multisample pass: set up for this sample of [`SAMPLE_POS`] ([`setup_triangle_ms`]).
-    sample: Option<usize>,
+    /// A multisample draw: set up for every sample of [`SAMPLE_POS`]
+    /// ([`setup_triangle_samples`]).
+    samples: bool,
 }
 
 impl SetupVariant {
@@ -303,16 +327,16 @@ impl SetupVariant {
     pub fn detect() -> Self {
         SetupVariant {
             avx2: crate::cpu::isa().avx2(),
-            sample: None,
+            samples: false,
         }
     }
 
-    /// The set-up of one pass of a multisample draw: sample `s` of [`SAMPLE_POS`], through
-    /// [`setup_triangle_ms`] (never the AVX2 copies).
-    pub fn multisample(s: usize) -> Self {
+    /// The set-up of a multisample draw: every sample of [`SAMPLE_POS`] at once, through
+    /// [`setup_triangle_samples`] (never the AVX2 copies).
+    pub fn all_samples() -> Self {
         SetupVariant {
             avx2: false,
-            sample: Some(s),
+            samples: true,
         }
     }
 
@@ -326,7 +350,7 @@ impl SetupVariant {
     pub fn baseline() -> Self {
         SetupVariant {
             avx2: false,
-            sample: None,
+            samples: false,
         }
     }
 
@@ -341,8 +365,8 @@ impl SetupVariant {
         flat: bool,
         fill: &mut SetupTriangle,
     ) -> SetupResult {
-        if let Some(s) = self.sample {
-            return setup_triangle_ms(v, nvary, cull, back, flat, s, fill);
+        if self.samples {
+            return setup_triangle_samples(v, nvary, cull, back, flat, fill);
         }
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
@@ -354,32 +378,39 @@ impl SetupVariant {
     }
 }
 
-/// [`setup_triangle_shaded`] for pass `sample` of a 4x multisample draw, as llvmpipe sets
-/// up with `setup->multisample`: positions snapped as `round_half_even(256·v)` (no −0.5
-/// pixel offset), then moved by −[`SAMPLE_POS`]`[sample]`, so that the rasterizer's
-/// integer "pixel centre" test is the edge test at that sample point (llvmpipe's
-/// `c + (sy·dcdy − sx·dcdx) >> 8`, the same edges and tie rule); the plane equations'
-/// `a0` is the value at pixel (0,0)'s corner (`pixel_center = 0`): the span shader adds
-/// 0.5 (attributes) or the sample position (depth) to the pixel's coordinates.
-pub fn setup_triangle_ms(
+/// [`setup_triangle_shaded`] for a 4x multisample draw, every sample at once, as llvmpipe
+/// sets up with `setup->multisample`: positions snapped as `round_half_even(256·v)` (no
+/// −0.5 pixel offset), so that the integer test point of pixel (px, py) is its corner
+/// (256·px, 256·py). llvmpipe tests sample s at `c + (sy·dcdy − sx·dcdx) >> 8`, the edge
+/// moved to the sample point with the same tie rule: [`Edge::at_sample`] gives those
+/// edges (moving the vertices by −[`SAMPLE_POS`]`[s]` changes only each edge's `c`, by
+/// `−a·sx + b·sy`), and the box is the union of the four samples' boxes. The plane
+/// equations' `a0` is the value at pixel (0,0)'s corner (`pixel_center = 0`): the shader
+/// adds 0.5 (attributes) or the sample position (depth) to the pixel's coordinates. The
+/// planes come from the unsnapped positions, the same for every sample.
+pub fn setup_triangle_samples(
     v: [&ClipVertex; 3],
     nvary: usize,
     cull: CullMode,
     back: Option<usize>,
     flat: bool,
-    sample: usize,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
-    setup_inner(
-        v,
-        nvary,
-        cull,
-        back,
-        (flat, true),
-        Some(SAMPLE_POS[sample]),
-        fill,
-    )
+    setup_inner(v, nvary, cull, back, (flat, true), Snap::Samples, fill)
 }
+
+/// Where setup puts the rasterizer's integer test point of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Snap {
+    /// The pixel's centre (single-sample rasterization).
+    Centre,
+    /// Every sample point ([`setup_triangle_samples`]).
+    Samples,
+}
+
+/// The smallest and largest coordinate of the sample points of [`SAMPLE_POS`] on either
+/// axis.
+const SAMPLE_SPAN: [i64; 2] = [32, 224];
 
 /// Setup; `(flat, skip_empty)` as [`setup_triangle_shaded`]'s `flat` and whether an empty
 /// triangle is reported as `Empty`.
@@ -390,7 +421,7 @@ fn setup_inner(
     cull: CullMode,
     back: Option<usize>,
     (flat, skip_empty): (bool, bool),
-    sample: Option<[i64; 2]>,
+    snap: Snap,
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     // The six coordinates as lanes (x0 y0 x1 y1, x2 y2), checked and snapped without a
@@ -402,9 +433,9 @@ fn setup_inner(
     if !ok {
         return SetupResult::Degenerate;
     }
-    let (lo, hi) = match sample {
-        None => (snap4(lo), snap4(hi)),
-        Some(_) => (snap4_ms(lo), snap4_ms(hi)),
+    let (lo, hi) = match snap {
+        Snap::Centre => (snap4(lo), snap4(hi)),
+        Snap::Samples => (snap4_ms(lo), snap4_ms(hi)),
     };
     let (mut p0, mut p1, p2) = (v[0], v[1], v[2]);
     // One `cvttss2si` each: `as` adds the saturation of NaN and out-of-range values (five
@@ -414,11 +445,6 @@ fn setup_inner(
     let [x0, y0, x1, y1] = lo.map(|c| unsafe { c.to_int_unchecked::<i64>() });
     // SAFETY: as above.
     let [x2, y2] = [hi[0], hi[1]].map(|c| unsafe { c.to_int_unchecked::<i64>() });
-    // A multisample pass moves the sample point to the rasterizer's integer test point.
-    let ([x0, x1, x2], [y0, y1, y2]) = match sample {
-        None => ([x0, x1, x2], [y0, y1, y2]),
-        Some([sx, sy]) => ([x0 - sx, x1 - sx, x2 - sx], [y0 - sy, y1 - sy, y2 - sy]),
-    };
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     if area == 0 {
         return SetupResult::Degenerate;
@@ -450,7 +476,7 @@ fn setup_inner(
         [y0, y1, y2],
         ccw,
         (front, cull.top_left),
-        (nvary, flat, skip_empty, sample.is_none()),
+        (nvary, flat, skip_empty, snap),
         fill,
     )
 }
@@ -546,7 +572,7 @@ fn setup_rest<'v>(
     ys: [i64; 3],
     ccw: bool,
     (front, top_left): (bool, bool),
-    (nvary, flat, skip_empty, centre): (usize, bool, bool, bool),
+    (nvary, flat, skip_empty, snap): (usize, bool, bool, Snap),
     fill: &mut SetupTriangle,
 ) -> SetupResult {
     let ([mut x0, mut x1, x2], [mut y0, mut y1, y2]) = (xs, ys);
@@ -575,13 +601,24 @@ fn setup_rest<'v>(
     let maxx = x0.max(x1).max(x2);
     let miny = y0.min(y1).min(y2);
     let maxy = y0.max(y1).max(y2);
+    // The pixels whose test point may lie inside; for all four samples the union of
+    // their boxes (sample s's box is this one's with the vertices moved by −its offset,
+    // and the offsets span 32..=224 on both axes).
+    let (lo_off, hi_off) = match snap {
+        Snap::Samples => (SAMPLE_SPAN[1], SAMPLE_SPAN[0]),
+        Snap::Centre => (0, 0),
+    };
     let bbox = [
-        (minx + ONE - 1).div_euclid(ONE),
-        (miny + ONE - 1).div_euclid(ONE),
-        maxx.div_euclid(ONE),
-        maxy.div_euclid(ONE),
+        (minx - lo_off + ONE - 1).div_euclid(ONE),
+        (miny - lo_off + ONE - 1).div_euclid(ONE),
+        (maxx - hi_off).div_euclid(ONE),
+        (maxy - hi_off).div_euclid(ONE),
     ];
-    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3] || !tiny_box_covered(&edges, bbox)) {
+    if skip_empty && (bbox[0] > bbox[2] || bbox[1] > bbox[3]) {
+        return SetupResult::Empty;
+    }
+    // (The tiny-box test knows one test point per pixel.)
+    if skip_empty && snap == Snap::Centre && !tiny_box_covered(&edges, bbox) {
         return SetupResult::Empty;
     }
 
@@ -590,7 +627,7 @@ fn setup_rest<'v>(
     let (fx1, fy1) = (p1.win[0], p1.win[1]);
     let (fx2, fy2) = (p2.win[0], p2.win[1]);
     // a0 at pixel (0,0)'s centre, or (multisample) at its corner.
-    let half = if centre { 0.5f32 } else { 0.0 };
+    let half = if snap == Snap::Centre { 0.5f32 } else { 0.0 };
     let x0c = fx0 - half;
     let y0c = fy0 - half;
     let dx01 = fx0 - fx1;

@@ -155,7 +155,7 @@ impl XorShift {
 
 /// The reference for `row_span`: the three edges' divisions, intersected.
 fn reference_span(t: &SetupTriangle, x0: i64, x1: i64, py: i64) -> Option<(i64, i64)> {
-    t.divided_span(x0, x1, py)
+    divided_span(&t.edges, x0, x1, py)
 }
 
 #[test]

@@ -20,6 +20,7 @@ use crate::texture::UnitPlan;
 
 pub mod batch;
 pub mod lines;
+pub mod multisample;
 pub mod prim_tex;
 pub mod prims;
 pub mod smooth;
@@ -90,14 +91,19 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
         return false;
     }
     if d.plan.ms.is_some() {
-        // A multisample pass takes the general walks of the scalar levels only (the SIMD
-        // span shaders know no sample offsets); FMA still follows the CPU, as llvmpipe's.
-        // SAFETY: `Fma` runs only when `cpu::isa` reports FMA.
+        // A one-pass multisample draw: its own walk, in the CPU's level (the walks of a
+        // level fuse as llvmpipe does on that CPU).
+        // SAFETY: (all four) `cpu::isa` only reports features the CPU has, and each arm
+        // runs that level's walks.
         unsafe {
             match crate::cpu::isa() {
                 #[cfg(target_arch = "x86_64")]
-                Isa::Fma | Isa::Avx2Fma => raster_rows::<variants::Fma>(t, b, d),
-                _ => raster_rows::<variants::Base>(t, b, d),
+                Isa::Avx2Fma => multisample::triangle::<variants::Avx2Fma>(t, b, d),
+                #[cfg(target_arch = "x86_64")]
+                Isa::Avx2 => multisample::triangle::<variants::Avx2>(t, b, d),
+                #[cfg(target_arch = "x86_64")]
+                Isa::Fma => multisample::triangle::<variants::Fma>(t, b, d),
+                _ => multisample::triangle::<variants::Base>(t, b, d),
             }
         }
         return true;
@@ -322,7 +328,7 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     // Wide buffers and sRGB writes take the general per-fragment path (`fragment::wide`,
     // `fragment::srgb`).
     let wide = fb.wide.is_some() || plan.srgb;
-    if let Some(env) = textured::fast_env(plan, units).filter(|_| plan.ms.is_none() && !wide) {
+    if let Some(env) = textured::fast_env(plan, units).filter(|_| !wide) {
         let u = &units[0];
         with_flags!((depth, plan.flat, t.persp), |D, F, P| {
             // SAFETY: forwarded from the caller.
@@ -391,12 +397,7 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    for mut c in textured::Chunks::new(t, b) {
-        // A multisample pass samples at the pixel centres (see `FragPlan::ms`).
-        if plan.ms.is_some() {
-            c.fx = c.fx.map(|v| v + 0.5);
-            c.fy = c.fy.map(|v| v + 0.5);
-        }
+    for c in textured::Chunks::new(t, b) {
         sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
         shade_chunk_rows::<M, DEPTH, FLAT, PERSP>(t, plan, units, &texels, fb, &c, stats);
     }

@@ -1,0 +1,153 @@
+//! The row walk of a one-pass 4x multisample triangle draw ([`crate::fragment::MsPass`]):
+//! each pixel's coverage by the four sample points, then the shader of
+//! [`crate::fragment::multisample`] once per chunk of pixels where any sample is covered.
+//!
+//! The triangle comes from [`crate::geometry::setup::setup_triangle_samples`]: its edges
+//! are those of test point (0, 0) and its box the union of the samples' boxes. Sample s's
+//! edges ([`Edge::at_sample`]) are exactly those a per-sample set-up makes, and each row's
+//! covered pixels come from them through the same [`row_span`] as a single-sample walk, so
+//! the coverage of every sample is what the rasterizer of a pass of that sample finds.
+//! Rows go in pairs and chunks start at even columns, as the textured walk's, so that a
+//! 2x2 quad (aligned to even coordinates) is sampled whole, with its level of detail
+//! from its own texture coordinates (evaluated on the planes for every pixel, covered or
+//! not): a quad gets the same texels as in a pass that covers any of its pixels.
+
+use super::textured::Chunk;
+use super::{sample_chunk, Draw};
+use crate::fragment::multisample::{shade_chunk_ms, SAMPLES};
+use crate::fragment::span::{ChunkColors, Madd, TexLanes, LANES};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::setup::{row_span, Edge, SetupTriangle};
+use crate::pipe::MAX_TEXTURE_UNITS;
+use crate::stats::Stats;
+use crate::texture::UnitPlan;
+
+use super::variants::{with_flags, Walks};
+
+/// Rasterizes `t` (set up for every sample) in box `b` with the walks of level `W`.
+///
+/// # Safety
+/// `W`'s instruction set is the CPU's ([`Walks`]).
+#[inline(always)]
+pub(super) unsafe fn triangle<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
+    let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
+    let depth = plan.depth.is_some();
+    // As the single-sample walks: flat colours need no divide unless something else
+    // interpolated does (fog, texture coordinates).
+    let persp =
+        t.persp && (!units.is_empty() || !plan.flat || plan.fog.is_some() || plan.smooth.is_some());
+    with_flags!((depth, plan.flat, persp), |D, F, P| {
+        // SAFETY: forwarded from the caller.
+        unsafe { W::multisample::<D, F, P>(t, b, plan, units, fb, stats) }
+    })
+}
+
+/// The walk of [`triangle`]'s variant (8-bit or wide target).
+#[inline(always)]
+pub(crate) fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    if fb.wide.is_some() || plan.srgb {
+        rows_wide::<M, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+    } else {
+        rows_as::<M, DEPTH, FLAT, PERSP, false>(t, b, plan, units, fb, stats)
+    }
+}
+
+/// [`rows`] into a wide target, out of line as the single-sample wide shader.
+#[inline(never)]
+fn rows_wide<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    rows_as::<M, DEPTH, FLAT, PERSP, true>(t, b, plan, units, fb, stats)
+}
+
+/// [`rows`]' body.
+#[inline(always)]
+fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const WIDE: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let edges: [[Edge; 3]; SAMPLES] = std::array::from_fn(|s| t.edges.map(|e| e.at_sample(s)));
+    // Texel values of the current chunk (lanes of quads not sampled keep stale values,
+    // never used), as in the textured walk.
+    let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+    let mut qy = b[1] & !1;
+    while qy <= b[3] {
+        // Each sample's covered pixels of the two rows, and their union's extent.
+        let mut spans = [[None; SAMPLES]; 2];
+        let (mut lo, mut hi) = (i64::MAX, i64::MIN);
+        for (r, row) in spans.iter_mut().enumerate() {
+            let py = qy + r as i64;
+            if py < b[1] || py > b[3] {
+                continue;
+            }
+            for (s, span) in row.iter_mut().enumerate() {
+                *span = row_span(&edges[s], b[0], b[2], py);
+                if let Some((a, z)) = *span {
+                    lo = lo.min(a);
+                    hi = hi.max(z);
+                }
+            }
+        }
+        let mut x = lo & !1;
+        while x <= hi {
+            let mut cov = [[[false; LANES]; SAMPLES]; 2];
+            let mut live = [[false; LANES]; 2];
+            for r in 0..2 {
+                for s in 0..SAMPLES {
+                    if let Some((a, z)) = spans[r][s] {
+                        for (i, l) in cov[r][s].iter_mut().enumerate() {
+                            let px = x + i as i64;
+                            *l = a <= px && px <= z;
+                            live[r][i] |= *l;
+                        }
+                    }
+                }
+            }
+            // Attributes (and texture coordinates) at the pixel centres.
+            let xf = x as f32;
+            let chunk = Chunk {
+                qy,
+                x,
+                fx: std::array::from_fn(|i| (xf + i as f32) + 0.5),
+                fy: [qy as f32 + 0.5, (qy + 1) as f32 + 0.5],
+                live,
+            };
+            if !units.is_empty() {
+                sample_chunk::<M, PERSP, true>(t, units, &chunk, &mut texels);
+            }
+            for r in 0..2 {
+                if !live[r].iter().any(|&l| l) {
+                    continue;
+                }
+                let colors = if units.is_empty() {
+                    ChunkColors::Shaded
+                } else {
+                    ChunkColors::Textured(&texels[r])
+                };
+                let (y, xu) = ((qy + r as i64) as usize, x as usize);
+                shade_chunk_ms::<M, DEPTH, FLAT, PERSP, WIDE>(
+                    t, plan, units, colors, fb, y, xu, &cov[r], stats,
+                );
+            }
+            x += LANES as i64;
+        }
+        qy += 2;
+    }
+}
