@@ -350,6 +350,7 @@ const SCENES: &[&str] = &[
     "fbo_share",
     "wide_buffers",
     "fbo_float_color",
+    "wide_pixels",
 ];
 
 macro_rules! scene_tests {
@@ -496,6 +497,7 @@ scene_tests!(
     fbo_share,
     wide_buffers,
     fbo_float_color,
+    wide_pixels,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -492,7 +492,10 @@ impl Context {
         }
         match self.fb.as_ref() {
             Some(fb) => (
-                fb.format.channel_bits(),
+                // A wide attachment's channels have its width (16 or 32 bits).
+                fb.format
+                    .channel_bits()
+                    .map(|b| fb.wide.filter(|_| b > 0).map_or(b, |k| k.bits())),
                 fb.depth_format.bits(),
                 fb.stencil_bits(),
             ),

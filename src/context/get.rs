@@ -302,7 +302,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         } else {
             GL_SMOOTH
         }),
-        GL_COLOR_CLEAR_VALUE => n(&st.clear_color),
+        GL_COLOR_CLEAR_VALUE => n(&c.clear_color_query()),
         GL_DEPTH_CLEAR_VALUE => Value::new(Kind::Normalized, &[st.clear_depth]),
         GL_STENCIL_CLEAR_VALUE => i(&[st.clear_stencil as i64]),
         GL_CURRENT_COLOR => n(&st.current.color),

@@ -256,7 +256,8 @@ impl Default for Hints {
 pub struct State {
     /// glEnable bits.
     pub caps: Caps,
-    /// glClearColor (clamped to [0,1] as GL 1.5 requires).
+    /// glClearColor as given (Mesa keeps it unclamped: float buffers store it so, the
+    /// others clamp it when they convert it).
     pub clear_color: [f32; 4],
     /// glClearDepth (clamped to [0,1]).
     pub clear_depth: f64,

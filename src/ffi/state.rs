@@ -66,9 +66,10 @@ fn front_ccw(mode: GLenum) -> GlResult<bool> {
     }
 }
 
-// The clear values are clamped to [0, 1] (but for the stencil index).
+// The depth clear value is clamped to [0, 1]; the clear colour is kept as given (Mesa
+// clamps it where it is used: fixed-point buffers and GL_COLOR_CLEAR_VALUE).
 c_fns! {
-    safe fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => set_state(Ok([red, green, blue, alpha].map(|v| clamp01(v as f64) as f32)), |c| &mut c.state.clear_color);
+    safe fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => set_state(Ok([red, green, blue, alpha]), |c| &mut c.state.clear_color);
     safe fn glClearDepth(depth: GLclampd) => set_state(Ok(clamp01(depth)), |c| &mut c.state.clear_depth);
     safe fn glClearStencil(s: GLint) => set_state(Ok(s), |c| &mut c.state.clear_stencil);
     safe fn glClear(mask: GLbitfield) => with_ctx_list(move |c| c.clear(mask));

@@ -60,13 +60,15 @@ impl WideKind {
         }
     }
 
-    /// A glClear value as gallium's fast clear packs it (`util_pack_color_union`):
-    /// unorm16 is `round_half_even(clamp(c)·65535)`, floats are stored as they are.
+    /// A glClear value as gallium's fast clear packs it (`util_pack_color_union`, the
+    /// generated format packers): unorm16 is `util_iround(clamp(c)·65535)`, which on
+    /// x86-64 is `(int)(f32(c·65535) + 0.5)` (two f32 roundings, then truncation: halves
+    /// round up); floats are stored as they are, half floats toward zero.
     pub fn from_clear(self, c: f32) -> f32 {
         match self {
             WideKind::Unorm16 => {
                 let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
-                (c * 65535.0).round_ties_even()
+                ((c * 65535.0f32) + 0.5f32).trunc()
             }
             WideKind::Float16 => f16_round(c),
             WideKind::Float32 => c,
@@ -148,6 +150,38 @@ pub fn f16_round(x: f32) -> f32 {
     };
     // Exact: `a / step` is a power-of-two scaling, and its truncation is the half's.
     ((a / step).trunc() * step).copysign(x)
+}
+
+impl super::Framebuffer {
+    /// Colour pixel `i` (y-down row-major) as a sampler or the blitter reads it, as RGBA
+    /// float: a wide buffer's stored value ([`WideKind::to_float`]), an 8-bit one's
+    /// `u · f32(1/255)` (`lp_build_unsigned_norm_to_float`).
+    #[inline]
+    pub fn float_at(&self, i: usize) -> [f32; 4] {
+        match self.wide {
+            Some(k) => self.wide_at(i).map(|v| k.to_float(v)),
+            None => self.color_at(i).map(|u| u as f32 * (1.0f32 / 255.0)),
+        }
+    }
+
+    /// Stores the shader output `c` at colour pixel `i` (y-down row-major), converted as
+    /// llvmpipe's fragment output is for the buffer's format: a wide buffer's
+    /// [`WideKind::from_shader`] (with its 8-bit mirror), an 8-bit buffer's clamped
+    /// `round_half_even(c·255)`. Buffers without alpha store 1.
+    #[inline]
+    pub fn put_float(&mut self, i: usize, c: [f32; 4]) {
+        match self.wide {
+            Some(k) => {
+                let mut v = c.map(|x| k.from_shader(x));
+                if !self.format.has_alpha() {
+                    v[3] = k.one();
+                }
+                self.wide_color[i] = v;
+                self.color[i] = k.mirror(v);
+            }
+            None => self.color[i] = self.store_rgba8(c.map(float_to_ubyte)),
+        }
+    }
 }
 
 impl super::Target<'_> {

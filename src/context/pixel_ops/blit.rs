@@ -36,7 +36,8 @@ pub fn blit(
         if planes.len() != SAMPLES {
             return Ok(());
         }
-        resolve_samples(&planes)
+        let wide_dst = ctx.fb.as_ref().is_some_and(|f| f.wide.is_some());
+        resolve_samples(&planes, wide_dst)
     } else {
         // Reading and drawing one buffer: read a snapshot.
         match ctx.read_framebuffer_copy() {

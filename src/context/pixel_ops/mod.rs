@@ -314,3 +314,24 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         }
     }
 }
+
+impl Context {
+    /// GL_COLOR_CLEAR_VALUE as Mesa answers it: clamped to [0, 1] unless the draw
+    /// framebuffer's colour buffers are not all fixed-point (GL_CLAMP_FRAGMENT_COLOR is
+    /// FIXED_ONLY), which only an object with a float attachment is (the OSMesa window
+    /// counts as fixed-point even for a GL_FLOAT buffer).
+    pub(crate) fn clear_color_query(&self) -> [f32; 4] {
+        let float = self.fbo.draw != 0
+            && self
+                .fb
+                .as_ref()
+                .and_then(|f| f.wide)
+                .is_some_and(|k| k.is_float());
+        let c = self.state.clear_color;
+        if float {
+            c
+        } else {
+            c.map(|v| super::clamp01(v as f64) as f32)
+        }
+    }
+}
