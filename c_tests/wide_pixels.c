@@ -5,8 +5,9 @@
  * outside [0, 1] (whole buffer and scissored) and GL_COLOR_CLEAR_VALUE;
  * glBlitFramebuffer between wide buffers and to and from 8-bit ones (unscaled, mirrored,
  * scaled GL_NEAREST), the 4x multisample resolve of RGBA16F/RGBA32F/RGBA16
- * renderbuffers; glCopyTexImage2D/glCopyTexSubImage2D from wide buffers into float and
- * 16-bit textures; GL_RED_BITS and the other sizes of wide buffers
+ * renderbuffers; glCopyTexImage2D/glCopyTexSubImage2D from wide buffers into float
+ * textures; glDrawPixels, glCopyPixels and glBitmap into wide buffers; glAccum's LOAD,
+ * ACCUM and RETURN on wide windows; GL_RED_BITS and the other sizes of wide buffers
  * (docs/llvmpipe-rules.md §23). */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
@@ -122,9 +123,70 @@ static void copy_tex(const char *name, GLenum fmt, int w, int h)
     (void)h;
 }
 
+/* glDrawPixels (GL_FLOAT data beyond [0, 1], GL_UNSIGNED_SHORT data), glCopyPixels (the
+ * blit path, and the quad path under blending) and glBitmap. */
+static void pixel_rects(const char *name, int w, int h)
+{
+    static float img[6 * 5 * 4];
+    static unsigned short us[5 * 4 * 4];
+    static const GLubyte bits[8] = {0xA5, 0x5A, 0xFF, 0x81, 0x3C, 0x66, 0x99, 0xE7};
+    char label[96];
+    int i;
+    for (i = 0; i < 6 * 5 * 4; i++)
+        img[i] = -0.3f + 0.0173f * (float)(i * 7 % 97);
+    for (i = 0; i < 5 * 4 * 4; i++)
+        us[i] = (unsigned short)(i * 3203 + 17);
+    glRasterPos2i(-1, -1);
+    glBitmap(0, 0, 0, 0, 2, 1, NULL);
+    glDrawPixels(6, 5, GL_RGBA, GL_FLOAT, img);
+    glRasterPos2f(0.1f, 0.2f);
+    glDrawPixels(5, 4, GL_RGBA, GL_UNSIGNED_SHORT, us);
+    snprintf(label, sizeof label, "%s_drawpixels", name);
+    dump(label, w, h);
+    /* the blit path */
+    glRasterPos2f(0.5f, -0.9f);
+    glCopyPixels(1, 1, 6, 5, GL_COLOR);
+    /* the quad path */
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glRasterPos2f(-0.9f, 0.5f);
+    glCopyPixels(2, 3, 5, 4, GL_COLOR);
+    glDisable(GL_BLEND);
+    snprintf(label, sizeof label, "%s_copypixels", name);
+    dump(label, w, h);
+    glColor4f(0.3141f, 0.2718f, 0.7071f, 0.1234f);
+    glRasterPos2f(-0.5f, -0.5f);
+    glBitmap(8, 8, 0, 0, 9, 0, bits);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE);
+    glBitmap(8, 8, 0, 0, 9, 0, bits);
+    glDisable(GL_BLEND);
+    glFinish();
+    snprintf(label, sizeof label, "%s_bitmap", name);
+    dump(label, w, h);
+}
+
+/* glAccum LOAD, ACCUM and RETURN (scaled above 1 and masked). */
+static void accum(const char *name, int w, int h)
+{
+    char label[96];
+    glClearAccum(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_ACCUM_BUFFER_BIT);
+    glAccum(GL_LOAD, 0.5f);
+    glAccum(GL_ACCUM, 0.25f);
+    glAccum(GL_RETURN, 1.7f);
+    snprintf(label, sizeof label, "%s_accum", name);
+    dump(label, w, h);
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glAccum(GL_RETURN, 0.3f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    snprintf(label, sizeof label, "%s_accum_masked", name);
+    dump(label, w, h);
+}
+
 static void window(const char *name, GLenum type, int bytes)
 {
-    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 16, NULL);
     void *buf = calloc(W * H * 4, bytes);
     char label[96];
     SGL_CHECK(ctx && buf);
@@ -140,6 +202,11 @@ static void window(const char *name, GLenum type, int bytes)
     copy_tex(name, GL_RGBA32F, W, H);
     copy_tex(name, GL_RGBA16F, W, H);
     copy_tex(name, GL_RGB16F, W, H);
+    pixel_rects(name, W, H);
+    accum(name, W, H);
+    glFinish();
+    snprintf(label, sizeof label, "%s_buffer_end", name);
+    sgl_data(out, label, (size_t)W * H * 4 * bytes, buf);
     OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
     OSMesaDestroyContext(ctx);
     free(buf);
@@ -189,6 +256,7 @@ static void objects(void)
         copy_tex(fnames[i], GL_RGBA32F, W, H);
         copy_tex(fnames[i], GL_RGBA16F, W, H);
         copy_tex(fnames[i], GL_RGB16F, W, H);
+        pixel_rects(fnames[i], W, H);
         /* blits into every format: unscaled, mirrored, scaled nearest */
         for (j = 0; j < 4; j++) {
             GLuint rb2, fb2 = make_fbo(fmts[j], 0, W, H, &rb2);

@@ -268,6 +268,8 @@ pub enum ChunkColors<'a> {
     Textured(&'a TexLanes),
     /// Already computed (the texture fast path).
     Ready(&'a Lanes),
+    /// Already computed, with the float colours a wide target stores (pixel rectangles).
+    ReadyWide(&'a Lanes, &'a [[f32; LANES]; 4]),
 }
 
 /// The colours of [`LANES`] pixels as Mesa's fixed-function fragment shader computes them
@@ -508,6 +510,12 @@ fn shade_chunk_as<
         let float_out = if WIDE { Some(&mut cf) } else { None };
         c = match source {
             ChunkColors::Ready(c) => *c,
+            ChunkColors::ReadyWide(c, f) => {
+                if let Some(o) = float_out {
+                    *o = *f;
+                }
+                *c
+            }
             ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
                 t,
                 plan,
