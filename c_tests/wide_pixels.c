@@ -69,6 +69,15 @@ static void dump(const char *name, int w, int h)
     snprintf(label, sizeof label, "%s_us", name);
     sgl_data(out, label, (size_t)w * h * 8, s);
     sgl_text(out, "err", "%s err=0x%x\n", name, glGetError());
+    /* GL_PACK_SWAP_BYTES */
+    glPixelStorei(GL_PACK_SWAP_BYTES, 1);
+    glReadPixels(1, 1, 5, 3, GL_RGBA, GL_FLOAT, f);
+    snprintf(label, sizeof label, "%s_swap_f", name);
+    sgl_data(out, label, 5 * 3 * 16, f);
+    glReadPixels(1, 1, 5, 3, GL_BGR, GL_UNSIGNED_SHORT, s);
+    snprintf(label, sizeof label, "%s_swap_us", name);
+    sgl_data(out, label, 5 * 3 * 6, s);
+    glPixelStorei(GL_PACK_SWAP_BYTES, 0);
 }
 
 static void queries(const char *name)
