@@ -11,6 +11,9 @@
 //!   channels off in glColorMask keep the colour buffer's value.
 //!
 //! Every operation covers the drawable rectangle (the buffer clipped to the scissor box).
+//!
+//! Wide colour buffers (16-bit and float) are unpacked and packed with their format's
+//! helpers instead (see [`accum_wide`]).
 
 use super::{Context, GlError, GlResult};
 
@@ -193,8 +196,8 @@ fn accum_wide(
 ) {
     let Some(k) = fb.wide else { return };
     for y in y0..y1 {
-        for i in y * w + x0..y * w + x1 {
-            let a = &mut acc[i];
+        let row = y * w + x0..y * w + x1;
+        for (i, a) in row.clone().zip(&mut acc[row]) {
             if op == AccumOp::Return {
                 let scale = value / 32767.0f32;
                 let mut v = fb.wide_at(i);

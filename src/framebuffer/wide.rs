@@ -3,9 +3,10 @@
 //! precision llvmpipe stores them in (docs/llvmpipe-rules.md §23).
 //!
 //! A wide framebuffer keeps its 8-bit plane as well, as a *mirror*: whatever writes the
-//! wide plane writes [`WideKind::mirror8`] of the value into the 8-bit plane too. The
-//! paths that only know 8-bit colour (pixel rectangles, accumulation, copies) keep writing
-//! the 8-bit plane; a pixel whose 8-bit value no longer is the mirror of its wide value
+//! wide plane writes [`WideKind::mirror8`] of the value into the 8-bit plane too. A path
+//! that only knew 8-bit colour would write just the 8-bit plane (the pixel rectangles,
+//! blits, resolves, copies and accumulation all write the wide plane, through
+//! [`super::Framebuffer::put_float`] or directly); a pixel whose 8-bit value no longer is the mirror of its wide value
 //! was last written by one of them, and reads as that 8-bit value
 //! ([`super::Framebuffer::wide_at`]).
 
@@ -214,6 +215,19 @@ mod tests {
         for q in [1u16, 100, 32767, 65534] {
             assert_eq!(unorm16(q as f32 / 65535.0), q);
         }
+    }
+
+    #[test]
+    fn unorm16_round_trips_and_clear_rounding() {
+        // A stored unorm16 read as float and converted back is itself (blits are exact).
+        for q in 0..=65535u16 {
+            assert_eq!(unorm16(WideKind::Unorm16.to_float(q as f32)), q);
+        }
+        // The fast clear rounds halves up (util_iround): f32(0.3·65535) is 19660.5.
+        assert_eq!(WideKind::Unorm16.from_clear(0.3), 19661.0);
+        assert_eq!(WideKind::Unorm16.from_clear(1.5), 65535.0);
+        assert_eq!(WideKind::Unorm16.from_clear(-0.25), 0.0);
+        assert_eq!(WideKind::Float32.from_clear(-0.25), -0.25);
     }
 
     #[test]
