@@ -424,9 +424,10 @@ impl Framebuffer {
         self.format.store_rgba8(c)
     }
 
-    /// The stored colour of a glClear value (already clamped to [0,1]).
+    /// The stored colour of a glClear value (clamped to [0,1] here, NaN giving 0).
     pub fn clear_value(&self, c: [f32; 4]) -> [u8; 4] {
-        self.format.pack_float(c)
+        self.format
+            .pack_float(c.map(|v| if v > 0.0 { v.min(1.0) } else { 0.0 }))
     }
 }
 

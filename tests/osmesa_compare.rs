@@ -352,6 +352,7 @@ const SCENES: &[&str] = &[
     "fbo_float_color",
     "fbo_float_tex",
     "fbo_srgb",
+    "wide_pixels",
 ];
 
 macro_rules! scene_tests {
@@ -500,6 +501,7 @@ scene_tests!(
     fbo_float_color,
     fbo_float_tex,
     fbo_srgb,
+    wide_pixels,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -11,6 +11,9 @@
 //!   channels off in glColorMask keep the colour buffer's value.
 //!
 //! Every operation covers the drawable rectangle (the buffer clipped to the scissor box).
+//!
+//! Wide colour buffers (16-bit and float) are unpacked and packed with their format's
+//! helpers instead (see [`accum_wide`]).
 
 use super::{Context, GlError, GlResult};
 
@@ -117,6 +120,14 @@ impl Context {
         };
         fb.resolve();
         fb.uniform_color = None;
+        if fb.wide.is_some() && matches!(op, AccumOp::Load | AccumOp::Accum | AccumOp::Return) {
+            accum_wide(fb, acc, w, [x0, y0, x1, y1], op, value, mask);
+            if op == AccumOp::Return {
+                self.dirty = true;
+                self.fbo.drawn = true;
+            }
+            return Ok(());
+        }
         let format = fb.format;
         for y in y0..y1 {
             let row = y * w + x0..y * w + x1;
@@ -167,5 +178,51 @@ impl Context {
             self.fbo.drawn = true;
         }
         Ok(())
+    }
+}
+
+/// glAccum's LOAD, ACCUM and RETURN on a wide colour buffer (16-bit or float): Mesa
+/// unpacks the colour with the format's unpack (unorm16 `q·f32(1/65535)`, floats as
+/// stored, unclamped) and packs RETURN's `acc·(value/32767)` with the format's pack
+/// (`util_format_pack_rgba`, as the fast clear: [`crate::framebuffer::WideKind::from_clear`]).
+fn accum_wide(
+    fb: &mut crate::framebuffer::Framebuffer,
+    acc: &mut [[i16; 4]],
+    w: usize,
+    [x0, y0, x1, y1]: [usize; 4],
+    op: AccumOp,
+    value: f32,
+    mask: [bool; 4],
+) {
+    let Some(k) = fb.wide else { return };
+    for y in y0..y1 {
+        let row = y * w + x0..y * w + x1;
+        for (i, a) in row.clone().zip(&mut acc[row]) {
+            if op == AccumOp::Return {
+                let scale = value / 32767.0f32;
+                let mut v = fb.wide_at(i);
+                for c in 0..4 {
+                    if mask[c] {
+                        v[c] = k.from_clear(a[c] as f32 * scale);
+                    }
+                }
+                if !fb.format.has_alpha() {
+                    v[3] = k.one();
+                }
+                fb.wide_color[i] = v;
+                fb.color[i] = k.mirror(v);
+                continue;
+            }
+            let scale = value * 32767.0f32;
+            let c = fb.float_at(i);
+            for ch in 0..4 {
+                let v = (c[ch] * scale) as i32 as i16;
+                a[ch] = if op == AccumOp::Load {
+                    v
+                } else {
+                    a[ch].wrapping_add(v)
+                };
+            }
+        }
     }
 }

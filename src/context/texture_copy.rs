@@ -87,6 +87,38 @@ pub(crate) fn read_texels(
     Ok(out)
 }
 
+/// A framebuffer rectangle of a wide read buffer (16-bit or float colour) as the float
+/// values of an image of `storage` (one that keeps floats), or `None` when the read
+/// buffer is 8-bit, the image keeps no floats or pixel transfer is active (the CPU copy).
+///
+/// Mesa copies these with `pipe->blit` (`st_CopyTexSubImage`): the source texel as the
+/// sampler returns it, unclamped, stored with the texture format's shader output
+/// conversion (half floats toward zero, unorm16 `c·(65535/65536) + 128`); outside pixels
+/// are 0.
+pub(crate) fn read_wide_texels(
+    c: &Context,
+    (x, y, w, h): (GLint, GLint, usize, usize),
+    base: BaseFormat,
+    storage: &Storage,
+) -> Option<Vec<[f32; 4]>> {
+    let fb = c.read_fb().filter(|f| f.wide.is_some())?;
+    let active = upload::ColorTransfer::active(&c.pixel_modes.transfer, &c.pixel_maps);
+    if base == BaseFormat::Depth || !storage.has_floats() || active.is_some() {
+        return None;
+    }
+    let store = |v: [f32; 4]| match storage.encoding {
+        crate::texture::Encoding::Unorm16 => {
+            v.map(|x| crate::framebuffer::wide::unorm16(x) as f32 * (1.0f32 / 65535.0))
+        }
+        _ => crate::texture::float::quantise(storage, v),
+    };
+    let mut out = vec![[0.0f32; 4]; w * h];
+    each_fb_pixel(fb, (x, y, w, h), |i, j| {
+        out[i] = base.swizzle(store(fb.float_at(j)), 0.0, 1.0);
+    });
+    Some(out)
+}
+
 impl Context {
     /// glCopyTexImage1D/2D (`dims`): a read-framebuffer rectangle becomes a new level.
     #[allow(clippy::too_many_arguments)]
@@ -121,16 +153,21 @@ impl Context {
         let (sx, sy) = (x + b, y + if dims == 2 { b } else { 0 });
         self.prepare_read()?;
         let exact = super::texture_ds::read_fb_depth_exact(self, internal, (sx, sy, tw, th));
-        let texels = match exact {
-            Some(t) => t,
-            None => read_texels(self, (sx, sy, tw, th), base, &storage)?,
+        let wide = read_wide_texels(self, (sx, sy, tw, th), base, &storage);
+        let texels = match (exact, &wide) {
+            (Some(t), _) => t,
+            (None, Some(f)) => f
+                .iter()
+                .map(|&v| crate::texture::float::to_bytes(v))
+                .collect(),
+            (None, None) => read_texels(self, (sx, sy, tw, th), base, &storage)?,
         };
         let stencil = match shadow::is_depth_stencil(internal) {
             true => super::texture_ds::read_fb_stencil(self, sx, sy, tw, th),
             false => Vec::new(),
         };
         let mut img = new_level(internal, (base, storage), (tw, th), texels);
-        img.set_floats(None);
+        img.set_floats(wide);
         store_level(self.tex_object_mut(t, false), (face, level), img, stencil);
         Ok(())
     }
@@ -160,6 +197,7 @@ impl Context {
             .map(|i| (i.base, i.storage, i.internal_format))
             .ok_or(GlError::InvalidOperation)?;
         self.prepare_read()?;
+        let wide = read_wide_texels(self, (x, y, w, h), base, &storage);
         let src = match super::texture_ds::read_fb_depth_exact(self, internal, (x, y, w, h)) {
             Some(t) => t,
             None => read_texels(self, (x, y, w, h), base, &storage)?,
@@ -176,7 +214,10 @@ impl Context {
         for row in 0..h {
             let d = (yoff as usize + row) * img.width + xoff as usize;
             img.texels[d..d + w].copy_from_slice(&src[row * w..(row + 1) * w]);
-            img.refresh_floats(d, w);
+            match &wide {
+                Some(f) => img.write_floats(d, &f[row * w..(row + 1) * w]),
+                None => img.refresh_floats(d, w),
+            }
         }
         if let Some(s) = stencil {
             let (size, rect) = (

@@ -66,8 +66,8 @@ fn front_ccw(mode: GLenum) -> GlResult<bool> {
     }
 }
 
-// The clear depth is clamped to [0, 1]; the clear colour is kept as given
-// (ARB_color_buffer_float: a float colour buffer is cleared with it unclamped).
+// The depth clear value is clamped to [0, 1]; the clear colour is kept as given (Mesa
+// clamps it where it is used: fixed-point buffers and GL_COLOR_CLEAR_VALUE).
 c_fns! {
     safe fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => set_state(Ok([red, green, blue, alpha]), |c| &mut c.state.clear_color);
     safe fn glClearDepth(depth: GLclampd) => set_state(Ok(clamp01(depth)), |c| &mut c.state.clear_depth);

@@ -269,6 +269,8 @@ pub enum ChunkColors<'a> {
     Textured(&'a TexLanes),
     /// Already computed (the texture fast path).
     Ready(&'a Lanes),
+    /// Already computed, with the float colours a wide target stores (pixel rectangles).
+    ReadyWide(&'a Lanes, &'a [[f32; LANES]; 4]),
 }
 
 /// The colours of [`LANES`] pixels as Mesa's fixed-function fragment shader computes them
@@ -549,6 +551,12 @@ pub(crate) fn chunk_colors<M: Madd, const FLAT: bool, const PERSP: bool, const W
     let float_out = if WIDE { Some(cf) } else { None };
     match source {
         ChunkColors::Ready(c) => *c,
+        ChunkColors::ReadyWide(c, f) => {
+            if let Some(o) = float_out {
+                *o = *f;
+            }
+            *c
+        }
         ChunkColors::Textured(tx) => shaded_colors::<M, FLAT, PERSP>(
             t,
             plan,

@@ -3,10 +3,12 @@
 //! precision llvmpipe stores them in (docs/llvmpipe-rules.md §23).
 //!
 //! A wide framebuffer keeps its 8-bit plane as well, as a *mirror*: whatever writes the
-//! wide plane writes [`WideKind::mirror8`] of the value into the 8-bit plane too. The
-//! paths that only know 8-bit colour (pixel rectangles, accumulation, copies) keep writing
-//! the 8-bit plane; a pixel whose 8-bit value no longer is the mirror of its wide value
-//! was last written by one of them, and reads as that 8-bit value
+//! wide plane writes [`WideKind::mirror8`] of the value into the 8-bit plane too. A path
+//! that only knew 8-bit colour would write just the 8-bit plane (the pixel rectangles,
+//! blits, resolves, copies and accumulation all write the wide plane, through
+//! [`super::Framebuffer::put_float`] or directly); a pixel whose 8-bit value no longer is
+//! the mirror of its wide value was last written by such a path, and reads as that 8-bit
+//! value
 //! ([`super::Framebuffer::wide_at`], [`super::samples::PlaneRows::wide_at`]).
 
 use super::float_to_ubyte;
@@ -60,14 +62,15 @@ impl WideKind {
         }
     }
 
-    /// A glClear value as gallium's fast clear packs it (`util_pack_color_union`):
-    /// unorm16 is `util_iround(clamp(c)·65535)`, which on x86-64 is `(int)(t + 0.5f)` in
-    /// f32 (ties round up: 0.3 → 19661), floats are stored as they are.
+    /// A glClear value as gallium's fast clear packs it (`util_pack_color_union`, the
+    /// generated format packers): unorm16 is `util_iround(clamp(c)·65535)`, which on
+    /// x86-64 is `(int)(f32(c·65535) + 0.5)` (two f32 roundings, then truncation: halves
+    /// round up); floats are stored as they are, half floats toward zero.
     pub fn from_clear(self, c: f32) -> f32 {
         match self {
             WideKind::Unorm16 => {
                 let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
-                (c * 65535.0 + 0.5).trunc()
+                ((c * 65535.0f32) + 0.5f32).trunc()
             }
             WideKind::Float16 => f16_round(c),
             WideKind::Float32 => c,
@@ -151,6 +154,53 @@ pub fn f16_round(x: f32) -> f32 {
     ((a / step).trunc() * step).copysign(x)
 }
 
+impl super::Framebuffer {
+    /// Colour pixel `i` (y-down row-major) as a sampler or the blitter reads it, as RGBA
+    /// float: a wide buffer's stored value ([`WideKind::to_float`]), an 8-bit one's
+    /// `u · f32(1/255)` (`lp_build_unsigned_norm_to_float`).
+    #[inline]
+    pub fn float_at(&self, i: usize) -> [f32; 4] {
+        match self.wide {
+            Some(k) => self.wide_at(i).map(|v| k.to_float(v)),
+            None => self.color_at(i).map(|u| u as f32 * (1.0f32 / 255.0)),
+        }
+    }
+
+    /// Stores the shader output `c` at colour pixel `i` (y-down row-major), converted as
+    /// llvmpipe's fragment output is for the buffer's format: a wide buffer's
+    /// [`WideKind::from_shader`] (with its 8-bit mirror), an 8-bit buffer's clamped
+    /// `round_half_even(c·255)`. Buffers without alpha store 1.
+    #[inline]
+    pub fn put_float(&mut self, i: usize, c: [f32; 4]) {
+        match self.wide {
+            Some(k) => {
+                let mut v = c.map(|x| k.from_shader(x));
+                if !self.format.has_alpha() {
+                    v[3] = k.one();
+                }
+                self.wide_color[i] = v;
+                self.color[i] = k.mirror(v);
+            }
+            None => self.color[i] = self.store_rgba8(c.map(float_to_ubyte)),
+        }
+    }
+}
+
+impl super::Target<'_> {
+    /// Stored wide colour of pixel `j` of the band (its recorded clears written): as
+    /// [`super::Framebuffer::wide_at`].
+    #[inline]
+    pub fn wide_at(&self, j: usize) -> [f32; 4] {
+        let k = self.wide.expect("a wide target");
+        let (w, c8) = (self.wide_color[j], self.color[j]);
+        if k.mirror(w) == c8 {
+            w
+        } else {
+            k.from_u8(c8)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -166,6 +216,19 @@ mod tests {
         for q in [1u16, 100, 32767, 65534] {
             assert_eq!(unorm16(q as f32 / 65535.0), q);
         }
+    }
+
+    #[test]
+    fn unorm16_round_trips_and_clear_rounding() {
+        // A stored unorm16 read as float and converted back is itself (blits are exact).
+        for q in 0..=65535u16 {
+            assert_eq!(unorm16(WideKind::Unorm16.to_float(q as f32)), q);
+        }
+        // The fast clear rounds halves up (util_iround): f32(0.3·65535) is 19660.5.
+        assert_eq!(WideKind::Unorm16.from_clear(0.3), 19661.0);
+        assert_eq!(WideKind::Unorm16.from_clear(1.5), 65535.0);
+        assert_eq!(WideKind::Unorm16.from_clear(-0.25), 0.0);
+        assert_eq!(WideKind::Float32.from_clear(-0.25), -0.25);
     }
 
     #[test]

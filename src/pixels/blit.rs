@@ -85,11 +85,37 @@ pub fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32
 /// in f32, each sample `u · f32(1/255)`, then `round_half_even(sum · 0.25 · 255)`. Depth
 /// and stencil are sample 0's. With sRGB `sides` the samples are decoded and the average
 /// stored as the destination stores it ([`super::blit_srgb`]).
-pub fn resolve_samples(planes: &[Framebuffer], sides: SrgbSides, fma: bool) -> Framebuffer {
+///
+/// When the samples or the destination are wider than 8 bits (`wide`), the average stays
+/// a float: the image returned is an R32G32B32A32_FLOAT one holding `sum · 0.25` (each
+/// sample read as [`Framebuffer::float_at`]), which the copy then converts to the
+/// destination's format as the resolve shader's output is.
+pub fn resolve_samples(
+    planes: &[Framebuffer],
+    sides: SrgbSides,
+    wide: bool,
+    fma: bool,
+) -> Framebuffer {
     if sides != SrgbSides::default() {
         return sides.resolve(planes, fma);
     }
     let mut out = planes[0].clone();
+    if wide || out.wide.is_some() {
+        out.set_wide(Some(crate::framebuffer::WideKind::Float32));
+        for i in 0..out.width * out.height {
+            let mut sum = [0.0f32; 4];
+            for p in planes {
+                let c = p.float_at(i);
+                for ch in 0..4 {
+                    sum[ch] += c[ch];
+                }
+            }
+            let avg = sum.map(|v| v * 0.25);
+            out.wide_color[i] = avg;
+            out.color[i] = crate::framebuffer::WideKind::Float32.mirror(avg);
+        }
+        return out;
+    }
     let scale = 1.0f32 / 255.0;
     for (i, px) in out.color.iter_mut().enumerate() {
         for (ch, v) in px.iter_mut().enumerate() {
@@ -136,31 +162,39 @@ impl Job {
         let unscaled = bw == sw.abs() && bh == sh.abs();
         let convert = self.srgb.converts(unscaled);
         let fma = self.fma;
-        let write =
-            |d: &mut Framebuffer, px: i64, py: i64, c: Option<[u8; 4]>, t: (usize, usize)| {
-                let di = py as usize * d.width + px as usize;
-                let si = t.1 * s.width + t.0;
-                if mask.color {
-                    let c = match c {
-                        Some(c) => c,
-                        None if convert => self.srgb.texel(s.color[si], fma),
-                        None => s.color[si],
-                    };
-                    d.color[di] = d.store_rgba8(c);
+        // Wider than 8 bits on either side: the blitter's float colour (the source texel
+        // as the sampler returns it, stored with the destination's output conversion).
+        let wide = s.wide.is_some() || d.wide.is_some();
+        let write = |d: &mut Framebuffer, px: i64, py: i64, c: Option<Texel>, t: (usize, usize)| {
+            let di = py as usize * d.width + px as usize;
+            let si = t.1 * s.width + t.0;
+            if mask.color {
+                match c {
+                    Some(Texel::Float(f)) => d.put_float(di, f),
+                    Some(Texel::Unorm8(u)) if wide => {
+                        d.put_float(di, u.map(|v| v as f32 * (1.0f32 / 255.0)))
+                    }
+                    Some(Texel::Unorm8(u)) => d.color[di] = d.store_rgba8(u),
+                    None if convert => {
+                        d.color[di] = d.store_rgba8(self.srgb.texel(s.color[si], fma))
+                    }
+                    None if wide => d.put_float(di, s.float_at(si)),
+                    None => d.color[di] = d.store_rgba8(s.color[si]),
                 }
-                if mask.depth {
-                    d.depth[di] = if exact_depth {
-                        s.depth[si]
-                    } else {
-                        // The blitter's depth shader: the sampler's float, written as depth.
-                        let z = crate::texture::shadow::sample_value(s.depth[si], bits);
-                        d.depth_format.quantize(z)
-                    };
-                }
-                if mask.stencil && !s.stencil.is_empty() && !d.stencil.is_empty() {
-                    d.stencil[di] = s.stencil[si];
-                }
-            };
+            }
+            if mask.depth {
+                d.depth[di] = if exact_depth {
+                    s.depth[si]
+                } else {
+                    // The blitter's depth shader: the sampler's float, written as depth.
+                    let z = crate::texture::shadow::sample_value(s.depth[si], bits);
+                    d.depth_format.quantize(z)
+                };
+            }
+            if mask.stencil && !s.stencil.is_empty() && !d.stencil.is_empty() {
+                d.stencil[di] = s.stencil[si];
+            }
+        };
         let inside = |px: i64, py: i64| px >= sc[0] && px < sc[2] && py >= sc[1] && py < sc[3];
         if unscaled {
             // Texel for texel (llvmpipe's copy or TXF path).
@@ -231,14 +265,46 @@ impl Job {
             let c = match (self.linear, convert) {
                 (true, true) => {
                     let eight_bit = || bilinear(s, u * nx, t * ny);
-                    Some(self.srgb.bilinear(s, (u * nx, t * ny), fma, eight_bit))
+                    let c = self.srgb.bilinear(s, (u * nx, t * ny), fma, eight_bit);
+                    Some(Texel::Unorm8(c))
                 }
-                (true, false) => Some(bilinear(s, u * nx, t * ny)),
+                (true, false) => Some(match s.wide {
+                    Some(_) => Texel::Float(bilinear_float(s, u * nx, t * ny, fma)),
+                    None => Texel::Unorm8(bilinear(s, u * nx, t * ny)),
+                }),
                 _ => None,
             };
             write(d, px, py, c, nearest);
         });
     }
+}
+
+/// A filtered source colour: llvmpipe's 8-bit filter's result, or the float filter's.
+#[derive(Clone, Copy)]
+enum Texel {
+    /// From an 8-bit source.
+    Unorm8([u8; 4]),
+    /// From a wide source.
+    Float([f32; 4]),
+}
+
+/// GL_LINEAR of a wide source at (u, v) in texels, clamped to the edge, in f32: weights
+/// `c − 0.5 − floor(c − 0.5)`, `fmuladd(w, b − a, a)` across, then down (llvmpipe's SoA
+/// filter, as the float mipmap blit; not compared with llvmpipe yet).
+fn bilinear_float(s: &Framebuffer, u: f32, v: f32, fma: bool) -> [f32; 4] {
+    let axis = |c: f32, n: usize| {
+        let c = c - 0.5;
+        let f = c.floor();
+        let clamp = |i: i64| i.clamp(0, n as i64 - 1) as usize;
+        (clamp(f as i64), clamp(f as i64 + 1), c - f)
+    };
+    let (x0, x1, wx) = axis(u, s.width);
+    let (y0, y1, wy) = axis(v, s.height);
+    let at = |x: usize, y: usize| s.float_at(y * s.width + x);
+    let lerp = crate::texture::sample::lerpfx4;
+    let top = lerp(fma, wx, at(x0, y0), at(x1, y0));
+    let bot = lerp(fma, wx, at(x0, y1), at(x1, y1));
+    lerp(fma, wy, top, bot)
 }
 
 /// The interpolated source coordinates at pixel (px, py).

@@ -21,7 +21,6 @@
 
 use super::rect::{rasterize, Dest, Fragments, Quad};
 use crate::fixed_function::fog::FogPlan;
-use crate::fragment::span::unorm8;
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::stats::Stats;
@@ -53,8 +52,9 @@ impl<'a> Shader<'a> {
         Shader { units, texels, fog }
     }
 
-    /// The final colour of a fragment with primary colour `primary`.
-    pub fn shade(&self, primary: [f32; 4]) -> [u8; 4] {
+    /// The shader's output colour of a fragment with primary colour `primary` (before the
+    /// target's conversion).
+    pub fn shade(&self, primary: [f32; 4]) -> [f32; 4] {
         let mut prev = primary;
         for (u, tex) in &self.units {
             prev = u.env(primary, *tex, prev, &self.texels);
@@ -62,18 +62,18 @@ impl<'a> Shader<'a> {
         if let Some(f) = &self.fog {
             prev = f.apply(prev, f.factor(0.0));
         }
-        prev.map(unorm8)
+        prev
     }
 }
 
 /// What the fragments of a rectangle carry.
 pub enum Source<'a> {
-    /// Final colours per texel.
-    Color(&'a [[u8; 4]]),
+    /// Shader output colours per texel.
+    Color(&'a [[f32; 4]]),
     /// One colour; only texels that are set draw.
-    Mask(&'a [bool], [u8; 4]),
+    Mask(&'a [bool], [f32; 4]),
     /// Depth per texel, one colour.
-    Depth(&'a [f32], [u8; 4]),
+    Depth(&'a [f32], [f32; 4]),
     /// Stencil values per texel.
     Stencil(&'a [u8]),
 }
@@ -153,7 +153,7 @@ pub fn shade_colors(
     w: usize,
     scale_bias: Option<&dyn Fn([f32; 4]) -> [f32; 4]>,
     map_rg: Option<&dyn Fn([f32; 4]) -> [f32; 2]>,
-) -> Vec<[u8; 4]> {
+) -> Vec<[f32; 4]> {
     let h = texels.len() / w.max(1);
     let nearest = |c: f32, n: usize| {
         (c.clamp(-1.0, 2.0) * n as f32)
@@ -256,7 +256,15 @@ impl CopySource {
                 }
                 let d = (yd * fw + x) as usize;
                 match kind {
-                    CopyKind::Color => fb.color[d] = fb.color[s],
+                    CopyKind::Color => match fb.wide {
+                        // The blit copies the stored value at full precision.
+                        Some(k) => {
+                            let v = fb.wide_at(s);
+                            fb.wide_color[d] = v;
+                            fb.color[d] = k.mirror(v);
+                        }
+                        None => fb.color[d] = fb.color[s],
+                    },
                     CopyKind::Depth => fb.depth[d] = fb.depth[s],
                     CopyKind::Stencil | CopyKind::DepthStencil => fb.stencil[d] = fb.stencil[s],
                 }
@@ -271,14 +279,11 @@ impl CopySource {
         self.index(i, self.h - 1 - j)
     }
 
-    /// The colour texels of the copy, as floats.
+    /// The colour texels of the copy, as floats ([`Framebuffer::float_at`]: a wide
+    /// buffer's at full precision).
     pub fn colors(&self, fb: &Framebuffer) -> Vec<[f32; 4]> {
         (0..self.w * self.h)
-            .map(|k| {
-                self.texel_index(k).map_or([0.0; 4], |s| {
-                    fb.color_at(s).map(|v| v as f32 * (1.0 / 255.0))
-                })
-            })
+            .map(|k| self.texel_index(k).map_or([0.0; 4], |s| fb.float_at(s)))
             .collect()
     }
 

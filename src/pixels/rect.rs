@@ -14,7 +14,7 @@
 //! is handed to a callback with its texel, and [`Fragments`] runs the per-fragment
 //! operations of [`shade_chunk`] on it.
 
-use crate::fragment::span::{eval, shade_chunk, ChunkColors, Fused, Madd, Unfused, LANES};
+use crate::fragment::span::{eval, shade_chunk, unorm8, ChunkColors, Fused, Madd, Unfused, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
@@ -166,19 +166,23 @@ pub struct Fragments<'a, 'b> {
 }
 
 impl Fragments<'_, '_> {
-    /// One fragment of colour `rgba` at `(px, py)`; its depth is the triangle's z plane
-    /// (constant over a pixel rectangle) or `z` when given (depth images).
+    /// One fragment of shader colour `rgba` at `(px, py)`; its depth is the triangle's z
+    /// plane (constant over a pixel rectangle) or `z` when given (depth images). An 8-bit
+    /// target gets the colour converted to unorm8, a wide one converts it at its own
+    /// precision.
     pub fn put(
         &mut self,
         tri: &SetupTriangle,
         px: usize,
         py: usize,
-        rgba: [u8; 4],
+        rgba: [f32; 4],
         z: Option<f32>,
     ) {
         let mut c = [[0u8; LANES]; 4];
+        let mut cf = [[0f32; LANES]; 4];
         for k in 0..4 {
-            c[k][0] = rgba[k];
+            c[k][0] = unorm8(rgba[k]);
+            cf[k][0] = rgba[k];
         }
         let mut live = [false; LANES];
         live[0] = true;
@@ -194,7 +198,11 @@ impl Fragments<'_, '_> {
             }
             None => tri,
         };
-        let src = ChunkColors::Ready(&c);
+        let src = if self.target.wide.is_some() {
+            ChunkColors::ReadyWide(&c, &cf)
+        } else {
+            ChunkColors::Ready(&c)
+        };
         let (p, fb, st) = (self.plan, &mut self.target, &mut *self.stats);
         // The z plane is constant, so fused and unfused evaluation agree.
         if p.depth.is_some() {

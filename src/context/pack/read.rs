@@ -265,6 +265,15 @@ pub unsafe fn read_pixels(
                     }
                 }
             }
+            if swap && packed.is_none() && matches!(kind, ReadKind::Color(..)) {
+                // GL_PACK_SWAP_BYTES: Mesa swaps every component of the packed image
+                // (`_mesa_swap_bytes_2d_image`).
+                // SAFETY: `p` addresses this pixel's `bpp` bytes of the packed image.
+                let px = unsafe { std::slice::from_raw_parts_mut(p, bpp) };
+                for comp in px.chunks_exact_mut(tsize) {
+                    comp.reverse();
+                }
+            }
         }
     }
     Ok(())

@@ -45,7 +45,8 @@ pub fn blit(
             return Ok(());
         }
         sides.src = crate::plan::srgb_store(&ctx.state.caps, planes[0].srgb);
-        let resolved = resolve_samples(&planes, sides, fma);
+        let wide_dst = ctx.fb.as_ref().is_some_and(|f| f.wide.is_some());
+        let resolved = resolve_samples(&planes, sides, wide_dst, fma);
         // the resolve has converted the colours: the copy that follows copies
         sides = SrgbSides::default();
         resolved

@@ -13,7 +13,6 @@ use super::pixel_transfer::PixelTransfer;
 use super::state::Cap;
 use super::Context;
 use crate::fixed_function::fog::FogPlan;
-use crate::fragment::span::unorm8;
 use crate::geometry::cpu_has_fma;
 use crate::gl::enums::{GL_BITMAP_TOKEN, GL_COPY_PIXEL_TOKEN, GL_DRAW_PIXEL_TOKEN};
 use crate::pipe::{CompareFunc, MAX_TEXTURE_UNITS};
@@ -81,7 +80,7 @@ fn quad(ctx: &Context, x: i32, y: i32, w: usize, h: usize, flip_t: bool) -> Quad
 
 /// Colour texels through the pixel transfer (when `transfer`) and the fragment shader
 /// ([`px::shade_colors`]).
-fn shade_colors(ctx: &Context, texels: &[[f32; 4]], w: usize, transfer: bool) -> Vec<[u8; 4]> {
+fn shade_colors(ctx: &Context, texels: &[[f32; 4]], w: usize, transfer: bool) -> Vec<[f32; 4]> {
     let sh = shader(ctx, cpu_has_fma());
     let t = &ctx.pixel_modes.transfer;
     let sb = |c| t.apply_scale_bias(c);
@@ -133,8 +132,7 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
         }
         Pixels::Depth(z) => {
             let z: Vec<f32> = z.iter().map(|&v| tr.apply_depth(v)).collect();
-            let c = ctx.raster_pos.color.map(unorm8);
-            run(ctx, &q, Source::Depth(&z, c));
+            run(ctx, &q, Source::Depth(&z, ctx.raster_pos.color));
         }
         Pixels::Stencil(s) => {
             // Measured: llvmpipe (stencil export) stores the image into a stencil texture
@@ -305,8 +303,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
         }
         CopyKind::Depth => {
             let z = src.depths(fb);
-            let c = ctx.state.current.color.map(unorm8);
-            run(ctx, &q, Source::Depth(&z, c));
+            run(ctx, &q, Source::Depth(&z, ctx.state.current.color));
         }
         CopyKind::Stencil | CopyKind::DepthStencil => {
             let s = src.stencils(fb);
