@@ -16,7 +16,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::span::LANES;
-use super::span::{alpha_test, chunk_colors, stencil_depth, write_colors};
+use super::span::{alpha_test, chunk_colors, stencil_depth, store_chunk, StoreFormat};
 use super::span::{ChunkAt, ChunkColors, Madd};
 use super::{FragPlan, MsPass};
 use crate::framebuffer::Target;
@@ -69,7 +69,7 @@ pub fn shade_chunk_ms<
         t, plan, units, source, &fx, fy, &mut live, alpha_out, &mut cf,
     );
     alpha_test(plan, &c, &mut live, n, stats);
-    let (format, wide, single) = (fb.format, fb.wide, fb.wide_single);
+    let out = StoreFormat::of(fb);
     let no_color = plan.color_mask == [false; 4];
     for s in 0..SAMPLES {
         if ms.mask & (1 << s) == 0 {
@@ -100,20 +100,6 @@ pub fn shade_chunk_ms<
         if no_color || !ls[..n].iter().any(|&l| l) {
             continue;
         }
-        if WIDE && plan.srgb {
-            let dst = &mut rows.color[row..row + n];
-            stats.color_writes += super::srgb::store(plan, format.has_alpha(), dst, &ls, &cf);
-            continue;
-        }
-        if let (true, Some(k)) = (WIDE, wide) {
-            let dst = super::wide::WideDst {
-                kind: k,
-                alpha: format.has_alpha(),
-                single,
-            };
-            stats.color_writes += super::wide::store(dst, plan, &mut rows, row, n, &ls, &cf);
-            continue;
-        }
-        write_colors::<true>(plan, format, &mut rows.color[row..row + n], c, &ls, stats);
+        store_chunk::<true, WIDE>(plan, out, &mut rows, (row, n), &ls, c, &cf, stats);
     }
 }

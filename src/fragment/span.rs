@@ -476,7 +476,7 @@ fn shade_chunk_as<
         );
         alpha_test(plan, &c, &mut live, n, stats);
     }
-    let (format, wide, single) = (fb.format, fb.wide, fb.wide_single);
+    let out = StoreFormat::of(fb);
     let mut rows = fb.plane(0);
     let at = ChunkAt {
         row,
@@ -491,25 +491,75 @@ fn shade_chunk_as<
     if !FULL {
         c = colors::<M, FLAT, PERSP>(t, &fx, fy, t.flat_u8);
     }
+    store_chunk::<FULL, WIDE>(plan, out, &mut rows, (row, n), &live, c, &cf, stats);
+}
+
+/// How a target stores colour: its format, and its precision when wide (with the
+/// one-channel flag, [`crate::framebuffer::Framebuffer::wide_single`]).
+#[derive(Clone, Copy)]
+pub(crate) struct StoreFormat {
+    /// The colour format of the 8-bit plane.
+    pub format: crate::framebuffer::ColorFormat,
+    /// The wide plane's precision, if any.
+    pub wide: Option<crate::framebuffer::WideKind>,
+    /// The wide plane is one channel.
+    pub single: bool,
+}
+
+impl StoreFormat {
+    /// The store format of `fb`.
+    #[inline(always)]
+    pub fn of(fb: &Target<'_>) -> Self {
+        StoreFormat {
+            format: fb.format,
+            wide: fb.wide,
+            single: fb.wide_single,
+        }
+    }
+}
+
+/// Stores the live lanes of a chunk (`at` = its first pixel's index in `rows` and the
+/// lanes inside the row) into one plane's `rows`: sRGB writes encode and blend in linear
+/// space ([`super::srgb`]), wide buffers convert, blend and store at their precision
+/// ([`super::wide`]), both from the float colours `cf` that `WIDE` keeps (the rasterizer
+/// takes the FULL path for them); 8-bit buffers blend and write `c` ([`write_colors`]).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn store_chunk<const FULL: bool, const WIDE: bool>(
+    plan: &FragPlan,
+    out: StoreFormat,
+    rows: &mut PlaneRows<'_>,
+    at: (usize, usize),
+    live: &[bool; LANES],
+    c: Lanes,
+    cf: &[[f32; LANES]; 4],
+    stats: &mut Stats,
+) {
+    let (row, n) = at;
+    let alpha = out.format.has_alpha();
     if WIDE && plan.srgb {
-        // sRGB writes encode, blending in linear space (the rasterizer takes the FULL path
-        // for them).
         let dst = &mut rows.color[row..row + n];
-        stats.color_writes += super::srgb::store(plan, format.has_alpha(), dst, &live, &cf);
+        stats.color_writes += super::srgb::store(plan, alpha, dst, live, cf);
         return;
     }
-    if let (true, Some(k)) = (WIDE, wide) {
-        // Wide buffers convert, blend and store at their own precision (the rasterizer
-        // takes the FULL path for them).
+    if let (true, Some(kind)) = (WIDE, out.wide) {
+        let single = out.single;
         let dst = super::wide::WideDst {
-            kind: k,
-            alpha: format.has_alpha(),
+            kind,
+            alpha,
             single,
         };
-        stats.color_writes += super::wide::store(dst, plan, &mut rows, row, n, &live, &cf);
+        stats.color_writes += super::wide::store(dst, plan, rows, row, n, live, cf);
         return;
     }
-    write_colors::<FULL>(plan, format, &mut rows.color[row..row + n], c, &live, stats);
+    write_colors::<FULL>(
+        plan,
+        out.format,
+        &mut rows.color[row..row + n],
+        c,
+        live,
+        stats,
+    );
 }
 
 /// Where a chunk's per-sample operations work: its first pixel's index `row` in the
