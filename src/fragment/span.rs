@@ -409,7 +409,7 @@ pub fn shade_chunk<
     live: [bool; LANES],
     stats: &mut Stats,
 ) {
-    if FULL && (fb.wide.is_some() || plan.srgb) {
+    if FULL && float_store(plan, fb) {
         shade_chunk_wide::<M, DEPTH, FLAT, PERSP>(t, plan, units, source, fb, py, x, live, stats);
     } else {
         shade_chunk_as::<M, DEPTH, FLAT, PERSP, FULL, false>(
@@ -492,6 +492,14 @@ fn shade_chunk_as<
         c = colors::<M, FLAT, PERSP>(t, &fx, fy, t.flat_u8);
     }
     store_chunk::<FULL, WIDE>(plan, out, &mut rows, (row, n), &live, c, &cf, stats);
+}
+
+/// Whether a draw's colours stay f32 to the store into `fb`: a wide (16-bit or float)
+/// target or sRGB writes. Those take the general (`FULL`) path and its out-of-line
+/// float store ([`store_chunk`]); the SIMD and fast texture paths never see them.
+#[inline(always)]
+pub fn float_store(plan: &FragPlan, fb: &Target<'_>) -> bool {
+    fb.wide.is_some() || plan.srgb
 }
 
 /// How a target stores colour: its format, and its precision when wide (with the

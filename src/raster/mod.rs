@@ -158,8 +158,7 @@ fn simd_ok(d: &Draw<'_, '_>) -> bool {
         && plan.fog.is_none()
         && !plan.count_samples
         && plan.smooth.is_none()
-        && d.fb.wide.is_none()
-        && !plan.srgb
+        && !crate::fragment::span::float_store(plan, d.fb)
         && (plan.color_mask == [true; 4] || plan.color_mask == [false; 4])
         && matches!(
             d.fb.format,
@@ -327,7 +326,7 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     let depth = plan.depth.is_some();
     // Wide buffers and sRGB writes take the general per-fragment path (`fragment::wide`,
     // `fragment::srgb`).
-    let wide = fb.wide.is_some() || plan.srgb;
+    let wide = crate::fragment::span::float_store(plan, fb);
     if let Some(env) = textured::fast_env(plan, units).filter(|_| !wide) {
         let u = &units[0];
         with_flags!((depth, plan.flat, t.persp), |D, F, P| {

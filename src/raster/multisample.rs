@@ -53,7 +53,7 @@ pub(crate) fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bo
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    if fb.wide.is_some() || plan.srgb {
+    if crate::fragment::span::float_store(plan, fb) {
         rows_wide::<M, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
     } else {
         rows_as::<M, DEPTH, FLAT, PERSP, false>(t, b, plan, units, fb, stats)
