@@ -5,18 +5,30 @@
 //! already-read argument values, so running it later is running the call later. A
 //! [`Cmd::Node`] is a run of per-vertex commands ([`VertexOp`]: glBegin, glVertex, glColor
 //! …) stored inline without boxing, the way Mesa's vbo "save" module compiles begin/end
-//! geometry into a vertex node. Replaying a node goes through the same immediate-mode code
-//! as glBegin/glEnd ([`Context::vertex_op`]), so attributes the list does not set come from
-//! the current values at execution time; but its primitives are drawn as *indexed* draws,
-//! as Mesa draws vertex nodes, which decides the GL_QUADS split (docs/llvmpipe-rules.md §5).
-//! Like Mesa, a node whose vertices would reference an attribute that first appears after
-//! them ("dangling" attribute) is replayed through the plain immediate path ("loopback").
+//! geometry into a vertex node. Its primitives are drawn as *indexed* draws, as Mesa draws
+//! vertex nodes, which decides the GL_QUADS split (docs/llvmpipe-rules.md §5).
+//!
+//! When a node closes it is also compiled, when it can be, into stored vertex arrays
+//! ([`super::dlist_node`]: positions and only the attributes the node sets, an attribute
+//! every vertex shares kept once): replaying it is then one indexed draw per run of
+//! primitives straight from those arrays (through
+//! [`crate::geometry::stored::StoredSource`], the draw path of glDrawElements), with the
+//! attributes the node does not set taken from the current values at execution time, and
+//! afterwards the current attributes are the last values the node set. MuJoCo replays
+//! ~1.1M list vertices per frame; copying each into the immediate batch was ~12% of its
+//! draw thread. Nodes that do not fit (a primitive split over nodes, an attribute first
+//! set after the node's first vertex, glIndex, a compiled glDrawArrays following other
+//! geometry in the node) and replays inside an open glBegin keep the op-by-op path: the
+//! same immediate-mode code as glBegin/glEnd ([`Context::vertex_op`]). Like Mesa, a node
+//! whose vertices would reference an attribute that first appears after them ("dangling"
+//! attribute) is replayed through the plain immediate path ("loopback").
 //!
 //! Commands that GL executes immediately (glGen*, glGet*, client array state, glFlush …)
 //! simply never reach a list. Lists are reference counted, so redefining or deleting a list
 //! while it executes (glNewList(n, GL_COMPILE_AND_EXECUTE) calling list n) is safe: the
 //! running copy lives until it returns.
 
+use super::dlist_node::CompiledNode;
 use super::error::{GlError, GlResult};
 use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
 use super::Context;
@@ -59,16 +71,18 @@ pub enum VertexOp {
 }
 
 impl VertexOp {
-    /// The attribute bit this op sets (for the dangling-attribute rule), 0 for others.
-    fn attr_bit(&self) -> u32 {
+    /// The attribute bit this op sets (for the dangling-attribute rule), 0 for others:
+    /// the bits of [`crate::geometry::stored`], and one more for glIndex.
+    pub(super) fn attr_bit(&self) -> u32 {
+        use crate::geometry::stored::{COLOR, EDGE, FOG, NORMAL, SECONDARY, TEX0};
         match self {
-            VertexOp::Color(_) => 1,
-            VertexOp::SecondaryColor(_) => 2,
-            VertexOp::Normal(_) => 4,
-            VertexOp::FogCoord(_) => 8,
-            VertexOp::TexCoord(u, _) => 16 << u,
-            VertexOp::EdgeFlag(_) => 1 << 12,
-            VertexOp::Index(_) => 1 << 13,
+            VertexOp::Color(_) => COLOR,
+            VertexOp::SecondaryColor(_) => SECONDARY,
+            VertexOp::Normal(_) => NORMAL,
+            VertexOp::FogCoord(_) => FOG,
+            VertexOp::TexCoord(u, _) => TEX0 << u,
+            VertexOp::EdgeFlag(_) => EDGE,
+            VertexOp::Index(_) => EDGE << 1,
             _ => 0,
         }
     }
@@ -84,6 +98,9 @@ pub enum Cmd {
         ops: Vec<VertexOp>,
         /// Replay through the non-indexed immediate path (Mesa's loopback).
         loopback: bool,
+        /// The commands compiled into vertex arrays, when they can be
+        /// ([`super::dlist_node`]).
+        compiled: Option<Arc<CompiledNode>>,
     },
 }
 
@@ -118,9 +135,14 @@ impl Compiling {
     /// Closes the open vertex node, if any.
     fn close_node(&mut self) {
         if !self.ops.is_empty() {
+            let ops = std::mem::take(&mut self.ops);
+            let compiled = (!self.loopback)
+                .then(|| super::dlist_node::compile(&ops).map(Arc::new))
+                .flatten();
             self.cmds.push(Cmd::Node {
-                ops: std::mem::take(&mut self.ops),
+                ops,
                 loopback: self.loopback,
+                compiled,
             });
         }
         self.loopback = false;
@@ -259,6 +281,8 @@ impl Context {
                 let im = &self.immediate;
                 if im.pending != Some(m) || im.indexed != im.replaying {
                     self.flush_pending();
+                } else {
+                    self.materialize_pending_node();
                 }
                 self.immediate.pending = None;
                 self.immediate.active = Some(m);
@@ -364,7 +388,14 @@ impl Context {
                     // A compiled draw or glBegin inside glBegin/glEnd: Mesa skips the node.
                     Err(GlError::InvalidOperation)
                 }
-                Cmd::Node { ops, loopback } => {
+                Cmd::Node {
+                    compiled: Some(node),
+                    ..
+                } if self.immediate.active.is_none() => {
+                    self.replay_compiled(node);
+                    Ok(())
+                }
+                Cmd::Node { ops, loopback, .. } => {
                     self.immediate.replaying = !loopback;
                     for &op in ops {
                         if let Err(e) = self.vertex_op(op) {

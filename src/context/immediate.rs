@@ -27,6 +27,9 @@ pub struct Immediate {
     pub pending: Option<Primitive>,
     /// Whether the pending batch came from a display list (drawn as an indexed draw).
     pub indexed: bool,
+    /// The pending batch when it is a compiled display-list node's draw (then `verts`
+    /// is empty): drawn from the node's stored vertices.
+    pub pending_node: Option<super::dlist_node::PendingNode>,
     /// Whether a display-list vertex node is being replayed.
     pub replaying: bool,
     /// Vertices of the batch already drawn by [`Context::stream_immediate`].

@@ -17,6 +17,7 @@ pub mod buffer_select;
 pub mod client_arrays;
 pub mod client_image;
 pub mod dlist;
+pub mod dlist_node;
 
 pub mod draw;
 pub mod draw_cmd;
@@ -282,6 +283,9 @@ impl Context {
     pub fn flush_pending(&mut self) {
         self.settle_draws();
         if let Some(mode) = self.immediate.pending.take() {
+            if self.draw_pending_node(mode) {
+                return;
+            }
             let mats = self.take_vertex_materials();
             let verts = std::mem::take(&mut self.immediate.verts);
             // A batch from a display list is drawn indexed, as Mesa draws vertex nodes.

@@ -14,6 +14,7 @@ pub mod fetch;
 pub mod setup;
 pub mod setup8;
 pub mod source;
+pub mod stored;
 pub mod unfilled;
 
 /// The number of varying floats a vertex carries: primary colour (0..4), secondary colour
