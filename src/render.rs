@@ -519,6 +519,9 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
             if reject.rejects(k) {
                 stats.triangles += 1;
                 stats.tris_clip_rejected += 1;
+                // The vertices before the triangle's lowest are read in order: a run may
+                // start past them (its own may be read by a later triangle).
+                filled = filled.max(k[0].min(k[1]).min(k[2]));
                 return;
             }
             let top = k[0].max(k[1]).max(k[2]) + 1;

@@ -1,7 +1,8 @@
-//! The vertex stage over runs of consecutive vertices, for a plain stage (no lighting,
-//! fog, texture coordinate generation, point attenuation or user clip planes): position,
-//! clip mask and window position in SSE registers, one vertex after another in a loop
-//! whose iterations do not wait for each other. It writes exactly what
+//! The vertex stage over runs of consecutive vertices (without per-vertex materials or
+//! point attenuation): position, clip mask and window position in SSE registers, one
+//! vertex after another in a loop whose iterations do not wait for each other, and the
+//! lighting of eight vertices at once in AVX2 lanes. Also the position-only pass that
+//! gives every vertex's clip mask ahead of the stage ([`VertexStage::clip_masks`]). It writes exactly what
 //! [`VertexStage::run_into`] writes (same operations in the same order); per vertex, that
 //! function's dependency chain (transform, divide, viewport) was most of its cost when it
 //! ran vertex by vertex from the post-transform cache.
@@ -11,7 +12,7 @@ use super::lighting::eye_position;
 use super::texgen::generate;
 use super::transform::VertexStage;
 use crate::geometry::source::{VertexSlot, VertexSource};
-use crate::geometry::{ClipMask, ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
+use crate::geometry::{user_clip_mask, ClipMask, ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
 
 /// Vertices lit together, one per lane of an AVX2 register.
 #[cfg(target_arch = "x86_64")]
@@ -30,13 +31,12 @@ struct Consts {
 
 impl VertexStage {
     /// Whether [`VertexStage::run_block`] may run this stage: anything but per-vertex
-    /// materials, point attenuation and user clip planes, on an AVX2 level.
+    /// materials and point attenuation, on an AVX2 level.
     pub fn block_ok(&self) -> bool {
         self.light
             .as_ref()
             .is_none_or(|l| l.vertex_material.is_none() && l.fma == self.fma)
             && self.point_atten.is_none()
-            && self.ucp_enabled == 0
             && crate::cpu::isa().avx2()
     }
 
@@ -194,8 +194,8 @@ impl VertexStage {
         }
     }
 
-    /// The clip-space position of object position `pos` and its view-volume clip mask
-    /// ([`VertexStage::clip_position`] without user planes) in SSE registers.
+    /// The clip-space position of object position `pos` in SSE registers and its clip
+    /// mask ([`VertexStage::clip_position`]).
     ///
     /// # Safety
     /// The CPU has AVX2.
@@ -226,10 +226,14 @@ impl VertexStage {
                 cw
             });
             let below = sum.cmp_nge(k.zero).movemask() & 7;
-            (
-                clip,
-                (ABOVE[above as usize] | BELOW[below as usize]) as ClipMask,
-            )
+            let mut mask = (ABOVE[above as usize] | BELOW[below as usize]) as ClipMask;
+            if self.ucp_enabled != 0 {
+                // The user planes as `clip_position` tests them, on the same position.
+                let mut c = [0f32; 4];
+                clip.store(c.as_mut_ptr());
+                mask |= user_clip_mask(c, &self.ucp, self.ucp_enabled, self.fma);
+            }
+            (clip, mask)
         }
     }
 
@@ -240,7 +244,7 @@ impl VertexStage {
         let n = verts.count();
         out.reserve(n);
         #[cfg(target_arch = "x86_64")]
-        if self.ucp_enabled == 0 && crate::cpu::isa().avx2() {
+        if crate::cpu::isa().avx2() {
             // SAFETY: the level says the CPU has AVX2.
             return unsafe { self.clip_masks_avx2(verts, out) };
         }
@@ -251,7 +255,7 @@ impl VertexStage {
         }
     }
 
-    /// [`VertexStage::clip_masks`] compiled for AVX2, without user clip planes.
+    /// [`VertexStage::clip_masks`] compiled for AVX2.
     ///
     /// # Safety
     /// The CPU has AVX2.
@@ -470,7 +474,8 @@ mod tests {
     /// Every field `run_block` writes equals what `run_into` writes, bit for bit, for
     /// random and special positions and colours, fused and not, with and without the
     /// secondary colour and texture units (one through a matrix), under both clip-control
-    /// conventions, and runs that start anywhere in the source.
+    /// conventions, with and without user clip planes, and runs that start anywhere in
+    /// the source.
     #[test]
     fn run_block_writes_what_run_into_writes() {
         let vp = Viewport::new([3, -2, 333, 277], [0.25, 0.9], 300);
@@ -509,11 +514,18 @@ mod tests {
             }
             Mat4(m)
         };
-        for case in 0..16 {
+        for case in 0..32 {
             let fma = case & 1 == 1;
             let vp = if case & 8 == 8 { vp_halfz } else { vp };
             let mut stage = VertexStage::new(mat(), mat(), vp, fma);
             stage.color_sum = case & 2 == 2;
+            if case & 16 == 16 {
+                // Three user clip planes (of eight), in clip space.
+                stage.ucp_enabled = 0b1010_0100;
+                for p in stage.ucp.iter_mut() {
+                    *p = std::array::from_fn(|i| mat().0[i] * 2.0);
+                }
+            }
             if case & 4 == 4 {
                 stage.add_texture_unit(0, &IDENTITY);
                 stage.add_texture_unit(2, &mat());
