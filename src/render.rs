@@ -4,6 +4,11 @@
 //! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
 //! the clip volume the whole draw takes the clipping path, which also changes the
 //! GL_QUADS/GL_QUAD_STRIP triangle split (docs/llvmpipe-rules.md §5).
+//!
+//! A streamed draw (filled triangles through the post-transform cache) first takes every
+//! vertex's clip mask from its position alone ([`VertexStage::clip_masks`]): the masks
+//! make that decision, and a triangle outside one clip plane is counted and dropped
+//! before its vertices are lit ([`crate::geometry::reject`]).
 
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
