@@ -4,6 +4,11 @@
 //! The clip decision is per draw, as in llvmpipe's draw module: if any vertex is outside
 //! the clip volume the whole draw takes the clipping path, which also changes the
 //! GL_QUADS/GL_QUAD_STRIP triangle split (docs/llvmpipe-rules.md §5).
+//!
+//! A streamed draw (filled triangles through the post-transform cache) first takes every
+//! vertex's clip mask from its position alone ([`VertexStage::clip_masks`]): the masks
+//! make that decision, and a triangle outside one clip plane is counted and dropped
+//! before its vertices are lit ([`crate::geometry::reject`]).
 
 use crate::fixed_function::transform::VertexStage;
 use crate::fragment::FragPlan;
@@ -11,6 +16,7 @@ use crate::framebuffer::Framebuffer;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::{clip_triangle, UserPlanes};
 use crate::geometry::feedback::PrimSink;
+use crate::geometry::reject::Rejection;
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
 use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
@@ -112,16 +118,19 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         run_vertices(&mut stage, verts, materials)
     };
     stats.vertices += cv.len() as u64;
+    // A streamed draw's clip masks, from a pass over the positions alone.
+    let mut masks = Vec::new();
     let any_outside = if streamed {
+        stage.clip_masks(verts, &mut masks);
         // Only the split of quads and quad strips depends on whether any vertex is
         // outside (llvmpipe-rules §5; indexed or flat quads split one way on both paths):
-        // a pass over the positions alone decides it before anything is assembled.
+        // the masks decide it before anything is assembled.
         let split_varies = match mode {
             Primitive::Quads => indices.is_none() && !plan.flat,
             Primitive::QuadStrip => true,
             _ => false,
         };
-        split_varies && any_vertex_outside(&stage, verts, indices)
+        split_varies && any_vertex_outside(&stage, verts, indices, &masks)
     } else {
         match indices {
             Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
@@ -200,6 +209,9 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             pp.draw(mode, n, at, edge, nvary, &plan, &mut rast, stats);
         }
         _ if streamed => {
+            let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
+            let block = stage.block_ok();
+            let reject = Rejection::new(masks, mode, n, path, plan.flat, ix, block);
             let streamer = Streamer {
                 verts,
                 indices,
@@ -207,6 +219,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 pipe,
                 mode,
                 path,
+                reject: &reject,
             };
             let mut state = streamer.state(n);
             let section = geom_section();
@@ -429,6 +442,8 @@ struct Streamer<'a, S: ?Sized> {
     pipe: TriPipe<'a>,
     mode: Primitive,
     path: DrawPath,
+    /// The triangles dropped before their vertices run through the stage.
+    reject: &'a Rejection,
 }
 
 impl<S: VertexSource + ?Sized> Streamer<'_, S> {
@@ -491,6 +506,11 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         // of first use); one further ahead only moves `filled` past itself, its vertices
         // being transformed one by one on a miss, so a jump starts no run of vertices the
         // draw may never read.
+        //
+        // A triangle outside one clip plane by the masks of the position pass is counted
+        // and dropped first ([`Rejection`]), as the clip test after the stage would drop
+        // it: its vertices are not lit, and a run skips the vertices that only rejected
+        // triangles read.
         let block = stage.block_ok();
         let indexed = self.indices.is_some();
         let (mut filled, end) = if indexed {
@@ -498,8 +518,17 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         } else {
             (first, first + n)
         };
+        let (reject, live) = (self.reject, self.reject.live());
         assemble::triangles(mode, n, self.path, self.pipe.flat, |a, b, c| {
             let k = [ix(first + a), ix(first + b), ix(first + c)];
+            if reject.rejects(k) {
+                stats.triangles += 1;
+                stats.tris_clip_rejected += 1;
+                // The vertices before the triangle's lowest are read in order: a run may
+                // start past them (its own may be read by a later triangle).
+                filled = filled.max(k[0].min(k[1]).min(k[2]));
+                return;
+            }
             let top = k[0].max(k[1]).max(k[2]) + 1;
             if block && top > filled {
                 if indexed && top - filled > BLOCK {
@@ -507,7 +536,11 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
                 } else {
                     let from = filled.max(k[0].min(k[1]).min(k[2]));
                     let to = (from + BLOCK).max(top).min(end);
-                    filled = cache.fill(from, to, |i, out| stage.run_block(verts, i, slot, out));
+                    let run = |i, out: &mut [ClipVertex]| stage.run_block(verts, i, slot, out);
+                    filled = match live {
+                        Some(live) => cache.fill_live(from, to, live, run),
+                        None => cache.fill(from, to, run),
+                    };
                 }
             }
             let [va, vb, vc] = cache.triangle(k, |i, out| {
@@ -577,29 +610,23 @@ pub fn feedback<S: VertexSource + ?Sized>(
 }
 
 /// Whether any vertex the draw reads (every vertex of `verts`, or those `indices` name)
-/// is outside the clip volume or a user clip plane: the clip masks [`run_vertices`] would
-/// give, from the positions alone.
+/// is outside the clip volume or a user clip plane, given `masks`, the clip masks of
+/// `verts` ([`VertexStage::clip_masks`]); an index past them is tested on its own.
 fn any_vertex_outside<S: VertexSource + ?Sized>(
     stage: &VertexStage,
     verts: &S,
     indices: Option<&[u32]>,
+    masks: &[ClipMask],
 ) -> bool {
-    let outside = |p: [f32; 4]| stage.clip_position(p).1 != 0;
-    if let Some(fp) = verts.float_positions() {
-        // The same positions, read without a per-vertex fetch (a pass over 40k sprite
-        // corners was 4% of their frame).
-        let n = fp.count();
-        return match indices {
-            Some(ix) => ix.iter().any(|&i| {
-                let i = i as usize;
-                outside(if i < n { fp.get(i) } else { verts.position(i) })
-            }),
-            None => (0..n).any(|i| outside(fp.get(i))),
-        };
-    }
     match indices {
-        Some(ix) => ix.iter().any(|&i| outside(verts.position(i as usize))),
-        None => (0..verts.count()).any(|i| outside(verts.position(i))),
+        Some(ix) => ix.iter().any(|&i| {
+            let i = i as usize;
+            match masks.get(i) {
+                Some(&m) => m != 0,
+                None => stage.clip_position(verts.position(i)).1 != 0,
+            }
+        }),
+        None => masks.iter().any(|&m| m != 0),
     }
 }
 
@@ -697,14 +724,13 @@ mod tests {
                 for (v, c) in verts.iter().zip(&cv) {
                     assert_eq!(stage.clip_position(v.pos).1, c.mask);
                 }
-                assert_eq!(
-                    any_vertex_outside(&stage, verts.as_slice(), None),
-                    want_arrays
-                );
-                assert_eq!(
-                    any_vertex_outside(&stage, verts.as_slice(), Some(&indices)),
-                    want_elems
-                );
+                let mut masks = Vec::new();
+                stage.clip_masks(verts.as_slice(), &mut masks);
+                let want: Vec<ClipMask> = cv.iter().map(|v| v.mask).collect();
+                assert_eq!(masks, want);
+                let outside = |ix| any_vertex_outside(&stage, verts.as_slice(), ix, &masks);
+                assert_eq!(outside(None), want_arrays);
+                assert_eq!(outside(Some(&indices)), want_elems);
             }
         }
         // Both answers occur.

@@ -1,7 +1,8 @@
-//! The vertex stage over runs of consecutive vertices, for a plain stage (no lighting,
-//! fog, texture coordinate generation, point attenuation or user clip planes): position,
-//! clip mask and window position in SSE registers, one vertex after another in a loop
-//! whose iterations do not wait for each other. It writes exactly what
+//! The vertex stage over runs of consecutive vertices (without per-vertex materials or
+//! point attenuation): position, clip mask and window position in SSE registers, one
+//! vertex after another in a loop whose iterations do not wait for each other, and the
+//! lighting of eight vertices at once in AVX2 lanes. Also the position-only pass that
+//! gives every vertex's clip mask ahead of the stage ([`VertexStage::clip_masks`]). It writes exactly what
 //! [`VertexStage::run_into`] writes (same operations in the same order); per vertex, that
 //! function's dependency chain (transform, divide, viewport) was most of its cost when it
 //! ran vertex by vertex from the post-transform cache.
@@ -11,7 +12,7 @@ use super::lighting::eye_position;
 use super::texgen::generate;
 use super::transform::VertexStage;
 use crate::geometry::source::{VertexSlot, VertexSource};
-use crate::geometry::{ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
+use crate::geometry::{user_clip_mask, ClipMask, ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
 
 /// Vertices lit together, one per lane of an AVX2 register.
 #[cfg(target_arch = "x86_64")]
@@ -30,13 +31,12 @@ struct Consts {
 
 impl VertexStage {
     /// Whether [`VertexStage::run_block`] may run this stage: anything but per-vertex
-    /// materials, point attenuation and user clip planes, on an AVX2 level.
+    /// materials and point attenuation, on an AVX2 level.
     pub fn block_ok(&self) -> bool {
         self.light
             .as_ref()
             .is_none_or(|l| l.vertex_material.is_none() && l.fma == self.fma)
             && self.point_atten.is_none()
-            && self.ucp_enabled == 0
             && crate::cpu::isa().avx2()
     }
 
@@ -120,23 +120,8 @@ impl VertexStage {
         out: &mut [ClipVertex],
     ) {
         use crate::simd::F32x4;
-        let m = &self.mvp.0;
-        let vp = &self.viewport;
-        // SAFETY: AVX2 (the caller's promise); the loads are of 4-float arrays.
-        let k = unsafe {
-            Consts {
-                col: [
-                    F32x4::load(m[0..4].as_ptr()),
-                    F32x4::load(m[4..8].as_ptr()),
-                    F32x4::load(m[8..12].as_ptr()),
-                    F32x4::load(m[12..16].as_ptr()),
-                ],
-                scale: F32x4::new([vp.scale[0], vp.scale[1], vp.scale[2], 0.0]),
-                trans: F32x4::new([vp.translate[0], vp.translate[1], vp.translate[2], 0.0]),
-                zero: F32x4::zero(),
-                one: F32x4::splat(1.0),
-            }
-        };
+        // SAFETY: forwarded.
+        let k = unsafe { self.consts() };
         let Some(lp) = &self.light else {
             for (j, o) in out.iter_mut().enumerate() {
                 verts.vertex_into(first + j, slot);
@@ -178,6 +163,123 @@ impl VertexStage {
             }
             // SAFETY: forwarded.
             unsafe { self.light_lanes::<FMA>(lp, &pos, &nrm, &col, chunk) };
+        }
+    }
+
+    /// The block transform's constants: the columns of the combined matrix and the
+    /// viewport's scale and translation in SSE registers.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn consts(&self) -> Consts {
+        use crate::simd::F32x4;
+        let m = &self.mvp.0;
+        let vp = &self.viewport;
+        // SAFETY: AVX2 (the caller's promise); the loads are of 4-float arrays.
+        unsafe {
+            Consts {
+                col: [
+                    F32x4::load(m[0..4].as_ptr()),
+                    F32x4::load(m[4..8].as_ptr()),
+                    F32x4::load(m[8..12].as_ptr()),
+                    F32x4::load(m[12..16].as_ptr()),
+                ],
+                scale: F32x4::new([vp.scale[0], vp.scale[1], vp.scale[2], 0.0]),
+                trans: F32x4::new([vp.translate[0], vp.translate[1], vp.translate[2], 0.0]),
+                zero: F32x4::zero(),
+                one: F32x4::splat(1.0),
+            }
+        }
+    }
+
+    /// The clip-space position of object position `pos` in SSE registers and its clip
+    /// mask ([`VertexStage::clip_position`]).
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn clip_x86(&self, k: &Consts, pos: &[f32; 4]) -> (crate::simd::F32x4, ClipMask) {
+        use crate::simd::F32x4;
+        // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
+        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
+        const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
+        const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
+        // SAFETY: (whole body) AVX2, the caller's promise; the load is of 4 floats.
+        unsafe {
+            let p = F32x4::load(pos.as_ptr());
+            // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
+            let x = p.broadcast::<0x00>().mul(k.col[0]);
+            let y = p.broadcast::<0x55>().mul(k.col[1]);
+            let z = p.broadcast::<0xAA>().mul(k.col[2]);
+            let w = p.broadcast::<0xFF>().mul(k.col[3]);
+            let clip = x.add(y).add(z).add(w);
+            let cw = clip.broadcast::<0xFF>();
+            let above = clip.cmp_nle(cw).movemask() & 7;
+            // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so the
+            // same comparison gives `!(z >= 0)`; w in the x and y lanes, 0 in z.
+            let sum = clip.add(if self.viewport.halfz {
+                cw.blend::<0b0100>(k.zero)
+            } else {
+                cw
+            });
+            let below = sum.cmp_nge(k.zero).movemask() & 7;
+            let mut mask = (ABOVE[above as usize] | BELOW[below as usize]) as ClipMask;
+            if self.ucp_enabled != 0 {
+                // The user planes as `clip_position` tests them, on the same position.
+                let mut c = [0f32; 4];
+                clip.store(c.as_mut_ptr());
+                mask |= user_clip_mask(c, &self.ucp, self.ucp_enabled, self.fma);
+            }
+            (clip, mask)
+        }
+    }
+
+    /// The clip mask of every vertex of `verts` into `out` (cleared first), from the
+    /// positions alone: the masks [`VertexStage::run_into`] gives them.
+    pub fn clip_masks<S: VertexSource + ?Sized>(&self, verts: &S, out: &mut Vec<ClipMask>) {
+        out.clear();
+        let n = verts.count();
+        out.reserve(n);
+        #[cfg(target_arch = "x86_64")]
+        if crate::cpu::isa().avx2() {
+            // SAFETY: the level says the CPU has AVX2.
+            return unsafe { self.clip_masks_avx2(verts, out) };
+        }
+        let mask = |p: [f32; 4]| self.clip_position(p).1;
+        match verts.float_positions() {
+            Some(fp) if fp.count() == n => out.extend((0..n).map(|i| mask(fp.get(i)))),
+            _ => out.extend((0..n).map(|i| mask(verts.position(i)))),
+        }
+    }
+
+    /// [`VertexStage::clip_masks`] compiled for AVX2.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn clip_masks_avx2<S: VertexSource + ?Sized>(&self, verts: &S, out: &mut Vec<ClipMask>) {
+        // Loops, not closures: a closure is compiled without this function's target
+        // features.
+        // SAFETY: (whole body) AVX2, the caller's promise.
+        unsafe {
+            let k = self.consts();
+            let n = verts.count();
+            match verts.float_positions() {
+                Some(fp) if fp.count() == n => {
+                    for i in 0..n {
+                        out.push(self.clip_x86(&k, &fp.get(i)).1);
+                    }
+                }
+                _ => {
+                    for i in 0..n {
+                        out.push(self.clip_x86(&k, &verts.position(i)).1);
+                    }
+                }
+            }
         }
     }
 
@@ -261,32 +363,12 @@ impl VertexStage {
         v: &crate::geometry::fetch::VertexIn,
         o: &mut ClipVertex,
     ) {
-        use crate::simd::F32x4;
-        // Clip mask bits of the lanes x, y, z of `!(c <= w)` and of `!(c + w >= 0)`
-        // (see `geometry::clip_mask`: bits 0, 2, 5 and 1, 3, 4; `z + 0` under halfz).
-        const ABOVE: [u8; 8] = [0, 1, 4, 5, 32, 33, 36, 37];
-        const BELOW: [u8; 8] = [0, 2, 8, 10, 16, 18, 24, 26];
         let tex = &self.tex_units[..self.n_tex];
         // SAFETY: (whole body) AVX2 (and FMA when `FMA`), the caller's promise; the
-        // loads and stores are of 4-float arrays.
+        // stores are of 4-float arrays.
         unsafe {
-            let p = F32x4::load(v.pos.as_ptr());
-            // `Mat4::transform`: ((x·C0 + y·C1) + z·C2) + w·C3, each step rounded.
-            let x = p.broadcast::<0x00>().mul(k.col[0]);
-            let y = p.broadcast::<0x55>().mul(k.col[1]);
-            let z = p.broadcast::<0xAA>().mul(k.col[2]);
-            let w = p.broadcast::<0xFF>().mul(k.col[3]);
-            let clip = x.add(y).add(z).add(w);
+            let (clip, mask) = self.clip_x86(k, &v.pos);
             let cw = clip.broadcast::<0xFF>();
-            let above = clip.cmp_nle(cw).movemask() & 7;
-            // GL_ZERO_TO_ONE's near plane tests z alone: z + 0 has z's sign, so the
-            // same comparison gives `!(z >= 0)`; w in the x and y lanes, 0 in z.
-            let sum = clip.add(if self.viewport.halfz {
-                cw.blend::<0b0100>(k.zero)
-            } else {
-                cw
-            });
-            let below = sum.cmp_nge(k.zero).movemask() & 7;
             // `Viewport::apply_shader`: fmuladd(c · (1/w), scale, translate), 1/w last.
             let inv = k.one.div(cw);
             let q = clip.mul(inv);
@@ -298,7 +380,7 @@ impl VertexStage {
             let win = win.blend::<0b1000>(inv);
             clip.store(o.clip.as_mut_ptr());
             win.store(o.win.as_mut_ptr());
-            o.mask = (ABOVE[above as usize] | BELOW[below as usize]) as _;
+            o.mask = mask;
         }
         if let Some(f) = &self.fog {
             // The eye position lighting made, if it made one (it decides the formula).
@@ -392,7 +474,8 @@ mod tests {
     /// Every field `run_block` writes equals what `run_into` writes, bit for bit, for
     /// random and special positions and colours, fused and not, with and without the
     /// secondary colour and texture units (one through a matrix), under both clip-control
-    /// conventions, and runs that start anywhere in the source.
+    /// conventions, with and without user clip planes, and runs that start anywhere in
+    /// the source.
     #[test]
     fn run_block_writes_what_run_into_writes() {
         let vp = Viewport::new([3, -2, 333, 277], [0.25, 0.9], 300);
@@ -431,11 +514,18 @@ mod tests {
             }
             Mat4(m)
         };
-        for case in 0..16 {
+        for case in 0..32 {
             let fma = case & 1 == 1;
             let vp = if case & 8 == 8 { vp_halfz } else { vp };
             let mut stage = VertexStage::new(mat(), mat(), vp, fma);
             stage.color_sum = case & 2 == 2;
+            if case & 16 == 16 {
+                // Three user clip planes (of eight), in clip space.
+                stage.ucp_enabled = 0b1010_0100;
+                for p in stage.ucp.iter_mut() {
+                    *p = std::array::from_fn(|i| mat().0[i] * 2.0);
+                }
+            }
             if case & 4 == 4 {
                 stage.add_texture_unit(0, &IDENTITY);
                 stage.add_texture_unit(2, &mat());

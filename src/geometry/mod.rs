@@ -1,8 +1,9 @@
 //! Geometry: vertex fetch ([`fetch`], and where a draw's vertices come from with the
 //! post-transform cache, [`source`]), primitive assembly ([`assemble`]), homogeneous
 //! clipping ([`clip`]), the draw module's cull, offset and unfilled stages ([`unfilled`]),
-//! triangle setup ([`setup`], eight at a time in [`setup8`]), and the primitive stages of
-//! feedback and selection ([`feedback`]).
+//! triangle setup ([`setup`], eight at a time in [`setup8`]), the primitive stages of
+//! feedback and selection ([`feedback`]), and trivial rejection from positions alone,
+//! before the rest of the vertex stage ([`reject`]).
 //!
 //! Vertices travel as [`ClipVertex`]: clip-space position, window position (x, y in
 //! y-down raster space, z, 1/w) and up to [`MAX_VARY`] floats of varyings (colour first).
@@ -11,6 +12,7 @@ pub mod assemble;
 pub mod clip;
 pub mod feedback;
 pub mod fetch;
+pub mod reject;
 pub mod setup;
 pub mod setup8;
 pub mod source;

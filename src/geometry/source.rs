@@ -184,13 +184,45 @@ impl VertexCache {
         &mut self,
         start: usize,
         end: usize,
+        run: impl FnMut(usize, &mut [ClipVertex]),
+    ) -> usize {
+        self.fill_where(start, end, |_| true, run)
+    }
+
+    /// [`Self::fill`] of only the vertices `live` marks (a vertex past it counts as
+    /// marked), in runs of consecutive marked vertices: the entries of the others are
+    /// left as they are, so a vertex no drawn triangle reads is not transformed.
+    pub fn fill_live(
+        &mut self,
+        start: usize,
+        end: usize,
+        live: &[bool],
+        run: impl FnMut(usize, &mut [ClipVertex]),
+    ) -> usize {
+        self.fill_where(start, end, |i| live.get(i).copied().unwrap_or(true), run)
+    }
+
+    /// [`Self::fill`] of the vertices `keep` accepts.
+    #[inline(always)]
+    fn fill_where(
+        &mut self,
+        start: usize,
+        end: usize,
+        keep: impl Fn(usize) -> bool,
         mut run: impl FnMut(usize, &mut [ClipVertex]),
     ) -> usize {
         let end = end.min(start + self.mask + 1);
         let mut i = start;
         while i < end {
+            if !keep(i) {
+                i += 1;
+                continue;
+            }
             let s = i & self.mask;
-            let len = (end - i).min(self.mask + 1 - s);
+            let mut len = 1;
+            while len < (end - i).min(self.mask + 1 - s) && keep(i + len) {
+                len += 1;
+            }
             run(i, &mut self.slots[s..s + len]);
             for (j, tag) in self.tags[s..s + len].iter_mut().enumerate() {
                 *tag = i + j;
