@@ -1,7 +1,9 @@
 //! Rasterization: walks the rows of a set-up triangle, computes each row's exact covered
 //! span from the integer edge functions (no per-pixel edge test), and hands spans (or, for
 //! a triangle less than 4 pixels wide, 4x2 blocks) to the fragment stage's span shader
-//! chosen once per triangle (`variants`; the texture fast path's walk is `textured`).
+//! chosen once per triangle (`variants`; the texture fast path's walk is `textured`; the
+//! general textured walks sample a unit a row at a time where an 8-wide sampler covers it,
+//! `sample8`).
 //! Also here: batching triangles over bands of rows on the thread pool ([`batch`]), lines
 //! and points ([`lines`], [`prims`]), antialiased ones ([`smooth`]), textured lines, points
 //! and stippled polygons ([`prim_tex`]) and polygon stipple ([`stipple`]).
