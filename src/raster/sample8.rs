@@ -55,6 +55,7 @@ pub(super) fn rows<M: Madd>(
 /// The CPU has AVX2, and FMA when `u.fma`.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
+#[allow(clippy::needless_range_loop)]
 unsafe fn rows_body(
     u: &UnitPlan<'_>,
     k: usize,
@@ -80,10 +81,13 @@ unsafe fn rows_body(
     }
     if let (Some(r), Some(sh)) = (r, Shadow8::of(u)) {
         for row in 0..2 {
+            if !live[row].iter().any(|&l| l) {
+                continue;
+            }
             // SAFETY: forwarded from the caller.
-            if live[row].iter().any(|&l| l)
-                && !unsafe { sh.row(&s[row], &t[row], &r[row], &live[row], &mut texels[row][k]) }
-            {
+            let done =
+                unsafe { sh.row(&s[row], &t[row], &r[row], &live[row], &mut texels[row][k]) };
+            if !done {
                 return false;
             }
         }

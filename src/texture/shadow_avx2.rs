@@ -334,7 +334,8 @@ mod tests {
                                 continue;
                             };
                             for _ in 0..64 {
-                                let live: [bool; 8] = std::array::from_fn(|_| next() % 3 != 0);
+                                let live: [bool; 8] =
+                                    std::array::from_fn(|_| !next().is_multiple_of(3));
                                 let s: [f32; 8] =
                                     std::array::from_fn(|i| coord(&mut next, w, live[i]));
                                 let t: [f32; 8] =
