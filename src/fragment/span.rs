@@ -230,10 +230,26 @@ pub fn tex_r<M: Madd, const PERSP: bool>(
     fy: f32,
 ) -> [f32; LANES] {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
-    std::array::from_fn(|i| {
-        let e = |k: usize| vary_at::<M, PERSP>(t, base + k, fx[i], fy, oow[i]);
-        e(2) * (1.0f32 / e(3))
-    })
+    tex_r_oow::<M, PERSP>(t, base, fx, fy, &oow)
+}
+
+/// [`tex_r`] with the row's `1 / w` already computed (a loop, not `array::from_fn`: a
+/// closure the compiler leaves out of line loses the caller's target features).
+#[inline(always)]
+pub fn tex_r_oow<M: Madd, const PERSP: bool>(
+    t: &SetupTriangle,
+    base: usize,
+    fx: &[f32; LANES],
+    fy: f32,
+    oow: &[f32; LANES],
+) -> [f32; LANES] {
+    let mut r = [0f32; LANES];
+    for i in 0..LANES {
+        let rr = vary_at::<M, PERSP>(t, base + 2, fx[i], fy, oow[i]);
+        let q = vary_at::<M, PERSP>(t, base + 3, fx[i], fy, oow[i]);
+        r[i] = rr * (1.0f32 / q);
+    }
+    r
 }
 
 /// The primary colour of [`LANES`] pixels of row `fy` in f32, as the fragment shader

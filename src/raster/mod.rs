@@ -1,14 +1,17 @@
 //! Rasterization: walks the rows of a set-up triangle, computes each row's exact covered
 //! span from the integer edge functions (no per-pixel edge test), and hands spans (or, for
 //! a triangle less than 4 pixels wide, 4x2 blocks) to the fragment stage's span shader
-//! chosen once per triangle (`variants`; the texture fast path's walk is `textured`).
+//! chosen once per triangle (`variants`; the texture fast path's walk is `textured`; the
+//! general textured walks sample a unit a row at a time where an 8-wide sampler covers it,
+//! `sample8`).
 //! Also here: batching triangles over bands of rows on the thread pool ([`batch`]), lines
 //! and points ([`lines`], [`prims`]), antialiased ones ([`smooth`]), textured lines, points
 //! and stippled polygons ([`prim_tex`]) and polygon stipple ([`stipple`]).
 
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    shade_chunk, shade_span, tex_coords, tex_r, ChunkColors, Madd, Span, TexLanes, LANES,
+    one_over_w, shade_chunk, shade_span, tex_coords_oow, tex_r_oow, ChunkColors, Madd, Span,
+    TexLanes, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -23,6 +26,7 @@ pub mod lines;
 pub mod multisample;
 pub mod prim_tex;
 pub mod prims;
+mod sample8;
 pub mod smooth;
 pub mod stipple;
 mod textured;
@@ -404,7 +408,8 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
 
 /// Samples every unit for the 2x2 quads of chunk `c` that hold a live pixel, into
 /// `texels` (lanes of the other quads keep stale values); with `STR` also the r
-/// coordinate of the units that need it.
+/// coordinate of the units that need it. A unit an 8-wide sampler covers ([`sample8`])
+/// is sampled a row at a time, the others a quad at a time.
 #[inline(always)]
 fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
     t: &SetupTriangle,
@@ -413,20 +418,29 @@ fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
     texels: &mut [TexLanes; 2],
 ) {
     let (fx, fy, live) = (&c.fx, c.fy, &c.live);
+    // One `1 / w` per pixel for every unit (the values each unit's own would be).
+    let oow = [
+        one_over_w::<M, PERSP>(t, fx, fy[0]),
+        one_over_w::<M, PERSP>(t, fx, fy[1]),
+    ];
     for (k, u) in units.iter().enumerate() {
         let base = VARY_TEX + 4 * k;
-        let (s0, t0) = tex_coords::<M, PERSP>(t, base, fx, fy[0]);
-        let (s1, t1) = tex_coords::<M, PERSP>(t, base, fx, fy[1]);
+        let (s0, t0) = tex_coords_oow::<M, PERSP>(t, base, fx, fy[0], &oow[0]);
+        let (s1, t1) = tex_coords_oow::<M, PERSP>(t, base, fx, fy[1], &oow[1]);
         // An `if`, not `bool::then`: a closure that is not inlined loses the caller's
         // target features, and its fused multiply-adds become calls to `fmaf`.
         let rr = if STR && u.needs_r() {
             Some([
-                tex_r::<M, PERSP>(t, base, fx, fy[0]),
-                tex_r::<M, PERSP>(t, base, fx, fy[1]),
+                tex_r_oow::<M, PERSP>(t, base, fx, fy[0], &oow[0]),
+                tex_r_oow::<M, PERSP>(t, base, fx, fy[1], &oow[1]),
             ])
         } else {
             None
         };
+        // Row by row where an 8-wide sampler covers the unit (the same values).
+        if sample8::rows::<M>(u, k, &[s0, s1], &[t0, t1], rr.as_ref(), live, texels) {
+            continue;
+        }
         for j in 0..LANES / 2 {
             let (l, r) = (2 * j, 2 * j + 1);
             if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {

@@ -64,6 +64,8 @@ pub mod lod;
 pub mod mipmap;
 pub mod sample;
 pub mod shadow;
+#[cfg(target_arch = "x86_64")]
+pub mod shadow_avx2;
 pub mod srgb;
 pub mod unit;
 pub mod upload;

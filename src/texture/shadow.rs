@@ -23,6 +23,8 @@
 //!   `lp_build_sample_image_linear`; later versions use a masked lerp).
 //! - glCopyTexImage from the depth buffer is a blit: each stored value goes through the
 //!   sampler's float and back with the depth write's `round_half_even(f32(d·max))`.
+//! - [`super::shadow_avx2`] computes the same values 8 pixels at a time for the common
+//!   state (one level, 16/24 bits, CLAMP_TO_EDGE or power-of-two REPEAT).
 //! - The result is swizzled by GL_DEPTH_TEXTURE_MODE: LUMINANCE (d,d,d,1), INTENSITY
 //!   (d,d,d,d), ALPHA (0,0,0,d); the texture environment treats the texture as that base
 //!   format.

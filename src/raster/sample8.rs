@@ -1,0 +1,132 @@
+//! The 8-wide samplers of the general textured walks: a unit of a chunk sampled a row
+//! (8 pixels) at a time instead of a 2x2 quad at a time through the general sampler
+//! (`variants::sample_quad`), where an 8-wide sampler covers the unit's state:
+//! - a 2D texture on llvmpipe's 8-bit path (`UnitPlan::aos`): the fast path's chunk
+//!   sampler ([`crate::texture::fast::chunk_u8`], the same bytes as the general sampler's
+//!   `fast::quad_u8`), its texels then made floats as the general sampler makes them;
+//! - a shadow map with its depth comparison
+//!   ([`crate::texture::shadow_avx2::Shadow8`]).
+//!
+//! These are the units of MuJoCo's multi-unit draws (the floor's mipmapped grid beside
+//! the shadow map on unit 1, the light passes' shadow map alone), which the one-unit
+//! fast path does not take, and of every textured multisample draw. The values are the
+//! general sampler's; only the number of instructions changes.
+//!
+//! Each instruction-set level with AVX2 has its own out-of-line copy (one call per unit
+//! and chunk), compiled with FMA exactly when the level fuses; the other levels keep the
+//! quad sampler. `SOFTGL_TEX_PATH=general` turns these off with the fast path.
+
+use crate::fragment::span::{Madd, TexLanes, LANES};
+use crate::texture::UnitPlan;
+
+/// Samples unit `k` (`u`) of a chunk's two rows at `s`, `t` (with references `r` for a
+/// depth comparison) into `texels`, for the rows with a live lane; `false` (and the
+/// caller samples the quads) when no 8-wide sampler covers the unit or one declines.
+/// Lanes that are not live may receive any value.
+#[inline(always)]
+#[allow(unused_variables)]
+pub(super) fn rows<M: Madd>(
+    u: &UnitPlan<'_>,
+    k: usize,
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    r: Option<&[[f32; LANES]; 2]>,
+    live: &[[bool; LANES]; 2],
+    texels: &mut [TexLanes; 2],
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if crate::texture::fast_avx2::available() && crate::texture::fast::enabled() {
+        // SAFETY: (both) the CPU has AVX2 (`fast_avx2::available`), and FMA when the walk
+        // fuses (`cpu::isa` chose a fused level).
+        return unsafe {
+            if M::FUSED {
+                rows_avx2fma(u, k, s, t, r, live, texels)
+            } else {
+                rows_avx2(u, k, s, t, r, live, texels)
+            }
+        };
+    }
+    false
+}
+
+/// [`rows`]' body, inlined into each level's copy.
+///
+/// # Safety
+/// The CPU has AVX2, and FMA when `u.fma`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+#[allow(clippy::needless_range_loop)]
+unsafe fn rows_body(
+    u: &UnitPlan<'_>,
+    k: usize,
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    r: Option<&[[f32; LANES]; 2]>,
+    live: &[[bool; LANES]; 2],
+    texels: &mut [TexLanes; 2],
+) -> bool {
+    use crate::texture::{fast, sample, shadow_avx2::Shadow8, ExtKind};
+    let flat = matches!(u.ext.kind, ExtKind::Flat);
+    if u.aos && u.dims == 2 && flat && r.is_none() {
+        // The general sampler's 8-bit quads (`UnitPlan::sample_quad`): an AoS plan never
+        // has anisotropy.
+        let mut tex = [[[0u8; 4]; LANES]; 2];
+        fast::chunk_u8::<true>(u, s, t, live, true, &mut tex);
+        for (row, tex) in texels.iter_mut().zip(&tex) {
+            for (o, &v) in row[k].iter_mut().zip(tex) {
+                *o = sample::to_float(v);
+            }
+        }
+        return true;
+    }
+    if let (Some(r), Some(sh)) = (r, Shadow8::of(u)) {
+        for row in 0..2 {
+            if !live[row].iter().any(|&l| l) {
+                continue;
+            }
+            // SAFETY: forwarded from the caller.
+            let done =
+                unsafe { sh.row(&s[row], &t[row], &r[row], &live[row], &mut texels[row][k]) };
+            if !done {
+                return false;
+            }
+        }
+        return true;
+    }
+    false
+}
+
+/// Defines a level's out-of-line copy of [`rows_body`] with the given target features.
+#[cfg(target_arch = "x86_64")]
+macro_rules! rows_copy {
+    ($(#[$attr:meta])* $name:ident) => {
+        $(#[$attr])*
+        #[inline(never)]
+        unsafe fn $name(
+            u: &UnitPlan<'_>,
+            k: usize,
+            s: &[[f32; LANES]; 2],
+            t: &[[f32; LANES]; 2],
+            r: Option<&[[f32; LANES]; 2]>,
+            live: &[[bool; LANES]; 2],
+            texels: &mut [TexLanes; 2],
+        ) -> bool {
+            // SAFETY: forwarded from the caller.
+            unsafe { rows_body(u, k, s, t, r, live, texels) }
+        }
+    };
+}
+
+#[cfg(target_arch = "x86_64")]
+rows_copy!(
+    /// [`rows`] for the AVX2 level (not fused).
+    #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
+    rows_avx2
+);
+
+#[cfg(target_arch = "x86_64")]
+rows_copy!(
+    /// [`rows`] for the AVX2+FMA levels.
+    #[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]
+    rows_avx2fma
+);
