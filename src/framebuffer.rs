@@ -1,10 +1,10 @@
 //! The framebuffer: colour (8-bit RGBA per pixel), depth (16, 24 or 32-bit unorm, or
-//! 32-bit float) and stencil, on huge pages when large ([`HugeBuf`]); in y-down rows as llvmpipe
-//! keeps OSMesa's window buffer, or in GL's rows for a framebuffer object's working copy
-//! ([`Framebuffer::y_flip`]). It also owns the deferred full-buffer clears (values recorded
-//! by glClear, written by the bands a draw reaches or when something reads), the row and
-//! band views the rasterizer draws through ([`Target`]), and the copy into the user's
-//! OSMesa buffer (8-bit, 16-bit and float layouts).
+//! 32-bit float) and stencil, on huge pages when large ([`HugeBuf`]); in y-down rows as
+//! llvmpipe keeps OSMesa's window buffer, or in GL's rows for a framebuffer object's
+//! working copy ([`Framebuffer::y_flip`]). It also owns the deferred full-buffer clears
+//! (values recorded by glClear, written by the bands a draw reaches or when something
+//! reads), the row and band views the rasterizer draws through ([`Target`]), and the copy
+//! into the user's OSMesa buffer (8-bit, 16-bit and float layouts).
 //!
 //! The user buffer is written only by [`Framebuffer::copy_to_user`] (glFlush/glFinish), as
 //! Mesa does: a new buffer starts zeroed, colour (0,0,0,0) and depth 0.
