@@ -1,10 +1,10 @@
-//! The framebuffer: colour (8-bit RGBA per pixel), depth (16 or 24-bit unorm, or 32-bit
-//! float) and stencil, on huge pages when large ([`HugeBuf`]); in y-down rows as llvmpipe
-//! keeps OSMesa's window buffer, or in GL's rows for a framebuffer object's working copy
-//! ([`Framebuffer::y_flip`]). It also owns the deferred full-buffer clears (values recorded
-//! by glClear, written by the bands a draw reaches or when something reads), the row and
-//! band views the rasterizer draws through ([`Target`]), and the copy into the user's
-//! OSMesa buffer (8-bit, 16-bit and float layouts).
+//! The framebuffer: colour (8-bit RGBA per pixel), depth (16, 24 or 32-bit unorm, or
+//! 32-bit float) and stencil, on huge pages when large ([`HugeBuf`]); in y-down rows as
+//! llvmpipe keeps OSMesa's window buffer, or in GL's rows for a framebuffer object's
+//! working copy ([`Framebuffer::y_flip`]). It also owns the deferred full-buffer clears
+//! (values recorded by glClear, written by the bands a draw reaches or when something
+//! reads), the row and band views the rasterizer draws through ([`Target`]), and the copy
+//! into the user's OSMesa buffer (8-bit, 16-bit and float layouts).
 //!
 //! The user buffer is written only by [`Framebuffer::copy_to_user`] (glFlush/glFinish), as
 //! Mesa does: a new buffer starts zeroed, colour (0,0,0,0) and depth 0.
@@ -68,6 +68,10 @@ pub enum DepthFormat {
     Z16,
     /// 24-bit unorm (Z24X8 or Z24S8).
     Z24,
+    /// 32-bit unorm (GL_DEPTH_COMPONENT32: llvmpipe's Z32_UNORM). Stored values reach
+    /// 0xFFFFFFFF, so the depth test compares them unsigned (the SIMD paths flip the sign
+    /// bit of both sides first).
+    Z32,
     /// 32-bit float (GL_DEPTH_COMPONENT32F, GL_DEPTH32F_STENCIL8: llvmpipe's Z32_FLOAT and
     /// Z32_FLOAT_S8X24_UINT). The plane holds the f32's bits: the fragment z clamped to
     /// [0, 1] (NaN and −0 become +0), so the unsigned (and signed) integer order of the
@@ -82,7 +86,7 @@ impl DepthFormat {
             DepthFormat::None => 0,
             DepthFormat::Z16 => 16,
             DepthFormat::Z24 => 24,
-            DepthFormat::Z32F => 32,
+            DepthFormat::Z32 | DepthFormat::Z32F => 32,
         }
     }
     /// The largest stored value (1.0).
@@ -91,6 +95,7 @@ impl DepthFormat {
             DepthFormat::None => 0,
             DepthFormat::Z16 => 0xFFFF,
             DepthFormat::Z24 => 0xFF_FFFF,
+            DepthFormat::Z32 => u32::MAX,
             DepthFormat::Z32F => 1.0f32.to_bits(),
         }
     }
@@ -106,6 +111,7 @@ impl DepthFormat {
     pub fn to_float(self, z: u32) -> f32 {
         match self {
             DepthFormat::Z32F => f32::from_bits(z),
+            DepthFormat::Z32 => (z as f64 / u32::MAX as f64) as f32,
             _ => z as f32 / self.max_value() as f32,
         }
     }
@@ -116,6 +122,7 @@ impl DepthFormat {
     pub fn sample_float(self, z: u32) -> f32 {
         match self {
             DepthFormat::Z32F => f32::from_bits(z),
+            DepthFormat::Z32 => crate::texture::shadow::sample_value(z, 32),
             _ => z as f32 * (1.0 / self.max_value() as f64) as f32,
         }
     }
@@ -125,6 +132,7 @@ impl DepthFormat {
     pub fn quantize(self, z: f32) -> u32 {
         match self {
             DepthFormat::Z24 => (z * 16_777_215.0f32).round_ties_even() as u32,
+            DepthFormat::Z32 => z32_unorm(z),
             DepthFormat::Z16 => {
                 let t = z * (65535.0f32 / 65536.0f32) + 128.0f32;
                 t.to_bits() & 0xFFFF
@@ -152,6 +160,16 @@ impl DepthFormat {
             (z * max as f64).round_ties_even() as u32
         }
     }
+}
+
+/// A depth in [0, 1] as llvmpipe's shader writes it to Z32_UNORM
+/// (`lp_build_clamped_float_to_unsigned_norm` at 32 bits: the exact product `r = z·2³¹`
+/// truncated, then `(r << 1) − (r >> 31)`, so 1.0 gives 0xFFFFFFFF and every other value
+/// is even).
+#[inline(always)]
+pub fn z32_unorm(z: f32) -> u32 {
+    let r = (z * 2_147_483_648.0f32) as u32;
+    (r << 1).wrapping_sub(r >> 31)
 }
 
 /// Colour, depth and stencil storage of one context.

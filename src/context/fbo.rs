@@ -114,6 +114,7 @@ impl RbFormat {
             }
             GL_DEPTH_COMPONENT16 => RbFormat::Depth(DepthFormat::Z16),
             GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => RbFormat::Depth(DepthFormat::Z24),
+            GL_DEPTH_COMPONENT32 => RbFormat::Depth(DepthFormat::Z32),
             GL_DEPTH_COMPONENT32F => RbFormat::Depth(DepthFormat::Z32F),
             GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => RbFormat::DepthStencil(DepthFormat::Z24),
             GL_DEPTH32F_STENCIL8 => RbFormat::DepthStencil(DepthFormat::Z32F),
@@ -618,6 +619,7 @@ impl FboState {
                     BaseFormat::Depth => match img.storage.depth_bits() {
                         16 => ImageKind::Depth(DepthFormat::Z16, false),
                         24 => ImageKind::Depth(DepthFormat::Z24, false),
+                        32 => ImageKind::Depth(DepthFormat::Z32, false),
                         crate::texture::shadow::FLOAT_BITS => {
                             ImageKind::Depth(DepthFormat::Z32F, false)
                         }

@@ -448,7 +448,7 @@ impl Context {
                         out.extend_from_slice(&(fb.depth_at(i) | (s << 24)).to_ne_bytes());
                     }
                     // the window is never float
-                    DepthFormat::None | DepthFormat::Z32F => {}
+                    DepthFormat::None | DepthFormat::Z32 | DepthFormat::Z32F => {}
                 }
             }
         }

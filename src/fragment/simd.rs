@@ -67,6 +67,27 @@ pub(super) unsafe fn depth_pass(func: CompareFunc, q: I32x8, d: I32x8) -> I32x8 
     }
 }
 
+/// `d FUNC q` as a lane mask for the values of `format`: [`depth_pass`], with the sign bit
+/// of both sides flipped first for Z32 (whose values reach 2^32 − 1), which turns the
+/// signed compare into the unsigned one llvmpipe makes.
+#[inline(always)]
+pub(super) unsafe fn depth_pass_in(
+    func: CompareFunc,
+    format: DepthFormat,
+    q: I32x8,
+    d: I32x8,
+) -> I32x8 {
+    // SAFETY: AVX2 context (see `eval`).
+    unsafe {
+        if format == DepthFormat::Z32 {
+            let sign = I32x8::splat(i32::MIN);
+            depth_pass(func, q.xor(sign), d.xor(sign))
+        } else {
+            depth_pass(func, q, d)
+        }
+    }
+}
+
 /// The depth test of the `live` lanes of 8 pixels at `idx` of the depth buffer (lanes
 /// `fx`, row `fy`): Z from the plane, clamped and quantised as
 /// [`super::span::shade_chunk`] does, compared with the stored values and, where it
@@ -89,7 +110,7 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
         let q = depth_q::<FMA>(t, d.format, fx, fy);
         let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
         let old = I32x8::maskload(dptr as *const i32, live);
-        let pass = live.and(depth_pass(d.func, q, old));
+        let pass = live.and(depth_pass_in(d.func, d.format, q, old));
         if d.write {
             store_masked(dptr, fb.depth.len().saturating_sub(idx), pass, q);
         }
@@ -234,13 +255,18 @@ pub fn blend_code(plan: &FragPlan) -> u8 {
 
 /// `q FUNC old` as a lane mask, with the function fixed at compile time when `D` names it.
 #[inline(always)]
-unsafe fn depth_pass_d<const D: u8>(func: CompareFunc, q: I32x8, old: I32x8) -> I32x8 {
+unsafe fn depth_pass_d<const D: u8>(
+    func: CompareFunc,
+    format: DepthFormat,
+    q: I32x8,
+    old: I32x8,
+) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         match D {
             D_LESS => old.cmpgt(q),
             D_LEQUAL => q.cmpgt(old).xor(I32x8::splat(-1)),
-            _ => depth_pass(func, q, old),
+            _ => depth_pass_in(func, format, q, old),
         }
     }
 }
@@ -261,6 +287,12 @@ unsafe fn depth_q<const FMA: bool>(
             // `sat` is llvmpipe's clamp (maxps then minps: NaN and −0 give +0), and the
             // float's bits are stored.
             DepthFormat::Z32F => z.bits(),
+            // [`crate::framebuffer::z32_unorm`]: z·2³¹ is exact and at most 2³¹, which
+            // `cvttps2dq` turns into 0x80000000 (its overflow value), the same bits.
+            DepthFormat::Z32 => {
+                let r = z.mul(F32x8::splat(2_147_483_648.0)).to_i32_trunc();
+                r.shl::<1>().sub(r.shr::<31>())
+            }
             _ => {
                 // f32(f32(z * 65535/65536) + 128) keeps the rounded value in the low 16 bits.
                 let v = z
@@ -382,7 +414,7 @@ unsafe fn chunk8<
             } else {
                 I32x8::maskload(dptr as *const i32, live)
             };
-            pass = depth_pass_d::<DEPTH>(d.func, q, old);
+            pass = depth_pass_d::<DEPTH>(d.func, format, q, old);
             if !FULL {
                 pass = live.and(pass);
             }

@@ -24,6 +24,23 @@ fn z16_is_round_of_z_times_65535() {
     assert_eq!(DepthFormat::Z24.quantize(1.0), 0xFF_FFFF);
 }
 
+/// Z32_UNORM values llvmpipe wrote and cleared (read back as GL_UNSIGNED_INT from Mesa
+/// 22.3.6 OSMesa: docs/fbo-rules.md §7.2, scene `fbo_depth32`).
+#[test]
+fn z32_matches_llvmpipe() {
+    let z32 = DepthFormat::Z32;
+    assert_eq!(z32.quantize(1.0), 0xFFFF_FFFF);
+    assert_eq!(z32.quantize(0.0), 0);
+    assert_eq!(z32.quantize(0.244_833_11), 0x3EAD_6200);
+    // the scissored clear's quad: f32(f32(2d - 1)·0.5 + 0.5) for d = 1/3
+    let z = (2.0 / 3.0f64 - 1.0) as f32;
+    assert_eq!(z32.quantize(z * 0.5 + 0.5), 0x5555_5500);
+    assert_eq!(z32.quantize_clear(1.0 / 3.0), 0x5555_5555);
+    assert_eq!(z32.quantize_clear(0.999_999_99), 0xFFFF_FFD4);
+    assert_eq!(z32.quantize_clear(2.5e-10), 1);
+    assert_eq!(z32.quantize_clear(1.0), 0xFFFF_FFFF);
+}
+
 /// A uniform buffer copied through the fill shortcut gives the bytes of the copy.
 #[test]
 fn uniform_copy_matches_copy() {

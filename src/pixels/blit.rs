@@ -157,7 +157,9 @@ impl Job {
         // util_try_blit_via_copy_region's memcpy: unscaled, not mirrored, no scissor, every
         // buffer of the depth-stencil format; otherwise depth takes the blitter's shader.
         let whole = sc == [bx as i64, by as i64, (bx + bw) as i64, (by + bh) as i64];
-        let exact_depth = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
+        // Z32_UNORM to Z32_UNORM with NEAREST is an R32_UINT blit (`lp_blit`): copied too.
+        let copy_region = bw == sw && bh == sh && whole && (mask.stencil || s.stencil.is_empty());
+        let exact_depth = copy_region || s.depth_format == crate::framebuffer::DepthFormat::Z32;
         let bits = s.depth_format.texel_bits();
         let unscaled = bw == sw.abs() && bh == sh.abs();
         let convert = self.srgb.converts(unscaled);

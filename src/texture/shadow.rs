@@ -22,7 +22,8 @@
 //!   `fmuladd(w, v1 − v0, v0)` — compare, then filter (Mesa 22.3's
 //!   `lp_build_sample_image_linear`; later versions use a masked lerp).
 //! - glCopyTexImage from the depth buffer is a blit: each stored value goes through the
-//!   sampler's float and back with the depth write's `round_half_even(f32(d·max))`.
+//!   sampler's float and back with the depth write's `round_half_even(f32(d·max))` (for 32
+//!   bits the shader's Z32_UNORM conversion); 32 bits into 32 bits is copied.
 //! - [`super::shadow_avx2`] computes the same values 8 pixels at a time for the common
 //!   state (one level, 16/24 bits, CLAMP_TO_EDGE or power-of-two REPEAT).
 //! - The result is swizzled by GL_DEPTH_TEXTURE_MODE: LUMINANCE (d,d,d,1), INTENSITY
@@ -168,13 +169,18 @@ pub fn store(d: f32, bits: u8) -> u32 {
 
 /// A depth-buffer value of `bits` bits as a blit copies it into a texture of `to` bits:
 /// the sampler's float ([`sample_value`]), then the depth write's
-/// `round_half_even(f32(d·max))` (docs/llvmpipe-rules.md §8).
+/// `round_half_even(f32(d·max))` (docs/llvmpipe-rules.md §8), or for 32 bits the shader's
+/// Z32_UNORM conversion ([`crate::framebuffer::z32_unorm`]). 32 bits into 32 bits is
+/// copied: llvmpipe blits Z32_UNORM to Z32_UNORM as R32_UINT (`lp_blit`).
 pub fn convert(z: u32, bits: u8, to: u8) -> u32 {
+    if bits == 32 && to == 32 {
+        return z;
+    }
     let d = sample_value(z, bits).clamp(0.0, 1.0);
     if to == FLOAT_BITS {
         crate::framebuffer::DepthFormat::Z32F.quantize(d)
     } else if to >= 32 {
-        (d as f64 * zmax(32) as f64).round_ties_even() as u32
+        crate::framebuffer::z32_unorm(d)
     } else {
         (d * zmax(to) as f32).round_ties_even() as u32
     }

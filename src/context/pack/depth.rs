@@ -210,12 +210,28 @@ pub unsafe fn pack(ps: &PixelStore, cf: &ClientFormat, img: &Level, dst: *mut u8
         return;
     }
     let bits = img.storage.depth_bits();
+    // `get_tex_memcpy`: a Z32_UNORM image read as GL_UNSIGNED_INT (Z16 as
+    // GL_UNSIGNED_SHORT) without byte swapping is copied, not converted through float.
+    let copy = !ps.swap_bytes
+        && matches!(
+            (bits, cf.gl_type),
+            (32, GL_UNSIGNED_INT) | (16, GL_UNSIGNED_SHORT)
+        );
     // SAFETY: the caller guarantees `span` writable bytes.
     let bytes = unsafe { std::slice::from_raw_parts_mut(dst, lay.span(w, h)) };
     for y in 0..h {
         for x in 0..w {
-            let d = readback(texel_z(img.texel(x, y)), bits);
+            let z = texel_z(img.texel(x, y));
             let o = lay.start + y * lay.stride + x * lay.bpp;
+            if copy {
+                if bits == 16 {
+                    bytes[o..o + 2].copy_from_slice(&(z as u16).to_ne_bytes());
+                } else {
+                    bytes[o..o + 4].copy_from_slice(&z.to_ne_bytes());
+                }
+                continue;
+            }
+            let d = readback(z, bits);
             let (mut v, n) = pack_depth(d, cf.gl_type);
             if ps.swap_bytes {
                 v[..n].reverse();

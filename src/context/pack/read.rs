@@ -227,6 +227,7 @@ pub unsafe fn read_pixels(
                         (GL_UNSIGNED_INT, DepthFormat::Z16, None) => {
                             put(p, ((z << 16) | z) as f64, false)
                         }
+                        (GL_UNSIGNED_INT, DepthFormat::Z32, None) => put(p, z as f64, false),
                         // otherwise `read_depth_pixels`: float, scale and bias, pack
                         (_, format, sb) => {
                             let mut d = shadow::readback(z, format.texel_bits());
