@@ -136,21 +136,15 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
             m
         };
     }
-    let triangles = !matches!(
-        prims.mode,
-        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
-    );
     if mask == 0 {
         return;
     }
-    if triangles {
-        let pass = crate::fragment::MsPass {
-            mask: mask as u8,
-            alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
-        };
-        if draw_pass(ctx, prims, false, Some(pass)) {
-            return;
-        }
+    let pass = crate::fragment::MsPass {
+        mask: mask as u8,
+        alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
+    };
+    if draw_pass(ctx, prims, false, Some(pass)) {
+        return;
     }
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
@@ -220,6 +214,10 @@ fn draw_pass<S: VertexSource + ?Sized>(
         feedback: ctx.feedback.mode != RenderMode::Render,
         count_samples: ctx.queries.active.is_some(),
         ms,
+        points_lines: matches!(
+            prims.mode,
+            Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
+        ),
     };
     let mut plan = crate::plan::build(&input);
     if ms.is_some() && plan.frag.ms.is_none() {

@@ -82,8 +82,10 @@ pub struct DrawState<'a> {
     pub feedback: bool,
     /// An occlusion query is counting samples.
     pub count_samples: bool,
-    /// One sample's pass of a multisample draw.
+    /// A one-pass multisample draw (all four sample planes at once).
     pub ms: Option<MsPass>,
+    /// The draw's primitives are points or lines (the polygon pipeline plays no part).
+    pub points_lines: bool,
 }
 
 /// Plans a draw of `s`.
@@ -144,7 +146,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     // with the single-sample rules in every plane.
     let prims = prim_enables(caps);
     let poly = PolyPipeline::needed(s.raster, &prims, stage.two_side());
-    if poly {
+    if poly && !s.points_lines {
         frag.ms = None;
     }
     let cull_on = caps.get(Cap::CullFace);
@@ -169,10 +171,18 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
             (polygon.offset_factor, (units, float))
         });
     let nvary = stage.nvary();
-    let lines = LinePlan {
+    let mut lines = LinePlan {
         ucp: stage.ucp,
         ..LinePlan::new(s.raster, &prims, nvary)
     };
+    if frag.ms.is_some() {
+        // Multisampled lines are rectangles (`line_rectangular`): the stipple stage
+        // measures them by their Euclidean length, and GL_LINE_SMOOTH is ignored.
+        lines.smooth = false;
+        if let Some(st) = lines.stipple.as_mut() {
+            st.rectangular = true;
+        }
+    }
     DrawPlan {
         stage,
         frag,

@@ -49,10 +49,14 @@ impl PrimEnables {
     }
 }
 
-/// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage when
-/// `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
+/// Draws point `v` (inside the clip volume) of `size`: into a multisample object as the
+/// square sampled at the sample points ([`super::ms_prims`]), else through the aapoint
+/// stage when `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
 pub fn draw_point(v: &ClipVertex, size: f32, smooth: bool, nvary: usize, d: &mut Draw<'_, '_>) {
-    if smooth {
+    if d.plan.ms.is_some() {
+        // Multisampling ignores GL_POINT_SMOOTH.
+        super::ms_prims::point(v, size, nvary, d);
+    } else if smooth {
         super::smooth::point(v, size, nvary, d);
     } else {
         raster_point(v, size, nvary, d);
@@ -166,7 +170,10 @@ impl LinePlan {
         // Under GL_FLAT the draw module's flat-shade stage gives both ends the provoking colour.
         let (width, smooth, flat) = (self.width, self.smooth, d.plan.flat.then_some(flat_vary));
         let seg = |a: &ClipVertex, b: &ClipVertex, d: &mut Draw<'_, '_>| {
-            if smooth {
+            if d.plan.ms.is_some() {
+                // Multisampling ignores GL_LINE_SMOOTH.
+                super::ms_prims::line(a, b, flat_vary, width, n, d);
+            } else if smooth {
                 super::smooth::line(a, b, flat, width, n, d);
             } else {
                 raster_line(a, b, flat_vary, width, n, d);
