@@ -10,6 +10,8 @@
  *   blending, alpha to coverage, glSampleCoverage.
  * - GL_MULTISAMPLE off on the same object (single-sample rules in every sample), and
  *   polygon modes GL_LINE / GL_POINT.
+ * - glBitmap into the object (cached and large bitmaps), and glCopyPixels
+ *   from it (GL_INVALID_OPERATION).
  * Each part is resolved with glBlitFramebuffer into a single-sample object and read. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
@@ -379,6 +381,31 @@ int main(int argc, char **argv)
     glPointSize(1.0f);
     glLineWidth(1.0f);
     read_resolved(out, "polygon_mode");
+
+    /* 10. glBitmap into the 4x object (every sample), glCopyPixels from it (an error) */
+    {
+        static const GLubyte glyph[8] = {0x18, 0x3c, 0x66, 0xc3, 0xff, 0xc3, 0xc3, 0x00};
+        static GLubyte big[40 * 8];
+        for (i = 0; i < 40 * 8; i++)
+            big[i] = (GLubyte)(0x5a ^ (i * 37));
+        glColor3f(1.0f, 0.8f, 0.2f);
+        glRasterPos2f(10.3f, 10.6f);
+        for (i = 0; i < 12; i++)
+            glBitmap(8, 8, 0.0f, 0.0f, 6.5f, 0.5f, glyph);
+        glDisable(GL_MULTISAMPLE);
+        glColor3f(0.2f, 1.0f, 0.4f);
+        glRasterPos2f(5.0f, 40.0f);
+        glBitmap(320, 8, 0.0f, 0.0f, 0.0f, 0.0f, big);
+        glEnable(GL_MULTISAMPLE);
+        glColor3f(1.0f, 0.2f, 0.2f);
+        glRasterPos3f(4.0f, 60.0f, 0.0f);
+        for (i = 0; i < 10; i++)
+            glBitmap(8, 8, 0.0f, 0.0f, 8.0f, 1.0f, glyph);
+        glRasterPos2f(50.0f, 20.0f);
+        glCopyPixels(0, 0, 8, 8, GL_COLOR);
+        sgl_text(out, "copy_ms", "err %x", glGetError());
+    }
+    read_resolved(out, "bitmap");
 
     sgl_text(out, "final", "err %x", glGetError());
     OSMesaDestroyContext(ctx);
