@@ -119,6 +119,7 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
 /// [`crate::geometry::setup::setup_triangle_samples`] makes them) in box `b` (already cut
 /// to the region) with the one-pass multisample walk ([`multisample`]); the draw's plan
 /// must be a multisample one.
+#[inline]
 pub fn raster_samples(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     // Its own walk, in the CPU's level (the walks of a level fuse as llvmpipe does on
     // that CPU).
