@@ -176,7 +176,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 let v = at(k);
                 if v.mask == 0 {
                     let size = if per_vertex { v.psize } else { size };
-                    draw_point(v, size, prims.point_smooth, nvary, d);
+                    draw_point(v, size, prims.point_smooth, lines.top_left, nvary, d);
                 }
             }
         }

@@ -354,6 +354,7 @@ const SCENES: &[&str] = &[
     "fbo_float_tex",
     "fbo_srgb",
     "wide_pixels",
+    "msaa_lines_points",
 ];
 
 macro_rules! scene_tests {
@@ -504,6 +505,7 @@ scene_tests!(
     fbo_float_tex,
     fbo_srgb,
     wide_pixels,
+    msaa_lines_points,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

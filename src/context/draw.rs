@@ -85,13 +85,13 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
 ///
-/// With GL_MULTISAMPLE on, filled triangles are drawn once into the four sample planes
+/// With GL_MULTISAMPLE on, filled triangles, lines (rectangles), points (squares) and
+/// polygons drawn as lines or points are drawn once into the four sample planes
 /// ([`crate::fragment::MsPass`]: rasterised at the four sample points, shaded once per
-/// pixel, tested and written per sample); a sample that glSampleCoverage's mask
-/// (`(1 << (int)(v·4)) − 1`, inverted on request) leaves out is not drawn at all. Points,
-/// lines and triangles that take the polygon pipeline (unfilled, stippled, …) are drawn
-/// into every plane with the single-sample rules, one pass per plane (llvmpipe draws
-/// points and lines as rectangles sampled at the sample points: not reproduced).
+/// pixel, tested and written per sample; [`crate::raster::ms_prims`]); a sample that
+/// glSampleCoverage's mask (`(1 << (int)(v·4)) − 1`, inverted on request) leaves out is
+/// not drawn at all. Filled triangles that take the polygon pipeline (stippled, …) are
+/// drawn into every plane with the single-sample rules, one pass per plane.
 ///
 /// With GL_MULTISAMPLE off, llvmpipe rasterises at pixel centres, tests and writes depth
 /// and stencil of sample 0 only, and writes the colour of the fragments that pass into
@@ -136,21 +136,15 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
             m
         };
     }
-    let triangles = !matches!(
-        prims.mode,
-        Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
-    );
     if mask == 0 {
         return;
     }
-    if triangles {
-        let pass = crate::fragment::MsPass {
-            mask: mask as u8,
-            alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
-        };
-        if draw_pass(ctx, prims, false, Some(pass)) {
-            return;
-        }
+    let pass = crate::fragment::MsPass {
+        mask: mask as u8,
+        alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
+    };
+    if draw_pass(ctx, prims, false, Some(pass)) {
+        return;
     }
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
@@ -220,6 +214,10 @@ fn draw_pass<S: VertexSource + ?Sized>(
         feedback: ctx.feedback.mode != RenderMode::Render,
         count_samples: ctx.queries.active.is_some(),
         ms,
+        points_lines: matches!(
+            prims.mode,
+            Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
+        ),
     };
     let mut plan = crate::plan::build(&input);
     if ms.is_some() && plan.frag.ms.is_none() {

@@ -73,6 +73,10 @@ impl Context {
         };
         self.check_draw_framebuffer()?;
         self.check_read_framebuffer()?;
+        // Mesa refuses to copy from a multisample object (`_mesa_CopyPixels`).
+        if self.read_samples() > 0 {
+            return Err(GlError::InvalidOperation);
+        }
         let fb = self.fb.as_ref();
         let missing = match kind {
             CopyKind::Color => !self.reads_color(),

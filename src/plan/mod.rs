@@ -21,7 +21,7 @@ use crate::fragment::MsPass;
 use crate::framebuffer::DepthFormat;
 use crate::geometry::setup::CullMode;
 use crate::geometry::{cpu_has_fma, ClipConvention, Viewport};
-use crate::pipe::{Cap, Caps, ClipPlanes, Face, LightingState, RasterState, TexGenState};
+use crate::pipe::{Cap, Caps, ClipPlanes, Face, FillMode, LightingState, RasterState, TexGenState};
 use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
 use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
 use crate::render::DrawPlan;
@@ -82,8 +82,10 @@ pub struct DrawState<'a> {
     pub feedback: bool,
     /// An occlusion query is counting samples.
     pub count_samples: bool,
-    /// One sample's pass of a multisample draw.
+    /// A one-pass multisample draw (all four sample planes at once).
     pub ms: Option<MsPass>,
+    /// The draw's primitives are points or lines (the polygon pipeline plays no part).
+    pub points_lines: bool,
 }
 
 /// Plans a draw of `s`.
@@ -140,11 +142,19 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     frag.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     frag.count_samples = s.count_samples;
-    // Triangles that take the polygon pipeline (unfilled, smooth, two-sided …) are drawn
-    // with the single-sample rules in every plane.
-    let prims = prim_enables(caps);
+    // Filled triangles that take the polygon pipeline (stippled, offset with two-sided
+    // lighting …) are drawn with the single-sample rules in every plane.
+    let mut prims = prim_enables(caps);
+    if frag.ms.is_some() {
+        // Multisampling turns point and line smoothing off (st_atom_rasterizer.c).
+        prims.point_smooth = false;
+        prims.line_smooth = false;
+    }
     let poly = PolyPipeline::needed(s.raster, &prims, stage.two_side());
-    if poly {
+    // Polygons drawn as lines or points (both faces) become multisample lines and points.
+    let polygon = &s.raster.polygon;
+    let unfilled = polygon.mode_front != FillMode::Fill && polygon.mode_back != FillMode::Fill;
+    if poly && !s.points_lines && !unfilled {
         frag.ms = None;
     }
     let cull_on = caps.get(Cap::CullFace);
@@ -157,7 +167,6 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         top_left: t.y_flip == cc.upper_left,
     };
     // llvmpipe's own polygon offset (filled triangles outside the draw pipeline).
-    let polygon = &s.raster.polygon;
     let lp_offset = (caps.get(Cap::PolygonOffsetFill)
         && (polygon.offset_factor != 0.0 || polygon.offset_units != 0.0))
         .then(|| {
@@ -169,10 +178,19 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
             (polygon.offset_factor, (units, float))
         });
     let nvary = stage.nvary();
-    let lines = LinePlan {
+    let mut lines = LinePlan {
         ucp: stage.ucp,
+        top_left: cull.top_left,
         ..LinePlan::new(s.raster, &prims, nvary)
     };
+    if frag.ms.is_some() {
+        // Multisampled lines are rectangles (`line_rectangular`): the stipple stage
+        // measures them by their Euclidean length, and GL_LINE_SMOOTH is ignored.
+        lines.smooth = false;
+        if let Some(st) = lines.stipple.as_mut() {
+            st.rectangular = true;
+        }
+    }
     DrawPlan {
         stage,
         frag,

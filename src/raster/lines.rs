@@ -222,12 +222,14 @@ fn line_plane(a1: f32, a2: f32, dx: f32, dy: f32, ooa: f32, x1: f32, y1: f32) ->
 }
 
 /// Draws segment `v1`–`v2` (window coordinates, y-down) of integer-rounded `width` inside
-/// the region; `flat` is the provoking vertex's varyings (used under GL_FLAT).
+/// the region; `flat` is the provoking vertex's varyings (used under GL_FLAT); `top_left`
+/// is llvmpipe's `bottom_edge_rule = 0` (objects, toggled by GL_UPPER_LEFT): horizontal
+/// edges with `dcdy > 0` instead of `< 0` get the +1, and the box has no `adj`.
 pub fn raster_line(
     v1: &ClipVertex,
     v2: &ClipVertex,
     flat: &[f32; MAX_VARY],
-    width: f32,
+    (width, top_left): (f32, bool),
     nvary: usize,
     d: &mut Draw<'_, '_>,
 ) {
@@ -254,12 +256,13 @@ pub fn raster_line(
     let maxx = *xs.iter().max().unwrap_or(&0);
     let miny = *ys.iter().min().unwrap_or(&0);
     let maxy = *ys.iter().max().unwrap_or(&0);
-    // llvmpipe's bounding box, with the bottom-edge rule's +1 in y.
+    // llvmpipe's bounding box, with the bottom-edge rule's +1 in y (`adj`).
+    let adj = if top_left { 0 } else { 1 };
     let b = d.clip([
         (minx + ONE - 1) >> 8,
-        (miny + ONE) >> 8,
+        (miny + ONE - 1 + adj) >> 8,
         ((maxx + ONE - 1) >> 8) - 1,
-        ((maxy + ONE) >> 8) - 1,
+        ((maxy + ONE - 1 + adj) >> 8) - 1,
     ]);
     if b[0] > b[2] || b[1] > b[3] {
         return;
@@ -269,7 +272,7 @@ pub fn raster_line(
         let a = ys[i] - ys[j];
         let bb = xs[i] - xs[j];
         let mut c = a * xs[i] - bb * ys[i];
-        if a < 0 || (a == 0 && bb < 0) {
+        if a < 0 || (a == 0 && if top_left { bb > 0 } else { bb < 0 }) {
             c += 1;
         }
         Edge { a, b: bb, c }
@@ -324,15 +327,16 @@ pub fn raster_line(
     }
 }
 
-/// Draws a point of `size` (glPointSize, already clamped) at `v`.
-pub fn raster_point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
+/// Draws a point of `size` (glPointSize, already clamped) at `v`; `top_left` as
+/// [`raster_line`]'s (`y0 = snap(y) − adj`, adj = `bottom_edge_rule`).
+pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: &mut Draw<'_, '_>) {
     let (x, y) = (v.win[0], v.win[1]);
     if !(x.is_finite() && y.is_finite() && x.abs() < MAX_COORD && y.abs() < MAX_COORD) {
         return;
     }
     let size = size.min(255.0);
     let x0 = subpixel_snap(x);
-    let y0 = subpixel_snap(y) - 1;
+    let y0 = subpixel_snap(y) - if top_left { 0 } else { 1 };
     let width = (((subpixel_snap(size) + ONE / 2 - 1) & !(ONE - 1)).max(ONE)) >> 8;
     let (bx, by) = if width == 1 {
         (x0 >> 8, y0 >> 8)

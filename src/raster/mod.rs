@@ -23,6 +23,7 @@ use crate::texture::UnitPlan;
 
 pub mod batch;
 pub mod lines;
+pub mod ms_prims;
 pub mod multisample;
 pub mod prim_tex;
 pub mod prims;
@@ -95,21 +96,7 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
         return false;
     }
     if d.plan.ms.is_some() {
-        // A one-pass multisample draw: its own walk, in the CPU's level (the walks of a
-        // level fuse as llvmpipe does on that CPU).
-        // SAFETY: (all four) `cpu::isa` only reports features the CPU has, and each arm
-        // runs that level's walks.
-        unsafe {
-            match crate::cpu::isa() {
-                #[cfg(target_arch = "x86_64")]
-                Isa::Avx2Fma => multisample::triangle::<variants::Avx2Fma>(t, b, d),
-                #[cfg(target_arch = "x86_64")]
-                Isa::Avx2 => multisample::triangle::<variants::Avx2>(t, b, d),
-                #[cfg(target_arch = "x86_64")]
-                Isa::Fma => multisample::triangle::<variants::Fma>(t, b, d),
-                _ => multisample::triangle::<variants::Base>(t, b, d),
-            }
-        }
+        raster_samples(t, b, d);
         return true;
     }
     // SAFETY: (all five) `cpu::isa` and `cpu::avx512` only report features the CPU has,
@@ -130,6 +117,29 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
         }
     }
     true
+}
+
+/// Rasterizes `t` (edges set up for the four samples, as
+/// [`crate::geometry::setup::setup_triangle_samples`] makes them) in box `b` (already cut
+/// to the region) with the one-pass multisample walk ([`multisample`]); the draw's plan
+/// must be a multisample one.
+#[inline]
+pub fn raster_samples(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
+    // Its own walk, in the CPU's level (the walks of a level fuse as llvmpipe does on
+    // that CPU).
+    // SAFETY: (all four) `cpu::isa` only reports features the CPU has, and each arm runs
+    // that level's walks.
+    unsafe {
+        match crate::cpu::isa() {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2Fma => multisample::triangle::<variants::Avx2Fma>(t, b, d),
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => multisample::triangle::<variants::Avx2>(t, b, d),
+            #[cfg(target_arch = "x86_64")]
+            Isa::Fma => multisample::triangle::<variants::Fma>(t, b, d),
+            _ => multisample::triangle::<variants::Base>(t, b, d),
+        }
+    }
 }
 
 /// An AVX2 level: the AVX2 span shader when it covers the plan, else the general walks.

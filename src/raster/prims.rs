@@ -49,13 +49,26 @@ impl PrimEnables {
     }
 }
 
-/// Draws point `v` (inside the clip volume) of `size`: through the aapoint stage when
-/// `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
-pub fn draw_point(v: &ClipVertex, size: f32, smooth: bool, nvary: usize, d: &mut Draw<'_, '_>) {
-    if smooth {
+/// Draws point `v` (inside the clip volume) of `size`: into a multisample object as the
+/// square sampled at the sample points ([`super::ms_prims`]), else through the aapoint
+/// stage when `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
+/// `top_left` is llvmpipe's `bottom_edge_rule = 0` (objects; GL_UPPER_LEFT toggles it),
+/// which moves legacy points lying exactly on a pixel row.
+pub fn draw_point(
+    v: &ClipVertex,
+    size: f32,
+    smooth: bool,
+    top_left: bool,
+    nvary: usize,
+    d: &mut Draw<'_, '_>,
+) {
+    if d.plan.ms.is_some() {
+        // Multisampling ignores GL_POINT_SMOOTH.
+        super::ms_prims::point(v, size, nvary, d);
+    } else if smooth {
         super::smooth::point(v, size, nvary, d);
     } else {
-        raster_point(v, size, nvary, d);
+        raster_point(v, size, top_left, nvary, d);
     }
 }
 
@@ -102,6 +115,9 @@ pub struct LinePlan {
     pub ucp: UserPlanes,
     /// GL_LINE_SMOOTH: segments go through the aaline stage ([`super::smooth`]).
     pub smooth: bool,
+    /// The top-left fill rule (llvmpipe's `bottom_edge_rule = 0`: objects, toggled by
+    /// GL_UPPER_LEFT), for the lines' horizontal edges and boxes.
+    pub top_left: bool,
 }
 
 impl LinePlan {
@@ -118,6 +134,7 @@ impl LinePlan {
             nvary,
             ucp: [[0.0; 4]; 8],
             smooth: e.line_smooth,
+            top_left: false,
         }
     }
 
@@ -165,11 +182,15 @@ impl LinePlan {
         let n = self.nvary;
         // Under GL_FLAT the draw module's flat-shade stage gives both ends the provoking colour.
         let (width, smooth, flat) = (self.width, self.smooth, d.plan.flat.then_some(flat_vary));
+        let top_left = self.top_left;
         let seg = |a: &ClipVertex, b: &ClipVertex, d: &mut Draw<'_, '_>| {
-            if smooth {
+            if d.plan.ms.is_some() {
+                // Multisampling ignores GL_LINE_SMOOTH.
+                super::ms_prims::line(a, b, flat_vary, width, n, d);
+            } else if smooth {
                 super::smooth::line(a, b, flat, width, n, d);
             } else {
-                raster_line(a, b, flat_vary, width, n, d);
+                raster_line(a, b, flat_vary, (width, top_left), n, d);
             }
         };
         match stipple {
@@ -329,7 +350,7 @@ impl PolyPipeline<'_> {
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
                         let size = self.point_size.unwrap_or(p[k].psize);
-                        draw_point(&p[k], size, smooth, nvary, d);
+                        draw_point(&p[k], size, smooth, self.lines.top_left, nvary, d);
                     }
                 }
             }

@@ -213,7 +213,9 @@ pub fn draw_mask(
         z,
         flip_t: false,
     };
-    run(ctx, &q, Source::Mask(bits, c));
+    // Into a multisample object every sample plane gets the bitmap (llvmpipe's
+    // pixel-aligned quad covers every sample of the pixels it covers).
+    ctx.for_each_sample(|ctx, _| run(ctx, &q, Source::Mask(bits, c)));
 }
 
 /// Whether the per-fragment state lets glCopyPixels of colour be a blit.
