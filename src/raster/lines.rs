@@ -352,6 +352,20 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
+    let t = point_planes(v, nvary);
+    if !d.units.is_empty() {
+        super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, d);
+        return;
+    }
+    for py in b[1]..=b[3] {
+        shade_span_dispatch(&t, d, Span::of(py, b[0], b[2]));
+    }
+}
+
+/// The planes of a point: depth, w and the first `nvary` varyings constant at vertex
+/// `v`'s values (perspective-divided varyings kept times w, as the walks expect), flat
+/// values from `v`.
+pub(super) fn point_planes(v: &ClipVertex, nvary: usize) -> SetupTriangle {
     let w0 = v.win[3];
     let persp = w0 != 1.0;
     let constant = |a: f32| Plane {
@@ -363,20 +377,13 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
         z: constant(v.win[2]),
         w: constant(w0),
         persp,
-        flat: v.vary,
-        flat_u8: [0, 1, 2, 3].map(|i| crate::framebuffer::float_to_ubyte(v.vary[i])),
         ..Default::default()
     };
+    t.set_flat(MAX_VARY, |i| v.vary[i]);
     for i in 0..nvary {
         t.vary[i] = constant(if persp { v.vary[i] * w0 } else { v.vary[i] });
     }
-    if !d.units.is_empty() {
-        super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, d);
-        return;
-    }
-    for py in b[1]..=b[3] {
-        shade_span_dispatch(&t, d, Span::of(py, b[0], b[2]));
-    }
+    t
 }
 
 /// The line stipple stage of Mesa's draw module (`draw_pipe_stipple.c`): cuts a segment

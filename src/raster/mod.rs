@@ -448,7 +448,17 @@ fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
             None
         };
         // Row by row where an 8-wide sampler covers the unit (the same values).
-        if sample8::rows::<M>(u, k, &[s0, s1], &[t0, t1], rr.as_ref(), live, texels) {
+        if sample8::rows::<M>(
+            u,
+            k,
+            &sample8::Rows {
+                s: &[s0, s1],
+                t: &[t0, t1],
+                r: rr.as_ref(),
+                live,
+            },
+            texels,
+        ) {
             continue;
         }
         for j in 0..LANES / 2 {

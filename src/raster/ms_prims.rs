@@ -169,23 +169,7 @@ pub fn point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
     // The square cut to the box's pixels (`lp_setup_point.c` clamps its planes so).
     let (l, rt) = (x0.max(b[0] << 8), x1.min((b[2] + 1) << 8));
     let (bt, tp) = (y0.max(b[1] << 8), y1.min((b[3] + 1) << 8));
-    let w0 = v.win[3];
-    let persp = w0 != 1.0;
-    let constant = |a: f32| Plane {
-        a0: a,
-        dadx: 0.0,
-        dady: 0.0,
-    };
-    let mut t = SetupTriangle {
-        z: constant(v.win[2]),
-        w: constant(w0),
-        persp,
-        ..Default::default()
-    };
-    t.set_flat(MAX_VARY, |i| v.vary[i]);
-    for i in 0..nvary {
-        t.vary[i] = constant(if persp { v.vary[i] * w0 } else { v.vary[i] });
-    }
+    let mut t = super::lines::point_planes(v, nvary);
     // Clockwise in y-up terms, as a line's rectangle: left and bottom edges inclusive.
     quad(&mut t, [l, rt, rt, l], [tp, tp, bt, bt], b, d);
 }

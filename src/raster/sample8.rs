@@ -19,8 +19,20 @@
 use crate::fragment::span::{Madd, TexLanes, LANES};
 use crate::texture::UnitPlan;
 
-/// Samples unit `k` (`u`) of a chunk's two rows at `s`, `t` (with references `r` for a
-/// depth comparison) into `texels`, for the rows with a live lane; `false` (and the
+/// A chunk's two rows of texture coordinates for one unit, and which lanes are live.
+pub(super) struct Rows<'a> {
+    /// s per row and lane.
+    pub s: &'a [[f32; LANES]; 2],
+    /// t per row and lane.
+    pub t: &'a [[f32; LANES]; 2],
+    /// The depth comparison's references, for a shadow unit.
+    pub r: Option<&'a [[f32; LANES]; 2]>,
+    /// The lanes with a fragment.
+    pub live: &'a [[bool; LANES]; 2],
+}
+
+/// Samples unit `k` (`u`) of a chunk's two rows at `c.s`, `c.t` (with references `c.r`
+/// for a depth comparison) into `texels`, for the rows with a live lane; `false` (and the
 /// caller samples the quads) when no 8-wide sampler covers the unit or one declines.
 /// Lanes that are not live may receive any value.
 #[inline(always)]
@@ -28,10 +40,7 @@ use crate::texture::UnitPlan;
 pub(super) fn rows<M: Madd>(
     u: &UnitPlan<'_>,
     k: usize,
-    s: &[[f32; LANES]; 2],
-    t: &[[f32; LANES]; 2],
-    r: Option<&[[f32; LANES]; 2]>,
-    live: &[[bool; LANES]; 2],
+    c: &Rows<'_>,
     texels: &mut [TexLanes; 2],
 ) -> bool {
     #[cfg(target_arch = "x86_64")]
@@ -40,9 +49,9 @@ pub(super) fn rows<M: Madd>(
         // fuses (`cpu::isa` chose a fused level).
         return unsafe {
             if M::FUSED {
-                rows_avx2fma(u, k, s, t, r, live, texels)
+                rows_avx2fma(u, k, c, texels)
             } else {
-                rows_avx2(u, k, s, t, r, live, texels)
+                rows_avx2(u, k, c, texels)
             }
         };
     }
@@ -56,16 +65,9 @@ pub(super) fn rows<M: Madd>(
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 #[allow(clippy::needless_range_loop)]
-unsafe fn rows_body(
-    u: &UnitPlan<'_>,
-    k: usize,
-    s: &[[f32; LANES]; 2],
-    t: &[[f32; LANES]; 2],
-    r: Option<&[[f32; LANES]; 2]>,
-    live: &[[bool; LANES]; 2],
-    texels: &mut [TexLanes; 2],
-) -> bool {
+unsafe fn rows_body(u: &UnitPlan<'_>, k: usize, c: &Rows<'_>, texels: &mut [TexLanes; 2]) -> bool {
     use crate::texture::{fast, sample, shadow_avx2::Shadow8, ExtKind};
+    let Rows { s, t, r, live } = *c;
     let flat = matches!(u.ext.kind, ExtKind::Flat);
     if u.aos && u.dims == 2 && flat && r.is_none() {
         // The general sampler's 8-bit quads (`UnitPlan::sample_quad`): an AoS plan never
@@ -105,14 +107,11 @@ macro_rules! rows_copy {
         unsafe fn $name(
             u: &UnitPlan<'_>,
             k: usize,
-            s: &[[f32; LANES]; 2],
-            t: &[[f32; LANES]; 2],
-            r: Option<&[[f32; LANES]; 2]>,
-            live: &[[bool; LANES]; 2],
+            c: &Rows<'_>,
             texels: &mut [TexLanes; 2],
         ) -> bool {
             // SAFETY: forwarded from the caller.
-            unsafe { rows_body(u, k, s, t, r, live, texels) }
+            unsafe { rows_body(u, k, c, texels) }
         }
     };
 }
