@@ -11,6 +11,14 @@
  * `static void scene_extra(int w, int h, int frames)` that runs after the
  * timed frames (clear_only uses it to time memset in the same process).
  *
+ * `#define BENCH_BUFFER_TYPE GL_UNSIGNED_SHORT` (or GL_FLOAT) before the
+ * include binds an OSMESA_RGBA buffer of that channel type instead of
+ * GL_UNSIGNED_BYTE; the output is still 8-bit (u16 -> (v * 255 + 32767) /
+ * 65535, float -> clamp to [0, 1], * 255, + 0.5, truncated), the same
+ * conversion on both sides.  `#define BENCH_STENCIL_BITS 8` and
+ * `#define BENCH_ACCUM_BITS 16` ask the context for a stencil or an
+ * accumulation buffer (none by default).
+ *
  * Usage: SCENE OUTPUT WIDTH HEIGHT FRAMES
  *
  * The program renders one warm-up frame, then FRAMES timed frames.  Each
@@ -50,6 +58,47 @@ static inline double bench_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+#ifndef BENCH_STENCIL_BITS
+#define BENCH_STENCIL_BITS 0
+#endif
+#ifndef BENCH_ACCUM_BITS
+#define BENCH_ACCUM_BITS 0
+#endif
+#ifndef BENCH_BUFFER_TYPE
+#define BENCH_BUFFER_TYPE GL_UNSIGNED_BYTE
+#endif
+
+/* Bytes per channel of the bound buffer. */
+static size_t bench_channel_bytes(void)
+{
+    switch (BENCH_BUFFER_TYPE) {
+    case GL_UNSIGNED_SHORT:
+        return 2;
+    case GL_FLOAT:
+        return 4;
+    default:
+        return 1;
+    }
+}
+
+/* Converts the bound buffer (n pixels) to 8-bit RGBA in place. */
+static void bench_to_rgba8(unsigned char *buf, size_t n)
+{
+    size_t i;
+    if (BENCH_BUFFER_TYPE == GL_UNSIGNED_SHORT) {
+        const unsigned short *s = (const unsigned short *)buf;
+        for (i = 0; i < n * 4; i++)
+            buf[i] = (unsigned char)(((unsigned)s[i] * 255u + 32767u) / 65535u);
+    } else if (BENCH_BUFFER_TYPE == GL_FLOAT) {
+        const float *f = (const float *)buf;
+        for (i = 0; i < n * 4; i++) {
+            float v = f[i];
+            v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+            buf[i] = (unsigned char)(v * 255.0f + 0.5f);
+        }
+    }
+}
+
 static void scene_setup(int w, int h);
 static void scene_frame(int w, int h);
 #ifdef SCENE_EXTRA
@@ -74,18 +123,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "bad size or frame count\n");
         return 2;
     }
-    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, BENCH_STENCIL_BITS, BENCH_ACCUM_BITS, NULL);
     if (!ctx) {
         fprintf(stderr, "OSMesaCreateContextExt failed\n");
         return 2;
     }
-    buf = malloc((size_t)w * (size_t)h * 4);
+    buf = malloc((size_t)w * (size_t)h * 4 * bench_channel_bytes());
     if (!buf) {
         fprintf(stderr, "out of memory\n");
         return 2;
     }
-    memset(buf, 0, (size_t)w * (size_t)h * 4);
-    if (!OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, w, h)) {
+    memset(buf, 0, (size_t)w * (size_t)h * 4 * bench_channel_bytes());
+    if (!OSMesaMakeCurrent(ctx, buf, BENCH_BUFFER_TYPE, w, h)) {
         fprintf(stderr, "OSMesaMakeCurrent failed\n");
         return 2;
     }
@@ -110,6 +159,7 @@ int main(int argc, char **argv)
         perror(argv[1]);
         return 2;
     }
+    bench_to_rgba8(buf, (size_t)w * (size_t)h);
     fprintf(f, "SGLIMG final %d %d 4 RGBA %d up\n", w, h, w * 4);
     fwrite(buf, 1, (size_t)w * (size_t)h * 4, f);
     fputc('\n', f);
