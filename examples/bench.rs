@@ -14,6 +14,10 @@
 //! With `--filter-study` it runs the filter study instead (`bench/runner/filter_study.rs`):
 //! the ground plane of `bench/scenes/filter_study.c` with every minification filter and
 //! anisotropy level, timed the same way and judged against the analytic ground truth.
+//!
+//! With `--sweep N` it runs the state sweep instead (`bench/runner/sweep.rs`): N seeded
+//! random GL 1.x states of `bench/scenes/sweep.c`, each timed on softgl and llvmpipe and
+//! compared with llvmpipe's image.
 
 #[path = "../bench/runner/chart.rs"]
 mod chart;
@@ -21,6 +25,8 @@ mod chart;
 mod filter_study;
 #[path = "../bench/runner/ground_truth.rs"]
 mod ground_truth;
+#[path = "../bench/runner/sweep.rs"]
+mod sweep;
 
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -44,6 +50,20 @@ const KNOWN_SCENES: &[(&str, &str)] = &[
     ("immediate_100k", "h"),
     ("clear_only", "i"),
     ("fbo_msaa_shadow", "j"),
+    // One scene per feature group of issue 42's table.
+    ("tex3d_cube_texgen", "k"),
+    ("multitex_combine", "l"),
+    ("shadow_texgen", "m"),
+    ("wrap_env_formats", "n"),
+    ("lights8", "o"),
+    ("stencil_ops", "p"),
+    ("pushattrib_pixels", "q"),
+    ("buffer_ushort", "r1"),
+    ("buffer_float", "r2"),
+    ("fog", "s"),
+    ("query_accum_feedback", "t"),
+    ("polygon_modes_offset", "u"),
+    ("alpha_lines_points", "v"),
 ];
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -82,6 +102,14 @@ const WALL_REPS: usize = 25;
 
 struct Config {
     filter_study: bool,
+    /// `--sweep N`: run the state sweep over N states instead of the scenes.
+    sweep: Option<usize>,
+    /// `--sweep-seed S` (default 1).
+    sweep_seed: u32,
+    /// Whether reps, frames and sizes were given (the sweep has its own defaults).
+    reps_given: bool,
+    frames_given: bool,
+    sizes_given: bool,
     reps: usize,
     frames: usize,
     sizes: Vec<u32>,
@@ -102,6 +130,15 @@ impl Config {
         let mut wall_reps = env("BENCH_WALL_REPS");
         let mut wall_size = env("BENCH_WALL_SIZE").unwrap_or_else(|| "512".into());
         let mut filter_study = false;
+        let mut sweep = None;
+        let mut sweep_seed = env("BENCH_SWEEP_SEED").unwrap_or_else(|| "1".into());
+        let given =
+            |var: &str, flag: &str| env(var).is_some() || std::env::args().any(|a| a == flag);
+        let (reps_given, frames_given, sizes_given) = (
+            given("BENCH_REPS", "--reps"),
+            given("BENCH_FRAMES", "--frames"),
+            given("BENCH_SIZES", "--sizes"),
+        );
         let mut args = std::env::args().skip(1);
         while let Some(a) = args.next() {
             let slot = match a.as_str() {
@@ -109,6 +146,14 @@ impl Config {
                     filter_study = true;
                     continue;
                 }
+                "--sweep" => {
+                    sweep = args.next();
+                    if sweep.is_none() {
+                        return Err("--sweep needs a number of states".into());
+                    }
+                    continue;
+                }
+                "--sweep-seed" => &mut sweep_seed,
                 "--reps" => &mut reps,
                 "--frames" => &mut frames,
                 "--sizes" => &mut sizes,
@@ -125,9 +170,10 @@ impl Config {
                 "-h" | "--help" => {
                     return Err("usage: bench [--reps N] [--frames N] [--sizes 512,1024] \
                          [--scenes a,b] [--timeout S] [--wall-reps N] [--wall-size N] \
-                         [--filter-study]\n\
+                         [--filter-study] [--sweep N [--sweep-seed S]]\n\
                          (or the env vars BENCH_REPS, BENCH_FRAMES, BENCH_SIZES, \
-                         BENCH_SCENES, BENCH_TIMEOUT, BENCH_WALL_REPS, BENCH_WALL_SIZE)"
+                         BENCH_SCENES, BENCH_TIMEOUT, BENCH_WALL_REPS, BENCH_WALL_SIZE, \
+                         BENCH_SWEEP_SEED)"
                         .into())
                 }
                 other => return Err(format!("unknown argument {other:?} (try --help)")),
@@ -142,6 +188,14 @@ impl Config {
         let reps = num("reps", &reps)?.max(1);
         Ok(Config {
             filter_study,
+            sweep: sweep.map(|s| num("sweep", &s)).transpose()?,
+            sweep_seed: sweep_seed
+                .trim()
+                .parse()
+                .map_err(|_| format!("sweep-seed: not a number: {sweep_seed:?}"))?,
+            reps_given,
+            frames_given,
+            sizes_given,
             reps,
             frames: num("frames", &frames)?.max(1),
             sizes: sizes
@@ -191,8 +245,9 @@ fn find_scenes(filter: &Option<Vec<String>>) -> Result<Vec<Scene>, String> {
             }
             Some(p.file_stem()?.to_string_lossy().into_owned())
         })
-        // The filter study's scene is run only by --filter-study.
-        .filter(|n| n != filter_study::SCENE)
+        // The filter study's and the sweep's scenes are run only by --filter-study and
+        // --sweep.
+        .filter(|n| n != filter_study::SCENE && n != sweep::SCENE)
         .collect();
     names.sort_by_key(|n| {
         KNOWN_SCENES
@@ -662,6 +717,9 @@ fn real_main() -> Result<(), String> {
     fs::create_dir_all(out.join("runs")).map_err(|e| format!("mkdir: {e}"))?;
     if cfg.filter_study {
         return filter_study::run(&cfg);
+    }
+    if let Some(states) = cfg.sweep {
+        return sweep::run(&cfg, states);
     }
     let mut scenes = find_scenes(&cfg.scenes)?;
     if scenes.is_empty() {

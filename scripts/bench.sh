@@ -9,6 +9,7 @@
 # --sizes 512,1024, --scenes a,c,big_triangles, --timeout S (120), --wall-reps N,
 # --wall-size N (512); or the env vars BENCH_REPS, BENCH_FRAMES, ... of the same names.
 # --filter-study runs the filter study instead (bench/filter_study.md, docs/filter_study.png).
+# --sweep N [--sweep-seed S] runs the seeded state sweep instead (bench/sweep.md).
 # Then MuJoCo's models through the drop-in against llvmpipe, every size and sample count
 # (scripts/mujoco.sh, results in target/mujoco/results.md); BENCH_MUJOCO=0 leaves it out.
 set -euo pipefail
@@ -17,7 +18,7 @@ bash scripts/ensure-deps.sh
 cargo build --release
 cargo build --release --example bench
 target/release/examples/bench "$@"
-case " $* " in *" --filter-study "*) exit 0 ;; esac
+case " $* " in *" --filter-study "* | *" --sweep "*) exit 0 ;; esac
 if [ "${BENCH_MUJOCO:-1}" != 0 ]; then
   bash scripts/mujoco.sh
 fi
