@@ -13,6 +13,10 @@
 //! Each scene prints a one-line summary and writes a row to
 //! `target/compare/summary/NAME.md`; `target/compare/summary.md` collects them.
 //!
+//! The first states of the benchmark's seeded state sweep (`bench/scenes/sweep.c`) run here
+//! too, in the `sweep` module (`tests/osmesa_compare/sweep.rs`), with their known
+//! differences listed there.
+//!
 //! Environment variables:
 //! - `SOFTGL_SAVE_IMAGES=1`: write the PNGs even when the scene matches.
 //! - `SOFTGL_REF_DRIVER`: Gallium driver of the reference (default `llvmpipe`;
@@ -36,6 +40,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant, SystemTime};
+
+/// The seeded state sweep's subset (`bench/scenes/sweep.c` against OSMesa).
+#[path = "osmesa_compare/sweep.rs"]
+mod sweep;
 
 /// A per-scene tolerance for image blocks (text and data blocks are always exact).
 #[derive(Clone, Copy, Debug)]
@@ -639,7 +647,11 @@ fn mtime(p: &Path) -> Option<SystemTime> {
 /// Newest modification time of the files a binary depends on.
 fn newest_input(source: &Path, side: Side) -> Option<SystemTime> {
     let mut inputs = vec![source.to_path_buf()];
-    for dir in [root().join("c_tests"), root().join("include/GL")] {
+    for dir in [
+        root().join("c_tests"),
+        root().join("include/GL"),
+        root().join("bench/scenes"),
+    ] {
         if side == Side::Osmesa && dir.ends_with("include/GL") {
             continue;
         }
@@ -754,6 +766,17 @@ fn head_lines(s: &str, n: usize) -> String {
 /// per instruction-set level, and the levels that pin llvmpipe alike reuse the first run's
 /// output (still written to `NAME.osmesa.out`). `SOFTGL_CTEST_REBUILD=1` runs it anew.
 fn reference_output(name: &str, bin: &Path) -> Result<Vec<u8>, String> {
+    reference_output_with(name, bin, &[], &[])
+}
+
+/// As [`reference_output`], with environment variables and arguments after the output path
+/// (`name` must then name the run: it keys the cache).
+fn reference_output_with(
+    name: &str,
+    bin: &Path,
+    env: &[(&str, &str)],
+    args: &[&str],
+) -> Result<Vec<u8>, String> {
     let driver = std::env::var("SOFTGL_REF_DRIVER").unwrap_or_else(|_| "llvmpipe".into());
     let caps = reference_caps(name).unwrap_or_else(|| "native".into());
     let out_dir = target_dir().join("ctests").join("out");
@@ -769,7 +792,7 @@ fn reference_output(name: &str, bin: &Path) -> Result<Vec<u8>, String> {
             return Ok(bytes);
         }
     }
-    let bytes = run(name, bin, Side::Osmesa)?;
+    let bytes = run_env_args(name, bin, Side::Osmesa, env, args)?;
     fs::write(&cache, &bytes).map_err(|e| format!("write {}: {e}", cache.display()))?;
     Ok(bytes)
 }
@@ -787,16 +810,27 @@ fn run_with(
     side: Side,
     env: Option<(&str, &str)>,
 ) -> Result<Vec<u8>, String> {
+    run_env_args(name, bin, side, env.as_slice(), &[])
+}
+
+/// As [`run`], with environment variables and arguments after the output path (the
+/// benchmark scenes' `WIDTH HEIGHT FRAMES`).
+fn run_env_args(
+    name: &str,
+    bin: &Path,
+    side: Side,
+    env: &[(&str, &str)],
+    args: &[&str],
+) -> Result<Vec<u8>, String> {
     let out_dir = target_dir().join("ctests").join("out");
     fs::create_dir_all(&out_dir).map_err(|e| format!("mkdir {}: {e}", out_dir.display()))?;
-    let suffix = env.map(|(k, v)| format!(".{k}={v}")).unwrap_or_default();
+    let suffix: String = env.iter().map(|(k, v)| format!(".{k}={v}")).collect();
     let out_file = out_dir.join(format!("{name}.{}{suffix}.out", side.label()));
     let _ = fs::remove_file(&out_file);
     let mut cmd = Command::new(bin);
-    if let Some((k, v)) = env {
-        cmd.env(k, v);
-    }
+    cmd.envs(env.iter().copied());
     cmd.arg(&out_file)
+        .args(args)
         .current_dir(&out_dir)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())

@@ -1,0 +1,168 @@
+//! The seeded state sweep's subset in the test command (issue 42 item 4): the first
+//! [`STATES`] states of seed [`SEED`] of `bench/scenes/sweep.c` (a random but valid GL 1.x
+//! state each, drawn over a fixed set of patches) at [`SIZE`]², built against softgl and
+//! against OSMesa with this file's parent's helpers and compared image against image.
+//!
+//! Every state must be byte-identical to llvmpipe except those in [`KNOWN`], each with the
+//! tolerance of its class and the cause found. softgl with `SOFTGL_THREADS=1` must give the
+//! same bytes as with its default threads. `bench --sweep N` runs the whole sweep with
+//! timings (bench/README.md).
+
+use super::{
+    build, compare_images, ensure_reference, parse_output, reference_output_with, root,
+    run_env_args, target_dir, write_diff_png, Block, Side,
+};
+use std::fmt::Write as _;
+
+/// The sweep's seed (`SWEEP_SEED`) and how many states (`SWEEP_STATE` 0..STATES) run.
+const SEED: &str = "1";
+const STATES: usize = 24;
+
+/// Frame size (square).
+const SIZE: &str = "128";
+
+/// A class of known difference from llvmpipe.
+struct Class {
+    /// Largest channel difference allowed.
+    max_diff: u32,
+    /// Largest share of differing pixels allowed, percent.
+    max_percent_off: f64,
+    /// The cause, as far as it was found.
+    cause: &'static str,
+}
+
+/// Textures of 3- and 5-bit channels (GL_R3_G3_B2, GL_RGB5, GL_RGB5_A1) sampled by
+/// llvmpipe's general path. Probed (a 16x16 texture of each format under every environment
+/// and filter): uploads read back identically with glGetTexImage, and GL_RGBA4 and GL_RGBA8
+/// always match; GL_RGB5 matches with GL_REPEAT on a power-of-two texture but differs with
+/// GL_CLAMP, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT and on a 37x21 texture, under every
+/// environment and filter. That fits llvmpipe's two sampling paths: the one it takes for
+/// REPEAT on power-of-two sizes widens a channel to 8 bits by bit replication (what softgl
+/// does everywhere), the general one converts it to float as c / (2^n - 1) exactly (c = 3 of
+/// 5 bits: 24.68 -> 25 against the replicated 24), which the environment then uses.
+/// Replacing these formats by GL_RGBA8 in each state below (and nothing else) makes it
+/// byte-identical; a listed state with the alpha test moves a few alpha-tested pixels,
+/// hence the larger channel difference.
+const SMALL_FORMAT_GENERAL_PATH: Class = Class {
+    max_diff: 2,
+    max_percent_off: 30.0,
+    cause: "3/5-bit texture channels through llvmpipe's general sampling path (c/(2^n-1) \
+            in float, not the 8-bit widened value)",
+};
+
+/// As [`SMALL_FORMAT_GENERAL_PATH`], in a state with the alpha test: a fragment whose alpha
+/// differs by one level can pass on one side only.
+const SMALL_FORMAT_ALPHA_TESTED: Class = Class {
+    max_diff: 64,
+    max_percent_off: 1.0,
+    cause: "3/5-bit texture channels through llvmpipe's general sampling path, then the \
+            alpha test",
+};
+
+/// Not found yet. State 14 (TRIANGLE_STRIP, flat, blend ONE_MINUS_DST_ALPHA/CONSTANT_COLOR,
+/// alpha test GREATER 0.284, GL_RGBA4 REPLACE then GL_INTENSITY8 ADD): with blending off it
+/// is byte-identical, and with GL_RGBA8 in place of GL_RGBA4 it still differs; at 128x128
+/// one pixel is off by 1 in alpha and a vertical run of three at x = 27 by up to 34 in red,
+/// as if those pixels were blended one time more or less on one side.
+const UNEXPLAINED_BLEND: Class = Class {
+    max_diff: 40,
+    max_percent_off: 0.1,
+    cause: "not found: a few pixels of a blended strip (identical with blending off)",
+};
+
+/// The known differences of the subset: (state, class). Every other state is exact.
+const KNOWN: &[(usize, &Class)] = &[
+    (3, &SMALL_FORMAT_GENERAL_PATH),
+    (10, &SMALL_FORMAT_GENERAL_PATH),
+    (13, &SMALL_FORMAT_GENERAL_PATH),
+    (14, &UNEXPLAINED_BLEND),
+    (17, &SMALL_FORMAT_ALPHA_TESTED),
+    (18, &SMALL_FORMAT_GENERAL_PATH),
+    (21, &SMALL_FORMAT_GENERAL_PATH),
+];
+
+/// The subset: each state is built once per side, run on both, and compared.
+#[test]
+fn sweep_subset_matches_llvmpipe() {
+    ensure_reference();
+    let src = root().join("bench/scenes/sweep.c");
+    let ref_bin = build("sweep", &src, Side::Osmesa).unwrap_or_else(|e| panic!("{e}"));
+    let our_bin = build("sweep", &src, Side::Softgl).unwrap_or_else(|e| panic!("{e}"));
+    let compare_dir = target_dir().join("compare");
+    let _ = std::fs::create_dir_all(&compare_dir);
+    let args = [SIZE, SIZE, "0"];
+    let mut problems = String::new();
+    let mut exact = 0;
+    for state in 0..STATES {
+        let state_s = state.to_string();
+        let env = [("SWEEP_SEED", SEED), ("SWEEP_STATE", state_s.as_str())];
+        let name = format!("sweep-{SEED}-{state}-{SIZE}");
+        let theirs = reference_output_with(&name, &ref_bin, &env, &args)
+            .unwrap_or_else(|e| panic!("state {state}: {e}"));
+        let ours = run_env_args(&name, &our_bin, Side::Softgl, &env, &args)
+            .unwrap_or_else(|e| panic!("state {state}: {e}"));
+        let mut env1 = env.to_vec();
+        env1.push(("SOFTGL_THREADS", "1"));
+        let single = run_env_args(&name, &our_bin, Side::Softgl, &env1, &args)
+            .unwrap_or_else(|e| panic!("state {state}: {e}"));
+        if single != ours {
+            let _ = writeln!(
+                problems,
+                "state {state}: SOFTGL_THREADS=1 differs from default"
+            );
+        }
+        let image = |bytes: &[u8]| match parse_output(bytes).map(|b| b.into_iter().next()) {
+            Ok(Some(Block::Image(i))) => i,
+            other => panic!("state {state}: no image in the output: {other:?}"),
+        };
+        let (a, b) = (image(&ours), image(&theirs));
+        let s = compare_images(&a, &b);
+        let known = KNOWN.iter().find(|(k, _)| *k == state).map(|(_, c)| *c);
+        let off_pct = 100.0 - s.percent_identical();
+        let within = match known {
+            None => s.off == 0,
+            Some(c) => s.max_diff <= c.max_diff && off_pct <= c.max_percent_off,
+        };
+        if s.off == 0 {
+            exact += 1;
+            if known.is_some() {
+                let _ = writeln!(
+                    problems,
+                    "state {state} is now byte-identical: take it off KNOWN"
+                );
+            }
+        }
+        println!(
+            "sweep state {state}: {:.3}% identical, max diff {}{}",
+            s.percent_identical(),
+            s.max_diff,
+            known.map_or(String::new(), |c| format!(" (known: {})", c.cause))
+        );
+        if !within {
+            let diff = compare_dir.join(format!("{name}.diff.png"));
+            let _ = write_diff_png(&a, &b, &diff);
+            let _ = writeln!(
+                problems,
+                "state {state}: {:.3}% identical, max diff {} (allowed: {}); diff image {}; \
+                 the state in words: SWEEP_SEED={SEED} SWEEP_STATE={state} \
+                 target/ctests/softgl-release/sweep out.bin {SIZE} {SIZE} 0",
+                s.percent_identical(),
+                s.max_diff,
+                known.map_or("identical".into(), |c| format!(
+                    "max diff {}, {}% off",
+                    c.max_diff, c.max_percent_off
+                )),
+                diff.display()
+            );
+        }
+    }
+    println!("sweep subset: {exact} of {STATES} states byte-identical to llvmpipe");
+    assert!(problems.is_empty(), "sweep subset:\n{problems}");
+    for (state, class) in KNOWN {
+        assert!(
+            *state < STATES,
+            "KNOWN lists state {state} outside the subset"
+        );
+        assert!(!class.cause.is_empty());
+    }
+}
