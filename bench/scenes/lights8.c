@@ -60,11 +60,7 @@ static void scene_frame(int w, int h)
     int i;
     BENCH_UNUSED(w, h);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-1.0, 1.0, -1.0, 1.0, 2.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    shape_perspective(1.0, 2.0, 30.0);
     /* Lights placed in eye space. */
     for (i = 0; i < 8; i++) {
         GLfloat pos[4] = {-3.0f + 0.9f * (float)i, 2.0f - 0.5f * (float)(i % 4), -3.0f,

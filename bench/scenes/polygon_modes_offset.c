@@ -30,11 +30,7 @@ static void scene_frame(int w, int h)
     int i;
     BENCH_UNUSED(w, h);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-1.0, 1.0, -1.0, 1.0, 2.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    shape_perspective(1.0, 2.0, 30.0);
     for (i = 0; i < 12; i++) {
         int kind = i % 4;
         glPushMatrix();

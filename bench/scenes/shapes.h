@@ -12,6 +12,17 @@
 
 #define SHAPES_PI 3.14159265358979f
 
+/* A symmetric perspective projection (glFrustum with +-half at `n`) and an identity
+ * modelview, the modelview matrix left current. */
+static inline void shape_perspective(double half, double n, double f)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-half, half, -half, half, n, f);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
 /* A sphere of radius r at the origin: `slices` x `stacks` quads as strips. */
 static inline void shape_sphere(float r, int slices, int stacks)
 {

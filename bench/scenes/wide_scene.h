@@ -57,11 +57,7 @@ static void scene_frame(int w, int h)
     int i;
     BENCH_UNUSED(w, h);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-0.8, 0.8, -0.8, 0.8, 1.5, 60.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    shape_perspective(0.8, 1.5, 60.0);
     glTranslatef(0.0f, -1.5f, -8.0f);
     glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
     glEnable(GL_LIGHTING);
