@@ -8,7 +8,9 @@
 //! stencil in y-down rows, the OSMesa window's layout) assembled from the attachments by
 //! [`super::fbo_bind`], and written back into them whenever something else may look at
 //! them (rebinding, texture specification, glGenerateMipmap, reads through another
-//! binding). The window's own framebuffer is parked in [`FboState::window`] meanwhile.
+//! binding). Renderbuffer buffers of the working copy's layout are not copied but lent to
+//! it while it is bound ([`super::fbo_lend`]): then the working copy holds the truth. The
+//! window's own framebuffer is parked in [`FboState::window`] meanwhile.
 //!
 //! One colour attachment is drawn at a time (the one glDrawBuffer selects); glDrawBuffers
 //! with several is GL 2.0 and not offered.

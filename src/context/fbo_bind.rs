@@ -3,12 +3,25 @@
 //!
 //! See [`super::fbo`] for the model. The working copy's rows are GL's (row 0 at the
 //! bottom, [`Framebuffer::y_flip`] false), as llvmpipe draws into objects: its viewport is
-//! not flipped, so window coordinates round as they do there and loading or writing back is
-//! a plain row copy (the window's buffer is y-down and flipped). Its size is the
-//! smallest of the attached images (GL 3.0 lets them differ); writing back touches only that
-//! region of each image, and happens only when something was drawn. A single-sample
-//! object keeps its written-back working copy between binds: reused as it is when no
-//! attached image changed since, reloaded in place when the layout still fits.
+//! not flipped, so window coordinates round as they do there, and the images' rows are the
+//! working copy's rows. Its size is the smallest of the attached images (GL 3.0 lets them
+//! differ).
+//!
+//! What binding and unbinding cost:
+//! - Renderbuffer buffers laid out as the working copy's (RGBA8 and RGBA sRGB colour,
+//!   every depth and stencil format, of the working copy's size) are lent to it, every
+//!   sample plane of a multisample one too: moved in on assembly and back when the object
+//!   is parked, never copied ([`super::fbo_lend`]).
+//! - The other images (texture images, RGB, legacy and wide colour) are copied in
+//!   ([`super::fbo_image::load`]) and written back ([`super::fbo_image::store`]): only the
+//!   region the working copy covers, and only when something was drawn.
+//! - An object's working copy, with its sample planes, is kept between binds
+//!   ([`super::fbo::Cached`]): reused as it is (its loans made anew) when no attached image
+//!   changed since, refilled in place when the layout still fits, so a bind allocates
+//!   nothing.
+//! - A resolving glBlitFramebuffer reads the multisample source's planes with their
+//!   buffers lent ([`Context::with_read_planes`]); other reads through another binding
+//!   assemble a copy.
 
 use super::fbo::{Attachment, Cached, ImageKind, Layout, Status, SAMPLES};
 use super::fbo_image::{image_mut, load, store};
@@ -96,17 +109,16 @@ impl Context {
         let wide = self.fbo.wide_kind(parts.color, &self.textures);
         let wide_tex = wide.is_some() && matches!(parts.color, Some(Attachment::Texture(_)));
         let color_kind = info(parts.color).map(|i| i.kind);
-        let format = match color_kind {
-            Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
-            // a float or 16-bit red, RG or luminance image has no alpha to blend with
-            // (llvmpipe's destination alpha is 1)
-            Some(ImageKind::Color(BaseFormat::Red | BaseFormat::Rg | BaseFormat::Luminance))
-                if wide_tex =>
-            {
-                ColorFormat::Rgb
-            }
-            _ => ColorFormat::Rgba,
-        };
+        let format =
+            match color_kind {
+                Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
+                // a float or 16-bit red, RG or luminance image has no alpha to blend with
+                // (llvmpipe's destination alpha is 1)
+                Some(ImageKind::Color(
+                    BaseFormat::Red | BaseFormat::Rg | BaseFormat::Luminance,
+                )) if wide_tex => ColorFormat::Rgb,
+                _ => ColorFormat::Rgba,
+            };
         let depth = match info(parts.depth).map(|i| i.kind) {
             Some(ImageKind::Depth(d, _)) => d,
             _ => DepthFormat::None,
@@ -164,7 +176,10 @@ impl Context {
                 let current = c.seen == seen;
                 (std::iter::once(c.fb).chain(c.planes).collect(), current)
             }
-            _ => ((0..planes).map(|_| hollow(&layout)).collect::<Vec<_>>(), false),
+            _ => (
+                (0..planes).map(|_| hollow(&layout)).collect::<Vec<_>>(),
+                false,
+            ),
         };
         let mut fbs = fbs;
         for (plane, fb) in fbs.iter_mut().enumerate() {

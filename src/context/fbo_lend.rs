@@ -169,7 +169,12 @@ impl Context {
         let Some(f) = self.fbo.object(name) else {
             return;
         };
-        let attached: Vec<Attachment> = f.color.iter().chain([&f.depth, &f.stencil]).copied().collect();
+        let attached: Vec<Attachment> = f
+            .color
+            .iter()
+            .chain([&f.depth, &f.stencil])
+            .copied()
+            .collect();
         let (give, keep): (Vec<Loan>, Vec<Loan>) = std::mem::take(&mut self.fbo.loans)
             .into_iter()
             .partition(|l| attached.contains(&Attachment::Renderbuffer(l.rb)));
