@@ -147,15 +147,29 @@ impl<T: Plain> HugeBuf<T> {
     /// `len` copies of `value`. A mapped buffer is only written when `value` is not zero,
     /// so a zero buffer costs no page until it is used (as `vec![0; len]` from calloc).
     pub fn filled(len: usize, value: T) -> Self {
-        let bytes = len.checked_mul(std::mem::size_of::<T>());
-        if let Some(map) = bytes.and_then(Mapping::huge) {
-            let mut b = HugeBuf(Inner::Mapped { map, len });
-            if value != T::ZERO {
-                b.fill(value);
-            }
-            return b;
+        Self::mapped(len, value).unwrap_or_else(|| HugeBuf(Inner::Heap(vec![value; len])))
+    }
+
+    /// `len` copies of `value` on a huge-page mapping, when the size takes one.
+    fn mapped(len: usize, value: T) -> Option<Self> {
+        let map = Mapping::huge(len.checked_mul(std::mem::size_of::<T>())?)?;
+        let mut b = HugeBuf(Inner::Mapped { map, len });
+        if value != T::ZERO {
+            b.fill(value);
         }
-        HugeBuf(Inner::Heap(vec![value; len]))
+        Some(b)
+    }
+
+    /// As [`HugeBuf::filled`], but `None` instead of aborting when the memory is not there
+    /// (a renderbuffer's storage: GL_OUT_OF_MEMORY).
+    pub fn try_filled(len: usize, value: T) -> Option<Self> {
+        if let Some(b) = Self::mapped(len, value) {
+            return Some(b);
+        }
+        let mut v = Vec::new();
+        v.try_reserve_exact(len).ok()?;
+        v.resize(len, value);
+        Some(HugeBuf(Inner::Heap(v)))
     }
 
     /// An empty buffer (for a buffer the framebuffer does not have).

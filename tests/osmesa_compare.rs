@@ -363,6 +363,7 @@ const SCENES: &[&str] = &[
     "fbo_srgb",
     "wide_pixels",
     "msaa_lines_points",
+    "fbo_lend",
 ];
 
 macro_rules! scene_tests {
@@ -514,6 +515,7 @@ scene_tests!(
     fbo_srgb,
     wide_pixels,
     msaa_lines_points,
+    fbo_lend,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

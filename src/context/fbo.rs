@@ -8,7 +8,9 @@
 //! stencil in y-down rows, the OSMesa window's layout) assembled from the attachments by
 //! [`super::fbo_bind`], and written back into them whenever something else may look at
 //! them (rebinding, texture specification, glGenerateMipmap, reads through another
-//! binding). The window's own framebuffer is parked in [`FboState::window`] meanwhile.
+//! binding). Renderbuffer buffers of the working copy's layout are not copied but lent to
+//! it while it is bound ([`super::fbo_lend`]): then the working copy holds the truth. The
+//! window's own framebuffer is parked in [`FboState::window`] meanwhile.
 //!
 //! One colour attachment is drawn at a time (the one glDrawBuffer selects); glDrawBuffers
 //! with several is GL 2.0 and not offered.
@@ -27,6 +29,7 @@
 
 use super::{GlError, GlResult};
 use crate::framebuffer::{DepthFormat, Framebuffer, WideKind};
+use crate::memory::{HugeBuf, Plain};
 use crate::texture::{BaseFormat, Level, TextureObject, TextureState};
 use std::collections::HashMap;
 
@@ -156,7 +159,10 @@ pub fn texture_wide_kind(storage: &crate::texture::Storage) -> Option<WideKind> 
     }
 }
 
-/// A renderbuffer object. Its images are rows bottom-up, `width * height` values each.
+/// A renderbuffer object. Its images are rows bottom-up, `width * height` values each,
+/// one buffer per sample plane (one plane for a single-sample renderbuffer). While the
+/// renderbuffer is attached to the object bound for drawing, a buffer whose layout is the
+/// working copy's may be lent to it (`super::fbo_lend`): it is then empty here.
 #[derive(Clone, Debug, Default)]
 pub struct Renderbuffer {
     /// The internal format as given (GL_RENDERBUFFER_INTERNAL_FORMAT; GL_RGBA initially).
@@ -167,16 +173,28 @@ pub struct Renderbuffer {
     pub height: usize,
     /// The layout; `None` until storage is given.
     pub format: Option<RbFormat>,
-    /// Colour values (colour formats).
-    pub color: Vec<[u8; 4]>,
-    /// Depth values in the depth format's stored form (depth formats).
-    pub depth: Vec<u32>,
-    /// Stencil values (stencil formats).
-    pub stencil: Vec<u8>,
-    /// Wide colour values, stored as the wide plane keeps them ([`RbFormat::Wide`]).
+    /// Colour values per plane (colour formats; no planes otherwise).
+    pub color: Vec<HugeBuf<[u8; 4]>>,
+    /// Depth values per plane in the depth format's stored form (depth formats).
+    pub depth: Vec<HugeBuf<u32>>,
+    /// Stencil values per plane (stencil formats).
+    pub stencil: Vec<HugeBuf<u8>>,
+    /// Wide colour values, stored as the wide plane keeps them ([`RbFormat::Wide`]); the
+    /// sample planes one after the other (plane s at `s·w·h`).
     pub wide: Vec<[f32; 4]>,
     /// GL_RENDERBUFFER_SAMPLES: 0, or [`SAMPLES`] planes of `width * height` values each.
     pub samples: u32,
+    /// Identifies this storage: new for every glRenderbufferStorage, so that a lent buffer
+    /// goes back only to the storage it came from.
+    pub storage_id: u64,
+}
+
+/// The storage ids handed out so far.
+static STORAGE_IDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// `planes` buffers of `n` copies of `v`; `None` when the memory is not there.
+fn planes_of<T: Plain>(planes: usize, n: usize, v: T) -> Option<Vec<HugeBuf<T>>> {
+    (0..planes).map(|_| HugeBuf::try_filled(n, v)).collect()
 }
 
 impl Renderbuffer {
@@ -191,30 +209,29 @@ impl Renderbuffer {
         h: usize,
         samples: u32,
     ) -> GlResult<()> {
-        let n = w * h * (samples as usize).max(1);
+        let planes = (samples as usize).max(1);
+        let n = w * h;
         let (mut color, mut depth, mut stencil) = (Vec::new(), Vec::new(), Vec::new());
         let mut wide = Vec::new();
-        let oom = |_| GlError::OutOfMemory;
+        let oom = GlError::OutOfMemory;
+        let no_alpha = matches!(format, RbFormat::Rgb8 | RbFormat::Srgb(false));
         match format {
             RbFormat::Rgba8 | RbFormat::Rgb8 | RbFormat::Legacy(_) | RbFormat::Srgb(_) => {
-                color.try_reserve_exact(n).map_err(oom)?
+                let a = if no_alpha { 255 } else { 0 };
+                color = planes_of(planes, n, [0, 0, 0, a]).ok_or(oom)?;
             }
-            RbFormat::Depth(_) => depth.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Depth(_) => depth = planes_of(planes, n, 0).ok_or(oom)?,
             RbFormat::DepthStencil(_) => {
-                depth.try_reserve_exact(n).map_err(oom)?;
-                stencil.try_reserve_exact(n).map_err(oom)?;
+                depth = planes_of(planes, n, 0).ok_or(oom)?;
+                stencil = planes_of(planes, n, 0).ok_or(oom)?;
             }
-            RbFormat::Stencil8 => stencil.try_reserve_exact(n).map_err(oom)?,
-            RbFormat::Wide(..) => wide.try_reserve_exact(n).map_err(oom)?,
+            RbFormat::Stencil8 => stencil = planes_of(planes, n, 0).ok_or(oom)?,
+            RbFormat::Wide(k, alpha) => {
+                let total = n * planes;
+                wide.try_reserve_exact(total).map_err(|_| oom)?;
+                wide.resize(total, [0.0, 0.0, 0.0, if alpha { 0.0 } else { k.one() }]);
+            }
         }
-        if let RbFormat::Wide(k, alpha) = format {
-            wide.resize(n, [0.0, 0.0, 0.0, if alpha { 0.0 } else { k.one() }]);
-        }
-        let no_alpha = matches!(format, RbFormat::Rgb8 | RbFormat::Srgb(false));
-        let a = if no_alpha { 255 } else { 0 };
-        color.resize(color.capacity().min(n), [0, 0, 0, a]);
-        depth.resize(depth.capacity().min(n), 0);
-        stencil.resize(stencil.capacity().min(n), 0);
         *self = Renderbuffer {
             internal,
             width: w,
@@ -225,6 +242,7 @@ impl Renderbuffer {
             stencil,
             wide,
             samples,
+            storage_id: STORAGE_IDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
         };
         Ok(())
     }
@@ -270,12 +288,53 @@ impl TexImage {
     }
 }
 
+/// What a working copy is laid out as: size, colour format, depth format, whether it has
+/// stencil, wide precision, single-channel wide, sRGB. A kept working copy is reused only
+/// for the same layout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// Width and height.
+    pub size: (usize, usize),
+    /// The colour format.
+    pub format: crate::framebuffer::ColorFormat,
+    /// The depth format.
+    pub depth: DepthFormat,
+    /// Whether it has a stencil buffer.
+    pub stencil: bool,
+    /// The wide precision ([`Framebuffer::wide`]).
+    pub wide: Option<WideKind>,
+    /// [`Framebuffer::wide_single`].
+    pub single: bool,
+    /// [`Framebuffer::srgb`].
+    pub srgb: bool,
+}
+
+impl Layout {
+    /// The layout of working copy `fb` (while it holds all its buffers).
+    pub fn of(fb: &Framebuffer) -> Layout {
+        Layout {
+            size: (fb.width, fb.height),
+            format: fb.format,
+            depth: fb.depth_format,
+            stencil: !fb.stencil.is_empty(),
+            wide: fb.wide,
+            single: fb.wide_single,
+            srgb: fb.srgb,
+        }
+    }
+}
+
 /// A framebuffer object's working copy, kept while another framebuffer is bound so that
 /// binding it again neither allocates nor (when its images have not changed) copies.
 #[derive(Clone, Debug)]
 pub struct Cached {
-    /// The working copy, written back.
+    /// The working copy (sample plane 0), written back; the buffers it had on loan are
+    /// back in their renderbuffers (empty here).
     pub fb: Framebuffer,
+    /// Sample planes 1..4 of a multisample object's working copy (as `fb`).
+    pub planes: Vec<Framebuffer>,
+    /// The layout it was assembled with.
+    pub layout: Layout,
     /// The version ([`FboState::version`]) of each attached image it holds.
     pub seen: Vec<(Attachment, u64)>,
 }
@@ -402,6 +461,8 @@ pub struct FboState {
     /// Sample planes 1..4 of a 4x draw object's working copy (plane 0 is the context's
     /// `fb`); empty for a single-sample draw framebuffer.
     pub ms_planes: Vec<Framebuffer>,
+    /// The renderbuffer buffers the working copy holds on loan (`super::fbo_lend`).
+    pub loans: Vec<super::fbo_lend::Loan>,
 }
 
 /// Names not in `used`, counting up from `*next` (glGen*'s rule: any unused names).

@@ -3,17 +3,33 @@
 //!
 //! See [`super::fbo`] for the model. The working copy's rows are GL's (row 0 at the
 //! bottom, [`Framebuffer::y_flip`] false), as llvmpipe draws into objects: its viewport is
-//! not flipped, so window coordinates round as they do there and loading or writing back is
-//! a plain row copy (the window's buffer is y-down and flipped). Its size is the
-//! smallest of the attached images (GL 3.0 lets them differ); writing back touches only that
-//! region of each image, and happens only when something was drawn. A single-sample
-//! object keeps its written-back working copy between binds: reused as it is when no
-//! attached image changed since, reloaded in place when the layout still fits.
+//! not flipped, so window coordinates round as they do there, and the images' rows are the
+//! working copy's rows. Its size is the smallest of the attached images (GL 3.0 lets them
+//! differ).
+//!
+//! What binding and unbinding cost:
+//! - Renderbuffer buffers laid out as the working copy's (RGBA8 and RGBA sRGB colour,
+//!   every depth and stencil format, of the working copy's size) are lent to it, every
+//!   sample plane of a multisample one too: moved in on assembly and back when the object
+//!   is parked, never copied ([`super::fbo_lend`]).
+//! - The other images (texture images, RGB, legacy and wide colour) are copied in
+//!   ([`super::fbo_image::load`]) and written back ([`super::fbo_image::store`]): only the
+//!   region the working copy covers, and only when something was drawn.
+//! - An object's working copy, with its sample planes, is kept between binds
+//!   ([`super::fbo::Cached`]): reused as it is (its loans made anew) when no attached image
+//!   changed since, refilled in place when the layout still fits, so a bind allocates
+//!   nothing.
+//! - A resolving glBlitFramebuffer reads the multisample source's planes with their
+//!   buffers lent ([`Context::with_read_planes`]); other reads through another binding
+//!   assemble a copy.
 
-use super::fbo::{Attachment, FboState, ImageKind, Status, SAMPLES};
+use super::fbo::{Attachment, Cached, ImageKind, Layout, Status, SAMPLES};
+use super::fbo_image::{image_mut, load, store};
+use super::fbo_lend::Loan;
 use super::{Context, GlError, GlResult};
-use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer, WideKind};
-use crate::texture::{BaseFormat, TextureState};
+use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
+use crate::memory::HugeBuf;
+use crate::texture::BaseFormat;
 
 /// The colour, depth and stencil images of an object that a working copy is made of.
 #[derive(Clone, Copy, Debug, Default)]
@@ -35,91 +51,38 @@ impl Parts {
         .into_iter()
         .filter_map(|(a, s)| Some((a?, s)))
     }
-}
 
-/// Mutable access to one attached image's values, rows bottom-up with `width` per row.
-enum ImageMut<'a> {
-    /// RGBA8 colour (texture texels or renderbuffer colour), and the base format.
-    Color(&'a mut [[u8; 4]], BaseFormat),
-    /// Depth texels: the value as a little-endian u32 in each RGBA8 slot.
-    DepthTexels(&'a mut [[u8; 4]]),
-    /// Renderbuffer depth and (possibly empty) stencil.
-    DepthStencil(&'a mut [u32], &'a mut [u8]),
-    /// Renderbuffer stencil.
-    Stencil(&'a mut [u8]),
-    /// Wide renderbuffer colour ([`super::fbo::RbFormat::Wide`]).
-    Wide(&'a mut [[f32; 4]]),
-    /// A float or 16-bit texture image: its float values (as sampled, after the base
-    /// swizzle), its unorm8 texels, its base format and the precision it renders at.
-    WideTexels(&'a mut [[f32; 4]], &'a mut [[u8; 4]], BaseFormat, WideKind),
-}
-
-/// Sample plane `plane` of a renderbuffer's values (`v` itself when it has no planes).
-fn plane_of<T>(v: &mut [T], n: usize, samples: u32, plane: usize) -> &mut [T] {
-    if samples == 0 || v.is_empty() {
-        v
-    } else {
-        &mut v[plane * n..(plane + 1) * n]
+    /// [`Parts::roles`] with the index of each role (colour 0, depth 1, stencil 2).
+    fn roles_indexed(self) -> impl Iterator<Item = (usize, (Attachment, bool))> {
+        [
+            (self.color, false),
+            (self.depth, false),
+            (self.stencil, true),
+        ]
+        .into_iter()
+        .enumerate()
+        .filter_map(|(k, (a, s))| Some((k, (a?, s))))
     }
 }
 
-/// The image `a` names (sample plane `plane` of a multisample renderbuffer), with its row
-/// width, for reading and writing.
-fn image_mut<'a>(
-    fbo: &'a mut FboState,
-    textures: &'a mut TextureState,
-    a: Attachment,
-    plane: usize,
-) -> Option<(ImageMut<'a>, usize)> {
-    match a {
-        Attachment::None => None,
-        Attachment::Renderbuffer(name) => {
-            let rb = fbo.renderbuffers.get_mut(&name)?.as_mut()?;
-            let (w, n, ns) = (rb.width, rb.width * rb.height, rb.samples);
-            let img = if !rb.color.is_empty() {
-                let base = match rb.format {
-                    Some(super::fbo::RbFormat::Rgb8 | super::fbo::RbFormat::Srgb(false)) => {
-                        BaseFormat::Rgb
-                    }
-                    Some(super::fbo::RbFormat::Legacy(b)) => b,
-                    _ => BaseFormat::Rgba,
-                };
-                ImageMut::Color(plane_of(&mut rb.color, n, ns, plane), base)
-            } else if !rb.wide.is_empty() {
-                ImageMut::Wide(plane_of(&mut rb.wide, n, ns, plane))
-            } else if !rb.depth.is_empty() {
-                ImageMut::DepthStencil(
-                    plane_of(&mut rb.depth, n, ns, plane),
-                    plane_of(&mut rb.stencil, n, ns, plane),
-                )
-            } else {
-                ImageMut::Stencil(plane_of(&mut rb.stencil, n, ns, plane))
-            };
-            Some((img, w))
-        }
-        Attachment::Texture(t) => {
-            let img = t.find_mut(textures)?;
-            let (w, h) = (img.width, img.height);
-            let start = t.layer * w * h;
-            let wide = super::fbo::texture_wide_kind(&img.storage);
-            let texels = img.texels.get_mut(start..start + w * h)?;
-            if let (Some(k), Some(f)) = (wide, img.floats.as_mut()) {
-                let floats = f.get_mut(start..start + w * h)?;
-                return Some((ImageMut::WideTexels(floats, texels, img.base, k), w));
-            }
-            let v = match img.base {
-                BaseFormat::Depth => ImageMut::DepthTexels(texels),
-                b => ImageMut::Color(texels, b),
-            };
-            Some((v, w))
-        }
-    }
+/// A working copy laid out as `l` (rows as GL's: llvmpipe draws objects unflipped)
+/// without its buffers yet: [`Context::fill`] lends or allocates them.
+fn hollow(l: &Layout) -> Framebuffer {
+    let mut fb = Framebuffer::new(0, 0, l.format, l.depth, l.stencil);
+    fb.width = l.size.0;
+    fb.height = l.size.1;
+    fb.pending_rows = vec![false; l.size.1];
+    fb.y_flip = false;
+    fb.wide = l.wide;
+    fb.wide_single = l.single;
+    fb.srgb = l.srgb;
+    fb
 }
 
 impl Context {
-    /// The images the working copy of object `name` is made of, and its size; `None`
+    /// The images the working copy of object `name` is made of, and its layout; `None`
     /// when the object is incomplete.
-    fn parts(&self, name: u32) -> Option<(Parts, usize, usize)> {
+    fn parts(&self, name: u32) -> Option<(Parts, Layout)> {
         if self.fbo.status(name, &self.textures) != Status::Complete {
             return None;
         }
@@ -142,47 +105,12 @@ impl Context {
             depth,
             stencil,
         };
-        Some((parts, w, h))
-    }
-
-    /// Assembles a working copy of object `name` from its attachments (`None` when it is
-    /// incomplete), for reading: sample plane 0 of a multisample object, never the cache.
-    fn assemble(&mut self, name: u32) -> Option<Framebuffer> {
-        self.assemble_plane(name, 0, false)
-    }
-
-    /// Assembles the working copy of draw object `name`: plane 0 (from the object's cache
-    /// when it has one), and for a multisample object its planes 1..4 into
-    /// [`FboState::ms_planes`].
-    fn assemble_draw(&mut self, name: u32) -> Option<Framebuffer> {
-        self.fbo.ms_planes.clear();
-        self.fbo.drawn = false;
-        let fb = self.assemble_plane(name, 0, true)?;
-        if self.fbo.samples(name, &self.textures) > 0 {
-            let planes: Option<Vec<_>> = (1..SAMPLES)
-                .map(|s| self.assemble_plane(name, s, false))
-                .collect();
-            self.fbo.ms_planes = planes?;
-        }
-        Some(fb)
-    }
-
-    /// Assembles sample plane `plane` of object `name` (0 for single-sample images). With
-    /// `cached`, a single-sample object's cached copy is reused: as it is when every image
-    /// is at the version it holds, else with the images loaded into it when the layout
-    /// still fits.
-    fn assemble_plane(&mut self, name: u32, plane: usize, cached: bool) -> Option<Framebuffer> {
-        let cached = if cached && self.fbo.samples(name, &self.textures) == 0 {
-            self.fbo.object_mut(name).and_then(|f| f.cache.take())
-        } else {
-            None
-        };
-        let (parts, w, h) = self.parts(name)?;
         let info = |a: Option<Attachment>| a.and_then(|a| self.fbo.image_info(a, &self.textures));
         let wide = self.fbo.wide_kind(parts.color, &self.textures);
         let wide_tex = wide.is_some() && matches!(parts.color, Some(Attachment::Texture(_)));
+        let color_kind = info(parts.color).map(|i| i.kind);
         let format =
-            match info(parts.color).map(|i| i.kind) {
+            match color_kind {
                 Some(ImageKind::Color(BaseFormat::Rgb)) => ColorFormat::Rgb,
                 // a float or 16-bit red, RG or luminance image has no alpha to blend with
                 // (llvmpipe's destination alpha is 1)
@@ -195,18 +123,10 @@ impl Context {
             Some(ImageKind::Depth(d, _)) => d,
             _ => DepthFormat::None,
         };
-        let stencil = parts.stencil.is_some();
-        let srgb = parts
-            .color
-            .is_some_and(|a| self.fbo.is_srgb(a, &self.textures));
-        let seen: Vec<(Attachment, u64)> = parts
-            .roles()
-            .map(|(a, _)| (a, self.fbo.version(a)))
-            .collect();
         // a float or 16-bit image of one channel (llvmpipe's nr_channels == 1)
         let single = wide_tex
             && matches!(
-                info(parts.color).map(|i| i.kind),
+                color_kind,
                 Some(ImageKind::Color(
                     BaseFormat::Red
                         | BaseFormat::Alpha
@@ -214,49 +134,166 @@ impl Context {
                         | BaseFormat::Intensity
                 ))
             );
-        let fits = |f: &Framebuffer| {
-            (
-                f.width,
-                f.height,
-                f.format,
-                f.depth_format,
-                f.stencil.is_empty(),
-                f.wide,
-                f.wide_single,
-                f.srgb,
-            ) == (w, h, format, depth, !stencil, wide, single, srgb)
+        let layout = Layout {
+            size: (w, h),
+            format,
+            depth,
+            stencil: parts.stencil.is_some(),
+            wide,
+            single,
+            srgb: parts
+                .color
+                .is_some_and(|a| self.fbo.is_srgb(a, &self.textures)),
         };
-        let mut fb = match cached {
-            Some(c) if fits(&c.fb) && c.seen == seen => return Some(c.fb),
-            Some(c) if fits(&c.fb) => {
-                let mut fb = c.fb;
-                fb.resolve();
+        Some((parts, layout))
+    }
+
+    /// Assembles a working copy of object `name` from its attachments (`None` when it is
+    /// incomplete), for reading: sample plane 0 of a multisample object.
+    fn assemble(&mut self, name: u32) -> Option<Framebuffer> {
+        self.assemble_plane(name, 0)
+    }
+
+    /// Assembles the working copy of draw object `name`: plane 0, and for a multisample
+    /// object its planes 1..4 into [`FboState::ms_planes`]. The object's kept copy is
+    /// reused when its layout still fits (as it is when every image is at the version it
+    /// holds), and renderbuffer buffers are lent to it rather than copied
+    /// ([`super::fbo_lend`]).
+    fn assemble_draw(&mut self, name: u32) -> Option<Framebuffer> {
+        // Nothing is on loan here, but for a working copy of share-group tables that
+        // were replaced: its loans find no storage of theirs and end.
+        self.return_loans();
+        self.fbo.ms_planes.clear();
+        self.fbo.drawn = false;
+        let cache = self.fbo.object_mut(name).and_then(|f| f.cache.take());
+        let (parts, layout) = self.parts(name)?;
+        let planes = if self.fbo.samples(name, &self.textures) > 0 {
+            SAMPLES
+        } else {
+            1
+        };
+        let seen = self.versions_of(parts);
+        let (fbs, current) = match cache {
+            Some(c) if c.layout == layout && c.planes.len() + 1 == planes => {
+                let current = c.seen == seen;
+                (std::iter::once(c.fb).chain(c.planes).collect(), current)
+            }
+            _ => (
+                (0..planes).map(|_| hollow(&layout)).collect::<Vec<_>>(),
+                false,
+            ),
+        };
+        let mut fbs = fbs;
+        for (plane, fb) in fbs.iter_mut().enumerate() {
+            if !current {
                 fb.uniform_color = None;
-                fb
             }
-            _ => {
-                let mut fb = Framebuffer::new(w, h, format, depth, stencil);
-                // llvmpipe draws objects unflipped: memory row = GL row, as in the images.
-                fb.y_flip = false;
-                fb.set_wide(wide);
-                fb.wide_single = single;
-                fb.srgb = srgb;
-                fb
-            }
+            let loans = self.fill(fb, parts, &layout, plane, current, true);
+            self.fbo.loans.extend(loans);
+        }
+        let first = fbs.remove(0);
+        self.fbo.ms_planes = fbs;
+        Some(first)
+    }
+
+    /// Assembles sample plane `plane` of object `name` (0 for single-sample images) into
+    /// a new working copy, for reading.
+    fn assemble_plane(&mut self, name: u32, plane: usize) -> Option<Framebuffer> {
+        let (parts, layout) = self.parts(name)?;
+        let mut fb = hollow(&layout);
+        self.fill(&mut fb, parts, &layout, plane, false, false);
+        Some(fb)
+    }
+
+    /// Every sample plane of object `name` assembled for reading, with its renderbuffer
+    /// buffers lent to them where they can be (the loans, which the caller returns).
+    pub(super) fn lend_planes(&mut self, name: u32) -> Option<(Vec<Framebuffer>, Vec<Loan>)> {
+        let (parts, layout) = self.parts(name)?;
+        let n = if self.fbo.samples(name, &self.textures) > 0 {
+            SAMPLES
+        } else {
+            1
         };
-        let (fbo, textures) = (&mut self.fbo, &mut self.textures);
-        for (a, stencil) in parts.roles() {
-            if let Some((img, iw)) = image_mut(fbo, textures, a, plane) {
-                load(&mut fb, img, iw, stencil);
+        let (mut planes, mut loans) = (Vec::new(), Vec::new());
+        for p in 0..n {
+            let mut fb = hollow(&layout);
+            loans.extend(self.fill(&mut fb, parts, &layout, p, false, true));
+            planes.push(fb);
+        }
+        Some((planes, loans))
+    }
+
+    /// Fills working copy `fb` (sample plane `plane`, laid out as `layout`) from the
+    /// images `parts`: with `lend`, the renderbuffer buffers that can be lent move in (the
+    /// loans made); the other images are copied in unless `current` says `fb` holds them
+    /// already.
+    fn fill(
+        &mut self,
+        fb: &mut Framebuffer,
+        parts: Parts,
+        layout: &Layout,
+        plane: usize,
+        current: bool,
+        lend: bool,
+    ) -> Vec<Loan> {
+        let mut lent = [false; 3];
+        let mut loans = Vec::new();
+        if lend {
+            for (k, (a, stencil)) in parts.roles_indexed() {
+                if let Some(l) = super::fbo_lend::lend(&mut self.fbo, fb, a, plane, stencil) {
+                    loans.push(l);
+                    lent[k] = true;
+                }
             }
         }
-        Some(fb)
+        // A kept copy lacks the buffers it had on loan, a hollow one all of them: new
+        // zeroed ones, loaded below.
+        let n = fb.width * fb.height;
+        let mut refill = !current;
+        if fb.color.len() != n {
+            let a = if layout.format.has_alpha() { 0 } else { 255 };
+            fb.color = HugeBuf::filled(n, [0, 0, 0, a]);
+            refill = true;
+        }
+        if layout.wide.is_some() && fb.wide_color.len() != n {
+            fb.set_wide(layout.wide);
+            refill = true;
+        }
+        if layout.depth != DepthFormat::None && fb.depth.len() != n {
+            fb.depth = HugeBuf::filled(n, 0);
+            refill = true;
+        }
+        if layout.stencil && fb.stencil.len() != n {
+            fb.stencil = HugeBuf::filled(n, 0);
+            refill = true;
+        }
+        if refill {
+            let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+            for (k, (a, stencil)) in parts.roles_indexed() {
+                if lent[k] {
+                    continue;
+                }
+                if let Some((img, iw)) = image_mut(fbo, textures, a, plane) {
+                    load(fb, img, iw, stencil);
+                }
+            }
+        }
+        loans
+    }
+
+    /// The versions of the images `parts`.
+    fn versions_of(&self, parts: Parts) -> Vec<(Attachment, u64)> {
+        parts
+            .roles()
+            .map(|(a, _)| (a, self.fbo.version(a)))
+            .collect()
     }
 
     /// Writes the working copy of the bound draw object back into its attachments (when
     /// anything was drawn since it was assembled); returns the versions it now holds.
+    /// Lent buffers need no copy: the images are the working copy's own buffers.
     fn write_back(&mut self) -> Vec<(Attachment, u64)> {
-        let Some((parts, _, _)) = self.parts(self.fbo.draw).filter(|_| self.fbo.draw != 0) else {
+        let Some((parts, _)) = self.parts(self.fbo.draw).filter(|_| self.fbo.draw != 0) else {
             return Vec::new();
         };
         if std::mem::take(&mut self.fbo.drawn) {
@@ -289,10 +326,7 @@ impl Context {
                 }
             }
         }
-        parts
-            .roles()
-            .map(|(a, _)| (a, self.fbo.version(a)))
-            .collect()
+        self.versions_of(parts)
     }
 
     /// Writes the working copy back and keeps it in the draw object's cache.
@@ -301,24 +335,30 @@ impl Context {
         self.park_as(seen);
     }
 
-    /// Keeps the (written back) working copy in the draw object's cache as holding the
-    /// image versions `seen` (single-sample objects only; planes are dropped).
+    /// Returns the working copy's loans and keeps it (with its sample planes) in the
+    /// draw object's cache as holding the image versions `seen`.
     fn park_as(&mut self, seen: Vec<(Attachment, u64)>) {
         let name = self.fbo.draw;
-        self.fbo.ms_planes.clear();
-        let single = self.fbo.samples(name, &self.textures) == 0;
-        if let (Some(fb), Some(f), true) = (self.fb.take(), self.fbo.object_mut(name), single) {
-            f.cache = Some(Box::new(super::fbo::Cached { fb, seen }));
+        let layout = self.fb.as_ref().map(Layout::of);
+        self.return_loans();
+        let planes = std::mem::take(&mut self.fbo.ms_planes);
+        if let (Some(mut fb), Some(layout)) = (self.fb.take(), layout) {
+            fb.resolve();
+            if let Some(f) = self.fbo.object_mut(name) {
+                f.cache = Some(Box::new(Cached {
+                    fb,
+                    planes,
+                    layout,
+                    seen,
+                }));
+            }
         }
     }
 
     /// The versions of the images the draw object's working copy holds.
     fn held_versions(&self) -> Vec<(Attachment, u64)> {
         match self.parts(self.fbo.draw).filter(|_| self.fbo.draw != 0) {
-            Some((parts, _, _)) => parts
-                .roles()
-                .map(|(a, _)| (a, self.fbo.version(a)))
-                .collect(),
+            Some((parts, _)) => self.versions_of(parts),
             None => Vec::new(),
         }
     }
@@ -411,6 +451,7 @@ impl Context {
     pub fn fbo_check_in(&mut self) {
         if self.fbo.draw != 0 {
             self.fbo_sync();
+            self.return_loans();
             self.fbo.ms_planes.clear();
             self.fbo.stale = false;
             self.fb = None;
@@ -504,7 +545,7 @@ impl Context {
         let saved = f.draw_buffer;
         f.draw_buffer = f.read_buffer;
         for s in 1..SAMPLES {
-            if let Some(p) = self.assemble_plane(name, s, false) {
+            if let Some(p) = self.assemble_plane(name, s) {
                 v.push(p);
             }
         }
@@ -647,6 +688,7 @@ impl Context {
             return self.fbo.window.clone();
         }
         let name = self.fbo.read;
+        self.unlend_for(name);
         let f = self.fbo.object_mut(name)?;
         // Assemble with the read buffer in the draw buffer's place.
         let saved = f.draw_buffer;
@@ -656,115 +698,5 @@ impl Context {
             f.draw_buffer = saved;
         }
         fb
-    }
-}
-
-/// A float texel of an image rendered at precision `k` as the wide plane keeps it (a
-/// 16-bit unorm texel `u·f32(1/65535)` back to its integer `u`).
-fn texel_to_wide(k: WideKind, v: [f32; 4]) -> [f32; 4] {
-    match k {
-        WideKind::Unorm16 => v.map(|c| (c * 65535.0).round()),
-        _ => v,
-    }
-}
-
-/// Copies image `img` (rows bottom-up, `iw` wide) into the working copy `fb`. `stencil`
-/// says the attachment is the stencil attachment (a depth-stencil image fills both).
-fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
-    let (w, h) = (fb.width, fb.height);
-    for y in 0..h {
-        let (src, dst) = (y * iw, fb.row(y) * w);
-        match &img {
-            ImageMut::Color(px, _) => {
-                let st = fb.format;
-                for x in 0..w {
-                    let c = px[src + x];
-                    fb.color[dst + x] = if st == ColorFormat::Rgb {
-                        [c[0], c[1], c[2], 255]
-                    } else {
-                        c
-                    };
-                }
-            }
-            ImageMut::DepthTexels(px) if !stencil => {
-                for x in 0..w {
-                    fb.depth[dst + x] = u32::from_le_bytes(px[src + x]);
-                }
-            }
-            ImageMut::Wide(px) => {
-                if let Some(k) = fb.wide {
-                    for x in 0..w {
-                        let v = px[src + x];
-                        fb.wide_color[dst + x] = v;
-                        fb.color[dst + x] = k.mirror(v);
-                    }
-                }
-            }
-            ImageMut::WideTexels(f, _, _, k) if fb.wide == Some(*k) => {
-                for x in 0..w {
-                    let v = texel_to_wide(*k, f[src + x]);
-                    fb.wide_color[dst + x] = v;
-                    fb.color[dst + x] = k.mirror(v);
-                }
-            }
-            ImageMut::DepthStencil(d, s) => {
-                if !stencil && !fb.depth.is_empty() {
-                    fb.depth[dst..dst + w].copy_from_slice(&d[src..src + w]);
-                }
-                if stencil && !s.is_empty() && !fb.stencil.is_empty() {
-                    fb.stencil[dst..dst + w].copy_from_slice(&s[src..src + w]);
-                }
-            }
-            ImageMut::Stencil(s) if stencil && !fb.stencil.is_empty() => {
-                fb.stencil[dst..dst + w].copy_from_slice(&s[src..src + w]);
-            }
-            _ => {}
-        }
-    }
-}
-
-/// Writes the working copy `fb` back into image `img` (the inverse of [`load`]); colour
-/// is stored as the image's base format keeps it.
-fn store(fb: &Framebuffer, img: ImageMut<'_>, iw: usize, stencil: bool) {
-    let (w, h) = (fb.width, fb.height);
-    let mut img = img;
-    for y in 0..h {
-        let (dst, src) = (y * iw, fb.row(y) * w);
-        match &mut img {
-            ImageMut::Color(px, base) => {
-                for x in 0..w {
-                    px[dst + x] = base.swizzle(fb.color[src + x], 0, 255);
-                }
-            }
-            ImageMut::DepthTexels(px) if !stencil && !fb.depth.is_empty() => {
-                for x in 0..w {
-                    px[dst + x] = fb.depth[src + x].to_le_bytes();
-                }
-            }
-            ImageMut::Wide(px) if fb.wide.is_some() => {
-                for x in 0..w {
-                    px[dst + x] = fb.wide_at(src + x);
-                }
-            }
-            ImageMut::WideTexels(f, t, base, k) if fb.wide == Some(*k) => {
-                for x in 0..w {
-                    let v = base.swizzle(fb.wide_at(src + x).map(|c| k.to_float(c)), 0.0, 1.0);
-                    f[dst + x] = v;
-                    t[dst + x] = crate::texture::float::to_bytes(v);
-                }
-            }
-            ImageMut::DepthStencil(d, s) => {
-                if !stencil && !fb.depth.is_empty() {
-                    d[dst..dst + w].copy_from_slice(&fb.depth[src..src + w]);
-                }
-                if stencil && !s.is_empty() && !fb.stencil.is_empty() {
-                    s[dst..dst + w].copy_from_slice(&fb.stencil[src..src + w]);
-                }
-            }
-            ImageMut::Stencil(s) if stencil && !fb.stencil.is_empty() => {
-                s[dst..dst + w].copy_from_slice(&fb.stencil[src..src + w]);
-            }
-            _ => {}
-        }
     }
 }

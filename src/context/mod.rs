@@ -26,6 +26,8 @@ pub mod eval;
 pub mod fbo;
 pub mod fbo_api;
 pub mod fbo_bind;
+pub mod fbo_image;
+pub mod fbo_lend;
 pub mod fbo_query;
 pub mod feedback;
 pub mod fragment_state;

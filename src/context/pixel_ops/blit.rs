@@ -36,7 +36,26 @@ pub fn blit(
         src: false,
         dst: crate::plan::srgb_store(caps, dst_srgb),
     };
-    let mut sfb = if read_ms {
+    let mut sfb = if read_ms && !draw_ms {
+        // A resolve reads the source planes where they are (nothing copied).
+        let wide_dst = ctx.fb.as_ref().is_some_and(|f| f.wide.is_some());
+        let on = crate::plan::srgb_store(caps, true);
+        let resolved = ctx.with_read_planes(|planes| {
+            (planes.len() == SAMPLES).then(|| {
+                let sides = SrgbSides {
+                    src: on && planes[0].srgb,
+                    ..sides
+                };
+                resolve_samples(planes, sides, wide_dst, fma)
+            })
+        });
+        let Some(Some(resolved)) = resolved else {
+            return Ok(());
+        };
+        // the resolve has converted the colours: the copy that follows copies
+        sides = SrgbSides::default();
+        resolved
+    } else if read_ms {
         planes = ctx.read_planes().unwrap_or_default();
         for p in &mut planes {
             p.resolve();
