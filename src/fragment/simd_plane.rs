@@ -208,3 +208,57 @@ pub(super) unsafe fn stencil_update8(
     }
     stencil[idx..idx + n].copy_from_slice(&v.to_u8()[..n]);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipe::CompareFunc;
+
+    /// Every stencil operation, write mask and stored value: [`stencil_update8`] stores
+    /// what [`StencilFacePlan::update`] gives, and the bytes round-trip through the lanes.
+    #[test]
+    fn stencil_lanes_match_scalar_rules() {
+        if !crate::simd::cpu::isa().avx2() {
+            return;
+        }
+        use StencilOp as O;
+        let ops = [
+            O::Keep,
+            O::Zero,
+            O::Replace,
+            O::Incr,
+            O::Decr,
+            O::Invert,
+            O::IncrWrap,
+            O::DecrWrap,
+        ];
+        for op in ops {
+            for write in [0xFFu8, 0x0F, 0xA5] {
+                let sp = StencilFacePlan {
+                    func: CompareFunc::Always,
+                    masked_ref: 0x5C,
+                    reference: 0x5C,
+                    mask: 0xFF,
+                    fail: O::Keep,
+                    zfail: O::Keep,
+                    zpass: op,
+                    write,
+                };
+                for base in (0..256).step_by(LANES) {
+                    let vals: [u8; LANES] = std::array::from_fn(|i| (base + i) as u8);
+                    let mut buf = vals;
+                    // SAFETY: AVX2 checked above.
+                    unsafe {
+                        assert_eq!(I32x8::from_u8(vals).to_u8(), vals);
+                        let mut live = I32x8::splat(-1);
+                        let mut stats = Stats::default();
+                        let st = stencil_test8(&sp, &buf, 0, LANES, &mut live, &mut stats);
+                        stencil_update8(&sp, &mut buf, 0, LANES, st, I32x8::zero(), live);
+                    }
+                    let want = vals.map(|v| sp.update(op, v));
+                    assert_eq!(buf, want, "{op:?} write {write:#x}");
+                }
+            }
+        }
+    }
+}
