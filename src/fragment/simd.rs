@@ -11,6 +11,7 @@
 
 #![cfg(target_arch = "x86_64")]
 
+use super::simd_plane::{write8_in, Bits8};
 use super::span::Span;
 use super::{BlendPlan, DepthPlan, FragPlan};
 use crate::framebuffer::{DepthFormat, Target};
@@ -88,18 +89,18 @@ pub(super) unsafe fn depth_pass_in(
     }
 }
 
-/// The depth test of the `live` lanes of 8 pixels at `idx` of the depth buffer (lanes
-/// `fx`, row `fy`): Z from the plane, clamped and quantised as
-/// [`super::span::shade_chunk`] does, compared with the stored values and, where it
-/// passes and the plan writes depth, stored. Returns the passing lanes.
+/// The depth test of the `live` lanes of 8 pixels at `idx` of the depth rows `depth` (a
+/// target's, or a sample plane's; lanes `fx`, row `fy`): Z from the plane, clamped and
+/// quantised as [`super::span::shade_chunk`] does, compared with the stored values and,
+/// where it passes and the plan writes depth, stored. Returns the passing lanes.
 ///
 /// # Safety
-/// AVX2 (+FMA when `FMA`) context; the live lanes lie inside the depth buffer.
+/// AVX2 (+FMA when `FMA`) context; the live lanes lie inside `depth`.
 #[inline(always)]
 pub(super) unsafe fn depth_test8<const FMA: bool>(
     t: &SetupTriangle,
     d: &DepthPlan,
-    fb: &mut Target<'_>,
+    depth: &mut [u32],
     idx: usize,
     fx: F32x8,
     fy: F32x8,
@@ -108,11 +109,11 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
     // SAFETY: forwarded from the caller; the masked load and store touch live lanes only.
     unsafe {
         let q = depth_q::<FMA>(t, d.format, fx, fy);
-        let dptr = fb.depth.as_mut_ptr().add(idx) as *mut i32;
+        let dptr = depth.as_mut_ptr().add(idx) as *mut i32;
         let old = I32x8::maskload(dptr as *const i32, live);
         let pass = live.and(depth_pass_in(d.func, d.format, q, old));
         if d.write {
-            store_masked(dptr, fb.depth.len().saturating_sub(idx), pass, q);
+            store_masked(dptr, depth.len().saturating_sub(idx), pass, q);
         }
         pass
     }
@@ -162,24 +163,8 @@ pub(super) unsafe fn write8<const BLEND: bool, const OVER: bool>(
     px: I32x8,
     stats: &mut Stats,
 ) {
-    // SAFETY: forwarded from the caller; the masked load and store touch passing lanes.
-    unsafe {
-        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
-        let px = if BLEND || OVER {
-            let dst = I32x8::maskload(cptr as *const i32, pass);
-            stats.color_reads += n as u64;
-            if OVER {
-                over8(px, dst)
-            } else {
-                let b = plan.blend.as_ref().expect("BLEND implies a blend plan");
-                blend8(b, px, dst)
-            }
-        } else {
-            px
-        };
-        store_masked(cptr, fb.color.len().saturating_sub(idx), pass, px);
-        stats.color_writes += pass.movemask().count_ones() as u64;
-    }
+    // SAFETY: forwarded from the caller.
+    unsafe { write8_in::<BLEND, OVER>(plan, fb.color, idx, n, pass, px, Bits8::PLAIN, stats) }
 }
 
 /// Whether `p` is the classic "over" blend: SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD for RGB

@@ -280,7 +280,7 @@ pub unsafe fn shade8<
         let mut pass = live_v;
         if DEPTH {
             let d = plan.depth.expect("DEPTH implies a depth plan");
-            pass = depth_test8::<FMA>(t, &d, fb, idx, r.fx, r.fy, live_v);
+            pass = depth_test8::<FMA>(t, &d, fb.depth, idx, r.fx, r.fy, live_v);
             let np = pass.movemask().count_ones() as u64;
             stats.depth_reads += count;
             stats.depth_failed += count - np;

@@ -303,17 +303,33 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
     units: &[UnitPlan<'_>],
     texels: Option<&TexLanes>,
     cov: Option<&[f32; LANES]>,
-    mut alpha_out: Option<&mut [f32; LANES]>,
-    mut float_out: Option<&mut [[f32; LANES]; 4]>,
+    alpha_out: Option<&mut [f32; LANES]>,
+    float_out: Option<&mut [[f32; LANES]; 4]>,
 ) -> Lanes {
     let oow = one_over_w::<M, PERSP>(t, fx, fy);
     let frag = frag_colors::<M, FLAT, PERSP>(t, fx, fy, &oow);
-    // Secondary colour and fog coordinate (perspective-correct like every varying).
-    let extra = |k: usize, i: usize| -> f32 {
-        if FLAT && k < VARY_FOG {
-            return t.flat[k];
+    // Secondary colour and fog coordinate (perspective-correct like every varying), each
+    // lane's value computed before the lane loop so that these loops vectorise.
+    let extra = |k: usize| -> [f32; LANES] {
+        let mut v = [0f32; LANES];
+        for i in 0..LANES {
+            v[i] = if FLAT && k < VARY_FOG {
+                t.flat[k]
+            } else {
+                vary_at::<M, PERSP>(t, k, fx[i], fy, oow[i])
+            };
         }
-        vary_at::<M, PERSP>(t, k, fx[i], fy, oow[i])
+        v
+    };
+    let spec: [[f32; LANES]; 3] = if plan.separate_specular {
+        [extra(VARY_SPEC), extra(VARY_SPEC + 1), extra(VARY_SPEC + 2)]
+    } else {
+        [[0f32; LANES]; 3]
+    };
+    let fog_coord = if plan.fog.is_some() {
+        extra(VARY_FOG)
+    } else {
+        [0f32; LANES]
     };
     // A crossbar environment (GL_TEXTUREn) reads every active unit's texel of the lane.
     let crossbar = if units.iter().any(|u| u.env.crossbar) {
@@ -322,7 +338,9 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         0
     };
     let mut all = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
-    let mut c = [[0u8; LANES]; 4];
+    // The shader's final colours, converted to 8 bits after the lane loop (a loop over
+    // lanes of one channel vectorises; the conversion inside the lane loop did not).
+    let mut out = [[0f32; LANES]; 4];
     for i in 0..LANES {
         let f = [frag[0][i], frag[1][i], frag[2][i], frag[3][i]];
         let mut prev = f;
@@ -336,27 +354,31 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
         }
         if plan.separate_specular {
             for ch in 0..3 {
-                prev[ch] += extra(VARY_SPEC + ch, i);
+                prev[ch] += spec[ch][i];
             }
         }
         if let Some(fog) = &plan.fog {
-            let factor = fog.factor(extra(VARY_FOG, i));
+            let factor = fog.factor(fog_coord[i]);
             prev = fog.apply(prev, factor);
         }
         // Antialiasing stages multiply the shader's final alpha by their coverage.
         if let Some(cv) = cov {
             prev[3] *= cv[i];
         }
-        if let Some(a) = alpha_out.as_deref_mut() {
-            a[i] = prev[3];
-        }
-        if let Some(f) = float_out.as_deref_mut() {
-            for ch in 0..4 {
-                f[ch][i] = prev[ch];
-            }
-        }
         for ch in 0..4 {
-            c[ch][i] = unorm8(prev[ch]);
+            out[ch][i] = prev[ch];
+        }
+    }
+    if let Some(a) = alpha_out {
+        *a = out[3];
+    }
+    if let Some(f) = float_out {
+        *f = out;
+    }
+    let mut c = [[0u8; LANES]; 4];
+    for ch in 0..4 {
+        for i in 0..LANES {
+            c[ch][i] = unorm8(out[ch][i]);
         }
     }
     c

@@ -45,7 +45,13 @@ pub(super) unsafe fn triangle<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut 
 
 /// The walk of [`triangle`]'s variant (8-bit or wide target).
 #[inline(always)]
-pub(crate) fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+pub(crate) fn rows<
+    M: Madd,
+    const AVX2: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -56,7 +62,7 @@ pub(crate) fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bo
     if crate::fragment::span::float_store(plan, fb) {
         rows_wide::<M, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
     } else {
-        rows_as::<M, DEPTH, FLAT, PERSP, false>(t, b, plan, units, fb, stats)
+        rows_as::<M, AVX2, DEPTH, FLAT, PERSP, false>(t, b, plan, units, fb, stats)
     }
 }
 
@@ -70,12 +76,19 @@ fn rows_wide<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    rows_as::<M, DEPTH, FLAT, PERSP, true>(t, b, plan, units, fb, stats)
+    rows_as::<M, false, DEPTH, FLAT, PERSP, true>(t, b, plan, units, fb, stats)
 }
 
 /// [`rows`]' body.
 #[inline(always)]
-fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const WIDE: bool>(
+fn rows_as<
+    M: Madd,
+    const AVX2: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+    const WIDE: bool,
+>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -107,19 +120,19 @@ fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, cons
         }
         let mut x = lo & !1;
         while x <= hi {
-            let mut cov = [[[false; LANES]; SAMPLES]; 2];
-            let mut live = [[false; LANES]; 2];
+            // Bit i of `cov[r][s]`: sample s of pixel x + i of row r is covered.
+            let mut cov = [[0u8; SAMPLES]; 2];
+            let mut any = [0u8; 2];
             for r in 0..2 {
                 for s in 0..SAMPLES {
                     if let Some((a, z)) = spans[r][s] {
-                        for (i, l) in cov[r][s].iter_mut().enumerate() {
-                            let px = x + i as i64;
-                            *l = a <= px && px <= z;
-                            live[r][i] |= *l;
-                        }
+                        cov[r][s] = lane_bits(a - x, z - x);
+                        any[r] |= cov[r][s];
                     }
                 }
             }
+            let live: [[bool; LANES]; 2] =
+                std::array::from_fn(|r| std::array::from_fn(|i| any[r] & (1 << i) != 0));
             // Attributes (and texture coordinates) at the pixel centres.
             let xf = x as f32;
             let chunk = Chunk {
@@ -133,7 +146,7 @@ fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, cons
                 sample_chunk::<M, PERSP, true>(t, units, &chunk, &mut texels);
             }
             for r in 0..2 {
-                if !live[r].iter().any(|&l| l) {
+                if any[r] == 0 {
                     continue;
                 }
                 let colors = if units.is_empty() {
@@ -142,7 +155,7 @@ fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, cons
                     ChunkColors::Textured(&texels[r])
                 };
                 let (y, xu) = ((qy + r as i64) as usize, x as usize);
-                shade_chunk_ms::<M, DEPTH, FLAT, PERSP, WIDE>(
+                shade_chunk_ms::<M, AVX2, DEPTH, FLAT, PERSP, WIDE>(
                     t, plan, units, colors, fb, y, xu, &cov[r], stats,
                 );
             }
@@ -150,4 +163,15 @@ fn rows_as<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, cons
         }
         qy += 2;
     }
+}
+
+/// The lanes `i` (0..[`LANES`]) with `lo <= i <= hi`, as bits.
+#[inline(always)]
+fn lane_bits(lo: i64, hi: i64) -> u8 {
+    let (lo, hi) = (lo.max(0), hi.min(LANES as i64 - 1));
+    if lo > hi {
+        return 0;
+    }
+    // Bits lo..=hi of a byte (hi < 8, so the shift stays below 9).
+    (((1u32 << (hi + 1)) - (1u32 << lo)) & 0xFF) as u8
 }

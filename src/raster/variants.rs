@@ -74,7 +74,7 @@ macro_rules! walk_list {
             /// ([`super::multisample::rows`]).
             multisample [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::multisample::rows::<M, DEPTH, FLAT, PERSP> };
+                => { crate::raster::multisample::rows::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
             covered [C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool] [C, DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], cover: &C, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)

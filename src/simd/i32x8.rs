@@ -145,6 +145,36 @@ impl I32x8 {
             self.0
         ))))
     }
+
+    /// The eight bytes `b` zero-extended, lane `i` from `b[i]` (`vpmovzxbd`).
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub unsafe fn from_u8(b: [u8; 8]) -> Self {
+        // SAFETY: forwarded from the caller; the 8-byte load reads `b` only.
+        unsafe {
+            let v = _mm_loadl_epi64(b.as_ptr().cast());
+            Self(_mm256_cvtepu8_epi32(v))
+        }
+    }
+
+    /// The low byte of each lane, lane `i` at byte `i` (the inverse of [`Self::from_u8`]
+    /// for lanes of 0..=255).
+    #[inline(always)]
+    pub fn to_u8(self) -> [u8; 8] {
+        avx2!({
+            // Bytes 0, 4, 8, 12 of each half to its low four bytes, then the halves'
+            // low dwords side by side.
+            let pick = _mm256_setr_epi8(
+                0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 4, 8, 12, -1, -1,
+                -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+            );
+            let s = _mm256_shuffle_epi8(self.0, pick);
+            let v = _mm_unpacklo_epi32(_mm256_castsi256_si128(s), _mm256_extracti128_si256::<1>(s));
+            (_mm_cvtsi128_si64(v) as u64).to_le_bytes()
+        })
+    }
 }
 
 bitwise_256!(I32x8);
