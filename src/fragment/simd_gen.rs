@@ -14,6 +14,8 @@
 //! test and its updates run per live lane on the stored bytes, in the scalar order.
 
 #![cfg(target_arch = "x86_64")]
+// Lane loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
 
 use super::simd::{blend8, blend_is_over, depth_pass, depth_test8, eval, over8, sat, store_masked};
 use super::span::{TexLanes, LANES};
@@ -239,6 +241,16 @@ unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     }
 }
 
+/// Applies stencil operation `op` of `sp` to the bytes of `st` whose bits are set in `m`.
+#[inline(always)]
+fn stencil_op(sp: &StencilFacePlan, op: crate::pipe::StencilOp, st: &mut [u8], mut m: u32) {
+    while m != 0 {
+        let i = m.trailing_zeros() as usize;
+        m &= m - 1;
+        st[i] = sp.update(op, st[i]);
+    }
+}
+
 /// The stencil and depth tests of the `live` lanes of the row at `idx` (the first `n`
 /// lanes inside the row) with their updates and counts, as
 /// [`super::span::stencil_depth`] makes them; returns the lanes that pass.
@@ -288,24 +300,12 @@ unsafe fn stencil_depth8<const FMA: bool, const DEPTH: bool>(
             let passed = live.movemask();
             stats.depth_failed += u64::from((bits & !passed).count_ones());
             if let Some(sp) = &g.stencil {
-                let st = &mut fb.stencil[idx..idx + n];
-                let mut m = bits & !passed;
-                while m != 0 {
-                    let i = m.trailing_zeros() as usize;
-                    m &= m - 1;
-                    st[i] = sp.update(sp.zfail, st[i]);
-                }
+                stencil_op(sp, sp.zfail, &mut fb.stencil[idx..idx + n], bits & !passed);
             }
             bits = passed;
         }
         if let Some(sp) = &g.stencil {
-            let st = &mut fb.stencil[idx..idx + n];
-            let mut m = bits;
-            while m != 0 {
-                let i = m.trailing_zeros() as usize;
-                m &= m - 1;
-                st[i] = sp.update(sp.zpass, st[i]);
-            }
+            stencil_op(sp, sp.zpass, &mut fb.stencil[idx..idx + n], bits);
         }
         if plan.count_samples {
             stats.samples_passed += u64::from(bits.count_ones());

@@ -339,7 +339,7 @@ mod tests {
             BaseFormat::Rgba,
         ];
         for round in 0..4000 {
-            let mut src = |pick: &mut dyn FnMut(u32) -> usize| match pick(6) {
+            let src = |pick: &mut dyn FnMut(u32) -> usize| match pick(6) {
                 0 => Source::Texture,
                 1 => Source::TextureN(pick(3) as u8),
                 2 => Source::Constant,
@@ -362,7 +362,7 @@ mod tests {
             let mut c = Combine::derive(&env, bases[pick(6)]);
             let unit = pick(3);
             c.canonicalise(unit, round % 2 == 0, |n| (n < 2).then_some(n));
-            let mut val = |pick: &mut dyn FnMut(u32) -> usize| {
+            let val = |pick: &mut dyn FnMut(u32) -> usize| {
                 let mut v = [[0f32; 4]; 8];
                 for l in v.iter_mut() {
                     for x in l.iter_mut() {
