@@ -13,6 +13,7 @@
 pub mod blend;
 pub mod multisample;
 pub mod simd;
+pub mod simd_gen;
 pub mod simd_plane;
 pub mod simd_tex;
 pub mod span;

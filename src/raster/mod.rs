@@ -399,7 +399,13 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
 /// coordinates, as llvmpipe's quads are) gets one level of detail from its TL, TR and BL
 /// texture coordinates; helper pixels outside the triangle are evaluated on the planes.
 #[inline(always)]
-fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+fn rows_textured<
+    M: Madd,
+    const AVX2: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
     t: &SetupTriangle,
     b: [i64; 4],
     plan: &FragPlan,
@@ -407,6 +413,20 @@ fn rows_textured<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
+    // `AVX2` is a constant: the other levels' copies do not contain the 8-wide code.
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 && textured::general_ok(plan, fb) {
+        // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA exactly
+        // when `M::FUSED`.
+        unsafe {
+            if M::FUSED {
+                textured::rows_general::<M, true, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            } else {
+                textured::rows_general::<M, false, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            }
+        }
+        return;
+    }
     // Texel values of the current chunk, reused across chunks (lanes that are not live keep
     // stale values, which are never used): zeroing 2 KiB per chunk cost more than sampling.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
@@ -447,33 +467,40 @@ fn sample_chunk<M: Madd, const PERSP: bool, const STR: bool>(
         } else {
             None
         };
-        // Row by row where an 8-wide sampler covers the unit (the same values).
-        if sample8::rows::<M>(
-            u,
-            k,
-            &sample8::Rows {
-                s: &[s0, s1],
-                t: &[t0, t1],
-                r: rr.as_ref(),
-                live,
-            },
-            texels,
-        ) {
+        sample_unit::<M>(u, k, &[s0, s1], &[t0, t1], rr.as_ref(), live, texels);
+    }
+}
+
+/// Samples unit `k` (`u`) of a chunk at the two rows' coordinates `s`, `t` (and `r` for
+/// the units that need it) into `texels`, for the 2x2 quads that hold a `live` pixel:
+/// row by row where an 8-wide sampler covers the unit ([`sample8`]), else a quad at a
+/// time.
+#[inline(always)]
+fn sample_unit<M: Madd>(
+    u: &UnitPlan<'_>,
+    k: usize,
+    s: &[[f32; LANES]; 2],
+    t: &[[f32; LANES]; 2],
+    rr: Option<&[[f32; LANES]; 2]>,
+    live: &[[bool; LANES]; 2],
+    texels: &mut [TexLanes; 2],
+) {
+    if sample8::rows::<M>(u, k, &sample8::Rows { s, t, r: rr, live }, texels) {
+        return;
+    }
+    let ([s0, s1], [t0, t1]) = (s, t);
+    for j in 0..LANES / 2 {
+        let (l, r) = (2 * j, 2 * j + 1);
+        if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
             continue;
         }
-        for j in 0..LANES / 2 {
-            let (l, r) = (2 * j, 2 * j + 1);
-            if !(live[0][l] || live[0][r] || live[1][l] || live[1][r]) {
-                continue;
-            }
-            let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
-            let rq = rr.as_ref().map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
-            let v = variants::sample_quad::<M>(u, s, tt, rq);
-            texels[0][k][l] = v[0];
-            texels[0][k][r] = v[1];
-            texels[1][k][l] = v[2];
-            texels[1][k][r] = v[3];
-        }
+        let (s, tt) = ([s0[l], s0[r], s1[l], s1[r]], [t0[l], t0[r], t1[l], t1[r]]);
+        let rq = rr.map(|[r0, r1]| [r0[l], r0[r], r1[l], r1[r]]);
+        let v = variants::sample_quad::<M>(u, s, tt, rq);
+        texels[0][k][l] = v[0];
+        texels[0][k][r] = v[1];
+        texels[1][k][l] = v[2];
+        texels[1][k][r] = v[3];
     }
 }
 

@@ -250,3 +250,115 @@ pub(super) fn rows_tex_fast<
         }
     }
 }
+
+/// Whether the general textured walk shades through [`rows_general`]: a CPU with AVX2,
+/// the 8-wide walks not turned off (`SOFTGL_TEX_PATH=array` keeps the per-lane walk, to
+/// compare the two), and a plan and target that
+/// [`crate::fragment::simd_gen::plan_ok`] accepts.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn general_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
+    crate::texture::fast_avx2::available()
+        && fast::vec8_enabled()
+        && crate::fragment::simd_gen::plan_ok(plan, fb)
+}
+
+/// The general textured walk (`rows_textured`) with the per-fragment work of each chunk
+/// row on 8 lanes ([`crate::fragment::simd_gen::shade_row`]): the units are sampled as
+/// the per-lane walk samples them, then every environment, the colour sum, fog, the
+/// tests, blending and the store run in registers. The same bytes and counts.
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2 (and FMA when `FMA`, which is
+/// `M::FUSED`), after [`general_ok`] accepted the plan and target.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) unsafe fn rows_general<
+    M: Madd,
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    use crate::fragment::simd_gen::{shade_row, GenPlan};
+    use crate::fragment::span::TexLanes;
+    use crate::pipe::MAX_TEXTURE_UNITS;
+    let g = GenPlan::new(plan, t, units);
+    // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
+    let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+    for c in Chunks::new(t, b) {
+        // SAFETY: forwarded from the caller.
+        let oow = unsafe { coords_and_sample::<M, FMA, PERSP>(t, units, &c, &mut texels) };
+        for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {
+            if !live.iter().any(|&l| l) {
+                continue;
+            }
+            let (py, x) = ((c.qy + r as i64) as usize, c.x as usize);
+            // SAFETY: forwarded from the caller; the live lanes lie inside row `py`.
+            unsafe {
+                shade_row::<FMA, DEPTH, FLAT, PERSP>(
+                    t, plan, &g, units, tex, fb, py, x, live, oow[r], stats,
+                );
+            }
+        }
+    }
+}
+
+/// `sample_chunk` of the 8-wide walk: every unit's projected coordinates of chunk `c` on
+/// 8 lanes (the scalar walk's operations: `1 / w`, each varying times it, `1 / q`, and
+/// s, t and r times that), then the unit sampled as that walk samples it
+/// (`sample_unit`). Returns each row's `1 / w` (1.0 without `PERSP`).
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn coords_and_sample<M: Madd, const FMA: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    units: &[UnitPlan<'_>],
+    c: &Chunk,
+    texels: &mut [crate::fragment::span::TexLanes; 2],
+) -> [crate::simd::F32x8; 2] {
+    use crate::fragment::simd_gen::vary8;
+    use crate::simd::F32x8;
+    // SAFETY: the caller's AVX2 (+FMA) context; the stores write 8 f32 into 8-lane arrays.
+    unsafe {
+        let one = F32x8::splat(1.0);
+        let fx = F32x8::load(c.fx.as_ptr());
+        let fy = [F32x8::splat(c.fy[0]), F32x8::splat(c.fy[1])];
+        let mut oow = [one; 2];
+        if PERSP {
+            for r in 0..2 {
+                oow[r] = one.div(crate::fragment::simd_tex::eval8::<FMA>(&t.w, fx, fy[r]));
+            }
+        }
+        for (k, u) in units.iter().enumerate() {
+            let base = VARY_TEX + 4 * k;
+            let needs_r = u.needs_r();
+            let mut s = [[0f32; LANES]; 2];
+            let mut tt = [[0f32; LANES]; 2];
+            let mut rr = [[0f32; LANES]; 2];
+            for r in 0..2 {
+                let rq = one.div(vary8::<FMA, PERSP>(t, base + 3, fx, fy[r], oow[r]));
+                let sv = vary8::<FMA, PERSP>(t, base, fx, fy[r], oow[r]).mul(rq);
+                let tv = vary8::<FMA, PERSP>(t, base + 1, fx, fy[r], oow[r]).mul(rq);
+                sv.store(s[r].as_mut_ptr());
+                tv.store(tt[r].as_mut_ptr());
+                if needs_r {
+                    let rv = vary8::<FMA, PERSP>(t, base + 2, fx, fy[r], oow[r]).mul(rq);
+                    rv.store(rr[r].as_mut_ptr());
+                }
+            }
+            let rr = if needs_r { Some(&rr) } else { None };
+            super::sample_unit::<M>(u, k, &s, &tt, rr, &c.live, texels);
+        }
+        oow
+    }
+}

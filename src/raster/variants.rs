@@ -64,7 +64,7 @@ macro_rules! walk_list {
             /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
             textured [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::rows_textured::<M, DEPTH, FLAT, PERSP> };
+                => { crate::raster::rows_textured::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// Triangle rows through the one-unit texture fast path
             /// ([`super::textured::rows_tex_fast`]).
             tex_fast [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]

@@ -643,3 +643,5 @@ fn combine(f: CombineFn, a: [f32; 3]) -> f32 {
 
 #[cfg(test)]
 mod tests;
+#[cfg(target_arch = "x86_64")]
+pub mod vec8;

@@ -1,0 +1,386 @@
+//! The AVX2 per-fragment half of the general textured walk (`raster::rows_textured`): one
+//! row of a chunk (8 pixels) whose units are sampled, in 256-bit registers from the
+//! planes to the store, for any number of units and any texture environment, with the
+//! separate specular colour, fog, the alpha test, stencil, depth, blending and the colour
+//! mask.
+//!
+//! It computes exactly what [`super::span::shade_chunk`] computes for
+//! [`super::span::ChunkColors::Textured`]: the primary colour and `1 / w` as
+//! [`super::simd_tex`] evaluates them (fused only in the FMA variant), every unit's
+//! combiner through [`crate::texture::env::Combine::apply8`] (the scalar combiner's
+//! operations on eight lanes), the specular sum and the fog blend unfused, the fog
+//! factor per lane by [`crate::fixed_function::fog::FogPlan::factor`], `unorm8` as clamp
+//! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`]. The stencil
+//! test and its updates run per live lane on the stored bytes, in the scalar order.
+
+#![cfg(target_arch = "x86_64")]
+// Lane loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
+
+use super::simd::{blend8, blend_is_over, depth_pass, depth_test8, eval, over8, sat, store_masked};
+use super::span::{TexLanes, LANES};
+use super::{FragPlan, StencilFacePlan};
+use crate::framebuffer::{ColorFormat, Target};
+use crate::geometry::setup::SetupTriangle;
+use crate::geometry::{VARY_FOG, VARY_SPEC};
+use crate::pipe::MAX_TEXTURE_UNITS;
+use crate::simd::{F32x8, I32x8};
+use crate::stats::Stats;
+use crate::texture::env::vec8::{Inputs8, Vec4};
+use crate::texture::UnitPlan;
+
+/// Whether [`shade_row`] covers this plan and target: an 8-bit colour format stored as
+/// RGBA8 unchanged, no logic op, no sRGB writes or wide buffer, no antialiasing coverage
+/// and no one-pass multisampling (those keep the general span shader).
+pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
+    plan.logic.is_none()
+        && plan.smooth.is_none()
+        && plan.ms.is_none()
+        && !plan.srgb
+        && fb.wide.is_none()
+        && matches!(
+            fb.format,
+            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
+        )
+}
+
+/// What [`shade_row`] needs of the plan and triangle, worked out once per triangle.
+#[derive(Clone, Copy)]
+pub struct GenPlan {
+    /// The stencil face of the triangle, when the stencil test is on.
+    stencil: Option<StencilFacePlan>,
+    /// The blend is [`blend_is_over`].
+    over: bool,
+    /// The number of units a crossbar environment reads (0 without one).
+    crossbar: usize,
+    /// The colour mask as a byte mask of a packed RGBA8 pixel.
+    mask: i32,
+}
+
+impl GenPlan {
+    /// The per-triangle form of `plan` for `t`'s face and `units`.
+    pub fn new(plan: &FragPlan, t: &SetupTriangle, units: &[UnitPlan<'_>]) -> Self {
+        let mut mask = 0u32;
+        for (ch, &m) in plan.color_mask.iter().enumerate() {
+            if m {
+                mask |= 0xFF << (8 * ch);
+            }
+        }
+        GenPlan {
+            stencil: plan.stencil.map(|s| if t.front { s.front } else { s.back }),
+            over: plan.blend.as_ref().is_some_and(blend_is_over),
+            crossbar: if units.iter().any(|u| u.env.crossbar) {
+                units.len()
+            } else {
+                0
+            },
+            mask: mask as i32,
+        }
+    }
+}
+
+/// Lanes `0..8` as f32.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn lanes_f() -> F32x8 {
+    // SAFETY: the caller's AVX2 context.
+    unsafe { F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]) }
+}
+
+/// The lane mask of the bits of `m` (bit i: lane i).
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn mask_of(m: u32) -> I32x8 {
+    // SAFETY: the caller's AVX2 context.
+    unsafe {
+        let bits = I32x8::new([1, 2, 4, 8, 16, 32, 64, 128]);
+        I32x8::splat(m as i32).and(bits).cmpeq(bits)
+    }
+}
+
+/// Varying `k` at the row's lanes: its plane, times `oow` when `PERSP`.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`).
+#[inline(always)]
+pub unsafe fn vary8<const FMA: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    k: usize,
+    fx: F32x8,
+    fy: F32x8,
+    oow: F32x8,
+) -> F32x8 {
+    // SAFETY: the caller's AVX2 (+FMA) context.
+    unsafe {
+        let a = eval::<FMA>(&t.vary[k], fx, fy);
+        if PERSP {
+            a.mul(oow)
+        } else {
+            a
+        }
+    }
+}
+
+/// `v`'s lanes `[0, 2, 4, 6, 1, 3, 5, 7]` back in order.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn interleave(v: F32x8) -> F32x8 {
+    // SAFETY: the caller's AVX2 context.
+    unsafe {
+        v.bits()
+            .permute_var(I32x8::new([0, 4, 1, 5, 2, 6, 3, 7]))
+            .as_f32()
+    }
+}
+
+/// One unit's texel values of 8 lanes (RGBA per lane) as four channel registers.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn channels(l: &[[f32; 4]; LANES]) -> Vec4 {
+    // SAFETY: the caller's AVX2 context; `l` is 32 contiguous f32.
+    unsafe {
+        let p = l.as_ptr() as *const f32;
+        // Two lanes' RGBA per register: (0, 1), (2, 3), (4, 5), (6, 7).
+        let (v0, v1, v2, v3) = (
+            F32x8::load(p),
+            F32x8::load(p.add(8)),
+            F32x8::load(p.add(16)),
+            F32x8::load(p.add(24)),
+        );
+        // Per 128-bit half: r g of lanes (0, 2) | (1, 3), b a of the same, then of 4–7.
+        let rg03 = v0.shuffle::<0x44>(v1);
+        let ba03 = v0.shuffle::<0xEE>(v1);
+        let rg47 = v2.shuffle::<0x44>(v3);
+        let ba47 = v2.shuffle::<0xEE>(v3);
+        [
+            interleave(rg03.shuffle::<0x88>(rg47)),
+            interleave(rg03.shuffle::<0xDD>(rg47)),
+            interleave(ba03.shuffle::<0x88>(ba47)),
+            interleave(ba03.shuffle::<0xDD>(ba47)),
+        ]
+    }
+}
+
+/// The packed RGBA8 colours of the row's lanes, as [`super::span`]'s `shaded_colors`
+/// computes them from the units' texels `tex`.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    units: &[UnitPlan<'_>],
+    tex: &TexLanes,
+    fx: F32x8,
+    fy: F32x8,
+    oow: F32x8,
+) -> I32x8 {
+    // SAFETY: the caller's AVX2 (+FMA) context.
+    unsafe {
+        let mut frag = [F32x8::zero(); 4];
+        for (ch, f) in frag.iter_mut().enumerate() {
+            *f = if FLAT {
+                F32x8::splat(t.flat[ch])
+            } else {
+                vary8::<FMA, PERSP>(t, ch, fx, fy, oow)
+            };
+        }
+        let mut texs = [[F32x8::zero(); 4]; MAX_TEXTURE_UNITS];
+        for (k, tv) in texs.iter_mut().enumerate().take(units.len()) {
+            *tv = channels(&tex[k]);
+        }
+        let mut prev = frag;
+        for (k, u) in units.iter().enumerate() {
+            prev = u.env.apply8(&Inputs8 {
+                frag,
+                tex: texs[k],
+                prev,
+                textures: &texs[..g.crossbar],
+            });
+        }
+        if plan.separate_specular {
+            for ch in 0..3 {
+                let k = VARY_SPEC + ch;
+                let s = if FLAT && k < VARY_FOG {
+                    F32x8::splat(t.flat[k])
+                } else {
+                    vary8::<FMA, PERSP>(t, k, fx, fy, oow)
+                };
+                prev[ch] = prev[ch].add(s);
+            }
+        }
+        if let Some(fog) = &plan.fog {
+            let coord = vary8::<FMA, PERSP>(t, VARY_FOG, fx, fy, oow).to_array();
+            let mut f = [0f32; LANES];
+            for i in 0..LANES {
+                f[i] = fog.factor(coord[i]);
+            }
+            let f = F32x8::load(f.as_ptr());
+            let gf = F32x8::splat(1.0).sub(f);
+            for ch in 0..3 {
+                prev[ch] = F32x8::splat(fog.color[ch]).mul(gf).add(prev[ch].mul(f));
+            }
+        }
+        let mut acc = I32x8::zero();
+        for (ch, c) in prev.iter().enumerate() {
+            let u = sat(*c).mul(F32x8::splat(255.0)).to_i32();
+            acc = acc.or(u.shl_var(I32x8::splat(8 * ch as i32)));
+        }
+        acc
+    }
+}
+
+/// Applies stencil operation `op` of `sp` to the bytes of `st` whose bits are set in `m`.
+#[inline(always)]
+fn stencil_op(sp: &StencilFacePlan, op: crate::pipe::StencilOp, st: &mut [u8], mut m: u32) {
+    while m != 0 {
+        let i = m.trailing_zeros() as usize;
+        m &= m - 1;
+        st[i] = sp.update(op, st[i]);
+    }
+}
+
+/// The stencil and depth tests of the `live` lanes of the row at `idx` (the first `n`
+/// lanes inside the row) with their updates and counts, as
+/// [`super::span::stencil_depth`] makes them; returns the lanes that pass.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`); the live lanes lie inside the buffers.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn stencil_depth8<const FMA: bool, const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    idx: usize,
+    n: usize,
+    fx: F32x8,
+    fy: F32x8,
+    mut live: I32x8,
+    stats: &mut Stats,
+) -> I32x8 {
+    // SAFETY: the caller's AVX2 (+FMA) context; stencil bytes are indexed (checked)
+    // within `idx..idx + n`, and `depth_test8` touches live lanes only.
+    unsafe {
+        let mut bits = live.movemask();
+        if let Some(sp) = &g.stencil {
+            let st = &mut fb.stencil[idx..idx + n];
+            let mut m = bits;
+            while m != 0 {
+                let i = m.trailing_zeros() as usize;
+                m &= m - 1;
+                stats.stencil_reads += 1;
+                let s = st[i];
+                if !sp.test(s) {
+                    st[i] = sp.update(sp.fail, s);
+                    bits &= !(1 << i);
+                    stats.stencil_failed += 1;
+                }
+            }
+            live = mask_of(bits);
+        }
+        if DEPTH {
+            let d = plan.depth.expect("DEPTH implies a depth plan");
+            stats.depth_reads += u64::from(bits.count_ones());
+            if bits != 0 {
+                live = depth_test8::<FMA>(t, &d, fb, idx, fx, fy, live);
+            }
+            let passed = live.movemask();
+            stats.depth_failed += u64::from((bits & !passed).count_ones());
+            if let Some(sp) = &g.stencil {
+                stencil_op(sp, sp.zfail, &mut fb.stencil[idx..idx + n], bits & !passed);
+            }
+            bits = passed;
+        }
+        if let Some(sp) = &g.stencil {
+            stencil_op(sp, sp.zpass, &mut fb.stencil[idx..idx + n], bits);
+        }
+        if plan.count_samples {
+            stats.samples_passed += u64::from(bits.count_ones());
+        }
+        live
+    }
+}
+
+/// Shades the `live` lanes of the 8 pixels from `x` in row `py` whose units were sampled
+/// into `tex` (see the module comment); `oow` is the row's `1 / w` (1.0 without `PERSP`).
+///
+/// # Safety
+/// Must be called from a function compiled with AVX2 (and FMA when `FMA`), for a plan and
+/// target that [`plan_ok`] accepts, with `g` made from this plan, triangle and units;
+/// live lanes lie inside the row.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    units: &[UnitPlan<'_>],
+    tex: &TexLanes,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: &[bool; LANES],
+    oow: F32x8,
+    stats: &mut Stats,
+) {
+    let w = fb.width;
+    let n = LANES.min(w - x);
+    // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; loads and
+    // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
+    unsafe {
+        let mut bits = 0u32;
+        for (i, &l) in live.iter().enumerate() {
+            bits |= u32::from(l) << i;
+        }
+        stats.fragments += u64::from(bits.count_ones());
+        let mut live_v = mask_of(bits);
+        let fx = F32x8::splat(x as f32).add(lanes_f());
+        let fy = F32x8::splat(py as f32);
+        let px = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
+        if let Some((func, reference)) = plan.alpha {
+            let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
+            let kept = live_v.and(ok);
+            stats.alpha_failed += u64::from(bits.count_ones() - kept.movemask().count_ones());
+            live_v = kept;
+        }
+        let idx = (py - fb.y0) * w + x;
+        let pass = stencil_depth8::<FMA, DEPTH>(t, plan, g, fb, idx, n, fx, fy, live_v, stats);
+        let passed = pass.movemask();
+        if g.mask == 0 || passed == 0 {
+            return;
+        }
+        let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
+        let full = g.mask == -1;
+        let mut out = px;
+        if plan.blend.is_some() || !full {
+            let dst = I32x8::maskload(cptr as *const i32, pass);
+            if let Some(b) = &plan.blend {
+                stats.color_reads += n as u64;
+                out = if g.over {
+                    over8(px, dst)
+                } else {
+                    blend8(b, px, dst)
+                };
+            }
+            if !full {
+                let m = I32x8::splat(g.mask);
+                out = out.and(m).or(dst.and(m.xor(I32x8::splat(-1))));
+            }
+        }
+        store_masked(cptr, fb.color.len().saturating_sub(idx), pass, out);
+        stats.color_writes += u64::from(passed.count_ones());
+    }
+}
