@@ -295,7 +295,7 @@ unsafe fn stencil_depth8<const FMA: bool, const DEPTH: bool>(
             let d = plan.depth.expect("DEPTH implies a depth plan");
             stats.depth_reads += u64::from(bits.count_ones());
             if bits != 0 {
-                live = depth_test8::<FMA>(t, &d, fb, idx, fx, fy, live);
+                live = depth_test8::<FMA>(t, &d, fb.depth, idx, fx, fy, live);
             }
             let passed = live.movemask();
             stats.depth_failed += u64::from((bits & !passed).count_ones());
