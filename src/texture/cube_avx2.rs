@@ -64,6 +64,7 @@ type Sel8 = (I32x8, I32x8, F32x8);
 impl<'a> Cube8<'a> {
     /// The sampler of unit `p`, when it covers the unit's state.
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)]
     pub fn of(p: &'a UnitPlan<'a>) -> Option<Cube8<'a>> {
         let ExtKind::CubeSeamless(faces) = &p.ext.kind else {
             return None;
@@ -615,7 +616,13 @@ mod tests {
         let mut v = [unit(next), unit(next), unit(next)];
         match next() % 12 {
             // an edge: two equal magnitudes
-            0 => v[1] = if next() % 2 == 0 { v[0] } else { -v[0] },
+            0 => {
+                v[1] = if next().is_multiple_of(2) {
+                    v[0]
+                } else {
+                    -v[0]
+                }
+            }
             1 => v[2] = v[1].abs(),
             // a corner
             2 => v = [1.0, -1.0, 1.0].map(|c| c * v[0]),
@@ -674,8 +681,9 @@ mod tests {
                                 [s[row][lane], t[row][lane], r[row][lane]] = v;
                             }
                         }
-                        let live: [[bool; 8]; 2] =
-                            std::array::from_fn(|_| std::array::from_fn(|_| next() % 3 != 0));
+                        let live: [[bool; 8]; 2] = std::array::from_fn(|_| {
+                            std::array::from_fn(|_| !next().is_multiple_of(3))
+                        });
                         let mut out = [[[-1.0f32; 4]; 8]; 2];
                         let [o0, o1] = &mut out;
                         // SAFETY: the CPU has AVX2 (checked above), and FMA when the plan
