@@ -5,7 +5,11 @@
 //!   sampler ([`crate::texture::fast::chunk_u8`], the same bytes as the general sampler's
 //!   `fast::quad_u8`), its texels then made floats as the general sampler makes them;
 //! - a shadow map with its depth comparison
-//!   ([`crate::texture::shadow_avx2::Shadow8`]).
+//!   ([`crate::texture::shadow_avx2::Shadow8`]);
+//! - a seamless cube map with LINEAR filtering, mipmapped or not
+//!   ([`crate::texture::cube_avx2::Cube8`], MuJoCo's skybox): both rows at once, as the
+//!   per-pixel LOD reads each quad's two rows; the quads it leaves (a tap across a face
+//!   edge, a coordinate that is not finite) are sampled here by the quad sampler.
 //!
 //! These are the units of MuJoCo's multi-unit draws (the floor's mipmapped grid beside
 //! the shadow map on unit 1, the light passes' shadow map alone), which the one-unit
@@ -34,6 +38,7 @@ pub(super) struct Rows<'a> {
 /// Samples unit `k` (`u`) of a chunk's two rows at `c.s`, `c.t` (with references `c.r`
 /// for a depth comparison) into `texels`, for the rows with a live lane; `false` (and the
 /// caller samples the quads) when no 8-wide sampler covers the unit or one declines.
+/// The quads an 8-wide sampler leaves are sampled here through the quad sampler.
 /// Lanes that are not live may receive any value.
 #[inline(always)]
 #[allow(unused_variables)]
@@ -47,13 +52,27 @@ pub(super) fn rows<M: Madd>(
     if crate::texture::fast_avx2::available() && crate::texture::fast::enabled() {
         // SAFETY: (both) the CPU has AVX2 (`fast_avx2::available`), and FMA when the walk
         // fuses (`cpu::isa` chose a fused level).
-        return unsafe {
+        let done = unsafe {
             if M::FUSED {
                 rows_avx2fma(u, k, c, texels)
             } else {
                 rows_avx2(u, k, c, texels)
             }
         };
+        let Some(redo) = done else {
+            return false;
+        };
+        // the quads the 8-wide sampler left to the quad sampler
+        for j in (0..LANES / 2).filter(|j| redo >> j & 1 != 0) {
+            let (l, r) = (2 * j, 2 * j + 1);
+            let quad = |v: &[[f32; LANES]; 2]| [v[0][l], v[0][r], v[1][l], v[1][r]];
+            let v = super::variants::sample_quad::<M>(u, quad(c.s), quad(c.t), c.r.map(quad));
+            texels[0][k][l] = v[0];
+            texels[0][k][r] = v[1];
+            texels[1][k][l] = v[2];
+            texels[1][k][r] = v[3];
+        }
+        return true;
     }
     false
 }
@@ -65,8 +84,13 @@ pub(super) fn rows<M: Madd>(
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 #[allow(clippy::needless_range_loop)]
-unsafe fn rows_body(u: &UnitPlan<'_>, k: usize, c: &Rows<'_>, texels: &mut [TexLanes; 2]) -> bool {
-    use crate::texture::{fast, sample, shadow_avx2::Shadow8, ExtKind};
+unsafe fn rows_body(
+    u: &UnitPlan<'_>,
+    k: usize,
+    c: &Rows<'_>,
+    texels: &mut [TexLanes; 2],
+) -> Option<u32> {
+    use crate::texture::{cube_avx2::Cube8, fast, sample, shadow_avx2::Shadow8, ExtKind};
     let Rows { s, t, r, live } = *c;
     let flat = matches!(u.ext.kind, ExtKind::Flat);
     if u.aos && u.dims == 2 && flat && r.is_none() {
@@ -79,7 +103,7 @@ unsafe fn rows_body(u: &UnitPlan<'_>, k: usize, c: &Rows<'_>, texels: &mut [TexL
                 *o = sample::to_float(v);
             }
         }
-        return true;
+        return Some(0);
     }
     if let (Some(r), Some(sh)) = (r, Shadow8::of(u)) {
         for row in 0..2 {
@@ -90,12 +114,17 @@ unsafe fn rows_body(u: &UnitPlan<'_>, k: usize, c: &Rows<'_>, texels: &mut [TexL
             let done =
                 unsafe { sh.row(&s[row], &t[row], &r[row], &live[row], &mut texels[row][k]) };
             if !done {
-                return false;
+                return None;
             }
         }
-        return true;
+        return Some(0);
     }
-    false
+    if let (Some(r), Some(cube)) = (r, Cube8::of(u)) {
+        let [t0, t1] = texels;
+        // SAFETY: forwarded from the caller.
+        return Some(unsafe { cube.rows(s, t, r, live, [&mut t0[k], &mut t1[k]]) });
+    }
+    None
 }
 
 /// Defines a level's out-of-line copy of [`rows_body`] with the given target features.
@@ -109,7 +138,7 @@ macro_rules! rows_copy {
             k: usize,
             c: &Rows<'_>,
             texels: &mut [TexLanes; 2],
-        ) -> bool {
+        ) -> Option<u32> {
             // SAFETY: forwarded from the caller.
             unsafe { rows_body(u, k, c, texels) }
         }

@@ -1,0 +1,728 @@
+//! The 8-wide AVX2 seamless cube-map sampler: both rows of a chunk (four 2x2 quads) of a
+//! GL_TEXTURE_CUBE_MAP with GL_TEXTURE_CUBE_MAP_SEAMLESS and LINEAR filtering, sampled a
+//! row (8 pixels) at a time with exactly the arithmetic of
+//! [`super::cube_seamless::sample_quad`].
+//!
+//! It serves the state of MuJoCo's skybox and of most seamless cube maps: 8-bit texels
+//! (unorm, or through the plan's decode tables), both image filters LINEAR, and either no
+//! LOD or llvmpipe's per-pixel cube LOD of a mipmapped texture ([`Cube8::of`]). Per lane it
+//! computes, as the scalar code does:
+//! - the major axis, face and mirrored minor coordinates ([`super::cube::project`]);
+//! - the LOD of each pixel from its quad's row and column differences
+//!   ([`super::cube`]'s `pixel_lod`, then `lod::from_rho` and `select_levels`);
+//! - per level, `u = max(s, 0)·n − 0.5`, floor and fraction, the four texels read with
+//!   `u·f32(1/255)` (or the decode tables), and the lerps `w·(b − a) + a`, fused exactly when
+//!   the unit's lerps are (`UnitPlan::fma`); between two levels one more lerp.
+//!
+//! A quad with a tap off its face (the seamless edge and corner rules), or with a NaN or
+//! infinite coordinate in any of its four pixels (helper pixels included, as they take
+//! part in the quad's corner rule), is sampled by the scalar code instead: a few quads
+//! along the face edges. Its functions inline into the rasterizer's AVX2 entry points and
+//! run only when the CPU has AVX2 ([`super::fast_avx2::available`]).
+
+use super::cube::Faces;
+use super::lod::Lod;
+use super::sample::{select_levels, INV_255};
+use super::{ExtKind, Filter, MipFilter, UnitPlan, MAX_LEVELS};
+use crate::simd::{F32x8, I32x8};
+
+/// A unit's seamless cube-map state when the 8-wide sampler covers it.
+#[derive(Clone, Copy)]
+pub struct Cube8<'a> {
+    /// The unit.
+    p: &'a UnitPlan<'a>,
+    /// The six faces' levels.
+    faces: &'a Faces<'a>,
+    /// The LOD is computed per pixel (else `sel` holds the one selection).
+    derivs: bool,
+    /// The level selection of every pixel when there are no derivatives.
+    sel: (usize, usize, f32),
+    /// The face size of each level.
+    sizes: [i32; MAX_LEVELS],
+}
+
+/// A direction's major axis, face and mirrored minor coordinates, per lane.
+#[derive(Clone, Copy)]
+struct Dir {
+    /// The major axis is z (mask).
+    z: F32x8,
+    /// The major axis is x (mask).
+    x: F32x8,
+    /// The major coordinate.
+    ma: F32x8,
+    /// Its sign bit.
+    ms: I32x8,
+    /// The minor coordinates, mirrored.
+    sc: F32x8,
+    /// See `sc`.
+    tc: F32x8,
+}
+
+/// One level selection per lane: `(level0, level1, fraction)`.
+type Sel8 = (I32x8, I32x8, F32x8);
+
+impl<'a> Cube8<'a> {
+    /// The sampler of unit `p`, when it covers the unit's state.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)]
+    pub fn of(p: &'a UnitPlan<'a>) -> Option<Cube8<'a>> {
+        let ExtKind::CubeSeamless(faces) = &p.ext.kind else {
+            return None;
+        };
+        if p.ext.floats || p.ext.depth.is_some() {
+            return None;
+        }
+        if p.min_filter != Filter::Linear || p.mag_filter != Filter::Linear {
+            return None;
+        }
+        let derivs = p.needs_lod && !p.lod.min_max_equal;
+        // without a mip filter llvmpipe takes the quad's top-left LOD (not covered)
+        if derivs && p.mip_filter == MipFilter::None {
+            return None;
+        }
+        let mut sizes = [1i32; MAX_LEVELS];
+        for l in p.first..=p.last {
+            let n = faces[0].get(l)?.as_ref()?.width;
+            // every index `y·n + x` fits an i32 lane
+            if n.checked_mul(n)? >= 1 << 30 {
+                return None;
+            }
+            sizes[l] = n as i32;
+        }
+        let sel = if derivs {
+            (p.first, p.first, 0.0)
+        } else {
+            let lod = if p.needs_lod {
+                super::lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
+            } else {
+                Lod::MAG
+            };
+            let (_, l0, l1, f) = select_levels(p, lod);
+            (l0, l1, f)
+        };
+        Some(Cube8 {
+            p,
+            faces,
+            derivs,
+            sel,
+            sizes,
+        })
+    }
+
+    /// Samples both rows of a chunk at directions `s`, `t`, `r` into `out`, except the
+    /// quads it returns (bit `j`: lanes `2j`, `2j + 1` of both rows), which have a live
+    /// pixel and a lane it does not follow, for the caller to sample with the scalar code
+    /// (`cube_seamless::sample_quad`). Lanes of quads without a live pixel may receive any
+    /// value.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when the unit's lerps fuse.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)]
+    pub unsafe fn rows(
+        &self,
+        s: &[[f32; 8]; 2],
+        t: &[[f32; 8]; 2],
+        r: &[[f32; 8]; 2],
+        live: &[[bool; 8]; 2],
+        out: [&mut [[f32; 4]; 8]; 2],
+    ) -> u32 {
+        let qlive = (0..4).fold(0u32, |m, j| {
+            let l = live[0][2 * j] || live[0][2 * j + 1] || live[1][2 * j] || live[1][2 * j + 1];
+            m | (u32::from(l) << j)
+        });
+        if qlive == 0 {
+            return 0;
+        }
+        // lanes to sample with the scalar code, per row
+        let mut bad = [0u32; 2];
+        // SAFETY: (all) the caller vouches for AVX2 (and FMA when the lerps fuse); the
+        // arrays are 8 lanes each.
+        unsafe {
+            // (no closures here or below: one the compiler leaves out of line loses the
+            // caller's target features)
+            let v = [
+                [
+                    F32x8::load(s[0].as_ptr()),
+                    F32x8::load(t[0].as_ptr()),
+                    F32x8::load(r[0].as_ptr()),
+                ],
+                [
+                    F32x8::load(s[1].as_ptr()),
+                    F32x8::load(t[1].as_ptr()),
+                    F32x8::load(r[1].as_ptr()),
+                ],
+            ];
+            let inf = F32x8::splat(f32::INFINITY);
+            for row in 0..2 {
+                for c in v[row] {
+                    // |c| < inf: false for NaN and infinities
+                    bad[row] |= !abs(c).cmp_lt(inf).movemask() & 0xff;
+                }
+            }
+            let dirs = [Dir::of(v[0]), Dir::of(v[1])];
+            let sels = if self.derivs {
+                // ddy: bottom minus top of the pixel's column, the same for both rows
+                let ddy = [
+                    v[1][0].sub(v[0][0]),
+                    v[1][1].sub(v[0][1]),
+                    v[1][2].sub(v[0][2]),
+                ];
+                let size = F32x8::splat(self.sizes[self.p.first] as f32);
+                // ddx: right minus left of the pixel's row in its quad
+                let ddx0 = [quad_dx(v[0][0]), quad_dx(v[0][1]), quad_dx(v[0][2])];
+                let ddx1 = [quad_dx(v[1][0]), quad_dx(v[1][1]), quad_dx(v[1][2])];
+                [
+                    self.select(dirs[0].rho(size, ddx0, ddy)),
+                    self.select(dirs[1].rho(size, ddx1, ddy)),
+                ]
+            } else {
+                let (l0, l1, f) = self.sel;
+                let sel = (
+                    I32x8::splat(l0 as i32),
+                    I32x8::splat(l1 as i32),
+                    F32x8::splat(f),
+                );
+                [sel, sel]
+            };
+            for row in 0..2 {
+                let (face, fs, ft) = dirs[row].project(self.derivs);
+                let (l0, l1, frac) = sels[row];
+                let a = self.level(face, fs, ft, l0, &mut bad[row]);
+                let same = l1.cmpeq(l0);
+                let c = if same.movemask() != 0xff {
+                    let b = self.level(face, fs, ft, l1, &mut bad[row]);
+                    let same = same.as_f32();
+                    // the lerp between the levels where they differ
+                    [
+                        self.lerp(frac, a[0], b[0]).blendv(a[0], same),
+                        self.lerp(frac, a[1], b[1]).blendv(a[1], same),
+                        self.lerp(frac, a[2], b[2]).blendv(a[2], same),
+                        self.lerp(frac, a[3], b[3]).blendv(a[3], same),
+                    ]
+                } else {
+                    a
+                };
+                let c = [
+                    c[0].to_array(),
+                    c[1].to_array(),
+                    c[2].to_array(),
+                    c[3].to_array(),
+                ];
+                for (i, o) in out[row].iter_mut().enumerate() {
+                    *o = [c[0][i], c[1][i], c[2][i], c[3][i]];
+                }
+            }
+        }
+        // the quads with a live pixel and a lane the vectors do not follow
+        let lanes = bad[0] | bad[1];
+        (0..4).fold(0, |m, j| {
+            let redo = qlive >> j & 1 != 0 && lanes >> (2 * j) & 3 != 0;
+            m | (u32::from(redo) << j)
+        })
+    }
+
+    /// The level selection of each lane from its rho² (`lod::from_rho` with
+    /// `select_levels`; the image filters are both LINEAR).
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn select(&self, rho: F32x8) -> Sel8 {
+        let p = self.p;
+        let lp = &p.lod;
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let zero = F32x8::zero();
+            let bits = rho.bits();
+            let e = bits
+                .shr::<23>()
+                .and(I32x8::splat(0xff))
+                .sub(I32x8::splat(127));
+            let fast = lp.bias == 0.0 && !lp.apply_min && !lp.apply_max;
+            let (positive, ipart, fpart) = if fast && p.mip_filter != MipFilter::Linear {
+                let ipart = e.add(I32x8::splat(1)).sra::<1>();
+                (rho.cmp_gt(F32x8::splat(1.0)), ipart, zero)
+            } else {
+                // `fast_log2(rho²)·0.5`
+                let m = bits
+                    .and(I32x8::splat(0x007f_ffff))
+                    .or(I32x8::splat(0x3f80_0000))
+                    .as_f32();
+                let mut lod = e
+                    .sub(I32x8::splat(1))
+                    .to_f32()
+                    .add(m)
+                    .mul(F32x8::splat(0.5));
+                if lp.bias != 0.0 {
+                    lod = lod.add(F32x8::splat(lp.bias));
+                }
+                if lp.apply_max {
+                    lod = lod.min(F32x8::splat(lp.max_lod));
+                }
+                if lp.apply_min {
+                    lod = lod.max(F32x8::splat(lp.min_lod));
+                }
+                let positive = lod.cmp_gt(zero);
+                if p.mip_filter == MipFilter::Linear {
+                    let f = lod.floor();
+                    (positive, f.to_i32_trunc(), lod.sub(f))
+                } else {
+                    (positive, lod.round_even().to_i32_trunc(), zero)
+                }
+            };
+            let (first, last) = (I32x8::splat(p.first as i32), I32x8::splat(p.last as i32));
+            let minified = positive.bits();
+            match p.mip_filter {
+                MipFilter::None => (first, first, zero),
+                MipFilter::Nearest => {
+                    let l = ipart.add(first).max(first).min(last);
+                    let l = first.blendv(l, minified);
+                    (l, l, zero)
+                }
+                MipFilter::Linear => {
+                    let l0 = ipart.add(first);
+                    // below the base: the base alone; at or past the last: the last alone
+                    let below = first.cmpgt(l0);
+                    let past = l0.cmpgt(last.sub(I32x8::splat(1)));
+                    let one = below.or(past).xor(I32x8::splat(-1)).and(minified);
+                    let l = first.blendv(last, past.and(minified));
+                    let l0 = l.blendv(l0, one);
+                    let l1 = l.blendv(l0.add(I32x8::splat(1)), one);
+                    (l0, l1, zero.blendv(fpart, one.as_f32()))
+                }
+            }
+        }
+    }
+
+    /// One level per lane: the bilinear colour (R, G, B, A) of faces `face` at `(fs, ft)`
+    /// on levels `lvl`; the lanes with a tap off the face are added to `bad`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when the unit's lerps fuse.
+    #[inline(always)]
+    unsafe fn level(
+        &self,
+        face: I32x8,
+        fs: F32x8,
+        ft: F32x8,
+        lvl: I32x8,
+        bad: &mut u32,
+    ) -> [F32x8; 4] {
+        // SAFETY: forwarded from the caller; levels are in `first..=last` (`select`), so
+        // the gather reads inside `sizes`.
+        unsafe {
+            let n = I32x8::gather(self.sizes.as_ptr(), lvl);
+            let (size, max) = (n.to_f32(), n.sub(I32x8::splat(1)));
+            let zero = I32x8::zero();
+            let ((x0, wx), (y0, wy)) = (split(fs, size), split(ft, size));
+            // off the face: x0 < 0 or x0 + 1 > max (a huge u converts to i32::MIN)
+            let last0 = max.sub(I32x8::splat(1));
+            let off = zero
+                .cmpgt(x0)
+                .or(x0.cmpgt(last0))
+                .or(zero.cmpgt(y0))
+                .or(y0.cmpgt(last0));
+            *bad |= off.as_f32().movemask();
+            // indices kept inside the level for every lane
+            let one = I32x8::splat(1);
+            let (x1, y1) = (
+                x0.add(one).max(zero).min(max),
+                y0.add(one).max(zero).min(max),
+            );
+            let (x0, y0) = (x0.max(zero).min(max), y0.max(zero).min(max));
+            let (r0, r1) = (y0.mullo(n), y1.mullo(n));
+            let at = [
+                r0.add(x0).to_array(),
+                r0.add(x1).to_array(),
+                r1.add(x0).to_array(),
+                r1.add(x1).to_array(),
+            ];
+            let (fa, la) = (face.to_array(), lvl.to_array());
+            let mut raw = [[0u32; 8]; 4];
+            for i in 0..8 {
+                let img = self.faces[fa[i] as usize][la[i] as usize]
+                    .as_ref()
+                    .expect("cube complete");
+                for (k, at) in at.iter().enumerate() {
+                    raw[k][i] = u32::from_le_bytes(img.texels[at[i] as usize]);
+                }
+            }
+            let n = [
+                self.texels(&raw[0]),
+                self.texels(&raw[1]),
+                self.texels(&raw[2]),
+                self.texels(&raw[3]),
+            ];
+            [
+                self.bilerp(wx, wy, &n, 0),
+                self.bilerp(wx, wy, &n, 1),
+                self.bilerp(wx, wy, &n, 2),
+                self.bilerp(wx, wy, &n, 3),
+            ]
+        }
+    }
+
+    /// Eight packed texels as floats per channel (`texel_float`).
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn texels(&self, raw: &[u32; 8]) -> [F32x8; 4] {
+        // SAFETY: forwarded from the caller; 8 lanes.
+        unsafe {
+            match self.p.ext.decode {
+                Some([rgb, a]) => {
+                    let mut v = [[0.0f32; 8]; 4];
+                    for c in 0..4 {
+                        let table = if c == 3 { a } else { rgb };
+                        for i in 0..8 {
+                            v[c][i] = table[(raw[i] >> (8 * c) & 0xff) as usize];
+                        }
+                    }
+                    [
+                        F32x8::load(v[0].as_ptr()),
+                        F32x8::load(v[1].as_ptr()),
+                        F32x8::load(v[2].as_ptr()),
+                        F32x8::load(v[3].as_ptr()),
+                    ]
+                }
+                None => {
+                    let v = I32x8::load(raw.as_ptr());
+                    let byte = I32x8::splat(0xff);
+                    let k = F32x8::splat(INV_255);
+                    [
+                        v.and(byte).to_f32().mul(k),
+                        v.shr::<8>().and(byte).to_f32().mul(k),
+                        v.shr::<16>().and(byte).to_f32().mul(k),
+                        v.shr::<24>().to_f32().mul(k),
+                    ]
+                }
+            }
+        }
+    }
+
+    /// Channel `c` of the bilinear filter of taps `n` (n00, n01, n10, n11).
+    #[inline(always)]
+    fn bilerp(&self, wx: F32x8, wy: F32x8, n: &[[F32x8; 4]; 4], c: usize) -> F32x8 {
+        let r0 = self.lerp(wx, n[0][c], n[1][c]);
+        let r1 = self.lerp(wx, n[2][c], n[3][c]);
+        self.lerp(wy, r0, r1)
+    }
+
+    /// `lerpf(fma, w, a, b)` per lane.
+    #[inline(always)]
+    fn lerp(&self, w: F32x8, a: F32x8, b: F32x8) -> F32x8 {
+        if self.p.fma {
+            // SAFETY: `fma` is set only on CPUs with FMA (`sample::has_fma`).
+            unsafe { w.mul_add(b.sub(a), a) }
+        } else {
+            w.mul(b.sub(a)).add(a)
+        }
+    }
+}
+
+/// `max(c, 0)·n − 0.5` (NaN → 0) per lane, floored to an index (`i32::MIN` when too
+/// large) and the fraction.
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+unsafe fn split(c: F32x8, size: F32x8) -> (I32x8, F32x8) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        let u = c.max(F32x8::zero()).mul(size).sub(F32x8::splat(0.5));
+        let f = u.floor();
+        (f.to_i32_trunc(), u.sub(f))
+    }
+}
+
+/// Right minus left of each lane's pair (the row difference in a 2x2 quad).
+#[inline(always)]
+fn quad_dx(v: F32x8) -> F32x8 {
+    v.permute::<0xF5>().sub(v.permute::<0xA0>())
+}
+
+/// `|v|` per lane.
+#[inline(always)]
+fn abs(v: F32x8) -> F32x8 {
+    // SAFETY: AVX2 as `v` proves.
+    let m = unsafe { I32x8::splat(0x7fff_ffff) };
+    v.bits().and(m).as_f32()
+}
+
+/// `v` with its sign bits flipped by `m`.
+#[inline(always)]
+fn flip(v: F32x8, m: I32x8) -> F32x8 {
+    v.bits().xor(m).as_f32()
+}
+
+impl Dir {
+    /// The major axis of directions `v` (finite lanes; others are sampled by the scalar
+    /// code): z when `|r| ≥ max(|s|, |t|)`, else x when `|s| > |t|`, else y.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn of(v: [F32x8; 3]) -> Dir {
+        let [s, t, r] = v;
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let (a_s, a_t, a_r) = (abs(s), abs(t), abs(r));
+            let z = a_r.cmp_ge(a_s.max(a_t));
+            let x = a_s.cmp_gt(a_t).blendv(F32x8::zero(), z);
+            let ma = t.blendv(s, x).blendv(r, z);
+            let ms = ma.bits().and(I32x8::splat(i32::MIN));
+            let (sc, tc) = Dir::mirror(z, x, ms, v);
+            Dir {
+                z,
+                x,
+                ma,
+                ms,
+                sc,
+                tc,
+            }
+        }
+    }
+
+    /// The mirrored minor coordinates of `v` (a direction, or a difference of two) on
+    /// this direction's axis and sign: x: `(−sgn·r, −t)`, y: `(s, sgn·r)`, z: `(sgn·s, −t)`.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn mirror(z: F32x8, x: F32x8, ms: I32x8, v: [F32x8; 3]) -> (F32x8, F32x8) {
+        let [s, t, r] = v;
+        // SAFETY: forwarded from the caller.
+        let neg = unsafe { I32x8::splat(i32::MIN) };
+        let sc = s.blendv(flip(r, ms.xor(neg)), x).blendv(flip(s, ms), z);
+        let tc = flip(r, ms).blendv(flip(t, neg), x.bits().or(z.bits()).as_f32());
+        (sc, tc)
+    }
+
+    /// The face and face coordinates (`cube::project`); `lod` selects the `need_derivs`
+    /// projection.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn project(&self, lod: bool) -> (I32x8, F32x8, F32x8) {
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let half = F32x8::splat(0.5);
+            let k = if lod {
+                abs(half.mul(F32x8::splat(1.0).div(self.ma)))
+            } else {
+                let a = abs(self.ma);
+                half.div(a).and(a.cmp_gt(F32x8::zero()))
+            };
+            // axis 0 (x), 1 (y), 2 (z), twice, plus the sign bit
+            let axis = I32x8::splat(2)
+                .blendv(I32x8::zero(), self.x.bits())
+                .blendv(I32x8::splat(4), self.z.bits());
+            let face = axis.add(self.ms.shr::<31>());
+            (face, self.sc.mul(k).add(half), self.tc.mul(k).add(half))
+        }
+    }
+
+    /// The squared length, in texels of a face of `size`, of the face derivative of
+    /// direction difference `d` (`cube`'s `Deriv::sq`).
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn sq(&self, ima: F32x8, imahalf: F32x8, size: F32x8, d: [F32x8; 3]) -> F32x8 {
+        // SAFETY: forwarded from the caller.
+        let (dsc, dtc) = unsafe { Dir::mirror(self.z, self.x, self.ms, d) };
+        let dma = d[1].blendv(d[0], self.x).blendv(d[2], self.z);
+        let m = dma.mul(ima);
+        let a = dsc.sub(m.mul(self.sc)).mul(imahalf);
+        let b = dtc.sub(m.mul(self.tc)).mul(imahalf);
+        let (a, b) = (size.mul(a), size.mul(b));
+        a.mul(a).add(b.mul(b))
+    }
+
+    /// rho² of each pixel (`cube::pixel_lod`): the larger of the squared face derivatives
+    /// of `ddx` and `ddy` in texels of a face of `size`, as `f32::max` takes it (a NaN
+    /// gives the other), and 0 where that is not finite.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn rho(&self, size: F32x8, ddx: [F32x8; 3], ddy: [F32x8; 3]) -> F32x8 {
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            let ima = F32x8::splat(1.0).div(self.ma);
+            let imahalf = F32x8::splat(0.5).mul(ima);
+            let (rx, ry) = (
+                self.sq(ima, imahalf, size, ddx),
+                self.sq(ima, imahalf, size, ddy),
+            );
+            // `vmaxps(rx, ry)` gives ry when either is NaN; a NaN ry gives rx
+            let ry_nan = ry.cmp_ord(ry).bits().xor(I32x8::splat(-1)).as_f32();
+            let m = rx.max(ry).blendv(rx, ry_nan);
+            m.and(abs(m).cmp_lt(F32x8::splat(f32::INFINITY)))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::texture::{
+        cube_seamless, BaseFormat, Encoding, Level, Storage, Target, TextureObject, TextureState,
+    };
+
+    /// A seamless cube map of `n`x`n` faces (`n` a power of two) with a full chain of
+    /// random levels on unit 0 of a new state, sampled with `min`/`mip` (mag LINEAR).
+    fn state(n: usize, srgb: bool, next: &mut impl FnMut() -> u32) -> TextureState {
+        let mut storage = Storage::of_base(BaseFormat::Rgba);
+        if srgb {
+            storage.encoding = Encoding::Srgb;
+        }
+        let mut o = TextureObject::new(Some(Target::Cube));
+        for face in 0..6 {
+            let levels = o.face_levels_mut(face);
+            let mut size = n;
+            for level in levels.iter_mut().take(n.trailing_zeros() as usize + 1) {
+                *level = Some(Level {
+                    width: size,
+                    height: size,
+                    internal_format: 0x1908,
+                    base: BaseFormat::Rgba,
+                    storage,
+                    texels: (0..size * size).map(|_| next().to_le_bytes()).collect(),
+                    blocks: None,
+                    floats: None,
+                });
+                size = (size / 2).max(1);
+            }
+        }
+        let mut ts = TextureState::default();
+        ts.defaults[Target::Cube.index()] = o;
+        ts.units[0].enabled_cube = true;
+        ts.cube_seamless = true;
+        ts
+    }
+
+    /// A random value in [-1, 1], often on a face edge or corner (equal magnitudes).
+    fn unit(next: &mut impl FnMut() -> u32) -> f32 {
+        (next() % 20001) as f32 / 10000.0 - 1.0
+    }
+
+    /// The directions of one quad: a random direction (sometimes on an edge or a corner,
+    /// sometimes NaN, infinite, zero or huge) and its neighbours a small step away.
+    fn quad(next: &mut impl FnMut() -> u32) -> [[f32; 3]; 4] {
+        let mut v = [unit(next), unit(next), unit(next)];
+        match next() % 12 {
+            // an edge: two equal magnitudes
+            0 => {
+                v[1] = if next().is_multiple_of(2) {
+                    v[0]
+                } else {
+                    -v[0]
+                }
+            }
+            1 => v[2] = v[1].abs(),
+            // a corner
+            2 => v = [1.0, -1.0, 1.0].map(|c| c * v[0]),
+            3 => {
+                v[(next() % 3) as usize] =
+                    [f32::NAN, f32::INFINITY, -f32::INFINITY][(next() % 3) as usize]
+            }
+            4 => v = [0.0; 3],
+            5 => v[(next() % 3) as usize] = 3.0e30,
+            _ => {}
+        }
+        let step = [1.0e-4, 1.0e-3, 1.0e-2, 0.1][(next() % 4) as usize];
+        let d = [
+            [0.0; 3],
+            [step, 0.0, 0.0],
+            [0.0, step, step / 2.0],
+            [step, step, 0.0],
+        ];
+        d.map(|d| std::array::from_fn(|c| v[c] + d[c] * unit(next)))
+    }
+
+    #[test]
+    fn rows_match_the_quad_sampler() {
+        if !crate::texture::fast_avx2::available() {
+            return;
+        }
+        let mut next = crate::test_rng::xorshift32(54);
+        let (mut vector, mut scalar) = (0, 0);
+        for n in [1, 4, 16, 64] {
+            for srgb in [false, true] {
+                for (mip, bias, max_lod) in [
+                    (MipFilter::None, 0.0, 1000.0),
+                    (MipFilter::Linear, 0.0, 1000.0),
+                    (MipFilter::Nearest, 0.0, 1000.0),
+                    (MipFilter::Linear, 0.75, 2.0),
+                    (MipFilter::Nearest, -1.0, 1000.0),
+                ] {
+                    let mut ts = state(n, srgb, &mut next);
+                    let o = &mut ts.defaults[Target::Cube.index()];
+                    o.params.min_filter = Filter::Linear;
+                    o.params.mag_filter = Filter::Linear;
+                    o.params.mip_filter = mip;
+                    o.params.lod_bias = bias;
+                    o.params.max_lod = max_lod;
+                    let p = ts.unit_plan(0).expect("complete");
+                    let ExtKind::CubeSeamless(faces) = &p.ext.kind else {
+                        panic!("not seamless");
+                    };
+                    let c8 = Cube8::of(&p).expect("covered");
+                    for _ in 0..200 {
+                        let (mut s, mut t, mut r) =
+                            ([[0.0f32; 8]; 2], [[0.0; 8]; 2], [[0.0; 8]; 2]);
+                        for j in 0..4 {
+                            for (i, v) in quad(&mut next).into_iter().enumerate() {
+                                let (row, lane) = (i / 2, 2 * j + i % 2);
+                                [s[row][lane], t[row][lane], r[row][lane]] = v;
+                            }
+                        }
+                        let live: [[bool; 8]; 2] = std::array::from_fn(|_| {
+                            std::array::from_fn(|_| !next().is_multiple_of(3))
+                        });
+                        let mut out = [[[-1.0f32; 4]; 8]; 2];
+                        let [o0, o1] = &mut out;
+                        // SAFETY: the CPU has AVX2 (checked above), and FMA when the plan
+                        // fuses (`sample::has_fma`).
+                        let redo = unsafe { c8.rows(&s, &t, &r, &live, [o0, o1]) };
+                        for j in 0..4 {
+                            let (a, b) = (2 * j, 2 * j + 1);
+                            if !(live[0][a] || live[0][b] || live[1][a] || live[1][b]) {
+                                continue;
+                            }
+                            if redo >> j & 1 != 0 {
+                                scalar += 1;
+                                continue;
+                            }
+                            vector += 1;
+                            let q4 = |c: &[[f32; 8]; 2]| [c[0][a], c[0][b], c[1][a], c[1][b]];
+                            let q = cube_seamless::sample_quad(&p, faces, q4(&s), q4(&t), q4(&r));
+                            let got = [out[0][a], out[0][b], out[1][a], out[1][b]];
+                            for i in 0..4 {
+                                assert!(
+                                    q[i].iter().all(|v| v.is_finite()),
+                                    "a finite colour expected"
+                                );
+                                assert_eq!(
+                                    got[i].map(f32::to_bits),
+                                    q[i].map(f32::to_bits),
+                                    "n {n} srgb {srgb} {mip:?} bias {bias} pixel {i} s {:?} t {:?} r {:?}",
+                                    q4(&s),
+                                    q4(&t),
+                                    q4(&r)
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // the vectors took many quads (the small faces' quads mostly reach an edge, and
+        // the quads with special values always go to the scalar code)
+        assert!(vector > 10_000, "vector {vector} scalar {scalar}");
+    }
+}
