@@ -6,16 +6,18 @@
 //! alternating rounds, and prints the median ns per pixel of each and the time to lower
 //! and compile one state. Every candidate's bytes are compared first.
 
+use super::exec::Scratch;
 use super::exec::{compile_for, ChunkIn, Program};
 use super::kernels::lanes_avx2::Avx2;
 use super::kernels::Lanes;
 use super::lower::{lower_textured, TexturedState};
-use super::tests::{modulate_unit, run_engine, state, Case};
+use super::tests::{modulate_unit, run_prepared, state, Case, Prepared};
 use crate::cpu::Isa;
 use crate::fragment::span::{shade_chunk, ChunkColors, Fused, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::stats::Stats;
+use std::cell::RefCell;
 use std::time::Instant;
 
 /// Today's general textured path over the case, compiled for AVX2 and FMA as the
@@ -76,12 +78,11 @@ unsafe fn hand(c: &Case, plan: &FragPlan, fb: &mut Framebuffer) {
 /// # Safety
 /// The CPU has AVX2 and FMA; live lanes lie in the buffers.
 #[target_feature(enable = "avx2,fma")]
-unsafe fn ideal(c: &Case, texels: &[[u32; 8]], plan: &FragPlan, fb: &mut Framebuffer) {
+unsafe fn ideal(p: &Prepared, plan: &FragPlan, fb: &mut Framebuffer) {
     type V = Avx2<true>;
-    let planes = super::lower::planes_of(&c.t);
+    let (planes, texels, chunks) = (&p.planes, &p.texels, &p.chunks);
     let blend = plan.blend.expect("blend");
     let over = crate::fragment::simd::blend_is_over(&blend);
-    let chunks = c.chunk_ins();
     let (color, depth) = (fb.color.as_mut_ptr() as *mut u32, fb.depth.as_mut_ptr());
     let (clen, dlen) = (fb.color.len(), fb.depth.len());
     // SAFETY: AVX2 and FMA (this function's features); live lanes lie in the buffers.
@@ -194,11 +195,13 @@ fn race(title: &str, c: &Case, cands: &[Candidate<'_>], rounds: usize) {
     }
 }
 
-/// The engine candidate at `isa` with `batch` chunks per kernel call.
-fn engine<'a>(c: &'a Case, prog: &'a Program, batch: usize, name: &str) -> Candidate<'a> {
+/// The engine candidate with `batch` chunks per kernel call (inputs prepared and the
+/// register file allocated beforehand, as a draw would keep them).
+fn engine<'a>(p: &'a Prepared, prog: &'a Program, batch: usize, name: &str) -> Candidate<'a> {
+    let scratch = RefCell::new(Scratch::default());
     (
         format!("engine {name} batch {batch}"),
-        Box::new(move |fb| run_engine(c, prog, fb, batch)),
+        Box::new(move |fb| run_prepared(p, prog, fb, batch, &mut scratch.borrow_mut())),
     )
 }
 
@@ -222,7 +225,7 @@ fn prototype_measurements() {
             t
         })
         .collect();
-    let texels = c.packed_texels();
+    let prepared = c.prepared();
     for full in [false, true] {
         let plan = state(full, true, true);
         let ir = lower_textured(&TexturedState { plan, persp: true }).expect("lowered");
@@ -238,12 +241,11 @@ fn prototype_measurements() {
             ));
         }
         let plan_ref = &plan;
-        let tex_ref = &texels;
-        let c_ref = &c;
+        let prep_ref = &prepared;
         // SAFETY: AVX2 and FMA (asserted); the case's lanes lie in its buffers.
         cands.push((
             "JIT ceiling: straight-line AVX2".into(),
-            Box::new(move |fb| unsafe { ideal(c_ref, tex_ref, plan_ref, fb) }),
+            Box::new(move |fb| unsafe { ideal(prep_ref, plan_ref, fb) }),
         ));
         // SAFETY: AVX2 and FMA (asserted).
         cands.push((
@@ -251,9 +253,9 @@ fn prototype_measurements() {
             Box::new(|fb| unsafe { general(&c, &tx, &plan, fb) }),
         ));
         for batch in [1, 4, 8, 32] {
-            cands.push(engine(&c, &p, batch, "avx2fma"));
+            cands.push(engine(&prepared, &p, batch, "avx2fma"));
         }
-        cands.push(engine(&c, &pb, 8, "portable+fma"));
+        cands.push(engine(&prepared, &pb, 8, "portable+fma"));
         let title = if full {
             "MODULATE + linear fog + alpha test + depth LESS + over blend"
         } else {

@@ -316,7 +316,8 @@ mod body {
     pub(in super::super) unsafe fn load_color<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
         each!(c, k, {
             let live = V::ld_i(c.reg(0, k));
-            let p = c.color.add(c.chunk(k).idx);
+            // A chunk without live lanes may lie past the buffer: no access is made.
+            let p = c.color.wrapping_add(c.chunk(k).idx);
             V::st_i(c.reg(s.d, k), V::load_color(p, live))
         });
     }

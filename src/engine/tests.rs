@@ -225,24 +225,53 @@ pub(super) fn run_today<M: Madd, const PERSP: bool>(
     stats
 }
 
-/// The engine over the case's chunks at level `isa`, `batch` chunks per call.
+/// A case's engine inputs: planes, packed texels and chunks.
+pub(super) struct Prepared {
+    /// The triangle's planes.
+    pub planes: Vec<[f32; 3]>,
+    /// Packed texels, one 8-lane value per chunk.
+    pub texels: Vec<[u32; 8]>,
+    /// The chunks.
+    pub chunks: Vec<ChunkIn>,
+}
+
+impl Case {
+    /// The engine's inputs for this case.
+    pub fn prepared(&self) -> Prepared {
+        Prepared {
+            planes: planes_of(&self.t).to_vec(),
+            texels: self.packed_texels(),
+            chunks: self.chunk_ins(),
+        }
+    }
+}
+
+/// Runs `prog` over prepared inputs into `fb`, `batch` chunks per kernel call.
+pub(super) fn run_prepared(
+    p: &Prepared,
+    prog: &super::exec::Program,
+    fb: &mut Framebuffer,
+    batch: usize,
+    scratch: &mut Scratch,
+) {
+    let inputs: [&[[u32; 8]]; 1] = [&p.texels];
+    let mut io = Io {
+        planes: &p.planes,
+        inputs: &inputs,
+        color: &mut fb.color,
+        depth: &mut fb.depth,
+    };
+    prog.run(scratch, &mut io, &p.chunks, batch);
+}
+
+/// The engine over the case's chunks, `batch` chunks per kernel call.
 pub(super) fn run_engine(
     c: &Case,
     prog: &super::exec::Program,
     fb: &mut Framebuffer,
     batch: usize,
 ) {
-    let planes = planes_of(&c.t);
-    let texels = c.packed_texels();
-    let inputs: [&[[u32; 8]]; 1] = [&texels];
-    let chunks = c.chunk_ins();
-    let mut io = Io {
-        planes: &planes,
-        inputs: &inputs,
-        color: &mut fb.color,
-        depth: &mut fb.depth,
-    };
-    prog.run(&mut Scratch::default(), &mut io, &chunks, batch);
+    run_prepared(&c.prepared(), prog, fb, batch, &mut Scratch::default());
 }
 
 /// The levels this CPU can run, each with whether it fuses.
