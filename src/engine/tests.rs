@@ -354,30 +354,26 @@ fn matches_the_avx2_fast_path() {
             // SAFETY: AVX2 (and FMA when fused) detected; the plan is one `plan_ok`
             // accepts (no alpha test, stencil or logic op); live lanes lie in the row.
             unsafe {
+                // The row of the fused or unfused variant.
+                macro_rules! row {
+                    ($f:literal) => {
+                        tex_row::<$f, true, false, true, true, true>(
+                            &c.t,
+                            &plan,
+                            env,
+                            &mut target,
+                            y,
+                            x,
+                            &live,
+                            tex,
+                            &mut stats,
+                        )
+                    };
+                }
                 if isa.fused() {
-                    tex_row::<true, true, false, true, true, true>(
-                        &c.t,
-                        &plan,
-                        env,
-                        &mut target,
-                        y,
-                        x,
-                        &live,
-                        tex,
-                        &mut stats,
-                    )
+                    row!(true)
                 } else {
-                    tex_row::<false, true, false, true, true, true>(
-                        &c.t,
-                        &plan,
-                        env,
-                        &mut target,
-                        y,
-                        x,
-                        &live,
-                        tex,
-                        &mut stats,
-                    )
+                    row!(false)
                 }
             }
         }
