@@ -41,6 +41,7 @@
 #![deny(clippy::undocumented_unsafe_blocks)]
 
 pub mod context;
+pub mod engine;
 /// CPU detection at its first path: [`simd::cpu`].
 pub use simd::cpu;
 pub mod ffi;

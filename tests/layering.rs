@@ -5,7 +5,7 @@
 //! - `context` (the GL state machine): everything but `ffi`.
 //! - `plan` (state values → pipeline values, once per draw): the pipeline and the leaves,
 //!   never `context` or `ffi`.
-//! - the pipeline (`geometry`, `fixed_function`, `raster`, `fragment`, `texture`, `pixels`,
+//! - the pipeline (`engine`, `geometry`, `fixed_function`, `raster`, `fragment`, `texture`, `pixels`,
 //!   `framebuffer`, and `render`, which runs a plan through them): other pipeline modules
 //!   and the leaves, never `context`, `plan`, `ffi`
 //!   or `gl` (the pipeline never sees a GL token).
@@ -27,6 +27,7 @@ const FFI: &[&str] = &["ffi"];
 const STATE: &[&str] = &["context"];
 const PLAN: &[&str] = &["plan"];
 const PIPELINE: &[&str] = &[
+    "engine",
     "geometry",
     "fixed_function",
     "raster",

@@ -48,7 +48,7 @@ pub(super) unsafe fn sat(v: F32x8) -> F32x8 {
 
 /// `d FUNC q` as a lane mask, for unsigned values below 2^31.
 #[inline(always)]
-pub(super) unsafe fn depth_pass(func: CompareFunc, q: I32x8, d: I32x8) -> I32x8 {
+pub(crate) unsafe fn depth_pass(func: CompareFunc, q: I32x8, d: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let ones = I32x8::splat(-1);
@@ -131,7 +131,7 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
 /// AVX2 context; the passing lanes lie inside the buffer, and `avail` is the number of
 /// values from `ptr` to its end.
 #[inline(always)]
-pub(super) unsafe fn store_masked(ptr: *mut i32, avail: usize, pass: I32x8, v: I32x8) {
+pub(crate) unsafe fn store_masked(ptr: *mut i32, avail: usize, pass: I32x8, v: I32x8) {
     // SAFETY: forwarded from the caller; the plain load and store touch 8 values only
     // when `avail` says they are inside the buffer.
     unsafe {
@@ -181,7 +181,7 @@ pub fn blend_is_over(p: &BlendPlan) -> bool {
 /// The "over" blend of eight packed RGBA8 source pixels over eight destination pixels:
 /// [`blend8`] for a plan that [`blend_is_over`] accepts.
 #[inline(always)]
-pub(super) unsafe fn over8(px: I32x8, dst: I32x8) -> I32x8 {
+pub(crate) unsafe fn over8(px: I32x8, dst: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let z = I32x8::zero();
@@ -724,7 +724,7 @@ unsafe fn blend16(p: &BlendPlan, s: U16x16, d: U16x16, k: U16x16) -> U16x16 {
 /// Blends eight packed RGBA8 source pixels over eight destination pixels exactly as
 /// [`super::blend::blend`] does.
 #[inline(always)]
-pub(super) unsafe fn blend8(p: &BlendPlan, src: I32x8, dst: I32x8) -> I32x8 {
+pub(crate) unsafe fn blend8(p: &BlendPlan, src: I32x8, dst: I32x8) -> I32x8 {
     // SAFETY: AVX2 context (see `eval`).
     unsafe {
         let z = I32x8::zero();

@@ -1,0 +1,371 @@
+//! The stage executor: an [`Ir`] compiled into a list of [`Step`]s (a precompiled
+//! kernel and the register slots it reads and writes) and run over batches of 8-pixel
+//! chunks.
+//!
+//! Compiling is register allocation and a table look-up per operation: every SSA value
+//! gets a slot of a register file in L1 (a slot is freed after its last use; constants
+//! get slots of their own, filled once per [`Program::run`] by the prologue). Running
+//! calls each step's kernel once per batch; the kernel loops over the batch's chunks, so
+//! the indirect call is paid once per operation per batch, not per chunk.
+
+use super::ir::{Blend8, FCmp, Ir, Op};
+use super::kernels::{self, Kernel};
+use crate::cpu::Isa;
+use crate::pipe::CompareFunc;
+
+/// The most chunks one batch runs (a register slot holds one 8-lane value per chunk).
+pub const MAX_BATCH: usize = 32;
+
+/// One compiled operation: its kernel, destination slot, operand slots and immediate.
+#[derive(Clone, Copy)]
+pub struct Step {
+    /// The kernel.
+    pub(super) k: Kernel,
+    /// Destination slot (0 = the live mask for the fragment-interface operations).
+    pub(super) d: u16,
+    /// Operand slots.
+    pub(super) a: [u16; 4],
+    /// The operation's immediate (constant bits, plane, input, function code, ...).
+    pub(super) imm: u32,
+}
+
+/// One chunk of 8 pixels: its first pixel's index in the colour and depth buffers, its
+/// first pixel's x and its y as f32, and its live lanes (bit i = lane i).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChunkIn {
+    /// Index of lane 0 in the buffers.
+    pub idx: usize,
+    /// Pixel x of lane 0.
+    pub fx: f32,
+    /// Pixel y.
+    pub fy: f32,
+    /// Covered lanes.
+    pub live: u8,
+}
+
+/// What a run reads and writes besides its chunks.
+pub struct Io<'a> {
+    /// The planes [`Op::Interp`] evaluates: `[a0, dadx, dady]`.
+    pub planes: &'a [[f32; 3]],
+    /// The input streams [`Op::Input`] reads: one 8-lane value per chunk of the run.
+    pub inputs: &'a [&'a [[u32; 8]]],
+    /// The packed RGBA8 colour buffer.
+    pub color: &'a mut [[u8; 4]],
+    /// The depth buffer (may be empty when the program has no depth test).
+    pub depth: &'a mut [u32],
+}
+
+/// The state a kernel sees: the register file, the batch, and the run's buffers.
+pub struct Ctx<'a> {
+    regs: *mut [u32; 8],
+    stride: usize,
+    /// Chunks in this batch.
+    pub(super) n: usize,
+    /// Index of the batch's first chunk in the run (for the input streams).
+    pub(super) base: usize,
+    chunks: &'a [ChunkIn],
+    /// The run's planes.
+    pub(super) planes: &'a [[f32; 3]],
+    /// The run's input streams.
+    pub(super) inputs: &'a [&'a [[u32; 8]]],
+    /// The program's blend plans.
+    pub(super) blends: &'a [Blend8],
+    /// The colour buffer and its length.
+    pub(super) color: *mut u32,
+    pub(super) color_len: usize,
+    /// The depth buffer and its length.
+    pub(super) depth: *mut u32,
+    pub(super) depth_len: usize,
+}
+
+impl Ctx<'_> {
+    /// Slot `slot` of chunk `k` of the batch.
+    #[inline(always)]
+    pub(super) fn reg(&self, slot: u16, k: usize) -> *mut [u32; 8] {
+        // Slots times the stride stay inside the register file (`Program::run` sizes it).
+        self.regs.wrapping_add(slot as usize * self.stride + k)
+    }
+
+    /// Chunk `k` of the batch.
+    #[inline(always)]
+    pub(super) fn chunk(&self, k: usize) -> ChunkIn {
+        self.chunks[self.base + k]
+    }
+}
+
+/// The compare functions in the order of their codes in a step's immediate.
+const FUNCS: [CompareFunc; 8] = [
+    CompareFunc::Never,
+    CompareFunc::Less,
+    CompareFunc::Equal,
+    CompareFunc::LEqual,
+    CompareFunc::Greater,
+    CompareFunc::NotEqual,
+    CompareFunc::GEqual,
+    CompareFunc::Always,
+];
+
+/// The code of a compare function in a step's immediate.
+fn func_code(f: CompareFunc) -> u32 {
+    FUNCS.iter().position(|&g| g == f).unwrap_or(0) as u32
+}
+
+/// The compare function of a step's immediate ([`func_code`]'s inverse).
+#[inline(always)]
+pub(super) fn func_of(code: u32) -> CompareFunc {
+    FUNCS[code as usize & 7]
+}
+
+/// A compiled program: prologue (constants), body, the slot count, and the blend plans
+/// its steps name.
+#[derive(Clone)]
+pub struct Program {
+    prologue: Vec<Step>,
+    body: Vec<Step>,
+    slots: usize,
+    blends: Vec<Blend8>,
+    planes: usize,
+    inputs: usize,
+    depth: bool,
+}
+
+/// Whether code for `want` may run where [`crate::cpu::isa`] reports `have`.
+pub fn isa_allowed(want: Isa, have: Isa) -> bool {
+    want == have
+        || want == Isa::Base
+        || (have == Isa::Avx2Fma && matches!(want, Isa::Avx2 | Isa::Fma))
+}
+
+/// Compiles `ir` for the detected instruction-set level.
+pub fn compile(ir: &Ir) -> Program {
+    compile_for(ir, crate::cpu::isa())
+}
+
+/// Compiles `ir` for level `isa`.
+///
+/// # Panics
+/// When `isa` is not allowed on this CPU ([`isa_allowed`]), or the program needs more
+/// than `u16::MAX` slots.
+pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
+    assert!(isa_allowed(isa, crate::cpu::isa()), "{isa:?} on this CPU");
+    let t = kernels::table(isa);
+    let n = ir.ops.len();
+    let mut last = vec![usize::MAX; n];
+    for (i, op) in ir.ops.iter().enumerate() {
+        for v in op.operands() {
+            last[v.0 as usize] = i;
+        }
+    }
+    let mut slot = vec![0u16; n];
+    let mut free: Vec<u16> = Vec::new();
+    let mut next = 1u16; // slot 0 is the live mask
+    let mut p = Program {
+        prologue: Vec::new(),
+        body: Vec::new(),
+        slots: 0,
+        blends: Vec::new(),
+        planes: 0,
+        inputs: 0,
+        depth: false,
+    };
+    for (i, op) in ir.ops.iter().enumerate() {
+        let ops = op.operands();
+        let a = {
+            let mut a = [0u16; 4];
+            for (k, v) in ops.iter().enumerate() {
+                a[k] = slot[v.0 as usize];
+            }
+            a
+        };
+        if let Op::Const(_, bits) = *op {
+            slot[i] = next;
+            next += 1;
+            let step = Step {
+                k: t.constant,
+                d: slot[i],
+                a,
+                imm: bits,
+            };
+            p.prologue.push(step);
+            continue;
+        }
+        // Operands whose last use this is give their slots back first: a kernel reads a
+        // chunk's operands before it writes that chunk's result.
+        for v in &ops {
+            let vi = v.0 as usize;
+            let is_const = matches!(ir.ops[vi], Op::Const(..));
+            if last[vi] == i && !is_const && !free.contains(&slot[vi]) {
+                free.push(slot[vi]);
+            }
+        }
+        let defines = ir.types[i].is_some();
+        let d = if defines {
+            let s = free.pop().unwrap_or_else(|| {
+                next += 1;
+                next - 1
+            });
+            slot[i] = s;
+            s
+        } else {
+            0
+        };
+        let (k, imm): (Kernel, u32) = match *op {
+            Op::Const(..) => unreachable!("handled above"),
+            Op::FragX => (t.frag_x, 0),
+            Op::FragY => (t.frag_y, 0),
+            Op::Interp(n) => {
+                p.planes = p.planes.max(n as usize + 1);
+                (t.interp, n as u32)
+            }
+            Op::Input(n) => {
+                p.inputs = p.inputs.max(n as usize + 1);
+                (t.input, n as u32)
+            }
+            Op::Add(..) => (t.add, 0),
+            Op::Sub(..) => (t.sub, 0),
+            Op::Mul(..) => (t.mul, 0),
+            Op::Div(..) => (t.div, 0),
+            Op::Min(..) => (t.min, 0),
+            Op::Max(..) => (t.max, 0),
+            Op::Mad(..) => (t.mad, 0),
+            Op::Sat(_) => (t.sat, 0),
+            Op::CvtRne(_) => (t.cvt, 0),
+            Op::Bits(_) => (t.bits, 0),
+            Op::FCmp(c, ..) => {
+                let code = [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge]
+                    .iter()
+                    .position(|&x| x == c)
+                    .unwrap_or(0);
+                (t.fcmp, code as u32)
+            }
+            Op::ICmp(f, ..) => (t.icmp, func_code(f)),
+            Op::Byte(_, b) => (t.byte, b as u32),
+            Op::UnpackUnorm8(_, b) => (t.unpack, b as u32),
+            Op::PackUnorm8(_) => (t.pack, 0),
+            Op::Select(..) => (t.select, 0),
+            Op::Kill(_) => (t.kill, 0),
+            Op::DepthTest { func, write, .. } => {
+                p.depth = true;
+                (t.depth, func_code(func) | (write as u32) << 8)
+            }
+            Op::LoadColor => (t.load_color, 0),
+            Op::Blend(b, ..) => {
+                let over = cfg!(target_arch = "x86_64") && is_over(&b);
+                p.blends.push(b);
+                (t.blend, (p.blends.len() - 1) as u32 | (over as u32) << 16)
+            }
+            Op::StoreColor(_) => (t.store_color, 0),
+        };
+        p.body.push(Step { k, d, a, imm });
+        if defines && last[i] == usize::MAX {
+            free.push(d);
+        }
+    }
+    p.slots = next as usize;
+    p
+}
+
+/// Whether `b` is the "over" blend the AVX2 backend has a dedicated kernel for.
+fn is_over(b: &Blend8) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::fragment::simd::blend_is_over(b)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = b;
+        false
+    }
+}
+
+/// The register file a program runs in, reused from run to run.
+#[derive(Default)]
+pub struct Scratch {
+    regs: Vec<[u32; 8]>,
+}
+
+impl Program {
+    /// The number of steps (prologue and body).
+    pub fn len(&self) -> usize {
+        self.prologue.len() + self.body.len()
+    }
+
+    /// Whether the program has no steps.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The register slots it needs per chunk.
+    pub fn slots(&self) -> usize {
+        self.slots
+    }
+
+    /// Runs the program over `chunks`, `batch` chunks (at most [`MAX_BATCH`]) per kernel
+    /// call.
+    ///
+    /// # Panics
+    /// When a chunk's live lanes lie outside the colour buffer (or the depth buffer, when
+    /// the program tests depth), when an input stream is shorter than `chunks`, or when
+    /// the program names a plane or an input that `io` lacks.
+    pub fn run(&self, scratch: &mut Scratch, io: &mut Io<'_>, chunks: &[ChunkIn], batch: usize) {
+        let stride = batch.clamp(1, MAX_BATCH);
+        assert!(io.planes.len() >= self.planes && io.inputs.len() >= self.inputs);
+        assert!(io.inputs.iter().all(|s| s.len() >= chunks.len()));
+        for c in chunks {
+            let end = c.idx + (8 - c.live.leading_zeros() as usize);
+            assert!(
+                c.live == 0 || end <= io.color.len(),
+                "chunk outside the colour buffer"
+            );
+            assert!(c.live == 0 || io.depth.is_empty() || end <= io.depth.len());
+        }
+        if self.depth {
+            assert!(chunks.iter().all(|c| c.live == 0 || !io.depth.is_empty()));
+        }
+        let need = self.slots * stride;
+        if scratch.regs.len() < need {
+            scratch.regs.resize(need, [0; 8]);
+        }
+        let mut ctx = Ctx {
+            regs: scratch.regs.as_mut_ptr(),
+            stride,
+            n: stride,
+            base: 0,
+            chunks,
+            planes: io.planes,
+            inputs: io.inputs,
+            blends: &self.blends,
+            color: io.color.as_mut_ptr() as *mut u32,
+            color_len: io.color.len(),
+            depth: io.depth.as_mut_ptr(),
+            depth_len: io.depth.len(),
+        };
+        // SAFETY: the steps' slots are below `self.slots` (compile) and the register file
+        // holds `slots * stride` values; the chunks' live lanes lie in the buffers
+        // (checked above); the kernels were chosen for a level this CPU has (compile).
+        unsafe {
+            for s in &self.prologue {
+                (s.k)(&mut ctx, s);
+            }
+            let mut base = 0;
+            while base < chunks.len() {
+                let n = stride.min(chunks.len() - base);
+                ctx.n = n;
+                ctx.base = base;
+                for k in 0..n {
+                    *ctx.reg(0, k) = live_lanes(chunks[base + k].live);
+                }
+                for s in &self.body {
+                    (s.k)(&mut ctx, s);
+                }
+                base += n;
+            }
+        }
+    }
+}
+
+/// The lane mask of 8 live bits.
+#[inline(always)]
+fn live_lanes(bits: u8) -> [u32; 8] {
+    std::array::from_fn(|i| 0u32.wrapping_sub((bits >> i & 1) as u32))
+}

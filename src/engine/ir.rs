@@ -1,0 +1,322 @@
+//! The engine's IR: a typed SSA list of operations on 8-lane values (one lane per
+//! fragment), built with [`Builder`].
+//!
+//! Every value is a vector of lanes of one [`Ty`]; a uniform (a per-draw constant) is a
+//! [`Op::Const`], which the executor materialises once per run instead of once per chunk.
+//! Each operation's arithmetic is defined as llvmpipe's, so that a program lowered from a
+//! fixed-function state computes today's bytes:
+//! - [`Op::Mad`] is `fmuladd`: fused exactly on the instruction-set levels that fuse
+//!   (README "Instruction sets"); [`Op::Mul`] followed by [`Op::Add`] never fuses.
+//! - [`Op::Interp`] is the plane evaluation `fmuladd(dady, y, fmuladd(dadx, x, a0))` at
+//!   the pixel's integer coordinates.
+//! - [`Op::Min`] and [`Op::Max`] are `minps`/`maxps` (the second operand when either is
+//!   NaN), [`Op::Sat`] is `min(max(v, 0), 1)` (NaN → 0), [`Op::CvtRne`] is `cvtps2dq`
+//!   under the default rounding (half to even; out of range → `i32::MIN`).
+//! - [`Op::UnpackUnorm8`] is `u8 · f32(1/255)`; [`Op::PackUnorm8`] is, per channel,
+//!   `cvtps2dq(sat(c) · 255)`, packed R in the low byte.
+//! - The fragment interface: [`Op::Kill`] clears lanes, [`Op::DepthTest`] compares a
+//!   quantised depth with the buffer's (and writes it where it passes), [`Op::LoadColor`],
+//!   [`Op::Blend`] (8-bit fixed point, docs/llvmpipe-rules.md) and [`Op::StoreColor`].
+
+use crate::pipe::{BlendState, CompareFunc};
+
+/// The type of a value's lanes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Ty {
+    /// 32-bit floats.
+    F32,
+    /// 32-bit integers (also packed RGBA8 colours and quantised depths).
+    I32,
+    /// Lane masks: all ones (true) or all zeros.
+    Mask,
+}
+
+/// An SSA value: the index of the operation that defines it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Val(pub u16);
+
+/// A float comparison (ordered: false when either lane is NaN).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FCmp {
+    /// `a < b`.
+    Lt,
+    /// `a <= b`.
+    Le,
+    /// `a > b`.
+    Gt,
+    /// `a >= b`.
+    Ge,
+}
+
+/// The blend state of an [`Op::Blend`] in 8-bit terms (factors, equations, constant).
+pub type Blend8 = BlendState<[u8; 4]>;
+
+/// One operation; operands are earlier values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Op {
+    /// A per-draw constant in every lane (f32 bits for [`Ty::F32`]).
+    Const(Ty, u32),
+    /// The pixel's x as f32.
+    FragX,
+    /// The pixel's y as f32.
+    FragY,
+    /// Plane `n` of the run's planes evaluated at the pixel (see the module doc).
+    Interp(u16),
+    /// Input stream `n` of the run (one packed value per lane, e.g. RGBA8 texels).
+    Input(u16),
+    /// `a + b`.
+    Add(Val, Val),
+    /// `a - b`.
+    Sub(Val, Val),
+    /// `a * b`.
+    Mul(Val, Val),
+    /// `a / b` (correctly rounded).
+    Div(Val, Val),
+    /// `minps(a, b)`.
+    Min(Val, Val),
+    /// `maxps(a, b)`.
+    Max(Val, Val),
+    /// `fmuladd(a, b, c)`: `a * b + c`, fused on fusing levels.
+    Mad(Val, Val, Val),
+    /// Clamp to [0, 1], NaN → 0.
+    Sat(Val),
+    /// f32 → i32, rounding half to even.
+    CvtRne(Val),
+    /// The bits of an f32 value as an i32 value.
+    Bits(Val),
+    /// Float comparison.
+    FCmp(FCmp, Val, Val),
+    /// Integer comparison `a FUNC b` for values in `0..2^31` (GL's compare functions).
+    ICmp(CompareFunc, Val, Val),
+    /// Byte `n` (0 = lowest) of a packed value, as an integer.
+    Byte(Val, u8),
+    /// Byte `n` of a packed RGBA8 value as `u8 · f32(1/255)`.
+    UnpackUnorm8(Val, u8),
+    /// Four channels (R, G, B, A) converted to unorm8 and packed.
+    PackUnorm8([Val; 4]),
+    /// Per lane `a` where the mask is set, else `b` (both of the same type).
+    Select(Val, Val, Val),
+    /// Clears the live lanes where the mask is false (the alpha test, discard).
+    Kill(Val),
+    /// The depth test of a quantised depth against the buffer: clears the lanes that
+    /// fail and, with `write`, stores the depth where it passes.
+    DepthTest {
+        /// The compare function (incoming FUNC stored).
+        func: CompareFunc,
+        /// glDepthMask.
+        write: bool,
+        /// The quantised depth.
+        z: Val,
+    },
+    /// The colour buffer's packed RGBA8 values at the live lanes.
+    LoadColor,
+    /// 8-bit blending of a packed source with a packed destination.
+    Blend(Blend8, Val, Val),
+    /// Writes a packed colour to the live lanes.
+    StoreColor(Val),
+}
+
+impl Op {
+    /// The operands, in order.
+    pub fn operands(&self) -> Vec<Val> {
+        match *self {
+            Op::Const(..) | Op::FragX | Op::FragY | Op::Interp(_) | Op::Input(_) => vec![],
+            Op::LoadColor => vec![],
+            Op::Add(a, b)
+            | Op::Sub(a, b)
+            | Op::Mul(a, b)
+            | Op::Div(a, b)
+            | Op::Min(a, b)
+            | Op::Max(a, b)
+            | Op::FCmp(_, a, b)
+            | Op::ICmp(_, a, b)
+            | Op::Blend(_, a, b) => vec![a, b],
+            Op::Mad(a, b, c) | Op::Select(a, b, c) => vec![a, b, c],
+            Op::Sat(a) | Op::CvtRne(a) | Op::Bits(a) | Op::Byte(a, _) | Op::UnpackUnorm8(a, _) => {
+                vec![a]
+            }
+            Op::Kill(a) | Op::StoreColor(a) | Op::DepthTest { z: a, .. } => vec![a],
+            Op::PackUnorm8(v) => v.to_vec(),
+        }
+    }
+}
+
+/// A type error found while building: the operation's index and what was wrong.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TypeError {
+    /// Index of the offending operation.
+    pub at: usize,
+    /// What was expected.
+    pub what: &'static str,
+}
+
+/// A built program: operations in order, each value's type.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Ir {
+    /// The operations; value `i` is defined by `ops[i]`.
+    pub ops: Vec<Op>,
+    /// The type of each value (`None` for operations that define none).
+    pub types: Vec<Option<Ty>>,
+}
+
+/// Builds an [`Ir`], checking types as it goes (the first error is kept and returned by
+/// [`Builder::finish`]).
+#[derive(Default)]
+pub struct Builder {
+    ir: Ir,
+    error: Option<TypeError>,
+}
+
+impl Builder {
+    /// An empty program.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The type of `v`, if it defines a value.
+    pub fn ty(&self, v: Val) -> Option<Ty> {
+        self.ir.types.get(v.0 as usize).copied().flatten()
+    }
+
+    /// Appends `op` after checking its operand types; returns its value.
+    pub fn push(&mut self, op: Op) -> Val {
+        let at = self.ir.ops.len();
+        let result = self.check(&op);
+        let ty = match result {
+            Ok(t) => t,
+            Err(what) => {
+                self.error.get_or_insert(TypeError { at, what });
+                None
+            }
+        };
+        self.ir.ops.push(op);
+        self.ir.types.push(ty);
+        Val(at as u16)
+    }
+
+    /// The result type of `op`, or what is wrong with its operands.
+    fn check(&self, op: &Op) -> Result<Option<Ty>, &'static str> {
+        use Ty::*;
+        let t = |v: Val| self.ty(v);
+        let want = |v: Val, ty: Ty, what: &'static str| {
+            if t(v) == Some(ty) {
+                Ok(())
+            } else {
+                Err(what)
+            }
+        };
+        Ok(Some(match *op {
+            Op::Const(ty, _) => ty,
+            Op::FragX | Op::FragY | Op::Interp(_) => F32,
+            Op::Input(_) | Op::LoadColor => I32,
+            Op::Add(a, b)
+            | Op::Sub(a, b)
+            | Op::Mul(a, b)
+            | Op::Div(a, b)
+            | Op::Min(a, b)
+            | Op::Max(a, b) => {
+                want(a, F32, "f32 operand")?;
+                want(b, F32, "f32 operand")?;
+                F32
+            }
+            Op::Mad(a, b, c) => {
+                for v in [a, b, c] {
+                    want(v, F32, "f32 operand")?;
+                }
+                F32
+            }
+            Op::Sat(a) => {
+                want(a, F32, "f32 operand")?;
+                F32
+            }
+            Op::CvtRne(a) | Op::Bits(a) => {
+                want(a, F32, "f32 operand")?;
+                I32
+            }
+            Op::FCmp(_, a, b) => {
+                want(a, F32, "f32 operand")?;
+                want(b, F32, "f32 operand")?;
+                Mask
+            }
+            Op::ICmp(_, a, b) => {
+                want(a, I32, "i32 operand")?;
+                want(b, I32, "i32 operand")?;
+                Mask
+            }
+            Op::Byte(a, n) | Op::UnpackUnorm8(a, n) => {
+                want(a, I32, "packed operand")?;
+                if n > 3 {
+                    return Err("byte index 0..=3");
+                }
+                if matches!(op, Op::Byte(..)) {
+                    I32
+                } else {
+                    F32
+                }
+            }
+            Op::PackUnorm8(v) => {
+                for c in v {
+                    want(c, F32, "f32 channel")?;
+                }
+                I32
+            }
+            Op::Select(m, a, b) => {
+                want(m, Mask, "mask selector")?;
+                if t(a).is_none() || t(a) != t(b) {
+                    return Err("select operands of one type");
+                }
+                return Ok(t(a));
+            }
+            Op::Kill(m) => {
+                want(m, Mask, "mask operand")?;
+                return Ok(None);
+            }
+            Op::DepthTest { z, .. } => {
+                want(z, I32, "quantised depth")?;
+                return Ok(None);
+            }
+            Op::Blend(_, s, d) => {
+                want(s, I32, "packed source")?;
+                want(d, I32, "packed destination")?;
+                I32
+            }
+            Op::StoreColor(c) => {
+                want(c, I32, "packed colour")?;
+                return Ok(None);
+            }
+        }))
+    }
+
+    /// The program, or the first type error.
+    pub fn finish(self) -> Result<Ir, TypeError> {
+        match self.error {
+            Some(e) => Err(e),
+            None => Ok(self.ir),
+        }
+    }
+
+    /// An f32 constant.
+    pub fn f32(&mut self, v: f32) -> Val {
+        self.push(Op::Const(Ty::F32, v.to_bits()))
+    }
+
+    /// An i32 constant.
+    pub fn i32(&mut self, v: i32) -> Val {
+        self.push(Op::Const(Ty::I32, v as u32))
+    }
+
+    /// `a * b`.
+    pub fn mul(&mut self, a: Val, b: Val) -> Val {
+        self.push(Op::Mul(a, b))
+    }
+
+    /// `a + b`.
+    pub fn add(&mut self, a: Val, b: Val) -> Val {
+        self.push(Op::Add(a, b))
+    }
+
+    /// `a - b`.
+    pub fn sub(&mut self, a: Val, b: Val) -> Val {
+        self.push(Op::Sub(a, b))
+    }
+}

@@ -1,0 +1,441 @@
+//! The executor's precompiled kernels: one function per operation kind and
+//! instruction-set level, each running its operation over every chunk of a batch.
+//!
+//! A kernel body is written once, generic over a [`Lanes`] backend (8 lanes in an AVX2
+//! register, or an array of 8 for the portable levels), and instantiated per level by
+//! [`level!`] as a `#[target_feature]` function, so that it compiles to that level's
+//! instructions and fuses `fmuladd` exactly where the level fuses. A [`Table`] holds one
+//! level's function pointers; [`super::exec`] picks one per operation at compile time.
+
+use super::exec::{Ctx, Step};
+use super::ir::FCmp;
+use crate::pipe::CompareFunc;
+
+#[cfg(target_arch = "x86_64")]
+pub(super) mod lanes_avx2;
+mod lanes_portable;
+
+/// A kernel: runs step `s` over the batch in `c`.
+pub(super) type Kernel = unsafe fn(&mut Ctx<'_>, &Step);
+
+/// Eight lanes of one backend: how a kernel loads, computes and stores.
+///
+/// # Safety
+/// The AVX2 backend's methods may only run on a CPU with AVX2 (and FMA when fused); the
+/// kernels that use it are compiled with those features and chosen only on such CPUs.
+pub(super) trait Lanes {
+    /// Eight f32.
+    type F: Copy;
+    /// Eight i32 (also masks).
+    type I: Copy;
+    /// Loads eight f32.
+    unsafe fn ld_f(p: *const [u32; 8]) -> Self::F;
+    /// Stores eight f32.
+    unsafe fn st_f(p: *mut [u32; 8], v: Self::F);
+    /// Loads eight i32.
+    unsafe fn ld_i(p: *const [u32; 8]) -> Self::I;
+    /// Stores eight i32.
+    unsafe fn st_i(p: *mut [u32; 8], v: Self::I);
+    /// Every lane `v`.
+    unsafe fn splat_i(v: i32) -> Self::I;
+    /// `x + lane` for lanes 0..8.
+    unsafe fn lane_x(x: f32) -> Self::F;
+    /// Every lane `y`.
+    unsafe fn splat_f(y: f32) -> Self::F;
+    /// `a + b`.
+    fn add(a: Self::F, b: Self::F) -> Self::F;
+    /// `a - b`.
+    fn sub(a: Self::F, b: Self::F) -> Self::F;
+    /// `a * b`.
+    fn mul(a: Self::F, b: Self::F) -> Self::F;
+    /// `a / b`.
+    fn div(a: Self::F, b: Self::F) -> Self::F;
+    /// `minps`.
+    fn min(a: Self::F, b: Self::F) -> Self::F;
+    /// `maxps`.
+    fn max(a: Self::F, b: Self::F) -> Self::F;
+    /// `fmuladd(a, b, c)` at this level.
+    unsafe fn mad(a: Self::F, b: Self::F, c: Self::F) -> Self::F;
+    /// `cvtps2dq`.
+    fn cvt(a: Self::F) -> Self::I;
+    /// `cvtdq2ps`.
+    fn itof(a: Self::I) -> Self::F;
+    /// A float comparison as a mask.
+    fn fcmp(op: FCmp, a: Self::F, b: Self::F) -> Self::I;
+    /// `a FUNC b` as a mask, for values in `0..2^31`.
+    unsafe fn icmp(func: CompareFunc, a: Self::I, b: Self::I) -> Self::I;
+    /// `a & b`.
+    fn and(a: Self::I, b: Self::I) -> Self::I;
+    /// `a | b`.
+    fn or(a: Self::I, b: Self::I) -> Self::I;
+    /// Logical shift right of every lane by `n`.
+    unsafe fn shr(a: Self::I, n: u32) -> Self::I;
+    /// Shift left of every lane by `n`.
+    unsafe fn shl(a: Self::I, n: u32) -> Self::I;
+    /// Per lane `a` where `m` is set, else `b`.
+    fn select(m: Self::I, a: Self::I, b: Self::I) -> Self::I;
+    /// Whether any lane of the mask is set.
+    fn any(m: Self::I) -> bool;
+    /// The depth test at `p` (of which `avail` values lie in the buffer): returns the
+    /// live lanes that pass, storing `q` there when `write`.
+    unsafe fn depth(
+        func: CompareFunc,
+        write: bool,
+        q: Self::I,
+        live: Self::I,
+        p: *mut u32,
+        avail: usize,
+    ) -> Self::I;
+    /// The packed colours at `p` in the live lanes (others undefined).
+    unsafe fn load_color(p: *const u32, live: Self::I) -> Self::I;
+    /// Stores `v` at `p` in the live lanes.
+    unsafe fn store_color(p: *mut u32, avail: usize, live: Self::I, v: Self::I);
+    /// 8-bit blending of `s` over `d` (`over`: the plan is SRC_ALPHA/ONE_MINUS_SRC_ALPHA).
+    unsafe fn blend(plan: &super::ir::Blend8, over: bool, s: Self::I, d: Self::I) -> Self::I;
+}
+
+/// The generic kernel bodies, one per operation kind.
+mod body {
+    use super::*;
+
+    /// Defines a binary f32 kernel over [`Lanes::$m`].
+    macro_rules! bin_f {
+        ($($name:ident => $m:ident;)*) => {$(
+            #[inline(always)]
+            pub(in super::super) unsafe fn $name<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+                // SAFETY: the step's slots lie in the register file (compile), the
+                // backend's features are the caller's (the level's target features).
+                unsafe {
+                    for k in 0..c.n {
+                        let a = V::ld_f(c.reg(s.a[0], k));
+                        let b = V::ld_f(c.reg(s.a[1], k));
+                        V::st_f(c.reg(s.d, k), V::$m(a, b));
+                    }
+                }
+            }
+        )*};
+    }
+
+    bin_f! {
+        add => add;
+        sub => sub;
+        mul => mul;
+        div => div;
+        min => min;
+        max => max;
+    }
+
+    /// The safety argument shared by the kernels below: every slot a step names lies in
+    /// the register file ([`super::super::exec::compile`]), every chunk's live lanes lie
+    /// in the buffers ([`super::super::exec::Program::run`] checks), and the kernel runs
+    /// compiled with its backend's features.
+    macro_rules! each {
+        ($c:ident, $k:ident, $body:block) => {
+            // SAFETY: see `each!`'s doc.
+            unsafe {
+                for $k in 0..$c.n $body
+            }
+        };
+    }
+
+    /// A constant in every lane of every chunk slot of the batch.
+    #[inline(always)]
+    pub(in super::super) unsafe fn constant<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { V::st_i(c.reg(s.d, k), V::splat_i(s.imm as i32)) });
+    }
+
+    /// The pixels' x.
+    #[inline(always)]
+    pub(in super::super) unsafe fn frag_x<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { V::st_f(c.reg(s.d, k), V::lane_x(c.chunk(k).fx)) });
+    }
+
+    /// The pixels' y.
+    #[inline(always)]
+    pub(in super::super) unsafe fn frag_y<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { V::st_f(c.reg(s.d, k), V::splat_f(c.chunk(k).fy)) });
+    }
+
+    /// A plane at the pixels: `fmuladd(dady, y, fmuladd(dadx, x, a0))`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn interp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let [a0, dx, dy] = c.planes[s.imm as usize];
+        // SAFETY: the kernel runs with its backend's features.
+        let (a0, dx, dy) = unsafe { (V::splat_f(a0), V::splat_f(dx), V::splat_f(dy)) };
+        each!(c, k, {
+            let ch = c.chunk(k);
+            let v = V::mad(dy, V::splat_f(ch.fy), V::mad(dx, V::lane_x(ch.fx), a0));
+            V::st_f(c.reg(s.d, k), v)
+        });
+    }
+
+    /// Input stream `imm`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn input<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let src = c.inputs[s.imm as usize];
+        each!(c, k, {
+            let p = src.as_ptr().add(c.base + k);
+            V::st_i(c.reg(s.d, k), V::ld_i(p))
+        });
+    }
+
+    /// `fmuladd`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn mad<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::ld_f(c.reg(s.a[0], k));
+            let b = V::ld_f(c.reg(s.a[1], k));
+            let d = V::ld_f(c.reg(s.a[2], k));
+            V::st_f(c.reg(s.d, k), V::mad(a, b, d))
+        });
+    }
+
+    /// Clamp to [0, 1], NaN → 0.
+    #[inline(always)]
+    pub(in super::super) unsafe fn sat<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::ld_f(c.reg(s.a[0], k));
+            let v = V::min(V::max(a, V::splat_f(0.0)), V::splat_f(1.0));
+            V::st_f(c.reg(s.d, k), v)
+        });
+    }
+
+    /// `cvtps2dq`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn cvt<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            V::st_i(c.reg(s.d, k), V::cvt(V::ld_f(c.reg(s.a[0], k))))
+        });
+    }
+
+    /// The bits of an f32 value.
+    #[inline(always)]
+    pub(in super::super) unsafe fn bits<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { V::st_i(c.reg(s.d, k), V::ld_i(c.reg(s.a[0], k))) });
+    }
+
+    /// Float comparison `imm` ([`FCmp`] in order Lt, Le, Gt, Ge).
+    #[inline(always)]
+    pub(in super::super) unsafe fn fcmp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let op = [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge][s.imm as usize];
+        each!(c, k, {
+            let a = V::ld_f(c.reg(s.a[0], k));
+            let b = V::ld_f(c.reg(s.a[1], k));
+            V::st_i(c.reg(s.d, k), V::fcmp(op, a, b))
+        });
+    }
+
+    /// Integer comparison with the function in `imm` ([`super::super::exec::func_of`]).
+    #[inline(always)]
+    pub(in super::super) unsafe fn icmp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let func = super::super::exec::func_of(s.imm);
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            let b = V::ld_i(c.reg(s.a[1], k));
+            V::st_i(c.reg(s.d, k), V::icmp(func, a, b))
+        });
+    }
+
+    /// Byte `imm` as an integer.
+    #[inline(always)]
+    pub(in super::super) unsafe fn byte<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::shr(V::ld_i(c.reg(s.a[0], k)), 8 * s.imm);
+            V::st_i(c.reg(s.d, k), V::and(a, V::splat_i(255)))
+        });
+    }
+
+    /// Byte `imm` as `u8 · f32(1/255)`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn unpack<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        // SAFETY: the kernel runs with its backend's features.
+        let inv = unsafe { V::splat_f(crate::texture::sample::INV_255) };
+        each!(c, k, {
+            let a = V::shr(V::ld_i(c.reg(s.a[0], k)), 8 * s.imm);
+            let f = V::itof(V::and(a, V::splat_i(255)));
+            V::st_f(c.reg(s.d, k), V::mul(f, inv))
+        });
+    }
+
+    /// Four channels to unorm8, packed.
+    #[inline(always)]
+    pub(in super::super) unsafe fn pack<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        // SAFETY: the kernel runs with its backend's features.
+        let (zero, one, scale) = unsafe { (V::splat_f(0.0), V::splat_f(1.0), V::splat_f(255.0)) };
+        each!(c, k, {
+            let mut acc = V::splat_i(0);
+            for ch in 0..4 {
+                let v = V::ld_f(c.reg(s.a[ch], k));
+                let u = V::cvt(V::mul(V::min(V::max(v, zero), one), scale));
+                acc = V::or(acc, V::shl(u, 8 * ch as u32));
+            }
+            V::st_i(c.reg(s.d, k), acc)
+        });
+    }
+
+    /// Select.
+    #[inline(always)]
+    pub(in super::super) unsafe fn select<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let m = V::ld_i(c.reg(s.a[0], k));
+            let a = V::ld_i(c.reg(s.a[1], k));
+            let b = V::ld_i(c.reg(s.a[2], k));
+            V::st_i(c.reg(s.d, k), V::select(m, a, b))
+        });
+    }
+
+    /// Clears the live lanes the mask leaves out.
+    #[inline(always)]
+    pub(in super::super) unsafe fn kill<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let live = V::ld_i(c.reg(0, k));
+            V::st_i(c.reg(0, k), V::and(live, V::ld_i(c.reg(s.a[0], k))))
+        });
+    }
+
+    /// The depth test (`imm`: function code, bit 8 = write).
+    #[inline(always)]
+    pub(in super::super) unsafe fn depth<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let func = super::super::exec::func_of(s.imm & 0xFF);
+        let write = s.imm & 0x100 != 0;
+        each!(c, k, {
+            let live = V::ld_i(c.reg(0, k));
+            if !V::any(live) {
+                continue;
+            }
+            let idx = c.chunk(k).idx;
+            let q = V::ld_i(c.reg(s.a[0], k));
+            let p = c.depth.add(idx);
+            let pass = V::depth(func, write, q, live, p, c.depth_len - idx);
+            V::st_i(c.reg(0, k), pass)
+        });
+    }
+
+    /// The colour buffer at the live lanes.
+    #[inline(always)]
+    pub(in super::super) unsafe fn load_color<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let live = V::ld_i(c.reg(0, k));
+            // A chunk without live lanes may lie past the buffer: no access is made.
+            let p = c.color.wrapping_add(c.chunk(k).idx);
+            V::st_i(c.reg(s.d, k), V::load_color(p, live))
+        });
+    }
+
+    /// Blending with plan `imm` (bit 16: the plan is "over").
+    #[inline(always)]
+    pub(in super::super) unsafe fn blend<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let plan = c.blends[(s.imm & 0xFFFF) as usize];
+        let over = s.imm & 0x1_0000 != 0;
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            let b = V::ld_i(c.reg(s.a[1], k));
+            V::st_i(c.reg(s.d, k), V::blend(&plan, over, a, b))
+        });
+    }
+
+    /// Writes the live lanes.
+    #[inline(always)]
+    pub(in super::super) unsafe fn store_color<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let live = V::ld_i(c.reg(0, k));
+            if !V::any(live) {
+                continue;
+            }
+            let idx = c.chunk(k).idx;
+            let v = V::ld_i(c.reg(s.a[0], k));
+            V::store_color(c.color.add(idx), c.color_len - idx, live, v)
+        });
+    }
+}
+
+/// Calls `$cb!` with the kernel names after the tokens `$pre`: the list behind
+/// [`Table`] and every level's module.
+macro_rules! kernel_list {
+    ($cb:ident!($($pre:tt)*)) => {
+        $cb!($($pre)* constant, frag_x, frag_y, interp, input, add, sub, mul, div, min, max,
+            mad, sat, cvt, bits, fcmp, icmp, byte, unpack, pack, select, kill, depth, load_color,
+            blend, store_color);
+    };
+}
+
+/// Declares [`Table`] from the kernel list.
+macro_rules! table_type {
+    ($($k:ident),*) => {
+        /// One level's kernels, a field per operation kind.
+        #[derive(Clone, Copy)]
+        pub(super) struct Table {
+            $(
+                #[doc = concat!("The `", stringify!($k), "` kernel.")]
+                pub $k: Kernel,
+            )*
+        }
+    };
+}
+kernel_list!(table_type!());
+
+/// One kernel of a level: the generic body compiled with the level's features.
+macro_rules! one_kernel {
+    ($v:ty, [$($feat:tt)*], $k:ident) => {
+        $($feat)*
+        #[inline(never)]
+        unsafe fn $k(c: &mut Ctx<'_>, s: &Step) {
+            // SAFETY: forwarded; this function is chosen only on CPUs with its features.
+            unsafe { super::body::$k::<$v>(c, s) }
+        }
+    };
+}
+
+/// A level's kernels and their [`Table`], `TABLE`.
+macro_rules! level_kernels {
+    ($v:ty, $feat:tt, $($k:ident),*) => {
+        $( one_kernel!($v, $feat, $k); )*
+        /// This level's kernels.
+        pub(in super::super) const TABLE: super::Table = super::Table { $($k),* };
+    };
+}
+
+/// Defines module `$m` with the kernels of one level: backend `$v`, features `$feat`.
+macro_rules! level {
+    ($(#[$doc:meta])* $m:ident, $v:ty, $feat:tt) => {
+        $(#[$doc])*
+        pub(super) mod $m {
+            use super::*;
+            kernel_list!(level_kernels!($v, $feat,));
+        }
+    };
+}
+
+level!(
+    /// Baseline: portable lanes, not fused.
+    base, super::lanes_portable::Portable<false>, []
+);
+#[cfg(target_arch = "x86_64")]
+level!(
+    /// FMA without AVX2: portable lanes, fused.
+    fma, super::lanes_portable::Portable<true>, [#[target_feature(enable = "fma")]]
+);
+#[cfg(target_arch = "x86_64")]
+level!(
+    /// AVX2, not fused.
+    avx2, super::lanes_avx2::Avx2<false>, [#[target_feature(enable = "avx2")]]
+);
+#[cfg(target_arch = "x86_64")]
+level!(
+    /// AVX2 and FMA.
+    avx2fma, super::lanes_avx2::Avx2<true>, [#[target_feature(enable = "avx2,fma")]]
+);
+
+/// The kernels for instruction-set level `isa` (which the CPU must have).
+pub(super) fn table(isa: crate::cpu::Isa) -> &'static Table {
+    use crate::cpu::Isa;
+    match isa {
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2Fma => &avx2fma::TABLE,
+        #[cfg(target_arch = "x86_64")]
+        Isa::Avx2 => &avx2::TABLE,
+        #[cfg(target_arch = "x86_64")]
+        Isa::Fma => &fma::TABLE,
+        _ => &base::TABLE,
+    }
+}
