@@ -237,22 +237,15 @@ impl Combine {
         use Source as S;
         let zip = |s: [Source; 3], o: [Operand; 3]| [(s[0], o[0]), (s[1], o[1]), (s[2], o[2])];
         if env.mode == EnvMode::Combine {
-            let mut c = Combine {
-                mode_rgb: env.combine_rgb,
-                mode_a: env.combine_alpha,
-                args_rgb: zip(env.source_rgb, env.operand_rgb),
-                args_a: zip(env.source_alpha, env.operand_alpha),
-                scale_rgb: env.rgb_scale,
-                scale_a: env.alpha_scale,
-                color: env.color,
-                one_vec4: false,
-                reassoc: (true, true),
-                crossbar: false,
-                simple: None,
-            };
-            c.one_vec4 = c.compute_one_vec4();
-            c.refresh();
-            return c;
+            return Combine::with(
+                (env.combine_rgb, env.combine_alpha),
+                (
+                    zip(env.source_rgb, env.operand_rgb),
+                    zip(env.source_alpha, env.operand_alpha),
+                ),
+                (env.rgb_scale, env.alpha_scale),
+                env.color,
+            );
         }
         let base = base.env_base();
         let d = TexEnv::default();
@@ -337,14 +330,30 @@ impl Combine {
         if src_a[0] == S::Previous {
             mode_a = F::Replace;
         }
+        Combine::with(
+            (mode_rgb, mode_a),
+            (zip(src_rgb, op_rgb), zip(src_a, op_a)),
+            (1.0, 1.0),
+            env.color,
+        )
+    }
+
+    /// The combiner of functions `modes` on arguments `args` (RGB, alpha each) with
+    /// scales `scales` and env colour `color`, its derived fields worked out.
+    fn with(
+        modes: (CombineFn, CombineFn),
+        args: ([Arg; 3], [Arg; 3]),
+        scales: (f32, f32),
+        color: [f32; 4],
+    ) -> Combine {
         let mut c = Combine {
-            mode_rgb,
-            mode_a,
-            args_rgb: zip(src_rgb, op_rgb),
-            args_a: zip(src_a, op_a),
-            scale_rgb: 1.0,
-            scale_a: 1.0,
-            color: env.color,
+            mode_rgb: modes.0,
+            mode_a: modes.1,
+            args_rgb: args.0,
+            args_a: args.1,
+            scale_rgb: scales.0,
+            scale_a: scales.1,
+            color,
             one_vec4: false,
             reassoc: (true, true),
             crossbar: false,
