@@ -21,17 +21,12 @@
 
 #define W 64
 #define H 48
+#include "fbo_depth_common.h"
 
 static unsigned char px[W * H * 4];
 static float zf[W * H];
 static unsigned int zu[W * H];
 static unsigned short zs[W * H];
-
-static void errs(FILE *out, const char *name)
-{
-    GLenum e = glGetError();
-    sgl_text(out, name, "0x%x", e);
-}
 
 static void ortho(void)
 {
@@ -102,15 +97,6 @@ static void dump(FILE *out, const char *name, int depth)
     }
     snprintf(n, sizeof n, "%s_err", name);
     errs(out, n);
-}
-
-static GLuint rbuf(GLenum fmt, int samples)
-{
-    GLuint rb;
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, fmt, W, H);
-    return rb;
 }
 
 static GLuint fbo(GLenum depth_fmt, int samples)
@@ -262,16 +248,8 @@ int main(int argc, char **argv)
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &v[0]);
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &v[1]);
     sgl_text(out, "tex_q", "%d 0x%x", v[0], v[1]);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glGenFramebuffers(1, &fb2);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb2);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              rbuf(GL_RGBA8, 0));
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, tex[0], 0);
-    sgl_text(out, "status_tex", "0x%x", glCheckFramebufferStatus(GL_FRAMEBUFFER));
+    depth_tex_fbo(out, "status_tex", fb2, tex[0]);
     glGetIntegerv(GL_DEPTH_BITS, &v[0]);
     sgl_text(out, "tex_bits", "%d", v[0]);
     glClearDepth(1.0);
@@ -285,46 +263,7 @@ int main(int argc, char **argv)
     sgl_data(out, "texfbo_get_f", sizeof zf, zf);
 
     /* sample it into the window: as luminance, then compared (MuJoCo's shadows) */
-    glDisable(GL_DEPTH_TEST);
-    ortho();
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBegin(GL_QUADS);
-    glTexCoord2f(0.0f, 0.0f);
-    glVertex2f(0, 0);
-    glTexCoord2f(1.0f, 0.0f);
-    glVertex2f(W / 2, 0);
-    glTexCoord2f(1.0f, 1.0f);
-    glVertex2f(W / 2, H);
-    glTexCoord2f(0.0f, 1.0f);
-    glVertex2f(0, H);
-    glEnd();
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glBegin(GL_QUADS);
-    glTexCoord3f(0.0f, 0.0f, 0.0f);
-    glVertex2f(W / 2, 0);
-    glTexCoord3f(1.0f, 0.0f, 1.0f);
-    glVertex2f(W, 0);
-    glTexCoord3f(1.0f, 1.0f, 1.0f);
-    glVertex2f(W, H);
-    glTexCoord3f(0.0f, 1.0f, 0.0f);
-    glVertex2f(W / 2, H);
-    glEnd();
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GREATER);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBegin(GL_QUADS);
-    glTexCoord3f(0.0f, 0.0f, 0.30000002f);
-    glVertex2f(W / 2, 0);
-    glTexCoord3f(1.0f, 0.0f, 0.30000002f);
-    glVertex2f(W * 3 / 4, 0);
-    glTexCoord3f(1.0f, 0.5f, 0.30000002f);
-    glVertex2f(W * 3 / 4, H / 4);
-    glTexCoord3f(0.0f, 0.5f, 0.30000002f);
-    glVertex2f(W / 2, H / 4);
-    glEnd();
+    sample_depth_tex(0.0f, 1.0f, 0.30000002f, 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glDisable(GL_TEXTURE_2D);
     glFinish();
@@ -372,24 +311,16 @@ int main(int argc, char **argv)
     /* glCopyTexImage2D from the D32 buffer into 32-, 24- and 16-bit textures */
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fa);
     glBindTexture(GL_TEXTURE_2D, tex[1]);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32, 10, 5, 40, 30, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_32", 40 * 30 * 4, zu);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 10, 5, 40, 30, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_24", 40 * 30 * 4, zu);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 10, 5, 40, 30, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_16", 40 * 30 * 4, zu);
+    copy_depth(out, "copy_32", GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT, 40, 30, zu);
+    copy_depth(out, "copy_24", GL_DEPTH_COMPONENT24, GL_UNSIGNED_INT, 40, 30, zu);
+    copy_depth(out, "copy_16", GL_DEPTH_COMPONENT16, GL_UNSIGNED_INT, 40, 30, zu);
     errs(out, "copy_err");
     /* and from the window's 24-bit buffer into a 32-bit texture */
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glClearDepth(0.3);
     glClear(GL_DEPTH_BUFFER_BIT);
     scene(0.0f);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32, 10, 5, 40, 30, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_win_32", 40 * 30 * 4, zu);
+    copy_depth(out, "copy_win_32", GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT, 40, 30, zu);
     errs(out, "copy_win_err");
 
     /* 4x D32: depth-tested scene, colour resolved */

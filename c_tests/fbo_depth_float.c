@@ -24,18 +24,13 @@
 
 #define W 64
 #define H 48
+#include "fbo_depth_common.h"
 
 static unsigned char px[W * H * 4];
 static PFNGLCLIPCONTROLPROC clip_control;
 static int no_fan; /* the fan's near vertex makes huge offset slopes (see the README) */
 static float zf[W * H * 2];
 static unsigned int zu[W * H * 2];
-
-static void errs(FILE *out, const char *name)
-{
-    GLenum e = glGetError();
-    sgl_text(out, name, "0x%x", e);
-}
 
 /* Two far planes meeting at a tiny angle, a near plane crossing them, a fan. */
 static void scene(float t)
@@ -98,15 +93,6 @@ static void dump(FILE *out, const char *name, int stencil)
     }
     snprintf(n, sizeof n, "%s_err", name);
     errs(out, n);
-}
-
-static GLuint rbuf(GLenum fmt, int samples)
-{
-    GLuint rb;
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, fmt, W, H);
-    return rb;
 }
 
 int main(int argc, char **argv)
@@ -385,15 +371,7 @@ int main(int argc, char **argv)
     glBindTexture(GL_TEXTURE_2D, tex[3]);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, W, H, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                  NULL);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb[4]);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              rbuf(GL_RGBA8, 0));
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, tex[3], 0);
-    sgl_text(out, "status4", "0x%x", glCheckFramebufferStatus(GL_FRAMEBUFFER));
+    depth_tex_fbo(out, "status4", fb[4], tex[3]);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     scene(0.4f);
@@ -403,48 +381,7 @@ int main(int argc, char **argv)
     sgl_data(out, "texfbo_get", W * H * 4, zf);
 
     /* sample it: depth as luminance, then compared (r from 0.9 to 1.1: not clamped) */
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, W, 0, H, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBegin(GL_QUADS);
-    glTexCoord2f(0.0f, 0.0f);
-    glVertex2f(0, 0);
-    glTexCoord2f(1.0f, 0.0f);
-    glVertex2f(W / 2, 0);
-    glTexCoord2f(1.0f, 1.0f);
-    glVertex2f(W / 2, H);
-    glTexCoord2f(0.0f, 1.0f);
-    glVertex2f(0, H);
-    glEnd();
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glBegin(GL_QUADS);
-    glTexCoord3f(0.0f, 0.0f, 0.9995f);
-    glVertex2f(W / 2, 0);
-    glTexCoord3f(1.0f, 0.0f, 1.1f);
-    glVertex2f(W, 0);
-    glTexCoord3f(1.0f, 1.0f, 1.1f);
-    glVertex2f(W, H);
-    glTexCoord3f(0.0f, 1.0f, 0.9995f);
-    glVertex2f(W / 2, H);
-    glEnd();
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GREATER);
-    glBegin(GL_QUADS);
-    glTexCoord3f(0.0f, 0.0f, 1.2f);
-    glVertex2f(W / 2, 0);
-    glTexCoord3f(1.0f, 0.0f, 1.2f);
-    glVertex2f(W * 3 / 4, 0);
-    glTexCoord3f(1.0f, 0.5f, 1.2f);
-    glVertex2f(W * 3 / 4, H / 4);
-    glTexCoord3f(0.0f, 0.5f, 1.2f);
-    glVertex2f(W / 2, H / 4);
-    glEnd();
+    sample_depth_tex(0.9995f, 1.1f, 1.2f, 0);
     glDisable(GL_TEXTURE_2D);
     glFinish();
     sgl_image(out, "sampled", W, H, 4, "RGBA", W * 4, 1, buf);
@@ -453,22 +390,14 @@ int main(int argc, char **argv)
     /* glCopyTexImage2D from the float depth buffer (object 0) into float and 24-bit */
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fb[0]);
     glBindTexture(GL_TEXTURE_2D, tex[0]);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 10, 5, 16, 12, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
-    sgl_data(out, "copy_f", 16 * 12 * 4, zf);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 10, 5, 16, 12, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_24", 16 * 12 * 4, zu);
+    copy_depth(out, "copy_f", GL_DEPTH_COMPONENT32F, GL_FLOAT, 16, 12, zf);
+    copy_depth(out, "copy_24", GL_DEPTH_COMPONENT24, GL_UNSIGNED_INT, 16, 12, zu);
     errs(out, "copy_err");
     /* from the window's 24-bit depth-stencil buffer into GL_DEPTH32F_STENCIL8 and
      * GL_DEPTH24_STENCIL8 (piglit's copyteximage) */
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 10, 5, 16, 12, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
-    sgl_data(out, "copy_win_f_s8", 16 * 12 * 4, zf);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 10, 5, 16, 12, 0);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zu);
-    sgl_data(out, "copy_win_24_s8", 16 * 12 * 4, zu);
+    copy_depth(out, "copy_win_f_s8", GL_DEPTH32F_STENCIL8, GL_FLOAT, 16, 12, zf);
+    copy_depth(out, "copy_win_24_s8", GL_DEPTH24_STENCIL8, GL_UNSIGNED_INT, 16, 12, zu);
     errs(out, "copy_win_err");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fb[0]);
 

@@ -15,6 +15,7 @@
 #include <GL/glext.h>
 #include <GL/osmesa.h>
 #include "common.h"
+#include "fbo_common.h"
 
 #define W 16
 #define H 12
@@ -70,14 +71,7 @@ int main(int argc, char **argv)
     glGenFramebuffers(3, fb);
     glGenRenderbuffers(5, rb);
     /* A: colour rb[0] + depth-stencil rb[1] */
-    glBindFramebuffer(GL_FRAMEBUFFER, fb[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, FW, FH);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, FW, FH);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              rb[1]);
+    sgl_fbo_rgba8_ds(fb[0], rb[0], rb[1], FW, FH);
     sgl_text(out, "a_status", "%x", (unsigned)glCheckFramebufferStatus(GL_FRAMEBUFFER));
 
     /* 1. draw with depth and stencil, unbind, rebind, read */

@@ -15,6 +15,7 @@
 #include <GL/glext.h>
 #include <GL/osmesa.h>
 #include "common.h"
+#include "fbo_common.h"
 
 #define W 96
 #define H 80
@@ -59,13 +60,7 @@ int main(int argc, char **argv)
     /* 1. renderbuffers */
     glGenFramebuffers(4, fb);
     glGenRenderbuffers(2, rb);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, FW, FH);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, FW, FH);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    sgl_fbo_rgba8_ds(fb[0], rb[0], rb[1], FW, FH);
     v[0] = (GLint)glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glGetIntegerv(GL_DEPTH_BITS, &v[1]);
     glGetIntegerv(GL_STENCIL_BITS, &v[2]);

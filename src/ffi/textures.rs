@@ -5,7 +5,7 @@
 //! all arguments before changing any state.
 #![allow(non_snake_case)]
 
-use super::client::{image_command, read_f64, read_vec, write_all, write_one};
+use super::client::{image_command, read_f64, read_vec, write_all};
 use super::enums::*;
 use super::families::{c_fns, vector_fns};
 use super::types::*;
@@ -71,68 +71,13 @@ c_fns! {
     unsafe fn glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const GLvoid) => image_command(2, (format, type_), (width, height, 1), pixels, move |c: &mut Context, p, u| c.tex_sub_image(target, level, (xoffset, yoffset, width, height, format, type_), p, 2, u));
 }
 
-/// glCopyTexImage1D.
-#[no_mangle]
-pub extern "C" fn glCopyTexImage1D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    x: GLint,
-    y: GLint,
-    width: GLsizei,
-    border: GLint,
-) {
-    with_ctx_list(move |c| {
-        c.copy_tex_image(target, level, internalformat, x, y, width, 1, border, 1)
-    })
-}
-
-/// glCopyTexImage2D.
-#[no_mangle]
-pub extern "C" fn glCopyTexImage2D(
-    target: GLenum,
-    level: GLint,
-    internalformat: GLenum,
-    x: GLint,
-    y: GLint,
-    width: GLsizei,
-    height: GLsizei,
-    border: GLint,
-) {
-    with_ctx_list(move |c| {
-        let (w, h) = (width, height);
-        c.copy_tex_image(target, level, internalformat, x, y, w, h, border, 2)
-    })
-}
-
-/// glCopyTexSubImage1D.
-#[no_mangle]
-pub extern "C" fn glCopyTexSubImage1D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    x: GLint,
-    y: GLint,
-    width: GLsizei,
-) {
-    with_ctx_list(move |c| c.copy_tex_sub_image(target, level, xoffset, 0, x, y, width, 1, 1))
-}
-
-/// glCopyTexSubImage2D.
-#[no_mangle]
-pub extern "C" fn glCopyTexSubImage2D(
-    target: GLenum,
-    level: GLint,
-    xoffset: GLint,
-    yoffset: GLint,
-    x: GLint,
-    y: GLint,
-    width: GLsizei,
-    height: GLsizei,
-) {
-    with_ctx_list(move |c| {
-        c.copy_tex_sub_image(target, level, xoffset, yoffset, x, y, width, height, 2)
-    })
+// The copies from the read buffer (`copy_tex_image` / `copy_tex_sub_image` with the
+// image's dimensions last).
+c_fns! {
+    safe fn glCopyTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint) => with_ctx_list(move |c| c.copy_tex_image(target, level, internalformat, x, y, width, 1, border, 1));
+    safe fn glCopyTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint) => with_ctx_list(move |c| c.copy_tex_image(target, level, internalformat, x, y, width, height, border, 2));
+    safe fn glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei) => with_ctx_list(move |c| c.copy_tex_sub_image(target, level, xoffset, 0, x, y, width, 1, 1));
+    safe fn glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list(move |c| c.copy_tex_sub_image(target, level, xoffset, yoffset, x, y, width, height, 2));
 }
 
 /// glGetTexImage.
@@ -154,23 +99,22 @@ pub unsafe extern "C" fn glGetTexImage(
 /// glTexParameterf.
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
-    // Mesa compiles the scalar forms as glTexParameterfv with (param, 0, 0, 0)
-    // (`save_TexParameter*`), so in a display list GL_TEXTURE_BORDER_COLOR is accepted.
-    let v = [param as f64, 0.0, 0.0, 0.0];
-    if pname == GL_TEXTURE_BORDER_COLOR && compiling_list() {
-        return with_ctx_list(move |c| c.tex_parameter(target, pname, &v, false));
-    }
-    with_ctx_list(move |c| c.tex_parameter_scalar(target, pname, v[0]))
+    tex_parameter_one(target, pname, param as f64)
 }
 
 /// glTexParameteri.
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
-    // Mesa compiles the scalar forms as glTexParameterfv with (param, 0, 0, 0)
-    // (`save_TexParameter*`), so in a display list GL_TEXTURE_BORDER_COLOR is accepted.
-    let v = [param as f64, 0.0, 0.0, 0.0];
+    tex_parameter_one(target, pname, param as f64)
+}
+
+/// The scalar glTexParameter forms, with the value as `f64`. Mesa compiles them as
+/// glTexParameterfv with (param, 0, 0, 0) (`save_TexParameter*`), so in a display list
+/// GL_TEXTURE_BORDER_COLOR is accepted (an integer converted, as glTexParameterfv, not
+/// normalised).
+fn tex_parameter_one(target: GLenum, pname: GLenum, param: f64) {
+    let v = [param, 0.0, 0.0, 0.0];
     if pname == GL_TEXTURE_BORDER_COLOR && compiling_list() {
-        // (as glTexParameterfv: the integer is converted, not normalised)
         return with_ctx_list(move |c| c.tex_parameter(target, pname, &v, false));
     }
     with_ctx_list(move |c| c.tex_parameter_scalar(target, pname, v[0]))
@@ -219,44 +163,8 @@ c_fns! {
     unsafe fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(c.get_tex_parameter(target, pname)?.0), |x| x as f32);
     /// glGetTexParameteriv (normalized values truncated, as Mesa's FLOAT_TO_INT).
     unsafe fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(ints_truncated(c.get_tex_parameter(target, pname)?)), |x| x);
-}
-
-/// glGetTexLevelParameterfv.
-///
-/// # Safety
-/// `params` must be writable.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexLevelParameterfv(
-    target: GLenum,
-    level: GLint,
-    pname: GLenum,
-    params: *mut GLfloat,
-) {
-    with_ctx(|c| {
-        let v = c.get_tex_level_parameter(target, level, pname)?;
-        // SAFETY: the caller promises a writable value.
-        unsafe { write_one(params, v as f32) };
-        Ok(())
-    })
-}
-
-/// glGetTexLevelParameteriv.
-///
-/// # Safety
-/// `params` must be writable.
-#[no_mangle]
-pub unsafe extern "C" fn glGetTexLevelParameteriv(
-    target: GLenum,
-    level: GLint,
-    pname: GLenum,
-    params: *mut GLint,
-) {
-    with_ctx(|c| {
-        let v = c.get_tex_level_parameter(target, level, pname)?;
-        // SAFETY: the caller promises a writable value.
-        unsafe { write_one(params, v as i32) };
-        Ok(())
-    })
+    unsafe fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) => get_params(params, |c| Ok(vec![c.get_tex_level_parameter(target, level, pname)?]), |x| x as f32);
+    unsafe fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) => get_params(params, |c| Ok(vec![c.get_tex_level_parameter(target, level, pname)?]), |x| x as i32);
 }
 
 /// glTexEnvf.

@@ -18,9 +18,9 @@
 #[cfg(target_arch = "x86_64")]
 use super::blend::Lanes;
 #[cfg(target_arch = "x86_64")]
-use super::simd::{blend_is_over, depth_test8};
+use super::simd::blend_is_over;
 #[cfg(target_arch = "x86_64")]
-use super::simd_plane::{and_not, count, stencil_test8, stencil_update8, write8_in, Bits8};
+use super::simd_plane::{stencil_depth8, write8_in, Bits8};
 use super::span::LANES;
 use super::span::{alpha_test, chunk_colors, stencil_depth, store_chunk, StoreFormat};
 use super::span::{ChunkAt, ChunkColors, Madd};
@@ -225,25 +225,19 @@ unsafe fn samples8<const FMA: bool, const DEPTH: bool>(
             let [sx, sy] = MsPass::pos(s);
             let (fxs, fys) = (fx.add(F32x8::splat(sx)), F32x8::splat(at.py as f32 + sy));
             let rows = fb.plane(s);
-            let st = match &stencil {
-                Some(sp) => Some(stencil_test8(sp, rows.stencil, row, n, &mut live, stats)),
-                None => None,
-            };
-            let mut zfail = I32x8::zero();
-            if DEPTH {
-                let d = plan.depth.expect("DEPTH implies a depth plan");
-                stats.depth_reads += count(live);
-                let pass = depth_test8::<FMA>(t, &d, rows.depth, row, fxs, fys, live);
-                zfail = and_not(live, pass);
-                stats.depth_failed += count(zfail);
-                live = pass;
-            }
-            if let (Some(sp), Some(st)) = (&stencil, st) {
-                stencil_update8(sp, rows.stencil, row, n, st, zfail, live);
-            }
-            if plan.count_samples {
-                stats.samples_passed += count(live);
-            }
+            let (st, dp) = (&mut *rows.stencil, &mut *rows.depth);
+            let sp = stencil.as_ref();
+            live = stencil_depth8::<FMA, DEPTH>(
+                t,
+                plan,
+                sp,
+                st,
+                dp,
+                (row, n),
+                (fxs, fys),
+                live,
+                stats,
+            );
             if !color || live.movemask() == 0 {
                 continue;
             }

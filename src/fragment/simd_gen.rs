@@ -10,14 +10,15 @@
 //! combiner through [`crate::texture::env::Combine::apply8`] (the scalar combiner's
 //! operations on eight lanes), the specular sum and the fog blend unfused, the fog
 //! factor per lane by [`crate::fixed_function::fog::FogPlan::factor`], `unorm8` as clamp
-//! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`]. The stencil
-//! test and its updates run per live lane on the stored bytes, in the scalar order.
+//! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`], the stencil
+//! test and its updates as [`super::simd_plane`] (8 lanes, the multisample shader's).
 
 #![cfg(target_arch = "x86_64")]
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
-use super::simd::{blend8, blend_is_over, depth_pass, depth_test8, eval, over8, sat, store_masked};
+use super::simd::{blend8, blend_is_over, depth_pass, eval, over8, sat, store_masked};
+use super::simd_plane::stencil_depth8;
 use super::span::{TexLanes, LANES};
 use super::{FragPlan, StencilFacePlan};
 use crate::framebuffer::{ColorFormat, Target};
@@ -241,79 +242,6 @@ unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     }
 }
 
-/// Applies stencil operation `op` of `sp` to the bytes of `st` whose bits are set in `m`.
-#[inline(always)]
-fn stencil_op(sp: &StencilFacePlan, op: crate::pipe::StencilOp, st: &mut [u8], mut m: u32) {
-    while m != 0 {
-        let i = m.trailing_zeros() as usize;
-        m &= m - 1;
-        st[i] = sp.update(op, st[i]);
-    }
-}
-
-/// The stencil and depth tests of the `live` lanes of the row at `idx` (the first `n`
-/// lanes inside the row) with their updates and counts, as
-/// [`super::span::stencil_depth`] makes them; returns the lanes that pass.
-///
-/// # Safety
-/// AVX2 context (FMA when `FMA`); the live lanes lie inside the buffers.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-unsafe fn stencil_depth8<const FMA: bool, const DEPTH: bool>(
-    t: &SetupTriangle,
-    plan: &FragPlan,
-    g: &GenPlan,
-    fb: &mut Target<'_>,
-    idx: usize,
-    n: usize,
-    fx: F32x8,
-    fy: F32x8,
-    mut live: I32x8,
-    stats: &mut Stats,
-) -> I32x8 {
-    // SAFETY: the caller's AVX2 (+FMA) context; stencil bytes are indexed (checked)
-    // within `idx..idx + n`, and `depth_test8` touches live lanes only.
-    unsafe {
-        let mut bits = live.movemask();
-        if let Some(sp) = &g.stencil {
-            let st = &mut fb.stencil[idx..idx + n];
-            let mut m = bits;
-            while m != 0 {
-                let i = m.trailing_zeros() as usize;
-                m &= m - 1;
-                stats.stencil_reads += 1;
-                let s = st[i];
-                if !sp.test(s) {
-                    st[i] = sp.update(sp.fail, s);
-                    bits &= !(1 << i);
-                    stats.stencil_failed += 1;
-                }
-            }
-            live = mask_of(bits);
-        }
-        if DEPTH {
-            let d = plan.depth.expect("DEPTH implies a depth plan");
-            stats.depth_reads += u64::from(bits.count_ones());
-            if bits != 0 {
-                live = depth_test8::<FMA>(t, &d, fb.depth, idx, fx, fy, live);
-            }
-            let passed = live.movemask();
-            stats.depth_failed += u64::from((bits & !passed).count_ones());
-            if let Some(sp) = &g.stencil {
-                stencil_op(sp, sp.zfail, &mut fb.stencil[idx..idx + n], bits & !passed);
-            }
-            bits = passed;
-        }
-        if let Some(sp) = &g.stencil {
-            stencil_op(sp, sp.zpass, &mut fb.stencil[idx..idx + n], bits);
-        }
-        if plan.count_samples {
-            stats.samples_passed += u64::from(bits.count_ones());
-        }
-        live
-    }
-}
-
 /// Shades the `live` lanes of the 8 pixels from `x` in row `py` whose units were sampled
 /// into `tex` (see the module comment); `oow` is the row's `1 / w` (1.0 without `PERSP`).
 ///
@@ -357,7 +285,10 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
             live_v = kept;
         }
         let idx = (py - fb.y0) * w + x;
-        let pass = stencil_depth8::<FMA, DEPTH>(t, plan, g, fb, idx, n, fx, fy, live_v, stats);
+        let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
+        let sp = g.stencil.as_ref();
+        let pass =
+            stencil_depth8::<FMA, DEPTH>(t, plan, sp, st, dp, (idx, n), (fx, fy), live_v, stats);
         let passed = pass.movemask();
         if g.mask == 0 || passed == 0 {
             return;

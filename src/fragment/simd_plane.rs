@@ -11,11 +11,12 @@
 
 #![cfg(target_arch = "x86_64")]
 
-use super::simd::{blend8, depth_pass, over8, store_masked};
+use super::simd::{blend8, depth_pass, depth_test8, over8, store_masked};
 use super::span::LANES;
 use super::{FragPlan, StencilFacePlan};
+use crate::geometry::setup::SetupTriangle;
 use crate::pipe::StencilOp;
-use crate::simd::I32x8;
+use crate::simd::{F32x8, I32x8};
 use crate::stats::Stats;
 
 /// Which stored bits a colour write keeps and which it sets, per packed RGBA8 pixel: the
@@ -207,6 +208,55 @@ pub(super) unsafe fn stencil_update8(
         }
     }
     stencil[idx..idx + n].copy_from_slice(&v.to_u8()[..n]);
+}
+
+/// The stencil test, the depth test at `fx`, `fy` ([`depth_test8`]) and the stencil
+/// updates of the `live` lanes of the `n` values at `idx` of a plane's rows `stencil` and
+/// `depth`, with face `sp` when the stencil test is on, counted as
+/// [`super::span::stencil_depth`] counts them; returns the lanes that pass both.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`); the live lanes lie inside the rows.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn stencil_depth8<const FMA: bool, const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    sp: Option<&StencilFacePlan>,
+    stencil: &mut [u8],
+    depth: &mut [u32],
+    (idx, n): (usize, usize),
+    (fx, fy): (F32x8, F32x8),
+    mut live: I32x8,
+    stats: &mut Stats,
+) -> I32x8 {
+    // SAFETY: forwarded from the caller; `depth_test8` touches live lanes only.
+    unsafe {
+        // Not `Option::map`: a closure left out of line loses the caller's target features.
+        #[allow(clippy::manual_map)]
+        let st = match sp {
+            Some(sp) => Some(stencil_test8(sp, stencil, idx, n, &mut live, stats)),
+            None => None,
+        };
+        let mut zfail = I32x8::zero();
+        if DEPTH {
+            let d = plan.depth.expect("DEPTH implies a depth plan");
+            stats.depth_reads += count(live);
+            if live.movemask() != 0 {
+                let pass = depth_test8::<FMA>(t, &d, depth, idx, fx, fy, live);
+                zfail = and_not(live, pass);
+                stats.depth_failed += count(zfail);
+                live = pass;
+            }
+        }
+        if let (Some(sp), Some(st)) = (sp, st) {
+            stencil_update8(sp, stencil, idx, n, st, zfail, live);
+        }
+        if plan.count_samples {
+            stats.samples_passed += count(live);
+        }
+        live
+    }
 }
 
 #[cfg(test)]

@@ -183,20 +183,8 @@ pub(crate) fn vary_at<M: Madd, const PERSP: bool>(
 }
 
 /// Perspective-correct, projected texture coordinates (s, t) of one unit at [`LANES`]
-/// pixels of row `fy`: `a_plane * (1 / w_plane)`, then `coord * (1 / q)` as llvmpipe's
-/// lowered projective sampling does.
-#[inline(always)]
-pub fn tex_coords<M: Madd, const PERSP: bool>(
-    t: &SetupTriangle,
-    base: usize,
-    fx: &[f32; LANES],
-    fy: f32,
-) -> ([f32; LANES], [f32; LANES]) {
-    let oow = one_over_w::<M, PERSP>(t, fx, fy);
-    tex_coords_oow::<M, PERSP>(t, base, fx, fy, &oow)
-}
-
-/// [`tex_coords`] with the row's `1 / w` already computed.
+/// pixels of row `fy` whose `1 / w` is `oow` ([`one_over_w`]): `a_plane * (1 / w_plane)`,
+/// then `coord * (1 / q)` as llvmpipe's lowered projective sampling does.
 #[inline(always)]
 pub fn tex_coords_oow<M: Madd, const PERSP: bool>(
     t: &SetupTriangle,
@@ -220,21 +208,10 @@ pub fn tex_coords_oow<M: Madd, const PERSP: bool>(
     (s, tt)
 }
 
-/// The projected r coordinate of one unit at [`LANES`] pixels of row `fy` (3D textures,
-/// cube maps): `r·(1/q)` with the same `1/q` as [`tex_coords`].
-#[inline(always)]
-pub fn tex_r<M: Madd, const PERSP: bool>(
-    t: &SetupTriangle,
-    base: usize,
-    fx: &[f32; LANES],
-    fy: f32,
-) -> [f32; LANES] {
-    let oow = one_over_w::<M, PERSP>(t, fx, fy);
-    tex_r_oow::<M, PERSP>(t, base, fx, fy, &oow)
-}
-
-/// [`tex_r`] with the row's `1 / w` already computed (a loop, not `array::from_fn`: a
-/// closure the compiler leaves out of line loses the caller's target features).
+/// The projected r coordinate of one unit at [`LANES`] pixels of row `fy` whose `1 / w`
+/// is `oow` (3D textures, cube maps): `r·(1/q)` with the same `1/q` as
+/// [`tex_coords_oow`] (a loop, not `array::from_fn`: a closure the compiler leaves out of
+/// line loses the caller's target features).
 #[inline(always)]
 pub fn tex_r_oow<M: Madd, const PERSP: bool>(
     t: &SetupTriangle,
@@ -349,7 +326,7 @@ fn shaded_colors<M: Madd, const FLAT: bool, const PERSP: bool>(
                 *a = tx[k][i];
             }
             for (k, u) in units.iter().enumerate() {
-                prev = u.env(f, tx[k][i], prev, &all[..crossbar]);
+                prev = u.env.apply(f, tx[k][i], prev, &all[..crossbar]);
             }
         }
         if plan.separate_specular {

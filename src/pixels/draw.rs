@@ -57,7 +57,7 @@ impl<'a> Shader<'a> {
     pub fn shade(&self, primary: [f32; 4]) -> [f32; 4] {
         let mut prev = primary;
         for (u, tex) in &self.units {
-            prev = u.env(primary, *tex, prev, &self.texels);
+            prev = u.env.apply(primary, *tex, prev, &self.texels);
         }
         if let Some(f) = &self.fog {
             prev = f.apply(prev, f.factor(0.0));

@@ -27,6 +27,7 @@ pub mod ms_prims;
 pub mod multisample;
 pub mod prim_tex;
 pub mod prims;
+mod row_pairs;
 mod sample8;
 pub mod smooth;
 pub mod stipple;

@@ -5,20 +5,22 @@
 //! The triangle comes from [`crate::geometry::setup::setup_triangle_samples`]: its edges
 //! are those of test point (0, 0) and its box the union of the samples' boxes. Sample s's
 //! edges ([`Edge::at_sample`]) are exactly those a per-sample set-up makes, and each row's
-//! covered pixels come from them through the same [`row_span`] as a single-sample walk, so
-//! the coverage of every sample is what the rasterizer of a pass of that sample finds.
-//! Rows go in pairs and chunks start at even columns, as the textured walk's, so that a
+//! covered pixels come from them through the same [`crate::geometry::setup::row_span`]
+//! as a single-sample walk, so the coverage of every sample is what the rasterizer of a
+//! pass of that sample finds. Rows go in pairs ([`super::row_pairs`], the walk the
+//! single-sample quad walks take) and chunks start at even columns, so that a
 //! 2x2 quad (aligned to even coordinates) is sampled whole, with its level of detail
 //! from its own texture coordinates (evaluated on the planes for every pixel, covered or
 //! not): a quad gets the same texels as in a pass that covers any of its pixels.
 
+use super::row_pairs::RowPairs;
 use super::textured::Chunk;
 use super::{sample_chunk, Draw};
 use crate::fragment::multisample::{shade_chunk_ms, SAMPLES};
 use crate::fragment::span::{ChunkColors, Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::setup::{row_span, Edge, SetupTriangle};
+use crate::geometry::setup::{Edge, SetupTriangle};
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
@@ -100,24 +102,9 @@ fn rows_as<
     // Texel values of the current chunk (lanes of quads not sampled keep stale values,
     // never used), as in the textured walk.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    let mut qy = b[1] & !1;
-    while qy <= b[3] {
-        // Each sample's covered pixels of the two rows, and their union's extent.
-        let mut spans = [[None; SAMPLES]; 2];
-        let (mut lo, mut hi) = (i64::MAX, i64::MIN);
-        for (r, row) in spans.iter_mut().enumerate() {
-            let py = qy + r as i64;
-            if py < b[1] || py > b[3] {
-                continue;
-            }
-            for (s, span) in row.iter_mut().enumerate() {
-                *span = row_span(&edges[s], b[0], b[2], py);
-                if let Some((a, z)) = *span {
-                    lo = lo.min(a);
-                    hi = hi.max(z);
-                }
-            }
-        }
+    for pair in RowPairs::new(&edges, b, !1) {
+        let (qy, spans) = (pair.qy, pair.spans);
+        let (lo, hi) = (pair.lo, pair.hi);
         let mut x = lo & !1;
         while x <= hi {
             // Bit i of `cov[r][s]`: sample s of pixel x + i of row r is covered.
@@ -161,7 +148,6 @@ fn rows_as<
             }
             x += LANES as i64;
         }
-        qy += 2;
     }
 }
 

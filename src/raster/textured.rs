@@ -6,7 +6,7 @@
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
-use super::row_span;
+use super::row_pairs::RowPairs;
 
 #[cfg(target_arch = "x86_64")]
 mod vec8;
@@ -64,12 +64,12 @@ pub(super) struct Chunk {
 }
 
 /// The 8-pixel chunks of the pairs of rows (aligned to even pixel coordinates, as
-/// llvmpipe's 2x2 quads are) that `t` covers in `b`; a chunk is visited when either row
-/// covers part of it. An iterator rather than a closure walker: a closure body would be
-/// compiled outside the callers' CPU-specific entry points (without AVX2/FMA).
+/// llvmpipe's 2x2 quads are, [`RowPairs`]) that `t` covers in `b`; a chunk is visited
+/// when either row covers part of it. An iterator rather than a closure walker: a
+/// closure body would be compiled outside the callers' CPU-specific entry points
+/// (without AVX2/FMA).
 pub(super) struct Chunks<'t> {
-    t: &'t SetupTriangle,
-    b: [i64; 4],
+    pairs: RowPairs<'t, 1>,
     qy: i64,
     spans: [Option<(i64, i64)>; 2],
     x: i64,
@@ -81,9 +81,8 @@ impl<'t> Chunks<'t> {
     #[inline(always)]
     pub fn new(t: &'t SetupTriangle, b: [i64; 4]) -> Self {
         Chunks {
-            t,
-            b,
-            qy: (b[1] & !1) - 2,
+            pairs: RowPairs::new(std::array::from_ref(&t.edges), b, !1),
+            qy: 0,
             spans: [None; 2],
             x: 0,
             hi: -1,
@@ -96,21 +95,12 @@ impl Iterator for Chunks<'_> {
 
     #[inline(always)]
     fn next(&mut self) -> Option<Chunk> {
-        while self.x > self.hi {
-            self.qy += 2;
-            if self.qy > self.b[3] {
-                return None;
-            }
-            self.spans = [
-                row_span(self.t, self.b, self.qy),
-                row_span(self.t, self.b, self.qy + 1),
-            ];
-            let lo = self.spans.iter().flatten().map(|s| s.0).min();
-            let hi = self.spans.iter().flatten().map(|s| s.1).max();
-            if let (Some(lo), Some(hi)) = (lo, hi) {
-                self.x = lo & !1;
-                self.hi = hi;
-            }
+        if self.x > self.hi {
+            let p = self.pairs.next()?;
+            self.qy = p.qy;
+            self.spans = [p.spans[0][0], p.spans[1][0]];
+            self.x = p.lo & !1;
+            self.hi = p.hi;
         }
         let x = self.x;
         self.x += LANES as i64;

@@ -9,7 +9,8 @@
 //! combiner like `emit_texenv`/`emit_combine` (`ff_fragment_shader.cpp`): f32 arithmetic
 //! with separate multiplies and adds, INTERPOLATE as `s0·s2 + s1·(1 − s2)`, saturation only
 //! for ADD, ADD_SIGNED, SUBTRACT and DOT3 (and after a scale, which then saturates all four
-//! channels).
+//! channels). The evaluation is written once, generic over the [`Lane`] it computes in:
+//! `f32` for one fragment, eight fragments' AVX2 lanes in [`vec8`].
 //!
 //! Two of NIR's algebraic rewrites change the rounding and are reproduced: ADD_SIGNED
 //! becomes `(arg0 + −0.5) + arg1` (or `(0.5 − x) + arg1` when arg0 is `1 − x`) unless CSE
@@ -211,16 +212,6 @@ impl Simple {
     }
 }
 
-/// What one fragment's combiner reads: the primary colour, this unit's texel, the
-/// previous unit's result and every active unit's texel (crossbar).
-#[derive(Clone, Copy)]
-struct Inputs<'t> {
-    frag: [f32; 4],
-    tex: [f32; 4],
-    prev: [f32; 4],
-    textures: &'t [[f32; 4]],
-}
-
 /// The crossbar slot of a unit that is not active: past any texel list, so it reads zero.
 pub const NO_SLOT: u8 = u8::MAX;
 
@@ -246,22 +237,15 @@ impl Combine {
         use Source as S;
         let zip = |s: [Source; 3], o: [Operand; 3]| [(s[0], o[0]), (s[1], o[1]), (s[2], o[2])];
         if env.mode == EnvMode::Combine {
-            let mut c = Combine {
-                mode_rgb: env.combine_rgb,
-                mode_a: env.combine_alpha,
-                args_rgb: zip(env.source_rgb, env.operand_rgb),
-                args_a: zip(env.source_alpha, env.operand_alpha),
-                scale_rgb: env.rgb_scale,
-                scale_a: env.alpha_scale,
-                color: env.color,
-                one_vec4: false,
-                reassoc: (true, true),
-                crossbar: false,
-                simple: None,
-            };
-            c.one_vec4 = c.compute_one_vec4();
-            c.refresh();
-            return c;
+            return Combine::with(
+                (env.combine_rgb, env.combine_alpha),
+                (
+                    zip(env.source_rgb, env.operand_rgb),
+                    zip(env.source_alpha, env.operand_alpha),
+                ),
+                (env.rgb_scale, env.alpha_scale),
+                env.color,
+            );
         }
         let base = base.env_base();
         let d = TexEnv::default();
@@ -346,14 +330,30 @@ impl Combine {
         if src_a[0] == S::Previous {
             mode_a = F::Replace;
         }
+        Combine::with(
+            (mode_rgb, mode_a),
+            (zip(src_rgb, op_rgb), zip(src_a, op_a)),
+            (1.0, 1.0),
+            env.color,
+        )
+    }
+
+    /// The combiner of functions `modes` on arguments `args` (RGB, alpha each) with
+    /// scales `scales` and env colour `color`, its derived fields worked out.
+    fn with(
+        modes: (CombineFn, CombineFn),
+        args: ([Arg; 3], [Arg; 3]),
+        scales: (f32, f32),
+        color: [f32; 4],
+    ) -> Combine {
         let mut c = Combine {
-            mode_rgb,
-            mode_a,
-            args_rgb: zip(src_rgb, op_rgb),
-            args_a: zip(src_a, op_a),
-            scale_rgb: 1.0,
-            scale_a: 1.0,
-            color: env.color,
+            mode_rgb: modes.0,
+            mode_a: modes.1,
+            args_rgb: args.0,
+            args_a: args.1,
+            scale_rgb: scales.0,
+            scale_a: scales.1,
+            color,
             one_vec4: false,
             reassoc: (true, true),
             crossbar: false,
@@ -443,203 +443,10 @@ impl Combine {
         }
         self.refresh();
     }
-
-    /// Evaluates the combiner. `textures` holds every active unit's texture value, in the
-    /// order of [`Combine::canonicalise`]'s slots, for GL_TEXTUREn sources (only read
-    /// when `crossbar`; missing entries read as zero, as Mesa's shader does for disabled
-    /// units).
-    ///
-    /// Every helper is `#[inline(always)]` (no closures): a closure left out of line
-    /// is called per channel and loses the caller's target features.
-    #[inline(always)]
-    pub fn apply(
-        &self,
-        frag: [f32; 4],
-        tex: [f32; 4],
-        prev: [f32; 4],
-        textures: &[[f32; 4]],
-    ) -> [f32; 4] {
-        let inp = Inputs {
-            frag,
-            tex,
-            prev,
-            textures,
-        };
-        if let Some(sm) = &self.simple {
-            return self.apply_simple(sm, &inp);
-        }
-        self.apply_general(&inp)
-    }
-
-    /// [`Combine::apply`] of a [`Simple`] combiner: the same products.
-    #[inline(always)]
-    fn apply_simple(&self, sm: &Simple, inp: &Inputs<'_>) -> [f32; 4] {
-        let r0 = self.value(sm.rgb.0, inp);
-        let a0 = self.value(sm.a.0, inp)[3];
-        let mut out = [r0[0], r0[1], r0[2], a0];
-        if let Some(s1) = sm.rgb.1 {
-            let r1 = self.value(s1, inp);
-            for c in 0..3 {
-                out[c] *= r1[c];
-            }
-        }
-        if let Some(s1) = sm.a.1 {
-            out[3] *= self.value(s1, inp)[3];
-        }
-        out
-    }
-
-    /// The value of source `s`.
-    #[inline(always)]
-    fn value(&self, s: Source, inp: &Inputs<'_>) -> [f32; 4] {
-        match s {
-            Source::Texture => inp.tex,
-            Source::TextureN(n) => inp.textures.get(n as usize).copied().unwrap_or([0.0; 4]),
-            Source::Constant => self.color,
-            Source::PrimaryColor => inp.frag,
-            Source::Previous => inp.prev,
-        }
-    }
-
-    /// Channel `ch` of argument `a`.
-    #[inline(always)]
-    fn arg(&self, a: Arg, ch: usize, inp: &Inputs<'_>) -> f32 {
-        let v = self.value(a.0, inp);
-        match a.1 {
-            Operand::SrcColor => v[ch],
-            Operand::OneMinusSrcColor => 1.0 - v[ch],
-            Operand::SrcAlpha => v[3],
-            Operand::OneMinusSrcAlpha => 1.0 - v[3],
-        }
-    }
-
-    /// The value x of a ONE_MINUS operand (its argument is `1 − x`).
-    #[inline(always)]
-    fn minus_of(&self, a: Arg, ch: usize, inp: &Inputs<'_>) -> Option<f32> {
-        let v = self.value(a.0, inp);
-        match a.1 {
-            Operand::OneMinusSrcColor => Some(v[ch]),
-            Operand::OneMinusSrcAlpha => Some(v[3]),
-            _ => None,
-        }
-    }
-
-    /// Function `f` of `args` on channel `ch`, before saturation and scale.
-    #[inline(always)]
-    fn eval(
-        &self,
-        f: CombineFn,
-        args: &[Arg; 3],
-        ch: usize,
-        reassoc: bool,
-        inp: &Inputs<'_>,
-    ) -> f32 {
-        let mut a = [0.0f32; 3];
-        for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
-            *ai = self.arg(args[i], ch, inp);
-        }
-        match f {
-            CombineFn::AddSigned if reassoc => {
-                add_signed(a[0], a[1], self.minus_of(args[0], ch, inp))
-            }
-            // `1 − arg2` with arg2 = `1 − x` folds to x (`#a + −(b + #c)` →
-            // `(#a − #c) + −b`, then `0 + x` → x).
-            CombineFn::Interpolate => match self.minus_of(args[2], ch, inp) {
-                Some(x) => a[0] * a[2] + a[1] * x,
-                None => combine(f, a),
-            },
-            _ => combine(f, a),
-        }
-    }
-
-    /// [`Combine::apply`] of any combiner.
-    #[inline(always)]
-    fn apply_general(&self, inp: &Inputs<'_>) -> [f32; 4] {
-        let (reassoc_rgb, reassoc_a) = self.reassoc;
-        let shift = self.scale_rgb != 1.0 || self.scale_a != 1.0;
-        let mut out = [0.0f32; 4];
-        let dot3 = matches!(self.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
-        if dot3 {
-            let mut t0 = [0.0f32; 3];
-            let mut t1 = [0.0f32; 3];
-            for c in 0..3 {
-                t0[c] = self.arg(self.args_rgb[0], c, inp) * 2.0 + -1.0;
-                t1[c] = self.arg(self.args_rgb[1], c, inp) * 2.0 + -1.0;
-            }
-            let mut d = t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2];
-            if self.scale_rgb == 1.0 {
-                d = sat(d);
-            }
-            out[0] = d;
-            out[1] = d;
-            out[2] = d;
-            if self.mode_rgb == CombineFn::Dot3Rgba {
-                out[3] = d;
-            }
-        } else {
-            for (c, o) in out.iter_mut().enumerate().take(3) {
-                let mut v = self.eval(self.mode_rgb, &self.args_rgb, c, reassoc_rgb, inp);
-                if !shift && self.mode_rgb.saturates() {
-                    v = sat(v);
-                }
-                *o = v;
-            }
-        }
-        if self.mode_rgb != CombineFn::Dot3Rgba {
-            let mut v = self.eval(self.mode_a, &self.args_a, 3, reassoc_a, inp);
-            if !shift && self.mode_a.saturates() {
-                v = sat(v);
-            }
-            out[3] = v;
-        }
-        if shift {
-            for o in out.iter_mut().take(3) {
-                *o = sat(*o * self.scale_rgb);
-            }
-            out[3] = sat(out[3] * self.scale_a);
-        }
-        out
-    }
 }
 
-/// Clamp to [0,1], NaN → 0 (llvmpipe's fsat).
-#[inline(always)]
-pub fn sat(v: f32) -> f32 {
-    if v > 0.0 {
-        v.min(1.0)
-    } else {
-        0.0
-    }
-}
-
-/// ADD_SIGNED as llvmpipe evaluates Mesa's `(arg0 + arg1) + -0.5`.
-///
-/// NIR's `nir_opt_algebraic` rewrites it before llvmpipe sees it: "propagate constants up
-/// addition chains", `(a + b) + #c → (a + #c) + b` (a, b not constants, both adds used
-/// once; the first match keeps the operand order, so the constant goes to arg0), gives
-/// `(arg0 + -0.5) + arg1`. When arg0 is a ONE_MINUS operand, `1 − x` is `1 + (−x)`, and
-/// the constant-reassociation rule `#a + (b + #c) → (#a + #c) + b` folds it further into
-/// `(0.5 − x) + arg1`. `minus0` is that x.
-#[inline(always)]
-fn add_signed(a0: f32, a1: f32, minus0: Option<f32>) -> f32 {
-    match minus0 {
-        Some(x) => (0.5 + -x) + a1,
-        None => (a0 + -0.5) + a1,
-    }
-}
-
-#[inline(always)]
-fn combine(f: CombineFn, a: [f32; 3]) -> f32 {
-    match f {
-        CombineFn::Replace => a[0],
-        CombineFn::Modulate => a[0] * a[1],
-        CombineFn::Add => a[0] + a[1],
-        CombineFn::AddSigned => (a[0] + a[1]) + -0.5,
-        CombineFn::Interpolate => a[0] * a[2] + a[1] * (1.0 - a[2]),
-        CombineFn::Subtract => a[0] - a[1],
-        CombineFn::Dot3Rgb | CombineFn::Dot3Rgba => unreachable!("handled by the caller"),
-    }
-}
+mod eval;
+pub use eval::{sat, Inputs, Lane};
 
 #[cfg(test)]
 mod tests;

@@ -20,7 +20,8 @@
 //! - [`UnitPlan::sample_quad`]`(s, t)` samples a 2x2 quad (TL, TR, BL, BR, y-down) with one
 //!   LOD from TL/TR/BL, as llvmpipe does; [`UnitPlan::sample_one`] samples with a given
 //!   [`Lod`].
-//! - [`UnitPlan::env`]`(frag, tex, prev)` applies the unit's environment (f32, Mesa's order).
+//! - `UnitPlan::env.apply(frag, tex, prev, textures)` ([`env::Combine::apply`]) applies the
+//!   unit's environment (f32, Mesa's order).
 //!
 //! Coordinates are already divided by q (`s * (1/q)`). Returned colours are what the
 //! fragment shader sees: `u8 as f32 * (1/255)` on the 8-bit (AoS) path.

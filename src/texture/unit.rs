@@ -159,19 +159,4 @@ impl UnitPlan<'_> {
     pub fn sample_one(&self, s: f32, t: f32, lod: Lod) -> [f32; 4] {
         sample::sample(self, s, t, lod)
     }
-
-    /// Applies the unit's texture environment: `frag` is the primary colour, `tex` this
-    /// unit's texture value, `prev` the previous unit's output (the primary colour on the
-    /// first enabled unit), `textures` every active unit's texture value in plan order
-    /// (read only by a crossbar environment, [`super::env::Combine::crossbar`]).
-    #[inline(always)]
-    pub fn env(
-        &self,
-        frag: [f32; 4],
-        tex: [f32; 4],
-        prev: [f32; 4],
-        textures: &[[f32; 4]],
-    ) -> [f32; 4] {
-        self.env.apply(frag, tex, prev, textures)
-    }
 }

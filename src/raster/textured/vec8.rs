@@ -7,7 +7,8 @@
 //! the vector sampler declines) to
 //! [`crate::texture::fast::chunk_u8`], the array sampler, which gives the same bytes.
 
-use super::super::{prefetch_row, row_span};
+use super::super::prefetch_row;
+use super::super::row_pairs::RowPairs;
 use crate::fragment::simd_tex::{eval8, shade8, Row8, White};
 use crate::fragment::span::LANES;
 use crate::fragment::FragPlan;
@@ -118,15 +119,9 @@ pub(in crate::raster) unsafe fn rows<
         let lane_f = F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
         let one = F32x8::splat(1.0);
         let vary = &t.vary[VARY_TEX..];
-        let mut qy = b[1] & align;
-        while qy <= b[3] {
-            let spans = [row_span(t, b, qy), row_span(t, b, qy + 1)];
-            let lo = spans.iter().flatten().map(|s| s.0).min();
-            let hi = spans.iter().flatten().map(|s| s.1).max();
-            let (Some(lo), Some(hi)) = (lo, hi) else {
-                qy += 2;
-                continue;
-            };
+        for pair in RowPairs::new(std::array::from_ref(&t.edges), b, align) {
+            let (qy, lo, hi) = (pair.qy, pair.lo, pair.hi);
+            let spans = [pair.spans[0][0], pair.spans[1][0]];
             // The chunk rows two rows down: a sprite's rows lie a framebuffer row apart, and
             // without this the walk's first load of each chunk row waited on the cache
             // (sprites_10k at 1024², one thread: 52 → 39 ms).
@@ -202,7 +197,6 @@ pub(in crate::raster) unsafe fn rows<
                 }
                 x += LANES as i64;
             }
-            qy += 2;
         }
     }
 }

@@ -1,50 +1,45 @@
-//! [`Combine::apply`] on eight fragments at once: the same f32 operations in the same
-//! order (separate multiplies and adds, `fsat` as `maxps` with 0 then `minps` with 1,
-//! which is NaN → 0 and −0 → +0 like [`super::sat`]), one AVX2 register per channel.
-//! The general textured walk ([`crate::fragment::simd_gen`]) runs every unit's
-//! environment through it, whatever the mode, the combiner functions or the number of
-//! units.
+//! [`Combine::apply`] on eight fragments at once: the combiner's one implementation
+//! (generic over [`Lane`]) on AVX2 registers, one per channel. The same f32 operations
+//! in the same order (separate multiplies and adds, `fsat` as `maxps` with 0 then `minps`
+//! with 1, which is NaN → 0 and −0 → +0 like [`super::sat`]). The general textured walk
+//! ([`crate::fragment::simd_gen`]) runs every unit's environment through it, whatever the
+//! mode, the combiner functions or the number of units.
 
 #![cfg(target_arch = "x86_64")]
 
-use super::{Arg, Combine, CombineFn, Operand, Simple, Source};
+use super::{Combine, Inputs, Lane};
 use crate::simd::F32x8;
 
 /// Four channels (RGBA) of eight fragments.
 pub type Vec4 = [F32x8; 4];
 
-/// What eight fragments' combiner reads: the primary colour, this unit's texels, the
-/// previous unit's result and every active unit's texels (crossbar).
-#[derive(Clone, Copy)]
-pub struct Inputs8<'t> {
-    /// The primary colour.
-    pub frag: Vec4,
-    /// This unit's texture values.
-    pub tex: Vec4,
-    /// The previous unit's result (the primary colour on the first unit).
-    pub prev: Vec4,
-    /// Every active unit's texture values in slot order (read by GL_TEXTUREn sources).
-    pub textures: &'t [Vec4],
-}
+/// What eight fragments' combiner reads (see [`Inputs`]).
+pub type Inputs8<'t> = Inputs<'t, F32x8>;
 
-/// `fsat` on eight lanes.
-///
-/// # Safety
-/// AVX2 context.
-#[inline(always)]
-unsafe fn sat8(v: F32x8) -> F32x8 {
-    // SAFETY: the caller's AVX2 context.
-    unsafe { v.max(F32x8::zero()).min(F32x8::splat(1.0)) }
-}
-
-/// `1 − v` on eight lanes.
-///
-/// # Safety
-/// AVX2 context.
-#[inline(always)]
-unsafe fn one_minus(v: F32x8) -> F32x8 {
-    // SAFETY: the caller's AVX2 context.
-    unsafe { F32x8::splat(1.0).sub(v) }
+impl Lane for F32x8 {
+    #[inline(always)]
+    unsafe fn splat(v: f32) -> Self {
+        // SAFETY: the caller's AVX2 context.
+        unsafe { F32x8::splat(v) }
+    }
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        F32x8::add(self, o)
+    }
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        F32x8::sub(self, o)
+    }
+    #[inline(always)]
+    fn mul(self, o: Self) -> Self {
+        F32x8::mul(self, o)
+    }
+    #[inline(always)]
+    fn sat(self) -> Self {
+        // SAFETY: AVX2 as `self` proves.
+        let (zero, one) = unsafe { (F32x8::zero(), F32x8::splat(1.0)) };
+        self.max(zero).min(one)
+    }
 }
 
 impl Combine {
@@ -55,200 +50,14 @@ impl Combine {
     #[inline(always)]
     pub unsafe fn apply8(&self, inp: &Inputs8<'_>) -> Vec4 {
         // SAFETY: forwarded from the caller.
-        unsafe {
-            if let Some(sm) = &self.simple {
-                return self.apply_simple8(sm, inp);
-            }
-            self.apply_general8(inp)
-        }
-    }
-
-    /// [`Combine::apply_simple`] on eight fragments.
-    #[inline(always)]
-    unsafe fn apply_simple8(&self, sm: &Simple, inp: &Inputs8<'_>) -> Vec4 {
-        // SAFETY: the caller's AVX2 context.
-        unsafe {
-            let r0 = self.value8(sm.rgb.0, inp);
-            let a0 = self.value8(sm.a.0, inp)[3];
-            let mut out = [r0[0], r0[1], r0[2], a0];
-            if let Some(s1) = sm.rgb.1 {
-                let r1 = self.value8(s1, inp);
-                for c in 0..3 {
-                    out[c] = out[c].mul(r1[c]);
-                }
-            }
-            if let Some(s1) = sm.a.1 {
-                out[3] = out[3].mul(self.value8(s1, inp)[3]);
-            }
-            out
-        }
-    }
-
-    /// The value of source `s`.
-    #[inline(always)]
-    unsafe fn value8(&self, s: Source, inp: &Inputs8<'_>) -> Vec4 {
-        // SAFETY: the caller's AVX2 context.
-        unsafe {
-            match s {
-                Source::Texture => inp.tex,
-                Source::TextureN(n) => inp
-                    .textures
-                    .get(n as usize)
-                    .copied()
-                    .unwrap_or([F32x8::zero(); 4]),
-                Source::Constant => {
-                    let k = &self.color;
-                    [
-                        F32x8::splat(k[0]),
-                        F32x8::splat(k[1]),
-                        F32x8::splat(k[2]),
-                        F32x8::splat(k[3]),
-                    ]
-                }
-                Source::PrimaryColor => inp.frag,
-                Source::Previous => inp.prev,
-            }
-        }
-    }
-
-    /// Channel `ch` of argument `a`.
-    #[inline(always)]
-    unsafe fn arg8(&self, a: Arg, ch: usize, inp: &Inputs8<'_>) -> F32x8 {
-        // SAFETY: the caller's AVX2 context.
-        unsafe {
-            let v = self.value8(a.0, inp);
-            match a.1 {
-                Operand::SrcColor => v[ch],
-                Operand::OneMinusSrcColor => one_minus(v[ch]),
-                Operand::SrcAlpha => v[3],
-                Operand::OneMinusSrcAlpha => one_minus(v[3]),
-            }
-        }
-    }
-
-    /// The value x of a ONE_MINUS operand (its argument is `1 − x`).
-    #[inline(always)]
-    unsafe fn minus_of8(&self, a: Arg, ch: usize, inp: &Inputs8<'_>) -> Option<F32x8> {
-        // SAFETY: the caller's AVX2 context.
-        let v = unsafe { self.value8(a.0, inp) };
-        match a.1 {
-            Operand::OneMinusSrcColor => Some(v[ch]),
-            Operand::OneMinusSrcAlpha => Some(v[3]),
-            _ => None,
-        }
-    }
-
-    /// [`Combine::eval`] on eight fragments.
-    #[inline(always)]
-    unsafe fn eval8(
-        &self,
-        f: CombineFn,
-        args: &[Arg; 3],
-        ch: usize,
-        reassoc: bool,
-        inp: &Inputs8<'_>,
-    ) -> F32x8 {
-        // SAFETY: the caller's AVX2 context.
-        unsafe {
-            let mut a = [F32x8::zero(); 3];
-            for (i, ai) in a.iter_mut().enumerate().take(f.num_args()) {
-                *ai = self.arg8(args[i], ch, inp);
-            }
-            match f {
-                CombineFn::AddSigned if reassoc => match self.minus_of8(args[0], ch, inp) {
-                    // (0.5 + −x) + arg1
-                    Some(x) => F32x8::splat(0.5).sub(x).add(a[1]),
-                    // (arg0 + −0.5) + arg1
-                    None => a[0].sub(F32x8::splat(0.5)).add(a[1]),
-                },
-                CombineFn::Interpolate => match self.minus_of8(args[2], ch, inp) {
-                    Some(x) => a[0].mul(a[2]).add(a[1].mul(x)),
-                    None => combine8(f, a),
-                },
-                _ => combine8(f, a),
-            }
-        }
-    }
-
-    /// [`Combine::apply_general`] on eight fragments.
-    #[inline(always)]
-    unsafe fn apply_general8(&self, inp: &Inputs8<'_>) -> Vec4 {
-        // SAFETY: the caller's AVX2 context.
-        unsafe {
-            let (reassoc_rgb, reassoc_a) = self.reassoc;
-            let shift = self.scale_rgb != 1.0 || self.scale_a != 1.0;
-            let mut out = [F32x8::zero(); 4];
-            let dot3 = matches!(self.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
-            if dot3 {
-                let (two, m1) = (F32x8::splat(2.0), F32x8::splat(1.0));
-                let mut t0 = [F32x8::zero(); 3];
-                let mut t1 = [F32x8::zero(); 3];
-                for c in 0..3 {
-                    t0[c] = self.arg8(self.args_rgb[0], c, inp).mul(two).sub(m1);
-                    t1[c] = self.arg8(self.args_rgb[1], c, inp).mul(two).sub(m1);
-                }
-                let mut d = t0[0].mul(t1[0]).add(t0[1].mul(t1[1])).add(t0[2].mul(t1[2]));
-                if self.scale_rgb == 1.0 {
-                    d = sat8(d);
-                }
-                out[0] = d;
-                out[1] = d;
-                out[2] = d;
-                if self.mode_rgb == CombineFn::Dot3Rgba {
-                    out[3] = d;
-                }
-            } else {
-                for (c, o) in out.iter_mut().enumerate().take(3) {
-                    let mut v = self.eval8(self.mode_rgb, &self.args_rgb, c, reassoc_rgb, inp);
-                    if !shift && self.mode_rgb.saturates() {
-                        v = sat8(v);
-                    }
-                    *o = v;
-                }
-            }
-            if self.mode_rgb != CombineFn::Dot3Rgba {
-                let mut v = self.eval8(self.mode_a, &self.args_a, 3, reassoc_a, inp);
-                if !shift && self.mode_a.saturates() {
-                    v = sat8(v);
-                }
-                out[3] = v;
-            }
-            if shift {
-                let (srgb, sa) = (F32x8::splat(self.scale_rgb), F32x8::splat(self.scale_a));
-                for o in out.iter_mut().take(3) {
-                    *o = sat8(o.mul(srgb));
-                }
-                out[3] = sat8(out[3].mul(sa));
-            }
-            out
-        }
-    }
-}
-
-/// [`super::combine`] on eight fragments.
-///
-/// # Safety
-/// AVX2 context.
-#[inline(always)]
-unsafe fn combine8(f: CombineFn, a: [F32x8; 3]) -> F32x8 {
-    // SAFETY: the caller's AVX2 context.
-    unsafe {
-        match f {
-            CombineFn::Replace => a[0],
-            CombineFn::Modulate => a[0].mul(a[1]),
-            CombineFn::Add => a[0].add(a[1]),
-            CombineFn::AddSigned => a[0].add(a[1]).sub(F32x8::splat(0.5)),
-            CombineFn::Interpolate => a[0].mul(a[2]).add(a[1].mul(one_minus(a[2]))),
-            CombineFn::Subtract => a[0].sub(a[1]),
-            CombineFn::Dot3Rgb | CombineFn::Dot3Rgba => unreachable!("handled by the caller"),
-        }
+        unsafe { self.apply_lanes(inp) }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::super::super::BaseFormat;
-    use super::super::{EnvMode, TexEnv};
+    use super::super::{CombineFn, EnvMode, Operand, Source, TexEnv};
     use super::*;
 
     /// `apply8` of eight lanes, on a CPU with AVX2.
