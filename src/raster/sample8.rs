@@ -9,11 +9,18 @@
 //! - a seamless cube map with LINEAR filtering, mipmapped or not
 //!   ([`crate::texture::cube_avx2::Cube8`], MuJoCo's skybox): both rows at once, as the
 //!   per-pixel LOD reads each quad's two rows; the quads it leaves (a tap across a face
-//!   edge, a coordinate that is not finite) are sampled here by the quad sampler.
+//!   edge, a coordinate that is not finite) are sampled here by the quad sampler;
+//! - any other 2D texture on llvmpipe's float path (GL_CLAMP, CLAMP_TO_BORDER,
+//!   MIRRORED_REPEAT wraps, non-power-of-two REPEAT beside them, sRGB and signed texels)
+//!   without anisotropy ([`crate::texture::soa_avx2::Soa8`]): both rows at once, each
+//!   quad's LOD and levels from the scalar code, then one 8-lane pass per row for each
+//!   (filter, level) the quads select; the quads it leaves (a coordinate that is NaN,
+//!   infinite or of magnitude 2^16 or more) are sampled here by the quad sampler.
 //!
 //! These are the units of MuJoCo's multi-unit draws (the floor's mipmapped grid beside
 //! the shadow map on unit 1, the light passes' shadow map alone), which the one-unit
-//! fast path does not take, and of every textured multisample draw. The values are the
+//! fast path does not take, of every textured multisample draw, and the float-path units
+//! (wraps other than REPEAT and CLAMP_TO_EDGE) of every textured draw. The values are the
 //! general sampler's; only the number of instructions changes.
 //!
 //! Each instruction-set level with AVX2 has its own out-of-line copy (one call per unit
@@ -90,7 +97,9 @@ unsafe fn rows_body(
     c: &Rows<'_>,
     texels: &mut [TexLanes; 2],
 ) -> Option<u32> {
-    use crate::texture::{cube_avx2::Cube8, fast, sample, shadow_avx2::Shadow8, ExtKind};
+    use crate::texture::{
+        cube_avx2::Cube8, fast, sample, shadow_avx2::Shadow8, soa_avx2::Soa8, ExtKind,
+    };
     let Rows { s, t, r, live } = *c;
     let flat = matches!(u.ext.kind, ExtKind::Flat);
     if u.aos && u.dims == 2 && flat && r.is_none() {
@@ -123,6 +132,11 @@ unsafe fn rows_body(
         let [t0, t1] = texels;
         // SAFETY: forwarded from the caller.
         return Some(unsafe { cube.rows(s, t, r, live, [&mut t0[k], &mut t1[k]]) });
+    }
+    if let (None, Some(soa)) = (r, Soa8::of(u)) {
+        let [t0, t1] = texels;
+        // SAFETY: forwarded from the caller.
+        return Some(unsafe { soa.rows(s, t, live, [&mut t0[k], &mut t1[k]]) });
     }
     None
 }

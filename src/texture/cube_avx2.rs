@@ -22,7 +22,7 @@
 
 use super::cube::Faces;
 use super::lod::Lod;
-use super::sample::{select_levels, INV_255};
+use super::sample::select_levels;
 use super::{ExtKind, Filter, MipFilter, UnitPlan, MAX_LEVELS};
 use crate::simd::{F32x8, I32x8};
 
@@ -127,10 +127,7 @@ impl<'a> Cube8<'a> {
         live: &[[bool; 8]; 2],
         out: [&mut [[f32; 4]; 8]; 2],
     ) -> u32 {
-        let qlive = (0..4).fold(0u32, |m, j| {
-            let l = live[0][2 * j] || live[0][2 * j + 1] || live[1][2 * j] || live[1][2 * j + 1];
-            m | (u32::from(l) << j)
-        });
+        let qlive = super::soa_avx2::live_quads(live);
         if qlive == 0 {
             return 0;
         }
@@ -363,62 +360,28 @@ impl<'a> Cube8<'a> {
         }
     }
 
-    /// Eight packed texels as floats per channel (`texel_float`).
+    /// Eight packed texels as floats per channel (`texel_float`, through
+    /// [`super::soa_avx2::texels8`]).
     ///
     /// # Safety
     /// The CPU has AVX2.
     #[inline(always)]
     unsafe fn texels(&self, raw: &[u32; 8]) -> [F32x8; 4] {
         // SAFETY: forwarded from the caller; 8 lanes.
-        unsafe {
-            match self.p.ext.decode {
-                Some([rgb, a]) => {
-                    let mut v = [[0.0f32; 8]; 4];
-                    for c in 0..4 {
-                        let table = if c == 3 { a } else { rgb };
-                        for i in 0..8 {
-                            v[c][i] = table[(raw[i] >> (8 * c) & 0xff) as usize];
-                        }
-                    }
-                    [
-                        F32x8::load(v[0].as_ptr()),
-                        F32x8::load(v[1].as_ptr()),
-                        F32x8::load(v[2].as_ptr()),
-                        F32x8::load(v[3].as_ptr()),
-                    ]
-                }
-                None => {
-                    let v = I32x8::load(raw.as_ptr());
-                    let byte = I32x8::splat(0xff);
-                    let k = F32x8::splat(INV_255);
-                    [
-                        v.and(byte).to_f32().mul(k),
-                        v.shr::<8>().and(byte).to_f32().mul(k),
-                        v.shr::<16>().and(byte).to_f32().mul(k),
-                        v.shr::<24>().to_f32().mul(k),
-                    ]
-                }
-            }
-        }
+        unsafe { super::soa_avx2::texels8(self.p, I32x8::load(raw.as_ptr())) }
     }
 
     /// Channel `c` of the bilinear filter of taps `n` (n00, n01, n10, n11).
     #[inline(always)]
     fn bilerp(&self, wx: F32x8, wy: F32x8, n: &[[F32x8; 4]; 4], c: usize) -> F32x8 {
-        let r0 = self.lerp(wx, n[0][c], n[1][c]);
-        let r1 = self.lerp(wx, n[2][c], n[3][c]);
-        self.lerp(wy, r0, r1)
+        let n = [n[0][c], n[1][c], n[2][c], n[3][c]];
+        super::soa_avx2::bilerp(self.p.fma, wx, wy, n)
     }
 
     /// `lerpf(fma, w, a, b)` per lane.
     #[inline(always)]
     fn lerp(&self, w: F32x8, a: F32x8, b: F32x8) -> F32x8 {
-        if self.p.fma {
-            // SAFETY: `fma` is set only on CPUs with FMA (`sample::has_fma`).
-            unsafe { w.mul_add(b.sub(a), a) }
-        } else {
-            w.mul(b.sub(a)).add(a)
-        }
+        super::soa_avx2::lerp(self.p.fma, w, a, b)
     }
 }
 

@@ -69,6 +69,8 @@ pub mod sample;
 pub mod shadow;
 #[cfg(target_arch = "x86_64")]
 pub mod shadow_avx2;
+#[cfg(target_arch = "x86_64")]
+pub mod soa_avx2;
 pub mod srgb;
 pub mod unit;
 pub mod upload;
