@@ -168,6 +168,23 @@ pub(super) fn rows_tex_fast<
         }
         return;
     }
+    // A plan the register walk does not take (the stencil test, the alpha test, a partial
+    // colour mask: MuJoCo's reflective floor) shades through the general 8-wide walk,
+    // which computes the same bytes as this walk's per-lane shader, in registers.
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 && vector && general_ok(plan, fb) {
+        let units = std::slice::from_ref(u);
+        // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA
+        // exactly when `M::FUSED`.
+        unsafe {
+            if M::FUSED {
+                rows_general::<M, true, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            } else {
+                rows_general::<M, false, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            }
+        }
+        return;
+    }
     #[cfg(target_arch = "x86_64")]
     let over = plan
         .blend
@@ -284,6 +301,11 @@ pub(super) unsafe fn rows_general<
     // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
     for c in Chunks::new(t, b) {
+        // The same columns of the chunk rows two rows down, reached after this pair's span:
+        // the depth and colour loads of the floor's rows waited on the cache without this.
+        for py in c.qy + 2..c.qy + 4 {
+            super::prefetch_row(fb, py, c.x, c.x + LANES as i64 - 1, DEPTH, 1);
+        }
         // SAFETY: forwarded from the caller.
         let oow = unsafe { coords_and_sample::<M, FMA, PERSP>(t, units, &c, &mut texels) };
         for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {

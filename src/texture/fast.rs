@@ -318,7 +318,10 @@ fn vector_rows(
         a,
         b,
         linear: f == Filter::Linear,
-        wrap: [p.wrap_s, p.wrap_t],
+        wrap: [
+            fast_avx2::AxisWrap::of(p.wrap_s, p.pot[0]),
+            fast_avx2::AxisWrap::of(p.wrap_t, p.pot[1]),
+        ],
     };
     // A row that declines leaves `out` to the scalar code, which rewrites every live lane.
     for r in 0..2 {

@@ -4,7 +4,9 @@
 //! Per axis it computes llvmpipe's AoS coordinates with vector ops
 //! (`fx = round_half_even(s·size·256) − 128`, `i0 = fx >> 8`, `w = fx & 255`, REPEAT of a
 //! power-of-two size as `& (size − 1)`, CLAMP_TO_EDGE as a clamp; NEAREST as
-//! `floor(s·size)`), fetches the texels (LINEAR: each row's two texels as one 8-byte load
+//! `floor(s·size)`; REPEAT of a resource that is not a power of two on the axis as
+//! llvmpipe's `npot` code, [`super::wrap::aos_linear`] and [`super::wrap::aos_nearest`]
+//! on the fraction of `s`), fetches the texels (LINEAR: each row's two texels as one 8-byte load
 //! per pixel, [`quad_texels`]; NEAREST: `vpgatherdd`), and filters the four channels
 //! of every pixel in 16-bit fields with the 8-bit lerp `(a·(256 − w) + b·w + 128) >> 8`
 //! (x for both rows, then y, then the mip blend), exactly as [`super::fast::quad_u8`]
@@ -13,8 +15,8 @@
 //!
 //! It declines (returns `false`, and the caller samples the row with the scalar code)
 //! when a lane's scaled coordinate is not below 2^30 in magnitude or is NaN (where the
-//! float → int conversions of the two paths could differ), and for REPEAT of a size that
-//! is not a power of two. Its functions inline into the rasterizer's AVX2 entry points and
+//! float → int conversions of the two paths could differ), and for REPEAT of a level that
+//! is not a power of two on a resource that is. Its functions inline into the rasterizer's AVX2 entry points and
 //! run only when the CPU has AVX2 ([`available`]).
 
 #[cfg(target_arch = "x86_64")]
@@ -31,13 +33,39 @@ pub fn available() -> bool {
 }
 
 /// Whether the vector sampler handles a wrap mode on an axis: CLAMP_TO_EDGE, or REPEAT
-/// when llvmpipe picks its power-of-two code (`pot`) and the level is a power of two too.
+/// (llvmpipe's power-of-two code when the resource is a power of two on the axis, `pot`,
+/// and then the level must be one too; else its `npot` code, any size).
 #[inline(always)]
 pub fn handles(wrap: Wrap, pot: bool, size: usize) -> bool {
     match wrap {
         Wrap::ClampToEdge => true,
-        Wrap::Repeat => pot && size.is_power_of_two(),
+        Wrap::Repeat => !pot || size.is_power_of_two(),
         _ => false,
+    }
+}
+
+/// How the vector sampler wraps one axis: the wrap mode and, for REPEAT, which of
+/// llvmpipe's codes (chosen from the resource's level-0 size, see [`super::wrap`]).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum AxisWrap {
+    /// CLAMP_TO_EDGE.
+    Clamp,
+    /// REPEAT of a power-of-two resource: `& (size − 1)`.
+    RepeatPot,
+    /// REPEAT of a resource that is not a power of two: on the fraction of `s`.
+    RepeatNpot,
+}
+
+impl AxisWrap {
+    /// The form of `wrap` on an axis whose level-0 size is a power of two when `pot`, for
+    /// a wrap mode [`handles`] accepts.
+    #[inline(always)]
+    pub fn of(wrap: Wrap, pot: bool) -> Self {
+        match wrap {
+            Wrap::Repeat if pot => AxisWrap::RepeatPot,
+            Wrap::Repeat => AxisWrap::RepeatNpot,
+            _ => AxisWrap::Clamp,
+        }
     }
 }
 
@@ -52,7 +80,7 @@ pub struct RowSampler<'a> {
     /// LINEAR (else NEAREST) within each level.
     pub linear: bool,
     /// Wrap of s and t.
-    pub wrap: [Wrap; 2],
+    pub wrap: [AxisWrap; 2],
 }
 
 /// A level as the vector sampler reads it: its constants are computed once (per
@@ -103,7 +131,7 @@ unsafe fn axis(
     s: F32x8,
     lv: &LevelV<'_>,
     ax: usize,
-    wrap: Wrap,
+    wrap: AxisWrap,
     linear: bool,
     ok: &mut F32x8,
 ) -> (I32x8, I32x8, I32x8) {
@@ -124,7 +152,28 @@ unsafe fn axis(
                 }
             }
         }
-        let repeat = wrap == Wrap::Repeat;
+        if wrap == AxisWrap::RepeatNpot {
+            // `wrap::aos_linear` / `aos_nearest` on `f = s − floor(s)`: a finite `s` gives
+            // `f` in 0..=1, so `u` is below 2^30; NaN and infinities make the row decline.
+            let f = s.sub(s.floor());
+            if linear {
+                let u = f.mul(F32x8::splat(lv.size[ax])).mul(F32x8::splat(256.0));
+                *ok = (*ok).and(u.and(abs_mask).cmp_lt(limit));
+                let fx = u.to_i32().sub(I32x8::splat(128));
+                let w = fx.and(I32x8::splat(255));
+                // `fx ≥ −128`: `i0` is −1 (→ last, the unsigned minimum) or in 0..=size.
+                let i0 = fx.sra::<8>().min_u32(last);
+                let i1 = i0.add(I32x8::splat(1)).blendv(zero, i0.cmpeq(last));
+                return (i0, i1, w);
+            }
+            // `fract_safe` (the minimum returns its second operand for a NaN, as `f32::min`
+            // returns the number); the product truncated, then clamped.
+            let f = f.min(F32x8::splat(f32::from_bits(0x3f7f_ffff)));
+            let u = f.mul(F32x8::splat(lv.size[ax]));
+            *ok = (*ok).and(u.and(abs_mask).cmp_lt(limit));
+            return (wrap_index(u.to_i32_trunc(), false, last), zero, zero);
+        }
+        let repeat = wrap == AxisWrap::RepeatPot;
         if linear {
             let u = s.mul(F32x8::splat(lv.size256[ax]));
             // NaN compares false: such lanes make the row decline.
@@ -214,7 +263,7 @@ fn lerp_wide(a: Wide, b: Wide, w: U16x16) -> Wide {
 unsafe fn level8(
     lv: &LevelV<'_>,
     linear: bool,
-    wrap: [Wrap; 2],
+    wrap: [AxisWrap; 2],
     s: F32x8,
     t: F32x8,
     ok: &mut F32x8,
@@ -359,7 +408,7 @@ pub struct RowSamplerV<'a> {
     /// LINEAR (else NEAREST) within each level.
     pub linear: bool,
     /// Wrap of s and t.
-    pub wrap: [Wrap; 2],
+    pub wrap: [AxisWrap; 2],
 }
 
 impl RowSamplerV<'_> {

@@ -13,7 +13,7 @@
 use super::super::fast;
 use super::super::sample::select_levels;
 use super::super::{Filter, Level, Lod, MipFilter, UnitPlan};
-use super::{handles, LevelV, RowSamplerV};
+use super::{handles, AxisWrap, LevelV, RowSamplerV};
 use crate::fragment::span::LANES;
 use crate::simd::{F32x8, I32x8};
 
@@ -281,7 +281,10 @@ impl<'a> Sampling<'a> {
             a: LevelV::of(u.image(l0)),
             b: (l1 != l0).then(|| LevelV::of(u.image(l1))),
             linear: f == Filter::Linear,
-            wrap: [u.wrap_s, u.wrap_t],
+            wrap: [
+                AxisWrap::of(u.wrap_s, u.pot[0]),
+                AxisWrap::of(u.wrap_t, u.pot[1]),
+            ],
         }
     }
 
