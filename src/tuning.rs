@@ -37,6 +37,8 @@ pub const POOL_SPIN_US: u64 = 500;
 pub const GEOM_SECTION: usize = 4096;
 /// [`Tuning::split_probe`]'s default: triangles.
 pub const SPLIT_PROBE: usize = 1024;
+/// [`Tuning::engine`]'s default: whether the engine shades the general textured walk.
+pub const ENGINE: bool = false;
 /// The variable that caps the instruction set ([`Tuning::isa`]), for messages about it.
 pub const ISA_VAR: &str = "SOFTGL_ISA";
 
@@ -126,6 +128,10 @@ pub struct Tuning {
     /// `SOFTGL_TEX_PATH`: which texture paths are on (`general`, `array`). Default
     /// [`TexPath::Fast`]: all of them.
     pub tex_path: TexPath,
+    /// `SOFTGL_ENGINE`: whether the general textured walk shades through the engine
+    /// (`crate::engine::draw`) when the draw's state lowers. Default [`ENGINE`]; an
+    /// integer turns it on (not 0) or off (0).
+    pub engine: bool,
     /// `SOFTGL_STATS`: whether a context prints its work counters when it is destroyed
     /// (the first one also prints [`Tuning::report`]). Default off; any value but `0`
     /// turns it on.
@@ -173,6 +179,7 @@ impl Tuning {
                 Some("array") => TexPath::Array,
                 _ => TexPath::Fast,
             },
+            engine: int("SOFTGL_ENGINE").map_or(ENGINE, |v| v != 0),
             stats: get("SOFTGL_STATS").is_some_and(|v| v != "0"),
         }
     }
@@ -199,6 +206,7 @@ impl Tuning {
             split_probe,
             setup8,
             tex_path,
+            engine,
             stats,
         } = self;
         let given = |v: &Option<String>| {
@@ -224,6 +232,7 @@ impl Tuning {
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
+            ("SOFTGL_ENGINE", on(engine)),
             ("SOFTGL_STATS", on(stats)),
         ]
     }

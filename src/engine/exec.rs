@@ -11,6 +11,7 @@
 use super::ir::{Blend8, FCmp, Ir, Op};
 use super::kernels::{self, Kernel};
 use crate::cpu::Isa;
+use crate::fixed_function::fog::FogPlan;
 use crate::pipe::CompareFunc;
 
 /// The most chunks one batch runs (a register slot holds one 8-lane value per chunk).
@@ -53,6 +54,23 @@ pub struct Io<'a> {
     pub color: &'a mut [[u8; 4]],
     /// The depth buffer (may be empty when the program has no depth test).
     pub depth: &'a mut [u32],
+    /// The uniforms [`Op::Uniform`] reads (per-triangle values such as flat colours).
+    pub uniforms: &'a [f32],
+    /// Receives each chunk's live lanes after the program (bit i = lane i), when it is
+    /// at least as long as the chunks (left alone when empty).
+    pub live_out: &'a mut [u8],
+}
+
+/// What a run counted: the lanes [`Op::Kill`] cleared, and the depth test's reads and
+/// failures (as [`crate::stats::Stats`] counts them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// Live lanes cleared by [`Op::Kill`] (the alpha test).
+    pub killed: u64,
+    /// Live lanes that reached [`Op::DepthTest`].
+    pub depth_reads: u64,
+    /// Of those, the lanes that failed it.
+    pub depth_failed: u64,
 }
 
 /// The state a kernel sees: the register file, the batch, and the run's buffers.
@@ -70,6 +88,12 @@ pub struct Ctx<'a> {
     pub(super) inputs: &'a [&'a [[u32; 8]]],
     /// The program's blend plans.
     pub(super) blends: &'a [Blend8],
+    /// The program's fog plans.
+    pub(super) fogs: &'a [FogPlan],
+    /// The run's uniforms.
+    pub(super) uniforms: &'a [f32],
+    /// The run's counts so far.
+    pub(super) counts: Counts,
     /// The colour buffer and its length.
     pub(super) color: *mut u32,
     pub(super) color_len: usize,
@@ -94,7 +118,7 @@ impl Ctx<'_> {
 }
 
 /// The compare functions in the order of their codes in a step's immediate.
-const FUNCS: [CompareFunc; 8] = [
+pub(super) const FUNCS: [CompareFunc; 8] = [
     CompareFunc::Never,
     CompareFunc::Less,
     CompareFunc::Equal,
@@ -124,8 +148,10 @@ pub struct Program {
     body: Vec<Step>,
     slots: usize,
     blends: Vec<Blend8>,
+    fogs: Vec<FogPlan>,
     planes: usize,
     inputs: usize,
+    uniforms: usize,
     depth: bool,
 }
 
@@ -164,8 +190,10 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         body: Vec::new(),
         slots: 0,
         blends: Vec::new(),
+        fogs: Vec::new(),
         planes: 0,
         inputs: 0,
+        uniforms: 0,
         depth: false,
     };
     for (i, op) in ir.ops.iter().enumerate() {
@@ -211,16 +239,27 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         };
         let (k, imm): (Kernel, u32) = match *op {
             Op::Const(..) => unreachable!("handled above"),
+            Op::Fog(_, f) => {
+                p.fogs.push(f);
+                (t.fog, (p.fogs.len() - 1) as u32)
+            }
             Op::FragX => (t.frag_x, 0),
             Op::FragY => (t.frag_y, 0),
             Op::Interp(n) => {
                 p.planes = p.planes.max(n as usize + 1);
                 (t.interp, n as u32)
             }
-            Op::Input(n) => {
+            Op::Input(n) | Op::InputF(n) => {
                 p.inputs = p.inputs.max(n as usize + 1);
                 (t.input, n as u32)
             }
+            Op::Uniform(n) => {
+                p.uniforms = p.uniforms.max(n as usize + 1);
+                (t.uniform, n as u32)
+            }
+            Op::And(..) => (t.and, 0),
+            Op::Or(..) => (t.or, 0),
+
             Op::Add(..) => (t.add, 0),
             Op::Sub(..) => (t.sub, 0),
             Op::Mul(..) => (t.mul, 0),
@@ -307,9 +346,17 @@ impl Program {
     /// When a chunk's live lanes lie outside the colour buffer (or the depth buffer, when
     /// the program tests depth), when an input stream is shorter than `chunks`, or when
     /// the program names a plane or an input that `io` lacks.
-    pub fn run(&self, scratch: &mut Scratch, io: &mut Io<'_>, chunks: &[ChunkIn], batch: usize) {
+    pub fn run(
+        &self,
+        scratch: &mut Scratch,
+        io: &mut Io<'_>,
+        chunks: &[ChunkIn],
+        batch: usize,
+    ) -> Counts {
         let stride = batch.clamp(1, MAX_BATCH);
         assert!(io.planes.len() >= self.planes && io.inputs.len() >= self.inputs);
+        assert!(io.uniforms.len() >= self.uniforms);
+        let live_out = io.live_out.len() >= chunks.len();
         assert!(io.inputs.iter().all(|s| s.len() >= chunks.len()));
         for c in chunks {
             let end = c.idx + (8 - c.live.leading_zeros() as usize);
@@ -335,6 +382,9 @@ impl Program {
             planes: io.planes,
             inputs: io.inputs,
             blends: &self.blends,
+            fogs: &self.fogs,
+            uniforms: io.uniforms,
+            counts: Counts::default(),
             color: io.color.as_mut_ptr() as *mut u32,
             color_len: io.color.len(),
             depth: io.depth.as_mut_ptr(),
@@ -358,10 +408,24 @@ impl Program {
                 for s in &self.body {
                     (s.k)(&mut ctx, s);
                 }
+                if live_out {
+                    for k in 0..n {
+                        io.live_out[base + k] = live_bits(&*ctx.reg(0, k));
+                    }
+                }
                 base += n;
             }
         }
+        ctx.counts
     }
+}
+
+/// The live bits of a lane mask (bit i: lane i).
+#[inline(always)]
+fn live_bits(m: &[u32; 8]) -> u8 {
+    m.iter()
+        .enumerate()
+        .fold(0, |acc, (i, &v)| acc | (((v >> 31) as u8) << i))
 }
 
 /// The lane mask of 8 live bits.

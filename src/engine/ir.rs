@@ -18,6 +18,7 @@
 //!   quantised depth with the buffer's (and writes it where it passes), [`Op::LoadColor`],
 //!   [`Op::Blend`] (8-bit fixed point, docs/llvmpipe-rules.md) and [`Op::StoreColor`].
 
+use crate::fixed_function::fog::FogPlan;
 use crate::pipe::{BlendState, CompareFunc};
 
 /// The type of a value's lanes.
@@ -64,6 +65,11 @@ pub enum Op {
     Interp(u16),
     /// Input stream `n` of the run (one packed value per lane, e.g. RGBA8 texels).
     Input(u16),
+    /// Input stream `n` of the run as f32 lanes (e.g. one channel of sampled texels).
+    InputF(u16),
+    /// Uniform `n` of the run (a per-triangle f32, e.g. a flat-shaded colour) in every
+    /// lane.
+    Uniform(u16),
     /// `a + b`.
     Add(Val, Val),
     /// `a - b`.
@@ -88,6 +94,13 @@ pub enum Op {
     FCmp(FCmp, Val, Val),
     /// Integer comparison `a FUNC b` for values in `0..2^31` (GL's compare functions).
     ICmp(CompareFunc, Val, Val),
+    /// `a & b` (i32 or mask).
+    And(Val, Val),
+    /// `a | b` (i32 or mask).
+    Or(Val, Val),
+    /// The fog factor of the fog coordinate `a` per lane
+    /// ([`crate::fixed_function::fog::FogPlan::factor`], llvmpipe's polynomial `exp2`).
+    Fog(Val, FogPlan),
     /// Byte `n` (0 = lowest) of a packed value, as an integer.
     Byte(Val, u8),
     /// Byte `n` of a packed RGBA8 value as `u8 · f32(1/255)`.
@@ -120,7 +133,13 @@ impl Op {
     /// The operands, in order.
     pub fn operands(&self) -> Vec<Val> {
         match *self {
-            Op::Const(..) | Op::FragX | Op::FragY | Op::Interp(_) | Op::Input(_) => vec![],
+            Op::Const(..)
+            | Op::FragX
+            | Op::FragY
+            | Op::Interp(_)
+            | Op::Input(_)
+            | Op::InputF(_)
+            | Op::Uniform(_) => vec![],
             Op::LoadColor => vec![],
             Op::Add(a, b)
             | Op::Sub(a, b)
@@ -130,11 +149,16 @@ impl Op {
             | Op::Max(a, b)
             | Op::FCmp(_, a, b)
             | Op::ICmp(_, a, b)
+            | Op::And(a, b)
+            | Op::Or(a, b)
             | Op::Blend(_, a, b) => vec![a, b],
             Op::Mad(a, b, c) | Op::Select(a, b, c) => vec![a, b, c],
-            Op::Sat(a) | Op::CvtRne(a) | Op::Bits(a) | Op::Byte(a, _) | Op::UnpackUnorm8(a, _) => {
-                vec![a]
-            }
+            Op::Sat(a)
+            | Op::CvtRne(a)
+            | Op::Bits(a)
+            | Op::Fog(a, _)
+            | Op::Byte(a, _)
+            | Op::UnpackUnorm8(a, _) => vec![a],
             Op::Kill(a) | Op::StoreColor(a) | Op::DepthTest { z: a, .. } => vec![a],
             Op::PackUnorm8(v) => v.to_vec(),
         }
@@ -207,7 +231,7 @@ impl Builder {
         };
         Ok(Some(match *op {
             Op::Const(ty, _) => ty,
-            Op::FragX | Op::FragY | Op::Interp(_) => F32,
+            Op::FragX | Op::FragY | Op::Interp(_) | Op::InputF(_) | Op::Uniform(_) => F32,
             Op::Input(_) | Op::LoadColor => I32,
             Op::Add(a, b)
             | Op::Sub(a, b)
@@ -225,9 +249,15 @@ impl Builder {
                 }
                 F32
             }
-            Op::Sat(a) => {
+            Op::Sat(a) | Op::Fog(a, _) => {
                 want(a, F32, "f32 operand")?;
                 F32
+            }
+            Op::And(a, b) | Op::Or(a, b) => {
+                if !matches!(t(a), Some(I32 | Mask)) || t(a) != t(b) {
+                    return Err("i32 or mask operands of one type");
+                }
+                return Ok(t(a));
             }
             Op::CvtRne(a) | Op::Bits(a) => {
                 want(a, F32, "f32 operand")?;

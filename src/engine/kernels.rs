@@ -76,6 +76,8 @@ pub(super) trait Lanes {
     fn select(m: Self::I, a: Self::I, b: Self::I) -> Self::I;
     /// Whether any lane of the mask is set.
     fn any(m: Self::I) -> bool;
+    /// The number of set lanes of the mask.
+    fn count(m: Self::I) -> u32;
     /// The depth test at `p` (of which `avail` values lie in the buffer): returns the
     /// live lanes that pass, storing `q` there when `write`.
     unsafe fn depth(
@@ -236,6 +238,47 @@ mod body {
         });
     }
 
+    /// Uniform `imm` in every lane.
+    #[inline(always)]
+    pub(in super::super) unsafe fn uniform<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let u = c.uniforms[s.imm as usize];
+        each!(c, k, { V::st_f(c.reg(s.d, k), V::splat_f(u)) });
+    }
+
+    /// `a & b`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn and<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            V::st_i(c.reg(s.d, k), V::and(a, V::ld_i(c.reg(s.a[1], k))))
+        });
+    }
+
+    /// `a | b`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn or<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            V::st_i(c.reg(s.d, k), V::or(a, V::ld_i(c.reg(s.a[1], k))))
+        });
+    }
+
+    /// The fog factor of fog plan `imm`, lane by lane (the scalar function itself).
+    #[inline(always)]
+    pub(in super::super) unsafe fn fog<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let f = c.fogs[s.imm as usize];
+        // A loop, not `map` with a closure: a closure body is compiled without the
+        // kernel's target features, and the polynomial's `mul_add` became calls to `fmaf`.
+        each!(c, k, {
+            let a = *c.reg(s.a[0], k);
+            let mut out = [0u32; 8];
+            for (o, &v) in out.iter_mut().zip(a.iter()) {
+                *o = f.factor(f32::from_bits(v)).to_bits();
+            }
+            *c.reg(s.d, k) = out
+        });
+    }
+
     /// Byte `imm` as an integer.
     #[inline(always)]
     pub(in super::super) unsafe fn byte<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
@@ -289,7 +332,9 @@ mod body {
     pub(in super::super) unsafe fn kill<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
         each!(c, k, {
             let live = V::ld_i(c.reg(0, k));
-            V::st_i(c.reg(0, k), V::and(live, V::ld_i(c.reg(s.a[0], k))))
+            let kept = V::and(live, V::ld_i(c.reg(s.a[0], k)));
+            c.counts.killed += u64::from(V::count(live) - V::count(kept));
+            V::st_i(c.reg(0, k), kept)
         });
     }
 
@@ -307,6 +352,9 @@ mod body {
             let q = V::ld_i(c.reg(s.a[0], k));
             let p = c.depth.add(idx);
             let pass = V::depth(func, write, q, live, p, c.depth_len - idx);
+            let (n, m) = (V::count(live), V::count(pass));
+            c.counts.depth_reads += u64::from(n);
+            c.counts.depth_failed += u64::from(n - m);
             V::st_i(c.reg(0, k), pass)
         });
     }
@@ -353,9 +401,9 @@ mod body {
 /// [`Table`] and every level's module.
 macro_rules! kernel_list {
     ($cb:ident!($($pre:tt)*)) => {
-        $cb!($($pre)* constant, frag_x, frag_y, interp, input, add, sub, mul, div, min, max,
-            mad, sat, cvt, bits, fcmp, icmp, byte, unpack, pack, select, kill, depth, load_color,
-            blend, store_color);
+        $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
+            max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
+            depth, load_color, blend, store_color);
     };
 }
 

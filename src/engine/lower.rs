@@ -100,12 +100,7 @@ pub fn lower_textured(s: &TexturedState) -> Option<Ir> {
         }
     }
     let mut px = b.push(Op::PackUnorm8(c));
-    if let Some((func, reference)) = p.alpha {
-        let a = b.push(Op::Byte(px, 3));
-        let r = b.i32(reference as i32);
-        let m = b.push(Op::ICmp(func, a, r));
-        b.push(Op::Kill(m));
-    }
+    super::ff::alpha_test(&mut b, p, px);
     if let Some(d) = p.depth {
         let z = b.push(Op::Interp(PLANE_Z));
         let z = b.push(Op::Sat(z));

@@ -1,7 +1,10 @@
-//! The engine (issue 42, first step): a small typed IR for per-fragment work and the
-//! executor that runs it over 8-pixel chunks. Not wired into the draw path yet: the
-//! rasterizer still calls the hand-written fragment functions, and the tests here check
-//! that programs lowered from the same state give their bytes (see `docs/engine.md`).
+//! The engine (issue 42): a small typed IR for per-fragment work and the executor that
+//! runs it over 8-pixel chunks. Wired into the general textured walk: when
+//! `SOFTGL_ENGINE` is on and a draw's state lowers ([`ff`]), the rasterizer samples the
+//! units as before and hands each triangle's chunk rows with their texels to [`draw::Walk`],
+//! which runs the state's program from the per-thread variant [`cache`] (see
+//! `docs/engine.md`). The tests check the lowered programs against the hand-written
+//! fragment functions for the same states, bytes and counters.
 //!
 //! # Design
 //! - **IR** ([`ir`]): SSA values of 8 lanes, typed f32, i32 or mask; arithmetic defined
@@ -22,8 +25,13 @@
 //!   AVX2, AVX2+FMA; AVX-512 CPUs run the AVX2+FMA kernels), so the engine fuses exactly
 //!   where llvmpipe and today's code do and runs on any x86-64 (and other targets, on the
 //!   portable kernels).
-//! - **Lowering** ([`lower`]): the prototype's fixed-function state (one RGBA8 texture
-//!   with MODULATE, linear fog, alpha test, depth, blending, RGBA8 store) into the IR.
+//! - **Lowering**: [`ff`] lowers the general textured walk's per-fragment state (every
+//!   texture environment and GL_COMBINE on up to 8 units, the colour sum, fog of every
+//!   mode, alpha test, depth on Z16/Z24/Z32F, blending, colour mask, RGBA8 store);
+//!   [`lower`] is the prototype's state (kept for the executor's tests and benchmark).
+//! - **Variants** ([`cache`]): programs keyed by the state the lowering reads (the
+//!   fragment plan and the units' combiners), per thread, most recently used first;
+//!   `SOFTGL_STATS=1` prints compiles, refused states, hits and compile time.
 //!
 //! # Numbers
 //! Measured by the ignored test in `bench.rs` (AVX2+FMA, 2048 full chunks, medians of
@@ -36,16 +44,22 @@
 //! 3.7 times a batch of 32. Lowering and compiling one state takes 2.3–2.9 µs.
 //!
 //! # Not covered yet
-//! Texture sampling (the texels come from today's sampler as an input stream),
-//! derivatives and 2×2 quads, flat shading, stencil, logic ops, colour masks, other
-//! colour and depth formats, multisampling, statistics counters, the variant cache and
-//! the wiring into the rasterizer.
+//! Texture sampling (the texels come from today's samplers as f32 input streams),
+//! derivatives and 2×2 quads, stencil, logic ops, colour formats other than RGBA8, Z32
+//! unorm depth, multisampling, smooth lines and points, the texture fast path's states
+//! (one simple unit without fog, drawn by `raster/textured.rs`'s own walk), lines and
+//! points, and per-vertex work.
 
 #[cfg(test)]
 mod bench;
+pub mod cache;
+pub mod draw;
 pub mod exec;
+pub mod ff;
 pub mod ir;
 mod kernels;
 pub mod lower;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_ff;

@@ -260,6 +260,8 @@ pub(super) fn run_prepared(
         inputs: &inputs,
         color: &mut fb.color,
         depth: &mut fb.depth,
+        uniforms: &[],
+        live_out: &mut [],
     };
     prog.run(scratch, &mut io, &p.chunks, batch);
 }
@@ -414,6 +416,8 @@ fn eval_f32(
         inputs: &[],
         color: &mut color,
         depth: &mut [],
+        uniforms: &[],
+        live_out: &mut [],
     };
     prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
     let lanes = color.map(u32::from_le_bytes);

@@ -315,6 +315,7 @@ fn destroy(ctx: OSMesaContext) {
             });
             // SAFETY: no thread has this context current (checked above).
             eprintln!("softgl stats:\n{}", unsafe { &*c.ctx.get() }.stats.report());
+            eprintln!("{}", crate::engine::cache::report());
         }
         // SAFETY: unregistered above and current on no thread: nobody else can reach it.
         drop(unsafe { Box::from_raw(ctx) });

@@ -414,6 +414,9 @@ fn rows_textured<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
+    if textured::rows_engine::<M, AVX2, PERSP>(t, b, plan, units, fb, stats) {
+        return;
+    }
     // `AVX2` is a constant: the other levels' copies do not contain the 8-wide code.
     #[cfg(target_arch = "x86_64")]
     if AVX2 && textured::general_ok(plan, fb) {

@@ -323,6 +323,58 @@ pub(super) unsafe fn rows_general<
     }
 }
 
+/// The general textured walk through the engine ([`crate::engine::draw::Walk`]) when it
+/// is on and the draw's state lowers (else `false`, and nothing is drawn): the units are
+/// sampled as the walk that would draw the triangle today samples them (8-wide
+/// coordinates where [`general_ok`], else per lane), and the per-fragment work of each
+/// chunk row runs as the state's compiled program, a batch of rows at a time.
+#[inline(always)]
+pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) -> bool {
+    use crate::fragment::span::TexLanes;
+    use crate::pipe::MAX_TEXTURE_UNITS;
+    if !crate::engine::draw::enabled() {
+        return false;
+    }
+    let Some(mut w) = crate::engine::draw::Walk::new(plan, units, PERSP, fb) else {
+        return false;
+    };
+    w.begin(t);
+    #[cfg(target_arch = "x86_64")]
+    let wide = AVX2 && general_ok(plan, fb);
+    let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+    for c in Chunks::new(t, b) {
+        #[cfg(target_arch = "x86_64")]
+        if wide {
+            // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA
+            // exactly when `M::FUSED`.
+            unsafe {
+                if M::FUSED {
+                    coords_and_sample::<M, true, PERSP>(t, units, &c, &mut texels);
+                } else {
+                    coords_and_sample::<M, false, PERSP>(t, units, &c, &mut texels);
+                }
+            }
+        } else {
+            super::sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        super::sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
+        for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {
+            let py = (c.qy + r as i64) as usize;
+            w.row(t, fb, py, c.x as usize, live, tex, stats);
+        }
+    }
+    w.end(t, fb, stats);
+    true
+}
+
 /// `sample_chunk` of the 8-wide walk: every unit's projected coordinates of chunk `c` on
 /// 8 lanes (the scalar walk's operations: `1 / w`, each varying times it, `1 / q`, and
 /// s, t and r times that), then the unit sampled as that walk samples it

@@ -134,6 +134,10 @@ impl<const FUSED: bool> Lanes for Avx2<FUSED> {
         m.movemask() != 0
     }
     #[inline(always)]
+    fn count(m: I32x8) -> u32 {
+        m.movemask().count_ones()
+    }
+    #[inline(always)]
     unsafe fn depth(
         func: CompareFunc,
         write: bool,

@@ -155,6 +155,10 @@ impl<const FUSED: bool> Lanes for Portable<FUSED> {
         mk.iter().any(|&v| v != 0)
     }
     #[inline(always)]
+    fn count(mk: I) -> u32 {
+        mk.iter().filter(|&&v| v != 0).count() as u32
+    }
+    #[inline(always)]
     unsafe fn depth(
         func: CompareFunc,
         write: bool,

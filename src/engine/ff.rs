@@ -1,0 +1,455 @@
+//! Lowering of the general textured walk's per-fragment state into the IR: any number of
+//! units with any texture environment or GL_COMBINE state (the crossbar included), the
+//! separate specular colour, fog of every mode, the alpha test, the depth test on Z16,
+//! Z24 and Z32F buffers, blending, the colour mask and the RGBA8 store.
+//!
+//! The operations and their order are those of `fragment::simd_gen::colors8` and
+//! `shade_row` (and the per-lane `fragment::span::shade_chunk`, which they match): each
+//! varying is its plane, times `1 / w` when perspective-correct; every unit's combiner as
+//! [`Combine::apply`] evaluates it (separate multiplies and adds, `fsat` only where the
+//! function saturates or a scale applies, NIR's two rewrites); the colour sum and the fog
+//! mix unfused; the fog factor by [`crate::fixed_function::fog::FogPlan::factor`] itself
+//! ([`Op::Fog`]); unorm8 as clamp, ·255 and `cvtps2dq`.
+//!
+//! The program's inputs: the planes of [`super::lower::planes_of`], the units' texels as
+//! f32 input streams (unit k's channel c is stream `4k + c`), and the triangle's flat
+//! varyings ([`crate::geometry::setup::SetupTriangle::flat`]) as uniforms. The sampled
+//! values come from today's samplers; the per-fragment work after them is the program.
+
+use super::ir::{Builder, Ir, Op, Ty, Val};
+use super::lower::{PLANE_VARY, PLANE_W, PLANE_Z};
+use crate::fragment::FragPlan;
+use crate::framebuffer::DepthFormat;
+use crate::geometry::{VARY_FOG, VARY_SPEC};
+use crate::pipe::FogMode;
+use crate::texture::env::{Arg, Combine, CombineFn, Operand, Source};
+use std::collections::HashMap;
+
+/// What the lowering reads: the fragment plan, the units' combiners, whether varyings take
+/// the perspective divide. Per-triangle values (planes, flat colours, texels) are run
+/// inputs, so one program serves every triangle of a state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FfState {
+    /// The per-fragment plan.
+    pub plan: FragPlan,
+    /// The active units' combiners, in unit order (`units` of them).
+    pub envs: [Option<Combine>; crate::pipe::MAX_TEXTURE_UNITS],
+    /// The number of active units.
+    pub units: u8,
+    /// Perspective-correct varyings.
+    pub persp: bool,
+}
+
+/// Whether the lowering covers `plan` (stencil, logic ops, smoothing, multisampling, sRGB
+/// and Z32 unorm depth stay on the hand-written paths).
+pub fn covers(plan: &FragPlan) -> bool {
+    plan.stencil.is_none()
+        && plan.logic.is_none()
+        && plan.smooth.is_none()
+        && plan.ms.is_none()
+        && !plan.srgb
+        && plan.depth.is_none_or(|d| {
+            matches!(
+                d.format,
+                DepthFormat::Z24 | DepthFormat::Z16 | DepthFormat::Z32F
+            )
+        })
+}
+
+/// A builder that shares equal pure operations (constants, planes, arithmetic), so that
+/// e.g. `1 − x` of one operand is computed once, as the compiled shader's CSE does;
+/// sharing never changes a value.
+struct L {
+    b: Builder,
+    cse: HashMap<(u8, u32, u32, u32), Val>,
+    oow: Option<Val>,
+}
+
+impl L {
+    /// `op` through the CSE table when it is pure and simple.
+    fn op(&mut self, op: Op) -> Val {
+        let key = match op {
+            Op::Const(Ty::F32, v) => Some((0, v, 0, 0)),
+            Op::Const(Ty::I32, v) => Some((1, v, 0, 0)),
+            Op::Interp(n) => Some((2, n as u32, 0, 0)),
+            Op::InputF(n) => Some((3, n as u32, 0, 0)),
+            Op::Uniform(n) => Some((4, n as u32, 0, 0)),
+            Op::Add(a, b) => Some((5, a.0 as u32, b.0 as u32, 0)),
+            Op::Sub(a, b) => Some((6, a.0 as u32, b.0 as u32, 0)),
+            Op::Mul(a, b) => Some((7, a.0 as u32, b.0 as u32, 0)),
+            Op::Sat(a) => Some((8, a.0 as u32, 0, 0)),
+            _ => None,
+        };
+        match key {
+            Some(k) => {
+                if let Some(&v) = self.cse.get(&k) {
+                    return v;
+                }
+                let v = self.b.push(op);
+                self.cse.insert(k, v);
+                v
+            }
+            None => self.b.push(op),
+        }
+    }
+    fn k(&mut self, v: f32) -> Val {
+        self.op(Op::Const(Ty::F32, v.to_bits()))
+    }
+    fn add(&mut self, a: Val, b: Val) -> Val {
+        self.op(Op::Add(a, b))
+    }
+    fn sub(&mut self, a: Val, b: Val) -> Val {
+        self.op(Op::Sub(a, b))
+    }
+    fn mul(&mut self, a: Val, b: Val) -> Val {
+        self.op(Op::Mul(a, b))
+    }
+    fn sat(&mut self, a: Val) -> Val {
+        self.op(Op::Sat(a))
+    }
+    fn one_minus(&mut self, a: Val) -> Val {
+        let one = self.k(1.0);
+        self.sub(one, a)
+    }
+    /// Varying `k`: its plane, times `1 / w` when perspective-correct.
+    fn vary(&mut self, k: usize) -> Val {
+        let a = self.op(Op::Interp(PLANE_VARY + k as u16));
+        match self.oow {
+            Some(o) => self.mul(a, o),
+            None => a,
+        }
+    }
+}
+
+/// Four channels of eight fragments.
+type V4 = [Val; 4];
+
+/// What a unit's combiner reads.
+struct Inputs<'a> {
+    frag: V4,
+    tex: V4,
+    prev: V4,
+    /// Every unit's texels when some unit reads the crossbar, else none.
+    textures: &'a [V4],
+}
+
+/// `CombineFn::num_args` (private to the texture module).
+fn num_args(f: CombineFn) -> usize {
+    match f {
+        CombineFn::Replace => 1,
+        CombineFn::Interpolate => 3,
+        _ => 2,
+    }
+}
+
+/// `CombineFn::saturates`.
+fn saturates(f: CombineFn) -> bool {
+    !matches!(
+        f,
+        CombineFn::Replace | CombineFn::Modulate | CombineFn::Interpolate
+    )
+}
+
+/// The value of source `s`.
+fn value(l: &mut L, c: &Combine, s: Source, inp: &Inputs<'_>) -> V4 {
+    match s {
+        Source::Texture => inp.tex,
+        Source::TextureN(n) => match inp.textures.get(n as usize) {
+            Some(&v) => v,
+            None => [l.k(0.0); 4],
+        },
+        Source::Constant => c.color.map(|v| l.k(v)),
+        Source::PrimaryColor => inp.frag,
+        Source::Previous => inp.prev,
+    }
+}
+
+/// Channel `ch` of argument `a`.
+fn arg(l: &mut L, c: &Combine, a: Arg, ch: usize, inp: &Inputs<'_>) -> Val {
+    let v = value(l, c, a.0, inp);
+    match a.1 {
+        Operand::SrcColor => v[ch],
+        Operand::OneMinusSrcColor => l.one_minus(v[ch]),
+        Operand::SrcAlpha => v[3],
+        Operand::OneMinusSrcAlpha => l.one_minus(v[3]),
+    }
+}
+
+/// The value x of a ONE_MINUS operand (its argument is `1 − x`).
+fn minus_of(l: &mut L, c: &Combine, a: Arg, ch: usize, inp: &Inputs<'_>) -> Option<Val> {
+    let v = value(l, c, a.0, inp);
+    match a.1 {
+        Operand::OneMinusSrcColor => Some(v[ch]),
+        Operand::OneMinusSrcAlpha => Some(v[3]),
+        _ => None,
+    }
+}
+
+/// `Combine::eval` of one channel.
+fn eval(
+    l: &mut L,
+    c: &Combine,
+    f: CombineFn,
+    args: &[Arg; 3],
+    ch: usize,
+    reassoc: bool,
+    inp: &Inputs<'_>,
+) -> Val {
+    let mut a = [Val(0); 3];
+    for (i, ai) in a.iter_mut().enumerate().take(num_args(f)) {
+        *ai = arg(l, c, args[i], ch, inp);
+    }
+    match f {
+        CombineFn::AddSigned if reassoc => match minus_of(l, c, args[0], ch, inp) {
+            Some(x) => {
+                let h = l.k(0.5);
+                let d = l.sub(h, x);
+                l.add(d, a[1])
+            }
+            None => {
+                let h = l.k(0.5);
+                let d = l.sub(a[0], h);
+                l.add(d, a[1])
+            }
+        },
+        CombineFn::Interpolate => match minus_of(l, c, args[2], ch, inp) {
+            Some(x) => {
+                let p = l.mul(a[0], a[2]);
+                let q = l.mul(a[1], x);
+                l.add(p, q)
+            }
+            None => combine(l, f, a),
+        },
+        _ => combine(l, f, a),
+    }
+}
+
+/// `combine` of one channel's arguments.
+fn combine(l: &mut L, f: CombineFn, a: [Val; 3]) -> Val {
+    match f {
+        CombineFn::Replace => a[0],
+        CombineFn::Modulate => l.mul(a[0], a[1]),
+        CombineFn::Add => l.add(a[0], a[1]),
+        CombineFn::AddSigned => {
+            let s = l.add(a[0], a[1]);
+            let h = l.k(0.5);
+            l.sub(s, h)
+        }
+        CombineFn::Interpolate => {
+            let p = l.mul(a[0], a[2]);
+            let m = l.one_minus(a[2]);
+            let q = l.mul(a[1], m);
+            l.add(p, q)
+        }
+        CombineFn::Subtract => l.sub(a[0], a[1]),
+        CombineFn::Dot3Rgb | CombineFn::Dot3Rgba => unreachable!("handled by the caller"),
+    }
+}
+
+/// [`Combine::apply`] of one unit.
+fn apply(l: &mut L, c: &Combine, inp: &Inputs<'_>) -> V4 {
+    if let Some(sm) = &c.simple {
+        let r0 = value(l, c, sm.rgb.0, inp);
+        let a0 = value(l, c, sm.a.0, inp)[3];
+        let mut out = [r0[0], r0[1], r0[2], a0];
+        if let Some(s1) = sm.rgb.1 {
+            let r1 = value(l, c, s1, inp);
+            for ch in 0..3 {
+                out[ch] = l.mul(out[ch], r1[ch]);
+            }
+        }
+        if let Some(s1) = sm.a.1 {
+            let a1 = value(l, c, s1, inp)[3];
+            out[3] = l.mul(out[3], a1);
+        }
+        return out;
+    }
+    let (reassoc_rgb, reassoc_a) = c.reassoc;
+    let shift = c.scale_rgb != 1.0 || c.scale_a != 1.0;
+    let mut out = [Val(0); 4];
+    if matches!(c.mode_rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba) {
+        let (two, m1) = (l.k(2.0), l.k(1.0));
+        let mut t = [[Val(0); 3]; 2];
+        for (i, ti) in t.iter_mut().enumerate() {
+            for (ch, v) in ti.iter_mut().enumerate() {
+                let a = arg(l, c, c.args_rgb[i], ch, inp);
+                let a2 = l.mul(a, two);
+                *v = l.sub(a2, m1);
+            }
+        }
+        let p0 = l.mul(t[0][0], t[1][0]);
+        let p1 = l.mul(t[0][1], t[1][1]);
+        let p2 = l.mul(t[0][2], t[1][2]);
+        let s = l.add(p0, p1);
+        let mut d = l.add(s, p2);
+        if c.scale_rgb == 1.0 {
+            d = l.sat(d);
+        }
+        out = [d, d, d, out[3]];
+        if c.mode_rgb == CombineFn::Dot3Rgba {
+            out[3] = d;
+        }
+    } else {
+        for (ch, o) in out.iter_mut().enumerate().take(3) {
+            let mut v = eval(l, c, c.mode_rgb, &c.args_rgb, ch, reassoc_rgb, inp);
+            if !shift && saturates(c.mode_rgb) {
+                v = l.sat(v);
+            }
+            *o = v;
+        }
+    }
+    if c.mode_rgb != CombineFn::Dot3Rgba {
+        let mut v = eval(l, c, c.mode_a, &c.args_a, 3, reassoc_a, inp);
+        if !shift && saturates(c.mode_a) {
+            v = l.sat(v);
+        }
+        out[3] = v;
+    }
+    if shift {
+        let (sr, sa) = (l.k(c.scale_rgb), l.k(c.scale_a));
+        for o in out.iter_mut().take(3) {
+            let m = l.mul(*o, sr);
+            *o = l.sat(m);
+        }
+        let m = l.mul(out[3], sa);
+        out[3] = l.sat(m);
+    }
+    out
+}
+
+/// The alpha test on the packed colour `px`: kills the lanes whose alpha byte fails.
+pub(super) fn alpha_test(b: &mut Builder, p: &FragPlan, px: Val) {
+    if let Some((func, reference)) = p.alpha {
+        let a = b.push(Op::Byte(px, 3));
+        let r = b.i32(reference as i32);
+        let m = b.push(Op::ICmp(func, a, r));
+        b.push(Op::Kill(m));
+    }
+}
+
+/// The IR of `s` (see the module doc), or `None` when [`covers`] refuses its plan.
+pub fn lower(s: &FfState) -> Option<Ir> {
+    let p = &s.plan;
+    if !covers(p) {
+        return None;
+    }
+    let mut l = L {
+        b: Builder::new(),
+        cse: HashMap::new(),
+        oow: None,
+    };
+    if s.persp {
+        let one = l.k(1.0);
+        let w = l.op(Op::Interp(PLANE_W));
+        l.oow = Some(l.b.push(Op::Div(one, w)));
+    }
+    let mut frag = [Val(0); 4];
+    for (ch, f) in frag.iter_mut().enumerate() {
+        *f = if p.flat {
+            l.op(Op::Uniform(ch as u16))
+        } else {
+            l.vary(ch)
+        };
+    }
+    let n = s.units as usize;
+    let texs: Vec<V4> = (0..n)
+        .map(|k| std::array::from_fn(|ch| l.op(Op::InputF((4 * k + ch) as u16))))
+        .collect();
+    let crossbar = s.envs[..n].iter().flatten().any(|c| c.crossbar);
+    let mut prev = frag;
+    for (k, env) in s.envs[..n].iter().enumerate() {
+        let env = env.as_ref()?;
+        let inp = Inputs {
+            frag,
+            tex: texs[k],
+            prev,
+            textures: if crossbar { &texs } else { &[] },
+        };
+        prev = apply(&mut l, env, &inp);
+    }
+    if p.separate_specular {
+        for (ch, c) in prev.iter_mut().enumerate().take(3) {
+            let k = VARY_SPEC + ch;
+            let sv = if p.flat && k < VARY_FOG {
+                l.op(Op::Uniform(k as u16))
+            } else {
+                l.vary(k)
+            };
+            *c = l.add(*c, sv);
+        }
+    }
+    if let Some(fog) = &p.fog {
+        let coord = l.vary(VARY_FOG);
+        let f = if fog.mode == FogMode::Linear {
+            // `factor`'s LINEAR branch: coord · scale + bias unfused, then `fsat`, whose
+            // NaN → 0 and −0 → +0 are `Sat`'s.
+            let (scale, bias) = (l.k(fog.scale), l.k(fog.bias));
+            let m = l.mul(coord, scale);
+            let a = l.add(m, bias);
+            l.sat(a)
+        } else {
+            l.b.push(Op::Fog(coord, *fog))
+        };
+        let g = l.one_minus(f);
+        for (ch, c) in prev.iter_mut().enumerate().take(3) {
+            let k = l.k(fog.color[ch]);
+            let kg = l.mul(k, g);
+            let cf = l.mul(*c, f);
+            *c = l.add(kg, cf);
+        }
+    }
+    let b = &mut l.b;
+    let px = b.push(Op::PackUnorm8(prev));
+    alpha_test(b, p, px);
+    if let Some(d) = p.depth {
+        let z = b.push(Op::Interp(PLANE_Z));
+        let z = b.push(Op::Sat(z));
+        let q = match d.format {
+            DepthFormat::Z24 => {
+                let scale = b.f32(16_777_215.0);
+                let z = b.mul(z, scale);
+                b.push(Op::CvtRne(z))
+            }
+            DepthFormat::Z32F => b.push(Op::Bits(z)),
+            DepthFormat::Z16 => {
+                // f32(f32(z · 65535/65536) + 128) keeps the rounded value in the low bits.
+                let (k, h) = (b.f32(65535.0 / 65536.0), b.f32(128.0));
+                let v = b.mul(z, k);
+                let v = b.add(v, h);
+                let v = b.push(Op::Bits(v));
+                let m = b.i32(0xFFFF);
+                b.push(Op::And(v, m))
+            }
+            _ => return None,
+        };
+        b.push(Op::DepthTest {
+            func: d.func,
+            write: d.write,
+            z: q,
+        });
+    }
+    let mut mask = 0u32;
+    for (ch, &m) in p.color_mask.iter().enumerate() {
+        if m {
+            mask |= 0xFF << (8 * ch);
+        }
+    }
+    if mask != 0 {
+        let full = mask == u32::MAX;
+        let mut out = px;
+        if p.blend.is_some() || !full {
+            let dst = b.push(Op::LoadColor);
+            if let Some(bl) = p.blend {
+                out = b.push(Op::Blend(bl, px, dst));
+            }
+            if !full {
+                let (m, keep) = (b.i32(mask as i32), b.i32(!mask as i32));
+                let o = b.push(Op::And(out, m));
+                let d = b.push(Op::And(dst, keep));
+                out = b.push(Op::Or(o, d));
+            }
+        }
+        b.push(Op::StoreColor(out));
+    }
+    l.b.finish().ok()
+}
