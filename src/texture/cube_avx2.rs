@@ -372,10 +372,9 @@ impl<'a> Cube8<'a> {
         // SAFETY: forwarded from the caller; 8 lanes.
         unsafe {
             match self.p.ext.decode {
-                Some([rgb, a]) => {
+                Some(tables) => {
                     let mut v = [[0.0f32; 8]; 4];
-                    for c in 0..4 {
-                        let table = if c == 3 { a } else { rgb };
+                    for (c, table) in tables.iter().enumerate() {
                         for i in 0..8 {
                             v[c][i] = table[(raw[i] >> (8 * c) & 0xff) as usize];
                         }
