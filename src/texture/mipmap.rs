@@ -8,6 +8,9 @@
 //! (for power-of-two sizes a chain of `v0 + ((128·(v1 − v0) + 128) >> 8)` lerps, not an
 //! exact box average). Verified bit-exact against Mesa 22.3 (glGetTexImage of levels of
 //! 4x4, 5x3, 8x2, 3x3, 7x7 and 1x6 random RGBA8 textures).
+//! A level stored with fewer than 8 bits per component gets the value as llvmpipe's
+//! fragment output converts it into that format ([`super::upload::render_quantise_u8`]:
+//! 5 to 7 bits truncate, 4 round; scene `tex_small_formats_wrap`).
 
 use super::sample::lerp8;
 use super::Level;
@@ -53,8 +56,9 @@ pub fn downsample(src: &Level) -> Level {
                 let r1 = lerp8(c[ch], d[ch], wx);
                 lerp8(r0, r1, wy)
             });
-            // the blit writes into the level's own storage format (e.g. RGBA4)
-            texels.push(super::upload::quantise_rgba(v, &src.storage));
+            // the blit writes into the level's own storage format (e.g. RGB5) as a fragment
+            // output converts to it (`upload::render_quantise_u8`)
+            texels.push(super::upload::render_quantise_rgba(v, &src.storage));
         }
     }
     Level::derived(src, dw, dh, texels)

@@ -745,6 +745,18 @@ impl TextureState {
         // a depth texture is always sampled on the float path
         // float and 16-bit textures: float texels, filtered on the float path
         let floats = base_img.storage.has_floats();
+        // components of fewer than 8 bits have float values of their own on the float path
+        let narrow = match base_img.blocks {
+            None => unit::narrow_decode(&base_img.storage),
+            Some(_) => None,
+        };
+        // llvmpipe picks its path before a nearest-only GL_CLAMP acts as CLAMP_TO_EDGE
+        // ("could force CLAMP to CLAMP_TO_EDGE ... not sure it's worth the trouble",
+        // lp_bld_sample_soa.c): GL_CLAMP samples on the float path. 8-bit texels give the
+        // same nearest value on both paths and stay on the 8-bit one; narrow ones cannot.
+        let clamp_float = narrow.is_some()
+            && target != Target::Cube
+            && [p.wrap_s, p.wrap_t, p.wrap_r][..dims as usize].contains(&Wrap::Clamp);
         let aos = depth.is_none()
             && decode.is_none()
             && !floats
@@ -752,7 +764,9 @@ impl TextureState {
             && wrap_t.is_simple()
             && (dims < 3 || wrap_r.is_simple())
             && !aniso
-            && !seamless;
+            && !seamless
+            && !clamp_float;
+        let decode = if aos { None } else { decode.or(narrow) };
         let lod = LodParams::new(p, u.lod_bias, dims == 1);
         let border = base.swizzle(p.border_color, 0.0, 1.0);
         let needs_lod = !(p.min_filter == p.mag_filter && p.mip_filter == MipFilter::None);

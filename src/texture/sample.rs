@@ -54,16 +54,13 @@ pub(crate) fn to_float(v: [u8; 4]) -> [f32; 4] {
 }
 
 /// A texel as the float (SoA) path sees it: `u·f32(1/255)`, or through the plan's decode
-/// tables (sRGB, signed; [`super::PlanExt::decode`]).
+/// tables (sRGB, signed, components of fewer than 8 bits; [`super::PlanExt::decode`]).
+/// The one conversion of stored bytes to floats on that path: every float sampler uses it
+/// or the same tables.
 #[inline(always)]
 pub(crate) fn texel_float(p: &UnitPlan<'_>, v: [u8; 4]) -> [f32; 4] {
     match p.ext.decode {
-        Some([rgb, a]) => [
-            rgb[v[0] as usize],
-            rgb[v[1] as usize],
-            rgb[v[2] as usize],
-            a[v[3] as usize],
-        ],
+        Some(t) => each4!(|c| t[c][v[c] as usize]),
         None => to_float(v),
     }
 }

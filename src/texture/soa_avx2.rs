@@ -321,13 +321,13 @@ pub(super) unsafe fn texels8(p: &UnitPlan<'_>, raw: I32x8) -> [F32x8; 4] {
             raw.shr::<24>(),
         ];
         match p.ext.decode {
-            Some([rgb, a]) => {
-                let (rgb, a) = (rgb.as_ptr() as *const i32, a.as_ptr() as *const i32);
+            Some(t) => {
+                let table = |k: usize| t[k].as_ptr() as *const i32;
                 [
-                    I32x8::gather(rgb, c[0]).as_f32(),
-                    I32x8::gather(rgb, c[1]).as_f32(),
-                    I32x8::gather(rgb, c[2]).as_f32(),
-                    I32x8::gather(a, c[3]).as_f32(),
+                    I32x8::gather(table(0), c[0]).as_f32(),
+                    I32x8::gather(table(1), c[1]).as_f32(),
+                    I32x8::gather(table(2), c[2]).as_f32(),
+                    I32x8::gather(table(3), c[3]).as_f32(),
                 ]
             }
             None => {

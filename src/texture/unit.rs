@@ -12,25 +12,70 @@ pub struct PlanExt<'a> {
     pub kind: ExtKind<'a>,
     /// A depth texture's comparison and mode.
     pub depth: Option<shadow::DepthPlan>,
-    /// The float value of each byte of R, G, B (`[0]`) and of A (`[1]`) for textures
-    /// that are not unorm8: sRGB ones (see [`srgb`]) and signed ones (see
-    /// [`compressed`]); such a plan is never `aos`.
-    pub decode: Option<[&'static [f32; 256]; 2]>,
+    /// The float value of each byte of R, G, B and A (one table per component) for
+    /// textures that are not plain unorm8 on the float path: sRGB ones (see [`srgb`]),
+    /// signed ones (see [`compressed`]), and those stored with components of fewer than 8
+    /// bits ([`narrow_decode`]). Every float-path texel conversion goes through these
+    /// tables ([`sample::texel_float`]); a plan with sRGB or signed ones is never `aos`,
+    /// and an `aos` plan has none.
+    pub decode: Option<Decode>,
     /// The texture keeps float values ([`super::float`]): texels are read from
     /// [`Level::floats`]; such a plan is never `aos`.
     pub floats: bool,
 }
 
-/// The per-byte decode tables of an image's encoding ([`PlanExt::decode`]).
-pub(super) fn texel_decode(encoding: Encoding) -> Option<[&'static [f32; 256]; 2]> {
+/// The float value of each stored byte, per component R, G, B, A ([`PlanExt::decode`]).
+pub type Decode = [&'static [f32; 256]; 4];
+
+/// The per-byte decode tables of an image's encoding ([`PlanExt::decode`]): sRGB and
+/// signed images, which llvmpipe always samples on its float path.
+pub(super) fn texel_decode(encoding: Encoding) -> Option<Decode> {
     match encoding {
         Encoding::Srgb | Encoding::SrgbBlocks => {
-            Some([srgb::table(sample::has_fma()), compressed::unorm_table()])
+            let rgb = srgb::table(sample::has_fma());
+            Some([rgb, rgb, rgb, compressed::unorm_table()])
         }
-        Encoding::Snorm => Some([compressed::snorm_table(); 2]),
+        Encoding::Snorm => Some([compressed::snorm_table(); 4]),
         // float and 16-bit images are read from their float values instead
         Encoding::Unorm | Encoding::Float | Encoding::Unorm16 => None,
     }
+}
+
+/// The decode tables of an uncompressed unorm image stored with components of fewer than
+/// 8 bits (GL_R3_G3_B2, GL_RGB5, GL_RGB5_A1, GL_RGBA4, 5_6_5, the 2 alpha bits of
+/// GL_RGB10_A2 …; [`Storage::bits`]) on llvmpipe's float path, `None` when every component
+/// has 8 bits or more. llvmpipe fetches such a texel from its packed format and converts
+/// each n-bit component c as `float(c) · f32(1/(2^n − 1))` (`lp_bld_format_soa.c`,
+/// `lp_build_extract_soa_chan` → `lp_build_unsigned_norm_to_float`), where softgl keeps
+/// the bit-replicated byte; its 8-bit path (and glGetTexImage) sees that byte.
+pub(super) fn narrow_decode(storage: &Storage) -> Option<Decode> {
+    if storage.encoding != Encoding::Unorm {
+        return None;
+    }
+    let bits = storage.bits();
+    if bits.iter().all(|&b| b >= 8) {
+        return None;
+    }
+    Some(bits.map(narrow_table))
+}
+
+/// The float value of each byte holding an n-bit component ([`narrow_decode`]): the
+/// component `c = round(u·(2^n − 1)/255)` (exactly the stored c for the bit-replicated
+/// bytes uploads keep, `upload::quantise_u8`) as `float(c) · f32(1/(2^n − 1))`;
+/// `u · f32(1/255)` for 8 bits and more.
+pub fn narrow_table(bits: u32) -> &'static [f32; 256] {
+    static T: std::sync::OnceLock<[[f32; 256]; 7]> = std::sync::OnceLock::new();
+    if !(1..8).contains(&bits) {
+        return compressed::unorm_table();
+    }
+    let tables = T.get_or_init(|| {
+        std::array::from_fn(|k| {
+            let max = (1u32 << (k + 1)) - 1;
+            let scale = (1.0f64 / max as f64) as f32;
+            std::array::from_fn(|u| ((u as u32 * max + 127) / 255) as f32 * scale)
+        })
+    });
+    &tables[bits as usize - 1]
 }
 
 /// The sampling kind of a unit's target.

@@ -78,6 +78,31 @@ pub fn quantise_rgba(rgba: [u8; 4], storage: &Storage) -> [u8; 4] {
     std::array::from_fn(|c| quantise_u8(rgba[c], bits[c]))
 }
 
+/// An 8-bit fragment value written into a component of `bits` bits, as llvmpipe's fragment
+/// output converts its unorm8 blend type (`lp_state_fs.c`, `scale_bits`, "wrong
+/// rounding"), expanded back by bit replication: 4 bits round (through float); 5 to 7 bits
+/// truncate (`x >> (8 − n)`); 1 to 3 bits take `((x >> n)·(2^n − 1) + 2^(7−n)) >> (8 − n)`.
+/// This is how GL_GENERATE_MIPMAP's blit stores a level (`mipmap`).
+#[inline]
+pub fn render_quantise_u8(x: u8, bits: u32) -> u8 {
+    let delta = 8u32.saturating_sub(bits);
+    let c = match bits {
+        8.. => return x,
+        4 => return quantise_u8(x, 4),
+        5..=7 => x as u32 >> delta,
+        _ => ((x as u32 >> bits) * ((1 << bits) - 1) + (1 << (delta - 1))) >> delta,
+    };
+    unorm_to_u8(c as u64, bits)
+}
+
+/// [`render_quantise_u8`] of each component at the storage precision (a generated mipmap
+/// level).
+#[inline]
+pub fn render_quantise_rgba(rgba: [u8; 4], storage: &Storage) -> [u8; 4] {
+    let bits = storage.bits();
+    std::array::from_fn(|c| render_quantise_u8(rgba[c], bits[c]))
+}
+
 /// Reduces client RGBA to the base format's stored (swizzled) texel.
 #[inline]
 pub fn to_texel(base: BaseFormat, rgba: [u8; 4]) -> [u8; 4] {
@@ -116,5 +141,21 @@ mod tests {
         assert_eq!(unorm_to_u8(1, 1), 255);
         assert_eq!(unorm_to_u8(7, 3), 255);
         assert_eq!(unorm_to_u8(1, 3), 36);
+    }
+
+    #[test]
+    fn render_quantise_follows_scale_bits() {
+        // 5 and 6 bits truncate: 8i + 7 stores i (as the RGB565 window buffer measured)
+        assert_eq!(render_quantise_u8(8 * 9 + 7, 5), unorm_to_u8(9, 5));
+        assert_eq!(render_quantise_u8(4 * 9 + 3, 6), unorm_to_u8(9, 6));
+        // 3 bits: ((x >> 3)·7 + 16) >> 5
+        assert_eq!(render_quantise_u8(255, 3), 255);
+        assert_eq!(render_quantise_u8(146, 3), unorm_to_u8(4, 3)); // (18·7 + 16) >> 5 = 4
+        assert_eq!(render_quantise_u8(145, 3), unorm_to_u8(4, 3));
+        assert_eq!(quantise_u8(145, 3), unorm_to_u8(4, 3));
+        assert_eq!(render_quantise_u8(127, 2), unorm_to_u8(1, 2)); // (31·3 + 32) >> 6 = 1
+                                                                   // 4 bits round as texstore does; 8 bits pass
+        assert_eq!(render_quantise_u8(8, 4), quantise_u8(8, 4));
+        assert_eq!(render_quantise_u8(77, 8), 77);
     }
 }

@@ -64,7 +64,7 @@ pub fn downsample(src: &Level, d: usize) -> (Level, usize) {
                 };
                 let (a, b) = (slice(z0), slice(z1));
                 let v = std::array::from_fn(|c| lerp8(a[c], b[c], wz));
-                texels.push(super::upload::quantise_rgba(v, &src.storage));
+                texels.push(super::upload::render_quantise_rgba(v, &src.storage));
             }
         }
     }

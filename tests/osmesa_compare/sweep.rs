@@ -34,36 +34,6 @@ struct Class {
     cause: &'static str,
 }
 
-/// Textures of 3- and 5-bit channels (GL_R3_G3_B2, GL_RGB5, GL_RGB5_A1) sampled by
-/// llvmpipe's general path. Probed (a 16x16 texture of each format under every environment
-/// and filter): uploads read back identically with glGetTexImage, and GL_RGBA4 and GL_RGBA8
-/// always match; GL_RGB5 matches with GL_REPEAT on a power-of-two texture but differs with
-/// GL_CLAMP, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT and on a 37x21 texture, under every
-/// environment and filter. That fits llvmpipe's two sampling paths: the one it takes for
-/// REPEAT on power-of-two sizes widens a channel to 8 bits by bit replication (what softgl
-/// does everywhere), the general one converts it to float as c / (2^n - 1) exactly (c = 3 of
-/// 5 bits: 24.68 -> 25 against the replicated 24), which the environment then uses.
-/// Replacing these formats by GL_RGBA8 in each state below (and nothing else) makes it
-/// byte-identical; a listed state with the alpha test moves a few alpha-tested pixels,
-/// hence the larger channel difference.
-const SMALL_FORMAT_GENERAL_PATH: Class = Class {
-    fma_only: false,
-    max_diff: 2,
-    max_percent_off: 30.0,
-    cause: "3/5-bit texture channels through llvmpipe's general sampling path (c/(2^n-1) \
-            in float, not the 8-bit widened value)",
-};
-
-/// As [`SMALL_FORMAT_GENERAL_PATH`], in a state with the alpha test: a fragment whose alpha
-/// differs by one level can pass on one side only.
-const SMALL_FORMAT_ALPHA_TESTED: Class = Class {
-    fma_only: false,
-    max_diff: 64,
-    max_percent_off: 1.0,
-    cause: "3/5-bit texture channels through llvmpipe's general sampling path, then the \
-            alpha test",
-};
-
 /// State 14 (TRIANGLE_STRIP, flat, blend ONE_MINUS_DST_ALPHA/CONSTANT_COLOR, alpha test
 /// GREATER 0.284, GL_RGBA4 REPLACE then GL_INTENSITY8 ADD): byte-identical with blending off,
 /// and byte-identical on the levels whose reference is pinned to SSE4.1 (no FMA); with FMA
@@ -79,15 +49,10 @@ const FMA_BLEND: Class = Class {
 };
 
 /// The known differences of the subset: (state, class). Every other state is exact.
-const KNOWN: &[(usize, &Class)] = &[
-    (3, &SMALL_FORMAT_GENERAL_PATH),
-    (10, &SMALL_FORMAT_GENERAL_PATH),
-    (13, &SMALL_FORMAT_GENERAL_PATH),
-    (14, &FMA_BLEND),
-    (17, &SMALL_FORMAT_ALPHA_TESTED),
-    (18, &SMALL_FORMAT_GENERAL_PATH),
-    (21, &SMALL_FORMAT_GENERAL_PATH),
-];
+/// (States 3, 10, 13, 17, 18 and 21, textures of 3-, 5- and 6-bit components on llvmpipe's
+/// float sampling path, are exact since that path converts them as llvmpipe does:
+/// `texture::unit::narrow_decode`.)
+const KNOWN: &[(usize, &Class)] = &[(14, &FMA_BLEND)];
 
 /// The subset: each state is built once per side, run on both, and compared.
 #[test]
