@@ -78,7 +78,7 @@ macro_rules! walk_list {
             /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
             covered [C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool] [C, DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], cover: &C, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::prim_tex::rows::<M, C, DEPTH, FLAT, PERSP> };
+                => { crate::raster::prim_tex::rows::<M, AVX2, C, DEPTH, FLAT, PERSP> };
             /// One span of a line, point or stippled polygon through the general span shader.
             span [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, plan: &FragPlan, fb: &mut Target<'_>, s: Span, stats: &mut Stats)
