@@ -581,9 +581,9 @@ mod tests {
     /// (written or not), no blend, over or an additive blend, flat or smooth; the
     /// plans the AVX2 span shader covers.
     pub(super) fn plan_of_round(round: usize) -> FragPlan {
-        let depth = (round % 4 != 0).then_some(DepthPlan {
+        let depth = (!round.is_multiple_of(4)).then_some(DepthPlan {
             func: [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3],
-            write: round % 5 != 0,
+            write: !round.is_multiple_of(5),
             format: DepthFormat::Z24,
         });
         let (src, dst) = if round % 8 >= 6 {

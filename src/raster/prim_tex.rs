@@ -9,8 +9,9 @@
 //! are constant, so points always magnify. The walk here is the triangle path's
 //! (`rows_textured`) with the coverage given by a [`Cover`]: on the AVX2 levels each
 //! chunk row is shaded on 8 lanes (`textured::chunks_general`, the per-fragment work of
-//! `fragment::simd_gen::shade_row`) when the plan allows, else lane by lane. Measured on
-//! textured line loops (sweep states 186 and 128): 2.5x faster than the per-lane walk.
+//! `fragment::simd_gen::shade_row`) when the plan allows, else lane by lane (on textured
+//! line loops, sweep states 186 and 128, 1.6–1.7x less CPU per frame than the per-lane
+//! walk, the sampling unchanged).
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
