@@ -11,11 +11,7 @@
 //! Points use the legacy GL rule (`lp_setup_point.c`, `legacy_points`): an integer-sized
 //! square of pixels around the snapped centre, all attributes constant.
 
-#[cfg(target_arch = "x86_64")]
-use super::variants::Fma;
-use super::variants::{with_flags, Base, Walks};
 use super::Draw;
-use crate::cpu::Isa;
 use crate::fragment::span::Span;
 use crate::geometry::setup::{Edge, Plane, SetupTriangle};
 use crate::geometry::{ClipVertex, MAX_VARY};
@@ -310,7 +306,7 @@ pub fn raster_line(
         super::prim_tex::shade_covered(&t, b, &super::prim_tex::EdgeCover(&edges), d);
         return;
     }
-    for py in b[1]..=b[3] {
+    let span = |py: i64| {
         let (mut lo, mut hi) = (b[0], b[2]);
         for e in &edges {
             match e.span(py) {
@@ -321,10 +317,9 @@ pub fn raster_line(
                 None => hi = lo - 1,
             }
         }
-        if lo <= hi {
-            shade_span_dispatch(&t, d, Span::of(py, lo, hi));
-        }
-    }
+        (lo, hi)
+    };
+    super::prim_spans::shade_rows(&t, b[1], b[3], span, d);
 }
 
 /// Draws a point of `size` (glPointSize, already clamped) at `v`; `top_left` as
@@ -357,9 +352,7 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
         super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, d);
         return;
     }
-    for py in b[1]..=b[3] {
-        shade_span_dispatch(&t, d, Span::of(py, b[0], b[2]));
-    }
+    super::prim_spans::shade_rows(&t, b[1], b[3], |_| (b[0], b[2]), d);
 }
 
 /// The planes of a point: depth, w and the first `nvary` varyings constant at vertex
@@ -454,33 +447,14 @@ pub fn screen_interp(t: f32, a: &ClipVertex, b: &ClipVertex, nvary: usize) -> Cl
     v
 }
 
-/// Shades span `s` with the planes of `t` (the general span shader, specialised for
-/// depth, flat and perspective like the triangle path).
+/// Shades span `s` with the planes of `t` (through [`super::prim_spans`], as the rows of
+/// a line).
 pub fn shade_span_dispatch(t: &SetupTriangle, d: &mut Draw<'_, '_>, s: Span) {
-    // SAFETY: (both) `cpu::isa` only reports a variant whose features the CPU has. Lines
-    // and points are few pixels: the general span shader serves every plan, fused or not.
-    unsafe {
-        match crate::cpu::isa() {
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma | Isa::Fma => span_with::<Fma>(t, d, s),
-            _ => span_with::<Base>(t, d, s),
-        }
-    }
-}
-
-/// Picks `W`'s span variant for the plan.
-///
-/// # Safety
-/// `W`'s instruction set is the CPU's ([`Walks`]).
-#[inline(always)]
-unsafe fn span_with<W: Walks>(t: &SetupTriangle, d: &mut Draw<'_, '_>, s: Span) {
-    let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
-    // Flat shading keeps the perspective divide for the fog coordinate.
-    let persp = t.persp && (!plan.flat || plan.fog.is_some());
-    with_flags!((plan.depth.is_some(), plan.flat, persp), |D, F, P| {
-        // SAFETY: forwarded from the caller.
-        unsafe { W::span::<D, F, P>(t, plan, fb, s, stats) }
-    })
+    let mut rs = super::prim_spans::RowSpans::new(s.y as i64);
+    rs.n = 1;
+    rs.lo[0] = s.x0 as i64;
+    rs.hi[0] = s.x1 as i64;
+    super::prim_spans::shade(t, &rs, d);
 }
 
 #[cfg(test)]

@@ -5,8 +5,9 @@
 //! general textured walks sample a unit a row at a time where an 8-wide sampler covers it,
 //! `sample8`).
 //! Also here: batching triangles over bands of rows on the thread pool ([`batch`]), lines
-//! and points ([`lines`], [`prims`]), antialiased ones ([`smooth`]), textured lines, points
-//! and stippled polygons ([`prim_tex`]) and polygon stipple ([`stipple`]).
+//! and points ([`lines`], [`prims`]; untextured ones shaded row by row, [`prim_spans`]),
+//! antialiased ones ([`smooth`]), textured lines, points and stippled polygons
+//! ([`prim_tex`]) and polygon stipple ([`stipple`]).
 
 use crate::cpu::Isa;
 use crate::fragment::span::{
@@ -25,6 +26,7 @@ pub mod batch;
 pub mod lines;
 pub mod ms_prims;
 pub mod multisample;
+pub mod prim_spans;
 pub mod prim_tex;
 pub mod prims;
 mod row_pairs;
@@ -579,6 +581,48 @@ mod tests {
         (fb.color.to_vec(), fb.depth.to_vec(), stats)
     }
 
+    /// The fragment plan of test round `round`: depth off or LESS / LEQUAL / GREATER
+    /// (written or not), no blend, over or an additive blend, flat or smooth; the
+    /// plans the AVX2 span shader covers.
+    pub(super) fn plan_of_round(round: usize) -> FragPlan {
+        let depth = (!round.is_multiple_of(4)).then_some(DepthPlan {
+            func: [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3],
+            write: !round.is_multiple_of(5),
+            format: DepthFormat::Z24,
+        });
+        let (src, dst) = if round % 8 >= 6 {
+            (BlendFactor::DstColor, BlendFactor::One)
+        } else {
+            (BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
+        };
+        let blend = (round % 4 >= 2).then_some(BlendPlan {
+            src_rgb: src,
+            dst_rgb: dst,
+            src_a: src,
+            dst_a: dst,
+            eq_rgb: BlendEquation::Add,
+            eq_a: BlendEquation::Add,
+            color: [0; 4],
+        });
+        FragPlan {
+            depth,
+            flat: round % 6 == 5,
+            color_mask: [true; 4],
+            fma: crate::cpu::isa().fused(),
+            alpha: None,
+            stencil: None,
+            blend,
+            logic: None,
+            separate_specular: false,
+            fog: None,
+            count_samples: false,
+            smooth: None,
+            ms: None,
+            blend_color: [0.0; 4],
+            srgb: false,
+        }
+    }
+
     #[test]
     fn narrow_blocks_match_spans_byte_for_byte() {
         if !crate::cpu::isa().avx2() {
@@ -588,42 +632,7 @@ mod tests {
         let mut unit = move || next() as f32 / u32::MAX as f32;
         let mut narrow = 0;
         for round in 0..96 {
-            let depth = (round % 4 != 0).then_some(DepthPlan {
-                func: [CompareFunc::Less, CompareFunc::LEqual, CompareFunc::Greater][round % 3],
-                write: round % 5 != 0,
-                format: DepthFormat::Z24,
-            });
-            let (src, dst) = if round % 8 >= 6 {
-                (BlendFactor::DstColor, BlendFactor::One)
-            } else {
-                (BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
-            };
-            let blend = (round % 4 >= 2).then_some(BlendPlan {
-                src_rgb: src,
-                dst_rgb: dst,
-                src_a: src,
-                dst_a: dst,
-                eq_rgb: BlendEquation::Add,
-                eq_a: BlendEquation::Add,
-                color: [0; 4],
-            });
-            let plan = FragPlan {
-                depth,
-                flat: round % 6 == 5,
-                color_mask: [true; 4],
-                fma: crate::cpu::isa().fused(),
-                alpha: None,
-                stencil: None,
-                blend,
-                logic: None,
-                separate_specular: false,
-                fog: None,
-                count_samples: false,
-                smooth: None,
-                ms: None,
-                blend_color: [0.0; 4],
-                srgb: false,
-            };
+            let plan = plan_of_round(round);
             let persp = round % 2 == 0;
             // Small triangles (boxes of 1 to 6 pixels a side), some crossing the edges of
             // the buffer, some thin and tall.

@@ -294,20 +294,57 @@ pub(super) unsafe fn rows_general<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        chunks_general::<M, FMA, DEPTH, FLAT, PERSP, true>(
+            t,
+            Chunks::new(t, b),
+            plan,
+            units,
+            fb,
+            stats,
+        )
+    }
+}
+
+/// [`rows_general`] over any walk of chunks: the triangles' [`Chunks`], or the chunks of
+/// a line, point or stippled polygon (`prim_tex`). With `STR` the units that need an r
+/// coordinate get it (the triangle walk); without, none does (`prim_tex`'s per-lane walk
+/// samples them so).
+///
+/// # Safety
+/// As [`rows_general`]; the live lanes of every chunk lie inside the target.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) unsafe fn chunks_general<
+    M: Madd,
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+    const STR: bool,
+>(
+    t: &SetupTriangle,
+    chunks: impl Iterator<Item = Chunk>,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
     use crate::fragment::simd_gen::{shade_row, GenPlan};
     use crate::fragment::span::TexLanes;
     use crate::pipe::MAX_TEXTURE_UNITS;
     let g = GenPlan::new(plan, t, units);
     // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    for c in Chunks::new(t, b) {
+    for c in chunks {
         // The same columns of the chunk rows two rows down, reached after this pair's span:
         // the depth and colour loads of the floor's rows waited on the cache without this.
         for py in c.qy + 2..c.qy + 4 {
             super::prefetch_row(fb, py, c.x, c.x + LANES as i64 - 1, DEPTH, 1);
         }
         // SAFETY: forwarded from the caller.
-        let oow = unsafe { coords_and_sample::<M, FMA, PERSP>(t, units, &c, &mut texels) };
+        let oow = unsafe { coords_and_sample::<M, FMA, PERSP, STR>(t, units, &c, &mut texels) };
         for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {
             if !live.iter().any(|&l| l) {
                 continue;
@@ -378,13 +415,13 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
 /// `sample_chunk` of the 8-wide walk: every unit's projected coordinates of chunk `c` on
 /// 8 lanes (the scalar walk's operations: `1 / w`, each varying times it, `1 / q`, and
 /// s, t and r times that), then the unit sampled as that walk samples it
-/// (`sample_unit`). Returns each row's `1 / w` (1.0 without `PERSP`).
+/// (`sample_unit`); r only with `STR`. Returns each row's `1 / w` (1.0 without `PERSP`).
 ///
 /// # Safety
 /// AVX2 context (FMA when `FMA`).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn coords_and_sample<M: Madd, const FMA: bool, const PERSP: bool>(
+unsafe fn coords_and_sample<M: Madd, const FMA: bool, const PERSP: bool, const STR: bool>(
     t: &SetupTriangle,
     units: &[UnitPlan<'_>],
     c: &Chunk,
@@ -405,7 +442,7 @@ unsafe fn coords_and_sample<M: Madd, const FMA: bool, const PERSP: bool>(
         }
         for (k, u) in units.iter().enumerate() {
             let base = VARY_TEX + 4 * k;
-            let needs_r = u.needs_r();
+            let needs_r = STR && u.needs_r();
             let mut s = [[0f32; LANES]; 2];
             let mut tt = [[0f32; LANES]; 2];
             let mut rr = [[0f32; LANES]; 2];

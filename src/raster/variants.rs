@@ -16,8 +16,9 @@
 //! As separate functions the same code compiles in parallel codegen units, each frame
 //! holds one variant's locals, and the call costs one jump per triangle.
 
+use super::prim_spans::RowSpans;
 use super::prim_tex::Cover;
-use crate::fragment::span::{Fused, Span, Unfused};
+use crate::fragment::span::{Fused, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
@@ -78,11 +79,12 @@ macro_rules! walk_list {
             /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
             covered [C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool] [C, DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], cover: &C, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::prim_tex::rows::<M, C, DEPTH, FLAT, PERSP> };
-            /// One span of a line, point or stippled polygon through the general span shader.
-            span [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
-                (t: &SetupTriangle, plan: &FragPlan, fb: &mut Target<'_>, s: Span, stats: &mut Stats)
-                => { crate::fragment::span::shade_span::<M, DEPTH, FLAT, PERSP, true> };
+                => { crate::raster::prim_tex::rows::<M, AVX2, C, DEPTH, FLAT, PERSP> };
+            /// The spans of an untextured line, point or stippled polygon through the general
+            /// span shader ([`super::prim_spans`]).
+            spans [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, rs: &RowSpans, plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::prim_spans::rows::<M, DEPTH, FLAT, PERSP> };
         });
     };
 }
@@ -123,6 +125,19 @@ pub(crate) trait SimdWalks {
     unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
         t: &SetupTriangle,
         b: [i64; 4],
+        plan: &FragPlan,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+    );
+
+    /// The rows of an untextured line or point through one span-shader variant
+    /// ([`super::prim_spans`]).
+    ///
+    /// # Safety
+    /// See the trait.
+    unsafe fn simd_spans<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(
+        t: &SetupTriangle,
+        rs: &RowSpans,
         plan: &FragPlan,
         fb: &mut Target<'_>,
         stats: &mut Stats,
@@ -206,6 +221,15 @@ macro_rules! simd_walks {
                     crate::raster::rows_simd_walk::<$fma, D, FLAT, PERSP, B>(t, b, plan, fb, stats)
                 }
             }
+
+            $($feat)*
+            #[inline(never)]
+            pub(crate) unsafe fn spans<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(t: &SetupTriangle, rs: &RowSpans, plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats) {
+                // SAFETY: this function is compiled with AVX2 (and FMA when `$fma`).
+                unsafe {
+                    crate::raster::prim_spans::rows_simd::<$fma, D, FLAT, PERSP, B>(t, rs, plan, fb, stats)
+                }
+            }
         }
 
         impl SimdWalks for $name {
@@ -213,6 +237,12 @@ macro_rules! simd_walks {
             unsafe fn simd<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats) {
                 // SAFETY: forwarded from the caller.
                 unsafe { $module::run::<D, FLAT, PERSP, B>(t, b, plan, fb, stats) }
+            }
+
+            #[inline(always)]
+            unsafe fn simd_spans<const D: u8, const FLAT: bool, const PERSP: bool, const B: u8>(t: &SetupTriangle, rs: &RowSpans, plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats) {
+                // SAFETY: forwarded from the caller.
+                unsafe { $module::spans::<D, FLAT, PERSP, B>(t, rs, plan, fb, stats) }
             }
         }
     )*};
