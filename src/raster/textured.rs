@@ -393,9 +393,9 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
             // exactly when `M::FUSED`.
             unsafe {
                 if M::FUSED {
-                    coords_and_sample::<M, true, PERSP>(t, units, &c, &mut texels);
+                    coords_and_sample::<M, true, PERSP, true>(t, units, &c, &mut texels);
                 } else {
-                    coords_and_sample::<M, false, PERSP>(t, units, &c, &mut texels);
+                    coords_and_sample::<M, false, PERSP, true>(t, units, &c, &mut texels);
                 }
             }
         } else {
