@@ -13,70 +13,14 @@ use crate::fragment::{BlendPlan, DepthPlan, FragPlan};
 use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
 use crate::pipe::{BlendEquation, BlendFactor, FogMode, MAX_TEXTURE_UNITS};
 use crate::stats::Stats;
-use crate::texture::env::{Combine, CombineFn, EnvMode, Operand, Source, TexEnv};
-use crate::texture::{BaseFormat, UnitPlan};
+use crate::texture::UnitPlan;
 
 /// A random state and its units (see the module doc).
 fn random_state(pick: &mut dyn FnMut(u32) -> usize) -> (FragPlan, Vec<UnitPlan<'static>>) {
-    use CombineFn as F;
-    let fns = [
-        F::Replace,
-        F::Modulate,
-        F::Add,
-        F::AddSigned,
-        F::Interpolate,
-        F::Subtract,
-        F::Dot3Rgb,
-        F::Dot3Rgba,
-    ];
-    let ops = [
-        Operand::SrcColor,
-        Operand::OneMinusSrcColor,
-        Operand::SrcAlpha,
-        Operand::OneMinusSrcAlpha,
-    ];
-    let modes = [
-        EnvMode::Replace,
-        EnvMode::Modulate,
-        EnvMode::Decal,
-        EnvMode::Blend,
-        EnvMode::Add,
-        EnvMode::Combine,
-    ];
-    let bases = [
-        BaseFormat::Alpha,
-        BaseFormat::Luminance,
-        BaseFormat::LuminanceAlpha,
-        BaseFormat::Intensity,
-        BaseFormat::Rgb,
-        BaseFormat::Rgba,
-    ];
     let n = 1 + pick(3);
     let mut units = Vec::new();
     for unit in 0..n {
-        let mut src = || match pick(6) {
-            0 => Source::Texture,
-            1 => Source::TextureN(pick(3) as u8),
-            2 => Source::Constant,
-            3 => Source::PrimaryColor,
-            _ => Source::Previous,
-        };
-        let source_rgb = [src(), src(), src()];
-        let source_alpha = [src(), src(), src()];
-        let scales = [1.0, 2.0, 4.0];
-        let env = TexEnv {
-            mode: modes[pick(6)],
-            combine_rgb: fns[pick(8)],
-            combine_alpha: fns[pick(6)],
-            source_rgb,
-            source_alpha,
-            operand_rgb: [ops[pick(4)], ops[pick(4)], ops[pick(4)]],
-            operand_alpha: [ops[2 + pick(2)], ops[2 + pick(2)], ops[2 + pick(2)]],
-            rgb_scale: scales[pick(3)],
-            alpha_scale: scales[pick(3)],
-            color: [0.25, 0.5, 0.75, 0.125],
-        };
-        let mut c = Combine::derive(&env, bases[pick(6)]);
+        let mut c = crate::texture::env::tests::random_combine(pick);
         c.canonicalise(unit, unit == 0, |k| (k < n).then_some(k));
         let mut u = modulate_unit();
         u.env = c;

@@ -449,6 +449,6 @@ mod eval;
 pub use eval::{sat, Inputs, Lane};
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 #[cfg(target_arch = "x86_64")]
 pub mod vec8;

@@ -13,6 +13,66 @@ fn run(mode: EnvMode, base: B, f: [f32; 4], t: [f32; 4]) -> [f32; 4] {
     Combine::derive(&env, base).apply(f, t, f, &[])
 }
 
+/// A random texture environment derived for a random base format: every legacy mode, every
+/// combiner function, source (the crossbar's `TextureN` included), operand and scale; the
+/// generator of the combiner tests here, in `vec8` and in the engine's lowering test.
+pub(crate) fn random_combine(pick: &mut dyn FnMut(u32) -> usize) -> Combine {
+    use CombineFn as F;
+    let fns = [
+        F::Replace,
+        F::Modulate,
+        F::Add,
+        F::AddSigned,
+        F::Interpolate,
+        F::Subtract,
+        F::Dot3Rgb,
+        F::Dot3Rgba,
+    ];
+    let ops = [
+        Operand::SrcColor,
+        Operand::OneMinusSrcColor,
+        Operand::SrcAlpha,
+        Operand::OneMinusSrcAlpha,
+    ];
+    let modes = [
+        EnvMode::Replace,
+        EnvMode::Modulate,
+        EnvMode::Decal,
+        EnvMode::Blend,
+        EnvMode::Add,
+        EnvMode::Combine,
+    ];
+    let bases = [
+        B::Alpha,
+        B::Luminance,
+        B::LuminanceAlpha,
+        B::Intensity,
+        B::Rgb,
+        B::Rgba,
+    ];
+    let src = |pick: &mut dyn FnMut(u32) -> usize| match pick(6) {
+        0 => Source::Texture,
+        1 => Source::TextureN(pick(3) as u8),
+        2 => Source::Constant,
+        3 => Source::PrimaryColor,
+        _ => Source::Previous,
+    };
+    let scales = [1.0, 2.0, 4.0];
+    let env = TexEnv {
+        mode: modes[pick(6)],
+        combine_rgb: fns[pick(8)],
+        combine_alpha: fns[pick(6)],
+        source_rgb: [src(pick), src(pick), src(pick)],
+        source_alpha: [src(pick), src(pick), src(pick)],
+        operand_rgb: [ops[pick(4)], ops[pick(4)], ops[pick(4)]],
+        operand_alpha: [ops[2 + pick(2)], ops[2 + pick(2)], ops[2 + pick(2)]],
+        rgb_scale: scales[pick(3)],
+        alpha_scale: scales[pick(3)],
+        color: [0.25, 0.5, 0.75, 0.125],
+    };
+    Combine::derive(&env, bases[pick(6)])
+}
+
 const F: [f32; 4] = [0.2, 0.4, 0.6, 0.8];
 const T: [f32; 4] = [0.9, 0.5, 0.1, 0.3];
 

@@ -56,8 +56,6 @@ impl Combine {
 
 #[cfg(test)]
 mod tests {
-    use super::super::super::BaseFormat;
-    use super::super::{CombineFn, EnvMode, Operand, Source, TexEnv};
     use super::*;
 
     /// `apply8` of eight lanes, on a CPU with AVX2.
@@ -114,61 +112,8 @@ mod tests {
         let mut next = crate::test_rng::xorshift32(0x5e17_0054);
         let mut pick = |n: u32| (next() % n) as usize;
         let specials = [0.0, 1.0, -0.0, 0.5, 1.5, -0.25, f32::NAN, 0.999_999_9];
-        use CombineFn as F;
-        let fns = [
-            F::Replace,
-            F::Modulate,
-            F::Add,
-            F::AddSigned,
-            F::Interpolate,
-            F::Subtract,
-            F::Dot3Rgb,
-            F::Dot3Rgba,
-        ];
-        let ops = [
-            Operand::SrcColor,
-            Operand::OneMinusSrcColor,
-            Operand::SrcAlpha,
-            Operand::OneMinusSrcAlpha,
-        ];
-        let modes = [
-            EnvMode::Replace,
-            EnvMode::Modulate,
-            EnvMode::Decal,
-            EnvMode::Blend,
-            EnvMode::Add,
-            EnvMode::Combine,
-        ];
-        let bases = [
-            BaseFormat::Alpha,
-            BaseFormat::Luminance,
-            BaseFormat::LuminanceAlpha,
-            BaseFormat::Intensity,
-            BaseFormat::Rgb,
-            BaseFormat::Rgba,
-        ];
         for round in 0..4000 {
-            let src = |pick: &mut dyn FnMut(u32) -> usize| match pick(6) {
-                0 => Source::Texture,
-                1 => Source::TextureN(pick(3) as u8),
-                2 => Source::Constant,
-                3 => Source::PrimaryColor,
-                _ => Source::Previous,
-            };
-            let scales = [1.0, 2.0, 4.0];
-            let env = TexEnv {
-                mode: modes[pick(6)],
-                combine_rgb: fns[pick(8)],
-                combine_alpha: fns[pick(6)],
-                source_rgb: [src(&mut pick), src(&mut pick), src(&mut pick)],
-                source_alpha: [src(&mut pick), src(&mut pick), src(&mut pick)],
-                operand_rgb: [ops[pick(4)], ops[pick(4)], ops[pick(4)]],
-                operand_alpha: [ops[2 + pick(2)], ops[2 + pick(2)], ops[2 + pick(2)]],
-                rgb_scale: scales[pick(3)],
-                alpha_scale: scales[pick(3)],
-                color: [0.25, 0.5, 0.75, 0.125],
-            };
-            let mut c = Combine::derive(&env, bases[pick(6)]);
+            let mut c = super::super::tests::random_combine(&mut pick);
             let unit = pick(3);
             c.canonicalise(unit, round % 2 == 0, |n| (n < 2).then_some(n));
             let val = |pick: &mut dyn FnMut(u32) -> usize| {
