@@ -18,3 +18,59 @@
 //!
 //! The reference for what is accepted and how errors read is Mesa's own compiler, run
 //! by the integration tests through OSMesa (`tests/mesa/`).
+
+pub mod ast;
+pub mod diag;
+pub mod lex;
+pub mod parse;
+pub mod pp;
+
+pub use ast::{Shader, Stage};
+pub use diag::Log;
+
+/// The longest source (all strings together) the front end accepts, in bytes.
+pub const MAX_SOURCE: usize = 1 << 24;
+
+/// Preprocesses and parses the source strings of one shader (concatenated, as GL does)
+/// into its syntax tree, with the info log (warnings, or the errors when the tree is
+/// `None`).
+pub fn parse_with_log(sources: &[&str], stage: Stage) -> (Option<Shader>, Log) {
+    let mut log = Log::default();
+    let total: usize = sources.iter().map(|s| s.len()).sum();
+    if total > MAX_SOURCE {
+        log.error(diag::Pos::new(1, 1), "shader source too long");
+        return (None, log);
+    }
+    let src = sources.concat();
+    let out = pp::preprocess(&src, stage.name(), &mut log);
+    if log
+        .messages
+        .iter()
+        .any(|m| m.preprocessor && m.severity == diag::Severity::Error)
+    {
+        return (None, log);
+    }
+    let items = parse::Parser::new(&out.tokens, &mut log).translation_unit();
+    match items {
+        Ok(items) if !log.has_errors() => (
+            Some(Shader {
+                stage,
+                version: out.version,
+                profile: out.profile,
+                extensions: out.extensions,
+                pragmas: out.pragmas,
+                items,
+            }),
+            log,
+        ),
+        _ => (None, log),
+    }
+}
+
+/// Preprocesses and parses one shader; the error log when it has errors.
+pub fn parse(sources: &[&str], stage: Stage) -> Result<Shader, Log> {
+    match parse_with_log(sources, stage) {
+        (Some(s), _) => Ok(s),
+        (None, log) => Err(log),
+    }
+}

@@ -1,0 +1,411 @@
+//! The directives: conditionals, `#define`/`#undef`, `#version`, `#extension`, `#line`,
+//! `#error` and `#pragma`, with Mesa's messages.
+
+use super::expr::{eval, glcpp_name};
+use super::macros::{Macro, Stop};
+use super::{Cond, Extension, Pp, Profile, EXTENSIONS, MAX_NESTING, VERSIONS};
+use crate::diag::Pos;
+use crate::lex::{int_value, PpKind, PpTok, RawLine};
+
+fn text_of(toks: &[PpTok]) -> String {
+    let mut s = String::new();
+    for (i, t) in toks.iter().enumerate() {
+        if i > 0 && t.space {
+            s.push(' ');
+        }
+        s.push_str(&t.text);
+    }
+    s
+}
+
+impl Pp<'_> {
+    /// Runs the directive on `line` (whose first token is `#`).
+    pub(super) fn directive(&mut self, line: &RawLine) {
+        let hash = self.rpos(line.toks[0].pos);
+        let toks = &line.toks[1..];
+        let Some(name) = toks.first() else {
+            return;
+        };
+        let args = &toks[1..];
+        let taking = self.taking();
+        match name.text.as_str() {
+            "if" | "ifdef" | "ifndef" => {
+                if self.conds.len() >= MAX_NESTING {
+                    self.log.pp_error(hash, "#if nesting too deep");
+                    return;
+                }
+                let ok = if !taking {
+                    false
+                } else if name.text == "if" {
+                    self.condition(args, line.end, hash, "#if")
+                } else {
+                    match args.first() {
+                        Some(t) if t.kind == PpKind::Ident => {
+                            self.defined(t) == (name.text == "ifdef")
+                        }
+                        t => {
+                            let at = self.rpos(t.map_or(line.end, |t| t.pos));
+                            let what = glcpp_name(t);
+                            self.log.pp_error(
+                                at,
+                                format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
+                            );
+                            false
+                        }
+                    }
+                };
+                let pos = if name.text == "if" {
+                    self.rpos(line.end)
+                } else {
+                    hash
+                };
+                self.conds.push(Cond {
+                    pos,
+                    parent: taking,
+                    taking: ok,
+                    done: ok,
+                    else_seen: false,
+                });
+            }
+            "elif" => {
+                let Some(c) = self.conds.last().copied() else {
+                    self.log.pp_error(hash, "#elif without #if\n");
+                    return;
+                };
+                if c.else_seen {
+                    self.log.pp_error(hash, "#elif after #else");
+                    return;
+                }
+                let ok = if !c.parent || c.done {
+                    if args.is_empty() {
+                        self.log
+                            .pp_warning(hash, "ignoring illegal #elif without expression");
+                    }
+                    false
+                } else {
+                    self.condition(args, line.end, hash, "#elif")
+                };
+                if let Some(c) = self.conds.last_mut() {
+                    c.taking = ok;
+                    c.done |= ok;
+                }
+            }
+            "else" => {
+                let Some(c) = self.conds.last_mut() else {
+                    self.log.pp_error(hash, "#else without #if\n");
+                    return;
+                };
+                if c.else_seen {
+                    self.log.pp_error(hash, "multiple #else");
+                    return;
+                }
+                c.else_seen = true;
+                c.taking = c.parent && !c.done;
+                c.done = true;
+            }
+            "endif" => {
+                if self.conds.pop().is_none() {
+                    self.log.pp_error(hash, "#endif without #if\n");
+                }
+            }
+            _ if !taking => {}
+            "define" => self.define(args, hash),
+            "undef" => match args.first() {
+                Some(t) if t.kind == PpKind::Ident => {
+                    if t.text.starts_with("GL_") {
+                        self.log.pp_error(
+                            hash,
+                            "Built-in (pre-defined) names beginning with GL_ cannot be undefined.",
+                        );
+                    } else {
+                        self.macros.remove(&t.text);
+                    }
+                }
+                t => {
+                    let at = self.rpos(t.map_or(line.end, |t| t.pos));
+                    let what = glcpp_name(t);
+                    self.log.pp_error(
+                        at,
+                        format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
+                    );
+                }
+            },
+            "error" => {
+                self.log.pp_error(hash, format!("#error {}", text_of(args)));
+            }
+            "pragma" => self.out.pragmas.push(text_of(args)),
+            "extension" => self.extension(args, line.end),
+            "version" => self.version(args, hash, line.end),
+            "line" => self.line(args, line.end, hash),
+            _ => self.log.pp_error(hash, "Illegal non-directive after #"),
+        }
+        if taking && name.text != "version" {
+            self.seen_content = true;
+        }
+    }
+
+    /// Evaluates a `#if`/`#elif` condition; errors count as false.
+    fn condition(&mut self, args: &[PpTok], end: Pos, hash: Pos, what: &str) -> bool {
+        if args.is_empty() {
+            self.log
+                .pp_error(hash, format!("{what} with no expression"));
+            return false;
+        }
+        let mut toks = Vec::with_capacity(args.len());
+        let mut i = 0;
+        while i < args.len() {
+            let t = &args[i];
+            if t.kind == PpKind::Ident && t.text == "defined" {
+                let paren = super::is_punct(args.get(i + 1), "(");
+                let n = if paren { i + 2 } else { i + 1 };
+                let name = args.get(n).filter(|a| a.kind == PpKind::Ident);
+                let closed = !paren || super::is_punct(args.get(n + 1), ")");
+                let Some(name) = name.filter(|_| closed) else {
+                    let at = self.rpos(t.pos);
+                    self.log
+                        .pp_error(at, "\"defined\" not followed by an identifier");
+                    return false;
+                };
+                let mut v = t.clone();
+                v.kind = PpKind::Int;
+                v.text = if self.defined(name) { "1" } else { "0" }.into();
+                toks.push(v);
+                i = n + 1 + usize::from(paren);
+                continue;
+            }
+            toks.push(t.clone());
+            i += 1;
+        }
+        let toks = match self.expand(toks) {
+            Ok(t) => t,
+            Err(Stop::NeedMore) => {
+                let at = self.rpos(end);
+                self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+                return false;
+            }
+            Err(Stop::Failed) => return false,
+        };
+        match eval(&toks, end) {
+            Ok(v) => v != 0,
+            Err((pos, msg)) => {
+                let at = self.rpos(pos);
+                self.log.pp_error(at, msg);
+                false
+            }
+        }
+    }
+
+    fn define(&mut self, args: &[PpTok], hash: Pos) {
+        let Some(name) = args.first().filter(|t| t.kind == PpKind::Ident) else {
+            self.log.pp_error(hash, "#define without macro name");
+            return;
+        };
+        let at = self.rpos(name.pos);
+        if name.text == "defined" {
+            self.log
+                .pp_error(at, "\"defined\" cannot be used as a macro name");
+            return;
+        }
+        if name.text.starts_with("GL_") {
+            self.log
+                .pp_error(at, "Macro names starting with \"GL_\" are reserved.\n");
+            return;
+        }
+        let mut rest = &args[1..];
+        let mut params = None;
+        if super::is_punct(rest.first(), "(") && !rest[0].space {
+            let mut ps: Vec<String> = Vec::new();
+            let mut i = 1;
+            loop {
+                let t = rest.get(i);
+                let expect = if ps.is_empty() && i == 1 {
+                    if super::is_punct(t, ")") {
+                        break;
+                    }
+                    "expecting ')' or IDENTIFIER"
+                } else if super::is_punct(t, ")") {
+                    break;
+                } else if super::is_punct(t, ",") {
+                    i += 1;
+                    "expecting IDENTIFIER"
+                } else {
+                    "expecting ')' or ','"
+                };
+                match rest.get(i) {
+                    Some(p) if p.kind == PpKind::Ident && !expect.contains("','") => {
+                        if ps.contains(&p.text) {
+                            self.log
+                                .pp_error(at, format!("Duplicate macro parameter \"{}\"", p.text));
+                            return;
+                        }
+                        ps.push(p.text.clone());
+                        i += 1;
+                    }
+                    t => {
+                        let pos = self.rpos(t.map_or(hash, |t| t.pos));
+                        let what = glcpp_name(t);
+                        self.log
+                            .pp_error(pos, format!("syntax error, unexpected {what}, {expect}"));
+                        return;
+                    }
+                }
+            }
+            rest = &rest[i + 1..];
+            params = Some(ps);
+        }
+        let mut body = rest.to_vec();
+        if let Some(b) = body.first_mut() {
+            b.space = false;
+        }
+        let m = Macro { params, body };
+        if let Some(old) = self.macros.get(&name.text) {
+            if !old.same_as(&m) {
+                self.log
+                    .pp_error(at, format!("Redefinition of macro {}\n", name.text));
+            }
+            return;
+        }
+        self.macros.insert(name.text.clone(), m);
+    }
+
+    fn version(&mut self, args: &[PpTok], hash: Pos, end: Pos) {
+        if self.seen_content || self.version_seen {
+            self.log
+                .pp_error(hash, "#version must appear on the first line");
+            return;
+        }
+        self.version_seen = true;
+        let Some(n) = args.first().filter(|t| t.kind == PpKind::Int) else {
+            let t = args.first();
+            let at = self.rpos(t.map_or(end, |t| t.pos));
+            let what = glcpp_name(t);
+            self.log.pp_error(
+                at,
+                format!("syntax error, unexpected {what}, expecting INTEGER or INTEGER_STRING"),
+            );
+            return;
+        };
+        let at = self.rpos(n.pos);
+        let v = int_value(&n.text).0.unwrap_or(0);
+        if !VERSIONS.contains(&v) {
+            self.log.error(
+                at,
+                format!(
+                    "GLSL {}.{:02} is not supported. Supported versions are: 1.10, 1.20, \
+                     1.30, 1.40, 1.50, and 3.30",
+                    v / 100,
+                    v % 100
+                ),
+            );
+            self.out.version = if v > 330 { 330 } else { 110 };
+        } else {
+            self.out.version = v;
+        }
+        match args.get(1) {
+            None => {}
+            Some(_) if v < 150 => self.log.error(at, "illegal text following version number"),
+            Some(p) if p.text == "core" && args.len() == 2 => self.out.profile = Profile::Core,
+            Some(p) if p.text == "compatibility" && args.len() == 2 => {
+                self.out.profile = Profile::Compatibility
+            }
+            Some(p) => self.log.error(
+                at,
+                format!(
+                    "\"{}\" is not a valid shading language profile; if present, it must be \"core\"",
+                    p.text
+                ),
+            ),
+        }
+    }
+
+    fn extension(&mut self, args: &[PpTok], end: Pos) {
+        let want =
+            |i: usize, kind: PpKind, text: Option<&str>, what: &str| -> Result<(), (Pos, String)> {
+                match args.get(i) {
+                    Some(t) if t.kind == kind && text.is_none_or(|x| x == t.text) => Ok(()),
+                    t => Err((
+                        t.map_or(end, |t| t.pos),
+                        format!(
+                            "syntax error, unexpected {}, expecting {what}",
+                            t.map_or("NEWLINE".into(), |t| crate::lex::mesa_name(
+                                &crate::lex::classify(
+                                    t,
+                                    self.out.version,
+                                    t.pos,
+                                    &mut crate::diag::Log::default()
+                                ),
+                                true,
+                                false
+                            ))
+                        ),
+                    )),
+                }
+            };
+        let check = want(0, PpKind::Ident, None, "any identifier")
+            .and_then(|_| want(1, PpKind::Punct, Some(":"), "COLON"))
+            .and_then(|_| want(2, PpKind::Ident, None, "any identifier"));
+        if let Err((pos, msg)) = check {
+            let at = self.rpos(pos);
+            self.log.error(at, msg);
+            return;
+        }
+        let (name, behavior) = (&args[0], &args[2]);
+        let (npos, bpos) = (self.rpos(name.pos), self.rpos(behavior.pos));
+        let b = behavior.text.as_str();
+        if !matches!(b, "require" | "enable" | "warn" | "disable") {
+            self.log
+                .error(bpos, format!("unknown extension behavior `{b}'"));
+            return;
+        }
+        if name.text == "all" {
+            if b == "require" || b == "enable" {
+                self.log.error(npos, format!("cannot {b} all extensions"));
+            }
+        } else if !EXTENSIONS.contains(&name.text.as_str()) {
+            let msg = format!(
+                "extension `{}' unsupported in {} shader",
+                name.text, self.stage
+            );
+            if b == "require" {
+                self.log.error(npos, msg);
+            } else if b != "disable" {
+                self.log.warning(npos, msg);
+            }
+        }
+        self.out.extensions.push(Extension {
+            name: name.text.clone(),
+            behavior: b.into(),
+            pos: npos,
+        });
+    }
+
+    fn line(&mut self, args: &[PpTok], end: Pos, hash: Pos) {
+        let toks = match self.expand(args.to_vec()) {
+            Ok(t) => t,
+            Err(_) => return,
+        };
+        let num = |t: Option<&PpTok>| {
+            t.filter(|t| t.kind == PpKind::Int)
+                .and_then(|t| int_value(&t.text).0)
+        };
+        let Some(line) = num(toks.first()) else {
+            self.log.pp_error(hash, "Illegal non-directive after #");
+            return;
+        };
+        let source = match toks.get(1) {
+            None => self.source,
+            Some(_) => match num(toks.get(1)) {
+                Some(s) if toks.len() == 2 => s,
+                _ => {
+                    let at = self.rpos(end);
+                    self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+                    return;
+                }
+            },
+        };
+        // The next scanned line (end.line + 1) is reported as `line`.
+        self.line_delta = i64::from(line) - i64::from(end.line) - 1;
+        self.source = source;
+        self.out_line = line.saturating_sub(1);
+    }
+}

@@ -1,0 +1,177 @@
+//! `#if` and `#elif` expressions: `defined`, then macro expansion, then C's integer
+//! operators evaluated in 64 bits with wrapping arithmetic, by precedence climbing.
+//!
+//! As in Mesa, a name left after expansion counts as 0, `?:` is not allowed, and a
+//! syntax error names glcpp's token (`NEWLINE`, `IDENTIFIER`, `INTEGER_STRING`, …).
+
+use crate::diag::Pos;
+use crate::lex::{int_value, PpKind, PpTok};
+
+/// How glcpp's grammar names a token in its syntax errors.
+pub fn glcpp_name(t: Option<&PpTok>) -> String {
+    let Some(t) = t else {
+        return "NEWLINE".into();
+    };
+    match t.kind {
+        PpKind::Ident if t.text == "defined" => "DEFINED".into(),
+        PpKind::Ident => "IDENTIFIER".into(),
+        PpKind::Int => "INTEGER_STRING".into(),
+        PpKind::Float | PpKind::Other => "OTHER".into(),
+        PpKind::Punct => match t.text.as_str() {
+            "==" => "EQUAL",
+            "!=" => "NOT_EQUAL",
+            "<=" => "LESS_OR_EQUAL",
+            ">=" => "GREATER_OR_EQUAL",
+            "<<" => "LEFT_SHIFT",
+            ">>" => "RIGHT_SHIFT",
+            "&&" => "AND",
+            "||" => "OR",
+            "##" => "PASTE",
+            "++" => "PLUS_PLUS",
+            "--" => "MINUS_MINUS",
+            "#" => "HASH_TOKEN",
+            p if p.len() == 1 && p != "?" => return format!("'{p}'"),
+            _ => "OTHER",
+        }
+        .into(),
+    }
+}
+
+/// An evaluation error: where and what.
+pub type EvalError = (Pos, String);
+
+/// Evaluates the expanded tokens of a `#if`; `end` is the position of the line's end.
+pub fn eval(toks: &[PpTok], end: Pos) -> Result<i64, EvalError> {
+    let mut e = Eval {
+        toks,
+        i: 0,
+        end,
+        depth: 0,
+    };
+    let v = e.binary(0)?;
+    if e.i < toks.len() {
+        return Err(e.unexpected());
+    }
+    Ok(v)
+}
+
+struct Eval<'a> {
+    toks: &'a [PpTok],
+    i: usize,
+    end: Pos,
+    depth: u32,
+}
+
+const LEVELS: &[&[&str]] = &[
+    &["||"],
+    &["&&"],
+    &["|"],
+    &["^"],
+    &["&"],
+    &["==", "!="],
+    &["<", ">", "<=", ">="],
+    &["<<", ">>"],
+    &["+", "-"],
+    &["*", "/", "%"],
+];
+
+impl Eval<'_> {
+    fn peek(&self) -> Option<&PpTok> {
+        self.toks.get(self.i)
+    }
+
+    fn unexpected(&self) -> EvalError {
+        let t = self.peek();
+        let pos = t.map_or(self.end, |t| t.pos);
+        (pos, format!("syntax error, unexpected {}", glcpp_name(t)))
+    }
+
+    fn is_op(&self, op: &str) -> bool {
+        self.peek()
+            .is_some_and(|t| t.kind == PpKind::Punct && t.text == op)
+    }
+
+    fn binary(&mut self, level: usize) -> Result<i64, EvalError> {
+        if level == LEVELS.len() {
+            return self.unary(0);
+        }
+        let mut l = self.binary(level + 1)?;
+        while let Some(op) = LEVELS[level].iter().find(|o| self.is_op(o)) {
+            self.i += 1;
+            let r = self.binary(level + 1)?;
+            l = match *op {
+                "||" => i64::from(l != 0 || r != 0),
+                "&&" => i64::from(l != 0 && r != 0),
+                "|" => l | r,
+                "^" => l ^ r,
+                "&" => l & r,
+                "==" => i64::from(l == r),
+                "!=" => i64::from(l != r),
+                "<" => i64::from(l < r),
+                ">" => i64::from(l > r),
+                "<=" => i64::from(l <= r),
+                ">=" => i64::from(l >= r),
+                "<<" => l.wrapping_shl(r as u32),
+                ">>" => l.wrapping_shr(r as u32),
+                "+" => l.wrapping_add(r),
+                "-" => l.wrapping_sub(r),
+                "*" => l.wrapping_mul(r),
+                "/" if r == 0 => {
+                    return Err((self.end, "division by 0 in preprocessor directive".into()))
+                }
+                "%" if r == 0 => {
+                    return Err((self.end, "zero modulus in preprocessor directive".into()))
+                }
+                "/" => l.wrapping_div(r),
+                _ => l.wrapping_rem(r),
+            };
+        }
+        Ok(l)
+    }
+
+    fn unary(&mut self, depth: u32) -> Result<i64, EvalError> {
+        if depth > 256 {
+            return Err(self.unexpected());
+        }
+        let Some(t) = self.peek() else {
+            return Err(self.unexpected());
+        };
+        match (t.kind, t.text.as_str()) {
+            (PpKind::Punct, "+" | "-" | "~" | "!") => {
+                let op = t.text.clone();
+                self.i += 1;
+                let v = self.unary(depth + 1)?;
+                Ok(match op.as_str() {
+                    "+" => v,
+                    "-" => v.wrapping_neg(),
+                    "~" => !v,
+                    _ => i64::from(v == 0),
+                })
+            }
+            (PpKind::Punct, "(") => {
+                self.i += 1;
+                self.depth += 1;
+                if self.depth > 256 {
+                    return Err(self.unexpected());
+                }
+                let v = self.binary(0)?;
+                self.depth -= 1;
+                if !self.is_op(")") {
+                    return Err(self.unexpected());
+                }
+                self.i += 1;
+                Ok(v)
+            }
+            (PpKind::Int, _) => {
+                let v = int_value(&t.text).0.map_or(i64::MAX, i64::from);
+                self.i += 1;
+                Ok(v)
+            }
+            (PpKind::Ident, n) if n != "defined" => {
+                self.i += 1;
+                Ok(0)
+            }
+            _ => Err(self.unexpected()),
+        }
+    }
+}
