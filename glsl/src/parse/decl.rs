@@ -215,9 +215,7 @@ impl Parser<'_> {
                     if qualifiers == [Qualifier::Invariant] {
                         return self.invariant_list();
                     }
-                    if self.is_at(1, "{") {
-                        return self.block(qualifiers);
-                    }
+                    return self.block(qualifiers);
                 }
             }
         }
@@ -230,7 +228,7 @@ impl Parser<'_> {
         let (name, pos) = self.ident()?;
         if self.is("(") {
             let params = self.params()?;
-            self.names.insert(name.clone());
+            self.declare(&name);
             let proto = Prototype {
                 ret: ty,
                 name,
@@ -263,7 +261,7 @@ impl Parser<'_> {
         } else {
             None
         };
-        self.names.insert(name.clone());
+        self.declare(&name);
         Ok(Declarator {
             name,
             array,
@@ -289,7 +287,7 @@ impl Parser<'_> {
         let instance = match self.peek() {
             Tok::Ident(_) => {
                 let (n, _) = self.ident()?;
-                self.names.insert(n.clone());
+                self.declare(&n);
                 Some((n, self.array_sizes()?))
             }
             _ => None,
@@ -318,7 +316,7 @@ impl Parser<'_> {
                 let (name, array) = match self.peek() {
                     Tok::Ident(_) => {
                         let (n, _) = self.ident()?;
-                        self.names.insert(n.clone());
+                        self.declare(&n);
                         (Some(n), self.array_sizes()?)
                     }
                     _ => (None, vec![]),

@@ -22,7 +22,7 @@ pub mod stmt;
 
 use crate::diag::{Log, Pos};
 use crate::lex::{mesa_name, Tok, Token, Word};
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 /// The deepest nesting of statements and expressions together.
 pub const MAX_DEPTH: u32 = 256;
@@ -41,8 +41,9 @@ pub struct Parser<'a> {
     log: &'a mut Log,
     /// Struct names declared so far (Mesa's `TYPE_IDENTIFIER`s).
     types: HashSet<String>,
-    /// Other names declared so far (Mesa's `IDENTIFIER`s, for error messages).
-    names: HashSet<String>,
+    /// Other names declared so far (Mesa's `IDENTIFIER`s, for error messages), with
+    /// the index of the first token that sees them.
+    names: HashMap<String, usize>,
     depth: u32,
 }
 
@@ -63,7 +64,7 @@ impl<'a> Parser<'a> {
             i: 0,
             log,
             types: HashSet::new(),
-            names: HashSet::new(),
+            names: HashMap::new(),
             depth: 0,
         }
     }
@@ -106,7 +107,7 @@ impl<'a> Parser<'a> {
         let t = self.peek();
         let (known, is_type) = match t {
             Tok::Ident(n) => (
-                self.names.contains(n) || n.starts_with("gl_"),
+                self.names.get(n).is_some_and(|&k| k <= self.i) || n.starts_with("gl_"),
                 self.types.contains(n),
             ),
             _ => (false, false),
@@ -135,6 +136,14 @@ impl<'a> Parser<'a> {
             }
             _ => self.fail(),
         }
+    }
+
+    /// Records a declared name. Mesa's grammar enters it into the symbol table when it
+    /// reduces the declaration, after the lexer has read the next token, so names are
+    /// known from the token after that one.
+    fn declare(&mut self, name: &str) {
+        let from = self.i + 1;
+        self.names.entry(name.to_string()).or_insert(from);
     }
 
     fn enter(&mut self) -> PResult<()> {

@@ -7,13 +7,22 @@ use super::{Cond, Extension, Pp, Profile, EXTENSIONS, MAX_NESTING, VERSIONS};
 use crate::diag::Pos;
 use crate::lex::{int_value, PpKind, PpTok, RawLine};
 
+/// The text of a directive's tokens with the blanks between them as written (a
+/// comment counts as its width in blanks).
 fn text_of(toks: &[PpTok]) -> String {
     let mut s = String::new();
-    for (i, t) in toks.iter().enumerate() {
-        if i > 0 && t.space {
-            s.push(' ');
+    let mut end: Option<Pos> = None;
+    for t in toks {
+        if let Some(e) = end {
+            let gap = if t.pos.line == e.line && t.pos.col > e.col {
+                (t.pos.col - e.col) as usize
+            } else {
+                usize::from(t.space)
+            };
+            s.extend(std::iter::repeat_n(' ', gap.min(256)));
         }
         s.push_str(&t.text);
+        end = Some(Pos::new(t.pos.line, t.pos.col + t.text.len() as u32));
     }
     s
 }
@@ -54,10 +63,11 @@ impl Pp<'_> {
                         }
                     }
                 };
-                let pos = if name.text == "if" {
-                    self.rpos(line.end)
-                } else {
-                    hash
+                // Where Mesa reports the group as unterminated.
+                let pos = match (name.text.as_str(), args.first()) {
+                    ("if", _) => self.rpos(line.end),
+                    ("ifndef", Some(t)) => self.rpos(t.pos),
+                    _ => hash,
                 };
                 self.conds.push(Cond {
                     pos,
@@ -196,9 +206,20 @@ impl Pp<'_> {
     }
 
     fn define(&mut self, args: &[PpTok], hash: Pos) {
-        let Some(name) = args.first().filter(|t| t.kind == PpKind::Ident) else {
-            self.log.pp_error(hash, "#define without macro name");
-            return;
+        let name = match args.first() {
+            Some(t) if t.kind == PpKind::Ident => t,
+            Some(t) => {
+                let at = self.rpos(t.pos);
+                self.log.pp_error(
+                    at,
+                    format!("#define followed by a non-identifier: {}", t.text),
+                );
+                return;
+            }
+            None => {
+                self.log.pp_error(hash, "#define without macro name");
+                return;
+            }
         };
         let at = self.rpos(name.pos);
         if name.text == "defined" {

@@ -1,0 +1,2 @@
+#version 150 compatibility
+void main() { gl_FragColor = gl_Color; }
