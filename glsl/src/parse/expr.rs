@@ -184,10 +184,7 @@ impl Parser<'_> {
             Tok::Bool(v) => ExprKind::Bool(*v),
             Tok::Punct("(") => {
                 self.bump();
-                self.enter()?;
-                let e = self.expression();
-                self.leave();
-                let e = e?;
+                let e = self.expression()?;
                 self.expect(")")?;
                 return Ok(e);
             }

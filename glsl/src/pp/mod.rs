@@ -14,8 +14,9 @@
 //!
 //! Limits (so no input can make it run long or grow without bound): the conditional
 //! stack is at most [`MAX_NESTING`] deep, all macro expansions together may produce at
-//! most [`macros::EXPANSION_BUDGET`] tokens, and argument pre-expansion nests at most 64
-//! deep.
+//! most [`macros::EXPANSION_BUDGET`] tokens, argument pre-expansion nests at most 64
+//! deep, and a macro call spans at most [`MAX_CALL_LINES`] lines (a longer one is
+//! reported as running into the end of the file).
 
 pub mod expr;
 pub mod macros;
@@ -27,6 +28,10 @@ use std::collections::HashMap;
 
 /// The deepest nesting of `#if` groups.
 pub const MAX_NESTING: usize = 256;
+
+/// The most lines a function-like macro's arguments may span (each further line makes
+/// the line's expansion run again, so this bounds the work to linear).
+pub const MAX_CALL_LINES: usize = 256;
 
 /// The GLSL versions this front end compiles.
 pub const VERSIONS: [u32; 6] = [110, 120, 130, 140, 150, 330];
@@ -212,6 +217,7 @@ impl Pp<'_> {
             self.seen_content = true;
             let mut toks = line.toks.clone();
             let mut after = line.extra_newlines;
+            let mut joined = 0;
             let mut end = line.end;
             loop {
                 match self.expand(toks.clone()) {
@@ -221,8 +227,11 @@ impl Pp<'_> {
                         break;
                     }
                     Err(Stop::NeedMore)
-                        if i < lines.len() && !is_punct(lines[i].toks.first(), "#") =>
+                        if i < lines.len()
+                            && joined < MAX_CALL_LINES
+                            && !is_punct(lines[i].toks.first(), "#") =>
                     {
+                        joined += 1;
                         let next = &lines[i];
                         i += 1;
                         after += 1 + next.extra_newlines;
