@@ -108,6 +108,16 @@ const CASES: &[(&str, char, &str)] = &[
     ),
     // Preprocessor: macros.
     (
+        "paste_invalid",
+        'f',
+        "#version 330\n#define CAT(a,b) a ## b\nint x = CAT(+,-);\n",
+    ),
+    (
+        "hash_in_macro_body",
+        'f',
+        "#version 330\n#define F(x) #x\nvoid main(){}\n",
+    ),
+    (
         "macro_redefined",
         'f',
         "#version 330\n#define A 1\n#define A 2\nvoid main(){}\n",

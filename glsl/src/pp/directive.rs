@@ -161,6 +161,18 @@ impl Pp<'_> {
                 .pp_error(hash, format!("{what} with no expression"));
             return false;
         }
+        self.in_if = true;
+        let expanded = self.expand(args.to_vec());
+        self.in_if = false;
+        let args = match expanded {
+            Ok(t) => t,
+            Err(Stop::NeedMore) => {
+                let at = self.rpos(end);
+                self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+                return false;
+            }
+            Err(Stop::Failed) => return false,
+        };
         let mut toks = Vec::with_capacity(args.len());
         let mut i = 0;
         while i < args.len() {
@@ -186,23 +198,12 @@ impl Pp<'_> {
             toks.push(t.clone());
             i += 1;
         }
-        let toks = match self.expand(toks) {
-            Ok(t) => t,
-            Err(Stop::NeedMore) => {
-                let at = self.rpos(end);
-                self.log.pp_error(at, "syntax error, unexpected NEWLINE");
-                return false;
-            }
-            Err(Stop::Failed) => return false,
-        };
-        match eval(&toks, end) {
-            Ok(v) => v != 0,
-            Err((pos, msg)) => {
-                let at = self.rpos(pos);
-                self.log.pp_error(at, msg);
-                false
-            }
+        let (value, error) = eval(&toks, end);
+        if let Some((pos, msg)) = error {
+            let at = self.rpos(pos);
+            self.log.pp_error(at, msg);
         }
+        value.is_some_and(|v| v != 0)
     }
 
     fn define(&mut self, args: &[PpTok], hash: Pos) {
@@ -273,6 +274,15 @@ impl Pp<'_> {
             }
             rest = &rest[i + 1..];
             params = Some(ps);
+        }
+        if let Some(h) = rest
+            .iter()
+            .find(|t| t.kind == PpKind::Punct && t.text == "#")
+        {
+            let at = self.rpos(h.pos);
+            self.log
+                .pp_error(at, "syntax error, unexpected HASH_TOKEN, expecting NEWLINE");
+            return;
         }
         let mut body = rest.to_vec();
         if let Some(b) = body.first_mut() {

@@ -41,18 +41,28 @@ pub fn glcpp_name(t: Option<&PpTok>) -> String {
 pub type EvalError = (Pos, String);
 
 /// Evaluates the expanded tokens of a `#if`; `end` is the position of the line's end.
-pub fn eval(toks: &[PpTok], end: Pos) -> Result<i64, EvalError> {
+/// Returns the value (`None` after a syntax error) and the first error. As in Mesa, a
+/// division by zero is an error but the evaluation goes on with 0 for it, so
+/// `1 || 1 / 0` still holds.
+pub fn eval(toks: &[PpTok], end: Pos) -> (Option<i64>, Option<EvalError>) {
     let mut e = Eval {
         toks,
         i: 0,
         end,
         depth: 0,
+        error: None,
     };
-    let v = e.binary(0)?;
-    if e.i < toks.len() {
-        return Err(e.unexpected());
+    let v = e.binary(0).and_then(|v| {
+        if e.i < toks.len() {
+            Err(e.unexpected())
+        } else {
+            Ok(v)
+        }
+    });
+    match v {
+        Ok(v) => (Some(v), e.error),
+        Err(err) => (None, e.error.or(Some(err))),
     }
-    Ok(v)
 }
 
 struct Eval<'a> {
@@ -60,6 +70,8 @@ struct Eval<'a> {
     i: usize,
     end: Pos,
     depth: u32,
+    /// The first division by zero.
+    error: Option<EvalError>,
 }
 
 const LEVELS: &[&[&str]] = &[
@@ -116,11 +128,14 @@ impl Eval<'_> {
                 "+" => l.wrapping_add(r),
                 "-" => l.wrapping_sub(r),
                 "*" => l.wrapping_mul(r),
-                "/" if r == 0 => {
-                    return Err((self.end, "division by 0 in preprocessor directive".into()))
-                }
-                "%" if r == 0 => {
-                    return Err((self.end, "zero modulus in preprocessor directive".into()))
+                "/" | "%" if r == 0 => {
+                    let msg = if *op == "/" {
+                        "division by 0 in preprocessor directive"
+                    } else {
+                        "zero modulus in preprocessor directive"
+                    };
+                    self.error.get_or_insert((self.end, msg.into()));
+                    0
                 }
                 "/" => l.wrapping_div(r),
                 _ => l.wrapping_rem(r),

@@ -83,6 +83,20 @@ impl Pp<'_> {
     fn expand_h(&mut self, mut input: VecDeque<HTok>, depth: u32) -> Result<Vec<HTok>, Stop> {
         let mut out = Vec::new();
         while let Some((t, hide)) = input.pop_front() {
+            if self.in_if && t.kind == PpKind::Ident && t.text == "defined" {
+                // `defined X` and `defined ( X )`: the operand is not expanded.
+                out.push((t, hide));
+                let paren = input.front().is_some_and(|f| punct(f, "("));
+                for _ in 0..(if paren { 3 } else { 1 }) {
+                    match input.front() {
+                        Some(f) if f.0.kind == PpKind::Ident || punct(f, "(") || punct(f, ")") => {
+                            out.extend(input.pop_front());
+                        }
+                        _ => break,
+                    }
+                }
+                continue;
+            }
             if t.kind != PpKind::Ident || hide.contains(&t.text) {
                 out.push((t, hide));
                 continue;
@@ -102,13 +116,13 @@ impl Pp<'_> {
             h.push(t.text.clone());
             let Some(params) = &m.params else {
                 self.charge(m.body.len() + 1, &t)?;
-                for (i, b) in m.body.iter().enumerate().rev() {
-                    let mut b = b.clone();
+                let body = m.body.iter().map(|b| (b.clone(), h.clone())).collect();
+                for (i, (mut b, bh)) in self.paste(body)?.into_iter().enumerate().rev() {
                     b.pos = t.pos;
                     if i == 0 {
                         b.space = t.space;
                     }
-                    input.push_front((b, h.clone()));
+                    input.push_front((b, bh));
                 }
                 continue;
             };
@@ -164,12 +178,54 @@ impl Pp<'_> {
                 }
             }
             self.charge(repl.len() + 1, &t)?;
-            for (i, (mut r, rh)) in repl.into_iter().enumerate().rev() {
+            for (i, (mut r, rh)) in self.paste(repl)?.into_iter().enumerate().rev() {
                 r.pos = t.pos;
                 if i == 0 {
                     r.space = t.space;
                 }
                 input.push_front((r, rh));
+            }
+        }
+        Ok(out)
+    }
+
+    /// Applies the `##` operators of a replacement list: the tokens either side are
+    /// joined into one, which must scan as one token.
+    fn paste(&mut self, toks: Vec<HTok>) -> Result<Vec<HTok>, Stop> {
+        if !toks.iter().any(|t| punct(t, "##")) {
+            return Ok(toks);
+        }
+        let mut out: Vec<HTok> = Vec::with_capacity(toks.len());
+        let mut it = toks.into_iter();
+        while let Some(t) = it.next() {
+            if !punct(&t, "##") || out.is_empty() {
+                out.push(t);
+                continue;
+            }
+            let Some(next) = it.next() else {
+                break;
+            };
+            let Some(prev) = out.last_mut() else {
+                break;
+            };
+            let text = format!("{}{}", prev.0.text, next.0.text);
+            let lines = crate::lex::scan(&text, &mut crate::diag::Log::default());
+            match lines.as_slice() {
+                [l] if l.toks.len() == 1 => {
+                    prev.0.kind = l.toks[0].kind;
+                    prev.0.text = text;
+                }
+                _ => {
+                    let at = self.rpos(prev.0.pos);
+                    self.log.pp_error(
+                        at,
+                        format!(
+                            "\nPasting \"{}\" and \"{}\" does not give a valid preprocessing token.\n",
+                            prev.0.text, next.0.text
+                        ),
+                    );
+                    return Err(Stop::Failed);
+                }
             }
         }
         Ok(out)

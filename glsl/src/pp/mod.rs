@@ -124,6 +124,8 @@ pub struct Pp<'a> {
     eof: Pos,
     seen_content: bool,
     version_seen: bool,
+    /// Expanding a `#if` line (`defined`'s operand stays unexpanded).
+    in_if: bool,
 }
 
 fn is_punct(t: Option<&PpTok>, p: &str) -> bool {
@@ -150,6 +152,7 @@ pub fn preprocess(src: &str, stage: &str, log: &mut Log) -> Output {
         eof: Pos::new(1, 1),
         seen_content: false,
         version_seen: false,
+        in_if: false,
     };
     pp.run(&lines);
     if let Some(c) = pp.conds.last() {
@@ -196,8 +199,11 @@ impl Pp<'_> {
         }
     }
 
+    /// Whether `t` names a macro for `defined` (`__LINE__` and `__FILE__` are not macros
+    /// for Mesa).
     fn defined(&self, t: &PpTok) -> bool {
-        self.macros.contains_key(&t.text) || self.builtin_macro(t).is_some()
+        self.macros.contains_key(&t.text)
+            || (self.builtin_macro(t).is_some() && t.text != "__LINE__" && t.text != "__FILE__")
     }
 
     fn run(&mut self, lines: &[RawLine]) {

@@ -55,6 +55,6 @@ pub fn our_first_error(log: &Log) -> Option<(String, String, String)> {
     Some((
         m.pos.to_string(),
         kind.into(),
-        m.text.trim_end().to_string(),
+        m.text.lines().next().unwrap_or("").trim_end().to_string(),
     ))
 }
