@@ -53,12 +53,7 @@ impl Pp<'_> {
                             self.defined(t) == (name.text == "ifdef")
                         }
                         t => {
-                            let at = self.rpos(t.map_or(line.end, |t| t.pos));
-                            let what = glcpp_name(t);
-                            self.log.pp_error(
-                                at,
-                                format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
-                            );
+                            self.not_identifier(t, line.end);
                             false
                         }
                     }
@@ -131,14 +126,7 @@ impl Pp<'_> {
                         self.macros.remove(&t.text);
                     }
                 }
-                t => {
-                    let at = self.rpos(t.map_or(line.end, |t| t.pos));
-                    let what = glcpp_name(t);
-                    self.log.pp_error(
-                        at,
-                        format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
-                    );
-                }
+                t => self.not_identifier(t, line.end),
             },
             "error" => {
                 self.log.pp_error(hash, format!("#error {}", text_of(args)));
@@ -152,6 +140,17 @@ impl Pp<'_> {
         if taking && name.text != "version" {
             self.seen_content = true;
         }
+    }
+
+    /// Reports glcpp's syntax error for a directive whose name operand is `t` (or
+    /// missing, at the line's end `end`).
+    fn not_identifier(&mut self, t: Option<&PpTok>, end: Pos) {
+        let at = self.rpos(t.map_or(end, |t| t.pos));
+        let what = glcpp_name(t);
+        self.log.pp_error(
+            at,
+            format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
+        );
     }
 
     /// Evaluates a `#if`/`#elif` condition; errors count as false.

@@ -58,3 +58,40 @@ pub fn our_first_error(log: &Log) -> Option<(String, String, String)> {
         m.text.lines().next().unwrap_or("").trim_end().to_string(),
     ))
 }
+
+fn unescape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut it = s.chars();
+    while let Some(c) = it.next() {
+        if c != '\\' {
+            out.push(c);
+            continue;
+        }
+        match it.next() {
+            Some('n') => out.push('\n'),
+            Some('t') => out.push('\t'),
+            Some(other) => out.push(other),
+            None => out.push('\\'),
+        }
+    }
+    out
+}
+
+/// The error corpus `tests/corpus/errors.txt`: (name, stage, source).
+pub fn error_cases() -> Vec<(String, Stage, String)> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/corpus/errors.txt");
+    let text = std::fs::read_to_string(path).expect("errors.txt");
+    text.lines()
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let mut f = l.splitn(3, '\t');
+            let (name, stage, src) = (f.next().unwrap(), f.next().unwrap(), f.next().unwrap());
+            let stage = if stage == "v" {
+                Stage::Vertex
+            } else {
+                Stage::Fragment
+            };
+            (name.to_string(), stage, unescape(src))
+        })
+        .collect()
+}
