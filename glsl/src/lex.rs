@@ -107,12 +107,22 @@ fn exponent(b: &[u8], i: usize) -> usize {
 /// The length and kind of the number at `b[i]` (a digit, or `.` and a digit).
 fn number(b: &[u8], i: usize) -> (usize, PpKind) {
     let suffix = |at: usize, set: &[u8]| usize::from(b.get(at).is_some_and(|c| set.contains(c)));
+    // Mesa's integer suffixes: `u`, `l` (64-bit), `ul`; its float ones: `f`, `lf`.
+    let int_suffix = |at: usize| match (b.get(at), b.get(at + 1)) {
+        (Some(b'u'), Some(b'l')) | (Some(b'U'), Some(b'L')) => 2,
+        (Some(b'u' | b'U' | b'l' | b'L'), _) => 1,
+        _ => 0,
+    };
+    let float_suffix = |at: usize| match (b.get(at), b.get(at + 1)) {
+        (Some(b'l'), Some(b'f')) | (Some(b'L'), Some(b'F')) => 2,
+        _ => suffix(at, b"fF"),
+    };
     let mut best = (0, PpKind::Int);
     if b[i] == b'.' {
         let f = digits(b, i + 1, |c| c.is_ascii_digit());
         let mut n = 1 + f;
         n += exponent(b, i + n);
-        n += suffix(i + n, b"fF");
+        n += float_suffix(i + n);
         return (n, PpKind::Float);
     }
     let d = digits(b, i, |c| c.is_ascii_digit());
@@ -120,7 +130,7 @@ fn number(b: &[u8], i: usize) -> (usize, PpKind) {
         let h = digits(b, i + 2, |c| c.is_ascii_hexdigit());
         if h > 0 {
             let n = 2 + h;
-            best = (n + suffix(i + n, b"uU"), PpKind::Int);
+            best = (n + int_suffix(i + n), PpKind::Int);
         }
     }
     let int = if b[i] == b'0' {
@@ -128,7 +138,7 @@ fn number(b: &[u8], i: usize) -> (usize, PpKind) {
     } else {
         d
     };
-    let int = int + suffix(i + int, b"uU");
+    let int = int + int_suffix(i + int);
     if int > best.0 {
         best = (int, PpKind::Int);
     }
@@ -144,7 +154,7 @@ fn number(b: &[u8], i: usize) -> (usize, PpKind) {
         }
     }
     if float > 0 {
-        float += suffix(i + float, b"fF");
+        float += float_suffix(i + float);
         if float > best.0 {
             best = (float, PpKind::Float);
         }
@@ -382,13 +392,18 @@ pub enum Tok {
     Int(u32),
     /// An unsigned integer literal (`u` suffix).
     Uint(u32),
+    /// A 64-bit integer literal (`l` suffix; Mesa lexes it in every version).
+    Int64(u64),
+    /// A 64-bit unsigned integer literal (`ul` suffix).
+    Uint64(u64),
     /// A floating-point literal.
     Float(f64),
     /// `true` or `false`.
     Bool(bool),
     /// An operator or punctuator.
     Punct(&'static str),
-    /// A reserved word (already reported; Mesa's `ERROR_TOK`).
+    /// A reserved word (already reported) or a double literal (`1.0lf`): Mesa's
+    /// `ERROR_TOK`.
     Reserved(String),
     /// A character that starts no token (Mesa's "invalid token").
     Invalid(String),
@@ -613,11 +628,13 @@ fn reserved(w: &str, version: u32) -> bool {
         || (version == 130 && matches!(w, "samplerBuffer" | "row_major"))
 }
 
-/// Parses an integer literal's text (without checking its range) into its value and
-/// whether it has the `u` suffix; `None` when it exceeds 32 bits.
-pub fn int_value(text: &str) -> (Option<u32>, bool) {
-    let unsigned = text.ends_with(['u', 'U']);
-    let t = text.trim_end_matches(['u', 'U']);
+/// Parses an integer literal's text: its value (`None` beyond 64 bits), whether it is
+/// unsigned (`u`) and whether it is 64-bit (`l`).
+pub fn int_literal(text: &str) -> (Option<u64>, bool, bool) {
+    let t = text.trim_end_matches(['u', 'U', 'l', 'L']);
+    let suffix = &text[t.len()..];
+    let unsigned = suffix.contains(['u', 'U']);
+    let long = suffix.contains(['l', 'L']);
     let v = if let Some(h) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
         u64::from_str_radix(h, 16)
     } else if t.len() > 1 && t.starts_with('0') {
@@ -625,7 +642,14 @@ pub fn int_value(text: &str) -> (Option<u32>, bool) {
     } else {
         t.parse::<u64>()
     };
-    (v.ok().and_then(|v| u32::try_from(v).ok()), unsigned)
+    (v.ok(), unsigned, long)
+}
+
+/// Parses a 32-bit integer literal's text into its value (`None` when it exceeds 32
+/// bits) and whether it has the `u` suffix.
+pub fn int_value(text: &str) -> (Option<u32>, bool) {
+    let (v, unsigned, _) = int_literal(text);
+    (v.and_then(|v| u32::try_from(v).ok()), unsigned)
 }
 
 /// Turns a preprocessing token into the language token of `version`, reporting reserved
@@ -648,6 +672,17 @@ pub fn classify(t: &PpTok, version: u32, pos: Pos, log: &mut Log) -> Tok {
                 return Tok::Reserved(t.text.clone());
             }
             Tok::Ident(t.text.clone())
+        }
+        PpKind::Int if int_literal(&t.text).2 => match int_literal(&t.text) {
+            (Some(v), false, _) => Tok::Int64(v),
+            (Some(v), true, _) => Tok::Uint64(v),
+            (None, ..) => {
+                log.error(pos, format!("literal value `{}' out of range", t.text));
+                Tok::Int64(u64::MAX)
+            }
+        },
+        PpKind::Float if t.text.ends_with("lf") || t.text.ends_with("LF") => {
+            Tok::Reserved(t.text.clone())
         }
         PpKind::Int => match int_value(&t.text) {
             (Some(v), false) => Tok::Int(v),
@@ -687,6 +722,8 @@ pub fn mesa_name(t: &Tok, known: bool, is_type: bool) -> String {
         Tok::Type(_) => "BASIC_TYPE_TOK".into(),
         Tok::Int(_) => "INTCONSTANT".into(),
         Tok::Uint(_) => "UINTCONSTANT".into(),
+        Tok::Int64(_) => "INT64CONSTANT".into(),
+        Tok::Uint64(_) => "UINT64CONSTANT".into(),
         Tok::Float(_) => "FLOATCONSTANT".into(),
         Tok::Bool(_) => "BOOLCONSTANT".into(),
         Tok::Reserved(_) => "ERROR_TOK".into(),

@@ -50,7 +50,7 @@ pub fn parse_with_log(sources: &[&str], stage: Stage) -> (Option<Shader>, Log) {
     {
         return (None, log);
     }
-    let items = parse::Parser::new(&out.tokens, &mut log).translation_unit();
+    let items = parse::Parser::new(&out.tokens, stage, &mut log).translation_unit();
     match items {
         Ok(items) if !log.has_errors() => (
             Some(Shader {

@@ -90,7 +90,7 @@ fn expression_positions_follow_mesa() {
 fn declarations_and_statements() {
     let s = frag(
         "#version 330\n\
-         layout(std140, binding_point = 2) uniform Block { mat4 m; } blocks[2];\n\
+         layout(std140, location = 2) uniform Block { mat4 m; } blocks[2];\n\
          struct S { float a, b[2]; };\n\
          S s1, s2[3] = S[3](S(1.0, float[2](0.0, 1.0)), S(2.0, float[](0.0, 1.0)), s1);\n\
          invariant gl_FragCoord;\n\
@@ -107,7 +107,7 @@ fn declarations_and_statements() {
         panic!()
     };
     assert_eq!(ids.len(), 2);
-    assert_eq!(ids[1].name, "binding_point");
+    assert_eq!(ids[1].name, "location");
     assert!(ids[1].value.is_some());
     assert_eq!(b.instance.as_ref().unwrap().0, "blocks");
     let External::Decl(Decl::Vars { ty, vars }) = &s.items[1] else {
@@ -155,6 +155,15 @@ fn versions_and_profiles() {
     assert!(parse(&["#version 130\nfloat flat;\n"], Stage::Vertex).is_err());
     assert!(parse(&["#version 130\nfloat layout;\n"], Stage::Vertex).is_ok());
     assert!(parse(&["#version 140\nfloat layout;\n"], Stage::Vertex).is_err());
+    // Mesa's grammar rejects a layout identifier it does not know, there and then.
+    let (_, log) = parse_with_log(
+        &["#version 330\nlayout(binding_point) uniform B { int x; };\n"],
+        Stage::Vertex,
+    );
+    assert_eq!(
+        log.to_string(),
+        "0:2(8): error: unrecognized layout identifier `binding_point'\n"
+    );
 }
 
 #[test]

@@ -429,6 +429,9 @@ pub enum Callee {
     Name(String),
     /// A constructor of a basic type or an array type (`vec4(...)`, `float[3](...)`).
     Type(TypeSpec),
+    /// Any other expression before `(` (Mesa's grammar allows it; its checker says
+    /// "function name is not an identifier").
+    Expr(Box<Expr>),
 }
 
 /// The kinds of expression.
@@ -440,6 +443,10 @@ pub enum ExprKind {
     Int(u32),
     /// A `uint` literal.
     Uint(u32),
+    /// An `int64_t` literal (`l` suffix).
+    Int64(u64),
+    /// A `uint64_t` literal (`ul` suffix).
+    Uint64(u64),
     /// A `float` literal.
     Float(f64),
     /// `true` or `false`.

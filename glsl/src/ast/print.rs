@@ -329,6 +329,12 @@ pub fn expr(o: &mut String, e: &Expr) {
         ExprKind::Uint(v) => {
             let _ = write!(o, "{v}u");
         }
+        ExprKind::Int64(v) => {
+            let _ = write!(o, "{v}l");
+        }
+        ExprKind::Uint64(v) => {
+            let _ = write!(o, "{v}ul");
+        }
         ExprKind::Float(v) if v.is_finite() => {
             let _ = write!(o, "{v:?}");
         }
@@ -402,6 +408,11 @@ pub fn expr(o: &mut String, e: &Expr) {
             match c {
                 Callee::Name(n) => o.push_str(n),
                 Callee::Type(t) => type_spec(o, t, 0),
+                Callee::Expr(e) => {
+                    o.push('(');
+                    expr(o, e);
+                    o.push(')');
+                }
             }
             args(o, a);
         }

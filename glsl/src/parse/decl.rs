@@ -2,6 +2,7 @@
 //! `precision` statements, function prototypes and definitions.
 
 use super::{PResult, Parser};
+use crate::ast::Stage;
 use crate::ast::{
     ArraySize, Block, Decl, Declarator, External, FullType, FunctionDef, Interp, LayoutId, Member,
     Param, Precision, Prototype, Qualifier, Storage, StructSpec, TypeName, TypeSpec,
@@ -80,6 +81,13 @@ impl Parser<'_> {
             } else {
                 None
             };
+            if !self.layout_id_known(&name, value.is_some()) {
+                // Mesa's grammar action reports it and stops the parse (`YYERROR`
+                // without error recovery), before any syntax error after it.
+                self.log
+                    .error(pos, format!("unrecognized layout identifier `{name}'"));
+                return Err(super::Fail);
+            }
             ids.push(LayoutId { name, value, pos });
             if !self.is(",") {
                 break;
@@ -88,6 +96,34 @@ impl Parser<'_> {
         }
         self.expect(")")?;
         Ok(ids)
+    }
+
+    /// Whether Mesa's grammar knows a layout identifier (with `= value` or alone) for
+    /// this stage; it compares them without regard to case.
+    fn layout_id_known(&self, name: &str, valued: bool) -> bool {
+        let n = name.to_ascii_lowercase();
+        let n = n.as_str();
+        let stage = self.stage;
+        if valued {
+            return n == "location"
+                || (stage == Stage::Fragment && n == "index")
+                || (stage == Stage::Geometry && matches!(n, "max_vertices" | "invocations"));
+        }
+        matches!(
+            n,
+            "shared" | "packed" | "std140" | "row_major" | "column_major"
+        ) || (stage == Stage::Fragment && matches!(n, "origin_upper_left" | "pixel_center_integer"))
+            || (stage == Stage::Geometry
+                && matches!(
+                    n,
+                    "points"
+                        | "lines"
+                        | "lines_adjacency"
+                        | "triangles"
+                        | "triangles_adjacency"
+                        | "line_strip"
+                        | "triangle_strip"
+                ))
     }
 
     /// Array dimensions: `[]` or `[size]`, repeated.
@@ -202,19 +238,29 @@ impl Parser<'_> {
             }));
         }
         let qualifiers = self.qualifiers()?;
-        if !qualifiers.is_empty() {
-            if self.is(";") {
-                self.bump();
-                return Ok(External::Decl(Decl::Default {
-                    qualifiers,
-                    pos: start,
-                }));
-            }
-            if let Tok::Ident(n) = self.peek() {
-                if !self.types.contains(n) {
-                    if qualifiers == [Qualifier::Invariant] {
-                        return self.invariant_list();
-                    }
+        // `layout(...) uniform;` and interface blocks take layouts and one of `in`,
+        // `out`, `uniform`, as Mesa's `layout_defaults` and `interface_qualifier`.
+        let interface = matches!(
+            qualifiers.last(),
+            Some(Qualifier::Storage(
+                Storage::In | Storage::Out | Storage::Uniform
+            ))
+        ) && qualifiers[..qualifiers.len() - 1]
+            .iter()
+            .all(|q| matches!(q, Qualifier::Layout(_)));
+        if interface && qualifiers.len() > 1 && self.is(";") {
+            self.bump();
+            return Ok(External::Decl(Decl::Default {
+                qualifiers,
+                pos: start,
+            }));
+        }
+        if let Tok::Ident(n) = self.peek() {
+            if !self.types.contains(n) {
+                if qualifiers == [Qualifier::Invariant] {
+                    return self.invariant_list();
+                }
+                if interface {
                     return self.block(qualifiers);
                 }
             }
@@ -228,7 +274,6 @@ impl Parser<'_> {
         let (name, pos) = self.ident()?;
         if self.is("(") {
             let params = self.params()?;
-            self.declare(&name);
             let proto = Prototype {
                 ret: ty,
                 name,
@@ -236,8 +281,16 @@ impl Parser<'_> {
                 pos,
             };
             if top && self.is("{") {
+                self.push_scope();
+                for p in &proto.params {
+                    if let Some(n) = &p.name {
+                        self.declare(n);
+                    }
+                }
                 self.bump();
-                let body = self.statements_until_brace()?;
+                let body = self.statements_until_brace();
+                self.pop_scope();
+                let body = body?;
                 return Ok(External::Function(FunctionDef { proto, body }));
             }
             self.expect(";")?;
@@ -287,7 +340,6 @@ impl Parser<'_> {
         let instance = match self.peek() {
             Tok::Ident(_) => {
                 let (n, _) = self.ident()?;
-                self.declare(&n);
                 Some((n, self.array_sizes()?))
             }
             _ => None,
@@ -311,12 +363,24 @@ impl Parser<'_> {
         } else if !self.is(")") {
             loop {
                 let pos = self.pos();
-                let qualifiers = self.qualifiers()?;
+                let mut qualifiers = Vec::new();
+                while let Tok::Word(
+                    w @ (Word::Const
+                    | Word::In
+                    | Word::Out
+                    | Word::Inout
+                    | Word::Lowp
+                    | Word::Mediump
+                    | Word::Highp),
+                ) = self.peek()
+                {
+                    qualifiers.extend(qualifier_word(*w));
+                    self.bump();
+                }
                 let spec = self.type_spec()?;
                 let (name, array) = match self.peek() {
                     Tok::Ident(_) => {
                         let (n, _) = self.ident()?;
-                        self.declare(&n);
                         (Some(n), self.array_sizes()?)
                     }
                     _ => (None, vec![]),

@@ -148,6 +148,10 @@ impl Parser<'_> {
                     self.bump();
                     ExprKind::Unary(UnOp::PostInc, Box::new(e))
                 }
+                Tok::Punct("(") => {
+                    let args = self.call_args()?;
+                    ExprKind::Call(Callee::Expr(Box::new(e)), args)
+                }
                 Tok::Punct("--") => {
                     self.bump();
                     ExprKind::Unary(UnOp::PostDec, Box::new(e))
@@ -180,6 +184,8 @@ impl Parser<'_> {
         let kind = match self.peek() {
             Tok::Int(v) => ExprKind::Int(*v),
             Tok::Uint(v) => ExprKind::Uint(*v),
+            Tok::Int64(v) => ExprKind::Int64(*v),
+            Tok::Uint64(v) => ExprKind::Uint64(*v),
             Tok::Float(v) => ExprKind::Float(*v),
             Tok::Bool(v) => ExprKind::Bool(*v),
             Tok::Punct("(") => {
@@ -197,7 +203,7 @@ impl Parser<'_> {
                 };
                 return Ok(Expr { kind, pos });
             }
-            Tok::Ident(_) | Tok::Type(_) => {
+            Tok::Ident(_) | Tok::Type(_) | Tok::Word(Word::Void | Word::Struct) => {
                 let spec = self.type_spec()?;
                 if !self.is("(") {
                     return self.fail();

@@ -41,10 +41,12 @@ pub struct Parser<'a> {
     log: &'a mut Log,
     /// Struct names declared so far (Mesa's `TYPE_IDENTIFIER`s).
     types: HashSet<String>,
-    /// Other names declared so far (Mesa's `IDENTIFIER`s, for error messages), with
-    /// the index of the first token that sees them.
-    names: HashMap<String, usize>,
+    /// The variables declared in each open scope (Mesa's `IDENTIFIER`s, for error
+    /// messages), with the index of the first token that sees each.
+    names: Vec<HashMap<String, usize>>,
     depth: u32,
+    /// The shader's stage (layout identifiers depend on it).
+    stage: crate::ast::Stage,
 }
 
 static EOF: Token = Token {
@@ -57,15 +59,16 @@ static EOF: Token = Token {
 };
 
 impl<'a> Parser<'a> {
-    /// A parser over `toks` (which end with [`Tok::Eof`]).
-    pub fn new(toks: &'a [Token], log: &'a mut Log) -> Parser<'a> {
+    /// A parser over `toks` (which end with [`Tok::Eof`]) of a shader of `stage`.
+    pub fn new(toks: &'a [Token], stage: crate::ast::Stage, log: &'a mut Log) -> Parser<'a> {
         Parser {
             toks,
             i: 0,
             log,
             types: HashSet::new(),
-            names: HashMap::new(),
+            names: vec![HashMap::new()],
             depth: 0,
+            stage,
         }
     }
 
@@ -107,7 +110,9 @@ impl<'a> Parser<'a> {
         let t = self.peek();
         let (known, is_type) = match t {
             Tok::Ident(n) => (
-                self.names.get(n).is_some_and(|&k| k <= self.i) || n.starts_with("gl_"),
+                self.names
+                    .iter()
+                    .any(|m| m.get(n).is_some_and(|&k| k <= self.i)),
                 self.types.contains(n),
             ),
             _ => (false, false),
@@ -138,12 +143,27 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Records a declared name. Mesa's grammar enters it into the symbol table when it
-    /// reduces the declaration, after the lexer has read the next token, so names are
-    /// known from the token after that one.
+    /// Records a declared variable. Mesa's grammar enters it into the symbol table when
+    /// it reduces the declaration, after the lexer has read the next token, so names
+    /// are known from the token after that one. (Built-ins are not in the table while
+    /// Mesa parses, so `gl_Position` is a `NEW_IDENTIFIER` to its syntax errors.)
     fn declare(&mut self, name: &str) {
         let from = self.i + 1;
-        self.names.entry(name.to_string()).or_insert(from);
+        if let Some(scope) = self.names.last_mut() {
+            scope.entry(name.to_string()).or_insert(from);
+        }
+    }
+
+    /// Opens a scope for declared names (a compound statement or a `for`).
+    fn push_scope(&mut self) {
+        self.names.push(HashMap::new());
+    }
+
+    /// Closes the innermost scope.
+    fn pop_scope(&mut self) {
+        if self.names.len() > 1 {
+            self.names.pop();
+        }
     }
 
     fn enter(&mut self) -> PResult<()> {
@@ -167,6 +187,11 @@ impl<'a> Parser<'a> {
     pub fn translation_unit(&mut self) -> PResult<Vec<crate::ast::External>> {
         let mut items = Vec::new();
         while *self.peek() != Tok::Eof {
+            if self.is(";") {
+                // An empty declaration at file scope (Mesa accepts it).
+                self.bump();
+                continue;
+            }
             items.push(self.external()?);
         }
         Ok(items)

@@ -90,7 +90,10 @@ impl Parser<'_> {
         let kind = match self.peek() {
             Tok::Punct("{") => {
                 self.bump();
-                StmtKind::Compound(self.statements_until_brace()?)
+                self.push_scope();
+                let body = self.statements_until_brace();
+                self.pop_scope();
+                StmtKind::Compound(body?)
             }
             Tok::Punct(";") => {
                 self.bump();
@@ -112,18 +115,10 @@ impl Parser<'_> {
                 self.bump();
                 let e = self.paren_expr()?;
                 self.expect("{")?;
-                StmtKind::Switch(e, self.statements_until_brace()?)
-            }
-            Tok::Word(Word::Case) => {
-                self.bump();
-                let e = self.expression()?;
-                self.expect(":")?;
-                StmtKind::Case(e)
-            }
-            Tok::Word(Word::Default) => {
-                self.bump();
-                self.expect(":")?;
-                StmtKind::Default
+                self.push_scope();
+                let body = self.switch_body();
+                self.pop_scope();
+                StmtKind::Switch(e, body?)
             }
             Tok::Word(Word::While) => {
                 self.bump();
@@ -167,9 +162,53 @@ impl Parser<'_> {
         Ok(Stmt { kind, pos })
     }
 
+    /// A switch body after its `{`: groups of `case e:`/`default:` labels, each group
+    /// followed by at least one statement (Mesa's `case_statement_list`).
+    fn switch_body(&mut self) -> PResult<Vec<Stmt>> {
+        let mut body = Vec::new();
+        let mut after_label = false;
+        loop {
+            let pos = self.pos();
+            let kind = match self.peek() {
+                Tok::Punct("}") if !after_label => {
+                    self.bump();
+                    return Ok(body);
+                }
+                Tok::Word(Word::Case) => {
+                    self.bump();
+                    let e = self.expression()?;
+                    self.expect(":")?;
+                    StmtKind::Case(e)
+                }
+                Tok::Word(Word::Default) => {
+                    self.bump();
+                    self.expect(":")?;
+                    StmtKind::Default
+                }
+                _ if body.is_empty() || matches!(self.peek(), Tok::Punct("}")) => {
+                    return self.fail()
+                }
+                _ => {
+                    after_label = false;
+                    body.push(self.statement()?);
+                    continue;
+                }
+            };
+            after_label = true;
+            body.push(Stmt { kind, pos });
+        }
+    }
+
     fn for_stmt(&mut self) -> PResult<StmtKind> {
         self.bump();
         self.expect("(")?;
+        self.push_scope();
+        let r = self.for_rest();
+        self.pop_scope();
+        r
+    }
+
+    fn for_rest(&mut self) -> PResult<StmtKind> {
         let ipos = self.pos();
         let init = if self.is(";") {
             self.bump();

@@ -50,6 +50,10 @@ impl Pp<'_> {
                 } else {
                     match args.first() {
                         Some(t) if t.kind == PpKind::Ident => {
+                            if let Some(x) = args.get(1) {
+                                let at = self.rpos(x.pos);
+                                self.log.pp_error(at, "extra tokens at end of directive");
+                            }
                             self.defined(t) == (name.text == "ifdef")
                         }
                         t => {
@@ -95,6 +99,7 @@ impl Pp<'_> {
                     c.done |= ok;
                 }
             }
+            "else" | "endif" if !self.conds.is_empty() && self.extra_tokens(args, line.end) => {}
             "else" => {
                 let Some(c) = self.conds.last_mut() else {
                     self.log.pp_error(hash, "#else without #if\n");
@@ -115,6 +120,9 @@ impl Pp<'_> {
             }
             _ if !taking => {}
             "define" => self.define(args, hash),
+            "undef" if args.len() > 1 => {
+                self.extra_tokens(&args[1..], line.end);
+            }
             "undef" => match args.first() {
                 Some(t) if t.kind == PpKind::Ident => {
                     if t.text.starts_with("GL_") {
@@ -145,12 +153,28 @@ impl Pp<'_> {
     /// Reports glcpp's syntax error for a directive whose name operand is `t` (or
     /// missing, at the line's end `end`).
     fn not_identifier(&mut self, t: Option<&PpTok>, end: Pos) {
+        self.unexpected(t, end, "IDENTIFIER");
+    }
+
+    /// Reports glcpp's `syntax error, unexpected T, expecting WHAT` at `t` (or at the
+    /// line's end `end` when `t` is missing).
+    fn unexpected(&mut self, t: Option<&PpTok>, end: Pos, what: &str) {
         let at = self.rpos(t.map_or(end, |t| t.pos));
-        let what = glcpp_name(t);
+        let name = glcpp_name(t);
         self.log.pp_error(
             at,
-            format!("syntax error, unexpected {what}, expecting IDENTIFIER"),
+            format!("syntax error, unexpected {name}, expecting {what}"),
         );
+    }
+
+    /// True (after reporting glcpp's error) when `extra` holds tokens a directive does
+    /// not take.
+    fn extra_tokens(&mut self, extra: &[PpTok], end: Pos) -> bool {
+        if extra.is_empty() {
+            return false;
+        }
+        self.unexpected(extra.first(), end, "NEWLINE");
+        true
     }
 
     /// Evaluates a `#if`/`#elif` condition; errors count as false.
@@ -181,7 +205,7 @@ impl Pp<'_> {
                 let n = if paren { i + 2 } else { i + 1 };
                 let name = args.get(n).filter(|a| a.kind == PpKind::Ident);
                 let closed = !paren || super::is_punct(args.get(n + 1), ")");
-                let Some(name) = name.filter(|_| closed) else {
+                let Some(name) = name.filter(|n| closed && n.text != "defined") else {
                     let at = self.rpos(t.pos);
                     self.log
                         .pp_error(at, "\"defined\" not followed by an identifier");
@@ -197,6 +221,7 @@ impl Pp<'_> {
             toks.push(t.clone());
             i += 1;
         }
+        let toks = super::expr::glcpp_tokens(toks);
         let (value, error) = eval(&toks, end);
         if let Some((pos, msg)) = error {
             let at = self.rpos(pos);
@@ -243,7 +268,7 @@ impl Pp<'_> {
                     if super::is_punct(t, ")") {
                         break;
                     }
-                    "expecting ')' or IDENTIFIER"
+                    "expecting IDENTIFIER or ')'"
                 } else if super::is_punct(t, ")") {
                     break;
                 } else if super::is_punct(t, ",") {
@@ -305,16 +330,19 @@ impl Pp<'_> {
             return;
         }
         self.version_seen = true;
+        // glcpp's grammar: `#version INTEGER [IDENTIFIER] NEWLINE`.
         let Some(n) = args.first().filter(|t| t.kind == PpKind::Int) else {
-            let t = args.first();
-            let at = self.rpos(t.map_or(end, |t| t.pos));
-            let what = glcpp_name(t);
-            self.log.pp_error(
-                at,
-                format!("syntax error, unexpected {what}, expecting INTEGER or INTEGER_STRING"),
-            );
+            self.unexpected(args.first(), end, "INTEGER_STRING");
             return;
         };
+        if args.get(1).is_some_and(|t| t.kind != PpKind::Ident) {
+            self.unexpected(args.get(1), end, "IDENTIFIER or NEWLINE");
+            return;
+        }
+        if args.len() > 2 {
+            self.unexpected(args.get(2), end, "NEWLINE");
+            return;
+        }
         let at = self.rpos(n.pos);
         let v = int_value(&n.text).0.unwrap_or(0);
         if !VERSIONS.contains(&v) {

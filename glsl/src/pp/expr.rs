@@ -37,6 +37,57 @@ pub fn glcpp_name(t: Option<&PpTok>) -> String {
     }
 }
 
+/// glcpp's operators of more than one character; the scanner's others (`+=`, `^^`,
+/// `<<=`, …) are several tokens to glcpp.
+const GLCPP_OPS: [&str; 11] = [
+    "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "++", "--", "##",
+];
+
+/// Re-cuts a `#if` line's tokens as glcpp's lexer does: operators it does not have
+/// split into their characters, and a number run together with letters, digits or
+/// dots (`3flat`, `1.5`) becomes one non-integer token.
+pub fn glcpp_tokens(toks: Vec<PpTok>) -> Vec<PpTok> {
+    let mut out: Vec<PpTok> = Vec::with_capacity(toks.len());
+    for t in toks {
+        let glued = !t.space
+            && out.last().is_some_and(|p| {
+                matches!(p.kind, PpKind::Int | PpKind::Float | PpKind::Other)
+                    && p.text.starts_with(|c: char| c.is_ascii_digit() || c == '.')
+            });
+        if glued && matches!(t.kind, PpKind::Ident | PpKind::Int | PpKind::Float) {
+            if let Some(p) = out.last_mut() {
+                p.text.push_str(&t.text);
+                p.kind = PpKind::Other;
+            }
+            continue;
+        }
+        if t.kind == PpKind::Punct && t.text.len() > 1 && !GLCPP_OPS.contains(&t.text.as_str()) {
+            let mut rest = t.text.as_str();
+            let mut col = t.pos.col;
+            while !rest.is_empty() {
+                let n = GLCPP_OPS
+                    .iter()
+                    .find(|o| rest.starts_with(*o))
+                    .map_or(1, |o| o.len());
+                let mut piece = t.clone();
+                piece.text = rest[..n].to_string();
+                piece.pos.col = col;
+                piece.space = t.space && col == t.pos.col;
+                out.push(piece);
+                rest = &rest[n..];
+                col += n as u32;
+            }
+            continue;
+        }
+        let mut t = t;
+        if t.kind == PpKind::Float {
+            t.kind = PpKind::Other;
+        }
+        out.push(t);
+    }
+    out
+}
+
 /// An evaluation error: where and what.
 pub type EvalError = (Pos, String);
 
