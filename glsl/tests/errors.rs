@@ -9,19 +9,13 @@ mod mesa;
 
 use common::{mesa_first_error, our_first_error};
 use mesa::{run, Context, Job};
-use softgl_glsl::{parse_with_log, Stage};
+use softgl_glsl::parse_with_log;
 
 #[test]
 fn errors_match_mesa() {
     let cases = common::error_cases();
     assert!(cases.len() >= 140, "{} cases", cases.len());
-    let jobs: Vec<Job> = cases
-        .iter()
-        .map(|(_, st, src)| match st {
-            Stage::Vertex => Job::Vertex(src),
-            _ => Job::Fragment(src),
-        })
-        .collect();
+    let jobs = common::jobs(&cases, Job::Vertex, Job::Fragment);
     let mesa = run(Context::Compat, &jobs);
     let mut failures = Vec::new();
     let mut agree_col = 0;
@@ -37,15 +31,7 @@ fn errors_match_mesa() {
             failures.push(format!("{name}: we accept it (tree: {})", tree.is_some()));
             continue;
         };
-        let line = |p: &str| p.split('(').next().unwrap_or("").to_string();
-        let ok = line(&ours.0) == line(&theirs.0)
-            && ours.1 == theirs.1
-            && if ours.2.starts_with("syntax error, unexpected ") {
-                theirs.2.starts_with(&ours.2)
-            } else {
-                ours.2 == theirs.2.trim_end()
-                    || (ours.2.starts_with("GLSL ") && theirs.2.starts_with(&ours.2[..20]))
-            };
+        let ok = common::agrees(&ours, &theirs);
         if !ok {
             failures.push(format!("{name}: ours {ours:?}, Mesa's {theirs:?}"));
         } else if ours.0 == theirs.0 {

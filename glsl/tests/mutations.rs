@@ -14,7 +14,7 @@ mod mesa;
 
 use common::{mesa_first_error, our_first_error};
 use mesa::{run, Context, Job};
-use softgl_glsl::{parse_with_log, Stage};
+use softgl_glsl::parse_with_log;
 
 const TOKENS: &[&str] = &[
     ";",
@@ -137,13 +137,7 @@ fn mutated_shaders_agree_with_mesa() {
             cases.push((format!("{name}#{k}"), *stage, mutate(src, &mut rng)));
         }
     }
-    let jobs: Vec<Job> = cases
-        .iter()
-        .map(|(_, st, src)| match st {
-            Stage::Vertex => Job::Vertex(src),
-            _ => Job::Fragment(src),
-        })
-        .collect();
+    let jobs = common::jobs(&cases, Job::Vertex, Job::Fragment);
     let mesa = run(Context::Compat, &jobs);
     let (mut syntax, mut same_col, mut valid, mut accepted) = (0, 0, 0, 0);
     let mut bad = Vec::new();
@@ -154,12 +148,7 @@ fn mutated_shaders_agree_with_mesa() {
         match (&theirs, &ours) {
             (Some(t), o) if is_syntax(&t.1, &t.2) => {
                 syntax += 1;
-                let line = |p: &str| p.split('(').next().unwrap_or("").to_string();
-                let agree = o.as_ref().is_some_and(|o| {
-                    line(&o.0) == line(&t.0)
-                        && o.1 == t.1
-                        && (t.2.starts_with(&o.2) || o.2.starts_with("GLSL "))
-                });
+                let agree = o.as_ref().is_some_and(|o| common::agrees(o, t));
                 if !agree {
                     bad.push(format!("{name}: ours {o:?}, Mesa's {t:?}\n{src}"));
                 } else if o.as_ref().is_some_and(|o| o.0 == t.0) {

@@ -234,11 +234,14 @@ impl Pp<'_> {
         let name = match args.first() {
             Some(t) if t.kind == PpKind::Ident => t,
             Some(t) => {
+                // Mesa quotes the text up to the next blank.
+                let word: String = std::iter::once(t)
+                    .chain(args[1..].iter().take_while(|a| !a.space))
+                    .map(|a| a.text.as_str())
+                    .collect();
                 let at = self.rpos(t.pos);
-                self.log.pp_error(
-                    at,
-                    format!("#define followed by a non-identifier: {}", t.text),
-                );
+                self.log
+                    .pp_error(at, format!("#define followed by a non-identifier: {word}"));
                 return;
             }
             None => {

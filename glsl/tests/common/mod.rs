@@ -95,3 +95,37 @@ pub fn error_cases() -> Vec<(String, Stage, String)> {
         })
         .collect()
 }
+
+/// The reference jobs for `cases`: `vert` or `frag` of each source by its stage.
+pub fn jobs<'a, J>(
+    cases: &'a [(String, Stage, String)],
+    vert: fn(&'a str) -> J,
+    frag: fn(&'a str) -> J,
+) -> Vec<J> {
+    cases
+        .iter()
+        .map(|(_, st, src)| match st {
+            Stage::Vertex => vert(src),
+            _ => frag(src),
+        })
+        .collect()
+}
+
+/// An error line as (position, kind, text).
+pub type ErrorLine = (String, String, String);
+
+/// Whether our first error agrees with Mesa's: same line and kind, and the same text
+/// (for a syntax error, Mesa's text starts with ours, its `expecting` list aside; for
+/// an unsupported `#version`, up to Mesa's longer list of versions).
+pub fn agrees(ours: &ErrorLine, theirs: &ErrorLine) -> bool {
+    let line = |p: &str| p.split('(').next().unwrap_or("").to_string();
+    line(&ours.0) == line(&theirs.0)
+        && ours.1 == theirs.1
+        && if ours.2.starts_with("syntax error, unexpected ") {
+            theirs.2.starts_with(&ours.2)
+        } else if ours.2.starts_with("GLSL ") {
+            theirs.2.starts_with(&ours.2[..ours.2.len().min(20)])
+        } else {
+            ours.2 == theirs.2.trim_end()
+        }
+}
