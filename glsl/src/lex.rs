@@ -418,6 +418,10 @@ pub struct Token {
     pub tok: Tok,
     /// Its position in the preprocessed text.
     pub pos: Pos,
+    /// The lexer's error about it (a reserved word, a literal out of range). Mesa's
+    /// lexer reports it when the parser reads the token, so it is logged only if the
+    /// parse gets that far.
+    pub error: Option<String>,
 }
 
 /// The basic type names and the first version that has each (as Mesa lexes them).

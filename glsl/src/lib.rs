@@ -50,7 +50,18 @@ pub fn parse_with_log(sources: &[&str], stage: Stage) -> (Option<Shader>, Log) {
     {
         return (None, log);
     }
-    let items = parse::Parser::new(&out.tokens, stage, &mut log).translation_unit();
+    let mut parse_log = Log::default();
+    let mut parser = parse::Parser::new(&out.tokens, stage, &mut parse_log);
+    let items = parser.translation_unit();
+    let furthest = parser.furthest();
+    // The lexer's errors come as Mesa's lexer meets them: before the parser's, and
+    // only for the tokens the parser reached.
+    for t in out.tokens.iter().take(furthest + 1) {
+        if let Some(e) = &t.error {
+            log.error(t.pos, e.clone());
+        }
+    }
+    log.messages.extend(parse_log.messages);
     match items {
         Ok(items) if !log.has_errors() => (
             Some(Shader {

@@ -467,6 +467,8 @@ pub enum ExprKind {
     Field(Box<Expr>, String),
     /// A function or constructor call.
     Call(Callee, Vec<Expr>),
+    /// `{ a, b }`, an initializer list.
+    InitList(Vec<Expr>),
     /// `a.name(args)` (`length()` of arrays).
     Method(Box<Expr>, String, Vec<Expr>),
 }

@@ -308,15 +308,19 @@ fn binop(op: BinOp) -> &'static str {
         .map_or("?", |(t, _, _)| t)
 }
 
-fn args(o: &mut String, a: &[Expr]) {
-    o.push('(');
+fn list(o: &mut String, a: &[Expr], open: char, close: char) {
+    o.push(open);
     for (i, e) in a.iter().enumerate() {
         if i > 0 {
             o.push_str(", ");
         }
         expr(o, e);
     }
-    o.push(')');
+    o.push(close);
+}
+
+fn args(o: &mut String, a: &[Expr]) {
+    list(o, a, '(', ')');
 }
 
 /// Writes an expression, fully parenthesised.
@@ -416,6 +420,7 @@ pub fn expr(o: &mut String, e: &Expr) {
             }
             args(o, a);
         }
+        ExprKind::InitList(items) => list(o, items, '{', '}'),
         ExprKind::Method(a, n, x) => {
             expr(o, a);
             o.push('.');

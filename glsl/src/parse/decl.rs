@@ -248,7 +248,8 @@ impl Parser<'_> {
         ) && qualifiers[..qualifiers.len() - 1]
             .iter()
             .all(|q| matches!(q, Qualifier::Layout(_)));
-        if interface && qualifiers.len() > 1 && self.is(";") {
+        // Layout defaults are file-scope declarations only.
+        if interface && top && qualifiers.len() > 1 && self.is(";") {
             self.bump();
             return Ok(External::Decl(Decl::Default {
                 qualifiers,
@@ -256,7 +257,7 @@ impl Parser<'_> {
             }));
         }
         if let Tok::Ident(n) = self.peek() {
-            if !self.types.contains(n) {
+            if !self.types.contains(n) && !self.known(n) {
                 if qualifiers == [Qualifier::Invariant] {
                     return self.invariant_list();
                 }
@@ -271,9 +272,22 @@ impl Parser<'_> {
             self.bump();
             return Ok(External::Decl(Decl::Vars { ty, vars: vec![] }));
         }
+        if self.is(",") {
+            // Mesa's grammar lets a declarator list start with a type alone
+            // (`vec3 , a;`); its checker then warns of the empty declaration.
+            let mut vars = Vec::new();
+            while self.is(",") {
+                self.bump();
+                let (name, pos) = self.ident()?;
+                vars.push(self.declarator_rest(name, pos)?);
+            }
+            self.expect(";")?;
+            return Ok(External::Decl(Decl::Vars { ty, vars }));
+        }
         let (name, pos) = self.ident()?;
         if self.is("(") {
             let params = self.params()?;
+            self.declare_function(&name);
             let proto = Prototype {
                 ret: ty,
                 name,
@@ -310,7 +324,7 @@ impl Parser<'_> {
         let array = self.array_sizes()?;
         let init = if self.is("=") {
             self.bump();
-            Some(self.assignment()?)
+            Some(self.initializer()?)
         } else {
             None
         };
@@ -319,6 +333,37 @@ impl Parser<'_> {
             name,
             array,
             init,
+            pos,
+        })
+    }
+
+    /// An initializer: an assignment expression or a brace list (`{ a, { b }, }`,
+    /// which Mesa's grammar parses in every version and its checker rejects before
+    /// 4.20).
+    fn initializer(&mut self) -> PResult<crate::ast::Expr> {
+        if !self.is("{") {
+            return self.assignment();
+        }
+        let pos = self.bump().pos;
+        self.enter()?;
+        let mut items = Vec::new();
+        let r = loop {
+            match self.initializer() {
+                Ok(e) => items.push(e),
+                Err(f) => break Err(f),
+            }
+            if self.is(",") {
+                self.bump();
+                if !self.is("}") {
+                    continue;
+                }
+            }
+            break self.expect("}").map(|_| ());
+        };
+        self.leave();
+        r?;
+        Ok(crate::ast::Expr {
+            kind: crate::ast::ExprKind::InitList(items),
             pos,
         })
     }

@@ -47,6 +47,8 @@ pub struct Parser<'a> {
     depth: u32,
     /// The shader's stage (layout identifiers depend on it).
     stage: crate::ast::Stage,
+    /// The furthest token the parser has looked at (Mesa's lexer reads no further).
+    furthest: std::cell::Cell<usize>,
 }
 
 static EOF: Token = Token {
@@ -56,6 +58,7 @@ static EOF: Token = Token {
         line: 1,
         col: 1,
     },
+    error: None,
 };
 
 impl<'a> Parser<'a> {
@@ -69,11 +72,18 @@ impl<'a> Parser<'a> {
             names: vec![HashMap::new()],
             depth: 0,
             stage,
+            furthest: std::cell::Cell::new(0),
         }
+    }
+
+    /// The index of the furthest token looked at.
+    pub fn furthest(&self) -> usize {
+        self.furthest.get()
     }
 
     fn tok_at(&self, n: usize) -> &'a Token {
         let toks = self.toks;
+        self.furthest.set(self.furthest.get().max(self.i + n));
         toks.get(self.i + n).or_else(|| toks.last()).unwrap_or(&EOF)
     }
 
@@ -109,12 +119,7 @@ impl<'a> Parser<'a> {
     fn fail<T>(&mut self) -> PResult<T> {
         let t = self.peek();
         let (known, is_type) = match t {
-            Tok::Ident(n) => (
-                self.names
-                    .iter()
-                    .any(|m| m.get(n).is_some_and(|&k| k <= self.i)),
-                self.types.contains(n),
-            ),
+            Tok::Ident(n) => (self.known(n), self.types.contains(n)),
             _ => (false, false),
         };
         let name = mesa_name(t, known, is_type);
@@ -143,6 +148,14 @@ impl<'a> Parser<'a> {
         }
     }
 
+    /// Whether `name` is a declared variable or function at the current token (Mesa's
+    /// `IDENTIFIER` rather than `NEW_IDENTIFIER`).
+    fn known(&self, name: &str) -> bool {
+        self.names
+            .iter()
+            .any(|m| m.get(name).is_some_and(|&k| k <= self.i))
+    }
+
     /// Records a declared variable. Mesa's grammar enters it into the symbol table when
     /// it reduces the declaration, after the lexer has read the next token, so names
     /// are known from the token after that one. (Built-ins are not in the table while
@@ -150,6 +163,14 @@ impl<'a> Parser<'a> {
     fn declare(&mut self, name: &str) {
         let from = self.i + 1;
         if let Some(scope) = self.names.last_mut() {
+            scope.entry(name.to_string()).or_insert(from);
+        }
+    }
+
+    /// Records a function's name (file scope, like Mesa's function symbols).
+    fn declare_function(&mut self, name: &str) {
+        let from = self.i + 1;
+        if let Some(scope) = self.names.first_mut() {
             scope.entry(name.to_string()).or_insert(from);
         }
     }

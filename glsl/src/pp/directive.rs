@@ -35,6 +35,19 @@ impl Pp<'_> {
         let Some(name) = toks.first() else {
             return;
         };
+        if name.kind != PpKind::Ident {
+            // glcpp: one stray character after `#` is a syntax error at the line's
+            // end; anything longer makes a non-directive.
+            if self.taking() {
+                if toks.len() == 1 && name.text.len() == 1 {
+                    let at = self.rpos(line.end);
+                    self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+                } else {
+                    self.log.pp_error(hash, "Illegal non-directive after #");
+                }
+            }
+            return;
+        }
         let args = &toks[1..];
         let taking = self.taking();
         match name.text.as_str() {
@@ -99,7 +112,9 @@ impl Pp<'_> {
                     c.done |= ok;
                 }
             }
-            "else" | "endif" if !self.conds.is_empty() && self.extra_tokens(args, line.end) => {}
+            "else" | "endif"
+                if (name.text == "else" || !self.conds.is_empty())
+                    && self.extra_tokens(args, line.end) => {}
             "else" => {
                 let Some(c) = self.conds.last_mut() else {
                     self.log.pp_error(hash, "#else without #if\n");
@@ -334,6 +349,7 @@ impl Pp<'_> {
         }
         self.version_seen = true;
         // glcpp's grammar: `#version INTEGER [IDENTIFIER] NEWLINE`.
+        let args = &super::expr::glcpp_tokens(args.to_vec())[..];
         let Some(n) = args.first().filter(|t| t.kind == PpKind::Int) else {
             self.unexpected(args.first(), end, "INTEGER_STRING");
             return;
@@ -380,31 +396,36 @@ impl Pp<'_> {
     }
 
     fn extension(&mut self, args: &[PpTok], end: Pos) {
-        let want =
-            |i: usize, kind: PpKind, text: Option<&str>, what: &str| -> Result<(), (Pos, String)> {
-                match args.get(i) {
-                    Some(t) if t.kind == kind && text.is_none_or(|x| x == t.text) => Ok(()),
-                    t => Err((
-                        t.map_or(end, |t| t.pos),
-                        format!(
-                            "syntax error, unexpected {}, expecting {what}",
-                            t.map_or("NEWLINE".into(), |t| crate::lex::mesa_name(
-                                &crate::lex::classify(
-                                    t,
-                                    self.out.version,
-                                    t.pos,
-                                    &mut crate::diag::Log::default()
-                                ),
-                                true,
-                                false
-                            ))
+        // Mesa's compiler reads `#extension NAME : BEHAVIOR` in a lexer state where
+        // every word is an IDENTIFIER and `:` is COLON.
+        let want = |i: usize,
+                    kind: PpKind,
+                    text: Option<&str>,
+                    what: &str|
+         -> Result<(), (Pos, String)> {
+            match args.get(i) {
+                Some(t) if t.kind == kind && text.is_none_or(|x| x == t.text) => Ok(()),
+                t => {
+                    let name = match t {
+                        None => "NEWLINE".to_string(),
+                        Some(t) if t.kind == PpKind::Ident => "IDENTIFIER".into(),
+                        Some(t) if t.text == ":" => "COLON".into(),
+                        Some(t) => crate::lex::mesa_name(
+                            &crate::lex::classify(t, 330, t.pos, &mut crate::diag::Log::default()),
+                            false,
+                            false,
                         ),
-                    )),
+                    };
+                    Err((
+                        t.map_or(end, |t| t.pos),
+                        format!("syntax error, unexpected {name}{what}"),
+                    ))
                 }
-            };
-        let check = want(0, PpKind::Ident, None, "any identifier")
-            .and_then(|_| want(1, PpKind::Punct, Some(":"), "COLON"))
-            .and_then(|_| want(2, PpKind::Ident, None, "any identifier"));
+            }
+        };
+        let check = want(0, PpKind::Ident, None, "")
+            .and_then(|_| want(1, PpKind::Punct, Some(":"), ", expecting COLON"))
+            .and_then(|_| want(2, PpKind::Ident, None, ""));
         if let Err((pos, msg)) = check {
             let at = self.rpos(pos);
             self.log.error(at, msg);

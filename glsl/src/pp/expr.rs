@@ -30,7 +30,7 @@ pub fn glcpp_name(t: Option<&PpTok>) -> String {
             "++" => "PLUS_PLUS",
             "--" => "MINUS_MINUS",
             "#" => "HASH_TOKEN",
-            p if p.len() == 1 && p != "?" => return format!("'{p}'"),
+            p if p.len() == 1 && "()[]{},+-*/%<>&^|!~=.;".contains(p) => return format!("'{p}'"),
             _ => "OTHER",
         }
         .into(),

@@ -112,6 +112,17 @@ impl Pp<'_> {
                 out.push((t, hide));
                 continue;
             };
+            let ends = [m.body.first(), m.body.last()];
+            if let Some(p) = ends
+                .into_iter()
+                .flatten()
+                .find(|b| b.kind == PpKind::Punct && b.text == "##")
+            {
+                let at = self.rpos(p.pos);
+                self.log
+                    .pp_error(at, "'##' cannot appear at either end of a macro expansion");
+                return Err(Stop::Failed);
+            }
             let mut h = hide.clone();
             h.push(t.text.clone());
             let Some(params) = &m.params else {
@@ -198,8 +209,12 @@ impl Pp<'_> {
         let mut out: Vec<HTok> = Vec::with_capacity(toks.len());
         let mut it = toks.into_iter();
         while let Some(t) = it.next() {
-            if !punct(&t, "##") || out.is_empty() {
+            if !punct(&t, "##") {
                 out.push(t);
+                continue;
+            }
+            if out.is_empty() {
+                // An empty argument before `##`: nothing to paste onto.
                 continue;
             }
             let Some(next) = it.next() else {

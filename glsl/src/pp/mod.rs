@@ -163,6 +163,7 @@ pub fn preprocess(src: &str, stage: &str, log: &mut Log) -> Output {
     pp.out.tokens.push(Token {
         tok: Tok::Eof,
         pos: eof,
+        error: None,
     });
     pp.out
 }
@@ -216,7 +217,26 @@ impl Pp<'_> {
                 self.end_line(1 + line.extra_newlines, 1);
                 continue;
             }
-            if !self.taking() || line.toks.is_empty() {
+            if !self.taking() {
+                // glcpp's lexer, skipping a group, finds conditional directives even
+                // in the middle of a line.
+                let at = line.toks.windows(2).position(|w| {
+                    is_punct(Some(&w[0]), "#")
+                        && w[1].kind == PpKind::Ident
+                        && matches!(
+                            w[1].text.as_str(),
+                            "if" | "ifdef" | "ifndef" | "elif" | "else" | "endif"
+                        )
+                });
+                if let Some(k) = at {
+                    let mut rest = line.clone();
+                    rest.toks.drain(..k);
+                    self.directive(&rest);
+                }
+                self.end_line(1 + line.extra_newlines, 1);
+                continue;
+            }
+            if line.toks.is_empty() {
                 self.end_line(1 + line.extra_newlines, 1);
                 continue;
             }
@@ -249,9 +269,15 @@ impl Pp<'_> {
                         }
                     }
                     Err(Stop::NeedMore) => {
-                        let pos = self.rpos(end);
+                        // The call runs into a directive (glcpp stops at its `#`) or
+                        // the end of the text.
+                        let (pos, what) = match lines.get(i).and_then(|l| l.toks.first()) {
+                            Some(h) if joined < MAX_CALL_LINES => (h.pos, "HASH_TOKEN"),
+                            _ => (end, "end of file"),
+                        };
+                        let pos = self.rpos(pos);
                         self.log
-                            .pp_error(pos, "syntax error, unexpected end of file");
+                            .pp_error(pos, format!("syntax error, unexpected {what}"));
                         self.end_line(1 + after, 1);
                         break;
                     }
@@ -286,14 +312,16 @@ impl Pp<'_> {
                 line: self.out_line,
                 col,
             };
-            if t.kind == PpKind::Punct && (t.text == "#" || t.text == "##") {
+            if t.kind == PpKind::Punct && t.text == "#" {
                 let name = expr::glcpp_name(Some(t));
                 let at = self.rpos(t.pos);
                 self.log
                     .pp_error(at, format!("syntax error, unexpected {name}"));
             }
-            let tok = classify(t, self.out.version, pos, self.log);
-            self.out.tokens.push(Token { tok, pos });
+            let mut lexer_log = Log::default();
+            let tok = classify(t, self.out.version, pos, &mut lexer_log);
+            let error = lexer_log.messages.into_iter().next().map(|m| m.text);
+            self.out.tokens.push(Token { tok, pos, error });
             col = col.saturating_add(t.text.len() as u32);
         }
         col
