@@ -9,6 +9,23 @@ use crate::lex::{int_value, PpKind, PpTok, RawLine};
 
 /// The text of a directive's tokens with the blanks between them as written (a
 /// comment counts as its width in blanks).
+/// The directive names, longest first among those sharing a prefix.
+const DIRECTIVES: [&str; 13] = [
+    "ifndef",
+    "ifdef",
+    "if",
+    "elif",
+    "else",
+    "endif",
+    "error",
+    "extension",
+    "pragma",
+    "version",
+    "define",
+    "undef",
+    "line",
+];
+
 fn text_of(toks: &[PpTok]) -> String {
     let mut s = String::new();
     let mut end: Option<Pos> = None;
@@ -48,7 +65,31 @@ impl Pp<'_> {
             }
             return;
         }
-        let args = &toks[1..];
+        // glcpp matches a directive's name as a prefix: `#defineX 1` defines X.
+        let split;
+        let (name, args) = match DIRECTIVES
+            .iter()
+            .find(|d| name.text.len() > d.len() && name.text.starts_with(*d))
+            .filter(|_| !DIRECTIVES.contains(&name.text.as_str()))
+        {
+            Some(d) => {
+                let mut head = name.clone();
+                head.text = d.to_string();
+                let mut tail = name.clone();
+                tail.text = name.text[d.len()..].to_string();
+                if tail.text.starts_with(|c: char| c.is_ascii_digit()) {
+                    tail.kind = PpKind::Int;
+                }
+                tail.pos.col += d.len() as u32;
+                tail.space = false;
+                let rest: Vec<PpTok> = std::iter::once(tail)
+                    .chain(toks[1..].iter().cloned())
+                    .collect();
+                split = (head, rest);
+                (&split.0, &split.1[..])
+            }
+            None => (name, &toks[1..]),
+        };
         let taking = self.taking();
         match name.text.as_str() {
             "if" | "ifdef" | "ifndef" => {
@@ -407,7 +448,7 @@ impl Pp<'_> {
                 Some(t) if t.kind == kind && text.is_none_or(|x| x == t.text) => Ok(()),
                 t => {
                     let name = match t {
-                        None => "NEWLINE".to_string(),
+                        None => "EOL".to_string(),
                         Some(t) if t.kind == PpKind::Ident => "IDENTIFIER".into(),
                         Some(t) if t.text == ":" => "COLON".into(),
                         Some(t) => crate::lex::mesa_name(

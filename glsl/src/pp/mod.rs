@@ -132,6 +132,28 @@ fn is_punct(t: Option<&PpTok>, p: &str) -> bool {
     t.is_some_and(|t| t.kind == PpKind::Punct && t.text == p)
 }
 
+/// The conditional directive glcpp's lexer finds in a line of a skipped group: after
+/// a `#` anywhere in the line it passes over everything up to one of `if`, `ifdef`,
+/// `ifndef`, `elif`, `else`, `endif` (so `x #endif`, `# # endif` and `#out ifdef X`
+/// count too). The line is returned as `# NAME rest…`.
+fn skipped_conditional(line: &RawLine) -> Option<RawLine> {
+    let toks = &line.toks;
+    let hash = toks.iter().position(|t| is_punct(Some(t), "#"))?;
+    let is_conditional = |t: &PpTok| {
+        t.kind == PpKind::Ident
+            && matches!(
+                t.text.as_str(),
+                "if" | "ifdef" | "ifndef" | "elif" | "else" | "endif"
+            )
+    };
+    let name = hash + 1 + toks[hash + 1..].iter().position(is_conditional)?;
+    let mut rest = line.clone();
+    rest.toks = std::iter::once(toks[hash].clone())
+        .chain(toks[name..].iter().cloned())
+        .collect();
+    Some(rest)
+}
+
 /// Preprocesses `src` for a shader of stage `stage` (`vertex`, `fragment`, `geometry`,
 /// as Mesa's messages name it), writing errors into `log`.
 pub fn preprocess(src: &str, stage: &str, log: &mut Log) -> Output {
@@ -212,27 +234,15 @@ impl Pp<'_> {
         while i < lines.len() {
             let line = &lines[i];
             i += 1;
-            if is_punct(line.toks.first(), "#") {
-                self.directive(line);
+            if !self.taking() {
+                if let Some(rest) = skipped_conditional(line) {
+                    self.directive(&rest);
+                }
                 self.end_line(1 + line.extra_newlines, 1);
                 continue;
             }
-            if !self.taking() {
-                // glcpp's lexer, skipping a group, finds conditional directives even
-                // in the middle of a line.
-                let at = line.toks.windows(2).position(|w| {
-                    is_punct(Some(&w[0]), "#")
-                        && w[1].kind == PpKind::Ident
-                        && matches!(
-                            w[1].text.as_str(),
-                            "if" | "ifdef" | "ifndef" | "elif" | "else" | "endif"
-                        )
-                });
-                if let Some(k) = at {
-                    let mut rest = line.clone();
-                    rest.toks.drain(..k);
-                    self.directive(&rest);
-                }
+            if is_punct(line.toks.first(), "#") {
+                self.directive(line);
                 self.end_line(1 + line.extra_newlines, 1);
                 continue;
             }
