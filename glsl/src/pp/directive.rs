@@ -10,7 +10,7 @@ use crate::lex::{int_value, PpKind, PpTok, RawLine};
 /// The text of a directive's tokens with the blanks between them as written (a
 /// comment counts as its width in blanks).
 /// The directive names, longest first among those sharing a prefix.
-const DIRECTIVES: [&str; 13] = [
+pub(super) const DIRECTIVES: [&str; 13] = [
     "ifndef",
     "ifdef",
     "if",
@@ -153,8 +153,11 @@ impl Pp<'_> {
                     c.done |= ok;
                 }
             }
+            // Trailing tokens are an error where the directive leaves glcpp reading
+            // normally (its group's parent is kept); in a skipped nest they are not.
             "else" | "endif"
-                if (name.text == "else" || !self.conds.is_empty())
+                if self.conds.last().is_none_or(|c| c.parent)
+                    && (name.text == "else" || !self.conds.is_empty())
                     && self.extra_tokens(args, line.end) => {}
             "else" => {
                 let Some(c) = self.conds.last_mut() else {
@@ -198,7 +201,16 @@ impl Pp<'_> {
             "pragma" => self.out.pragmas.push(text_of(args)),
             "extension" => self.extension(args, line.end),
             "version" => self.version(args, hash, line.end),
-            "line" => self.line(args, line.end, hash),
+            "line" => {
+                // glcpp takes `line` as the directive only when blanks follow it.
+                let blank = line.end.col > name.pos.col + name.text.len() as u32;
+                self.line(args, line.end, hash, blank)
+            }
+            // One character alone after `#` is a syntax error at the line's end.
+            _ if toks.len() == 1 && name.text.len() == 1 => {
+                let at = self.rpos(line.end);
+                self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+            }
             _ => self.log.pp_error(hash, "Illegal non-directive after #"),
         }
         if taking && name.text != "version" {
@@ -502,7 +514,7 @@ impl Pp<'_> {
         });
     }
 
-    fn line(&mut self, args: &[PpTok], end: Pos, hash: Pos) {
+    fn line(&mut self, args: &[PpTok], end: Pos, hash: Pos, blank: bool) {
         let toks = match self.expand(args.to_vec()) {
             Ok(t) => t,
             Err(_) => return,
@@ -512,7 +524,12 @@ impl Pp<'_> {
                 .and_then(|t| int_value(&t.text).0)
         };
         let Some(line) = num(toks.first()) else {
-            self.log.pp_error(hash, "Illegal non-directive after #");
+            if toks.is_empty() && blank {
+                let at = self.rpos(end);
+                self.log.pp_error(at, "syntax error, unexpected NEWLINE");
+            } else {
+                self.log.pp_error(hash, "Illegal non-directive after #");
+            }
             return;
         };
         let source = match toks.get(1) {

@@ -133,20 +133,24 @@ fn is_punct(t: Option<&PpTok>, p: &str) -> bool {
 }
 
 /// The conditional directive glcpp's lexer finds in a line of a skipped group: after
-/// a `#` anywhere in the line it passes over everything up to one of `if`, `ifdef`,
-/// `ifndef`, `elif`, `else`, `endif` (so `x #endif`, `# # endif` and `#out ifdef X`
-/// count too). The line is returned as `# NAME rest…`.
+/// a `#` anywhere in the line it passes over everything up to a directive's name, and
+/// takes the line if that is `if`, `ifdef`, `ifndef`, `elif`, `else` or `endif` (so
+/// `x #endif`, `# # endif` and `#out ifdef X` count too, `#error … #if` does not).
+/// The line is returned as `# NAME rest…`.
 fn skipped_conditional(line: &RawLine) -> Option<RawLine> {
     let toks = &line.toks;
     let hash = toks.iter().position(|t| is_punct(Some(t), "#"))?;
-    let is_conditional = |t: &PpTok| {
-        t.kind == PpKind::Ident
-            && matches!(
-                t.text.as_str(),
-                "if" | "ifdef" | "ifndef" | "elif" | "else" | "endif"
-            )
-    };
-    let name = hash + 1 + toks[hash + 1..].iter().position(is_conditional)?;
+    let name = hash
+        + 1
+        + toks[hash + 1..].iter().position(|t| {
+            t.kind == PpKind::Ident && directive::DIRECTIVES.contains(&t.text.as_str())
+        })?;
+    if !matches!(
+        toks[name].text.as_str(),
+        "if" | "ifdef" | "ifndef" | "elif" | "else" | "endif"
+    ) {
+        return None;
+    }
     let mut rest = line.clone();
     rest.toks = std::iter::once(toks[hash].clone())
         .chain(toks[name..].iter().cloned())
