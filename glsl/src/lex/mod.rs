@@ -1,11 +1,15 @@
 //! The lexer: source text into preprocessing tokens, and preprocessing tokens into the
 //! language's tokens for one GLSL version.
 //!
-//! One scanner serves both stages, as in Mesa where glcpp passes its tokens' text on to
-//! the compiler's lexer: numbers are scanned with the language's own rules (longest of
-//! decimal `[1-9][0-9]*`, octal `0[0-7]*`, hex `0x…`, each with an optional `u`, and
-//! floats with an optional `f`), so `09` is the two tokens `0` and `9` and `0x` is `0`
-//! then `x`, as Mesa reads them. Before scanning, line continuations are removed and the
+//! Two lexers, as in Mesa, where glcpp writes its tokens' text out and the compiler's
+//! lexer reads it again. [`scan`] cuts the source as glcpp does: a number is a
+//! preprocessing number (`[.]?[0-9]([._a-zA-Z0-9]|[eEpP][-+])*`), an integer when one
+//! of glcpp's integer patterns covers all of it and a [`PpKind::Number`] otherwise, so
+//! that macros, `##` and `#if` see what glcpp sees. When the preprocessor hands the
+//! tokens on, [`split_number`] cuts each such number with the compiler's rules (longest
+//! of decimal `[1-9][0-9]*`, octal `0[0-7]*`, hex `0x…`, with a `u`, `l` or `ul`
+//! suffix, and floats with `f` or `lf`), so `09` is `0` then `9` and `0x` is `0` then
+//! `x`, as Mesa reads them. Before scanning, line continuations are removed and the
 //! newlines they held are put back after the next newline (Mesa's
 //! `remove_line_continuations`), and a block comment's newlines are likewise counted and
 //! emitted after its line, so later lines keep their numbers.
@@ -25,8 +29,11 @@ pub enum PpKind {
     Ident,
     /// An integer literal (decimal, octal or hex, maybe with `u`).
     Int,
-    /// A floating-point literal.
+    /// A floating-point literal (only in the pieces of a [`PpKind::Number`]).
     Float,
+    /// A preprocessing number that is not one of glcpp's integers (`1.5`, `0x`,
+    /// `3flat`): the compiler's lexer cuts it up again ([`split_number`]).
+    Number,
     /// An operator or punctuator, `#` and `##` included.
     Punct,
     /// A character that starts no token (`@`, `$`, `"`, `\`, non-ASCII bytes).
@@ -166,6 +173,60 @@ fn number(b: &[u8], i: usize) -> (usize, PpKind) {
     best
 }
 
+/// The length and kind of glcpp's preprocessing number at `b[i]`:
+/// `[.]?[0-9]([._a-zA-Z0-9]|[eEpP][-+])*`, an integer (`INTEGER_STRING`) when one of
+/// the integer patterns (decimal, octal, hex, with an optional `u`) covers all of it.
+fn pp_number(b: &[u8], i: usize) -> (usize, PpKind) {
+    let mut n = usize::from(b[i] == b'.') + 1;
+    while let Some(&c) = b.get(i + n) {
+        if matches!(c, b'e' | b'E' | b'p' | b'P') && matches!(b.get(i + n + 1), Some(b'+' | b'-')) {
+            n += 2;
+        } else if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' {
+            n += 1;
+        } else {
+            break;
+        }
+    }
+    let t = &b[i..i + n];
+    let body = t
+        .strip_suffix(b"u")
+        .or_else(|| t.strip_suffix(b"U"))
+        .unwrap_or(t);
+    let int = match body {
+        [b'0', b'x' | b'X', hex @ ..] => !hex.is_empty() && hex.iter().all(u8::is_ascii_hexdigit),
+        [b'0', oct @ ..] => oct.iter().all(|c| (b'0'..=b'7').contains(c)),
+        [b'1'..=b'9', dec @ ..] => dec.iter().all(u8::is_ascii_digit),
+        _ => false,
+    };
+    (n, if int { PpKind::Int } else { PpKind::Number })
+}
+
+/// Cuts a preprocessing number into the compiler's tokens (Mesa's lexer reads glcpp's
+/// output again): the offset, length and kind of each piece, in order.
+pub fn split_number(text: &str) -> Vec<(usize, usize, PpKind)> {
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        let (n, kind) =
+            if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)) {
+                number(b, i)
+            } else if c.is_ascii_alphabetic() || c == b'_' {
+                (
+                    digits(b, i, |c| c.is_ascii_alphanumeric() || c == b'_'),
+                    PpKind::Ident,
+                )
+            } else {
+                (1, PpKind::Punct)
+            };
+        let n = n.max(1);
+        out.push((i, n, kind));
+        i += n;
+    }
+    out
+}
+
 /// Cuts `src` into lines of preprocessing tokens. An unterminated block comment is an
 /// error (Mesa's "Unterminated comment").
 pub fn scan(src: &str, log: &mut Log) -> Vec<RawLine> {
@@ -239,7 +300,7 @@ pub fn scan(src: &str, log: &mut Log) -> Vec<RawLine> {
             )
         } else if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit))
         {
-            number(&b, i)
+            pp_number(&b, i)
         } else if let Some(p) = PUNCTS.iter().find(|p| b[i..].starts_with(p.as_bytes())) {
             (p.len(), PpKind::Punct)
         } else {

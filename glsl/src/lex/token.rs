@@ -456,7 +456,8 @@ pub fn classify(t: &PpTok, version: u32, pos: Pos, log: &mut Log) -> Tok {
             Some(p) if *p != "#" && *p != "##" => Tok::Punct(p),
             _ => Tok::Invalid(t.text.clone()),
         },
-        PpKind::Other => Tok::Invalid(t.text.clone()),
+        // The preprocessor splits these ([`super::split_number`]) before classifying.
+        PpKind::Number | PpKind::Other => Tok::Invalid(t.text.clone()),
     }
 }
 

@@ -16,7 +16,7 @@ pub fn glcpp_name(t: Option<&PpTok>) -> String {
         PpKind::Ident if t.text == "defined" => "DEFINED".into(),
         PpKind::Ident => "IDENTIFIER".into(),
         PpKind::Int => "INTEGER_STRING".into(),
-        PpKind::Float | PpKind::Other => "OTHER".into(),
+        PpKind::Float | PpKind::Number | PpKind::Other => "OTHER".into(),
         PpKind::Punct => match t.text.as_str() {
             "==" => "EQUAL",
             "!=" => "NOT_EQUAL",
@@ -43,24 +43,11 @@ const GLCPP_OPS: [&str; 11] = [
     "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "++", "--", "##",
 ];
 
-/// Re-cuts a `#if` line's tokens as glcpp's lexer does: operators it does not have
-/// split into their characters, and a number run together with letters, digits or
-/// dots (`3flat`, `1.5`) becomes one non-integer token.
+/// Re-cuts a `#if` line's tokens as glcpp's lexer does: the operators it does not
+/// have split into their characters.
 pub fn glcpp_tokens(toks: Vec<PpTok>) -> Vec<PpTok> {
     let mut out: Vec<PpTok> = Vec::with_capacity(toks.len());
     for t in toks {
-        let glued = !t.space
-            && out.last().is_some_and(|p| {
-                matches!(p.kind, PpKind::Int | PpKind::Float | PpKind::Other)
-                    && p.text.starts_with(|c: char| c.is_ascii_digit() || c == '.')
-            });
-        if glued && matches!(t.kind, PpKind::Ident | PpKind::Int | PpKind::Float) {
-            if let Some(p) = out.last_mut() {
-                p.text.push_str(&t.text);
-                p.kind = PpKind::Other;
-            }
-            continue;
-        }
         if t.kind == PpKind::Punct && t.text.len() > 1 && !GLCPP_OPS.contains(&t.text.as_str()) {
             let mut rest = t.text.as_str();
             let mut col = t.pos.col;
@@ -78,10 +65,6 @@ pub fn glcpp_tokens(toks: Vec<PpTok>) -> Vec<PpTok> {
                 col += n as u32;
             }
             continue;
-        }
-        let mut t = t;
-        if t.kind == PpKind::Float {
-            t.kind = PpKind::Other;
         }
         out.push(t);
     }

@@ -22,7 +22,7 @@ pub mod expr;
 pub mod macros;
 
 use crate::diag::{Log, Pos};
-use crate::lex::{classify, scan, PpKind, PpTok, RawLine, Tok, Token};
+use crate::lex::{classify, scan, split_number, PpKind, PpTok, RawLine, Tok, Token};
 use macros::{Macro, Stop};
 use std::collections::HashMap;
 
@@ -314,6 +314,14 @@ impl Pp<'_> {
         self.out_line = self.out_line.saturating_add(newlines);
     }
 
+    /// Classifies one token for the compiler, keeping the lexer's error with it.
+    fn push_token(&mut self, t: &PpTok, pos: Pos) {
+        let mut lexer_log = Log::default();
+        let tok = classify(t, self.out.version, pos, &mut lexer_log);
+        let error = lexer_log.messages.into_iter().next().map(|m| m.text);
+        self.out.tokens.push(Token { tok, pos, error });
+    }
+
     /// Emits one output line's tokens; returns the column after the last.
     fn emit(&mut self, toks: &[PpTok]) -> u32 {
         let mut col = 1u32;
@@ -332,10 +340,23 @@ impl Pp<'_> {
                 self.log
                     .pp_error(at, format!("syntax error, unexpected {name}"));
             }
-            let mut lexer_log = Log::default();
-            let tok = classify(t, self.out.version, pos, &mut lexer_log);
-            let error = lexer_log.messages.into_iter().next().map(|m| m.text);
-            self.out.tokens.push(Token { tok, pos, error });
+            if t.kind == PpKind::Number {
+                for (off, len, kind) in split_number(&t.text) {
+                    let piece = PpTok {
+                        kind,
+                        text: t.text[off..off + len].to_string(),
+                        pos: t.pos,
+                        space: false,
+                    };
+                    let at = Pos {
+                        col: pos.col.saturating_add(off as u32),
+                        ..pos
+                    };
+                    self.push_token(&piece, at);
+                }
+            } else {
+                self.push_token(t, pos);
+            }
             col = col.saturating_add(t.text.len() as u32);
         }
         col
