@@ -3,7 +3,7 @@
 //! Type specifiers are syntactic (the type's name as written, array sizes as
 //! expressions); the type checker resolves them. Qualifiers are kept in the order they
 //! were written, since the versions before 4.20 constrain that order and the checker
-//! reports it. [`print`] writes a tree back as GLSL that parses to the same tree.
+//! reports it. [`print`](mod@print) writes a tree back as GLSL that parses to the same tree.
 
 pub mod print;
 
