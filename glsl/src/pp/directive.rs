@@ -153,11 +153,11 @@ impl Pp<'_> {
                     c.done |= ok;
                 }
             }
-            // Trailing tokens are an error where the directive leaves glcpp reading
-            // normally (its group's parent is kept); in a skipped nest they are not.
+            // Trailing tokens: always an error after `#else`; after `#endif` only where
+            // glcpp goes back to reading normally (the group's parent is kept), as Mesa
+            // does.
             "else" | "endif"
-                if self.conds.last().is_none_or(|c| c.parent)
-                    && (name.text == "else" || !self.conds.is_empty())
+                if (name.text == "else" || self.conds.last().is_some_and(|c| c.parent))
                     && self.extra_tokens(args, line.end) => {}
             "else" => {
                 let Some(c) = self.conds.last_mut() else {
