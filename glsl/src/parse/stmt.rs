@@ -202,10 +202,9 @@ impl Parser<'_> {
     fn for_stmt(&mut self) -> PResult<StmtKind> {
         self.bump();
         self.expect("(")?;
-        self.push_scope();
-        let r = self.for_rest();
-        self.pop_scope();
-        r
+        // No scope of its own for names: Mesa's parser still knows a `for` loop's
+        // variable after the loop (it only changes how syntax errors name it).
+        self.for_rest()
     }
 
     fn for_rest(&mut self) -> PResult<StmtKind> {

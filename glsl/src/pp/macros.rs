@@ -112,23 +112,28 @@ impl Pp<'_> {
                 out.push((t, hide));
                 continue;
             };
-            let ends = [m.body.first(), m.body.last()];
-            if let Some(p) = ends
-                .into_iter()
-                .flatten()
-                .find(|b| b.kind == PpKind::Punct && b.text == "##")
+            // `##` ending a replacement list is an error when the macro is used (one
+            // starting it is passed on, and the compiler rejects it).
+            if let Some(p) = m
+                .body
+                .last()
+                .filter(|b| b.kind == PpKind::Punct && b.text == "##")
             {
                 let at = self.rpos(p.pos);
                 self.log
                     .pp_error(at, "'##' cannot appear at either end of a macro expansion");
                 return Err(Stop::Failed);
             }
+            let lead = m
+                .body
+                .first()
+                .is_some_and(|b| b.kind == PpKind::Punct && b.text == "##");
             let mut h = hide.clone();
             h.push(t.text.clone());
             let Some(params) = &m.params else {
                 self.charge(m.body.len() + 1, &t)?;
                 let body = m.body.iter().map(|b| (b.clone(), h.clone())).collect();
-                for (i, (mut b, bh)) in self.paste(body)?.into_iter().enumerate().rev() {
+                for (i, (mut b, bh)) in self.paste(body, lead)?.into_iter().enumerate().rev() {
                     b.pos = t.pos;
                     if i == 0 {
                         b.space = t.space;
@@ -189,7 +194,7 @@ impl Pp<'_> {
                 }
             }
             self.charge(repl.len() + 1, &t)?;
-            for (i, (mut r, rh)) in self.paste(repl)?.into_iter().enumerate().rev() {
+            for (i, (mut r, rh)) in self.paste(repl, lead)?.into_iter().enumerate().rev() {
                 r.pos = t.pos;
                 if i == 0 {
                     r.space = t.space;
@@ -201,8 +206,9 @@ impl Pp<'_> {
     }
 
     /// Applies the `##` operators of a replacement list: the tokens either side are
-    /// joined into one, which must scan as one token.
-    fn paste(&mut self, toks: Vec<HTok>) -> Result<Vec<HTok>, Stop> {
+    /// joined into one, which must scan as one token. `lead` says the macro's list
+    /// starts with `##`.
+    fn paste(&mut self, toks: Vec<HTok>, lead: bool) -> Result<Vec<HTok>, Stop> {
         if !toks.iter().any(|t| punct(t, "##")) {
             return Ok(toks);
         }
@@ -214,7 +220,11 @@ impl Pp<'_> {
                 continue;
             }
             if out.is_empty() {
-                // An empty argument before `##`: nothing to paste onto.
+                // Nothing to paste onto: an empty argument disappears, but glcpp passes
+                // on a `##` that starts the replacement list.
+                if lead {
+                    out.push(t);
+                }
                 continue;
             }
             let Some(next) = it.next() else {
