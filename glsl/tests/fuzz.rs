@@ -199,6 +199,14 @@ fn deep_nesting_is_an_error_not_a_crash() {
         assert!(first_error(&braces).contains("nesting deeper than 256"));
         let ifs = format!("void main() {{ {} ; }}", "if (true) ".repeat(depth));
         assert!(first_error(&ifs).contains("nesting deeper than 256"));
+        let structs = "struct { ".repeat(depth) + "float x;" + &" } y;".repeat(depth);
+        assert!(first_error(&structs).contains("nesting deeper than 256"));
+        let inits = format!(
+            "float x[1] = {}1.0{};",
+            "{".repeat(depth),
+            "}".repeat(depth)
+        );
+        assert!(first_error(&inits).contains("nesting deeper than 256"));
         let hash_ifs = "#if 1\n".repeat(depth) + "void main(){}\n";
         assert!(first_error(&hash_ifs).contains("#if nesting too deep"));
         let pp_parens = format!("#if {}1{}\n#endif\n", "(".repeat(depth), ")".repeat(depth));

@@ -172,7 +172,10 @@ impl Parser<'_> {
             _ => None,
         };
         self.expect("{")?;
-        let members = self.members()?;
+        self.enter()?;
+        let members = self.members();
+        self.leave();
+        let members = members?;
         if let Some(n) = &name {
             self.types.insert(n.clone());
         }
