@@ -19,7 +19,7 @@
 //! The reference for what is accepted and how errors read is Mesa's own compiler, run
 //! by the integration tests through OSMesa (`tests/mesa/`).
 //!
-//! [`parse`] runs stages 1 and 2: [`pp`] (with [`lex`]) and [`parse`](mod@parse) give
+//! [`parse()`] runs stages 1 and 2: [`pp`] (with [`lex`]) and [`parse`](mod@parse) give
 //! an [`ast::Shader`] or a [`Log`] whose first error has Mesa's line and wording
 //! (`tests/errors.rs`, `tests/mutations.rs` measure it against Mesa).
 
