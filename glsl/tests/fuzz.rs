@@ -141,7 +141,11 @@ fn parse_any(src: &str) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 3000, ..ProptestConfig::default() })]
+    // `GLSL_FUZZ_CASES` runs more cases than the default 3000 per property.
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("GLSL_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(3000),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn random_bytes(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
