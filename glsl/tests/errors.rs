@@ -50,4 +50,8 @@ fn errors_match_mesa() {
         agree_col
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        agree_col * 100 >= cases.len() * 98,
+        "columns agree in {agree_col}"
+    );
 }

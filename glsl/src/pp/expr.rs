@@ -2,7 +2,8 @@
 //! operators evaluated in 64 bits with wrapping arithmetic, by precedence climbing.
 //!
 //! As in Mesa, a name left after expansion counts as 0, `?:` is not allowed, and a
-//! syntax error names glcpp's token (`NEWLINE`, `IDENTIFIER`, `INTEGER_STRING`, …).
+//! syntax error names glcpp's token (`NEWLINE`, `IDENTIFIER`, `INTEGER_STRING`, …) at
+//! the end of the line.
 
 use crate::diag::Pos;
 use crate::lex::{int_value, PpKind, PpTok};
@@ -126,10 +127,14 @@ impl Eval<'_> {
         self.toks.get(self.i)
     }
 
+    /// glcpp parses a `#if` line after expanding it, so its syntax errors point at the
+    /// line's end whichever token they name.
     fn unexpected(&self) -> EvalError {
         let t = self.peek();
-        let pos = t.map_or(self.end, |t| t.pos);
-        (pos, format!("syntax error, unexpected {}", glcpp_name(t)))
+        (
+            self.end,
+            format!("syntax error, unexpected {}", glcpp_name(t)),
+        )
     }
 
     fn is_op(&self, op: &str) -> bool {
