@@ -18,3 +18,6 @@
 //!
 //! The reference for what is accepted and how errors read is Mesa's own compiler, run
 //! by the integration tests through OSMesa (`tests/mesa/`).
+
+pub mod builtins;
+pub mod types;

@@ -1,0 +1,172 @@
+//! The built-ins of GLSL 1.10 to 3.30: functions (`functions`, `texture`), variables
+//! (`variables`) and the uniform state and constants (`state`), each with the versions,
+//! stages and profile that have it.
+//!
+//! Sources: the GLSL specifications 1.10 to 3.30, chapter 7 (built-in variables, uniform
+//! state, constants) and chapter 8 (built-in functions). Where Mesa, the tests' reference,
+//! differs from a specification, the tables follow Mesa and the entry says so; the
+//! recurring cases are that Mesa keeps every deprecated-but-listed name (`texture2D`,
+//! `gl_FragColor`...) in the 1.50 and 3.30 core profiles, as the specifications do, that
+//! it exposes the compatibility built-ins in every 1.40 shader, and that the 1.10 `*Lod`
+//! texture functions exist in fragment shaders from 1.30 on.
+//!
+//! Functions are described compactly (one line for `genType sin(genType)`) and the
+//! signatures generated from the descriptions: see [`functions::all`].
+
+pub mod functions;
+pub mod state;
+pub mod texture;
+pub mod variables;
+
+use crate::types::{Stage, Type, Version};
+use std::sync::OnceLock;
+
+/// Where a built-in exists: the first version per stage and whether only the
+/// compatibility profile has it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Avail {
+    /// The first version with the built-in in the vertex, geometry and fragment stage
+    /// (`None`: never in that stage).
+    pub since: [Option<u16>; 3],
+    /// Only where the compatibility built-ins exist (see [`Version::compatibility`]).
+    pub compat_only: bool,
+}
+
+impl Avail {
+    /// In every stage from version `v` (geometry shaders start at 1.50).
+    pub const fn all(v: u16) -> Avail {
+        Avail {
+            since: [Some(v), Some(if v > 150 { v } else { 150 }), Some(v)],
+            compat_only: false,
+        }
+    }
+
+    /// Only in vertex shaders, from `v`.
+    pub const fn vertex(v: u16) -> Avail {
+        Avail {
+            since: [Some(v), None, None],
+            compat_only: false,
+        }
+    }
+
+    /// Only in fragment shaders, from `v`.
+    pub const fn fragment(v: u16) -> Avail {
+        Avail {
+            since: [None, None, Some(v)],
+            compat_only: false,
+        }
+    }
+
+    /// Only in geometry shaders, from `v` (at least 1.50).
+    pub const fn geometry(v: u16) -> Avail {
+        Avail {
+            since: [None, Some(v), None],
+            compat_only: false,
+        }
+    }
+
+    /// The same, restricted to the compatibility built-ins.
+    pub const fn compat(self) -> Avail {
+        Avail {
+            since: self.since,
+            compat_only: true,
+        }
+    }
+
+    /// The first version in `stage`.
+    pub fn since_in(&self, stage: Stage) -> Option<u16> {
+        self.since[stage_index(stage)]
+    }
+
+    /// Whether the built-in exists in `version` and `stage`.
+    pub fn exists(&self, version: Version, stage: Stage) -> bool {
+        (!self.compat_only || version.compatibility)
+            && self.since_in(stage).is_some_and(|v| version.number >= v)
+    }
+}
+
+/// The index of a stage in [`Avail::since`].
+pub fn stage_index(stage: Stage) -> usize {
+    match stage {
+        Stage::Vertex => 0,
+        Stage::Geometry => 1,
+        Stage::Fragment => 2,
+    }
+}
+
+/// A parameter of a built-in function.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Param {
+    /// The parameter's type.
+    pub ty: Type,
+    /// An `out` parameter (`modf`'s second): the argument must be an l-value.
+    pub out: bool,
+    /// The argument must be a constant expression (the texel offsets of the `*Offset`
+    /// lookups).
+    pub constant: bool,
+}
+
+/// One signature of a built-in function.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Function {
+    /// The function's name.
+    pub name: String,
+    /// The return type.
+    pub ret: Type,
+    /// The parameters.
+    pub params: Vec<Param>,
+    /// Where this signature exists.
+    pub avail: Avail,
+}
+
+impl Function {
+    /// Whether this signature exists in `version` and `stage`: its entry's availability
+    /// and every type it names (a `uvec2` signature starts at 1.30 whatever the entry).
+    pub fn exists(&self, version: Version, stage: Stage) -> bool {
+        self.avail.exists(version, stage)
+            && self.ret.exists_in(version)
+            && self.params.iter().all(|p| p.ty.exists_in(version))
+    }
+
+    /// Whether a call with arguments of types `args` matches this signature in
+    /// `version`, exactly or through the version's implicit conversions (an `out`
+    /// parameter converts the other way, from the parameter to the argument).
+    pub fn accepts(&self, args: &[Type], version: Version) -> bool {
+        args.len() == self.params.len()
+            && self.params.iter().zip(args).all(|(p, a)| {
+                if p.out {
+                    p.ty.converts_to(a, version)
+                } else {
+                    a.converts_to(&p.ty, version)
+                }
+            })
+    }
+
+    /// The prototype as Mesa prints candidates: `vec4 texture2D(sampler2D, vec2)`.
+    pub fn prototype(&self) -> String {
+        let params: Vec<String> = self
+            .params
+            .iter()
+            .map(|p| format!("{}{}", if p.out { "out " } else { "" }, p.ty))
+            .collect();
+        format!("{} {}({})", self.ret, self.name, params.join(", "))
+    }
+}
+
+/// Every built-in function signature of every version, stage and profile.
+pub fn all_functions() -> &'static [Function] {
+    static ALL: OnceLock<Vec<Function>> = OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut v = functions::all();
+        v.extend(texture::all());
+        v
+    })
+}
+
+/// The signatures of `name` in `version` and `stage` (empty: no such built-in there).
+pub fn overloads(name: &str, version: Version, stage: Stage) -> Vec<&'static Function> {
+    all_functions()
+        .iter()
+        .filter(|f| f.name == name && f.exists(version, stage))
+        .collect()
+}

@@ -1,0 +1,188 @@
+//! The built-in function tables against Mesa's compiler: every generated signature is
+//! called, with arguments of exactly its parameter types and its result assigned to its
+//! return type, in every version and in the vertex and fragment stages that have it,
+//! and Mesa must accept it; calls the tables say do not resolve (argument types no
+//! overload accepts, a signature taken to a version, stage or profile without it) must
+//! be rejected.
+
+mod batch;
+mod mesa;
+
+use batch::{expect, Case};
+use softgl_glsl::builtins::{all_functions, overloads, Function};
+use softgl_glsl::types::{basic_types, Stage, Type, Version};
+use std::collections::HashSet;
+
+const STAGES: [Stage; 2] = [Stage::Vertex, Stage::Fragment];
+
+/// The case calling `name` with arguments of `args` (assigning the result to `ret`).
+/// Arguments are uninitialised locals, or constants where the parameter says so
+/// (`(type, out, constant)`).
+fn call(
+    version: Version,
+    stage: Stage,
+    name: &str,
+    args: &[(Type, bool, bool)],
+    ret: Option<&Type>,
+) -> Case {
+    let mut globals = Vec::new();
+    let mut decls = String::new();
+    let mut names = Vec::new();
+    for (i, (ty, _, constant)) in args.iter().enumerate() {
+        if let Type::Sampler(s) = ty {
+            globals.push(format!("uniform {} u_{};", s.name(), s.name()));
+            names.push(format!("u_{}", s.name()));
+        } else if *constant {
+            decls += &format!("const {ty} a{i} = {ty}(0); ");
+            names.push(format!("a{i}"));
+        } else {
+            decls += &format!("{ty} a{i}; ");
+            names.push(format!("a{i}"));
+        }
+    }
+    let call = format!("{name}({})", names.join(", "));
+    let line = match ret {
+        Some(Type::Void) | None => format!("{{ {decls}{call}; }}"),
+        Some(r) => format!("{{ {decls}{r} r = {call}; }}"),
+    };
+    Case {
+        version,
+        stage,
+        globals,
+        line,
+    }
+}
+
+fn args_of(f: &Function) -> Vec<(Type, bool, bool)> {
+    f.params
+        .iter()
+        .map(|p| (p.ty.clone(), p.out, p.constant))
+        .collect()
+}
+
+/// Whether any overload of `name` in `version` and `stage` accepts `args`.
+fn resolves(name: &str, args: &[Type], version: Version, stage: Stage) -> bool {
+    overloads(name, version, stage)
+        .iter()
+        .any(|f| f.accepts(args, version))
+}
+
+#[test]
+fn every_signature_is_accepted() {
+    let mut cases = Vec::new();
+    let mut geometry_only = 0;
+    for f in all_functions() {
+        if f.avail.since[0].is_none() && f.avail.since[2].is_none() {
+            geometry_only += 1;
+        }
+        for v in Version::all() {
+            for stage in STAGES {
+                if f.exists(v, stage) {
+                    cases.push(call(v, stage, &f.name, &args_of(f), Some(&f.ret)));
+                }
+            }
+        }
+    }
+    eprintln!(
+        "{} signatures ({geometry_only} geometry-only, not testable here)",
+        all_functions().len()
+    );
+    expect("every signature where it exists", &cases, true, 60);
+}
+
+/// Every (name, argument types) of a signature somewhere, called in each version and
+/// stage where the tables say it does not resolve.
+#[test]
+fn signatures_are_rejected_where_they_do_not_exist() {
+    let mut seen = HashSet::new();
+    let mut cases = Vec::new();
+    for f in all_functions() {
+        let args: Vec<Type> = f.params.iter().map(|p| p.ty.clone()).collect();
+        for v in Version::all() {
+            for stage in STAGES {
+                let types_exist = args.iter().all(|t| t.exists_in(v));
+                if types_exist
+                    && !resolves(&f.name, &args, v, stage)
+                    && seen.insert((f.prototype(), v, stage))
+                {
+                    cases.push(call(v, stage, &f.name, &args_of(f), None));
+                }
+            }
+        }
+    }
+    expect(
+        "signatures out of their version, stage or profile",
+        &cases,
+        false,
+        60,
+    );
+}
+
+/// For every signature, each argument but samplers and `out` ones replaced by every
+/// other basic type of the version: rejected when no overload accepts the new tuple.
+/// Returns the cases (shared with the acceptance of the tuples that do resolve).
+fn mixes(version: Version, stage: Stage) -> (Vec<Case>, Vec<Case>) {
+    let mut seen = HashSet::new();
+    let (mut good, mut bad) = (Vec::new(), Vec::new());
+    let basics = basic_types(version);
+    for f in all_functions().iter().filter(|f| f.exists(version, stage)) {
+        let args: Vec<Type> = f.params.iter().map(|p| p.ty.clone()).collect();
+        for (i, p) in f.params.iter().enumerate() {
+            if p.out || matches!(p.ty, Type::Sampler(_)) {
+                continue;
+            }
+            for t in &basics {
+                let mut a = args.clone();
+                a[i] = t.clone();
+                if !seen.insert((f.name.clone(), a.clone())) {
+                    continue;
+                }
+                let with_out: Vec<(Type, bool, bool)> = a
+                    .iter()
+                    .cloned()
+                    .zip(&f.params)
+                    .map(|(t, p)| (t, p.out, p.constant))
+                    .collect();
+                let case = call(version, stage, &f.name, &with_out, None);
+                if resolves(&f.name, &a, version, stage) {
+                    good.push(case);
+                } else {
+                    bad.push(case);
+                }
+            }
+        }
+    }
+    (good, bad)
+}
+
+/// Every `n`-th case (the mixes number hundreds of thousands; a stride keeps every
+/// function and version represented).
+fn sample(cases: Vec<Case>, keep: usize) -> Vec<Case> {
+    let n = cases.len().div_ceil(keep).max(1);
+    cases.into_iter().step_by(n).collect()
+}
+
+#[test]
+fn argument_mixes_resolve_as_the_tables_say() {
+    let (mut good, mut bad) = (Vec::new(), Vec::new());
+    let mut total = (0, 0);
+    for v in Version::all() {
+        for stage in STAGES {
+            let (g, b) = mixes(v, stage);
+            total = (total.0 + g.len(), total.1 + b.len());
+            good.extend(sample(g, 400));
+            bad.extend(sample(b, 2000));
+        }
+    }
+    eprintln!(
+        "argument mixes: {} resolving, {} not; sampled:",
+        total.0, total.1
+    );
+    expect("argument mixes not in the tables", &bad, false, 80);
+    expect(
+        "argument mixes resolving through conversions",
+        &good,
+        true,
+        80,
+    );
+}
