@@ -199,11 +199,13 @@ impl Sampler {
 
     /// The first version with this sampler type: 1.10 for the float 1D/2D/3D/cube and
     /// 1D/2D shadow samplers, 1.30 for array, cube-shadow and integer samplers, 1.40
-    /// for rectangle and buffer samplers, 1.50 for multisample ones. (Mesa also accepts
-    /// the float rectangle samplers from 1.10: ARB_texture_rectangle is always enabled.)
+    /// for rectangle and buffer samplers, 1.50 for multisample ones; but the float
+    /// rectangle samplers from 1.10, as in Mesa, where ARB_texture_rectangle is always
+    /// enabled.
     pub fn since(self) -> u16 {
         match self.dim {
             Dim::Ms => 150,
+            Dim::Rect if self.texel == Scalar::Float => 110,
             Dim::Rect | Dim::Buffer => 140,
             _ if self.array || self.texel != Scalar::Float => 130,
             Dim::Cube if self.shadow => 130,
