@@ -170,3 +170,20 @@ pub fn overloads(name: &str, version: Version, stage: Stage) -> Vec<&'static Fun
         .filter(|f| f.name == name && f.exists(version, stage))
         .collect()
 }
+
+/// Every built-in variable, uniform and constant of every version, stage and profile.
+pub fn all_variables() -> &'static [variables::Variable] {
+    static ALL: OnceLock<Vec<variables::Variable>> = OnceLock::new();
+    ALL.get_or_init(variables::all)
+}
+
+/// The built-in variable `name` in `version` and `stage`, if it exists there.
+pub fn variable(
+    name: &str,
+    version: Version,
+    stage: Stage,
+) -> Option<&'static variables::Variable> {
+    all_variables()
+        .iter()
+        .find(|v| v.name == name && v.avail.exists(version, stage))
+}
