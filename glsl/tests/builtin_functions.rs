@@ -8,10 +8,10 @@
 mod batch;
 mod mesa;
 
-use batch::{expect, Case};
+use batch::{compile, expect, Case};
 use softgl_glsl::builtins::{all_functions, overloads, Function};
 use softgl_glsl::types::{basic_types, Stage, Type, Version};
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
 
 const STAGES: [Stage; 2] = [Stage::Vertex, Stage::Fragment];
 
@@ -185,4 +185,114 @@ fn argument_mixes_resolve_as_the_tables_say() {
         true,
         80,
     );
+}
+
+/// Mesa lists every overload of a name when a call matches none: for every name,
+/// version and stage, the listed signatures (those whose types the version has: Mesa
+/// also lists e.g. `textureSize(isampler2DRect)` in 1.30, where the type does not exist)
+/// are exactly the tables' overloads. This catches overloads missing from the tables.
+#[test]
+fn overload_sets_are_mesas() {
+    let names: BTreeSet<&str> = all_functions().iter().map(|f| f.name.as_str()).collect();
+    let mut cases = Vec::new();
+    let mut want = Vec::new();
+    for v in Version::all() {
+        for stage in STAGES {
+            for &name in &names {
+                let mut ours: Vec<String> = overloads(name, v, stage)
+                    .iter()
+                    .map(|f| f.prototype().replace("out ", ""))
+                    .collect();
+                ours.sort();
+                want.push(ours);
+                cases.push(Case {
+                    version: v,
+                    stage,
+                    globals: vec!["struct Z { float z; };".into()],
+                    line: format!("{{ Z z; {name}(z); }}"),
+                });
+            }
+        }
+    }
+    let mut bad = Vec::new();
+    for ((ok, log), (c, ours)) in compile(&cases, 40).into_iter().zip(cases.iter().zip(&want)) {
+        let mut mesa: Vec<String> = log
+            .lines()
+            .filter_map(|l| l.split_once(": error:    ").map(|(_, p)| p.to_string()))
+            .filter(|p| mentioned_types_exist(p, c.version))
+            .collect();
+        mesa.sort();
+        if ok != Some(false) || &mesa != ours {
+            let only_mesa: Vec<&String> = mesa.iter().filter(|p| !ours.contains(p)).collect();
+            let only_ours: Vec<&String> = ours.iter().filter(|p| !mesa.contains(p)).collect();
+            bad.push(format!(
+                "{} {:?} {}: Mesa only {only_mesa:?}, tables only {only_ours:?}",
+                c.version.directive(),
+                c.stage,
+                c.line
+            ));
+        }
+    }
+    eprintln!(
+        "overload sets: {} names by version and stage, {} equal to Mesa's",
+        cases.len(),
+        cases.len() - bad.len()
+    );
+    assert!(bad.is_empty(), "{}", bad[..bad.len().min(40)].join("\n"));
+}
+
+/// Whether every type a printed prototype names exists in `v`.
+fn mentioned_types_exist(proto: &str, v: Version) -> bool {
+    proto
+        .split(|c: char| !c.is_alphanumeric())
+        .filter_map(softgl_glsl::builtins::functions::type_named)
+        .all(|t| t.exists_in(v))
+}
+
+/// The result of every signature, assigned to a struct, makes Mesa name its type:
+/// "initializer of type RET cannot be assigned to variable of type Z", RET the tables'
+/// return type (the acceptance test alone would let an int result pass for a float
+/// one through the implicit conversion).
+#[test]
+fn return_types_are_mesas() {
+    let z = Type::Struct(std::sync::Arc::new(softgl_glsl::types::Struct {
+        name: "Z".into(),
+        members: vec![softgl_glsl::types::Member {
+            name: "z".into(),
+            ty: Type::FLOAT,
+        }],
+    }));
+    let (mut cases, mut want) = (Vec::new(), Vec::new());
+    for f in all_functions().iter().filter(|f| f.ret != Type::Void) {
+        for v in Version::all() {
+            for stage in STAGES.into_iter().filter(|s| f.exists(v, *s)) {
+                let mut c = call(v, stage, &f.name, &args_of(f), Some(&z));
+                c.globals.push("struct Z { float z; };".into());
+                cases.push(c);
+                want.push(format!(
+                    "initializer of type {} cannot be assigned to variable of type Z",
+                    f.ret
+                ));
+            }
+        }
+    }
+    let out = compile(&cases, 60);
+    let bad: Vec<String> = out
+        .iter()
+        .zip(cases.iter().zip(&want))
+        .filter(|((ok, log), (_, w))| *ok != Some(false) || !log.contains(w.as_str()))
+        .map(|((_, log), (c, w))| {
+            format!(
+                "{}: {} / want {w}, got {log}",
+                c.version.directive(),
+                c.line
+            )
+        })
+        .collect();
+    eprintln!(
+        "return types: {} calls, {} as Mesa types them",
+        cases.len(),
+        cases.len() - bad.len()
+    );
+    assert!(bad.is_empty(), "{}", bad[..bad.len().min(20)].join("\n"));
 }

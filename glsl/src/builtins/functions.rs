@@ -240,5 +240,9 @@ pub fn all() -> Vec<Function> {
             });
         }
     }
+    // `genType min(genType, float)` repeats `min(float, float)` of `min(genType,
+    // genType)`: keep the first of each name and parameter list.
+    let mut seen = std::collections::HashSet::new();
+    v.retain(|f| seen.insert((f.name.clone(), f.params.clone())));
     v
 }

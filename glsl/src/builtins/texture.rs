@@ -173,7 +173,7 @@ impl Shape {
     }
 
     /// The targets `textureOffset`, `textureLodOffset` and `textureGradOffset` take:
-    /// no cube maps (nor 2D array shadows but for textureGradOffset).
+    /// no cube maps.
     fn offsets(&self) -> bool {
         self.samples() && self.s.dim != Dim::Cube
     }
@@ -186,122 +186,82 @@ impl Shape {
 
 /// The 1.30 family over one sampler.
 fn new_family(v: &mut Vec<Function>, sh: &Shape) {
-    let (st, ret, p, t) = (&sh.st, &sh.ret, &sh.p, sh.since);
-    let bias = sh.has_levels() && !(sh.s.shadow && sh.s.array && sh.s.dim == Dim::D2);
+    let (s, t) = (sh.s, sh.since);
+    let bias = sh.has_levels() && !(s.shadow && s.array && s.dim == Dim::D2);
     let size = Type::vec(
         Scalar::Int,
-        (sh.d - (sh.s.dim == Dim::Cube) as u8) + sh.s.array as u8,
+        sh.d - (s.dim == Dim::Cube) as u8 + s.array as u8,
     );
-    let mut size_params = vec![st.clone()];
-    if sh.has_levels() {
-        size_params.push(Type::INT);
-    }
-    v.push(sig("textureSize", size, size_params, Avail::all(t)));
-    let int = Type::INT;
-    let ip = Type::vec(Scalar::Int, sh.s.coords());
-    if !sh.s.shadow && sh.s.dim != Dim::Cube {
-        let extra = match sh.s.dim {
-            Dim::Rect | Dim::Buffer => vec![],
-            _ => vec![int.clone()],
+    let lod: &[Type] = if sh.has_levels() { &[Type::INT] } else { &[] };
+    v.push(sig(
+        "textureSize",
+        size,
+        [std::slice::from_ref(&sh.st), lod].concat(),
+        Avail::all(t),
+    ));
+    // `name(sampler, rest...)`, with the bias form when `b`.
+    let mut add = |name: &str, rest: &[Type], b: bool| {
+        let params = [std::slice::from_ref(&sh.st), rest].concat();
+        with_bias(v, name, sh.ret.clone(), params, t, b);
+    };
+    let (p, o, g, f) = (sh.p.clone(), sh.offset(), sh.grad(), Type::FLOAT);
+    if !s.shadow && s.dim != Dim::Cube {
+        let ip = Type::vec(Scalar::Int, s.coords());
+        // The level, or the sample of a multisample texture.
+        let level: &[Type] = if sh.has_levels() || s.dim == Dim::Ms {
+            &[Type::INT]
+        } else {
+            &[]
         };
-        let fetch = [vec![st.clone(), ip.clone()], extra.clone()].concat();
-        v.push(sig("texelFetch", ret.clone(), fetch.clone(), Avail::all(t)));
-        if !matches!(sh.s.dim, Dim::Buffer | Dim::Ms) {
-            let params = [fetch, vec![sh.offset()]].concat();
-            v.push(sig("texelFetchOffset", ret.clone(), params, Avail::all(t)));
+        add(
+            "texelFetch",
+            &[std::slice::from_ref(&ip), level].concat(),
+            false,
+        );
+        if sh.samples() {
+            add(
+                "texelFetchOffset",
+                &[&[ip], level, std::slice::from_ref(&o)].concat(),
+                false,
+            );
         }
     }
     if !sh.samples() {
         return;
     }
-    let g = [sh.grad(), sh.grad()];
-    with_bias(
-        v,
-        "texture",
-        ret.clone(),
-        vec![st.clone(), p.clone()],
-        t,
-        bias,
-    );
-    v.push(sig(
-        "textureGrad",
-        ret.clone(),
-        [vec![st.clone(), p.clone()], g.to_vec()].concat(),
-        Avail::all(t),
-    ));
+    add("texture", std::slice::from_ref(&p), bias);
+    add("textureGrad", &[p.clone(), g.clone(), g.clone()], false);
     if sh.lod() {
-        v.push(sig(
-            "textureLod",
-            ret.clone(),
-            vec![st.clone(), p.clone(), Type::FLOAT],
-            Avail::all(t),
-        ));
+        add("textureLod", &[p.clone(), f.clone()], false);
     }
     if sh.offsets() {
-        let o = sh.offset();
-        let two_d_array_shadow = sh.s.shadow && sh.s.array && sh.s.dim == Dim::D2;
-        if !two_d_array_shadow {
-            with_bias(
-                v,
-                "textureOffset",
-                ret.clone(),
-                vec![st.clone(), p.clone(), o.clone()],
-                t,
-                bias,
+        // Mesa also has textureOffset on sampler2DArrayShadow (no bias), from 1.30.
+        add("textureOffset", &[p.clone(), o.clone()], bias);
+        if sh.lod() {
+            add(
+                "textureLodOffset",
+                &[p.clone(), f.clone(), o.clone()],
+                false,
             );
         }
-        if sh.lod() && sh.s.dim != Dim::Cube {
-            let params = vec![st.clone(), p.clone(), Type::FLOAT, o.clone()];
-            v.push(sig("textureLodOffset", ret.clone(), params, Avail::all(t)));
-        }
-        let params = [vec![st.clone(), p.clone()], g.to_vec(), vec![o.clone()]].concat();
-        v.push(sig("textureGradOffset", ret.clone(), params, Avail::all(t)));
+        add(
+            "textureGradOffset",
+            &[p, g.clone(), g.clone(), o.clone()],
+            false,
+        );
     }
     for q in sh.proj() {
-        let o = sh.offset();
-        with_bias(
-            v,
-            "textureProj",
-            ret.clone(),
-            vec![st.clone(), q.clone()],
-            t,
-            bias,
-        );
-        with_bias(
-            v,
-            "textureProjOffset",
-            ret.clone(),
-            vec![st.clone(), q.clone(), o.clone()],
-            t,
-            bias,
-        );
-        let grad = [vec![st.clone(), q.clone()], g.to_vec()].concat();
-        v.push(sig(
-            "textureProjGrad",
-            ret.clone(),
-            grad.clone(),
-            Avail::all(t),
-        ));
-        v.push(sig(
+        add("textureProj", std::slice::from_ref(&q), bias);
+        add("textureProjOffset", &[q.clone(), o.clone()], bias);
+        add("textureProjGrad", &[q.clone(), g.clone(), g.clone()], false);
+        add(
             "textureProjGradOffset",
-            ret.clone(),
-            [grad, vec![o.clone()]].concat(),
-            Avail::all(t),
-        ));
+            &[q.clone(), g.clone(), g.clone(), o.clone()],
+            false,
+        );
         if sh.has_levels() {
-            let params = vec![st.clone(), q.clone(), Type::FLOAT];
-            v.push(sig(
-                "textureProjLod",
-                ret.clone(),
-                params.clone(),
-                Avail::all(t),
-            ));
-            v.push(sig(
-                "textureProjLodOffset",
-                ret.clone(),
-                [params, vec![o]].concat(),
-                Avail::all(t),
-            ));
+            add("textureProjLod", &[q.clone(), f.clone()], false);
+            add("textureProjLodOffset", &[q, f.clone(), o.clone()], false);
         }
     }
 }

@@ -96,7 +96,6 @@ pub fn compile(cases: &[Case], per_shader: usize) -> Vec<(Option<bool>, String)>
                     r.log
                         .lines()
                         .filter(|l| l.starts_with(&mine))
-                        .take(3)
                         .collect::<Vec<_>>()
                         .join("\n")
                 };
@@ -115,13 +114,9 @@ pub fn check(cases: &[Case], expect_ok: bool, per_shader: usize) -> Vec<String> 
         .zip(cases)
         .filter(|((ok, _), _)| *ok != Some(expect_ok))
         .map(|((_, log), c)| {
-            format!(
-                "{} {:?}: {}\n    {}",
-                c.version.directive(),
-                c.stage,
-                c.line,
-                log
-            )
+            let log: Vec<&str> = log.lines().take(3).collect();
+            let (v, s) = (c.version.directive(), c.stage);
+            format!("{v} {s:?}: {}\n    {}", c.line, log.join("\n    "))
         })
         .collect()
 }
