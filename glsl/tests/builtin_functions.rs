@@ -276,23 +276,5 @@ fn return_types_are_mesas() {
             }
         }
     }
-    let out = compile(&cases, 60);
-    let bad: Vec<String> = out
-        .iter()
-        .zip(cases.iter().zip(&want))
-        .filter(|((ok, log), (_, w))| *ok != Some(false) || !log.contains(w.as_str()))
-        .map(|((_, log), (c, w))| {
-            format!(
-                "{}: {} / want {w}, got {log}",
-                c.version.directive(),
-                c.line
-            )
-        })
-        .collect();
-    eprintln!(
-        "return types: {} calls, {} as Mesa types them",
-        cases.len(),
-        cases.len() - bad.len()
-    );
-    assert!(bad.is_empty(), "{}", bad[..bad.len().min(20)].join("\n"));
+    batch::expect_errors("return types", &cases, &want, 60);
 }

@@ -142,3 +142,22 @@ fn sizes_and_constant_values_are_mesas() {
     expect("constants equal to Mesa's", &values, true, 60);
     assert_eq!(CONSTANTS.len(), 23);
 }
+
+/// Each variable assigned to a struct makes Mesa name its type: "initializer of type T
+/// cannot be assigned to variable of type Z", T the tables' type (a read into a
+/// variable of the tables' type alone would pass an int for a float through the
+/// implicit conversion).
+#[test]
+fn types_are_mesas() {
+    let (mut cases, mut want) = (Vec::new(), Vec::new());
+    for (var, v, s) in placements() {
+        let mut c = case(v, s, format!("{{ Z x = {}; }}", var.name));
+        c.globals.push("struct Z { float z; };".into());
+        cases.push(c);
+        want.push(format!(
+            "initializer of type {} cannot be assigned to variable of type Z",
+            var.ty
+        ));
+    }
+    batch::expect_errors("variable types", &cases, &want, 60);
+}

@@ -5,7 +5,7 @@
 mod batch;
 mod mesa;
 
-use batch::{compile, expect, Case};
+use batch::{expect, expect_errors, Case};
 use softgl_glsl::types::std140::{array_stride, layout, matrix_stride, struct_offsets};
 use softgl_glsl::types::{basic_types, Member, Sampler, Stage, Struct, Type, Version};
 use std::sync::Arc;
@@ -150,19 +150,7 @@ fn names_are_mesas() {
             cases.push(assign(v, &t, &to));
         }
     }
-    let out = compile(&cases, 60);
-    let bad: Vec<String> = out
-        .iter()
-        .zip(&want)
-        .filter(|((ok, log), w)| *ok != Some(false) || !log.contains(w.as_str()))
-        .map(|((_, log), w)| format!("want {w}, got {log}"))
-        .collect();
-    eprintln!(
-        "type names: {} cases, {} as Mesa prints them",
-        cases.len(),
-        cases.len() - bad.len()
-    );
-    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    expect_errors("type names", &cases, &want, 60);
 }
 
 /// Every pair of basic types of each version: `T a; U b = a;` compiles exactly when

@@ -139,3 +139,27 @@ pub fn expect(what: &str, cases: &[Case], expect_ok: bool, per_shader: usize) {
         bad[..bad.len().min(40)].join("\n")
     );
 }
+
+/// Compiles the cases, each of which must be rejected with its `want` text in its
+/// errors; prints `what` with the counts and fails listing the first 20 that were not.
+pub fn expect_errors(what: &str, cases: &[Case], want: &[String], per_shader: usize) {
+    let bad: Vec<String> = compile(cases, per_shader)
+        .iter()
+        .zip(cases.iter().zip(want))
+        .filter(|((ok, log), (_, w))| *ok != Some(false) || !log.contains(w.as_str()))
+        .map(|((_, log), (c, w))| {
+            let (v, s) = (c.version.directive(), c.stage);
+            format!("{v} {s:?}: {}\n    want {w}\n    got {log}", c.line)
+        })
+        .collect();
+    eprintln!(
+        "{what}: {} cases, {} with the expected error",
+        cases.len(),
+        cases.len() - bad.len()
+    );
+    assert!(
+        bad.is_empty(),
+        "{what}:\n{}",
+        bad[..bad.len().min(20)].join("\n")
+    );
+}
