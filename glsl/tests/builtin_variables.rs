@@ -149,15 +149,11 @@ fn sizes_and_constant_values_are_mesas() {
 /// implicit conversion).
 #[test]
 fn types_are_mesas() {
-    let (mut cases, mut want) = (Vec::new(), Vec::new());
-    for (var, v, s) in placements() {
-        let mut c = case(v, s, format!("{{ Z x = {}; }}", var.name));
-        c.globals.push("struct Z { float z; };".into());
-        cases.push(c);
-        want.push(format!(
-            "initializer of type {} cannot be assigned to variable of type Z",
-            var.ty
-        ));
-    }
+    let (cases, want): (Vec<Case>, Vec<String>) = placements()
+        .into_iter()
+        .map(|(var, v, s)| {
+            batch::names_type(case(v, s, format!("{{ Z x = {}; }}", var.name)), &var.ty)
+        })
+        .unzip();
     batch::expect_errors("variable types", &cases, &want, 60);
 }

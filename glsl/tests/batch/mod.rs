@@ -121,27 +121,32 @@ pub fn check(cases: &[Case], expect_ok: bool, per_shader: usize) -> Vec<String> 
         .collect()
 }
 
-/// Compiles the cases, prints `what` with the number of cases and of outcomes as
-/// expected (`expect_ok`: accepted, else rejected), and fails listing the first 40
-/// cases that came out otherwise.
-pub fn expect(what: &str, cases: &[Case], expect_ok: bool, per_shader: usize) {
-    let bad = check(cases, expect_ok, per_shader);
-    let verb = if expect_ok { "accepted" } else { "rejected" };
-    eprintln!(
-        "{what}: {} cases, {} {verb}",
-        cases.len(),
-        cases.len() - bad.len()
-    );
+/// Prints `what` with the number of cases and of those `done`, and fails listing the
+/// first 20 of `bad`.
+fn report(what: &str, total: usize, done: &str, bad: &[String]) {
+    eprintln!("{what}: {total} cases, {} {done}", total - bad.len());
+    let first = &bad[..bad.len().min(20)];
     assert!(
         bad.is_empty(),
-        "{what}: {} not {verb}:\n{}",
+        "{what}: {} not {done}:\n{}",
         bad.len(),
-        bad[..bad.len().min(40)].join("\n")
+        first.join("\n")
     );
 }
 
-/// Compiles the cases, each of which must be rejected with its `want` text in its
-/// errors; prints `what` with the counts and fails listing the first 20 that were not.
+/// Compiles the cases and fails unless each is accepted (`expect_ok`) or rejected.
+pub fn expect(what: &str, cases: &[Case], expect_ok: bool, per_shader: usize) {
+    let verb = if expect_ok { "accepted" } else { "rejected" };
+    report(
+        what,
+        cases.len(),
+        verb,
+        &check(cases, expect_ok, per_shader),
+    );
+}
+
+/// Compiles the cases and fails unless each is rejected with its `want` text among
+/// its errors.
 pub fn expect_errors(what: &str, cases: &[Case], want: &[String], per_shader: usize) {
     let bad: Vec<String> = compile(cases, per_shader)
         .iter()
@@ -152,14 +157,14 @@ pub fn expect_errors(what: &str, cases: &[Case], want: &[String], per_shader: us
             format!("{v} {s:?}: {}\n    want {w}\n    got {log}", c.line)
         })
         .collect();
-    eprintln!(
-        "{what}: {} cases, {} with the expected error",
-        cases.len(),
-        cases.len() - bad.len()
-    );
-    assert!(
-        bad.is_empty(),
-        "{what}:\n{}",
-        bad[..bad.len().min(20)].join("\n")
-    );
+    report(what, cases.len(), "with the expected error", &bad);
+}
+
+/// Turns a case whose line assigns a value to a variable of type `Z` into a check that
+/// Mesa names the value's type `ty`: declares `struct Z`, which nothing converts to,
+/// and returns the error Mesa must give.
+pub fn names_type(mut case: Case, ty: &impl std::fmt::Display) -> (Case, String) {
+    case.globals.push("struct Z { float z; };".into());
+    let want = format!("initializer of type {ty} cannot be assigned to variable of type Z");
+    (case, want)
 }
