@@ -171,6 +171,60 @@ pub fn overloads(name: &str, version: Version, stage: Stage) -> Vec<&'static Fun
         .collect()
 }
 
+/// Why a call to a built-in function resolves to no signature.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unresolved {
+    /// No built-in of that name in this version and stage (Mesa: "no function with
+    /// name").
+    NoFunction,
+    /// No signature accepts the arguments (Mesa: "no matching function for call").
+    NoMatch,
+    /// Several accept them through conversions and none is best.
+    Ambiguous,
+}
+
+/// The signature a call of `name` with arguments of types `args` selects, by the GLSL
+/// 4.00 rules that Mesa applies to every version (the 1.20 to 3.30 specifications call
+/// any call with several inexact matches ambiguous): an exact match; else, among the
+/// signatures that accept the arguments through implicit conversions, the one whose
+/// every parameter matches at least as well as the others' (exactly rather than
+/// converted) and one better.
+pub fn resolve(
+    name: &str,
+    args: &[Type],
+    version: Version,
+    stage: Stage,
+) -> Result<&'static Function, Unresolved> {
+    let all = overloads(name, version, stage);
+    if all.is_empty() {
+        return Err(Unresolved::NoFunction);
+    }
+    let exact = |f: &Function, i: usize| f.params[i].ty == args[i];
+    if let Some(f) = all
+        .iter()
+        .find(|f| f.params.len() == args.len() && (0..args.len()).all(|i| exact(f, i)))
+    {
+        return Ok(f);
+    }
+    let fits: Vec<&'static Function> = all
+        .into_iter()
+        .filter(|f| f.accepts(args, version))
+        .collect();
+    let better = |a: &Function, b: &Function| {
+        (0..args.len()).all(|i| exact(a, i) || !exact(b, i))
+            && (0..args.len()).any(|i| exact(a, i) && !exact(b, i))
+    };
+    match fits.as_slice() {
+        [] => Err(Unresolved::NoMatch),
+        [f] => Ok(f),
+        _ => fits
+            .iter()
+            .find(|a| fits.iter().all(|b| std::ptr::eq(**a, *b) || better(a, b)))
+            .copied()
+            .ok_or(Unresolved::Ambiguous),
+    }
+}
+
 /// Every built-in variable, uniform and constant of every version, stage and profile.
 pub fn all_variables() -> &'static [variables::Variable] {
     static ALL: OnceLock<Vec<variables::Variable>> = OnceLock::new();
