@@ -27,21 +27,24 @@ fn strukt(name: &str, members: &[(&str, Type)]) -> Type {
     }))
 }
 
+/// The two struct types of the specification's example block (GLSL: `struct F { int
+/// d; bvec2 e; }; struct O { uvec3 j; vec2 k; float l[2]; vec2 m; mat3 n[2]; };`).
+fn example_structs() -> (Type, Type) {
+    let f = strukt("F", &[("d", parse("int")), ("e", parse("bvec2"))]);
+    let members = "uvec3 j; vec2 k; float l[2]; vec2 m; mat3 n[2]";
+    let o: Vec<(String, Type)> = members
+        .split(';')
+        .map(|m| softgl_glsl::builtins::variables::declaration(m, &[]).unwrap())
+        .collect();
+    let o: Vec<(&str, Type)> = o.iter().map(|(n, t)| (n.as_str(), t.clone())).collect();
+    (f, strukt("O", &o))
+}
+
 /// The example block of the OpenGL 4.5 specification, section 7.6.2.2, with the
 /// offsets its comments give.
 #[test]
 fn std140_follows_the_specification_example() {
-    let f = strukt("F", &[("d", parse("int")), ("e", parse("bvec2"))]);
-    let o = strukt(
-        "O",
-        &[
-            ("j", parse("uvec3")),
-            ("k", parse("vec2")),
-            ("l", Type::FLOAT.array(Some(2))),
-            ("m", parse("vec2")),
-            ("n", parse("mat3").array(Some(2))),
-        ],
-    );
+    let (f, o) = example_structs();
     let block = strukt(
         "Example",
         &[
@@ -220,4 +223,86 @@ fn samplers_exist_from_their_version() {
         n - wrong.len()
     );
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The std140 base alignment and size of a type, checked against Mesa through
+/// ARB_enhanced_layouts' explicit offsets: a member at an offset that is not a
+/// multiple of its base alignment, or one that overlaps the previous member, is an
+/// error. For each type T: T at its alignment after a float is accepted, at half of it
+/// rejected (when that is a multiple of 4); a float at T's size after T is accepted,
+/// 4 bytes earlier rejected.
+#[test]
+fn std140_alignment_and_size_are_mesas() {
+    let (f, o) = example_structs();
+    let globals = "struct F { int d; bvec2 e; };\nstruct O { uvec3 j; vec2 k; float l[2]; vec2 m; mat3 n[2]; };\n";
+    let mut types: Vec<(Type, bool)> = Vec::new();
+    for t in basic_types(Version::new(330, false)) {
+        let m = matches!(t, Type::Matrix { .. });
+        types.push((t.clone(), false));
+        types.push((t.clone().array(Some(3)), false));
+        if m {
+            types.push((t.clone(), true));
+            types.push((t.array(Some(2)), true));
+        }
+    }
+    for s in [f, o] {
+        types.push((s.clone(), false));
+        types.push((s.array(Some(2)), false));
+    }
+    let mut srcs = Vec::new();
+    for (t, row) in &types {
+        let l = layout(t, *row).unwrap();
+        let q = if *row { ", row_major" } else { "" };
+        let decl = match t {
+            Type::Array(e, Some(n)) => format!("{e} x[{n}]"),
+            _ => format!("{t} x"),
+        };
+        let block = |members: String| {
+            format!("#version 330\n#extension GL_ARB_enhanced_layouts : require\n{globals}layout(std140) uniform B {{ {members} }};\nvoid main() {{}}\n")
+        };
+        let at = |off: u32| {
+            block(format!(
+                "layout(offset = 0) float p; layout(offset = {off}{q}) {decl};"
+            ))
+        };
+        let after = |off: u32| {
+            block(format!(
+                "layout(offset = 0{q}) {decl}; layout(offset = {off}) float y;"
+            ))
+        };
+        let what = format!("{t}{q}");
+        srcs.push((
+            format!("{what} at {}", l.align.max(4)),
+            true,
+            at(l.align.max(4)),
+        ));
+        if l.align >= 16 {
+            srcs.push((format!("{what} at {}", l.align / 2), false, at(l.align / 2)));
+        }
+        srcs.push((
+            format!("float after {what} at {}", l.size),
+            true,
+            after(l.size),
+        ));
+        srcs.push((
+            format!("float after {what} at {}", l.size - 4),
+            false,
+            after(l.size - 4),
+        ));
+    }
+    let jobs: Vec<mesa::Job> = srcs.iter().map(|s| mesa::Job::Fragment(&s.2)).collect();
+    let out = mesa::run(mesa::Context::Core33, &jobs);
+    let bad: Vec<String> = srcs
+        .iter()
+        .zip(&out)
+        .filter(|(s, r)| r.ok != s.1)
+        .map(|(s, r)| format!("{} (want ok={}): {}", s.0, s.1, r.log))
+        .collect();
+    eprintln!(
+        "std140 against Mesa: {} types, {} checks, {} as the layout says",
+        types.len(),
+        srcs.len(),
+        srcs.len() - bad.len()
+    );
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
 }
