@@ -86,6 +86,14 @@ fn every_signature_is_accepted() {
         "{} signatures ({geometry_only} geometry-only, not testable here)",
         all_functions().len()
     );
+    for v in Version::all() {
+        let n = |s| all_functions().iter().filter(|f| f.exists(v, s)).count();
+        let (vs, fs) = (n(Stage::Vertex), n(Stage::Fragment));
+        eprintln!(
+            "  {}: {vs} in vertex, {fs} in fragment shaders",
+            v.directive()
+        );
+    }
     expect("every signature where it exists", &cases, true, 60);
 }
 

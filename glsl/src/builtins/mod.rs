@@ -3,12 +3,21 @@
 //! stages and profile that have it.
 //!
 //! Sources: the GLSL specifications 1.10 to 3.30, chapter 7 (built-in variables, uniform
-//! state, constants) and chapter 8 (built-in functions). Where Mesa, the tests' reference,
-//! differs from a specification, the tables follow Mesa and the entry says so; the
-//! recurring cases are that Mesa keeps every deprecated-but-listed name (`texture2D`,
-//! `gl_FragColor`...) in the 1.50 and 3.30 core profiles, as the specifications do, that
-//! it exposes the compatibility built-ins in every 1.40 shader, and that the 1.10 `*Lod`
-//! texture functions exist in fragment shaders from 1.30 on.
+//! state, constants) and chapter 8 (built-in functions). Where Mesa, the tests'
+//! reference, differs from a specification, the tables follow Mesa and the entry says
+//! so. The differences found by the tests:
+//! - every 1.40 shader has the compatibility built-ins (Mesa's `compat_shader`);
+//! - the 1.10 `*Lod` texture functions exist in fragment shaders from 1.30;
+//! - ARB_texture_rectangle is always on: the float rectangle samplers and
+//!   `texture2DRect`, `texture2DRectProj`, `shadow2DRect`... exist from 1.10;
+//! - the integer `abs`, `sign`, `min`, `max`, `clamp` exist from 1.10, `determinant`
+//!   from 1.20, `textureOffset(sampler2DArrayShadow, vec4, ivec2)` from 1.30;
+//! - overloads resolve by the 4.00 rules (best inexact match) in every version.
+//!
+//! Mesa keeps the deprecated names (`texture2D`, `shadow2D`, `gl_FragColor`,
+//! `gl_FragData`, `noise1`...) in the 1.50 and 3.30 core profiles, and so do the
+//! tables; what the compatibility profile alone has (`ftransform`, `gl_Vertex`, the
+//! varyings and uniform state of fixed function) is marked [`Avail::compat_only`].
 //!
 //! Functions are described compactly (one line for `genType sin(genType)`) and the
 //! signatures generated from the descriptions: see [`functions::all`].

@@ -11,8 +11,8 @@
 //! exist for non-array 1D, 2D, 3D and rectangle targets. Mesa's additions, followed
 //! here: the 1.10 `*Lod` functions exist in fragment shaders from 1.30, and the 1.10
 //! rectangle functions (`texture2DRect`...) exist from 1.10 (ARB_texture_rectangle is
-//! always on in Mesa). None of these names is compatibility-only in Mesa: the
-//! specifications list them as deprecated, not removed, up to 3.30.
+//! always on in Mesa). None of these names is compatibility-only in Mesa: the 1.50 and
+//! 3.30 core profiles have them all (tested).
 
 use super::{Avail, Function, Param};
 use crate::types::{Dim, Sampler, Scalar, Type};

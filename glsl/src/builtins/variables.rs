@@ -4,11 +4,11 @@
 //! `TYPE NAME` or `TYPE NAME[SIZE]`, SIZE a number, a constant's name or empty
 //! (an unsized array such as `gl_TexCoord[]`).
 //!
-//! Where Mesa differs from the specifications the table follows Mesa: the compatibility
-//! variables exist in every 1.40 shader (Mesa's `compat_shader`); `gl_FragColor` and
-//! `gl_FragData` exist in the 1.50 and 3.30 core profiles (deprecated, not removed, in
-//! the specifications too); `gl_ClipVertex` is compatibility-only from 1.40 on like the
-//! other deprecated varyings.
+//! The table follows Mesa, the tests' reference: the compatibility variables exist in
+//! every 1.40 shader (Mesa's `compat_shader`; the 1.40 specification has them only with
+//! ARB_compatibility); `gl_FragColor` and `gl_FragData` exist in the 1.50 and 3.30 core
+//! profiles; `gl_ClipVertex` is, like the fixed-function varyings, compatibility-only
+//! in 1.50 and 3.30; `gl_PointCoord` starts at 1.20.
 
 use super::{state, Avail};
 use crate::types::{Member, Struct, Type};
