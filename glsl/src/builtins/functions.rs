@@ -246,3 +246,41 @@ pub fn all() -> Vec<Function> {
     v.retain(|f| seen.insert((f.name.clone(), f.params.clone())));
     v
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_description_many_signatures() {
+        let sigs = expand("genType clamp(genType, float, float)", Avail::all(110)).unwrap();
+        let protos: Vec<String> = sigs.iter().map(Function::prototype).collect();
+        assert_eq!(
+            protos,
+            [
+                "float clamp(float, float, float)",
+                "vec2 clamp(vec2, float, float)",
+                "vec3 clamp(vec3, float, float)",
+                "vec4 clamp(vec4, float, float)"
+            ]
+        );
+        let t = expand("matT transpose(mat)", Avail::all(120)).unwrap();
+        assert_eq!(t.len(), 9);
+        assert_eq!(t[1].prototype(), "mat3x2 transpose(mat2x3)");
+        let m = expand("genType modf(genType, out genType)", Avail::all(130)).unwrap();
+        assert_eq!(m[3].prototype(), "vec4 modf(vec4, out vec4)");
+        assert!(expand("genType nothing", Avail::all(110)).is_none());
+        assert!(expand("genType f(quux)", Avail::all(110)).is_none());
+    }
+
+    #[test]
+    fn outer_product_shapes() {
+        let v = all();
+        let f = v
+            .iter()
+            .find(|f| f.name == "outerProduct" && f.ret == Type::mat(2, 3))
+            .unwrap();
+        assert_eq!(f.prototype(), "mat2x3 outerProduct(vec3, vec2)");
+        assert_eq!(v.iter().filter(|f| f.name == "outerProduct").count(), 9);
+    }
+}

@@ -422,3 +422,42 @@ pub fn basic_types(version: Version) -> Vec<Type> {
     v.retain(|t| t.exists_in(version));
     v
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_and_conversions() {
+        assert_eq!(Type::mat(2, 2).to_string(), "mat2");
+        assert_eq!(Type::mat(3, 2).to_string(), "mat3x2");
+        assert_eq!(Type::Vector(Scalar::Uint, 3).to_string(), "uvec3");
+        assert_eq!(Type::FLOAT.array(Some(3)).to_string(), "float[3]");
+        let s = Sampler {
+            dim: Dim::Rect,
+            texel: Scalar::Int,
+            array: false,
+            shadow: false,
+        };
+        assert_eq!(s.name(), "isampler2DRect");
+        assert_eq!(s.since(), 140);
+        let (v110, v120, v130) = (
+            Version::new(110, false),
+            Version::new(120, false),
+            Version::new(130, false),
+        );
+        let ivec2 = Type::Vector(Scalar::Int, 2);
+        let vec2 = Type::Vector(Scalar::Float, 2);
+        assert!(!ivec2.converts_to(&vec2, v110));
+        assert!(ivec2.converts_to(&vec2, v120));
+        assert!(!Type::INT.converts_to(&Type::UINT, v130));
+        assert!(Type::UINT.converts_to(&Type::FLOAT, v130));
+        assert!(!Type::INT.converts_to(&vec2, v130));
+        assert_eq!(Version::all().len(), 8);
+        assert!(Version::new(140, false).compatibility);
+        assert_eq!(
+            Version::new(330, true).directive(),
+            "#version 330 compatibility"
+        );
+    }
+}
