@@ -109,7 +109,7 @@ fn signatures_are_rejected_where_they_do_not_exist() {
             for stage in STAGES {
                 let types_exist = args.iter().all(|t| t.exists_in(v));
                 if types_exist
-                    && resolve(&f.name, &args, v, stage).is_err()
+                    && resolve(&f.name, &args, v, stage, &[]).is_err()
                     && seen.insert((f.prototype(), v, stage))
                 {
                     cases.push(call(v, stage, &f.name, &args_of(f), None));
@@ -150,7 +150,7 @@ fn mixes(version: Version, stage: Stage) -> (Vec<(Case, String)>, Vec<Case>) {
                     .zip(&f.params)
                     .map(|(t, p)| (t, p.out, p.constant))
                     .collect();
-                match resolve(&f.name, &a, version, stage) {
+                match resolve(&f.name, &a, version, stage, &[]) {
                     Ok(r) => {
                         let case = call(version, stage, &f.name, &with_out, Some("Z"));
                         good.push(batch::names_type(case, &r.ret));
@@ -205,22 +205,60 @@ fn argument_mixes_resolve_as_the_tables_say() {
 #[test]
 fn overload_sets_are_mesas() {
     let names: BTreeSet<&str> = all_functions().iter().map(|f| f.name.as_str()).collect();
+    check_overload_sets(&names, None);
+}
+
+/// The extensions whose built-in functions the tables have.
+const EXTENSIONS: [&str; 2] = ["GL_ARB_shader_texture_lod", "GL_ARB_shader_bit_encoding"];
+
+/// With each extension enabled, the overload sets of the names it touches are Mesa's,
+/// and every signature it adds is accepted wherever the tables say it exists.
+#[test]
+fn extension_functions_are_mesas() {
+    for ext in EXTENSIONS {
+        let names: BTreeSet<&str> = all_functions()
+            .iter()
+            .filter(|f| f.avail.ext == Some(ext))
+            .map(|f| f.name.as_str())
+            .collect();
+        check_overload_sets(&names, Some(ext));
+        let mut cases = Vec::new();
+        for f in all_functions().iter().filter(|f| f.avail.ext == Some(ext)) {
+            for v in Version::all() {
+                for stage in STAGES.into_iter().filter(|s| f.exists_with(v, *s, &[ext])) {
+                    let mut c = call(v, stage, &f.name, &args_of(f), Some(&f.ret.to_string()));
+                    c.globals.push(format!("#extension {ext} : enable"));
+                    cases.push(c);
+                }
+            }
+        }
+        expect(&format!("signatures of {ext}"), &cases, true, 60);
+    }
+}
+
+/// Compares the overload sets of `names` in every version and stage, with `ext`
+/// enabled, with the candidates Mesa lists for a call that matches none.
+fn check_overload_sets(names: &BTreeSet<&str>, ext: Option<&str>) {
+    let exts: Vec<&str> = ext.into_iter().collect();
     let mut cases = Vec::new();
     let mut want = Vec::new();
     for v in Version::all() {
         for stage in STAGES {
-            for &name in &names {
-                let mut ours: Vec<String> = overloads(name, v, stage)
+            for &name in names {
+                let mut ours: Vec<String> = overloads(name, v, stage, &exts)
                     .iter()
                     .map(|f| f.prototype().replace("out ", ""))
                     .collect();
                 ours.sort();
                 want.push(ours);
+                let mut globals = vec!["struct Z { float z; };".to_string()];
+                globals.extend(ext.map(|e| format!("#extension {e} : enable")));
+                let line = format!("{{ Z z; {name}(z); }}");
                 cases.push(Case {
                     version: v,
                     stage,
-                    globals: vec!["struct Z { float z; };".into()],
-                    line: format!("{{ Z z; {name}(z); }}"),
+                    globals,
+                    line,
                 });
             }
         }
@@ -236,20 +274,27 @@ fn overload_sets_are_mesas() {
         if ok != Some(false) || &mesa != ours {
             let only_mesa: Vec<&String> = mesa.iter().filter(|p| !ours.contains(p)).collect();
             let only_ours: Vec<&String> = ours.iter().filter(|p| !mesa.contains(p)).collect();
+            let (v, s) = (c.version.directive(), c.stage);
             bad.push(format!(
-                "{} {:?} {}: Mesa only {only_mesa:?}, tables only {only_ours:?}",
-                c.version.directive(),
-                c.stage,
+                "{v} {s:?} {}: Mesa only {only_mesa:?}, tables only {only_ours:?}",
                 c.line
             ));
         }
     }
+    let what = format!(
+        "overload sets{}",
+        ext.map(|e| format!(" with {e}")).unwrap_or_default()
+    );
     eprintln!(
-        "overload sets: {} names by version and stage, {} equal to Mesa's",
+        "{what}: {} names by version and stage, {} equal to Mesa's",
         cases.len(),
         cases.len() - bad.len()
     );
-    assert!(bad.is_empty(), "{}", bad[..bad.len().min(40)].join("\n"));
+    assert!(
+        bad.is_empty(),
+        "{what}:\n{}",
+        bad[..bad.len().min(40)].join("\n")
+    );
 }
 
 /// Whether every type a printed prototype names exists in `v`.

@@ -107,7 +107,7 @@ fn variables_are_absent_where_the_tables_say() {
     for name in names {
         for v in Version::all() {
             for s in STAGES {
-                if variable(name, v, s).is_none() {
+                if variable(name, v, s, &[]).is_none() {
                     cases.push(case(v, s, format!("{{ {name}; }}")));
                 }
             }
@@ -156,4 +156,35 @@ fn types_are_mesas() {
         })
         .unzip();
     batch::expect_errors("variable types", &cases, &want, 60);
+}
+
+/// The extension variables (ARB_draw_instanced's `gl_InstanceIDARB`): with the
+/// extension enabled, Mesa names their type where the tables have them and rejects
+/// them elsewhere.
+#[test]
+fn extension_variables_are_mesas() {
+    let (mut there, mut want, mut absent) = (Vec::new(), Vec::new(), Vec::new());
+    for var in all_variables().iter().filter(|v| v.avail.ext.is_some()) {
+        let ext = var.avail.ext.unwrap();
+        for v in Version::all() {
+            for s in STAGES {
+                let directive = format!("#extension {ext} : enable");
+                let with_ext = |line: String| {
+                    let mut c = case(v, s, line);
+                    c.globals.push(directive.clone());
+                    c
+                };
+                if var.avail.exists_with(v, s, &[ext]) {
+                    let c = with_ext(format!("{{ Z x = {}; }}", var.name));
+                    let (c, w) = batch::names_type(c, &var.ty);
+                    there.push(c);
+                    want.push(w);
+                } else {
+                    absent.push(with_ext(format!("{{ {}; }}", var.name)));
+                }
+            }
+        }
+    }
+    batch::expect_errors("extension variables", &there, &want, 60);
+    expect("extension variables out of their stage", &absent, false, 60);
 }

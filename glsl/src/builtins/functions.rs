@@ -16,6 +16,11 @@
 use super::{Avail, Function, Param};
 use crate::types::{Scalar, Type};
 
+/// The bit-casting functions of 3.30 and of ARB_shader_bit_encoding (any version in
+/// Mesa; the uint ones need uint, so 1.30).
+const BIT_ENCODING: &str = "genIType floatBitsToInt(genType); genUType floatBitsToUint(genType);
+    genType intBitsToFloat(genIType); genType uintBitsToFloat(genUType)";
+
 /// The descriptions: where each group exists, and its prototypes.
 const TABLE: &[(Avail, &str)] = &[
     // 8.1 Angle and trigonometry.
@@ -69,10 +74,10 @@ const TABLE: &[(Avail, &str)] = &[
          genType modf(genType, out genType); genType mix(genType, genType, genBType);
          genBType isnan(genType); genBType isinf(genType)",
     ),
+    (Avail::all(330), BIT_ENCODING),
     (
-        Avail::all(330),
-        "genIType floatBitsToInt(genType); genUType floatBitsToUint(genType);
-         genType intBitsToFloat(genIType); genType uintBitsToFloat(genUType)",
+        Avail::all(110).ext("GL_ARB_shader_bit_encoding"),
+        BIT_ENCODING,
     ),
     // 8.4 Geometric.
     (
@@ -241,9 +246,9 @@ pub fn all() -> Vec<Function> {
         }
     }
     // `genType min(genType, float)` repeats `min(float, float)` of `min(genType,
-    // genType)`: keep the first of each name and parameter list.
+    // genType)`: keep the first of each name, parameter list and extension.
     let mut seen = std::collections::HashSet::new();
-    v.retain(|f| seen.insert((f.name.clone(), f.params.clone())));
+    v.retain(|f| seen.insert((f.name.clone(), f.params.clone(), f.avail.ext)));
     v
 }
 

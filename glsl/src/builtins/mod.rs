@@ -19,6 +19,11 @@
 //! tables; what the compatibility profile alone has (`ftransform`, `gl_Vertex`, the
 //! varyings and uniform state of fixed function) is marked [`Avail::compat_only`].
 //!
+//! Three extensions' built-ins are in the tables, marked [`Avail::ext`] and present only
+//! when enabled: ARB_shader_texture_lod (`texture2DLod` in fragment shaders,
+//! `texture2DGradARB`...), ARB_shader_bit_encoding (`floatBitsToInt`... before 3.30) and
+//! ARB_draw_instanced (`gl_InstanceIDARB`). ARB_texture_rectangle's are always there.
+//!
 //! Functions are described compactly (one line for `genType sin(genType)`) and the
 //! signatures generated from the descriptions: see [`functions::all`].
 
@@ -30,8 +35,8 @@ pub mod variables;
 use crate::types::{Stage, Type, Version};
 use std::sync::OnceLock;
 
-/// Where a built-in exists: the first version per stage and whether only the
-/// compatibility profile has it.
+/// Where a built-in exists: the first version per stage, whether only the
+/// compatibility profile has it, and the extension that must be enabled for it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Avail {
     /// The first version with the built-in in the vertex, geometry and fragment stage
@@ -39,6 +44,8 @@ pub struct Avail {
     pub since: [Option<u16>; 3],
     /// Only where the compatibility built-ins exist (see [`Version::compatibility`]).
     pub compat_only: bool,
+    /// Only with this extension enabled (`#extension NAME : enable` or `require`).
+    pub ext: Option<&'static str>,
 }
 
 impl Avail {
@@ -47,6 +54,7 @@ impl Avail {
         Avail {
             since: [Some(v), Some(if v > 150 { v } else { 150 }), Some(v)],
             compat_only: false,
+            ext: None,
         }
     }
 
@@ -55,6 +63,7 @@ impl Avail {
         Avail {
             since: [Some(v), None, None],
             compat_only: false,
+            ext: None,
         }
     }
 
@@ -63,6 +72,7 @@ impl Avail {
         Avail {
             since: [None, None, Some(v)],
             compat_only: false,
+            ext: None,
         }
     }
 
@@ -71,14 +81,23 @@ impl Avail {
         Avail {
             since: [None, Some(v), None],
             compat_only: false,
+            ext: None,
         }
     }
 
     /// The same, restricted to the compatibility built-ins.
     pub const fn compat(self) -> Avail {
         Avail {
-            since: self.since,
             compat_only: true,
+            ..self
+        }
+    }
+
+    /// The same, only with the extension `name` enabled.
+    pub const fn ext(self, name: &'static str) -> Avail {
+        Avail {
+            ext: Some(name),
+            ..self
         }
     }
 
@@ -87,9 +106,16 @@ impl Avail {
         self.since[stage_index(stage)]
     }
 
-    /// Whether the built-in exists in `version` and `stage`.
+    /// Whether the built-in exists in `version` and `stage` with no extension enabled.
     pub fn exists(&self, version: Version, stage: Stage) -> bool {
-        (!self.compat_only || version.compatibility)
+        self.exists_with(version, stage, &[])
+    }
+
+    /// Whether the built-in exists in `version` and `stage` with the extensions `exts`
+    /// enabled.
+    pub fn exists_with(&self, version: Version, stage: Stage, exts: &[&str]) -> bool {
+        self.ext.is_none_or(|e| exts.contains(&e))
+            && (!self.compat_only || version.compatibility)
             && self.since_in(stage).is_some_and(|v| version.number >= v)
     }
 }
@@ -129,10 +155,17 @@ pub struct Function {
 }
 
 impl Function {
-    /// Whether this signature exists in `version` and `stage`: its entry's availability
-    /// and every type it names (a `uvec2` signature starts at 1.30 whatever the entry).
+    /// Whether this signature exists in `version` and `stage` with no extension
+    /// enabled: its entry's availability and every type it names (a `uvec2` signature
+    /// starts at 1.30 whatever the entry).
     pub fn exists(&self, version: Version, stage: Stage) -> bool {
-        self.avail.exists(version, stage)
+        self.exists_with(version, stage, &[])
+    }
+
+    /// Whether this signature exists in `version` and `stage` with the extensions
+    /// `exts` enabled.
+    pub fn exists_with(&self, version: Version, stage: Stage, exts: &[&str]) -> bool {
+        self.avail.exists_with(version, stage, exts)
             && self.ret.exists_in(version)
             && self.params.iter().all(|p| p.ty.exists_in(version))
     }
@@ -168,16 +201,27 @@ pub fn all_functions() -> &'static [Function] {
     ALL.get_or_init(|| {
         let mut v = functions::all();
         v.extend(texture::all());
+        v.extend(texture::lod_extension());
         v
     })
 }
 
-/// The signatures of `name` in `version` and `stage` (empty: no such built-in there).
-pub fn overloads(name: &str, version: Version, stage: Stage) -> Vec<&'static Function> {
-    all_functions()
+/// The signatures of `name` in `version` and `stage` with the extensions `exts`
+/// enabled (empty: no such built-in there). An extension's signature that the version
+/// also has on its own counts once.
+pub fn overloads(
+    name: &str,
+    version: Version,
+    stage: Stage,
+    exts: &[&str],
+) -> Vec<&'static Function> {
+    let mut v: Vec<&'static Function> = all_functions()
         .iter()
-        .filter(|f| f.name == name && f.exists(version, stage))
-        .collect()
+        .filter(|f| f.name == name && f.exists_with(version, stage, exts))
+        .collect();
+    let mut seen = std::collections::HashSet::new();
+    v.retain(|f| seen.insert(&f.params));
+    v
 }
 
 /// Why a call to a built-in function resolves to no signature.
@@ -203,8 +247,9 @@ pub fn resolve(
     args: &[Type],
     version: Version,
     stage: Stage,
+    exts: &[&str],
 ) -> Result<&'static Function, Unresolved> {
-    let all = overloads(name, version, stage);
+    let all = overloads(name, version, stage, exts);
     if all.is_empty() {
         return Err(Unresolved::NoFunction);
     }
@@ -240,13 +285,15 @@ pub fn all_variables() -> &'static [variables::Variable] {
     ALL.get_or_init(variables::all)
 }
 
-/// The built-in variable `name` in `version` and `stage`, if it exists there.
+/// The built-in variable `name` in `version` and `stage` with the extensions `exts`
+/// enabled, if it exists there.
 pub fn variable(
     name: &str,
     version: Version,
     stage: Stage,
+    exts: &[&str],
 ) -> Option<&'static variables::Variable> {
     all_variables()
         .iter()
-        .find(|v| v.name == name && v.avail.exists(version, stage))
+        .find(|v| v.name == name && v.avail.exists_with(version, stage, exts))
 }

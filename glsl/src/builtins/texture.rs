@@ -55,61 +55,87 @@ fn with_bias(
     v.push(sig(name, ret, params, Avail::all(since)));
 }
 
-/// The 1.10 family: `texture1D`, `texture2DProj`, `shadow2DLod`, `texture2DRect`...
-fn old_family(v: &mut Vec<Function>) {
-    // (name stem, sampler, coordinate sizes of the plain and projective forms, lod forms)
+/// One stem of the 1.10 family: its name, sampler, the size of its coordinate, of its
+/// projective coordinates, of its gradients, and whether it has bias and Lod forms.
+type Stem = (&'static str, Sampler, u8, &'static [u8], u8, bool);
+
+/// The stems of the 1.10 family (and of ARB_texture_rectangle's).
+fn stems() -> [Stem; 8] {
     let float = |dim, shadow| Sampler {
         dim,
         texel: Scalar::Float,
         array: false,
         shadow,
     };
-    let stems: [(&str, Sampler, u8, &[u8], bool); 8] = [
-        ("texture1D", float(Dim::D1, false), 1, &[2, 4], true),
-        ("texture2D", float(Dim::D2, false), 2, &[3, 4], true),
-        ("texture3D", float(Dim::D3, false), 3, &[4], true),
-        ("textureCube", float(Dim::Cube, false), 3, &[], true),
-        ("shadow1D", float(Dim::D1, true), 3, &[4], true),
-        ("shadow2D", float(Dim::D2, true), 3, &[4], true),
-        ("texture2DRect", float(Dim::Rect, false), 2, &[3, 4], false),
-        ("shadow2DRect", float(Dim::Rect, true), 3, &[4], false),
-    ];
-    let vec4 = float_vec(4);
+    [
+        ("texture1D", float(Dim::D1, false), 1, &[2, 4], 1, true),
+        ("texture2D", float(Dim::D2, false), 2, &[3, 4], 2, true),
+        ("texture3D", float(Dim::D3, false), 3, &[4], 3, true),
+        ("textureCube", float(Dim::Cube, false), 3, &[], 3, true),
+        ("shadow1D", float(Dim::D1, true), 3, &[4], 1, true),
+        ("shadow2D", float(Dim::D2, true), 3, &[4], 2, true),
+        (
+            "texture2DRect",
+            float(Dim::Rect, false),
+            2,
+            &[3, 4],
+            2,
+            false,
+        ),
+        ("shadow2DRect", float(Dim::Rect, true), 3, &[4], 2, false),
+    ]
+}
+
+/// Adds `{stem}{suffix}` and `{stem}Proj{suffix}` with the trailing parameters `rest`.
+fn plain_and_proj(v: &mut Vec<Function>, stem: &Stem, suffix: &str, rest: &[Type], avail: Avail) {
+    let (name, s, n, proj, ..) = *stem;
+    for (p, size) in std::iter::once(("", n)).chain(proj.iter().map(|&p| ("Proj", p))) {
+        let params = [&[Type::Sampler(s), float_vec(size)], rest].concat();
+        v.push(sig(
+            &format!("{name}{p}{suffix}"),
+            float_vec(4),
+            params,
+            avail,
+        ));
+    }
+}
+
+/// The 1.10 family: `texture1D`, `texture2DProj`, `shadow2DLod`, `texture2DRect`...
+fn old_family(v: &mut Vec<Function>) {
     // Vertex shaders from 1.10, fragment shaders from 1.30 (Mesa), geometry from 1.50.
     let lod = Avail {
         since: [Some(110), Some(150), Some(130)],
-        compat_only: false,
+        ..Avail::all(110)
     };
-    for (stem, s, n, proj, has_lod) in stems {
-        let st = Type::Sampler(s);
-        with_bias(
-            v,
-            stem,
-            vec4.clone(),
-            vec![st.clone(), float_vec(n)],
-            110,
-            has_lod,
-        );
-        let pname = format!("{stem}Proj");
-        for &p in proj {
-            with_bias(
-                v,
-                &pname,
-                vec4.clone(),
-                vec![st.clone(), float_vec(p)],
-                110,
-                has_lod,
-            );
-        }
-        if has_lod {
-            let params = vec![st.clone(), float_vec(n), Type::FLOAT];
-            v.push(sig(&format!("{stem}Lod"), vec4.clone(), params, lod));
-            for &p in proj {
-                let params = vec![st.clone(), float_vec(p), Type::FLOAT];
-                v.push(sig(&format!("{stem}ProjLod"), vec4.clone(), params, lod));
-            }
+    for stem in stems() {
+        plain_and_proj(v, &stem, "", &[], Avail::all(110));
+        if stem.5 {
+            plain_and_proj(v, &stem, "", &[Type::FLOAT], Avail::fragment(110));
+            plain_and_proj(v, &stem, "Lod", &[Type::FLOAT], lod);
         }
     }
+}
+
+/// ARB_shader_texture_lod: the 1.10 family's `*Lod` forms in fragment shaders, and
+/// `*GradARB` forms with explicit gradients in every stage, from 1.10.
+pub fn lod_extension() -> Vec<Function> {
+    let ext = "GL_ARB_shader_texture_lod";
+    let mut v = Vec::new();
+    for stem in stems() {
+        if stem.5 {
+            let lod = Avail::fragment(110).ext(ext);
+            plain_and_proj(&mut v, &stem, "Lod", &[Type::FLOAT], lod);
+        }
+        let g = float_vec(stem.4);
+        plain_and_proj(
+            &mut v,
+            &stem,
+            "GradARB",
+            &[g.clone(), g],
+            Avail::all(110).ext(ext),
+        );
+    }
+    v
 }
 
 /// The shape of the 1.30 lookups on one sampler.

@@ -73,6 +73,11 @@ const TABLE: &[(Avail, Kind, &str)] = &[
     (Avail::vertex(130), Kind::Input, "int gl_VertexID"),
     (Avail::vertex(130), Kind::Output, "float gl_ClipDistance[]"),
     (Avail::vertex(140), Kind::Input, "int gl_InstanceID"),
+    (
+        Avail::vertex(110).ext("GL_ARB_draw_instanced"),
+        Kind::Input,
+        "int gl_InstanceIDARB",
+    ),
     (G, Kind::Input, "gl_PerVertex gl_in[]; int gl_PrimitiveIDIn"),
     (
         G,
