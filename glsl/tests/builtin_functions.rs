@@ -301,7 +301,7 @@ fn check_overload_sets(names: &BTreeSet<&str>, ext: Option<&str>) {
 fn mentioned_types_exist(proto: &str, v: Version) -> bool {
     proto
         .split(|c: char| !c.is_alphanumeric())
-        .filter_map(softgl_glsl::builtins::functions::type_named)
+        .filter_map(Type::named)
         .all(|t| t.exists_in(v))
 }
 

@@ -11,7 +11,7 @@ use softgl_glsl::types::{basic_types, Member, Sampler, Stage, Struct, Type, Vers
 use std::sync::Arc;
 
 fn parse(name: &str) -> Type {
-    softgl_glsl::builtins::functions::type_named(name).unwrap()
+    Type::named(name).unwrap()
 }
 
 fn strukt(name: &str, members: &[(&str, Type)]) -> Type {

@@ -150,36 +150,8 @@ fn resolve(word: &str, i: usize) -> Option<(Type, usize)> {
         "mat" => mat(false),
         "matT" => mat(true),
         "sqmat" => (Type::mat(i as u8 + 2, i as u8 + 2), 3),
-        _ => (type_named(word)?, 1),
+        _ => (Type::named(word)?, 1),
     })
-}
-
-/// The type of a plain type name (`float`, `ivec3`, `mat2x4`, `sampler2D`...).
-pub fn type_named(name: &str) -> Option<Type> {
-    if name == "void" {
-        return Some(Type::Void);
-    }
-    for s in [Scalar::Float, Scalar::Int, Scalar::Uint, Scalar::Bool] {
-        if name == s.name() {
-            return Some(Type::Scalar(s));
-        }
-        for n in 2..=4u8 {
-            if name == format!("{}vec{n}", s.vector_prefix()) {
-                return Some(Type::Vector(s, n));
-            }
-        }
-    }
-    for c in 2..=4u8 {
-        for r in 2..=4u8 {
-            if name == format!("mat{c}x{r}") || (c == r && name == format!("mat{c}")) {
-                return Some(Type::mat(c, r));
-            }
-        }
-    }
-    crate::types::Sampler::all()
-        .into_iter()
-        .find(|s| s.name() == name)
-        .map(Type::Sampler)
 }
 
 /// Expands one prototype into its signatures (None: a malformed description).

@@ -104,7 +104,7 @@ const TABLE: &[(Avail, Kind, &str)] = &[
 
 /// The type a description names: a basic type, a sampler or one of `structs`.
 fn type_of(name: &str, structs: &[Arc<Struct>]) -> Option<Type> {
-    super::functions::type_named(name).or_else(|| {
+    Type::named(name).or_else(|| {
         structs
             .iter()
             .find(|s| s.name == name)

@@ -297,6 +297,35 @@ impl Type {
     /// `bool`.
     pub const BOOL: Type = Type::Scalar(Scalar::Bool);
 
+    /// The type a built-in type name names (`float`, `ivec3`, `mat2x4`, `mat2`,
+    /// `sampler2D`...), whatever the version (see [`Type::exists_in`]).
+    pub fn named(name: &str) -> Option<Type> {
+        if name == "void" {
+            return Some(Type::Void);
+        }
+        for s in [Scalar::Float, Scalar::Int, Scalar::Uint, Scalar::Bool] {
+            if name == s.name() {
+                return Some(Type::Scalar(s));
+            }
+            for n in 2..=4u8 {
+                if name == format!("{}vec{n}", s.vector_prefix()) {
+                    return Some(Type::Vector(s, n));
+                }
+            }
+        }
+        for c in 2..=4u8 {
+            for r in 2..=4u8 {
+                if name == format!("mat{c}x{r}") || (c == r && name == format!("mat{c}")) {
+                    return Some(Type::mat(c, r));
+                }
+            }
+        }
+        Sampler::all()
+            .into_iter()
+            .find(|s| s.name() == name)
+            .map(Type::Sampler)
+    }
+
     /// The scalar (size 1) or vector of `n` components of `s`.
     pub fn vec(s: Scalar, n: u8) -> Type {
         if n == 1 {
@@ -373,17 +402,6 @@ impl Type {
         same_shape
             && to.scalar() == Some(Scalar::Float)
             && matches!(self.scalar(), Some(Scalar::Int | Scalar::Uint))
-    }
-
-    /// Whether the type may be a value compared with `==`, assigned, etc.: everything
-    /// but void and (arrays or structs of) samplers.
-    pub fn is_plain_data(&self) -> bool {
-        match self {
-            Type::Void | Type::Sampler(_) => false,
-            Type::Struct(s) => s.members.iter().all(|m| m.ty.is_plain_data()),
-            Type::Array(e, _) => e.is_plain_data(),
-            _ => true,
-        }
     }
 }
 
