@@ -181,7 +181,7 @@ fn argument_mixes_resolve_as_the_tables_say() {
             let (g, b) = mixes(v, stage);
             total = (total.0 + g.len(), total.1 + b.len());
             good.extend(g);
-            bad.extend(sample(b, 2000));
+            bad.extend(sample(b, 1000));
         }
     }
     eprintln!(
