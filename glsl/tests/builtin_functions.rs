@@ -209,7 +209,11 @@ fn overload_sets_are_mesas() {
 }
 
 /// The extensions whose built-in functions the tables have.
-const EXTENSIONS: [&str; 2] = ["GL_ARB_shader_texture_lod", "GL_ARB_shader_bit_encoding"];
+const EXTENSIONS: [&str; 3] = [
+    "GL_ARB_shader_texture_lod",
+    "GL_ARB_shader_bit_encoding",
+    "GL_EXT_texture_array",
+];
 
 /// With each extension enabled, the overload sets of the names it touches are Mesa's,
 /// and every signature it adds is accepted wherever the tables say it exists.
@@ -268,7 +272,7 @@ fn check_overload_sets(names: &BTreeSet<&str>, ext: Option<&str>) {
         let mut mesa: Vec<String> = log
             .lines()
             .filter_map(|l| l.split_once(": error:    ").map(|(_, p)| p.to_string()))
-            .filter(|p| mentioned_types_exist(p, c.version))
+            .filter(|p| mentioned_types_exist(p, c.version, &exts))
             .collect();
         mesa.sort();
         if ok != Some(false) || &mesa != ours {
@@ -297,12 +301,12 @@ fn check_overload_sets(names: &BTreeSet<&str>, ext: Option<&str>) {
     );
 }
 
-/// Whether every type a printed prototype names exists in `v`.
-fn mentioned_types_exist(proto: &str, v: Version) -> bool {
+/// Whether every type a printed prototype names exists in `v` with `exts` enabled.
+fn mentioned_types_exist(proto: &str, v: Version, exts: &[&str]) -> bool {
     proto
         .split(|c: char| !c.is_alphanumeric())
         .filter_map(Type::named)
-        .all(|t| t.exists_in(v))
+        .all(|t| t.exists_with(v, exts))
 }
 
 /// The result of every signature, assigned to a struct, makes Mesa name its type:

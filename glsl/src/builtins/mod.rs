@@ -19,9 +19,10 @@
 //! tables; what the compatibility profile alone has (`ftransform`, `gl_Vertex`, the
 //! varyings and uniform state of fixed function) is marked [`Avail::compat_only`].
 //!
-//! Three extensions' built-ins are in the tables, marked [`Avail::ext`] and present only
+//! Four extensions' built-ins are in the tables, marked [`Avail::ext`] and present only
 //! when enabled: ARB_shader_texture_lod (`texture2DLod` in fragment shaders,
-//! `texture2DGradARB`...), ARB_shader_bit_encoding (`floatBitsToInt`... before 3.30) and
+//! `texture2DGradARB`...), ARB_shader_bit_encoding (`floatBitsToInt`... before 3.30),
+//! EXT_texture_array (`sampler2DArray`, `texture2DArray`... before 1.30) and
 //! ARB_draw_instanced (`gl_InstanceIDARB`). ARB_texture_rectangle's are always there.
 //!
 //! Functions are described compactly (one line for `genType sin(genType)`) and the
@@ -166,8 +167,8 @@ impl Function {
     /// `exts` enabled.
     pub fn exists_with(&self, version: Version, stage: Stage, exts: &[&str]) -> bool {
         self.avail.exists_with(version, stage, exts)
-            && self.ret.exists_in(version)
-            && self.params.iter().all(|p| p.ty.exists_in(version))
+            && self.ret.exists_with(version, exts)
+            && self.params.iter().all(|p| p.ty.exists_with(version, exts))
     }
 
     /// Whether a call with arguments of types `args` matches this signature in
@@ -202,6 +203,7 @@ pub fn all_functions() -> &'static [Function] {
         let mut v = functions::all();
         v.extend(texture::all());
         v.extend(texture::lod_extension());
+        v.extend(texture::array_extension());
         v
     })
 }

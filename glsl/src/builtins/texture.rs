@@ -55,6 +55,14 @@ fn with_bias(
     v.push(sig(name, ret, params, Avail::all(since)));
 }
 
+/// Where the 1.10 family's `*Lod` forms exist: vertex shaders from 1.10, fragment
+/// shaders from 1.30 (Mesa), geometry shaders from 1.50.
+const OLD_LOD: Avail = Avail {
+    since: [Some(110), Some(150), Some(130)],
+    compat_only: false,
+    ext: None,
+};
+
 /// One stem of the 1.10 family: its name, sampler, the size of its coordinate, of its
 /// projective coordinates, of its gradients, and whether it has bias and Lod forms.
 type Stem = (&'static str, Sampler, u8, &'static [u8], u8, bool);
@@ -102,16 +110,11 @@ fn plain_and_proj(v: &mut Vec<Function>, stem: &Stem, suffix: &str, rest: &[Type
 
 /// The 1.10 family: `texture1D`, `texture2DProj`, `shadow2DLod`, `texture2DRect`...
 fn old_family(v: &mut Vec<Function>) {
-    // Vertex shaders from 1.10, fragment shaders from 1.30 (Mesa), geometry from 1.50.
-    let lod = Avail {
-        since: [Some(110), Some(150), Some(130)],
-        ..Avail::all(110)
-    };
     for stem in stems() {
         plain_and_proj(v, &stem, "", &[], Avail::all(110));
         if stem.5 {
             plain_and_proj(v, &stem, "", &[Type::FLOAT], Avail::fragment(110));
-            plain_and_proj(v, &stem, "Lod", &[Type::FLOAT], lod);
+            plain_and_proj(v, &stem, "Lod", &[Type::FLOAT], OLD_LOD);
         }
     }
 }
@@ -134,6 +137,40 @@ pub fn lod_extension() -> Vec<Function> {
             &[g.clone(), g],
             Avail::all(110).ext(ext),
         );
+    }
+    v
+}
+
+/// EXT_texture_array: `texture1DArray`, `texture2DArray`, `shadow1DArray`,
+/// `shadow2DArray` with their bias forms, and the `*Lod` forms but `shadow2DArrayLod`
+/// (vertex shaders, fragment shaders from 1.30, as the 1.10 family's).
+pub fn array_extension() -> Vec<Function> {
+    let ext = "GL_EXT_texture_array";
+    let array = |dim, shadow| Sampler {
+        dim,
+        texel: Scalar::Float,
+        array: true,
+        shadow,
+    };
+    let stems: [Stem; 4] = [
+        ("texture1DArray", array(Dim::D1, false), 2, &[], 1, true),
+        ("texture2DArray", array(Dim::D2, false), 3, &[], 2, true),
+        ("shadow1DArray", array(Dim::D1, true), 3, &[], 1, true),
+        ("shadow2DArray", array(Dim::D2, true), 4, &[], 2, false),
+    ];
+    let mut v = Vec::new();
+    for stem in stems {
+        plain_and_proj(&mut v, &stem, "", &[], Avail::all(110).ext(ext));
+        plain_and_proj(
+            &mut v,
+            &stem,
+            "",
+            &[Type::FLOAT],
+            Avail::fragment(110).ext(ext),
+        );
+        if stem.5 {
+            plain_and_proj(&mut v, &stem, "Lod", &[Type::FLOAT], OLD_LOD.ext(ext));
+        }
     }
     v
 }

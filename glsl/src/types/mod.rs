@@ -213,6 +213,13 @@ impl Sampler {
         }
     }
 
+    /// The extension that brings this sampler type to versions before its `since`:
+    /// EXT_texture_array for the float array samplers (from 1.10 in Mesa).
+    pub fn extension(self) -> Option<&'static str> {
+        (self.array && self.texel == Scalar::Float && self.dim != Dim::Ms)
+            .then_some("GL_EXT_texture_array")
+    }
+
     /// The number of coordinates that address a texel (array layer included, the
     /// shadow reference not): 1 for 1D and buffer, 2 for 2D, 1D arrays and rectangle...
     pub fn coords(self) -> u8 {
@@ -381,6 +388,16 @@ impl Type {
     /// Whether `version` has this type.
     pub fn exists_in(&self, version: Version) -> bool {
         version.number >= self.since()
+    }
+
+    /// Whether `version` has this type with the extensions `exts` enabled.
+    pub fn exists_with(&self, version: Version, exts: &[&str]) -> bool {
+        let ext = match self {
+            Type::Sampler(s) => s.extension(),
+            Type::Array(e, _) => return e.exists_with(version, exts),
+            _ => None,
+        };
+        self.exists_in(version) || ext.is_some_and(|e| exts.contains(&e))
     }
 
     /// Whether a value of type `self` converts implicitly to `to` in `version`: never
