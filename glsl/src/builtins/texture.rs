@@ -8,11 +8,14 @@
 //! fragment shaders only; rectangle, buffer and multisample samplers take no bias and no
 //! level of detail; a shadow sampler's coordinate carries the depth reference after the
 //! coordinates, at least in `.z` (so `sampler1DShadow` takes a vec3); projective lookups
-//! exist for non-array 1D, 2D, 3D and rectangle targets. Mesa's additions, followed
-//! here: the 1.10 `*Lod` functions exist in fragment shaders from 1.30, and the 1.10
-//! rectangle functions (`texture2DRect`...) exist from 1.10 (ARB_texture_rectangle is
-//! always on in Mesa). None of these names is compatibility-only in Mesa: the 1.50 and
-//! 3.30 core profiles have them all (tested).
+//! exist for non-array 1D, 2D, 3D and rectangle targets; texel offsets must be
+//! constant expressions ([`Param::constant`]). Mesa's additions, followed here: the 1.10
+//! `*Lod` functions exist in fragment shaders from 1.30, the 1.10 rectangle functions
+//! (`texture2DRect`...) from 1.10 (ARB_texture_rectangle is always on in Mesa), and
+//! `textureOffset(sampler2DArrayShadow, vec4, ivec2)` from 1.30. None of these names is
+//! compatibility-only in Mesa: the 1.50 and 3.30 core profiles have them all (tested).
+//! The lookups of ARB_shader_texture_lod and EXT_texture_array are generated from the
+//! same stems as the 1.10 family.
 
 use super::{Avail, Function, Param};
 use crate::types::{Dim, Sampler, Scalar, Type};
