@@ -209,10 +209,11 @@ fn overload_sets_are_mesas() {
 }
 
 /// The extensions whose built-in functions the tables have.
-const EXTENSIONS: [&str; 3] = [
+const EXTENSIONS: [&str; 4] = [
     "GL_ARB_shader_texture_lod",
     "GL_ARB_shader_bit_encoding",
     "GL_EXT_texture_array",
+    "GL_ARB_texture_multisample",
 ];
 
 /// With each extension enabled, the overload sets of the names it touches are Mesa's,

@@ -19,11 +19,13 @@
 //! tables; what the compatibility profile alone has (`ftransform`, `gl_Vertex`, the
 //! varyings and uniform state of fixed function) is marked [`Avail::compat_only`].
 //!
-//! Four extensions' built-ins are in the tables, marked [`Avail::ext`] and present only
+//! Five extensions' built-ins are in the tables, marked [`Avail::ext`] and present only
 //! when enabled: ARB_shader_texture_lod (`texture2DLod` in fragment shaders,
 //! `texture2DGradARB`...), ARB_shader_bit_encoding (`floatBitsToInt`... before 3.30),
-//! EXT_texture_array (`sampler2DArray`, `texture2DArray`... before 1.30) and
-//! ARB_draw_instanced (`gl_InstanceIDARB`). ARB_texture_rectangle's are always there.
+//! EXT_texture_array (`sampler2DArray`, `texture2DArray`... before 1.30),
+//! ARB_texture_multisample (`sampler2DMS`, its `texelFetch` and `textureSize`, before
+//! 1.50) and ARB_draw_instanced (`gl_InstanceIDARB`). ARB_texture_rectangle's are
+//! always there. (EXT_gpu_shader4's are not in the tables.)
 //!
 //! Functions are described compactly (one line for `genType sin(genType)`) and the
 //! signatures generated from the descriptions: see [`functions::all`].

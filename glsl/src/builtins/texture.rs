@@ -338,6 +338,21 @@ pub fn all() -> Vec<Function> {
     old_family(&mut v);
     for s in Sampler::all() {
         new_family(&mut v, &Shape::new(s));
+        // ARB_texture_multisample: the multisample lookups in any version (Mesa).
+        if let Some(ext @ "GL_ARB_texture_multisample") = s.extension() {
+            let mut w = Vec::new();
+            new_family(
+                &mut w,
+                &Shape {
+                    since: 110,
+                    ..Shape::new(s)
+                },
+            );
+            v.extend(w.into_iter().map(|f| Function {
+                avail: f.avail.ext(ext),
+                ..f
+            }));
+        }
     }
     // The offset of an `*Offset` lookup is its last parameter but the bias, and must be
     // a constant expression.

@@ -213,11 +213,15 @@ impl Sampler {
         }
     }
 
-    /// The extension that brings this sampler type to versions before its `since`:
-    /// EXT_texture_array for the float array samplers (from 1.10 in Mesa).
+    /// The extension that brings this sampler type to versions before its `since`
+    /// (from 1.10 in Mesa): EXT_texture_array for the float array samplers,
+    /// ARB_texture_multisample for the multisample ones.
     pub fn extension(self) -> Option<&'static str> {
-        (self.array && self.texel == Scalar::Float && self.dim != Dim::Ms)
-            .then_some("GL_EXT_texture_array")
+        match self.dim {
+            Dim::Ms => Some("GL_ARB_texture_multisample"),
+            _ if self.array && self.texel == Scalar::Float => Some("GL_EXT_texture_array"),
+            _ => None,
+        }
     }
 
     /// The number of coordinates that address a texel (array layer included, the
