@@ -24,10 +24,12 @@
 //! (`tests/errors.rs`, `tests/mutations.rs` measure it against Mesa).
 
 pub mod ast;
+pub mod builtins;
 pub mod diag;
 pub mod lex;
 pub mod parse;
 pub mod pp;
+pub mod types;
 
 pub use ast::{Shader, Stage};
 pub use diag::Log;

@@ -9,27 +9,8 @@ pub mod print;
 
 use crate::diag::Pos;
 
-/// The shader stage.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Stage {
-    /// A vertex shader.
-    Vertex,
-    /// A geometry shader (1.50 on).
-    Geometry,
-    /// A fragment shader.
-    Fragment,
-}
-
-impl Stage {
-    /// The stage's name as Mesa's messages print it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Stage::Vertex => "vertex",
-            Stage::Geometry => "geometry",
-            Stage::Fragment => "fragment",
-        }
-    }
-}
+/// The shader stage (one type for the whole front end, defined with the types).
+pub use crate::types::Stage;
 
 /// A parsed shader.
 #[derive(Clone, Debug, PartialEq)]
