@@ -25,7 +25,9 @@
 
 pub mod ast;
 pub mod builtins;
+pub mod check;
 pub mod diag;
+pub mod hir;
 pub mod lex;
 pub mod parse;
 pub mod pp;
@@ -88,6 +90,26 @@ pub fn parse_with_log(sources: &[&str], stage: Stage) -> (Option<Shader>, Log) {
 pub fn parse(sources: &[&str], stage: Stage) -> Result<Shader, Log> {
     match parse_with_log(sources, stage) {
         (Some(s), _) => Ok(s),
+        (None, log) => Err(log),
+    }
+}
+
+/// Preprocesses, parses and type-checks one shader into its checked tree
+/// ([`hir::Program`]), with the info log (warnings, or the errors when there is no
+/// tree).
+pub fn compile_with_log(sources: &[&str], stage: Stage) -> (Option<hir::Program>, Log) {
+    let (tree, mut log) = parse_with_log(sources, stage);
+    let Some(tree) = tree else {
+        return (None, log);
+    };
+    let program = check::check(&tree, &mut log);
+    (program, log)
+}
+
+/// Preprocesses, parses and type-checks one shader; the error log when it has errors.
+pub fn compile(sources: &[&str], stage: Stage) -> Result<hir::Program, Log> {
+    match compile_with_log(sources, stage) {
+        (Some(p), _) => Ok(p),
         (None, log) => Err(log),
     }
 }

@@ -79,8 +79,15 @@ fn unescape(s: &str) -> String {
 
 /// The error corpus `tests/corpus/errors.txt`: (name, stage, source).
 pub fn error_cases() -> Vec<(String, Stage, String)> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/corpus/errors.txt");
-    let text = std::fs::read_to_string(path).expect("errors.txt");
+    cases_from("errors.txt")
+}
+
+/// The cases of a corpus file in the format of `errors.txt`: (name, stage, source).
+pub fn cases_from(file: &str) -> Vec<(String, Stage, String)> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/corpus")
+        .join(file);
+    let text = std::fs::read_to_string(path).expect("corpus file");
     text.lines()
         .filter(|l| !l.is_empty() && !l.starts_with('#'))
         .map(|l| {
