@@ -18,10 +18,12 @@
 //! left-nested operator chains (which the parser builds with a loop) are bounded here
 //! by [`MAX_DEPTH`].
 
+mod block;
 mod construct;
 mod decl;
 mod expr;
 pub mod fold;
+mod func;
 mod ops;
 mod stmt;
 
@@ -30,6 +32,7 @@ use crate::builtins;
 use crate::diag::{Log, Pos};
 use crate::hir::{Function, Program, Storage, Var, VarId};
 use crate::types::{Stage, Struct, Type, Version};
+use decl::AOA;
 use std::collections::HashMap;
 use std::sync::Arc;
 
