@@ -12,7 +12,7 @@
 mod common;
 mod mesa;
 
-use common::{mesa_first_error, our_first_error};
+use common::{mesa_first_error, our_first_error, Rng};
 use mesa::{run, Context, Job};
 use softgl_glsl::parse_with_log;
 
@@ -72,18 +72,6 @@ const TOKENS: &[&str] = &[
     "input",
     "@",
 ];
-
-/// A tiny xorshift generator (the cases must not change from run to run).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> usize {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as usize
-    }
-}
 
 /// Byte ranges of the words, numbers and punctuation characters of `src`.
 fn token_spans(src: &str) -> Vec<(usize, usize)> {

@@ -76,14 +76,12 @@ impl Checker<'_> {
         args: Vec<Expr>,
         pos: Pos,
     ) -> Option<Expr> {
-        if !self.at_least(120) {
-            let vt = self.version_text();
-            self.error(
-                pos,
-                format!(
-                    "array constructors forbidden in {vt} (GLSL 1.20 or GLSL ES 3.00 required)"
-                ),
-            );
+        if !self.require(
+            120,
+            pos,
+            "array constructors forbidden",
+            "GLSL 1.20 or GLSL ES 3.00",
+        ) {
             return None;
         }
         let len = n.unwrap_or(args.len() as u32);
@@ -146,9 +144,12 @@ impl Checker<'_> {
                 );
                 return None;
             }
-            if !self.at_least(120) {
-                let vt = self.version_text();
-                self.error(pos, format!("cannot construct `{ty}' from a matrix in {vt} (GLSL 1.20 or GLSL ES 1.00 required)"));
+            if !self.require(
+                120,
+                pos,
+                "cannot construct `{ty}' from a matrix",
+                "GLSL 1.20 or GLSL ES 1.00",
+            ) {
                 return None;
             }
         } else if used < want && !(used == 1 && args.len() == 1) {

@@ -166,14 +166,12 @@ impl Checker<'_> {
             }
             A::Method(a, name, args) => {
                 let a = self.expr(a)?;
-                if !self.at_least(120) {
-                    let vt = self.version_text();
-                    self.error(
-                        pos,
-                        format!(
-                            "methods not supported in {vt} (GLSL 1.20 or GLSL ES 3.00 required)"
-                        ),
-                    );
+                if !self.require(
+                    120,
+                    pos,
+                    "methods not supported",
+                    "GLSL 1.20 or GLSL ES 3.00",
+                ) {
                     return None;
                 }
                 if name != "length" {
@@ -334,7 +332,21 @@ impl Checker<'_> {
     /// `x` converted for assignment to a variable of type `to`; the found type when
     /// it does not convert. Mesa converts int to float for an assignment from 1.20.
     pub(super) fn assign_convert(&self, x: Expr, to: &Type) -> Result<Expr, Type> {
-        let ty = x.ty.clone();
+        // Mesa reports the type after its attempted conversion to the target's base
+        // type (an int converts to a float of the same shape from 1.20).
+        let ty = match (&x.ty, to.scalar()) {
+            (Type::Scalar(Scalar::Int | Scalar::Uint), Some(Scalar::Float))
+                if self.at_least(120) =>
+            {
+                Type::FLOAT
+            }
+            (Type::Vector(Scalar::Int | Scalar::Uint, n), Some(Scalar::Float))
+                if self.at_least(120) =>
+            {
+                Type::Vector(Scalar::Float, *n)
+            }
+            (t, _) => t.clone(),
+        };
         // An unsized array takes the initializer's size.
         if let (Type::Array(e, None), Type::Array(f, Some(_))) = (to, &ty) {
             if e == f {

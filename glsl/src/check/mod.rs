@@ -146,6 +146,17 @@ impl<'a> Checker<'a> {
         )
     }
 
+    /// Unless the version is at least `min`, reports Mesa's "WHAT in GLSL 1.10
+    /// (REQUIRED required)" and returns false.
+    fn require(&mut self, min: u16, pos: Pos, what: &str, required: &str) -> bool {
+        if self.at_least(min) {
+            return true;
+        }
+        let vt = self.version_text();
+        self.error(pos, format!("{what} in {vt} ({required} required)"));
+        false
+    }
+
     fn push_scope(&mut self) {
         self.scopes.push(HashMap::new());
     }

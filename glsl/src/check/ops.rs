@@ -113,14 +113,12 @@ impl Checker<'_> {
                 return self.arithmetic(op, a, b, pos);
             }
             BinOp::Mod => {
-                if !self.at_least(130) {
-                    let vt = self.version_text();
-                    self.error(
-                        pos,
-                        format!(
-                            "operator '%' is reserved in {vt} (GLSL 1.30 or GLSL ES 3.00 required)"
-                        ),
-                    );
+                if !self.require(
+                    130,
+                    pos,
+                    "operator '%' is reserved",
+                    "GLSL 1.30 or GLSL ES 3.00",
+                ) {
                     return None;
                 }
                 if !integer(&a.ty) {
@@ -134,9 +132,12 @@ impl Checker<'_> {
                 return self.arithmetic(op, a, b, pos);
             }
             BinOp::BitAnd | BinOp::BitOr | BinOp::BitXor | BinOp::Shl | BinOp::Shr => {
-                if !self.at_least(130) {
-                    let vt = self.version_text();
-                    self.error(pos, format!("bit-wise operations are forbidden in {vt} (GLSL 1.30 or GLSL ES 3.00 required)"));
+                if !self.require(
+                    130,
+                    pos,
+                    "bit-wise operations are forbidden",
+                    "GLSL 1.30 or GLSL ES 3.00",
+                ) {
                     return None;
                 }
                 let t = text(op);
@@ -179,7 +180,7 @@ impl Checker<'_> {
                     if a.ty.scalar() != b.ty.scalar() {
                         self.error(
                             pos,
-                            format!("operands of `{t}' must have the same base type"),
+                            format!("could not implicitly convert operands to `{t}` operator"),
                         );
                         return None;
                     }
@@ -294,7 +295,13 @@ impl Checker<'_> {
             (Type::Scalar(_), t) | (t, Type::Scalar(_)) => t.clone(),
             (Type::Vector(_, n), Type::Vector(_, m)) => {
                 if n != m {
-                    self.error(pos, "vector size mismatch for arithmetic operator");
+                    // Mesa's modulus_result_type has no message of its own for this.
+                    let text = if op == BinOp::Mod {
+                        "type mismatch"
+                    } else {
+                        "vector size mismatch for arithmetic operator"
+                    };
+                    self.error(pos, text);
                     return None;
                 }
                 a.ty.clone()

@@ -136,3 +136,21 @@ pub fn agrees(ours: &ErrorLine, theirs: &ErrorLine) -> bool {
             ours.2 == theirs.2.trim_end()
         }
 }
+
+/// A tiny xorshift generator (generated cases must not change from run to run).
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// The next number.
+    pub fn next(&mut self) -> usize {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as usize
+    }
+
+    /// A random element of `v`.
+    pub fn pick<'a, T>(&mut self, v: &'a [T]) -> &'a T {
+        &v[self.next() % v.len()]
+    }
+}
