@@ -147,7 +147,7 @@ impl Checker<'_> {
             if !self.require(
                 120,
                 pos,
-                "cannot construct `{ty}' from a matrix",
+                &format!("cannot construct `{ty}' from a matrix"),
                 "GLSL 1.20 or GLSL ES 1.00",
             ) {
                 return None;
