@@ -11,6 +11,7 @@ mod mesa;
 
 use common::{mesa_first_error, our_first_error, Rng};
 use mesa::{run, Context, Job};
+use proptest::prelude::*;
 use softgl_glsl::{compile_with_log, Stage};
 
 /// The generator's types: base (`f` float, `i` int, `u` uint, `b` bool, `m` matrix)
@@ -297,4 +298,101 @@ fn random_expressions_and_mutations_agree_with_mesa() {
         "acceptance agrees on {agree} of {}",
         mutants.len()
     );
+}
+
+/// Atoms and operators of the random expression trees of the property below: names
+/// of every type, literals, and constructors.
+const ATOMS: &[&str] = &[
+    "u_f1",
+    "u_f3",
+    "u_i1",
+    "u_i2",
+    "u_b1",
+    "u_m3",
+    "u_u1",
+    "1",
+    "1.0",
+    "true",
+    "1u",
+    "-3",
+    "vec2(1.0)",
+    "ivec3(2)",
+    "mat2(1.0)",
+    "float[2](1.0, 2.0)",
+    "u_f3.xy",
+    "u_m3[1]",
+    "nope",
+];
+const BINOPS: &[&str] = &[
+    "+", "-", "*", "/", "%", "==", "!=", "<", ">=", "&&", "||", "^^", "&", "|", "^", "<<", ">>",
+    ",", "=", "+=", "*=",
+];
+
+/// An expression from a flat list of choices: each step wraps the expression so far.
+fn soup(steps: &[(u8, usize)]) -> String {
+    let mut e = ATOMS[0].to_string();
+    for &(kind, k) in steps {
+        let a = ATOMS[k % ATOMS.len()];
+        e = match kind % 8 {
+            0 => format!("({e} {} {a})", BINOPS[k % BINOPS.len()]),
+            1 => format!("({a} {} {e})", BINOPS[k % BINOPS.len()]),
+            2 => format!("-({e})"),
+            3 => format!(
+                "({e}).{}",
+                ["x", "xy", "zzz", "length()", "rgba", "s"][k % 6]
+            ),
+            4 => format!("({e})[{}]", k % 4),
+            5 => format!("(u_b1 ? {e} : {a})"),
+            6 => format!(
+                "{}({e})",
+                ["vec4", "float", "max", "sin", "mat3", "int", "S", "f"][k % 8]
+            ),
+            _ => format!(
+                "{}({e}, {a})",
+                ["vec2", "dot", "max", "mat2", "f", "S"][k % 6]
+            ),
+        };
+    }
+    e
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("GLSL_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(2000),
+        ..ProptestConfig::default()
+    })]
+
+    /// Random operator trees over mixed types: the checker answers (accepts or gives an
+    /// error), never panics.
+    #[test]
+    fn random_expression_trees_never_panic(
+        version in prop::sample::select(vec![110u32, 120, 130, 150, 330]),
+        steps in proptest::collection::vec((any::<u8>(), any::<usize>()), 0..40),
+    ) {
+        let src = format!(
+            "#version {version}\nuniform float u_f1; uniform vec3 u_f3; uniform int u_i1;\n\
+             uniform ivec2 u_i2; uniform bool u_b1; uniform mat3 u_m3;\n\
+             struct S {{ float a; }};\nfloat f(float x) {{ return x; }}\n\
+             void main() {{\n  float t = 0.0;\n  t = {};\n}}\n",
+            soup(&steps)
+        );
+        let (p, log) = compile_with_log(&[&src], Stage::Fragment);
+        prop_assert!(p.is_some() != log.has_errors());
+    }
+}
+
+#[test]
+fn long_operator_chains_are_bounded() {
+    // The parser builds `a + a + ... + a` with a loop: a left-nested tree as deep as
+    // the chain is long, which the checker must refuse rather than overflow its stack.
+    for n in [10, 1000, 100_000] {
+        let chain = vec!["1.0"; n].join(" + ");
+        let src = format!("#version 120\nvoid main() {{ gl_FragColor = vec4({chain}); }}\n");
+        let (p, log) = compile_with_log(&[&src], Stage::Fragment);
+        if n <= 1000 {
+            assert!(p.is_some(), "{n}: {log}");
+        } else {
+            assert!(p.is_none());
+        }
+    }
 }

@@ -5,7 +5,7 @@
 mod common;
 
 use proptest::prelude::*;
-use softgl_glsl::{parse_with_log, Stage};
+use softgl_glsl::{compile_with_log, parse_with_log, Stage};
 
 const VOCAB: &[&str] = &[
     "#version 330\n",
@@ -137,6 +137,11 @@ fn parse_any(src: &str) {
         let (tree, log) = parse_with_log(&[src], stage);
         assert!(tree.is_some() != log.has_errors() || tree.is_none());
         let _ = log.to_string();
+        // The type checker too, where the parse succeeds.
+        if tree.is_some() {
+            let (p, log) = compile_with_log(&[src], stage);
+            assert!(p.is_some() != log.has_errors());
+        }
     }
 }
 

@@ -453,3 +453,56 @@ pub enum ExprKind {
     /// `a.name(args)` (`length()` of arrays).
     Method(Box<Expr>, String, Vec<Expr>),
 }
+
+/// A leaf put in place of a child being dropped.
+fn leaf() -> Expr {
+    Expr {
+        kind: ExprKind::Bool(false),
+        pos: Pos::default(),
+    }
+}
+
+/// Moves the children of `k` to `out`, leaving leaves in their place.
+fn take_children(k: &mut ExprKind, out: &mut Vec<Expr>) {
+    let mut take = |b: &mut Box<Expr>| out.push(std::mem::replace(&mut **b, leaf()));
+    match k {
+        ExprKind::Unary(_, a) | ExprKind::Field(a, _) => take(a),
+        ExprKind::Binary(_, a, b)
+        | ExprKind::Assign(_, a, b)
+        | ExprKind::Comma(a, b)
+        | ExprKind::Index(a, b) => {
+            take(a);
+            take(b);
+        }
+        ExprKind::Ternary(a, b, c) => {
+            take(a);
+            take(b);
+            take(c);
+        }
+        ExprKind::Method(a, _, args) => {
+            take(a);
+            out.append(args);
+        }
+        ExprKind::Call(callee, args) => {
+            if let Callee::Expr(a) = callee {
+                take(a);
+            }
+            out.append(args);
+        }
+        ExprKind::InitList(args) => out.append(args),
+        _ => {}
+    }
+}
+
+impl Drop for Expr {
+    /// Drops the tree below iteratively: the parser builds an operator chain
+    /// (`1.0 + 1.0 + ...`) with a loop, into a tree as deep as the chain is long, which
+    /// the derived recursive drop would follow until the stack overflows.
+    fn drop(&mut self) {
+        let mut stack = Vec::new();
+        take_children(&mut self.kind, &mut stack);
+        while let Some(mut e) = stack.pop() {
+            take_children(&mut e.kind, &mut stack);
+        }
+    }
+}

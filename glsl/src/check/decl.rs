@@ -220,7 +220,7 @@ impl Checker<'_> {
             let Some(ty) = self.with_dims(base.clone(), &d.array, d.pos) else {
                 return;
             };
-            if !self.one_var(&q, ty, d, pos, out) {
+            if !self.one_var(&q, ty, (&d.name, d.pos, d.init.as_ref()), pos, out) {
                 return;
             }
         }
@@ -249,17 +249,19 @@ impl Checker<'_> {
         }
     }
 
-    /// Checks and declares one variable; false after an error.
-    fn one_var(
+    /// Checks and declares one variable (name, its position, its initializer); false
+    /// after an error.
+    pub(super) fn one_var(
         &mut self,
         q: &Quals,
         ty: Type,
-        d: &Declarator,
+        d: (&str, Pos, Option<&ast::Expr>),
         pos: Pos,
         out: &mut Vec<hir::Stmt>,
     ) -> bool {
         use ast::Storage as S;
-        let name = &d.name;
+        let (name, dpos, dinit) = d;
+        let name = &name.to_string();
         let global = self.global_scope();
         let stage = self.stage;
         let vt = self.version_text();
@@ -407,11 +409,11 @@ impl Checker<'_> {
             match sym {
                 Symbol::Var(v) if global && self.vars[v].ty != ty => {
                     self.error(
-                        d.pos,
+                        dpos,
                         format!("redeclaration of `{name}' has incorrect type"),
                     );
                 }
-                Symbol::Var(_) => self.error(d.pos, format!("`{name}' redeclared")),
+                Symbol::Var(_) => self.error(dpos, format!("`{name}' redeclared")),
                 _ => self.error(
                     pos,
                     format!("name `{name}' already taken in the current scope"),
@@ -430,10 +432,10 @@ impl Checker<'_> {
             value: None,
             block: None,
             read_only: matches!(storage, Storage::Const | Storage::Uniform | Storage::In),
-            pos: d.pos,
+            pos: dpos,
         };
         let mut init = None;
-        if let Some(e) = &d.init {
+        if let Some(e) = dinit {
             let ipos = e.pos;
             match storage {
                 Storage::Uniform if !self.at_least(120) => {

@@ -49,17 +49,12 @@ impl Checker<'_> {
                 init,
                 pos,
             } => {
-                let d = ast::Decl::Vars {
-                    ty: ty.clone(),
-                    vars: vec![ast::Declarator {
-                        name: name.clone(),
-                        array: Vec::new(),
-                        init: Some(init.clone()),
-                        pos: *pos,
-                    }],
-                };
+                let q = self.quals(&ty.qualifiers);
+                let t = self.resolve_type(&ty.spec, &[])?;
                 let before = out.len();
-                self.decl(&d, out);
+                if !self.one_var(&q, t, (name, *pos, Some(init)), ty.spec.pos, out) {
+                    return None;
+                }
                 let id = match out.get(before) {
                     Some(Stmt::Decl(id, _)) => *id,
                     _ => return None,
