@@ -17,13 +17,23 @@ use std::sync::Arc;
 impl Checker<'_> {
     /// An interface block: its members become globals (or members of the instance).
     pub(super) fn block(&mut self, b: &ast::Block, out: &mut Vec<hir::Stmt>) {
-        let q = self.quals(&b.qualifiers);
+        let Some(q) = self.quals(&b.qualifiers, b.pos) else {
+            return;
+        };
         let (kind, storage) = match q.storage {
             Some(ast::Storage::Uniform) => ("uniform", Storage::Uniform),
             Some(ast::Storage::In) => ("in", Storage::In),
             Some(ast::Storage::Out) => ("out", Storage::Out),
             _ => ("uniform", Storage::Uniform),
         };
+        if let Some(l) = q.layout.iter().find(|l| {
+            storage != Storage::Uniform
+                && ["std140", "shared", "packed", "row_major", "column_major"].contains(&l.as_str())
+        }) {
+            let text = format!("invalid qualifier for block '{}': {l}", b.name);
+            self.error(Pos::new(0, 0), text);
+            return;
+        }
         if storage == Storage::Uniform {
             if !self.at_least(140) && !self.ext("GL_ARB_uniform_buffer_object") {
                 self.error(b.pos, "#version 140 / GL_ARB_uniform_buffer_object required for defining uniform blocks");
@@ -66,6 +76,14 @@ impl Checker<'_> {
         let mut members = Vec::new();
         for m in &b.members {
             for d in &m.names {
+                if d.name.starts_with("gl_") {
+                    let n = &d.name;
+                    self.error(
+                        d.pos,
+                        format!("identifier `{n}' uses reserved `gl_' prefix"),
+                    );
+                    return;
+                }
                 let Some(ty) = self.resolve_type(&m.ty.spec, &d.array) else {
                     return;
                 };

@@ -12,6 +12,7 @@
 
 use super::{Checker, Symbol};
 use crate::ast::{self, Decl, Declarator, FullType, Qualifier, TypeName, TypeSpec};
+use crate::builtins;
 use crate::diag::Pos;
 use crate::hir::{self, Storage, Var, VarId};
 use crate::types::{Member, Scalar, Struct, Type};
@@ -26,6 +27,8 @@ pub(super) struct Quals {
     pub invariant: bool,
     pub location: Option<i32>,
     pub layout: Vec<String>,
+    /// `const in` (a parameter).
+    pub const_in: bool,
 }
 
 /// Mesa's message for an array of arrays.
@@ -52,17 +55,36 @@ const REDECLARABLE: &[&str] = &[
 
 impl Checker<'_> {
     /// Gathers the qualifiers (their order was checked by the parser's grammar).
-    pub(super) fn quals(&mut self, q: &[Qualifier]) -> Quals {
+    /// Reports a storage qualifier written twice and a `layout` value that is not a
+    /// literal (constant expressions there are GLSL 4.40), at `pos`.
+    pub(super) fn quals(&mut self, q: &[Qualifier], pos: Pos) -> Option<Quals> {
         let mut out = Quals::default();
         for q in q {
             match q {
                 Qualifier::Storage(ast::Storage::Centroid) => out.centroid = true,
+                // `const in` (a parameter).
+                Qualifier::Storage(ast::Storage::In)
+                    if out.storage == Some(ast::Storage::Const) =>
+                {
+                    out.storage = Some(ast::Storage::In);
+                    out.const_in = true;
+                }
+                Qualifier::Storage(_) if out.storage.is_some() => {
+                    self.error(pos, "duplicate storage qualifier");
+                    return None;
+                }
                 Qualifier::Storage(s) => out.storage = Some(*s),
                 Qualifier::Interp(i) => out.interp = Some(*i),
                 Qualifier::Invariant => out.invariant = true,
                 Qualifier::Precision(_) => {}
                 Qualifier::Layout(ids) => {
                     for id in ids {
+                        if let Some(e) = &id.value {
+                            if !matches!(e.kind, ast::ExprKind::Int(_) | ast::ExprKind::Uint(_)) {
+                                self.error(id.pos, "compile-time constant expressions require GLSL 4.40 or ARB_enhanced_layouts");
+                                return None;
+                            }
+                        }
                         if id.name == "location" {
                             let v = id.value.as_ref().and_then(|e| self.expr(e));
                             out.location = v
@@ -74,7 +96,7 @@ impl Checker<'_> {
                 }
             }
         }
-        out
+        Some(out)
     }
 
     /// The semantic type of a type specifier, with extra dimensions `dims` after the
@@ -192,7 +214,22 @@ impl Checker<'_> {
                 }
                 self.prototype(p, false);
             }
-            Decl::Precision { .. } | Decl::Default { .. } => {}
+            Decl::Precision { ty, pos, .. } => {
+                let ok = match &ty.name {
+                    TypeName::Named(n) => matches!(
+                        Type::named(n),
+                        Some(Type::Scalar(Scalar::Float | Scalar::Int) | Type::Sampler(_))
+                    ),
+                    TypeName::Struct(_) => false,
+                };
+                if !ok || !ty.array.is_empty() {
+                    self.error(
+                        *pos,
+                        "default precision statements apply only to float, int, and opaque types",
+                    );
+                }
+            }
+            Decl::Default { .. } => {}
             Decl::Block(b) => self.block(b, out),
             Decl::Invariant { names } => {
                 for (n, pos) in names {
@@ -206,8 +243,10 @@ impl Checker<'_> {
     }
 
     fn var_decl(&mut self, fty: &FullType, vars: &[Declarator], out: &mut Vec<hir::Stmt>) {
-        let q = self.quals(&fty.qualifiers);
         let pos = fty.spec.pos;
+        let Some(q) = self.quals(&fty.qualifiers, pos) else {
+            return;
+        };
         if vars.is_empty() {
             // `struct S {...};` or a type alone.
             let _ = self.resolve_type(&fty.spec, &[]);
@@ -269,6 +308,23 @@ impl Checker<'_> {
         if name.starts_with("gl_") {
             if global && REDECLARABLE.contains(&name.as_str()) && self.builtin_var(name).is_some() {
                 let id = self.builtin_var(name).unwrap_or_default();
+                let fits = match self.vars[id].storage {
+                    Storage::Builtin(builtins::variables::Kind::Output) => {
+                        matches!(q.storage, Some(ast::Storage::Out | ast::Storage::Varying))
+                    }
+                    Storage::Builtin(builtins::variables::Kind::Input) => matches!(
+                        q.storage,
+                        Some(ast::Storage::In | ast::Storage::Varying | ast::Storage::Attribute)
+                    ),
+                    _ => false,
+                };
+                if !fits {
+                    self.error(
+                        dpos,
+                        format!("redeclaration cannot change qualification of `{name}'"),
+                    );
+                    return false;
+                }
                 if let (Type::Array(_, _), Type::Array(..)) = (&self.vars[id].ty, &ty) {
                     self.vars[id].ty = ty;
                 }
@@ -388,6 +444,33 @@ impl Checker<'_> {
         }
         if matches!(base, Type::Sampler(_)) && storage != Storage::Uniform {
             self.error(pos, "image/sampler variables may only be declared as function parameters or uniform-qualified global variables");
+            return false;
+        }
+        if q.location.is_some() && storage == Storage::Uniform {
+            self.error(pos, "uniform explicit location requires GL_ARB_explicit_uniform_location and either GL_ARB_explicit_attrib_location or GLSL 3.30.");
+            return false;
+        }
+        let varying_side = (storage == Storage::Out && stage == crate::types::Stage::Vertex)
+            || (storage == Storage::In && stage == crate::types::Stage::Fragment);
+        if q.location.is_some() && varying_side {
+            let what = if storage == Storage::Out {
+                "output"
+            } else {
+                "input"
+            };
+            self.error(pos, format!("shader {what} explicit location requires GL_ARB_separate_shader_objects extension or GLSL 4.20"));
+            return false;
+        }
+        if let Some(i) = q
+            .interp
+            .filter(|_| !matches!(storage, Storage::In | Storage::Out))
+        {
+            let w = match i {
+                ast::Interp::Flat => "flat",
+                ast::Interp::Smooth => "smooth",
+                ast::Interp::Noperspective => "noperspective",
+            };
+            self.error(pos, format!("interpolation qualifier `{w}' can only be applied to shader inputs or outputs."));
             return false;
         }
         if q.location.is_some()

@@ -428,6 +428,9 @@ impl Checker<'_> {
             self.error(l.pos, "non-lvalue in assignment");
             return false;
         }
+        if let Some(v) = root_var(l) {
+            self.note_write(v);
+        }
         true
     }
 

@@ -14,9 +14,29 @@ impl Checker<'_> {
     /// error. `defining`: the prototype of a definition.
     pub(super) fn prototype(&mut self, p: &ast::Prototype, defining: bool) -> Option<usize> {
         let ret = self.resolve_type(&p.ret.spec, &[])?;
+        if p.name.starts_with("gl_") {
+            let n = &p.name;
+            self.error(
+                p.pos,
+                format!("identifier `{n}' uses reserved `gl_' prefix"),
+            );
+            return None;
+        }
         let mut params = Vec::new();
         for prm in &p.params {
-            let q = self.quals(&prm.ty.qualifiers);
+            let q = self.quals(&prm.ty.qualifiers, prm.pos)?;
+            // Mesa checks the names of a definition's parameters, not a prototype's.
+            if let Some(n) = prm
+                .name
+                .as_ref()
+                .filter(|n| defining && n.starts_with("gl_"))
+            {
+                self.error(
+                    prm.pos,
+                    format!("identifier `{n}' uses reserved `gl_' prefix"),
+                );
+                return None;
+            }
             let ty = self.resolve_type(&prm.ty.spec, &prm.array)?;
             if ty == Type::Void {
                 if prm.name.is_some() {
@@ -30,7 +50,7 @@ impl Checker<'_> {
                 Some(ast::Storage::Inout) => ParamDir::Inout,
                 _ => ParamDir::In,
             };
-            let constant = q.storage == Some(ast::Storage::Const);
+            let constant = q.storage == Some(ast::Storage::Const) || q.const_in;
             params.push((prm.name.clone(), ty, dir, constant, prm.pos));
         }
         if p.name == "main" {
@@ -136,9 +156,18 @@ impl Checker<'_> {
             }
         }
         // The body shares the parameters' scope (redeclaring a parameter is an error).
+        self.returned = false;
         let body = self.stmts(&f.body);
         self.pop_scope();
         self.current = None;
         self.functions[id].body = Some(body);
+        let ret = &self.functions[id].ret;
+        if *ret != Type::Void && !self.returned && !self.log.has_errors() {
+            let text = format!(
+                "function `{}' has non-void return type {ret}, but no return statement",
+                f.proto.name
+            );
+            self.error(f.proto.ret.spec.pos, text);
+        }
     }
 }

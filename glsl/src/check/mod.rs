@@ -78,6 +78,12 @@ pub struct Checker<'a> {
     calls: Vec<(usize, usize)>,
     ctx: Context,
     depth: u32,
+    /// Whether the function being checked has a `return` with a value.
+    returned: bool,
+    /// The first of `gl_FragColor` / `gl_FragData` a fragment shader writes.
+    wrote_builtin_color: Option<String>,
+    /// The first user output variable a fragment shader writes.
+    wrote_user_out: Option<String>,
 }
 
 /// Extension names the checker knows (for `exts`).
@@ -119,6 +125,9 @@ impl<'a> Checker<'a> {
             calls: Vec::new(),
             ctx: Context::default(),
             depth: 0,
+            returned: false,
+            wrote_builtin_color: None,
+            wrote_user_out: None,
         }
     }
 
@@ -260,6 +269,33 @@ impl<'a> Checker<'a> {
         self.depth -= 1;
     }
 
+    /// Mesa's end-of-compile check that a fragment shader writes either the built-in
+    /// colour outputs or its own, not both (at 0:0(0)).
+    fn check_outputs(&mut self) {
+        if let (Some(b), Some(u)) = (&self.wrote_builtin_color, &self.wrote_user_out) {
+            let text = format!("fragment shader writes to both `{b}' and `{u}'");
+            self.error(Pos::new(0, 0), text);
+        }
+    }
+
+    /// Notes a write to variable `v` for [`Checker::check_outputs`].
+    fn note_write(&mut self, v: VarId) {
+        if self.stage != Stage::Fragment {
+            return;
+        }
+        let var = &self.vars[v];
+        let slot = match var.storage {
+            Storage::Builtin(_) if var.name == "gl_FragColor" || var.name == "gl_FragData" => {
+                &mut self.wrote_builtin_color
+            }
+            Storage::Out => &mut self.wrote_user_out,
+            _ => return,
+        };
+        if slot.is_none() {
+            *slot = Some(var.name.clone());
+        }
+    }
+
     /// Reports static recursion among the defined functions as Mesa does at the end of
     /// compiling: `function `float g(float)' has static recursion` at 0:0(0).
     fn check_recursion(&mut self) {
@@ -314,6 +350,9 @@ pub fn check(shader: &Shader, log: &mut Log) -> Option<Program> {
             crate::ast::External::Decl(d) => c.global_decl(d, &mut globals),
             crate::ast::External::Function(f) => c.function_def(f),
         }
+    }
+    if !c.log.has_errors() {
+        c.check_outputs();
     }
     if !c.log.has_errors() {
         c.check_recursion();

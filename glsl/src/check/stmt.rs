@@ -49,7 +49,7 @@ impl Checker<'_> {
                 init,
                 pos,
             } => {
-                let q = self.quals(&ty.qualifiers);
+                let q = self.quals(&ty.qualifiers, *pos)?;
                 let t = self.resolve_type(&ty.spec, &[])?;
                 let before = out.len();
                 if !self.one_var(&q, t, (name, *pos, Some(init)), ty.spec.pos, out) {
@@ -212,6 +212,7 @@ impl Checker<'_> {
                 let Some(x) = self.expr(e) else {
                     return;
                 };
+                self.returned = true;
                 if x.ty != ret {
                     self.error(
                         pos,

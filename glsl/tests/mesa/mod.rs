@@ -107,3 +107,29 @@ pub fn run(ctx: Context, jobs: &[Job<'_>]) -> Vec<Outcome> {
     assert!(child.wait().unwrap().success(), "mesa_ref failed");
     outcomes
 }
+
+/// Mesa's verdict on each case (name, stage, source): accepted, and the info log. A
+/// `#version 150` or `330` shader without `compatibility` goes to a 3.3 core context,
+/// the others to a compatibility one.
+pub fn verdicts(cases: &[(String, softgl_glsl::Stage, String)]) -> Vec<(bool, String)> {
+    let core = |s: &str| {
+        (s.contains("#version 150") || s.contains("#version 330")) && !s.contains("compatibility")
+    };
+    let mut out = vec![(false, String::new()); cases.len()];
+    for ctx in [Context::Compat, Context::Core33] {
+        let idx: Vec<usize> = (0..cases.len())
+            .filter(|i| core(&cases[*i].2) == (ctx == Context::Core33))
+            .collect();
+        let jobs: Vec<Job> = idx
+            .iter()
+            .map(|i| match cases[*i].1 {
+                softgl_glsl::Stage::Vertex => Job::Vertex(&cases[*i].2),
+                _ => Job::Fragment(&cases[*i].2),
+            })
+            .collect();
+        for (i, o) in idx.iter().zip(run(ctx, &jobs)) {
+            out[*i] = (o.ok, o.log);
+        }
+    }
+    out
+}
