@@ -58,6 +58,15 @@ impl Checker<'_> {
             );
             return;
         }
+        // Mesa reports this on the instance's line, which the syntax tree does not keep.
+        if b.name.starts_with("gl_") && b.name != "gl_PerVertex" {
+            let n = &b.name;
+            self.error(
+                b.pos,
+                format!("identifier `{n}' uses reserved `gl_' prefix"),
+            );
+            return;
+        }
         if self
             .block_names
             .iter()
