@@ -40,10 +40,7 @@ impl Checker<'_> {
                 return;
             }
         } else if !self.at_least(150) {
-            self.error(
-                b.pos,
-                format!("{} interface blocks require GLSL 1.50", kind),
-            );
+            self.error(b.pos, "#version 150 required for using interface blocks");
             return;
         } else if storage == Storage::In && self.stage == crate::types::Stage::Vertex {
             self.error(

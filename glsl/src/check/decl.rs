@@ -480,7 +480,7 @@ impl Checker<'_> {
             let what = if storage == Storage::Out {
                 "shader output"
             } else {
-                "vertex shader input"
+                "shader input"
             };
             if matches!(storage, Storage::In | Storage::Out) {
                 self.error(pos, format!("{what} explicit location requires GL_ARB_explicit_attrib_location extension or GLSL 3.30"));

@@ -463,25 +463,45 @@ impl Checker<'_> {
             None => Vec::new(),
         };
         // A user function: exact match first, then through conversions.
-        let user_match = |c: &Checker, exact: bool| {
-            users.iter().copied().find(|f| {
-                let ps = &c.functions[*f].params;
-                ps.len() == types.len()
-                    && ps.iter().zip(&types).all(|(p, t)| {
-                        let pt = &c.vars[*p].ty;
-                        if exact {
-                            pt == t
-                        } else {
-                            match c.vars[*p].storage {
-                                Storage::Param(ParamDir::Out) => pt.converts_to(t, c.version),
-                                Storage::Param(ParamDir::Inout) => pt == t,
-                                _ => t.converts_to(pt, c.version),
+        let user_match = |c: &Checker, exact: bool| -> Vec<usize> {
+            users
+                .iter()
+                .copied()
+                .filter(|f| {
+                    let ps = &c.functions[*f].params;
+                    ps.len() == types.len()
+                        && ps.iter().zip(&types).all(|(p, t)| {
+                            let pt = &c.vars[*p].ty;
+                            if exact {
+                                pt == t
+                            } else {
+                                match c.vars[*p].storage {
+                                    Storage::Param(ParamDir::Out) => pt.converts_to(t, c.version),
+                                    Storage::Param(ParamDir::Inout) => pt == t,
+                                    _ => t.converts_to(pt, c.version),
+                                }
                             }
-                        }
-                    })
-            })
+                        })
+                })
+                .collect()
         };
-        let found_user = user_match(self, true).or_else(|| user_match(self, false));
+        // Several through conversions: the one at least as exact as every other in
+        // each parameter and more in one (GLSL 4.00, as Mesa does); none is an error.
+        let found_user = user_match(self, true).first().copied().or_else(|| {
+            let fits = user_match(self, false);
+            let exact = |f: usize, i: usize| self.vars[self.functions[f].params[i]].ty == types[i];
+            let better = |a: usize, b: usize| {
+                (0..types.len()).all(|i| exact(a, i) || !exact(b, i))
+                    && (0..types.len()).any(|i| exact(a, i) && !exact(b, i))
+            };
+            match fits.as_slice() {
+                [f] => Some(*f),
+                _ => fits
+                    .iter()
+                    .copied()
+                    .find(|&a| fits.iter().all(|&b| a == b || better(a, b))),
+            }
+        });
         let hide_builtins = !users.is_empty() && self.at_least(120);
         let builtin = if hide_builtins || found_user.is_some() {
             None
@@ -504,6 +524,17 @@ impl Checker<'_> {
                 .join(", ")
         );
         if let Some(f) = builtin {
+            if let Some(a) = f
+                .params
+                .iter()
+                .zip(&args)
+                .find_map(|(p, a)| (p.constant && a.value.is_none()).then_some(a))
+            {
+                // Mesa names the parameter; the tables' constant parameters are the
+                // texel offsets.
+                self.error(a.pos, "parameter `in offset' must be a constant expression");
+                return None;
+            }
             let args = self.bind_args(
                 args,
                 f.params

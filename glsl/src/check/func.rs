@@ -161,6 +161,7 @@ impl Checker<'_> {
         self.pop_scope();
         self.current = None;
         self.functions[id].body = Some(body);
+        self.defined.push(id);
         let ret = &self.functions[id].ret;
         if *ret != Type::Void && !self.returned && !self.log.has_errors() {
             let text = format!(

@@ -78,6 +78,8 @@ pub struct Checker<'a> {
     calls: Vec<(usize, usize)>,
     ctx: Context,
     depth: u32,
+    /// The functions in the order they were defined.
+    defined: Vec<usize>,
     /// Whether the function being checked has a `return` with a value.
     returned: bool,
     /// The first of `gl_FragColor` / `gl_FragData` a fragment shader writes.
@@ -126,6 +128,7 @@ impl<'a> Checker<'a> {
             ctx: Context::default(),
             depth: 0,
             returned: false,
+            defined: Vec::new(),
             wrote_builtin_color: None,
             wrote_user_out: None,
         }
@@ -306,8 +309,9 @@ impl<'a> Checker<'a> {
                 adj[a].push(b);
             }
         }
-        // A function is recursive when it reaches itself: iterative search from each.
-        for f in 0..n {
+        // A function is recursive when it reaches itself: iterative search from each,
+        // in the order of definition (the first Mesa names).
+        for f in self.defined.clone() {
             let mut seen = vec![false; n];
             let mut stack = adj[f].clone();
             let mut hit = false;
