@@ -22,6 +22,14 @@
 //! [`parse()`] runs stages 1 and 2: [`pp`] (with [`lex`]) and [`parse`](mod@parse) give
 //! an [`ast::Shader`] or a [`Log`] whose first error has Mesa's line and wording
 //! (`tests/errors.rs`, `tests/mutations.rs` measure it against Mesa).
+//!
+//! [`compile()`] runs all three: [`check`] turns the syntax tree into the typed tree of
+//! [`hir`] (every expression typed, implicit conversions explicit, calls resolved to a
+//! built-in signature or a user function, constants folded, l-values marked), or a log
+//! whose first error is on Mesa's line, in Mesa's words for nearly all: `tests/check.rs`
+//! (330 hand-written cases over 1.10 to 3.30: acceptance and line agree on all),
+//! `tests/check_random.rs` (random well-typed expressions, their type-breaking mutants
+//! and type mutations of the valid corpus, all compiled by Mesa too) measure it.
 
 pub mod ast;
 pub mod builtins;
