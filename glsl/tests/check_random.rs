@@ -458,7 +458,11 @@ fn mutated_corpus_types_agree_with_mesa() {
             both += 1;
             let line = |p: &str| p.split('(').next().unwrap_or("").to_string();
             same_line += usize::from(line(&o.0) == line(&t.0));
-            same_text += usize::from(o.2 == t.2.trim_end() || common::agrees(o, t));
+            let text = o.2 == t.2.trim_end() || common::agrees(o, t);
+            same_text += usize::from(text);
+            if !text && std::env::var("GLSL_CHECK_SHOW").is_ok() {
+                println!("{name}: ours {o:?}, Mesa {t:?}");
+            }
         }
     }
     println!(

@@ -461,15 +461,40 @@ impl Checker<'_> {
             self.error(pos, format!("shader {what} explicit location requires GL_ARB_separate_shader_objects extension or GLSL 4.20"));
             return false;
         }
+        if q.location.is_some() && storage == Storage::Const {
+            let st = stage.name();
+            self.error(
+                pos,
+                format!("global constant cannot be given an explicit location in {st} shader"),
+            );
+            return false;
+        }
+        if let Some(i) = q
+            .interp
+            .filter(|_| storage == Storage::In && stage == crate::types::Stage::Vertex)
+        {
+            let w = interp_name(i);
+            self.error(
+                pos,
+                format!("interpolation qualifier '{w}' cannot be applied to vertex shader inputs"),
+            );
+            return false;
+        }
+        if storage == Storage::Out
+            && stage == crate::types::Stage::Fragment
+            && matches!(base, Type::Matrix { .. } | Type::Struct(_))
+        {
+            self.error(
+                pos,
+                "fragment shader output cannot have struct or matrix type",
+            );
+            return false;
+        }
         if let Some(i) = q
             .interp
             .filter(|_| !matches!(storage, Storage::In | Storage::Out))
         {
-            let w = match i {
-                ast::Interp::Flat => "flat",
-                ast::Interp::Smooth => "smooth",
-                ast::Interp::Noperspective => "noperspective",
-            };
+            let w = interp_name(i);
             self.error(pos, format!("interpolation qualifier `{w}' can only be applied to shader inputs or outputs."));
             return false;
         }
@@ -603,6 +628,15 @@ impl Checker<'_> {
             return None;
         }
         self.expr(e)
+    }
+}
+
+/// The qualifier's keyword.
+fn interp_name(i: ast::Interp) -> &'static str {
+    match i {
+        ast::Interp::Flat => "flat",
+        ast::Interp::Smooth => "smooth",
+        ast::Interp::Noperspective => "noperspective",
     }
 }
 

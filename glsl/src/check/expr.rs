@@ -357,13 +357,21 @@ impl Checker<'_> {
     }
 
     fn assign(&mut self, op: Option<ast::BinOp>, l: Expr, r: Expr, pos: Pos) -> Option<Expr> {
-        if !self.assignable(&l, pos) {
+        // Mesa types a compound assignment's operation before it checks the target,
+        // and names the operator with its `=` (`LHS of `^=' must be an integer`).
+        if op.is_none() && !self.assignable(&l, pos) {
             return None;
         }
         let r = match op {
             None => r,
             Some(op) => {
-                let v = self.binary(op, l.clone(), r, pos)?;
+                self.compound = true;
+                let v = self.binary(op, l.clone(), r, pos);
+                self.compound = false;
+                let v = v?;
+                if !self.assignable(&l, pos) {
+                    return None;
+                }
                 if v.ty != l.ty {
                     self.error(
                         pos,

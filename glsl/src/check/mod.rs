@@ -1,4 +1,4 @@
-//! The type checker: a parsed [`Shader`] in, a typed [`Program`](crate::hir::Program)
+//! The type checker: a parsed [`Shader`] in, a typed [`Program`]
 //! out, or the info log of its errors in Mesa's words.
 //!
 //! The rules are the GLSL specifications' (1.10 to 3.30): scoping 4.1 and 6 (one scope
@@ -78,6 +78,8 @@ pub struct Checker<'a> {
     calls: Vec<(usize, usize)>,
     ctx: Context,
     depth: u32,
+    /// Inside the operation of a compound assignment (for the operator's name).
+    compound: bool,
     /// The functions in the order they were defined.
     defined: Vec<usize>,
     /// Whether the function being checked has a `return` with a value.
@@ -128,6 +130,7 @@ impl<'a> Checker<'a> {
             ctx: Context::default(),
             depth: 0,
             returned: false,
+            compound: false,
             defined: Vec::new(),
             wrote_builtin_color: None,
             wrote_user_out: None,

@@ -38,6 +38,11 @@ fn text(op: BinOp) -> &'static str {
 }
 
 impl Checker<'_> {
+    /// The operator's text in messages: with `=` inside a compound assignment.
+    fn op_text(&self, op: BinOp) -> String {
+        format!("{}{}", text(op), if self.compound { "=" } else { "" })
+    }
+
     /// Converts `a` and `b` to one base type (int or uint to float); `None` when they
     /// cannot be.
     fn unify(&self, a: Expr, b: Expr) -> Option<(Expr, Expr)> {
@@ -140,7 +145,7 @@ impl Checker<'_> {
                 ) {
                     return None;
                 }
-                let t = text(op);
+                let t = self.op_text(op);
                 if matches!(op, BinOp::Shl | BinOp::Shr) {
                     if !integer(&a.ty) {
                         self.error(
@@ -198,7 +203,7 @@ impl Checker<'_> {
                 }
             }
             BinOp::And | BinOp::Or | BinOp::Xor => {
-                let t = text(op);
+                let t = self.op_text(op);
                 if a.ty != Type::BOOL {
                     self.error(a.pos, format!("LHS of `{t}' must be scalar boolean"));
                     return None;
@@ -228,7 +233,7 @@ impl Checker<'_> {
                 return Some(self.fold_binary(op, a, b, Type::BOOL, pos));
             }
             BinOp::Eq | BinOp::Ne => {
-                let t = text(op);
+                let t = self.op_text(op);
                 let (a, b) = if a.ty == b.ty {
                     (a, b)
                 } else {
