@@ -358,6 +358,17 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     } else {
         // Flat colours need no divide, but the fog coordinate is still perspective-correct.
         let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
+        // Untextured states the span shader's 8 lanes leave (stencil, the alpha test,
+        // fog, the colour sum, a partial colour mask, sample counting) take the textured
+        // walk's 8-lane shader with no units where it covers them: the same fragments
+        // and arithmetic.
+        #[cfg(target_arch = "x86_64")]
+        if textured::general_ok(plan, fb) {
+            return with_flags!((depth, plan.flat, persp), |D, F, P| {
+                // SAFETY: forwarded from the caller.
+                unsafe { W::textured::<D, F, P>(t, b, plan, units, fb, stats) }
+            });
+        }
         if plan.needs_full_path() || wide {
             with_flags!((depth, plan.flat, persp), |D, F, P| {
                 // SAFETY: forwarded from the caller.
