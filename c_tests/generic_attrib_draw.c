@@ -23,6 +23,20 @@ static void cell(int cx, int cy)
     glScalef(58.0f, 58.0f, 1.0f);
 }
 
+/* one triangle from an attribute-0 array in cell (cx, cy), in its centred half-size
+ * square when `centred` (for signed data in [-1, 1]); integers are normalised */
+static void attr0_triangle(int cx, int cy, int centred, GLint size, GLenum type,
+                           GLsizei stride, const void *p)
+{
+    cell(cx, cy);
+    if (centred) {
+        glTranslatef(0.5f, 0.5f, 0.0f);
+        glScalef(0.5f, 0.5f, 1.0f);
+    }
+    glVertexAttribPointer(0, size, type, type == GL_DOUBLE ? GL_FALSE : GL_TRUE, stride, p);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 int main(int argc, char **argv)
 {
     FILE *out = sgl_open(argc, argv);
@@ -180,36 +194,16 @@ int main(int argc, char **argv)
         static const GLdouble d[] = {0.05, 0.9, 0.5, 0.95, 0.08, 0.02, 0.95, 0.1, 0.2};
         static const GLshort raw[] = {3, 3, 55, 10, 20, 56};
         glColor3f(1.0f, 0.8f, 0.3f);
-        cell(0, 2);
-        glVertexAttribPointer(0, 3, GL_UNSIGNED_BYTE, GL_TRUE, 0, ub);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(1, 2);
-        glTranslatef(0.5f, 0.5f, 0.0f);
-        glScalef(0.5f, 0.5f, 1.0f);
-        glVertexAttribPointer(0, 2, GL_BYTE, GL_TRUE, 4, sb);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(2, 2);
+        attr0_triangle(0, 2, 0, 3, GL_UNSIGNED_BYTE, 0, ub);
+        attr0_triangle(1, 2, 1, 2, GL_BYTE, 4, sb);
         glColor3f(0.4f, 1.0f, 0.7f);
-        glVertexAttribPointer(0, 2, GL_UNSIGNED_SHORT, GL_TRUE, 0, us);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(3, 2);
-        glTranslatef(0.5f, 0.5f, 0.0f);
-        glScalef(0.5f, 0.5f, 1.0f);
-        glVertexAttribPointer(0, 2, GL_SHORT, GL_TRUE, 0, ss);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(0, 3);
+        attr0_triangle(2, 2, 0, 2, GL_UNSIGNED_SHORT, 0, us);
+        attr0_triangle(3, 2, 1, 2, GL_SHORT, 0, ss);
         glColor3f(0.7f, 0.5f, 1.0f);
-        glVertexAttribPointer(0, 2, GL_UNSIGNED_INT, GL_TRUE, 0, ui);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(1, 3);
-        glTranslatef(0.5f, 0.5f, 0.0f);
-        glScalef(0.5f, 0.5f, 1.0f);
-        glVertexAttribPointer(0, 2, GL_INT, GL_TRUE, 0, si);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        cell(2, 3);
+        attr0_triangle(0, 3, 0, 2, GL_UNSIGNED_INT, 0, ui);
+        attr0_triangle(1, 3, 1, 2, GL_INT, 0, si);
         glColor3f(1.0f, 0.4f, 0.4f);
-        glVertexAttribPointer(0, 3, GL_DOUBLE, GL_FALSE, 0, d);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        attr0_triangle(2, 3, 0, 3, GL_DOUBLE, 0, d);
         /* not normalised: integers are coordinates */
         glLoadIdentity();
         glTranslatef(192.0f, 192.0f, 0.0f);
