@@ -95,6 +95,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("queries.rs", Header::Glext),
     ("arrays_ext.rs", Header::Glext),
     ("transform_ext.rs", Header::Glext),
+    ("vertex_attrib.rs", Header::Glext),
     ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];

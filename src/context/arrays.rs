@@ -4,6 +4,9 @@
 
 use super::error::{GlError, GlResult};
 use super::state::MAX_TEXTURE_UNITS;
+
+/// GL_MAX_VERTEX_ATTRIBS: the generic vertex attributes (16, as Mesa).
+pub const MAX_VERTEX_ATTRIBS: usize = 16;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 pub use crate::pipe::{ArrayPointer, DataType};
@@ -91,6 +94,9 @@ pub struct ArrayState {
     pub secondary_color: ArrayPointer,
     /// GL_FOG_COORD_ARRAY.
     pub fog_coord: ArrayPointer,
+    /// The generic attribute arrays (glVertexAttribPointer). Fixed function reads only
+    /// attribute 0, which stands for the vertex array while enabled.
+    pub generic: [ArrayPointer; MAX_VERTEX_ATTRIBS],
     /// GL_ARRAY_BUFFER binding.
     pub array_buffer: u32,
     /// GL_ELEMENT_ARRAY_BUFFER binding.
@@ -110,6 +116,7 @@ impl Default for ArrayState {
             index: ArrayPointer::new(1, DataType::Float),
             secondary_color: ArrayPointer::new(3, DataType::Float),
             fog_coord: ArrayPointer::new(1, DataType::Float),
+            generic: [ArrayPointer::new(4, DataType::Float); MAX_VERTEX_ATTRIBS],
             array_buffer: 0,
             element_buffer: 0,
             buffers: HashMap::new(),
@@ -159,10 +166,22 @@ impl ArrayState {
         }
     }
 
+    /// The array the positions come from: generic attribute 0 while its array is
+    /// enabled (the compatibility profile's aliasing; Mesa's attribute map mode GENERIC0
+    /// wins over GL_VERTEX_ARRAY), else GL_VERTEX_ARRAY. A draw without either enabled
+    /// draws nothing.
+    pub fn position(&self) -> &ArrayPointer {
+        if self.generic[0].enabled {
+            &self.generic[0]
+        } else {
+            &self.vertex
+        }
+    }
+
     /// Every array with its buffer object looked up: what a draw hands the vertex fetch.
     pub fn inputs(&self) -> crate::pipe::VertexArrays<'_> {
         crate::pipe::VertexArrays {
-            vertex: self.input(&self.vertex),
+            vertex: self.input(self.position()),
             color: self.input(&self.color),
             normal: self.input(&self.normal),
             texcoord: std::array::from_fn(|u| self.input(&self.texcoord[u])),
@@ -244,6 +263,7 @@ impl ArrayState {
         ]
         .into_iter()
         .chain(self.texcoord.iter_mut())
+        .chain(self.generic.iter_mut())
     }
 
     /// Every client array (for checks that look at all of them, e.g. mapped buffers).
@@ -258,5 +278,6 @@ impl ArrayState {
         ]
         .into_iter()
         .chain(self.texcoord.iter())
+        .chain(self.generic.iter())
     }
 }

@@ -530,8 +530,9 @@ impl Context {
                     out.push(VertexOp::FogCoord(f[0]));
                 }
             }
-            if a.vertex.enabled {
-                if let Some(p) = fetch_attr(a.input(&a.vertex), i, false, fill) {
+            if a.position().enabled {
+                let pos = a.position();
+                if let Some(p) = fetch_attr(a.input(pos), i, pos.normalized, fill) {
                     out.push(VertexOp::Vertex(p));
                 }
             }
@@ -547,7 +548,7 @@ impl Context {
             Ok(v) => v,
             Err(e) => return fail(self, e),
         };
-        if !self.arrays.vertex.enabled {
+        if !self.arrays.position().enabled {
             // No vertices, but still a primitive (it matters inside glBegin/glEnd).
             self.lists.push_op(VertexOp::Begin(mode));
             self.lists.push_op(VertexOp::End);

@@ -57,7 +57,7 @@ pub(crate) fn draw_arrays(
     }
     check_unmapped(c, false)?;
     c.check_draw_framebuffer()?;
-    if !c.arrays.vertex.enabled || count == 0 {
+    if !c.arrays.position().enabled || count == 0 {
         return Ok(());
     }
     // Elements past u32::MAX do not exist.
@@ -173,7 +173,7 @@ pub(crate) fn draw_elements(
     let ty = index_type(type_)?;
     check_unmapped(c, true)?;
     c.check_draw_framebuffer()?;
-    if !c.arrays.vertex.enabled || count == 0 {
+    if !c.arrays.position().enabled || count == 0 {
         return Ok(());
     }
     // 32-bit indices in a buffer object, from 0 and compact (the usual mesh), are drawn
@@ -248,7 +248,7 @@ pub(crate) fn element_list(
 ) -> GlResult<Elements> {
     let count = non_negative(count)?;
     let ty = index_type(type_)?;
-    if count == 0 || !c.arrays.vertex.enabled {
+    if count == 0 || !c.arrays.position().enabled {
         return Ok(Elements::List(Vec::new()));
     }
     read_indices(c, count, ty, indices as usize).map(Elements::List)

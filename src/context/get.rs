@@ -258,6 +258,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_MAX_LIGHTS => i(&[8]),
         GL_MAX_CLIP_PLANES => i(&[8]),
         GL_MAX_TEXTURE_UNITS => i(&[super::state::MAX_TEXTURE_UNITS as i64]),
+        super::generic_attrib::GL_MAX_VERTEX_ATTRIBS => {
+            i(&[super::arrays::MAX_VERTEX_ATTRIBS as i64])
+        }
         GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => i(&[16]),
         GL_MAX_NAME_STACK_DEPTH => i(&[64]),
         GL_MAX_LIST_NESTING => i(&[super::dlist::MAX_LIST_NESTING as i64]),

@@ -31,6 +31,7 @@ pub mod fbo_lend;
 pub mod fbo_query;
 pub mod feedback;
 pub mod fragment_state;
+pub mod generic_attrib;
 pub mod get;
 pub mod get_extra;
 pub mod hint_clip;
@@ -131,6 +132,8 @@ pub struct Context {
     pub arrays: arrays::ArrayState,
     /// glBegin/glEnd in progress.
     pub immediate: immediate::Immediate,
+    /// The generic vertex attributes' current values (glVertexAttrib*).
+    pub generic_current: [[f32; 4]; arrays::MAX_VERTEX_ATTRIBS],
     /// The first error not yet read by glGetError.
     pub error: Option<GlError>,
     /// The buffers this context was created with.
@@ -228,6 +231,7 @@ impl Context {
             matrices: Matrices::default(),
             arrays: arrays::ArrayState::default(),
             immediate: immediate::Immediate::default(),
+            generic_current: [generic_attrib::GENERIC_DEFAULT; arrays::MAX_VERTEX_ATTRIBS],
             error: None,
             visual,
             fb: None,

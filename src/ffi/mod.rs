@@ -75,6 +75,7 @@ pub mod textures_3d;
 pub mod textures_compressed;
 pub mod textures_ext;
 pub mod transform_ext;
+pub mod vertex_attrib;
 pub use crate::gl::types;
 
 use crate::context::dlist::VertexOp;

@@ -360,8 +360,12 @@ impl<'a> VertexFetcher<'a> {
     pub unsafe fn position(&self, index: u32) -> [f32; 4] {
         const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
         match &self.vertex {
-            // SAFETY: forwarded from the caller.
-            Some(s) => unsafe { Source::get(s, index, false, ORIGIN) }.unwrap_or(ORIGIN),
+            Some(s) => {
+                // Only a generic attribute-0 array standing for the positions is normalised.
+                let norm = matches!(s, Ok(src) if src.arr.normalized);
+                // SAFETY: forwarded from the caller.
+                unsafe { Source::get(s, index, norm, ORIGIN) }.unwrap_or(ORIGIN)
+            }
             None => self.base.pos,
         }
     }

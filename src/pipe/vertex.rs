@@ -51,6 +51,9 @@ pub struct ArrayPointer {
     pub ptr: usize,
     /// The GL_ARRAY_BUFFER bound when the pointer was set (0 = client memory).
     pub buffer: u32,
+    /// glVertexAttribPointer's `normalized` (integer components mapped to [0, 1] or
+    /// [-1, 1]); false for the fixed-function arrays, whose own rule the fetch applies.
+    pub normalized: bool,
 }
 
 impl ArrayPointer {
@@ -63,6 +66,7 @@ impl ArrayPointer {
             stride: 0,
             ptr: 0,
             buffer: 0,
+            normalized: false,
         }
     }
     /// The effective stride in bytes.
