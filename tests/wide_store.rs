@@ -70,7 +70,7 @@ struct Case {
 fn plan(next: &mut impl FnMut() -> u32, fma: bool) -> FragPlan {
     let r = next();
     let mut pick = |n: usize| (next() as usize) % n;
-    let blend = if r % 5 != 0 {
+    let blend = if !r.is_multiple_of(5) {
         // Pairs that fold (equal or complementary factors) half the time.
         let (src_rgb, src_a) = (pick(15), pick(15));
         // The same factor or its complement.
@@ -143,8 +143,8 @@ fn float_value(next: &mut impl FnMut() -> u32) -> f32 {
 fn case(next: &mut impl FnMut() -> u32, kind: WideKind, fma: bool) -> Case {
     let dst = WideDst {
         kind,
-        alpha: next() % 4 != 0,
-        single: next() % 4 == 0,
+        alpha: !next().is_multiple_of(4),
+        single: next().is_multiple_of(4),
     };
     let plan = plan(next, fma);
     // The chunk starts at `idx` and the rows end after `n` of its pixels.
@@ -154,14 +154,14 @@ fn case(next: &mut impl FnMut() -> u32, kind: WideKind, fma: bool) -> Case {
     let mut wide = vec![[0f32; 4]; len];
     let mut color = vec![[0u8; 4]; len];
     for (w, c) in wide.iter_mut().zip(color.iter_mut()) {
-        for ch in 0..4 {
-            w[ch] = match kind {
+        for v in w.iter_mut() {
+            *v = match kind {
                 WideKind::Unorm16 => (next() % 65536) as f32,
                 WideKind::Float16 => f16_round(float_value(next)),
                 WideKind::Float32 => float_value(next),
             };
         }
-        *c = if next() % 6 == 0 {
+        *c = if next().is_multiple_of(6) {
             next().to_le_bytes()
         } else {
             kind.mirror(*w)

@@ -16,6 +16,8 @@
 //! into a 16-bit buffer (and a fused float blend in a copy compiled without FMA).
 
 #![cfg(target_arch = "x86_64")]
+// Channel loops index several arrays in step.
+#![allow(clippy::needless_range_loop)]
 
 use super::simd::sat;
 use super::wide::{complement, positive, WideDst};
