@@ -16,6 +16,7 @@ pub mod simd;
 pub mod simd_gen;
 pub mod simd_plane;
 pub mod simd_tex;
+pub mod simd_wide;
 pub mod span;
 pub mod srgb;
 pub mod wide;

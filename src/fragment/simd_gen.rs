@@ -12,6 +12,9 @@
 //! factor per lane by [`crate::fixed_function::fog::FogPlan::factor`], `unorm8` as clamp
 //! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`], the stencil
 //! test and its updates as [`super::simd_plane`] (8 lanes, the multisample shader's).
+//! A wide target (16-bit or float buffer) takes the float colours before the 8-bit
+//! conversion to its own 8-lane store ([`super::simd_wide`]); the walks of untextured
+//! triangles into one come here too (`raster::wide_rows`).
 
 #![cfg(target_arch = "x86_64")]
 // Lane loops index several arrays in step.
@@ -31,18 +34,19 @@ use crate::texture::env::vec8::{Inputs8, Vec4};
 use crate::texture::UnitPlan;
 
 /// Whether [`shade_row`] covers this plan and target: an 8-bit colour format stored as
-/// RGBA8 unchanged, no logic op, no sRGB writes or wide buffer, no antialiasing coverage
-/// and no one-pass multisampling (those keep the general span shader).
+/// RGBA8 unchanged without a logic op, or a wide buffer (stored by
+/// [`super::simd_wide`]); no sRGB writes, no antialiasing coverage and no one-pass
+/// multisampling (those keep the general span shader).
 pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
-    plan.logic.is_none()
-        && plan.smooth.is_none()
+    plan.smooth.is_none()
         && plan.ms.is_none()
         && !plan.srgb
-        && fb.wide.is_none()
-        && matches!(
-            fb.format,
-            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
-        )
+        && (fb.wide.is_some()
+            || (plan.logic.is_none()
+                && matches!(
+                    fb.format,
+                    ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
+                )))
 }
 
 /// What [`shade_row`] needs of the plan and triangle, worked out once per triangle.
@@ -171,7 +175,8 @@ unsafe fn channels(l: &[[f32; 4]; LANES]) -> Vec4 {
 }
 
 /// The packed RGBA8 colours of the row's lanes, as [`super::span`]'s `shaded_colors`
-/// computes them from the units' texels `tex`.
+/// computes them from the units' texels `tex`, and the float colours they were converted
+/// from (what a wide buffer stores).
 ///
 /// # Safety
 /// AVX2 context (FMA when `FMA`).
@@ -186,7 +191,7 @@ unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     fx: F32x8,
     fy: F32x8,
     oow: F32x8,
-) -> I32x8 {
+) -> (I32x8, Vec4) {
     // SAFETY: the caller's AVX2 (+FMA) context.
     unsafe {
         let mut frag = [F32x8::zero(); 4];
@@ -238,7 +243,7 @@ unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
             let u = sat(*c).mul(F32x8::splat(255.0)).to_i32();
             acc = acc.or(u.shl_var(I32x8::splat(8 * ch as i32)));
         }
-        acc
+        (acc, prev)
     }
 }
 
@@ -277,7 +282,7 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
         let mut live_v = mask_of(bits);
         let fx = F32x8::splat(x as f32).add(lanes_f());
         let fy = F32x8::splat(py as f32);
-        let px = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
+        let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         if let Some((func, reference)) = plan.alpha {
             let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
             let kept = live_v.and(ok);
@@ -291,6 +296,10 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
             stencil_depth8::<FMA, DEPTH>(t, plan, sp, st, dp, (idx, n), (fx, fy), live_v, stats);
         let passed = pass.movemask();
         if g.mask == 0 || passed == 0 {
+            return;
+        }
+        if let Some(kind) = fb.wide {
+            stats.color_writes += store_wide::<FMA>(plan, fb, kind, idx, n, pass, pf);
             return;
         }
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
@@ -314,4 +323,48 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
         store_masked(cptr, fb.color.len().saturating_sub(idx), pass, out);
         stats.color_writes += u64::from(passed.count_ones());
     }
+}
+
+/// Stores the lanes of `pass` of the 8 pixels at `idx` (`n` inside the row) of wide
+/// target `fb` (precision `kind`) with the float colours `pf`: on 8 lanes
+/// ([`super::simd_wide`]) where it covers the store, else pixel by pixel
+/// ([`super::wide::store`]). Returns the pixels written.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`); the lanes of `pass` lie in `idx..idx + n`, inside the
+/// target's rows.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn store_wide<const FMA: bool>(
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    kind: crate::framebuffer::WideKind,
+    idx: usize,
+    n: usize,
+    pass: I32x8,
+    pf: Vec4,
+) -> u64 {
+    let dst = super::wide::WideDst {
+        kind,
+        alpha: fb.format.has_alpha(),
+        single: fb.wide_single,
+    };
+    if super::simd_wide::covers(dst, plan, FMA) {
+        // SAFETY: forwarded from the caller; `covers` accepted the store.
+        return unsafe {
+            super::simd_wide::store8::<FMA>(
+                dst,
+                plan,
+                &mut *fb.color,
+                &mut *fb.wide_color,
+                idx,
+                pass,
+                pf,
+            )
+        };
+    }
+    let bits = pass.movemask();
+    let live: [bool; LANES] = std::array::from_fn(|i| bits & (1 << i) != 0);
+    let cf = pf.map(|c| c.to_array());
+    super::wide::store(dst, plan, &mut fb.plane(0), idx, n, &live, &cf)
 }

@@ -510,8 +510,9 @@ fn shade_chunk_as<
 }
 
 /// Whether a draw's colours stay f32 to the store into `fb`: a wide (16-bit or float)
-/// target or sRGB writes. Those take the general (`FULL`) path and its out-of-line
-/// float store ([`store_chunk`]); the SIMD and fast texture paths never see them.
+/// target or sRGB writes. The texture fast path and the untextured AVX2 span shader never
+/// see them: the general 8-lane walks store wide targets through [`super::simd_wide`],
+/// the per-lane ones (and sRGB writes) through [`store_chunk`].
 #[inline(always)]
 pub fn float_store(plan: &FragPlan, fb: &Target<'_>) -> bool {
     fb.wide.is_some() || plan.srgb

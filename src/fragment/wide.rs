@@ -166,7 +166,7 @@ fn blend_float(
 }
 
 /// The factor gallium numbers `f ^ 0x10` (1 − f; ONE and ZERO pair up too).
-fn complement(f: BlendFactor) -> Option<BlendFactor> {
+pub(super) fn complement(f: BlendFactor) -> Option<BlendFactor> {
     use BlendFactor as F;
     Some(match f {
         F::Zero => F::One,
@@ -189,7 +189,7 @@ fn complement(f: BlendFactor) -> Option<BlendFactor> {
 
 /// Whether gallium numbers `f` below its complement (ONE, and the factors that are not
 /// "one minus"): the lerp then weighs by the source factor.
-fn positive(f: BlendFactor) -> bool {
+pub(super) fn positive(f: BlendFactor) -> bool {
     use BlendFactor as F;
     matches!(
         f,

@@ -35,6 +35,7 @@ pub mod smooth;
 pub mod stipple;
 mod textured;
 mod variants;
+mod wide_rows;
 
 #[cfg(target_arch = "x86_64")]
 use variants::SimdWalks;
@@ -341,8 +342,8 @@ unsafe fn rows_simd_walk<
 unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let depth = plan.depth.is_some();
-    // Wide buffers and sRGB writes take the general per-fragment path (`fragment::wide`,
-    // `fragment::srgb`).
+    // Wide buffers and sRGB writes take the general per-fragment walks (the 8-lane ones
+    // where they cover the plan: `wide_rows`, `fragment::simd_wide`).
     let wide = crate::fragment::span::float_store(plan, fb);
     if let Some(env) = textured::fast_env(plan, units).filter(|_| !wide) {
         let u = &units[0];
@@ -358,6 +359,12 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     } else {
         // Flat colours need no divide, but the fog coordinate is still perspective-correct.
         let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
+        if wide {
+            return with_flags!((depth, plan.flat, persp), |D, F, P| {
+                // SAFETY: forwarded from the caller.
+                unsafe { W::wide::<D, F, P>(t, b, plan, fb, stats) }
+            });
+        }
         // Untextured states the span shader's 8 lanes leave (stencil, the alpha test,
         // fog, the colour sum, a partial colour mask, sample counting) take the textured
         // walk's 8-lane shader with no units where it covers them: the same fragments
@@ -369,7 +376,7 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
                 unsafe { W::textured::<D, F, P>(t, b, plan, units, fb, stats) }
             });
         }
-        if plan.needs_full_path() || wide {
+        if plan.needs_full_path() {
             with_flags!((depth, plan.flat, persp), |D, F, P| {
                 // SAFETY: forwarded from the caller.
                 unsafe { W::full::<D, F, P, true>(t, b, plan, fb, stats) }

@@ -62,6 +62,11 @@ macro_rules! walk_list {
             full [const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool] [DEPTH, FLAT, PERSP, FULL]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
                 => { crate::raster::rows::<M, DEPTH, FLAT, PERSP, FULL> };
+            /// Untextured triangle rows into a wide target or with sRGB writes
+            /// ([`super::wide_rows`]).
+            wide [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::wide_rows::rows_wide::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
             textured [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)

@@ -59,4 +59,11 @@ lane_ops! {
     fn max(o) -> Self = _mm256_max_ps;
     /// Bitwise and.
     fn and(o) -> Self = _mm256_and_ps;
+    /// `vunpcklps`: lanes 0, 1 of each 128-bit half interleaved with those of `o`.
+    fn unpack_lo(o) -> Self = _mm256_unpacklo_ps;
+    /// `vunpckhps`: lanes 2, 3 of each 128-bit half interleaved with those of `o`.
+    fn unpack_hi(o) -> Self = _mm256_unpackhi_ps;
+    /// `vperm2f128` with an immediate: each 128-bit half one of the halves of `self`
+    /// and `o` (0x20: the low halves, 0x31: the high halves).
+    fn perm128<const IMM>(o) -> Self = _mm256_permute2f128_ps::<IMM>;
 }
