@@ -409,6 +409,18 @@ impl Framebuffer {
         self.pending_rows.get(y).copied().unwrap_or(false)
     }
 
+    /// The recorded colour clear that memory row `y` holds instead of its memory, if any.
+    #[inline]
+    pub fn pending_color_row(&self, y: usize) -> Option<[u8; 4]> {
+        self.pending_color.filter(|_| self.row_pending(y))
+    }
+
+    /// The recorded depth clear that memory row `y` holds instead of its memory, if any.
+    #[inline]
+    pub fn pending_depth_row(&self, y: usize) -> Option<u32> {
+        self.pending_depth.filter(|_| self.row_pending(y))
+    }
+
     /// Colour pixel `i` (y-down row-major), recorded clears included.
     #[inline]
     pub fn color_at(&self, i: usize) -> [u8; 4] {

@@ -39,6 +39,10 @@ pub const GEOM_SECTION: usize = 4096;
 pub const SPLIT_PROBE: usize = 1024;
 /// [`Tuning::engine`]'s default: whether the engine shades the general textured walk.
 pub const ENGINE: bool = false;
+/// Pixels per chunk of glBlitFramebuffer's multisample resolve on the thread pool
+/// (`crate::pixels::resolve`): 64 Ki pixels read 1 MB of sample planes, enough to amortise
+/// a task and small enough that 1080p splits into 32 chunks for two threads to share.
+pub const RESOLVE_CHUNK: usize = 1 << 16;
 /// The variable that caps the instruction set ([`Tuning::isa`]), for messages about it.
 pub const ISA_VAR: &str = "SOFTGL_ISA";
 

@@ -463,6 +463,9 @@ pub struct FboState {
     pub ms_planes: Vec<Framebuffer>,
     /// The renderbuffer buffers the working copy holds on loan (`super::fbo_lend`).
     pub loans: Vec<super::fbo_lend::Loan>,
+    /// The image the last multisample resolve of glBlitFramebuffer wrote, kept so that
+    /// the next one of the same size writes into it (`crate::pixels::resolve::reuse`).
+    pub resolve_scratch: Option<Framebuffer>,
 }
 
 /// Names not in `used`, counting up from `*next` (glGen*'s rule: any unused names).

@@ -90,14 +90,28 @@ pub fn clip_axis(s: &mut [i32; 2], d: &mut [i32; 2], lo: i32, hi: i32, size: i32
 /// a float: the image returned is an R32G32B32A32_FLOAT one holding `sum · 0.25` (each
 /// sample read as [`Framebuffer::float_at`]), which the copy then converts to the
 /// destination's format as the resolve shader's output is.
+///
+/// The 8-bit resolve writes into `scratch` when it fits ([`super::resolve::reuse`]), and
+/// only the buffers the blit reads (`mask`): no colour average without
+/// GL_COLOR_BUFFER_BIT.
 pub fn resolve_samples(
     planes: &[Framebuffer],
     sides: SrgbSides,
     wide: bool,
     fma: bool,
+    mask: BlitMask,
+    scratch: Option<Framebuffer>,
 ) -> Framebuffer {
     if sides != SrgbSides::default() {
         return sides.resolve(planes, fma);
+    }
+    if !wide && planes[0].wide.is_none() && planes.len() == 4 {
+        let mut out = super::resolve::reuse(scratch, &planes[0], mask.depth, mask.stencil);
+        if mask.color {
+            let colors = std::array::from_fn(|k| &planes[k].color[..]);
+            super::resolve::average_rgba8(colors, &mut out.color);
+        }
+        return out;
     }
     let mut out = planes[0].clone();
     if wide || out.wide.is_some() {
@@ -198,6 +212,9 @@ impl Job {
             }
         };
         let inside = |px: i64, py: i64| px >= sc[0] && px < sc[2] && py >= sc[1] && py < sc[3];
+        if unscaled && sw > 0 && sh > 0 && !convert && !wide && (!mask.depth || exact_depth) {
+            return self.copy_rows(s, d, mask);
+        }
         if unscaled {
             // Texel for texel (llvmpipe's copy or TXF path).
             for j in 0..bh as i64 {
@@ -278,6 +295,54 @@ impl Job {
             };
             write(d, px, py, c, nearest);
         });
+    }
+}
+
+impl Job {
+    /// An unscaled, unmirrored blit between 8-bit buffers without conversion (depth only
+    /// when copied exactly): [`Job::run`]'s texel-for-texel copy a row slice at a time.
+    fn copy_rows(&self, s: &Framebuffer, d: &mut Framebuffer, mask: BlitMask) {
+        let [x0, y0, x1, y1] = self.scissor;
+        let [bx, by, bw, bh] = self.dst.map(|v| v as i64);
+        let [sx, sy] = [self.src[0] as i64, self.src[1] as i64];
+        // Destination pixels inside the box, the scissor, the destination and a source
+        // texel: tx = sx + (px − bx) in [0, s.width), likewise rows.
+        let lo = |b: i64, c: i64, o: i64| b.max(c).max(b - o);
+        let hi =
+            |b: i64, n: i64, c: i64, d: i64, o: i64, sn: i64| (b + n).min(c).min(d).min(b - o + sn);
+        let (xa, xb) = (
+            lo(bx, x0, sx).max(0),
+            hi(bx, bw, x1, d.width as i64, sx, s.width as i64),
+        );
+        let (ya, yb) = (
+            lo(by, y0, sy).max(0),
+            hi(by, bh, y1, d.height as i64, sy, s.height as i64),
+        );
+        if xa >= xb || ya >= yb {
+            return;
+        }
+        let n = (xb - xa) as usize;
+        let stencil = mask.stencil && !s.stencil.is_empty() && !d.stencil.is_empty();
+        for py in ya..yb {
+            let di = py as usize * d.width + xa as usize;
+            let si = (py - by + sy) as usize * s.width + (xa - bx + sx) as usize;
+            if mask.color {
+                let (src, dst) = (&s.color[si..si + n], &mut d.color[di..di + n]);
+                if d.format == crate::framebuffer::ColorFormat::Rgba {
+                    dst.copy_from_slice(src);
+                } else {
+                    for (o, &c) in dst.iter_mut().zip(src) {
+                        *o = d.format.store_rgba8(c);
+                    }
+                }
+            }
+            if mask.depth {
+                d.depth[di..di + n].copy_from_slice(&s.depth[si..si + n]);
+            }
+            if stencil {
+                d.stencil[di..di + n].copy_from_slice(&s.stencil[si..si + n]);
+            }
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! Pixel rectangles in the pipeline: the textured quad of glDrawPixels, glCopyPixels and
 //! glBitmap with its zoom and per-fragment operations ([`rect`], [`draw`]), the decoded
 //! client images they draw ([`image`]) and glBlitFramebuffer's clipping, resolve and copy
-//! ([`blit`]). Everything here takes plain values; reading the GL state (raster position,
+//! ([`blit`], [`resolve`]). Everything here takes plain values; reading the GL state (raster position,
 //! pixel transfer, the bitmap cache) is `context::pixel_ops`'s work, and decoding client
 //! memory `context::pack`'s.
 
@@ -10,3 +10,4 @@ pub mod blit_srgb;
 pub mod draw;
 pub mod image;
 pub mod rect;
+pub mod resolve;

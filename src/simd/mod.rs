@@ -25,6 +25,7 @@
 //! the CPU themselves, and have plain fallbacks off x86-64.
 
 pub mod cpu;
+pub mod pack;
 pub mod scan;
 
 #[cfg(target_arch = "x86_64")]

@@ -15,6 +15,7 @@
 pub mod depth;
 pub mod draw_image;
 pub mod read;
+mod read_fast;
 pub mod tex;
 pub mod tex_float;
 pub mod tex_format;

@@ -139,6 +139,28 @@ pub unsafe fn read_pixels(
             }
         }
     };
+    // Row paths for the common reads (the same bytes as the loop below).
+    let dest = super::read_fast::Dest {
+        rect: [x as i64, y as i64, w as i64, h as i64],
+        start,
+        stride,
+    };
+    if !transfer && !swap && packed.is_none() {
+        match kind {
+            // SAFETY: `out` is writable for the packed image (this function's contract).
+            ReadKind::Color(map, n) if ty == GL_UNSIGNED_BYTE => unsafe {
+                if super::read_fast::color_u8(fb, base, map, n, dest, out) {
+                    return Ok(());
+                }
+            },
+            // SAFETY: as above.
+            ReadKind::Depth if ty == GL_FLOAT && depth_scale_bias.is_none() => unsafe {
+                super::read_fast::depth_f32(fb, dest, out);
+                return Ok(());
+            },
+            _ => {}
+        }
+    }
     for row in 0..h as usize {
         let gy = y as i64 + row as i64;
         if gy < 0 || gy >= fb.height as i64 {

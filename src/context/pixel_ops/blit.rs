@@ -40,13 +40,14 @@ pub fn blit(
         // A resolve reads the source planes where they are (nothing copied).
         let wide_dst = ctx.fb.as_ref().is_some_and(|f| f.wide.is_some());
         let on = crate::plan::srgb_store(caps, true);
+        let scratch = ctx.fbo.resolve_scratch.take();
         let resolved = ctx.with_read_planes(|planes| {
             (planes.len() == SAMPLES).then(|| {
                 let sides = SrgbSides {
                     src: on && planes[0].srgb,
                     ..sides
                 };
-                resolve_samples(planes, sides, wide_dst, fma)
+                resolve_samples(planes, sides, wide_dst, fma, mask, scratch)
             })
         });
         let Some(Some(resolved)) = resolved else {
@@ -65,7 +66,8 @@ pub fn blit(
         }
         sides.src = crate::plan::srgb_store(&ctx.state.caps, planes[0].srgb);
         let wide_dst = ctx.fb.as_ref().is_some_and(|f| f.wide.is_some());
-        let resolved = resolve_samples(&planes, sides, wide_dst, fma);
+        let scratch = ctx.fbo.resolve_scratch.take();
+        let resolved = resolve_samples(&planes, sides, wide_dst, fma, mask, scratch);
         // the resolve has converted the colours: the copy that follows copies
         sides = SrgbSides::default();
         resolved
@@ -157,6 +159,10 @@ pub fn blit(
             job.run(src, fb, mask);
         }
     });
+    if read_ms {
+        // kept for the next resolve (a frame's resolve then touches no fresh page)
+        ctx.fbo.resolve_scratch = Some(sfb);
+    }
     ctx.dirty = true;
     ctx.fbo.drawn = true;
     Ok(())
