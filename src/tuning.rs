@@ -37,6 +37,8 @@ pub const POOL_SPIN_US: u64 = 500;
 pub const GEOM_SECTION: usize = 4096;
 /// [`Tuning::split_probe`]'s default: triangles.
 pub const SPLIT_PROBE: usize = 1024;
+/// [`Tuning::ms_prefetch`]'s default: the rows below ([`MsPrefetch::Below`]).
+pub const MS_PREFETCH: MsPrefetch = MsPrefetch::Below;
 /// [`Tuning::engine`]'s default: whether the engine shades the general textured walk.
 pub const ENGINE: bool = false;
 /// Pixels per chunk of glBlitFramebuffer's multisample resolve on the thread pool
@@ -66,6 +68,18 @@ impl TexPath {
             TexPath::Array => "array",
         }
     }
+}
+
+/// Which lines of the sample planes the one-pass multisample walk asks for ahead
+/// (`SOFTGL_MS_PREFETCH`, [`Tuning::ms_prefetch`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MsPrefetch {
+    /// `0`: none.
+    Off,
+    /// `1`: each chunk's columns two rows down (the next pair of rows).
+    Below,
+    /// `2`: the chunk 64 pixels further along the same rows.
+    Ahead,
 }
 
 /// Every knob the library reads, as read from the environment (once, by [`tuning`]).
@@ -118,6 +132,10 @@ pub struct Tuning {
     /// `SOFTGL_NARROW`: whether the AVX2 row walk shades triangles less than 4 pixels wide
     /// as 4x2 blocks. Default on; exactly `0` turns it off.
     pub narrow: bool,
+    /// `SOFTGL_MS_PREFETCH`: which sample-plane lines the one-pass multisample walk
+    /// prefetches: `0` none, `1` two rows down, `2` 64 pixels ahead; other values count
+    /// as unset. Default [`MS_PREFETCH`].
+    pub ms_prefetch: MsPrefetch,
     /// `SOFTGL_GEOM_SECTION`: triangles per section of a draw whose set-up is split over
     /// two threads, at most 2^20 (0 turns the split off). Default [`GEOM_SECTION`] (4096)
     /// triangles.
@@ -175,6 +193,12 @@ impl Tuning {
             pool_spin: micros("SOFTGL_POOL_SPIN_US", POOL_SPIN_US),
             pool_start: not_zero("SOFTGL_POOL_START"),
             narrow: not_zero("SOFTGL_NARROW"),
+            ms_prefetch: match int("SOFTGL_MS_PREFETCH") {
+                Some(0) => MsPrefetch::Off,
+                Some(1) => MsPrefetch::Below,
+                Some(2) => MsPrefetch::Ahead,
+                _ => MS_PREFETCH,
+            },
             geom_section: size("SOFTGL_GEOM_SECTION").map_or(GEOM_SECTION, |v| v.min(1 << 20)),
             split_probe: size("SOFTGL_SPLIT_PROBE").unwrap_or(SPLIT_PROBE),
             setup8: not_zero("SOFTGL_SETUP8"),
@@ -206,6 +230,7 @@ impl Tuning {
             pool_spin,
             pool_start,
             narrow,
+            ms_prefetch,
             geom_section,
             split_probe,
             setup8,
@@ -232,6 +257,7 @@ impl Tuning {
             ("SOFTGL_POOL_SPIN_US", pool_spin.as_micros().to_string()),
             ("SOFTGL_POOL_START", on(pool_start)),
             ("SOFTGL_NARROW", on(narrow)),
+            ("SOFTGL_MS_PREFETCH", (*ms_prefetch as u8).to_string()),
             ("SOFTGL_GEOM_SECTION", geom_section.to_string()),
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
             ("SOFTGL_SETUP8", on(setup8)),

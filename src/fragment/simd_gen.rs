@@ -182,7 +182,7 @@ unsafe fn channels(l: &[[f32; 4]; LANES]) -> Vec4 {
 /// AVX2 context (FMA when `FMA`).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
+pub(crate) unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
     plan: &FragPlan,
     g: &GenPlan,

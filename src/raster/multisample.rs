@@ -16,7 +16,11 @@
 use super::row_pairs::RowPairs;
 use super::textured::Chunk;
 use super::{sample_chunk, Draw};
+#[cfg(target_arch = "x86_64")]
+use crate::fragment::multisample::{colors8_ok, shade_chunk_ms8};
 use crate::fragment::multisample::{shade_chunk_ms, SAMPLES};
+#[cfg(target_arch = "x86_64")]
+use crate::fragment::simd_gen::GenPlan;
 use crate::fragment::span::{ChunkColors, Madd, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -24,6 +28,10 @@ use crate::geometry::setup::{Edge, SetupTriangle};
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
+use crate::tuning::MsPrefetch;
+
+/// Pixels ahead in the same rows that [`MsPrefetch::Ahead`] asks for.
+const AHEAD: i64 = 64;
 
 use super::variants::{with_flags, Walks};
 
@@ -102,11 +110,26 @@ fn rows_as<
     // Texel values of the current chunk (lanes of quads not sampled keep stale values,
     // never used), as in the textured walk.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
+    let prefetch = crate::tuning::tuning().ms_prefetch;
+    #[cfg(target_arch = "x86_64")]
+    let (fast, g) = (
+        AVX2 && !WIDE && colors8_ok(plan, fb, !units.is_empty()),
+        GenPlan::new(plan, t, units),
+    );
     for pair in RowPairs::new(&edges, b, !1) {
         let (qy, spans) = (pair.qy, pair.spans);
         let (lo, hi) = (pair.lo, pair.hi);
         let mut x = lo & !1;
         while x <= hi {
+            // Each plane's line holding the chunk's last pixel, in the next pair of rows
+            // (or further along these): eight planes' rows are more streams than the
+            // hardware prefetcher follows, and the walk's loads of the planes waited on
+            // the cache.
+            match prefetch {
+                MsPrefetch::Off => {}
+                MsPrefetch::Below => prefetch_planes(fb, qy + 2, x + LANES as i64 - 1, DEPTH),
+                MsPrefetch::Ahead => prefetch_planes(fb, qy, x + AHEAD + LANES as i64 - 1, DEPTH),
+            }
             // Bit i of `cov[r][s]`: sample s of pixel x + i of row r is covered.
             let mut cov = [[0u8; SAMPLES]; 2];
             let mut any = [0u8; 2];
@@ -129,6 +152,40 @@ fn rows_as<
                 fy: [qy as f32 + 0.5, (qy + 1) as f32 + 0.5],
                 live,
             };
+            #[cfg(target_arch = "x86_64")]
+            if fast {
+                // SAFETY: `AVX2` walks are compiled with AVX2, and with FMA exactly when
+                // `M` fuses; `g` is this triangle's; the covered lanes lie in the rows.
+                unsafe {
+                    if M::FUSED {
+                        fast_chunk::<M, true, DEPTH, FLAT, PERSP>(
+                            t,
+                            plan,
+                            &g,
+                            units,
+                            fb,
+                            &chunk,
+                            &cov,
+                            &mut texels,
+                            stats,
+                        );
+                    } else {
+                        fast_chunk::<M, false, DEPTH, FLAT, PERSP>(
+                            t,
+                            plan,
+                            &g,
+                            units,
+                            fb,
+                            &chunk,
+                            &cov,
+                            &mut texels,
+                            stats,
+                        );
+                    }
+                }
+                x += LANES as i64;
+                continue;
+            }
             if !units.is_empty() {
                 sample_chunk::<M, PERSP, true>(t, units, &chunk, &mut texels);
             }
@@ -160,4 +217,83 @@ fn lane_bits(lo: i64, hi: i64) -> u8 {
     }
     // Bits lo..=hi of a byte (hi < 8, so the shift stays below 9).
     (((1u32 << (hi + 1)) - (1u32 << lo)) & 0xFF) as u8
+}
+
+/// The chunk `c` (sample coverage `cov` per row) of a plan [`colors8_ok`] accepts:
+/// every unit's coordinates and texels on 8 lanes as the single-sample general walk
+/// takes them ([`super::textured::coords_and_sample`]), then each row through
+/// [`shade_chunk_ms8`].
+///
+/// # Safety
+/// AVX2 context (FMA exactly when `FMA`); `g` made from this plan, triangle and units;
+/// the covered lanes lie inside the target.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn fast_chunk<
+    M: Madd,
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    units: &[UnitPlan<'_>],
+    fb: &mut Target<'_>,
+    c: &Chunk,
+    cov: &[[u8; SAMPLES]; 2],
+    texels: &mut [TexLanes; 2],
+    stats: &mut Stats,
+) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        let oow = super::textured::coords_and_sample::<M, FMA, PERSP, true>(t, units, c, texels);
+        for r in 0..2 {
+            if cov[r].iter().all(|&m| m == 0) {
+                continue;
+            }
+            let (y, x) = ((c.qy + r as i64) as usize, c.x as usize);
+            shade_chunk_ms8::<FMA, DEPTH, FLAT, PERSP>(
+                t,
+                plan,
+                g,
+                units,
+                &texels[r],
+                fb,
+                (y, x),
+                &cov[r],
+                oow[r],
+                stats,
+            );
+        }
+    }
+}
+
+/// Asks for the colour (and with `depth` the depth) line holding pixel `x` of rows `py`
+/// and `py + 1` in every sample plane, for the rows that lie in the band.
+#[inline(always)]
+fn prefetch_planes(fb: &Target<'_>, py: i64, x: i64, depth: bool) {
+    let (y0, y1) = (fb.y0 as i64, (fb.y0 + fb.rows) as i64);
+    if x < 0 || x >= fb.width as i64 {
+        return;
+    }
+    for y in py..py + 2 {
+        if y < y0 || y >= y1 {
+            continue;
+        }
+        let i = (y - y0) as usize * fb.width + x as usize;
+        // Wrapping addresses inside the band's rows; a prefetch never faults.
+        crate::simd::prefetch(fb.color.as_ptr().wrapping_add(i));
+        for p in &fb.samples {
+            crate::simd::prefetch(p.color.as_ptr().wrapping_add(i));
+        }
+        if depth {
+            crate::simd::prefetch(fb.depth.as_ptr().wrapping_add(i));
+            for p in &fb.samples {
+                crate::simd::prefetch(p.depth.as_ptr().wrapping_add(i));
+            }
+        }
+    }
 }

@@ -421,7 +421,12 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
 /// AVX2 context (FMA when `FMA`).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn coords_and_sample<M: Madd, const FMA: bool, const PERSP: bool, const STR: bool>(
+pub(super) unsafe fn coords_and_sample<
+    M: Madd,
+    const FMA: bool,
+    const PERSP: bool,
+    const STR: bool,
+>(
     t: &SetupTriangle,
     units: &[UnitPlan<'_>],
     c: &Chunk,
