@@ -21,6 +21,7 @@
 
 use super::rect::{rasterize, Dest, Fragments, Quad};
 use crate::fixed_function::fog::FogPlan;
+use crate::fragment::span::LANES;
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::stats::Stats;
@@ -105,16 +106,17 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         fma: t.fma,
         y_flip: fb.y_flip,
     };
-    let w = q.w;
     if let Source::Stencil(vals) = src {
         let fw = fb.width;
         if fb.stencil.is_empty() {
             return;
         }
         let stencil_mask = t.stencil_mask;
-        rasterize(q, &d, |_, px, py, col, row| {
-            let s = &mut fb.stencil[py * fw + px];
-            *s = (*s & !stencil_mask) | (vals[row * w + col] & stencil_mask);
+        rasterize(q, &d, |_, py, x, texels| {
+            let row = &mut fb.stencil[py * fw + x..py * fw + x + texels.len()];
+            for (s, &k) in row.iter_mut().zip(texels) {
+                *s = (*s & !stencil_mask) | (vals[k] & stencil_mask);
+            }
         });
         return;
     }
@@ -124,16 +126,22 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         stats: t.stats,
     };
     match src {
-        Source::Color(c) => rasterize(q, &d, |t, px, py, col, row| {
-            frags.put(t, px, py, c[row * w + col], None)
-        }),
-        Source::Mask(m, c) => rasterize(q, &d, |t, px, py, col, row| {
-            if m[row * w + col] {
-                frags.put(t, px, py, c, None)
+        Source::Color(c) => rasterize(q, &d, |t, py, x, texels| {
+            for (i, k) in texels.chunks(LANES).enumerate() {
+                frags.put_chunk(t, py, x + i * LANES, |l| k.get(l).map(|&k| c[k]));
             }
         }),
-        Source::Depth(z, c) => rasterize(q, &d, |t, px, py, col, row| {
-            frags.put(t, px, py, c, Some(z[row * w + col]))
+        Source::Mask(m, c) => rasterize(q, &d, |t, py, x, texels| {
+            for (i, k) in texels.chunks(LANES).enumerate() {
+                frags.put_chunk(t, py, x + i * LANES, |l| {
+                    k.get(l).and_then(|&k| m[k].then_some(c))
+                });
+            }
+        }),
+        Source::Depth(z, c) => rasterize(q, &d, |t, py, x, texels| {
+            for (i, &k) in texels.iter().enumerate() {
+                frags.put(t, x + i, py, c, Some(z[k]))
+            }
         }),
         Source::Stencil(_) => {}
     }

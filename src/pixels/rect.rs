@@ -8,17 +8,20 @@
 //! normalised coordinates: s goes 0..1 left to right and t 0..1 bottom to top (top to
 //! bottom with `flip_t`, for glCopyPixels, whose temporary texture is y-down).
 //!
-//! This module reproduces that draw: the same corner arithmetic, llvmpipe's snapping, fill
-//! rule and attribute planes (through [`setup_triangle`]), and `floor(s·w)` texel selection,
-//! so that fractional and negative zooms pick the texels llvmpipe picks. Each covered pixel
-//! is handed to a callback with its texel, and [`Fragments`] runs the per-fragment
-//! operations of [`shade_chunk`] on it.
+//! This module reproduces that draw: the same corner arithmetic, the draw module's clipping
+//! of a quad that reaches past the framebuffer (whose new vertices change the planes'
+//! rounding), llvmpipe's snapping, fill rule and attribute planes (through
+//! [`setup_triangle`]), and `floor(s·w)` texel selection, so that fractional and negative
+//! zooms pick the texels llvmpipe picks. Each covered span is handed to a callback with
+//! its pixels' texels, and [`Fragments`] runs the per-fragment operations of
+//! [`shade_chunk`] on them eight pixels at a time.
 
 use crate::fragment::span::{eval, shade_chunk, unorm8, ChunkColors, Fused, Madd, Unfused, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
+use crate::geometry::clip::clip_triangle;
 use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
-use crate::geometry::{ClipVertex, Viewport, VARY_TEX};
+use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_TEX};
 use crate::stats::Stats;
 
 /// A pixel rectangle to rasterize.
@@ -55,24 +58,50 @@ pub struct Dest {
     pub y_flip: bool,
 }
 
-/// Calls `f(tri, px, py, col, row)` for every pixel `(px, py)` (y-down) the quad covers
-/// inside the region, with the texel column and row NEAREST sampling selects.
-pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
-    q: &Quad,
-    d: &Dest,
-    mut f: F,
-) {
+/// Calls `f(tri, py, x, texels)` for every span of pixels `(x + i, py)` (y-down) the quad
+/// covers inside the region, with the texel each pixel's NEAREST sampling selects (as an
+/// index `row · w + col` into the image) in `texels[i]`.
+pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(q: &Quad, d: &Dest, mut f: F) {
     if q.w == 0 || q.h == 0 {
         return;
     }
     if d.fma {
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU has FMA (checked).
+            return unsafe { raster_fma(q, d, &mut f) };
+        }
         raster_m::<Fused, F>(q, d, &mut f)
     } else {
         raster_m::<Unfused, F>(q, d, &mut f)
     }
 }
 
-fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
+/// [`raster_m`] fused, compiled with FMA: the per-pixel `fmuladd`s of the texel
+/// coordinates are instructions, not calls to `fmaf`.
+///
+/// # Safety
+/// The CPU has FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn raster_fma<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
+    q: &Quad,
+    d: &Dest,
+    f: &mut F,
+) {
+    raster_m::<Fused, F>(q, d, f)
+}
+
+/// The texel index along one axis of size `n` at normalised coordinate `c`: `floor(c·n)`
+/// clamped to `[0, n − 1]`. The saturating cast truncates, which is the floor for every
+/// value the clamp keeps (negative values, −0 and NaN all give 0).
+#[inline(always)]
+fn texel_at(c: f32, nf: f32, n: usize) -> usize {
+    ((c * nf) as usize).min(n - 1)
+}
+
+#[inline(always)]
+fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
     q: &Quad,
     d: &Dest,
     f: &mut F,
@@ -108,13 +137,17 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, usize, usize)>(
         corner(x0, y0, 0.0, t_top),
     ];
     let (wf, hf) = (q.w as f32, q.h as f32);
-    quad_pixels(&v, d.region, |tri, px, py| {
-        let (fx, fy) = (px as f32, py as f32);
-        let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
-        let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
-        let col = ((s * wf).floor().max(0.0) as usize).min(q.w - 1);
-        let row = ((t * hf).floor().max(0.0) as usize).min(q.h - 1);
-        f(tri, px as usize, py as usize, col, row);
+    let mut texels = Vec::new();
+    quad_spans_clipped(&v, &vp, d.region, |tri, py, lo, hi| {
+        let fy = py as f32;
+        texels.clear();
+        texels.extend((lo..=hi).map(|px| {
+            let fx = px as f32;
+            let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
+            let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
+            texel_at(t, hf, q.h) * q.w + texel_at(s, wf, q.w)
+        }));
+        f(tri, py as usize, lo as usize, &texels);
     });
 }
 
@@ -127,30 +160,86 @@ pub(super) fn quad_pixels(
     region: [i64; 4],
     mut f: impl FnMut(&SetupTriangle, i64, i64),
 ) {
+    let mut tri = SetupTriangle::default();
+    for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
+        tri_spans(
+            [&v[a], &v[b], &v[c]],
+            region,
+            &mut tri,
+            &mut |t, py, lo, hi| {
+                for px in lo..=hi {
+                    f(t, px, py);
+                }
+            },
+        );
+    }
+}
+
+/// Sets up triangle `v` under the rasterizer state of [`quad_pixels`] into `tri` and calls
+/// `f(tri, py, lo, hi)` for each span of pixels `lo..=hi` of row `py` it covers inside
+/// `region`.
+fn tri_spans(
+    v: [&ClipVertex; 3],
+    region: [i64; 4],
+    tri: &mut SetupTriangle,
+    f: &mut impl FnMut(&SetupTriangle, i64, i64, i64),
+) {
     let cull = CullMode {
         front: false,
         back: false,
         front_ccw: true,
         top_left: false,
     };
+    if !matches!(
+        setup_triangle(v, VARY_TEX + 2, cull, None, tri),
+        SetupResult::Draw
+    ) {
+        return;
+    }
+    for py in tri.bbox[1].max(region[1])..=tri.bbox[3].min(region[3] - 1) {
+        let (lo, hi) = tri.cut_span(
+            py,
+            tri.bbox[0].max(region[0]),
+            tri.bbox[2].min(region[2] - 1),
+        );
+        if lo <= hi {
+            f(tri, py, lo, hi);
+        }
+    }
+}
+
+/// [`quad_pixels`], span by span, for a quad whose corners may lie outside the clip volume (a raster
+/// position near the edge, a large zoom): llvmpipe's draw module clips each fan triangle
+/// ([`clip_triangle`], no guard band) and sets up the pieces, whose planes start from the
+/// new vertices and so round differently from the unclipped triangle's (measured: a 96x96
+/// image at x = 341 with zoom 2.5 on a 512-wide buffer picks the lower texel at 31 of the
+/// pixel centres that fall exactly on a texel edge in each row).
+fn quad_spans_clipped(
+    v: &[ClipVertex; 4],
+    vp: &Viewport,
+    region: [i64; 4],
+    mut f: impl FnMut(&SetupTriangle, i64, i64, i64),
+) {
+    let v: [ClipVertex; 4] = std::array::from_fn(|i| ClipVertex {
+        mask: clip_mask(v[i].clip, false),
+        ..v[i]
+    });
+    let ucp = [[0.0; 4]; 8];
     let mut tri = SetupTriangle::default();
     for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
-        if !matches!(
-            setup_triangle([&v[a], &v[b], &v[c]], VARY_TEX + 2, cull, None, &mut tri),
-            SetupResult::Draw
-        ) {
+        let (ma, mb, mc) = (v[a].mask, v[b].mask, v[c].mask);
+        if ma & mb & mc != 0 {
             continue;
         }
-        for py in tri.bbox[1].max(region[1])..=tri.bbox[3].min(region[3] - 1) {
-            let (lo, hi) = tri.cut_span(
-                py,
-                tri.bbox[0].max(region[0]),
-                tri.bbox[2].min(region[2] - 1),
-            );
-            for px in lo..=hi {
-                f(&tri, px, py);
-            }
+        let or = ma | mb | mc;
+        let vs = [&v[a], &v[b], &v[c]];
+        if or == 0 {
+            tri_spans(vs, region, &mut tri, &mut f);
+            continue;
         }
+        clip_triangle(vs, or, &ucp, vp, VARY_TEX + 2, false, None, |p, q, r| {
+            tri_spans([p, q, r], region, &mut tri, &mut f)
+        });
     }
 }
 
@@ -166,6 +255,35 @@ pub struct Fragments<'a, 'b> {
 }
 
 impl Fragments<'_, '_> {
+    /// The fragments of up to [`LANES`] consecutive pixels of row `py` from `x` on, each
+    /// with the shader colour `color(lane)` or none (`None`: no fragment); their depth is
+    /// the triangle's z plane. As [`Self::put`] for each one in turn: the pixels differ, so
+    /// no fragment's tests or blending see another's result.
+    pub fn put_chunk(
+        &mut self,
+        tri: &SetupTriangle,
+        py: usize,
+        x: usize,
+        color: impl Fn(usize) -> Option<[f32; 4]>,
+    ) {
+        let mut c = [[0u8; LANES]; 4];
+        let mut cf = [[0f32; LANES]; 4];
+        let mut live = [false; LANES];
+        for (l, live) in live.iter_mut().enumerate() {
+            if let Some(rgba) = color(l) {
+                *live = true;
+                for k in 0..4 {
+                    c[k][l] = unorm8(rgba[k]);
+                    cf[k][l] = rgba[k];
+                }
+            }
+        }
+        if !live.contains(&true) {
+            return;
+        }
+        self.shade(tri, py, x, live, &c, &cf);
+    }
+
     /// One fragment of shader colour `rgba` at `(px, py)`; its depth is the triangle's z
     /// plane (constant over a pixel rectangle) or `z` when given (depth images). An 8-bit
     /// target gets the colour converted to unorm8, a wide one converts it at its own
@@ -198,10 +316,24 @@ impl Fragments<'_, '_> {
             }
             None => tri,
         };
+        self.shade(t, py, px, live, &c, &cf);
+    }
+
+    /// Runs the per-fragment operations on the `live` lanes of the chunk at `x` in row
+    /// `py` with colours `c` (and `cf` for a wide target).
+    fn shade(
+        &mut self,
+        t: &SetupTriangle,
+        py: usize,
+        px: usize,
+        live: [bool; LANES],
+        c: &[[u8; LANES]; 4],
+        cf: &[[f32; LANES]; 4],
+    ) {
         let src = if self.target.wide.is_some() {
-            ChunkColors::ReadyWide(&c, &cf)
+            ChunkColors::ReadyWide(c, cf)
         } else {
-            ChunkColors::Ready(&c)
+            ChunkColors::Ready(c)
         };
         let (p, fb, st) = (self.plan, &mut self.target, &mut *self.stats);
         // The z plane is constant, so fused and unfused evaluation agree.

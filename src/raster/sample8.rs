@@ -10,6 +10,9 @@
 //!   ([`crate::texture::cube_avx2::Cube8`], MuJoCo's skybox): both rows at once, as the
 //!   per-pixel LOD reads each quad's two rows; the quads it leaves (a tap across a face
 //!   edge, a coordinate that is not finite) are sampled here by the quad sampler;
+//! - a 3D texture on llvmpipe's 8-bit path without a LOD
+//!   ([`crate::texture::volume8::Vol8`]); the quads it leaves (a coordinate that is NaN or
+//!   of magnitude 2^30 texels or more) are sampled here by the quad sampler;
 //! - any other 2D texture on llvmpipe's float path (GL_CLAMP, CLAMP_TO_BORDER,
 //!   MIRRORED_REPEAT wraps, non-power-of-two REPEAT beside them, sRGB and signed texels)
 //!   without anisotropy ([`crate::texture::soa_avx2::Soa8`]): both rows at once, each
@@ -132,6 +135,11 @@ unsafe fn rows_body(
         let [t0, t1] = texels;
         // SAFETY: forwarded from the caller.
         return Some(unsafe { cube.rows(s, t, r, live, [&mut t0[k], &mut t1[k]]) });
+    }
+    if let (Some(r), Some(vol)) = (r, crate::texture::volume8::Vol8::of(u)) {
+        let [t0, t1] = texels;
+        // SAFETY: forwarded from the caller.
+        return Some(unsafe { vol.rows(s, t, r, live, [&mut t0[k], &mut t1[k]]) });
     }
     if let (None, Some(soa)) = (r, Soa8::of(u)) {
         let [t0, t1] = texels;

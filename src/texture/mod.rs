@@ -75,6 +75,8 @@ pub mod srgb;
 pub mod unit;
 pub mod upload;
 pub mod volume;
+#[cfg(target_arch = "x86_64")]
+pub mod volume8;
 pub mod wrap;
 
 use crate::pipe::MAX_TEXTURE_UNITS;

@@ -127,6 +127,35 @@ impl Layout {
                 let mut v = Vec::with_capacity(n);
                 let comps = self.comps;
                 let ty = self.ty;
+                let unorm8 = Ty::Plain {
+                    size: 1,
+                    signed: false,
+                    float: false,
+                };
+                if ty == unorm8 && bpp == comps.len() {
+                    // The common bytes, read a row slice at a time (the values of
+                    // `color_value`).
+                    for y in 0..h {
+                        let row = &bytes[start + y * stride..][..w * bpp];
+                        v.extend(row.chunks_exact(bpp).map(|px| {
+                            let mut c = [0.0, 0.0, 0.0, 1.0];
+                            for (&ch, &b) in comps.iter().zip(px) {
+                                let f = b as f32 * (1.0 / 255.0);
+                                if ch == 4 {
+                                    c[..3].fill(f);
+                                } else {
+                                    c[ch] = f;
+                                }
+                            }
+                            c
+                        }));
+                    }
+                    return Some(Image {
+                        w,
+                        h,
+                        pixels: Pixels::Color(v),
+                    });
+                }
                 self.each(bytes, ps, w, h, start, stride, bpp, |vals, _| {
                     let mut c = [0.0, 0.0, 0.0, 1.0];
                     for (k, &ch) in comps.iter().enumerate() {
