@@ -14,6 +14,11 @@
 //! reference with the texture's function (1.0 or 0.0) and filters the comparisons with the
 //! lerps `w·(b − a) + a`, fused exactly when the unit's lerps are (`UnitPlan::fma`).
 //!
+//! With NEAREST it prefetches the texels of the next chunk of the row (the lanes'
+//! coordinates extrapolated by 8 pixels from the first and last lane): a large shadow map
+//! (MuJoCo's 4096² is 64 MiB, written back by the depth pass just before) misses the
+//! caches at nearly every lane, and the walk reached the gather with nothing in flight.
+//!
 //! It declines (returns `false`, and the caller samples with the scalar code) when a live
 //! lane's scaled coordinate is not below 2^30 in magnitude or is NaN, or its reference is
 //! NaN, where the float → int conversions or the clamp of the two paths could differ.
@@ -134,6 +139,14 @@ impl<'a> Shadow8<'a> {
                 let r1 = self.lerp(wx, self.pass(rc, x0, y1), self.pass(rc, x1, y1));
                 self.lerp(wy, r0, r1)
             } else {
+                // the next chunk's texels, extrapolated along the row: a large shadow map
+                // misses the caches at nearly every lane, and the gather of this row
+                // waited on memory without it
+                let (ns, nt) = (ahead(us), ahead(ut));
+                self.prefetch(
+                    nearest(ns, w, self.repeat[0]),
+                    nearest(nt, h, self.repeat[1]),
+                );
                 self.pass(
                     rc,
                     nearest(us, w, self.repeat[0]),
@@ -160,6 +173,21 @@ impl<'a> Shadow8<'a> {
             let z = I32x8::gather(self.img.texels.as_ptr() as *const i32, i);
             let d = z.to_f32().mul(F32x8::splat(self.scale));
             self.compare(rc, d).and(F32x8::splat(1.0))
+        }
+    }
+
+    /// Prefetches the texels at `x`, `y` (inside the image): a hint, no value changes.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    unsafe fn prefetch(&self, x: I32x8, y: I32x8) {
+        // SAFETY: forwarded from the caller.
+        let i = unsafe { y.mullo(I32x8::splat(self.img.width as i32)).add(x) };
+        let p = self.img.texels.as_ptr();
+        for k in i.to_array() {
+            // a prefetch never faults, and `k` is inside the image anyway
+            crate::simd::prefetch(p.wrapping_add(k as usize));
         }
     }
 
@@ -191,6 +219,19 @@ impl<'a> Shadow8<'a> {
             w.mul(b.sub(a)).add(a)
         }
     }
+}
+
+/// The scaled coordinates of the next chunk's lanes (8 pixels to the right), extrapolated
+/// from this row's first and last lanes; only an address to prefetch, so a lane that is not
+/// live (any value) costs at most a useless prefetch.
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+unsafe fn ahead(u: F32x8) -> F32x8 {
+    let a = u.to_array();
+    // SAFETY: forwarded from the caller.
+    unsafe { u.add(F32x8::splat((a[7] - a[0]) * (8.0 / 7.0))) }
 }
 
 /// `wrap::soa_nearest` of the scaled coordinate `u = s·size` (|u| < 2^30 or the lane is
