@@ -208,7 +208,7 @@ pub unsafe fn shade_chunk_ms8<
             .add(F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]))
             .add(F32x8::splat(0.5));
         let fy = F32x8::splat(py as f32 + 0.5);
-        let px = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
+        let (px, _) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         let mut live = I32x8::splat(i32::from(any)).and(lane_bits).cmpeq(lane_bits);
         if let Some((func, reference)) = plan.alpha {
             let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
