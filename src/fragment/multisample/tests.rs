@@ -101,7 +101,7 @@ fn lanes<M: Madd, const PERSP: bool>(
 #[test]
 fn colors8_chunks_match_the_lane_path() {
     let isa = crate::cpu::isa();
-    if !isa.avx2() || !std::arch::is_x86_feature_detected!("fma") {
+    if !isa.avx2() || !crate::cpu::has_fma_instructions() {
         return;
     }
     let mut next = crate::test_rng::xorshift32(0x6d73_6138);
