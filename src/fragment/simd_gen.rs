@@ -34,7 +34,7 @@ use crate::texture::env::vec8::{Inputs8, Vec4};
 use crate::texture::UnitPlan;
 
 /// Whether [`shade_row`] covers this plan and target: an 8-bit colour format stored as
-/// RGBA8 unchanged without a logic op, or a wide buffer (stored by
+/// RGBA8 unchanged (blended or logic-opped), or a wide buffer (stored by
 /// [`super::simd_wide`]); no sRGB writes, no antialiasing coverage and no one-pass
 /// multisampling (those keep the general span shader).
 pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
@@ -42,11 +42,10 @@ pub fn plan_ok(plan: &FragPlan, fb: &Target<'_>) -> bool {
         && plan.ms.is_none()
         && !plan.srgb
         && (fb.wide.is_some()
-            || (plan.logic.is_none()
-                && matches!(
-                    fb.format,
-                    ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
-                )))
+            || matches!(
+                fb.format,
+                ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
+            ))
 }
 
 /// What [`shade_row`] needs of the plan and triangle, worked out once per triangle.
@@ -274,19 +273,15 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
     // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; loads and
     // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
     unsafe {
-        let mut bits = 0u32;
-        for (i, &l) in live.iter().enumerate() {
-            bits |= u32::from(l) << i;
-        }
-        stats.fragments += u64::from(bits.count_ones());
-        let mut live_v = mask_of(bits);
+        let mut live_v = row_mask(live, stats);
         let fx = F32x8::splat(x as f32).add(lanes_f());
         let fy = F32x8::splat(py as f32);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         if let Some((func, reference)) = plan.alpha {
             let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
             let kept = live_v.and(ok);
-            stats.alpha_failed += u64::from(bits.count_ones() - kept.movemask().count_ones());
+            let (before, after) = (live_v.movemask(), kept.movemask());
+            stats.alpha_failed += u64::from(before.count_ones() - after.count_ones());
             live_v = kept;
         }
         let idx = (py - fb.y0) * w + x;
@@ -294,6 +289,164 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
         let sp = g.stencil.as_ref();
         let pass =
             stencil_depth8::<FMA, DEPTH>(t, plan, sp, st, dp, (idx, n), (fx, fy), live_v, stats);
+        write_row::<FMA>(plan, g, fb, idx, n, pass, px, pf, stats);
+    }
+}
+
+/// Whether [`test_row`] may run a row's stencil and depth tests before its colours: no
+/// alpha test (the only per-fragment kill of fixed function; nothing after the tests
+/// reads their outcome but the colour write), and a test that can fail. Then sampling and
+/// shading only the lanes that pass leaves the same bytes and counts, as llvmpipe's
+/// early depth test does.
+#[inline(always)]
+pub fn early_tests(plan: &FragPlan, g: &GenPlan, depth: bool) -> bool {
+    plan.alpha.is_none() && (depth || g.stencil.is_some())
+}
+
+/// The first half of [`shade_row`] for a plan where [`early_tests`] holds: counts the
+/// `live` fragments of the 8 pixels from `x` in row `py`, runs the stencil and depth
+/// tests with their updates, and returns the lanes that pass; [`shade_tested_row`]
+/// then shades and stores those.
+///
+/// # Safety
+/// As [`shade_row`].
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn test_row<const FMA: bool, const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: &[bool; LANES],
+    stats: &mut Stats,
+) -> I32x8 {
+    let w = fb.width;
+    let n = LANES.min(w - x);
+    // SAFETY: forwarded from the caller; the tests touch live lanes only, inside the row.
+    unsafe {
+        let live_v = row_mask(live, stats);
+        let fx = F32x8::splat(x as f32).add(lanes_f());
+        let fy = F32x8::splat(py as f32);
+        let idx = (py - fb.y0) * w + x;
+        let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
+        stencil_depth8::<FMA, DEPTH>(
+            t,
+            plan,
+            g.stencil.as_ref(),
+            st,
+            dp,
+            (idx, n),
+            (fx, fy),
+            live_v,
+            stats,
+        )
+    }
+}
+
+/// The second half of [`shade_row`] after [`test_row`]: the colours of the lanes of
+/// `pass` (units sampled into `tex` for at least those lanes), blended and stored.
+///
+/// # Safety
+/// As [`shade_row`]; `pass` is what [`test_row`] returned for this row.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn shade_tested_row<const FMA: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    units: &[UnitPlan<'_>],
+    tex: &TexLanes,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    pass: I32x8,
+    oow: F32x8,
+    stats: &mut Stats,
+) {
+    let w = fb.width;
+    let n = LANES.min(w - x);
+    // SAFETY: forwarded from the caller; the store touches the lanes of `pass` only.
+    unsafe {
+        if g.mask == 0 || pass.movemask() == 0 {
+            return;
+        }
+        let fx = F32x8::splat(x as f32).add(lanes_f());
+        let fy = F32x8::splat(py as f32);
+        let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
+        write_row::<FMA>(plan, g, fb, (py - fb.y0) * w + x, n, pass, px, pf, stats);
+    }
+}
+
+/// The `live` lanes as a mask, counted as fragments.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn row_mask(live: &[bool; LANES], stats: &mut Stats) -> I32x8 {
+    let mut bits = 0u32;
+    for (i, &l) in live.iter().enumerate() {
+        bits |= u32::from(l) << i;
+    }
+    stats.fragments += u64::from(bits.count_ones());
+    // SAFETY: the caller's AVX2 context.
+    unsafe { mask_of(bits) }
+}
+
+/// The logic op `op` of packed RGBA8 sources `s` and destinations `d`, bit by bit (so
+/// channel by channel, as [`crate::pipe::LogicOp::apply`]).
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn logic8(op: crate::pipe::LogicOp, s: I32x8, d: I32x8) -> I32x8 {
+    use crate::pipe::LogicOp as L;
+    // SAFETY: the caller's AVX2 context.
+    unsafe {
+        let ones = I32x8::splat(-1);
+        match op {
+            L::Clear => I32x8::zero(),
+            L::And => s.and(d),
+            L::AndReverse => s.and(d.xor(ones)),
+            L::Copy => s,
+            L::AndInverted => s.xor(ones).and(d),
+            L::Noop => d,
+            L::Xor => s.xor(d),
+            L::Or => s.or(d),
+            L::Nor => s.or(d).xor(ones),
+            L::Equiv => s.xor(d).xor(ones),
+            L::Invert => d.xor(ones),
+            L::OrReverse => s.or(d.xor(ones)),
+            L::CopyInverted => s.xor(ones),
+            L::OrInverted => s.xor(ones).or(d),
+            L::Nand => s.and(d).xor(ones),
+            L::Set => ones,
+        }
+    }
+}
+
+/// Blends (or logic-ops) and stores the lanes of `pass` of the 8 pixels at `idx` (`n` inside the row)
+/// with the packed colours `px` (8-bit targets) or the float ones `pf` (wide targets).
+///
+/// # Safety
+/// AVX2 context (FMA when a wide store fuses); the lanes of `pass` lie in
+/// `idx..idx + n`, inside the target's rows.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn write_row<const FMA: bool>(
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    idx: usize,
+    n: usize,
+    pass: I32x8,
+    px: I32x8,
+    pf: Vec4,
+    stats: &mut Stats,
+) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
         let passed = pass.movemask();
         if g.mask == 0 || passed == 0 {
             return;
@@ -305,7 +458,7 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
         let cptr = fb.color.as_mut_ptr().add(idx) as *mut i32;
         let full = g.mask == -1;
         let mut out = px;
-        if plan.blend.is_some() || !full {
+        if plan.blend.is_some() || plan.logic.is_some() || !full {
             let dst = I32x8::maskload(cptr as *const i32, pass);
             if let Some(b) = &plan.blend {
                 stats.color_reads += n as u64;
@@ -314,6 +467,9 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
                 } else {
                     blend8(b, px, dst)
                 };
+            } else if let Some(op) = plan.logic {
+                stats.color_reads += n as u64;
+                out = logic8(op, px, dst);
             }
             if !full {
                 let m = I32x8::splat(g.mask);

@@ -331,17 +331,52 @@ pub(super) unsafe fn chunks_general<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    use crate::fragment::simd_gen::{shade_row, GenPlan};
+    use crate::fragment::simd_gen::{early_tests, shade_row, shade_tested_row, test_row, GenPlan};
     use crate::fragment::span::TexLanes;
     use crate::pipe::MAX_TEXTURE_UNITS;
+    use crate::simd::I32x8;
     let g = GenPlan::new(plan, t, units);
+    let early = early_tests(plan, &g, DEPTH);
     // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
-    for c in chunks {
+    for mut c in chunks {
         // The same columns of the chunk rows two rows down, reached after this pair's span:
         // the depth and colour loads of the floor's rows waited on the cache without this.
         for py in c.qy + 2..c.qy + 4 {
             super::prefetch_row(fb, py, c.x, c.x + LANES as i64 - 1, DEPTH, 1);
+        }
+        if early {
+            // The tests first; only the lanes that pass are sampled and shaded.
+            // SAFETY: the caller's AVX2 context.
+            let mut pass = [unsafe { I32x8::zero() }; 2];
+            let mut any = false;
+            for r in 0..2 {
+                if !c.live[r].iter().any(|&l| l) {
+                    continue;
+                }
+                let (py, x) = ((c.qy + r as i64) as usize, c.x as usize);
+                // SAFETY: forwarded from the caller; the live lanes lie inside row `py`.
+                pass[r] =
+                    unsafe { test_row::<FMA, DEPTH>(t, plan, &g, fb, py, x, &c.live[r], stats) };
+                let bits = pass[r].movemask();
+                c.live[r] = LIVE_MASKS[bits as usize & 0xFF];
+                any |= bits != 0;
+            }
+            if !any {
+                continue;
+            }
+            // SAFETY: forwarded from the caller.
+            let oow = unsafe { coords_and_sample::<M, FMA, PERSP, STR>(t, units, &c, &mut texels) };
+            for r in 0..2 {
+                let (py, x) = ((c.qy + r as i64) as usize, c.x as usize);
+                // SAFETY: forwarded from the caller; the passing lanes lie inside row `py`.
+                unsafe {
+                    shade_tested_row::<FMA, FLAT, PERSP>(
+                        t, plan, &g, units, &texels[r], fb, py, x, pass[r], oow[r], stats,
+                    );
+                }
+            }
+            continue;
         }
         // SAFETY: forwarded from the caller.
         let oow = unsafe { coords_and_sample::<M, FMA, PERSP, STR>(t, units, &c, &mut texels) };
