@@ -35,7 +35,7 @@ fn cached_columns_select_the_texels_of_per_pixel_evaluation() {
             h: 1 + (r() % 100) as usize,
             zoom: [zoom(&mut r), zoom(&mut r)],
             z: (r() % 1000) as f32 / 1000.0,
-            flip_t: r() % 2 == 0,
+            flip_t: r() & 1 == 0,
         };
         let x0 = (r() % 20) as i64;
         let y0 = (r() % 20) as i64;
@@ -44,7 +44,7 @@ fn cached_columns_select_the_texels_of_per_pixel_evaluation() {
             fb_h,
             region: [x0, y0, fb_w as i64 - x0, fb_h as i64 - y0],
             fma,
-            y_flip: r() % 2 == 0,
+            y_flip: r() & 1 == 0,
         };
         rasterize(&q, &d, |tri, py, x, texels| {
             let (ps, pt) = (&tri.vary[VARY_TEX], &tri.vary[VARY_TEX + 1]);
