@@ -21,7 +21,7 @@
 
 use super::rect::{rasterize, Dest, Fragments, Quad};
 use crate::fixed_function::fog::FogPlan;
-use crate::fragment::span::LANES;
+use crate::fragment::span::{unorm8, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Framebuffer;
 use crate::stats::Stats;
@@ -125,7 +125,29 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         target: fb.target(),
         stats: t.stats,
     };
+    let narrow = frags.target.wide.is_none();
     match src {
+        // The unorm8 conversion of each texel's colour, once per texel, not per pixel.
+        Source::Color(c) if narrow => {
+            let c8: Vec<[u8; 4]> = c.iter().map(|p| p.map(unorm8)).collect();
+            rasterize(q, &d, |t, py, x, texels| {
+                for (i, k) in texels.chunks(LANES).enumerate() {
+                    frags.put_chunk8(t, py, x + i * LANES, |l| k.get(l).map(|&k| c8[k]));
+                }
+            })
+        }
+        Source::Mask(m, c) if narrow => {
+            let c8 = c.map(unorm8);
+            rasterize(q, &d, |t, py, x, texels| {
+                for (i, k) in texels.chunks(LANES).enumerate() {
+                    if k.iter().any(|&k| m[k]) {
+                        frags.put_chunk8(t, py, x + i * LANES, |l| {
+                            k.get(l).and_then(|&k| m[k].then_some(c8))
+                        });
+                    }
+                }
+            })
+        }
         Source::Color(c) => rasterize(q, &d, |t, py, x, texels| {
             for (i, k) in texels.chunks(LANES).enumerate() {
                 frags.put_chunk(t, py, x + i * LANES, |l| k.get(l).map(|&k| c[k]));

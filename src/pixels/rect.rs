@@ -14,13 +14,19 @@
 //! [`setup_triangle`]), and `floor(s·w)` texel selection, so that fractional and negative
 //! zooms pick the texels llvmpipe picks. Each covered span is handed to a callback with
 //! its pixels' texels, and [`Fragments`] runs the per-fragment operations of
-//! [`shade_chunk`] on them eight pixels at a time.
+//! [`shade_chunk`] on them eight pixels at a time (compiled for AVX2 where the level has
+//! it).
+//!
+//! A triangle whose s plane does not vary along y and whose t plane does not vary along x
+//! (every quad the clipper leaves whole, and most of its pieces) selects the same texel
+//! column for a pixel column in every row: the columns are evaluated once per triangle,
+//! the row once per span. The other triangles evaluate both planes per pixel.
 
 use crate::fragment::span::{eval, shade_chunk, unorm8, ChunkColors, Fused, Madd, Unfused, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::clip::clip_triangle;
-use crate::geometry::setup::{setup_triangle, CullMode, SetupResult, SetupTriangle};
+use crate::geometry::setup::{setup_triangle, CullMode, Plane, SetupResult, SetupTriangle};
 use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_TEX};
 use crate::stats::Stats;
 
@@ -138,17 +144,61 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
     ];
     let (wf, hf) = (q.w as f32, q.h as f32);
     let mut texels = Vec::new();
+    let mut cols = Columns::default();
     quad_spans_clipped(&v, &vp, d.region, |tri, py, lo, hi| {
         let fy = py as f32;
+        let (ps, pt) = (&tri.vary[VARY_TEX], &tri.vary[VARY_TEX + 1]);
         texels.clear();
-        texels.extend((lo..=hi).map(|px| {
-            let fx = px as f32;
-            let s = eval::<M>(&tri.vary[VARY_TEX], fx, fy);
-            let t = eval::<M>(&tri.vary[VARY_TEX + 1], fx, fy);
-            texel_at(t, hf, q.h) * q.w + texel_at(s, wf, q.w)
-        }));
+        if ps.dady == 0.0 && pt.dadx == 0.0 {
+            // s varies along x only and t along y only (every unclipped quad): a
+            // `madd(0, f, v)` is `v` up to the sign of a zero, which selects the same
+            // texel, so each column's texel holds for every row and each row's for every
+            // column.
+            let (x0, x1) = (
+                tri.bbox[0].max(d.region[0]),
+                tri.bbox[2].min(d.region[2] - 1),
+            );
+            let cs = cols.of(ps, (x0, x1), |px| {
+                texel_at(eval::<M>(ps, px as f32, fy), wf, q.w)
+            });
+            let base = texel_at(eval::<M>(pt, lo as f32, fy), hf, q.h) * q.w;
+            let span = &cs[(lo - x0) as usize..=(hi - x0) as usize];
+            texels.extend(span.iter().map(|&c| base + c));
+        } else {
+            texels.extend((lo..=hi).map(|px| {
+                let fx = px as f32;
+                let s = eval::<M>(ps, fx, fy);
+                let t = eval::<M>(pt, fx, fy);
+                texel_at(t, hf, q.h) * q.w + texel_at(s, wf, q.w)
+            }));
+        }
         f(tri, py as usize, lo as usize, &texels);
     });
+}
+
+/// The texel column of each pixel column `x0..=x1` of a triangle whose s plane does not
+/// vary along y, kept while the plane and the range stay the same (the spans of one
+/// triangle, and of the fan's second triangle when it shares the plane).
+#[derive(Default)]
+struct Columns {
+    /// The plane's `a0`, `dadx` bits and the range the columns were computed for.
+    key: Option<(u32, u32, i64, i64)>,
+    /// `cols[x − x0]`.
+    cols: Vec<usize>,
+}
+
+impl Columns {
+    /// The columns of `range` under plane `p`, computed by `col(x)` when not cached.
+    #[inline(always)]
+    fn of(&mut self, p: &Plane, range: (i64, i64), col: impl Fn(i64) -> usize) -> &[usize] {
+        let key = Some((p.a0.to_bits(), p.dadx.to_bits(), range.0, range.1));
+        if self.key != key {
+            self.key = key;
+            self.cols.clear();
+            self.cols.extend((range.0..=range.1).map(col));
+        }
+        &self.cols
+    }
 }
 
 /// Calls `f` for each pixel (px, py) inside `region` (x0, y0, x1, y1, end exclusive) that
@@ -284,6 +334,32 @@ impl Fragments<'_, '_> {
         self.shade(tri, py, x, live, &c, &cf);
     }
 
+    /// [`Self::put_chunk`] with the colours already converted to unorm8, for a target that
+    /// is not wide (whose conversion that is: [`unorm8`] of the shader colour).
+    pub fn put_chunk8(
+        &mut self,
+        tri: &SetupTriangle,
+        py: usize,
+        x: usize,
+        color: impl Fn(usize) -> Option<[u8; 4]>,
+    ) {
+        debug_assert!(self.target.wide.is_none());
+        let mut c = [[0u8; LANES]; 4];
+        let mut live = [false; LANES];
+        for (l, live) in live.iter_mut().enumerate() {
+            if let Some(rgba) = color(l) {
+                *live = true;
+                for k in 0..4 {
+                    c[k][l] = rgba[k];
+                }
+            }
+        }
+        if !live.contains(&true) {
+            return;
+        }
+        self.shade(tri, py, x, live, &c, &[[0f32; LANES]; 4]);
+    }
+
     /// One fragment of shader colour `rgba` at `(px, py)`; its depth is the triangle's z
     /// plane (constant over a pixel rectangle) or `z` when given (depth images). An 8-bit
     /// target gets the colour converted to unorm8, a wide one converts it at its own
@@ -320,8 +396,46 @@ impl Fragments<'_, '_> {
     }
 
     /// Runs the per-fragment operations on the `live` lanes of the chunk at `x` in row
-    /// `py` with colours `c` (and `cf` for a wide target).
+    /// `py` with colours `c` (and `cf` for a wide target); compiled for AVX2 where the
+    /// level has it (the same operations: no multiply-add is fused in either).
     fn shade(
+        &mut self,
+        t: &SetupTriangle,
+        py: usize,
+        px: usize,
+        live: [bool; LANES],
+        c: &[[u8; LANES]; 4],
+        cf: &[[f32; LANES]; 4],
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if crate::cpu::isa().avx2() {
+            // SAFETY: the level is an AVX2 one, so the CPU has these features.
+            return unsafe { self.shade_avx2(t, py, px, live, c, cf) };
+        }
+        self.shade_any(t, py, px, live, c, cf)
+    }
+
+    /// [`Self::shade_any`] compiled for AVX2.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, POPCNT, BMI1, BMI2 and LZCNT.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
+    unsafe fn shade_avx2(
+        &mut self,
+        t: &SetupTriangle,
+        py: usize,
+        px: usize,
+        live: [bool; LANES],
+        c: &[[u8; LANES]; 4],
+        cf: &[[f32; LANES]; 4],
+    ) {
+        self.shade_any(t, py, px, live, c, cf)
+    }
+
+    /// [`Self::shade`]'s body.
+    #[inline(always)]
+    fn shade_any(
         &mut self,
         t: &SetupTriangle,
         py: usize,
@@ -344,3 +458,7 @@ impl Fragments<'_, '_> {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "rect_tests.rs"]
+mod tests;
