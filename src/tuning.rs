@@ -33,6 +33,8 @@ pub const MAX_BATCH: usize = 4096;
 pub const POOL_STAY_US: u64 = 2000;
 /// [`Tuning::pool_spin`]'s default, in microseconds.
 pub const POOL_SPIN_US: u64 = 500;
+/// [`Tuning::pool_yield`]'s default, in microseconds.
+pub const POOL_YIELD_US: u64 = 100;
 /// [`Tuning::geom_section`]'s default: triangles per section.
 pub const GEOM_SECTION: usize = 4096;
 /// [`Tuning::split_probe`]'s default: triangles.
@@ -126,6 +128,12 @@ pub struct Tuning {
     /// before it sleeps, given in microseconds, clamped to 0..=1 s. Default
     /// [`POOL_SPIN_US`] (500 µs).
     pub pool_spin: Duration,
+    /// `SOFTGL_POOL_YIELD_US`: after polling this long (a pool task for the next batch, the
+    /// draw thread for the batch in flight), a thread gives its core away between checks
+    /// (`sched_yield`), so that on a busy machine the polling costs others little CPU; on an
+    /// idle one the call returns at once. Given in microseconds, clamped to 0..=1 s (0:
+    /// from the start). Default [`POOL_YIELD_US`] (100 µs).
+    pub pool_yield: Duration,
     /// `SOFTGL_POOL_START`: whether a draw that will hand work to the pool starts a pool
     /// thread before it sets up its first triangles. Default on; exactly `0` turns it off.
     pub pool_start: bool,
@@ -191,6 +199,7 @@ impl Tuning {
             pair: int("SOFTGL_PAIR") != Some(0),
             pool_stay: micros("SOFTGL_POOL_STAY_US", POOL_STAY_US),
             pool_spin: micros("SOFTGL_POOL_SPIN_US", POOL_SPIN_US),
+            pool_yield: micros("SOFTGL_POOL_YIELD_US", POOL_YIELD_US),
             pool_start: not_zero("SOFTGL_POOL_START"),
             narrow: not_zero("SOFTGL_NARROW"),
             ms_prefetch: match int("SOFTGL_MS_PREFETCH") {
@@ -228,6 +237,7 @@ impl Tuning {
             pair,
             pool_stay,
             pool_spin,
+            pool_yield,
             pool_start,
             narrow,
             ms_prefetch,
@@ -255,6 +265,7 @@ impl Tuning {
             ("SOFTGL_PAIR", on(pair)),
             ("SOFTGL_POOL_STAY_US", pool_stay.as_micros().to_string()),
             ("SOFTGL_POOL_SPIN_US", pool_spin.as_micros().to_string()),
+            ("SOFTGL_POOL_YIELD_US", pool_yield.as_micros().to_string()),
             ("SOFTGL_POOL_START", on(pool_start)),
             ("SOFTGL_NARROW", on(narrow)),
             ("SOFTGL_MS_PREFETCH", (*ms_prefetch as u8).to_string()),
@@ -376,6 +387,7 @@ mod tests {
             (t.pool_stay.as_micros(), t.pool_spin.as_micros()),
             (2000, 500)
         );
+        assert_eq!(t.pool_yield.as_micros(), 100);
         assert_eq!((t.geom_section, t.split_probe), (4096, 1024));
         assert!(t.pool_help && t.pair && t.pool_start && t.narrow && t.setup8);
         assert_eq!(t.tex_path, TexPath::Fast);
@@ -396,6 +408,7 @@ mod tests {
             ("SOFTGL_PAIR", "0"),
             ("SOFTGL_POOL_STAY_US", "5000000"),
             ("SOFTGL_POOL_SPIN_US", "-3"),
+            ("SOFTGL_POOL_YIELD_US", "7"),
             ("SOFTGL_POOL_START", "00"),
             ("SOFTGL_NARROW", "0"),
             ("SOFTGL_GEOM_SECTION", "0"),
@@ -417,6 +430,7 @@ mod tests {
             (t.pool_stay.as_micros(), t.pool_spin.as_micros()),
             (1_000_000, 0)
         );
+        assert_eq!(t.pool_yield.as_micros(), 7);
         assert_eq!((t.geom_section, t.split_probe), (0, 1024));
         assert_eq!(t.tex_path, TexPath::General);
         assert!(t.stats, "an empty SOFTGL_STATS counts as on");

@@ -31,6 +31,11 @@ use super::shadow::{CompareFunc, DepthMode};
 use super::{ExtKind, Filter, Level, UnitPlan, Wrap};
 use crate::simd::{F32x8, I32x8};
 
+/// `f32(1/max)` of 16-bit depth texels.
+const SCALE_16: f32 = (1.0 / 65535.0f64) as f32;
+/// `f32(1/max)` of 24-bit depth texels.
+const SCALE_24: f32 = (1.0 / 16777215.0f64) as f32;
+
 /// A unit's shadow-map state when the 8-wide sampler covers it.
 #[derive(Clone, Copy)]
 pub struct Shadow8<'a> {
@@ -59,10 +64,14 @@ impl<'a> Shadow8<'a> {
         if p.needs_lod || p.dims != 2 || !matches!(p.ext.kind, ExtKind::Flat) {
             return None;
         }
-        // 16 and 24 bits convert as `float(z)·f32(1/max)` with z exact in f32
-        if d.bits != 16 && d.bits != 24 {
-            return None;
-        }
+        // 16 and 24 bits convert as `float(z)·f32(1/max)` with z exact in f32; the scales
+        // are `(1.0 / max as f64) as f32` (test `scales_are_the_divisions`), constants since
+        // this runs for every chunk
+        let scale = match d.bits {
+            16 => SCALE_16,
+            24 => SCALE_24,
+            _ => return None,
+        };
         // Without a LOD every pixel magnifies the base level (`select_levels` with
         // `Lod::MAG`).
         let img = p.image(p.first);
@@ -84,7 +93,7 @@ impl<'a> Shadow8<'a> {
             linear: p.mag_filter == Filter::Linear,
             func,
             mode: d.mode,
-            scale: (1.0 / ((1u64 << d.bits) - 1) as f64) as f32,
+            scale,
             repeat,
             fma: p.fma,
         })
@@ -405,6 +414,14 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    #[test]
+    fn scales_are_the_divisions() {
+        for (bits, scale) in [(16u32, SCALE_16), (24, SCALE_24)] {
+            let want = (1.0 / ((1u64 << bits) - 1) as f64) as f32;
+            assert_eq!(scale.to_bits(), want.to_bits(), "{bits} bits");
         }
     }
 

@@ -134,15 +134,7 @@ impl Job {
             if stay.is_zero() {
                 return;
             }
-            let until = Instant::now() + stay;
-            let mut spins = 0u32;
-            while !self.posted.load(Ordering::Acquire) {
-                std::hint::spin_loop();
-                spins = spins.wrapping_add(1);
-                if spins.is_multiple_of(64) && Instant::now() >= until {
-                    break;
-                }
-            }
+            poll(stay, || self.posted.load(Ordering::Acquire));
             let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
             match slot.next.take() {
                 Some(next) => {
@@ -161,19 +153,39 @@ impl Job {
     /// thread is finishing its last band), then sleeps.
     pub(super) fn wait_done(&self, spin: Duration) {
         if self.busy.load(Ordering::Acquire) && !spin.is_zero() {
-            let until = Instant::now() + spin;
-            let mut spins = 0u32;
-            while self.busy.load(Ordering::Acquire) {
-                std::hint::spin_loop();
-                spins = spins.wrapping_add(1);
-                if spins.is_multiple_of(64) && Instant::now() >= until {
-                    break;
-                }
-            }
+            poll(spin, || !self.busy.load(Ordering::Acquire));
         }
         let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
         while slot.busy {
             slot = self.done.wait(slot).unwrap_or_else(|e| e.into_inner());
+        }
+    }
+}
+
+/// Polls `ready` until it holds or `limit` has passed. Past
+/// [`crate::tuning::Tuning::pool_yield`] the thread yields its core between checks: on a
+/// busy machine (two cores shared with other processes, or with this process's own
+/// threads) the polling then costs the others little CPU, while on an idle one
+/// `sched_yield` returns at once and the thread sees `ready` as soon as before, without
+/// the wake-up a sleep would need.
+fn poll(limit: Duration, ready: impl Fn() -> bool) {
+    let start = Instant::now();
+    let yield_after = crate::tuning::tuning().pool_yield.min(limit);
+    let mut spins = 0u32;
+    let mut yielding = false;
+    while !ready() {
+        if yielding {
+            std::thread::yield_now();
+        } else {
+            std::hint::spin_loop();
+        }
+        spins = spins.wrapping_add(1);
+        if yielding || spins.is_multiple_of(64) {
+            let t = start.elapsed();
+            if t >= limit {
+                return;
+            }
+            yielding = t >= yield_after;
         }
     }
 }
