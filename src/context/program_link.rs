@@ -381,13 +381,14 @@ fn link_stage(shaders: &[Arc<hir::Program>], stage: Stage) -> Result<StageUse<'_
     Ok(StageUse { shaders, used })
 }
 
+/// A global variable of a stage: the first declaration, its initializer's value, and its
+/// use (`None`: unused; `Some(None)`: whole; `Some(Some(n))`: elements below `n`).
+type Global<'a> = (&'a hir::Var, Option<&'a Const>, Option<Option<u32>>);
+
 /// The global variables of one storage of a stage, first declaration of each name, with
 /// whether it is used and how.
-fn globals<'a>(
-    st: &'a StageUse<'_>,
-    keep: impl Fn(&hir::Var) -> bool,
-) -> Vec<(&'a hir::Var, Option<&'a Const>, Option<Option<u32>>)> {
-    let mut out: Vec<(&hir::Var, Option<&Const>, Option<Option<u32>>)> = Vec::new();
+fn globals<'a>(st: &'a StageUse<'_>, keep: impl Fn(&hir::Var) -> bool) -> Vec<Global<'a>> {
+    let mut out: Vec<Global<'a>> = Vec::new();
     for (i, s) in st.shaders.iter().enumerate() {
         let inits: HashMap<VarId, Option<&Const>> = s
             .globals
@@ -538,7 +539,7 @@ pub fn link(
             Storage::Uniform | Storage::Builtin(builtins::variables::Kind::Uniform)
         ) && v.block.is_none()
     };
-    let mut all: Vec<(&hir::Var, Option<&Const>, Option<Option<u32>>)> = vec![];
+    let mut all: Vec<Global> = vec![];
     for st in &stages {
         for (var, init, use_) in globals(st, is_uniform) {
             match all.iter_mut().find(|(v, ..)| v.name == var.name) {

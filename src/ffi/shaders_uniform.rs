@@ -47,8 +47,8 @@ fn scalars(location: GLint, shape: UniformShape, words: &[u32]) {
 /// `value` null or readable for `count` elements of the shape.
 unsafe fn vectors<T: Word>(location: GLint, count: GLsizei, shape: UniformShape, value: *const T) {
     with_ctx(|c| {
-        // SAFETY: `n` never exceeds `count` elements, the values the caller promises.
         c.set_uniform(location, count, shape, &|n| {
+            // SAFETY: `n` never exceeds `count` elements, the values the caller promises.
             unsafe { read_vec(value, n) }
                 .into_iter()
                 .map(Word::word)
