@@ -5,22 +5,11 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <GL/osmesa.h>
-#include "common.h"
+#define SGL_E_WIDTH 60
+#include "errcheck.h"
 
 #define W 128
 #define H 128
-
-static FILE *out;
-
-/* run a call and record the error it raised (and that one read clears it) */
-#define E(call)                                                                       \
-    do {                                                                              \
-        GLenum e1, e2;                                                                \
-        call;                                                                         \
-        e1 = glGetError();                                                            \
-        e2 = glGetError();                                                            \
-        sgl_text(out, "err", "%-60s -> 0x%04x then 0x%04x\n", #call, e1, e2);         \
-    } while (0)
 
 /* record the pending error (and that one read clears it) */
 static void rec(const char *label)

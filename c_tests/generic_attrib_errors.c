@@ -10,19 +10,8 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <GL/osmesa.h>
-#include "common.h"
+#include "errcheck.h"
 #include <math.h>
-
-static FILE *out;
-
-#define E(call)                                                                       \
-    do {                                                                              \
-        GLenum e1, e2;                                                                \
-        call;                                                                         \
-        e1 = glGetError();                                                            \
-        e2 = glGetError();                                                            \
-        sgl_text(out, "err", "%-70s -> 0x%04x then 0x%04x\n", #call, e1, e2);         \
-    } while (0)
 
 static const GLenum PNAMES[] = {
     GL_VERTEX_ATTRIB_ARRAY_ENABLED, GL_VERTEX_ATTRIB_ARRAY_SIZE,

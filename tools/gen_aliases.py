@@ -107,8 +107,12 @@ def render(aliases, defs):
     return "\n".join(lines)
 
 
-# glTexImage3DEXT takes `GLenum internalformat` where glTexImage3D takes `GLint`.
-OTHER_TYPES = {"glTexImage3DEXT"}
+# glTexImage3DEXT takes `GLenum internalformat` where glTexImage3D takes `GLint`;
+# glShaderSourceARB `const GLcharARB **` where glShaderSource takes `const GLchar *const *`.
+OTHER_TYPES = {"glTexImage3DEXT", "glShaderSourceARB"}
+# ARB_vertex_program's functions, not ARB_shader_objects' (same name as a GL 2.0 one
+# plus the suffix, different meaning).
+OTHER_FUNCTIONS = {"glGetProgramivARB", "glIsProgramARB"}
 
 
 def main():
@@ -135,7 +139,7 @@ def main():
                 if header_arity(name) not in (None, len(defs[core][2])):
                     break
                 # Same function, other parameter types (written by hand next to the core).
-                if name in OTHER_TYPES:
+                if name in OTHER_TYPES or name in OTHER_FUNCTIONS:
                     break
                 where = "gl" if re.search(r"\b%s\b" % name, gl_h) else "ext"
                 groups[where].append((name, core))

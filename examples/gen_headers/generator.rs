@@ -96,6 +96,9 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("arrays_ext.rs", Header::Glext),
     ("transform_ext.rs", Header::Glext),
     ("vertex_attrib.rs", Header::Glext),
+    ("shaders.rs", Header::Glext),
+    ("shaders_arb.rs", Header::Glext),
+    ("shaders_uniform.rs", Header::Glext),
     ("aliases_ext.rs", Header::Glext),
     ("osmesa.rs", Header::Osmesa),
 ];

@@ -261,6 +261,7 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         super::generic_attrib::GL_MAX_VERTEX_ATTRIBS => {
             i(&[super::arrays::MAX_VERTEX_ATTRIBS as i64])
         }
+        super::shader_objects::GL_CURRENT_PROGRAM => i(&[c.shaders.current as i64]),
         GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => i(&[16]),
         GL_MAX_NAME_STACK_DEPTH => i(&[64]),
         GL_MAX_LIST_NESTING => i(&[super::dlist::MAX_LIST_NESTING as i64]),

@@ -46,8 +46,10 @@ pub mod pixel_ops;
 pub mod pixel_state;
 pub mod pixel_transfer;
 pub mod polygon_cmds;
+pub mod program_link;
 pub mod queries;
 pub mod raster_state;
+pub mod shader_objects;
 pub mod share;
 pub mod state;
 pub mod state_setters;
@@ -62,6 +64,7 @@ pub mod texture_get;
 pub mod texture_gl;
 pub mod texture_params;
 pub mod texture_spec;
+pub mod uniforms;
 pub mod user_buffer;
 pub mod vertex_cmd;
 pub mod vertex_material;
@@ -180,6 +183,8 @@ pub struct Context {
     pub feedback: feedback::FeedbackState,
     /// Framebuffer and renderbuffer objects and their bindings.
     pub fbo: fbo::FboState,
+    /// GL 2.0 shader and program objects and the current program.
+    pub shaders: shader_objects::ShaderState,
     /// The last batch of a streamed glBegin/glEnd chunk, still drawn by the pool
     /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
     /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
@@ -255,6 +260,7 @@ impl Context {
             eval: Default::default(),
             feedback: Default::default(),
             fbo: Default::default(),
+            shaders: Default::default(),
             inflight: None,
         }
     }

@@ -1,5 +1,5 @@
 //! Objects that OSMesa contexts created with a `sharelist` share: texture objects, buffer
-//! objects, display lists, and (as in Mesa 22.3) framebuffer and renderbuffer objects
+//! objects, display lists, shader and program objects, and (as in Mesa 22.3) framebuffer and renderbuffer objects
 //! (GL's share group). The bindings stay each context's own.
 //!
 //! The tables live in one [`ShareGroup`] per group. A context that becomes current on a
@@ -28,6 +28,8 @@ pub struct SharedObjects {
     pub lists: super::dlist::ListTable,
     /// Framebuffer and renderbuffer objects and their names.
     pub fbo: super::fbo::FboTables,
+    /// Shader and program objects.
+    pub shaders: super::shader_objects::ShaderTable,
 }
 
 /// A share group: the tables, while no context of the group has them checked out.
@@ -44,6 +46,7 @@ impl ShareGroup {
             c.arrays.buffers = s.buffers;
             c.lists.put_table(s.lists);
             c.fbo.put_tables(s.fbo);
+            c.shaders.table = s.shaders;
             c.fbo_check_out();
         }
     }
@@ -59,6 +62,7 @@ impl ShareGroup {
                 buffers: std::mem::take(&mut c.arrays.buffers),
                 lists: c.lists.take_table(),
                 fbo: c.fbo.take_tables(),
+                shaders: std::mem::take(&mut c.shaders.table),
             });
         }
     }
