@@ -13,14 +13,7 @@
 static FILE *out;
 
 /* run a call and record the error it raised (and that one read clears it) */
-#define E(call)                                                                       \
-    do {                                                                              \
-        GLenum e1, e2;                                                                \
-        call;                                                                         \
-        e1 = glGetError();                                                            \
-        e2 = glGetError();                                                            \
-        sgl_text(out, "err", "%-60s -> 0x%04x then 0x%04x\n", #call, e1, e2);         \
-    } while (0)
+#define E(call) SGL_ERR(out, 60, #call, call)
 
 /* record the pending error (and that one read clears it) */
 static void rec(const char *label)

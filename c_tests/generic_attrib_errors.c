@@ -15,14 +15,7 @@
 
 static FILE *out;
 
-#define E(call)                                                                       \
-    do {                                                                              \
-        GLenum e1, e2;                                                                \
-        call;                                                                         \
-        e1 = glGetError();                                                            \
-        e2 = glGetError();                                                            \
-        sgl_text(out, "err", "%-70s -> 0x%04x then 0x%04x\n", #call, e1, e2);         \
-    } while (0)
+#define E(call) SGL_ERR(out, 70, #call, call)
 
 static const GLenum PNAMES[] = {
     GL_VERTEX_ATTRIB_ARRAY_ENABLED, GL_VERTEX_ATTRIB_ARRAY_SIZE,
