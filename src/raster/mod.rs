@@ -566,6 +566,42 @@ mod tests {
         }
     }
 
+    /// A vertex in the box at `(x, y)` of size `(sx, sy)` with depth, `w` (1 unless
+    /// `persp`) and the first four varyings from `unit`.
+    pub(super) fn vertex(
+        unit: &mut impl FnMut() -> f32,
+        [x, y, sx, sy]: [f32; 4],
+        persp: bool,
+    ) -> ClipVertex {
+        let mut p = ClipVertex {
+            win: [
+                x + unit() * sx,
+                y + unit() * sy,
+                unit(),
+                if persp { 0.2 + unit() } else { 1.0 },
+            ],
+            ..ClipVertex::default()
+        };
+        for i in 0..4 {
+            p.vary[i] = unit() * 1.2 - 0.1;
+        }
+        p
+    }
+
+    /// The triangle `v` set up with `nvary` varyings and no culling, unless it covers no
+    /// pixel centre.
+    pub(super) fn setup_of(v: [ClipVertex; 3], nvary: usize, flat: bool) -> Option<SetupTriangle> {
+        let mut t = SetupTriangle::default();
+        let cull = CullMode {
+            front: false,
+            back: false,
+            front_ccw: true,
+            top_left: false,
+        };
+        let r = setup_triangle_shaded([&v[0], &v[1], &v[2]], nvary, cull, None, flat, &mut t);
+        (r == SetupResult::Draw).then_some(t)
+    }
+
     #[test]
     fn narrow_blocks_match_spans_byte_for_byte() {
         if !crate::cpu::isa().avx2() {
@@ -583,31 +619,8 @@ mod tests {
             while tris.len() < 300 {
                 let (cx, cy) = (unit() * 41.0 - 2.0, unit() * 33.0 - 2.0);
                 let (sx, sy) = (0.5 + unit() * 4.5, 0.5 + unit() * 4.5);
-                let v: [ClipVertex; 3] = std::array::from_fn(|_| {
-                    let mut p = ClipVertex {
-                        win: [
-                            cx + unit() * sx,
-                            cy + unit() * sy,
-                            unit(),
-                            if persp { 0.2 + unit() } else { 1.0 },
-                        ],
-                        ..ClipVertex::default()
-                    };
-                    for i in 0..4 {
-                        p.vary[i] = unit() * 1.2 - 0.1;
-                    }
-                    p
-                });
-                let mut t = SetupTriangle::default();
-                let cull = CullMode {
-                    front: false,
-                    back: false,
-                    front_ccw: true,
-                    top_left: false,
-                };
-                let r =
-                    setup_triangle_shaded([&v[0], &v[1], &v[2]], 4, cull, None, plan.flat, &mut t);
-                if r == SetupResult::Draw {
+                let v = std::array::from_fn(|_| vertex(&mut unit, [cx, cy, sx, sy], persp));
+                if let Some(t) = setup_of(v, 4, plan.flat) {
                     narrow += usize::from(t.bbox[2] - t.bbox[0] < NARROW);
                     tris.push(t);
                 }

@@ -134,9 +134,10 @@ mod tests {
     use crate::fixed_function::fog::FogPlan;
     use crate::fragment::{FragPlan, StencilFacePlan, StencilPlan};
     use crate::framebuffer::{ColorFormat, DepthFormat, Framebuffer};
-    use crate::geometry::setup::{setup_triangle_shaded, CullMode, SetupResult, SetupTriangle};
-    use crate::geometry::{ClipVertex, VARY_FOG, VARY_SPEC};
+    use crate::geometry::setup::SetupTriangle;
+    use crate::geometry::{VARY_FOG, VARY_SPEC};
     use crate::pipe::{CompareFunc, FogMode, StencilOp};
+    use crate::raster::tests::{setup_of, vertex};
     use crate::raster::variants::{with_flags, Avx2, Base, Walks};
     use crate::stats::Stats;
 
@@ -234,34 +235,15 @@ mod tests {
             while tris.len() < 60 {
                 let (cx, cy) = (unit() * 49.0 - 4.0, unit() * 35.0 - 4.0);
                 let s = 2.0 + unit() * 20.0;
-                let v: [ClipVertex; 3] = std::array::from_fn(|_| {
-                    let mut p = ClipVertex {
-                        win: [
-                            cx + unit() * s,
-                            cy + unit() * s,
-                            unit(),
-                            if persp { 0.2 + unit() } else { 1.0 },
-                        ],
-                        ..ClipVertex::default()
-                    };
-                    for i in (0..4).chain(VARY_SPEC..VARY_SPEC + 4) {
+                let v = std::array::from_fn(|_| {
+                    let mut p = vertex(&mut unit, [cx, cy, s, s], persp);
+                    for i in VARY_SPEC..VARY_SPEC + 4 {
                         p.vary[i] = unit() * 1.2 - 0.1;
                     }
                     p.vary[VARY_FOG] = unit() * 1.5;
                     p
                 });
-                let mut t = SetupTriangle::default();
-                let cull = CullMode {
-                    front: false,
-                    back: false,
-                    front_ccw: true,
-                    top_left: false,
-                };
-                let r =
-                    setup_triangle_shaded([&v[0], &v[1], &v[2]], 9, cull, None, plan.flat, &mut t);
-                if r == SetupResult::Draw {
-                    tris.push(t);
-                }
+                tris.extend(setup_of(v, 9, plan.flat));
             }
             let lanes = draw::<Base>(&plan, &tris);
             let spans8 = draw::<Avx2>(&plan, &tris);
