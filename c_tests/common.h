@@ -88,6 +88,18 @@ static inline void sgl_text(FILE *f, const char *name, const char *fmt, ...)
     fputc('\n', f);
 }
 
+/* Run `call` and record in the text block "err" of `f` the error it raised and that one
+ * read clears it, labelled `text` (the call as written, `#call` in the scene's own macro,
+ * so that its GL names stay unexpanded) padded to `width` columns. */
+#define SGL_ERR(f, width, text, call)                                                 \
+    do {                                                                              \
+        GLenum sgl_e1, sgl_e2;                                                        \
+        call;                                                                         \
+        sgl_e1 = glGetError();                                                        \
+        sgl_e2 = glGetError();                                                        \
+        sgl_text(f, "err", "%-*s -> 0x%04x then 0x%04x\n", width, text, sgl_e1, sgl_e2); \
+    } while (0)
+
 /* Close the output file; exits non-zero if anything failed to be written. */
 static inline void sgl_close(FILE *f)
 {

@@ -16,14 +16,7 @@
 static FILE *out;
 
 /* run a call and record the error it raised (and that one read clears it) */
-#define E(call)                                                                       \
-    do {                                                                              \
-        GLenum e1, e2;                                                                \
-        call;                                                                         \
-        e1 = glGetError();                                                            \
-        e2 = glGetError();                                                            \
-        sgl_text(out, "err", "%-*s -> 0x%04x then 0x%04x\n", SGL_E_WIDTH, #call, e1, e2); \
-    } while (0)
+#define E(call) SGL_ERR(out, SGL_E_WIDTH, #call, call)
 
 /* strcmp for qsort over rows of char. */
 static inline int by_name(const void *a, const void *b)

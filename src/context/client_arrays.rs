@@ -132,33 +132,49 @@ impl Context {
     }
 
     /// gl*Pointer: validates as Mesa does (the stride, the type and the size, in that
-    /// order) and stores the pointer (an offset while a buffer is bound to
-    /// GL_ARRAY_BUFFER). Mesa 22.3 still stores a negative stride after reporting it; we
-    /// keep the old state, as GL requires.
+    /// order) and stores the pointer ([`Context::store_array_pointer`]). Mesa 22.3 still
+    /// stores a negative stride after reporting it; we keep the old state, as GL requires.
     pub(crate) fn set_array_pointer(
         &mut self,
         w: ClientArray,
-        (size, ty, stride): (GLint, GLenum, GLsizei),
+        format: (GLint, GLenum, GLsizei),
         ptr: usize,
     ) -> GlResult<()> {
+        let checks = (|t: DataType| w.accepts(t), w.accepts_size(format.0));
+        self.store_array_pointer(|c| c.client_array_mut(w), format, ptr, checks)?;
+        Ok(())
+    }
+
+    /// The checks and the store of gl*Pointer and glVertexAttribPointer: GL_INVALID_VALUE
+    /// for a negative stride, GL_INVALID_ENUM for a type not a [`DataType`] or one that
+    /// `accepts` refuses, GL_INVALID_VALUE when not `size_ok` (Mesa's order); then the
+    /// size, type, stride and pointer (an offset while a buffer is bound to
+    /// GL_ARRAY_BUFFER) stored into the array `pick` gives, which is returned.
+    pub(crate) fn store_array_pointer(
+        &mut self,
+        pick: impl FnOnce(&mut Self) -> &mut ArrayPointer,
+        (size, ty, stride): (GLint, GLenum, GLsizei),
+        ptr: usize,
+        (accepts, size_ok): (impl Fn(DataType) -> bool, bool),
+    ) -> GlResult<&mut ArrayPointer> {
         if stride < 0 {
             return Err(GlError::InvalidValue);
         }
         let t = DataType::from_gl(ty)?;
-        if !w.accepts(t) {
+        if !accepts(t) {
             return Err(GlError::InvalidEnum);
         }
-        if !w.accepts_size(size) {
+        if !size_ok {
             return Err(GlError::InvalidValue);
         }
         let buffer = self.arrays.array_buffer;
-        let a = self.client_array_mut(w);
+        let a = pick(self);
         a.size = size;
         a.ty = t;
         a.stride = stride;
         a.ptr = ptr;
         a.buffer = buffer;
-        Ok(())
+        Ok(a)
     }
 
     /// glEnableClientState/glDisableClientState.

@@ -82,7 +82,8 @@ impl Context {
     }
 
     /// glVertexAttribPointer: `ptr` is an offset into the GL_ARRAY_BUFFER while one is
-    /// bound. Mesa's checks in its order: the index, the stride, the type, the size.
+    /// bound. Mesa's checks in its order: the index, then those of
+    /// [`Context::store_array_pointer`] (the stride, the type, the size).
     pub(crate) fn vertex_attrib_pointer(
         &mut self,
         index: u32,
@@ -90,21 +91,10 @@ impl Context {
         ptr: usize,
     ) -> GlResult<()> {
         let i = slot(index)?;
-        if stride < 0 {
-            return Err(GlError::InvalidValue);
-        }
-        let ty = DataType::from_gl(ty)?;
-        if !(1..=4).contains(&size) {
-            return Err(GlError::InvalidValue);
-        }
-        let buffer = self.arrays.array_buffer;
-        let a = &mut self.arrays.generic[i];
-        a.size = size;
-        a.ty = ty;
+        let checks = (|_: DataType| true, (1..=4).contains(&size));
+        let format = (size, ty, stride);
+        let a = self.store_array_pointer(|c| &mut c.arrays.generic[i], format, ptr, checks)?;
         a.normalized = normalized;
-        a.stride = stride;
-        a.ptr = ptr;
-        a.buffer = buffer;
         Ok(())
     }
 

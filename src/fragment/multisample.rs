@@ -21,9 +21,9 @@
 #![allow(clippy::needless_range_loop)]
 
 #[cfg(target_arch = "x86_64")]
-use super::simd::{blend_is_over, depth_pass};
+use super::simd::blend_is_over;
 #[cfg(target_arch = "x86_64")]
-use super::simd_gen::{colors8, GenPlan};
+use super::simd_gen::{alpha_test8, colors8, GenPlan};
 #[cfg(target_arch = "x86_64")]
 use super::simd_plane::{stencil_depth8, write8_in, Bits8};
 #[cfg(target_arch = "x86_64")]
@@ -210,12 +210,7 @@ pub unsafe fn shade_chunk_ms8<
         let fy = F32x8::splat(py as f32 + 0.5);
         let (px, _) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         let mut live = I32x8::splat(i32::from(any)).and(lane_bits).cmpeq(lane_bits);
-        if let Some((func, reference)) = plan.alpha {
-            let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
-            let kept = live.and(ok);
-            stats.alpha_failed += u64::from(any.count_ones() - kept.movemask().count_ones());
-            live = kept;
-        }
+        live = alpha_test8(plan, px, live, stats);
         let alpha = [0f32; LANES];
         let at = MsChunk {
             row,

@@ -13,8 +13,9 @@
 //! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`], the stencil
 //! test and its updates as [`super::simd_plane`] (8 lanes, the multisample shader's).
 //! A wide target (16-bit or float buffer) takes the float colours before the 8-bit
-//! conversion to its own 8-lane store ([`super::simd_wide`]); the walks of untextured
-//! triangles into one come here too (`raster::wide_rows`).
+//! conversion to its own 8-lane store ([`super::simd_wide`]). The walk of untextured
+//! triangles the AVX2 span shader leaves comes here too, with no units
+//! (`raster::untextured`).
 
 #![cfg(target_arch = "x86_64")]
 // Lane loops index several arrays in step.
@@ -277,13 +278,7 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
         let fx = F32x8::splat(x as f32).add(lanes_f());
         let fy = F32x8::splat(py as f32);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
-        if let Some((func, reference)) = plan.alpha {
-            let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
-            let kept = live_v.and(ok);
-            let (before, after) = (live_v.movemask(), kept.movemask());
-            stats.alpha_failed += u64::from(before.count_ones() - after.count_ones());
-            live_v = kept;
-        }
+        live_v = alpha_test8(plan, px, live_v, stats);
         let idx = (py - fb.y0) * w + x;
         let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
         let sp = g.stencil.as_ref();
@@ -479,6 +474,26 @@ unsafe fn write_row<const FMA: bool>(
         store_masked(cptr, fb.color.len().saturating_sub(idx), pass, out);
         stats.color_writes += u64::from(passed.count_ones());
     }
+}
+
+/// The alpha test of the packed colours `px` on 8 lanes: the lanes of `live` whose alpha
+/// byte passes the plan's test (all of them without one), the others counted as failed.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+pub unsafe fn alpha_test8(plan: &FragPlan, px: I32x8, live: I32x8, stats: &mut Stats) -> I32x8 {
+    let Some((func, reference)) = plan.alpha else {
+        return live;
+    };
+    // SAFETY: the caller's AVX2 context.
+    let kept = unsafe {
+        let ok = depth_pass(func, px.shr::<24>(), I32x8::splat(i32::from(reference)));
+        live.and(ok)
+    };
+    let failed = live.movemask().count_ones() - kept.movemask().count_ones();
+    stats.alpha_failed += u64::from(failed);
+    kept
 }
 
 /// Stores the lanes of `pass` of the 8 pixels at `idx` (`n` inside the row) of wide

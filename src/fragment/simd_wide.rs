@@ -20,7 +20,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::simd::sat;
-use super::wide::{complement, positive, WideDst};
+use super::wide::{blend_factor, complement, positive, WideDst};
 use super::{BlendPlan, FragPlan};
 use crate::framebuffer::wide::unorm16;
 use crate::framebuffer::WideKind;
@@ -335,27 +335,8 @@ unsafe fn factor16(
     ch: usize,
 ) -> I32x8 {
     // SAFETY: the caller's AVX2 context.
-    unsafe {
-        let one = I32x8::splat(65535);
-        match f {
-            BlendFactor::Zero => I32x8::zero(),
-            BlendFactor::One => one,
-            BlendFactor::SrcColor => s[ch],
-            BlendFactor::OneMinusSrcColor => one.sub(s[ch]),
-            BlendFactor::DstColor => d[ch],
-            BlendFactor::OneMinusDstColor => one.sub(d[ch]),
-            BlendFactor::SrcAlpha => s[3],
-            BlendFactor::OneMinusSrcAlpha => one.sub(s[3]),
-            BlendFactor::DstAlpha => d[3],
-            BlendFactor::OneMinusDstAlpha => one.sub(d[3]),
-            BlendFactor::ConstantColor => k[ch],
-            BlendFactor::OneMinusConstantColor => one.sub(k[ch]),
-            BlendFactor::ConstantAlpha => k[3],
-            BlendFactor::OneMinusConstantAlpha => one.sub(k[3]),
-            BlendFactor::SrcAlphaSaturate if ch == 3 => one,
-            BlendFactor::SrcAlphaSaturate => s[3].min(one.sub(d[3])),
-        }
-    }
+    let (zero, one) = unsafe { (I32x8::zero(), I32x8::splat(65535)) };
+    blend_factor!(f, s, d, k, ch; zero, one, I32x8::sub, I32x8::min)
 }
 
 /// Blends in 16-bit fixed point as [`super::wide`]'s `blend` does for unorm16.
@@ -403,27 +384,8 @@ unsafe fn blend16(p: &BlendPlan, kf: [f32; 4], s: Vec4, d: Vec4) -> Vec4 {
 #[inline(always)]
 unsafe fn factor_f(f: BlendFactor, s: &Vec4, d: &Vec4, k: &Vec4, ch: usize) -> F32x8 {
     // SAFETY: the caller's AVX2 context.
-    unsafe {
-        let one = F32x8::splat(1.0);
-        match f {
-            BlendFactor::Zero => F32x8::zero(),
-            BlendFactor::One => one,
-            BlendFactor::SrcColor => s[ch],
-            BlendFactor::OneMinusSrcColor => one.sub(s[ch]),
-            BlendFactor::DstColor => d[ch],
-            BlendFactor::OneMinusDstColor => one.sub(d[ch]),
-            BlendFactor::SrcAlpha => s[3],
-            BlendFactor::OneMinusSrcAlpha => one.sub(s[3]),
-            BlendFactor::DstAlpha => d[3],
-            BlendFactor::OneMinusDstAlpha => one.sub(d[3]),
-            BlendFactor::ConstantColor => k[ch],
-            BlendFactor::OneMinusConstantColor => one.sub(k[ch]),
-            BlendFactor::ConstantAlpha => k[3],
-            BlendFactor::OneMinusConstantAlpha => one.sub(k[3]),
-            BlendFactor::SrcAlphaSaturate if ch == 3 => one,
-            BlendFactor::SrcAlphaSaturate => rmin(s[3], one.sub(d[3])),
-        }
-    }
+    let (zero, one) = unsafe { (F32x8::zero(), F32x8::splat(1.0)) };
+    blend_factor!(f, s, d, k, ch; zero, one, F32x8::sub, rmin)
 }
 
 /// A blend equation in f32 per lane, each product rounded (`super::wide`'s `equation_f`).

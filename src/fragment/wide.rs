@@ -231,28 +231,42 @@ pub fn mul16(a: u32, b: u32) -> u32 {
     (t + (t >> 16) + 0x8000) >> 16
 }
 
+/// The blend factor table of every precision: factor `$f` of channel `$ch` from the
+/// source `$s`, destination `$d` and constant `$k` colours (arrays or references to
+/// arrays of four channels), with the precision's `$zero` and `$one`, its subtraction
+/// `$sub` (ONE_MINUS_x is `$sub(one, x)`) and its `$min` (SRC_ALPHA_SATURATE). The scalar
+/// stores here and the 8-lane ones of `super::simd_wide` expand it.
+macro_rules! blend_factor {
+    ($f:expr, $s:expr, $d:expr, $k:expr, $ch:expr;
+     $zero:expr, $one:expr, $sub:expr, $min:expr) => {{
+        let (s, d, k, ch, one) = ($s, $d, $k, $ch, $one);
+        match $f {
+            BlendFactor::Zero => $zero,
+            BlendFactor::One => one,
+            BlendFactor::SrcColor => s[ch],
+            BlendFactor::OneMinusSrcColor => $sub(one, s[ch]),
+            BlendFactor::DstColor => d[ch],
+            BlendFactor::OneMinusDstColor => $sub(one, d[ch]),
+            BlendFactor::SrcAlpha => s[3],
+            BlendFactor::OneMinusSrcAlpha => $sub(one, s[3]),
+            BlendFactor::DstAlpha => d[3],
+            BlendFactor::OneMinusDstAlpha => $sub(one, d[3]),
+            BlendFactor::ConstantColor => k[ch],
+            BlendFactor::OneMinusConstantColor => $sub(one, k[ch]),
+            BlendFactor::ConstantAlpha => k[3],
+            BlendFactor::OneMinusConstantAlpha => $sub(one, k[3]),
+            BlendFactor::SrcAlphaSaturate if ch == 3 => one,
+            BlendFactor::SrcAlphaSaturate => $min(s[3], $sub(one, d[3])),
+        }
+    }};
+}
+pub(super) use blend_factor;
+
 /// A blend factor in 16-bit fixed point (ONE is 65535, ONE_MINUS_x is `65535 − x`).
 #[inline(always)]
 fn factor16(f: BlendFactor, s: [u32; 4], d: [u32; 4], k: [u32; 4], ch: usize) -> u32 {
-    const ONE: u32 = 65535;
-    match f {
-        BlendFactor::Zero => 0,
-        BlendFactor::One => ONE,
-        BlendFactor::SrcColor => s[ch],
-        BlendFactor::OneMinusSrcColor => ONE - s[ch],
-        BlendFactor::DstColor => d[ch],
-        BlendFactor::OneMinusDstColor => ONE - d[ch],
-        BlendFactor::SrcAlpha => s[3],
-        BlendFactor::OneMinusSrcAlpha => ONE - s[3],
-        BlendFactor::DstAlpha => d[3],
-        BlendFactor::OneMinusDstAlpha => ONE - d[3],
-        BlendFactor::ConstantColor => k[ch],
-        BlendFactor::OneMinusConstantColor => ONE - k[ch],
-        BlendFactor::ConstantAlpha => k[3],
-        BlendFactor::OneMinusConstantAlpha => ONE - k[3],
-        BlendFactor::SrcAlphaSaturate if ch == 3 => ONE,
-        BlendFactor::SrcAlphaSaturate => s[3].min(ONE - d[3]),
-    }
+    use std::ops::Sub;
+    blend_factor!(f, s, d, k, ch; 0, 65535, u32::sub, u32::min)
 }
 
 /// A blend equation in 16-bit fixed point: saturating add and subtract.
@@ -270,24 +284,8 @@ fn equation16(eq: BlendEquation, s: u32, sf: u32, d: u32, df: u32) -> u32 {
 /// A blend factor in f32 (ONE_MINUS_x is `1 − x`).
 #[inline(always)]
 pub(super) fn factor_f(f: BlendFactor, s: [f32; 4], d: [f32; 4], k: [f32; 4], ch: usize) -> f32 {
-    match f {
-        BlendFactor::Zero => 0.0,
-        BlendFactor::One => 1.0,
-        BlendFactor::SrcColor => s[ch],
-        BlendFactor::OneMinusSrcColor => 1.0 - s[ch],
-        BlendFactor::DstColor => d[ch],
-        BlendFactor::OneMinusDstColor => 1.0 - d[ch],
-        BlendFactor::SrcAlpha => s[3],
-        BlendFactor::OneMinusSrcAlpha => 1.0 - s[3],
-        BlendFactor::DstAlpha => d[3],
-        BlendFactor::OneMinusDstAlpha => 1.0 - d[3],
-        BlendFactor::ConstantColor => k[ch],
-        BlendFactor::OneMinusConstantColor => 1.0 - k[ch],
-        BlendFactor::ConstantAlpha => k[3],
-        BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
-        BlendFactor::SrcAlphaSaturate if ch == 3 => 1.0,
-        BlendFactor::SrcAlphaSaturate => s[3].min(1.0 - d[3]),
-    }
+    use std::ops::Sub;
+    blend_factor!(f, s, d, k, ch; 0.0, 1.0, f32::sub, f32::min)
 }
 
 /// A blend equation in f32: each product rounded, then the sum (no clamping).

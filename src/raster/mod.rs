@@ -1,8 +1,9 @@
 //! Rasterization: walks the rows of a set-up triangle, computes each row's exact covered
 //! span from the integer edge functions (no per-pixel edge test), and hands spans (or, for
 //! a triangle less than 4 pixels wide, 4x2 blocks) to the fragment stage's span shader
-//! chosen once per triangle (`variants`; the texture fast path's walk is `textured`; the
-//! general textured walks sample a unit a row at a time where an 8-wide sampler covers it,
+//! chosen once per triangle (`variants`; untextured states that shader leaves, and wide
+//! targets, take `untextured`; the texture fast path's walk is `textured`; the general
+//! textured walks sample a unit a row at a time where an 8-wide sampler covers it,
 //! `sample8`).
 //! Also here: batching triangles over bands of rows on the thread pool ([`batch`]), lines
 //! and points ([`lines`], [`prims`]; untextured ones shaded row by row, [`prim_spans`]),
@@ -11,8 +12,7 @@
 
 use crate::cpu::Isa;
 use crate::fragment::span::{
-    one_over_w, shade_chunk, shade_span, tex_coords_oow, tex_r_oow, ChunkColors, Madd, Span,
-    TexLanes, LANES,
+    one_over_w, shade_chunk, tex_coords_oow, tex_r_oow, ChunkColors, Madd, Span, TexLanes, LANES,
 };
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -34,12 +34,12 @@ mod sample8;
 pub mod smooth;
 pub mod stipple;
 mod textured;
+mod untextured;
 mod variants;
-mod wide_rows;
 
-#[cfg(target_arch = "x86_64")]
-use variants::SimdWalks;
 use variants::{with_flags, Walks};
+#[cfg(target_arch = "x86_64")]
+use variants::{with_simd_variant, SimdWalks};
 
 /// What a primitive is drawn with and into: the per-draw references every entry point
 /// of the rasterizer takes (the drawable region, the fragment plan, the enabled texture
@@ -234,39 +234,11 @@ fn narrow_blocks() -> bool {
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 unsafe fn rows_simd<W: SimdWalks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
-    use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
-    use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
     let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
-    let (flat, persp) = (plan.flat, !plan.flat && t.persp);
-    macro_rules! blend {
-        ($d:expr) => {
-            match blend_code(plan) {
-                B_NONE => shapes!($d, B_NONE),
-                B_OVER => shapes!($d, B_OVER),
-                _ => shapes!($d, B_ANY),
-            }
-        };
-    }
-    macro_rules! shapes {
-        ($d:expr, $b:expr) => {
-            // SAFETY: forwarded from the caller.
-            unsafe {
-                match (flat, persp) {
-                    (true, _) => W::simd::<{ $d }, true, false, { $b }>(t, b, plan, fb, stats),
-                    (false, true) => W::simd::<{ $d }, false, true, { $b }>(t, b, plan, fb, stats),
-                    (false, false) => {
-                        W::simd::<{ $d }, false, false, { $b }>(t, b, plan, fb, stats)
-                    }
-                }
-            }
-        };
-    }
-    match depth_code(plan) {
-        D_NONE => blend!(D_NONE),
-        D_LESS => blend!(D_LESS),
-        D_LEQUAL => blend!(D_LEQUAL),
-        _ => blend!(D_ANY),
-    }
+    with_simd_variant!((plan, t.persp), |D, F, P, B| {
+        // SAFETY: forwarded from the caller.
+        unsafe { W::simd::<D, F, P, B>(t, b, plan, fb, stats) }
+    })
 }
 
 /// The row loop of [`rows_simd`] for one span shader variant.
@@ -343,7 +315,7 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let depth = plan.depth.is_some();
     // Wide buffers and sRGB writes take the general per-fragment walks (the 8-lane ones
-    // where they cover the plan: `wide_rows`, `fragment::simd_wide`).
+    // where they cover the plan: `untextured`, `fragment::simd_wide`).
     let wide = crate::fragment::span::float_store(plan, fb);
     if let Some(env) = textured::fast_env(plan, units).filter(|_| !wide) {
         let u = &units[0];
@@ -359,34 +331,10 @@ unsafe fn raster_rows<W: Walks>(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_,
     } else {
         // Flat colours need no divide, but the fog coordinate is still perspective-correct.
         let persp = t.persp && (!plan.flat || plan.fog.is_some() || plan.smooth.is_some());
-        if wide {
-            return with_flags!((depth, plan.flat, persp), |D, F, P| {
-                // SAFETY: forwarded from the caller.
-                unsafe { W::wide::<D, F, P>(t, b, plan, fb, stats) }
-            });
-        }
-        // Untextured states the span shader's 8 lanes leave (stencil, the alpha test,
-        // fog, the colour sum, a partial colour mask, sample counting) take the textured
-        // walk's 8-lane shader with no units where it covers them: the same fragments
-        // and arithmetic.
-        #[cfg(target_arch = "x86_64")]
-        if textured::general_ok(plan, fb) {
-            return with_flags!((depth, plan.flat, persp), |D, F, P| {
-                // SAFETY: forwarded from the caller.
-                unsafe { W::textured::<D, F, P>(t, b, plan, units, fb, stats) }
-            });
-        }
-        if plan.needs_full_path() {
-            with_flags!((depth, plan.flat, persp), |D, F, P| {
-                // SAFETY: forwarded from the caller.
-                unsafe { W::full::<D, F, P, true>(t, b, plan, fb, stats) }
-            })
-        } else {
-            with_flags!((depth, plan.flat, persp), |D, F, P| {
-                // SAFETY: forwarded from the caller.
-                unsafe { W::full::<D, F, P, false>(t, b, plan, fb, stats) }
-            })
-        }
+        with_flags!((depth, plan.flat, persp), |D, F, P| {
+            // SAFETY: forwarded from the caller.
+            unsafe { W::untextured::<D, F, P>(t, b, plan, fb, stats) }
+        })
     }
 }
 
@@ -397,23 +345,6 @@ fn row_span(t: &SetupTriangle, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
         return None;
     }
     t.row_span(b[0], b[2], py)
-}
-
-/// The row walk, specialised like the span shader it calls (everything inlines into the
-/// CPU-specific entry points).
-#[inline(always)]
-fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool>(
-    t: &SetupTriangle,
-    b: [i64; 4],
-    plan: &FragPlan,
-    fb: &mut Target<'_>,
-    stats: &mut Stats,
-) {
-    for py in b[1]..=b[3] {
-        if let Some((lo, hi)) = row_span(t, b, py) {
-            shade_span::<M, DEPTH, FLAT, PERSP, FULL>(t, plan, fb, Span::of(py, lo, hi), stats);
-        }
-    }
 }
 
 /// Textured triangles walk pairs of rows, so that every 2x2 quad (aligned to even pixel
@@ -443,11 +374,9 @@ fn rows_textured<
         // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA exactly
         // when `M::FUSED`.
         unsafe {
-            if M::FUSED {
-                textured::rows_general::<M, true, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
-            } else {
-                textured::rows_general::<M, false, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
-            }
+            variants::with_fused!(M, |FMA| {
+                textured::rows_general::<M, FMA, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            })
         }
         return;
     }
@@ -529,7 +458,7 @@ fn sample_unit<M: Madd>(
 }
 
 /// Shades the live lanes of both rows of chunk `c` through the full per-fragment path,
-/// with the units' `texels` (as untextured fragments when there are no units).
+/// with the units' `texels` (the untextured walk is [`untextured`]).
 #[inline(always)]
 fn shade_chunk_rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
@@ -542,12 +471,8 @@ fn shade_chunk_rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: b
 ) {
     for (r, (tex, live)) in texels.iter().zip(c.live).enumerate() {
         if live.iter().any(|&l| l) {
-            let colors = if units.is_empty() {
-                ChunkColors::Shaded
-            } else {
-                ChunkColors::Textured(tex)
-            };
             let (y, x) = ((c.qy + r as i64) as usize, c.x as usize);
+            let colors = ChunkColors::Textured(tex);
             shade_chunk::<M, DEPTH, FLAT, PERSP, true>(
                 t, plan, units, colors, fb, y, x, live, stats,
             );
@@ -641,6 +566,42 @@ mod tests {
         }
     }
 
+    /// A vertex in the box at `(x, y)` of size `(sx, sy)` with depth, `w` (1 unless
+    /// `persp`) and the first four varyings from `unit`.
+    pub(super) fn vertex(
+        unit: &mut impl FnMut() -> f32,
+        [x, y, sx, sy]: [f32; 4],
+        persp: bool,
+    ) -> ClipVertex {
+        let mut p = ClipVertex {
+            win: [
+                x + unit() * sx,
+                y + unit() * sy,
+                unit(),
+                if persp { 0.2 + unit() } else { 1.0 },
+            ],
+            ..ClipVertex::default()
+        };
+        for i in 0..4 {
+            p.vary[i] = unit() * 1.2 - 0.1;
+        }
+        p
+    }
+
+    /// The triangle `v` set up with `nvary` varyings and no culling, unless it covers no
+    /// pixel centre.
+    pub(super) fn setup_of(v: [ClipVertex; 3], nvary: usize, flat: bool) -> Option<SetupTriangle> {
+        let mut t = SetupTriangle::default();
+        let cull = CullMode {
+            front: false,
+            back: false,
+            front_ccw: true,
+            top_left: false,
+        };
+        let r = setup_triangle_shaded([&v[0], &v[1], &v[2]], nvary, cull, None, flat, &mut t);
+        (r == SetupResult::Draw).then_some(t)
+    }
+
     #[test]
     fn narrow_blocks_match_spans_byte_for_byte() {
         if !crate::cpu::isa().avx2() {
@@ -658,31 +619,8 @@ mod tests {
             while tris.len() < 300 {
                 let (cx, cy) = (unit() * 41.0 - 2.0, unit() * 33.0 - 2.0);
                 let (sx, sy) = (0.5 + unit() * 4.5, 0.5 + unit() * 4.5);
-                let v: [ClipVertex; 3] = std::array::from_fn(|_| {
-                    let mut p = ClipVertex {
-                        win: [
-                            cx + unit() * sx,
-                            cy + unit() * sy,
-                            unit(),
-                            if persp { 0.2 + unit() } else { 1.0 },
-                        ],
-                        ..ClipVertex::default()
-                    };
-                    for i in 0..4 {
-                        p.vary[i] = unit() * 1.2 - 0.1;
-                    }
-                    p
-                });
-                let mut t = SetupTriangle::default();
-                let cull = CullMode {
-                    front: false,
-                    back: false,
-                    front_ccw: true,
-                    top_left: false,
-                };
-                let r =
-                    setup_triangle_shaded([&v[0], &v[1], &v[2]], 4, cull, None, plan.flat, &mut t);
-                if r == SetupResult::Draw {
+                let v = std::array::from_fn(|_| vertex(&mut unit, [cx, cy, sx, sy], persp));
+                if let Some(t) = setup_of(v, 4, plan.flat) {
                     narrow += usize::from(t.bbox[2] - t.bbox[0] < NARROW);
                     tris.push(t);
                 }

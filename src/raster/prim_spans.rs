@@ -10,6 +10,8 @@
 //! shader ([`crate::fragment::span::shade_span`]) row by row. The pixels a primitive
 //! covers are the caller's; each is shaded once, with what the span shaders give it.
 
+#[cfg(target_arch = "x86_64")]
+use super::variants::with_simd_variant;
 use super::variants::{with_flags, Walks};
 use super::Draw;
 use crate::cpu::Isa;
@@ -123,43 +125,11 @@ unsafe fn simd<W: super::variants::SimdWalks>(
     rs: &RowSpans,
     d: &mut Draw<'_, '_>,
 ) {
-    use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
-    use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
     let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
-    let (flat, persp) = (plan.flat, !plan.flat && t.persp);
-    macro_rules! blend {
-        ($d:expr) => {
-            match blend_code(plan) {
-                B_NONE => shapes!($d, B_NONE),
-                B_OVER => shapes!($d, B_OVER),
-                _ => shapes!($d, B_ANY),
-            }
-        };
-    }
-    macro_rules! shapes {
-        ($d:expr, $b:expr) => {
-            // SAFETY: forwarded from the caller.
-            unsafe {
-                match (flat, persp) {
-                    (true, _) => {
-                        W::simd_spans::<{ $d }, true, false, { $b }>(t, rs, plan, fb, stats)
-                    }
-                    (false, true) => {
-                        W::simd_spans::<{ $d }, false, true, { $b }>(t, rs, plan, fb, stats)
-                    }
-                    (false, false) => {
-                        W::simd_spans::<{ $d }, false, false, { $b }>(t, rs, plan, fb, stats)
-                    }
-                }
-            }
-        };
-    }
-    match depth_code(plan) {
-        D_NONE => blend!(D_NONE),
-        D_LESS => blend!(D_LESS),
-        D_LEQUAL => blend!(D_LEQUAL),
-        _ => blend!(D_ANY),
-    }
+    with_simd_variant!((plan, t.persp), |D, F, P, B| {
+        // SAFETY: forwarded from the caller.
+        unsafe { W::simd_spans::<D, F, P, B>(t, rs, plan, fb, stats) }
+    })
 }
 
 /// The general walk's body: each row's span through the general span shader.

@@ -232,15 +232,11 @@ pub(super) fn rows<
         // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA exactly
         // when `M::FUSED`; the chunks lie in `b`, inside the target.
         unsafe {
-            if M::FUSED {
-                chunks_general::<M, true, DEPTH, FLAT, PERSP, false>(
+            super::variants::with_fused!(M, |FMA| {
+                chunks_general::<M, FMA, DEPTH, FLAT, PERSP, false>(
                     t, chunks, plan, units, fb, stats,
                 )
-            } else {
-                chunks_general::<M, false, DEPTH, FLAT, PERSP, false>(
-                    t, chunks, plan, units, fb, stats,
-                )
-            }
+            })
         }
         return;
     }

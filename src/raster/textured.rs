@@ -160,11 +160,9 @@ pub(super) fn rows_tex_fast<
         // SAFETY: `simd` implies AVX2, FMA exactly when `M::FUSED` in the callers that
         // reach here, and a plan `plan_ok` accepts.
         unsafe {
-            if M::FUSED {
-                vec8::rows::<true, DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
-            } else {
-                vec8::rows::<false, DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
-            }
+            super::variants::with_fused!(M, |FMA| {
+                vec8::rows::<FMA, DEPTH, FLAT, PERSP>(t, b, plan, u, env, fb, stats)
+            })
         }
         return;
     }
@@ -177,11 +175,9 @@ pub(super) fn rows_tex_fast<
         // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA
         // exactly when `M::FUSED`.
         unsafe {
-            if M::FUSED {
-                rows_general::<M, true, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
-            } else {
-                rows_general::<M, false, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
-            }
+            super::variants::with_fused!(M, |FMA| {
+                rows_general::<M, FMA, DEPTH, FLAT, PERSP>(t, b, plan, units, fb, stats)
+            })
         }
         return;
     }
@@ -427,11 +423,9 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
             // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA
             // exactly when `M::FUSED`.
             unsafe {
-                if M::FUSED {
-                    coords_and_sample::<M, true, PERSP, true>(t, units, &c, &mut texels);
-                } else {
-                    coords_and_sample::<M, false, PERSP, true>(t, units, &c, &mut texels);
-                }
+                super::variants::with_fused!(M, |FMA| {
+                    coords_and_sample::<M, FMA, PERSP, true>(t, units, &c, &mut texels)
+                });
             }
         } else {
             super::sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);

@@ -50,6 +50,64 @@ macro_rules! with_flags {
 }
 pub(crate) use with_flags;
 
+/// Expands `$body` once for each variant of the AVX2 span shader that `$plan` (a
+/// `&FragPlan`) can take on a triangle with perspective flag `$persp`, with `$d` (depth
+/// code), `$f` (flat), `$p` (perspective) and `$b` (blend code) bound to it as constants:
+/// how the triangles' and the lines' AVX2 walks are chosen. Callers import it (it names
+/// itself unqualified).
+#[cfg(target_arch = "x86_64")]
+macro_rules! with_simd_variant {
+    (($plan:expr, $persp:expr), |$d:ident, $f:ident, $p:ident, $b:ident| $body:expr) => {{
+        use crate::fragment::simd::{blend_code, depth_code, B_ANY, B_NONE, B_OVER};
+        use crate::fragment::simd::{D_ANY, D_LEQUAL, D_LESS, D_NONE};
+        let plan: &crate::fragment::FragPlan = $plan;
+        let shape = (plan.flat, !plan.flat && $persp);
+        with_simd_variant!(@pick depth_code(plan), [D_NONE, D_LESS, D_LEQUAL] D_ANY, $d: u8,
+            with_simd_variant!(@pick blend_code(plan), [B_NONE, B_OVER] B_ANY, $b: u8,
+                match shape {
+                    (true, _) => with_simd_variant!(@shape true, false, $f, $p, $body),
+                    (false, true) => with_simd_variant!(@shape false, true, $f, $p, $body),
+                    (false, false) => with_simd_variant!(@shape false, false, $f, $p, $body),
+                }
+            )
+        )
+    }};
+    (@pick $v:expr, [$($c:ident),*] $last:ident, $n:ident: $t:ty, $body:expr) => {
+        match $v {
+            $($c => {
+                const $n: $t = $c;
+                $body
+            })*
+            _ => {
+                const $n: $t = $last;
+                $body
+            }
+        }
+    };
+    (@shape $fv:literal, $pv:literal, $f:ident, $p:ident, $body:expr) => {{
+        const $f: bool = $fv;
+        const $p: bool = $pv;
+        $body
+    }};
+}
+#[cfg(target_arch = "x86_64")]
+pub(crate) use with_simd_variant;
+
+/// Expands `$body` with `$f` bound as a constant to whether the level's arithmetic `$m`
+/// (a [`crate::fragment::span::Madd`]) fuses: how the 8-lane walks pick their FMA copy.
+macro_rules! with_fused {
+    ($m:ty, |$f:ident| $body:expr) => {
+        if <$m as crate::fragment::span::Madd>::FUSED {
+            const $f: bool = true;
+            $body
+        } else {
+            const $f: bool = false;
+            $body
+        }
+    };
+}
+pub(crate) use with_fused;
+
 /// The row walks, listed once: each entry's doc, name, generic parameters, the generic
 /// arguments that forward them, the arguments, and the walk it runs (with `M`, the level's
 /// fusing, and `AVX2`, whether the level has AVX2). Calls `$callback!` with the list
@@ -57,16 +115,11 @@ pub(crate) use with_flags;
 macro_rules! walk_list {
     ($callback:ident!($($pre:tt)*)) => {
         $callback!($($pre)* {
-            /// Untextured triangle rows through the general span shader
-            /// ([`super::rows`]); `FULL` when the plan needs the whole per-fragment pipeline.
-            full [const DEPTH: bool, const FLAT: bool, const PERSP: bool, const FULL: bool] [DEPTH, FLAT, PERSP, FULL]
+            /// Untextured triangle rows onto any target, 8 lanes at a time where they
+            /// cover the plan ([`super::untextured`]).
+            untextured [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::rows::<M, DEPTH, FLAT, PERSP, FULL> };
-            /// Untextured triangle rows into a wide target or with sRGB writes
-            /// ([`super::wide_rows`]).
-            wide [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
-                (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::wide_rows::rows_wide::<M, AVX2, DEPTH, FLAT, PERSP> };
+                => { crate::raster::untextured::rows_untextured::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// Textured triangle rows in 2x2 quads ([`super::rows_textured`]).
             textured [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
