@@ -214,6 +214,8 @@ pub struct Diff {
     pub max_ulp: u64,
     /// The largest absolute difference.
     pub max_abs: f64,
+    /// Identical channels by channel (R, G, B, A).
+    pub by_channel: [usize; 4],
 }
 
 impl Diff {
@@ -223,10 +225,11 @@ impl Diff {
             let i = x.to_bits() as i32;
             (if i < 0 { i32::MIN.wrapping_sub(i) } else { i }) as i64
         };
-        for (&x, &y) in a.iter().zip(b) {
+        for (i, (&x, &y)) in a.iter().zip(b).enumerate() {
             self.total += 1;
             if x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()) {
                 self.exact += 1;
+                self.by_channel[i % 4] += 1;
                 continue;
             }
             self.max_ulp = self.max_ulp.max(key(x).abs_diff(key(y)));
@@ -240,6 +243,9 @@ impl Diff {
         self.exact += o.exact;
         self.max_ulp = self.max_ulp.max(o.max_ulp);
         self.max_abs = self.max_abs.max(o.max_abs);
+        for (a, b) in self.by_channel.iter_mut().zip(o.by_channel) {
+            *a += b;
+        }
     }
 
     /// The exact share in percent.
