@@ -53,7 +53,8 @@ fn shader_ops_follow_the_scalar_rules() {
     };
     for isa in levels() {
         for w in vals.windows(2) {
-            let (x, y) = (w[0], w[1]);
+            // The values arrive through a plane, `0·x + a0`, which turns −0 into +0.
+            let (x, y) = (w[0] + 0.0, w[1] + 0.0);
             for u in UNS {
                 let got = eval_f32(isa, [x, y, 0.0], |b, v| b.push(Op::Un(u, v[0])));
                 let want = unary(u, x, isa.fused());
