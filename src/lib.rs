@@ -56,6 +56,7 @@ pub mod pixels;
 pub mod plan;
 pub mod raster;
 pub mod render;
+pub mod shader;
 pub mod simd;
 pub mod stats;
 #[cfg(test)]

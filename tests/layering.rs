@@ -36,6 +36,7 @@ const PIPELINE: &[&str] = &[
     "pixels",
     "framebuffer",
     "render",
+    "shader",
 ];
 const LEAVES: &[&str] = &["pipe", "gl", "simd", "cpu", "stats", "tuning", "memory"];
 

@@ -4,11 +4,13 @@
 //!
 //! Compiling is register allocation and a table look-up per operation: every SSA value
 //! gets a slot of a register file in L1 (a slot is freed after its last use; constants
-//! get slots of their own, filled once per [`Program::run`] by the prologue). Running
+//! get slots of their own, filled once per [`Program::run`] by the prologue, and so do
+//! the pure operations whose operands are all per-run values: uniforms and what is
+//! computed from them are hoisted out of the per-chunk body). Running
 //! calls each step's kernel once per batch; the kernel loops over the batch's chunks, so
 //! the indirect call is paid once per operation per batch, not per chunk.
 
-use super::ir::{Blend8, FCmp, Ir, Op};
+use super::ir::{Blend8, Ir, Op, FCMPS, IOPS, UNS};
 use super::kernels::{self, Kernel};
 use crate::cpu::Isa;
 use crate::fixed_function::fog::FogPlan;
@@ -183,6 +185,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         }
     }
     let mut slot = vec![0u16; n];
+    let mut hoisted = vec![false; n];
     let mut free: Vec<u16> = Vec::new();
     let mut next = 1u16; // slot 0 is the live mask
     let mut p = Program {
@@ -208,6 +211,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         if let Op::Const(_, bits) = *op {
             slot[i] = next;
             next += 1;
+            hoisted[i] = true;
             let step = Step {
                 k: t.constant,
                 d: slot[i],
@@ -217,17 +221,27 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
             p.prologue.push(step);
             continue;
         }
+        // An operation of per-run values only (uniforms, constants and what is computed
+        // from them) runs once per run in the prologue, in a slot of its own.
+        let hoist =
+            ir.types[i].is_some() && hoistable(op) && ops.iter().all(|v| hoisted[v.0 as usize]);
+        if hoist {
+            hoisted[i] = true;
+            slot[i] = next;
+            next += 1;
+        }
         // Operands whose last use this is give their slots back first: a kernel reads a
         // chunk's operands before it writes that chunk's result.
         for v in &ops {
             let vi = v.0 as usize;
-            let is_const = matches!(ir.ops[vi], Op::Const(..));
-            if last[vi] == i && !is_const && !free.contains(&slot[vi]) {
+            if !hoist && last[vi] == i && !hoisted[vi] && !free.contains(&slot[vi]) {
                 free.push(slot[vi]);
             }
         }
         let defines = ir.types[i].is_some();
-        let d = if defines {
+        let d = if hoist {
+            slot[i]
+        } else if defines {
             let s = free.pop().unwrap_or_else(|| {
                 next += 1;
                 next - 1
@@ -270,13 +284,15 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
             Op::Sat(_) => (t.sat, 0),
             Op::CvtRne(_) => (t.cvt, 0),
             Op::Bits(_) => (t.bits, 0),
-            Op::FCmp(c, ..) => {
-                let code = [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge]
-                    .iter()
-                    .position(|&x| x == c)
-                    .unwrap_or(0);
-                (t.fcmp, code as u32)
-            }
+            Op::FCmp(c, ..) => (t.fcmp, code_of(&FCMPS, c)),
+            Op::SCmp(c, ..) => (t.scmp, code_of(&FCMPS, c)),
+            Op::Un(u, _) => (t.unary, code_of(&UNS, u)),
+            Op::IBin(o, ..) => (t.ibin, code_of(&IOPS, o)),
+            Op::Pow(..) => (t.pow, 0),
+            Op::Xor(..) => (t.xor, 0),
+            Op::ItoF(_) => (t.itof, 0),
+            Op::FtoI(_) => (t.ftoi, 0),
+            Op::FromBits(_) => (t.from_bits, 0),
             Op::ICmp(f, ..) => (t.icmp, func_code(f)),
             Op::Byte(_, b) => (t.byte, b as u32),
             Op::UnpackUnorm8(_, b) => (t.unpack, b as u32),
@@ -295,6 +311,10 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
             }
             Op::StoreColor(_) => (t.store_color, 0),
         };
+        if hoist {
+            p.prologue.push(Step { k, d, a, imm });
+            continue;
+        }
         p.body.push(Step { k, d, a, imm });
         if defines && last[i] == usize::MAX {
             free.push(d);
@@ -302,6 +322,29 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
     }
     p.slots = next as usize;
     p
+}
+
+/// The code of `x` in a step's immediate: its index in `list`.
+fn code_of<T: PartialEq>(list: &[T], x: T) -> u32 {
+    list.iter().position(|y| *y == x).unwrap_or(0) as u32
+}
+
+/// Whether `op` computes per run when its operands do: a pure operation of its operands
+/// (not the pixel's position, an input stream or the fragment interface).
+fn hoistable(op: &Op) -> bool {
+    !matches!(
+        op,
+        Op::FragX
+            | Op::FragY
+            | Op::Interp(_)
+            | Op::Input(_)
+            | Op::InputF(_)
+            | Op::Kill(_)
+            | Op::DepthTest { .. }
+            | Op::LoadColor
+            | Op::Blend(..)
+            | Op::StoreColor(_)
+    )
 }
 
 /// Whether `b` is the "over" blend the AVX2 backend has a dedicated kernel for.
@@ -327,6 +370,11 @@ impl Program {
     /// The number of steps (prologue and body).
     pub fn len(&self) -> usize {
         self.prologue.len() + self.body.len()
+    }
+
+    /// The steps that run once per run (constants and hoisted per-run values).
+    pub fn prologue_len(&self) -> usize {
+        self.prologue.len()
     }
 
     /// Whether the program has no steps.

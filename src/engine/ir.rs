@@ -14,6 +14,10 @@
 //!   under the default rounding (half to even; out of range → `i32::MIN`).
 //! - [`Op::UnpackUnorm8`] is `u8 · f32(1/255)`; [`Op::PackUnorm8`] is, per channel,
 //!   `cvtps2dq(sat(c) · 255)`, packed R in the low byte.
+//! - The shader operations ([`Op::Un`], [`Op::Pow`], the integer and bit operations):
+//!   `floor`/`ceil` as `roundps`, `sqrt` correctly rounded, `exp2`/`log2`/`pow`/`sin`/`cos`
+//!   as gallivm's polynomials (`lp_bld_arit.c`, fused on the levels that fuse), integer
+//!   arithmetic wrapping, `FtoI` truncating (`cvttps2dq`).
 //! - The fragment interface: [`Op::Kill`] clears lanes, [`Op::DepthTest`] compares a
 //!   quantised depth with the buffer's (and writes it where it passes), [`Op::LoadColor`],
 //!   [`Op::Blend`] (8-bit fixed point, docs/llvmpipe-rules.md) and [`Op::StoreColor`].
@@ -47,7 +51,68 @@ pub enum FCmp {
     Gt,
     /// `a >= b`.
     Ge,
+    /// `a == b`.
+    Eq,
+    /// `a != b` (unordered: true when either lane is NaN).
+    Ne,
 }
+
+/// The comparisons in the order of their codes in a step's immediate.
+pub const FCMPS: [FCmp; 6] = [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge, FCmp::Eq, FCmp::Ne];
+
+/// A unary f32 function ([`Op::Un`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Un {
+    /// `roundps` toward −∞.
+    Floor,
+    /// `roundps` toward +∞ (as `-floor(-x)`, the same bits).
+    Ceil,
+    /// Correctly rounded square root.
+    Sqrt,
+    /// The sign bit cleared.
+    Abs,
+    /// The sign bit flipped.
+    Neg,
+    /// gallivm's `lp_build_exp2`.
+    Exp2,
+    /// gallivm's `lp_build_log2_safe`.
+    Log2,
+    /// gallivm's `lp_build_sin`.
+    Sin,
+    /// gallivm's `lp_build_cos`.
+    Cos,
+}
+
+/// The unary functions in the order of their codes in a step's immediate.
+pub const UNS: [Un; 9] = [
+    Un::Floor,
+    Un::Ceil,
+    Un::Sqrt,
+    Un::Abs,
+    Un::Neg,
+    Un::Exp2,
+    Un::Log2,
+    Un::Sin,
+    Un::Cos,
+];
+
+/// A binary i32 operation ([`Op::IBin`]), wrapping.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum IOp {
+    /// `a + b`.
+    Add,
+    /// `a - b`.
+    Sub,
+    /// The low 32 bits of `a * b`.
+    Mul,
+    /// The smaller (signed).
+    Min,
+    /// The larger (signed).
+    Max,
+}
+
+/// The integer operations in the order of their codes in a step's immediate.
+pub const IOPS: [IOp; 5] = [IOp::Add, IOp::Sub, IOp::Mul, IOp::Min, IOp::Max];
 
 /// The blend state of an [`Op::Blend`] in 8-bit terms (factors, equations, constant).
 pub type Blend8 = BlendState<[u8; 4]>;
@@ -107,6 +172,22 @@ pub enum Op {
     UnpackUnorm8(Val, u8),
     /// Four channels (R, G, B, A) converted to unorm8 and packed.
     PackUnorm8([Val; 4]),
+    /// A unary f32 function.
+    Un(Un, Val),
+    /// gallivm's `lp_build_pow`: `exp2(log2_safe(a) · b)`, 0 where `a == 0`.
+    Pow(Val, Val),
+    /// A wrapping i32 operation.
+    IBin(IOp, Val, Val),
+    /// `a ^ b` (i32 or mask).
+    Xor(Val, Val),
+    /// Signed i32 comparison.
+    SCmp(FCmp, Val, Val),
+    /// i32 → f32 (`cvtdq2ps`).
+    ItoF(Val),
+    /// f32 → i32 truncated (`cvttps2dq`; out of range → `i32::MIN`).
+    FtoI(Val),
+    /// The bits of an i32 value as an f32 value.
+    FromBits(Val),
     /// Per lane `a` where the mask is set, else `b` (both of the same type).
     Select(Val, Val, Val),
     /// Clears the live lanes where the mask is false (the alpha test, discard).
@@ -151,11 +232,19 @@ impl Op {
             | Op::ICmp(_, a, b)
             | Op::And(a, b)
             | Op::Or(a, b)
+            | Op::Pow(a, b)
+            | Op::IBin(_, a, b)
+            | Op::Xor(a, b)
+            | Op::SCmp(_, a, b)
             | Op::Blend(_, a, b) => vec![a, b],
             Op::Mad(a, b, c) | Op::Select(a, b, c) => vec![a, b, c],
             Op::Sat(a)
             | Op::CvtRne(a)
             | Op::Bits(a)
+            | Op::Un(_, a)
+            | Op::ItoF(a)
+            | Op::FtoI(a)
+            | Op::FromBits(a)
             | Op::Fog(a, _)
             | Op::Byte(a, _)
             | Op::UnpackUnorm8(a, _) => vec![a],
@@ -249,11 +338,34 @@ impl Builder {
                 }
                 F32
             }
-            Op::Sat(a) | Op::Fog(a, _) => {
+            Op::Sat(a) | Op::Fog(a, _) | Op::Un(_, a) => {
                 want(a, F32, "f32 operand")?;
                 F32
             }
-            Op::And(a, b) | Op::Or(a, b) => {
+            Op::Pow(a, b) => {
+                want(a, F32, "f32 operand")?;
+                want(b, F32, "f32 operand")?;
+                F32
+            }
+            Op::IBin(_, a, b) => {
+                want(a, I32, "i32 operand")?;
+                want(b, I32, "i32 operand")?;
+                I32
+            }
+            Op::SCmp(_, a, b) => {
+                want(a, I32, "i32 operand")?;
+                want(b, I32, "i32 operand")?;
+                Mask
+            }
+            Op::ItoF(a) | Op::FromBits(a) => {
+                want(a, I32, "i32 operand")?;
+                F32
+            }
+            Op::FtoI(a) => {
+                want(a, F32, "f32 operand")?;
+                I32
+            }
+            Op::And(a, b) | Op::Or(a, b) | Op::Xor(a, b) => {
                 if !matches!(t(a), Some(I32 | Mask)) || t(a) != t(b) {
                     return Err("i32 or mask operands of one type");
                 }
@@ -315,6 +427,12 @@ impl Builder {
                 return Ok(None);
             }
         }))
+    }
+
+    /// A builder that goes on appending to `ir` (a program built earlier, e.g. a lowered
+    /// shader to which a caller adds its outputs).
+    pub fn from_ir(ir: Ir) -> Self {
+        Builder { ir, error: None }
     }
 
     /// The program, or the first type error.

@@ -8,7 +8,8 @@
 //! level's function pointers; [`super::exec`] picks one per operation at compile time.
 
 use super::exec::{Ctx, Step};
-use super::ir::FCmp;
+use super::ir::{FCmp, IOp, Un, FCMPS, IOPS, UNS};
+use crate::fixed_function::gallivm_math as gm;
 use crate::pipe::CompareFunc;
 
 #[cfg(target_arch = "x86_64")]
@@ -24,6 +25,8 @@ pub(super) type Kernel = unsafe fn(&mut Ctx<'_>, &Step);
 /// The AVX2 backend's methods may only run on a CPU with AVX2 (and FMA when fused); the
 /// kernels that use it are compiled with those features and chosen only on such CPUs.
 pub(super) trait Lanes {
+    /// Whether `fmuladd` fuses at this level.
+    const FUSED: bool;
     /// Eight f32.
     type F: Copy;
     /// Eight i32 (also masks).
@@ -58,6 +61,24 @@ pub(super) trait Lanes {
     unsafe fn mad(a: Self::F, b: Self::F, c: Self::F) -> Self::F;
     /// `cvtps2dq`.
     fn cvt(a: Self::F) -> Self::I;
+    /// `cvttps2dq`.
+    fn cvtt(a: Self::F) -> Self::I;
+    /// `roundps` toward −∞.
+    fn floor(a: Self::F) -> Self::F;
+    /// `sqrtps`.
+    fn sqrt(a: Self::F) -> Self::F;
+    /// The bits of f32 lanes.
+    fn fbits(a: Self::F) -> Self::I;
+    /// i32 lanes' bits as f32.
+    fn ibits(a: Self::I) -> Self::F;
+    /// A wrapping integer operation.
+    fn ibin(op: IOp, a: Self::I, b: Self::I) -> Self::I;
+    /// `a ^ b`.
+    fn xor(a: Self::I, b: Self::I) -> Self::I;
+    /// Signed `a > b` as a mask.
+    fn igt(a: Self::I, b: Self::I) -> Self::I;
+    /// `a == b` as a mask.
+    fn ieq(a: Self::I, b: Self::I) -> Self::I;
     /// `cvtdq2ps`.
     fn itof(a: Self::I) -> Self::F;
     /// A float comparison as a mask.
@@ -216,15 +237,140 @@ mod body {
         each!(c, k, { V::st_i(c.reg(s.d, k), V::ld_i(c.reg(s.a[0], k))) });
     }
 
-    /// Float comparison `imm` ([`FCmp`] in order Lt, Le, Gt, Ge).
+    /// Float comparison `imm` (its code in [`FCMPS`]).
     #[inline(always)]
     pub(in super::super) unsafe fn fcmp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
-        let op = [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge][s.imm as usize];
+        let op = FCMPS[s.imm as usize];
         each!(c, k, {
             let a = V::ld_f(c.reg(s.a[0], k));
             let b = V::ld_f(c.reg(s.a[1], k));
             V::st_i(c.reg(s.d, k), V::fcmp(op, a, b))
         });
+    }
+
+    /// A unary f32 function (`imm`: its code in [`UNS`]).
+    #[inline(always)]
+    pub(in super::super) unsafe fn unary<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        /// The unary kernel's loop with lane function `$f` (a vector expression of `$a`).
+        macro_rules! map {
+            (|$a:ident| $f:expr) => {
+                each!(c, k, {
+                    let $a = V::ld_f(c.reg(s.a[0], k));
+                    V::st_f(c.reg(s.d, k), $f)
+                })
+            };
+        }
+        /// The loop with a scalar gallivm function per lane (a loop, not a closure, so
+        /// that it compiles with the kernel's features; see `fog`).
+        macro_rules! per_lane {
+            ($f:path $(, $e:expr)*) => {
+                each!(c, k, {
+                    let a = *c.reg(s.a[0], k);
+                    let mut out = [0u32; 8];
+                    for (o, &v) in out.iter_mut().zip(a.iter()) {
+                        *o = $f(f32::from_bits(v), $($e,)* V::FUSED).to_bits();
+                    }
+                    *c.reg(s.d, k) = out
+                })
+            };
+        }
+        // SAFETY: the kernel runs with its backend's features.
+        let sign = unsafe { V::splat_i(i32::MIN) };
+        /// The sign flipped (a macro, not a closure: see `fog`).
+        macro_rules! neg {
+            ($a:expr) => {
+                V::ibits(V::xor(V::fbits($a), sign))
+            };
+        }
+        match UNS[s.imm as usize] {
+            Un::Floor => map!(|a| V::floor(a)),
+            Un::Ceil => map!(|a| neg!(V::floor(neg!(a)))),
+            Un::Sqrt => map!(|a| V::sqrt(a)),
+            Un::Abs => map!(|a| V::ibits(V::and(V::fbits(a), V::splat_i(i32::MAX)))),
+            Un::Neg => map!(|a| neg!(a)),
+            Un::Exp2 => per_lane!(gm::exp2),
+            Un::Log2 => per_lane!(gm::log2_safe),
+            Un::Sin => per_lane!(gm::sin_or_cos, false),
+            Un::Cos => per_lane!(gm::sin_or_cos, true),
+        }
+    }
+
+    /// gallivm's `pow`, lane by lane.
+    #[inline(always)]
+    pub(in super::super) unsafe fn pow<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = *c.reg(s.a[0], k);
+            let b = *c.reg(s.a[1], k);
+            let mut out = [0u32; 8];
+            for i in 0..8 {
+                let (x, y) = (f32::from_bits(a[i]), f32::from_bits(b[i]));
+                out[i] = gm::pow(x, y, V::FUSED).to_bits();
+            }
+            *c.reg(s.d, k) = out
+        });
+    }
+
+    /// A wrapping integer operation (`imm`: its code in [`IOPS`]).
+    #[inline(always)]
+    pub(in super::super) unsafe fn ibin<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let op = IOPS[s.imm as usize];
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            let b = V::ld_i(c.reg(s.a[1], k));
+            V::st_i(c.reg(s.d, k), V::ibin(op, a, b))
+        });
+    }
+
+    /// `a ^ b`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn xor<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            V::st_i(c.reg(s.d, k), V::xor(a, V::ld_i(c.reg(s.a[1], k))))
+        });
+    }
+
+    /// Signed integer comparison (`imm`: its code in [`FCMPS`]).
+    #[inline(always)]
+    pub(in super::super) unsafe fn scmp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let op = FCMPS[s.imm as usize];
+        // SAFETY: the kernel runs with its backend's features.
+        let ones = unsafe { V::splat_i(-1) };
+        each!(c, k, {
+            let a = V::ld_i(c.reg(s.a[0], k));
+            let b = V::ld_i(c.reg(s.a[1], k));
+            let m = match op {
+                FCmp::Lt => V::igt(b, a),
+                FCmp::Gt => V::igt(a, b),
+                FCmp::Le => V::xor(V::igt(a, b), ones),
+                FCmp::Ge => V::xor(V::igt(b, a), ones),
+                FCmp::Eq => V::ieq(a, b),
+                FCmp::Ne => V::xor(V::ieq(a, b), ones),
+            };
+            V::st_i(c.reg(s.d, k), m)
+        });
+    }
+
+    /// i32 → f32.
+    #[inline(always)]
+    pub(in super::super) unsafe fn itof<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            V::st_f(c.reg(s.d, k), V::itof(V::ld_i(c.reg(s.a[0], k))))
+        });
+    }
+
+    /// f32 → i32, truncated.
+    #[inline(always)]
+    pub(in super::super) unsafe fn ftoi<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            V::st_i(c.reg(s.d, k), V::cvtt(V::ld_f(c.reg(s.a[0], k))))
+        });
+    }
+
+    /// The bits of an i32 value as f32 (a copy).
+    #[inline(always)]
+    pub(in super::super) unsafe fn from_bits<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { V::st_i(c.reg(s.d, k), V::ld_i(c.reg(s.a[0], k))) });
     }
 
     /// Integer comparison with the function in `imm` ([`super::super::exec::func_of`]).
@@ -403,7 +549,8 @@ macro_rules! kernel_list {
     ($cb:ident!($($pre:tt)*)) => {
         $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
             max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
-            depth, load_color, blend, store_color);
+            depth, load_color, blend, store_color, unary, pow, ibin, xor, scmp, itof, ftoi,
+            from_bits);
     };
 }
 

@@ -63,3 +63,5 @@ pub mod lower;
 mod tests;
 #[cfg(test)]
 mod tests_ff;
+#[cfg(test)]
+mod tests_shader;

@@ -388,7 +388,7 @@ fn matches_the_avx2_fast_path() {
 
 /// Runs `f`'s result (an f32 value of a program over planes 0..3 with zero slopes, so
 /// that each evaluates to its `a0` at every lane) at level `isa`, returning its bits.
-fn eval_f32(
+pub(super) fn eval_f32(
     isa: Isa,
     a0: [f32; 3],
     f: impl Fn(&mut Builder, [super::ir::Val; 3]) -> super::ir::Val,

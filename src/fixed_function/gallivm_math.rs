@@ -135,6 +135,70 @@ pub fn pow(x: f32, y: f32, fma: bool) -> f32 {
     exp2(log2_safe(x, fma) * y, fma)
 }
 
+/// `lp_build_sin_or_cos` (cephes' `sin_ps`/`cos_ps` as gallivm builds them): `|x|·4/π`
+/// truncated and rounded up to even selects the octant; the argument is reduced in three
+/// `fmuladd` steps (the "extended precision modular arithmetic"); a degree-3 polynomial in
+/// `z = x²` for cos and one for sin, chosen by the octant; the sign from the octant (and
+/// the input's sign for sin); the result clamped to [-1, 1]; NaN for ±inf and NaN.
+#[allow(clippy::excessive_precision)]
+#[inline(always)]
+pub fn sin_or_cos(a: f32, cos: bool, fma: bool) -> f32 {
+    let a_i = a.to_bits() as i32;
+    let x_abs = f32::from_bits(a.to_bits() & 0x7fff_ffff);
+    let scale_y = x_abs * 1.27323954473516f64 as f32;
+    // LLVMBuildFPToSI: cvttps2dq on x86 (out of range → i32::MIN).
+    let emm2_i = if (-2_147_483_648.0..2_147_483_648.0).contains(&scale_y) {
+        scale_y as i32
+    } else {
+        i32::MIN
+    };
+    let emm2_add = emm2_i.wrapping_add(1);
+    let emm2_and = emm2_add & !1;
+    let y_2 = emm2_and as f32;
+    let emm2_2 = if cos {
+        emm2_and.wrapping_sub(2)
+    } else {
+        emm2_and
+    };
+    let sign_bit = if cos {
+        ((!emm2_2) & 4) << 29
+    } else {
+        (a_i ^ (emm2_add << 29)) & i32::MIN
+    };
+    let poly_mask = emm2_2 & 2 == 0;
+    let x_1 = mad(y_2, -0.78515625, x_abs, fma);
+    let x_2 = mad(y_2, -2.4187564849853515625e-4, x_1, fma);
+    let x_3 = mad(y_2, -3.77489497744594108e-8f64 as f32, x_2, fma);
+    let z = x_3 * x_3;
+    let y_4 = mad(
+        z,
+        2.443315711809948E-005f64 as f32,
+        -1.388731625493765E-003f64 as f32,
+        fma,
+    );
+    let y_6 = mad(y_4, z, 4.166664568298827E-002f64 as f32, fma);
+    let y_8 = y_6 * z * z;
+    let y_10 = (y_8 - z * 0.5) + 1.0;
+    let y2_4 = mad(
+        z,
+        -1.9515295891E-4f64 as f32,
+        8.3321608736E-3f64 as f32,
+        fma,
+    );
+    let y2_6 = mad(y2_4, z, -1.6666654611E-1f64 as f32, fma);
+    let y2_9 = mad(y2_6 * z, x_3, x_3, fma);
+    let y = if poly_mask { y2_9 } else { y_10 };
+    let y = f32::from_bits(y.to_bits() ^ sign_bit as u32);
+    // lp_build_clamp: max then min, the second operand when either is NaN.
+    let y = if y > -1.0 { y } else { -1.0 };
+    let y = if y < 1.0 { y } else { 1.0 };
+    if a.is_finite() {
+        y
+    } else {
+        f32::NAN
+    }
+}
+
 /// `lp_build_rsqrt` as llvmpipe builds it (`1/sqrt(x)`, two correctly rounded operations);
 /// prog_to_nir's RSQ takes `|x|` first.
 #[inline(always)]
@@ -204,6 +268,24 @@ mod tests {
         let p = odd * z + even;
         let want = y * p + 0.0;
         assert_eq!(log2_safe(1.5, false).to_bits(), want.to_bits());
+    }
+
+    #[test]
+    fn sin_cos_close_to_libm() {
+        let mut worst = 0f64;
+        for i in -20000..20000 {
+            let x = i as f32 / 1000.0;
+            for fma in [false, true] {
+                let s = sin_or_cos(x, false, fma) as f64;
+                let c = sin_or_cos(x, true, fma) as f64;
+                worst = worst.max((s - (x as f64).sin()).abs());
+                worst = worst.max((c - (x as f64).cos()).abs());
+            }
+        }
+        assert!(worst < 3e-7, "sin/cos abs error {worst}");
+        assert!(sin_or_cos(f32::INFINITY, false, true).is_nan());
+        assert_eq!(sin_or_cos(0.0, true, true), 1.0);
+        assert_eq!(sin_or_cos(0.0, false, true), 0.0);
     }
 
     #[test]

@@ -15,31 +15,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "gl_procs.h"
 
-typedef GLuint (*CreateShader)(GLenum);
-typedef void (*ShaderSource)(GLuint, GLsizei, const char *const *, const GLint *);
-typedef void (*CompileShader)(GLuint);
-typedef void (*GetShaderiv)(GLuint, GLenum, GLint *);
-typedef void (*GetInfoLog)(GLuint, GLsizei, GLsizei *, char *);
-typedef void (*DeleteObject)(GLuint);
-typedef GLuint (*CreateProgram)(void);
-typedef void (*AttachShader)(GLuint, GLuint);
-typedef void (*LinkProgram)(GLuint);
-
-#define GL_FRAGMENT_SHADER_ 0x8B30
-#define GL_VERTEX_SHADER_ 0x8B31
-#define GL_COMPILE_STATUS_ 0x8B81
-#define GL_LINK_STATUS_ 0x8B82
-#define GL_INFO_LOG_LENGTH_ 0x8B84
-
-static void *proc(const char *name) {
-    void *p = (void *)OSMesaGetProcAddress(name);
-    if (!p) {
-        fprintf(stderr, "mesa_ref: no %s\n", name);
-        exit(2);
-    }
-    return p;
-}
 
 static void reply(int ok, const char *log, int n) {
     printf("%d %d\n", ok, n);

@@ -2,7 +2,7 @@
 //! depth test, blending and stores are the hand-written span shader's own kernels
 //! ([`crate::fragment::simd`]), so both paths share one definition of those bytes.
 
-use super::super::ir::{Blend8, FCmp};
+use super::super::ir::{Blend8, FCmp, IOp};
 use super::Lanes;
 use crate::fragment::simd::{blend8, depth_pass, over8, store_masked};
 use crate::pipe::CompareFunc;
@@ -13,6 +13,7 @@ use crate::simd::{F32x8, I32x8};
 pub(in super::super) struct Avx2<const FUSED: bool>;
 
 impl<const FUSED: bool> Lanes for Avx2<FUSED> {
+    const FUSED: bool = FUSED;
     type F = F32x8;
     type I = I32x8;
     #[inline(always)]
@@ -89,6 +90,48 @@ impl<const FUSED: bool> Lanes for Avx2<FUSED> {
         a.to_i32()
     }
     #[inline(always)]
+    fn cvtt(a: F32x8) -> I32x8 {
+        a.to_i32_trunc()
+    }
+    #[inline(always)]
+    fn floor(a: F32x8) -> F32x8 {
+        a.floor()
+    }
+    #[inline(always)]
+    fn sqrt(a: F32x8) -> F32x8 {
+        a.sqrt()
+    }
+    #[inline(always)]
+    fn fbits(a: F32x8) -> I32x8 {
+        a.bits()
+    }
+    #[inline(always)]
+    fn ibits(a: I32x8) -> F32x8 {
+        a.as_f32()
+    }
+    #[inline(always)]
+    fn ibin(op: IOp, a: I32x8, b: I32x8) -> I32x8 {
+        match op {
+            IOp::Add => a.add(b),
+            IOp::Sub => a.sub(b),
+            IOp::Mul => a.mullo(b),
+            IOp::Min => a.min(b),
+            IOp::Max => a.max(b),
+        }
+    }
+    #[inline(always)]
+    fn xor(a: I32x8, b: I32x8) -> I32x8 {
+        a.xor(b)
+    }
+    #[inline(always)]
+    fn igt(a: I32x8, b: I32x8) -> I32x8 {
+        a.cmpgt(b)
+    }
+    #[inline(always)]
+    fn ieq(a: I32x8, b: I32x8) -> I32x8 {
+        a.cmpeq(b)
+    }
+    #[inline(always)]
     fn itof(a: I32x8) -> F32x8 {
         a.to_f32()
     }
@@ -99,6 +142,12 @@ impl<const FUSED: bool> Lanes for Avx2<FUSED> {
             FCmp::Le => a.cmp_le(b),
             FCmp::Gt => a.cmp_gt(b),
             FCmp::Ge => a.cmp_ge(b),
+            FCmp::Eq => a.cmp_eq(b),
+            FCmp::Ne => {
+                // Not ordered-equal: the lanes where the equality mask is zero.
+                let m = a.cmp_eq(b).bits();
+                return m.cmpeq(m.xor(m));
+            }
         }
         .bits()
     }

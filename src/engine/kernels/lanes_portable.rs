@@ -1,7 +1,7 @@
 //! The portable backend: eight lanes as arrays, each operation the scalar instruction's
 //! rule lane by lane (the compiler vectorises what it can at the level's features).
 
-use super::super::ir::{Blend8, FCmp};
+use super::super::ir::{Blend8, FCmp, IOp};
 use super::Lanes;
 use crate::pipe::CompareFunc;
 
@@ -32,6 +32,7 @@ fn channels(v: I) -> crate::fragment::blend::Lanes {
 }
 
 impl<const FUSED: bool> Lanes for Portable<FUSED> {
+    const FUSED: bool = FUSED;
     type F = F;
     type I = I;
     #[inline(always)]
@@ -112,6 +113,54 @@ impl<const FUSED: bool> Lanes for Portable<FUSED> {
         })
     }
     #[inline(always)]
+    fn cvtt(a: F) -> I {
+        a.map(|v| {
+            if (-2_147_483_648.0..2_147_483_648.0).contains(&v) {
+                v as i32
+            } else {
+                i32::MIN
+            }
+        })
+    }
+    #[inline(always)]
+    fn floor(a: F) -> F {
+        a.map(f32::floor)
+    }
+    #[inline(always)]
+    fn sqrt(a: F) -> F {
+        a.map(f32::sqrt)
+    }
+    #[inline(always)]
+    fn fbits(a: F) -> I {
+        a.map(|v| v.to_bits() as i32)
+    }
+    #[inline(always)]
+    fn ibits(a: I) -> F {
+        a.map(|v| f32::from_bits(v as u32))
+    }
+    #[inline(always)]
+    fn ibin(op: IOp, a: I, b: I) -> I {
+        zip(a, b, |a, b| match op {
+            IOp::Add => a.wrapping_add(b),
+            IOp::Sub => a.wrapping_sub(b),
+            IOp::Mul => a.wrapping_mul(b),
+            IOp::Min => a.min(b),
+            IOp::Max => a.max(b),
+        })
+    }
+    #[inline(always)]
+    fn xor(a: I, b: I) -> I {
+        zip(a, b, |a, b| a ^ b)
+    }
+    #[inline(always)]
+    fn igt(a: I, b: I) -> I {
+        zip(a, b, |a, b| m(a > b))
+    }
+    #[inline(always)]
+    fn ieq(a: I, b: I) -> I {
+        zip(a, b, |a, b| m(a == b))
+    }
+    #[inline(always)]
     fn itof(a: I) -> F {
         a.map(|v| v as f32)
     }
@@ -123,6 +172,8 @@ impl<const FUSED: bool> Lanes for Portable<FUSED> {
                 FCmp::Le => a <= b,
                 FCmp::Gt => a > b,
                 FCmp::Ge => a >= b,
+                FCmp::Eq => a == b,
+                FCmp::Ne => a != b,
             })
         })
     }

@@ -1,0 +1,169 @@
+//! The shader operations ([`Op::Un`], [`Op::Pow`], the integer and bit operations, `Eq`
+//! and `Ne` comparisons) against their scalar rules at every level, and the hoisting of
+//! per-run values into the prologue.
+
+use super::exec::{compile_for, ChunkIn, Io, Scratch};
+use super::ir::{Builder, FCmp, IOp, Op, Un, UNS};
+use super::tests::{eval_f32, levels};
+use crate::fixed_function::gallivm_math as gm;
+
+/// Specials and random values of several magnitudes.
+fn values() -> Vec<f32> {
+    let mut v = vec![
+        0.0,
+        -0.0,
+        0.5,
+        -0.5,
+        1.0,
+        -1.5,
+        2.5,
+        3.0e9,
+        -3.0e9,
+        1e-40,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        f32::MAX,
+    ];
+    let mut bits = crate::test_rng::xorshift32(7);
+    v.extend((0..80).map(|k| (bits() as i32) as f32 / [1e9, 1e7, 1e5, 1e3][k % 4]));
+    v
+}
+
+/// The scalar rule of a unary function at a level that fuses or not.
+fn unary(u: Un, x: f32, fused: bool) -> f32 {
+    match u {
+        Un::Floor => x.floor(),
+        Un::Ceil => x.ceil(),
+        Un::Sqrt => x.sqrt(),
+        Un::Abs => x.abs(),
+        Un::Neg => -x,
+        Un::Exp2 => gm::exp2(x, fused),
+        Un::Log2 => gm::log2_safe(x, fused),
+        Un::Sin => gm::sin_or_cos(x, false, fused),
+        Un::Cos => gm::sin_or_cos(x, true, fused),
+    }
+}
+
+#[test]
+fn shader_ops_follow_the_scalar_rules() {
+    let vals = values();
+    let same = |got: u32, want: f32| {
+        got == want.to_bits() || (want.is_nan() && f32::from_bits(got).is_nan())
+    };
+    for isa in levels() {
+        for w in vals.windows(2) {
+            // The values arrive through a plane, `0·x + a0`, which turns −0 into +0.
+            let (x, y) = (w[0] + 0.0, w[1] + 0.0);
+            for u in UNS {
+                let got = eval_f32(isa, [x, y, 0.0], |b, v| b.push(Op::Un(u, v[0])));
+                let want = unary(u, x, isa.fused());
+                assert!(same(got, want), "{isa:?} {u:?} {x}: {got:x} {want}");
+            }
+            let got = eval_f32(isa, [x, y, 0.0], |b, v| b.push(Op::Pow(v[0], v[1])));
+            assert!(same(got, gm::pow(x, y, isa.fused())), "{isa:?} pow {x} {y}");
+            let (i, j) = (x.to_bits() as i32, y.to_bits() as i32);
+            let ints = |b: &mut Builder, v: [super::ir::Val; 3]| {
+                (b.push(Op::Bits(v[0])), b.push(Op::Bits(v[1])))
+            };
+            for (op, want) in [
+                (IOp::Add, i.wrapping_add(j)),
+                (IOp::Sub, i.wrapping_sub(j)),
+                (IOp::Mul, i.wrapping_mul(j)),
+                (IOp::Min, i.min(j)),
+                (IOp::Max, i.max(j)),
+            ] {
+                let got = eval_f32(isa, [x, y, 0.0], |b, v| {
+                    let (a, c) = ints(b, v);
+                    b.push(Op::IBin(op, a, c))
+                });
+                assert_eq!(got as i32, want, "{isa:?} {op:?} {i} {j}");
+            }
+            let got = eval_f32(isa, [x, y, 0.0], |b, v| {
+                let (a, c) = ints(b, v);
+                b.push(Op::Xor(a, c))
+            });
+            assert_eq!(got as i32, i ^ j);
+            for c in [FCmp::Lt, FCmp::Le, FCmp::Gt, FCmp::Ge, FCmp::Eq, FCmp::Ne] {
+                let (fw, iw) = match c {
+                    FCmp::Lt => (x < y, i < j),
+                    FCmp::Le => (x <= y, i <= j),
+                    FCmp::Gt => (x > y, i > j),
+                    FCmp::Ge => (x >= y, i >= j),
+                    FCmp::Eq => (x == y, i == j),
+                    FCmp::Ne => (x != y, i != j),
+                };
+                let pick = |b: &mut Builder, m| {
+                    let (one, two) = (b.i32(1), b.i32(2));
+                    b.push(Op::Select(m, one, two))
+                };
+                let got = eval_f32(isa, [x, y, 0.0], |b, v| {
+                    let m = b.push(Op::FCmp(c, v[0], v[1]));
+                    pick(b, m)
+                });
+                assert_eq!(got, if fw { 1 } else { 2 }, "{isa:?} {c:?} {x} {y}");
+                let got = eval_f32(isa, [x, y, 0.0], |b, v| {
+                    let (a, d) = ints(b, v);
+                    let m = b.push(Op::SCmp(c, a, d));
+                    pick(b, m)
+                });
+                assert_eq!(got, if iw { 1 } else { 2 }, "{isa:?} s{c:?} {i} {j}");
+            }
+            let got = eval_f32(isa, [x, y, 0.0], |b, v| b.push(Op::FtoI(v[0])));
+            let trunc = if (-2_147_483_648.0..2_147_483_648.0).contains(&x) {
+                x as i32
+            } else {
+                i32::MIN
+            };
+            assert_eq!(got as i32, trunc, "{isa:?} ftoi {x}");
+            let got = eval_f32(isa, [x, y, 0.0], |b, v| {
+                let a = b.push(Op::Bits(v[0]));
+                let f = b.push(Op::ItoF(a));
+                let g = b.push(Op::FromBits(a));
+                b.push(Op::Add(f, g))
+            });
+            assert!(same(got, i as f32 + x), "{isa:?} itof {i}");
+        }
+    }
+}
+
+/// Uniforms and what is computed from them run in the prologue, and give the values of
+/// the same arithmetic per lane.
+#[test]
+fn uniform_arithmetic_is_hoisted() {
+    for isa in levels() {
+        let mut b = Builder::new();
+        let u = b.push(Op::Uniform(0));
+        let e = b.push(Op::Un(Un::Exp2, u));
+        let k = b.f32(3.0);
+        let m = b.push(Op::Mul(e, k));
+        let x = b.push(Op::FragX);
+        let r = b.push(Op::Add(m, x));
+        let bits = b.push(Op::Bits(r));
+        b.push(Op::StoreColor(bits));
+        let prog = compile_for(&b.finish().unwrap(), isa);
+        assert_eq!(prog.prologue_len(), 4, "uniform, exp2, constant, multiply");
+        let mut color = vec![[0u8; 4]; 24];
+        let chunks: Vec<ChunkIn> = (0..3)
+            .map(|k| ChunkIn {
+                idx: 8 * k,
+                fx: 8.0 * k as f32,
+                fy: 0.0,
+                live: 0xFF,
+            })
+            .collect();
+        let mut io = Io {
+            planes: &[],
+            inputs: &[],
+            color: &mut color,
+            depth: &mut [],
+            uniforms: &[0.7],
+            live_out: &mut [],
+        };
+        prog.run(&mut Scratch::default(), &mut io, &chunks, 2);
+        for (i, c) in color.iter().enumerate() {
+            let want = gm::exp2(0.7, isa.fused()) * 3.0 + i as f32;
+            assert_eq!(u32::from_le_bytes(*c), want.to_bits(), "{isa:?} lane {i}");
+        }
+    }
+}

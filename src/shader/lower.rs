@@ -1,0 +1,426 @@
+//! Lowering a checked fragment shader ([`softgl_glsl::hir`]) into the engine's IR.
+//!
+//! Every GLSL value becomes one SSA value per scalar component (vectors, matrices column
+//! by column, arrays and structs flattened): floats are [`Ty::F32`], `int`/`uint`
+//! [`Ty::I32`], `bool` [`Ty::Mask`]. Variables live in an environment from variable to
+//! components; an assignment rebinds them.
+//!
+//! Control flow becomes masks: an `if` on a varying condition lowers both sides, each
+//! under its condition, and an assignment under a mask is `Select(mask, new, old)`; an
+//! `if` whose condition folds to a constant lowers only its taken side. Loops are unrolled
+//! while their condition folds to a constant (counters are folded as they are computed);
+//! `break`, `continue` and `return` clear their lanes from the mask for the rest of the
+//! loop or function. User functions are inlined. `discard` is [`Op::Kill`] of the masked
+//! lanes.
+//!
+//! Inputs: uniforms are [`Op::Uniform`] slots, one per scalar component ([`Lowered::uniforms`]),
+//! so their arithmetic is hoisted into the program's prologue by the executor; varyings
+//! (and the compatibility inputs such as `gl_Color`) are planes ([`Lowered::varyings`]),
+//! perspective-corrected as llvmpipe does (`a_plane · (1 / w_plane)`, plane
+//! [`PLANE_INV_W`]); `gl_FragCoord` is the pixel centre, the z plane [`PLANE_Z`] and 1/w.
+//! The arithmetic of each built-in function is llvmpipe's (see [`super::builtins`]).
+
+use super::control::{FnFrame, LoopFrame};
+use crate::engine::ir::{Builder, FCmp, IOp, Ir, Op, Ty, Un, Val};
+use softgl_glsl::builtins::variables::Kind as BKind;
+use softgl_glsl::hir::{self, Const, Storage, Value, VarId};
+use softgl_glsl::types::{Scalar, Type};
+use std::collections::HashMap;
+
+/// The plane of 1/w (llvmpipe's position w slot).
+pub const PLANE_INV_W: u16 = 0;
+/// The plane of window z.
+pub const PLANE_Z: u16 = 1;
+/// The first varying plane.
+pub const FIRST_VARYING_PLANE: u16 = 2;
+
+/// A named input of the lowered program: its first uniform slot or plane, and how many.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Slot {
+    /// The GLSL name.
+    pub name: String,
+    /// The first uniform slot ([`Op::Uniform`]) or plane ([`Op::Interp`]).
+    pub first: u16,
+    /// The number of scalar components.
+    pub count: u16,
+    /// The components' scalar types, in order (an int's uniform slot holds its bits).
+    pub scalars: Vec<Scalar>,
+    /// A varying without perspective correction (`flat` or `noperspective`).
+    pub linear: bool,
+}
+
+/// A lowered fragment shader: the program (without an output stage), the colour it
+/// leaves in `gl_FragColor` (or the first user output), and where its inputs go.
+#[derive(Clone, Debug)]
+pub struct Lowered {
+    /// The program.
+    pub ir: Ir,
+    /// The output colour's four channels.
+    pub color: [Val; 4],
+    /// The uniforms read, in the order of their slots.
+    pub uniforms: Vec<Slot>,
+    /// The varyings read, in the order of their planes.
+    pub varyings: Vec<Slot>,
+}
+
+/// Why a shader does not lower (yet).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unsupported(pub String);
+
+/// The result of a lowering step.
+pub(super) type R<T> = Result<T, Unsupported>;
+
+/// An error `Unsupported` with a message.
+pub(super) fn no<T>(what: impl Into<String>) -> R<T> {
+    Err(Unsupported(what.into()))
+}
+
+/// The scalar types of a type's flattened components.
+pub(super) fn scalars(ty: &Type, out: &mut Vec<Scalar>) -> R<()> {
+    match ty {
+        Type::Scalar(s) => out.push(*s),
+        Type::Vector(s, n) => out.extend(std::iter::repeat_n(*s, *n as usize)),
+        Type::Matrix { cols, rows } => {
+            out.extend(std::iter::repeat_n(Scalar::Float, (*cols * *rows) as usize))
+        }
+        Type::Array(t, Some(n)) => {
+            for _ in 0..*n {
+                scalars(t, out)?;
+            }
+        }
+        Type::Struct(s) => {
+            for m in &s.members {
+                scalars(&m.ty, out)?;
+            }
+        }
+        _ => return no(format!("values of type {ty:?}")),
+    }
+    Ok(())
+}
+
+/// The number of flattened components of a type.
+pub(super) fn size(ty: &Type) -> R<usize> {
+    let mut v = Vec::new();
+    scalars(ty, &mut v)?;
+    Ok(v.len())
+}
+
+/// The lowering of one shader.
+pub struct Lower<'p> {
+    pub(super) p: &'p hir::Program,
+    pub(super) b: Builder,
+    /// Each value's constant bits, where it is a constant.
+    consts: Vec<Option<u32>>,
+    /// Each variable's components.
+    pub(super) env: HashMap<VarId, Vec<Val>>,
+    /// The mask of the enclosing conditions (`None`: every lane).
+    pub(super) cond: Option<Val>,
+    /// The loops being unrolled, innermost last.
+    pub(super) loops: Vec<LoopFrame>,
+    /// The functions being inlined, innermost last.
+    pub(super) fns: Vec<FnFrame>,
+    uniforms: Vec<Slot>,
+    varyings: Vec<Slot>,
+    inv_w: Option<Val>,
+    /// The expression nesting depth.
+    pub(super) depth: usize,
+    /// Writes ignore the lane mask (a loop's step, see `control`).
+    pub(super) unmasked: bool,
+    /// The last mask computed and what it was computed from.
+    pub(super) exec_memo: Option<([Option<Val>; 4], Option<Val>)>,
+}
+
+/// Lowers a fragment shader.
+pub fn lower_fragment(p: &hir::Program) -> Result<Lowered, Unsupported> {
+    let mut l = Lower {
+        p,
+        b: Builder::new(),
+        consts: Vec::new(),
+        env: HashMap::new(),
+        cond: None,
+        loops: Vec::new(),
+        fns: Vec::new(),
+        uniforms: Vec::new(),
+        varyings: Vec::new(),
+        inv_w: None,
+        depth: 0,
+        unmasked: false,
+        exec_memo: None,
+    };
+    for (v, init) in &p.globals {
+        if let Some(e) = init {
+            let val = l.expr(e)?;
+            l.env.insert(*v, val);
+        }
+    }
+    let main = p.main().ok_or_else(|| Unsupported("no main".into()))?;
+    l.fns.push(FnFrame::default());
+    l.block(main.body.as_deref().unwrap_or(&[]))?;
+    let out = p
+        .vars
+        .iter()
+        .position(|v| {
+            v.name == "gl_FragColor"
+                || (v.storage == Storage::Out && v.ty == Type::Vector(Scalar::Float, 4))
+        })
+        .filter(|i| l.env.contains_key(i));
+    let color = match out {
+        Some(i) => l.env[&i].clone(),
+        None => vec![l.f32(0.0); 4],
+    };
+    let ir =
+        l.b.finish()
+            .map_err(|e| Unsupported(format!("IR type error {e:?}")))?;
+    Ok(Lowered {
+        ir,
+        color: [color[0], color[1], color[2], color[3]],
+        uniforms: l.uniforms,
+        varyings: l.varyings,
+    })
+}
+
+impl Lower<'_> {
+    /// Appends `op`, folding it when its operands are constants.
+    pub(super) fn op(&mut self, op: Op) -> Val {
+        let folded = self.fold(&op);
+        if let (Some(bits), Some(ty)) = (folded, self.result_ty(&op)) {
+            return self.konst(ty, bits);
+        }
+        let v = self.b.push(op);
+        self.consts.resize(v.0 as usize + 1, None);
+        v
+    }
+
+    /// A constant of type `ty` (one op per use; the executor fills it once per run).
+    pub(super) fn konst(&mut self, ty: Ty, bits: u32) -> Val {
+        let v = self.b.push(Op::Const(ty, bits));
+        self.consts.resize(v.0 as usize + 1, None);
+        self.consts[v.0 as usize] = Some(bits);
+        v
+    }
+
+    /// An f32 constant.
+    pub(super) fn f32(&mut self, x: f32) -> Val {
+        self.konst(Ty::F32, x.to_bits())
+    }
+
+    /// An i32 constant.
+    pub(super) fn i32(&mut self, x: i32) -> Val {
+        self.konst(Ty::I32, x as u32)
+    }
+
+    /// A mask constant.
+    pub(super) fn mask(&mut self, on: bool) -> Val {
+        self.konst(Ty::Mask, if on { u32::MAX } else { 0 })
+    }
+
+    /// `v`'s constant bits, if it is one.
+    pub(super) fn cval(&self, v: Val) -> Option<u32> {
+        self.consts.get(v.0 as usize).copied().flatten()
+    }
+
+    /// `v`'s type.
+    pub(super) fn ty(&self, v: Val) -> Ty {
+        self.b.ty(v).unwrap_or(Ty::F32)
+    }
+
+    fn result_ty(&self, op: &Op) -> Option<Ty> {
+        Some(match op {
+            Op::FCmp(..) | Op::SCmp(..) => Ty::Mask,
+            Op::IBin(..) | Op::FtoI(_) | Op::Bits(_) => Ty::I32,
+            Op::And(a, _) | Op::Or(a, _) | Op::Xor(a, _) | Op::Select(_, a, _) => self.ty(*a),
+            _ => Ty::F32,
+        })
+    }
+
+    /// The constant value of `op` when it is exact IEEE (or integer) arithmetic of
+    /// constants, as llvmpipe would compute it at run time.
+    fn fold(&self, op: &Op) -> Option<u32> {
+        let c = |v: &Val| self.cval(*v);
+        let f = |v: &Val| c(v).map(f32::from_bits);
+        let i = |v: &Val| c(v).map(|b| b as i32);
+        let fb = |x: f32| Some(x.to_bits());
+        let mb = |x: bool| Some(if x { u32::MAX } else { 0 });
+        match op {
+            Op::Add(a, b) => fb(f(a)? + f(b)?),
+            Op::Sub(a, b) => fb(f(a)? - f(b)?),
+            Op::Mul(a, b) => fb(f(a)? * f(b)?),
+            Op::Div(a, b) => fb(f(a)? / f(b)?),
+            Op::Un(Un::Neg, a) => Some(c(a)? ^ 0x8000_0000),
+            Op::Un(Un::Abs, a) => Some(c(a)? & 0x7fff_ffff),
+            Op::Un(Un::Floor, a) => fb(f(a)?.floor()),
+            Op::IBin(o, a, b) => {
+                let (x, y) = (i(a)?, i(b)?);
+                Some(match o {
+                    IOp::Add => x.wrapping_add(y),
+                    IOp::Sub => x.wrapping_sub(y),
+                    IOp::Mul => x.wrapping_mul(y),
+                    IOp::Min => x.min(y),
+                    IOp::Max => x.max(y),
+                } as u32)
+            }
+            Op::SCmp(o, a, b) => mb(cmp(*o, i(a)?, i(b)?)),
+            Op::FCmp(o, a, b) => mb(cmp(*o, f(a)?, f(b)?)),
+            Op::And(a, b) => Some(c(a)? & c(b)?),
+            Op::Or(a, b) => Some(c(a)? | c(b)?),
+            Op::Xor(a, b) => Some(c(a)? ^ c(b)?),
+            Op::ItoF(a) => fb(i(a)? as f32),
+            Op::Select(m, a, b) => match c(m) {
+                Some(m) => c(if m != 0 { a } else { b }),
+                None => c(a).filter(|&x| Some(x) == c(b)),
+            },
+            _ => None,
+        }
+    }
+
+    /// A variable's components, materialising an input on its first read.
+    pub(super) fn read_var(&mut self, id: VarId) -> R<Vec<Val>> {
+        if let Some(v) = self.env.get(&id) {
+            return Ok(v.clone());
+        }
+        let var = &self.p.vars[id];
+        let mut sc = Vec::new();
+        scalars(&var.ty, &mut sc)?;
+        let vals = match var.storage {
+            Storage::Const => match &var.value {
+                Some(c) => self.constant(c, &var.ty)?,
+                None => return no("a constant without value"),
+            },
+            Storage::Uniform | Storage::Builtin(BKind::Uniform) => {
+                let first = self.uniforms.iter().map(|s| s.count).sum::<u16>();
+                self.uniforms.push(Slot {
+                    name: var.name.clone(),
+                    first,
+                    count: sc.len() as u16,
+                    scalars: sc.clone(),
+                    linear: false,
+                });
+                let mut out = Vec::new();
+                for (k, s) in sc.iter().enumerate() {
+                    let u = self.op(Op::Uniform(first + k as u16));
+                    out.push(match s {
+                        Scalar::Float => u,
+                        Scalar::Int | Scalar::Uint => self.op(Op::Bits(u)),
+                        Scalar::Bool => {
+                            let bits = self.op(Op::Bits(u));
+                            let zero = self.i32(0);
+                            self.op(Op::SCmp(FCmp::Ne, bits, zero))
+                        }
+                    });
+                }
+                out
+            }
+            Storage::In | Storage::Builtin(BKind::Input) => self.input(id, &sc)?,
+            _ => sc
+                .iter()
+                .map(|s| match s {
+                    Scalar::Float => self.f32(0.0),
+                    Scalar::Bool => self.mask(false),
+                    _ => self.i32(0),
+                })
+                .collect(),
+        };
+        self.env.insert(id, vals.clone());
+        Ok(vals)
+    }
+
+    /// A stage input: `gl_FragCoord`, `gl_FrontFacing`, or a varying's planes.
+    fn input(&mut self, id: VarId, sc: &[Scalar]) -> R<Vec<Val>> {
+        let var = &self.p.vars[id];
+        match var.name.as_str() {
+            "gl_FragCoord" => {
+                let half = self.f32(0.5);
+                let (x, y) = (self.op(Op::FragX), self.op(Op::FragY));
+                let x = self.op(Op::Add(x, half));
+                let y = self.op(Op::Add(y, half));
+                let z = self.op(Op::Interp(PLANE_Z));
+                let w = self.op(Op::Interp(PLANE_INV_W));
+                return Ok(vec![x, y, z, w]);
+            }
+            "gl_FrontFacing" => return Ok(vec![self.mask(true)]),
+            _ => {}
+        }
+        if sc.iter().any(|s| *s != Scalar::Float) {
+            return no(format!("non-float varying {}", var.name));
+        }
+        let linear = matches!(
+            var.interp,
+            Some(softgl_glsl::ast::Interp::Flat | softgl_glsl::ast::Interp::Noperspective)
+        );
+        let first = FIRST_VARYING_PLANE + self.varyings.iter().map(|s| s.count).sum::<u16>();
+        self.varyings.push(Slot {
+            name: var.name.clone(),
+            first,
+            count: sc.len() as u16,
+            scalars: sc.to_vec(),
+            linear,
+        });
+        let mut out = Vec::new();
+        for k in 0..sc.len() as u16 {
+            let a = self.op(Op::Interp(first + k));
+            out.push(if linear {
+                a
+            } else {
+                let w = self.inv_w_rcp();
+                self.op(Op::Mul(a, w))
+            });
+        }
+        Ok(out)
+    }
+
+    /// `1 / w_plane`, computed once (for every lane: a value lowered under a condition
+    /// is still computed for all lanes).
+    fn inv_w_rcp(&mut self) -> Val {
+        if let Some(v) = self.inv_w {
+            return v;
+        }
+        let one = self.f32(1.0);
+        let w = self.op(Op::Interp(PLANE_INV_W));
+        let v = self.op(Op::Div(one, w));
+        self.inv_w = Some(v);
+        v
+    }
+
+    /// The components of a constant of type `ty`.
+    pub(super) fn constant(&mut self, c: &Const, ty: &Type) -> R<Vec<Val>> {
+        let mut out = Vec::new();
+        self.flatten_const(c, &mut out);
+        if out.len() != size(ty)? {
+            return no("a constant of the wrong size");
+        }
+        Ok(out)
+    }
+
+    fn flatten_const(&mut self, c: &Const, out: &mut Vec<Val>) {
+        match c {
+            Const::Scalars(v) => {
+                for x in v {
+                    let val = match *x {
+                        Value::Bool(b) => self.mask(b),
+                        Value::Int(i) => self.i32(i),
+                        Value::Uint(u) => self.i32(u as i32),
+                        Value::Float(f) => self.f32(f),
+                    };
+                    out.push(val);
+                }
+            }
+            Const::Aggregate(items) => {
+                for i in items {
+                    self.flatten_const(i, out);
+                }
+            }
+        }
+    }
+}
+
+/// The comparison `a OP b`.
+pub(super) fn cmp<T: PartialOrd>(op: FCmp, a: T, b: T) -> bool {
+    match op {
+        FCmp::Lt => a < b,
+        FCmp::Le => a <= b,
+        FCmp::Gt => a > b,
+        FCmp::Ge => a >= b,
+        FCmp::Eq => a == b,
+        FCmp::Ne => a != b,
+    }
+}
