@@ -61,7 +61,7 @@ impl FogPlan {
     }
 
     /// The saturated fog factor for an interpolated fog coordinate.
-    #[inline]
+    #[inline(always)]
     pub fn factor(&self, coord: f32) -> f32 {
         let f = match self.mode {
             FogMode::Linear => coord * self.scale + self.bias,
