@@ -536,6 +536,13 @@ unsafe fn store_wide<const FMA: bool>(
     }
     let bits = pass.movemask();
     let live: [bool; LANES] = std::array::from_fn(|i| bits & (1 << i) != 0);
-    let cf = pf.map(|c| c.to_array());
+    // Not `pf.map(..)`: the generic `map` is not inlined into this AVX2 function, and its
+    // closure then stores each register through an out-of-line `_mm256_storeu_ps`.
+    let cf = [
+        pf[0].to_array(),
+        pf[1].to_array(),
+        pf[2].to_array(),
+        pf[3].to_array(),
+    ];
     super::wide::store(dst, plan, &mut fb.plane(0), idx, n, &live, &cf)
 }

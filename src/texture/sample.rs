@@ -265,7 +265,15 @@ pub fn sample_quad_aniso(p: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> [[f32; 4
     } else {
         f32::INFINITY
     };
-    let n = ratio.ceil().clamp(1.0, p.max_anisotropy.max(1.0)) as usize;
+    // `f32::clamp` written out (NaN stays NaN): the call was left out of line.
+    let (c, hi) = (ratio.ceil(), p.max_anisotropy.max(1.0));
+    let n = (if c < 1.0 {
+        1.0
+    } else if c > hi {
+        hi
+    } else {
+        c
+    }) as usize;
     // With the probe count capped below the aspect ratio, each probe's footprint
     // (Pmax / N) is wider than the pixel's minor axis: sharpen by up to half a level,
     // in proportion to the excess (in octaves, saturating at one).

@@ -162,7 +162,16 @@ pub fn soa_linear(
             (Some(i0 as usize), Some((i0 + 1).min(len - 1) as usize), w)
         }
         Wrap::ClampToBorder => {
-            let u = (s * sz).clamp(-0.5, sz + 0.5);
+            // `f32::clamp`'s comparisons (NaN stays NaN), written out: the library call
+            // was left out of line in the level copies of the quad sampler.
+            let (u, hi) = (s * sz, sz + 0.5);
+            let u = if u < -0.5 {
+                -0.5
+            } else if u > hi {
+                hi
+            } else {
+                u
+            };
             let u = if u.is_nan() { -0.5 } else { u };
             let (i0, w) = floor_fract(u - 0.5);
             (inside(i0), inside(i0 + 1), w)
