@@ -14,7 +14,10 @@ use crate::shader::draw::ShaderRef;
 /// No texels: a shader's walk has no units.
 const NO_TEXELS: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
 
-/// Draws `t` in box `b` (cut to the region) with shader `sh`.
+/// Draws `t` in box `b` (cut to the region) with shader `sh`. Out of line and cold: the
+/// branch to it must not change how the fixed-function walks around it are compiled.
+#[cold]
+#[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
     let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
     let Some(mut w) = crate::shader::draw::walk(sh, plan, fb) else {
