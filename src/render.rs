@@ -97,6 +97,19 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         prims,
         feedback: _,
     } = plan;
+    if plan.shader.is_some() {
+        // A fragment shader runs on filled triangles only (see `shader::draw`); other
+        // primitives, the polygon pipeline, flat shading and multisampling draw nothing.
+        let tris = !matches!(
+            mode,
+            Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
+        );
+        if !tris || poly || plan.flat || plan.ms.is_some() {
+            stats.program_draws_refused += 1;
+            return None;
+        }
+        stats.program_draws += 1;
+    }
     let n = indices.map_or(verts.count(), |i| i.len());
     // Filled triangles, strips, fans, polygons, quads and quad strips stream through the
     // post-transform cache; points, lines and draws that need edge flags or per-vertex

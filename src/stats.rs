@@ -39,6 +39,15 @@ counters! {
     pub struct Stats {
         /// Draw calls that reached the pipeline.
         draws: draw,
+        /// Draws with a current program whose fragment shader ran through the engine.
+        program_draws: draw,
+        /// Draws with a current program that drew nothing: a vertex shader, a fragment
+        /// shader the engine does not run, or primitives other than filled triangles
+        /// (see `shader::draw`).
+        program_draws_refused: draw,
+        /// Triangles of a program draw not drawn: the fragment state or the target is not
+        /// one the engine draws (stencil, logic op, wide or sRGB buffers …).
+        program_tris_refused: pixel,
         /// Vertices through the vertex stage.
         vertices: draw,
         /// Triangles assembled.

@@ -121,6 +121,7 @@ fn plan(next: &mut impl FnMut() -> u32, fma: bool) -> FragPlan {
         ms: None,
         blend_color,
         srgb: false,
+        shader: None,
     }
 }
 

@@ -5,6 +5,7 @@
 //! one pass per sample plane.
 
 use super::feedback::{FeedbackSink, RenderMode};
+use super::program_draw::ProgramDraw;
 use super::state::{Cap, State};
 use super::Context;
 use crate::fragment::FragPlan;
@@ -192,6 +193,18 @@ fn draw_pass<S: VertexSource + ?Sized>(
         srgb: fb.srgb,
     };
     let region = ctx.draw_region();
+    let program = ctx.program_draw();
+    if matches!(program, ProgramDraw::Refused) && ctx.feedback.mode == RenderMode::Render {
+        ctx.stats.program_draws_refused += 1;
+        return true;
+    }
+    let shader = match &program {
+        ProgramDraw::Shader(fs, u) => Some(crate::plan::ShaderInput {
+            frag: fs,
+            uniforms: u,
+        }),
+        _ => None,
+    };
     let st = &ctx.state;
     let input = DrawState {
         caps: &st.caps,
@@ -218,6 +231,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
             prims.mode,
             Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
         ),
+        shader,
     };
     let mut plan = crate::plan::build(&input);
     if ms.is_some() && plan.frag.ms.is_none() {

@@ -46,6 +46,7 @@ pub mod pixel_ops;
 pub mod pixel_state;
 pub mod pixel_transfer;
 pub mod polygon_cmds;
+pub mod program_draw;
 pub mod program_link;
 pub mod queries;
 pub mod raster_state;

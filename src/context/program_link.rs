@@ -110,6 +110,9 @@ pub struct Linked {
     pub uniforms: Vec<Uniform>,
     /// The uniform and element of each location.
     pub locations: Vec<(usize, usize)>,
+    /// The fragment shader as draws run it (`None` without a fragment stage; `Err` says
+    /// why the engine cannot run it).
+    pub draw: Option<Result<Arc<crate::shader::draw::FragShader>, String>>,
 }
 
 /// The GL type enum of a basic GLSL type (GL 2.0 table 2.9, GL 2.1's non-square matrices,
@@ -725,7 +728,12 @@ impl Context {
         let p = self.shaders.table.program_mut(program)?;
         p.validate_status = false;
         match result {
-            Ok(l) => {
+            Ok(mut l) => {
+                l.draw = match l.fragment.as_slice() {
+                    [] => None,
+                    [f] => Some(crate::shader::draw::FragShader::prepare(Arc::clone(f))),
+                    _ => Some(Err("several fragment shaders".into())),
+                };
                 p.link_status = true;
                 p.log.clear();
                 p.linked = Some(l);

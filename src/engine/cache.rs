@@ -27,8 +27,29 @@ static REFUSED: AtomicU64 = AtomicU64::new(0);
 /// Nanoseconds spent lowering and compiling.
 static COMPILE_NS: AtomicU64 = AtomicU64::new(0);
 
+/// What a cached program was made from: a fixed-function state, or a registered
+/// fragment shader's variant (its id, the lowering options that vary per draw, and the
+/// fragment plan of the operations after it; uniform values are run inputs, not keys).
+// Both variants are large values compared in place (one comparison per triangle on a
+// hit); boxing one would cost an allocation per look-up.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Key {
+    /// A fixed-function state ([`lower`]).
+    Ff(FfState),
+    /// A fragment shader's variant.
+    Shader {
+        /// The shader's registration id (`crate::shader::draw`).
+        id: u64,
+        /// The target height when rows are flipped (`gl_FragCoord.y`).
+        flip: Option<u32>,
+        /// The fragment plan (its own `shader` field cleared).
+        plan: crate::fragment::FragPlan,
+    },
+}
+
 /// One cached state: its program, or `None` when it does not lower.
-type Entry = (FfState, Option<Rc<Program>>);
+type Entry = (Key, Option<Rc<Program>>);
 
 thread_local! {
     /// This thread's entries, most recently used first.
@@ -37,6 +58,12 @@ thread_local! {
 
 /// The program of `s`, compiled on a miss; `None` when `s` does not lower.
 pub fn program(s: &FfState) -> Option<Rc<Program>> {
+    program_of(&Key::Ff(*s), || lower(s))
+}
+
+/// The program of `s`, lowered by `build` and compiled on a miss; `None` when `build`
+/// refuses.
+pub fn program_of(s: &Key, build: impl FnOnce() -> Option<super::ir::Ir>) -> Option<Rc<Program>> {
     CACHE.with(|c| {
         let mut c = c.borrow_mut();
         if let Some(i) = c.iter().position(|(k, _)| k == s) {
@@ -48,7 +75,7 @@ pub fn program(s: &FfState) -> Option<Rc<Program>> {
             return c[0].1.clone();
         }
         let start = std::time::Instant::now();
-        let prog = lower(s).map(|ir| Rc::new(compile(&ir)));
+        let prog = build().map(|ir| Rc::new(compile(&ir)));
         COMPILE_NS.fetch_add(start.elapsed().as_nanos() as u64, Relaxed);
         COMPILES.fetch_add(1, Relaxed);
         if prog.is_none() {

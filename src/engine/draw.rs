@@ -24,6 +24,9 @@ use std::rc::Rc;
 /// Input streams at most: four channels per unit.
 const STREAMS: usize = 4 * MAX_TEXTURE_UNITS;
 
+/// The uniform words a program's walk passes at most ([`Walk::with_program`]).
+pub const MAX_UNIFORMS: usize = 64;
+
 /// A walk's buffers, kept per thread between triangles.
 struct State {
     scratch: Scratch,
@@ -34,6 +37,8 @@ struct State {
     /// Stream s of chunk k at `s * MAX_BATCH + k`.
     streams: Vec<[u32; 8]>,
     planes: [[f32; 3]; 2 + MAX_VARY],
+    /// A program walk's uniforms ([`Walk::with_program`]).
+    uniforms: [f32; MAX_UNIFORMS],
     len: usize,
 }
 
@@ -52,6 +57,7 @@ impl State {
             live_out: [0; MAX_BATCH],
             streams: vec![[0; 8]; STREAMS * MAX_BATCH],
             planes: [[0.0; 3]; 2 + MAX_VARY],
+            uniforms: [0.0; MAX_UNIFORMS],
             len: 0,
         })
     }
@@ -70,12 +76,23 @@ pub struct Walk {
     blend: bool,
     writes: bool,
     count_samples: bool,
+    /// The uniforms are the walk's own (else the triangle's flat varyings).
+    own_uniforms: bool,
 }
 
 /// Whether the engine is on (`SOFTGL_ENGINE`).
 #[inline]
 pub fn enabled() -> bool {
     crate::tuning::tuning().engine
+}
+
+/// Whether the engine writes `fb`: an RGBA8 layout, not a wide buffer.
+fn target_ok(fb: &Target<'_>) -> bool {
+    fb.wide.is_none()
+        && matches!(
+            fb.format,
+            ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
+        )
 }
 
 impl Walk {
@@ -88,12 +105,7 @@ impl Walk {
         persp: bool,
         fb: &Target<'_>,
     ) -> Option<Walk> {
-        let target_ok = fb.wide.is_none()
-            && matches!(
-                fb.format,
-                ColorFormat::Rgba | ColorFormat::Bgra | ColorFormat::Argb
-            );
-        if !target_ok
+        if !target_ok(fb)
             || units.is_empty()
             || units.len() > MAX_TEXTURE_UNITS
             || !super::ff::covers(plan)
@@ -118,6 +130,34 @@ impl Walk {
             blend: plan.blend.is_some(),
             writes: plan.color_mask != [false; 4],
             count_samples: plan.count_samples,
+            own_uniforms: false,
+        })
+    }
+
+    /// The walk of a triangle drawn with the compiled program `prog` (no texture units)
+    /// into `fb` under `plan`, whose uniform `k` is the bits `uniforms[k]`; `None` when
+    /// the target or the plan is not one the engine draws.
+    pub fn with_program(
+        prog: Rc<Program>,
+        plan: &FragPlan,
+        uniforms: &[u32; MAX_UNIFORMS],
+        fb: &Target<'_>,
+    ) -> Option<Walk> {
+        if !target_ok(fb) || !super::ff::covers(plan) {
+            return None;
+        }
+        let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);
+        for (d, &u) in st.uniforms.iter_mut().zip(uniforms) {
+            *d = f32::from_bits(u);
+        }
+        Some(Walk {
+            st,
+            prog,
+            units: 0,
+            blend: plan.blend.is_some(),
+            writes: plan.color_mask != [false; 4],
+            count_samples: plan.count_samples,
+            own_uniforms: true,
         })
     }
 
@@ -189,7 +229,11 @@ impl Walk {
             inputs: &inputs[..4 * self.units],
             color: &mut *fb.color,
             depth: &mut *fb.depth,
-            uniforms: &t.flat,
+            uniforms: if self.own_uniforms {
+                &st.uniforms
+            } else {
+                &t.flat
+            },
             live_out: &mut st.live_out[..n],
         };
         let c = self.prog.run(&mut st.scratch, &mut io, &st.chunks[..n], n);

@@ -398,8 +398,15 @@ pub fn lower(s: &FfState) -> Option<Ir> {
             *c = l.add(kg, cf);
         }
     }
-    let b = &mut l.b;
-    let px = b.push(Op::PackUnorm8(prev));
+    tail(&mut l.b, p, prev)?;
+    l.b.finish().ok()
+}
+
+/// The per-fragment operations after the colour, in the order of [`lower`]: the unorm8
+/// pack of `color`, the alpha test, the depth test (plane [`PLANE_Z`]), blending, the
+/// colour mask and the store. `None` when the depth format is not lowered.
+pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
+    let px = b.push(Op::PackUnorm8(color));
     alpha_test(b, p, px);
     if let Some(d) = p.depth {
         let z = b.push(Op::Interp(PLANE_Z));
@@ -451,5 +458,5 @@ pub fn lower(s: &FfState) -> Option<Ir> {
         }
         b.push(Op::StoreColor(out));
     }
-    l.b.finish().ok()
+    Some(())
 }

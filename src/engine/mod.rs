@@ -4,7 +4,10 @@
 //! units as before and hands each triangle's chunk rows with their texels to [`draw::Walk`],
 //! which runs the state's program from the per-thread variant [`cache`] (see
 //! `docs/engine.md`). The tests check the lowered programs against the hand-written
-//! fragment functions for the same states, bytes and counters.
+//! fragment functions for the same states, bytes and counters. Fragment shaders run here
+//! too, whatever `SOFTGL_ENGINE` says: `crate::shader::draw` compiles a program's shader
+//! with the same per-fragment tail ([`ff::tail`]) and draws its triangles through
+//! [`draw::Walk::with_program`], variants in the same [`cache`] ([`cache::Key`]).
 //!
 //! # Design
 //! - **IR** ([`ir`]): SSA values of 8 lanes, typed f32, i32 or mask; arithmetic defined

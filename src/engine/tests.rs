@@ -193,6 +193,7 @@ pub(super) fn state(full: bool, fma: bool, over: bool) -> FragPlan {
         ms: None,
         blend_color: [0.0; 4],
         srgb: false,
+        shader: None,
     }
 }
 

@@ -79,6 +79,7 @@ fn random_state(pick: &mut dyn FnMut(u32) -> usize) -> (FragPlan, Vec<UnitPlan<'
         ms: None,
         blend_color: [0.0; 4],
         srgb: false,
+        shader: None,
     };
     (plan, units)
 }

@@ -58,6 +58,9 @@ pub struct FragPlan {
     /// The colour buffer is sRGB and GL_FRAMEBUFFER_SRGB is on: writes are encoded and
     /// blending is done in linear space ([`srgb`]; general path only).
     pub srgb: bool,
+    /// A fragment shader replaces the colour stages (texturing, colour sum, fog): the
+    /// triangles are drawn through the engine by [`crate::shader::draw`].
+    pub shader: Option<crate::shader::draw::ShaderRef>,
 }
 
 /// A 4x multisample triangle draw, rasterised once for the four samples

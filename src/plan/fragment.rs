@@ -94,6 +94,7 @@ pub fn fragment(
         blend_color: b.color,
         // set by the draw, which knows the colour buffer (`srgb_store`)
         srgb: false,
+        shader: None,
     }
 }
 

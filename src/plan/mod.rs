@@ -25,6 +25,7 @@ use crate::pipe::{Cap, Caps, ClipPlanes, Face, FillMode, LightingState, RasterSt
 use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
 use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
 use crate::render::DrawPlan;
+use crate::shader::draw::FragShader;
 use crate::texture::{TextureState, UnitPlan};
 
 /// The buffers a draw goes into, as far as the plan depends on them.
@@ -86,6 +87,17 @@ pub struct DrawState<'a> {
     pub ms: Option<MsPass>,
     /// The draw's primitives are points or lines (the polygon pipeline plays no part).
     pub points_lines: bool,
+    /// The current program's fragment shader, when it has one a draw can run.
+    pub shader: Option<ShaderInput<'a>>,
+}
+
+/// A fragment shader for a draw: the checked shader and its uniform words in slot order.
+#[derive(Clone, Copy, Debug)]
+pub struct ShaderInput<'a> {
+    /// The shader.
+    pub frag: &'a FragShader,
+    /// Its uniform values, [`FragShader::uniforms`]' components in order.
+    pub uniforms: &'a [u32],
 }
 
 /// Plans a draw of `s`.
@@ -108,8 +120,17 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     if feedback_tex0 {
         stage.add_texture_unit(0, s.texture[0].top());
     }
+    // A fragment shader replaces texturing: the vertex stage computes the coordinate
+    // sets it reads instead (with each unit's matrix and texgen, as Mesa's fixed-function
+    // vertex program does for the inputs a fragment program reads).
+    let shader = s.shader.filter(|_| !feedback);
+    if let Some(sh) = &shader {
+        for u in 0..sh.frag.tex_coords.min(MAX_TEXTURE_UNITS) {
+            stage.add_texture_unit(u, s.texture[u].top());
+        }
+    }
     let tex: Vec<UnitPlan<'a>> = (0..MAX_TEXTURE_UNITS)
-        .filter(|_| !feedback)
+        .filter(|_| !feedback && shader.is_none())
         .filter_map(|u| {
             let p = s.textures.unit_plan(u)?;
             stage.add_texture_unit(u, s.texture[u].top());
@@ -142,6 +163,12 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     frag.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     frag.count_samples = s.count_samples;
+    if let Some(sh) = &shader {
+        // The shader replaces the colour sum and fog.
+        frag.separate_specular = false;
+        frag.fog = None;
+        frag.shader = Some(sh.frag.reference(sh.uniforms, t.height, t.y_flip));
+    }
     // Filled triangles that take the polygon pipeline (stippled, offset with two-sided
     // lighting …) are drawn with the single-sample rules in every plane.
     let mut prims = prim_enables(caps);

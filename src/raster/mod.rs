@@ -31,6 +31,7 @@ pub mod prim_tex;
 pub mod prims;
 mod row_pairs;
 mod sample8;
+mod shaded;
 pub mod smooth;
 pub mod stipple;
 mod textured;
@@ -98,6 +99,10 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
     let b = d.clip(t.bbox);
     if b[0] > b[2] || b[1] > b[3] {
         return false;
+    }
+    if let Some(sh) = &d.plan.shader {
+        shaded::triangle(t, b, sh, d);
+        return true;
     }
     if d.plan.ms.is_some() {
         raster_samples(t, b, d);
@@ -563,6 +568,7 @@ mod tests {
             ms: None,
             blend_color: [0.0; 4],
             srgb: false,
+            shader: None,
         }
     }
 

@@ -61,7 +61,21 @@ pub struct Lowered {
     pub uniforms: Vec<Slot>,
     /// The varyings read, in the order of their planes.
     pub varyings: Vec<Slot>,
+    /// The shader reads `gl_FrontFacing` (lowered as true: a draw must refuse it).
+    pub front_facing: bool,
 }
+
+/// What the lowering of a shader for a draw depends on besides the shader.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Options {
+    /// The rows are stored top-down in a target of this height: `gl_FragCoord.y` is
+    /// `height − (row + 0.5)` (exact in f32), as Mesa's window-position transform gives
+    /// it; `None`: `row + 0.5`.
+    pub flip_height: Option<f32>,
+}
+
+/// The elements of `gl_TexCoord[]` (unsized in the shader): `gl_MaxTextureCoords`.
+pub const TEX_COORDS: u32 = 8;
 
 /// Why a shader does not lower (yet).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -128,10 +142,17 @@ pub struct Lower<'p> {
     pub(super) unmasked: bool,
     /// The last mask computed and what it was computed from.
     pub(super) exec_memo: Option<([Option<Val>; 4], Option<Val>)>,
+    opts: Options,
+    front_facing: bool,
 }
 
 /// Lowers a fragment shader.
 pub fn lower_fragment(p: &hir::Program) -> Result<Lowered, Unsupported> {
+    lower_fragment_with(p, Options::default())
+}
+
+/// Lowers a fragment shader for a draw with `opts`.
+pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, Unsupported> {
     let mut l = Lower {
         p,
         b: Builder::new(),
@@ -146,6 +167,8 @@ pub fn lower_fragment(p: &hir::Program) -> Result<Lowered, Unsupported> {
         depth: 0,
         unmasked: false,
         exec_memo: None,
+        opts,
+        front_facing: false,
     };
     for (v, init) in &p.globals {
         if let Some(e) = init {
@@ -176,6 +199,7 @@ pub fn lower_fragment(p: &hir::Program) -> Result<Lowered, Unsupported> {
         color: [color[0], color[1], color[2], color[3]],
         uniforms: l.uniforms,
         varyings: l.varyings,
+        front_facing: l.front_facing,
     })
 }
 
@@ -280,7 +304,12 @@ impl Lower<'_> {
         }
         let var = &self.p.vars[id];
         let mut sc = Vec::new();
-        scalars(&var.ty, &mut sc)?;
+        match &var.ty {
+            Type::Array(t, None) if var.name == "gl_TexCoord" => {
+                scalars(&Type::Array(t.clone(), Some(TEX_COORDS)), &mut sc)?
+            }
+            ty => scalars(ty, &mut sc)?,
+        }
         let vals = match var.storage {
             Storage::Const => match &var.value {
                 Some(c) => self.constant(c, &var.ty)?,
@@ -332,12 +361,19 @@ impl Lower<'_> {
                 let half = self.f32(0.5);
                 let (x, y) = (self.op(Op::FragX), self.op(Op::FragY));
                 let x = self.op(Op::Add(x, half));
-                let y = self.op(Op::Add(y, half));
+                let mut y = self.op(Op::Add(y, half));
+                if let Some(h) = self.opts.flip_height {
+                    let h = self.f32(h);
+                    y = self.op(Op::Sub(h, y));
+                }
                 let z = self.op(Op::Interp(PLANE_Z));
                 let w = self.op(Op::Interp(PLANE_INV_W));
                 return Ok(vec![x, y, z, w]);
             }
-            "gl_FrontFacing" => return Ok(vec![self.mask(true)]),
+            "gl_FrontFacing" => {
+                self.front_facing = true;
+                return Ok(vec![self.mask(true)]);
+            }
             _ => {}
         }
         if sc.iter().any(|s| *s != Scalar::Float) {

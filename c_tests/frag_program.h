@@ -1,0 +1,117 @@
+/* frag_program.h - what the fragment-program scenes (frag_*.c) share: a
+ * program of one fragment shader (no vertex shader: the fixed-function vertex
+ * stage feeds gl_Color, gl_TexCoord[] and gl_FragCoord), linked or the scene
+ * fails with the log on stderr; an FW x FH (default 128x128) RGBA context with a 24-bit depth
+ * buffer; perspective and orthographic helpers; and the image and depth
+ * output. Include after the GL, glext and OSMesa headers. */
+#ifndef SGL_FRAG_PROGRAM_H
+#define SGL_FRAG_PROGRAM_H
+
+#include "common.h"
+
+#ifndef FW
+#define FW 128
+#define FH 128
+#endif
+
+/* Compiles and links `fs` as the only shader of a program. */
+static inline GLuint frag_program(const char *fs)
+{
+    GLuint s = glCreateShader(GL_FRAGMENT_SHADER), p = glCreateProgram();
+    GLint ok = 0;
+    char log[2048];
+    glShaderSource(s, 1, &fs, NULL);
+    glCompileShader(s);
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    glGetShaderInfoLog(s, sizeof log, NULL, log);
+    if (ok) {
+        glAttachShader(p, s);
+        glLinkProgram(p);
+        glGetProgramiv(p, GL_LINK_STATUS, &ok);
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+    }
+    if (!ok) {
+        fprintf(stderr, "compile or link: %s\n", log);
+        exit(2);
+    }
+    return p;
+}
+
+/* A context drawing into a fresh FW x FH RGBA buffer with depth. */
+static inline OSMesaContext frag_context(unsigned char **buf)
+{
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    SGL_CHECK(ctx != NULL);
+    *buf = malloc(FW * FH * 4);
+    SGL_CHECK(*buf != NULL);
+    SGL_CHECK(OSMesaMakeCurrent(ctx, *buf, GL_UNSIGNED_BYTE, FW, FH));
+    return ctx;
+}
+
+/* A perspective view of the box [-1,1]^2 at depth -3 .. -1 (w varies). */
+static inline void frag_perspective(void)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 10.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glTranslatef(0.0f, 0.0f, -2.0f);
+}
+
+/* The colour image and the depth buffer as read back. */
+static inline void frag_output(FILE *out, const char *name, const unsigned char *buf)
+{
+    static GLuint depth[FW * FH];
+    char dn[64];
+    glFinish();
+    sgl_image(out, name, FW, FH, 4, "RGBA", FW * 4, 1, buf);
+    glReadPixels(0, 0, FW, FH, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth);
+    snprintf(dn, sizeof dn, "%s_depth", name);
+    sgl_data(out, dn, sizeof depth, depth);
+}
+
+/* The output, then the end of the scene: closes the file, frees the context. */
+static inline int frag_end(FILE *out, const char *name, unsigned char *buf, OSMesaContext ctx)
+{
+    frag_output(out, name, buf);
+    sgl_close(out);
+    OSMesaDestroyContext(ctx);
+    free(buf);
+    return 0;
+}
+
+/* A triangle with per-vertex colours and texture coordinates (sets 0 and 1). */
+static inline void frag_tri(const float v[3][3], const float c[3][4], const float t[3][4])
+{
+    int k;
+    glBegin(GL_TRIANGLES);
+    for (k = 0; k < 3; k++) {
+        glColor4fv(c[k]);
+        glMultiTexCoord4fv(GL_TEXTURE0, t[k]);
+        glMultiTexCoord4f(GL_TEXTURE1, t[k][1], t[k][0], t[k][3], 1.0f);
+        glVertex3fv(v[k]);
+    }
+    glEnd();
+}
+
+/* n seeded random triangles in [-1.2,1.2]^2 x [-1,1] with colours and coordinates. */
+static inline void frag_random_tris(int n)
+{
+    int i, k, j;
+    for (i = 0; i < n; i++) {
+        float v[3][3], c[3][4], t[3][4];
+        for (k = 0; k < 3; k++) {
+            v[k][0] = sgl_randf() * 2.4f - 1.2f;
+            v[k][1] = sgl_randf() * 2.4f - 1.2f;
+            v[k][2] = sgl_randf() * 2.0f - 1.0f;
+            for (j = 0; j < 4; j++) {
+                c[k][j] = sgl_randf();
+                t[k][j] = sgl_randf() * 4.0f - 2.0f;
+            }
+        }
+        frag_tri(v, c, t);
+    }
+}
+
+#endif

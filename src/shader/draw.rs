@@ -1,0 +1,170 @@
+//! Fragment shaders in draws: a linked fragment shader is checked once
+//! ([`FragShader::prepare`]) and registered under an id; a draw carries a [`ShaderRef`]
+//! (the id, the flip of `gl_FragCoord.y`, the uniform values) in its fragment plan, and
+//! each triangle's walk ([`walk`]) takes the variant compiled for the shader and the
+//! plan from the engine's per-thread cache, lowering it on a miss.
+//!
+//! A variant is the lowered shader with its planes renumbered to the triangle's
+//! ([`crate::engine::lower::planes_of`]: `gl_Color` is varying 0–3, `gl_TexCoord[n]`
+//! varyings `VARY_TEX + 4n…`, which the plan step makes the vertex stage compute), then
+//! the fixed per-fragment operations after `gl_FragColor` ([`crate::engine::ff::tail`]:
+//! alpha test, depth test, blending, colour mask, store). Uniform values are run inputs,
+//! so a glUniform between draws changes no variant.
+
+use crate::engine::cache::{program_of, Key};
+use crate::engine::draw::{Walk, MAX_UNIFORMS};
+use crate::engine::ir::{Builder, Ir, Op};
+use crate::fragment::FragPlan;
+use crate::framebuffer::Target;
+use crate::geometry::{MAX_VARY, VARY_TEX};
+use softgl_glsl::hir;
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex, Weak};
+
+use super::lower::{lower_fragment_with, Options, Slot, FIRST_VARYING_PLANE};
+use super::lower::{PLANE_INV_W, PLANE_Z};
+
+/// A fragment shader a draw can run: registered while it lives.
+pub struct FragShader {
+    /// Its registration id.
+    pub id: u64,
+    hir: Arc<hir::Program>,
+    /// The uniforms the lowered code reads, in slot order.
+    pub uniforms: Vec<Slot>,
+    /// Each lowered varying plane's triangle varying (`planes_of` index minus 2).
+    vary: Vec<u16>,
+    /// The texture coordinate sets the vertex stage must compute (`gl_TexCoord[0..n]`).
+    pub tex_coords: usize,
+}
+
+impl std::fmt::Debug for FragShader {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "FragShader({})", self.id)
+    }
+}
+
+/// The ids handed out.
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+
+/// The live shaders by id (entries of dropped shaders are pruned on registration).
+static REGISTRY: Mutex<Option<HashMap<u64, Weak<FragShader>>>> = Mutex::new(None);
+
+impl FragShader {
+    /// Checks that `hir` lowers and that the fixed-function vertex stage feeds every
+    /// input it reads, and registers it; `Err` says why a draw cannot run it.
+    pub fn prepare(hir: Arc<hir::Program>) -> Result<Arc<FragShader>, String> {
+        let l = lower_fragment_with(&hir, Options::default()).map_err(|e| e.0)?;
+        if l.front_facing {
+            return Err("gl_FrontFacing is not lowered".into());
+        }
+        let mut vary = Vec::new();
+        let mut tex_coords = 0;
+        for s in &l.varyings {
+            let base = match s.name.as_str() {
+                "gl_Color" => 0,
+                "gl_TexCoord" => {
+                    tex_coords = s.count as usize / 4;
+                    VARY_TEX
+                }
+                n => return Err(format!("input {n} is not fed by the fixed-function stage")),
+            };
+            vary.extend((0..s.count).map(|k| (base + k as usize) as u16));
+        }
+        if vary.iter().any(|&v| v as usize >= MAX_VARY) {
+            return Err("too many varyings".into());
+        }
+        let words: usize = l.uniforms.iter().map(|s| s.count as usize).sum();
+        if words > MAX_UNIFORMS {
+            return Err(format!(
+                "{words} uniform components (at most {MAX_UNIFORMS})"
+            ));
+        }
+        if let Some(s) = l.uniforms.iter().find(|s| s.name.starts_with("gl_")) {
+            return Err(format!("built-in uniform {} is not supplied", s.name));
+        }
+        let fs = Arc::new(FragShader {
+            id: NEXT_ID.fetch_add(1, Relaxed),
+            hir,
+            uniforms: l.uniforms,
+            vary,
+            tex_coords,
+        });
+        let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
+        let map = r.get_or_insert_with(HashMap::new);
+        map.retain(|_, w| w.strong_count() > 0);
+        map.insert(fs.id, Arc::downgrade(&fs));
+        Ok(fs)
+    }
+
+    /// The draw-time reference of this shader with uniform words `uniforms` (in slot
+    /// order) into a target of `height` rows (`y_flip`: stored top-down).
+    pub fn reference(&self, uniforms: &[u32], height: usize, y_flip: bool) -> ShaderRef {
+        let mut u = [0; MAX_UNIFORMS];
+        for (d, &s) in u.iter_mut().zip(uniforms) {
+            *d = s;
+        }
+        ShaderRef {
+            id: self.id,
+            flip: y_flip.then_some(height as u32),
+            uniforms: u,
+        }
+    }
+
+    /// The variant of this shader under `plan` (see the module doc).
+    fn variant(&self, flip: Option<u32>, plan: &FragPlan) -> Option<Ir> {
+        let opts = Options {
+            flip_height: flip.map(|h| h as f32),
+        };
+        let l = lower_fragment_with(&self.hir, opts).ok()?;
+        let mut ir = l.ir;
+        for op in &mut ir.ops {
+            if let Op::Interp(n) = op {
+                *n = match *n {
+                    PLANE_INV_W => crate::engine::lower::PLANE_W,
+                    PLANE_Z => crate::engine::lower::PLANE_Z,
+                    k => {
+                        let v = *self.vary.get((k - FIRST_VARYING_PLANE) as usize)?;
+                        crate::engine::lower::PLANE_VARY + v
+                    }
+                };
+            }
+        }
+        let mut b = Builder::from_ir(ir);
+        crate::engine::ff::tail(&mut b, plan, l.color)?;
+        b.finish().ok()
+    }
+}
+
+/// A draw's fragment shader: its id, the target height when rows are flipped, and the
+/// uniform values (words in slot order).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShaderRef {
+    /// The registration id of the [`FragShader`].
+    pub id: u64,
+    /// The target's height when its rows are stored top-down.
+    pub flip: Option<u32>,
+    /// The uniform words.
+    pub uniforms: [u32; MAX_UNIFORMS],
+}
+
+/// The registered shader of `id`, if it still lives.
+fn lookup(id: u64) -> Option<Arc<FragShader>> {
+    let r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
+    r.as_ref()?.get(&id)?.upgrade()
+}
+
+/// The walk of a triangle drawn with `sh` under `plan` into `fb`, or `None` when the
+/// engine does not draw this plan or target (the caller draws nothing and counts it).
+pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>) -> Option<Walk> {
+    let key = Key::Shader {
+        id: sh.id,
+        flip: sh.flip,
+        plan: FragPlan {
+            shader: None,
+            ..*plan
+        },
+    };
+    let prog = program_of(&key, || lookup(sh.id)?.variant(sh.flip, plan))?;
+    Walk::with_program(prog, plan, &sh.uniforms, fb)
+}

@@ -1,0 +1,185 @@
+//! Draws with a current program (issue 43): a fragment shader without a vertex shader
+//! colours filled triangles through the engine; what the engine does not run (a vertex
+//! shader, texture sampling, lines and points) draws nothing and is counted in
+//! `program_draws_refused`, and fixed function comes back with glUseProgram(0).
+
+use softgl::ffi::enums::*;
+use softgl::ffi::immediate::*;
+use softgl::ffi::osmesa::*;
+use softgl::ffi::shaders::*;
+use softgl::ffi::shaders_uniform::*;
+use softgl::ffi::state::*;
+use std::ffi::CString;
+
+const W: usize = 16;
+const GL_FRAGMENT_SHADER: u32 = 0x8B30;
+const GL_VERTEX_SHADER: u32 = 0x8B31;
+const GL_LINK_STATUS: u32 = 0x8B82;
+
+/// A current 16x16 RGBA context cleared to black.
+struct Ctx {
+    ctx: OSMesaContext,
+    buf: Vec<u8>,
+}
+
+impl Ctx {
+    fn new() -> Ctx {
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, std::ptr::null_mut());
+        assert!(!ctx.is_null());
+        let mut buf = vec![0u8; W * W * 4];
+        // SAFETY: the buffer holds W*W RGBA pixels and outlives the binding.
+        let ok = unsafe {
+            OSMesaMakeCurrent(
+                ctx,
+                buf.as_mut_ptr().cast(),
+                GL_UNSIGNED_BYTE,
+                W as i32,
+                W as i32,
+            )
+        };
+        assert_eq!(ok, GL_TRUE as u8);
+        Ctx { ctx, buf }
+    }
+
+    fn pixel(&self, x: usize, y: usize) -> [u8; 4] {
+        glFinish();
+        let i = 4 * (y * W + x);
+        [
+            self.buf[i],
+            self.buf[i + 1],
+            self.buf[i + 2],
+            self.buf[i + 3],
+        ]
+    }
+
+    fn clear(&self) {
+        glClearColor(0.0, 0.0, 0.0, 0.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+}
+
+impl Drop for Ctx {
+    fn drop(&mut self) {
+        OSMesaDestroyContext(self.ctx);
+    }
+}
+
+fn shader(kind: u32, src: &str) -> u32 {
+    let s = glCreateShader(kind);
+    let c = CString::new(src).unwrap();
+    let p = c.as_ptr();
+    // SAFETY: one NUL-terminated string.
+    unsafe { glShaderSource(s, 1, &p, std::ptr::null()) };
+    glCompileShader(s);
+    s
+}
+
+fn program(vs: Option<&str>, fs: &str) -> u32 {
+    let p = glCreateProgram();
+    if let Some(v) = vs {
+        glAttachShader(p, shader(GL_VERTEX_SHADER, v));
+    }
+    glAttachShader(p, shader(GL_FRAGMENT_SHADER, fs));
+    glLinkProgram(p);
+    let mut ok = 0;
+    // SAFETY: one GLint.
+    unsafe { glGetProgramiv(p, GL_LINK_STATUS, &mut ok) };
+    assert_eq!(ok, 1, "link");
+    p
+}
+
+fn stats() -> softgl::stats::Stats {
+    softgl::ffi::current_stats().unwrap()
+}
+
+#[test]
+fn fragment_programs_draw_and_refusals_draw_nothing() {
+    let c = Ctx::new();
+    c.clear();
+    let p = program(
+        None,
+        "uniform vec4 k; void main() { gl_FragColor = k * gl_Color; }",
+    );
+    glUseProgram(p);
+    let name = CString::new("k").unwrap();
+    // SAFETY: a NUL-terminated name.
+    let k = unsafe { glGetUniformLocation(p, name.as_ptr()) };
+    assert!(k >= 0);
+    glColor4f(1.0, 1.0, 1.0, 1.0);
+    glUniform4f(k, 1.0, 0.0, 0.0, 1.0);
+    let s0 = stats();
+    glRectf(-1.0, -1.0, 0.0, 1.0);
+    glUniform4f(k, 0.0, 1.0, 0.0, 1.0);
+    glRectf(0.0, -1.0, 1.0, 1.0);
+    let s1 = stats();
+    assert_eq!(s1.program_draws - s0.program_draws, 2);
+    assert_eq!(c.pixel(2, 5), [255, 0, 0, 255], "first uniform value");
+    assert_eq!(
+        c.pixel(13, 5),
+        [0, 255, 0, 255],
+        "the glUniform between the draws"
+    );
+
+    // Lines and points with a program: nothing drawn, counted.
+    c.clear();
+    glBegin(GL_LINES);
+    glVertex2f(-1.0, 0.01);
+    glVertex2f(1.0, 0.01);
+    glEnd();
+    let s2 = stats();
+    assert_eq!(s2.program_draws_refused - s1.program_draws_refused, 1);
+    assert!(
+        (0..W).all(|x| c.pixel(x, 8) == [0; 4]),
+        "a refused line draws nothing"
+    );
+
+    // A vertex shader: nothing drawn, counted.
+    let pv = program(
+        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
+        "void main() { gl_FragColor = gl_Color; }",
+    );
+    glUseProgram(pv);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s3 = stats();
+    assert_eq!(s3.program_draws_refused - s2.program_draws_refused, 1);
+    assert_eq!(c.pixel(8, 8), [0; 4]);
+
+    // Texture sampling does not lower: nothing drawn, counted.
+    let pt = program(
+        None,
+        "uniform sampler2D t; void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy); }",
+    );
+    glUseProgram(pt);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s4 = stats();
+    assert_eq!(s4.program_draws_refused - s3.program_draws_refused, 1);
+    assert_eq!(c.pixel(8, 8), [0; 4]);
+
+    // glUseProgram(0): fixed function again.
+    glUseProgram(0);
+    glColor4f(0.0, 0.0, 1.0, 1.0);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    assert_eq!(c.pixel(8, 8), [0, 0, 255, 255]);
+    assert_eq!(stats().program_draws, s4.program_draws);
+}
+
+#[test]
+fn discard_kills_and_frag_coord_is_the_window_position() {
+    let c = Ctx::new();
+    c.clear();
+    let p = program(
+        None,
+        "void main() { if (gl_FragCoord.x < 4.0) discard; \
+         gl_FragColor = vec4(gl_FragCoord.x / 64.0, gl_FragCoord.y / 64.0, 0.0, 1.0); }",
+    );
+    glUseProgram(p);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    // OSMesa's buffer is bottom-up: row 0 in memory is window y 0.
+    assert_eq!(c.pixel(2, 3), [0; 4], "discarded");
+    assert_eq!(
+        c.pixel(9, 3),
+        [38, 14, 0, 255],
+        "(x + 0.5) / 64 and (y + 0.5) / 64"
+    );
+    assert_eq!(c.pixel(15, 12), [62, 50, 0, 255]);
+}
