@@ -57,6 +57,8 @@ macro_rules! each4 {
 pub mod compressed;
 pub mod cube;
 #[cfg(target_arch = "x86_64")]
+pub mod cube_aos8;
+#[cfg(target_arch = "x86_64")]
 pub mod cube_avx2;
 pub mod cube_seamless;
 pub mod env;
