@@ -10,6 +10,10 @@
 //!   ([`crate::texture::cube_avx2::Cube8`], MuJoCo's skybox): both rows at once, as the
 //!   per-pixel LOD reads each quad's two rows; the quads it leaves (a tap across a face
 //!   edge, a coordinate that is not finite) are sampled here by the quad sampler;
+//! - a cube map without seamless filtering on llvmpipe's 8-bit path, LINEAR, mipmapped
+//!   or not ([`crate::texture::cube_aos8::CubeAos8`], scene k's spheres): both rows at
+//!   once likewise; the quads it leaves (a coordinate that is not finite) are sampled
+//!   here by the quad sampler;
 //! - a 3D texture on llvmpipe's 8-bit path without a LOD
 //!   ([`crate::texture::volume8::Vol8`]); the quads it leaves (a coordinate that is NaN or
 //!   of magnitude 2^30 texels or more) are sampled here by the quad sampler;
@@ -101,7 +105,8 @@ unsafe fn rows_body(
     texels: &mut [TexLanes; 2],
 ) -> Option<u32> {
     use crate::texture::{
-        cube_avx2::Cube8, fast, sample, shadow_avx2::Shadow8, soa_avx2::Soa8, ExtKind,
+        cube_aos8::CubeAos8, cube_avx2::Cube8, fast, sample, shadow_avx2::Shadow8, soa_avx2::Soa8,
+        ExtKind,
     };
     let Rows { s, t, r, live } = *c;
     let flat = matches!(u.ext.kind, ExtKind::Flat);
@@ -135,6 +140,11 @@ unsafe fn rows_body(
         let [t0, t1] = texels;
         // SAFETY: forwarded from the caller.
         return Some(unsafe { cube.rows(s, t, r, live, [&mut t0[k], &mut t1[k]]) });
+    }
+    if let (Some(r), Some(cube)) = (r, CubeAos8::of(u)) {
+        let [t0, t1] = texels;
+        // SAFETY: forwarded from the caller.
+        return Some(unsafe { cube.rows([s, t, r], live, [&mut t0[k], &mut t1[k]]) });
     }
     if let (Some(r), Some(vol)) = (r, crate::texture::volume8::Vol8::of(u)) {
         let [t0, t1] = texels;

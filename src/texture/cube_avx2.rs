@@ -43,7 +43,7 @@ pub struct Cube8<'a> {
 
 /// A direction's major axis, face and mirrored minor coordinates, per lane.
 #[derive(Clone, Copy)]
-struct Dir {
+pub(super) struct Dir {
     /// The major axis is z (mask).
     z: F32x8,
     /// The major axis is x (mask).
@@ -59,12 +59,11 @@ struct Dir {
 }
 
 /// One level selection per lane: `(level0, level1, fraction)`.
-type Sel8 = (I32x8, I32x8, F32x8);
+pub(super) type Sel8 = (I32x8, I32x8, F32x8);
 
 impl<'a> Cube8<'a> {
     /// The sampler of unit `p`, when it covers the unit's state.
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)]
     pub fn of(p: &'a UnitPlan<'a>) -> Option<Cube8<'a>> {
         let ExtKind::CubeSeamless(faces) = &p.ext.kind else {
             return None;
@@ -72,34 +71,7 @@ impl<'a> Cube8<'a> {
         if p.ext.floats || p.ext.depth.is_some() {
             return None;
         }
-        if p.min_filter != Filter::Linear || p.mag_filter != Filter::Linear {
-            return None;
-        }
-        let derivs = p.needs_lod && !p.lod.min_max_equal;
-        // without a mip filter llvmpipe takes the quad's top-left LOD (not covered)
-        if derivs && p.mip_filter == MipFilter::None {
-            return None;
-        }
-        let mut sizes = [1i32; MAX_LEVELS];
-        for l in p.first..=p.last {
-            let n = faces[0].get(l)?.as_ref()?.width;
-            // every index `y·n + x` fits an i32 lane
-            if n.checked_mul(n)? >= 1 << 30 {
-                return None;
-            }
-            sizes[l] = n as i32;
-        }
-        let sel = if derivs {
-            (p.first, p.first, 0.0)
-        } else {
-            let lod = if p.needs_lod {
-                super::lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
-            } else {
-                Lod::MAG
-            };
-            let (_, l0, l1, f) = select_levels(p, lod);
-            (l0, l1, f)
-        };
+        let Levels8 { derivs, sel, sizes } = Levels8::of(p, faces)?;
         Some(Cube8 {
             p,
             faces,
@@ -131,57 +103,15 @@ impl<'a> Cube8<'a> {
         if qlive == 0 {
             return 0;
         }
-        // lanes to sample with the scalar code, per row
-        let mut bad = [0u32; 2];
         // SAFETY: (all) the caller vouches for AVX2 (and FMA when the lerps fuse); the
         // arrays are 8 lanes each.
         unsafe {
-            // (no closures here or below: one the compiler leaves out of line loses the
-            // caller's target features)
-            let v = [
-                [
-                    F32x8::load(s[0].as_ptr()),
-                    F32x8::load(t[0].as_ptr()),
-                    F32x8::load(r[0].as_ptr()),
-                ],
-                [
-                    F32x8::load(s[1].as_ptr()),
-                    F32x8::load(t[1].as_ptr()),
-                    F32x8::load(r[1].as_ptr()),
-                ],
-            ];
-            let inf = F32x8::splat(f32::INFINITY);
-            for row in 0..2 {
-                for c in v[row] {
-                    // |c| < inf: false for NaN and infinities
-                    bad[row] |= !abs(c).cmp_lt(inf).movemask() & 0xff;
-                }
-            }
-            let dirs = [Dir::of(v[0]), Dir::of(v[1])];
-            let sels = if self.derivs {
-                // ddy: bottom minus top of the pixel's column, the same for both rows
-                let ddy = [
-                    v[1][0].sub(v[0][0]),
-                    v[1][1].sub(v[0][1]),
-                    v[1][2].sub(v[0][2]),
-                ];
-                let size = F32x8::splat(self.sizes[self.p.first] as f32);
-                // ddx: right minus left of the pixel's row in its quad
-                let ddx0 = [quad_dx(v[0][0]), quad_dx(v[0][1]), quad_dx(v[0][2])];
-                let ddx1 = [quad_dx(v[1][0]), quad_dx(v[1][1]), quad_dx(v[1][2])];
-                [
-                    self.select(dirs[0].rho(size, ddx0, ddy)),
-                    self.select(dirs[1].rho(size, ddx1, ddy)),
-                ]
-            } else {
-                let (l0, l1, f) = self.sel;
-                let sel = (
-                    I32x8::splat(l0 as i32),
-                    I32x8::splat(l1 as i32),
-                    F32x8::splat(f),
-                );
-                [sel, sel]
-            };
+            let size = self.sizes[self.p.first];
+            let Chunk {
+                dirs,
+                sels,
+                mut bad,
+            } = Chunk::of(self.p, self.derivs, self.sel, size, [s, t, r]);
             for row in 0..2 {
                 let (face, fs, ft) = dirs[row].project(self.derivs);
                 let (l0, l1, frac) = sels[row];
@@ -210,85 +140,7 @@ impl<'a> Cube8<'a> {
                     *o = [c[0][i], c[1][i], c[2][i], c[3][i]];
                 }
             }
-        }
-        // the quads with a live pixel and a lane the vectors do not follow
-        let lanes = bad[0] | bad[1];
-        (0..4).fold(0, |m, j| {
-            let redo = qlive >> j & 1 != 0 && lanes >> (2 * j) & 3 != 0;
-            m | (u32::from(redo) << j)
-        })
-    }
-
-    /// The level selection of each lane from its rho² (`lod::from_rho` with
-    /// `select_levels`; the image filters are both LINEAR).
-    ///
-    /// # Safety
-    /// The CPU has AVX2.
-    #[inline(always)]
-    unsafe fn select(&self, rho: F32x8) -> Sel8 {
-        let p = self.p;
-        let lp = &p.lod;
-        // SAFETY: forwarded from the caller.
-        unsafe {
-            let zero = F32x8::zero();
-            let bits = rho.bits();
-            let e = bits
-                .shr::<23>()
-                .and(I32x8::splat(0xff))
-                .sub(I32x8::splat(127));
-            let fast = lp.bias == 0.0 && !lp.apply_min && !lp.apply_max;
-            let (positive, ipart, fpart) = if fast && p.mip_filter != MipFilter::Linear {
-                let ipart = e.add(I32x8::splat(1)).sra::<1>();
-                (rho.cmp_gt(F32x8::splat(1.0)), ipart, zero)
-            } else {
-                // `fast_log2(rho²)·0.5`
-                let m = bits
-                    .and(I32x8::splat(0x007f_ffff))
-                    .or(I32x8::splat(0x3f80_0000))
-                    .as_f32();
-                let mut lod = e
-                    .sub(I32x8::splat(1))
-                    .to_f32()
-                    .add(m)
-                    .mul(F32x8::splat(0.5));
-                if lp.bias != 0.0 {
-                    lod = lod.add(F32x8::splat(lp.bias));
-                }
-                if lp.apply_max {
-                    lod = lod.min(F32x8::splat(lp.max_lod));
-                }
-                if lp.apply_min {
-                    lod = lod.max(F32x8::splat(lp.min_lod));
-                }
-                let positive = lod.cmp_gt(zero);
-                if p.mip_filter == MipFilter::Linear {
-                    let f = lod.floor();
-                    (positive, f.to_i32_trunc(), lod.sub(f))
-                } else {
-                    (positive, lod.round_even().to_i32_trunc(), zero)
-                }
-            };
-            let (first, last) = (I32x8::splat(p.first as i32), I32x8::splat(p.last as i32));
-            let minified = positive.bits();
-            match p.mip_filter {
-                MipFilter::None => (first, first, zero),
-                MipFilter::Nearest => {
-                    let l = ipart.add(first).max(first).min(last);
-                    let l = first.blendv(l, minified);
-                    (l, l, zero)
-                }
-                MipFilter::Linear => {
-                    let l0 = ipart.add(first);
-                    // below the base: the base alone; at or past the last: the last alone
-                    let below = first.cmpgt(l0);
-                    let past = l0.cmpgt(last.sub(I32x8::splat(1)));
-                    let one = below.or(past).xor(I32x8::splat(-1)).and(minified);
-                    let l = first.blendv(last, past.and(minified));
-                    let l0 = l.blendv(l0, one);
-                    let l1 = l.blendv(l0.add(I32x8::splat(1)), one);
-                    (l0, l1, zero.blendv(fpart, one.as_f32()))
-                }
-            }
+            redo(qlive, bad)
         }
     }
 
@@ -385,6 +237,219 @@ impl<'a> Cube8<'a> {
     }
 }
 
+/// The level state the 8-wide cube samplers share: both image filters LINEAR, and either
+/// no LOD or llvmpipe's per-pixel cube LOD of a mipmapped texture.
+#[derive(Clone, Copy)]
+pub(super) struct Levels8 {
+    /// The LOD is computed per pixel (else `sel` holds the one selection).
+    pub(super) derivs: bool,
+    /// The level selection of every pixel when there are no derivatives.
+    pub(super) sel: (usize, usize, f32),
+    /// The face size of each level.
+    pub(super) sizes: [i32; MAX_LEVELS],
+}
+
+impl Levels8 {
+    /// The level state of unit `p` with faces `faces`, when the 8-wide samplers cover it.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)]
+    pub(super) fn of(p: &UnitPlan<'_>, faces: &Faces<'_>) -> Option<Levels8> {
+        if p.min_filter != Filter::Linear || p.mag_filter != Filter::Linear {
+            return None;
+        }
+        let derivs = p.needs_lod && !p.lod.min_max_equal;
+        // without a mip filter llvmpipe takes the quad's top-left LOD (not covered)
+        if derivs && p.mip_filter == MipFilter::None {
+            return None;
+        }
+        let mut sizes = [1i32; MAX_LEVELS];
+        for l in p.first..=p.last {
+            let n = faces[0].get(l)?.as_ref()?.width;
+            // every index `y·n + x` fits an i32 lane
+            if n.checked_mul(n)? >= 1 << 30 {
+                return None;
+            }
+            sizes[l] = n as i32;
+        }
+        let sel = if derivs {
+            (p.first, p.first, 0.0)
+        } else {
+            let lod = if p.needs_lod {
+                super::lod::from_rho(&p.lod, p.mip_filter, true, 0.0)
+            } else {
+                Lod::MAG
+            };
+            let (_, l0, l1, f) = select_levels(p, lod);
+            (l0, l1, f)
+        };
+        Some(Levels8 { derivs, sel, sizes })
+    }
+}
+
+/// What both rows of a chunk share before their texels are read: the directions, each
+/// lane's level selection, and per row the lanes (bits) whose coordinates are not all
+/// finite (their quads go to the scalar code).
+pub(super) struct Chunk {
+    /// Per row: the direction of each lane.
+    pub(super) dirs: [Dir; 2],
+    /// Per row: the level selection of each lane.
+    pub(super) sels: [Sel8; 2],
+    /// Per row: the lanes with a NaN or infinite coordinate.
+    pub(super) bad: [u32; 2],
+}
+
+impl Chunk {
+    /// The directions at `[s, t, r]` of unit `p` and their levels: per pixel from the
+    /// quads' row and column differences in texels of a face of `size` when `derivs`,
+    /// else `sel` for every lane.
+    ///
+    /// # Safety
+    /// The CPU has AVX2.
+    #[inline(always)]
+    pub(super) unsafe fn of(
+        p: &UnitPlan<'_>,
+        derivs: bool,
+        sel: (usize, usize, f32),
+        size: i32,
+        [s, t, r]: [&[[f32; 8]; 2]; 3],
+    ) -> Chunk {
+        let mut bad = [0u32; 2];
+        // SAFETY: forwarded from the caller; the arrays are 8 lanes each.
+        unsafe {
+            // (no closures here or below: one the compiler leaves out of line loses the
+            // caller's target features)
+            let v = [
+                [
+                    F32x8::load(s[0].as_ptr()),
+                    F32x8::load(t[0].as_ptr()),
+                    F32x8::load(r[0].as_ptr()),
+                ],
+                [
+                    F32x8::load(s[1].as_ptr()),
+                    F32x8::load(t[1].as_ptr()),
+                    F32x8::load(r[1].as_ptr()),
+                ],
+            ];
+            let inf = F32x8::splat(f32::INFINITY);
+            for row in 0..2 {
+                for c in v[row] {
+                    // |c| < inf: false for NaN and infinities
+                    bad[row] |= !abs(c).cmp_lt(inf).movemask() & 0xff;
+                }
+            }
+            let dirs = [Dir::of(v[0]), Dir::of(v[1])];
+            let sels = if derivs {
+                // ddy: bottom minus top of the pixel's column, the same for both rows
+                let ddy = [
+                    v[1][0].sub(v[0][0]),
+                    v[1][1].sub(v[0][1]),
+                    v[1][2].sub(v[0][2]),
+                ];
+                let size = F32x8::splat(size as f32);
+                // ddx: right minus left of the pixel's row in its quad
+                let ddx0 = [quad_dx(v[0][0]), quad_dx(v[0][1]), quad_dx(v[0][2])];
+                let ddx1 = [quad_dx(v[1][0]), quad_dx(v[1][1]), quad_dx(v[1][2])];
+                [
+                    select(p, dirs[0].rho(size, ddx0, ddy)),
+                    select(p, dirs[1].rho(size, ddx1, ddy)),
+                ]
+            } else {
+                let (l0, l1, f) = sel;
+                let sel = (
+                    I32x8::splat(l0 as i32),
+                    I32x8::splat(l1 as i32),
+                    F32x8::splat(f),
+                );
+                [sel, sel]
+            };
+            Chunk { dirs, sels, bad }
+        }
+    }
+}
+
+/// The quads (bit `j`: lanes `2j`, `2j + 1` of both rows) with a live pixel (`qlive`)
+/// and a lane in `bad` (per row).
+#[inline(always)]
+pub(super) fn redo(qlive: u32, bad: [u32; 2]) -> u32 {
+    let lanes = bad[0] | bad[1];
+    (0..4).fold(0, |m, j| {
+        let redo = qlive >> j & 1 != 0 && lanes >> (2 * j) & 3 != 0;
+        m | (u32::from(redo) << j)
+    })
+}
+
+/// The level selection of each lane of unit `p` from its rho² (`lod::from_rho` with
+/// `select_levels`; the image filters are both LINEAR).
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+pub(super) unsafe fn select(p: &UnitPlan<'_>, rho: F32x8) -> Sel8 {
+    let lp = &p.lod;
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        let zero = F32x8::zero();
+        let bits = rho.bits();
+        let e = bits
+            .shr::<23>()
+            .and(I32x8::splat(0xff))
+            .sub(I32x8::splat(127));
+        let fast = lp.bias == 0.0 && !lp.apply_min && !lp.apply_max;
+        let (positive, ipart, fpart) = if fast && p.mip_filter != MipFilter::Linear {
+            let ipart = e.add(I32x8::splat(1)).sra::<1>();
+            (rho.cmp_gt(F32x8::splat(1.0)), ipart, zero)
+        } else {
+            // `fast_log2(rho²)·0.5`
+            let m = bits
+                .and(I32x8::splat(0x007f_ffff))
+                .or(I32x8::splat(0x3f80_0000))
+                .as_f32();
+            let mut lod = e
+                .sub(I32x8::splat(1))
+                .to_f32()
+                .add(m)
+                .mul(F32x8::splat(0.5));
+            if lp.bias != 0.0 {
+                lod = lod.add(F32x8::splat(lp.bias));
+            }
+            if lp.apply_max {
+                lod = lod.min(F32x8::splat(lp.max_lod));
+            }
+            if lp.apply_min {
+                lod = lod.max(F32x8::splat(lp.min_lod));
+            }
+            let positive = lod.cmp_gt(zero);
+            if p.mip_filter == MipFilter::Linear {
+                let f = lod.floor();
+                (positive, f.to_i32_trunc(), lod.sub(f))
+            } else {
+                (positive, lod.round_even().to_i32_trunc(), zero)
+            }
+        };
+        let (first, last) = (I32x8::splat(p.first as i32), I32x8::splat(p.last as i32));
+        let minified = positive.bits();
+        match p.mip_filter {
+            MipFilter::None => (first, first, zero),
+            MipFilter::Nearest => {
+                let l = ipart.add(first).max(first).min(last);
+                let l = first.blendv(l, minified);
+                (l, l, zero)
+            }
+            MipFilter::Linear => {
+                let l0 = ipart.add(first);
+                // below the base: the base alone; at or past the last: the last alone
+                let below = first.cmpgt(l0);
+                let past = l0.cmpgt(last.sub(I32x8::splat(1)));
+                let one = below.or(past).xor(I32x8::splat(-1)).and(minified);
+                let l = first.blendv(last, past.and(minified));
+                let l0 = l.blendv(l0, one);
+                let l1 = l.blendv(l0.add(I32x8::splat(1)), one);
+                (l0, l1, zero.blendv(fpart, one.as_f32()))
+            }
+        }
+    }
+}
+
 /// `max(c, 0)·n − 0.5` (NaN → 0) per lane, floored to an index (`i32::MIN` when too
 /// large) and the fraction.
 ///
@@ -402,13 +467,13 @@ unsafe fn split(c: F32x8, size: F32x8) -> (I32x8, F32x8) {
 
 /// Right minus left of each lane's pair (the row difference in a 2x2 quad).
 #[inline(always)]
-fn quad_dx(v: F32x8) -> F32x8 {
+pub(super) fn quad_dx(v: F32x8) -> F32x8 {
     v.permute::<0xF5>().sub(v.permute::<0xA0>())
 }
 
 /// `|v|` per lane.
 #[inline(always)]
-fn abs(v: F32x8) -> F32x8 {
+pub(super) fn abs(v: F32x8) -> F32x8 {
     // SAFETY: AVX2 as `v` proves.
     let m = unsafe { I32x8::splat(0x7fff_ffff) };
     v.bits().and(m).as_f32()
@@ -427,7 +492,7 @@ impl Dir {
     /// # Safety
     /// The CPU has AVX2.
     #[inline(always)]
-    unsafe fn of(v: [F32x8; 3]) -> Dir {
+    pub(super) unsafe fn of(v: [F32x8; 3]) -> Dir {
         let [s, t, r] = v;
         // SAFETY: forwarded from the caller.
         unsafe {
@@ -469,7 +534,7 @@ impl Dir {
     /// # Safety
     /// The CPU has AVX2.
     #[inline(always)]
-    unsafe fn project(&self, lod: bool) -> (I32x8, F32x8, F32x8) {
+    pub(super) unsafe fn project(&self, lod: bool) -> (I32x8, F32x8, F32x8) {
         // SAFETY: forwarded from the caller.
         unsafe {
             let half = F32x8::splat(0.5);
@@ -512,7 +577,7 @@ impl Dir {
     /// # Safety
     /// The CPU has AVX2.
     #[inline(always)]
-    unsafe fn rho(&self, size: F32x8, ddx: [F32x8; 3], ddy: [F32x8; 3]) -> F32x8 {
+    pub(super) unsafe fn rho(&self, size: F32x8, ddx: [F32x8; 3], ddy: [F32x8; 3]) -> F32x8 {
         // SAFETY: forwarded from the caller.
         unsafe {
             let ima = F32x8::splat(1.0).div(self.ma);
@@ -530,162 +595,5 @@ impl Dir {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::texture::{
-        cube_seamless, BaseFormat, Encoding, Level, Storage, Target, TextureObject, TextureState,
-    };
-
-    /// A seamless cube map of `n`x`n` faces (`n` a power of two) with a full chain of
-    /// random levels on unit 0 of a new state, sampled with `min`/`mip` (mag LINEAR).
-    fn state(n: usize, srgb: bool, next: &mut impl FnMut() -> u32) -> TextureState {
-        let mut storage = Storage::of_base(BaseFormat::Rgba);
-        if srgb {
-            storage.encoding = Encoding::Srgb;
-        }
-        let mut o = TextureObject::new(Some(Target::Cube));
-        for face in 0..6 {
-            let levels = o.face_levels_mut(face);
-            let mut size = n;
-            for level in levels.iter_mut().take(n.trailing_zeros() as usize + 1) {
-                *level = Some(Level {
-                    width: size,
-                    height: size,
-                    internal_format: 0x1908,
-                    base: BaseFormat::Rgba,
-                    storage,
-                    texels: (0..size * size).map(|_| next().to_le_bytes()).collect(),
-                    blocks: None,
-                    floats: None,
-                });
-                size = (size / 2).max(1);
-            }
-        }
-        let mut ts = TextureState::default();
-        ts.defaults[Target::Cube.index()] = o;
-        ts.units[0].enabled_cube = true;
-        ts.cube_seamless = true;
-        ts
-    }
-
-    /// A random value in [-1, 1], often on a face edge or corner (equal magnitudes).
-    fn unit(next: &mut impl FnMut() -> u32) -> f32 {
-        (next() % 20001) as f32 / 10000.0 - 1.0
-    }
-
-    /// The directions of one quad: a random direction (sometimes on an edge or a corner,
-    /// sometimes NaN, infinite, zero or huge) and its neighbours a small step away.
-    fn quad(next: &mut impl FnMut() -> u32) -> [[f32; 3]; 4] {
-        let mut v = [unit(next), unit(next), unit(next)];
-        match next() % 12 {
-            // an edge: two equal magnitudes
-            0 => {
-                v[1] = if next().is_multiple_of(2) {
-                    v[0]
-                } else {
-                    -v[0]
-                }
-            }
-            1 => v[2] = v[1].abs(),
-            // a corner
-            2 => v = [1.0, -1.0, 1.0].map(|c| c * v[0]),
-            3 => {
-                v[(next() % 3) as usize] =
-                    [f32::NAN, f32::INFINITY, -f32::INFINITY][(next() % 3) as usize]
-            }
-            4 => v = [0.0; 3],
-            5 => v[(next() % 3) as usize] = 3.0e30,
-            _ => {}
-        }
-        let step = [1.0e-4, 1.0e-3, 1.0e-2, 0.1][(next() % 4) as usize];
-        let d = [
-            [0.0; 3],
-            [step, 0.0, 0.0],
-            [0.0, step, step / 2.0],
-            [step, step, 0.0],
-        ];
-        d.map(|d| std::array::from_fn(|c| v[c] + d[c] * unit(next)))
-    }
-
-    #[test]
-    fn rows_match_the_quad_sampler() {
-        if !crate::texture::fast_avx2::available() {
-            return;
-        }
-        let mut next = crate::test_rng::xorshift32(54);
-        let (mut vector, mut scalar) = (0, 0);
-        for n in [1, 4, 16, 64] {
-            for srgb in [false, true] {
-                for (mip, bias, max_lod) in [
-                    (MipFilter::None, 0.0, 1000.0),
-                    (MipFilter::Linear, 0.0, 1000.0),
-                    (MipFilter::Nearest, 0.0, 1000.0),
-                    (MipFilter::Linear, 0.75, 2.0),
-                    (MipFilter::Nearest, -1.0, 1000.0),
-                ] {
-                    let mut ts = state(n, srgb, &mut next);
-                    let o = &mut ts.defaults[Target::Cube.index()];
-                    o.params.min_filter = Filter::Linear;
-                    o.params.mag_filter = Filter::Linear;
-                    o.params.mip_filter = mip;
-                    o.params.lod_bias = bias;
-                    o.params.max_lod = max_lod;
-                    let p = ts.unit_plan(0).expect("complete");
-                    let ExtKind::CubeSeamless(faces) = &p.ext.kind else {
-                        panic!("not seamless");
-                    };
-                    let c8 = Cube8::of(&p).expect("covered");
-                    for _ in 0..200 {
-                        let (mut s, mut t, mut r) =
-                            ([[0.0f32; 8]; 2], [[0.0; 8]; 2], [[0.0; 8]; 2]);
-                        for j in 0..4 {
-                            for (i, v) in quad(&mut next).into_iter().enumerate() {
-                                let (row, lane) = (i / 2, 2 * j + i % 2);
-                                [s[row][lane], t[row][lane], r[row][lane]] = v;
-                            }
-                        }
-                        let live: [[bool; 8]; 2] = std::array::from_fn(|_| {
-                            std::array::from_fn(|_| !next().is_multiple_of(3))
-                        });
-                        let mut out = [[[-1.0f32; 4]; 8]; 2];
-                        let [o0, o1] = &mut out;
-                        // SAFETY: the CPU has AVX2 (checked above), and FMA when the plan
-                        // fuses (`sample::has_fma`).
-                        let redo = unsafe { c8.rows(&s, &t, &r, &live, [o0, o1]) };
-                        for j in 0..4 {
-                            let (a, b) = (2 * j, 2 * j + 1);
-                            if !(live[0][a] || live[0][b] || live[1][a] || live[1][b]) {
-                                continue;
-                            }
-                            if redo >> j & 1 != 0 {
-                                scalar += 1;
-                                continue;
-                            }
-                            vector += 1;
-                            let q4 = |c: &[[f32; 8]; 2]| [c[0][a], c[0][b], c[1][a], c[1][b]];
-                            let q = cube_seamless::sample_quad(&p, faces, q4(&s), q4(&t), q4(&r));
-                            let got = [out[0][a], out[0][b], out[1][a], out[1][b]];
-                            for i in 0..4 {
-                                assert!(
-                                    q[i].iter().all(|v| v.is_finite()),
-                                    "a finite colour expected"
-                                );
-                                assert_eq!(
-                                    got[i].map(f32::to_bits),
-                                    q[i].map(f32::to_bits),
-                                    "n {n} srgb {srgb} {mip:?} bias {bias} pixel {i} s {:?} t {:?} r {:?}",
-                                    q4(&s),
-                                    q4(&t),
-                                    q4(&r)
-                                );
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        // the vectors took many quads (the small faces' quads mostly reach an edge, and
-        // the quads with special values always go to the scalar code)
-        assert!(vector > 10_000, "vector {vector} scalar {scalar}");
-    }
-}
+#[path = "cube_avx2_tests.rs"]
+pub(super) mod tests;

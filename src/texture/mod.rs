@@ -57,6 +57,8 @@ macro_rules! each4 {
 pub mod compressed;
 pub mod cube;
 #[cfg(target_arch = "x86_64")]
+pub mod cube_aos8;
+#[cfg(target_arch = "x86_64")]
 pub mod cube_avx2;
 pub mod cube_seamless;
 pub mod env;
@@ -768,6 +770,10 @@ impl TextureState {
             && !aniso
             && !seamless
             && !clamp_float;
+        let narrow_ops = match (aos, decode, narrow) {
+            (false, None, Some(_)) => Some(unit::narrow_ops(&base_img.storage)),
+            _ => None,
+        };
         let decode = if aos { None } else { decode.or(narrow) };
         let lod = LodParams::new(p, u.lod_bias, dims == 1);
         let border = base.swizzle(p.border_color, 0.0, 1.0);
@@ -822,6 +828,7 @@ impl TextureState {
                 kind,
                 depth,
                 decode,
+                narrow: narrow_ops,
                 floats,
             },
         })

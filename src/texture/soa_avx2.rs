@@ -320,6 +320,14 @@ pub(super) unsafe fn texels8(p: &UnitPlan<'_>, raw: I32x8) -> [F32x8; 4] {
             raw.shr::<16>().and(byte),
             raw.shr::<24>(),
         ];
+        if let Some(ops) = p.ext.narrow {
+            return [
+                narrow(c[0], ops[0]),
+                narrow(c[1], ops[1]),
+                narrow(c[2], ops[2]),
+                narrow(c[3], ops[3]),
+            ];
+        }
         match p.ext.decode {
             Some(t) => {
                 let table = |k: usize| t[k].as_ptr() as *const i32;
@@ -340,6 +348,29 @@ pub(super) unsafe fn texels8(p: &UnitPlan<'_>, raw: I32x8) -> [F32x8; 4] {
                 ]
             }
         }
+    }
+}
+
+/// Bytes `c` (one per lane) of a component decoded as its [`super::unit::NarrowOps`]
+/// entry `(max, scale)` says: `float((c·max + 127) / 255) · scale`, the division as
+/// `(x·0x8081) >> 23` (exact for x < 2^16; here x ≤ 255·127 + 127), or `c·scale` (scale
+/// `f32(1/255)`) where `max` is 0.
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+unsafe fn narrow(c: I32x8, (max, scale): (i32, f32)) -> F32x8 {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        let c = if max == 0 {
+            c
+        } else {
+            c.mullo(I32x8::splat(max))
+                .add(I32x8::splat(127))
+                .mullo(I32x8::splat(0x8081))
+                .shr::<23>()
+        };
+        c.to_f32().mul(F32x8::splat(scale))
     }
 }
 

@@ -225,3 +225,43 @@ fn rows_match_the_quad_sampler() {
     // (a quad has a special value in about one case of six)
     assert!(vector > 4 * scalar, "vector {vector} scalar {scalar}");
 }
+
+#[test]
+fn texels_decode_every_byte_as_the_scalar_code() {
+    if !crate::texture::fast_avx2::available() {
+        return;
+    }
+    let mut next = crate::test_rng::xorshift32(58);
+    let mut narrow = 0;
+    for f in 0..FORMATS.len() {
+        for wrap in [Wrap::ClampToBorder, Wrap::Repeat] {
+            let mut ts = state(f, [4, 4], &mut next);
+            let o = &mut ts.defaults[Target::Tex2D.index()];
+            o.params.wrap_s = wrap;
+            let p = ts.unit_plan(0).expect("complete");
+            narrow += usize::from(p.ext.narrow.is_some());
+            // every byte in every component, 8 lanes at a time, the components apart
+            for b in (0..256u32).step_by(8) {
+                let raw: [u32; 8] = std::array::from_fn(|i| {
+                    let u = b + i as u32;
+                    u | (255 - u) << 8 | (u ^ 0x5a) << 16 | ((u * 7) & 255) << 24
+                });
+                // SAFETY: the CPU has AVX2 (checked above); 8 lanes.
+                let got = unsafe { texels8(&p, I32x8::load(raw.as_ptr())) };
+                let got = got.map(|c| c.to_array());
+                for (i, r) in raw.iter().enumerate() {
+                    let want = crate::texture::sample::texel_float(&p, r.to_le_bytes());
+                    for c in 0..4 {
+                        assert_eq!(
+                            got[c][i].to_bits(),
+                            want[c].to_bits(),
+                            "format {f} {wrap:?} texel {r:#010x} component {c}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    // RGB5, R3_G3_B2, RGBA4 and RGB5_A1 off the 8-bit path
+    assert_eq!(narrow, 4);
+}

@@ -19,6 +19,9 @@ pub struct PlanExt<'a> {
     /// tables ([`sample::texel_float`]); a plan with sRGB or signed ones is never `aos`,
     /// and an `aos` plan has none.
     pub decode: Option<Decode>,
+    /// When `decode` holds [`narrow_decode`]'s tables: the same values as arithmetic
+    /// ([`narrow_ops`]), for the 8-wide samplers (no table gathers).
+    pub narrow: Option<NarrowOps>,
     /// The texture keeps float values ([`super::float`]): texels are read from
     /// [`Level::floats`]; such a plan is never `aos`.
     pub floats: bool,
@@ -57,6 +60,23 @@ pub(super) fn narrow_decode(storage: &Storage) -> Option<Decode> {
         return None;
     }
     Some(bits.map(narrow_table))
+}
+
+/// [`narrow_decode`]'s tables as arithmetic, per component R, G, B, A: `(max, scale)`,
+/// where byte u decodes to `float((u·max + 127) / 255) · scale` ([`narrow_table`] with
+/// `max = 2^n − 1`), or `max = 0` where the table is `u · f32(1/255)`.
+pub type NarrowOps = [(i32, f32); 4];
+
+/// The [`NarrowOps`] of an image stored as `storage` ([`narrow_decode`]'s tables).
+pub(super) fn narrow_ops(storage: &Storage) -> NarrowOps {
+    storage.bits().map(|bits| {
+        if (1..8).contains(&bits) {
+            let max = (1u32 << bits) - 1;
+            (max as i32, (1.0f64 / max as f64) as f32)
+        } else {
+            (0, sample::INV_255)
+        }
+    })
 }
 
 /// The float value of each byte holding an n-bit component ([`narrow_decode`]): the

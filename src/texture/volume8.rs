@@ -209,31 +209,31 @@ unsafe fn axis(
 }
 
 /// 8 RGBA8 pixels as 16-bit fields: the even bytes (R, B), then the odd ones (G, A).
-type Wide = (U16x16, U16x16);
+pub(super) type Wide = (U16x16, U16x16);
 
 /// Splits 8 RGBA8 pixels into [`Wide`] fields.
 #[inline(always)]
-fn widen(v: I32x8) -> Wide {
+pub(super) fn widen(v: I32x8) -> Wide {
     let v = v.as_u16();
     (v.shl::<8>().shr::<8>(), v.shr::<8>())
 }
 
 /// The bytes of [`Wide`] fields that hold values in 0..=255.
 #[inline(always)]
-fn pack(v: Wide) -> I32x8 {
+pub(super) fn pack(v: Wide) -> I32x8 {
     v.0.or(v.1.shl::<8>()).as_i32()
 }
 
 /// A weight in 0..=255 per 32-bit lane as `w · 128` in both of its 16-bit fields.
 #[inline(always)]
-fn weight(w: I32x8) -> U16x16 {
+pub(super) fn weight(w: I32x8) -> U16x16 {
     w.shl::<7>().or(w.shl::<23>()).as_u16()
 }
 
 /// llvmpipe's 8-bit lerp of both halves: `a + ((b − a)·w7 + 2^14) >> 15` (`vpmulhrsw`),
 /// which is `a + ((b − a)·w + 128) >> 8` for fields in 0..=255.
 #[inline(always)]
-fn lerp_wide(a: Wide, b: Wide, w7: U16x16) -> Wide {
+pub(super) fn lerp_wide(a: Wide, b: Wide, w7: U16x16) -> Wide {
     (
         a.0.add(b.0.sub(a.0).mulhrs(w7)),
         a.1.add(b.1.sub(a.1).mulhrs(w7)),
