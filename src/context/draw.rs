@@ -26,9 +26,7 @@ pub fn draw<S: VertexSource + ?Sized>(
     draw_lit(ctx, mode, verts, indices, None)
 }
 
-/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd). The
-/// draw's last batch may be left drawing on the pool ([`Context::settle_draws`]): callers
-/// that touch the framebuffer afterwards settle it first.
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
 pub fn draw_lit<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
@@ -42,7 +40,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
         indices,
         materials,
     };
-    draw_inner(ctx, prims, true)
+    draw_inner(ctx, prims, false)
 }
 
 /// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
@@ -102,14 +100,11 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
 /// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
 /// same tests pass, in the same order), its own depth and stencil put back afterwards;
 /// plane 0 is drawn last, normally.
-///
-/// Its last batch is not left on the pool (measured slower for MuJoCo's 4x frames, stop
-/// 58 in docs/performance.md); a batch in flight from before is taken over.
 fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>) {
+    ctx.settle_draws();
+    crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let caps = &ctx.state.caps;
     if !caps.get(Cap::Multisample) {
-        ctx.settle_draws();
-        crate::context::pixel_ops::bitmap_cache::flush(ctx);
         let Some(fb) = ctx.fb.as_mut() else { return };
         fb.resolve();
         let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
@@ -152,7 +147,6 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
     if draw_pass(ctx, prims, false, Some(pass)) {
         return;
     }
-    ctx.settle_draws();
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
             draw_pass(c, prims, false, None);
@@ -171,31 +165,9 @@ fn draw_pass<S: VertexSource + ?Sized>(
     detach: bool,
     ms: Option<crate::fragment::MsPass>,
 ) -> bool {
-    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the
-    // pool, but this draw's rasterizer, which takes it over (it draws into the same
-    // framebuffer: binding another one settles the draws first).
-    if crate::context::pixel_ops::bitmap_cache::pending(ctx) {
-        ctx.settle_draws();
-        crate::context::pixel_ops::bitmap_cache::flush(ctx);
-    }
-    let mut adopt = ctx.take_inflight();
-    let drawn = draw_pass_adopting(ctx, prims, detach, ms, &mut adopt);
-    if let Some(f) = adopt {
-        // Not taken over (nothing was rasterized): wait for it.
-        f.settle(&mut ctx.stats);
-    }
-    drawn
-}
-
-/// [`draw_pass`] with the previous draw's batch still on the pool, `adopt` (taken when the
-/// pipeline runs).
-fn draw_pass_adopting<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    prims: Prims<'_, S>,
-    detach: bool,
-    ms: Option<crate::fragment::MsPass>,
-    adopt: &mut Option<crate::raster::batch::InFlight>,
-) -> bool {
+    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
+    ctx.settle_draws();
+    crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else {
         return true;
     };
@@ -297,15 +269,7 @@ fn draw_pass_adopting<S: VertexSource + ?Sized>(
         // The other planes ride along with plane 0 (`Framebuffer::samples`).
         fb.hold_samples(std::mem::take(&mut ctx.fbo.ms_planes));
     }
-    let kept = run(
-        plan,
-        prims,
-        fb,
-        region,
-        &mut ctx.stats,
-        detach,
-        adopt.take(),
-    );
+    let kept = run(plan, prims, fb, region, &mut ctx.stats, detach);
     if one_pass {
         ctx.fbo.ms_planes = fb.release_samples();
     }
@@ -314,14 +278,13 @@ fn draw_pass_adopting<S: VertexSource + ?Sized>(
     }
     if let Some(f) = kept {
         // SAFETY: `f` draws into `ctx.fb`, untouched since the pipeline returned it (only
-        // the colour-material sync ran), and this draw took over the batch in flight.
+        // the colour-material sync ran), and this draw settled everything first.
         unsafe { ctx.keep_inflight(f) };
     }
     true
 }
 
-/// [`crate::render::run`], for a draw that settled the previous one first or takes it
-/// over (`adopt`).
+/// [`crate::render::run`], for a draw that settled the previous one first.
 fn run<S: VertexSource + ?Sized>(
     plan: DrawPlan<'_>,
     prims: Prims<'_, S>,
@@ -329,14 +292,10 @@ fn run<S: VertexSource + ?Sized>(
     region: [i64; 4],
     stats: &mut crate::stats::Stats,
     detach: bool,
-    adopt: Option<crate::raster::batch::InFlight>,
 ) -> Option<crate::raster::batch::InFlight> {
     // SAFETY: with `detach`, the caller keeps the returned batch (`keep_inflight`) before
-    // anything else touches `fb`; the context keeps the draw's texture images as they are
-    // until the batch is settled or adopted (`Context::settle_draws`); every draw settles
-    // the draw on the pool or takes it over (`adopt`, which draws into `fb`: the context's
-    // `inflight` holds the framebuffer it drew into, and rebinding settles it) before it
-    // starts a rasterizer; this one did.
+    // anything else touches `fb`, and every draw settles the draws on the pool
+    // (`Context::settle_draws`) before it starts a rasterizer; this one did.
     unsafe {
         crate::render::run(
             plan,
@@ -348,7 +307,6 @@ fn run<S: VertexSource + ?Sized>(
             region,
             stats,
             detach,
-            adopt,
         )
     }
 }

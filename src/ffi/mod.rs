@@ -113,17 +113,6 @@ pub(crate) fn with_ctx<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) 
     })
 }
 
-/// As [`with_ctx`] for a state call that touches neither framebuffers nor texture images:
-/// the last draw may go on drawing on the pool ([`Context::settle_draws`]).
-#[inline]
-pub(crate) fn with_ctx_keep<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
-    with_ctx_raw(|c| {
-        c.outside_begin_end()?;
-        c.flush_pending_keep();
-        f(c)
-    })
-}
-
 /// As [`with_ctx`] but allowed between glBegin and glEnd: for OSMesa's own functions,
 /// which are not GL commands.
 #[inline]
@@ -170,17 +159,7 @@ pub(crate) fn with_ctx_list<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, false, false)
-}
-
-/// As [`with_ctx_list`] for a state command that touches neither framebuffers nor texture
-/// images: run now, it leaves the last draw drawing on the pool ([`Context::settle_draws`]).
-#[inline]
-pub(crate) fn with_ctx_list_keep<F>(f: F)
-where
-    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
-{
-    listable(f, false, true)
+    listable(f, false)
 }
 
 /// Whether the current context is compiling a display list (for the commands Mesa
@@ -196,24 +175,12 @@ pub(crate) fn with_ctx_list_anywhere<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, true, false)
+    listable(f, true)
 }
 
-/// As [`with_ctx_list_anywhere`] for glMaterial and glCallList(s), which leave the last
-/// draw drawing on the pool ([`with_ctx_list_keep`]; the commands a list runs settle it as
-/// they would run directly, and its draws take it over).
+/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`].
 #[inline]
-pub(crate) fn with_ctx_list_anywhere_keep<F>(f: F)
-where
-    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
-{
-    listable(f, true, true)
-}
-
-/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`]; with
-/// `keep`, run now, a draw on the pool is not waited for.
-#[inline]
-fn listable<F>(f: F, anywhere: bool, keep: bool)
+fn listable<F>(f: F, anywhere: bool)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
@@ -222,11 +189,7 @@ where
             if !anywhere {
                 c.outside_begin_end()?;
             }
-            if keep {
-                c.flush_pending_keep();
-            } else {
-                c.flush_pending();
-            }
+            c.flush_pending();
             f(c)
         }
         Some(execute) => {
