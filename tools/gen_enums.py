@@ -31,7 +31,8 @@ GL_EXT_packed_depth_stencil GL_ARB_clip_control GL_EXT_texture_sRGB
 GL_EXT_texture_compression_s3tc GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc
 GL_EXT_texture_compression_latc GL_ATI_texture_compression_3dc
 GL_ARB_texture_float GL_ARB_half_float_pixel GL_ARB_texture_rg
-GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB""".split()
+GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB GL_ARB_pixel_buffer_object
+GL_EXT_pixel_buffer_object""".split()
 
 # Tokens of an extension that glext.h lists under the GL version that took it into core
 # (GL_ARB_clip_control's under GL_VERSION_4_5; GL_LOWER_LEFT/GL_UPPER_LEFT under 2.0):
@@ -48,6 +49,9 @@ GL_COMPRESSED_RG_RGTC2 GL_COMPRESSED_SIGNED_RG_RGTC2""".split(),
 GL_RG16F GL_RG32F""".split(),
     # GL 3.0's name of the enable (the core section lists it)
     "GL_ARB_framebuffer_sRGB": ["GL_FRAMEBUFFER_SRGB"],
+    # GL 2.1's names of the pixel buffer targets and bindings
+    "GL_ARB_pixel_buffer_object": """GL_PIXEL_PACK_BUFFER GL_PIXEL_UNPACK_BUFFER
+GL_PIXEL_PACK_BUFFER_BINDING GL_PIXEL_UNPACK_BUFFER_BINDING""".split(),
 }
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports

@@ -61,6 +61,10 @@ pub enum BufferTarget {
     Array,
     /// GL_ELEMENT_ARRAY_BUFFER
     ElementArray,
+    /// GL_PIXEL_PACK_BUFFER (the binding lives in the pack [`super::state::PixelStore`])
+    PixelPack,
+    /// GL_PIXEL_UNPACK_BUFFER (the binding lives in the unpack pixel store)
+    PixelUnpack,
 }
 
 impl BufferTarget {
@@ -70,6 +74,8 @@ impl BufferTarget {
         match e {
             GL_ARRAY_BUFFER => Ok(Self::Array),
             GL_ELEMENT_ARRAY_BUFFER => Ok(Self::ElementArray),
+            GL_PIXEL_PACK_BUFFER => Ok(Self::PixelPack),
+            GL_PIXEL_UNPACK_BUFFER => Ok(Self::PixelUnpack),
             _ => Err(GlError::InvalidEnum),
         }
     }
@@ -134,17 +140,8 @@ impl ArrayState {
         copy
     }
 
-    /// The buffer bound to `target` (0 = none).
-    pub fn binding(&self, target: BufferTarget) -> u32 {
-        match target {
-            BufferTarget::Array => self.array_buffer,
-            BufferTarget::ElementArray => self.element_buffer,
-        }
-    }
-
-    /// The object bound to `target`, or GL_INVALID_OPERATION when none is.
-    pub fn bound_mut(&mut self, target: BufferTarget) -> GlResult<&mut BufferObject> {
-        let name = self.binding(target);
+    /// The live object named `name`, or GL_INVALID_OPERATION for 0 or a deleted name.
+    pub fn object_mut(&mut self, name: u32) -> GlResult<&mut BufferObject> {
         if name == 0 {
             return Err(GlError::InvalidOperation);
         }
@@ -233,8 +230,9 @@ impl ArrayState {
         }
     }
 
-    /// glBindBuffer.
-    pub fn bind_buffer(&mut self, target: BufferTarget, name: u32) {
+    /// Makes `name` a buffer object if it is not one yet (glBindBuffer's creation of a
+    /// name; 0 names none).
+    pub fn touch_buffer(&mut self, name: u32) {
         if name != 0 {
             let e = self.buffers.entry(name).or_insert(None);
             if e.is_none() {
@@ -244,10 +242,6 @@ impl ArrayState {
                     ..Default::default()
                 });
             }
-        }
-        match target {
-            BufferTarget::Array => self.array_buffer = name,
-            BufferTarget::ElementArray => self.element_buffer = name,
         }
     }
 

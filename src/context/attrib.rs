@@ -324,7 +324,17 @@ impl Context {
             return Err(GlError::StackUnderflow);
         };
         if f.mask & GL_CLIENT_PIXEL_STORE_BIT != 0 {
-            (self.state.pack, self.state.unpack) = f.pixel;
+            let (mut pack, mut unpack) = f.pixel;
+            // As for the array buffers below: a buffer deleted since the push is not revived.
+            for (saved, now) in [
+                (&mut pack, self.state.pack),
+                (&mut unpack, self.state.unpack),
+            ] {
+                if saved.buffer != 0 && !self.arrays.buffers.contains_key(&saved.buffer) {
+                    saved.buffer = now.buffer;
+                }
+            }
+            (self.state.pack, self.state.unpack) = (pack, unpack);
         }
         if f.mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0 {
             let ClientArrays {

@@ -1,7 +1,7 @@
 //! Buffer objects (GL 1.5): the data store, mapping and queries of the buffer bound to a
 //! target, with Mesa's checks in Mesa's order.
 
-use super::arrays::BufferTarget;
+use super::arrays::{BufferObject, BufferTarget};
 use super::store::Store;
 use super::{Context, GlError, GlResult};
 use crate::gl::glext_enums::*;
@@ -24,6 +24,28 @@ fn valid_usage(usage: GLenum) -> bool {
 }
 
 impl Context {
+    /// The binding `target` names: the arrays' two, or the pack and unpack pixel stores'.
+    fn buffer_binding_mut(&mut self, target: BufferTarget) -> &mut u32 {
+        match target {
+            BufferTarget::Array => &mut self.arrays.array_buffer,
+            BufferTarget::ElementArray => &mut self.arrays.element_buffer,
+            BufferTarget::PixelPack => &mut self.state.pack.buffer,
+            BufferTarget::PixelUnpack => &mut self.state.unpack.buffer,
+        }
+    }
+
+    /// glBindBuffer: binds `name` (0 unbinds), creating the object on its first bind.
+    pub(crate) fn bind_buffer(&mut self, target: BufferTarget, name: u32) {
+        self.arrays.touch_buffer(name);
+        *self.buffer_binding_mut(target) = name;
+    }
+
+    /// The object bound to `target`, or GL_INVALID_OPERATION when none is.
+    pub(crate) fn bound_buffer_mut(&mut self, target: BufferTarget) -> GlResult<&mut BufferObject> {
+        let name = *self.buffer_binding_mut(target);
+        self.arrays.object_mut(name)
+    }
+
     /// glGenBuffers: `n` new names (none for 0).
     pub(crate) fn gen_buffer_names(&mut self, n: usize) -> Vec<GLuint> {
         if n == 0 {
@@ -34,9 +56,14 @@ impl Context {
 
     /// glDeleteBuffers (unknown names and 0 are ignored).
     pub(crate) fn delete_buffers(&mut self, names: &[GLuint]) {
-        names
-            .iter()
-            .for_each(|&name| self.arrays.delete_buffer(name));
+        for &name in names {
+            self.arrays.delete_buffer(name);
+            for ps in [&mut self.state.pack, &mut self.state.unpack] {
+                if ps.buffer == name {
+                    ps.buffer = 0;
+                }
+            }
+        }
     }
 
     /// glBufferData: replaces the store of the bound buffer (GL_OUT_OF_MEMORY when it
@@ -58,7 +85,7 @@ impl Context {
         if !valid_usage(usage) {
             return Err(GlError::InvalidEnum);
         }
-        let b = self.arrays.bound_mut(t)?;
+        let b = self.bound_buffer_mut(t)?;
         let size = size as usize;
         let store = if data.is_null() {
             Store::zeroed(size)
@@ -81,7 +108,7 @@ impl Context {
         (offset, size): (GLintptr, GLsizeiptr),
         null: bool,
     ) -> GlResult<Option<&mut [u8]>> {
-        let b = self.arrays.bound_mut(BufferTarget::from_gl(target)?)?;
+        let b = self.bound_buffer_mut(BufferTarget::from_gl(target)?)?;
         if offset < 0 || size < 0 || (offset as usize).saturating_add(size as usize) > b.data.len()
         {
             return Err(GlError::InvalidValue);
@@ -103,7 +130,7 @@ impl Context {
         if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
             return Err(GlError::InvalidEnum);
         }
-        let b = self.arrays.bound_mut(t)?;
+        let b = self.bound_buffer_mut(t)?;
         if b.mapped.is_some() {
             return Err(GlError::InvalidOperation);
         }
@@ -119,7 +146,7 @@ impl Context {
         pname: GLenum,
     ) -> GlResult<GLint> {
         let t = BufferTarget::from_gl(target)?;
-        let b = self.arrays.bound_mut(t)?;
+        let b = self.bound_buffer_mut(t)?;
         Ok(match pname {
             GL_BUFFER_SIZE => b.data.len().min(i32::MAX as usize) as GLint,
             GL_BUFFER_USAGE => b.usage as GLint,
@@ -135,7 +162,7 @@ impl Context {
         if pname != GL_BUFFER_MAP_POINTER {
             return Err(GlError::InvalidEnum);
         }
-        let b = self.arrays.bound_mut(t)?;
+        let b = self.bound_buffer_mut(t)?;
         Ok(if b.mapped.is_some() {
             b.data.as_mut_ptr() as usize
         } else {

@@ -391,6 +391,8 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_FOG_COORD_ARRAY_BUFFER_BINDING => i(&[a.fog_coord.buffer as i64]),
         GL_ARRAY_BUFFER_BINDING => i(&[a.array_buffer as i64]),
         GL_ELEMENT_ARRAY_BUFFER_BINDING => i(&[a.element_buffer as i64]),
+        GL_PIXEL_PACK_BUFFER_BINDING => i(&[st.pack.buffer as i64]),
+        GL_PIXEL_UNPACK_BUFFER_BINDING => i(&[st.unpack.buffer as i64]),
         GL_VERTEX_ARRAY_BUFFER_BINDING => i(&[a.vertex.buffer as i64]),
         GL_COLOR_ARRAY_BUFFER_BINDING => i(&[a.color.buffer as i64]),
         GL_NORMAL_ARRAY_BUFFER_BINDING => i(&[a.normal.buffer as i64]),

@@ -27,7 +27,8 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_texture_compression_rgtc GL_EXT_texture_compression_rgtc ",
     "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB ",
     "GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB ",
-    "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg\0"
+    "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg ",
+    "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object\0"
 );
 
 /// glGetString: vendor, renderer, version ("1.5 …") and the extension list, each

@@ -211,6 +211,10 @@ pub struct PixelStore {
     pub image_height: i32,
     /// GL_*_SKIP_IMAGES
     pub skip_images: i32,
+    /// The buffer object bound to GL_PIXEL_PACK_BUFFER or GL_PIXEL_UNPACK_BUFFER (0 for
+    /// none): a pixel command's pointer is then an offset into its store. Kept here, as
+    /// Mesa does, so that glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT) saves it.
+    pub buffer: u32,
 }
 
 impl Default for PixelStore {
@@ -224,6 +228,7 @@ impl Default for PixelStore {
             alignment: 4,
             image_height: 0,
             skip_images: 0,
+            buffer: 0,
         }
     }
 }

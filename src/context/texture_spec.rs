@@ -1,6 +1,6 @@
 //! Texture specification (GL 1.5 §3.8.1–3.8.3): image targets, the bound object a command
-//! changes, glTexImage/glTexSubImage for 1D, 2D and cube-map images (with their proxies),
-//! glGetTexImage and mipmap regeneration. Every command validates all arguments, in Mesa's
+//! changes, glTexImage/glTexSubImage for 1D, 2D and cube-map images (with their proxies) and
+//! mipmap regeneration (glGetTexImage is [`super::texture_pack`]). Every command validates all arguments, in Mesa's
 //! order, before changing any state; the C boundary (`ffi/textures.rs`) only forwards the
 //! arguments and records the error.
 //!
@@ -11,7 +11,7 @@
 use super::state::PixelStore;
 use super::{Context, GlError, GlResult};
 use crate::context::pack::depth as shadow;
-use crate::context::pack::tex::{self as upload, ClientFormat, Layout};
+use crate::context::pack::tex::{self as upload, ClientFormat};
 use crate::context::pack::tex_float;
 use crate::gl::enums::*;
 use crate::gl::types::*;
@@ -473,57 +473,6 @@ impl Context {
             }
         }
         maybe_generate(obj, level);
-        Ok(())
-    }
-
-    /// glGetTexImage: packs a level of the bound texture into `pixels` under the pack state.
-    ///
-    /// # Safety
-    /// `pixels` must be writable for the packed image of the level.
-    pub(crate) unsafe fn get_tex_image(
-        &mut self,
-        target: GLenum,
-        level: GLint,
-        (format, type_): (GLenum, GLenum),
-        pixels: *mut c_void,
-    ) -> GlResult<()> {
-        let (t, face) = match image_target(target)? {
-            (t, false, face) => (t, face),
-            _ => return Err(GlError::InvalidEnum),
-        };
-        let level = check_level(level)?;
-        let cf = ClientFormat::new(format, type_)?;
-        let ps = self.state.pack;
-        // The image may be attached to the framebuffer object being drawn.
-        let name = self.textures.units[self.state.active_texture].bound[t.index()];
-        self.fbo_sync_texture(name);
-        let obj = self.tex_object(t, false);
-        let Some(Some(img)) = obj.face_levels(face).get(level) else {
-            return Ok(());
-        };
-        depth_match(img.base, &cf)?;
-        if cf.is_depth_stencil() {
-            if !shadow::is_depth_stencil(img.internal_format) {
-                return Err(GlError::InvalidOperation);
-            }
-            let stencil = obj.stencil.get(&(face, level)).map_or(&[][..], |s| s);
-            // SAFETY: the caller promises room for the packed image.
-            unsafe { shadow::pack_depth_stencil(&ps, &cf, img, stencil, pixels as *mut u8) };
-            return Ok(());
-        }
-        if img.base == BaseFormat::Depth {
-            // SAFETY: the caller promises room for the packed image.
-            unsafe { shadow::pack(&ps, &cf, img, pixels as *mut u8) };
-            return Ok(());
-        }
-        if t == Target::Tex3D {
-            // SAFETY: the caller promises room for the packed image.
-            unsafe { super::texture_3d::pack_3d(&ps, &cf, img, obj.depths[level], pixels) };
-            return Ok(());
-        }
-        let _ = Layout::new(&ps, img.width, &cf);
-        // SAFETY: the caller promises room for the packed image.
-        unsafe { upload::pack(&ps, &cf, img, pixels as *mut u8) };
         Ok(())
     }
 

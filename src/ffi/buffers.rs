@@ -48,7 +48,7 @@ pub extern "C" fn glIsBuffer(buffer: GLuint) -> GLboolean {
 pub extern "C" fn glBindBuffer(target: GLenum, buffer: GLuint) {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        c.arrays.bind_buffer(t, buffer);
+        c.bind_buffer(t, buffer);
         Ok(())
     })
 }
@@ -131,7 +131,7 @@ pub extern "C" fn glMapBuffer(target: GLenum, access: GLenum) -> *mut GLvoid {
 pub extern "C" fn glUnmapBuffer(target: GLenum) -> GLboolean {
     with_ctx(|c| {
         let t = BufferTarget::from_gl(target)?;
-        let b = c.arrays.bound_mut(t)?;
+        let b = c.bound_buffer_mut(t)?;
         if b.mapped.take().is_none() {
             return Err(GlError::InvalidOperation);
         }

@@ -338,21 +338,55 @@ pub(crate) mod client {
         if !compiling_list() {
             return with_ctx(|c| {
                 let unpack = c.state.unpack;
-                f(c, pixels, unpack)
+                if unpack.buffer == 0 {
+                    return f(c, pixels, unpack);
+                }
+                // An unpack buffer: the image is a copy of its bytes at offset `pixels`;
+                // arguments that describe no image fail in the command, on a null pointer.
+                let Some(n) = image_span(dims, format_type, &unpack, size) else {
+                    return f(c, std::ptr::null(), unpack);
+                };
+                let bytes = c.unpack_source(pixels, Some(format_type.1), n)?;
+                let p = bytes
+                    .as_ref()
+                    .map_or(pixels, |b| b.as_ptr() as *const c_void);
+                f(c, p, unpack)
             });
         }
         let unpack = with_ctx_raw(|c| Ok(c.state.unpack));
-        let span = (!pixels.is_null())
+        let span = (unpack.buffer != 0 || !pixels.is_null())
             .then(|| image_span(dims, format_type, &unpack, size))
             .flatten();
-        // SAFETY: the caller promises the described image, `span` bytes, is readable.
-        let bytes = span.map(|n| unsafe { read_vec(pixels as *const u8, n) });
+        let bytes = match span {
+            // An unpack buffer is read when the list is compiled, as client memory is.
+            Some(n) if unpack.buffer != 0 => {
+                match with_ctx_raw(|c| c.unpack_source(pixels, Some(format_type.1), n).map(Some)) {
+                    Some(b) => b,
+                    None => return,
+                }
+            }
+            // SAFETY: the caller promises the described image, `span` bytes, is readable.
+            Some(n) => Some(unsafe { read_vec(pixels as *const u8, n) }),
+            None => None,
+        };
         with_ctx_list(move |c| {
             let p = bytes
                 .as_ref()
                 .map_or(std::ptr::null(), |b| b.as_ptr() as *const c_void);
             f(c, p, unpack)
         })
+    }
+
+    /// The bytes an unpacking command decoded at the C boundary reads from the unpack
+    /// buffer ([`Context::unpack_source`]): `Some(None)` when none is bound (read the client
+    /// pointer), `Some(Some(copy))` when one is, `None` when its checks failed (the error is
+    /// recorded; the command must do nothing) or there is no context.
+    pub(crate) fn unpack_buffer_bytes(
+        pixels: *const c_void,
+        ty: Option<GLenum>,
+        span: usize,
+    ) -> Option<Option<Vec<u8>>> {
+        with_ctx_raw(|c| c.unpack_source(pixels, ty, span).map(Some))
     }
 
     /// The `(a[i], b[i])` pairs of a multi-draw call's two arrays: GL_INVALID_VALUE for a

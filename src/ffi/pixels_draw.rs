@@ -4,6 +4,7 @@
 //! execute, by [`crate::context::pixel_api`].
 #![allow(non_snake_case)]
 
+use super::client::unpack_buffer_bytes;
 use super::enums::*;
 use super::types::*;
 use super::{with_ctx, with_ctx_list};
@@ -31,10 +32,16 @@ pub unsafe extern "C" fn glDrawPixels(
     let layout = Layout::new(format, type_);
     let ps = unpack_state();
     let img = match (&layout, width >= 0 && height >= 0) {
-        // SAFETY: GL's contract: `pixels` holds the image the unpack state describes.
-        (Ok(l), true) => unsafe {
-            l.decode(&ps, width as usize, height as usize, pixels as *const u8)
-        },
+        (Ok(l), true) => {
+            let (w, h) = (width as usize, height as usize);
+            let Some(copy) = unpack_buffer_bytes(pixels, Some(type_), l.span(&ps, w, h)) else {
+                return;
+            };
+            let src = copy.as_ref().map_or(pixels as *const u8, |b| b.as_ptr());
+            // SAFETY: GL's contract: `pixels` holds the image the unpack state describes
+            // (or `src` is the unpack buffer's copy of it).
+            unsafe { l.decode(&ps, w, h, src) }
+        }
         _ => None,
     };
     with_ctx_list(move |c| c.draw_pixel_rect((width, height), layout, img.as_ref()))
@@ -61,8 +68,18 @@ pub unsafe extern "C" fn glBitmap(
     bitmap_: *const GLubyte,
 ) {
     let ps = unpack_state();
-    // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes.
-    let bits = unsafe { bitmap_bits(&ps, (width, height), bitmap_) };
+    let span = match (width, height) {
+        (w @ 0.., h @ 0..) => Layout::new(GL_COLOR_INDEX, GL_BITMAP)
+            .map_or(0, |l| l.span(&ps, w as usize, h as usize)),
+        _ => 0,
+    };
+    let Some(copy) = unpack_buffer_bytes(bitmap_ as *const GLvoid, None, span) else {
+        return;
+    };
+    let src = copy.as_ref().map_or(bitmap_, |b| b.as_ptr());
+    // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes (or
+    // `src` is the unpack buffer's copy of it).
+    let bits = unsafe { bitmap_bits(&ps, (width, height), src) };
     let (orig, mv) = ([xorig, yorig], [xmove, ymove]);
     with_ctx_list(move |c| c.draw_bitmap((width, height), orig, mv, &bits))
 }

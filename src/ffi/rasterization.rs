@@ -66,9 +66,15 @@ pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
 /// `mask` must be NULL or readable for 128 bytes.
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
-    // SAFETY: the GL contract makes a non-NULL `mask` point to a 32x32 bitmap (128 bytes).
-    let bytes: Option<[u8; 128]> =
-        (!mask.is_null()).then(|| unsafe { mask.cast::<[u8; 128]>().read_unaligned() });
+    let Some(copy) = super::client::unpack_buffer_bytes(mask as *const GLvoid, None, 128) else {
+        return;
+    };
+    let bytes: Option<[u8; 128]> = match copy {
+        Some(b) => b.try_into().ok(),
+        // SAFETY: the GL contract makes a non-NULL `mask` point to a 32x32 bitmap (128
+        // bytes).
+        None => (!mask.is_null()).then(|| unsafe { mask.cast::<[u8; 128]>().read_unaligned() }),
+    };
     with_ctx_list(move |c| c.polygon_stipple(bytes.as_ref()))
 }
 
@@ -78,7 +84,17 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 /// `mask` must be NULL or writable for 128 bytes.
 #[no_mangle]
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
-    let rows = with_ctx(|c| Ok(Some(c.polygon_stipple_rows())));
+    let rows = with_ctx(|c| {
+        let rows = c.polygon_stipple_rows();
+        // A pack buffer takes the 128 bytes at offset `mask` instead of the client.
+        let Some(mut staged) = c.pack_stage(mask as *mut GLvoid, None, 128)? else {
+            return Ok(Some(rows));
+        };
+        // SAFETY: the staged range holds the 128 bytes checked above.
+        unsafe { staged.ptr().cast::<[[u8; 4]; 32]>().write_unaligned(rows) };
+        c.pack_commit(staged);
+        Ok(None)
+    });
     if let (Some(rows), false) = (rows, mask.is_null()) {
         // SAFETY: the GL contract makes `mask` writable for 128 bytes; checked for NULL.
         unsafe { mask.cast::<[[u8; 4]; 32]>().write_unaligned(rows) };

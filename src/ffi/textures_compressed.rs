@@ -3,14 +3,17 @@
 //! [`crate::context::texture_compressed`], which holds Mesa's checks.
 #![allow(non_snake_case)]
 
+use super::client::unpack_buffer_bytes;
 use super::families::c_fns;
 use super::types::*;
 use super::with_ctx_list;
 use crate::context::texture_compressed::{ImageArgs, SubArgs};
 
 /// The client's blocks, copied when `size` is what the format needs for `w x h` (GL's
-/// contract then makes `data` readable for that many bytes); `None` otherwise, when the
-/// call fails its size check anyway, or for a null pointer.
+/// contract then makes `data` readable for that many bytes; with an unpack buffer bound,
+/// `data` is an offset into it, [`unpack_buffer_bytes`]); `Some(None)` otherwise, when the
+/// call fails its size check anyway, or for a null client pointer; `None` when the unpack
+/// buffer's checks failed (the error is recorded and the call must do nothing).
 ///
 /// # Safety
 /// `data`, when not null and `size` matches, must be readable for `size` bytes.
@@ -20,13 +23,23 @@ unsafe fn copy_blocks(
     h: GLsizei,
     size: GLsizei,
     data: *const GLvoid,
-) -> Option<Vec<u8>> {
-    let info = crate::context::pack::tex_format::compressed_info(internal)?;
-    if data.is_null() || size <= 0 || info.image_size(w, h) != size as u32 {
-        return None;
+) -> Option<Option<Vec<u8>>> {
+    let Some(info) = crate::context::pack::tex_format::compressed_info(internal) else {
+        return Some(None);
+    };
+    if size <= 0 || info.image_size(w, h) != size as u32 {
+        return Some(None);
+    }
+    if let Some(copy) = unpack_buffer_bytes(data, None, size as usize)? {
+        return Some(Some(copy));
+    }
+    if data.is_null() {
+        return Some(None);
     }
     // SAFETY: the caller's contract for a matching size.
-    Some(unsafe { std::slice::from_raw_parts(data as *const u8, size as usize) }.to_vec())
+    Some(Some(
+        unsafe { std::slice::from_raw_parts(data as *const u8, size as usize) }.to_vec(),
+    ))
 }
 
 /// glCompressedTexImage{1,2,3}D (`dims`) with the client's blocks (read for 2D only).
@@ -34,10 +47,14 @@ unsafe fn copy_blocks(
 /// # Safety
 /// As [`copy_blocks`] for a 2D image.
 unsafe fn image(dims: u32, target: GLenum, a: ImageArgs, data: *const GLvoid) {
-    // SAFETY: forwarded caller contract.
-    let blocks = (dims == 2)
-        .then(|| unsafe { copy_blocks(a.internal, a.w, a.h, a.size, data) })
-        .flatten();
+    let blocks = match dims {
+        // SAFETY: forwarded caller contract.
+        2 => match unsafe { copy_blocks(a.internal, a.w, a.h, a.size, data) } {
+            Some(b) => b,
+            None => return,
+        },
+        _ => None,
+    };
     with_ctx_list(move |c| c.compressed_tex_image(dims, target, &a, blocks.as_deref()))
 }
 
@@ -46,10 +63,14 @@ unsafe fn image(dims: u32, target: GLenum, a: ImageArgs, data: *const GLvoid) {
 /// # Safety
 /// As [`copy_blocks`] for a 2D image.
 unsafe fn sub_image(dims: u32, target: GLenum, a: SubArgs, data: *const GLvoid) {
-    // SAFETY: forwarded caller contract.
-    let blocks = (dims == 2)
-        .then(|| unsafe { copy_blocks(a.format, a.w, a.h, a.size, data) })
-        .flatten();
+    let blocks = match dims {
+        // SAFETY: forwarded caller contract.
+        2 => match unsafe { copy_blocks(a.format, a.w, a.h, a.size, data) } {
+            Some(b) => b,
+            None => return,
+        },
+        _ => None,
+    };
     with_ctx_list(move |c| c.compressed_tex_sub_image(dims, target, &a, blocks.as_deref()))
 }
 
@@ -73,10 +94,26 @@ c_fns! {
 pub unsafe extern "C" fn glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut GLvoid) {
     super::with_ctx(|c| {
         let blocks = c.compressed_blocks(target, level)?;
-        if !img.is_null() {
+        // A pack buffer takes the blocks at offset `img` instead of the client.
+        let Some(mut staged) = c.pack_stage(img, None, blocks.len())? else {
             // SAFETY: GL's contract: `img` holds GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes.
-            unsafe { std::ptr::copy_nonoverlapping(blocks.as_ptr(), img as *mut u8, blocks.len()) };
-        }
+            unsafe { copy_to(blocks, img as *mut u8) };
+            return Ok(());
+        };
+        // SAFETY: the staged range holds `blocks.len()` bytes (or is null when empty).
+        unsafe { copy_to(blocks, staged.ptr()) };
+        c.pack_commit(staged);
         Ok(())
     })
+}
+
+/// Copies `blocks` to `dst` (nothing when `dst` is null).
+///
+/// # Safety
+/// `dst`, when not null, must be writable for `blocks.len()` bytes.
+unsafe fn copy_to(blocks: &[u8], dst: *mut u8) {
+    if !dst.is_null() {
+        // SAFETY: the caller's contract.
+        unsafe { std::ptr::copy_nonoverlapping(blocks.as_ptr(), dst, blocks.len()) };
+    }
 }

@@ -136,6 +136,17 @@ pub const GL_QUERY_RESULT_ARB: GLenum = 0x8866;
 pub const GL_QUERY_RESULT_AVAILABLE_ARB: GLenum = 0x8867;
 pub const GL_SAMPLES_PASSED_ARB: GLenum = 0x8914;
 
+// GL_ARB_pixel_buffer_object
+pub const GL_ARB_pixel_buffer_object: GLenum = 1;
+pub const GL_PIXEL_PACK_BUFFER_ARB: GLenum = 0x88EB;
+pub const GL_PIXEL_UNPACK_BUFFER_ARB: GLenum = 0x88EC;
+pub const GL_PIXEL_PACK_BUFFER_BINDING_ARB: GLenum = 0x88ED;
+pub const GL_PIXEL_UNPACK_BUFFER_BINDING_ARB: GLenum = 0x88EF;
+pub const GL_PIXEL_PACK_BUFFER: GLenum = 0x88EB;
+pub const GL_PIXEL_UNPACK_BUFFER: GLenum = 0x88EC;
+pub const GL_PIXEL_PACK_BUFFER_BINDING: GLenum = 0x88ED;
+pub const GL_PIXEL_UNPACK_BUFFER_BINDING: GLenum = 0x88EF;
+
 // GL_ARB_point_parameters
 pub const GL_ARB_point_parameters: GLenum = 1;
 pub const GL_POINT_SIZE_MIN_ARB: GLenum = 0x8126;
@@ -440,6 +451,13 @@ pub const GL_UNSIGNED_SHORT_4_4_4_4_EXT: GLenum = 0x8033;
 pub const GL_UNSIGNED_SHORT_5_5_5_1_EXT: GLenum = 0x8034;
 pub const GL_UNSIGNED_INT_8_8_8_8_EXT: GLenum = 0x8035;
 pub const GL_UNSIGNED_INT_10_10_10_2_EXT: GLenum = 0x8036;
+
+// GL_EXT_pixel_buffer_object
+pub const GL_EXT_pixel_buffer_object: GLenum = 1;
+pub const GL_PIXEL_PACK_BUFFER_EXT: GLenum = 0x88EB;
+pub const GL_PIXEL_UNPACK_BUFFER_EXT: GLenum = 0x88EC;
+pub const GL_PIXEL_PACK_BUFFER_BINDING_EXT: GLenum = 0x88ED;
+pub const GL_PIXEL_UNPACK_BUFFER_BINDING_EXT: GLenum = 0x88EF;
 
 // GL_EXT_point_parameters
 pub const GL_EXT_point_parameters: GLenum = 1;

@@ -4,10 +4,13 @@
 use super::packed_layout;
 use crate::context::error::{GlError, GlResult};
 use crate::context::pixel_transfer::stencil_transfer;
+use crate::context::state::PixelStore;
 use crate::context::Context;
 use crate::framebuffer::{float_to_ubyte, DepthFormat};
 use crate::gl::enums::*;
-use crate::gl::glext_enums::{GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+use crate::gl::glext_enums::{
+    GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, GL_UNSIGNED_INT_24_8,
+};
 use crate::texture::shadow;
 
 /// What one packed pixel holds.
@@ -19,6 +22,28 @@ enum ReadKind {
     Stencil,
     /// GL_DEPTH_STENCIL: GL_UNSIGNED_INT_24_8 or GL_FLOAT_32_UNSIGNED_INT_24_8_REV.
     DepthStencil,
+}
+
+/// The bytes glReadPixels writes, from the first to one past the last, for a `w` x `h`
+/// image in `format`/`ty` under the pack state `ps` (0 when the arguments describe no
+/// image: the call fails on them). What a pack buffer's range must hold.
+pub fn read_span(ps: &PixelStore, (format, ty): (u32, u32), w: i32, h: i32) -> usize {
+    let (Ok(w), Ok(h)) = (usize::try_from(w), usize::try_from(h)) else {
+        return 0;
+    };
+    if w == 0 || h == 0 {
+        return 0;
+    }
+    if format == GL_DEPTH_STENCIL {
+        let bpp = match ty {
+            GL_UNSIGNED_INT_24_8 => 4,
+            GL_FLOAT_32_UNSIGNED_INT_24_8_REV => 8,
+            _ => return 0,
+        };
+        let (start, stride) = packed_layout(ps, w, bpp, 4);
+        return start + (h - 1) * stride + w * bpp;
+    }
+    super::draw_image::Layout::new(format, ty).map_or(0, |l| l.span(ps, w, h))
 }
 
 /// glReadPixels: reads a rectangle of the framebuffer (bottom row first) into `out`
