@@ -374,6 +374,48 @@ pub unsafe fn shade_tested_row<const FMA: bool, const FLAT: bool, const PERSP: b
     }
 }
 
+/// The per-fragment operations of 8 pixels from `x` in row `py` whose 8-bit colours are
+/// ready (pixel rectangles, `crate::pixels`): the `live` lanes are counted as fragments,
+/// then [`shade_row`]'s alpha test, stencil and depth tests (depth from the triangle's z
+/// plane, unfused, as `Fragments` evaluates it), blending or logic op, colour mask and
+/// store of the packed RGBA8 colours `px`. What [`super::span::shade_chunk`] does with
+/// [`super::span::ChunkColors::Ready`].
+///
+/// # Safety
+/// AVX2 context, for a plan and 8-bit target that [`plan_ok`] accepts (not wide), with
+/// `g` made from this plan and triangle; live lanes lie inside the row.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn ready_row<const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: I32x8,
+    px: I32x8,
+    stats: &mut Stats,
+) {
+    let w = fb.width;
+    let n = LANES.min(w - x);
+    // SAFETY: forwarded from the caller; loads and stores touch live (passing) lanes
+    // only, which lie in `x..x + n` of row `py`.
+    unsafe {
+        stats.fragments += u64::from(live.movemask().count_ones());
+        let live = alpha_test8(plan, px, live, stats);
+        let fx = F32x8::splat(x as f32).add(lanes_f());
+        let fy = F32x8::splat(py as f32);
+        let idx = (py - fb.y0) * w + x;
+        let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
+        let sp = g.stencil.as_ref();
+        let pass =
+            stencil_depth8::<false, DEPTH>(t, plan, sp, st, dp, (idx, n), (fx, fy), live, stats);
+        let pf = [F32x8::zero(); 4];
+        write_row::<false>(plan, g, fb, idx, n, pass, px, pf, stats);
+    }
+}
+
 /// The `live` lanes as a mask, counted as fragments.
 ///
 /// # Safety

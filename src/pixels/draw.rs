@@ -115,7 +115,7 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         rasterize(q, &d, |_, py, x, texels| {
             let row = &mut fb.stencil[py * fw + x..py * fw + x + texels.len()];
             for (s, &k) in row.iter_mut().zip(texels) {
-                *s = (*s & !stencil_mask) | (vals[k] & stencil_mask);
+                *s = (*s & !stencil_mask) | (vals[k as usize] & stencil_mask);
             }
         });
         return;
@@ -126,13 +126,33 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         stats: t.stats,
     };
     let narrow = frags.target.wide.is_none();
+    #[cfg(target_arch = "x86_64")]
+    if super::simd::covers(frags.plan, &frags.target) {
+        use super::simd::Texels;
+        // The unorm8 conversion of each texel's colour (or the bitmap's), once per draw.
+        let (c8, m32): (Vec<[u8; 4]>, Vec<i32>);
+        let texels = match src {
+            Source::Color(c) => {
+                c8 = c.iter().map(|p| p.map(unorm8)).collect();
+                Some(Texels::Color(&c8))
+            }
+            Source::Mask(m, c) => {
+                m32 = m.iter().map(|&b| -i32::from(b)).collect();
+                Some(Texels::Mask(&m32, c.map(unorm8)))
+            }
+            Source::Depth(..) | Source::Stencil(_) => None,
+        };
+        if let Some(texels) = texels {
+            return run8(frags, q, &d, texels);
+        }
+    }
     match src {
         // The unorm8 conversion of each texel's colour, once per texel, not per pixel.
         Source::Color(c) if narrow => {
             let c8: Vec<[u8; 4]> = c.iter().map(|p| p.map(unorm8)).collect();
             rasterize(q, &d, |t, py, x, texels| {
                 for (i, k) in texels.chunks(LANES).enumerate() {
-                    frags.put_chunk8(t, py, x + i * LANES, |l| k.get(l).map(|&k| c8[k]));
+                    frags.put_chunk8(t, py, x + i * LANES, |l| k.get(l).map(|&k| c8[k as usize]));
                 }
             })
         }
@@ -140,9 +160,9 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
             let c8 = c.map(unorm8);
             rasterize(q, &d, |t, py, x, texels| {
                 for (i, k) in texels.chunks(LANES).enumerate() {
-                    if k.iter().any(|&k| m[k]) {
+                    if k.iter().any(|&k| m[k as usize]) {
                         frags.put_chunk8(t, py, x + i * LANES, |l| {
-                            k.get(l).and_then(|&k| m[k].then_some(c8))
+                            k.get(l).and_then(|&k| m[k as usize].then_some(c8))
                         });
                     }
                 }
@@ -150,23 +170,40 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         }
         Source::Color(c) => rasterize(q, &d, |t, py, x, texels| {
             for (i, k) in texels.chunks(LANES).enumerate() {
-                frags.put_chunk(t, py, x + i * LANES, |l| k.get(l).map(|&k| c[k]));
+                frags.put_chunk(t, py, x + i * LANES, |l| k.get(l).map(|&k| c[k as usize]));
             }
         }),
         Source::Mask(m, c) => rasterize(q, &d, |t, py, x, texels| {
             for (i, k) in texels.chunks(LANES).enumerate() {
                 frags.put_chunk(t, py, x + i * LANES, |l| {
-                    k.get(l).and_then(|&k| m[k].then_some(c))
+                    k.get(l).and_then(|&k| m[k as usize].then_some(c))
                 });
             }
         }),
         Source::Depth(z, c) => rasterize(q, &d, |t, py, x, texels| {
             for (i, &k) in texels.iter().enumerate() {
-                frags.put(t, x + i, py, c, Some(z[k]))
+                frags.put(t, x + i, py, c, Some(z[k as usize]))
             }
         }),
         Source::Stencil(_) => {}
     }
+}
+
+/// [`run`]'s colour and bitmap fragments 8 at a time ([`super::simd`]), for a plan and
+/// target it covers.
+#[cfg(target_arch = "x86_64")]
+fn run8(frags: Fragments<'_, '_>, q: &Quad, d: &Dest, texels: super::simd::Texels<'_>) {
+    let Fragments {
+        plan,
+        mut target,
+        stats,
+    } = frags;
+    rasterize(q, d, |t, py, x, k| {
+        // SAFETY: `run` checked `covers`; the rasteriser's spans lie inside the region
+        // (so inside the target) and select texels of the `q.w` x `q.h` image, which
+        // `texels` holds one per texel (the image is not empty: `rasterize` draws none).
+        unsafe { super::simd::span(t, plan, &mut target, py, x, k, texels, stats) }
+    });
 }
 
 /// Colour texels (`w` wide, in the temporary texture's row order) through the

@@ -66,9 +66,11 @@ pub struct Dest {
 
 /// Calls `f(tri, py, x, texels)` for every span of pixels `(x + i, py)` (y-down) the quad
 /// covers inside the region, with the texel each pixel's NEAREST sampling selects (as an
-/// index `row · w + col` into the image) in `texels[i]`.
-pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(q: &Quad, d: &Dest, mut f: F) {
-    if q.w == 0 || q.h == 0 {
+/// index `row · w + col` into the image) in `texels[i]`. The indices are 32-bit (the
+/// 8-lane gathers of [`super::simd`] take them as they are); an image of 2^32 texels or
+/// more, which no client could have decoded, draws nothing.
+pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, &[u32])>(q: &Quad, d: &Dest, mut f: F) {
+    if q.w == 0 || q.h == 0 || q.w.checked_mul(q.h).is_none_or(|n| n > u32::MAX as usize) {
         return;
     }
     if d.fma {
@@ -90,7 +92,7 @@ pub fn rasterize<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(q: &Quad, d: 
 /// The CPU has FMA.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
-unsafe fn raster_fma<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
+unsafe fn raster_fma<F: FnMut(&SetupTriangle, usize, usize, &[u32])>(
     q: &Quad,
     d: &Dest,
     f: &mut F,
@@ -102,12 +104,12 @@ unsafe fn raster_fma<F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
 /// clamped to `[0, n − 1]`. The saturating cast truncates, which is the floor for every
 /// value the clamp keeps (negative values, −0 and NaN all give 0).
 #[inline(always)]
-fn texel_at(c: f32, nf: f32, n: usize) -> usize {
-    ((c * nf) as usize).min(n - 1)
+fn texel_at(c: f32, nf: f32, n: usize) -> u32 {
+    ((c * nf) as usize).min(n - 1) as u32
 }
 
 #[inline(always)]
-fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
+fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[u32])>(
     q: &Quad,
     d: &Dest,
     f: &mut F,
@@ -143,6 +145,7 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
         corner(x0, y0, 0.0, t_top),
     ];
     let (wf, hf) = (q.w as f32, q.h as f32);
+    let w32 = q.w as u32;
     let mut texels = Vec::new();
     let mut cols = Columns::default();
     quad_spans_clipped(&v, &vp, d.region, |tri, py, lo, hi| {
@@ -161,7 +164,7 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
             let cs = cols.of(ps, (x0, x1), |px| {
                 texel_at(eval::<M>(ps, px as f32, fy), wf, q.w)
             });
-            let base = texel_at(eval::<M>(pt, lo as f32, fy), hf, q.h) * q.w;
+            let base = texel_at(eval::<M>(pt, lo as f32, fy), hf, q.h) * w32;
             let span = &cs[(lo - x0) as usize..=(hi - x0) as usize];
             texels.extend(span.iter().map(|&c| base + c));
         } else {
@@ -169,7 +172,7 @@ fn raster_m<M: Madd, F: FnMut(&SetupTriangle, usize, usize, &[usize])>(
                 let fx = px as f32;
                 let s = eval::<M>(ps, fx, fy);
                 let t = eval::<M>(pt, fx, fy);
-                texel_at(t, hf, q.h) * q.w + texel_at(s, wf, q.w)
+                texel_at(t, hf, q.h) * w32 + texel_at(s, wf, q.w)
             }));
         }
         f(tri, py as usize, lo as usize, &texels);
@@ -184,13 +187,13 @@ struct Columns {
     /// The plane's `a0`, `dadx` bits and the range the columns were computed for.
     key: Option<(u32, u32, i64, i64)>,
     /// `cols[x − x0]`.
-    cols: Vec<usize>,
+    cols: Vec<u32>,
 }
 
 impl Columns {
     /// The columns of `range` under plane `p`, computed by `col(x)` when not cached.
     #[inline(always)]
-    fn of(&mut self, p: &Plane, range: (i64, i64), col: impl Fn(i64) -> usize) -> &[usize] {
+    fn of(&mut self, p: &Plane, range: (i64, i64), col: impl Fn(i64) -> u32) -> &[u32] {
         let key = Some((p.a0.to_bits(), p.dadx.to_bits(), range.0, range.1));
         if self.key != key {
             self.key = key;

@@ -5,12 +5,12 @@ use crate::test_rng::xorshift32;
 
 /// The texel every pixel's own plane evaluation selects (the selection before columns
 /// were cached), for the span of `tri` at row `py` from `x` on.
-fn per_pixel<M: Madd>(tri: &SetupTriangle, q: &Quad, py: usize, x: usize, n: usize) -> Vec<usize> {
+fn per_pixel<M: Madd>(tri: &SetupTriangle, q: &Quad, py: usize, x: usize, n: usize) -> Vec<u32> {
     let (ps, pt) = (&tri.vary[VARY_TEX], &tri.vary[VARY_TEX + 1]);
     (x..x + n)
         .map(|px| {
             let (fx, fy) = (px as f32, py as f32);
-            texel_at(eval::<M>(pt, fx, fy), q.h as f32, q.h) * q.w
+            texel_at(eval::<M>(pt, fx, fy), q.h as f32, q.h) * q.w as u32
                 + texel_at(eval::<M>(ps, fx, fy), q.w as f32, q.w)
         })
         .collect()

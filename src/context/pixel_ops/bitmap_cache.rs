@@ -83,7 +83,11 @@ pub fn flush(ctx: &mut Context) {
 
 /// Records the state of a glBitmap call (after any cache flush a replayed bitmap needs).
 pub fn snapshot(ctx: &mut Context) {
-    ctx.bitmap_cache.state = Some(Box::new(ctx.state.clone()));
+    // Into the box of the last call's snapshot: no allocation per glBitmap.
+    match &mut ctx.bitmap_cache.state {
+        Some(s) => (**s).clone_from(&ctx.state),
+        None => ctx.bitmap_cache.state = Some(Box::new(ctx.state.clone())),
+    }
 }
 
 /// Adds a `w` x `h` bitmap at window position (x, y); false when it is too large to cache.
