@@ -107,7 +107,10 @@ unsafe fn span_avx2<const DEPTH: bool>(
             } else {
                 let mut a = [0u32; LANES];
                 a[..k.len()].copy_from_slice(k);
-                (I32x8::load(a.as_ptr()), I32x8::splat(k.len() as i32).cmpgt(lanes))
+                (
+                    I32x8::load(a.as_ptr()),
+                    I32x8::splat(k.len() as i32).cmpgt(lanes),
+                )
             };
             let px = match src {
                 Texels::Color(c) => I32x8::gather(c.as_ptr().cast(), idx),
