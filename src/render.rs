@@ -64,12 +64,15 @@ pub struct DrawPlan<'a> {
 
 /// Runs `plan` for `verts` drawn as `mode` (through `indices` when given) into `fb`, inside
 /// `region`; `materials`, when given, is each vertex's own material. With `detach`, the
-/// last batch of triangles may be left drawing on the pool: it is returned.
+/// last batch of triangles may be left drawing on the pool: it is returned. `adopt` is
+/// the previous draw's last batch still drawing into `fb`, taken over
+/// ([`Rasterizer::adopt`]).
 ///
 /// # Safety
 /// With `detach`, as [`Rasterizer::flush_detached`]: the caller must put `fb` into the
-/// returned batch before anything else touches it, and start no other rasterizer before
-/// the batch is settled.
+/// returned batch before anything else touches it, keep the draw's texture images alive
+/// and unchanged, and start no other rasterizer before the batch is settled or adopted.
+/// `adopt` must draw into `fb`.
 #[allow(clippy::too_many_arguments)]
 pub unsafe fn run<S: VertexSource + ?Sized>(
     plan: DrawPlan<'_>,
@@ -81,6 +84,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     region: [i64; 4],
     stats: &mut Stats,
     detach: bool,
+    adopt: Option<InFlight>,
 ) -> Option<InFlight> {
     let DrawPlan {
         mut stage,
@@ -167,6 +171,9 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     let back = stage.two_side().then(|| stage.back_offset());
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
+    if let Some(f) = adopt {
+        rast.adopt(f, stats);
+    }
     let pipe = TriPipe {
         setup: match plan.ms {
             Some(_) => SetupVariant::all_samples(),

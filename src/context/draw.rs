@@ -26,7 +26,9 @@ pub fn draw<S: VertexSource + ?Sized>(
     draw_lit(ctx, mode, verts, indices, None)
 }
 
-/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd). The
+/// draw's last batch may be left drawing on the pool ([`Context::settle_draws`]): callers
+/// that touch the framebuffer afterwards settle it first.
 pub fn draw_lit<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
@@ -40,7 +42,7 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
         indices,
         materials,
     };
-    draw_inner(ctx, prims, false)
+    draw_inner(ctx, prims, true)
 }
 
 /// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
@@ -81,7 +83,7 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
         draw_pass(ctx, prims, detach, None);
         return;
     }
-    draw_multisample(ctx, prims);
+    draw_multisample(ctx, prims, detach);
 }
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
@@ -100,11 +102,15 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
 /// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
 /// same tests pass, in the same order), its own depth and stencil put back afterwards;
 /// plane 0 is drawn last, normally.
-fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>) {
-    ctx.settle_draws();
-    crate::context::pixel_ops::bitmap_cache::flush(ctx);
+fn draw_multisample<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    prims: Prims<'_, S>,
+    detach: bool,
+) {
     let caps = &ctx.state.caps;
     if !caps.get(Cap::Multisample) {
+        ctx.settle_draws();
+        crate::context::pixel_ops::bitmap_cache::flush(ctx);
         let Some(fb) = ctx.fb.as_mut() else { return };
         fb.resolve();
         let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
@@ -144,9 +150,10 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
         mask: mask as u8,
         alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
     };
-    if draw_pass(ctx, prims, false, Some(pass)) {
+    if draw_pass(ctx, prims, detach, Some(pass)) {
         return;
     }
+    ctx.settle_draws();
     ctx.for_each_sample(|c, s| {
         if mask & (1 << s) != 0 {
             draw_pass(c, prims, false, None);
@@ -165,9 +172,31 @@ fn draw_pass<S: VertexSource + ?Sized>(
     detach: bool,
     ms: Option<crate::fragment::MsPass>,
 ) -> bool {
-    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
-    ctx.settle_draws();
-    crate::context::pixel_ops::bitmap_cache::flush(ctx);
+    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the
+    // pool, but this draw's rasterizer, which takes it over (it draws into the same
+    // framebuffer: binding another one settles the draws first).
+    if crate::context::pixel_ops::bitmap_cache::pending(ctx) {
+        ctx.settle_draws();
+        crate::context::pixel_ops::bitmap_cache::flush(ctx);
+    }
+    let mut adopt = ctx.take_inflight();
+    let drawn = draw_pass_adopting(ctx, prims, detach, ms, &mut adopt);
+    if let Some(f) = adopt {
+        // Not taken over (nothing was rasterized): wait for it.
+        f.settle(&mut ctx.stats);
+    }
+    drawn
+}
+
+/// [`draw_pass`] with the previous draw's batch still on the pool, `adopt` (taken when the
+/// pipeline runs).
+fn draw_pass_adopting<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    prims: Prims<'_, S>,
+    detach: bool,
+    ms: Option<crate::fragment::MsPass>,
+    adopt: &mut Option<crate::raster::batch::InFlight>,
+) -> bool {
     let Some(fb) = ctx.fb.as_ref() else {
         return true;
     };
@@ -269,7 +298,15 @@ fn draw_pass<S: VertexSource + ?Sized>(
         // The other planes ride along with plane 0 (`Framebuffer::samples`).
         fb.hold_samples(std::mem::take(&mut ctx.fbo.ms_planes));
     }
-    let kept = run(plan, prims, fb, region, &mut ctx.stats, detach);
+    let kept = run(
+        plan,
+        prims,
+        fb,
+        region,
+        &mut ctx.stats,
+        detach,
+        adopt.take(),
+    );
     if one_pass {
         ctx.fbo.ms_planes = fb.release_samples();
     }
@@ -278,13 +315,14 @@ fn draw_pass<S: VertexSource + ?Sized>(
     }
     if let Some(f) = kept {
         // SAFETY: `f` draws into `ctx.fb`, untouched since the pipeline returned it (only
-        // the colour-material sync ran), and this draw settled everything first.
+        // the colour-material sync ran), and this draw took over the batch in flight.
         unsafe { ctx.keep_inflight(f) };
     }
     true
 }
 
-/// [`crate::render::run`], for a draw that settled the previous one first.
+/// [`crate::render::run`], for a draw that settled the previous one first or takes it
+/// over (`adopt`).
 fn run<S: VertexSource + ?Sized>(
     plan: DrawPlan<'_>,
     prims: Prims<'_, S>,
@@ -292,10 +330,14 @@ fn run<S: VertexSource + ?Sized>(
     region: [i64; 4],
     stats: &mut crate::stats::Stats,
     detach: bool,
+    adopt: Option<crate::raster::batch::InFlight>,
 ) -> Option<crate::raster::batch::InFlight> {
     // SAFETY: with `detach`, the caller keeps the returned batch (`keep_inflight`) before
-    // anything else touches `fb`, and every draw settles the draws on the pool
-    // (`Context::settle_draws`) before it starts a rasterizer; this one did.
+    // anything else touches `fb`; the context keeps the draw's texture images as they are
+    // until the batch is settled or adopted (`Context::settle_draws`); every draw settles
+    // the draw on the pool or takes it over (`adopt`, which draws into `fb`: the context's
+    // `inflight` holds the framebuffer it drew into, and rebinding settles it) before it
+    // starts a rasterizer; this one did.
     unsafe {
         crate::render::run(
             plan,
@@ -307,6 +349,7 @@ fn run<S: VertexSource + ?Sized>(
             region,
             stats,
             detach,
+            adopt,
         )
     }
 }

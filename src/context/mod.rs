@@ -186,9 +186,10 @@ pub struct Context {
     pub fbo: fbo::FboState,
     /// GL 2.0 shader and program objects and the current program.
     pub shaders: shader_objects::ShaderState,
-    /// The last batch of a streamed glBegin/glEnd chunk, still drawn by the pool
+    /// The last batch of the last draw, still drawn by the pool
     /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
-    /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
+    /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back or the next
+    /// draw takes it over ([`Context::take_inflight`]).
     inflight: Option<crate::raster::batch::InFlight>,
 }
 
@@ -267,13 +268,52 @@ impl Context {
     }
 
     /// Waits for the draw still running on the pool, if any, and puts its framebuffer
-    /// back into `fb` (see `inflight`). Every GL call but the per-vertex ones does this
-    /// first (through [`Context::flush_pending`]), as do draws, framebuffer (re)binding
-    /// and dropping the context.
+    /// back into `fb` (see `inflight`). Every GL call but the per-vertex ones and the
+    /// state calls that touch neither framebuffers nor texture images does this first
+    /// (through [`Context::flush_pending`]), as do framebuffer (re)binding and dropping
+    /// the context; a draw into the same framebuffer takes the batch over instead
+    /// ([`Context::take_inflight`]). So the pool can still be drawing only while the
+    /// program changes state that the batch has its own copy of (the fragment plan, the
+    /// units' plans): the framebuffer and the texture images the batch reads stay as
+    /// they were until it is settled.
     #[inline]
     pub fn settle_draws(&mut self) {
         if let Some(f) = self.inflight.take() {
-            self.fb = f.settle(&mut self.stats);
+            let fb = f.settle(&mut self.stats);
+            if fb.is_some() {
+                self.fb = fb;
+            }
+        }
+    }
+
+    /// The draw still on the pool, its framebuffer back in `fb`, for the next draw into
+    /// that framebuffer to take over ([`crate::raster::batch::Rasterizer::adopt`]); it must
+    /// be adopted or settled before anything else touches the framebuffer.
+    pub(crate) fn take_inflight(&mut self) -> Option<crate::raster::batch::InFlight> {
+        let mut f = self.inflight.take()?;
+        if let Some(fb) = f.unhold() {
+            self.fb = Some(fb);
+        }
+        Some(f)
+    }
+
+    /// Puts the framebuffer of the draw still on the pool back into `fb` while the draw
+    /// stays in flight (for a draw call's checks, which read the framebuffer's size and
+    /// formats; the draw itself takes the batch over: [`Context::take_inflight`]). Undone
+    /// by [`Context::rehold_draws`].
+    pub(crate) fn unhold_draws(&mut self) {
+        if let Some(fb) = self.inflight.as_mut().and_then(|f| f.unhold()) {
+            self.fb = Some(fb);
+        }
+    }
+
+    /// Hands `fb` back to the draw still on the pool when [`Context::unhold_draws`] gave it
+    /// out and no draw took the batch over since.
+    pub(crate) fn rehold_draws(&mut self) {
+        if let Some(f) = self.inflight.as_mut() {
+            if !f.holds() {
+                f.hold(self.fb.take());
+            }
         }
     }
 
@@ -294,7 +334,15 @@ impl Context {
     /// attribute calls and glBegin does this first, as Mesa flushes its vertex buffer.
     #[inline]
     pub fn flush_pending(&mut self) {
+        self.flush_pending_keep();
         self.settle_draws();
+    }
+
+    /// As [`Context::flush_pending`] but leaves the last draw drawing on the pool: for the
+    /// state calls that touch neither framebuffers nor texture images (see
+    /// [`Context::settle_draws`]).
+    #[inline]
+    pub fn flush_pending_keep(&mut self) {
         if let Some(mode) = self.immediate.pending.take() {
             if self.draw_pending_node(mode) {
                 return;

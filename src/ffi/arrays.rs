@@ -18,7 +18,7 @@ pub(crate) fn set_pointer(
     stride: GLsizei,
     ptr: *const c_void,
 ) {
-    with_ctx(|c| c.set_array_pointer(w, (size, ty, stride), ptr as usize))
+    super::with_ctx_keep(|c| c.set_array_pointer(w, (size, ty, stride), ptr as usize))
 }
 
 /// glVertexPointer.
@@ -63,7 +63,7 @@ pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GL
 }
 
 fn client_state(cap: GLenum, on: bool) {
-    with_ctx(|c| c.set_client_array(cap, on))
+    super::with_ctx_keep(|c| c.set_client_array(cap, on))
 }
 
 /// glEnableClientState.

@@ -12,7 +12,9 @@ use crate::context::state::Primitive;
 use crate::context::Context;
 
 /// Runs a draw call, or compiles it while a display list is being compiled (`compile`
-/// reads the arrays now); under GL_COMPILE_AND_EXECUTE it is drawn too.
+/// reads the arrays now); under GL_COMPILE_AND_EXECUTE it is drawn too. Run directly, it
+/// takes over the previous draw's batch still on the pool rather than waiting for it
+/// ([`Context::settle_draws`]).
 pub(crate) fn listable_draw(
     exec: impl FnOnce(&mut Context) -> GlResult<()>,
     compile: impl FnOnce(&mut Context),
@@ -20,8 +22,11 @@ pub(crate) fn listable_draw(
     with_ctx_raw(|c| match c.lists.compile_mode() {
         None => {
             c.outside_begin_end()?;
-            c.flush_pending();
-            exec(c)
+            c.flush_pending_keep();
+            c.unhold_draws();
+            let r = exec(c);
+            c.rehold_draws();
+            r
         }
         Some(execute) => {
             let inside = c.lists.compiling_inside_begin();

@@ -113,6 +113,17 @@ pub(crate) fn with_ctx<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) 
     })
 }
 
+/// As [`with_ctx`] for a state call that touches neither framebuffers nor texture images:
+/// the last draw may go on drawing on the pool ([`Context::settle_draws`]).
+#[inline]
+pub(crate) fn with_ctx_keep<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
+    with_ctx_raw(|c| {
+        c.outside_begin_end()?;
+        c.flush_pending_keep();
+        f(c)
+    })
+}
+
 /// As [`with_ctx`] but allowed between glBegin and glEnd: for OSMesa's own functions,
 /// which are not GL commands.
 #[inline]
@@ -159,7 +170,17 @@ pub(crate) fn with_ctx_list<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, false)
+    listable(f, false, false)
+}
+
+/// As [`with_ctx_list`] for a state command that touches neither framebuffers nor texture
+/// images: run now, it leaves the last draw drawing on the pool ([`Context::settle_draws`]).
+#[inline]
+pub(crate) fn with_ctx_list_keep<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    listable(f, false, true)
 }
 
 /// Whether the current context is compiling a display list (for the commands Mesa
@@ -175,12 +196,24 @@ pub(crate) fn with_ctx_list_anywhere<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, true)
+    listable(f, true, false)
 }
 
-/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`].
+/// As [`with_ctx_list_anywhere`] for glMaterial and glCallList(s), which leave the last
+/// draw drawing on the pool ([`with_ctx_list_keep`]; the commands a list runs settle it as
+/// they would run directly, and its draws take it over).
 #[inline]
-fn listable<F>(f: F, anywhere: bool)
+pub(crate) fn with_ctx_list_anywhere_keep<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    listable(f, true, true)
+}
+
+/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`]; with
+/// `keep`, run now, a draw on the pool is not waited for.
+#[inline]
+fn listable<F>(f: F, anywhere: bool, keep: bool)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
@@ -189,7 +222,11 @@ where
             if !anywhere {
                 c.outside_begin_end()?;
             }
-            c.flush_pending();
+            if keep {
+                c.flush_pending_keep();
+            } else {
+                c.flush_pending();
+            }
             f(c)
         }
         Some(execute) => {

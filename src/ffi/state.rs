@@ -5,7 +5,7 @@
 use super::enums::*;
 use super::families::c_fns;
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_list};
+use super::{gl_bool, with_ctx, with_ctx_list, with_ctx_list_keep};
 use crate::context::clamp01;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::{CompareFunc, Face, PixelStore, ShadeModel};
@@ -21,13 +21,13 @@ pub extern "C" fn glGetError() -> GLenum {
 /// glEnable.
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_ctx_list(move |c| c.enable(cap, true))
+    with_ctx_list_keep(move |c| c.enable(cap, true))
 }
 
 /// glDisable.
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_ctx_list(move |c| c.enable(cap, false))
+    with_ctx_list_keep(move |c| c.enable(cap, false))
 }
 
 /// glIsEnabled (also answers the client array states).
@@ -37,12 +37,12 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
 }
 
 /// Stores `value` (or raises its error when the command runs) in the state `field`
-/// selects, as a listable command.
+/// selects, as a listable command (plain state: a draw on the pool goes on).
 fn set_state<T: Clone + Send + Sync + 'static>(
     value: GlResult<T>,
     field: fn(&mut Context) -> &mut T,
 ) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         *field(c) = value.clone()?;
         Ok(())
     })

@@ -10,11 +10,14 @@
 //! remaining bands itself rather than waiting idle. Each band is claimed by one thread,
 //! which draws the band's triangles in primitive order, and batches are drawn one after
 //! the other, so each pixel sees the same fragments in the same order as single-threaded
-//! rendering: the images are byte-identical with threads on and off. The last batch of a
-//! draw is drawn before the draw returns, on the calling thread alone when it is little
-//! work; only a chunk of a long glBegin/glEnd batch returns while the pool draws its last
-//! batch ([`Rasterizer::flush_detached`]), holding the framebuffer until the context's
-//! next GL call other than a per-vertex one settles it. The batches live in a per-thread
+//! rendering: the images are byte-identical with threads on and off. A draw's last batch,
+//! when it is enough work for the pool, is left drawing there when the draw returns
+//! ([`Rasterizer::flush_detached`]), holding the framebuffer and copies of the draw's
+//! texture-unit plans: the program's next state calls (those the context knows touch
+//! neither framebuffers nor texture images) and the next draw's geometry run meanwhile,
+//! and the next draw into the same framebuffer takes the batch over as its own batch in
+//! flight ([`Rasterizer::adopt`]); any other GL call settles it first. A small last batch
+//! is drawn on the calling thread alone before the draw returns. The batches live in a per-thread
 //! pool, so drawing allocates little once they have grown (a band list per batch).
 //! Waking a sleeping pool thread costs a good part of a millisecond here, so a pool task
 //! polls for the next batch for a while after drawing one and the draw's thread polls
@@ -175,8 +178,9 @@ struct Work {
     /// The next unclaimed band (claimed by every thread, so alone on its line).
     next: Padded<AtomicUsize>,
     plan: FragPlan,
-    units: *const UnitPlan<'static>,
-    n_units: usize,
+    /// The draw's texture units (a copy of its plans: the texture images they borrow stay
+    /// alive and unchanged until the work is taken back, see `Work`'s `Sync`).
+    units: Vec<UnitPlan<'static>>,
     region: [i64; 4],
     nvary: usize,
     /// The pixel counters of the drawn bands.
@@ -188,10 +192,13 @@ struct BandCell<'f>(UnsafeCell<Target<'f>>);
 
 // SAFETY: a `Work` is shared between the draw's thread and one pool job. Each band is
 // reached only by the thread that claimed its index from `next` (`fetch_add` hands every
-// index out once); the batch is only read; the framebuffer and units behind the band
-// targets and `units` stay borrowed by the `Rasterizer` that made the work, which takes it
-// back (`wait`, called by every method that touches the framebuffer and by `Drop`) only
-// after the job has finished. `UnitPlan` is `Sync` and `Framebuffer` `Send` (checked in
+// index out once); the batch is only read; the framebuffer behind the band targets and
+// the texture images `units` borrow stay borrowed by the `Rasterizer` that made the work,
+// which takes it back (`wait`, called by every method that touches the framebuffer and by
+// `Drop`) only after the job has finished, or, for a batch left in flight
+// (`flush_detached`), are kept alive and unchanged by the context until it settles the
+// batch or the next draw into the same framebuffer takes it over (`adopt`): see
+// `Context::settle_draws`. `UnitPlan` is `Sync` and `Framebuffer` `Send` (checked in
 // `launch`).
 unsafe impl Sync for Work {}
 // SAFETY: as for `Sync` above: the raw parts are only used under that protocol.
@@ -200,8 +207,7 @@ unsafe impl Send for Work {}
 impl Work {
     /// Draws unclaimed bands until none is left, then adds their counters to the work's.
     fn help(&self) {
-        // SAFETY: `units`/`n_units` come from a live slice (see `Work`'s `Sync`).
-        let units = unsafe { std::slice::from_raw_parts(self.units, self.n_units) };
+        let units = &self.units[..];
         let mut s = Stats::default();
         loop {
             let b = self.next.fetch_add(1, Ordering::Relaxed);
@@ -481,24 +487,37 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.batch.clear();
     }
 
-    /// As [`Rasterizer::flush`], except that a last batch big enough for the pool, of a
-    /// draw without textures, is left drawing there and returned: the draw's thread goes
-    /// on while the pool finishes it (a streamed glBegin/glEnd chunk returns to take the
-    /// next chunk's vertices). Nothing else is pending once this returns.
+    /// As [`Rasterizer::flush`], except that a last batch big enough for the pool is left
+    /// drawing there and returned: the draw's thread goes on while the pool finishes it
+    /// (to the program's next state calls and the next draw's geometry; a streamed
+    /// glBegin/glEnd chunk returns to take the next chunk's vertices). Nothing else is
+    /// pending once this returns.
     ///
     /// # Safety
-    /// Until the returned [`InFlight`] is settled or dropped, the pool writes the
-    /// framebuffer's bands: once this rasterizer is dropped, the framebuffer must go into
-    /// [`InFlight::hold`] before anything else touches it, and no other rasterizer may
-    /// start on this thread meanwhile (it would hand the same job slot a second batch).
+    /// Until the returned [`InFlight`] is settled, dropped or taken over by the next
+    /// draw into the same framebuffer ([`Rasterizer::adopt`]), the pool writes the
+    /// framebuffer's bands and reads the texture images of this draw's units: once this
+    /// rasterizer is dropped, the framebuffer must go into [`InFlight::hold`] before
+    /// anything else touches it, those images must stay alive and unchanged, and no
+    /// other rasterizer may start on this thread meanwhile but one that adopts it (it
+    /// would hand the same job slot a second batch).
     pub unsafe fn flush_detached(&mut self, stats: &mut Stats) -> Option<InFlight> {
         self.release(stats);
+        if self.threads && self.batch.heads.is_empty() && self.inflight.is_some() {
+            // The last batch went to the pool when it filled: leave it there.
+            return self.detach(stats);
+        }
         self.wait(stats);
-        if !self.threads || !self.units.is_empty() || self.batch.work < PARALLEL_WORK {
+        if !self.threads || self.batch.heads.is_empty() || self.batch.work < self.tune.detach_work {
             self.flush(stats);
             return None;
         }
         self.launch();
+        self.detach(stats)
+    }
+
+    /// The batch in flight, handed to the caller ([`Rasterizer::flush_detached`]).
+    fn detach(&mut self, stats: &mut Stats) -> Option<InFlight> {
         let work = self.inflight.take()?;
         stats.draws_detached += 1;
         Some(InFlight {
@@ -507,6 +526,30 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             spin: self.tune.pool_spin,
             fb: None,
         })
+    }
+
+    /// Takes over `f`, the last batch of the previous draw into this rasterizer's
+    /// framebuffer, still drawn by the pool ([`Rasterizer::flush_detached`]): it becomes
+    /// this draw's batch in flight, taken back (and helped) when this draw hands over its
+    /// first batch or flushes, so that this draw's geometry runs while the pool draws it.
+    /// Batches are still drawn one after the other, so each pixel sees its fragments in
+    /// primitive order. Called right after [`Rasterizer::new`], `f`'s framebuffer taken
+    /// back out of it ([`InFlight::unhold`]) and passed to `new`.
+    pub fn adopt(&mut self, mut f: InFlight, stats: &mut Stats) {
+        debug_assert!(self.inflight.is_none() && f.fb.is_none());
+        if !self.threads || !Arc::ptr_eq(&self.job, &f.job) {
+            // A draw without threads draws small triangles at once, and another job slot
+            // is not this thread's (neither happens: threads are on for every draw of a
+            // program thread, and contexts settle their draws before another one draws on
+            // the thread): wait for it instead.
+            f.settle(stats);
+            return;
+        }
+        // The batch in flight is this thread's other batch: the spare left is empty.
+        self.inflight = f.work.take();
+        if self.inflight.is_some() {
+            self.spare = None;
+        }
     }
 
     /// Takes the batch in flight back once it is drawn, helping to draw its remaining
@@ -541,6 +584,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         // SAFETY: the bands borrow `self.fb`, which this rasterizer keeps borrowed and does
         // not touch until `wait` has taken the work back from the job (see `Work`).
         let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
+        // SAFETY: only the lifetime changes; the images stay alive and unchanged until the
+        // work is taken back (see `Work`'s `Sync`).
+        let units: Vec<UnitPlan<'static>> = unsafe { std::mem::transmute(self.units.to_vec()) };
         let work = Arc::new(Work {
             batch,
             bands: bands
@@ -549,8 +595,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .collect(),
             next: Padded(AtomicUsize::new(0)),
             plan: *self.plan,
-            units: self.units.as_ptr().cast(),
-            n_units: self.units.len(),
+            units,
             region: self.region,
             nvary: self.nvary,
             stats: Mutex::new(Stats::default()),
@@ -603,6 +648,17 @@ impl InFlight {
     /// that returned this drew into (see [`Rasterizer::flush_detached`]).
     pub fn hold(&mut self, fb: Option<Framebuffer>) {
         self.fb = fb;
+    }
+
+    /// Gives back the framebuffer [`InFlight::hold`] kept (the batch still draws into it):
+    /// for the next draw into it, which takes the batch over ([`Rasterizer::adopt`]).
+    pub fn unhold(&mut self) -> Option<Framebuffer> {
+        self.fb.take()
+    }
+
+    /// Whether [`InFlight::hold`] keeps a framebuffer.
+    pub fn holds(&self) -> bool {
+        self.fb.is_some()
     }
 
     /// Waits until the batch is drawn, adds its counters to `stats`, gives its buffers

@@ -66,6 +66,11 @@ fn shader_key(ctx: &Context) -> u32 {
     k
 }
 
+/// Whether glBitmap calls wait in the cache ([`flush`] draws them).
+pub fn pending(ctx: &Context) -> bool {
+    ctx.bitmap_cache.pending.is_some()
+}
+
 /// Draws the pending bitmaps, if any.
 pub fn flush(ctx: &mut Context) {
     let Some(c) = ctx.bitmap_cache.pending.take() else {
