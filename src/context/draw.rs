@@ -83,7 +83,7 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
         draw_pass(ctx, prims, detach, None);
         return;
     }
-    draw_multisample(ctx, prims, detach);
+    draw_multisample(ctx, prims);
 }
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
@@ -102,11 +102,10 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
 /// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
 /// same tests pass, in the same order), its own depth and stencil put back afterwards;
 /// plane 0 is drawn last, normally.
-fn draw_multisample<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    prims: Prims<'_, S>,
-    detach: bool,
-) {
+///
+/// Its last batch is not left on the pool (measured slower for MuJoCo's 4x frames, stop
+/// 58 in docs/performance.md); a batch in flight from before is taken over.
+fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>) {
     let caps = &ctx.state.caps;
     if !caps.get(Cap::Multisample) {
         ctx.settle_draws();
@@ -150,7 +149,7 @@ fn draw_multisample<S: VertexSource + ?Sized>(
         mask: mask as u8,
         alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
     };
-    if draw_pass(ctx, prims, detach, Some(pass)) {
+    if draw_pass(ctx, prims, false, Some(pass)) {
         return;
     }
     ctx.settle_draws();
