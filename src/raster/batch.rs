@@ -177,6 +177,9 @@ struct Work {
     bands: Vec<BandCell<'static>>,
     /// The next unclaimed band (claimed by every thread, so alone on its line).
     next: Padded<AtomicUsize>,
+    /// Bands drawn, their counters added to `stats` ([`Work::drawn`]; polled by the draw
+    /// thread, so alone on its line too).
+    done: Padded<AtomicUsize>,
     plan: FragPlan,
     /// The draw's texture units (a copy of its plans: the texture images they borrow stay
     /// alive and unchanged until the work is taken back, see `Work`'s `Sync`).
@@ -205,10 +208,13 @@ unsafe impl Sync for Work {}
 unsafe impl Send for Work {}
 
 impl Work {
-    /// Draws unclaimed bands until none is left, then adds their counters to the work's.
+    /// Draws unclaimed bands until none is left, then adds their counters to the work's
+    /// and counts them drawn (`done`): after that this call touches neither the bands nor
+    /// the counters.
     fn help(&self) {
         let units = &self.units[..];
         let mut s = Stats::default();
+        let mut drawn = 0;
         loop {
             let b = self.next.fetch_add(1, Ordering::Relaxed);
             let Some(cell) = self.bands.get(b) else { break };
@@ -217,11 +223,36 @@ impl Work {
             let bin = &self.batch.bins[b];
             let d = &mut Draw::new(self.region, &self.plan, units, band, &mut s);
             draw_bin(&self.batch, bin, self.nvary, d);
+            drawn += 1;
         }
-        self.stats
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .add_pixels(&s);
+        if drawn > 0 {
+            self.stats
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .add_pixels(&s);
+            self.done.fetch_add(drawn, Ordering::Release);
+        }
+    }
+
+    /// Whether every band is drawn and counted: the framebuffer and the counters are then
+    /// the draw thread's again, whether or not the pool task has let go of its handle.
+    fn drawn(&self) -> bool {
+        self.done.load(Ordering::Acquire) >= self.bands.len()
+    }
+
+    /// Waits until every band is drawn, drawing unclaimed ones on this thread first
+    /// (`help`, unless `SOFTGL_POOL_HELP=0`): polls the count for `spin`, then sleeps
+    /// until `job`'s tasks have reported done (this one's among them).
+    fn finish(&self, job: &Job, tune: &crate::tuning::Tuning) {
+        if tune.pool_help {
+            self.help();
+        }
+        if !self.drawn() {
+            job::poll(tune.pool_spin, || self.drawn());
+            if !self.drawn() {
+                job.wait_done(Duration::ZERO);
+            }
+        }
     }
 }
 
@@ -523,7 +554,6 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         Some(InFlight {
             work: Some(work),
             job: Arc::clone(&self.job),
-            spin: self.tune.pool_spin,
             fb: None,
         })
     }
@@ -558,13 +588,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         let Some(work) = self.inflight.as_ref() else {
             return;
         };
-        if self.tune.pool_help {
-            work.help();
-        }
-        self.job.wait_done(self.tune.pool_spin);
+        work.finish(&self.job, self.tune);
         // Taken only now, so that a panic above still leaves `Drop` waiting for the job.
-        // The job dropped its handle before it reported done.
-        let mut b = reclaim(self.inflight.take(), stats);
+        let mut b = reclaim(self.inflight.take(), &self.job, stats);
         b.bins.resize_with(self.batch.bins.len(), Vec::new);
         self.spare = Some(b);
     }
@@ -594,6 +620,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .map(|b| BandCell(UnsafeCell::new(b)))
                 .collect(),
             next: Padded(AtomicUsize::new(0)),
+            done: Padded(AtomicUsize::new(0)),
             plan: *self.plan,
             units,
             region: self.region,
@@ -613,15 +640,22 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     }
 }
 
-/// Takes back a batch whose job has reported done (the job dropped its handle before
-/// that): adds its counters to `stats` and returns its buffers, cleared.
-fn reclaim(work: Option<Arc<Work>>, stats: &mut Stats) -> Batch {
-    let mut b = match work.and_then(Arc::into_inner) {
-        Some(w) => {
-            stats.add_pixels(&w.stats.into_inner().unwrap_or_else(|e| e.into_inner()));
-            w.batch
+/// Takes back a batch whose bands are all drawn ([`Work::drawn`]): adds its counters to
+/// `stats` and returns its buffers, cleared. When the pool task still holds its handle
+/// (it is about to let go: it touches nothing of the batch any more), the buffers are the
+/// ones the pool task let go of last time (`Job::returned`), or new ones.
+fn reclaim(work: Option<Arc<Work>>, job: &Job, stats: &mut Stats) -> Batch {
+    let Some(work) = work else {
+        return Batch::default();
+    };
+    let s = std::mem::take(&mut *work.stats.lock().unwrap_or_else(|e| e.into_inner()));
+    stats.add_pixels(&s);
+    let mut b = match Arc::try_unwrap(work) {
+        Ok(w) => w.batch,
+        Err(w) => {
+            drop(w);
+            job.returned().unwrap_or_default()
         }
-        None => Batch::default(),
     };
     b.clear();
     b
@@ -636,8 +670,6 @@ pub struct InFlight {
     work: Option<Arc<Work>>,
     /// The job slot it was handed to.
     job: Arc<Job>,
-    /// How long to poll before sleeping ([`Tuning::wait_spin`]).
-    spin: Duration,
     /// The framebuffer the batch draws into, held until it is drawn. (Moving a
     /// `Framebuffer` leaves its buffers, which the pool writes, where they are.)
     fb: Option<Framebuffer>,
@@ -664,8 +696,10 @@ impl InFlight {
     /// Waits until the batch is drawn, adds its counters to `stats`, gives its buffers
     /// back to this thread's pool for the next draw, and returns the framebuffer.
     pub fn settle(mut self, stats: &mut Stats) -> Option<Framebuffer> {
-        self.job.wait_done(self.spin);
-        let b = reclaim(self.work.take(), stats);
+        if let Some(w) = &self.work {
+            w.finish(&self.job, crate::tuning::tuning());
+        }
+        let b = reclaim(self.work.take(), &self.job, stats);
         // Only while no rasterizer has the pool out (it is back between draws): the batch
         // fills the slot the draw left empty.
         POOL.with(|p| {
@@ -682,8 +716,8 @@ impl InFlight {
 impl Drop for InFlight {
     fn drop(&mut self) {
         // Before `fb` is dropped.
-        if self.work.is_some() {
-            self.job.wait_done(self.spin);
+        if let Some(w) = &self.work {
+            w.finish(&self.job, crate::tuning::tuning());
         }
     }
 }
