@@ -27,6 +27,7 @@
 //! arguments do not describe an image (so no extent can be computed) skips them and fails
 //! on its arguments, as in Mesa.
 
+use super::pack::read::{read_pixels, read_span};
 use super::state::PixelStore;
 use super::{Context, GlError, GlResult};
 use crate::gl::enums::*;
@@ -157,5 +158,99 @@ impl Context {
                 dst.copy_from_slice(&s.bytes);
             }
         }
+    }
+}
+
+impl Context {
+    /// Runs a packing command's output step `write` on the memory `dst` names: the
+    /// client's, or with a pack buffer bound the staged `span` bytes at offset `dst` (after
+    /// the checks; put back when `write` succeeds). `ty` as for [`Self::pack_stage`].
+    ///
+    /// # Safety
+    /// Without a pack buffer, `dst` must be null or writable for what `write` writes.
+    unsafe fn pack_with(
+        &mut self,
+        dst: *mut libc::c_void,
+        ty: Option<GLenum>,
+        span: usize,
+        write: impl FnOnce(&mut Context, *mut u8) -> GlResult<()>,
+    ) -> GlResult<()> {
+        let Some(mut staged) = self.pack_stage(dst, ty, span)? else {
+            return write(self, dst as *mut u8);
+        };
+        write(self, staged.ptr())?;
+        self.pack_commit(staged);
+        Ok(())
+    }
+
+    /// glReadPixels into client memory or the pack buffer (see the module doc).
+    ///
+    /// # Safety
+    /// Without a pack buffer, `pixels` must be null or writable for the packed image.
+    pub(crate) unsafe fn read_pixels_to(
+        &mut self,
+        (x, y, w, h): (i32, i32, i32, i32),
+        (format, ty): (GLenum, GLenum),
+        pixels: *mut libc::c_void,
+    ) -> GlResult<()> {
+        // Arguments that describe no image give an empty range; read_pixels fails on them.
+        let span = match self.state.pack.buffer {
+            0 => 0,
+            _ => read_span(&self.state.pack, (format, ty), w, h),
+        };
+        // SAFETY: forwarded caller contract, or the staged range of `span` bytes.
+        unsafe {
+            self.pack_with(pixels, Some(ty), span, |c, out| {
+                read_pixels(c, x, y, w, h, format, ty, out)
+            })
+        }
+    }
+
+    /// glGetPolygonStipple into client memory or the pack buffer (128 bytes; a null
+    /// client pointer is ignored).
+    ///
+    /// # Safety
+    /// Without a pack buffer, `mask` must be null or writable for 128 bytes.
+    pub(crate) unsafe fn get_polygon_stipple_to(&mut self, mask: *mut u8) -> GlResult<()> {
+        let rows = self.polygon_stipple_rows();
+        // SAFETY: forwarded caller contract, or the staged range of 128 bytes.
+        unsafe {
+            self.pack_with(mask.cast(), None, 128, |_, out| {
+                write_to(rows.as_flattened(), out);
+                Ok(())
+            })
+        }
+    }
+
+    /// glGetCompressedTexImage into client memory or the pack buffer (a null client
+    /// pointer is ignored).
+    ///
+    /// # Safety
+    /// Without a pack buffer, `img` must be null or writable for the image's size.
+    pub(crate) unsafe fn get_compressed_tex_image_to(
+        &mut self,
+        target: GLenum,
+        level: i32,
+        img: *mut libc::c_void,
+    ) -> GlResult<()> {
+        let blocks = self.compressed_blocks(target, level)?.to_vec();
+        // SAFETY: forwarded caller contract, or the staged range of the blocks' size.
+        unsafe {
+            self.pack_with(img, None, blocks.len(), |_, out| {
+                write_to(&blocks, out);
+                Ok(())
+            })
+        }
+    }
+}
+
+/// Copies `bytes` to `dst` (nothing when `dst` is null).
+///
+/// # Safety
+/// `dst`, when not null, must be writable for `bytes.len()` bytes.
+unsafe fn write_to(bytes: &[u8], dst: *mut u8) {
+    if !dst.is_null() {
+        // SAFETY: the caller's contract.
+        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), dst, bytes.len()) };
     }
 }

@@ -11,10 +11,56 @@ use super::{with_ctx, with_ctx_list};
 use crate::context::bitmap_read::bitmap_bits;
 use crate::context::pack::draw_image::Layout;
 use crate::context::pixel_transfer::{is_index_map, map_index};
+use crate::pixels::image::Image;
 
 /// Reads the current unpack state from the context (default state without one).
 fn unpack_state() -> crate::context::state::PixelStore {
     with_ctx(|c| Ok(c.state.unpack))
+}
+
+/// A glDrawPixels image decoded at the call from client memory, or from the unpack buffer
+/// at offset `pixels` ([`unpack_buffer_bytes`]); `Some(None)` when the arguments describe
+/// no image (the command fails on them), `None` when the buffer's checks failed (the error
+/// is recorded; the command must do nothing).
+///
+/// # Safety
+/// Without an unpack buffer, `pixels` must be null or readable for the image.
+unsafe fn decode_image(
+    layout: Option<&Layout>,
+    (width, height): (GLsizei, GLsizei),
+    type_: GLenum,
+    pixels: *const GLvoid,
+) -> Option<Option<Image>> {
+    let (Some(l), Ok(w), Ok(h)) = (layout, usize::try_from(width), usize::try_from(height)) else {
+        return Some(None);
+    };
+    let ps = unpack_state();
+    let copy = unpack_buffer_bytes(pixels, Some(type_), l.span(&ps, w, h))?;
+    let src = copy.as_ref().map_or(pixels as *const u8, |b| b.as_ptr());
+    // SAFETY: GL's contract: `pixels` holds the image the unpack state describes (or `src`
+    // is the unpack buffer's copy of it).
+    Some(unsafe { l.decode(&ps, w, h, src) })
+}
+
+/// A glBitmap bitmap read at the call from client memory or from the unpack buffer; `None`
+/// when the buffer's checks failed (the error is recorded; the command must do nothing).
+///
+/// # Safety
+/// Without an unpack buffer, `bitmap` must be null or readable for the bitmap.
+unsafe fn decode_bitmap(
+    (width, height): (GLsizei, GLsizei),
+    bitmap: *const GLubyte,
+) -> Option<Vec<bool>> {
+    let ps = unpack_state();
+    let span = match (usize::try_from(width), usize::try_from(height)) {
+        (Ok(w), Ok(h)) => Layout::new(GL_COLOR_INDEX, GL_BITMAP).map_or(0, |l| l.span(&ps, w, h)),
+        _ => 0,
+    };
+    let copy = unpack_buffer_bytes(bitmap as *const GLvoid, None, span)?;
+    let src = copy.as_ref().map_or(bitmap, |b| b.as_ptr());
+    // SAFETY: GL's contract: `bitmap` holds the bitmap the unpack state describes (or `src`
+    // is the unpack buffer's copy of it).
+    Some(unsafe { bitmap_bits(&ps, (width, height), src) })
 }
 
 /// glDrawPixels.
@@ -30,19 +76,10 @@ pub unsafe extern "C" fn glDrawPixels(
     pixels: *const GLvoid,
 ) {
     let layout = Layout::new(format, type_);
-    let ps = unpack_state();
-    let img = match (&layout, width >= 0 && height >= 0) {
-        (Ok(l), true) => {
-            let (w, h) = (width as usize, height as usize);
-            let Some(copy) = unpack_buffer_bytes(pixels, Some(type_), l.span(&ps, w, h)) else {
-                return;
-            };
-            let src = copy.as_ref().map_or(pixels as *const u8, |b| b.as_ptr());
-            // SAFETY: GL's contract: `pixels` holds the image the unpack state describes
-            // (or `src` is the unpack buffer's copy of it).
-            unsafe { l.decode(&ps, w, h, src) }
-        }
-        _ => None,
+    // SAFETY: forwarded caller contract.
+    let Some(img) = (unsafe { decode_image(layout.as_ref().ok(), (width, height), type_, pixels) })
+    else {
+        return;
     };
     with_ctx_list(move |c| c.draw_pixel_rect((width, height), layout, img.as_ref()))
 }
@@ -67,19 +104,10 @@ pub unsafe extern "C" fn glBitmap(
     ymove: GLfloat,
     bitmap_: *const GLubyte,
 ) {
-    let ps = unpack_state();
-    let span = match (width, height) {
-        (w @ 0.., h @ 0..) => Layout::new(GL_COLOR_INDEX, GL_BITMAP)
-            .map_or(0, |l| l.span(&ps, w as usize, h as usize)),
-        _ => 0,
-    };
-    let Some(copy) = unpack_buffer_bytes(bitmap_ as *const GLvoid, None, span) else {
+    // SAFETY: forwarded caller contract.
+    let Some(bits) = (unsafe { decode_bitmap((width, height), bitmap_) }) else {
         return;
     };
-    let src = copy.as_ref().map_or(bitmap_, |b| b.as_ptr());
-    // SAFETY: GL's contract: `bitmap_` holds the bitmap the unpack state describes (or
-    // `src` is the unpack buffer's copy of it).
-    let bits = unsafe { bitmap_bits(&ps, (width, height), src) };
     let (orig, mv) = ([xorig, yorig], [xmove, ymove]);
     with_ctx_list(move |c| c.draw_bitmap((width, height), orig, mv, &bits))
 }

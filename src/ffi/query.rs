@@ -8,7 +8,6 @@ use super::types::*;
 use super::with_ctx;
 use crate::context::get::{get, Value};
 use crate::context::get_extra::gl_string;
-use crate::context::pack::read::{read_pixels, read_span};
 use libc::c_void;
 
 /// Writes the components of `pname`'s value, as `conv` lists them, through `out`.
@@ -69,21 +68,7 @@ pub unsafe extern "C" fn glReadPixels(
     type_: GLenum,
     pixels: *mut GLvoid,
 ) {
-    with_ctx(|c| {
-        let span = read_span(&c.state.pack, (format, type_), width, height);
-        // A pack buffer takes the image at offset `pixels` instead of the client (arguments
-        // that describe no image fail in read_pixels, on an empty range).
-        match c.pack_stage(pixels, Some(type_), span)? {
-            None => {
-                // SAFETY: the program promises room for the packed image, as GL requires.
-                unsafe { read_pixels(c, x, y, width, height, format, type_, pixels as *mut u8) }
-            }
-            Some(mut staged) => {
-                // SAFETY: the staged range holds the `span` bytes of the packed image.
-                unsafe { read_pixels(c, x, y, width, height, format, type_, staged.ptr())? };
-                c.pack_commit(staged);
-                Ok(())
-            }
-        }
-    })
+    // SAFETY: the program promises room for the packed image, as GL requires (or a pack
+    // buffer takes it).
+    with_ctx(|c| unsafe { c.read_pixels_to((x, y, width, height), (format, type_), pixels) })
 }

@@ -84,21 +84,9 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 /// `mask` must be NULL or writable for 128 bytes.
 #[no_mangle]
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
-    let rows = with_ctx(|c| {
-        let rows = c.polygon_stipple_rows();
-        // A pack buffer takes the 128 bytes at offset `mask` instead of the client.
-        let Some(mut staged) = c.pack_stage(mask as *mut GLvoid, None, 128)? else {
-            return Ok(Some(rows));
-        };
-        // SAFETY: the staged range holds the 128 bytes checked above.
-        unsafe { staged.ptr().cast::<[[u8; 4]; 32]>().write_unaligned(rows) };
-        c.pack_commit(staged);
-        Ok(None)
-    });
-    if let (Some(rows), false) = (rows, mask.is_null()) {
-        // SAFETY: the GL contract makes `mask` writable for 128 bytes; checked for NULL.
-        unsafe { mask.cast::<[[u8; 4]; 32]>().write_unaligned(rows) };
-    }
+    // SAFETY: the GL contract makes a non-NULL `mask` writable for 128 bytes (or a pack
+    // buffer takes them).
+    with_ctx(|c| unsafe { c.get_polygon_stipple_to(mask) })
 }
 
 /// glEdgeFlag.

@@ -92,28 +92,7 @@ c_fns! {
 /// `img` must be writable for GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes of the image.
 #[no_mangle]
 pub unsafe extern "C" fn glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut GLvoid) {
-    super::with_ctx(|c| {
-        let blocks = c.compressed_blocks(target, level)?;
-        // A pack buffer takes the blocks at offset `img` instead of the client.
-        let Some(mut staged) = c.pack_stage(img, None, blocks.len())? else {
-            // SAFETY: GL's contract: `img` holds GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes.
-            unsafe { copy_to(blocks, img as *mut u8) };
-            return Ok(());
-        };
-        // SAFETY: the staged range holds `blocks.len()` bytes (or is null when empty).
-        unsafe { copy_to(blocks, staged.ptr()) };
-        c.pack_commit(staged);
-        Ok(())
-    })
-}
-
-/// Copies `blocks` to `dst` (nothing when `dst` is null).
-///
-/// # Safety
-/// `dst`, when not null, must be writable for `blocks.len()` bytes.
-unsafe fn copy_to(blocks: &[u8], dst: *mut u8) {
-    if !dst.is_null() {
-        // SAFETY: the caller's contract.
-        unsafe { std::ptr::copy_nonoverlapping(blocks.as_ptr(), dst, blocks.len()) };
-    }
+    // SAFETY: GL's contract: `img` holds GL_TEXTURE_COMPRESSED_IMAGE_SIZE bytes (or a pack
+    // buffer takes them).
+    super::with_ctx(|c| unsafe { c.get_compressed_tex_image_to(target, level, img) })
 }
