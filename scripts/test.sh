@@ -27,21 +27,25 @@ order=("$best")
 for level in "${levels[@]}"; do
   [ "$level" != "$best" ] && order+=("$level")
 done
-# Every integration test runs at the default level, and all but the GLSL front end's at
-# `scalar`; the levels between run the tests that draw through the dispatched paths and
-# compare pixels with a reference (the API, GLU, GLUT and robustness tests do not depend on
-# the level, and would add minutes).
+# Every integration test runs at the default level. The other levels run the tests that
+# draw through the dispatched paths and check pixels against a reference or an exact
+# count (the C scenes against OSMesa, lighting, anisotropic filtering, rasterisation
+# properties) and the 256 KiB-stack frame; `scalar`, the fallback of every path, also runs
+# the robustness suites. The API, header, layering, GLU, GLUT, GLSL front-end and
+# disassembly tests do not depend on the level, and would add minutes.
+# (`--workspace` everywhere: the same package set, so the same features and one build.)
+per_level=(--test osmesa_compare --test lighting_osmesa --test aniso_truth --test prop_raster
+  --test small_stack)
 for level in "${order[@]}"; do
   echo "test.sh: [${SECONDS}s] integration tests with SOFTGL_ISA=$level"
   if [ "$level" = "$best" ]; then
     SOFTGL_ISA=$level cargo test --release --workspace --test '*' --examples
   elif [ "$level" = scalar ]; then
-    # The GLSL front end (glsl/) draws nothing: its tests run once, above.
-    SOFTGL_ISA=$level cargo test --release --workspace --exclude softgl-glsl --test '*' \
-      --examples
+    SOFTGL_ISA=$level cargo test --release --workspace "${per_level[@]}" --test robust_api \
+      --test robust_fuzz --test robust_regress --test robust_stress --test robust_threads \
+      --test program_draw --test feedback --test shader_mesa
   else
-    SOFTGL_ISA=$level cargo test --release --workspace --test osmesa_compare \
-      --test lighting_osmesa --test aniso_truth --test prop_raster
+    SOFTGL_ISA=$level cargo test --release --workspace "${per_level[@]}"
   fi
   mkdir -p "$outs/$level"
   cp target/ctests/out/*.out "$outs/$level/"
@@ -54,13 +58,12 @@ bash scripts/isa-compare.sh "$outs" "${levels[@]}"
 # its pixels within 2/255 of llvmpipe's. (Frame times are printed, never judged here.)
 echo "test.sh: [${SECONDS}s] MuJoCo through the drop-in"
 bash scripts/mujoco.sh --sizes 640x480 --samples 0,4 --frames 1 --min-within 99.5
-cargo test --release --workspace --doc
 
 # The libraries' own unit tests with debug assertions and overflow checks (Cargo.toml's
-# `unit` profile), once per level. GLUT's unit tests link softgl's rlib (a dev-dependency);
-# in the `unit` profile that would compile the library a second time (as a plain rlib
-# beside its test harness, about half of this step's 7 minutes), so they run once on the
-# release rlib built above.
+# `unit` profile, unoptimised), once per level. GLUT's unit tests link softgl's rlib (a
+# dev-dependency); in the `unit` profile that would compile the library a second time (as
+# a plain rlib beside its test harness), so they run once on the release rlib built above.
+# (The crates have no doctests, so `cargo test --doc` is not run.)
 cargo test --release -p softglut --lib
 for level in "${levels[@]}"; do
   echo "test.sh: [${SECONDS}s] unit tests with SOFTGL_ISA=$level"

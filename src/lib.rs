@@ -62,12 +62,5 @@ pub mod stats;
 #[cfg(test)]
 mod test_rng;
 
-/// The library by its own name, so that test files shared with `tests/` compile here too.
-#[cfg(test)]
-extern crate self as softgl;
-/// The 256 KiB-stack test in the unit profile (unoptimised): `tests/small_stack/scene.rs`.
-#[cfg(test)]
-#[path = "../tests/small_stack/scene.rs"]
-mod small_stack;
 pub mod texture;
 pub mod tuning;

@@ -41,7 +41,7 @@ const PIPELINE: &[&str] = &[
 const LEAVES: &[&str] = &["pipe", "gl", "simd", "cpu", "stats", "tuning", "memory"];
 
 /// Modules that are neither code of the library nor a layer (test helpers).
-const IGNORED: &[&str] = &["lib", "test_rng", "small_stack", "softgl"];
+const IGNORED: &[&str] = &["lib", "test_rng"];
 
 /// What module `from` may not name.
 fn forbidden(from: &str) -> Vec<&'static str> {

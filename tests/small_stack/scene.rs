@@ -1,8 +1,9 @@
 //! A frame that uses every kind of primitive and state, drawn through the C entry points
 //! from a thread with a 256 KiB stack: a user's worker thread may be that small, so no
-//! path of the library may need more. `tests/small_stack.rs` (the release library) and
-//! the library's unit tests (`src/lib.rs`, the unoptimised `unit` profile) both include
-//! this file. Paths are `softgl::…` (the library names itself so under `cfg(test)`).
+//! path of the library may need more. `tests/small_stack.rs` runs it on the release
+//! library, as it ships, at every instruction-set level (`scripts/test.sh`). It is not a
+//! unit test: the `unit` profile is unoptimised, and at opt-level 0 LLVM gives every
+//! inlined call its own stack slots (the AVX2 texture walk's frame is 0.5 MB there).
 
 use softgl::ffi::accum::*;
 use softgl::ffi::arrays::*;
