@@ -1,6 +1,7 @@
-//! Draws with a current program (issue 43): a fragment shader without a vertex shader
-//! colours filled triangles through the engine; what the engine does not run (a vertex
-//! shader, texture sampling, lines and points) draws nothing and is counted in
+//! Draws with a current program (issue 43): a fragment shader colours filled triangles
+//! through the engine, a vertex shader replaces the vertex stage; what the engine does
+//! not run (a vertex shader under user clip planes, texture sampling, lines and points
+//! with a fragment shader) draws nothing and is counted in
 //! `program_draws_refused`, and fixed function comes back with glUseProgram(0).
 
 use softgl::ffi::enums::*;
@@ -133,15 +134,25 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
         "a refused line draws nothing"
     );
 
-    // A vertex shader: nothing drawn, counted.
+    // A vertex shader draws: its position, its colour.
     let pv = program(
-        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
+        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color.bgra; }"),
         "void main() { gl_FragColor = gl_Color; }",
     );
     glUseProgram(pv);
+    glColor4f(1.0, 0.0, 0.0, 1.0);
     glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s2b = stats();
+    assert_eq!(s2b.program_draws - s2.program_draws, 1);
+    assert_eq!(c.pixel(8, 8), [0, 0, 255, 255]);
+
+    // With a user clip plane (gl_ClipVertex is not applied): nothing drawn, counted.
+    c.clear();
+    glEnable(0x3000);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    glDisable(0x3000);
     let s3 = stats();
-    assert_eq!(s3.program_draws_refused - s2.program_draws_refused, 1);
+    assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
     // Texture sampling does not lower: nothing drawn, counted.
