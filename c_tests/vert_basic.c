@@ -3,8 +3,9 @@
  * varyings and gl_TexCoord read by its fragment shader), a #version 120
  * program with explicit matrices (projection times modelview times vertex)
  * and varyings, a vertex-shader-only program feeding fixed-function
- * fragments (gl_FrontColor, with blending), and fixed-function triangles in
- * the same frame. */
+ * fragments (gl_FrontColor, with blending), fixed-function triangles in
+ * the same frame, and a generic attribute's current value changed between
+ * glBegin/glEnd batches (each batch keeps the value it was given with). */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -57,6 +58,13 @@ static const char *VS_C =
     "  gl_FrontColor = vec4(gl_Color.bgr, 0.6);\n"
     "}\n";
 
+static const char *VS_D =
+    "attribute vec4 tint;\n"
+    "void main() {\n"
+    "  gl_Position = ftransform();\n"
+    "  gl_FrontColor = tint * gl_Color;\n"
+    "}\n";
+
 int main(int argc, char **argv)
 {
     FILE *out = sgl_open(argc, argv);
@@ -65,6 +73,8 @@ int main(int argc, char **argv)
     GLuint a = vert_program(VS_A, FS_A, NULL);
     GLuint b = vert_program(VS_B, FS_B, NULL);
     GLuint c = vert_program(VS_C, NULL, NULL);
+    static const char *d_attribs[] = {"unused", "tint", NULL};
+    GLuint d = vert_program(VS_D, NULL, d_attribs);
 
     glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -86,6 +96,17 @@ int main(int argc, char **argv)
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(c);
     vert_random_tris(8);
+
+    /* GL_TRIANGLES batches merge until a call that is not a vertex attribute:
+     * each keeps the tint it was given with. */
+    glDisable(GL_BLEND);
+    glUseProgram(d);
+    glVertexAttrib4f(1, 1.0f, 0.25f, 0.5f, 1.0f);
+    vert_random_tris(4);
+    glVertexAttrib4f(1, 0.25f, 1.0f, 0.75f, 1.0f);
+    vert_random_tris(4);
+    glVertexAttrib4f(1, 0.5f, 0.5f, 1.0f, 1.0f);
+    vert_random_tris(4);
 
     return frag_end(out, "basic", buf, ctx);
 }

@@ -22,7 +22,7 @@ pub enum ProgramDraw {
     Refused,
     /// The program's shaders: the fragment shader and its uniform words (`None`:
     /// fixed-function fragments), the vertex shader (`None`: the fixed-function stage).
-    Shader(Option<(Arc<FragShader>, Vec<u32>)>, Option<VertInput>),
+    Shader(Option<(Arc<FragShader>, Vec<u32>)>, Option<Box<VertInput>>),
 }
 
 /// A draw's vertex shader: the shader, its user uniform words in slot order, and the
@@ -67,6 +67,9 @@ impl Context {
         let vert = match &linked.vert {
             None => None,
             Some(Ok(_)) if self.clip_planes.enabled != 0 => return ProgramDraw::Refused,
+            Some(Ok(vs)) if self.immediate.generic_inside && vs.reads_generic() => {
+                return ProgramDraw::Refused
+            }
             Some(Ok(vs)) => {
                 let user: Vec<Slot> = vs
                     .uniforms
@@ -81,11 +84,11 @@ impl Context {
                 for (g, c) in generic.iter_mut().zip(&self.generic_current) {
                     *g = *c;
                 }
-                Some(VertInput {
+                Some(Box::new(VertInput {
                     shader: Arc::clone(vs),
                     uniforms,
                     generic,
-                })
+                }))
             }
             Some(Err(_)) => return ProgramDraw::Refused,
         };

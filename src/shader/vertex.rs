@@ -140,6 +140,15 @@ mod tests {
     }
 
     #[test]
+    fn writes_to_gl_tex_coord_elements_lower() {
+        // `gl_TexCoord[]` is unsized in the declaration: 8 vec4 elements as an output.
+        let p = check("void main() { gl_Position = gl_Vertex; gl_TexCoord[1] = gl_Color; }");
+        let l = lower_vertex(&p).unwrap();
+        let t = l.outputs.iter().find(|s| s.name == "gl_TexCoord").unwrap();
+        assert_eq!(t.count, 32);
+    }
+
+    #[test]
     fn ftransform_reads_the_mvp_and_gl_vertex() {
         let p = check("void main() { gl_Position = ftransform(); }");
         let l = lower_vertex(&p).unwrap();

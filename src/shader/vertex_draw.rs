@@ -138,6 +138,13 @@ impl VertShader {
         self.attributes.iter().any(|(_, s)| s.name == name)
     }
 
+    /// Whether the shader reads a generic attribute other than 0 (the position).
+    pub fn reads_generic(&self) -> bool {
+        self.attributes
+            .iter()
+            .any(|(src, _)| matches!(src, Source::Generic(_)))
+    }
+
     /// Whether the shader writes output `name`.
     pub fn writes(&self, name: &str) -> bool {
         self.outputs.iter().any(|s| s.name == name)
