@@ -60,6 +60,9 @@ pub struct DrawPlan<'a> {
     pub prims: PrimEnables,
     /// Feedback or selection mode: nothing is rasterized ([`feedback`]).
     pub feedback: bool,
+    /// The program's vertex shader, which replaces the fixed-function vertex stage
+    /// (`stage` then only gives the viewport and the varyings' count).
+    pub vertex: Option<crate::shader::vertex_draw::VertexRun<'a>>,
 }
 
 /// Runs `plan` for `verts` drawn as `mode` (through `indices` when given) into `fb`, inside
@@ -96,6 +99,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         raster,
         prims,
         feedback: _,
+        vertex,
     } = plan;
     if plan.shader.is_some() {
         // A fragment shader runs on filled triangles only (see `shader::draw`); other
@@ -108,6 +112,8 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             stats.program_draws_refused += 1;
             return None;
         }
+    }
+    if plan.shader.is_some() || vertex.is_some() {
         stats.program_draws += 1;
     }
     let n = indices.map_or(verts.count(), |i| i.len());
@@ -115,6 +121,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     // post-transform cache; points, lines and draws that need edge flags or per-vertex
     // materials transform every vertex first.
     let streamed = materials.is_none()
+        && vertex.is_none()
         && matches!(
             mode,
             Primitive::Triangles
@@ -125,10 +132,10 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 | Primitive::QuadStrip
         )
         && !poly;
-    let cv = if streamed {
-        Vec::new()
-    } else {
-        run_vertices(&mut stage, verts, materials)
+    let cv = match &vertex {
+        _ if streamed => Vec::new(),
+        Some(vs) => vs.run(verts),
+        None => run_vertices(&mut stage, verts, materials),
     };
     stats.vertices += cv.len() as u64;
     // A streamed draw's clip masks, from a pass over the positions alone.
@@ -597,7 +604,10 @@ pub fn feedback<S: VertexSource + ?Sized>(
 ) {
     let stage = &mut plan.stage;
     let n = indices.map_or(verts.count(), |i| i.len());
-    let cv = run_vertices(stage, verts, materials);
+    let cv = match &plan.vertex {
+        Some(vs) => vs.run(verts),
+        None => run_vertices(stage, verts, materials),
+    };
     let at = |k: usize| -> &ClipVertex {
         match indices {
             Some(ix) => &cv[ix[k] as usize],

@@ -1,7 +1,9 @@
-//! Draws with a current program (issue 43): a fragment shader without a vertex shader
-//! colours filled triangles through the engine; what the engine does not run (a vertex
-//! shader, texture sampling, lines and points) draws nothing and is counted in
-//! `program_draws_refused`, and fixed function comes back with glUseProgram(0).
+//! Draws with a current program (issue 43): a fragment shader colours filled triangles
+//! through the engine, a vertex shader replaces the vertex stage; what the engine does
+//! not run (a vertex shader under user clip planes, texture sampling, lines and points
+//! with a fragment shader, generic attributes set between glBegin and glEnd) draws
+//! nothing and is counted in `program_draws_refused`, and fixed function comes back with
+//! glUseProgram(0).
 
 use softgl::ffi::enums::*;
 use softgl::ffi::immediate::*;
@@ -9,6 +11,7 @@ use softgl::ffi::osmesa::*;
 use softgl::ffi::shaders::*;
 use softgl::ffi::shaders_uniform::*;
 use softgl::ffi::state::*;
+use softgl::ffi::vertex_attrib::*;
 use std::ffi::CString;
 
 const W: usize = 16;
@@ -133,15 +136,25 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
         "a refused line draws nothing"
     );
 
-    // A vertex shader: nothing drawn, counted.
+    // A vertex shader draws: its position, its colour.
     let pv = program(
-        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
+        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color.bgra; }"),
         "void main() { gl_FragColor = gl_Color; }",
     );
     glUseProgram(pv);
+    glColor4f(1.0, 0.0, 0.0, 1.0);
     glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s2b = stats();
+    assert_eq!(s2b.program_draws - s2.program_draws, 1);
+    assert_eq!(c.pixel(8, 8), [0, 0, 255, 255]);
+
+    // With a user clip plane (gl_ClipVertex is not applied): nothing drawn, counted.
+    c.clear();
+    glEnable(0x3000);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    glDisable(0x3000);
     let s3 = stats();
-    assert_eq!(s3.program_draws_refused - s2.program_draws_refused, 1);
+    assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
     // Texture sampling does not lower: nothing drawn, counted.
@@ -182,4 +195,74 @@ fn discard_kills_and_frag_coord_is_the_window_position() {
         "(x + 0.5) / 64 and (y + 0.5) / 64"
     );
     assert_eq!(c.pixel(15, 12), [62, 50, 0, 255]);
+}
+
+/// A generic attribute's current value feeds a vertex shader; glVertexAttrib draws a
+/// deferred glBegin/glEnd batch first (it was given with the old value); a value set
+/// between glBegin and glEnd is not recorded per vertex, so that batch is refused.
+#[test]
+fn generic_attributes_are_current_values_and_inside_begin_end_refuse() {
+    let c = Ctx::new();
+    c.clear();
+    let p = glCreateProgram();
+    glAttachShader(
+        p,
+        shader(
+            GL_VERTEX_SHADER,
+            "attribute vec4 col; void main() { gl_Position = gl_Vertex; gl_FrontColor = col; }",
+        ),
+    );
+    glAttachShader(
+        p,
+        shader(
+            GL_FRAGMENT_SHADER,
+            "void main() { gl_FragColor = gl_Color; }",
+        ),
+    );
+    let name = CString::new("col").unwrap();
+    // SAFETY: a NUL-terminated name.
+    unsafe { glBindAttribLocation(p, 1, name.as_ptr()) };
+    glLinkProgram(p);
+    glUseProgram(p);
+    let tri = |x0: f32, x1: f32| {
+        glBegin(GL_TRIANGLES);
+        glVertex2f(x0, -1.0);
+        glVertex2f(x1, -1.0);
+        glVertex2f(x0, 1.0);
+        glEnd();
+    };
+    let s0 = stats();
+    glVertexAttrib4f(1, 1.0, 0.0, 0.0, 1.0);
+    // Left half: red, deferred (GL_TRIANGLES batches merge) until the next call.
+    tri(-1.0, 0.0);
+    glVertexAttrib4f(1, 0.0, 1.0, 0.0, 1.0);
+    // Right half: green.
+    tri(0.0, 1.0);
+    assert_eq!(
+        c.pixel(1, 2),
+        [255, 0, 0, 255],
+        "the batch before the change"
+    );
+    assert_eq!(c.pixel(9, 2), [0, 255, 0, 255], "the batch after it");
+    let s1 = stats();
+    assert_eq!(s1.program_draws - s0.program_draws, 2);
+    assert_eq!(s1.program_draws_refused, s0.program_draws_refused);
+
+    // A value given between two vertices: refused, counted, nothing drawn.
+    c.clear();
+    glBegin(GL_TRIANGLES);
+    glVertexAttrib4f(1, 0.0, 0.0, 1.0, 1.0);
+    glVertex2f(-1.0, -1.0);
+    glVertexAttrib4f(1, 1.0, 1.0, 0.0, 1.0);
+    glVertex2f(1.0, -1.0);
+    glVertex2f(-1.0, 1.0);
+    glEnd();
+    assert_eq!(c.pixel(2, 2), [0; 4], "refused");
+    let s2 = stats();
+    assert_eq!(s2.program_draws_refused - s1.program_draws_refused, 1);
+
+    // The next batch, with the value set outside glBegin/glEnd, draws again.
+    tri(-1.0, 1.0);
+    assert_eq!(c.pixel(2, 2), [255, 255, 0, 255]);
+    assert_eq!(stats().program_draws - s2.program_draws, 1);
 }

@@ -185,6 +185,7 @@ impl ArrayState {
             edge_flag: self.input(&self.edge_flag),
             secondary_color: self.input(&self.secondary_color),
             fog_coord: self.input(&self.fog_coord),
+            generic: Some(std::array::from_fn(|k| self.input(&self.generic[k]))),
         }
     }
 

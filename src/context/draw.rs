@@ -199,9 +199,13 @@ fn draw_pass<S: VertexSource + ?Sized>(
         return true;
     }
     let shader = match &program {
-        ProgramDraw::Shader(fs, u) => Some(crate::plan::ShaderInput {
-            frag: fs,
-            uniforms: u,
+        ProgramDraw::Shader(fs, vs) => Some(crate::plan::ShaderInput {
+            frag: fs.as_ref().map(|(f, u)| (&**f, &u[..])),
+            vert: vs.as_ref().map(|v| crate::plan::VertInput {
+                shader: &v.shader,
+                uniforms: &v.uniforms,
+                generic: v.generic,
+            }),
         }),
         _ => None,
     };

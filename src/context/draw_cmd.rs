@@ -8,8 +8,8 @@ use super::dlist::Elements;
 use super::state::Primitive;
 use super::texture_spec::non_negative;
 use super::{Context, GlError, GlResult};
-use crate::geometry::fetch::{VertexFetcher, VertexIn};
-use crate::geometry::source::FetchSource;
+use crate::geometry::fetch::VertexFetcher;
+use crate::geometry::source::{FetchSource, Gathered};
 use crate::gl::enums::*;
 use crate::gl::types::*;
 use std::collections::HashMap;
@@ -211,21 +211,28 @@ pub(crate) fn draw_elements(
         return Ok(());
     }
     let fetch = VertexFetcher::new(&c.arrays.inputs(), &c.state.current);
-    let (verts, local): (Vec<VertexIn>, Vec<u32>) = {
+    // Generic attribute arrays (a vertex shader's) are gathered with the vertices.
+    let generic = c.arrays.generic[1..].iter().any(|a| a.enabled);
+    let (verts, local): (Gathered, Vec<u32>) = {
         let mut map: HashMap<u32, u32> = HashMap::new();
-        let mut v = Vec::new();
+        let mut v = Gathered::default();
         let mut local = Vec::with_capacity(idx.len());
         for &i in &idx {
             let k = *map.entry(i).or_insert_with(|| {
                 // SAFETY: as in draw_arrays.
-                v.push(unsafe { fetch.fetch(i) });
-                (v.len() - 1) as u32
+                v.verts.push(unsafe { fetch.fetch(i) });
+                if generic {
+                    // SAFETY: as in draw_arrays.
+                    v.generic
+                        .push(std::array::from_fn(|k| unsafe { fetch.generic(k, i) }));
+                }
+                (v.verts.len() - 1) as u32
             });
             local.push(k);
         }
         (v, local)
     };
-    crate::context::draw::draw(c, mode, verts.as_slice(), Some(&local));
+    crate::context::draw::draw(c, mode, &verts, Some(&local));
     Ok(())
 }
 

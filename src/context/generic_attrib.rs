@@ -57,6 +57,11 @@ pub enum AttribValue {
 impl Context {
     /// glVertexAttrib*: a vertex between glBegin and glEnd for attribute 0, else the
     /// attribute's current value (recorded as a state command in a display list).
+    ///
+    /// A deferred glBegin/glEnd batch is drawn first (its vertex shader reads the value
+    /// at draw time). Inside glBegin/glEnd the value is not recorded per vertex: the
+    /// batch is marked ([`super::immediate::Immediate::generic_inside`]) and a vertex
+    /// shader reading generic attributes refuses it.
     pub(crate) fn vertex_attrib(&mut self, index: u32, v: [f32; 4]) -> GlResult<()> {
         let i = slot(index)?;
         let inside = match self.lists.compile_mode() {
@@ -67,18 +72,29 @@ impl Context {
             return self.vertex_command(VertexOp::Vertex(v));
         }
         match self.lists.compile_mode() {
-            None => self.generic_current[i] = v,
+            None => self.set_generic(i, v),
             Some(execute) => {
                 self.lists.push_call(Box::new(move |c: &mut Context| {
-                    c.generic_current[i] = v;
+                    c.set_generic(i, v);
                     Ok(())
                 }));
                 if execute {
-                    self.generic_current[i] = v;
+                    self.set_generic(i, v);
                 }
             }
         }
         Ok(())
+    }
+
+    /// Sets generic attribute `i`'s current value, marking or drawing the batch in
+    /// progress (see [`Context::vertex_attrib`]).
+    fn set_generic(&mut self, i: usize, v: [f32; 4]) {
+        if self.immediate.active.is_some() {
+            self.immediate.generic_inside = true;
+        } else {
+            self.flush_pending();
+        }
+        self.generic_current[i] = v;
     }
 
     /// glVertexAttribPointer: `ptr` is an offset into the GL_ARRAY_BUFFER while one is

@@ -38,6 +38,10 @@ pub struct Immediate {
     pub per_vertex_material: bool,
     /// With `per_vertex_material`, both faces' materials of each vertex in `verts`.
     pub materials: Vec<[super::lighting_state::Material; 2]>,
+    /// Whether glVertexAttrib set a generic attribute (index 1 and up) inside this batch.
+    /// Vertices do not record generic attributes, so a vertex shader that reads one
+    /// refuses such a batch rather than give every vertex the last value.
+    pub generic_inside: bool,
 }
 
 impl Immediate {
@@ -74,6 +78,7 @@ impl Context {
             || im.active != Some(Primitive::Triangles)
             || im.replaying
             || im.per_vertex_material
+            || im.generic_inside
         {
             return;
         }

@@ -299,6 +299,7 @@ impl Context {
         self.settle_draws();
         if let Some(mode) = self.immediate.pending.take() {
             if self.draw_pending_node(mode) {
+                self.immediate.generic_inside = false;
                 return;
             }
             let mats = self.take_vertex_materials();
@@ -320,6 +321,9 @@ impl Context {
                 im.verts.reserve_total(total + total / 4);
             }
         }
+        // The batch that set generic attributes inside glBegin/glEnd is drawn (or none is
+        // left: a display list's glBegin/glEnd is drawn before its next call).
+        self.immediate.generic_inside = false;
     }
 
     /// Records `e` unless an earlier error is still unread.

@@ -1,14 +1,16 @@
 //! What a draw does with the current program (glUseProgram): fixed function when there
-//! is none (or it has no shaders), the engine with the program's fragment shader when it
-//! has one the engine runs and no vertex shader, and nothing (counted in
-//! `program_draws_refused`) otherwise: a draw that ignored the program would draw
-//! something wrong without telling.
+//! is none (or it has no shaders); the program's shaders on the engine when every stage
+//! it has is one the engine runs (a missing stage is fixed function); and nothing
+//! (counted in `program_draws_refused`) otherwise: a draw that ignored the program would
+//! draw something wrong without telling. A vertex shader is refused while user clip
+//! planes are enabled (`gl_ClipVertex` is not applied).
 
 use std::sync::Arc;
 
 use super::program_link::Linked;
 use super::Context;
 use crate::shader::draw::FragShader;
+use crate::shader::vertex_draw::VertShader;
 use crate::shader::Slot;
 
 /// How a draw treats the current program.
@@ -18,8 +20,21 @@ pub enum ProgramDraw {
     Fixed,
     /// A program the draw cannot run: nothing is drawn.
     Refused,
-    /// The fragment shader and its uniform words, with the fixed-function vertex stage.
-    Shader(Arc<FragShader>, Vec<u32>),
+    /// The program's shaders: the fragment shader and its uniform words (`None`:
+    /// fixed-function fragments), the vertex shader (`None`: the fixed-function stage).
+    Shader(Option<(Arc<FragShader>, Vec<u32>)>, Option<Box<VertInput>>),
+}
+
+/// A draw's vertex shader: the shader, its user uniform words in slot order, and the
+/// generic attributes' current values.
+#[derive(Debug)]
+pub struct VertInput {
+    /// The shader.
+    pub shader: Arc<VertShader>,
+    /// Its user uniforms' words (built-in uniforms skipped).
+    pub uniforms: Vec<u32>,
+    /// glVertexAttrib's current values.
+    pub generic: [[f32; 4]; 16],
 }
 
 impl Context {
@@ -41,13 +56,43 @@ impl Context {
         if linked.vertex.is_empty() && linked.fragment.is_empty() {
             return ProgramDraw::Fixed;
         }
-        match (&linked.draw, linked.vertex.is_empty()) {
-            (Some(Ok(fs)), true) => match uniform_words(linked, &fs.uniforms) {
-                Some(u) => ProgramDraw::Shader(Arc::clone(fs), u),
-                None => ProgramDraw::Refused,
+        let frag = match &linked.draw {
+            None => None,
+            Some(Ok(fs)) => match uniform_words(linked, &fs.uniforms) {
+                Some(u) => Some((Arc::clone(fs), u)),
+                None => return ProgramDraw::Refused,
             },
-            _ => ProgramDraw::Refused,
-        }
+            Some(Err(_)) => return ProgramDraw::Refused,
+        };
+        let vert = match &linked.vert {
+            None => None,
+            Some(Ok(_)) if self.clip_planes.enabled != 0 => return ProgramDraw::Refused,
+            Some(Ok(vs)) if self.immediate.generic_inside && vs.reads_generic() => {
+                return ProgramDraw::Refused
+            }
+            Some(Ok(vs)) => {
+                let user: Vec<Slot> = vs
+                    .uniforms
+                    .iter()
+                    .filter(|s| !s.name.starts_with("gl_"))
+                    .cloned()
+                    .collect();
+                let Some(uniforms) = uniform_words(linked, &user) else {
+                    return ProgramDraw::Refused;
+                };
+                let mut generic = [[0.0, 0.0, 0.0, 1.0]; 16];
+                for (g, c) in generic.iter_mut().zip(&self.generic_current) {
+                    *g = *c;
+                }
+                Some(Box::new(VertInput {
+                    shader: Arc::clone(vs),
+                    uniforms,
+                    generic,
+                }))
+            }
+            Some(Err(_)) => return ProgramDraw::Refused,
+        };
+        ProgramDraw::Shader(frag, vert)
     }
 }
 

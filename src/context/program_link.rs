@@ -113,6 +113,8 @@ pub struct Linked {
     /// The fragment shader as draws run it (`None` without a fragment stage; `Err` says
     /// why the engine cannot run it).
     pub draw: Option<Result<Arc<crate::shader::draw::FragShader>, String>>,
+    /// The vertex shader as draws run it (`None` without a vertex stage).
+    pub vert: Option<Result<Arc<crate::shader::vertex_draw::VertShader>, String>>,
 }
 
 /// The GL type enum of a basic GLSL type (GL 2.0 table 2.9, GL 2.1's non-square matrices,
@@ -729,10 +731,21 @@ impl Context {
         p.validate_status = false;
         match result {
             Ok(mut l) => {
+                let vertex = !l.vertex.is_empty();
                 l.draw = match l.fragment.as_slice() {
                     [] => None,
-                    [f] => Some(crate::shader::draw::FragShader::prepare(Arc::clone(f))),
+                    [f] => Some(crate::shader::draw::FragShader::prepare(
+                        Arc::clone(f),
+                        vertex,
+                    )),
                     _ => Some(Err("several fragment shaders".into())),
+                };
+                let attrs = &l.attributes;
+                let location = |n: &str| attrs.iter().find(|a| a.name == n).map(|a| a.location);
+                l.vert = match l.vertex.as_slice() {
+                    [] => None,
+                    [v] => Some(crate::shader::vertex_draw::VertShader::prepare(v, location)),
+                    _ => Some(Err("several vertex shaders".into())),
                 };
                 p.link_status = true;
                 p.log.clear();

@@ -101,8 +101,8 @@ pub struct ProgramObject {
 pub enum ShaderOrProgram {
     /// A shader.
     Shader(ShaderObject),
-    /// A program.
-    Program(ProgramObject),
+    /// A program (boxed: with its link results it is several times a shader's size).
+    Program(Box<ProgramObject>),
 }
 
 /// The shader and program objects of a share group.
@@ -241,7 +241,7 @@ impl Context {
     pub fn create_program(&mut self) -> u32 {
         self.shaders
             .table
-            .alloc(ShaderOrProgram::Program(ProgramObject::default()))
+            .alloc(ShaderOrProgram::Program(Box::default()))
     }
 
     /// glShaderSource with the strings already read.

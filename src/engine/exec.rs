@@ -102,6 +102,10 @@ pub struct Ctx<'a> {
     /// The depth buffer and its length.
     pub(super) depth: *mut u32,
     pub(super) depth_len: usize,
+    /// The outputs [`Op::Output`] writes (`outs_per` values per chunk), null when the
+    /// program has none.
+    pub(super) outs: *mut [u32; 8],
+    pub(super) outs_per: usize,
 }
 
 impl Ctx<'_> {
@@ -155,6 +159,9 @@ pub struct Program {
     inputs: usize,
     uniforms: usize,
     depth: bool,
+    outputs: usize,
+    /// The program reads pixel positions or the colour buffer.
+    pixels: bool,
 }
 
 /// Whether code for `want` may run where [`crate::cpu::isa`] reports `have`.
@@ -198,6 +205,8 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         inputs: 0,
         uniforms: 0,
         depth: false,
+        outputs: 0,
+        pixels: false,
     };
     for (i, op) in ir.ops.iter().enumerate() {
         let ops = op.operands();
@@ -257,8 +266,14 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                 p.fogs.push(f);
                 (t.fog, (p.fogs.len() - 1) as u32)
             }
-            Op::FragX => (t.frag_x, 0),
-            Op::FragY => (t.frag_y, 0),
+            Op::FragX => {
+                p.pixels = true;
+                (t.frag_x, 0)
+            }
+            Op::FragY => {
+                p.pixels = true;
+                (t.frag_y, 0)
+            }
             Op::Interp(n) => {
                 p.planes = p.planes.max(n as usize + 1);
                 (t.interp, n as u32)
@@ -303,13 +318,23 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                 p.depth = true;
                 (t.depth, func_code(func) | (write as u32) << 8)
             }
-            Op::LoadColor => (t.load_color, 0),
+            Op::LoadColor => {
+                p.pixels = true;
+                (t.load_color, 0)
+            }
             Op::Blend(b, ..) => {
                 let over = cfg!(target_arch = "x86_64") && is_over(&b);
                 p.blends.push(b);
                 (t.blend, (p.blends.len() - 1) as u32 | (over as u32) << 16)
             }
-            Op::StoreColor(_) => (t.store_color, 0),
+            Op::StoreColor(_) => {
+                p.pixels = true;
+                (t.store_color, 0)
+            }
+            Op::Output(n, _) => {
+                p.outputs = p.outputs.max(n as usize + 1);
+                (t.output, n as u32)
+            }
         };
         if hoist {
             p.prologue.push(Step { k, d, a, imm });
@@ -344,6 +369,7 @@ fn hoistable(op: &Op) -> bool {
             | Op::LoadColor
             | Op::Blend(..)
             | Op::StoreColor(_)
+            | Op::Output(..)
     )
 }
 
@@ -402,6 +428,10 @@ impl Program {
         batch: usize,
     ) -> Counts {
         let stride = batch.clamp(1, MAX_BATCH);
+        assert!(
+            self.outputs == 0,
+            "a program with outputs runs by run_streams"
+        );
         assert!(io.planes.len() >= self.planes && io.inputs.len() >= self.inputs);
         assert!(io.uniforms.len() >= self.uniforms);
         let live_out = io.live_out.len() >= chunks.len();
@@ -437,6 +467,8 @@ impl Program {
             color_len: io.color.len(),
             depth: io.depth.as_mut_ptr(),
             depth_len: io.depth.len(),
+            outs: std::ptr::null_mut(),
+            outs_per: 0,
         };
         // SAFETY: the steps' slots are below `self.slots` (compile) and the register file
         // holds `slots * stride` values; the chunks' live lanes lie in the buffers
@@ -465,6 +497,87 @@ impl Program {
             }
         }
         ctx.counts
+    }
+}
+
+impl Program {
+    /// The outputs per chunk the program writes ([`Op::Output`]).
+    pub fn outputs(&self) -> usize {
+        self.outputs
+    }
+
+    /// Runs a program without fragment interface (a vertex shader) over `chunks` chunks
+    /// of 8 lanes in batches of [`MAX_BATCH`]: [`Op::Input`] streams from `inputs` (one
+    /// value per chunk), [`Op::Uniform`] from `uniforms`, and each chunk's outputs into
+    /// `outputs[chunk · self.outputs() + n]`.
+    ///
+    /// # Panics
+    /// When the program reads planes, pixel positions or buffers, when a stream is
+    /// shorter than `chunks`, or when `outputs` is too short.
+    pub fn run_streams(
+        &self,
+        scratch: &mut Scratch,
+        inputs: &[&[[u32; 8]]],
+        uniforms: &[f32],
+        outputs: &mut [[u32; 8]],
+        chunks: usize,
+    ) {
+        assert!(self.planes == 0 && !self.depth && !self.pixels);
+        assert!(inputs.len() >= self.inputs && inputs.iter().all(|s| s.len() >= chunks));
+        assert!(uniforms.len() >= self.uniforms);
+        assert!(outputs.len() >= chunks * self.outputs);
+        // Only the pixel and buffer kernels read a chunk (asserted absent above): these
+        // are placeholders.
+        let lanes = [ChunkIn {
+            idx: 0,
+            fx: 0.0,
+            fy: 0.0,
+            live: 0xFF,
+        }; MAX_BATCH];
+        let need = self.slots * MAX_BATCH;
+        if scratch.regs.len() < need {
+            scratch.regs.resize(need, [0; 8]);
+        }
+        let mut ctx = Ctx {
+            regs: scratch.regs.as_mut_ptr(),
+            stride: MAX_BATCH,
+            n: MAX_BATCH,
+            base: 0,
+            chunks: &lanes,
+            planes: &[],
+            inputs,
+            blends: &[],
+            fogs: &self.fogs,
+            uniforms,
+            counts: Counts::default(),
+            color: std::ptr::null_mut(),
+            color_len: 0,
+            depth: std::ptr::null_mut(),
+            depth_len: 0,
+            outs: outputs.as_mut_ptr(),
+            outs_per: self.outputs,
+        };
+        // SAFETY: as in `run`; the outputs hold `chunks · self.outputs` values (checked)
+        // and a step's output index is below `self.outputs` (compile); no step reads a
+        // chunk or a buffer (asserted above).
+        unsafe {
+            for s in &self.prologue {
+                (s.k)(&mut ctx, s);
+            }
+            let mut base = 0;
+            while base < chunks {
+                let n = MAX_BATCH.min(chunks - base);
+                ctx.n = n;
+                ctx.base = base;
+                for k in 0..n {
+                    *ctx.reg(0, k) = [u32::MAX; 8];
+                }
+                for s in &self.body {
+                    (s.k)(&mut ctx, s);
+                }
+                base += n;
+            }
+        }
     }
 }
 

@@ -208,6 +208,9 @@ pub enum Op {
     Blend(Blend8, Val, Val),
     /// Writes a packed colour to the live lanes.
     StoreColor(Val),
+    /// Writes a value's lanes to output `n` of the chunk (a vertex shader's results,
+    /// [`super::exec::Program::run_streams`]).
+    Output(u16, Val),
 }
 
 impl Op {
@@ -249,6 +252,7 @@ impl Op {
             | Op::Byte(a, _)
             | Op::UnpackUnorm8(a, _) => vec![a],
             Op::Kill(a) | Op::StoreColor(a) | Op::DepthTest { z: a, .. } => vec![a],
+            Op::Output(_, a) => vec![a],
             Op::PackUnorm8(v) => v.to_vec(),
         }
     }
@@ -424,6 +428,12 @@ impl Builder {
             }
             Op::StoreColor(c) => {
                 want(c, I32, "packed colour")?;
+                return Ok(None);
+            }
+            Op::Output(_, v) => {
+                if t(v).is_none() {
+                    return Err("a value to output");
+                }
                 return Ok(None);
             }
         }))

@@ -541,6 +541,16 @@ mod body {
             V::store_color(c.color.add(idx), c.color_len - idx, live, v)
         });
     }
+
+    /// Writes the value to output `imm` of each chunk (`Program::run_streams` sized the
+    /// outputs: `outs_per` values per chunk, `imm` below it).
+    #[inline(always)]
+    pub(in super::super) unsafe fn output<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let at = (c.base + k) * c.outs_per + s.imm as usize;
+            *c.outs.add(at) = *c.reg(s.a[0], k)
+        });
+    }
 }
 
 /// Calls `$cb!` with the kernel names after the tokens `$pre`: the list behind
@@ -550,7 +560,7 @@ macro_rules! kernel_list {
         $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
             max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
             depth, load_color, blend, store_color, unary, pow, ibin, xor, scmp, itof, ftoi,
-            from_bits);
+            from_bits, output);
     };
 }
 

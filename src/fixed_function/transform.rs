@@ -52,6 +52,8 @@ pub struct VertexStage {
     /// Whether texture coordinate generation computes the eye position (which the
     /// attenuation then reuses).
     pub texgen_eye: bool,
+    /// The least varying count [`Self::nvary`] gives (a fragment shader's varyings).
+    pub min_vary: usize,
 }
 
 /// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1, written as the
@@ -60,7 +62,7 @@ pub struct VertexStage {
 /// result unspecified (an unoptimised build kept -0.0 where the release build and the
 /// vector block transform give +0.0).
 #[inline]
-fn clamp_color(v: f32) -> f32 {
+pub fn clamp_color(v: f32) -> f32 {
     let m = if v < 1.0 { v } else { 1.0 };
     if m > 0.0 {
         m
@@ -88,6 +90,7 @@ impl VertexStage {
             color_sum: false,
             point_atten: None,
             texgen_eye: false,
+            min_vary: 0,
         }
     }
 
@@ -153,6 +156,11 @@ impl VertexStage {
 
     /// The number of varying floats this stage writes.
     pub fn nvary(&self) -> usize {
+        self.nvary_ff().max(self.min_vary)
+    }
+
+    /// [`Self::nvary`] from what this stage computes.
+    fn nvary_ff(&self) -> usize {
         if self.two_side() {
             self.back_offset() + 8
         } else if self.n_tex > 0 {

@@ -5,6 +5,7 @@
 //! Reads from buffer objects are bounds-checked: an element past the end of its buffer
 //! reads as (0, 0, 0, 1) rather than outside the store.
 
+use crate::pipe::arrays::MAX_GENERIC;
 use crate::pipe::{ArrayInput, ArrayPointer, DataType, VertexArrays};
 use crate::pipe::{CurrentAttribs, MAX_TEXTURE_UNITS};
 
@@ -332,6 +333,7 @@ pub struct VertexFetcher<'a> {
     edge_flag: Option<Result<Source<'a>, ()>>,
     secondary: Option<Result<Source<'a>, ()>>,
     fog_coord: Option<Result<Source<'a>, ()>>,
+    generic: [Option<Result<Source<'a>, ()>>; MAX_GENERIC],
 }
 
 impl<'a> VertexFetcher<'a> {
@@ -349,6 +351,7 @@ impl<'a> VertexFetcher<'a> {
             edge_flag: Source::new(&arrays.edge_flag),
             secondary: Source::new(&arrays.secondary_color),
             fog_coord: Source::new(&arrays.fog_coord),
+            generic: std::array::from_fn(|k| Source::new(arrays.generic.as_ref()?.get(k)?)),
         }
     }
 
@@ -417,6 +420,20 @@ impl<'a> VertexFetcher<'a> {
             count,
             _data: std::marker::PhantomData,
         })
+    }
+
+    /// Element `index` of generic attribute array `loc`, when it is enabled (a vertex
+    /// shader's attribute; missing components and elements read as (0, 0, 0, 1)).
+    ///
+    /// # Safety
+    /// As [`fetch_attr`]: an enabled client-memory array must be valid for `index`.
+    #[inline]
+    pub unsafe fn generic(&self, loc: usize, index: u32) -> Option<[f32; 4]> {
+        const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+        let s = self.generic.get(loc)?.as_ref()?;
+        let norm = matches!(s, Ok(src) if src.arr.normalized);
+        // SAFETY: forwarded from the caller.
+        Some(unsafe { Source::get(s, index, norm, ORIGIN) }.unwrap_or(ORIGIN))
     }
 
     /// The vertex every fetch starts from: the origin with the current attributes.
@@ -558,6 +575,7 @@ mod tests {
                 edge_flag: self.input(&self.edge_flag),
                 secondary_color: self.input(&self.secondary_color),
                 fog_coord: self.input(&self.fog_coord),
+                generic: None,
             }
         }
     }

@@ -50,6 +50,12 @@ pub trait VertexSource: Sync {
     fn edge_flag(&self, i: usize) -> bool {
         self.vertex(i).edge_flag
     }
+    /// Generic attribute `loc` of vertex `i` from its enabled array (`None`: no array, the
+    /// attribute's current value applies).
+    fn generic(&self, i: usize, loc: usize) -> Option<[f32; 4]> {
+        let _ = (i, loc);
+        None
+    }
     /// The positions of vertices `0..count()` as a plain float array, when they are
     /// stored as one ([`FloatPositions::get`] reads what [`Self::position`] reads).
     fn float_positions(&self) -> Option<FloatPositions<'_>> {
@@ -73,6 +79,39 @@ impl VertexSource for [VertexIn] {
     #[inline]
     fn edge_flag(&self, i: usize) -> bool {
         self[i].edge_flag
+    }
+}
+
+/// Vertices fetched from scattered array elements (a sparse glDrawElements), with their
+/// generic attributes from enabled arrays when any is (a vertex shader's; empty
+/// otherwise).
+#[derive(Default)]
+pub struct Gathered {
+    /// The vertices.
+    pub verts: Vec<VertexIn>,
+    /// Each vertex's generic attributes (`None`: no array), or empty.
+    pub generic: Vec<[Option<[f32; 4]>; crate::pipe::arrays::MAX_GENERIC]>,
+}
+
+impl VertexSource for Gathered {
+    #[inline]
+    fn count(&self) -> usize {
+        self.verts.len()
+    }
+    #[inline]
+    fn vertex(&self, i: usize) -> VertexIn {
+        self.verts[i]
+    }
+    #[inline]
+    fn position(&self, i: usize) -> [f32; 4] {
+        self.verts[i].pos
+    }
+    #[inline]
+    fn edge_flag(&self, i: usize) -> bool {
+        self.verts[i].edge_flag
+    }
+    fn generic(&self, i: usize, loc: usize) -> Option<[f32; 4]> {
+        *self.generic.get(i)?.get(loc)?
     }
 }
 
@@ -136,6 +175,10 @@ impl VertexSource for FetchSource<'_> {
     fn position(&self, i: usize) -> [f32; 4] {
         // SAFETY: as in `vertex`.
         unsafe { self.fetch.position(self.index(i)) }
+    }
+    fn generic(&self, i: usize, loc: usize) -> Option<[f32; 4]> {
+        // SAFETY: as in `vertex`.
+        unsafe { self.fetch.generic(loc, self.index(i)) }
     }
     fn float_positions(&self) -> Option<FloatPositions<'_>> {
         // SAFETY: as in `vertex` (the range is the one `FetchSource::new` was given).

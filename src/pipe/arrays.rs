@@ -31,4 +31,10 @@ pub struct VertexArrays<'a> {
     pub secondary_color: ArrayInput<'a>,
     /// GL_FOG_COORD_ARRAY.
     pub fog_coord: ArrayInput<'a>,
+    /// The generic attribute arrays (glVertexAttribPointer), which only a vertex shader
+    /// reads (`None`: none given).
+    pub generic: Option<[ArrayInput<'a>; MAX_GENERIC]>,
 }
+
+/// The generic vertex attributes (GL_MAX_VERTEX_ATTRIBS).
+pub const MAX_GENERIC: usize = 16;

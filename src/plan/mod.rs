@@ -26,6 +26,7 @@ use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
 use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
 use crate::render::DrawPlan;
 use crate::shader::draw::FragShader;
+use crate::shader::vertex_draw::{tex_vary, Matrices, VertShader, VertexRun};
 use crate::texture::{TextureState, UnitPlan};
 
 /// The buffers a draw goes into, as far as the plan depends on them.
@@ -91,13 +92,26 @@ pub struct DrawState<'a> {
     pub shader: Option<ShaderInput<'a>>,
 }
 
-/// A fragment shader for a draw: the checked shader and its uniform words in slot order.
+/// A program's shaders for a draw: the fragment shader and its uniform words in slot
+/// order, the vertex shader (each `None` when the stage is fixed function).
 #[derive(Clone, Copy, Debug)]
 pub struct ShaderInput<'a> {
+    /// The fragment shader and its uniform values, [`FragShader::uniforms`]' components
+    /// in order.
+    pub frag: Option<(&'a FragShader, &'a [u32])>,
+    /// The vertex shader.
+    pub vert: Option<VertInput<'a>>,
+}
+
+/// A vertex shader for a draw.
+#[derive(Clone, Copy, Debug)]
+pub struct VertInput<'a> {
     /// The shader.
-    pub frag: &'a FragShader,
-    /// Its uniform values, [`FragShader::uniforms`]' components in order.
+    pub shader: &'a VertShader,
+    /// Its user uniforms' words in slot order.
     pub uniforms: &'a [u32],
+    /// The generic attributes' current values.
+    pub generic: [[f32; 4]; 16],
 }
 
 /// Plans a draw of `s`.
@@ -123,11 +137,13 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     // A fragment shader replaces texturing: the vertex stage computes the coordinate
     // sets it reads instead (with each unit's matrix and texgen, as Mesa's fixed-function
     // vertex program does for the inputs a fragment program reads).
-    let shader = s.shader.filter(|_| !feedback);
-    if let Some(sh) = &shader {
-        for u in 0..sh.frag.tex_coords.min(MAX_TEXTURE_UNITS) {
+    let shader = s.shader.and_then(|sh| sh.frag).filter(|_| !feedback);
+    let vert = s.shader.and_then(|sh| sh.vert);
+    if let Some((fs, _)) = &shader {
+        for u in 0..fs.tex_coords.min(MAX_TEXTURE_UNITS) {
             stage.add_texture_unit(u, s.texture[u].top());
         }
+        stage.min_vary = fs.nvary;
     }
     let tex: Vec<UnitPlan<'a>> = (0..MAX_TEXTURE_UNITS)
         .filter(|_| !feedback && shader.is_none())
@@ -155,20 +171,32 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         texgen_eye || stage.point_atten.is_some(),
         fma,
     );
+    // The vertex shader replaces lighting and point attenuation (GL 2.0 §2.15). Mesa
+    // still adds the secondary colour under lighting with GL_SEPARATE_SPECULAR_COLOR or
+    // when the shader reads gl_SecondaryColor (`_mesa_need_secondary_color`).
+    let vs_sum = vert.map(|v| {
+        let lit = stage.light.as_ref().is_some_and(|l| l.separate_specular());
+        lit || v.shader.reads("gl_SecondaryColor")
+    });
+    if vs_sum.is_some() {
+        stage.light = None;
+        stage.point_atten = None;
+    }
     let mut frag = fragment(&s.frag, t.depth_format, t.has_stencil, fma);
     frag.ms = s.ms;
     frag.srgb = fragment::srgb_store(caps, t.srgb);
-    stage.color_sum = stage.light.is_none() && caps.get(Cap::ColorSum);
+    stage.color_sum = (stage.light.is_none() && caps.get(Cap::ColorSum)) || vs_sum == Some(true);
     frag.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());
     frag.fog = stage.fog.map(|f| FogPlan::new(&f, fma));
     frag.count_samples = s.count_samples;
-    if let Some(sh) = &shader {
+    if let Some((fs, u)) = &shader {
         // The shader replaces the colour sum and fog.
         frag.separate_specular = false;
         frag.fog = None;
-        frag.shader = Some(sh.frag.reference(sh.uniforms, t.height, t.y_flip));
+        frag.shader = Some(fs.reference(u, t.height, t.y_flip));
     }
+    let vertex = vert.map(|v| vertex_run(v, s, &stage, shader.map(|(f, _)| f)));
     // Filled triangles that take the polygon pipeline (stippled, offset with two-sided
     // lighting …) are drawn with the single-sample rules in every plane.
     let mut prims = prim_enables(caps);
@@ -232,7 +260,44 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         raster: s.raster,
         prims,
         feedback,
+        vertex,
     }
+}
+
+/// The run of vertex shader `v` in a draw of `s` whose fixed-function stage is `stage`
+/// (its viewport, its texture units in varying order) and fragment shader `fs`.
+fn vertex_run<'a>(
+    v: VertInput<'a>,
+    s: &DrawState<'_>,
+    stage: &VertexStage,
+    fs: Option<&FragShader>,
+) -> VertexRun<'a> {
+    let modelview = s.modelview.top();
+    let inv = s.modelview.top_flags().inverse(&modelview.0);
+    let mvp = s.projection.top().mul(modelview);
+    let m = Matrices {
+        modelview,
+        modelview_inv: &inv,
+        projection: s.projection.top(),
+        mvp: &mvp,
+        texture: std::array::from_fn(|u| s.texture.get(u).map_or(&IDENTITY, |t| t.top())),
+    };
+    let units: Vec<usize> = stage.tex_units[..stage.n_tex].iter().map(|t| t.0).collect();
+    let vary_of = |name: &str, c: usize| match (name, fs) {
+        ("gl_TexCoord", Some(f)) => (c < 4 * f.tex_coords).then_some(crate::geometry::VARY_TEX + c),
+        ("gl_TexCoord", None) => tex_vary(&units, c),
+        (n, Some(f)) => f.user.iter().find(|u| u.0 == n).map(|u| u.1 + c),
+        _ => None,
+    };
+    VertexRun::new(
+        v.shader,
+        v.uniforms,
+        &m,
+        v.generic,
+        vary_of,
+        stage.viewport,
+        stage.fma,
+    )
 }
 
 /// The enables lighting reads.

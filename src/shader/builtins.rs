@@ -121,7 +121,7 @@ impl Lower<'_> {
 
     /// A matrix (columns of `rows`) times a vector: `m[0]·v.x + m[1]·v.y + …`, as GLSL
     /// IR's `lower_mat_op_to_vec` sums the columns.
-    fn mat_vec(&mut self, m: &[Val], rows: usize, v: &[Val]) -> Vec<Val> {
+    pub(super) fn mat_vec(&mut self, m: &[Val], rows: usize, v: &[Val]) -> Vec<Val> {
         let mut acc: Vec<Val> = Vec::new();
         for (c, col) in m.chunks(rows).enumerate() {
             for r in 0..rows {
@@ -362,6 +362,7 @@ pub(super) fn call(
                 })
                 .collect()
         }
+        "ftransform" => l.ftransform()?,
         _ => return no(format!("the built-in function {name}")),
     })
 }

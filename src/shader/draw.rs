@@ -16,7 +16,7 @@ use crate::engine::draw::{Walk, MAX_UNIFORMS};
 use crate::engine::ir::{Builder, Ir, Op};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::{MAX_VARY, VARY_TEX};
+use crate::geometry::{MAX_VARY, VARY_FOG, VARY_SPEC, VARY_TEX};
 use softgl_glsl::hir;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -36,6 +36,10 @@ pub struct FragShader {
     vary: Vec<u16>,
     /// The texture coordinate sets the vertex stage must compute (`gl_TexCoord[0..n]`).
     pub tex_coords: usize,
+    /// The user varyings read and their first varying (after the texture coordinates).
+    pub user: Vec<(String, usize)>,
+    /// The varyings a triangle must carry (one past the highest read).
+    pub nvary: usize,
 }
 
 impl std::fmt::Debug for FragShader {
@@ -51,21 +55,32 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 static REGISTRY: Mutex<Option<HashMap<u64, Weak<FragShader>>>> = Mutex::new(None);
 
 impl FragShader {
-    /// Checks that `hir` lowers and that the fixed-function vertex stage feeds every
-    /// input it reads, and registers it; `Err` says why a draw cannot run it.
-    pub fn prepare(hir: Arc<hir::Program>) -> Result<Arc<FragShader>, String> {
+    /// Checks that `hir` lowers and that the vertex stage feeds every input it reads (the
+    /// fixed-function stage, or with `vertex` the program's vertex shader), and registers
+    /// it; `Err` says why a draw cannot run it.
+    pub fn prepare(hir: Arc<hir::Program>, vertex: bool) -> Result<Arc<FragShader>, String> {
         let l = lower_fragment_with(&hir, Options::default()).map_err(|e| e.0)?;
         if l.front_facing {
             return Err("gl_FrontFacing is not lowered".into());
         }
+        let tex_coords = l
+            .varyings
+            .iter()
+            .find(|s| s.name == "gl_TexCoord")
+            .map_or(0, |s| s.count as usize / 4);
         let mut vary = Vec::new();
-        let mut tex_coords = 0;
+        let mut user = Vec::new();
+        let mut next = VARY_TEX + 4 * tex_coords;
         for s in &l.varyings {
             let base = match s.name.as_str() {
                 "gl_Color" => 0,
-                "gl_TexCoord" => {
-                    tex_coords = s.count as usize / 4;
-                    VARY_TEX
+                "gl_TexCoord" => VARY_TEX,
+                "gl_SecondaryColor" if vertex => VARY_SPEC,
+                "gl_FogFragCoord" if vertex => VARY_FOG,
+                n if vertex && !n.starts_with("gl_") => {
+                    user.push((n.to_string(), next));
+                    next += s.count as usize;
+                    next - s.count as usize
                 }
                 n => return Err(format!("input {n} is not fed by the fixed-function stage")),
             };
@@ -87,8 +102,10 @@ impl FragShader {
             id: NEXT_ID.fetch_add(1, Relaxed),
             hir,
             uniforms: l.uniforms,
+            nvary: vary.iter().map(|&v| v as usize + 1).max().unwrap_or(0),
             vary,
             tex_coords,
+            user,
         });
         let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
         let map = r.get_or_insert_with(HashMap::new);

@@ -2,7 +2,7 @@
 //! calls, each lowered to one value per scalar component.
 
 use super::builtins;
-use super::lower::{no, size, Lower, Unsupported, R};
+use super::lower::{no, size, Lower, Unsupported, R, TEX_COORDS};
 use crate::engine::ir::{FCmp, IOp, Op, Un, Val};
 use softgl_glsl::ast::{BinOp, UnOp};
 use softgl_glsl::hir::{Expr, ExprKind, VarId};
@@ -128,7 +128,16 @@ impl Lower<'_> {
     /// The variable and component indices an l-value names.
     fn place(&mut self, l: &Expr) -> R<(VarId, Vec<usize>)> {
         match &l.kind {
-            ExprKind::Var(id) => Ok((*id, (0..size(&l.ty)?).collect())),
+            ExprKind::Var(id) => {
+                // `gl_TexCoord[]` is unsized: it has TEX_COORDS elements (as `read_var`).
+                let n = match &l.ty {
+                    Type::Array(t, None) if self.p.vars[*id].name == "gl_TexCoord" => {
+                        size(t)? * TEX_COORDS as usize
+                    }
+                    ty => size(ty)?,
+                };
+                Ok((*id, (0..n).collect()))
+            }
             ExprKind::Swizzle(b, comps) => {
                 let (v, idx) = self.place(b)?;
                 Ok((v, comps.iter().map(|&c| idx[c as usize]).collect()))

@@ -133,8 +133,9 @@ pub struct Lower<'p> {
     pub(super) loops: Vec<LoopFrame>,
     /// The functions being inlined, innermost last.
     pub(super) fns: Vec<FnFrame>,
-    uniforms: Vec<Slot>,
-    varyings: Vec<Slot>,
+    pub(super) uniforms: Vec<Slot>,
+    /// The varyings read (fragment) or the attribute streams (vertex), in order.
+    pub(super) varyings: Vec<Slot>,
     inv_w: Option<Val>,
     /// The expression nesting depth.
     pub(super) depth: usize,
@@ -144,6 +145,8 @@ pub struct Lower<'p> {
     pub(super) exec_memo: Option<([Option<Val>; 4], Option<Val>)>,
     opts: Options,
     front_facing: bool,
+    /// A vertex shader: inputs are attribute streams ([`Op::InputF`]).
+    pub(super) vertex: bool,
 }
 
 /// Lowers a fragment shader.
@@ -153,32 +156,8 @@ pub fn lower_fragment(p: &hir::Program) -> Result<Lowered, Unsupported> {
 
 /// Lowers a fragment shader for a draw with `opts`.
 pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, Unsupported> {
-    let mut l = Lower {
-        p,
-        b: Builder::new(),
-        consts: Vec::new(),
-        env: HashMap::new(),
-        cond: None,
-        loops: Vec::new(),
-        fns: Vec::new(),
-        uniforms: Vec::new(),
-        varyings: Vec::new(),
-        inv_w: None,
-        depth: 0,
-        unmasked: false,
-        exec_memo: None,
-        opts,
-        front_facing: false,
-    };
-    for (v, init) in &p.globals {
-        if let Some(e) = init {
-            let val = l.expr(e)?;
-            l.env.insert(*v, val);
-        }
-    }
-    let main = p.main().ok_or_else(|| Unsupported("no main".into()))?;
-    l.fns.push(FnFrame::default());
-    l.block(main.body.as_deref().unwrap_or(&[]))?;
+    let mut l = Lower::new(p, opts, false);
+    l.run_main()?;
     let out = p
         .vars
         .iter()
@@ -201,6 +180,45 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
         varyings: l.varyings,
         front_facing: l.front_facing,
     })
+}
+
+impl<'p> Lower<'p> {
+    /// A lowering of `p` (`vertex`: its inputs are attribute streams, see
+    /// [`super::vertex`]).
+    pub(super) fn new(p: &'p hir::Program, opts: Options, vertex: bool) -> Self {
+        Lower {
+            p,
+            b: Builder::new(),
+            consts: Vec::new(),
+            env: HashMap::new(),
+            cond: None,
+            loops: Vec::new(),
+            fns: Vec::new(),
+            uniforms: Vec::new(),
+            varyings: Vec::new(),
+            inv_w: None,
+            depth: 0,
+            unmasked: false,
+            exec_memo: None,
+            opts,
+            front_facing: false,
+            vertex,
+        }
+    }
+
+    /// Lowers the globals' initializers and `main`.
+    pub(super) fn run_main(&mut self) -> R<()> {
+        let p = self.p;
+        for (v, init) in &p.globals {
+            if let Some(e) = init {
+                let val = self.expr(e)?;
+                self.env.insert(*v, val);
+            }
+        }
+        let main = p.main().ok_or_else(|| Unsupported("no main".into()))?;
+        self.fns.push(FnFrame::default());
+        self.block(main.body.as_deref().unwrap_or(&[]))
+    }
 }
 
 impl Lower<'_> {
@@ -316,14 +334,7 @@ impl Lower<'_> {
                 None => return no("a constant without value"),
             },
             Storage::Uniform | Storage::Builtin(BKind::Uniform) => {
-                let first = self.uniforms.iter().map(|s| s.count).sum::<u16>();
-                self.uniforms.push(Slot {
-                    name: var.name.clone(),
-                    first,
-                    count: sc.len() as u16,
-                    scalars: sc.clone(),
-                    linear: false,
-                });
+                let first = self.uniform_slot(&var.name, &sc);
                 let mut out = Vec::new();
                 for (k, s) in sc.iter().enumerate() {
                     let u = self.op(Op::Uniform(first + k as u16));
@@ -353,9 +364,29 @@ impl Lower<'_> {
         Ok(vals)
     }
 
-    /// A stage input: `gl_FragCoord`, `gl_FrontFacing`, or a varying's planes.
+    /// The first slot of uniform `name` of components `sc`, added on first use.
+    pub(super) fn uniform_slot(&mut self, name: &str, sc: &[Scalar]) -> u16 {
+        if let Some(s) = self.uniforms.iter().find(|s| s.name == name) {
+            return s.first;
+        }
+        let first = self.uniforms.iter().map(|s| s.count).sum::<u16>();
+        self.uniforms.push(Slot {
+            name: name.to_string(),
+            first,
+            count: sc.len() as u16,
+            scalars: sc.to_vec(),
+            linear: false,
+        });
+        first
+    }
+
+    /// A stage input: `gl_FragCoord`, `gl_FrontFacing`, or a varying's planes (a vertex
+    /// shader's attribute streams, [`super::vertex`]).
     fn input(&mut self, id: VarId, sc: &[Scalar]) -> R<Vec<Val>> {
         let var = &self.p.vars[id];
+        if self.vertex {
+            return self.attribute(&var.name.clone(), sc);
+        }
         match var.name.as_str() {
             "gl_FragCoord" => {
                 let half = self.f32(0.5);

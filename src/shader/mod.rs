@@ -1,4 +1,4 @@
-//! GLSL shaders on the engine (issue 43 item 2): a checked fragment shader
+//! GLSL shaders on the engine (issue 43 item 2): a checked fragment or vertex shader
 //! ([`softgl_glsl::hir`]) lowered into the engine's IR ([`crate::engine::ir`]), so that the
 //! stage executor runs it like a lowered fixed-function state.
 //!
@@ -17,33 +17,54 @@
 //! inverse trigonometric functions.
 //!
 //! # In draws
-//! [`draw`] runs a program's fragment shader in draws: when the current program has a
-//! linked fragment shader and no vertex shader, filled triangles take the fixed-function
-//! vertex stage and the shader colours each fragment on the engine (8 lanes), followed by
-//! the fixed per-fragment operations (alpha test, depth test, blending, colour mask). The
-//! inputs: `gl_Color` (the fixed-function colour, clamped), `gl_TexCoord[0..8]` (each
-//! unit's coordinates with its texture matrix and texgen; the vertex stage computes all
-//! eight sets when the shader reads `gl_TexCoord`), `gl_FragCoord` (window position,
-//! `y` flipped for top-down rows, `z` the depth plane, `w` the interpolated `1/w`), all
+//! [`draw`] runs a program's fragment shader in draws and [`vertex_draw`] its vertex
+//! shader ([`vertex`] lowers it, same front end and expression lowering). A program's
+//! stages each replace their fixed-function counterpart; a missing stage stays fixed
+//! function.
+//!
+//! Fragment shaders colour filled triangles on the engine (8 lanes), followed by the
+//! fixed per-fragment operations (alpha test, depth test, blending, colour mask). The
+//! inputs: `gl_Color` (the vertex stage's colour, clamped), `gl_TexCoord[0..8]` (each
+//! unit's coordinates; the fixed-function stage computes all eight sets with their
+//! texture matrices and texgen when the shader reads `gl_TexCoord`), with a vertex shader
+//! also `gl_SecondaryColor`, `gl_FogFragCoord` and user varyings (after the texture
+//! coordinates among a vertex's varyings), `gl_FragCoord` (window position, `y` flipped
+//! for top-down rows, `z` the depth plane, `w` the interpolated `1/w`), all
 //! perspective-correct; uniforms from the program's storage at each draw, passed as run
 //! inputs (a glUniform between draws takes effect; the variant cache is keyed by the
 //! shader, the plan and the row flip, never by uniform values).
 //!
+//! Vertex shaders run over a draw's vertices 8 at a time on the engine's executor and
+//! write the clip position, the colours, the texture coordinates and the user varyings
+//! that the rest of the pipeline (clipping, which interpolates every varying, setup, the
+//! fragment stage) reads as it reads the fixed-function stage's; their attributes come
+//! from glBegin/glEnd, client arrays and buffer objects, generic attributes from their
+//! arrays or current values at the link's locations (0 is the position); the built-in
+//! matrices are the draw's. Such draws transform every vertex before assembling
+//! (no post-transform cache streaming).
+//!
 //! Honest refusals: a draw that cannot run its program draws **nothing** and counts it
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
-//! falling back to fixed function and drawing wrong colours. Refused: a program with a
-//! vertex shader; a fragment shader that does not lower (texture sampling, derivatives …),
-//! reads `gl_FrontFacing`, `gl_SecondaryColor`, `gl_FogFragCoord`, a user varying or a
-//! built-in uniform, or has more than 64 uniform components; points, lines, polygons
-//! taking the polygon pipeline (unfilled, stippled, offset, two-sided lighting), flat
-//! shading and multisampling; triangles whose fragment state the engine does not draw
-//! (stencil, logic ops, wide, sRGB or non-RGBA8 targets, Z32 unorm depth). `GL_VERSION`
-//! stays 1.5.
+//! falling back to fixed function and drawing wrong colours. Refused: a shader that does
+//! not lower (texture sampling, derivatives …); a fragment shader that reads
+//! `gl_FrontFacing`, a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
+//! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
+//! shader that reads a built-in uniform other than the modelview, projection,
+//! modelview-projection, texture and normal matrices (and their transposes, the
+//! modelview's inverse), a non-float or matrix attribute, or draws while user clip
+//! planes are enabled (`gl_ClipVertex` is not applied); with a fragment shader, points,
+//! lines, polygons taking the polygon pipeline (unfilled, stippled, offset, two-sided
+//! lighting), flat shading and multisampling; triangles whose fragment state the engine
+//! does not draw (stencil, logic ops, wide, sRGB or non-RGBA8 targets, Z32 unorm depth).
+//! Not applied: `gl_BackColor` (GL_VERTEX_PROGRAM_TWO_SIDE), `gl_PointSize`
+//! (GL_VERTEX_PROGRAM_POINT_SIZE; points take the fixed size). `GL_VERSION` stays 1.5.
 
 mod builtins;
 mod control;
 pub mod draw;
 mod expr;
 pub mod lower;
+pub mod vertex;
+pub mod vertex_draw;
 
 pub use lower::{lower_fragment, lower_fragment_with, Lowered, Options, Slot, Unsupported};
