@@ -51,8 +51,10 @@
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
 //! shader that reads a built-in uniform other than the modelview, projection,
 //! modelview-projection, texture and normal matrices (and their transposes, the
-//! modelview's inverse), a non-float or matrix attribute, or draws while user clip
-//! planes are enabled (`gl_ClipVertex` is not applied); with a fragment shader, points,
+//! modelview's inverse), a non-float or matrix attribute, draws while user clip
+//! planes are enabled (`gl_ClipVertex` is not applied), or reads a generic attribute
+//! that glVertexAttrib set between glBegin and glEnd (not recorded per vertex); with a
+//! fragment shader, points,
 //! lines, polygons taking the polygon pipeline (unfilled, stippled, offset, two-sided
 //! lighting), flat shading and multisampling; triangles whose fragment state the engine
 //! does not draw (stencil, logic ops, wide, sRGB or non-RGBA8 targets, Z32 unorm depth).
