@@ -119,6 +119,23 @@ pub(super) fn size(ty: &Type) -> R<usize> {
     Ok(v.len())
 }
 
+/// The first component of `name` in `slots` (uniforms or attribute streams, numbered
+/// in order of first use), its slot of components `sc` added on first use.
+pub(super) fn slot_of(slots: &mut Vec<Slot>, name: &str, sc: &[Scalar]) -> u16 {
+    if let Some(s) = slots.iter().find(|s| s.name == name) {
+        return s.first;
+    }
+    let first = slots.iter().map(|s| s.count).sum::<u16>();
+    slots.push(Slot {
+        name: name.to_string(),
+        first,
+        count: sc.len() as u16,
+        scalars: sc.to_vec(),
+        linear: false,
+    });
+    first
+}
+
 /// The lowering of one shader.
 pub struct Lower<'p> {
     pub(super) p: &'p hir::Program,
@@ -366,18 +383,7 @@ impl Lower<'_> {
 
     /// The first slot of uniform `name` of components `sc`, added on first use.
     pub(super) fn uniform_slot(&mut self, name: &str, sc: &[Scalar]) -> u16 {
-        if let Some(s) = self.uniforms.iter().find(|s| s.name == name) {
-            return s.first;
-        }
-        let first = self.uniforms.iter().map(|s| s.count).sum::<u16>();
-        self.uniforms.push(Slot {
-            name: name.to_string(),
-            first,
-            count: sc.len() as u16,
-            scalars: sc.to_vec(),
-            linear: false,
-        });
-        first
+        slot_of(&mut self.uniforms, name, sc)
     }
 
     /// A stage input: `gl_FragCoord`, `gl_FrontFacing`, or a varying's planes (a vertex

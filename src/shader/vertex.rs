@@ -19,7 +19,7 @@
 //!   the fixed-function transform's order ([`crate::fixed_function::matrix::Mat4::transform`]),
 //!   so a program using it is position invariant to fixed function.
 
-use super::lower::{no, Lower, Options, Slot, Unsupported, R};
+use super::lower::{no, slot_of, Lower, Options, Slot, Unsupported, R};
 use crate::engine::ir::{Ir, Op, Val};
 use softgl_glsl::builtins::variables::Kind as BKind;
 use softgl_glsl::hir::{self, Storage};
@@ -80,20 +80,7 @@ impl Lower<'_> {
         if sc.iter().any(|s| *s != Scalar::Float) {
             return no(format!("non-float attribute {name}"));
         }
-        let first = match self.varyings.iter().find(|s| s.name == name) {
-            Some(s) => s.first,
-            None => {
-                let first = self.varyings.iter().map(|s| s.count).sum::<u16>();
-                self.varyings.push(Slot {
-                    name: name.to_string(),
-                    first,
-                    count: sc.len() as u16,
-                    scalars: sc.to_vec(),
-                    linear: false,
-                });
-                first
-            }
-        };
+        let first = slot_of(&mut self.varyings, name, sc);
         Ok((0..sc.len() as u16)
             .map(|k| self.op(Op::InputF(first + k)))
             .collect())
