@@ -175,7 +175,7 @@ fn cases() -> Vec<Case> {
 
 /// Every level this CPU runs, with whether it fuses.
 fn levels() -> Vec<Isa> {
-    [Isa::Avx2Fma, Isa::Fma, Isa::Avx2, Isa::Base]
+    [Isa::Avx2Fma, Isa::Fma, Isa::Base]
         .into_iter()
         .filter(|&l| softgl::engine::exec::isa_allowed(l, softgl::cpu::isa()))
         .collect()

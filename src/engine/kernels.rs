@@ -622,11 +622,6 @@ level!(
 );
 #[cfg(target_arch = "x86_64")]
 level!(
-    /// AVX2, not fused.
-    avx2, super::lanes_avx2::Avx2<false>, [#[target_feature(enable = "avx2")]]
-);
-#[cfg(target_arch = "x86_64")]
-level!(
     /// AVX2 and FMA.
     avx2fma, super::lanes_avx2::Avx2<true>, [#[target_feature(enable = "avx2,fma")]]
 );
@@ -637,8 +632,6 @@ pub(super) fn table(isa: crate::cpu::Isa) -> &'static Table {
     match isa {
         #[cfg(target_arch = "x86_64")]
         Isa::Avx2Fma => &avx2fma::TABLE,
-        #[cfg(target_arch = "x86_64")]
-        Isa::Avx2 => &avx2::TABLE,
         #[cfg(target_arch = "x86_64")]
         Isa::Fma => &fma::TABLE,
         _ => &base::TABLE,

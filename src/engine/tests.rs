@@ -279,7 +279,7 @@ pub(super) fn run_engine(
 
 /// The levels this CPU can run, each with whether it fuses.
 pub(super) fn levels() -> Vec<Isa> {
-    [Isa::Base, Isa::Fma, Isa::Avx2, Isa::Avx2Fma]
+    [Isa::Base, Isa::Fma, Isa::Avx2Fma]
         .into_iter()
         .filter(|&i| isa_allowed(i, crate::cpu::isa()))
         .collect()

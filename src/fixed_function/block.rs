@@ -59,7 +59,7 @@ impl VertexStage {
                     // SAFETY: the level (`cpu::isa`) says the CPU has AVX2 and FMA.
                     return unsafe { self.run_block_fma(verts, first, slot, out) };
                 }
-                (Isa::Avx2Fma | Isa::Avx2, false) => {
+                (Isa::Avx2Fma, false) => {
                     // SAFETY: the level says the CPU has AVX2.
                     return unsafe { self.run_block_avx2(verts, first, slot, out) };
                 }

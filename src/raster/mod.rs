@@ -119,8 +119,6 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2Fma => tri_simd::<variants::Avx2Fma>(t, b, d),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => tri_simd::<variants::Avx2>(t, b, d),
-            #[cfg(target_arch = "x86_64")]
             Isa::Fma => raster_rows::<variants::Fma>(t, b, d),
             _ => raster_rows::<variants::Base>(t, b, d),
         }
@@ -142,8 +140,6 @@ pub fn raster_samples(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
         match crate::cpu::isa() {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2Fma => multisample::triangle::<variants::Avx2Fma>(t, b, d),
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => multisample::triangle::<variants::Avx2>(t, b, d),
             #[cfg(target_arch = "x86_64")]
             Isa::Fma => multisample::triangle::<variants::Fma>(t, b, d),
             _ => multisample::triangle::<variants::Base>(t, b, d),

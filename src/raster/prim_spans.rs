@@ -90,8 +90,6 @@ pub fn shade(t: &SetupTriangle, rs: &RowSpans, d: &mut Draw<'_, '_>) {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2Fma if super::simd_ok(d) => simd::<super::variants::Avx2Fma>(t, rs, d),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 if super::simd_ok(d) => simd::<super::variants::Avx2>(t, rs, d),
-            #[cfg(target_arch = "x86_64")]
             Isa::Avx2Fma | Isa::Fma => general::<super::variants::Fma>(t, rs, d),
             _ => general::<super::variants::Base>(t, rs, d),
         }

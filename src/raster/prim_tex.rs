@@ -115,8 +115,6 @@ pub fn shade_covered<C: Cover>(t: &SetupTriangle, b: [i64; 4], cover: &C, d: &mu
         #[cfg(target_arch = "x86_64")]
         Isa::Avx2Fma => walk!(super::variants::Avx2Fma),
         #[cfg(target_arch = "x86_64")]
-        Isa::Avx2 => walk!(super::variants::Avx2),
-        #[cfg(target_arch = "x86_64")]
         Isa::Fma => walk!(super::variants::Fma),
         _ => walk!(super::variants::Base),
     }

@@ -30,9 +30,8 @@
 //! (wraps other than REPEAT and CLAMP_TO_EDGE) of every textured draw. The values are the
 //! general sampler's; only the number of instructions changes.
 //!
-//! Each instruction-set level with AVX2 has its own out-of-line copy (one call per unit
-//! and chunk), compiled with FMA exactly when the level fuses; the other levels keep the
-//! quad sampler. `SOFTGL_TEX_PATH=general` turns these off with the fast path.
+//! The AVX2+FMA level has an out-of-line copy (one call per unit and chunk), compiled
+//! with FMA; the other levels keep the quad sampler. `SOFTGL_TEX_PATH=general` turns these off with the fast path.
 
 use crate::fragment::span::{Madd, TexLanes, LANES};
 use crate::texture::UnitPlan;
@@ -62,17 +61,13 @@ pub(super) fn rows<M: Madd>(
     c: &Rows<'_>,
     texels: &mut [TexLanes; 2],
 ) -> bool {
+    // The one AVX2 level fuses; a walk that does not (the scalar level's, or a test's)
+    // keeps the quad sampler.
     #[cfg(target_arch = "x86_64")]
-    if crate::texture::fast_avx2::available() && crate::texture::fast::enabled() {
-        // SAFETY: (both) the CPU has AVX2 (`fast_avx2::available`), and FMA when the walk
-        // fuses (`cpu::isa` chose a fused level).
-        let done = unsafe {
-            if M::FUSED {
-                rows_avx2fma(u, k, c, texels)
-            } else {
-                rows_avx2(u, k, c, texels)
-            }
-        };
+    if M::FUSED && crate::texture::fast_avx2::available() && crate::texture::fast::enabled() {
+        // SAFETY: the CPU has AVX2 (`fast_avx2::available`: the level is `avx2fma` or
+        // above), and so FMA.
+        let done = unsafe { rows_avx2fma(u, k, c, texels) };
         let Some(redo) = done else {
             return false;
         };
@@ -176,13 +171,6 @@ macro_rules! rows_copy {
         }
     };
 }
-
-#[cfg(target_arch = "x86_64")]
-rows_copy!(
-    /// [`rows`] for the AVX2 level (not fused).
-    #[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]
-    rows_avx2
-);
 
 #[cfg(target_arch = "x86_64")]
 rows_copy!(

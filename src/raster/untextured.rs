@@ -138,7 +138,7 @@ mod tests {
     use crate::geometry::{VARY_FOG, VARY_SPEC};
     use crate::pipe::{CompareFunc, FogMode, StencilOp};
     use crate::raster::tests::{setup_of, vertex};
-    use crate::raster::variants::{with_flags, Avx2, Base, Walks};
+    use crate::raster::variants::{with_flags, Avx2Fma, Fma, Walks};
     use crate::stats::Stats;
 
     /// Draws `tris` with `plan` through level `W`'s untextured walk into an RGBA8 target
@@ -194,7 +194,7 @@ mod tests {
         let mut fragments = 0;
         for round in 0..48 {
             let mut plan = super::super::tests::plan_of_round(round);
-            plan.fma = false;
+            plan.fma = true;
             if round % 3 == 0 {
                 let func = [CompareFunc::Greater, CompareFunc::LEqual][round % 2];
                 plan.alpha = Some((func, 100));
@@ -223,7 +223,7 @@ mod tests {
                     exp_k: 1.7,
                     exp2_k: 1.3,
                     color: [0.2, 0.7, 0.4],
-                    fma: false,
+                    fma: true,
                 });
             }
             plan.separate_specular = round % 7 < 3;
@@ -245,8 +245,8 @@ mod tests {
                 });
                 tris.extend(setup_of(v, 9, plan.flat));
             }
-            let lanes = draw::<Base>(&plan, &tris);
-            let spans8 = draw::<Avx2>(&plan, &tris);
+            let lanes = draw::<Fma>(&plan, &tris);
+            let spans8 = draw::<Avx2Fma>(&plan, &tris);
             assert!(lanes.0 == spans8.0, "colour differs in round {round}");
             assert!(lanes.1 == spans8.1, "depth differs in round {round}");
             assert!(lanes.2 == spans8.2, "stencil differs in round {round}");

@@ -311,8 +311,6 @@ walks! {
     Base, base, Unfused, false, [];
     /// FMA without AVX2: fused, 128-bit.
     Fma, fma, Fused, false, [#[target_feature(enable = "fma")]];
-    /// AVX2 (and the bit instructions every AVX2 CPU has), not fused.
-    Avx2, avx2, Unfused, true, [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]];
     /// AVX2 and FMA: the common case.
     Avx2Fma, avx2fma, Fused, true, [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]];
 }
@@ -327,7 +325,6 @@ pub(crate) struct Avx512;
 
 #[cfg(target_arch = "x86_64")]
 simd_walks! {
-    Avx2, avx2_simd, fma = false, [#[target_feature(enable = "avx2,popcnt,bmi1,bmi2,lzcnt")]];
     Avx2Fma, avx2fma_simd, fma = true, [#[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]];
     Avx512, avx512_simd, fma = true, [#[target_feature(enable = "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq,popcnt,bmi1,bmi2,lzcnt")]];
 }

@@ -8,14 +8,21 @@
 //! |---|---|---|---|
 //! | `scalar` | baseline x86-64 (SSE2) | two roundings | nothing |
 //! | `fma` | baseline, with `vfmadd` | fused | FMA |
-//! | `avx2` | the 8-wide AVX2 span shaders, setup, sampler | two roundings | AVX2, POPCNT, BMI1, BMI2, LZCNT |
-//! | `avx2fma` | as `avx2`, fused | fused | the above and FMA |
+//! | `avx2fma` | the 8-wide AVX2 span shaders, setup, sampler | fused | AVX2, POPCNT, BMI1, BMI2, LZCNT, FMA |
 //! | `avx512` (default) | as `avx2fma`, the untextured span shader compiled for AVX-512 | fused | the above and AVX-512 F, BW, VL, DQ |
 //!
 //! A level is a cap: the library runs the best variant whose features the level allows
-//! *and* the CPU has, so `SOFTGL_ISA=avx2fma` on an AVX2 CPU without FMA runs `avx2`, and
+//! *and* the CPU has, so `SOFTGL_ISA=avx2fma` on an FMA CPU without AVX2 runs `fma`, and
 //! an unset (or unknown) value runs the best the CPU has. `scripts/test.sh` runs the
 //! comparisons against OSMesa under every level the CPU supports.
+//!
+//! ## Why there is no unfused AVX2 level
+//! Every x86-64 CPU with AVX2 (Intel from Haswell, AMD from Excavator) also has FMA3, so an
+//! AVX2 copy that does not fuse would run only where a virtual machine hides FMA or
+//! `SOFTGL_ISA` asks for it. It was 7.2 MB of the library's 25 MB of machine code (the
+//! raster variants are compiled once per level) and about a quarter of its release build
+//! time, so it was removed (stop 61): such a CPU runs `scalar`, which gives the same bytes
+//! as llvmpipe there, more slowly.
 //!
 //! ## Why fusing follows the level
 //! llvmpipe emits `llvm.fmuladd` for the viewport transform, attribute interpolation and
@@ -34,8 +41,6 @@ pub enum Isa {
     /// AVX2 with fused multiply-add (llvmpipe fuses `fmuladd` on such CPUs). Both AVX2
     /// variants also require POPCNT, BMI1, BMI2 and LZCNT (every AVX2 CPU has them).
     Avx2Fma,
-    /// AVX2 without fusing (FMA absent, or capped by `SOFTGL_ISA=avx2`).
-    Avx2,
     /// FMA without AVX2 (rare, or `SOFTGL_ISA=fma`); fused, 128-bit.
     Fma,
     /// Baseline x86-64 (SSE2) or another architecture; not fused.
@@ -51,7 +56,7 @@ impl Isa {
     /// Whether this is an AVX2 variant: the CPU has AVX2, POPCNT, BMI1, BMI2 and LZCNT,
     /// so code compiled for them may run.
     pub fn avx2(self) -> bool {
-        matches!(self, Isa::Avx2Fma | Isa::Avx2)
+        self == Isa::Avx2Fma
     }
 }
 
@@ -62,9 +67,7 @@ pub enum Level {
     Scalar,
     /// Baseline with fused multiply-adds.
     Fma,
-    /// AVX2 (with POPCNT, BMI1, BMI2, LZCNT), not fused.
-    Avx2,
-    /// AVX2 and FMA.
+    /// AVX2 (with POPCNT, BMI1, BMI2, LZCNT) and FMA.
     Avx2Fma,
     /// AVX2, FMA and AVX-512 F/BW/VL/DQ.
     Avx512,
@@ -90,20 +93,13 @@ impl Features {
 
 impl Level {
     /// Every level, lowest first.
-    pub const ALL: [Level; 5] = [
-        Level::Scalar,
-        Level::Fma,
-        Level::Avx2,
-        Level::Avx2Fma,
-        Level::Avx512,
-    ];
+    pub const ALL: [Level; 4] = [Level::Scalar, Level::Fma, Level::Avx2Fma, Level::Avx512];
 
     /// The level's name, as `SOFTGL_ISA` spells it.
     pub fn name(self) -> &'static str {
         match self {
             Level::Scalar => "scalar",
             Level::Fma => "fma",
-            Level::Avx2 => "avx2",
             Level::Avx2Fma => "avx2fma",
             Level::Avx512 => "avx512",
         }
@@ -125,7 +121,6 @@ impl Level {
         let (avx2, fma, avx512) = match self {
             Level::Scalar => (false, false, false),
             Level::Fma => (false, true, false),
-            Level::Avx2 => (true, false, false),
             Level::Avx2Fma => (true, true, false),
             Level::Avx512 => (true, true, true),
         };
@@ -146,7 +141,6 @@ impl Level {
         match self {
             Level::Scalar => Isa::Base,
             Level::Fma => Isa::Fma,
-            Level::Avx2 => Isa::Avx2,
             Level::Avx2Fma | Level::Avx512 => Isa::Avx2Fma,
         }
     }
@@ -286,14 +280,14 @@ mod tests {
     #[test]
     fn a_cap_keeps_only_what_the_cpu_has_too() {
         let f = |avx2, fma, avx512| Features { avx2, fma, avx512 };
-        // An AVX2 CPU without FMA capped at avx2fma runs avx2.
-        assert_eq!(Level::best_within(f(true, false, false)), Level::Avx2);
+        // An AVX2 CPU without FMA runs scalar (there is no unfused AVX2 level).
+        assert_eq!(Level::best_within(f(true, false, false)), Level::Scalar);
         assert_eq!(Level::best_within(f(false, true, false)), Level::Fma);
         assert_eq!(Level::best_within(f(true, true, false)), Level::Avx2Fma);
         assert_eq!(Level::best_within(f(true, true, true)), Level::Avx512);
         assert_eq!(Level::best_within(f(false, false, true)), Level::Scalar);
         assert_eq!(Level::Avx512.isa(), Isa::Avx2Fma);
-        assert!(Level::Fma.fused() && !Level::Avx2.fused() && !Level::Scalar.fused());
+        assert!(Level::Fma.fused() && Level::Avx2Fma.fused() && !Level::Scalar.fused());
     }
 
     #[test]
