@@ -134,16 +134,18 @@ impl Walk {
         })
     }
 
-    /// The walk of a triangle drawn with the compiled program `prog` (no texture units)
-    /// into `fb` under `plan`, whose uniform `k` is the bits `uniforms[k]`; `None` when
-    /// the target or the plan is not one the engine draws.
+    /// The walk of a triangle drawn with the compiled program `prog` into `fb` under
+    /// `plan`, whose uniform `k` is the bits `uniforms[k]` and which reads the texels of
+    /// `units` lookups ([`Walk::row`]); `None` when the target or the plan is not one the
+    /// engine draws.
     pub fn with_program(
         prog: Rc<Program>,
         plan: &FragPlan,
         uniforms: &[u32; MAX_UNIFORMS],
+        units: usize,
         fb: &Target<'_>,
     ) -> Option<Walk> {
-        if !target_ok(fb) || !super::ff::covers(plan) {
+        if !target_ok(fb) || !super::ff::covers(plan) || units > MAX_TEXTURE_UNITS {
             return None;
         }
         let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);
@@ -153,7 +155,7 @@ impl Walk {
         Some(Walk {
             st,
             prog,
-            units: 0,
+            units,
             blend: plan.blend.is_some(),
             writes: plan.color_mask != [false; 4],
             count_samples: plan.count_samples,

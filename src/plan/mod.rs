@@ -145,7 +145,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         }
         stage.min_vary = fs.nvary;
     }
-    let tex: Vec<UnitPlan<'a>> = (0..MAX_TEXTURE_UNITS)
+    let mut tex: Vec<UnitPlan<'a>> = (0..MAX_TEXTURE_UNITS)
         .filter(|_| !feedback && shader.is_none())
         .filter_map(|u| {
             let p = s.textures.unit_plan(u)?;
@@ -153,6 +153,23 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
             Some(p)
         })
         .collect();
+    // A fragment shader's texture lookups: the texture bound to the target of the
+    // sampler's type on the unit its uniform names, whatever the unit's enables; a unit
+    // out of range or an incomplete texture gives the lookup (0, 0, 0, 1).
+    let mut tex_units = [crate::shader::draw::NO_UNIT; MAX_TEXTURE_UNITS];
+    if let Some((fs, u)) = &shader {
+        for (d, lk) in tex_units.iter_mut().zip(&fs.textures) {
+            let unit = u.get(lk.unit_word).map_or(-1, |&w| w as i32);
+            let plan = usize::try_from(unit)
+                .ok()
+                .filter(|&n| n < MAX_TEXTURE_UNITS)
+                .and_then(|n| s.textures.unit_plan_target(n, lk.target));
+            if let Some(p) = plan {
+                *d = tex.len() as u8;
+                tex.push(p);
+            }
+        }
+    }
     // the offset's view of the depth buffer: its bits, or the float tag
     let depth_bits = t.depth_format.texel_bits() as i32;
     let mv_flags = s.modelview.top_flags();
@@ -194,7 +211,9 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         // The shader replaces the colour sum and fog.
         frag.separate_specular = false;
         frag.fog = None;
-        frag.shader = Some(fs.reference(u, t.height, t.y_flip));
+        let mut r = fs.reference(u, t.height, t.y_flip);
+        r.tex_units = tex_units;
+        frag.shader = Some(r);
     }
     let vertex = vert.map(|v| vertex_run(v, s, &stage, shader.map(|(f, _)| f)));
     // Filled triangles that take the polygon pipeline (stippled, offset with two-sided

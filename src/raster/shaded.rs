@@ -3,13 +3,21 @@
 //! the shader's compiled variant. A triangle whose plan or target the engine does not
 //! draw (stencil, logic op, wide or sRGB buffers …) is not drawn and is counted in
 //! `program_tris_refused`: drawing it without its shader would be wrong.
+//!
+//! The shader's texture lookups ([`crate::shader::draw::ShaderTexture`]) are sampled
+//! here, a chunk's 2x2 quads at a time, before the program runs: each coordinate is its
+//! varying's plane at the pixel times the pixel's `1 / w` (the value the program reads:
+//! the plane evaluated as llvmpipe's interpolator does, `1 / w_plane` divided once), then
+//! times `1 / q` for a projective lookup, and the draw's units sample them with the
+//! fixed-function units' samplers and level-of-detail rules (the quad's derivatives).
 
 use super::textured;
 use super::Draw;
-use crate::fragment::span::{TexLanes, LANES};
+use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
 use crate::geometry::setup::SetupTriangle;
 use crate::pipe::MAX_TEXTURE_UNITS;
-use crate::shader::draw::ShaderRef;
+use crate::shader::draw::{ShaderRef, ShaderTexture};
+use crate::texture::UnitPlan;
 
 /// No texels: a shader's walk has no units.
 const NO_TEXELS: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
@@ -19,17 +27,119 @@ const NO_TEXELS: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
 #[cold]
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
-    let (plan, fb, stats) = (d.plan, &mut *d.fb, &mut *d.stats);
+    let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let Some(mut w) = crate::shader::draw::walk(sh, plan, fb) else {
         stats.program_tris_refused += 1;
         return;
     };
+    let shader = match sh.ntex {
+        0 => None,
+        _ => match crate::shader::draw::shader_of(sh) {
+            Some(s) => Some(s),
+            None => {
+                stats.program_tris_refused += 1;
+                return;
+            }
+        },
+    };
+    let lookups = shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
+    let fused = crate::cpu::isa().fused();
+    let mut texels = [NO_TEXELS; 2];
     w.begin(t);
     for c in textured::Chunks::new(t, b) {
+        if !lookups.is_empty() {
+            let io = Lookups {
+                t,
+                lookups,
+                slots: &sh.tex_units,
+                units,
+                c: &c,
+            };
+            if fused {
+                sample_fused(&io, &mut texels);
+            } else {
+                sample::<Unfused>(&io, &mut texels);
+            }
+        }
         for (r, live) in c.live.iter().enumerate() {
             let py = (c.qy + r as i64) as usize;
-            w.row(t, fb, py, c.x as usize, live, &NO_TEXELS, stats);
+            w.row(t, fb, py, c.x as usize, live, &texels[r], stats);
         }
     }
     w.end(t, fb, stats);
+}
+
+/// What sampling a chunk's lookups reads.
+struct Lookups<'a, 'u> {
+    t: &'a SetupTriangle,
+    lookups: &'a [ShaderTexture],
+    /// Each lookup's index in `units`, or `NO_UNIT`.
+    slots: &'a [u8; MAX_TEXTURE_UNITS],
+    units: &'a [UnitPlan<'u>],
+    c: &'a textured::Chunk,
+}
+
+/// [`sample`], fused, compiled with FMA.
+fn sample_fused(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        /// # Safety
+        /// The CPU has FMA.
+        #[target_feature(enable = "fma")]
+        unsafe fn fma(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
+            sample::<Fused>(io, texels)
+        }
+        // SAFETY: the level fuses, so the CPU has FMA (`cpu::isa`).
+        unsafe { fma(io, texels) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    sample::<Fused>(io, texels)
+}
+
+/// Samples every lookup for the 2x2 quads of the chunk that hold a live pixel (see the
+/// module doc); a lookup without a complete texture gives (0, 0, 0, 1).
+#[inline(always)]
+fn sample<M: Madd>(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
+    let (t, c) = (io.t, io.c);
+    let mut oow = [[0f32; LANES]; 2];
+    for (o, &fy) in oow.iter_mut().zip(&c.fy) {
+        for (o, &fx) in o.iter_mut().zip(&c.fx) {
+            *o = 1.0f32 / eval::<M>(&t.w, fx, fy);
+        }
+    }
+    for (k, lk) in io.lookups.iter().enumerate() {
+        let Some(u) = io.units.get(usize::from(io.slots[k])) else {
+            for row in texels.iter_mut() {
+                row[k] = [[0.0, 0.0, 0.0, 1.0]; LANES];
+            }
+            continue;
+        };
+        // s, t, r, q per row and lane
+        let mut co = [[[0f32; LANES]; 2]; 4];
+        for (dst, spec) in co.iter_mut().zip(&lk.coords) {
+            let Some((v, linear)) = *spec else {
+                continue;
+            };
+            let p = &t.vary[usize::from(v)];
+            for r in 0..2 {
+                for i in 0..LANES {
+                    let a = eval::<M>(p, c.fx[i], c.fy[r]);
+                    dst[r][i] = if linear { a } else { a * oow[r][i] };
+                }
+            }
+        }
+        if lk.proj {
+            let [s, tt, rr, q] = &mut co;
+            for r in 0..2 {
+                for i in 0..LANES {
+                    let rq = 1.0f32 / q[r][i];
+                    s[r][i] *= rq;
+                    tt[r][i] *= rq;
+                    rr[r][i] *= rq;
+                }
+            }
+        }
+        let rr = if u.needs_r() { Some(&co[2]) } else { None };
+        super::sample_unit::<M>(u, k, &co[0], &co[1], rr, &c.live, texels);
+    }
 }

@@ -329,6 +329,16 @@ impl Lower<'_> {
         let mut outs = Vec::new();
         for (k, a) in args.iter().enumerate() {
             let pid = f.params[k];
+            if matches!(a.ty, Type::Sampler(_)) {
+                // A sampler parameter names the caller's sampler (a texture lookup
+                // resolves it, `texture`).
+                let hir::ExprKind::Var(id) = a.kind else {
+                    return no("a sampler argument that is not a variable");
+                };
+                let root = self.sampler_alias.get(&id).copied().unwrap_or(id);
+                self.sampler_alias.insert(pid, root);
+                continue;
+            }
             let dir = match self.p.vars[pid].storage {
                 Storage::Param(d) => d,
                 _ => hir::ParamDir::In,

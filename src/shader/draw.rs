@@ -17,6 +17,7 @@ use crate::engine::ir::{Builder, Ir, Op};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::{MAX_VARY, VARY_FOG, VARY_SPEC, VARY_TEX};
+use crate::pipe::MAX_TEXTURE_UNITS;
 use softgl_glsl::hir;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -40,6 +41,22 @@ pub struct FragShader {
     pub user: Vec<(String, usize)>,
     /// The varyings a triangle must carry (one past the highest read).
     pub nvary: usize,
+    /// The texture lookups the rasterizer samples for the program, in stream order.
+    pub textures: Vec<ShaderTexture>,
+}
+
+/// A texture lookup of a [`FragShader`] in the triangle's terms.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShaderTexture {
+    /// The uniform word holding the sampler's unit.
+    pub unit_word: usize,
+    /// The target sampled.
+    pub target: crate::texture::Target,
+    /// The triangle varyings of s, t, r (or the depth reference) and q, each with
+    /// whether it is read without the perspective divide.
+    pub coords: [Option<(u16, bool)>; 4],
+    /// s, t and r are multiplied by `1 / q`.
+    pub proj: bool,
 }
 
 impl std::fmt::Debug for FragShader {
@@ -98,6 +115,31 @@ impl FragShader {
         if let Some(s) = l.uniforms.iter().find(|s| s.name.starts_with("gl_")) {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }
+        let mut textures = Vec::new();
+        for t in &l.textures {
+            let unit_word = l
+                .uniforms
+                .iter()
+                .find(|s| s.name == t.sampler)
+                .map(|s| s.first as usize)
+                .ok_or("a sampler without its uniform")?;
+            let mut coords = [None; 4];
+            for (d, c) in coords.iter_mut().zip(t.coords) {
+                if let Some((plane, linear)) = c {
+                    let v = vary.get(usize::from(plane - FIRST_VARYING_PLANE));
+                    *d = Some((
+                        *v.ok_or("a texture coordinate without its varying")?,
+                        linear,
+                    ));
+                }
+            }
+            textures.push(ShaderTexture {
+                unit_word,
+                target: t.target,
+                coords,
+                proj: t.proj,
+            });
+        }
         let fs = Arc::new(FragShader {
             id: NEXT_ID.fetch_add(1, Relaxed),
             hir,
@@ -106,6 +148,7 @@ impl FragShader {
             vary,
             tex_coords,
             user,
+            textures,
         });
         let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
         let map = r.get_or_insert_with(HashMap::new);
@@ -125,6 +168,8 @@ impl FragShader {
             id: self.id,
             flip: y_flip.then_some(height as u32),
             uniforms: u,
+            tex_units: [NO_UNIT; MAX_TEXTURE_UNITS],
+            ntex: self.textures.len() as u8,
         }
     }
 
@@ -153,8 +198,8 @@ impl FragShader {
     }
 }
 
-/// A draw's fragment shader: its id, the target height when rows are flipped, and the
-/// uniform values (words in slot order).
+/// A draw's fragment shader: its id, the target height when rows are flipped, the
+/// uniform values (words in slot order) and where each texture lookup's unit plan is.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShaderRef {
     /// The registration id of the [`FragShader`].
@@ -163,7 +208,16 @@ pub struct ShaderRef {
     pub flip: Option<u32>,
     /// The uniform words.
     pub uniforms: [u32; MAX_UNIFORMS],
+    /// Texture lookup `k`'s plan in the draw's units, or [`NO_UNIT`] (an incomplete
+    /// texture: the lookup gives (0, 0, 0, 1)); the lookups themselves are the
+    /// registered shader's [`FragShader::textures`].
+    pub tex_units: [u8; MAX_TEXTURE_UNITS],
+    /// The number of texture lookups.
+    pub ntex: u8,
 }
+
+/// [`ShaderRef::tex_units`] of a lookup whose texture is incomplete.
+pub const NO_UNIT: u8 = u8::MAX;
 
 /// The registered shader of `id`, if it still lives.
 fn lookup(id: u64) -> Option<Arc<FragShader>> {
@@ -183,5 +237,11 @@ pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>) -> Option<Walk> {
         },
     };
     let prog = program_of(&key, || lookup(sh.id)?.variant(sh.flip, plan))?;
-    Walk::with_program(prog, plan, &sh.uniforms, fb)
+    Walk::with_program(prog, plan, &sh.uniforms, usize::from(sh.ntex), fb)
+}
+
+/// The registered shader of a draw's [`ShaderRef`] (for its texture lookups), if it
+/// still lives.
+pub fn shader_of(sh: &ShaderRef) -> Option<Arc<FragShader>> {
+    lookup(sh.id)
 }

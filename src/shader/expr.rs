@@ -92,6 +92,13 @@ impl Lower<'_> {
                 Ok(v.iter().map(|&x| self.convert(x, from, to)).collect())
             }
             ExprKind::Construct(args) => self.construct(&e.ty, args),
+            ExprKind::Builtin(f, args)
+                if args
+                    .first()
+                    .is_some_and(|a| matches!(a.ty, Type::Sampler(_))) =>
+            {
+                self.texture(&f.name, args, &e.ty)
+            }
             ExprKind::Builtin(f, args) => {
                 let mut vals = Vec::new();
                 for a in args {

@@ -21,6 +21,7 @@
 //! The arithmetic of each built-in function is llvmpipe's (see [`super::builtins`]).
 
 use super::control::{FnFrame, LoopFrame};
+pub use super::texture::TexUse;
 use crate::engine::ir::{Builder, FCmp, IOp, Ir, Op, Ty, Un, Val};
 use softgl_glsl::builtins::variables::Kind as BKind;
 use softgl_glsl::hir::{self, Const, Storage, Value, VarId};
@@ -63,6 +64,9 @@ pub struct Lowered {
     pub varyings: Vec<Slot>,
     /// The shader reads `gl_FrontFacing` (lowered as true: a draw must refuse it).
     pub front_facing: bool,
+    /// The texture lookups, in the order of their input streams (lookup `k`'s texel is
+    /// streams `4k..4k + 4`, [`Op::InputF`]).
+    pub textures: Vec<TexUse>,
 }
 
 /// What the lowering of a shader for a draw depends on besides the shader.
@@ -164,6 +168,13 @@ pub struct Lower<'p> {
     front_facing: bool,
     /// A vertex shader: inputs are attribute streams ([`Op::InputF`]).
     pub(super) vertex: bool,
+    /// The values that are a varying's component as read (its plane, and whether it is
+    /// read without the perspective divide): what a texture lookup may take.
+    pub(super) plane_vals: HashMap<Val, (u16, bool)>,
+    /// The texture lookups so far.
+    pub(super) textures: Vec<TexUse>,
+    /// Each inlined function's sampler parameters: the sampler variable passed.
+    pub(super) sampler_alias: HashMap<VarId, VarId>,
 }
 
 /// Lowers a fragment shader.
@@ -196,6 +207,7 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
         uniforms: l.uniforms,
         varyings: l.varyings,
         front_facing: l.front_facing,
+        textures: l.textures,
     })
 }
 
@@ -220,6 +232,9 @@ impl<'p> Lower<'p> {
             opts,
             front_facing: false,
             vertex,
+            plane_vals: HashMap::new(),
+            textures: Vec::new(),
+            sampler_alias: HashMap::new(),
         }
     }
 
@@ -431,12 +446,14 @@ impl Lower<'_> {
         let mut out = Vec::new();
         for k in 0..sc.len() as u16 {
             let a = self.op(Op::Interp(first + k));
-            out.push(if linear {
+            let v = if linear {
                 a
             } else {
                 let w = self.inv_w_rcp();
                 self.op(Op::Mul(a, w))
-            });
+            };
+            self.plane_vals.insert(v, (first + k, linear));
+            out.push(v);
         }
         Ok(out)
     }

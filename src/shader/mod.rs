@@ -12,7 +12,10 @@
 //! `discard`, inlined user functions, and the built-in functions of [`builtins`] with
 //! llvmpipe's arithmetic. `tests/shader_mesa.rs` draws shaders through Mesa and compares.
 //!
-//! Not yet: texture sampling, derivatives, loops whose trip count is not a constant,
+//! Texture lookups lower when their coordinates are varyings as read ([`texture`]): the
+//! rasterizer samples them with the fixed-function units' samplers before the program
+//! runs. Not yet: lookups at coordinates computed in the shader, with bias or LOD,
+//! derivatives, loops whose trip count is not a constant,
 //! `switch`, integer division and shifts, dynamic indexing on the left of `=`, the
 //! inverse trigonometric functions.
 //!
@@ -46,7 +49,7 @@
 //! Honest refusals: a draw that cannot run its program draws **nothing** and counts it
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
-//! not lower (texture sampling, derivatives …); a fragment shader that reads
+//! not lower (texture lookups at computed coordinates, derivatives …); a fragment shader that reads
 //! `gl_FrontFacing`, a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
 //! shader that reads a built-in uniform other than the modelview, projection,
@@ -66,6 +69,7 @@ mod control;
 pub mod draw;
 mod expr;
 pub mod lower;
+mod texture;
 pub mod vertex;
 pub mod vertex_draw;
 

@@ -697,8 +697,14 @@ impl TextureState {
     /// The sampling plan of `unit` for one draw; `None` when the unit is disabled or its
     /// texture incomplete.
     pub fn unit_plan(&self, unit: usize) -> Option<UnitPlan<'_>> {
+        self.unit_plan_target(unit, self.current_target(unit)?)
+    }
+
+    /// The sampling plan of the texture bound to `target` of `unit`, whatever the
+    /// unit's enables (a shader's sampler names its target); `None` when that texture is
+    /// incomplete.
+    pub fn unit_plan_target(&self, unit: usize, target: Target) -> Option<UnitPlan<'_>> {
         let u = self.units.get(unit)?;
-        let target = self.current_target(unit)?;
         let obj = self.bound(unit, target);
         let (first, last) = obj.complete_range()?;
         let p = &obj.params;

@@ -1,0 +1,208 @@
+//! Texture lookups in fragment shaders: `texture1D`/`2D`/`3D`/`Cube`, their `Proj`
+//! forms, `shadow1D`/`2D` (and `Proj`), and the 1.30 `texture`/`textureProj`, when every
+//! coordinate the lookup reads is a varying's component as read (a varying, an element
+//! of `gl_TexCoord[]`, a swizzle of one, or a local holding one).
+//!
+//! Such a lookup is what llvmpipe's fixed-function texturing is: the coordinates are the
+//! perspective-corrected planes at each pixel of a 2x2 quad (and, projected, times
+//! `1 / q`), so the rasterizer samples it before the program runs, with the same samplers
+//! and level-of-detail rules as the fixed-function units, and the program reads the
+//! texel as four f32 input streams (lookup `k`: streams `4k..4k + 4`). The sampler
+//! uniform's value picks the unit at each draw; its type picks the unit's target.
+//!
+//! Not lowered (the shader is refused): coordinates computed in the shader (their
+//! derivatives would come from the program's values), explicit bias or LOD, offsets,
+//! gradients, `texelFetch`, `textureSize`, rectangle, array, buffer, multisample,
+//! integer and cube-shadow samplers, sampler arrays, and lookups in vertex shaders.
+
+use super::lower::{no, Lower, R};
+use crate::engine::ir::{Op, Val};
+use crate::texture::Target;
+use softgl_glsl::hir::{Expr, ExprKind, Storage};
+use softgl_glsl::types::{Dim, Scalar, Type};
+
+/// One texture lookup of a lowered shader.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TexUse {
+    /// The sampler uniform's name (its value, the unit, is a uniform word).
+    pub sampler: String,
+    /// The target its type samples.
+    pub target: Target,
+    /// The varying planes of s, t, r (the depth reference of a shadow lookup) and q,
+    /// each with whether it is read without the perspective divide.
+    pub coords: [Option<(u16, bool)>; 4],
+    /// s, t and r are multiplied by `1 / q`.
+    pub proj: bool,
+}
+
+impl Lower<'_> {
+    /// Lowers the built-in lookup `name(args)` returning `ret` (see the module doc).
+    pub(super) fn texture(&mut self, name: &str, args: &[Expr], ret: &Type) -> R<Vec<Val>> {
+        if self.vertex {
+            return no("texture lookups in vertex shaders");
+        }
+        let proj = match name {
+            "texture1D" | "texture2D" | "texture3D" | "textureCube" | "shadow1D" | "shadow2D"
+            | "texture" => false,
+            "texture1DProj" | "texture2DProj" | "texture3DProj" | "shadow1DProj"
+            | "shadow2DProj" | "textureProj" => true,
+            n => return no(format!("the texture function {n}")),
+        };
+        if args.len() != 2 {
+            return no(format!("{name} with a bias"));
+        }
+        let (Type::Sampler(s), ExprKind::Var(id)) = (&args[0].ty, &args[0].kind) else {
+            return no("a sampler that is not a uniform variable");
+        };
+        let id = self.sampler_alias.get(id).copied().unwrap_or(*id);
+        let var = &self.p.vars[id];
+        if var.storage != Storage::Uniform {
+            return no("a sampler that is not a uniform variable");
+        }
+        let target = match s.dim {
+            _ if s.array || s.texel != Scalar::Float => return no(format!("{}", args[0].ty)),
+            Dim::D1 => Target::Tex1D,
+            Dim::D2 => Target::Tex2D,
+            Dim::D3 => Target::Tex3D,
+            Dim::Cube if !s.shadow => Target::Cube,
+            _ => return no(format!("{}", args[0].ty)),
+        };
+        let sampler = var.name.clone();
+        // The sampler's unit is a uniform word of the draw.
+        self.uniform_slot(&sampler, &[Scalar::Int]);
+        let c = self.expr(&args[1])?;
+        let n = c.len();
+        let two = !matches!(target, Target::Tex1D);
+        let three = matches!(target, Target::Tex3D | Target::Cube) || s.shadow;
+        let pick = [
+            Some(0),
+            two.then_some(1),
+            three.then_some(2),
+            proj.then(|| n - 1),
+        ];
+        let mut coords = [None; 4];
+        for (slot, k) in coords.iter_mut().zip(pick) {
+            if let Some(k) = k {
+                let Some(v) = c.get(k) else {
+                    return no("a texture coordinate of the wrong size");
+                };
+                let Some(&plane) = self.plane_vals.get(v) else {
+                    return no("texture coordinates computed in the shader");
+                };
+                *slot = Some(plane);
+            }
+        }
+        let lookup = TexUse {
+            sampler,
+            target,
+            coords,
+            proj,
+        };
+        let k = match self.textures.iter().position(|t| *t == lookup) {
+            Some(k) => k,
+            None => {
+                if self.textures.len() == crate::pipe::MAX_TEXTURE_UNITS {
+                    return no("more texture lookups than texture units");
+                }
+                self.textures.push(lookup);
+                self.textures.len() - 1
+            }
+        };
+        let texel: Vec<Val> = (0..4)
+            .map(|ch| self.op(Op::InputF((4 * k + ch) as u16)))
+            .collect();
+        Ok(if ret.components() == 1 {
+            vec![texel[0]]
+        } else {
+            texel
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shader::lower::{lower_fragment, FIRST_VARYING_PLANE};
+
+    fn check(src: &str) -> softgl_glsl::hir::Program {
+        softgl_glsl::compile(&[src], softgl_glsl::Stage::Fragment).expect("compiles")
+    }
+
+    #[test]
+    fn lookups_at_varyings_lower_to_input_streams() {
+        let p = check(
+            "uniform sampler2D a; uniform samplerCube c; varying vec3 d;
+             vec4 f(sampler2D s, vec2 p) { return texture2D(s, p); }
+             void main() {
+               gl_FragColor = texture2DProj(a, gl_TexCoord[1].xyw) + textureCube(c, d.zyx)
+                 + f(a, gl_TexCoord[1].xy) + texture2DProj(a, gl_TexCoord[1].xyw);
+             }",
+        );
+        let l = lower_fragment(&p).unwrap();
+        // The repeated lookup is one; the one through `f` is the sampler passed.
+        assert_eq!(l.textures.len(), 3);
+        let tc = l.varyings.iter().find(|s| s.name == "gl_TexCoord").unwrap();
+        let d = l.varyings.iter().find(|s| s.name == "d").unwrap();
+        let (t1, dd) = (tc.first + 4, d.first);
+        assert!(tc.first >= FIRST_VARYING_PLANE);
+        let at = |p: u16| Some((p, false));
+        assert_eq!(
+            l.textures[0],
+            TexUse {
+                sampler: "a".into(),
+                target: Target::Tex2D,
+                coords: [at(t1), at(t1 + 1), None, at(t1 + 3)],
+                proj: true,
+            }
+        );
+        assert_eq!(l.textures[1].target, Target::Cube);
+        assert_eq!(l.textures[1].coords, [at(dd + 2), at(dd + 1), at(dd), None]);
+        assert_eq!(l.textures[2].coords, [at(t1), at(t1 + 1), None, None]);
+        assert!(!l.textures[2].proj);
+        // Lookup k's texel is streams 4k..4k + 4.
+        let streams: Vec<u16> =
+            l.ir.ops
+                .iter()
+                .filter_map(|op| match op {
+                    Op::InputF(n) => Some(*n),
+                    _ => None,
+                })
+                .collect();
+        assert_eq!(streams, (0..12).collect::<Vec<u16>>());
+        // The samplers' units are uniform words.
+        assert!(l.uniforms.iter().any(|s| s.name == "a" && s.count == 1));
+        assert!(l.uniforms.iter().any(|s| s.name == "c" && s.count == 1));
+    }
+
+    #[test]
+    fn shadow_lookups_take_the_reference_and_1_30_returns_a_float() {
+        let p = check(
+            "#version 130
+             uniform sampler2DShadow s; out vec4 o;
+             void main() { o = vec4(texture(s, gl_TexCoord[0].stp)); }",
+        );
+        let l = lower_fragment(&p).unwrap();
+        let t0 = l.varyings[0].first;
+        let at = |p: u16| Some((p, false));
+        assert_eq!(l.textures[0].coords, [at(t0), at(t0 + 1), at(t0 + 2), None]);
+        assert_eq!(l.color[0], l.color[3], "one channel in every component");
+    }
+
+    #[test]
+    fn computed_coordinates_bias_and_vertex_lookups_are_refused() {
+        for src in [
+            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, gl_TexCoord[0].st * 2.0); }",
+            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, gl_TexCoord[0].st, 1.0); }",
+            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, vec2(0.5)); }",
+            "uniform sampler2D a[2]; void main() { gl_FragColor = texture2D(a[1], gl_TexCoord[0].st); }",
+        ] {
+            assert!(lower_fragment(&check(src)).is_err(), "{src}");
+        }
+        let v = softgl_glsl::compile(
+            &["uniform sampler2D a; void main() { gl_Position = texture2DLod(a, gl_Vertex.xy, 0.0); }"],
+            softgl_glsl::Stage::Vertex,
+        )
+        .expect("compiles");
+        assert!(crate::shader::vertex::lower_vertex(&v).is_err());
+    }
+}
