@@ -69,14 +69,14 @@ fn build(name: &str, link: Link) -> PathBuf {
     match link {
         Link::SoftGluOnMesa => {
             ours(&mut cmd);
-            cmd.arg("-lOSMesa");
+            cmd.args(["-Wl,--allow-shlib-undefined", "-lOSMesa"]);
         }
         Link::SoftGluOnSoftgl => {
             ours(&mut cmd);
             cmd.arg("-lsoftgl");
         }
         Link::SystemGluOnMesa => {
-            cmd.args(["-lGLU", "-lOSMesa"]);
+            cmd.args(["-Wl,--allow-shlib-undefined", "-lGLU", "-lOSMesa"]);
         }
     }
     let o = cmd.arg("-lm").output().expect("run cc");

@@ -157,10 +157,12 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
-    // Texture sampling does not lower: nothing drawn, counted.
+    // A texture lookup at coordinates computed in the shader does not lower: nothing
+    // drawn, counted.
     let pt = program(
         None,
-        "uniform sampler2D t; void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy); }",
+        "uniform sampler2D t;
+         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy * 2.0); }",
     );
     glUseProgram(pt);
     glRectf(-1.0, -1.0, 1.0, 1.0);
@@ -168,12 +170,25 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s4.program_draws_refused - s3.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
+    // At a varying it draws; unit 0 has no texture, so the lookup gives (0, 0, 0, 1).
+    let pu = program(
+        None,
+        "uniform sampler2D t;
+         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy) + vec4(0.0, 1.0, 0.0, 0.0); }",
+    );
+    glUseProgram(pu);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s5 = stats();
+    assert_eq!(s5.program_draws_refused, s4.program_draws_refused);
+    assert_eq!(s5.program_draws - s4.program_draws, 1);
+    assert_eq!(c.pixel(8, 8), [0, 255, 0, 255]);
+
     // glUseProgram(0): fixed function again.
     glUseProgram(0);
     glColor4f(0.0, 0.0, 1.0, 1.0);
     glRectf(-1.0, -1.0, 1.0, 1.0);
     assert_eq!(c.pixel(8, 8), [0, 0, 255, 255]);
-    assert_eq!(stats().program_draws, s4.program_draws);
+    assert_eq!(stats().program_draws, s5.program_draws);
 }
 
 #[test]

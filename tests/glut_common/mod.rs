@@ -118,7 +118,7 @@ pub fn build(src: &Path, out: &Path, gl: Gl) -> PathBuf {
                 .arg(format!("-Wl,-rpath,{}:{}", glut.display(), sg.display()));
         }
         Gl::Osmesa | Gl::SgiGlu => {
-            cmd.arg("-lOSMesa")
+            cmd.args(["-Wl,--allow-shlib-undefined", "-lOSMesa"])
                 .arg(format!("-Wl,-rpath,{}", glut.display()));
         }
     }
