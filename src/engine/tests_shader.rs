@@ -167,3 +167,54 @@ fn uniform_arithmetic_is_hoisted() {
         }
     }
 }
+
+/// Values nothing with an effect uses cost no step, and constants of the same bits share
+/// one: the lowering reads all of `gl_TexCoord[]` (32 planes, each with its perspective
+/// divide) for one `.st`, and makes a constant per use.
+#[test]
+fn dead_values_are_dropped_and_constants_shared() {
+    for isa in levels() {
+        let mut b = Builder::new();
+        let w = b.push(Op::Interp(0));
+        let one = b.f32(1.0);
+        let rw = b.push(Op::Div(one, w));
+        let mut planes = Vec::new();
+        for p in 2..34 {
+            let a = b.push(Op::Interp(p));
+            planes.push(b.push(Op::Mul(a, rw)));
+        }
+        let one_again = b.f32(1.0);
+        let s = b.push(Op::Add(planes[0], one_again));
+        let _dead = b.push(Op::Un(Un::Sqrt, planes[5]));
+        let bits = b.push(Op::Bits(s));
+        b.push(Op::StoreColor(bits));
+        let prog = compile_for(&b.finish().unwrap(), isa);
+        // prologue: the constant 1.0 once; body: w, 1/w, plane 2, the divide, the add,
+        // the bits and the store
+        assert_eq!(prog.prologue_len(), 1, "{isa:?}");
+        assert_eq!(prog.len(), 8, "{isa:?}");
+        let mut color = vec![[0u8; 4]; 8];
+        let mut planes_in = vec![[0.0f32; 3]; 34];
+        planes_in[0] = [2.0, 0.0, 0.0];
+        planes_in[2] = [3.0, 1.0, 0.0];
+        let mut io = Io {
+            planes: &planes_in,
+            inputs: &[],
+            color: &mut color,
+            depth: &mut [],
+            uniforms: &[],
+            live_out: &mut [],
+        };
+        let chunk = ChunkIn {
+            idx: 0,
+            fx: 0.0,
+            fy: 0.0,
+            live: 0xFF,
+        };
+        prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
+        for (i, c) in color.iter().enumerate() {
+            let want = (3.0 + i as f32) * (1.0f32 / 2.0) + 1.0;
+            assert_eq!(u32::from_le_bytes(*c), want.to_bits(), "{isa:?} lane {i}");
+        }
+    }
+}

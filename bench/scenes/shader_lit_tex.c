@@ -1,0 +1,136 @@
+/*
+ * shader_lit_tex.c - a GL 2.1 program: per-pixel Blinn-Phong lighting and a texture.
+ *
+ * A vertex shader passes the eye-space position and normal as varyings and
+ * the texture coordinates through gl_TexCoord[0]; a fragment shader normalises
+ * them, lights with one point light (diffuse, specular with pow, ambient) and
+ * modulates a mipmapped 128x128 RGBA8 texture sampled with texture2D
+ * (LINEAR_MIPMAP_LINEAR, REPEAT).  Each frame draws a 40x40 wavy sheet
+ * filling the view behind 9 tori, about 12,000 vertices, with depth test.
+ */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include "bench.h"
+#include "shapes.h"
+
+#define TS 128
+
+static const char *VS =
+    "varying vec3 n;\n"
+    "varying vec3 p;\n"
+    "void main() {\n"
+    "  p = vec3(gl_ModelViewMatrix * gl_Vertex);\n"
+    "  n = gl_NormalMatrix * gl_Normal;\n"
+    "  gl_TexCoord[0] = gl_MultiTexCoord0;\n"
+    "  gl_Position = ftransform();\n"
+    "}\n";
+
+static const char *FS =
+    "uniform sampler2D tex;\n"
+    "uniform vec3 light;\n"
+    "varying vec3 n;\n"
+    "varying vec3 p;\n"
+    "void main() {\n"
+    "  vec3 N = normalize(n);\n"
+    "  vec3 L = normalize(light - p);\n"
+    "  vec3 H = normalize(L + normalize(-p));\n"
+    "  float d = max(dot(N, L), 0.0);\n"
+    "  float s = pow(max(dot(N, H), 0.0), 32.0);\n"
+    "  vec4 t = texture2D(tex, gl_TexCoord[0].st);\n"
+    "  gl_FragColor = vec4(t.rgb * (0.15 + 0.85 * d) + vec3(0.6 * s), 1.0);\n"
+    "}\n";
+
+static GLuint shader(GLenum kind, const char *src)
+{
+    GLuint s = glCreateShader(kind);
+    GLint ok = 0;
+    glShaderSource(s, 1, &src, NULL);
+    glCompileShader(s);
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[1024];
+        glGetShaderInfoLog(s, sizeof log, NULL, log);
+        fprintf(stderr, "compile: %s\n", log);
+        exit(2);
+    }
+    return s;
+}
+
+static void scene_setup(int w, int h)
+{
+    static unsigned char level[2][TS * TS * 4];
+    unsigned char *src = level[0], *dst = level[1], *t;
+    GLuint prog, tex;
+    GLint ok = 0;
+    int x, y, c, size, lv;
+    BENCH_UNUSED(w, h);
+    for (y = 0; y < TS; y++)
+        for (x = 0; x < TS; x++) {
+            unsigned char *px = &src[(y * TS + x) * 4];
+            int check = ((x >> 3) ^ (y >> 3)) & 1;
+            px[0] = (unsigned char)(check ? 220 : 70 + x);
+            px[1] = (unsigned char)(check ? 200 : 60 + y);
+            px[2] = (unsigned char)(check ? 150 : 90);
+            px[3] = 255;
+        }
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (size = TS, lv = 0;; lv++) {
+        glTexImage2D(GL_TEXTURE_2D, lv, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        if (size == 1)
+            break;
+        size /= 2;
+        for (y = 0; y < size; y++)
+            for (x = 0; x < size; x++)
+                for (c = 0; c < 4; c++) {
+                    int s2 = size * 2;
+                    int sum = src[((2 * y) * s2 + 2 * x) * 4 + c] +
+                              src[((2 * y) * s2 + 2 * x + 1) * 4 + c] +
+                              src[((2 * y + 1) * s2 + 2 * x) * 4 + c] +
+                              src[((2 * y + 1) * s2 + 2 * x + 1) * 4 + c];
+                    dst[(y * size + x) * 4 + c] = (unsigned char)((sum + 2) / 4);
+                }
+        t = src;
+        src = dst;
+        dst = t;
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    prog = glCreateProgram();
+    glAttachShader(prog, shader(GL_VERTEX_SHADER, VS));
+    glAttachShader(prog, shader(GL_FRAGMENT_SHADER, FS));
+    glLinkProgram(prog);
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        fprintf(stderr, "link failed\n");
+        exit(2);
+    }
+    glUseProgram(prog);
+    glUniform1i(glGetUniformLocation(prog, "tex"), 0);
+    glUniform3f(glGetUniformLocation(prog, "light"), 1.5f, 2.0f, 1.0f);
+    glEnable(GL_DEPTH_TEST);
+    shape_perspective(0.08, 0.1, 50.0);
+    glClearColor(0.1f, 0.1f, 0.15f, 1.0f);
+}
+
+static void scene_frame(int w, int h)
+{
+    int i;
+    BENCH_UNUSED(w, h);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glLoadIdentity();
+    glTranslatef(0.0f, 0.0f, -4.0f);
+    glPushMatrix();
+    glTranslatef(0.0f, 0.0f, -1.5f);
+    glScalef(3.5f, 3.5f, 1.0f);
+    shape_sheet(40, 0.08f, 3.0f);
+    glPopMatrix();
+    for (i = 0; i < 9; i++) {
+        glPushMatrix();
+        glTranslatef(-1.2f + 1.2f * (float)(i % 3), -1.2f + 1.2f * (float)(i / 3), 0.0f);
+        glRotatef(25.0f * (float)i, 1.0f, 0.4f, 0.2f);
+        shape_torus(0.4f, 0.15f, 24, 16);
+        glPopMatrix();
+    }
+}
