@@ -281,3 +281,30 @@ fn generic_attributes_are_current_values_and_inside_begin_end_refuse() {
     assert_eq!(c.pixel(2, 2), [255, 255, 0, 255]);
     assert_eq!(stats().program_draws - s2.program_draws, 1);
 }
+
+#[test]
+fn front_facing_follows_the_winding() {
+    let c = Ctx::new();
+    c.clear();
+    let p = program(
+        None,
+        "void main() { gl_FragColor = gl_FrontFacing ? vec4(1.0, 0.0, 0.0, 1.0)
+                                                    : vec4(0.0, 1.0, 0.0, 1.0); }",
+    );
+    glUseProgram(p);
+    let before = stats();
+    // lower left counter-clockwise (front), upper right clockwise (back)
+    glBegin(GL_TRIANGLES);
+    glVertex2f(-1.0, -1.0);
+    glVertex2f(0.0, -1.0);
+    glVertex2f(-1.0, 0.0);
+    glVertex2f(1.0, 1.0);
+    glVertex2f(1.0, 0.0);
+    glVertex2f(0.0, 1.0);
+    glEnd();
+    let after = stats();
+    assert_eq!(after.program_draws - before.program_draws, 1);
+    assert_eq!(after.program_draws_refused, before.program_draws_refused);
+    assert_eq!(c.pixel(2, 2), [255, 0, 0, 255]);
+    assert_eq!(c.pixel(13, 13), [0, 255, 0, 255]);
+}

@@ -104,6 +104,11 @@ pub fn uniform_words(linked: &Linked, slots: &[Slot]) -> Option<Vec<u32>> {
     let mut out = Vec::new();
     for s in slots {
         let start = out.len();
+        if s.name == crate::shader::lower::FRONT_FACING {
+            // Not a uniform: the draw sets it per triangle.
+            out.push(0);
+            continue;
+        }
         match linked.uniforms.iter().find(|u| u.name == s.name) {
             Some(u) => {
                 out.extend(u.values.iter().take(s.count as usize));

@@ -28,7 +28,7 @@ const NO_TEXELS: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
-    let Some(mut w) = crate::shader::draw::walk(sh, plan, fb) else {
+    let Some(mut w) = crate::shader::draw::walk(sh, plan, fb, t.front) else {
         stats.program_tris_refused += 1;
         return;
     };

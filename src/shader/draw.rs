@@ -23,7 +23,7 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex, Weak};
 
-use super::lower::{lower_fragment_with, Options, Slot, FIRST_VARYING_PLANE};
+use super::lower::{lower_fragment_with, Options, Slot, FIRST_VARYING_PLANE, FRONT_FACING};
 use super::lower::{PLANE_INV_W, PLANE_Z};
 
 /// A fragment shader a draw can run: registered while it lives.
@@ -43,6 +43,8 @@ pub struct FragShader {
     pub nvary: usize,
     /// The texture lookups the rasterizer samples for the program, in stream order.
     pub textures: Vec<ShaderTexture>,
+    /// The uniform word of `gl_FrontFacing`, when the shader reads it.
+    facing: Option<u16>,
 }
 
 /// A texture lookup of a [`FragShader`] in the triangle's terms.
@@ -77,9 +79,6 @@ impl FragShader {
     /// it; `Err` says why a draw cannot run it.
     pub fn prepare(hir: Arc<hir::Program>, vertex: bool) -> Result<Arc<FragShader>, String> {
         let l = lower_fragment_with(&hir, Options::default()).map_err(|e| e.0)?;
-        if l.front_facing {
-            return Err("gl_FrontFacing is not lowered".into());
-        }
         let tex_coords = l
             .varyings
             .iter()
@@ -112,7 +111,16 @@ impl FragShader {
                 "{words} uniform components (at most {MAX_UNIFORMS})"
             ));
         }
-        if let Some(s) = l.uniforms.iter().find(|s| s.name.starts_with("gl_")) {
+        let facing = l
+            .uniforms
+            .iter()
+            .find(|s| s.name == FRONT_FACING)
+            .map(|s| s.first);
+        if let Some(s) = l
+            .uniforms
+            .iter()
+            .find(|s| s.name.starts_with("gl_") && s.name != FRONT_FACING)
+        {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }
         let mut textures = Vec::new();
@@ -149,6 +157,7 @@ impl FragShader {
             tex_coords,
             user,
             textures,
+            facing,
         });
         let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
         let map = r.get_or_insert_with(HashMap::new);
@@ -170,6 +179,7 @@ impl FragShader {
             uniforms: u,
             tex_units: [NO_UNIT; MAX_TEXTURE_UNITS],
             ntex: self.textures.len() as u8,
+            facing: self.facing,
         }
     }
 
@@ -214,6 +224,8 @@ pub struct ShaderRef {
     pub tex_units: [u8; MAX_TEXTURE_UNITS],
     /// The number of texture lookups.
     pub ntex: u8,
+    /// The uniform word of `gl_FrontFacing`, set per triangle.
+    pub facing: Option<u16>,
 }
 
 /// [`ShaderRef::tex_units`] of a lookup whose texture is incomplete.
@@ -225,9 +237,10 @@ fn lookup(id: u64) -> Option<Arc<FragShader>> {
     r.as_ref()?.get(&id)?.upgrade()
 }
 
-/// The walk of a triangle drawn with `sh` under `plan` into `fb`, or `None` when the
-/// engine does not draw this plan or target (the caller draws nothing and counts it).
-pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>) -> Option<Walk> {
+/// The walk of a triangle (`front`: it faces front) drawn with `sh` under `plan` into
+/// `fb`, or `None` when the engine does not draw this plan or target (the caller draws
+/// nothing and counts it).
+pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>, front: bool) -> Option<Walk> {
     let key = Key::Shader {
         id: sh.id,
         flip: sh.flip,
@@ -237,7 +250,11 @@ pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>) -> Option<Walk> {
         },
     };
     let prog = program_of(&key, || lookup(sh.id)?.variant(sh.flip, plan))?;
-    Walk::with_program(prog, plan, &sh.uniforms, usize::from(sh.ntex), fb)
+    let mut uniforms = sh.uniforms;
+    if let Some(k) = sh.facing {
+        uniforms[usize::from(k)] = u32::from(front);
+    }
+    Walk::with_program(prog, plan, &uniforms, usize::from(sh.ntex), fb)
 }
 
 /// The registered shader of a draw's [`ShaderRef`] (for its texture lookups), if it

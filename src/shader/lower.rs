@@ -62,7 +62,8 @@ pub struct Lowered {
     pub uniforms: Vec<Slot>,
     /// The varyings read, in the order of their planes.
     pub varyings: Vec<Slot>,
-    /// The shader reads `gl_FrontFacing` (lowered as true: a draw must refuse it).
+    /// The shader reads `gl_FrontFacing`: the uniform slot named [`FRONT_FACING`], which
+    /// the draw sets per triangle (1 for a front face).
     pub front_facing: bool,
     /// The texture lookups, in the order of their input streams (lookup `k`'s texel is
     /// streams `4k..4k + 4`, [`Op::InputF`]).
@@ -77,6 +78,10 @@ pub struct Options {
     /// it; `None`: `row + 0.5`.
     pub flip_height: Option<f32>,
 }
+
+/// The uniform slot name of `gl_FrontFacing` (not a uniform of the program: the draw
+/// sets the word per triangle).
+pub const FRONT_FACING: &str = "gl_FrontFacing";
 
 /// The elements of `gl_TexCoord[]` (unsized in the shader): `gl_MaxTextureCoords`.
 pub const TEX_COORDS: u32 = 8;
@@ -424,7 +429,11 @@ impl Lower<'_> {
             }
             "gl_FrontFacing" => {
                 self.front_facing = true;
-                return Ok(vec![self.mask(true)]);
+                let first = self.uniform_slot(FRONT_FACING, &[Scalar::Bool]);
+                let u = self.op(Op::Uniform(first));
+                let bits = self.op(Op::Bits(u));
+                let zero = self.i32(0);
+                return Ok(vec![self.op(Op::SCmp(FCmp::Ne, bits, zero))]);
             }
             _ => {}
         }

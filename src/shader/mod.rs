@@ -33,7 +33,8 @@
 //! also `gl_SecondaryColor`, `gl_FogFragCoord` and user varyings (after the texture
 //! coordinates among a vertex's varyings), `gl_FragCoord` (window position, `y` flipped
 //! for top-down rows, `z` the depth plane, `w` the interpolated `1/w`), all
-//! perspective-correct; uniforms from the program's storage at each draw, passed as run
+//! perspective-correct; `gl_FrontFacing` (the triangle's facing as culling and two-sided
+//! lighting see it, a word the walk sets per triangle); uniforms from the program's storage at each draw, passed as run
 //! inputs (a glUniform between draws takes effect; the variant cache is keyed by the
 //! shader, the plan and the row flip, never by uniform values).
 //!
@@ -50,7 +51,7 @@
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
 //! not lower (texture lookups at computed coordinates, derivatives …); a fragment shader that reads
-//! `gl_FrontFacing`, a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
+//! a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
 //! shader that reads a built-in uniform other than the modelview, projection,
 //! modelview-projection, texture and normal matrices (and their transposes, the
