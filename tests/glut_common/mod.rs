@@ -36,14 +36,16 @@ pub fn softgl_dir() -> PathBuf {
     }
 }
 
-/// Builds `libsoftglut.so` once (cargo, this test's profile); returns its folder.
+/// Builds `libsoftglut.so` once (cargo, this test's profile); returns its folder. The
+/// whole workspace, as `scripts/test.sh` builds it: `-p softglut` alone resolves other
+/// features and rebuilt softglut (about 25 s in a fresh clone) over the workspace's.
 pub fn glut_dir() -> &'static Path {
     static DIR: OnceLock<PathBuf> = OnceLock::new();
     DIR.get_or_init(|| {
         let profile = profile_dir();
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         let mut cmd = Command::new(cargo);
-        cmd.current_dir(root()).args(["build", "-p", "softglut"]);
+        cmd.current_dir(root()).args(["build", "--workspace"]);
         if profile.file_name().and_then(|n| n.to_str()) == Some("release") {
             cmd.arg("--release");
         }
