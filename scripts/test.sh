@@ -5,14 +5,31 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
-echo "test.sh: [${SECONDS}s] fmt and clippy"
 cargo fmt --all -- --check
-cargo clippy --release --workspace --all-targets -- -D warnings
-echo "test.sh: [${SECONDS}s] release build"
+# Clippy and the unit tests' (unoptimised) build run beside the release build, each in a
+# target folder of its own (cargo locks a folder per build): the release build keeps one
+# core busy for minutes of its own (the front end, local ThinLTO, the link), which they
+# fill. Their output goes to target/side-builds.log, shown if they fail.
+unit_dir=target/unit-tests
+mkdir -p target
+(
+  set -e
+  CARGO_TARGET_DIR=target/clippy cargo clippy --release --workspace --all-targets -- -D warnings
+  CARGO_TARGET_DIR=$unit_dir cargo test --profile unit --workspace --exclude softglut --lib \
+    --no-run
+) >target/side-builds.log 2>&1 &
+side=$!
+echo "test.sh: [${SECONDS}s] release build (clippy and the unit tests' build beside it)"
 cargo build --release --workspace
 # The examples have no tests; clippy (--all-targets) type-checks them all, and only the
 # level lister is needed here (bench.sh builds the benchmark runner).
 cargo build --release --example isa_levels
+if ! wait "$side"; then
+  cat target/side-builds.log
+  echo "test.sh: clippy or the unit tests' build failed (above)"
+  exit 1
+fi
+echo "test.sh: [${SECONDS}s] clippy clean, unit tests built"
 
 # The levels softgl can run here, lowest first ("scalar ... avx512"); the last is the
 # default. Every dispatched path of the library is one of them.
@@ -71,6 +88,7 @@ bash scripts/mujoco.sh --sizes 640x480 --samples 0,4 --frames 1 --min-within 99.
 cargo test --release -p softglut --lib
 for level in "${levels[@]}"; do
   echo "test.sh: [${SECONDS}s] unit tests with SOFTGL_ISA=$level"
-  SOFTGL_ISA=$level cargo test --profile unit --workspace --exclude softglut --lib
+  SOFTGL_ISA=$level CARGO_TARGET_DIR=$unit_dir cargo test --profile unit --workspace \
+    --exclude softglut --lib
 done
 echo "test.sh: [${SECONDS}s] all tests passed at the levels ${levels[*]}"

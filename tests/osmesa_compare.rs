@@ -868,6 +868,12 @@ fn run_env_args(
     let out_file = out_dir.join(format!("{name}.{}{suffix}.out", side.label()));
     let _ = fs::remove_file(&out_file);
     let mut cmd = Command::new(bin);
+    // `cargo test` puts target/<profile> on LD_LIBRARY_PATH, which wins over the binary's
+    // rpath: the library `lib_dir` chose (the newer of the uplifted copy and deps/) must
+    // be the one that runs, not a stale uplifted copy when only `cargo test` rebuilt.
+    if side == Side::Softgl {
+        cmd.env_remove("LD_LIBRARY_PATH");
+    }
     cmd.envs(env.iter().copied());
     cmd.arg(&out_file)
         .args(args)
@@ -1471,6 +1477,7 @@ fn split_geometry_keeps_images_and_counters() {
                 let out = out_dir.join(format!("split_{name}-{w}x{h}-t{threads}-s{section}.out"));
                 let _ = fs::remove_file(&out);
                 let st = Command::new(&bin)
+                    .env_remove("LD_LIBRARY_PATH")
                     .env("SOFTGL_THREADS", threads)
                     .env("SOFTGL_GEOM_SECTION", section)
                     .env("SOFTGL_STATS", "1")
@@ -1548,6 +1555,7 @@ fn bench_scenes_identical_with_threads_on_and_off() {
                 let out = out_dir.join(format!("bench_{name}-{w}x{h}-t{threads}.out"));
                 let _ = fs::remove_file(&out);
                 let st = Command::new(&bin)
+                    .env_remove("LD_LIBRARY_PATH")
                     .env("SOFTGL_THREADS", threads)
                     .arg(&out)
                     .args([w, h, 2].map(|v: u32| v.to_string()))
