@@ -13,6 +13,7 @@
 #include <GL/glext.h>
 #include "bench.h"
 #include "shapes.h"
+#include "mipmaps.h"
 
 #define TS 128
 
@@ -60,10 +61,10 @@ static GLuint shader(GLenum kind, const char *src)
 static void scene_setup(int w, int h)
 {
     static unsigned char level[2][TS * TS * 4];
-    unsigned char *src = level[0], *dst = level[1], *t;
+    unsigned char *src = level[0], *dst = level[1];
     GLuint prog, tex;
     GLint ok = 0;
-    int x, y, c, size, lv;
+    int x, y;
     BENCH_UNUSED(w, h);
     for (y = 0; y < TS; y++)
         for (x = 0; x < TS; x++) {
@@ -76,25 +77,7 @@ static void scene_setup(int w, int h)
         }
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
-    for (size = TS, lv = 0;; lv++) {
-        glTexImage2D(GL_TEXTURE_2D, lv, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
-        if (size == 1)
-            break;
-        size /= 2;
-        for (y = 0; y < size; y++)
-            for (x = 0; x < size; x++)
-                for (c = 0; c < 4; c++) {
-                    int s2 = size * 2;
-                    int sum = src[((2 * y) * s2 + 2 * x) * 4 + c] +
-                              src[((2 * y) * s2 + 2 * x + 1) * 4 + c] +
-                              src[((2 * y + 1) * s2 + 2 * x) * 4 + c] +
-                              src[((2 * y + 1) * s2 + 2 * x + 1) * 4 + c];
-                    dst[(y * size + x) * 4 + c] = (unsigned char)((sum + 2) / 4);
-                }
-        t = src;
-        src = dst;
-        dst = t;
-    }
+    mip_upload_rgba8(src, dst, TS);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     prog = glCreateProgram();
