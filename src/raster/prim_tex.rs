@@ -102,12 +102,15 @@ pub fn shade_covered<C: Cover>(t: &SetupTriangle, b: [i64; 4], cover: &C, d: &mu
         return;
     }
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
+    // The walks see the chunks through `dyn Iterator` (one indirect call per 8-pixel chunk):
+    // one copy of each walk serves every kind of coverage, instead of one per kind.
+    let mut chunks = CoverChunks::new(cover, b);
     // Level `$w`'s variant for the plan.
     macro_rules! walk {
         ($w:ty) => {
             with_flags!((plan.depth.is_some(), plan.flat, t.persp), |D, F, P| {
                 // SAFETY: `cpu::isa` only reports a variant whose features the CPU has.
-                unsafe { <$w as Walks>::covered::<C, D, F, P>(t, b, cover, plan, units, fb, stats) }
+                unsafe { <$w as Walks>::covered::<D, F, P>(t, &mut chunks, plan, units, fb, stats) }
             })
         };
     }
@@ -209,20 +212,17 @@ impl<C: Cover> Iterator for CoverChunks<'_, C> {
 pub(super) fn rows<
     M: Madd,
     const AVX2: bool,
-    C: Cover,
     const DEPTH: bool,
     const FLAT: bool,
     const PERSP: bool,
 >(
     t: &SetupTriangle,
-    b: [i64; 4],
-    cover: &C,
+    chunks: &mut dyn Iterator<Item = Chunk>,
     plan: &FragPlan,
     units: &[UnitPlan<'_>],
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    let chunks = CoverChunks::new(cover, b);
     // `AVX2` is a constant: the other levels' copies do not contain the 8-wide code.
     #[cfg(target_arch = "x86_64")]
     if AVX2 && super::textured::general_ok(plan, fb) {

@@ -17,7 +17,7 @@
 //! holds one variant's locals, and the call costs one jump per triangle.
 
 use super::prim_spans::RowSpans;
-use super::prim_tex::Cover;
+use super::textured::Chunk;
 use crate::fragment::span::{Fused, Unfused};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -135,9 +135,9 @@ macro_rules! walk_list {
                 (t: &SetupTriangle, b: [i64; 4], plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
                 => { crate::raster::multisample::rows::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// Textured rows of a line, point or stippled polygon ([`super::prim_tex`]).
-            covered [C: Cover, const DEPTH: bool, const FLAT: bool, const PERSP: bool] [C, DEPTH, FLAT, PERSP]
-                (t: &SetupTriangle, b: [i64; 4], cover: &C, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::prim_tex::rows::<M, AVX2, C, DEPTH, FLAT, PERSP> };
+            covered [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
+                (t: &SetupTriangle, chunks: &mut dyn Iterator<Item = Chunk>, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
+                => { crate::raster::prim_tex::rows::<M, AVX2, DEPTH, FLAT, PERSP> };
             /// The spans of an untextured line, point or stippled polygon through the general
             /// span shader ([`super::prim_spans`]).
             spans [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
