@@ -90,7 +90,9 @@ pub fn shade(t: &SetupTriangle, rs: &RowSpans, d: &mut Draw<'_, '_>) {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2Fma if super::simd_ok(d) => simd::<super::variants::Avx2Fma>(t, rs, d),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2Fma | Isa::Fma => general::<super::variants::Fma>(t, rs, d),
+            Isa::Avx2Fma => general::<super::variants::Avx2Fma>(t, rs, d),
+            #[cfg(target_arch = "x86_64")]
+            Isa::Fma => general::<super::variants::Fma>(t, rs, d),
             _ => general::<super::variants::Base>(t, rs, d),
         }
     }
@@ -130,15 +132,45 @@ unsafe fn simd<W: super::variants::SimdWalks>(
     })
 }
 
-/// The general walk's body: each row's span through the general span shader.
+/// The general walk's body: on an AVX2 level whose plan [`super::textured::general_ok`]
+/// accepts (the alpha test, fog, stencil, the colour sum … which the AVX2 span shader
+/// leaves), each row's span 8 pixels at a time through the 8-lane fragment shader, as
+/// untextured triangles ([`super::untextured::spans8`]); else each row's span through
+/// the general span shader. Both give the same bytes and counts.
 #[inline(always)]
-pub(super) fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+pub(super) fn rows<
+    M: Madd,
+    const AVX2: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
     t: &SetupTriangle,
     rs: &RowSpans,
     plan: &FragPlan,
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
+    // `AVX2` is a constant: the other levels' copies do not contain the 8-wide code.
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 && rs.n > 0 && super::textured::general_ok(plan, fb) {
+        let span = |py: i64| {
+            let i = (py - rs.y0) as usize;
+            (rs.lo[i] <= rs.hi[i]).then_some((rs.lo[i], rs.hi[i]))
+        };
+        let rows = (rs.y0, rs.y0 + rs.n as i64 - 1);
+        // SAFETY: `general_ok` checked AVX2; this level's copy is compiled with FMA exactly
+        // when `M::FUSED`; the caller's spans lie inside the target.
+        unsafe {
+            super::variants::with_fused!(M, |FMA| super::untextured::spans8::<
+                FMA,
+                DEPTH,
+                FLAT,
+                PERSP,
+            >(t, rows, span, plan, fb, stats))
+        }
+        return;
+    }
     for i in 0..rs.n {
         if rs.lo[i] <= rs.hi[i] {
             let s = Span::of(rs.y0 + i as i64, rs.lo[i], rs.hi[i]);
@@ -279,13 +311,59 @@ mod tests {
     /// general span shader's bytes and counts (but the blend reads').
     #[test]
     fn simd_rows_match_general_byte_for_byte() {
+        assert_rounds_match_general(0x4c49_4e45, super::super::tests::plan_of_round);
+    }
+
+    /// Lines and points whose plans the AVX2 span shader leaves (the alpha test of every
+    /// function, fog of every mode, the colour sum) through the 8-lane fragment shader
+    /// give the general span shader's bytes and counts (but the blend reads').
+    #[test]
+    fn gen_rows_match_general_byte_for_byte() {
+        use crate::fixed_function::fog::FogPlan;
+        use crate::pipe::lighting::FogMode;
+        use crate::pipe::CompareFunc;
+        assert_rounds_match_general(0x4745_4e52, |round| {
+            let mut plan = super::super::tests::plan_of_round(round);
+            let funcs = [
+                CompareFunc::Never,
+                CompareFunc::Less,
+                CompareFunc::Equal,
+                CompareFunc::LEqual,
+                CompareFunc::Greater,
+                CompareFunc::NotEqual,
+                CompareFunc::GEqual,
+                CompareFunc::Always,
+            ];
+            plan.alpha = (round % 3 != 2).then_some((funcs[round % 8], (round * 37 % 256) as u8));
+            plan.fog = (round % 3 != 0).then_some(FogPlan {
+                mode: [FogMode::Linear, FogMode::Exp, FogMode::Exp2][round / 3 % 3],
+                scale: -1.0 / 0.8,
+                bias: 0.9 / 0.8,
+                exp_k: 1.3 / std::f32::consts::LN_2,
+                exp2_k: 1.3 / std::f32::consts::LN_2.sqrt(),
+                color: [0.2, 0.5, 0.9],
+                fma: plan.fma,
+            });
+            plan.separate_specular = round % 5 == 1;
+            // The 8-lane shader takes these plans (else both sides would be per-lane).
+            let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba, DepthFormat::Z24, false);
+            assert!(super::super::textured::general_ok(&plan, &fb.target()));
+            plan
+        });
+    }
+
+    /// Draws 40 lines and 40 points of random widths, sizes and vertices (all varyings
+    /// random, the fog coordinate among them) with `plan_of(round)` for 64 rounds, through
+    /// the level's walks and through the general span shader only; asserts the same
+    /// colour, depth and counters (but the blend reads).
+    fn assert_rounds_match_general(seed: u32, plan_of: impl Fn(usize) -> FragPlan) {
         if !crate::cpu::isa().avx2() {
             return;
         }
-        let mut next = crate::test_rng::xorshift32(0x4c49_4e45);
+        let mut next = crate::test_rng::xorshift32(seed);
         let mut unit = move || next() as f32 / u32::MAX as f32;
         for round in 0..64 {
-            let plan = super::super::tests::plan_of_round(round);
+            let plan = plan_of(round);
             let persp = round % 2 == 0;
             let mut vertex = || {
                 let mut p = ClipVertex {
@@ -297,7 +375,7 @@ mod tests {
                     ],
                     ..ClipVertex::default()
                 };
-                for i in 0..4 {
+                for i in 0..=crate::geometry::VARY_FOG {
                     p.vary[i] = unit() * 1.2 - 0.1;
                 }
                 p

@@ -40,7 +40,12 @@ pub(super) fn rows_untextured<
         // when `M::FUSED`.
         unsafe {
             super::variants::with_fused!(M, |FMA| spans8::<FMA, DEPTH, FLAT, PERSP>(
-                t, b, plan, fb, stats
+                t,
+                (b[1], b[3]),
+                |py| row_span(t, b, py),
+                plan,
+                fb,
+                stats
             ))
         }
         return;
@@ -69,15 +74,24 @@ fn rows<M: Madd, const DEPTH: bool, const FLAT: bool, const PERSP: bool, const F
     }
 }
 
-/// The spans of `t` in `b`, 8 pixels at a time through `shade_row`.
+/// The spans `span(py)` of the rows `rows.0..=rows.1` (an inclusive range of pixels, or
+/// `None`) with the planes of `t`, 8 pixels at a time through `shade_row`: a triangle's
+/// rows, or a line's or point's (`super::prim_spans`).
 ///
 /// # Safety
-/// AVX2 context (FMA when `FMA`); `general_ok` accepted the plan and target.
+/// AVX2 context (FMA when `FMA`); `general_ok` accepted the plan and target; the spans lie
+/// inside the target.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn spans8<const FMA: bool, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
+pub(super) unsafe fn spans8<
+    const FMA: bool,
+    const DEPTH: bool,
+    const FLAT: bool,
+    const PERSP: bool,
+>(
     t: &SetupTriangle,
-    b: [i64; 4],
+    rows: (i64, i64),
+    mut span: impl FnMut(i64) -> Option<(i64, i64)>,
     plan: &FragPlan,
     fb: &mut Target<'_>,
     stats: &mut Stats,
@@ -93,8 +107,8 @@ unsafe fn spans8<const FMA: bool, const DEPTH: bool, const FLAT: bool, const PER
     // span, inside the target's row.
     unsafe {
         let lanes = F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
-        for py in b[1]..=b[3] {
-            let Some((lo, hi)) = row_span(t, b, py) else {
+        for py in rows.0..=rows.1 {
+            let Some((lo, hi)) = span(py) else {
                 continue;
             };
             // The span two rows down starts near this one's (as in `super::rows_simd`).

@@ -138,11 +138,12 @@ macro_rules! walk_list {
             covered [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, chunks: &mut dyn Iterator<Item = Chunk>, plan: &FragPlan, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats)
                 => { crate::raster::prim_tex::rows::<M, AVX2, DEPTH, FLAT, PERSP> };
-            /// The spans of an untextured line, point or stippled polygon through the general
-            /// span shader ([`super::prim_spans`]).
+            /// The spans of an untextured line, point or stippled polygon through the 8-lane
+            /// fragment shader where it covers the plan, else the general span shader
+            /// ([`super::prim_spans`]).
             spans [const DEPTH: bool, const FLAT: bool, const PERSP: bool] [DEPTH, FLAT, PERSP]
                 (t: &SetupTriangle, rs: &RowSpans, plan: &FragPlan, fb: &mut Target<'_>, stats: &mut Stats)
-                => { crate::raster::prim_spans::rows::<M, DEPTH, FLAT, PERSP> };
+                => { crate::raster::prim_spans::rows::<M, AVX2, DEPTH, FLAT, PERSP> };
         });
     };
 }
