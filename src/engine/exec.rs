@@ -128,16 +128,7 @@ impl Ctx<'_> {
 }
 
 /// The compare functions in the order of their codes in a step's immediate.
-pub(super) const FUNCS: [CompareFunc; 8] = [
-    CompareFunc::Never,
-    CompareFunc::Less,
-    CompareFunc::Equal,
-    CompareFunc::LEqual,
-    CompareFunc::Greater,
-    CompareFunc::NotEqual,
-    CompareFunc::GEqual,
-    CompareFunc::Always,
-];
+pub(super) const FUNCS: [CompareFunc; 8] = CompareFunc::ALL;
 
 /// The code of a compare function in a step's immediate.
 fn func_code(f: CompareFunc) -> u32 {

@@ -26,6 +26,18 @@ pub enum CompareFunc {
 }
 
 impl CompareFunc {
+    /// Every function, in the order of the GL enums (GL_NEVER 0x0200 … GL_ALWAYS 0x0207).
+    pub const ALL: [CompareFunc; 8] = [
+        CompareFunc::Never,
+        CompareFunc::Less,
+        CompareFunc::Equal,
+        CompareFunc::LEqual,
+        CompareFunc::Greater,
+        CompareFunc::NotEqual,
+        CompareFunc::GEqual,
+        CompareFunc::Always,
+    ];
+
     /// Applies the function to `incoming` vs `stored`.
     #[inline(always)]
     pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {

@@ -324,16 +324,7 @@ mod tests {
         use crate::pipe::CompareFunc;
         assert_rounds_match_general(0x4745_4e52, |round| {
             let mut plan = super::super::tests::plan_of_round(round);
-            let funcs = [
-                CompareFunc::Never,
-                CompareFunc::Less,
-                CompareFunc::Equal,
-                CompareFunc::LEqual,
-                CompareFunc::Greater,
-                CompareFunc::NotEqual,
-                CompareFunc::GEqual,
-                CompareFunc::Always,
-            ];
+            let funcs = CompareFunc::ALL;
             plan.alpha = (round % 3 != 2).then_some((funcs[round % 8], (round * 37 % 256) as u8));
             plan.fog = (round % 3 != 0).then_some(FogPlan {
                 mode: [FogMode::Linear, FogMode::Exp, FogMode::Exp2][round / 3 % 3],
