@@ -6,9 +6,13 @@
 //! that shader as triangles do: a pair of rows whose covered pixels all lie within
 //! [`NARROW`] columns (most rows of a steep line, and small points) is one 4x2 block
 //! ([`crate::fragment::simd::shade_pair`]), other rows are spans
-//! ([`crate::fragment::simd::shade_span`]). Every other plan takes the general span
-//! shader ([`crate::fragment::span::shade_span`]) row by row. The pixels a primitive
-//! covers are the caller's; each is shaded once, with what the span shaders give it.
+//! ([`crate::fragment::simd::shade_span`]). A plan it leaves that the 8-lane fragment
+//! shader covers (the alpha test, fog, stencil, the colour sum …;
+//! [`super::textured::general_ok`]) goes through that shader 8 pixels of a span at a time,
+//! as untextured triangles do ([`super::untextured::spans8`]). Every other plan, and
+//! every plan on the levels without AVX2, takes the general span shader
+//! ([`crate::fragment::span::shade_span`]) row by row. The pixels a primitive covers are
+//! the caller's; each is shaded once, with what the span shaders give it.
 
 #[cfg(target_arch = "x86_64")]
 use super::variants::with_simd_variant;
