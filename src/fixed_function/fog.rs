@@ -79,6 +79,46 @@ impl FogPlan {
         }
     }
 
+    /// [`FogPlan::factor`] of eight fog coordinates, lane by lane the same bits, when this
+    /// plan's multiply-adds fuse exactly when the caller's copy does (`self.fma == FMA`);
+    /// `None` otherwise (the caller then takes [`FogPlan::factor`] per lane).
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and FMA when `FMA`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub unsafe fn factor8<const FMA: bool>(
+        &self,
+        coord: crate::simd::F32x8,
+    ) -> Option<crate::simd::F32x8> {
+        use super::gallivm_lanes::{exp2, s, si};
+        if self.fma != FMA {
+            return None;
+        }
+        // SAFETY: (whole body) the caller's AVX2 (+FMA) context.
+        unsafe {
+            // The exponent as the scalar code has it, then `-x` as the scalar negation:
+            // the sign bit flipped, NaN included (no closure: it would lose the target
+            // features).
+            let x = match self.mode {
+                FogMode::Linear => coord.mul(s(self.scale)).add(s(self.bias)),
+                FogMode::Exp => coord.mul(s(self.exp_k)),
+                FogMode::Exp2 => {
+                    let t = coord.mul(s(self.exp2_k));
+                    t.mul(t)
+                }
+            };
+            let f = if self.mode == FogMode::Linear {
+                x
+            } else {
+                exp2::<FMA>(x.bits().xor(si(i32::MIN)).as_f32())
+            };
+            // fsat as `factor`: 0 unless f > 0 (NaN fails the compare), then min(f, 1).
+            let zero = crate::simd::F32x8::zero();
+            Some(zero.blendv(f.min(s(1.0)), f.cmp_gt(zero)))
+        }
+    }
+
     /// Blends `color` towards the fog colour with factor `f` (alpha unchanged).
     #[inline]
     pub fn apply(&self, color: [f32; 4], f: f32) -> [f32; 4] {
@@ -152,6 +192,89 @@ mod tests {
 
         let c = exp.apply([1.0, 0.5, 0.0, 0.3], 0.25);
         assert_eq!(c, [0.25, 0.125, 0.0, 0.3]);
+    }
+
+    /// `factor8` of `c` in a copy compiled with AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn factor8_fma(p: &FogPlan, c: &[f32; 8]) -> Option<[f32; 8]> {
+        // SAFETY: the caller checked AVX2 and FMA; `c` holds 8 f32.
+        unsafe { p.factor8::<true>(crate::simd::F32x8::load(c.as_ptr())) }.map(|v| v.to_array())
+    }
+
+    /// `factor8` of `c` in a copy compiled with AVX2 only.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn factor8_avx2(p: &FogPlan, c: &[f32; 8]) -> Option<[f32; 8]> {
+        // SAFETY: the caller checked AVX2; `c` holds 8 f32.
+        unsafe { p.factor8::<false>(crate::simd::F32x8::load(c.as_ptr())) }.map(|v| v.to_array())
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn factor8_is_factor_lane_by_lane() {
+        if !is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let fma_cpu = is_x86_feature_detected!("fma");
+        // Edge values, then a sweep across the polynomial's fractions and the clamps.
+        let mut coords = vec![
+            0.0,
+            -0.0,
+            1e-30,
+            -1e-30,
+            f32::MIN_POSITIVE / 4.0,
+            0.5,
+            1.0,
+            7.99,
+            -3.0,
+            1e10,
+            -1e10,
+            f32::MAX,
+            f32::NAN,
+            -f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+        ];
+        coords.extend((0..4000).map(|i| (i as f32 - 500.0) * 0.0371));
+        while coords.len() % 8 != 0 {
+            coords.push(2.0);
+        }
+        let mut checked = 0;
+        for mode in [FogMode::Linear, FogMode::Exp, FogMode::Exp2] {
+            for (density, start, end) in [(0.06, 1.0, 5.0), (1.7, -2.0, 30.0), (0.0, 3.0, 3.0)] {
+                let state = FogState {
+                    mode,
+                    density,
+                    start,
+                    end,
+                    ..FogState::default()
+                };
+                for fma in [false, true] {
+                    let p = FogPlan::new(&state, fma);
+                    for c in coords.chunks_exact(8) {
+                        let c: &[f32; 8] = c.try_into().unwrap();
+                        // SAFETY: AVX2 checked above.
+                        let plain = unsafe { factor8_avx2(&p, c) };
+                        assert_eq!(plain.is_some(), !fma);
+                        // SAFETY: AVX2 and FMA checked.
+                        let fused = fma_cpu.then(|| unsafe { factor8_fma(&p, c) });
+                        if fma_cpu {
+                            assert_eq!(fused.unwrap().is_some(), fma);
+                        }
+                        let Some(got) = plain.or(fused.flatten()) else {
+                            continue;
+                        };
+                        for (g, x) in got.iter().zip(c) {
+                            let want = p.factor(*x);
+                            assert_eq!(g.to_bits(), want.to_bits(), "{mode:?} fma {fma} at {x}");
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked >= 9 * coords.len());
     }
 
     #[test]

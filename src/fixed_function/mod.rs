@@ -9,6 +9,8 @@
 pub mod block;
 pub mod eval;
 pub mod fog;
+#[cfg(target_arch = "x86_64")]
+pub mod gallivm_lanes;
 pub mod gallivm_math;
 pub mod lighting;
 pub mod matrix;

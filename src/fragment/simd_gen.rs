@@ -9,7 +9,8 @@
 //! [`super::simd_tex`] evaluates them (fused only in the FMA variant), every unit's
 //! combiner through [`crate::texture::env::Combine::apply8`] (the scalar combiner's
 //! operations on eight lanes), the specular sum and the fog blend unfused, the fog
-//! factor per lane by [`crate::fixed_function::fog::FogPlan::factor`], `unorm8` as clamp
+//! factor on 8 lanes by [`crate::fixed_function::fog::FogPlan::factor8`] (its scalar
+//! function's bits), `unorm8` as clamp
 //! (NaN → 0), ·255 and `cvtps2dq`; depth and blending as [`super::simd`], the stencil
 //! test and its updates as [`super::simd_plane`] (8 lanes, the multisample shader's).
 //! A wide target (16-bit or float buffer) takes the float colours before the 8-bit
@@ -227,12 +228,20 @@ pub(crate) unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: boo
             }
         }
         if let Some(fog) = &plan.fog {
-            let coord = vary8::<FMA, PERSP>(t, VARY_FOG, fx, fy, oow).to_array();
-            let mut f = [0f32; LANES];
-            for i in 0..LANES {
-                f[i] = fog.factor(coord[i]);
-            }
-            let f = F32x8::load(f.as_ptr());
+            let coord = vary8::<FMA, PERSP>(t, VARY_FOG, fx, fy, oow);
+            // A `match`, not a closure: a closure loses this copy's target features.
+            let f = match fog.factor8::<FMA>(coord) {
+                Some(f) => f,
+                None => {
+                    // A plan that fuses differently from this copy: the scalar per lane.
+                    let coord = coord.to_array();
+                    let mut f = [0f32; LANES];
+                    for i in 0..LANES {
+                        f[i] = fog.factor(coord[i]);
+                    }
+                    F32x8::load(f.as_ptr())
+                }
+            };
             let gf = F32x8::splat(1.0).sub(f);
             for ch in 0..3 {
                 prev[ch] = F32x8::splat(fog.color[ch]).mul(gf).add(prev[ch].mul(f));
