@@ -278,21 +278,46 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
     oow: F32x8,
     stats: &mut Stats,
 ) {
-    let w = fb.width;
-    let n = LANES.min(w - x);
+    let n = LANES.min(fb.width - x);
     // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; loads and
     // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
     unsafe {
-        let mut live_v = row_mask(live, stats);
+        let live_v = row_mask(live, stats);
         let fx = F32x8::splat(x as f32).add(lanes_f());
         let fy = F32x8::splat(py as f32);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
-        live_v = alpha_test8(plan, px, live_v, stats);
-        let idx = (py - fb.y0) * w + x;
+        test_and_write::<FMA, DEPTH>(t, plan, g, fb, (py, x, n), (fx, fy), live_v, px, pf, stats);
+    }
+}
+
+/// The tail of [`shade_row`] and [`shade_ready_row`]: the alpha test of the colours `px`
+/// on the `live` lanes, the stencil and depth tests with their updates, and the write of
+/// the passing lanes (`pf`: the float colours a wide target stores). `at` is the row, the
+/// first pixel and the lanes inside the row; `fxy` the lanes' pixel coordinates.
+///
+/// # Safety
+/// As [`shade_row`].
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn test_and_write<const FMA: bool, const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    (py, x, n): (usize, usize, usize),
+    fxy: (F32x8, F32x8),
+    live: I32x8,
+    px: I32x8,
+    pf: Vec4,
+    stats: &mut Stats,
+) {
+    // SAFETY: (whole body) forwarded from the caller.
+    unsafe {
+        let live = alpha_test8(plan, px, live, stats);
+        let idx = (py - fb.y0) * fb.width + x;
         let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
         let sp = g.stencil.as_ref();
-        let pass =
-            stencil_depth8::<FMA, DEPTH>(t, plan, sp, st, dp, (idx, n), (fx, fy), live_v, stats);
+        let pass = stencil_depth8::<FMA, DEPTH>(t, plan, sp, st, dp, (idx, n), fxy, live, stats);
         write_row::<FMA>(plan, g, fb, idx, n, pass, px, pf, stats);
     }
 }
@@ -380,6 +405,54 @@ pub unsafe fn shade_tested_row<const FMA: bool, const FLAT: bool, const PERSP: b
         let fy = F32x8::splat(py as f32);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         write_row::<FMA>(plan, g, fb, (py - fb.y0) * w + x, n, pass, px, pf, stats);
+    }
+}
+
+/// The per-fragment operations of [`shade_row`] (alpha test, stencil and depth, blending,
+/// logic op, colour mask, store) on the `live` lanes of the 8 pixels from `x` in row
+/// `py`, whose colours are ready: `c` as unorm8 channels and `cf` the float colours a wide
+/// target stores. What [`super::span::shade_chunk`] does with
+/// [`super::span::ChunkColors::Ready`] (`ReadyWide` for a wide target): the fragments of
+/// the pixel rectangles of glDrawPixels, glCopyPixels and glBitmap.
+///
+/// # Safety
+/// As [`shade_row`] (`g` made with no units).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn shade_ready_row<const FMA: bool, const DEPTH: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    g: &GenPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: &[bool; LANES],
+    c: &[[u8; LANES]; 4],
+    cf: &[[f32; LANES]; 4],
+    stats: &mut Stats,
+) {
+    let n = LANES.min(fb.width - x);
+    // SAFETY: (whole body) AVX2 (+FMA) context guaranteed by the caller; loads and
+    // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
+    unsafe {
+        let live_v = row_mask(live, stats);
+        let fx = F32x8::splat(x as f32).add(lanes_f());
+        let fy = F32x8::splat(py as f32);
+        let mut px = I32x8::zero();
+        for (ch, bytes) in c.iter().enumerate() {
+            px = px.or(I32x8::from_u8(*bytes).shl_var(I32x8::splat(8 * ch as i32)));
+        }
+        let pf = if fb.wide.is_some() {
+            [
+                F32x8::load(cf[0].as_ptr()),
+                F32x8::load(cf[1].as_ptr()),
+                F32x8::load(cf[2].as_ptr()),
+                F32x8::load(cf[3].as_ptr()),
+            ]
+        } else {
+            [F32x8::zero(); 4]
+        };
+        test_and_write::<FMA, DEPTH>(t, plan, g, fb, (py, x, n), (fx, fy), live_v, px, pf, stats);
     }
 }
 

@@ -14,8 +14,10 @@
 //! [`setup_triangle`]), and `floor(s·w)` texel selection, so that fractional and negative
 //! zooms pick the texels llvmpipe picks. Each covered span is handed to a callback with
 //! its pixels' texels, and [`Fragments`] runs the per-fragment operations of
-//! [`shade_chunk`] on them eight pixels at a time (compiled for AVX2 where the level has
-//! it).
+//! [`shade_chunk`] on them eight pixels at a time: in AVX2 registers where the 8-lane
+//! fragment shader covers the plan and target
+//! ([`crate::fragment::simd_gen::shade_ready_row`]), else lane by lane (compiled for AVX2
+//! where the level has it).
 //!
 //! A triangle whose s plane does not vary along y and whose t plane does not vary along x
 //! (every quad the clipper leaves whole, and most of its pieces) selects the same texel
@@ -408,11 +410,52 @@ impl Fragments<'_, '_> {
         cf: &[[f32; LANES]; 4],
     ) {
         #[cfg(target_arch = "x86_64")]
-        if crate::cpu::isa().avx2() {
-            // SAFETY: the level is an AVX2 one, so the CPU has these features.
-            return unsafe { self.shade_avx2(t, py, px, live, c, cf) };
+        {
+            let isa = crate::cpu::isa();
+            if isa.avx2() && crate::fragment::simd_gen::plan_ok(self.plan, &self.target) {
+                // SAFETY: the level is the AVX2 one (`Isa::avx2`: AVX2 with FMA), so the
+                // CPU has these features; the plan and target are ones the 8-lane shader
+                // takes.
+                return unsafe { self.ready_avx2fma(t, py, px, live, c, cf) };
+            }
+            if isa.avx2() {
+                // SAFETY: the level is an AVX2 one, so the CPU has these features.
+                return unsafe { self.shade_avx2(t, py, px, live, c, cf) };
+            }
         }
         self.shade_any(t, py, px, live, c, cf)
+    }
+
+    /// [`Self::shade`] on 8 lanes ([`crate::fragment::simd_gen::shade_ready_row`]: the
+    /// same bytes and counts as [`Self::shade_any`]), compiled for AVX2 and FMA.
+    /// Multiply-adds fuse as the plan says (`FragPlan::fma`: a float blend); the z plane
+    /// of a pixel rectangle is constant, so its evaluation is the same fused or not.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, FMA, POPCNT, BMI1, BMI2 and LZCNT;
+    /// [`crate::fragment::simd_gen::plan_ok`] accepts the plan and target.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma,popcnt,bmi1,bmi2,lzcnt")]
+    unsafe fn ready_avx2fma(
+        &mut self,
+        t: &SetupTriangle,
+        py: usize,
+        px: usize,
+        live: [bool; LANES],
+        c: &[[u8; LANES]; 4],
+        cf: &[[f32; LANES]; 4],
+    ) {
+        use crate::fragment::simd_gen::{shade_ready_row, GenPlan};
+        let (p, fb, st) = (self.plan, &mut self.target, &mut *self.stats);
+        let g = GenPlan::new(p, t, &[]);
+        // SAFETY: forwarded from the caller; the chunk's live lanes lie inside row `py`.
+        unsafe {
+            if p.depth.is_some() {
+                shade_ready_row::<true, true>(t, p, &g, fb, py, px, &live, c, cf, st)
+            } else {
+                shade_ready_row::<true, false>(t, p, &g, fb, py, px, &live, c, cf, st)
+            }
+        }
     }
 
     /// [`Self::shade_any`] compiled for AVX2.
