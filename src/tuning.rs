@@ -41,8 +41,14 @@ pub const GEOM_SECTION: usize = 4096;
 pub const SPLIT_PROBE: usize = 1024;
 /// [`Tuning::ms_prefetch`]'s default: the rows below ([`MsPrefetch::Below`]).
 pub const MS_PREFETCH: MsPrefetch = MsPrefetch::Below;
-/// [`Tuning::engine`]'s default: whether the engine shades the general textured walk.
-pub const ENGINE: bool = false;
+/// [`Tuning::engine`]'s default: the engine shades the general textured walk's triangles
+/// where it was measured faster ([`Engine::Auto`]).
+pub const ENGINE: Engine = Engine::Auto;
+/// The smallest bounding box, in pixels, of a triangle [`Engine::Auto`] hands to the
+/// engine: its stage executor pays each operation's call once per batch of up to 32 chunk
+/// rows, which a triangle of a few rows does not fill (stop 55: the `fog` scene's 147k
+/// small triangles took 1.3–1.5× longer through it).
+pub const ENGINE_MIN_BOX: i64 = 1024;
 /// Pixels per chunk of glBlitFramebuffer's multisample resolve on the thread pool
 /// (`crate::pixels::resolve`): 64 Ki pixels read 1 MB of sample planes, enough to amortise
 /// a task and small enough that 1080p splits into 32 chunks for two threads to share.
@@ -82,6 +88,21 @@ pub enum MsPrefetch {
     Below,
     /// `2`: the chunk 64 pixels further along the same rows.
     Ahead,
+}
+
+/// Which triangles of the general textured walk the engine shades (`SOFTGL_ENGINE`,
+/// [`Tuning::engine`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// `0`: none; the hand-written 8-lane walk shades them all.
+    Off,
+    /// `1`: every triangle whose state lowers.
+    On,
+    /// `2`: those where it is faster (`raster::textured::engine_takes`): no early depth or
+    /// stencil test (the hand-written walk samples only the lanes that pass one), a
+    /// combiner that walk interprets (two or more units, or one unit beyond a plain
+    /// product), and a bounding box of at least [`ENGINE_MIN_BOX`] pixels.
+    Auto,
 }
 
 /// Every knob the library reads, as read from the environment (once, by [`tuning`]).
@@ -158,10 +179,10 @@ pub struct Tuning {
     /// `SOFTGL_TEX_PATH`: which texture paths are on (`general`, `array`). Default
     /// [`TexPath::Fast`]: all of them.
     pub tex_path: TexPath,
-    /// `SOFTGL_ENGINE`: whether the general textured walk shades through the engine
-    /// (`crate::engine::draw`) when the draw's state lowers. Default [`ENGINE`]; an
-    /// integer turns it on (not 0) or off (0).
-    pub engine: bool,
+    /// `SOFTGL_ENGINE`: which triangles of the general textured walk shade through the
+    /// engine (`crate::engine::draw`) when the draw's state lowers: `0` none, `1` all,
+    /// `2` where it is faster. Default [`ENGINE`].
+    pub engine: Engine,
     /// `SOFTGL_STATS`: whether a context prints its work counters when it is destroyed
     /// (the first one also prints [`Tuning::report`]). Default off; any value but `0`
     /// turns it on.
@@ -216,7 +237,12 @@ impl Tuning {
                 Some("array") => TexPath::Array,
                 _ => TexPath::Fast,
             },
-            engine: int("SOFTGL_ENGINE").map_or(ENGINE, |v| v != 0),
+            engine: match int("SOFTGL_ENGINE") {
+                Some(0) => Engine::Off,
+                Some(1) => Engine::On,
+                Some(2) => Engine::Auto,
+                _ => ENGINE,
+            },
             stats: get("SOFTGL_STATS").is_some_and(|v| v != "0"),
         }
     }
@@ -273,7 +299,7 @@ impl Tuning {
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
-            ("SOFTGL_ENGINE", on(engine)),
+            ("SOFTGL_ENGINE", (*engine as u8).to_string()),
             ("SOFTGL_STATS", on(stats)),
         ]
     }

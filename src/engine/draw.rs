@@ -80,9 +80,9 @@ pub struct Walk {
     own_uniforms: bool,
 }
 
-/// Whether the engine is on (`SOFTGL_ENGINE`).
+/// Which triangles the engine shades (`SOFTGL_ENGINE`).
 #[inline]
-pub fn enabled() -> bool {
+pub fn mode() -> crate::tuning::Engine {
     crate::tuning::tuning().engine
 }
 

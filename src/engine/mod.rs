@@ -1,7 +1,10 @@
 //! The engine (issue 42): a small typed IR for per-fragment work and the executor that
 //! runs it over 8-pixel chunks. Wired into the general textured walk: when
-//! `SOFTGL_ENGINE` is on and a draw's state lowers ([`ff`]), the rasterizer samples the
-//! units as before and hands each triangle's chunk rows with their texels to [`draw::Walk`],
+//! `SOFTGL_ENGINE` gives it the triangle (by default the large ones without an early depth
+//! or stencil test whose combiners the hand-written walk interprets:
+//! `raster::textured::engine_takes`) and the draw's state lowers ([`ff`]), the rasterizer
+//! samples the units as before and hands each triangle's chunk rows with their texels to
+//! [`draw::Walk`],
 //! which runs the state's program from the per-thread variant [`cache`] (see
 //! `docs/engine.md`). The tests check the lowered programs against the hand-written
 //! fragment functions for the same states, bytes and counters. Fragment shaders run here

@@ -391,8 +391,33 @@ pub(super) unsafe fn chunks_general<
     }
 }
 
-/// The general textured walk through the engine ([`crate::engine::draw::Walk`]) when it
-/// is on and the draw's state lowers (else `false`, and nothing is drawn): the units are
+/// Whether [`rows_engine`] shades the triangle of box `b` drawn with `plan` and `units`,
+/// by `SOFTGL_ENGINE` ([`crate::tuning::Engine`]). Where it is [`Engine::Auto`] (the
+/// default), the engine takes the triangles on which it was measured faster than the
+/// hand-written 8-lane walk (`docs/performance.md`, stop 63: `multitex_combine` 49 → 40 ms
+/// on one thread): the walk would not test depth or stencil first (it samples only the
+/// lanes that pass those tests, the engine every live lane), its combiners are ones the
+/// walk interprets per row (two or more units, or one beyond a plain product), and the
+/// box is large enough to fill the executor's batches ([`crate::tuning::ENGINE_MIN_BOX`]).
+///
+/// [`Engine::Auto`]: crate::tuning::Engine::Auto
+#[inline(always)]
+fn engine_takes(plan: &FragPlan, units: &[UnitPlan<'_>], b: [i64; 4]) -> bool {
+    use crate::tuning::{Engine, ENGINE_MIN_BOX};
+    match crate::engine::draw::mode() {
+        Engine::Off => false,
+        Engine::On => true,
+        Engine::Auto => {
+            let early = plan.alpha.is_none() && (plan.depth.is_some() || plan.stencil.is_some());
+            let interpreted = units.len() >= 2 || units.iter().any(|u| u.env.simple.is_none());
+            let area = (b[2] - b[0] + 1).saturating_mul(b[3] - b[1] + 1);
+            !early && interpreted && area >= ENGINE_MIN_BOX
+        }
+    }
+}
+
+/// The general textured walk through the engine ([`crate::engine::draw::Walk`]) when
+/// [`engine_takes`] the triangle and the draw's state lowers (else `false`, and nothing is drawn): the units are
 /// sampled as the walk that would draw the triangle today samples them (8-wide
 /// coordinates where [`general_ok`], else per lane), and the per-fragment work of each
 /// chunk row runs as the state's compiled program, a batch of rows at a time.
@@ -407,7 +432,7 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
 ) -> bool {
     use crate::fragment::span::TexLanes;
     use crate::pipe::MAX_TEXTURE_UNITS;
-    if !crate::engine::draw::enabled() {
+    if !engine_takes(plan, units, b) {
         return false;
     }
     let Some(mut w) = crate::engine::draw::Walk::new(plan, units, PERSP, fb) else {
