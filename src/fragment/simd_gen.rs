@@ -95,6 +95,21 @@ unsafe fn lanes_f() -> F32x8 {
     unsafe { F32x8::new([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]) }
 }
 
+/// The pixel coordinates of the 8 lanes of row `py` from `x`: `x + lane` and `py`, as f32.
+///
+/// # Safety
+/// AVX2 context.
+#[inline(always)]
+unsafe fn row_xy(x: usize, py: usize) -> (F32x8, F32x8) {
+    // SAFETY: the caller's AVX2 context.
+    unsafe {
+        (
+            F32x8::splat(x as f32).add(lanes_f()),
+            F32x8::splat(py as f32),
+        )
+    }
+}
+
 /// The lane mask of the bits of `m` (bit i: lane i).
 ///
 /// # Safety
@@ -283,8 +298,7 @@ pub unsafe fn shade_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, co
     // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
     unsafe {
         let live_v = row_mask(live, stats);
-        let fx = F32x8::splat(x as f32).add(lanes_f());
-        let fy = F32x8::splat(py as f32);
+        let (fx, fy) = row_xy(x, py);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
         test_and_write::<FMA, DEPTH>(t, plan, g, fb, (py, x, n), (fx, fy), live_v, px, pf, stats);
     }
@@ -351,14 +365,12 @@ pub unsafe fn test_row<const FMA: bool, const DEPTH: bool>(
     live: &[bool; LANES],
     stats: &mut Stats,
 ) -> I32x8 {
-    let w = fb.width;
-    let n = LANES.min(w - x);
+    let n = LANES.min(fb.width - x);
     // SAFETY: forwarded from the caller; the tests touch live lanes only, inside the row.
     unsafe {
         let live_v = row_mask(live, stats);
-        let fx = F32x8::splat(x as f32).add(lanes_f());
-        let fy = F32x8::splat(py as f32);
-        let idx = (py - fb.y0) * w + x;
+        let (fx, fy) = row_xy(x, py);
+        let idx = (py - fb.y0) * fb.width + x;
         let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
         stencil_depth8::<FMA, DEPTH>(
             t,
@@ -394,17 +406,25 @@ pub unsafe fn shade_tested_row<const FMA: bool, const FLAT: bool, const PERSP: b
     oow: F32x8,
     stats: &mut Stats,
 ) {
-    let w = fb.width;
-    let n = LANES.min(w - x);
+    let n = LANES.min(fb.width - x);
     // SAFETY: forwarded from the caller; the store touches the lanes of `pass` only.
     unsafe {
         if g.mask == 0 || pass.movemask() == 0 {
             return;
         }
-        let fx = F32x8::splat(x as f32).add(lanes_f());
-        let fy = F32x8::splat(py as f32);
+        let (fx, fy) = row_xy(x, py);
         let (px, pf) = colors8::<FMA, FLAT, PERSP>(t, plan, g, units, tex, fx, fy, oow);
-        write_row::<FMA>(plan, g, fb, (py - fb.y0) * w + x, n, pass, px, pf, stats);
+        write_row::<FMA>(
+            plan,
+            g,
+            fb,
+            (py - fb.y0) * fb.width + x,
+            n,
+            pass,
+            px,
+            pf,
+            stats,
+        );
     }
 }
 
@@ -436,8 +456,7 @@ pub unsafe fn shade_ready_row<const FMA: bool, const DEPTH: bool>(
     // stores touch live (passing) lanes only, which lie in `x..x + n` of row `py`.
     unsafe {
         let live_v = row_mask(live, stats);
-        let fx = F32x8::splat(x as f32).add(lanes_f());
-        let fy = F32x8::splat(py as f32);
+        let (fx, fy) = row_xy(x, py);
         let mut px = I32x8::zero();
         for (ch, bytes) in c.iter().enumerate() {
             px = px.or(I32x8::from_u8(*bytes).shl_var(I32x8::splat(8 * ch as i32)));
