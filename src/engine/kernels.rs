@@ -67,6 +67,12 @@ pub(super) trait Lanes {
     fn floor(a: Self::F) -> Self::F;
     /// `sqrtps`.
     fn sqrt(a: Self::F) -> Self::F;
+    /// gallivm's `exp2` ([`gm::exp2`]) in every lane.
+    unsafe fn exp2(a: Self::F) -> Self::F;
+    /// gallivm's `log2_safe` ([`gm::log2_safe`]) in every lane.
+    unsafe fn log2(a: Self::F) -> Self::F;
+    /// gallivm's `pow` ([`gm::pow`]) in every lane.
+    unsafe fn pow(a: Self::F, b: Self::F) -> Self::F;
     /// The bits of f32 lanes.
     fn fbits(a: Self::F) -> Self::I;
     /// i32 lanes' bits as f32.
@@ -288,25 +294,20 @@ mod body {
             Un::Sqrt => map!(|a| V::sqrt(a)),
             Un::Abs => map!(|a| V::ibits(V::and(V::fbits(a), V::splat_i(i32::MAX)))),
             Un::Neg => map!(|a| neg!(a)),
-            Un::Exp2 => per_lane!(gm::exp2),
-            Un::Log2 => per_lane!(gm::log2_safe),
+            Un::Exp2 => map!(|a| V::exp2(a)),
+            Un::Log2 => map!(|a| V::log2(a)),
             Un::Sin => per_lane!(gm::sin_or_cos, false),
             Un::Cos => per_lane!(gm::sin_or_cos, true),
         }
     }
 
-    /// gallivm's `pow`, lane by lane.
+    /// gallivm's `pow` ([`Lanes::pow`]).
     #[inline(always)]
     pub(in super::super) unsafe fn pow<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
         each!(c, k, {
-            let a = *c.reg(s.a[0], k);
-            let b = *c.reg(s.a[1], k);
-            let mut out = [0u32; 8];
-            for i in 0..8 {
-                let (x, y) = (f32::from_bits(a[i]), f32::from_bits(b[i]));
-                out[i] = gm::pow(x, y, V::FUSED).to_bits();
-            }
-            *c.reg(s.d, k) = out
+            let a = V::ld_f(c.reg(s.a[0], k));
+            let b = V::ld_f(c.reg(s.a[1], k));
+            V::st_f(c.reg(s.d, k), V::pow(a, b))
         });
     }
 

@@ -2,8 +2,9 @@
 //! of AVX2 registers: every operation of the scalar functions in the same order, lane by
 //! lane, so each lane's result is the scalar result bit for bit (the lighting lanes' and
 //! the fog factor's tests compare them). Used by the 8-vertex lighting blocks
-//! ([`super::lighting::lanes`]: `pow` for the specular and spot exponents) and the 8-lane
-//! fog factor ([`super::fog::FogPlan::factor8`]: `exp2`).
+//! ([`super::lighting::lanes`]: `pow` for the specular and spot exponents), the 8-lane
+//! fog factor ([`super::fog::FogPlan::factor8`]: `exp2`) and the engine's AVX2 kernels
+//! (a shader's `exp2`, `log2` and `pow`; `crate::engine`'s shader tests compare them).
 //!
 //! Every function here is `#[inline(always)]` and `unsafe`: it runs inside kernels
 //! compiled for AVX2 (and FMA when `FMA`), whose callers vouch for the CPU. No closures:

@@ -4,6 +4,7 @@
 
 use super::super::ir::{Blend8, FCmp, IOp};
 use super::Lanes;
+use crate::fixed_function::gallivm_lanes as gl;
 use crate::fragment::simd::{blend8, depth_pass, over8, store_masked};
 use crate::pipe::CompareFunc;
 use crate::simd::{F32x8, I32x8};
@@ -100,6 +101,21 @@ impl<const FUSED: bool> Lanes for Avx2<FUSED> {
     #[inline(always)]
     fn sqrt(a: F32x8) -> F32x8 {
         a.sqrt()
+    }
+    #[inline(always)]
+    unsafe fn exp2(a: F32x8) -> F32x8 {
+        // SAFETY: AVX2 context, with FMA when `FUSED` (the caller's promise).
+        unsafe { gl::exp2::<FUSED>(a) }
+    }
+    #[inline(always)]
+    unsafe fn log2(a: F32x8) -> F32x8 {
+        // SAFETY: as `exp2`.
+        unsafe { gl::log2_safe::<FUSED>(a) }
+    }
+    #[inline(always)]
+    unsafe fn pow(a: F32x8, b: F32x8) -> F32x8 {
+        // SAFETY: as `exp2`.
+        unsafe { gl::pow::<FUSED>(a, b) }
     }
     #[inline(always)]
     fn fbits(a: F32x8) -> I32x8 {

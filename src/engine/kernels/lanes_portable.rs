@@ -3,6 +3,7 @@
 
 use super::super::ir::{Blend8, FCmp, IOp};
 use super::Lanes;
+use crate::fixed_function::gallivm_math as gm;
 use crate::pipe::CompareFunc;
 
 /// Portable lanes; `FUSED` selects `fmuladd`'s fused form.
@@ -129,6 +130,31 @@ impl<const FUSED: bool> Lanes for Portable<FUSED> {
     #[inline(always)]
     fn sqrt(a: F) -> F {
         a.map(f32::sqrt)
+    }
+    #[inline(always)]
+    unsafe fn exp2(a: F) -> F {
+        // Loops, not closures: a closure is compiled without the kernel's features.
+        let mut out = [0.0; 8];
+        for i in 0..8 {
+            out[i] = gm::exp2(a[i], FUSED);
+        }
+        out
+    }
+    #[inline(always)]
+    unsafe fn log2(a: F) -> F {
+        let mut out = [0.0; 8];
+        for i in 0..8 {
+            out[i] = gm::log2_safe(a[i], FUSED);
+        }
+        out
+    }
+    #[inline(always)]
+    unsafe fn pow(a: F, b: F) -> F {
+        let mut out = [0.0; 8];
+        for i in 0..8 {
+            out[i] = gm::pow(a[i], b[i], FUSED);
+        }
+        out
     }
     #[inline(always)]
     fn fbits(a: F) -> I {
