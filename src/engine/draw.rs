@@ -1,11 +1,16 @@
-//! The engine in the draw path: [`Walk`] takes the rows of a triangle's chunks with the
+//! The engine in the draw path: [`Walk`] takes the rows of triangles' chunks with the
 //! units' sampled texels (the rasterizer's general textured walk samples them), gathers
 //! up to [`MAX_BATCH`] rows, and runs the state's cached program over them; it counts
 //! what the hand-written shaders count ([`Stats`]).
 //!
-//! The rows of one triangle never overlap, so deferring them to the end of a batch keeps
-//! the order of every pixel's writes; [`Walk::finish`] runs the last batch before the
-//! next triangle.
+//! One batch may hold the rows of several triangles (a shader draw's walk lives across
+//! the triangles of a band, `crate::raster::shaded`): each row names its triangle's
+//! planes. Running a batch writes its rows' pixels kernel by kernel (every row's depth,
+//! then every row's colour), so two rows of one batch must not share a pixel: a row of
+//! one triangle never overlaps another row of the same triangle, and a row that would
+//! overlap a pending row of an earlier triangle runs the batch first ([`Walk::row`]).
+//! So every pixel sees its fragments in primitive order, as drawing triangle by triangle
+//! does; [`Walk::end`] runs the last batch.
 
 use super::cache;
 use super::exec::{ChunkIn, Io, Program, Scratch, MAX_BATCH};
@@ -27,7 +32,13 @@ const STREAMS: usize = 4 * MAX_TEXTURE_UNITS;
 /// The uniform words a program's walk passes at most ([`Walk::with_program`]).
 pub const MAX_UNIFORMS: usize = 64;
 
-/// A walk's buffers, kept per thread between triangles.
+/// The planes of one triangle at most.
+const SET: usize = 2 + MAX_VARY;
+
+// A fixed-function walk's uniforms are its triangle's flat varyings.
+const _: () = assert!(MAX_VARY <= MAX_UNIFORMS);
+
+/// A walk's buffers, kept per thread between walks.
 struct State {
     scratch: Scratch,
     chunks: [ChunkIn; MAX_BATCH],
@@ -36,11 +47,29 @@ struct State {
     live_out: [u8; MAX_BATCH],
     /// Stream s of chunk k at `s * MAX_BATCH + k`.
     streams: Vec<[u32; 8]>,
-    planes: [[f32; 3]; 2 + MAX_VARY],
-    /// A program walk's uniforms ([`Walk::with_program`]).
+    /// The plane sets of the batch's triangles, `set` planes each (the last one is the
+    /// current triangle's).
+    planes: Vec<[f32; 3]>,
+    /// Plane sets in `planes`.
+    sets: usize,
+    /// The first chunk of the current triangle (the chunks before it are earlier
+    /// triangles').
+    first: usize,
+    /// The program's uniforms.
     uniforms: [f32; MAX_UNIFORMS],
     len: usize,
+    /// The pending chunks' pixels: per 8-pixel block of the buffers (its index / 8, plus
+    /// one; 0 is an empty slot) the lanes covered, by open addressing. A chunk covers at
+    /// most two blocks, so a full batch fills at most half the table.
+    cover: [(usize, u8); COVER],
+    /// The slots of `cover` in use.
+    used: [u8; 2 * MAX_BATCH],
+    nused: usize,
 }
+
+/// Slots of [`State::cover`].
+const COVER: usize = 4 * MAX_BATCH;
+const _: () = assert!(COVER <= 256);
 
 impl State {
     fn new() -> Box<State> {
@@ -49,6 +78,7 @@ impl State {
             fx: 0.0,
             fy: 0.0,
             live: 0,
+            planes: 0,
         };
         Box::new(State {
             scratch: Scratch::default(),
@@ -56,10 +86,67 @@ impl State {
             ns: [0; MAX_BATCH],
             live_out: [0; MAX_BATCH],
             streams: vec![[0; 8]; STREAMS * MAX_BATCH],
-            planes: [[0.0; 3]; 2 + MAX_VARY],
+            planes: vec![[0.0; 3]; SET * MAX_BATCH],
+            sets: 0,
+            first: 0,
             uniforms: [0.0; MAX_UNIFORMS],
             len: 0,
+            cover: [(0, 0); COVER],
+            used: [0; 2 * MAX_BATCH],
+            nused: 0,
         })
+    }
+
+    /// Whether a pending chunk covers a pixel of the chunk at `idx` with lanes `live`
+    /// (when not, the chunk's pixels become pending).
+    #[inline]
+    fn claim(&mut self, idx: usize, live: u8) -> bool {
+        // The chunk's lanes in the 8-pixel blocks `idx / 8` and the one after.
+        let m = u16::from(live) << (idx % 8);
+        let blocks = [(idx / 8, m as u8), (idx / 8 + 1, (m >> 8) as u8)];
+        for &(b, lanes) in &blocks {
+            if lanes != 0 && self.cover_of(b).1 & lanes != 0 {
+                return true;
+            }
+        }
+        for &(b, lanes) in &blocks {
+            if lanes != 0 {
+                let (slot, _) = self.cover_of(b);
+                if self.cover[slot].0 == 0 {
+                    self.cover[slot].0 = b + 1;
+                    self.used[self.nused] = slot as u8;
+                    self.nused += 1;
+                }
+                self.cover[slot].1 |= lanes;
+            }
+        }
+        false
+    }
+
+    /// The slot of block `b` in [`State::cover`] (its own or the empty one where it
+    /// would go) and its pending lanes.
+    #[inline]
+    fn cover_of(&self, b: usize) -> (usize, u8) {
+        let mut slot = (b.wrapping_mul(0x9E37_79B9) >> 7) % COVER;
+        loop {
+            let (key, lanes) = self.cover[slot];
+            if key == b + 1 {
+                return (slot, lanes);
+            }
+            if key == 0 {
+                return (slot, 0);
+            }
+            slot = (slot + 1) % COVER;
+        }
+    }
+
+    /// Forgets the pending pixels (the batch has run).
+    #[inline]
+    fn clear_cover(&mut self) {
+        for &slot in &self.used[..self.nused] {
+            self.cover[usize::from(slot)] = (0, 0);
+        }
+        self.nused = 0;
     }
 }
 
@@ -68,10 +155,13 @@ thread_local! {
     static STATE: std::cell::Cell<Option<Box<State>>> = const { std::cell::Cell::new(None) };
 }
 
-/// One triangle's walk through the engine (see the module doc).
+/// A walk through the engine of one triangle, or of consecutive triangles of one program
+/// (see the module doc).
 pub struct Walk {
     st: Box<State>,
     prog: Rc<Program>,
+    /// Planes per triangle: those the program reads.
+    set: usize,
     units: usize,
     blend: bool,
     writes: bool,
@@ -125,6 +215,7 @@ impl Walk {
         let st = STATE.with(|s| s.take()).unwrap_or_else(State::new);
         Some(Walk {
             st,
+            set: prog.planes().clamp(1, SET),
             prog,
             units: units.len(),
             blend: plan.blend.is_some(),
@@ -154,6 +245,7 @@ impl Walk {
         }
         Some(Walk {
             st,
+            set: prog.planes().clamp(1, SET),
             prog,
             units,
             blend: plan.blend.is_some(),
@@ -163,19 +255,37 @@ impl Walk {
         })
     }
 
-    /// Starts triangle `t` (its planes become the program's).
+    /// Starts triangle `t`: its planes (and for a fixed-function walk its flat
+    /// varyings, the program's uniforms) become those of its rows. A fixed-function walk
+    /// draws one triangle ([`Walk::end`] after its rows).
     #[inline]
-    pub fn begin(&mut self, t: &SetupTriangle) {
-        self.st.planes = planes_of(t);
+    pub fn begin(&mut self, t: &SetupTriangle, fb: &mut Target<'_>, stats: &mut Stats) {
+        if self.st.sets == MAX_BATCH {
+            self.flush(fb, stats);
+            self.st.sets = 0;
+        }
+        let st = &mut *self.st;
+        if st.sets > 0 && st.first == st.len {
+            // The previous triangle left no rows: its set is free.
+            st.sets -= 1;
+        }
+        let all = planes_of(t);
+        let at = st.sets * self.set;
+        st.planes[at..at + self.set].copy_from_slice(&all[..self.set]);
+        st.sets += 1;
+        st.first = st.len;
+        if !self.own_uniforms {
+            st.uniforms[..MAX_VARY].copy_from_slice(&t.flat);
+        }
     }
 
-    /// Adds the row of 8 pixels from `x` in row `py` with its `live` lanes and the units'
-    /// texels `tex`; runs the batch when it is full.
+    /// Adds the row of 8 pixels from `x` in row `py` of the current triangle with its
+    /// `live` lanes and the units' texels `tex`; runs the batch first when a pending row
+    /// of an earlier triangle shares a pixel with it, and after it when the batch is full.
     #[inline]
     #[allow(clippy::too_many_arguments)]
     pub fn row(
         &mut self,
-        t: &SetupTriangle,
         fb: &mut Target<'_>,
         py: usize,
         x: usize,
@@ -190,14 +300,20 @@ impl Walk {
         if bits == 0 {
             return;
         }
+        let idx = (py - fb.y0) * fb.width + x;
+        if self.st.claim(idx, bits) {
+            self.flush(fb, stats);
+            self.st.claim(idx, bits);
+        }
         stats.fragments += u64::from(bits.count_ones());
         let st = &mut *self.st;
         let k = st.len;
         st.chunks[k] = ChunkIn {
-            idx: (py - fb.y0) * fb.width + x,
+            idx,
             fx: x as f32,
             fy: py as f32,
             live: bits,
+            planes: ((st.sets - 1) * self.set) as u32,
         };
         st.ns[k] = LANES.min(fb.width - x) as u8;
         for (u, lanes) in tex.iter().enumerate().take(self.units) {
@@ -210,18 +326,31 @@ impl Walk {
         }
         st.len += 1;
         if st.len == MAX_BATCH {
-            self.flush(t, fb, stats);
+            self.flush(fb, stats);
         }
     }
 
-    /// Runs the gathered rows and counts their work.
-    fn flush(&mut self, t: &SetupTriangle, fb: &mut Target<'_>, stats: &mut Stats) {
+    /// Runs the gathered rows and counts their work; the current triangle's planes
+    /// become the batch's first set.
+    fn flush(&mut self, fb: &mut Target<'_>, stats: &mut Stats) {
+        if self.st.len != 0 {
+            self.run(fb, stats);
+        }
+        let st = &mut *self.st;
+        st.clear_cover();
+        st.len = 0;
+        st.first = 0;
+        if st.sets > 1 {
+            let at = (st.sets - 1) * self.set;
+            st.planes.copy_within(at..at + self.set, 0);
+            st.sets = 1;
+        }
+    }
+
+    /// Runs the gathered rows (at least one) and counts their work.
+    fn run(&mut self, fb: &mut Target<'_>, stats: &mut Stats) {
         let st = &mut *self.st;
         let n = st.len;
-        if n == 0 {
-            return;
-        }
-        st.len = 0;
         let mut inputs: [&[[u32; 8]]; STREAMS] = [&[]; STREAMS];
         for (s, i) in inputs.iter_mut().enumerate().take(4 * self.units) {
             *i = &st.streams[s * MAX_BATCH..s * MAX_BATCH + n];
@@ -231,11 +360,7 @@ impl Walk {
             inputs: &inputs[..4 * self.units],
             color: &mut *fb.color,
             depth: &mut *fb.depth,
-            uniforms: if self.own_uniforms {
-                &st.uniforms
-            } else {
-                &t.flat
-            },
+            uniforms: &st.uniforms,
             live_out: &mut st.live_out[..n],
         };
         let c = self.prog.run(&mut st.scratch, &mut io, &st.chunks[..n], n);
@@ -256,10 +381,11 @@ impl Walk {
         }
     }
 
-    /// Runs the last rows of triangle `t` and gives the buffers back to the thread.
+    /// Runs the last rows and gives the buffers back to the thread.
     #[inline]
-    pub fn end(mut self, t: &SetupTriangle, fb: &mut Target<'_>, stats: &mut Stats) {
-        self.flush(t, fb, stats);
+    pub fn end(mut self, fb: &mut Target<'_>, stats: &mut Stats) {
+        self.flush(fb, stats);
+        self.st.sets = 0;
         STATE.with(|s| s.set(Some(self.st)));
     }
 }

@@ -37,7 +37,9 @@ pub struct Step {
 }
 
 /// One chunk of 8 pixels: its first pixel's index in the colour and depth buffers, its
-/// first pixel's x and its y as f32, and its live lanes (bit i = lane i).
+/// first pixel's x and its y as f32, its live lanes (bit i = lane i) and where its
+/// triangle's planes start in the run's planes (one run may hold the chunks of several
+/// triangles).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChunkIn {
     /// Index of lane 0 in the buffers.
@@ -48,11 +50,14 @@ pub struct ChunkIn {
     pub fy: f32,
     /// Covered lanes.
     pub live: u8,
+    /// The index in [`Io::planes`] of the chunk's plane 0.
+    pub planes: u32,
 }
 
 /// What a run reads and writes besides its chunks.
 pub struct Io<'a> {
-    /// The planes [`Op::Interp`] evaluates: `[a0, dadx, dady]`.
+    /// The planes [`Op::Interp`] evaluates, `[a0, dadx, dady]`: plane `p` of a chunk is
+    /// `planes[chunk.planes + p]`.
     pub planes: &'a [[f32; 3]],
     /// The input streams [`Op::Input`] reads: one 8-lane value per chunk of the run.
     pub inputs: &'a [&'a [[u32; 8]]],
@@ -434,6 +439,11 @@ impl Program {
         self.len() == 0
     }
 
+    /// The planes it reads: one more than the highest [`Op::Interp`] index (0 for none).
+    pub fn planes(&self) -> usize {
+        self.planes
+    }
+
     /// The register slots it needs per chunk.
     pub fn slots(&self) -> usize {
         self.slots
@@ -458,7 +468,7 @@ impl Program {
             self.outputs == 0,
             "a program with outputs runs by run_streams"
         );
-        assert!(io.planes.len() >= self.planes && io.inputs.len() >= self.inputs);
+        assert!(io.inputs.len() >= self.inputs);
         assert!(io.uniforms.len() >= self.uniforms);
         let live_out = io.live_out.len() >= chunks.len();
         assert!(io.inputs.iter().all(|s| s.len() >= chunks.len()));
@@ -469,6 +479,7 @@ impl Program {
                 "chunk outside the colour buffer"
             );
             assert!(c.live == 0 || io.depth.is_empty() || end <= io.depth.len());
+            assert!(c.planes as usize + self.planes <= io.planes.len());
         }
         if self.depth {
             assert!(chunks.iter().all(|c| c.live == 0 || !io.depth.is_empty()));
@@ -559,6 +570,7 @@ impl Program {
             fx: 0.0,
             fy: 0.0,
             live: 0xFF,
+            planes: 0,
         }; MAX_BATCH];
         let need = self.slots * MAX_BATCH;
         if scratch.regs.len() < need {

@@ -188,11 +188,10 @@ mod body {
     /// A plane at the pixels: `fmuladd(dady, y, fmuladd(dadx, x, a0))`.
     #[inline(always)]
     pub(in super::super) unsafe fn interp<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
-        let [a0, dx, dy] = c.planes[s.imm as usize];
-        // SAFETY: the kernel runs with its backend's features.
-        let (a0, dx, dy) = unsafe { (V::splat_f(a0), V::splat_f(dx), V::splat_f(dy)) };
         each!(c, k, {
             let ch = c.chunk(k);
+            let [a0, dx, dy] = c.planes[ch.planes as usize + s.imm as usize];
+            let (a0, dx, dy) = (V::splat_f(a0), V::splat_f(dx), V::splat_f(dy));
             let v = V::mad(dy, V::splat_f(ch.fy), V::mad(dx, V::lane_x(ch.fx), a0));
             V::st_f(c.reg(s.d, k), v)
         });

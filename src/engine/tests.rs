@@ -107,6 +107,7 @@ impl Case {
                     .iter()
                     .enumerate()
                     .fold(0, |m, (i, &l)| m | (l as u8) << i),
+                planes: 0,
             })
             .collect()
     }
@@ -411,6 +412,7 @@ pub(super) fn eval_f32(
         fx: 0.0,
         fy: 0.0,
         live: 0xFF,
+        planes: 0,
     };
     let mut io = Io {
         planes: &planes,

@@ -151,6 +151,98 @@ fn today(
     }
 }
 
+/// Round `round`'s case of `h` rows (flat varyings set) and its texels, as samplers give
+/// them: unorm8 values, some exact 0 and 1.
+fn round_case(round: u32, h: usize) -> (Case, Vec<TexLanes>) {
+    let mut c = Case::new(round.wrapping_mul(7919) + 1, 27, h, round.is_multiple_of(3));
+    for (k, f) in c.t.flat.iter_mut().enumerate() {
+        *f = (k as f32 * 0.37).fract();
+    }
+    let mut bits = crate::test_rng::xorshift32(round + 99);
+    let tex: Vec<TexLanes> = c
+        .chunks
+        .iter()
+        .map(|_| {
+            let mut t: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
+            for u in t.iter_mut() {
+                for l in u.iter_mut() {
+                    *l = std::array::from_fn(|_| (bits() % 256) as f32 / 255.0);
+                }
+            }
+            t
+        })
+        .collect();
+    (c, tex)
+}
+
+/// The case's framebuffer before drawing, its depth in the plan's format.
+fn fresh(c: &Case, plan: &FragPlan) -> Framebuffer {
+    let format = plan.depth.map_or(DepthFormat::Z24, |d| d.format);
+    let mut fb = Framebuffer::new(c.w, c.h, ColorFormat::Rgba, format, false);
+    fb.color.copy_from_slice(&c.color);
+    for (d, &v) in fb.depth.iter_mut().zip(&c.depth) {
+        *d = match format {
+            DepthFormat::Z16 => v & 0xFFFF,
+            DepthFormat::Z32F => (v as f32 / 16_777_215.0).to_bits(),
+            _ => v,
+        };
+    }
+    fb
+}
+
+/// Draws the case's triangle `times` times through the engine (the k-th with its depth
+/// and varyings moved by k steps; with `split` only the chunks `i` with `i % times == k`,
+/// so that no two triangles share a pixel): one walk for them all (`one`), or one walk per
+/// triangle; `None` when the plan does not lower.
+#[allow(clippy::too_many_arguments)]
+fn walks(
+    c: &Case,
+    plan: &FragPlan,
+    units: &[UnitPlan<'_>],
+    tex: &[TexLanes],
+    persp: bool,
+    times: usize,
+    one: bool,
+    split: bool,
+) -> Option<(Framebuffer, Stats)> {
+    let mut fb = fresh(c, plan);
+    let mut stats = Stats::default();
+    {
+        let mut target = fb.target();
+        let mut w = Walk::new(plan, units, persp, &target)?;
+        for k in 0..times {
+            if k > 0 && !one {
+                w.end(&mut target, &mut stats);
+                w = Walk::new(plan, units, persp, &target)?;
+            }
+            // Each triangle's planes its own (a row reading another's would show).
+            let mut t = c.t.clone();
+            t.z.a0 -= 0.01 * k as f32;
+            for v in t.vary.iter_mut() {
+                v.a0 += 0.05 * k as f32;
+            }
+            w.begin(&t, &mut target, &mut stats);
+            for (i, (&(y, x, live), tx)) in c.chunks.iter().zip(tex).enumerate() {
+                if !split || i % times == k {
+                    w.row(&mut target, y, x, &live, tx, &mut stats);
+                }
+            }
+        }
+        w.end(&mut target, &mut stats);
+    }
+    Some((fb, stats))
+}
+
+/// Asserts that two drawings left the same colour and depth bytes and counters.
+fn same(what: &str, got: (&Framebuffer, &Stats), want: (&Framebuffer, &Stats)) {
+    assert!(
+        got.0.color[..] == want.0.color[..],
+        "{what}: colours differ"
+    );
+    assert!(got.0.depth[..] == want.0.depth[..], "{what}: depths differ");
+    assert_eq!(got.1, want.1, "{what}: counters differ");
+}
+
 /// Random states through the engine's walk and through `shade_chunk`: the same colour
 /// and depth bytes and the same counters.
 #[test]
@@ -161,67 +253,49 @@ fn walk_matches_shade_chunk_on_random_states() {
     for round in 0..300u32 {
         let (plan, units) = random_state(&mut pick);
         let persp = round % 2 == 0;
-        let mut c = Case::new(round.wrapping_mul(7919) + 1, 27, 9, round % 3 == 0);
-        for (k, f) in c.t.flat.iter_mut().enumerate() {
-            *f = (k as f32 * 0.37).fract();
-        }
-        // Texel values as samplers give them: unorm8 values, some exact 0 and 1.
-        let mut bits = crate::test_rng::xorshift32(round + 99);
-        let tex: Vec<TexLanes> = c
-            .chunks
-            .iter()
-            .map(|_| {
-                let mut t: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
-                for u in t.iter_mut() {
-                    for l in u.iter_mut() {
-                        *l = std::array::from_fn(|_| (bits() % 256) as f32 / 255.0);
-                    }
-                }
-                t
-            })
-            .collect();
-        let format = plan.depth.map_or(DepthFormat::Z24, |d| d.format);
-        let fresh = || {
-            let mut fb = Framebuffer::new(c.w, c.h, ColorFormat::Rgba, format, false);
-            fb.color.copy_from_slice(&c.color);
-            for (d, &v) in fb.depth.iter_mut().zip(&c.depth) {
-                *d = match format {
-                    DepthFormat::Z16 => v & 0xFFFF,
-                    DepthFormat::Z32F => (v as f32 / 16_777_215.0).to_bits(),
-                    _ => v,
-                };
-            }
-            fb
-        };
-        let mut want_fb = fresh();
+        let (c, tex) = round_case(round, 9);
+        let mut want_fb = fresh(&c, &plan);
         let want = today(&c, &plan, &units, &tex, persp, &mut want_fb);
-        let mut got_fb = fresh();
-        let mut got = Stats::default();
-        {
-            let mut target = got_fb.target();
-            let Some(mut w) = Walk::new(&plan, &units, persp, &target) else {
-                panic!("{plan:?} does not lower");
-            };
-            w.begin(&c.t);
-            for (&(y, x, live), tx) in c.chunks.iter().zip(&tex) {
-                w.row(&c.t, &mut target, y, x, &live, tx, &mut got);
-            }
-            w.end(&c.t, &mut target, &mut got);
-        }
+        let Some((got_fb, got)) = walks(&c, &plan, &units, &tex, persp, 1, true, false) else {
+            panic!("{plan:?} does not lower");
+        };
         lowered += 1;
         let what = format!(
             "round {round}: {plan:?} {:?}",
             units.iter().map(|u| u.env).collect::<Vec<_>>()
         );
-        assert!(
-            got_fb.color[..] == want_fb.color[..],
-            "{what}: colours differ"
-        );
-        assert!(
-            got_fb.depth[..] == want_fb.depth[..],
-            "{what}: depths differ"
-        );
-        assert_eq!(got, want, "{what}: counters differ");
+        same(&what, (&got_fb, &got), (&want_fb, &want));
     }
     assert_eq!(lowered, 300);
+}
+
+/// One walk over several triangles (a shader draw's batches) against a walk per
+/// triangle: three triangles with planes of their own, either each over the whole case,
+/// so that every row of the second and third overlaps a pending row and must wait for it
+/// (blending reads what the earlier one wrote), or on disjoint chunks, so that the rows
+/// of all three share a batch. The same bytes and counters.
+#[test]
+fn one_walk_over_overlapping_triangles_matches_a_walk_each() {
+    let mut next = crate::test_rng::xorshift32(0x5eed_0b47);
+    let mut pick = |n: u32| (next() % n) as usize;
+    let mut blended = 0;
+    for round in 0..200u32 {
+        let (plan, units) = random_state(&mut pick);
+        let persp = round % 2 == 1;
+        // Fewer chunks than a batch holds: the second triangle's first row meets the
+        // first triangle's pending rows.
+        let (c, tex) = round_case(round + 1000, 5);
+        assert!(c.chunks.len() < super::exec::MAX_BATCH);
+        let split = round % 4 < 2;
+        let (Some((want_fb, want)), Some((got_fb, got))) = (
+            walks(&c, &plan, &units, &tex, persp, 3, false, split),
+            walks(&c, &plan, &units, &tex, persp, 3, true, split),
+        ) else {
+            panic!("{plan:?} does not lower");
+        };
+        let what = format!("round {round} (split {split}): {plan:?}");
+        same(&what, (&got_fb, &got), (&want_fb, &want));
+        blended += usize::from(plan.blend.is_some() && plan.color_mask != [false; 4]);
+    }
+    assert!(blended > 100, "{blended}");
 }

@@ -150,6 +150,7 @@ fn uniform_arithmetic_is_hoisted() {
                 fx: 8.0 * k as f32,
                 fy: 0.0,
                 live: 0xFF,
+                planes: 0,
             })
             .collect();
         let mut io = Io {
@@ -210,6 +211,7 @@ fn dead_values_are_dropped_and_constants_shared() {
             fx: 0.0,
             fy: 0.0,
             live: 0xFF,
+            planes: 0,
         };
         prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
         for (i, c) in color.iter().enumerate() {

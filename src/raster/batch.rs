@@ -396,9 +396,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
 
     /// Rasterizes (or batches) `t`, whose box holds `area` pixels of the region.
     fn emit(&mut self, t: &SetupTriangle, area: i64, stats: &mut Stats) {
-        if !self.threads && area < self.tune.band_area {
+        if !self.threads && area < self.tune.band_area && self.plan.shader.is_none() {
             // Drawn at once, after the batched triangles before it (primitive order).
             // (Without threads nothing is ever in flight: only a pending batch needs drawing.)
+            // A shader's triangles are batched, small ones too: the engine runs the rows
+            // of a band's consecutive triangles together (`shaded`).
             if !self.batch.heads.is_empty() {
                 self.flush(stats);
             }

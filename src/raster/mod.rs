@@ -58,6 +58,17 @@ pub struct Draw<'d, 'f> {
     pub fb: &'d mut Target<'f>,
     /// The counters.
     pub stats: &'d mut Stats,
+    /// A shader draw's walk with rows not yet run ([`shaded`]); run when the draw's
+    /// references end.
+    shaded: Option<shaded::Pending>,
+}
+
+impl Drop for Draw<'_, '_> {
+    fn drop(&mut self) {
+        if let Some(p) = self.shaded.take() {
+            p.end(self.fb, self.stats);
+        }
+    }
 }
 
 impl<'d, 'f> Draw<'d, 'f> {
@@ -76,6 +87,7 @@ impl<'d, 'f> Draw<'d, 'f> {
             units,
             fb,
             stats,
+            shaded: None,
         }
     }
 

@@ -10,42 +10,85 @@
 //! the plane evaluated as llvmpipe's interpolator does, `1 / w_plane` divided once), then
 //! times `1 / q` for a projective lookup, and the draw's units sample them with the
 //! fixed-function units' samplers and level-of-detail rules (the quad's derivatives).
+//!
+//! Consecutive triangles of one [`Draw`] share one walk ([`Pending`]; a new one where the
+//! shader reads `gl_FrontFacing` and the facing changes), so that the engine runs the rows
+//! of several small triangles in one batch; the draw runs the last rows when it ends.
 
 use super::textured;
 use super::Draw;
+use crate::engine::draw::Walk;
 use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
+use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
 use crate::pipe::MAX_TEXTURE_UNITS;
-use crate::shader::draw::{ShaderRef, ShaderTexture};
+use crate::shader::draw::{FragShader, ShaderRef, ShaderTexture};
+use crate::stats::Stats;
 use crate::texture::UnitPlan;
+use std::sync::Arc;
 
 /// No texels: a shader's walk has no units.
 const NO_TEXELS: TexLanes = [[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS];
 
-/// Draws `t` in box `b` (cut to the region) with shader `sh`. Out of line and cold: the
-/// branch to it must not change how the fixed-function walks around it are compiled.
+/// A shader draw's walk kept across the triangles of a [`Draw`], so that one batch of
+/// the engine holds the rows of several small triangles ([`crate::engine::draw`]).
+pub(super) struct Pending {
+    walk: Walk,
+    /// The facing the walk's uniforms hold (when the shader reads `gl_FrontFacing`).
+    front: bool,
+    /// The registered shader, for its texture lookups.
+    shader: Option<Arc<FragShader>>,
+}
+
+impl Pending {
+    /// Runs the walk's last rows.
+    pub(super) fn end(self, fb: &mut Target<'_>, stats: &mut Stats) {
+        self.walk.end(fb, stats);
+    }
+}
+
+/// Draws `t` in box `b` (cut to the region) with shader `sh`: its rows join the draw's
+/// pending walk (a new one when the triangle's facing changes the uniforms). Out of line
+/// and cold: the branch to it must not change how the fixed-function walks around it
+/// are compiled.
 #[cold]
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
-    let Some(mut w) = crate::shader::draw::walk(sh, plan, fb, t.front) else {
-        stats.program_tris_refused += 1;
+    let reuse = matches!(&d.shaded, Some(p) if sh.facing.is_none() || p.front == t.front);
+    if !reuse {
+        if let Some(p) = d.shaded.take() {
+            p.end(fb, stats);
+        }
+        let Some(walk) = crate::shader::draw::walk(sh, plan, fb, t.front) else {
+            stats.program_tris_refused += 1;
+            return;
+        };
+        let shader = match sh.ntex {
+            0 => None,
+            _ => match crate::shader::draw::shader_of(sh) {
+                Some(s) => Some(s),
+                None => {
+                    walk.end(fb, stats);
+                    stats.program_tris_refused += 1;
+                    return;
+                }
+            },
+        };
+        d.shaded = Some(Pending {
+            walk,
+            front: t.front,
+            shader,
+        });
+    }
+    let Some(p) = d.shaded.as_mut() else {
         return;
     };
-    let shader = match sh.ntex {
-        0 => None,
-        _ => match crate::shader::draw::shader_of(sh) {
-            Some(s) => Some(s),
-            None => {
-                stats.program_tris_refused += 1;
-                return;
-            }
-        },
-    };
-    let lookups = shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
+    let w = &mut p.walk;
+    let lookups = p.shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
     let fused = crate::cpu::isa().fused();
     let mut texels = [NO_TEXELS; 2];
-    w.begin(t);
+    w.begin(t, fb, stats);
     for c in textured::Chunks::new(t, b) {
         if !lookups.is_empty() {
             let io = Lookups {
@@ -63,10 +106,9 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
         }
         for (r, live) in c.live.iter().enumerate() {
             let py = (c.qy + r as i64) as usize;
-            w.row(t, fb, py, c.x as usize, live, &texels[r], stats);
+            w.row(fb, py, c.x as usize, live, &texels[r], stats);
         }
     }
-    w.end(t, fb, stats);
 }
 
 /// What sampling a chunk's lookups reads.

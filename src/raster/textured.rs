@@ -438,7 +438,7 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
     let Some(mut w) = crate::engine::draw::Walk::new(plan, units, PERSP, fb) else {
         return false;
     };
-    w.begin(t);
+    w.begin(t, fb, stats);
     #[cfg(target_arch = "x86_64")]
     let wide = AVX2 && general_ok(plan, fb);
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
@@ -459,10 +459,10 @@ pub(super) fn rows_engine<M: Madd, const AVX2: bool, const PERSP: bool>(
         super::sample_chunk::<M, PERSP, true>(t, units, &c, &mut texels);
         for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {
             let py = (c.qy + r as i64) as usize;
-            w.row(t, fb, py, c.x as usize, live, tex, stats);
+            w.row(fb, py, c.x as usize, live, tex, stats);
         }
     }
-    w.end(t, fb, stats);
+    w.end(fb, stats);
     true
 }
 

@@ -175,6 +175,7 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
                 fx: x as f32,
                 fy: y as f32,
                 live: 0xFF,
+                planes: 0,
             })
         })
         .collect();
