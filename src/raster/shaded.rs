@@ -121,7 +121,7 @@ struct Lookups<'a, 'u> {
     c: &'a textured::Chunk,
 }
 
-/// [`sample`], fused, compiled with FMA.
+/// [`sample`], fused, compiled with FMA; at the AVX2 level [`sample_avx2`].
 fn sample_fused(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
     #[cfg(target_arch = "x86_64")]
     {
@@ -131,11 +131,78 @@ fn sample_fused(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
         unsafe fn fma(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
             sample::<Fused>(io, texels)
         }
-        // SAFETY: the level fuses, so the CPU has FMA (`cpu::isa`).
-        unsafe { fma(io, texels) }
+        if crate::cpu::isa().avx2() {
+            // SAFETY: the AVX2 level has AVX2 and FMA (`cpu::isa`).
+            unsafe { sample_avx2(io, texels) }
+        } else {
+            // SAFETY: the level fuses, so the CPU has FMA (`cpu::isa`).
+            unsafe { fma(io, texels) }
+        }
     }
     #[cfg(not(target_arch = "x86_64"))]
     sample::<Fused>(io, texels)
+}
+
+/// [`sample`] (fused) with the coordinates on 8 lanes: the same operations on each lane
+/// (`1 / w`, the plane times it, `1 / q` and the products), then the same samplers.
+///
+/// # Safety
+/// The CPU has AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn sample_avx2(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
+    use crate::fragment::simd_tex::eval8;
+    use crate::simd::F32x8;
+    let (t, c) = (io.t, io.c);
+    // SAFETY: (whole body) this function's AVX2 and FMA; loads and stores of 8 f32 from
+    // and into 8-lane arrays.
+    unsafe {
+        let one = F32x8::splat(1.0);
+        let fx = F32x8::load(c.fx.as_ptr());
+        let fy = [F32x8::splat(c.fy[0]), F32x8::splat(c.fy[1])];
+        // Loops, not closures: a closure is compiled without this function's features.
+        let mut oow = [one; 2];
+        for r in 0..2 {
+            oow[r] = one.div(eval8::<true>(&t.w, fx, fy[r]));
+        }
+        for (k, lk) in io.lookups.iter().enumerate() {
+            let Some(u) = io.units.get(usize::from(io.slots[k])) else {
+                for row in texels.iter_mut() {
+                    row[k] = [[0.0, 0.0, 0.0, 1.0]; LANES];
+                }
+                continue;
+            };
+            // s, t, r, q per row
+            let mut co = [[F32x8::zero(); 2]; 4];
+            for (dst, spec) in co.iter_mut().zip(&lk.coords) {
+                let Some((v, linear)) = *spec else {
+                    continue;
+                };
+                let p = &t.vary[usize::from(v)];
+                for r in 0..2 {
+                    let a = eval8::<true>(p, fx, fy[r]);
+                    dst[r] = if linear { a } else { a.mul(oow[r]) };
+                }
+            }
+            if lk.proj {
+                let [s, tt, rr, q] = &mut co;
+                for r in 0..2 {
+                    let rq = one.div(q[r]);
+                    s[r] = s[r].mul(rq);
+                    tt[r] = tt[r].mul(rq);
+                    rr[r] = rr[r].mul(rq);
+                }
+            }
+            let mut out = [[[0f32; LANES]; 2]; 3];
+            for (o, v) in out.iter_mut().zip(&co) {
+                for r in 0..2 {
+                    v[r].store(o[r].as_mut_ptr());
+                }
+            }
+            let rr = if u.needs_r() { Some(&out[2]) } else { None };
+            super::sample_unit::<Fused>(u, k, &out[0], &out[1], rr, &c.live, texels);
+        }
+    }
 }
 
 /// Samples every lookup for the 2x2 quads of the chunk that hold a live pixel (see the
