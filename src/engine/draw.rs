@@ -65,6 +65,9 @@ struct State {
     /// The slots of `cover` in use.
     used: [u8; 2 * MAX_BATCH],
     nused: usize,
+    /// Whether `cover` holds the pending chunks: only once a second triangle's rows join
+    /// the batch (a batch of one triangle's rows needs no check).
+    tracking: bool,
 }
 
 /// Slots of [`State::cover`].
@@ -94,6 +97,7 @@ impl State {
             cover: [(0, 0); COVER],
             used: [0; 2 * MAX_BATCH],
             nused: 0,
+            tracking: false,
         })
     }
 
@@ -274,6 +278,14 @@ impl Walk {
         st.planes[at..at + self.set].copy_from_slice(&all[..self.set]);
         st.sets += 1;
         st.first = st.len;
+        if st.len > 0 && !st.tracking {
+            // Rows of two triangles in one batch from here on: cover the pending ones.
+            st.tracking = true;
+            for k in 0..st.len {
+                let c = st.chunks[k];
+                st.claim(c.idx, c.live);
+            }
+        }
         if !self.own_uniforms {
             st.uniforms[..MAX_VARY].copy_from_slice(&t.flat);
         }
@@ -301,9 +313,8 @@ impl Walk {
             return;
         }
         let idx = (py - fb.y0) * fb.width + x;
-        if self.st.claim(idx, bits) {
+        if self.st.tracking && self.st.claim(idx, bits) {
             self.flush(fb, stats);
-            self.st.claim(idx, bits);
         }
         stats.fragments += u64::from(bits.count_ones());
         let st = &mut *self.st;
@@ -317,11 +328,9 @@ impl Walk {
         };
         st.ns[k] = LANES.min(fb.width - x) as u8;
         for (u, lanes) in tex.iter().enumerate().take(self.units) {
-            for ch in 0..4 {
-                let dst = &mut st.streams[(4 * u + ch) * MAX_BATCH + k];
-                for (d, l) in dst.iter_mut().zip(lanes) {
-                    *d = l[ch].to_bits();
-                }
+            let chans = crate::simd::pack::channels_of(lanes);
+            for (ch, v) in chans.into_iter().enumerate() {
+                st.streams[(4 * u + ch) * MAX_BATCH + k] = v;
             }
         }
         st.len += 1;
@@ -338,6 +347,7 @@ impl Walk {
         }
         let st = &mut *self.st;
         st.clear_cover();
+        st.tracking = false;
         st.len = 0;
         st.first = 0;
         if st.sets > 1 {

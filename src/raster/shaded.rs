@@ -38,6 +38,8 @@ pub(super) struct Pending {
     front: bool,
     /// The registered shader, for its texture lookups.
     shader: Option<Arc<FragShader>>,
+    /// A chunk's sampled texels per row (lanes that are not live hold any value).
+    texels: Box<[TexLanes; 2]>,
 }
 
 impl Pending {
@@ -79,15 +81,15 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
             walk,
             front: t.front,
             shader,
+            texels: Box::new([NO_TEXELS; 2]),
         });
     }
     let Some(p) = d.shaded.as_mut() else {
         return;
     };
-    let w = &mut p.walk;
+    let (w, texels) = (&mut p.walk, &mut *p.texels);
     let lookups = p.shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
     let fused = crate::cpu::isa().fused();
-    let mut texels = [NO_TEXELS; 2];
     w.begin(t, fb, stats);
     for c in textured::Chunks::new(t, b) {
         if !lookups.is_empty() {
@@ -99,9 +101,9 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
                 c: &c,
             };
             if fused {
-                sample_fused(&io, &mut texels);
+                sample_fused(&io, texels);
             } else {
-                sample::<Unfused>(&io, &mut texels);
+                sample::<Unfused>(&io, texels);
             }
         }
         for (r, live) in c.live.iter().enumerate() {

@@ -1,5 +1,7 @@
-//! Byte shuffles of pixel rows for glReadPixels: RGBA8 pixels packed as RGB bytes
-//! ([`rgba_to_rgb`]), 8 pixels per AVX2 shuffle, the same bytes as the scalar loop.
+//! Shuffles of pixel rows: for glReadPixels, RGBA8 pixels packed as RGB bytes
+//! ([`rgba_to_rgb`]), 8 pixels per AVX2 shuffle; for the engine's input streams, 8
+//! pixels' 4 f32 channels turned channel-major ([`channels_of`]). The same bits as the
+//! scalar loops.
 
 /// Writes the red, green and blue bytes of each pixel of `src` into `dst` (3 bytes per
 /// pixel; `dst.len() == 3 · src.len()`).
@@ -54,6 +56,59 @@ unsafe fn rgba_to_rgb_avx2(src: &[[u8; 4]], dst: &mut [u8]) {
     rgba_to_rgb_scalar(&src[i..], &mut dst[i * 3..]);
 }
 
+/// The bits of 8 pixels' 4 channels (`src[pixel][channel]`) channel-major: row `c`
+/// holds channel `c` of pixels 0..8 (a sampled chunk row's texels as the engine's input
+/// streams).
+pub fn channels_of(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
+    #[cfg(target_arch = "x86_64")]
+    if super::cpu::isa().avx2() {
+        // SAFETY: an AVX2 variant runs only on a CPU with AVX2.
+        return unsafe { channels_of_avx2(src) };
+    }
+    channels_of_scalar(src)
+}
+
+/// [`channels_of`] a value at a time.
+pub fn channels_of_scalar(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
+    std::array::from_fn(|c| std::array::from_fn(|i| src[i][c].to_bits()))
+}
+
+/// [`channels_of`] as a 4x4 transposition in each 128-bit lane: `vperm2f128` pairs pixel
+/// i with pixel i + 4, `vunpcklps`/`vunpckhps` interleave pixel pairs, and `vshufps`
+/// gathers each channel (moves only: every bit is kept).
+///
+/// # Safety
+/// The CPU has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn channels_of_avx2(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
+    use super::F32x8;
+    let mut out = [[0u32; 8]; 4];
+    // SAFETY: `src` is 32 contiguous f32, read as four 8-lane loads; each row of `out`
+    // takes one 8-lane store; the CPU has AVX2 (the caller's promise).
+    unsafe {
+        let p = src.as_ptr() as *const f32;
+        let (a, b) = (F32x8::load(p), F32x8::load(p.add(8)));
+        let (c, d) = (F32x8::load(p.add(16)), F32x8::load(p.add(24)));
+        // Pixels (0, 4), (1, 5), (2, 6) and (3, 7) in the two lanes.
+        let (p04, p15) = (a.perm128::<0x20>(c), a.perm128::<0x31>(c));
+        let (p26, p37) = (b.perm128::<0x20>(d), b.perm128::<0x31>(d));
+        // r, g of pixels 0, 1 (4, 5); b, a of them; likewise 2, 3 (6, 7).
+        let (rg01, ba01) = (p04.unpack_lo(p15), p04.unpack_hi(p15));
+        let (rg23, ba23) = (p26.unpack_lo(p37), p26.unpack_hi(p37));
+        let rows = [
+            rg01.shuffle::<0x44>(rg23),
+            rg01.shuffle::<0xEE>(rg23),
+            ba01.shuffle::<0x44>(ba23),
+            ba01.shuffle::<0xEE>(ba23),
+        ];
+        for (o, v) in out.iter_mut().zip(rows) {
+            v.store(o.as_mut_ptr() as *mut f32);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,6 +133,38 @@ mod tests {
                 // SAFETY: the CPU has AVX2.
                 unsafe { rgba_to_rgb_avx2(s, &mut out) };
                 assert_eq!(out, want, "avx2, {n} pixels");
+            }
+        }
+    }
+
+    #[test]
+    fn channels_of_every_variant_keeps_the_bits() {
+        let mut r = crate::test_rng::xorshift32(17);
+        for round in 0..200 {
+            // Random bits: NaNs with payloads, infinities, denormals included.
+            let mut src = [[0f32; 4]; 8];
+            for p in src.iter_mut() {
+                for v in p.iter_mut() {
+                    *v = f32::from_bits(if round % 4 == 0 {
+                        0x7F80_0001 | r()
+                    } else {
+                        r()
+                    });
+                }
+            }
+            // independent of the code: element (c, i) is pixel i's channel c
+            let mut want = [[0u32; 8]; 4];
+            for (i, p) in src.iter().enumerate() {
+                for (c, v) in p.iter().enumerate() {
+                    want[c][i] = v.to_bits();
+                }
+            }
+            assert_eq!(channels_of(&src), want, "dispatched");
+            assert_eq!(channels_of_scalar(&src), want, "scalar");
+            #[cfg(target_arch = "x86_64")]
+            if std::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU has AVX2.
+                assert_eq!(unsafe { channels_of_avx2(&src) }, want, "avx2");
             }
         }
     }
