@@ -15,7 +15,7 @@
 use super::cache;
 use super::exec::{ChunkIn, Io, Program, Scratch, MAX_BATCH};
 use super::ff::FfState;
-use super::lower::planes_of;
+use super::lower::planes_into;
 use crate::fragment::span::{TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
@@ -273,9 +273,8 @@ impl Walk {
             // The previous triangle left no rows: its set is free.
             st.sets -= 1;
         }
-        let all = planes_of(t);
         let at = st.sets * self.set;
-        st.planes[at..at + self.set].copy_from_slice(&all[..self.set]);
+        planes_into(t, &mut st.planes[at..at + self.set]);
         st.sets += 1;
         st.first = st.len;
         if st.len > 0 && !st.tracking {

@@ -24,14 +24,19 @@ pub const PLANE_VARY: u16 = 2;
 
 /// The planes a lowered program evaluates, for triangle `t`.
 pub fn planes_of(t: &SetupTriangle) -> [[f32; 3]; 2 + MAX_VARY] {
-    let p = |p: &crate::geometry::setup::Plane| [p.a0, p.dadx, p.dady];
     let mut out = [[0.0; 3]; 2 + MAX_VARY];
-    out[0] = p(&t.z);
-    out[1] = p(&t.w);
-    for (o, v) in out[2..].iter_mut().zip(t.vary.iter()) {
+    planes_into(t, &mut out);
+    out
+}
+
+/// The first `out.len()` planes of [`planes_of`] into `out` (a walk copies only the
+/// planes its program reads).
+pub fn planes_into(t: &SetupTriangle, out: &mut [[f32; 3]]) {
+    let p = |p: &crate::geometry::setup::Plane| [p.a0, p.dadx, p.dady];
+    let planes = [&t.z, &t.w].into_iter().chain(t.vary.iter());
+    for (o, v) in out.iter_mut().zip(planes) {
         *o = p(v);
     }
-    out
 }
 
 /// The state the prototype lowers: a fragment plan and whether attributes take the
