@@ -62,10 +62,17 @@ pub unsafe fn store8<const FMA: bool>(
     unsafe {
         let wptr = wide.as_mut_ptr().wrapping_add(idx) as *mut i32;
         let cptr = color.as_mut_ptr().wrapping_add(idx) as *mut i32;
+        // All 8 pixels pass and lie in both slices: plain loads and stores (`vpmaskmovd`
+        // stores are microcoded on AMD; see `super::simd::store_masked`).
+        let full = pass.movemask() == 0xff && wide.len() >= idx + 8 && color.len() >= idx + 8;
         let reads = plan.blend.is_some() || mask != [true; 4];
         let d = if reads {
-            let raw = load_aos(wptr, pass);
-            let c8 = I32x8::maskload(cptr, pass);
+            let raw = load_aos(wptr, pass, full);
+            let c8 = if full {
+                I32x8::load(cptr)
+            } else {
+                I32x8::maskload(cptr, pass)
+            };
             let current = mirror8(k, raw).cmpeq(c8).as_f32();
             let mut d = from_u8(k, c8);
             for ch in 0..4 {
@@ -95,8 +102,13 @@ pub unsafe fn store8<const FMA: bool>(
                 v[ch] = d[ch];
             }
         }
-        store_aos(wptr, pass, v);
-        mirror8(k, v).maskstore(cptr, pass);
+        store_aos(wptr, pass, v, full);
+        let m8 = mirror8(k, v);
+        if full {
+            m8.store(cptr);
+        } else {
+            m8.maskstore(cptr, pass);
+        }
         u64::from(pass.movemask().count_ones())
     }
 }
@@ -114,17 +126,25 @@ unsafe fn pixel_mask(pass: I32x8, j: i32) -> I32x8 {
     }
 }
 
-/// The RGBA f32 pixels at `p` (the lanes of `pass`, others 0) as one register per channel.
+/// The RGBA f32 pixels at `p` (the lanes of `pass`, others 0) as one register per channel;
+/// plain loads when `full` (all 8 pixels pass).
 ///
 /// # Safety
-/// AVX2 context; the lanes of `pass` are readable.
+/// AVX2 context; the lanes of `pass` are readable, all 8 pixels when `full`.
 #[inline(always)]
-unsafe fn load_aos(p: *const i32, pass: I32x8) -> Vec4 {
-    // SAFETY: the caller's AVX2 context; masked loads read the lanes of `pass` only.
+unsafe fn load_aos(p: *const i32, pass: I32x8, full: bool) -> Vec4 {
+    // SAFETY: the caller's AVX2 context; masked loads read the lanes of `pass` only, plain
+    // ones the 8 pixels the caller vouches for.
     unsafe {
         let mut q = [F32x8::zero(); 4];
         for (j, r) in q.iter_mut().enumerate() {
-            *r = I32x8::maskload(p.wrapping_add(8 * j), pixel_mask(pass, j as i32)).as_f32();
+            let at = p.wrapping_add(8 * j);
+            *r = if full {
+                I32x8::load(at)
+            } else {
+                I32x8::maskload(at, pixel_mask(pass, j as i32))
+            }
+            .as_f32();
         }
         // Pixels (0 | 4), (1 | 5), (2 | 6), (3 | 7) per 128-bit half.
         let u0 = q[0].perm128::<0x20>(q[2]);
@@ -145,13 +165,15 @@ unsafe fn load_aos(p: *const i32, pass: I32x8) -> Vec4 {
     }
 }
 
-/// Stores the channels `v` as RGBA f32 pixels at `p`, the lanes of `pass` only.
+/// Stores the channels `v` as RGBA f32 pixels at `p`, the lanes of `pass` only (all 8
+/// with plain stores when `full`).
 ///
 /// # Safety
-/// AVX2 context; the lanes of `pass` are writable.
+/// AVX2 context; the lanes of `pass` are writable, all 8 pixels when `full`.
 #[inline(always)]
-unsafe fn store_aos(p: *mut i32, pass: I32x8, v: Vec4) {
-    // SAFETY: the caller's AVX2 context; masked stores write the lanes of `pass` only.
+unsafe fn store_aos(p: *mut i32, pass: I32x8, v: Vec4, full: bool) {
+    // SAFETY: the caller's AVX2 context; masked stores write the lanes of `pass` only,
+    // plain ones the 8 pixels the caller vouches for.
     unsafe {
         // r g r g of pixels (0, 1 | 4, 5) and (2, 3 | 6, 7), b a likewise.
         let t0 = v[0].unpack_lo(v[1]);
@@ -170,8 +192,12 @@ unsafe fn store_aos(p: *mut i32, pass: I32x8, v: Vec4) {
             u2.perm128::<0x31>(u3),
         ];
         for (j, r) in q.iter().enumerate() {
-            r.bits()
-                .maskstore(p.wrapping_add(8 * j), pixel_mask(pass, j as i32));
+            let at = p.wrapping_add(8 * j);
+            if full {
+                r.bits().store(at);
+            } else {
+                r.bits().maskstore(at, pixel_mask(pass, j as i32));
+            }
         }
     }
 }
