@@ -317,6 +317,19 @@ impl Framebuffer {
         self.resolve();
         self.uniform_color = None;
         let w = self.width;
+        let alpha = self.format.has_alpha();
+        if mask[..3] == [true; 3] && (mask[3] || !alpha) {
+            // Every stored channel is replaced: the old values do not matter, so the rows
+            // are filled with one pixel and its mirror.
+            let p = [v[0], v[1], v[2], if alpha { v[3] } else { k.one() }];
+            let m = k.mirror(p);
+            for y in y0..y1 {
+                let r = y * w + x0..y * w + x1;
+                self.wide_color[r.clone()].fill(p);
+                fill_color(&mut self.color[r], m);
+            }
+            return;
+        }
         for y in y0..y1 {
             for i in y * w + x0..y * w + x1 {
                 let mut p = self.wide_at(i);
