@@ -217,6 +217,11 @@ lane_ops! {
     fn cmpgt(o) -> Self = _mm256_cmpgt_epi32;
     /// `self == o` per lane as a mask.
     fn cmpeq(o) -> Self = _mm256_cmpeq_epi32;
+    /// `vpackusdw`: per 128-bit half, the four lanes of `self` then those of `o` as u16
+    /// (saturated to 0..=65535), sixteen u16 in the bits of the result.
+    fn pack_u16(o) -> Self = _mm256_packus_epi32;
+    /// `vpermq` with an immediate: 64-bit lane `i` is lane `(IMM >> 2i) & 3`.
+    fn permute_q<const IMM>() -> Self = _mm256_permute4x64_epi64::<IMM>;
     /// Signed minimum per lane.
     fn min(o) -> Self = _mm256_min_epi32;
     /// Signed maximum per lane.
