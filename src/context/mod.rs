@@ -192,6 +192,8 @@ pub struct Context {
     /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
     /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
     inflight: Option<crate::raster::batch::InFlight>,
+    /// Buffers reused by glDrawPixels and glCopyPixels.
+    pub pixel_scratch: crate::pixels::draw::Scratch,
 }
 
 /// The OSMesa user buffer and its layout parameters.
@@ -265,6 +267,7 @@ impl Context {
             fbo: Default::default(),
             shaders: Default::default(),
             inflight: None,
+            pixel_scratch: Default::default(),
         }
     }
 

@@ -79,6 +79,33 @@ pub enum Source<'a> {
     Stencil(&'a [u8]),
 }
 
+/// Buffers a pixel rectangle's colours are converted into, kept by the context from one
+/// rectangle to the next: allocating them per glDrawPixels cost a page fault per 4 KiB
+/// each time (glibc hands blocks this size back to the kernel on free), a fifth of the
+/// pushattrib_pixels benchmark's frame.
+#[derive(Clone, Debug, Default)]
+pub struct Scratch {
+    /// Shaded colours of the image's texels ([`shade_colors`]).
+    pub colors: Vec<[f32; 4]>,
+    /// Their unorm8 conversion ([`run`]).
+    pub c8: Vec<[u8; 4]>,
+}
+
+impl Scratch {
+    /// Bytes a buffer keeps between rectangles; a bigger one is freed after its use.
+    pub const KEEP_BYTES: usize = 4 << 20;
+
+    /// Frees whatever grew past [`Scratch::KEEP_BYTES`].
+    pub fn trim(&mut self) {
+        if self.colors.capacity() * 16 > Self::KEEP_BYTES {
+            self.colors = Vec::new();
+        }
+        if self.c8.capacity() * 4 > Self::KEEP_BYTES {
+            self.c8 = Vec::new();
+        }
+    }
+}
+
 /// Where and how a rectangle's fragments land.
 pub struct Target<'a> {
     /// The draw buffer.
@@ -93,6 +120,8 @@ pub struct Target<'a> {
     pub fma: bool,
     /// Counters.
     pub stats: &'a mut Stats,
+    /// Room for the unorm8 colours.
+    pub c8: &'a mut Vec<[u8; 4]>,
 }
 
 /// Rasterises the quad `q` and runs its fragments of `src` into `t`.
@@ -129,7 +158,9 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
     match src {
         // The unorm8 conversion of each texel's colour, once per texel, not per pixel.
         Source::Color(c) if narrow => {
-            let c8: Vec<[u8; 4]> = c.iter().map(|p| p.map(unorm8)).collect();
+            let c8 = t.c8;
+            c8.clear();
+            c8.extend(c.iter().map(|p| p.map(unorm8)));
             rasterize(q, &d, |t, py, x, texels| {
                 for (i, k) in texels.chunks(LANES).enumerate() {
                     frags.put_chunk8(t, py, x + i * LANES, |l| k.get(l).map(|&k| c8[k]));
@@ -171,7 +202,7 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
 
 /// Colour texels (`w` wide, in the temporary texture's row order) through the
 /// pixel-transfer operations and the fragment shader: `scale_bias` (when active), then
-/// `map_rg` (GL_MAP_COLOR's red and green lookups, when active).
+/// `map_rg` (GL_MAP_COLOR's red and green lookups, when active), into `out`.
 ///
 /// GL_MAP_COLOR as Mesa 22.3 runs it (`nir_lower_drawpixels.c`): red and green are looked
 /// up in the pixel-map texture, but the second lookup, meant for blue and alpha, carries no
@@ -183,28 +214,27 @@ pub fn shade_colors(
     w: usize,
     scale_bias: Option<&dyn Fn([f32; 4]) -> [f32; 4]>,
     map_rg: Option<&dyn Fn([f32; 4]) -> [f32; 2]>,
-) -> Vec<[f32; 4]> {
+    out: &mut Vec<[f32; 4]>,
+) {
     let h = texels.len() / w.max(1);
     let nearest = |c: f32, n: usize| {
         (c.clamp(-1.0, 2.0) * n as f32)
             .floor()
             .clamp(0.0, (n - 1) as f32) as usize
     };
-    texels
-        .iter()
-        .map(|&c| {
-            let mut c = c;
-            if let Some(sb) = scale_bias {
-                c = sb(c);
-            }
-            if let Some(map) = map_rg {
-                let [r, g] = map(c);
-                let texel = texels[nearest(c[3], h) * w + nearest(c[2], w)];
-                c = [r, g, texel[0], texel[1]];
-            }
-            sh.shade(c)
-        })
-        .collect()
+    out.clear();
+    out.extend(texels.iter().map(|&c| {
+        let mut c = c;
+        if let Some(sb) = scale_bias {
+            c = sb(c);
+        }
+        if let Some(map) = map_rg {
+            let [r, g] = map(c);
+            let texel = texels[nearest(c[3], h) * w + nearest(c[2], w)];
+            c = [r, g, texel[0], texel[1]];
+        }
+        sh.shade(c)
+    }));
 }
 
 /// What glCopyPixels copies.
@@ -333,5 +363,24 @@ impl CopySource {
         (0..self.w * self.h)
             .map(|k| self.texel_index(k).map_or(0, |s| fb.stencil[s]))
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Scratch;
+
+    /// Buffers up to [`Scratch::KEEP_BYTES`] stay for the next rectangle; bigger ones go.
+    #[test]
+    fn scratch_keeps_small_buffers_and_frees_big_ones() {
+        let mut s = Scratch::default();
+        s.colors.reserve(1000);
+        s.c8.reserve(1000);
+        s.trim();
+        assert!(s.colors.capacity() >= 1000 && s.c8.capacity() >= 1000);
+        s.colors.reserve(Scratch::KEEP_BYTES / 16 + 1);
+        s.c8.reserve(Scratch::KEEP_BYTES / 4 + 1);
+        s.trim();
+        assert_eq!((s.colors.capacity(), s.c8.capacity()), (0, 0));
     }
 }

@@ -56,6 +56,7 @@ fn run(ctx: &mut Context, q: &Quad, src: Source<'_>) {
         stencil_mask,
         fma,
         stats,
+        c8: &mut ctx.pixel_scratch.c8,
     };
     px::run(t, q, src);
 }
@@ -80,14 +81,30 @@ fn quad(ctx: &Context, x: i32, y: i32, w: usize, h: usize, flip_t: bool) -> Quad
 
 /// Colour texels through the pixel transfer (when `transfer`) and the fragment shader
 /// ([`px::shade_colors`]).
-fn shade_colors(ctx: &Context, texels: &[[f32; 4]], w: usize, transfer: bool) -> Vec<[f32; 4]> {
+fn shade_colors(
+    ctx: &Context,
+    texels: &[[f32; 4]],
+    w: usize,
+    transfer: bool,
+    out: &mut Vec<[f32; 4]>,
+) {
     let sh = shader(ctx, cpu_has_fma());
     let t = &ctx.pixel_modes.transfer;
     let sb = |c| t.apply_scale_bias(c);
     let map = |c| ctx.pixel_maps.map_rg_texture(c);
     let sb: Option<&dyn Fn([f32; 4]) -> [f32; 4]> = (transfer && t.scale_bias()).then_some(&sb);
     let map: Option<&dyn Fn([f32; 4]) -> [f32; 2]> = (transfer && t.map_color).then_some(&map);
-    px::shade_colors(&sh, texels, w, sb, map)
+    px::shade_colors(&sh, texels, w, sb, map, out)
+}
+
+/// Runs the colours of `texels` (`w` wide; see [`shade_colors`]) over the quad `q`, in
+/// the context's reused buffers.
+fn run_colors(ctx: &mut Context, q: &Quad, texels: &[[f32; 4]], w: usize, transfer: bool) {
+    let mut c = std::mem::take(&mut ctx.pixel_scratch.colors);
+    shade_colors(ctx, texels, w, transfer, &mut c);
+    run(ctx, q, Source::Color(&c));
+    ctx.pixel_scratch.colors = c;
+    ctx.pixel_scratch.trim();
 }
 
 /// Outside render mode a pixel rectangle draws nothing: feedback mode writes `token`
@@ -121,14 +138,10 @@ pub fn draw_pixels(ctx: &mut Context, img: &Image) {
     let q = quad(ctx, x, y, img.w, img.h, false);
     let tr = ctx.pixel_modes.transfer;
     match &img.pixels {
-        Pixels::Color(texels) => {
-            let c = shade_colors(ctx, texels, img.w, true);
-            run(ctx, &q, Source::Color(&c));
-        }
+        Pixels::Color(texels) => run_colors(ctx, &q, texels, img.w, true),
         Pixels::Index(ix) => {
             let texels: Vec<[f32; 4]> = ix.iter().map(|&i| index_to_rgba(ctx, i)).collect();
-            let c = shade_colors(ctx, &texels, img.w, false);
-            run(ctx, &q, Source::Color(&c));
+            run_colors(ctx, &q, &texels, img.w, false);
         }
         Pixels::Depth(z) => {
             let z: Vec<f32> = z.iter().map(|&v| tr.apply_depth(v)).collect();
@@ -300,8 +313,7 @@ pub fn copy_pixels(ctx: &mut Context, sx: i32, sy: i32, w: usize, h: usize, kind
     match kind {
         CopyKind::Color => {
             let texels = src.colors(fb);
-            let c = shade_colors(ctx, &texels, w, true);
-            run(ctx, &q, Source::Color(&c));
+            run_colors(ctx, &q, &texels, w, true);
         }
         CopyKind::Depth => {
             let z = src.depths(fb);
