@@ -137,7 +137,13 @@ pub(super) unsafe fn stencil_test8(
     stats: &mut Stats,
 ) -> Stencil8 {
     let mut b = [0u8; LANES];
-    b[..n].copy_from_slice(&stencil[idx..idx + n]);
+    // A whole chunk is one 8-byte load; a variable length calls memcpy (3.8% of
+    // stencil_ops on one thread).
+    if n == LANES {
+        b.copy_from_slice(&stencil[idx..idx + LANES]);
+    } else {
+        b[..n].copy_from_slice(&stencil[idx..idx + n]);
+    }
     // SAFETY: forwarded from the caller.
     unsafe {
         let old = I32x8::from_u8(b);
@@ -207,7 +213,12 @@ pub(super) unsafe fn stencil_update8(
             v = v.blendv(kept.or(stencil_op8(op, s, r).and(w)), lanes);
         }
     }
-    stencil[idx..idx + n].copy_from_slice(&v.to_u8()[..n]);
+    let v = v.to_u8();
+    if n == LANES {
+        stencil[idx..idx + LANES].copy_from_slice(&v);
+    } else {
+        stencil[idx..idx + n].copy_from_slice(&v[..n]);
+    }
 }
 
 /// The stencil test, the depth test at `fx`, `fy` ([`depth_test8`]) and the stencil
