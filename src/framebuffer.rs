@@ -511,6 +511,7 @@ impl ColorFormat {
 
     /// A float colour in [0,1] packed as gallium's format packing does (glClear's fast
     /// path, glAccum's GL_RETURN): rounded, RGB565 to 5/6 bits, no alpha stored as 255.
+    #[inline]
     pub fn pack_float(self, c: [f32; 4]) -> [u8; 4] {
         match self {
             ColorFormat::Rgb565 => {
@@ -782,6 +783,7 @@ pub fn float_to_ubyte(c: f32) -> u8 {
 
 /// Float to unorm8 as gallium's fast clear packs it (`util` float_to_ubyte): scale by
 /// 255/256, add 2^15 and keep the low mantissa byte.
+#[inline]
 pub fn clear_float_to_ubyte(f: f32) -> u8 {
     if f.is_nan() || f <= 0.0 {
         0

@@ -128,56 +128,123 @@ impl Context {
             }
             return Ok(());
         }
-        let format = fb.format;
+        let rows = AccumRow::new(op, value, fb.format, mask, (x1 - x0) * (y1 - y0));
         for y in y0..y1 {
             let row = y * w + x0..y * w + x1;
-            let accs = &mut acc[row.clone()];
-            let colors = &mut fb.color[row];
-            match op {
-                AccumOp::Add => {
-                    let incr = (value * 32767.0f32) as i16;
-                    for a in accs.iter_mut().flatten() {
-                        *a = a.wrapping_add(incr);
-                    }
-                }
-                AccumOp::Mult => {
-                    for a in accs.iter_mut().flatten() {
-                        *a = (*a as f32 * value) as i32 as i16;
-                    }
-                }
-                AccumOp::Load | AccumOp::Accum => {
-                    let scale = value * 32767.0f32;
-                    for (a, c) in accs.iter_mut().zip(colors.iter()) {
-                        for k in 0..4 {
-                            let v = (c[k] as f32 * (1.0f32 / 255.0f32) * scale) as i32 as i16;
-                            a[k] = if op == AccumOp::Load {
-                                v
-                            } else {
-                                a[k].wrapping_add(v)
-                            };
-                        }
-                    }
-                }
-                AccumOp::Return => {
-                    let scale = value / 32767.0f32;
-                    for (a, c) in accs.iter().zip(colors.iter_mut()) {
-                        let v = format.pack_float(
-                            a.map(|x| super::clamp01((x as f32 * scale) as f64) as f32),
-                        );
-                        for k in 0..4 {
-                            if mask[k] {
-                                c[k] = v[k];
-                            }
-                        }
-                    }
-                }
-            }
+            rows.run(&mut acc[row.clone()], &mut fb.color[row]);
         }
         if op == AccumOp::Return {
             self.dirty = true;
             self.fbo.drawn = true;
         }
         Ok(())
+    }
+}
+
+/// One glAccum operation on the 8-bit colour buffer, applied a row at a time.
+///
+/// LOAD and ACCUM convert an 8-bit channel and RETURN an `i16` accumulation value, each
+/// channel on its own, so those conversions are tabulated once per call (256 entries, and
+/// 65,536 for a RETURN over more pixels than that) and the rows only look values up: the
+/// same expressions on every possible input. The per-channel float-to-int conversions
+/// had cost 12% of query_accum_feedback; they do not vectorise (`as i32` saturates).
+struct AccumRow {
+    op: AccumOp,
+    value: f32,
+    format: crate::framebuffer::ColorFormat,
+    mask: [bool; 4],
+    /// LOAD / ACCUM: the accumulation step of each 8-bit channel value.
+    load: [i16; 256],
+    /// RETURN (formats packed channel by channel): each accumulation value's channel.
+    ret: Option<Vec<u8>>,
+}
+
+impl AccumRow {
+    /// The operation's tables for `pixels` pixels of rows.
+    fn new(
+        op: AccumOp,
+        value: f32,
+        format: crate::framebuffer::ColorFormat,
+        mask: [bool; 4],
+        pixels: usize,
+    ) -> AccumRow {
+        let scale = value * 32767.0f32;
+        let load = std::array::from_fn(|c| (c as f32 * (1.0f32 / 255.0f32) * scale) as i32 as i16);
+        let per_channel = format != crate::framebuffer::ColorFormat::Rgb565;
+        let ret = (op == AccumOp::Return && per_channel && pixels > 1 << 16).then(|| {
+            (0..=u16::MAX)
+                .map(|bits| Self::return_channel(bits as i16, value))
+                .collect()
+        });
+        AccumRow {
+            op,
+            value,
+            format,
+            mask,
+            load,
+            ret,
+        }
+    }
+
+    /// RETURN's packing of one channel's accumulation value (formats other than RGB565).
+    #[inline(always)]
+    fn return_channel(x: i16, value: f32) -> u8 {
+        let scale = value / 32767.0f32;
+        crate::framebuffer::clear_float_to_ubyte(super::clamp01((x as f32 * scale) as f64) as f32)
+    }
+
+    /// Applies the operation to the accumulation values `accs` and colours `colors` of
+    /// one row (Mesa's `accum.c` arithmetic, see the module doc).
+    fn run(&self, accs: &mut [[i16; 4]], colors: &mut [[u8; 4]]) {
+        let (op, value, mask) = (self.op, self.value, self.mask);
+        match op {
+            AccumOp::Add => {
+                let incr = (value * 32767.0f32) as i16;
+                for a in accs.iter_mut().flatten() {
+                    *a = a.wrapping_add(incr);
+                }
+            }
+            AccumOp::Mult => {
+                for a in accs.iter_mut().flatten() {
+                    *a = (*a as f32 * value) as i32 as i16;
+                }
+            }
+            AccumOp::Load => {
+                for (a, c) in accs.iter_mut().zip(colors.iter()) {
+                    *a = c.map(|c| self.load[c as usize]);
+                }
+            }
+            AccumOp::Accum => {
+                for (a, c) in accs.iter_mut().zip(colors.iter()) {
+                    for k in 0..4 {
+                        a[k] = a[k].wrapping_add(self.load[c[k] as usize]);
+                    }
+                }
+            }
+            AccumOp::Return => {
+                let format = self.format;
+                let alpha = format.has_alpha();
+                for (a, c) in accs.iter().zip(colors.iter_mut()) {
+                    let v = match &self.ret {
+                        Some(t) => {
+                            let q = a.map(|x| t[x as u16 as usize]);
+                            [q[0], q[1], q[2], if alpha { q[3] } else { 255 }]
+                        }
+                        None => {
+                            let scale = value / 32767.0f32;
+                            format.pack_float(
+                                a.map(|x| super::clamp01((x as f32 * scale) as f64) as f32),
+                            )
+                        }
+                    };
+                    for k in 0..4 {
+                        if mask[k] {
+                            c[k] = v[k];
+                        }
+                    }
+                }
+            }
+        }
     }
 }
 
@@ -222,6 +289,50 @@ fn accum_wide(
                 } else {
                     a[ch].wrapping_add(v)
                 };
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{AccumOp, AccumRow};
+    use crate::framebuffer::ColorFormat;
+
+    /// The tabulated conversions give what the expressions of the module doc give, for
+    /// every 8-bit channel, every accumulation value and values of every kind.
+    #[test]
+    fn tables_match_the_direct_conversions() {
+        let values = [0.25f32, 1.0, -0.7, 3.5, 1e9, -1e-3, f32::NAN, f32::INFINITY];
+        for &value in &values {
+            let colors: Vec<[u8; 4]> = (0..256).map(|c| [c as u8, 255 - c as u8, 7, 128]).collect();
+            let start: Vec<[i16; 4]> = (0..256)
+                .map(|i| [i * 97, -i * 31, i16::MAX, i16::MIN])
+                .collect();
+            let scale = value * 32767.0f32;
+            let step = |c: u8| (c as f32 * (1.0f32 / 255.0f32) * scale) as i32 as i16;
+            let mut a = start.clone();
+            AccumRow::new(AccumOp::Accum, value, ColorFormat::Rgba, [true; 4], 256)
+                .run(&mut a, &mut colors.clone());
+            for i in 0..256 {
+                let want: [i16; 4] =
+                    std::array::from_fn(|k| start[i][k].wrapping_add(step(colors[i][k])));
+                assert_eq!(a[i], want, "ACCUM {value} at {i}");
+            }
+            let accs: Vec<[i16; 4]> = (0..=u16::MAX)
+                .step_by(4)
+                .map(|b| [b as i16, (b + 1) as i16, (b + 2) as i16, (b + 3) as i16])
+                .collect();
+            for format in [ColorFormat::Rgba, ColorFormat::Rgb, ColorFormat::Bgra] {
+                let mask = [true, false, true, true];
+                let mut tab = vec![[9u8; 4]; accs.len()];
+                let mut direct = tab.clone();
+                let t = AccumRow::new(AccumOp::Return, value, format, mask, 1 << 20);
+                assert!(t.ret.is_some());
+                t.run(&mut accs.clone(), &mut tab);
+                AccumRow::new(AccumOp::Return, value, format, mask, 1)
+                    .run(&mut accs.clone(), &mut direct);
+                assert_eq!(tab, direct, "RETURN {value} {format:?}");
             }
         }
     }
