@@ -346,7 +346,7 @@ mod tests {
     fn avx2_copy_matches_the_scalar_copy() {
         #[cfg(target_arch = "x86_64")]
         {
-            if !std::arch::is_x86_feature_detected!("avx2") {
+            if !crate::simd::cpu::isa().avx2() {
                 return;
             }
             let mut rng = crate::test_rng::xorshift32(7);
@@ -399,7 +399,7 @@ mod tests {
                 let bytes = n * 4 * ty.bytes();
                 let (mut a, mut b) = (vec![0u8; bytes], vec![1u8; bytes]);
                 row.copy_body(ty, 4, &mut a);
-                // SAFETY: the CPU has AVX2 (checked above).
+                // SAFETY: the running level has AVX2 (checked above).
                 unsafe { row.copy_avx2(ty, 4, &mut b) };
                 assert_eq!(a, b, "case {case}: {kind:?} {ty:?}, {n} pixels");
             }
