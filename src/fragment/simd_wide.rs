@@ -4,7 +4,8 @@
 //!
 //! A wide plane holds each pixel as four f32 (RGBA), so the 8 pixels of a chunk are four
 //! registers of two pixels each; they are transposed to one register per channel after
-//! the masked load and back before the masked store. The stored value is read as
+//! the load and back before the store (plain 32-byte accesses when all 8 pixels pass,
+//! `vpmaskmovd` otherwise: AMD microcodes its stores). The stored value is read as
 //! [`crate::framebuffer::samples::PlaneRows::wide_at`] reads it (the 8-bit mirror decides
 //! whether the wide value is current), blended at the buffer's precision (unorm16 in
 //! 32-bit integer lanes with llvmpipe's `mul`, floats in f32 with the folded factors of
