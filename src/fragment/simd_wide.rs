@@ -213,11 +213,7 @@ unsafe fn mirror8(k: WideKind, v: Vec4) -> I32x8 {
     unsafe {
         let mut acc = I32x8::zero();
         for (ch, c) in v.iter().enumerate() {
-            let f = match k {
-                WideKind::Unorm16 => c.mul(F32x8::splat(1.0 / 65535.0f32)),
-                _ => *c,
-            };
-            let u = sat(f).mul(F32x8::splat(255.0)).to_i32();
+            let u = k.mirror8_lanes(*c);
             acc = acc.or(u.shl_var(I32x8::splat(8 * ch as i32)));
         }
         acc
@@ -232,16 +228,12 @@ unsafe fn mirror8(k: WideKind, v: Vec4) -> I32x8 {
 unsafe fn from_u8(k: WideKind, c8: I32x8) -> Vec4 {
     // SAFETY: the caller's AVX2 context.
     unsafe {
-        let scale = match k {
-            WideKind::Unorm16 => 257.0,
-            _ => 1.0 / 255.0f32,
-        };
         let mut v = [F32x8::zero(); 4];
         for (ch, c) in v.iter_mut().enumerate() {
             let b = c8
                 .shr_var(I32x8::splat(8 * ch as i32))
                 .and(I32x8::splat(0xFF));
-            *c = b.to_f32().mul(F32x8::splat(scale));
+            *c = k.from_u8_lanes(b);
         }
         v
     }

@@ -228,9 +228,8 @@ impl WideRow<'_> {
     /// [`WideRow::copy_body`] compiled for AVX2, four RGBA pixels at a time on 8 lanes
     /// (two pixels a register) for the layouts of OSMesa's own wide buffers: u16 from a
     /// 16-bit plane, f32 from a float plane. The lane operations are the scalar ones: the
-    /// mirror clamps with `max(f, 0)` (NaN gives 0), then `min(1)`, `·255` and `vcvtps2dq`
-    /// (ties to even); `as u16` is `vcvttps2dq` of `min(65535, v)` (NaN stays NaN and
-    /// packs to 0, as do negatives).
+    /// mirror test is [`WideKind::mirror8_lanes`]; `as u16` is `vcvttps2dq` of
+    /// `min(65535, v)` (NaN stays NaN and packs to 0, as do negatives).
     ///
     /// # Safety
     /// The CPU has AVX2.
@@ -255,10 +254,6 @@ impl WideRow<'_> {
         // `x..x + 4` of `wide` and `color` and every store bytes `x * px..(x + 4) * px` of
         // `out`, all inside their slices for `x + 4 <= len`.
         unsafe {
-            let unorm = k == WideKind::Unorm16;
-            let to_float = F32x8::splat(if unorm { 1.0 / 65535.0 } else { 1.0 });
-            let widen = F32x8::splat(if unorm { 257.0 } else { 1.0 / 255.0 });
-            let (zero, one, s255) = (F32x8::zero(), F32x8::splat(1.0), F32x8::splat(255.0));
             let max16 = F32x8::splat(65535.0);
             let pending = self.pending.map(|c| {
                 let b = [c[0], c[1], c[2], c[3], c[0], c[1], c[2], c[3]];
@@ -275,11 +270,10 @@ impl WideRow<'_> {
                         I32x8::from_u8(p.read_unaligned())
                     }
                 };
-                let m = w.mul(to_float).max(zero).min(one).mul(s255).to_i32();
-                let e = m.cmpeq(c).as_f32();
+                let e = k.mirror8_lanes(w).cmpeq(c).as_f32();
                 let e = e.and(e.permute::<0xB1>());
                 let e = e.and(e.permute::<0x4E>());
-                c.to_f32().mul(widen).blendv(w, e)
+                k.from_u8_lanes(c).blendv(w, e)
             };
             for q in 0..quads {
                 let x = 4 * q;

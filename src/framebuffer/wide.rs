@@ -12,6 +12,8 @@
 //! ([`super::Framebuffer::wide_at`], [`super::samples::PlaneRows::wide_at`]).
 
 use super::float_to_ubyte;
+#[cfg(target_arch = "x86_64")]
+use crate::simd::{F32x8, I32x8};
 
 /// The precision of a colour buffer wider than 8 bits. The plane holds every channel as
 /// an f32: see each variant for what that f32 is.
@@ -23,6 +25,45 @@ pub enum WideKind {
     Float16,
     /// R32G32B32A32_FLOAT: the float.
     Float32,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl WideKind {
+    /// [`WideKind::mirror8`] of each lane (stored channel values) as an integer 0..=255:
+    /// clamped with `max(f, 0)` (NaN gives 0) and `min(1)`, then `·255` and `vcvtps2dq`
+    /// (ties to even), the scalar function's operations. Shared by the 8-lane store
+    /// (channel-major lanes) and the AVX2 copy-out (pixel-major lanes).
+    ///
+    /// # Safety
+    /// AVX2 context.
+    #[inline(always)]
+    pub unsafe fn mirror8_lanes(self, v: F32x8) -> I32x8 {
+        // SAFETY: the caller's AVX2 context.
+        unsafe {
+            let f = match self {
+                WideKind::Unorm16 => v.mul(F32x8::splat(1.0 / 65535.0f32)),
+                _ => v,
+            };
+            let sat = f.max(F32x8::zero()).min(F32x8::splat(1.0));
+            sat.mul(F32x8::splat(255.0)).to_i32()
+        }
+    }
+
+    /// [`WideKind::from_u8`] of each lane (8-bit channel values 0..=255).
+    ///
+    /// # Safety
+    /// AVX2 context.
+    #[inline(always)]
+    pub unsafe fn from_u8_lanes(self, c: I32x8) -> F32x8 {
+        // SAFETY: the caller's AVX2 context.
+        unsafe {
+            let scale = match self {
+                WideKind::Unorm16 => 257.0,
+                _ => 1.0 / 255.0f32,
+            };
+            c.to_f32().mul(F32x8::splat(scale))
+        }
+    }
 }
 
 impl WideKind {
