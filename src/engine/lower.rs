@@ -33,8 +33,13 @@ pub fn planes_of(t: &SetupTriangle) -> [[f32; 3]; 2 + MAX_VARY] {
 /// planes its program reads).
 pub fn planes_into(t: &SetupTriangle, out: &mut [[f32; 3]]) {
     let p = |p: &crate::geometry::setup::Plane| [p.a0, p.dadx, p.dady];
-    let planes = [&t.z, &t.w].into_iter().chain(t.vary.iter());
-    for (o, v) in out.iter_mut().zip(planes) {
+    // Two loops, not one over a chained iterator: the chain's per-item branch was a third
+    // of `Walk::begin`, which runs once per triangle.
+    let (head, vary) = out.split_at_mut(out.len().min(2));
+    for (o, v) in head.iter_mut().zip([&t.z, &t.w]) {
+        *o = p(v);
+    }
+    for (o, v) in vary.iter_mut().zip(&t.vary) {
         *o = p(v);
     }
 }
