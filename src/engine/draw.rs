@@ -327,10 +327,13 @@ impl Walk {
         };
         st.ns[k] = LANES.min(fb.width - x) as u8;
         for (u, lanes) in tex.iter().enumerate().take(self.units) {
-            let chans = crate::simd::pack::channels_of(lanes);
-            for (ch, v) in chans.into_iter().enumerate() {
-                st.streams[(4 * u + ch) * MAX_BATCH + k] = v;
-            }
+            // Stream 4u + ch of chunk k.
+            crate::simd::pack::channels_into(
+                lanes,
+                &mut st.streams,
+                4 * u * MAX_BATCH + k,
+                MAX_BATCH,
+            );
         }
         st.len += 1;
         if st.len == MAX_BATCH {

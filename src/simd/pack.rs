@@ -56,36 +56,44 @@ unsafe fn rgba_to_rgb_avx2(src: &[[u8; 4]], dst: &mut [u8]) {
     rgba_to_rgb_scalar(&src[i..], &mut dst[i * 3..]);
 }
 
-/// The bits of 8 pixels' 4 channels (`src[pixel][channel]`) channel-major: row `c`
-/// holds channel `c` of pixels 0..8 (a sampled chunk row's texels as the engine's input
-/// streams).
-pub fn channels_of(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
+/// The bits of 8 pixels' 4 channels (`src[pixel][channel]`) channel-major: channel `c`
+/// of pixels 0..8 goes to `dst[at + c * stride]` (a sampled chunk row's texels into the
+/// engine's input streams). Written in place, not returned: the engine's walk is not
+/// compiled for AVX2, and its 16-byte copies of a returned array stalled on the 32-byte
+/// stores that made it (a fifth of `Walk::row` in multitex_combine).
+///
+/// # Panics
+/// When `dst` has no element `at + 3 * stride`.
+pub fn channels_into(src: &[[f32; 4]; 8], dst: &mut [[u32; 8]], at: usize, stride: usize) {
+    assert!(at + 3 * stride < dst.len(), "channels_into: out of bounds");
     #[cfg(target_arch = "x86_64")]
     if super::cpu::isa().avx2() {
-        // SAFETY: an AVX2 variant runs only on a CPU with AVX2.
-        return unsafe { channels_of_avx2(src) };
+        // SAFETY: an AVX2 variant runs only on a CPU with AVX2; the bounds are checked.
+        return unsafe { channels_into_avx2(src, dst, at, stride) };
     }
-    channels_of_scalar(src)
+    channels_into_scalar(src, dst, at, stride)
 }
 
-/// [`channels_of`] a value at a time.
-pub fn channels_of_scalar(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
-    std::array::from_fn(|c| std::array::from_fn(|i| src[i][c].to_bits()))
+/// [`channels_into`] a value at a time.
+pub fn channels_into_scalar(src: &[[f32; 4]; 8], dst: &mut [[u32; 8]], at: usize, stride: usize) {
+    for c in 0..4 {
+        dst[at + c * stride] = std::array::from_fn(|i| src[i][c].to_bits());
+    }
 }
 
-/// [`channels_of`] as a 4x4 transposition in each 128-bit lane: `vperm2f128` pairs pixel
-/// i with pixel i + 4, `vunpcklps`/`vunpckhps` interleave pixel pairs, and `vshufps`
-/// gathers each channel (moves only: every bit is kept).
+/// [`channels_into`] as a 4x4 transposition in each 128-bit lane: `vperm2f128` pairs
+/// pixel i with pixel i + 4, `vunpcklps`/`vunpckhps` interleave pixel pairs, and
+/// `vshufps` gathers each channel (moves only: every bit is kept).
 ///
 /// # Safety
-/// The CPU has AVX2.
+/// The CPU has AVX2, and `dst` has an element `at + 3 * stride`.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn channels_of_avx2(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
+unsafe fn channels_into_avx2(src: &[[f32; 4]; 8], dst: &mut [[u32; 8]], at: usize, stride: usize) {
     use super::F32x8;
-    let mut out = [[0u32; 8]; 4];
-    // SAFETY: `src` is 32 contiguous f32, read as four 8-lane loads; each row of `out`
-    // takes one 8-lane store; the CPU has AVX2 (the caller's promise).
+    // SAFETY: `src` is 32 contiguous f32, read as four 8-lane loads; each channel takes
+    // one 8-lane store into an element of `dst` (in bounds: the caller's promise); the CPU
+    // has AVX2 (likewise).
     unsafe {
         let p = src.as_ptr() as *const f32;
         let (a, b) = (F32x8::load(p), F32x8::load(p.add(8)));
@@ -102,11 +110,11 @@ unsafe fn channels_of_avx2(src: &[[f32; 4]; 8]) -> [[u32; 8]; 4] {
             ba01.shuffle::<0x44>(ba23),
             ba01.shuffle::<0xEE>(ba23),
         ];
-        for (o, v) in out.iter_mut().zip(rows) {
-            v.store(o.as_mut_ptr() as *mut f32);
+        let out = dst.as_mut_ptr().add(at);
+        for (c, v) in rows.into_iter().enumerate() {
+            v.store(out.add(c * stride) as *mut f32);
         }
     }
-    out
 }
 
 #[cfg(test)]
@@ -138,7 +146,7 @@ mod tests {
     }
 
     #[test]
-    fn channels_of_every_variant_keeps_the_bits() {
+    fn channels_into_every_variant_keeps_the_bits() {
         let mut r = crate::test_rng::xorshift32(17);
         for round in 0..200 {
             // Random bits: NaNs with payloads, infinities, denormals included.
@@ -159,12 +167,25 @@ mod tests {
                     want[c][i] = v.to_bits();
                 }
             }
-            assert_eq!(channels_of(&src), want, "dispatched");
-            assert_eq!(channels_of_scalar(&src), want, "scalar");
+            // Into a strided buffer of 3 + 3·5 + 2 rows, its other rows a marker.
+            let (at, stride) = (3, 5);
+            let got = |f: &dyn Fn(&mut [[u32; 8]])| {
+                let mut dst = vec![[0xDEAD_BEEFu32; 8]; at + 3 * stride + 2];
+                f(&mut dst);
+                for (k, row) in dst.iter().enumerate() {
+                    let c = (k >= at && (k - at) % stride == 0).then(|| (k - at) / stride);
+                    match c {
+                        Some(c) if c < 4 => assert_eq!(*row, want[c], "row {k}"),
+                        _ => assert_eq!(*row, [0xDEAD_BEEF; 8], "row {k} untouched"),
+                    }
+                }
+            };
+            got(&|d| channels_into(&src, d, at, stride));
+            got(&|d| channels_into_scalar(&src, d, at, stride));
             #[cfg(target_arch = "x86_64")]
             if std::is_x86_feature_detected!("avx2") {
-                // SAFETY: the CPU has AVX2.
-                assert_eq!(unsafe { channels_of_avx2(&src) }, want, "avx2");
+                // SAFETY: the CPU has AVX2; `d` has element `at + 3 * stride`.
+                got(&|d| unsafe { channels_into_avx2(&src, d, at, stride) });
             }
         }
     }
