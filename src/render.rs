@@ -22,7 +22,7 @@ use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{ClipMask, ClipVertex, Viewport};
 use crate::pipe::{Material, Primitive, RasterState};
-use crate::raster::batch::{geom_section, Binner, InFlight, Rasterizer, TriangleSink};
+use crate::raster::batch::{geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::raster::Draw;
 use crate::stats::Stats;
@@ -67,7 +67,9 @@ pub struct DrawPlan<'a> {
 
 /// Runs `plan` for `verts` drawn as `mode` (through `indices` when given) into `fb`, inside
 /// `region`; `materials`, when given, is each vertex's own material. With `detach`, the
-/// last batch of triangles may be left drawing on the pool: it is returned.
+/// last batch of triangles may be left drawing on the pool: it is returned. `adopt` is
+/// the previous draw's batch still drawing into `fb`, taken back by this draw's
+/// rasterizer ([`Rasterizer::adopt`]) before it draws anything.
 ///
 /// # Safety
 /// With `detach`, as [`Rasterizer::flush_detached`]: the caller must put `fb` into the
@@ -84,6 +86,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     region: [i64; 4],
     stats: &mut Stats,
     detach: bool,
+    adopt: Option<Adopted>,
 ) -> Option<InFlight> {
     let DrawPlan {
         mut stage,
@@ -110,6 +113,9 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         );
         if !tris || poly || plan.flat || plan.ms.is_some() {
             stats.program_draws_refused += 1;
+            if let Some(a) = adopt {
+                a.settle(stats);
+            }
             return None;
         }
     }
@@ -174,6 +180,9 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     let back = stage.two_side().then(|| stage.back_offset());
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
     let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
+    if let Some(a) = adopt {
+        rast.adopt(a, stats);
+    }
     let pipe = TriPipe {
         setup: match plan.ms {
             Some(_) => SetupVariant::all_samples(),

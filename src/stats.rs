@@ -87,8 +87,8 @@ counters! {
         /// Samples that passed every fragment test, counted only while an occlusion query is
         /// active (the draw's [`crate::fragment::FragPlan::count_samples`]).
         samples_passed: pixel,
-        /// Draws whose last batch was left drawing on the pool when the draw returned (chunks
-        /// of a long glBegin/glEnd batch: see `Rasterizer::flush_detached`).
+        /// Draws whose last batch was left drawing on the pool when the draw returned
+        /// (glBegin/glEnd draws: see `Rasterizer::flush_detached`).
         draws_detached: draw,
     }
 }

@@ -23,6 +23,8 @@ pub const BAND_ROWS: usize = 32;
 /// depth_front_to_back 5.0 → 3.5, sprites 32.9 → 29.5; small-triangle draws are bounded by
 /// [`MAX_BATCH`] first and did not change.
 pub const MAX_WORK: i64 = 1 << 25;
+/// [`Tuning::detach_work`]'s default (see its doc; measured in docs/performance.md, stop 67).
+pub const DETACH_WORK: i64 = 1024;
 /// [`Tuning::band_area`]'s default: at 1024x1024 the colour and depth buffers are 4 MB
 /// each, twice the L2 cache, so a band's rows are kept in the cache while every big
 /// triangle of a batch is drawn into them; smaller triangles are drawn at once.
@@ -127,6 +129,11 @@ pub struct Tuning {
     /// `SOFTGL_MAX_WORK`: threaded, pixels of triangle boxes after which a batch is handed
     /// to the pool, at least 1. Default [`MAX_WORK`] (2^25) pixels.
     pub max_work: i64,
+    /// `SOFTGL_DETACH_WORK`: threaded, pixels of triangle boxes from which the last batch of
+    /// a glBegin/glEnd draw is left drawing on the pool when the draw returns (the next
+    /// draw sets up its triangles meanwhile and takes it back), at least 1. Default
+    /// [`DETACH_WORK`] pixels.
+    pub detach_work: i64,
     /// `SOFTGL_BAND_AREA`: single-threaded, the box size in pixels from which triangles are
     /// batched and drawn band by band, at least 0. Default [`BAND_AREA`] (4096) pixels.
     pub band_area: i64,
@@ -214,6 +221,7 @@ impl Tuning {
             band_rows: int("SOFTGL_BAND_ROWS")
                 .map_or(BAND_ROWS, |v| (v.clamp(2, 4096) as usize) & !1),
             max_work: int("SOFTGL_MAX_WORK").map_or(MAX_WORK, |v| v.max(1)),
+            detach_work: int("SOFTGL_DETACH_WORK").map_or(DETACH_WORK, |v| v.max(1)),
             band_area: int("SOFTGL_BAND_AREA").map_or(BAND_AREA, |v| v.max(0)),
             max_batch: int("SOFTGL_MAX_BATCH").map_or(MAX_BATCH, |v| v.clamp(1, 1 << 20) as usize),
             pool_help: int("SOFTGL_POOL_HELP") != Some(0),
@@ -257,6 +265,7 @@ impl Tuning {
             ref_cpu_caps,
             band_rows,
             max_work,
+            detach_work,
             band_area,
             max_batch,
             pool_help,
@@ -285,6 +294,7 @@ impl Tuning {
             ("SOFTGL_REF_CPU_CAPS", given(ref_cpu_caps)),
             ("SOFTGL_BAND_ROWS", band_rows.to_string()),
             ("SOFTGL_MAX_WORK", max_work.to_string()),
+            ("SOFTGL_DETACH_WORK", detach_work.to_string()),
             ("SOFTGL_BAND_AREA", band_area.to_string()),
             ("SOFTGL_MAX_BATCH", max_batch.to_string()),
             ("SOFTGL_POOL_HELP", on(pool_help)),

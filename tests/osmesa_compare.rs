@@ -385,6 +385,7 @@ const SCENES: &[&str] = &[
     "wide_pixels",
     "msaa_lines_points",
     "fbo_lend",
+    "tex_respecify_inflight",
 ];
 
 macro_rules! scene_tests {
@@ -553,6 +554,7 @@ scene_tests!(
     wide_pixels,
     msaa_lines_points,
     fbo_lend,
+    tex_respecify_inflight,
 );
 
 /// `examples/demo.c` writes a PNG; it must match OSMesa's too.

@@ -183,3 +183,110 @@ fn chunks_left_drawing_on_the_pool_are_settled_by_every_next_call() {
         drop(small);
     }
 }
+
+/// With threads on, a glBegin/glEnd strip's last batch of triangles stays drawing on the
+/// pool when glEnd returns; the next strip's draw takes it back, and every other call
+/// waits for it first. Textured strips drawn that way, with the texture they sample
+/// re-specified and replaced between strips, give the image of the same strips each
+/// followed by glFinish (which settles every batch at once), and the strips did stay on
+/// the pool (`draws_detached`).
+#[test]
+fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
+    use softgl::ffi::textures::*;
+    let (w, h) = (200, 150);
+    let texels = |seed: u32| -> Vec<u8> {
+        (0..32 * 32 * 4)
+            .map(|i: u32| (i.wrapping_mul(37).wrapping_add(seed * 101) >> 2) as u8)
+            .collect()
+    };
+    let (a, b) = (texels(1), texels(2));
+    let draw = |finish_each: bool| -> (Vec<u8>, u64) {
+        let c = Ctx::new(w, h);
+        glClearColor(0.2, 0.1, 0.3, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        let mut tex = 0;
+        // SAFETY: one name into `tex`; `a` holds 32x32 RGBA bytes.
+        unsafe {
+            glGenTextures(1, &mut tex);
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glTexImage2D(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                32,
+                32,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                a.as_ptr().cast(),
+            );
+        }
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+        glEnable(GL_TEXTURE_2D);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glColor4f(1.0, 0.9, 0.8, 0.6);
+        for round in 0..4 {
+            for row in 0..10 {
+                let (y0, y1) = (-1.0 + 0.2 * row as f32, -0.8 + 0.2 * row as f32);
+                glBegin(GL_QUAD_STRIP);
+                for i in 0..=12 {
+                    let x = -1.0 + 2.0 * i as f32 / 12.0;
+                    glTexCoord2f(x * (1 + round) as f32, y1);
+                    glVertex2f(x, y1);
+                    glTexCoord2f(x * (1 + round) as f32, y0);
+                    glVertex2f(x, y0);
+                }
+                glEnd();
+                if finish_each {
+                    glFinish();
+                }
+            }
+            // Right after a strip that sampled it: the texels replaced, then the image
+            // re-specified at another size.
+            // SAFETY: `b` and `a` hold 32x32 RGBA bytes (8x8 read of `b`, 16x16 of `a`).
+            unsafe {
+                if round % 2 == 0 {
+                    glTexSubImage2D(
+                        GL_TEXTURE_2D,
+                        0,
+                        2,
+                        2,
+                        8,
+                        8,
+                        GL_RGBA,
+                        GL_UNSIGNED_BYTE,
+                        b.as_ptr().cast(),
+                    );
+                } else {
+                    glTexImage2D(
+                        GL_TEXTURE_2D,
+                        0,
+                        GL_RGBA as i32,
+                        16,
+                        16,
+                        0,
+                        GL_RGBA,
+                        GL_UNSIGNED_BYTE,
+                        a.as_ptr().cast(),
+                    );
+                }
+            }
+        }
+        glFinish();
+        assert_eq!(take_error(), GL_NO_ERROR);
+        let detached = softgl::ffi::current_stats().unwrap().draws_detached;
+        (c.read(), detached)
+    };
+    let (settled, _) = draw(true);
+    let (kept, detached) = draw(false);
+    let distinct: std::collections::HashSet<&[u8]> = settled.chunks(4).collect();
+    assert!(distinct.len() > 100, "the strips drew too little texture");
+    assert!(kept == settled, "strips left on the pool: image differs");
+    if softgl::cpu::threads() > 1 {
+        assert!(detached >= 30, "only {detached} strips stayed on the pool");
+    } else {
+        assert_eq!(detached, 0);
+    }
+}

@@ -280,7 +280,7 @@ impl Context {
                 self.check_outside_begin()?;
                 let im = &self.immediate;
                 if im.pending != Some(m) || im.indexed != im.replaying {
-                    self.flush_pending();
+                    self.flush_pending_keep();
                 } else {
                     self.materialize_pending_node();
                 }
@@ -305,7 +305,7 @@ impl Context {
                 im.pending = Some(mode);
                 im.indexed = im.replaying;
                 if !super::immediate::Immediate::mergeable(mode) {
-                    self.flush_pending();
+                    self.flush_pending_keep();
                 }
             }
             // the per-vertex commands (handled by `vertex_op`; kept so the match is whole)

@@ -221,15 +221,16 @@ impl Context {
         }
     }
 
-    /// Draws the pending compiled draw, if there is one (from `flush_pending`): returns
-    /// whether there was.
-    pub(super) fn draw_pending_node(&mut self, mode: Primitive) -> bool {
+    /// Draws the pending compiled draw, if there is one (from `flush_pending`), leaving
+    /// its last batch on the pool with `keep`: returns whether there was.
+    pub(super) fn draw_pending_node(&mut self, mode: Primitive, keep: bool) -> bool {
         let Some(p) = self.immediate.pending_node.take() else {
             return false;
         };
         let g = &p.node.groups[p.group];
         let src = p.node.verts.source(g.start, g.count, &p.base);
-        super::draw::draw(self, mode, &src, Some(&p.node.idx[..g.count]));
+        let idx = Some(&p.node.idx[..g.count]);
+        super::draw::draw_batch(self, mode, &src, idx, None, keep);
         true
     }
 

@@ -34,13 +34,28 @@ pub fn draw_lit<S: VertexSource + ?Sized>(
     indices: Option<&[u32]>,
     materials: Option<&[[Material; 2]]>,
 ) {
+    draw_batch(ctx, mode, verts, indices, materials, false)
+}
+
+/// [`draw_lit`] for a finished glBegin/glEnd batch: with `keep`, its last batch of
+/// triangles may be left drawing on the pool ([`Context::settle_draws`]) while the
+/// program goes on with per-vertex calls and the next glBegin/glEnd, whose draw takes it
+/// back.
+pub fn draw_batch<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    mode: Primitive,
+    verts: &S,
+    indices: Option<&[u32]>,
+    materials: Option<&[[Material; 2]]>,
+    keep: bool,
+) {
     let prims = Prims {
         mode,
         verts,
         indices,
         materials,
     };
-    draw_inner(ctx, prims, false)
+    draw_inner(ctx, prims, keep)
 }
 
 /// [`draw`] for a chunk of a long glBegin/glEnd batch drawn while the batch is still being
@@ -165,8 +180,36 @@ fn draw_pass<S: VertexSource + ?Sized>(
     detach: bool,
     ms: Option<crate::fragment::MsPass>,
 ) -> bool {
-    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the pool.
-    ctx.settle_draws();
+    // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the
+    // pool: a draw that may leave its own last batch there (single-sampled, no bitmaps
+    // pending) takes the previous one back in its rasterizer, after setting up its
+    // triangles; any other draw settles it first.
+    let detach = detach
+        && ms.is_none()
+        && ctx.bitmap_cache.pending.is_none()
+        && ctx.feedback.mode == RenderMode::Render;
+    let mut adopt = if detach {
+        ctx.release_inflight()
+    } else {
+        ctx.settle_draws();
+        None
+    };
+    let drawn = draw_pass_with(ctx, prims, detach, ms, &mut adopt);
+    if let Some(a) = adopt {
+        a.settle(&mut ctx.stats);
+    }
+    drawn
+}
+
+/// [`draw_pass`] once the previous draw's batch is settled or in `adopt` (taken by the
+/// draw's rasterizer, or left for the caller to settle when nothing is drawn).
+fn draw_pass_with<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    prims: Prims<'_, S>,
+    detach: bool,
+    ms: Option<crate::fragment::MsPass>,
+    adopt: &mut Option<crate::raster::batch::Adopted>,
+) -> bool {
     crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let Some(fb) = ctx.fb.as_ref() else {
         return true;
@@ -273,7 +316,15 @@ fn draw_pass<S: VertexSource + ?Sized>(
         // The other planes ride along with plane 0 (`Framebuffer::samples`).
         fb.hold_samples(std::mem::take(&mut ctx.fbo.ms_planes));
     }
-    let kept = run(plan, prims, fb, region, &mut ctx.stats, detach);
+    let kept = run(
+        plan,
+        prims,
+        fb,
+        region,
+        &mut ctx.stats,
+        detach,
+        adopt.take(),
+    );
     if one_pass {
         ctx.fbo.ms_planes = fb.release_samples();
     }
@@ -288,7 +339,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
     true
 }
 
-/// [`crate::render::run`], for a draw that settled the previous one first.
+/// [`crate::render::run`], for a draw that settled the previous one first or hands it
+/// over (`adopt`).
 fn run<S: VertexSource + ?Sized>(
     plan: DrawPlan<'_>,
     prims: Prims<'_, S>,
@@ -296,10 +348,12 @@ fn run<S: VertexSource + ?Sized>(
     region: [i64; 4],
     stats: &mut crate::stats::Stats,
     detach: bool,
+    adopt: Option<crate::raster::batch::Adopted>,
 ) -> Option<crate::raster::batch::InFlight> {
     // SAFETY: with `detach`, the caller keeps the returned batch (`keep_inflight`) before
     // anything else touches `fb`, and every draw settles the draws on the pool
-    // (`Context::settle_draws`) before it starts a rasterizer; this one did.
+    // (`Context::settle_draws`) before it starts a rasterizer, or hands the one in flight
+    // into `fb` to this draw's rasterizer (`adopt`), which takes it back first.
     unsafe {
         crate::render::run(
             plan,
@@ -311,6 +365,7 @@ fn run<S: VertexSource + ?Sized>(
             region,
             stats,
             detach,
+            adopt,
         )
     }
 }

@@ -188,9 +188,10 @@ pub struct Context {
     pub fbo: fbo::FboState,
     /// GL 2.0 shader and program objects and the current program.
     pub shaders: shader_objects::ShaderState,
-    /// The last batch of a streamed glBegin/glEnd chunk, still drawn by the pool
+    /// The last batch of a glBegin/glEnd draw, still drawn by the pool
     /// ([`crate::raster::batch::Rasterizer::flush_detached`]), holding the framebuffer
-    /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back.
+    /// (`fb` is `None` meanwhile) until [`Context::settle_draws`] puts it back or the next
+    /// such draw takes it over ([`Context::release_inflight`]).
     inflight: Option<crate::raster::batch::InFlight>,
     /// Buffers reused by glDrawPixels and glCopyPixels.
     pub pixel_scratch: crate::pixels::draw::Scratch,
@@ -282,6 +283,15 @@ impl Context {
         }
     }
 
+    /// The draw still running on the pool, if any, with its framebuffer put back into `fb`
+    /// without waiting: for the next draw into `fb`, whose rasterizer takes it back
+    /// ([`crate::raster::batch::Rasterizer::adopt`]) before anything touches `fb`.
+    pub(crate) fn release_inflight(&mut self) -> Option<crate::raster::batch::Adopted> {
+        let (a, fb) = self.inflight.take()?.release();
+        self.fb = fb;
+        Some(a)
+    }
+
     /// Hands `fb` to `f`, the last batch of a draw still drawing into it on the pool,
     /// until [`Context::settle_draws`].
     ///
@@ -295,13 +305,27 @@ impl Context {
         self.inflight = Some(f);
     }
 
-    /// Draws a deferred glBegin/glEnd batch, if any. Every GL call except the vertex
-    /// attribute calls and glBegin does this first, as Mesa flushes its vertex buffer.
+    /// Draws a deferred glBegin/glEnd batch, if any, and waits for the draws on the pool.
+    /// Every GL call except the vertex attribute calls and glBegin does this first, as
+    /// Mesa flushes its vertex buffer.
     #[inline]
     pub fn flush_pending(&mut self) {
+        self.draw_pending(false);
         self.settle_draws();
+    }
+
+    /// Draws a deferred glBegin/glEnd batch, if any, leaving its last batch of triangles
+    /// drawing on the pool (glBegin, and glEnd of a mode that is never merged, which go on
+    /// to more vertices; the next draw takes it back, any other GL call waits for it).
+    pub fn flush_pending_keep(&mut self) {
+        self.draw_pending(true);
+    }
+
+    /// Draws a deferred glBegin/glEnd batch, if any; with `keep`, its last batch of
+    /// triangles may stay drawing on the pool.
+    fn draw_pending(&mut self, keep: bool) {
         if let Some(mode) = self.immediate.pending.take() {
-            if self.draw_pending_node(mode) {
+            if self.draw_pending_node(mode, keep) {
                 self.immediate.generic_inside = false;
                 return;
             }
@@ -312,7 +336,7 @@ impl Context {
                 .immediate
                 .indexed
                 .then(|| (0..verts.len() as u32).collect());
-            draw::draw_lit(self, mode, &verts, idx.as_deref(), mats.as_deref());
+            draw::draw_batch(self, mode, &verts, idx.as_deref(), mats.as_deref(), keep);
             let im = &mut self.immediate;
             let total = std::mem::take(&mut im.streamed) + verts.len();
             im.verts = verts;

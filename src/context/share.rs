@@ -53,6 +53,8 @@ impl ShareGroup {
 
     /// Moves `c`'s tables back into the group (when the group does not hold any).
     pub fn check_in(&self, c: &mut Context) {
+        // A draw still on the pool may be reading the tables' texture images.
+        c.settle_draws();
         let Ok(mut g) = self.0.lock() else { return };
         if g.is_none() {
             c.fbo_check_in();

@@ -12,9 +12,13 @@
 //! the other, so each pixel sees the same fragments in the same order as single-threaded
 //! rendering: the images are byte-identical with threads on and off. The last batch of a
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
-//! work; only a chunk of a long glBegin/glEnd batch returns while the pool draws its last
-//! batch ([`Rasterizer::flush_detached`]), holding the framebuffer until the context's
-//! next GL call other than a per-vertex one settles it. The batches live in a per-thread
+//! work; only a glBegin/glEnd draw (a chunk of a long batch, or a batch drawn by glEnd of
+//! a strip or by the next glBegin) returns while the pool draws its last batch
+//! ([`Rasterizer::flush_detached`]), holding the framebuffer, with a copy of the unit
+//! plans. The next such draw sets up its triangles meanwhile and then takes the batch
+//! back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones settles it
+//! first, drawing its remaining bands too. So a program's many small strips keep both
+//! threads drawing, as llvmpipe's scene binning of a whole frame does. The batches live in a per-thread
 //! pool, so drawing allocates little once they have grown (a band list per batch).
 //! Waking a sleeping pool thread costs a good part of a millisecond here, so a pool task
 //! polls for the next batch for a while after drawing one and the draw's thread polls
@@ -175,8 +179,11 @@ struct Work {
     /// The next unclaimed band (claimed by every thread, so alone on its line).
     next: Padded<AtomicUsize>,
     plan: FragPlan,
-    units: *const UnitPlan<'static>,
-    n_units: usize,
+    /// A copy of the draw's unit plans: the work may outlive the draw that made it
+    /// ([`Rasterizer::flush_detached`]). The images they borrow stay untouched until the
+    /// work is taken back (every GL call but the per-vertex ones and a draw settles it
+    /// first), so the lifetime is the protocol's, not the type system's.
+    units: Vec<UnitPlan<'static>>,
     region: [i64; 4],
     nvary: usize,
     /// The pixel counters of the drawn bands.
@@ -188,10 +195,12 @@ struct BandCell<'f>(UnsafeCell<Target<'f>>);
 
 // SAFETY: a `Work` is shared between the draw's thread and one pool job. Each band is
 // reached only by the thread that claimed its index from `next` (`fetch_add` hands every
-// index out once); the batch is only read; the framebuffer and units behind the band
-// targets and `units` stay borrowed by the `Rasterizer` that made the work, which takes it
-// back (`wait`, called by every method that touches the framebuffer and by `Drop`) only
-// after the job has finished. `UnitPlan` is `Sync` and `Framebuffer` `Send` (checked in
+// index out once); the batch is only read; the framebuffer behind the band targets and the
+// texture images behind `units` stay borrowed by the `Rasterizer` that made the work, which
+// takes it back (`wait`, called by every method that touches the framebuffer and by
+// `Drop`) only after the job has finished, or, for a work left in flight, by the context
+// that holds the framebuffer and settles it before any call that could touch either
+// ([`InFlight`]). `UnitPlan` is `Sync` and `Framebuffer` `Send` (checked in
 // `launch`).
 unsafe impl Sync for Work {}
 // SAFETY: as for `Sync` above: the raw parts are only used under that protocol.
@@ -200,8 +209,7 @@ unsafe impl Send for Work {}
 impl Work {
     /// Draws unclaimed bands until none is left, then adds their counters to the work's.
     fn help(&self) {
-        // SAFETY: `units`/`n_units` come from a live slice (see `Work`'s `Sync`).
-        let units = unsafe { std::slice::from_raw_parts(self.units, self.n_units) };
+        let units = &self.units[..];
         let mut s = Stats::default();
         loop {
             let b = self.next.fetch_add(1, Ordering::Relaxed);
@@ -348,6 +356,22 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         }
     }
 
+    /// Takes back `a`, the last batch of the previous draw into this rasterizer's
+    /// framebuffer, left drawing on the pool ([`InFlight::release`]): it is waited for,
+    /// and its remaining bands drawn by this thread, before this draw's first batch is
+    /// drawn or anything touches the framebuffer, so this draw sets up its triangles
+    /// while the pool draws it. Settled at once when this rasterizer does not hand work
+    /// to the same job (no threads here, or another thread's pool).
+    pub fn adopt(&mut self, mut a: Adopted, stats: &mut Stats) {
+        if self.threads && self.inflight.is_none() && Arc::ptr_eq(&a.job, &self.job) {
+            self.inflight = a.work.take();
+            // The pool's second batch is the one in flight: `wait` brings it back.
+            self.spare = None;
+        } else {
+            a.settle(stats);
+        }
+    }
+
     /// The framebuffer, after drawing the pending batch (for lines and points).
     pub fn target(&mut self, stats: &mut Stats) -> &mut Framebuffer {
         self.flush(stats);
@@ -483,10 +507,10 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.batch.clear();
     }
 
-    /// As [`Rasterizer::flush`], except that a last batch big enough for the pool, of a
-    /// draw without textures, is left drawing there and returned: the draw's thread goes
-    /// on while the pool finishes it (a streamed glBegin/glEnd chunk returns to take the
-    /// next chunk's vertices). Nothing else is pending once this returns.
+    /// As [`Rasterizer::flush`], except that a last batch of at least
+    /// [`crate::tuning::Tuning::detach_work`] pixels is left drawing on the pool and
+    /// returned: the draw's thread goes on while the pool finishes it (a glBegin/glEnd
+    /// draw returns to take the next vertices). Nothing else is pending once this returns.
     ///
     /// # Safety
     /// Until the returned [`InFlight`] is settled or dropped, the pool writes the
@@ -496,7 +520,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     pub unsafe fn flush_detached(&mut self, stats: &mut Stats) -> Option<InFlight> {
         self.release(stats);
         self.wait(stats);
-        if !self.threads || !self.units.is_empty() || self.batch.work < PARALLEL_WORK {
+        if !self.threads || self.batch.work < self.tune.detach_work {
             self.flush(stats);
             return None;
         }
@@ -551,8 +575,12 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .collect(),
             next: Padded(AtomicUsize::new(0)),
             plan: *self.plan,
-            units: self.units.as_ptr().cast(),
-            n_units: self.units.len(),
+            // SAFETY: only the lifetime changes; see `units` in `Work`.
+            units: unsafe {
+                std::mem::transmute::<Vec<UnitPlan<'_>>, Vec<UnitPlan<'static>>>(
+                    self.units.to_vec(),
+                )
+            },
             region: self.region,
             nvary: self.nvary,
             stats: Mutex::new(Stats::default()),
@@ -607,21 +635,24 @@ impl InFlight {
         self.fb = fb;
     }
 
-    /// Waits until the batch is drawn, adds its counters to `stats`, gives its buffers
-    /// back to this thread's pool for the next draw, and returns the framebuffer.
+    /// Waits until the batch is drawn (drawing its remaining bands meanwhile), adds its
+    /// counters to `stats`, gives its buffers back to this thread's pool for the next
+    /// draw, and returns the framebuffer.
     pub fn settle(mut self, stats: &mut Stats) -> Option<Framebuffer> {
-        self.job.wait_done(self.spin);
-        let b = reclaim(self.work.take(), stats);
-        // Only while no rasterizer has the pool out (it is back between draws): the batch
-        // fills the slot the draw left empty.
-        POOL.with(|p| {
-            if let Ok(mut p) = p.try_borrow_mut() {
-                if let Some(slot) = p.batches.iter_mut().find(|s| s.heads.capacity() == 0) {
-                    *slot = b;
-                }
-            }
-        });
+        finish(self.work.take(), &self.job, self.spin, stats);
         self.fb.take()
+    }
+
+    /// Gives the framebuffer back without waiting, and the batch to the next draw into it,
+    /// which takes the batch back ([`Rasterizer::adopt`]) after setting up its own
+    /// triangles. The framebuffer's contents must not be touched until then.
+    pub fn release(mut self) -> (Adopted, Option<Framebuffer>) {
+        let a = Adopted {
+            work: self.work.take(),
+            job: Arc::clone(&self.job),
+            spin: self.spin,
+        };
+        (a, self.fb.take())
     }
 }
 
@@ -632,6 +663,52 @@ impl Drop for InFlight {
             self.job.wait_done(self.spin);
         }
     }
+}
+
+/// A batch left in flight by the last draw ([`InFlight::release`]), for the next draw's
+/// rasterizer to take back ([`Rasterizer::adopt`]) or to settle ([`Adopted::settle`]).
+/// Dropping it waits for the pool.
+pub struct Adopted {
+    work: Option<Arc<Work>>,
+    job: Arc<Job>,
+    spin: Duration,
+}
+
+impl Adopted {
+    /// As [`InFlight::settle`], for a batch whose framebuffer is back with its owner.
+    pub fn settle(mut self, stats: &mut Stats) {
+        finish(self.work.take(), &self.job, self.spin, stats);
+    }
+}
+
+impl Drop for Adopted {
+    fn drop(&mut self) {
+        if self.work.is_some() {
+            self.job.wait_done(self.spin);
+        }
+    }
+}
+
+/// Draws the remaining bands of `work`, a batch handed to `job`, waits until the job is
+/// done, adds the batch's counters to `stats` and gives its buffers back to this thread's
+/// pool.
+fn finish(work: Option<Arc<Work>>, job: &Job, spin: Duration, stats: &mut Stats) {
+    if let Some(w) = &work {
+        if crate::tuning::tuning().pool_help {
+            w.help();
+        }
+    }
+    job.wait_done(spin);
+    let b = reclaim(work, stats);
+    // Only while no rasterizer has the pool out (it is back between draws): the batch
+    // fills the slot the draw left empty.
+    POOL.with(|p| {
+        if let Ok(mut p) = p.try_borrow_mut() {
+            if let Some(slot) = p.batches.iter_mut().find(|s| s.heads.capacity() == 0) {
+                *slot = b;
+            }
+        }
+    });
 }
 
 /// The first and last row (y-down, inclusive) of `t`'s box inside `region` (the box is
