@@ -114,7 +114,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         if !tris || poly || plan.flat || plan.ms.is_some() {
             stats.program_draws_refused += 1;
             if let Some(a) = adopt {
-                a.settle(stats);
+                a.settle(stats, Some(&mut *fb));
             }
             return None;
         }

@@ -23,8 +23,9 @@ pub const BAND_ROWS: usize = 32;
 /// depth_front_to_back 5.0 → 3.5, sprites 32.9 → 29.5; small-triangle draws are bounded by
 /// [`MAX_BATCH`] first and did not change.
 pub const MAX_WORK: i64 = 1 << 25;
-/// [`Tuning::detach_work`]'s default (see its doc; measured in docs/performance.md, stop 67).
-pub const DETACH_WORK: i64 = 1024;
+/// [`Tuning::detach_work`]'s default: a threaded batch's size (see its doc; measured in
+/// docs/performance.md, stop 67).
+pub const DETACH_WORK: i64 = 1 << 15;
 /// [`Tuning::band_area`]'s default: at 1024x1024 the colour and depth buffers are 4 MB
 /// each, twice the L2 cache, so a band's rows are kept in the cache while every big
 /// triangle of a batch is drawn into them; smaller triangles are drawn at once.
@@ -129,10 +130,11 @@ pub struct Tuning {
     /// `SOFTGL_MAX_WORK`: threaded, pixels of triangle boxes after which a batch is handed
     /// to the pool, at least 1. Default [`MAX_WORK`] (2^25) pixels.
     pub max_work: i64,
-    /// `SOFTGL_DETACH_WORK`: threaded, pixels of triangle boxes from which the last batch of
-    /// a glBegin/glEnd draw is left drawing on the pool when the draw returns (the next
-    /// draw sets up its triangles meanwhile and takes it back), at least 1. Default
-    /// [`DETACH_WORK`] pixels.
+    /// `SOFTGL_DETACH_WORK`: threaded, pixels of triangle boxes from which the batch a
+    /// glBegin/glEnd draw ends with is handed to the pool when the draw returns (the next
+    /// draw sets up its triangles meanwhile and takes it back); a smaller one is kept for
+    /// the next draw's triangles to join, and handed over once the joined batch holds as
+    /// many. At least 1. Default [`DETACH_WORK`] pixels.
     pub detach_work: i64,
     /// `SOFTGL_BAND_AREA`: single-threaded, the box size in pixels from which triangles are
     /// batched and drawn band by band, at least 0. Default [`BAND_AREA`] (4096) pixels.

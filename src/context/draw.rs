@@ -196,7 +196,7 @@ fn draw_pass<S: VertexSource + ?Sized>(
     };
     let drawn = draw_pass_with(ctx, prims, detach, ms, &mut adopt);
     if let Some(a) = adopt {
-        a.settle(&mut ctx.stats);
+        a.settle(&mut ctx.stats, ctx.fb.as_mut());
     }
     drawn
 }

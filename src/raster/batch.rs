@@ -17,8 +17,11 @@
 //! ([`Rasterizer::flush_detached`]), holding the framebuffer, with a copy of the unit
 //! plans. The next such draw sets up its triangles meanwhile and then takes the batch
 //! back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones settles it
-//! first, drawing its remaining bands too. So a program's many small strips keep both
-//! threads drawing, as llvmpipe's scene binning of a whole frame does. The batches live in a per-thread
+//! first, drawing its remaining bands too. A draw whose batch is too small for the pool
+//! leaves it unlaunched instead, and the next draw's triangles join it ([`segs`]: one
+//! batch, several draws' plans). So a program's many small strips become batches over
+//! many bands that keep both threads drawing, as llvmpipe's binning of a whole scene
+//! does. The batches live in a per-thread
 //! pool, so drawing allocates little once they have grown (a band list per batch).
 //! Waking a sleeping pool thread costs a good part of a millisecond here, so a pool task
 //! polls for the next batch for a while after drawing one and the draw's thread polls
@@ -26,9 +29,11 @@
 
 mod job;
 mod pairing;
+mod segs;
 mod split;
 use job::{Job, Padded, SideFn, Task};
 use pairing::Pairing;
+use segs::{DrawRec, Own, Seg, Start};
 
 pub use split::{geom_section, Binner};
 
@@ -82,6 +87,11 @@ struct Batch {
     bins: Vec<Vec<u32>>,
     /// Pixels of the triangles' boxes inside the region.
     work: i64,
+    /// The earlier draws whose triangles the batch holds before its own draw's
+    /// ([`segs`]); empty for a batch of one draw.
+    segs: Vec<Seg>,
+    /// Where the batch's own draw's triangles start (after the last segment).
+    own: Start,
 }
 
 impl Batch {
@@ -94,6 +104,8 @@ impl Batch {
             b.clear();
         }
         self.work = 0;
+        self.segs.clear();
+        self.own = Start::default();
     }
 
     /// Makes room for a full batch at once, so that the first draws do not copy the
@@ -150,21 +162,11 @@ impl Batch {
         }
     }
 
-    /// Copies triangle `i` into `t`, whose varyings past `nvary` (and flat values of a
-    /// smooth draw) stay as setup leaves them: zero.
+    /// Copies triangle `i` of the batch's own draw into `t`, whose varyings past `nvary`
+    /// (and flat values of a smooth draw) stay as setup leaves them: zero.
     #[inline]
     fn load(&self, i: usize, nvary: usize, t: &mut SetupTriangle) {
-        let h = &self.heads[i];
-        t.edges = h.edges;
-        t.bbox = h.bbox.map(i64::from);
-        t.front = h.front;
-        t.z = h.z;
-        t.w = h.w;
-        t.persp = h.persp;
-        t.flat_u8 = h.flat_u8;
-        t.vary[..nvary].copy_from_slice(&self.planes[i * nvary..(i + 1) * nvary]);
-        let nf = self.nflat;
-        t.flat[..nf].copy_from_slice(&self.flats[i * nf..(i + 1) * nf]);
+        self.load_in(i, self.own, nvary, self.nflat, t);
     }
 }
 
@@ -217,8 +219,20 @@ impl Work {
             // SAFETY: band `b` was claimed by this call alone (see `Work`'s `Sync`).
             let band = unsafe { &mut *cell.0.get() };
             let bin = &self.batch.bins[b];
-            let d = &mut Draw::new(self.region, &self.plan, units, band, &mut s);
-            draw_bin(&self.batch, bin, self.nvary, d);
+            if self.batch.segs.is_empty() {
+                let d = &mut Draw::new(self.region, &self.plan, units, band, &mut s);
+                draw_bin(&self.batch, bin, self.nvary, d);
+            } else if !bin.is_empty() {
+                band.resolve();
+                let own = Own {
+                    plan: &self.plan,
+                    units,
+                    region: self.region,
+                    nvary: self.nvary,
+                    nflat: self.batch.nflat,
+                };
+                segs::draw_indices(&self.batch, bin, own, band, &mut s);
+            }
         }
         self.stats
             .lock()
@@ -363,12 +377,30 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     /// while the pool draws it. Settled at once when this rasterizer does not hand work
     /// to the same job (no threads here, or another thread's pool).
     pub fn adopt(&mut self, mut a: Adopted, stats: &mut Stats) {
-        if self.threads && self.inflight.is_none() && Arc::ptr_eq(&a.job, &self.job) {
+        let fits = a
+            .pending
+            .as_ref()
+            .is_none_or(|p| p.bins.len() == self.batch.bins.len());
+        if self.threads
+            && self.inflight.is_none()
+            && self.batch.heads.is_empty()
+            && fits
+            && Arc::ptr_eq(&a.job, &self.job)
+        {
             self.inflight = a.work.take();
-            // The pool's second batch is the one in flight: `wait` brings it back.
-            self.spare = None;
+            // A pending batch goes on filling with this draw's triangles ([`segs`]).
+            let fresh = a.pending.take().map(|mut p| {
+                p.nflat = if self.plan.flat { self.nvary } else { 0 };
+                std::mem::replace(&mut self.batch, p)
+            });
+            if self.inflight.is_some() {
+                // The second batch is the one in flight: `wait` brings it back.
+                self.spare = None;
+            } else if self.spare.is_none() {
+                self.spare = fresh;
+            }
         } else {
-            a.settle(stats);
+            a.settle(stats, Some(&mut *self.fb));
         }
     }
 
@@ -453,7 +485,8 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             }
             return;
         }
-        if self.batch.heads.len() >= self.limit || self.batch.work >= self.tune.max_work {
+        let joined = !self.batch.segs.is_empty() && self.batch.work >= self.tune.detach_work;
+        if self.batch.heads.len() >= self.limit || self.batch.work >= self.tune.max_work || joined {
             // The pool is idle while the first batch is set up: start small, then grow.
             self.limit = (self.limit * 2).min(self.tune.max_batch);
             // Hand the full batch to the pool and keep setting up the next one meanwhile.
@@ -472,7 +505,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         }
         let (plan, units, region, nvary) = (self.plan, self.units, self.region, self.nvary);
         if !self.threads && self.batch.heads.len() > 1 {
-            // One band after the other, each with all of its triangles.
+            // One band after the other, each with all of its triangles. (Only a threaded
+            // draw takes another draw's batch over, so this one has no segments.)
+            debug_assert!(self.batch.segs.is_empty());
             let mut bands = self.fb.bands(self.tune.band_rows);
             for (band, bin) in bands.iter_mut().zip(&self.batch.bins) {
                 draw_bin(
@@ -484,19 +519,24 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             }
         } else if !self.threads || self.batch.work < PARALLEL_WORK {
             // Only the bands the batch reaches leave a deferred glClear behind.
-            let bins = &self.batch.bins;
-            let first = bins.iter().position(|b| !b.is_empty()).unwrap_or(0);
-            let end = bins
-                .iter()
-                .rposition(|b| !b.is_empty())
-                .map_or(0, |l| l + 1);
-            let br = self.tune.band_rows;
-            let mut target = self.fb.target_rows(first * br..end * br);
-            let d = &mut Draw::new(region, plan, units, &mut target, stats);
-            let mut t = SetupTriangle::default();
-            for i in 0..self.batch.heads.len() {
-                self.batch.load(i, nvary, &mut t);
-                raster_triangle(&t, d);
+            let rows = reached_rows(&self.batch, self.tune.band_rows);
+            let mut target = self.fb.target_rows(rows);
+            if self.batch.segs.is_empty() {
+                let d = &mut Draw::new(region, plan, units, &mut target, stats);
+                let mut t = SetupTriangle::default();
+                for i in 0..self.batch.heads.len() {
+                    self.batch.load(i, nvary, &mut t);
+                    raster_triangle(&t, d);
+                }
+            } else {
+                let own = Own {
+                    plan,
+                    units,
+                    region,
+                    nvary,
+                    nflat: self.batch.nflat,
+                };
+                segs::draw_all(&self.batch, own, &mut target, stats);
             }
         } else {
             // Over the pool's threads and this one.
@@ -519,20 +559,47 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     /// start on this thread meanwhile (it would hand the same job slot a second batch).
     pub unsafe fn flush_detached(&mut self, stats: &mut Stats) -> Option<InFlight> {
         self.release(stats);
-        self.wait(stats);
-        if !self.threads || self.batch.work < self.tune.detach_work {
+        if !self.threads {
             self.flush(stats);
             return None;
         }
-        self.launch();
-        let work = self.inflight.take()?;
+        let pending = if self.batch.work >= self.tune.detach_work {
+            self.wait(stats);
+            self.launch();
+            None
+        } else if self.batch.heads.is_empty() {
+            None
+        } else {
+            // Too little for the pool yet: left for the next draw's triangles to join
+            // ([`segs`]), behind the batch in flight.
+            let rec = self.rec();
+            let mut b = std::mem::take(&mut self.batch);
+            b.close(rec);
+            Some(b)
+        };
+        let work = self.inflight.take();
+        if work.is_none() && pending.is_none() {
+            return None;
+        }
         stats.draws_detached += 1;
         Some(InFlight {
-            work: Some(work),
+            work,
+            pending,
             job: Arc::clone(&self.job),
             spin: self.tune.pool_spin,
             fb: None,
         })
+    }
+
+    /// This draw's record, for its triangles in a batch that outlives it.
+    fn rec(&self) -> DrawRec {
+        DrawRec {
+            plan: *self.plan,
+            units: static_units(self.units),
+            region: self.region,
+            nvary: self.nvary,
+            nflat: self.batch.nflat,
+        }
     }
 
     /// Takes the batch in flight back once it is drawn, helping to draw its remaining
@@ -575,12 +642,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
                 .collect(),
             next: Padded(AtomicUsize::new(0)),
             plan: *self.plan,
-            // SAFETY: only the lifetime changes; see `units` in `Work`.
-            units: unsafe {
-                std::mem::transmute::<Vec<UnitPlan<'_>>, Vec<UnitPlan<'static>>>(
-                    self.units.to_vec(),
-                )
-            },
+            units: static_units(self.units),
             region: self.region,
             nvary: self.nvary,
             stats: Mutex::new(Stats::default()),
@@ -596,6 +658,13 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         self.job
             .hand_over(Task::Bands(work), helpers, self.tune.pool_stay);
     }
+}
+
+/// A copy of `units` for a batch that may outlive the draw ([`Work`]'s `units`).
+fn static_units(units: &[UnitPlan<'_>]) -> Vec<UnitPlan<'static>> {
+    // SAFETY: only the lifetime changes; the texture images the plans borrow stay
+    // untouched until the batch is drawn (see `units` in `Work`).
+    unsafe { std::mem::transmute::<Vec<UnitPlan<'_>>, Vec<UnitPlan<'static>>>(units.to_vec()) }
 }
 
 /// Takes back a batch whose job has reported done (the job dropped its handle before
@@ -617,8 +686,11 @@ fn reclaim(work: Option<Arc<Work>>, stats: &mut Stats) -> Batch {
 /// ([`InFlight::hold`]): nothing else can reach the framebuffer until
 /// [`InFlight::settle`] hands it back. Dropping it waits for the pool too.
 pub struct InFlight {
-    /// The batch (taken by `settle`).
+    /// The batch on the pool (taken by `settle`).
     work: Option<Arc<Work>>,
+    /// A batch not handed to the pool yet, all of its triangles in closed segments
+    /// ([`segs`]), drawn after `work`.
+    pending: Option<Batch>,
     /// The job slot it was handed to.
     job: Arc<Job>,
     /// How long to poll before sleeping ([`Tuning::wait_spin`]).
@@ -640,7 +712,11 @@ impl InFlight {
     /// draw, and returns the framebuffer.
     pub fn settle(mut self, stats: &mut Stats) -> Option<Framebuffer> {
         finish(self.work.take(), &self.job, self.spin, stats);
-        self.fb.take()
+        let mut fb = self.fb.take();
+        if let (Some(b), Some(fb)) = (self.pending.take(), fb.as_mut()) {
+            draw_pending(b, fb, &self.job, self.spin, stats);
+        }
+        fb
     }
 
     /// Gives the framebuffer back without waiting, and the batch to the next draw into it,
@@ -649,6 +725,7 @@ impl InFlight {
     pub fn release(mut self) -> (Adopted, Option<Framebuffer>) {
         let a = Adopted {
             work: self.work.take(),
+            pending: self.pending.take(),
             job: Arc::clone(&self.job),
             spin: self.spin,
         };
@@ -670,14 +747,18 @@ impl Drop for InFlight {
 /// Dropping it waits for the pool.
 pub struct Adopted {
     work: Option<Arc<Work>>,
+    pending: Option<Batch>,
     job: Arc<Job>,
     spin: Duration,
 }
 
 impl Adopted {
-    /// As [`InFlight::settle`], for a batch whose framebuffer is back with its owner.
-    pub fn settle(mut self, stats: &mut Stats) {
+    /// As [`InFlight::settle`], for batches whose framebuffer `fb` is back with its owner.
+    pub fn settle(mut self, stats: &mut Stats, fb: Option<&mut Framebuffer>) {
         finish(self.work.take(), &self.job, self.spin, stats);
+        if let (Some(b), Some(fb)) = (self.pending.take(), fb) {
+            draw_pending(b, fb, &self.job, self.spin, stats);
+        }
     }
 }
 
@@ -699,7 +780,64 @@ fn finish(work: Option<Arc<Work>>, job: &Job, spin: Duration, stats: &mut Stats)
         }
     }
     job.wait_done(spin);
-    let b = reclaim(work, stats);
+    give_back(reclaim(work, stats));
+}
+
+/// Draws `b`, a batch left pending by a draw ([`InFlight`]'s `pending`, all of it in
+/// closed segments), into `fb`: over `job`'s pool thread and this one when it reaches
+/// several bands (the job must be idle), else on this thread alone; then gives its
+/// buffers back to this thread's pool.
+fn draw_pending(
+    mut b: Batch,
+    fb: &mut Framebuffer,
+    job: &Arc<Job>,
+    spin: Duration,
+    stats: &mut Stats,
+) {
+    let tune = crate::tuning::tuning();
+    let reached = b.bins.iter().filter(|bin| !bin.is_empty()).count();
+    // (A draw on a pool thread must not wait for the pool.)
+    let threads = match rayon::current_thread_index() {
+        None => crate::cpu::threads(),
+        Some(_) => 1,
+    };
+    let last = b
+        .segs
+        .last()
+        .map(|s| (s.rec.plan, s.rec.region, s.rec.nvary));
+    if let (true, Some((plan, region, nvary))) = (threads > 1 && reached > 1, last) {
+        let bands = fb.bands(tune.band_rows);
+        // SAFETY: the bands borrow `fb`, which this function keeps borrowed until the job
+        // is done (`finish` waits for it), as `Rasterizer::launch`'s do.
+        let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
+        let work = Arc::new(Work {
+            batch: b,
+            bands: bands
+                .into_iter()
+                .map(|b| BandCell(UnsafeCell::new(b)))
+                .collect(),
+            next: Padded(AtomicUsize::new(0)),
+            // Every triangle is in a segment with its own draw's plan: the batch's own
+            // draw has none.
+            plan,
+            units: Vec::new(),
+            region,
+            nvary,
+            stats: Mutex::new(Stats::default()),
+        });
+        let helpers = if tune.pool_help { threads - 1 } else { threads }.max(1);
+        job.hand_over(Task::Bands(Arc::clone(&work)), helpers, tune.pool_stay);
+        finish(Some(work), job, spin, stats);
+        return;
+    }
+    let rows = reached_rows(&b, tune.band_rows);
+    segs::draw_closed(&b, &mut fb.target_rows(rows), stats);
+    b.clear();
+    give_back(b);
+}
+
+/// Puts `b`'s buffers into this thread's pool for the next draw.
+fn give_back(b: Batch) {
     // Only while no rasterizer has the pool out (it is back between draws): the batch
     // fills the slot the draw left empty.
     POOL.with(|p| {
@@ -709,6 +847,17 @@ fn finish(work: Option<Arc<Work>>, job: &Job, spin: Duration, stats: &mut Stats)
             }
         }
     });
+}
+
+/// The rows of the bands `batch` reaches (from its first band with a triangle to its last).
+fn reached_rows(batch: &Batch, band_rows: usize) -> std::ops::Range<usize> {
+    let bins = &batch.bins;
+    let first = bins.iter().position(|b| !b.is_empty()).unwrap_or(0);
+    let end = bins
+        .iter()
+        .rposition(|b| !b.is_empty())
+        .map_or(0, |l| l + 1);
+    first * band_rows..end * band_rows
 }
 
 /// The first and last row (y-down, inclusive) of `t`'s box inside `region` (the box is
