@@ -90,6 +90,9 @@ counters! {
         /// Draws whose last batch was left drawing on the pool when the draw returned
         /// (glBegin/glEnd draws: see `Rasterizer::flush_detached`).
         draws_detached: draw,
+        /// Draws that took over the batch the draw before them left on the pool (see
+        /// `Rasterizer::adopt`) instead of waiting for it.
+        draws_adopted: draw,
     }
 }
 

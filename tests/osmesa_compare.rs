@@ -1448,10 +1448,10 @@ fn run_program(name: &str, source: &Path) {
 /// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) keeps the images and the
 /// `SOFTGL_STATS` counters of single-threaded rendering without it: the same bytes and the
 /// same counts except `vertices` (each thread has its own post-transform cache, so vertices
-/// of sections set up on different threads are transformed twice), `tris_paired` and
+/// of sections set up on different threads are transformed twice), `tris_paired`,
 /// `draws_detached` (with threads on and the split off, each chunk of immediate_100k's
 /// first, streamed glBegin/glEnd batch returns while the pool draws its last batch; never
-/// without threads).
+/// without threads) and `draws_adopted` (the next chunk takes that batch over).
 /// small_tris_200k (clipped and depth-tested one-pixel triangles) takes the split whenever
 /// threads are on, as its larger `vertices` count proves;
 /// immediate_100k's triangles (boxes of about 60 pixels at 512x512) are too big for it
@@ -1502,8 +1502,12 @@ fn split_geometry_keeps_images_and_counters() {
                     let (img, c) = run(threads, section);
                     let what = format!("{name} {w}x{h} threads {threads} section {section}");
                     assert!(img == image, "{what}: the image differs");
-                    let same =
-                        |k: &str| k != "vertices" && k != "tris_paired" && k != "draws_detached";
+                    let same = |k: &str| {
+                        !matches!(
+                            k,
+                            "vertices" | "tris_paired" | "draws_detached" | "draws_adopted"
+                        )
+                    };
                     let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
                         c.iter().filter(|(k, _)| same(k)).cloned().collect()
                     };

@@ -185,8 +185,8 @@ fn chunks_left_drawing_on_the_pool_are_settled_by_every_next_call() {
 }
 
 /// With threads on, a glBegin/glEnd strip's last batch of triangles stays drawing on the
-/// pool when glEnd returns; the next strip's draw takes it back, and every other call
-/// waits for it first. Textured strips drawn that way, with the texture they sample
+/// pool when glEnd returns, through matrix calls; the next strip's draw takes it back,
+/// and every other call waits for it first. Textured strips drawn that way, with the texture they sample
 /// re-specified and replaced between strips, give the image of the same strips each
 /// followed by glFinish (which settles every batch at once), and the strips did stay on
 /// the pool (`draws_detached`).
@@ -200,7 +200,7 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
             .collect()
     };
     let (a, b) = (texels(1), texels(2));
-    let draw = |finish_each: bool| -> (Vec<u8>, u64) {
+    let draw = |finish_each: bool| -> (Vec<u8>, u64, u64) {
         let c = Ctx::new(w, h);
         glClearColor(0.2, 0.1, 0.3, 1.0);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -230,6 +230,9 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
         for round in 0..4 {
             for row in 0..10 {
                 let (y0, y1) = (-1.0 + 0.2 * row as f32, -0.8 + 0.2 * row as f32);
+                // Matrix calls between strips do not wait for the strip on the pool.
+                glPushMatrix();
+                glTranslatef(0.01 * row as f32, 0.0, 0.0);
                 glBegin(GL_QUAD_STRIP);
                 for i in 0..=12 {
                     let x = -1.0 + 2.0 * i as f32 / 12.0;
@@ -239,6 +242,7 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
                     glVertex2f(x, y0);
                 }
                 glEnd();
+                glPopMatrix();
                 if finish_each {
                     glFinish();
                 }
@@ -276,17 +280,25 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
         }
         glFinish();
         assert_eq!(take_error(), GL_NO_ERROR);
-        let detached = softgl::ffi::current_stats().unwrap().draws_detached;
-        (c.read(), detached)
+        let s = softgl::ffi::current_stats().unwrap();
+        (c.read(), s.draws_detached, s.draws_adopted)
     };
-    let (settled, _) = draw(true);
-    let (kept, detached) = draw(false);
+    let (settled, _, adopted_settled) = draw(true);
+    let (kept, detached, adopted) = draw(false);
     let distinct: std::collections::HashSet<&[u8]> = settled.chunks(4).collect();
     assert!(distinct.len() > 100, "the strips drew too little texture");
     assert!(kept == settled, "strips left on the pool: image differs");
+    // glFinish after every strip leaves nothing for the next one to take over.
+    assert_eq!(adopted_settled, 0);
     if softgl::cpu::threads() > 1 {
         assert!(detached >= 30, "only {detached} strips stayed on the pool");
+        // Each strip but a round's first takes over the one before it, through the
+        // matrix calls between them (36 of 40).
+        assert!(
+            adopted >= 30,
+            "only {adopted} strips took the one before over"
+        );
     } else {
-        assert_eq!(detached, 0);
+        assert_eq!((detached, adopted), (0, 0));
     }
 }

@@ -4,7 +4,7 @@
 use super::enums::*;
 use super::families::c_fns;
 use super::types::*;
-use super::with_ctx_list;
+use super::with_ctx_list_keep;
 use crate::context::error::GlError;
 use crate::context::state::MatrixMode;
 use crate::fixed_function::matrix::{Mat4, IDENTITY};
@@ -13,7 +13,7 @@ use crate::fixed_function::mesa_matrix::MatFlags;
 /// glMatrixMode.
 #[no_mangle]
 pub extern "C" fn glMatrixMode(mode: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let m = match mode {
             GL_MODELVIEW => MatrixMode::ModelView,
             GL_PROJECTION => MatrixMode::Projection,
@@ -29,7 +29,7 @@ pub extern "C" fn glMatrixMode(mode: GLenum) {
 /// glLoadIdentity.
 #[no_mangle]
 pub extern "C" fn glLoadIdentity() {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.with_matrix_flags(|m, f| {
             *m = IDENTITY;
             f.on_load_identity();
@@ -54,7 +54,7 @@ unsafe fn read16<T: Copy + Into<f64>>(p: *const T) -> Option<Mat4> {
 }
 
 fn load(m: Option<Mat4>, transpose: bool, multiply: bool) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let Some(m) = m else { return Ok(()) };
         let m = if transpose { m.transpose() } else { m };
         c.with_matrix_flags(|cur, f| {
@@ -85,7 +85,7 @@ c_fns! {
 /// glTranslatef.
 #[no_mangle]
 pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.with_matrix_flags(|m, f| {
             m.translate(x, y, z);
             f.on_translate();
@@ -102,7 +102,7 @@ pub extern "C" fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glScalef.
 #[no_mangle]
 pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.with_matrix_flags(|m, f| {
             m.scale(x, y, z);
             f.on_scale(x, y, z);
@@ -119,7 +119,7 @@ pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
 /// glRotatef.
 #[no_mangle]
 pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.with_matrix_flags(|m, f| {
             // Mesa skips a zero angle, and a degenerate axis leaves the matrix alone.
             if angle != 0.0 && m.rotate(angle, x, y, z) {
@@ -144,7 +144,7 @@ fn projection(
     make: fn(f32, f32, f32, f32, f32, f32) -> Mat4,
     flag: fn(&mut MatFlags) -> bool,
 ) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         if invalid(planes) {
             return Err(GlError::InvalidValue);
         }
@@ -175,11 +175,11 @@ c_fns! {
 /// glPushMatrix.
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_ctx_list(move |c| c.push_matrix())
+    with_ctx_list_keep(move |c| c.push_matrix())
 }
 
 /// glPopMatrix.
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_ctx_list(move |c| c.pop_matrix())
+    with_ctx_list_keep(move |c| c.pop_matrix())
 }

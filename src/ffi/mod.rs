@@ -159,7 +159,19 @@ pub(crate) fn with_ctx_list<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, false)
+    listable(f, false, false)
+}
+
+/// As [`with_ctx_list`] for state calls that touch neither a framebuffer nor a texture
+/// image, a buffer object or a display list (the matrices, texgen, clip planes): a
+/// glBegin/glEnd draw's batch left drawing on the pool stays there
+/// ([`Context::flush_pending_keep`]), so the next draw goes on overlapping it.
+#[inline]
+pub(crate) fn with_ctx_list_keep<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    listable(f, false, true)
 }
 
 /// Whether the current context is compiling a display list (for the commands Mesa
@@ -175,12 +187,13 @@ pub(crate) fn with_ctx_list_anywhere<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
-    listable(f, true)
+    listable(f, true, false)
 }
 
-/// The body of [`with_ctx_list`] (`anywhere` false) and [`with_ctx_list_anywhere`].
+/// The body of [`with_ctx_list`] (`anywhere` false), [`with_ctx_list_anywhere`] and
+/// [`with_ctx_list_keep`] (`keep`: the draws on the pool are not waited for).
 #[inline]
-fn listable<F>(f: F, anywhere: bool)
+fn listable<F>(f: F, anywhere: bool, keep: bool)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
@@ -189,7 +202,11 @@ where
             if !anywhere {
                 c.outside_begin_end()?;
             }
-            c.flush_pending();
+            if keep {
+                c.flush_pending_keep();
+            } else {
+                c.flush_pending();
+            }
             f(c)
         }
         Some(execute) => {

@@ -9,7 +9,7 @@ use super::families::c_fns;
 use super::lighting::read4;
 use super::types::*;
 use super::with_ctx;
-use super::with_ctx_list;
+use super::with_ctx_list_keep;
 use crate::context::texgen_state::{plane_times_inverse, ClipPlanes};
 
 /// How many values a glTexGen pname takes.
@@ -22,7 +22,7 @@ fn texgen_count(pname: GLenum) -> usize {
 }
 
 fn texgen(coord: GLenum, pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let unit = c.state.active_texture;
         c.texgen.set(unit, coord, pname, p, &c.matrices.modelview)
     })
@@ -69,7 +69,7 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
     let Some(eq) = (unsafe { read4(equation, 4) }) else {
         return;
     };
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let i = ClipPlanes::index(plane)?;
         c.clip_planes.eye[i] = plane_times_inverse(&c.matrices.modelview, eq.map(|v| v as f32));
         Ok(())

@@ -16,8 +16,8 @@
 //! a strip or by the next glBegin) returns while the pool draws its last batch
 //! ([`Rasterizer::flush_detached`]), holding the framebuffer, with a copy of the unit
 //! plans. The next such draw sets up its triangles meanwhile and then takes the batch
-//! back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones settles it
-//! first, drawing its remaining bands too. A draw whose batch is too small for the pool
+//! back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones and the
+//! matrix, texgen and clip-plane calls settles it first, drawing its remaining bands too. A draw whose batch is too small for the pool
 //! leaves it unlaunched instead, and the next draw's triangles join it ([`segs`]: one
 //! batch, several draws' plans). So a program's many small strips become batches over
 //! many bands that keep both threads drawing, as llvmpipe's binning of a whole scene
@@ -183,8 +183,9 @@ struct Work {
     plan: FragPlan,
     /// A copy of the draw's unit plans: the work may outlive the draw that made it
     /// ([`Rasterizer::flush_detached`]). The images they borrow stay untouched until the
-    /// work is taken back (every GL call but the per-vertex ones and a draw settles it
-    /// first), so the lifetime is the protocol's, not the type system's.
+    /// work is taken back (every GL call that could change them settles it first: all but
+    /// the per-vertex, matrix, texgen and clip-plane calls and the next draw), so the
+    /// lifetime is the protocol's, not the type system's.
     units: Vec<UnitPlan<'static>>,
     region: [i64; 4],
     nvary: usize,
@@ -387,6 +388,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             && fits
             && Arc::ptr_eq(&a.job, &self.job)
         {
+            stats.draws_adopted += 1;
             self.inflight = a.work.take();
             // A pending batch goes on filling with this draw's triangles ([`segs`]).
             let fresh = a.pending.take().map(|mut p| {
