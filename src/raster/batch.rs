@@ -632,34 +632,53 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         sendable::<Framebuffer>();
         let spare = self.spare.take().unwrap_or_default();
         let batch = std::mem::replace(&mut self.batch, spare);
-        let bands = self.fb.bands(self.tune.band_rows);
-        // SAFETY: the bands borrow `self.fb`, which this rasterizer keeps borrowed and does
-        // not touch until `wait` has taken the work back from the job (see `Work`).
-        let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
-        let work = Arc::new(Work {
-            batch,
-            bands: bands
-                .into_iter()
-                .map(|b| BandCell(UnsafeCell::new(b)))
-                .collect(),
-            next: Padded(AtomicUsize::new(0)),
-            plan: *self.plan,
-            units: static_units(self.units),
-            region: self.region,
-            nvary: self.nvary,
-            stats: Mutex::new(Stats::default()),
-        });
-        self.inflight = Some(Arc::clone(&work));
-        let threads = crate::cpu::threads();
-        let helpers = if self.tune.pool_help {
-            threads - 1
-        } else {
-            threads
-        }
-        .max(1);
-        self.job
-            .hand_over(Task::Bands(work), helpers, self.tune.pool_stay);
+        let own = (
+            *self.plan,
+            static_units(self.units),
+            self.region,
+            self.nvary,
+        );
+        // SAFETY: this rasterizer keeps `self.fb` borrowed and does not touch it until
+        // `wait` has taken the work back from the job.
+        let work = unsafe { hand_over(&self.job, batch, self.fb, own) };
+        self.inflight = Some(work);
     }
+}
+
+/// Hands `batch` to `job` as a [`Work`] over `fb`'s bands, whose own triangles are drawn
+/// with `own` (plan, units, region, varyings), and returns it.
+///
+/// # Safety
+/// `fb` must not be touched (nor dropped) until the job has finished the work (`finish`
+/// or `Rasterizer::wait` takes it back): the bands reach it through raw pointers.
+unsafe fn hand_over(
+    job: &Arc<Job>,
+    batch: Batch,
+    fb: &mut Framebuffer,
+    own: (FragPlan, Vec<UnitPlan<'static>>, [i64; 4], usize),
+) -> Arc<Work> {
+    let tune = crate::tuning::tuning();
+    let bands = fb.bands(tune.band_rows);
+    // SAFETY: the caller keeps `fb` untouched until the work is taken back (see `Work`).
+    let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
+    let (plan, units, region, nvary) = own;
+    let work = Arc::new(Work {
+        batch,
+        bands: bands
+            .into_iter()
+            .map(|b| BandCell(UnsafeCell::new(b)))
+            .collect(),
+        next: Padded(AtomicUsize::new(0)),
+        plan,
+        units,
+        region,
+        nvary,
+        stats: Mutex::new(Stats::default()),
+    });
+    let threads = crate::cpu::threads();
+    let helpers = if tune.pool_help { threads - 1 } else { threads }.max(1);
+    job.hand_over(Task::Bands(Arc::clone(&work)), helpers, tune.pool_stay);
+    work
 }
 
 /// A copy of `units` for a batch that may outlive the draw ([`Work`]'s `units`).
@@ -808,27 +827,10 @@ fn draw_pending(
         .last()
         .map(|s| (s.rec.plan, s.rec.region, s.rec.nvary));
     if let (true, Some((plan, region, nvary))) = (threads > 1 && reached > 1, last) {
-        let bands = fb.bands(tune.band_rows);
-        // SAFETY: the bands borrow `fb`, which this function keeps borrowed until the job
-        // is done (`finish` waits for it), as `Rasterizer::launch`'s do.
-        let bands: Vec<Target<'static>> = unsafe { std::mem::transmute(bands) };
-        let work = Arc::new(Work {
-            batch: b,
-            bands: bands
-                .into_iter()
-                .map(|b| BandCell(UnsafeCell::new(b)))
-                .collect(),
-            next: Padded(AtomicUsize::new(0)),
-            // Every triangle is in a segment with its own draw's plan: the batch's own
-            // draw has none.
-            plan,
-            units: Vec::new(),
-            region,
-            nvary,
-            stats: Mutex::new(Stats::default()),
-        });
-        let helpers = if tune.pool_help { threads - 1 } else { threads }.max(1);
-        job.hand_over(Task::Bands(Arc::clone(&work)), helpers, tune.pool_stay);
+        // Every triangle is in a segment with its own draw's plan: the batch's own draw
+        // has none (its plan and units are never used).
+        // SAFETY: `fb` stays borrowed here until `finish` has waited for the job.
+        let work = unsafe { hand_over(job, b, fb, (plan, Vec::new(), region, nvary)) };
         finish(Some(work), job, spin, stats);
         return;
     }
