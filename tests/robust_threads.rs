@@ -302,3 +302,150 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
         assert_eq!((detached, adopted), (0, 0));
     }
 }
+
+/// Display-list draws (compiled vertex nodes, MuJoCo's kind) stay on the pool across the
+/// state calls between them that keep it there (glMaterial, glEnable/glDisable, blending
+/// and masks, glBindTexture and glActiveTexture, glLight, matrices, glCallList itself and
+/// a list's own recorded binding), while the calls that change a texture image
+/// (glTexSubImage2D, glDeleteTextures, glTexImage2D) wait for them. The image is the one
+/// of the same draws each followed by glFinish, and the draws did take each other over.
+#[test]
+fn list_draws_across_state_calls_give_the_images_of_settled_draws() {
+    use softgl::ffi::lighting::*;
+    use softgl::ffi::lists::*;
+    use softgl::ffi::textures::*;
+    let (w, h) = (200, 150);
+    let texels = |seed: u32, n: usize| -> Vec<u8> {
+        (0..n * n * 4)
+            .map(|i| ((i as u32).wrapping_mul(29).wrapping_add(seed * 77) >> 1) as u8)
+            .collect()
+    };
+    let image = |tex: u32, n: usize, seed: u32| {
+        let px = texels(seed, n);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        // SAFETY: `px` holds n x n RGBA bytes.
+        unsafe {
+            glTexImage2D(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                n as i32,
+                n as i32,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                px.as_ptr().cast(),
+            );
+        }
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    };
+    let draw = |finish_each: bool| -> (Vec<u8>, u64, u64) {
+        let c = Ctx::new(w, h);
+        glClearColor(0.2, 0.1, 0.3, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let mut tex = [0u32; 2];
+        // SAFETY: two names into `tex`.
+        unsafe { glGenTextures(2, tex.as_mut_ptr()) };
+        image(tex[0], 32, 1);
+        image(tex[1], 16, 2);
+        let base = glGenLists(2);
+        // A strip across the view, lit and textured.
+        glNewList(base, GL_COMPILE);
+        glBegin(GL_TRIANGLE_STRIP);
+        for i in 0..=16 {
+            let x = -1.0 + 2.0 * i as f32 / 16.0;
+            glNormal3f(0.3 * x, 0.2, 1.0);
+            glTexCoord2f(2.0 * x, 1.0);
+            glVertex3f(x, 0.12, 0.2 * x);
+            glTexCoord2f(2.0 * x, 0.0);
+            glVertex3f(x, -0.12, -0.2 * x);
+        }
+        glEnd();
+        glEndList();
+        // The strip with the second texture bound by the list itself.
+        glNewList(base + 1, GL_COMPILE);
+        glBindTexture(GL_TEXTURE_2D, tex[1]);
+        glCallList(base);
+        glEndList();
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_TEXTURE_2D);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        for round in 0..4 {
+            for row in 0..10 {
+                let k = (round * 10 + row) as f32;
+                let diffuse = [0.3 + 0.05 * row as f32, 0.9 - 0.07 * round as f32, 0.5, 0.7];
+                // SAFETY: four floats each.
+                unsafe {
+                    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse.as_ptr());
+                    glLightfv(GL_LIGHT0, GL_POSITION, [0.2 * k, 1.0, 1.0, 0.0].as_ptr());
+                }
+                if row % 2 == 0 {
+                    glEnable(GL_BLEND);
+                } else {
+                    glDisable(GL_BLEND);
+                }
+                glColorMask(1, (row % 3 != 1) as u8, 1, 1);
+                glDepthMask((row % 4 != 3) as u8);
+                glActiveTexture(GL_TEXTURE0);
+                glBindTexture(GL_TEXTURE_2D, tex[row % 2]);
+                glPushMatrix();
+                glTranslatef(0.02 * round as f32, -0.9 + 0.19 * row as f32, 0.0);
+                glRotatef(10.0 * k, 0.0, 1.0, 0.0);
+                glCallList(base + (row % 3 == 2) as u32);
+                glPopMatrix();
+                if finish_each {
+                    glFinish();
+                }
+            }
+            // Right after a strip that sampled them: the first texture's texels replaced,
+            // the second deleted and made again at another size.
+            let sub = texels(3 + round as u32, 8);
+            // SAFETY: `sub` holds 8x8 RGBA bytes; one name.
+            unsafe {
+                glBindTexture(GL_TEXTURE_2D, tex[0]);
+                glTexSubImage2D(
+                    GL_TEXTURE_2D,
+                    0,
+                    4,
+                    4,
+                    8,
+                    8,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    sub.as_ptr().cast(),
+                );
+                glDeleteTextures(1, &tex[1]);
+            }
+            image(tex[1], 8 << (round % 2), 5 + round as u32);
+        }
+        glFinish();
+        assert_eq!(take_error(), GL_NO_ERROR);
+        let s = softgl::ffi::current_stats().unwrap();
+        (c.read(), s.draws_detached, s.draws_adopted)
+    };
+    let (settled, _, adopted_settled) = draw(true);
+    let (kept, detached, adopted) = draw(false);
+    let distinct: std::collections::HashSet<&[u8]> = settled.chunks(4).collect();
+    assert!(distinct.len() > 100, "the strips drew too little texture");
+    assert!(
+        kept == settled,
+        "list draws left on the pool: image differs"
+    );
+    assert_eq!(adopted_settled, 0);
+    if softgl::cpu::threads() > 1 {
+        assert!(
+            detached >= 36,
+            "only {detached} list draws stayed on the pool"
+        );
+        // Each strip but a round's first takes over the one before it (36 of 40).
+        assert!(
+            adopted >= 36,
+            "only {adopted} list draws took the one before over"
+        );
+    } else {
+        assert_eq!((detached, adopted), (0, 0));
+    }
+}

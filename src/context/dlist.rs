@@ -90,8 +90,9 @@ impl VertexOp {
 
 /// One entry of a display list.
 pub enum Cmd {
-    /// A state command.
-    Call(ListFn),
+    /// A state command, and whether it leaves a draw on the pool drawing (the calls
+    /// `ffi::with_ctx_list_keep` makes; the others wait for it first).
+    Call(ListFn, bool),
     /// A run of per-vertex commands.
     Node {
         /// The commands.
@@ -210,13 +211,19 @@ impl ListState {
 
     /// Appends a state command to the list being compiled.
     pub fn push_call(&mut self, f: ListFn) {
+        self.push_call_as(f, false)
+    }
+
+    /// [`ListState::push_call`] for a call that leaves a draw on the pool drawing when the
+    /// list runs (`keep`, as `ffi::with_ctx_list_keep`).
+    pub fn push_call_as(&mut self, f: ListFn, keep: bool) {
         if let Some(k) = self.compiling.as_mut() {
             // A call inside glBegin/glEnd (glEvalCoord, glMaterial …) splits the primitive
             // over nodes: Mesa then replays the rest of it by loopback.
             let split = k.in_begin;
             k.close_node();
             k.loopback = split;
-            k.cmds.push(Cmd::Call(f));
+            k.cmds.push(Cmd::Call(f, keep));
         }
     }
 
@@ -380,8 +387,12 @@ impl Context {
         let was = self.immediate.replaying;
         for cmd in &list.cmds {
             let r = match cmd {
-                Cmd::Call(f) => {
-                    self.flush_pending();
+                Cmd::Call(f, keep) => {
+                    if *keep {
+                        self.flush_pending_keep();
+                    } else {
+                        self.flush_pending();
+                    }
                     f(self)
                 }
                 Cmd::Node { ops, .. } if self.outside_begin_end().is_err() && begins(ops) => {

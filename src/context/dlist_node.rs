@@ -197,7 +197,7 @@ impl Context {
                 };
                 self.push_node_vertices(&pend);
             } else {
-                self.flush_pending();
+                self.flush_pending_keep();
                 self.immediate.pending_node = Some(PendingNode {
                     node: Arc::clone(node),
                     group: gi,
@@ -211,7 +211,7 @@ impl Context {
                 self.state.current.color = g.color;
             }
             if !Immediate::mergeable(g.mode) {
-                self.flush_pending();
+                self.flush_pending_keep();
             }
         }
         if node.restore {

@@ -274,7 +274,7 @@ impl Context {
 
     /// Waits for the draw still running on the pool, if any, and puts its framebuffer
     /// back into `fb` (see `inflight`). Every GL call but the per-vertex ones and the
-    /// matrix, texgen and clip-plane calls (`ffi::with_ctx_list_keep`) does this first
+    /// state calls that touch no image (`ffi::with_ctx_list_keep`) does this first
     /// (through [`Context::flush_pending`]), as do draws, framebuffer (re)binding and
     /// dropping the context.
     #[inline]

@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::with_ctx_list;
+use super::with_ctx_list_keep;
 use crate::context::clamp01;
 use crate::context::error::GlError;
 use crate::context::fragment_state::{BlendEquation, BlendFactor, LogicOp, StencilOp};
@@ -48,7 +48,7 @@ pub(crate) fn stencil_faces(
 
 /// Shared by glBlendFunc and glBlendFuncSeparate.
 pub(crate) fn blend_func(src_rgb: GLenum, dst_rgb: GLenum, src_a: GLenum, dst_a: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let (sr, dr) = (
             BlendFactor::from_gl(src_rgb)?,
             BlendFactor::from_gl(dst_rgb)?,
@@ -62,7 +62,7 @@ pub(crate) fn blend_func(src_rgb: GLenum, dst_rgb: GLenum, src_a: GLenum, dst_a:
 
 /// Shared by glBlendEquation and glBlendEquationSeparate.
 pub(crate) fn blend_equation(rgb: GLenum, alpha: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let (r, a) = (BlendEquation::from_gl(rgb)?, BlendEquation::from_gl(alpha)?);
         c.state.frag.blend.eq_rgb = r;
         c.state.frag.blend.eq_a = a;
@@ -72,7 +72,7 @@ pub(crate) fn blend_equation(rgb: GLenum, alpha: GLenum) {
 
 /// Shared by glStencilFunc and glStencilFuncSeparate.
 pub(crate) fn stencil_func(faces: Faces, func: GLenum, reference: GLint, mask: GLuint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let f = CompareFunc::from_gl(func)?;
         stencil_faces(c, faces, |s| {
             s.func = f;
@@ -85,7 +85,7 @@ pub(crate) fn stencil_func(faces: Faces, func: GLenum, reference: GLint, mask: G
 
 /// Shared by glStencilOp and glStencilOpSeparate.
 pub(crate) fn stencil_op(faces: Faces, fail: GLenum, zfail: GLenum, zpass: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let (a, b, d) = (
             StencilOp::from_gl(fail)?,
             StencilOp::from_gl(zfail)?,
@@ -102,7 +102,7 @@ pub(crate) fn stencil_op(faces: Faces, fail: GLenum, zfail: GLenum, zpass: GLenu
 
 /// Shared by glStencilMask and glStencilMaskSeparate.
 pub(crate) fn stencil_mask(faces: Faces, mask: GLuint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         stencil_faces(c, faces, |s| s.writemask = mask);
         Ok(())
     })
@@ -123,7 +123,7 @@ pub extern "C" fn glBlendEquation(mode: GLenum) {
 /// glBlendColor (clamped to [0,1], as GL 1.x specifies).
 #[no_mangle]
 pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.state.frag.blend.color = [red, green, blue, alpha].map(|v| clamp01(v as f64) as f32);
         Ok(())
     })
@@ -132,7 +132,7 @@ pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 /// glAlphaFunc.
 #[no_mangle]
 pub extern "C" fn glAlphaFunc(func: GLenum, ref_: GLclampf) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.alpha_func(CompareFunc::from_gl(func)?, ref_);
         Ok(())
     })
@@ -159,7 +159,7 @@ pub extern "C" fn glStencilMask(mask: GLuint) {
 /// glLogicOp.
 #[no_mangle]
 pub extern "C" fn glLogicOp(opcode: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let op = LogicOp::from_gl(opcode)?;
         c.state.frag.logic_op = op;
         Ok(())

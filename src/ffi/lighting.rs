@@ -7,7 +7,7 @@
 use super::enums::*;
 use super::families::c_fns;
 use super::types::*;
-use super::{with_ctx, with_ctx_list};
+use super::{with_ctx, with_ctx_list_keep};
 use crate::context::lighting_state::{float_to_int, int_to_float};
 use crate::context::state::Cap;
 use crate::context::Context;
@@ -78,19 +78,19 @@ fn is_color(pname: GLenum) -> bool {
 }
 
 fn light(light: GLenum, pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let mv = c.matrices.modelview.top().0;
         c.light.set_light(light, pname, &p, &mv)
     })
 }
 
 fn light_model(pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| c.light.set_light_model(pname, &p))
+    with_ctx_list_keep(move |c| c.light.set_light_model(pname, &p))
 }
 
 fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
     // glMaterial is allowed between glBegin and glEnd.
-    super::with_ctx_list_anywhere(move |c| {
+    super::with_ctx_list_anywhere_keep(move |c| {
         let cm = c.state.caps.get(Cap::ColorMaterial);
         c.material_changing();
         c.light.set_material(face, pname, &p, cm)
@@ -98,7 +98,7 @@ fn material(face: GLenum, pname: GLenum, p: [f32; 4]) {
 }
 
 fn fog(pname: GLenum, p: [f32; 4]) {
-    with_ctx_list(move |c| c.light.set_fog(pname, &p))
+    with_ctx_list_keep(move |c| c.light.set_fog(pname, &p))
 }
 
 /// Copies the current colour into the tracked material terms when GL_COLOR_MATERIAL is on
@@ -202,7 +202,7 @@ c_fns! {
 /// glColorMaterial.
 #[no_mangle]
 pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.light.set_color_material(face, mode)?;
         sync_color_material(c);
         Ok(())

@@ -5,7 +5,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::{with_ctx, with_ctx_list, with_ctx_list_anywhere};
+use super::{with_ctx, with_ctx_list, with_ctx_list_anywhere_keep, with_ctx_list_keep};
 use crate::context::error::GlError;
 
 /// glNewList.
@@ -34,7 +34,7 @@ pub extern "C" fn glEndList() {
 /// glCallList.
 #[no_mangle]
 pub extern "C" fn glCallList(list: GLuint) {
-    with_ctx_list_anywhere(move |c| {
+    with_ctx_list_anywhere_keep(move |c| {
         if list == 0 {
             return Err(GlError::InvalidValue);
         }
@@ -98,7 +98,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
         // SAFETY: forwarded caller contract.
         Ok(_) => unsafe { read_names(n as usize, type_, lists) },
     };
-    with_ctx_list_anywhere(move |c| {
+    with_ctx_list_anywhere_keep(move |c| {
         c.call_lists(names.as_ref().map_err(|e| *e)?);
         Ok(())
     })
@@ -107,7 +107,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
 /// glListBase.
 #[no_mangle]
 pub extern "C" fn glListBase(base: GLuint) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.lists.base = base;
         Ok(())
     })

@@ -162,16 +162,31 @@ where
     listable(f, false, false)
 }
 
-/// As [`with_ctx_list`] for state calls that touch neither a framebuffer nor a texture
-/// image, a buffer object or a display list (the matrices, texgen, clip planes): a
-/// glBegin/glEnd draw's batch left drawing on the pool stays there
-/// ([`Context::flush_pending_keep`]), so the next draw goes on overlapping it.
+/// As [`with_ctx_list`] for the state calls that touch neither a framebuffer nor a
+/// texture image, a buffer object or a display list, and read nothing a draw on the pool
+/// writes: the matrices, texgen and clip planes, glEnable/glDisable, lights, materials and
+/// fog, the fragment tests, blending and masks, the rasterization modes, viewport and
+/// scissor, texture bindings and environments, glCallList. A draw's batch left drawing on
+/// the pool stays there ([`Context::flush_pending_keep`]), so the next draw goes on
+/// overlapping it: the batch owns copies of everything it draws with (its fragment plan,
+/// its unit plans), and the texture images those borrow are only changed by calls that
+/// wait for it. Inside a display list such a call keeps the same rule.
 #[inline]
 pub(crate) fn with_ctx_list_keep<F>(f: F)
 where
     F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
 {
     listable(f, false, true)
+}
+
+/// [`with_ctx_list_keep`] for the keeping calls allowed between glBegin and glEnd
+/// (glMaterial, glCallList(s)).
+#[inline]
+pub(crate) fn with_ctx_list_anywhere_keep<F>(f: F)
+where
+    F: Fn(&mut Context) -> GlResult<()> + Send + Sync + 'static,
+{
+    listable(f, true, true)
 }
 
 /// Whether the current context is compiling a display list (for the commands Mesa
@@ -190,8 +205,9 @@ where
     listable(f, true, false)
 }
 
-/// The body of [`with_ctx_list`] (`anywhere` false), [`with_ctx_list_anywhere`] and
-/// [`with_ctx_list_keep`] (`keep`: the draws on the pool are not waited for).
+/// The body of [`with_ctx_list`] (`anywhere` false), [`with_ctx_list_anywhere`],
+/// [`with_ctx_list_keep`] and [`with_ctx_list_anywhere_keep`] (`keep`: the draws on the
+/// pool are not waited for).
 #[inline]
 fn listable<F>(f: F, anywhere: bool, keep: bool)
 where
@@ -227,12 +243,15 @@ where
                 Ok(())
             };
             if anywhere {
-                c.lists.push_call(Box::new(f));
+                c.lists.push_call_as(Box::new(f), keep);
             } else {
-                c.lists.push_call(Box::new(move |c: &mut Context| {
-                    c.outside_begin_end()?;
-                    f(c)
-                }));
+                c.lists.push_call_as(
+                    Box::new(move |c: &mut Context| {
+                        c.outside_begin_end()?;
+                        f(c)
+                    }),
+                    keep,
+                );
             }
             r
         }

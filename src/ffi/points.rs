@@ -7,7 +7,7 @@
 
 use super::lighting::read4;
 use super::types::*;
-use super::{with_ctx_list, with_ctx_raw};
+use super::{with_ctx_list_keep, with_ctx_raw};
 use crate::context::raster_state::PointParam;
 
 /// How many values `pname` takes (an unknown pname reads one and fails later).
@@ -17,7 +17,7 @@ fn count(pname: GLenum) -> usize {
 
 /// Records or runs glPointParameterfv(pname, v).
 fn point_parameter(pname: GLenum, v: [f32; 3]) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let p = PointParam::from_gl(pname)?;
         c.raster.point.set(p, v)
     })

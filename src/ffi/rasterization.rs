@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_list};
+use super::{gl_bool, with_ctx, with_ctx_list, with_ctx_list_keep};
 use crate::context::error::GlError;
 use crate::context::raster_state::FillMode;
 use crate::context::state::Face;
@@ -11,7 +11,7 @@ use crate::context::Context;
 
 /// Stores a line width or point size: GL_INVALID_VALUE unless it is positive.
 fn set_size(size: f32, field: fn(&mut Context) -> &mut f32) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         if size.is_nan() || size <= 0.0 {
             return Err(GlError::InvalidValue);
         }
@@ -29,7 +29,7 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 /// glLineStipple (the factor is clamped to [1, 256]).
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.line_stipple(factor, pattern);
         Ok(())
     })
@@ -44,7 +44,7 @@ pub extern "C" fn glPointSize(size: GLfloat) {
 /// glPolygonMode.
 #[no_mangle]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         let (face, mode) = (Face::from_gl(face)?, FillMode::from_gl(mode)?);
         c.polygon_mode(face, mode);
         Ok(())
@@ -54,7 +54,7 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 /// glPolygonOffset.
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         c.polygon_offset(factor, units);
         Ok(())
     })

@@ -5,7 +5,7 @@
 use super::enums::*;
 use super::families::c_fns;
 use super::types::*;
-use super::{gl_bool, with_ctx, with_ctx_list};
+use super::{gl_bool, with_ctx, with_ctx_list, with_ctx_list_keep};
 use crate::context::clamp01;
 use crate::context::error::{GlError, GlResult};
 use crate::context::state::{CompareFunc, Face, PixelStore, ShadeModel};
@@ -21,13 +21,13 @@ pub extern "C" fn glGetError() -> GLenum {
 /// glEnable.
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_ctx_list(move |c| c.enable(cap, true))
+    with_ctx_list_keep(move |c| c.enable(cap, true))
 }
 
 /// glDisable.
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_ctx_list(move |c| c.enable(cap, false))
+    with_ctx_list_keep(move |c| c.enable(cap, false))
 }
 
 /// glIsEnabled (also answers the client array states).
@@ -42,7 +42,7 @@ fn set_state<T: Clone + Send + Sync + 'static>(
     value: GlResult<T>,
     field: fn(&mut Context) -> &mut T,
 ) {
-    with_ctx_list(move |c| {
+    with_ctx_list_keep(move |c| {
         *field(c) = value.clone()?;
         Ok(())
     })
@@ -73,9 +73,9 @@ c_fns! {
     safe fn glClearDepth(depth: GLclampd) => set_state(Ok(clamp01(depth)), |c| &mut c.state.clear_depth);
     safe fn glClearStencil(s: GLint) => set_state(Ok(s), |c| &mut c.state.clear_stencil);
     safe fn glClear(mask: GLbitfield) => with_ctx_list(move |c| c.clear(mask));
-    safe fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list(move |c| c.viewport(x, y, width, height));
-    safe fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list(move |c| c.scissor(x, y, width, height));
-    safe fn glDepthRange(near_val: GLclampd, far_val: GLclampd) => with_ctx_list(move |c| c.depth_range(near_val, far_val));
+    safe fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list_keep(move |c| c.viewport(x, y, width, height));
+    safe fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => with_ctx_list_keep(move |c| c.scissor(x, y, width, height));
+    safe fn glDepthRange(near_val: GLclampd, far_val: GLclampd) => with_ctx_list_keep(move |c| c.depth_range(near_val, far_val));
     safe fn glDepthFunc(func: GLenum) => set_state(CompareFunc::from_gl(func), |c| &mut c.state.depth_func);
     safe fn glDepthMask(flag: GLboolean) => set_state(Ok(gl_bool(flag)), |c| &mut c.state.depth_mask);
     safe fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) => set_state(Ok([red, green, blue, alpha].map(gl_bool)), |c| &mut c.state.color_mask);
@@ -87,7 +87,7 @@ c_fns! {
 /// glHint (stored; the rasterizer ignores hints, as llvmpipe does).
 #[no_mangle]
 pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_ctx_list(move |c| c.hint(target, mode))
+    with_ctx_list_keep(move |c| c.hint(target, mode))
 }
 
 /// glFlush: makes the rendering visible in the OSMesa buffer.

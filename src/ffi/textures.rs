@@ -9,7 +9,7 @@ use super::client::{image_command, read_f64, read_vec, write_all};
 use super::enums::*;
 use super::families::{c_fns, vector_fns};
 use super::types::*;
-use super::{compiling_list, non_negative, with_ctx, with_ctx_list};
+use super::{compiling_list, non_negative, with_ctx, with_ctx_list, with_ctx_list_keep};
 use crate::context::texture_get::{ints_rounded, ints_truncated};
 use crate::context::{Context, GlResult};
 
@@ -49,7 +49,7 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 /// glBindTexture (a name first bound to another target: GL_INVALID_OPERATION).
 #[no_mangle]
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
-    with_ctx_list(move |c| c.bind_texture(target, texture))
+    with_ctx_list_keep(move |c| c.bind_texture(target, texture))
 }
 
 /// glIsTexture.
@@ -170,13 +170,13 @@ c_fns! {
 /// glTexEnvf.
 #[no_mangle]
 pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_ctx_list(move |c| c.tex_env_scalar(target, pname, param as f64))
+    with_ctx_list_keep(move |c| c.tex_env_scalar(target, pname, param as f64))
 }
 
 /// glTexEnvi.
 #[no_mangle]
 pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
-    with_ctx_list(move |c| c.tex_env_scalar(target, pname, param as f64))
+    with_ctx_list_keep(move |c| c.tex_env_scalar(target, pname, param as f64))
 }
 
 c_fns! {
@@ -196,7 +196,7 @@ c_fns! {
 /// `state.caps` for GL_TEXTURE_1D/2D follows the unit.
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
-    with_ctx_list(move |c| c.active_texture(texture))
+    with_ctx_list_keep(move |c| c.active_texture(texture))
 }
 
 /// glClientActiveTexture.

@@ -13,11 +13,13 @@
 //! rendering: the images are byte-identical with threads on and off. The last batch of a
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
 //! work; only a glBegin/glEnd draw (a chunk of a long batch, or a batch drawn by glEnd of
-//! a strip or by the next glBegin) returns while the pool draws its last batch
-//! ([`Rasterizer::flush_detached`]), holding the framebuffer, with a copy of the unit
-//! plans. The next such draw sets up its triangles meanwhile and then takes the batch
-//! back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones and the
-//! matrix, texgen and clip-plane calls settles it first, drawing its remaining bands too. A draw whose batch is too small for the pool
+//! a strip or by the next glBegin, or a display list's vertex node) returns while the pool
+//! draws its last batch ([`Rasterizer::flush_detached`]), holding the framebuffer, with a
+//! copy of the unit plans. The next such draw sets up its triangles meanwhile and then
+//! takes the batch back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones
+//! and the state calls that touch no image (`ffi::with_ctx_list_keep`: matrices, enables,
+//! materials, blending, texture bindings, glCallList …) settles it first, drawing its
+//! remaining bands too. A draw whose batch is too small for the pool
 //! leaves it unlaunched instead, and the next draw's triangles join it ([`segs`]: one
 //! batch, several draws' plans). So a program's many small strips become batches over
 //! many bands that keep both threads drawing, as llvmpipe's binning of a whole scene
@@ -184,7 +186,7 @@ struct Work {
     /// A copy of the draw's unit plans: the work may outlive the draw that made it
     /// ([`Rasterizer::flush_detached`]). The images they borrow stay untouched until the
     /// work is taken back (every GL call that could change them settles it first: all but
-    /// the per-vertex, matrix, texgen and clip-plane calls and the next draw), so the
+    /// the per-vertex calls, the state calls that keep it and the next draw), so the
     /// lifetime is the protocol's, not the type system's.
     units: Vec<UnitPlan<'static>>,
     region: [i64; 4],

@@ -71,6 +71,9 @@ pub fn flush(ctx: &mut Context) {
     let Some(c) = ctx.bitmap_cache.pending.take() else {
         return;
     };
+    // No draw is left on the pool while bitmaps are pending (glBitmap waits for it, and a
+    // draw with bitmaps pending leaves nothing there); waiting here keeps it so.
+    ctx.settle_draws();
     let mut st = match &ctx.bitmap_cache.state {
         Some(s) => (**s).clone(),
         None => ctx.state.clone(),
