@@ -283,24 +283,9 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
         let s = softgl::ffi::current_stats().unwrap();
         (c.read(), s.draws_detached, s.draws_adopted)
     };
-    let (settled, _, adopted_settled) = draw(true);
-    let (kept, detached, adopted) = draw(false);
-    let distinct: std::collections::HashSet<&[u8]> = settled.chunks(4).collect();
-    assert!(distinct.len() > 100, "the strips drew too little texture");
-    assert!(kept == settled, "strips left on the pool: image differs");
-    // glFinish after every strip leaves nothing for the next one to take over.
-    assert_eq!(adopted_settled, 0);
-    if softgl::cpu::threads() > 1 {
-        assert!(detached >= 30, "only {detached} strips stayed on the pool");
-        // Each strip but a round's first takes over the one before it, through the
-        // matrix calls between them (36 of 40).
-        assert!(
-            adopted >= 30,
-            "only {adopted} strips took the one before over"
-        );
-    } else {
-        assert_eq!((detached, adopted), (0, 0));
-    }
+    // Each strip but a round's first takes over the one before it, through the matrix
+    // calls between them (36 of 40).
+    check_left_on_pool("textured strips", draw, 100, 30);
 }
 
 /// Display-list draws (compiled vertex nodes, MuJoCo's kind) stay on the pool across the
@@ -426,24 +411,123 @@ fn list_draws_across_state_calls_give_the_images_of_settled_draws() {
         let s = softgl::ffi::current_stats().unwrap();
         (c.read(), s.draws_detached, s.draws_adopted)
     };
+    // Each strip but a round's first takes over the one before it (36 of 40).
+    check_left_on_pool("list draws", draw, 100, 36);
+}
+
+/// Draws into a 4x multisample framebuffer object, drawn in one pass into all four sample
+/// planes, stay on the pool across state calls as single-sample ones do: the batch holds
+/// the sample planes, the next draw takes them over with it, and any call that settles
+/// gives them back (here glBlitFramebuffer's resolve, the read and a glClear between
+/// rounds). The resolved image is the one of the same draws each followed by glFinish,
+/// and the draws did take each other over.
+#[test]
+fn multisample_draws_left_on_the_pool_give_the_images_of_settled_draws() {
+    use softgl::ffi::framebuffers::*;
+    use softgl::ffi::glext_enums::*;
+    use softgl::ffi::lighting::*;
+    use softgl::ffi::query::glGetIntegerv;
+    let (w, h) = (160, 120);
+    let draw = |finish_each: bool| -> (Vec<u8>, u64, u64) {
+        let c = Ctx::new(w, h);
+        let (mut fbo, mut rb) = (0u32, [0u32; 2]);
+        // SAFETY: one and two names.
+        unsafe {
+            glGenFramebuffers(1, &mut fbo);
+            glGenRenderbuffers(2, rb.as_mut_ptr());
+        }
+        glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, w, h);
+        glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH_COMPONENT24, w, h);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+        assert_eq!(
+            glCheckFramebufferStatus(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        let mut samples = 0;
+        // SAFETY: one integer.
+        unsafe { glGetIntegerv(GL_SAMPLES, &mut samples) };
+        assert_eq!(samples, 4);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        for round in 0..3 {
+            glClearColor(0.1 * round as f32, 0.2, 0.3, 1.0);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            for row in 0..12 {
+                let k = (round * 12 + row) as f32;
+                let diffuse = [0.9 - 0.05 * row as f32, 0.4 + 0.1 * round as f32, 0.6, 0.6];
+                // SAFETY: four floats.
+                unsafe { glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse.as_ptr()) };
+                if row % 3 == 0 {
+                    glEnable(GL_BLEND);
+                } else {
+                    glDisable(GL_BLEND);
+                }
+                glPushMatrix();
+                glTranslatef(0.0, -0.9 + 0.15 * row as f32, 0.0);
+                glRotatef(7.0 * k, 0.3, 1.0, 0.0);
+                glBegin(GL_TRIANGLE_STRIP);
+                for i in 0..=20 {
+                    let x = -1.0 + 2.0 * i as f32 / 20.0;
+                    glNormal3f(x, 0.3, 0.6);
+                    glVertex3f(x, 0.1 + 0.03 * (i % 3) as f32, 0.3 * x);
+                    glVertex3f(x + 0.04, -0.1, -0.3 * x);
+                }
+                glEnd();
+                glPopMatrix();
+                if finish_each {
+                    glFinish();
+                }
+            }
+        }
+        // Resolved into the window, then read.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        glFinish();
+        assert_eq!(take_error(), GL_NO_ERROR);
+        let s = softgl::ffi::current_stats().unwrap();
+        (c.read(), s.draws_detached, s.draws_adopted)
+    };
+    // Each strip but a round's first takes over the one before it (33 of 36).
+    check_left_on_pool("multisample draws", draw, 50, 33);
+}
+
+/// Runs `draw` with glFinish after every draw (`true`) and without, and checks that both
+/// give the same image with more than `colours` distinct colours, that the settled run
+/// left nothing for a draw to take over, and that with threads at least `min` draws of
+/// the other stayed on the pool and took the one before them over (none without).
+fn check_left_on_pool(
+    what: &str,
+    draw: impl Fn(bool) -> (Vec<u8>, u64, u64),
+    colours: usize,
+    min: u64,
+) {
     let (settled, _, adopted_settled) = draw(true);
     let (kept, detached, adopted) = draw(false);
     let distinct: std::collections::HashSet<&[u8]> = settled.chunks(4).collect();
-    assert!(distinct.len() > 100, "the strips drew too little texture");
     assert!(
-        kept == settled,
-        "list draws left on the pool: image differs"
+        distinct.len() > colours,
+        "{what}: only {} colours drawn",
+        distinct.len()
     );
+    assert!(kept == settled, "{what} left on the pool: image differs");
+    // glFinish after every draw leaves nothing for the next one to take over.
     assert_eq!(adopted_settled, 0);
     if softgl::cpu::threads() > 1 {
         assert!(
-            detached >= 36,
-            "only {detached} list draws stayed on the pool"
+            detached >= min,
+            "{what}: only {detached} stayed on the pool"
         );
-        // Each strip but a round's first takes over the one before it (36 of 40).
         assert!(
-            adopted >= 36,
-            "only {adopted} list draws took the one before over"
+            adopted >= min,
+            "{what}: only {adopted} took the one before over"
         );
     } else {
         assert_eq!((detached, adopted), (0, 0));

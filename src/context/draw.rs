@@ -96,7 +96,7 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
         draw_pass(ctx, prims, detach, None);
         return;
     }
-    draw_multisample(ctx, prims);
+    draw_multisample(ctx, prims, detach);
 }
 
 /// A draw into a 4x multisample object, as llvmpipe draws it (docs/fbo-rules.md §3).
@@ -115,11 +115,18 @@ fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, 
 /// copy of plane 0's depth and stencil as they were before the draw (so that it sees the
 /// same tests pass, in the same order), its own depth and stencil put back afterwards;
 /// plane 0 is drawn last, normally.
-fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>) {
-    ctx.settle_draws();
+///
+/// The one-pass draw may leave its last batch on the pool (`detach`), holding the sample
+/// planes with plane 0 (`fbo.ms_held`); the other ways settle it first.
+fn draw_multisample<S: VertexSource + ?Sized>(
+    ctx: &mut Context,
+    prims: Prims<'_, S>,
+    detach: bool,
+) {
     crate::context::pixel_ops::bitmap_cache::flush(ctx);
     let caps = &ctx.state.caps;
     if !caps.get(Cap::Multisample) {
+        ctx.settle_draws();
         let Some(fb) = ctx.fb.as_mut() else { return };
         fb.resolve();
         let (depth0, stencil0) = (fb.depth.clone(), fb.stencil.clone());
@@ -153,13 +160,14 @@ fn draw_multisample<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_
         };
     }
     if mask == 0 {
+        ctx.settle_draws();
         return;
     }
     let pass = crate::fragment::MsPass {
         mask: mask as u8,
         alpha_to_coverage: caps.get(Cap::SampleAlphaToCoverage),
     };
-    if draw_pass(ctx, prims, false, Some(pass)) {
+    if draw_pass(ctx, prims, detach, Some(pass)) {
         return;
     }
     ctx.for_each_sample(|c, s| {
@@ -184,10 +192,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
     // pool: a draw that may leave its own last batch there (single-sampled, no bitmaps
     // pending) takes the previous one back in its rasterizer, after setting up its
     // triangles; any other draw settles it first.
-    let detach = detach
-        && ms.is_none()
-        && ctx.bitmap_cache.pending.is_none()
-        && ctx.feedback.mode == RenderMode::Render;
+    let detach =
+        detach && ctx.bitmap_cache.pending.is_none() && ctx.feedback.mode == RenderMode::Render;
     let mut adopt = if detach {
         ctx.release_inflight()
     } else {
@@ -198,6 +204,8 @@ fn draw_pass<S: VertexSource + ?Sized>(
     if let Some(a) = adopt {
         a.settle(&mut ctx.stats, ctx.fb.as_mut());
     }
+    // Unless this draw's batch holds the sample planes now, they go back.
+    ctx.unhold_samples();
     drawn
 }
 
@@ -312,9 +320,12 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
         return true;
     };
     let one_pass = plan.frag.ms.is_some();
-    if one_pass {
-        // The other planes ride along with plane 0 (`Framebuffer::samples`).
+    if one_pass && !ctx.fbo.ms_held {
+        // The other planes ride along with plane 0 (`Framebuffer::samples`), until the
+        // draw and any batch it leaves on the pool are done (`Context::unhold_samples`);
+        // a draw that took over such a batch finds them there.
         fb.hold_samples(std::mem::take(&mut ctx.fbo.ms_planes));
+        ctx.fbo.ms_held = true;
     }
     let kept = run(
         plan,
@@ -325,9 +336,6 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
         detach,
         adopt.take(),
     );
-    if one_pass {
-        ctx.fbo.ms_planes = fb.release_samples();
-    }
     if ctx.state.caps.get(Cap::ColorMaterial) {
         ctx.light.sync_color_material(ctx.state.current.color);
     }

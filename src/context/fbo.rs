@@ -461,6 +461,11 @@ pub struct FboState {
     /// Sample planes 1..4 of a 4x draw object's working copy (plane 0 is the context's
     /// `fb`); empty for a single-sample draw framebuffer.
     pub ms_planes: Vec<Framebuffer>,
+    /// Planes 1..4 ride along with plane 0 (`Framebuffer::samples`) instead of being in
+    /// `ms_planes`: a one-pass multisample draw's batch left drawing on the pool holds
+    /// them, and the next such draw takes them over with it; any settle gives them back
+    /// ([`super::Context::settle_draws`]).
+    pub ms_held: bool,
     /// The renderbuffer buffers the working copy holds on loan (`super::fbo_lend`).
     pub loans: Vec<super::fbo_lend::Loan>,
     /// The image the last multisample resolve of glBlitFramebuffer wrote, kept so that

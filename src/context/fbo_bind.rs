@@ -489,7 +489,7 @@ impl Context {
 
     /// GL_SAMPLES of the draw framebuffer: 4 for a multisample object, else 0.
     pub fn draw_samples(&self) -> u32 {
-        if self.fbo.ms_planes.is_empty() {
+        if self.fbo.ms_planes.is_empty() && !self.fbo.ms_held {
             0
         } else {
             SAMPLES as u32

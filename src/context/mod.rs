@@ -282,6 +282,18 @@ impl Context {
         if let Some(f) = self.inflight.take() {
             self.fb = f.settle(&mut self.stats);
         }
+        self.unhold_samples();
+    }
+
+    /// Puts the sample planes a multisample draw's batch held (`fbo.ms_held`) back into
+    /// `fbo.ms_planes`, once nothing is left on the pool.
+    pub(crate) fn unhold_samples(&mut self) {
+        if self.fbo.ms_held && self.inflight.is_none() {
+            if let Some(fb) = self.fb.as_mut() {
+                self.fbo.ms_planes = fb.release_samples();
+            }
+            self.fbo.ms_held = false;
+        }
     }
 
     /// The draw still running on the pool, if any, with its framebuffer put back into `fb`
