@@ -117,7 +117,8 @@ fn chunks_left_drawing_on_the_pool_are_settled_by_every_next_call() {
         glEnableClientState(GL_COLOR_ARRAY);
         glDrawArrays(GL_TRIANGLES, 0, 42000);
         glFinish();
-        assert_eq!(detached(), 0, "a whole draw waits for its last batch");
+        // Like a glBegin/glEnd batch, the draw leaves its last batch on the pool.
+        assert_eq!(detached(), threads as u64, "glDrawArrays' last batch");
         c.read()
     };
     assert!(
@@ -532,4 +533,117 @@ fn check_left_on_pool(
     } else {
         assert_eq!((detached, adopted), (0, 0));
     }
+}
+
+/// glDrawElements and glDrawArrays draws from buffer objects and client arrays stay on
+/// the pool across the state calls between them, like glBegin/glEnd draws: the vertices
+/// are fetched before the call returns. The buffer's vertices rewritten
+/// (glBufferSubData) and the client array changed in place right after a draw that read
+/// them change only the draws after it. The image is the one of the same draws each
+/// followed by glFinish, and the draws did take each other over.
+#[test]
+fn array_draws_left_on_the_pool_give_the_images_of_settled_draws() {
+    use softgl::ffi::buffers::*;
+    use softgl::ffi::glext_enums::*;
+    use softgl::ffi::lighting::*;
+    let (w, h) = (180, 140);
+    // A strip of 24 quads as indexed triangles: position and normal interleaved.
+    let strip = |bend: f32| -> Vec<f32> {
+        (0..=24)
+            .flat_map(|i| {
+                let x = -1.0 + 2.0 * i as f32 / 24.0;
+                let z = bend * x * x;
+                [[x, 0.1, z, x, 0.2, 1.0], [x, -0.1, -z, -x, 0.2, 1.0]]
+            })
+            .flatten()
+            .collect()
+    };
+    let idx: Vec<u16> = (0..24u16)
+        .flat_map(|q| [2 * q, 2 * q + 1, 2 * q + 2, 2 * q + 2, 2 * q + 1, 2 * q + 3])
+        .collect();
+    let draw = |finish_each: bool| -> (Vec<u8>, u64, u64) {
+        let c = Ctx::new(w, h);
+        glClearColor(0.1, 0.1, 0.2, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let mut client = strip(0.5);
+        let first = strip(0.2);
+        let mut bufs = [0u32; 2];
+        // SAFETY: two names; the data pointers hold the sizes given.
+        unsafe {
+            glGenBuffers(2, bufs.as_mut_ptr());
+            glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
+            glBufferData(
+                GL_ARRAY_BUFFER,
+                (first.len() * 4) as isize,
+                first.as_ptr().cast(),
+                GL_DYNAMIC_DRAW,
+            );
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bufs[1]);
+            glBufferData(
+                GL_ELEMENT_ARRAY_BUFFER,
+                (idx.len() * 2) as isize,
+                idx.as_ptr().cast(),
+                GL_STATIC_DRAW,
+            );
+        }
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        for round in 0..4 {
+            for row in 0..10 {
+                let k = (round * 10 + row) as f32;
+                let diffuse = [0.3 + 0.06 * row as f32, 0.8 - 0.1 * round as f32, 0.5, 1.0];
+                // SAFETY: four floats.
+                unsafe { glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse.as_ptr()) };
+                glPushMatrix();
+                glTranslatef(0.03 * round as f32, -0.9 + 0.19 * row as f32, 0.0);
+                glRotatef(9.0 * k, 0.0, 1.0, 0.3);
+                // SAFETY: the buffer (offsets 0 and 12 of 24-byte vertices, 144 indices)
+                // or `client` (50 vertices of 6 floats) hold what the draws read.
+                unsafe {
+                    if row % 2 == 0 {
+                        glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
+                        glVertexPointer(3, GL_FLOAT, 24, std::ptr::null());
+                        glNormalPointer(GL_FLOAT, 24, 12 as *const _);
+                        glDrawElements(GL_TRIANGLES, 144, GL_UNSIGNED_SHORT, std::ptr::null());
+                    } else {
+                        glBindBuffer(GL_ARRAY_BUFFER, 0);
+                        glVertexPointer(3, GL_FLOAT, 24, client.as_ptr().cast());
+                        glNormalPointer(GL_FLOAT, 24, client.as_ptr().add(3).cast());
+                        glDrawArrays(GL_TRIANGLE_STRIP, 0, 50);
+                    }
+                }
+                glPopMatrix();
+                if finish_each {
+                    glFinish();
+                }
+                // Right after a draw: the client array changed in place (read by the
+                // next odd row only), and every third row the buffer's vertices.
+                let bend = 0.1 * (k % 7.0);
+                client.copy_from_slice(&strip(bend));
+                if row % 3 == 0 {
+                    let v = strip(-bend);
+                    // SAFETY: `v` holds the buffer's 50 vertices.
+                    unsafe {
+                        glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
+                        glBufferSubData(
+                            GL_ARRAY_BUFFER,
+                            0,
+                            (v.len() * 4) as isize,
+                            v.as_ptr().cast(),
+                        );
+                    }
+                }
+            }
+        }
+        glFinish();
+        assert_eq!(take_error(), GL_NO_ERROR);
+        let s = softgl::ffi::current_stats().unwrap();
+        (c.read(), s.draws_detached, s.draws_adopted)
+    };
+    // The draws after a glBufferSubData (rows 0, 3, 6 and 9 write the buffer) start
+    // afresh; each other takes the one before it over (24 of 40).
+    check_left_on_pool("array draws", draw, 50, 24);
 }

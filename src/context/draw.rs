@@ -16,31 +16,24 @@ use crate::pipe::{Material, Primitive};
 use crate::plan::{DrawState, FragState, Target};
 use crate::render::DrawPlan;
 
-/// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()).
+/// Draws `verts` as `mode`, through `indices` when given (each index < verts.count()):
+/// glDrawArrays and glDrawElements. Its last batch of triangles may be left drawing on the
+/// pool, as a glBegin/glEnd draw's: the vertices are all fetched (from client arrays or
+/// buffer objects) before the call returns, and the batch owns what it draws with.
 pub fn draw<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
     verts: &S,
     indices: Option<&[u32]>,
 ) {
-    draw_lit(ctx, mode, verts, indices, None)
+    draw_batch(ctx, mode, verts, indices, None, true)
 }
 
-/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd).
-pub fn draw_lit<S: VertexSource + ?Sized>(
-    ctx: &mut Context,
-    mode: Primitive,
-    verts: &S,
-    indices: Option<&[u32]>,
-    materials: Option<&[[Material; 2]]>,
-) {
-    draw_batch(ctx, mode, verts, indices, materials, false)
-}
-
-/// [`draw_lit`] for a finished glBegin/glEnd batch: with `keep`, its last batch of
-/// triangles may be left drawing on the pool ([`Context::settle_draws`]) while the
-/// program goes on with per-vertex calls and the next glBegin/glEnd, whose draw takes it
-/// back.
+/// [`draw`] with an optional material per vertex (glMaterial inside glBegin/glEnd), for
+/// a finished glBegin/glEnd batch or a display list's vertex node too: with `keep`, its
+/// last batch of triangles may be left drawing on the pool ([`Context::settle_draws`])
+/// while the program goes on with state calls that keep it and the next draw, which
+/// takes it back.
 pub fn draw_batch<S: VertexSource + ?Sized>(
     ctx: &mut Context,
     mode: Primitive,
@@ -89,7 +82,7 @@ impl<S: ?Sized> Clone for Prims<'_, S> {
 
 impl<S: ?Sized> Copy for Prims<'_, S> {}
 
-/// [`draw_lit`], leaving the last batch on the pool when `detach` allows it. A draw into
+/// [`draw_batch`], leaving the last batch on the pool when `detach` allows it. A draw into
 /// a 4x multisample object goes through [`draw_multisample`].
 fn draw_inner<S: VertexSource + ?Sized>(ctx: &mut Context, prims: Prims<'_, S>, detach: bool) {
     if ctx.draw_samples() == 0 || ctx.feedback.mode != RenderMode::Render {

@@ -4,7 +4,7 @@
 
 use super::enums::*;
 use super::types::*;
-use super::with_ctx;
+use super::with_ctx_keep;
 use crate::context::client_arrays::ClientArray;
 use crate::context::error::GlError;
 use libc::c_void;
@@ -18,7 +18,7 @@ pub(crate) fn set_pointer(
     stride: GLsizei,
     ptr: *const c_void,
 ) {
-    with_ctx(|c| c.set_array_pointer(w, (size, ty, stride), ptr as usize))
+    with_ctx_keep(|c| c.set_array_pointer(w, (size, ty, stride), ptr as usize))
 }
 
 /// glVertexPointer.
@@ -63,7 +63,7 @@ pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const GL
 }
 
 fn client_state(cap: GLenum, on: bool) {
-    with_ctx(|c| c.set_client_array(cap, on))
+    with_ctx_keep(|c| c.set_client_array(cap, on))
 }
 
 /// glEnableClientState.
@@ -81,7 +81,7 @@ pub extern "C" fn glDisableClientState(cap: GLenum) {
 /// glInterleavedArrays: sets and enables the arrays of one of the 14 fixed layouts.
 #[no_mangle]
 pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const GLvoid) {
-    with_ctx(|c| c.interleaved_arrays(format, stride, pointer as usize))
+    with_ctx_keep(|c| c.interleaved_arrays(format, stride, pointer as usize))
 }
 
 /// glArrayElement: inside glBegin/glEnd, specifies vertex `i` from the enabled arrays. In a

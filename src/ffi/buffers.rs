@@ -46,7 +46,7 @@ pub extern "C" fn glIsBuffer(buffer: GLuint) -> GLboolean {
 /// glBindBuffer.
 #[no_mangle]
 pub extern "C" fn glBindBuffer(target: GLenum, buffer: GLuint) {
-    with_ctx(|c| {
+    super::with_ctx_keep(|c| {
         let t = BufferTarget::from_gl(target)?;
         c.bind_buffer(t, buffer);
         Ok(())

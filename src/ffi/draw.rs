@@ -12,7 +12,9 @@ use crate::context::state::Primitive;
 use crate::context::Context;
 
 /// Runs a draw call, or compiles it while a display list is being compiled (`compile`
-/// reads the arrays now); under GL_COMPILE_AND_EXECUTE it is drawn too.
+/// reads the arrays now); under GL_COMPILE_AND_EXECUTE it is drawn too. A draw run now
+/// does not wait for the draw on the pool first: it takes that batch over, and may leave
+/// its own there ([`crate::context::draw::draw`]).
 pub(crate) fn listable_draw(
     exec: impl FnOnce(&mut Context) -> GlResult<()>,
     compile: impl FnOnce(&mut Context),
@@ -20,7 +22,7 @@ pub(crate) fn listable_draw(
     with_ctx_raw(|c| match c.lists.compile_mode() {
         None => {
             c.outside_begin_end()?;
-            c.flush_pending();
+            c.flush_pending_keep();
             exec(c)
         }
         Some(execute) => {

@@ -113,6 +113,19 @@ pub(crate) fn with_ctx<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) 
     })
 }
 
+/// As [`with_ctx`] for the client-state calls that only change bindings or array
+/// pointers (glBindBuffer, gl*Pointer, glEnableClientState …): a draw's batch left drawing
+/// on the pool stays there ([`Context::flush_pending_keep`]), since it holds every vertex
+/// it draws and reads no buffer object or client array.
+#[inline]
+pub(crate) fn with_ctx_keep<R: Default>(f: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
+    with_ctx_raw(|c| {
+        c.outside_begin_end()?;
+        c.flush_pending_keep();
+        f(c)
+    })
+}
+
 /// As [`with_ctx`] but allowed between glBegin and glEnd: for OSMesa's own functions,
 /// which are not GL commands.
 #[inline]

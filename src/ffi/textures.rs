@@ -202,7 +202,7 @@ pub extern "C" fn glActiveTexture(texture: GLenum) {
 /// glClientActiveTexture.
 #[no_mangle]
 pub extern "C" fn glClientActiveTexture(texture: GLenum) {
-    with_ctx(|c| c.client_active_texture(texture))
+    super::with_ctx_keep(|c| c.client_active_texture(texture))
 }
 
 /// glPrioritizeTextures (priorities are stored; residency is always true).

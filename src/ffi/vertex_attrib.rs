@@ -76,9 +76,9 @@ c_fns! {
     unsafe fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => generic4v(index, v, Component::norm);
     unsafe fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => generic4v(index, v, Component::norm);
     unsafe fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => generic4v(index, v, Component::norm);
-    safe fn glVertexAttribPointer(index: GLuint, size: GLint, type_: GLenum, normalized: GLboolean, stride: GLsizei, pointer: *const GLvoid) => with_ctx(|c| c.vertex_attrib_pointer(index, (size, type_, gl_bool(normalized), stride), pointer as usize));
-    safe fn glEnableVertexAttribArray(index: GLuint) => with_ctx(|c| c.set_vertex_attrib_array(index, true));
-    safe fn glDisableVertexAttribArray(index: GLuint) => with_ctx(|c| c.set_vertex_attrib_array(index, false));
+    safe fn glVertexAttribPointer(index: GLuint, size: GLint, type_: GLenum, normalized: GLboolean, stride: GLsizei, pointer: *const GLvoid) => super::with_ctx_keep(|c| c.vertex_attrib_pointer(index, (size, type_, gl_bool(normalized), stride), pointer as usize));
+    safe fn glEnableVertexAttribArray(index: GLuint) => super::with_ctx_keep(|c| c.set_vertex_attrib_array(index, true));
+    safe fn glDisableVertexAttribArray(index: GLuint) => super::with_ctx_keep(|c| c.set_vertex_attrib_array(index, false));
     unsafe fn glGetVertexAttribfv(index: GLuint, pname: GLenum, params: *mut GLfloat) => get_attrib(index, pname, params, |x| x as f32);
     unsafe fn glGetVertexAttribdv(index: GLuint, pname: GLenum, params: *mut GLdouble) => get_attrib(index, pname, params, |x| x);
     unsafe fn glGetVertexAttribiv(index: GLuint, pname: GLenum, params: *mut GLint) => get_attrib(index, pname, params, |x| x as GLint);
