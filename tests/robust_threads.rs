@@ -647,3 +647,78 @@ fn array_draws_left_on_the_pool_give_the_images_of_settled_draws() {
     // afresh; each other takes the one before it over (24 of 40).
     check_left_on_pool("array draws", draw, 50, 24);
 }
+
+/// Draws with a GLSL program stay on the pool across glUniform calls: the batch holds its
+/// own copy of the uniform values, and the vertex shader ran before the draw returned. A
+/// uniform changed right after a draw changes only the draws after it; the image is the
+/// one of the same draws each followed by glFinish, and the draws did take each other
+/// over.
+#[test]
+fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
+    use softgl::ffi::shaders::*;
+    use softgl::ffi::shaders_uniform::*;
+    const VS: &str = "uniform vec4 place;\n\
+        void main() {\n\
+          vec4 v = vec4(gl_Vertex.xy * place.w + place.xy, gl_Vertex.z, 1.0);\n\
+          gl_FrontColor = vec4(gl_Vertex.x * 0.5 + 0.5, 0.3, place.z, 1.0);\n\
+          gl_Position = gl_ModelViewProjectionMatrix * v;\n\
+        }\n";
+    const FS: &str = "uniform vec4 tint;\n\
+        void main() { gl_FragColor = gl_Color * tint; }\n";
+    let shader = |kind: u32, src: &str| {
+        let s = glCreateShader(kind);
+        let c = std::ffi::CString::new(src).unwrap();
+        let p = c.as_ptr();
+        // SAFETY: one NUL-terminated string.
+        unsafe { glShaderSource(s, 1, &p, std::ptr::null()) };
+        glCompileShader(s);
+        s
+    };
+    let (w, h) = (150, 120);
+    let draw = |finish_each: bool| -> (Vec<u8>, u64, u64) {
+        let c = Ctx::new(w, h);
+        glClearColor(0.1, 0.1, 0.1, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let p = glCreateProgram();
+        glAttachShader(p, shader(0x8B31, VS));
+        glAttachShader(p, shader(0x8B30, FS));
+        glLinkProgram(p);
+        glUseProgram(p);
+        let (place, tint) = {
+            let (a, b) = (c"place", c"tint");
+            // SAFETY: NUL-terminated names.
+            unsafe {
+                (
+                    glGetUniformLocation(p, a.as_ptr()),
+                    glGetUniformLocation(p, b.as_ptr()),
+                )
+            }
+        };
+        assert!(place >= 0 && tint >= 0);
+        glEnable(GL_DEPTH_TEST);
+        for k in 0..36 {
+            let (col, row) = ((k % 6) as f32, (k / 6) as f32);
+            glUniform4f(place, -0.8 + 0.3 * col, -0.8 + 0.3 * row, 0.1 * row, 0.25);
+            glUniform4f(tint, 1.0, 0.5 + 0.08 * col, 0.9 - 0.1 * row, 1.0);
+            glBegin(GL_TRIANGLE_STRIP);
+            for i in 0..=10 {
+                let x = -1.0 + 0.2 * i as f32;
+                glVertex3f(x, 0.6 + 0.2 * (i % 2) as f32, 0.1 * x);
+                glVertex3f(x, -0.6, -0.1 * x);
+            }
+            glEnd();
+            if finish_each {
+                glFinish();
+            }
+            // Right after the draw: the next uniforms, then others that no draw uses.
+            glUniform4f(tint, 0.0, 0.0, 0.0, 0.0);
+        }
+        glFinish();
+        assert_eq!(take_error(), GL_NO_ERROR);
+        let s = softgl::ffi::current_stats().unwrap();
+        assert_eq!(s.program_draws_refused, 0);
+        (c.read(), s.draws_detached, s.draws_adopted)
+    };
+    // Each draw but the first takes the one before it over (35 of 36).
+    check_left_on_pool("program draws", draw, 30, 35);
+}

@@ -14,6 +14,7 @@
 #include "bench.h"
 #include "shapes.h"
 #include "mipmaps.h"
+#include "programs.h"
 
 #define TS 128
 
@@ -42,28 +43,11 @@ static const char *FS =
     "  gl_FragColor = vec4(t.rgb * (0.15 + 0.85 * d) + vec3(0.6 * s), 1.0);\n"
     "}\n";
 
-static GLuint shader(GLenum kind, const char *src)
-{
-    GLuint s = glCreateShader(kind);
-    GLint ok = 0;
-    glShaderSource(s, 1, &src, NULL);
-    glCompileShader(s);
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024];
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        fprintf(stderr, "compile: %s\n", log);
-        exit(2);
-    }
-    return s;
-}
-
 static void scene_setup(int w, int h)
 {
     static unsigned char level[2][TS * TS * 4];
     unsigned char *src = level[0], *dst = level[1];
     GLuint prog, tex;
-    GLint ok = 0;
     int x, y;
     BENCH_UNUSED(w, h);
     for (y = 0; y < TS; y++)
@@ -80,16 +64,7 @@ static void scene_setup(int w, int h)
     mip_upload_rgba8(src, dst, TS);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    prog = glCreateProgram();
-    glAttachShader(prog, shader(GL_VERTEX_SHADER, VS));
-    glAttachShader(prog, shader(GL_FRAGMENT_SHADER, FS));
-    glLinkProgram(prog);
-    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        fprintf(stderr, "link failed\n");
-        exit(2);
-    }
-    glUseProgram(prog);
+    prog = program_use(VS, FS);
     glUniform1i(glGetUniformLocation(prog, "tex"), 0);
     glUniform3f(glGetUniformLocation(prog, "light"), 1.5f, 2.0f, 1.0f);
     glEnable(GL_DEPTH_TEST);

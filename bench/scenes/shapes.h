@@ -125,4 +125,38 @@ static inline void shape_cube(void)
     glEnd();
 }
 
+/* A unit sphere as arrays for glDrawElements: `slices` x `stacks` quads as two
+ * triangles each (`slices * stacks * 6` indices into `(slices + 1) * (stacks + 1)`
+ * vertices). Each vertex is `stride` floats: the position, the normal (the same), and
+ * with a stride of 8 the texture coordinates (s twice around, t from pole to pole). */
+static inline void shape_sphere_arrays(float *verts, int stride, unsigned short *idx,
+                                       int slices, int stacks)
+{
+    int i, j, k = 0;
+    for (j = 0; j <= stacks; j++)
+        for (i = 0; i <= slices; i++) {
+            float th = SHAPES_PI * (float)j / (float)stacks;
+            float ph = 2.0f * SHAPES_PI * (float)i / (float)slices;
+            float *v = verts + (j * (slices + 1) + i) * stride;
+            v[0] = v[3] = sinf(th) * cosf(ph);
+            v[1] = v[4] = sinf(th) * sinf(ph);
+            v[2] = v[5] = cosf(th);
+            if (stride >= 8) {
+                v[6] = 2.0f * (float)i / (float)slices;
+                v[7] = (float)j / (float)stacks;
+            }
+        }
+    for (j = 0; j < stacks; j++)
+        for (i = 0; i < slices; i++) {
+            unsigned short a = (unsigned short)(j * (slices + 1) + i);
+            unsigned short b = (unsigned short)(a + slices + 1);
+            idx[k++] = a;
+            idx[k++] = b;
+            idx[k++] = (unsigned short)(a + 1);
+            idx[k++] = (unsigned short)(a + 1);
+            idx[k++] = b;
+            idx[k++] = (unsigned short)(b + 1);
+        }
+}
+
 #endif

@@ -14,6 +14,7 @@
 #include <GL/glext.h>
 #include <math.h>
 #include "bench.h"
+#include "shapes.h"
 
 #define SLICES 24
 #define STACKS 16
@@ -49,31 +50,8 @@ static void scene_setup(int w, int h)
     static const GLfloat pos0[4] = {0.4f, 0.7f, 1.0f, 0.0f}, pos1[4] = {-0.8f, -0.2f, 0.6f, 0.0f};
     static const GLfloat col1[4] = {0.4f, 0.35f, 0.5f, 1.0f};
     static const GLfloat spec[4] = {0.6f, 0.6f, 0.6f, 1.0f};
-    int i, j, k = 0;
     BENCH_UNUSED(w, h);
-    for (j = 0; j <= STACKS; j++)
-        for (i = 0; i <= SLICES; i++) {
-            float th = 3.14159265f * (float)j / STACKS, ph = 6.2831853f * (float)i / SLICES;
-            GLfloat *v = verts + (j * (SLICES + 1) + i) * 8;
-            v[3] = sinf(th) * cosf(ph);
-            v[4] = sinf(th) * sinf(ph);
-            v[5] = cosf(th);
-            v[0] = v[3];
-            v[1] = v[4];
-            v[2] = v[5];
-            v[6] = 2.0f * (float)i / SLICES;
-            v[7] = (float)j / STACKS;
-        }
-    for (j = 0; j < STACKS; j++)
-        for (i = 0; i < SLICES; i++) {
-            GLushort a = (GLushort)(j * (SLICES + 1) + i), b = (GLushort)(a + SLICES + 1);
-            idx[k++] = a;
-            idx[k++] = b;
-            idx[k++] = (GLushort)(a + 1);
-            idx[k++] = (GLushort)(a + 1);
-            idx[k++] = b;
-            idx[k++] = (GLushort)(b + 1);
-        }
+    shape_sphere_arrays(verts, 8, idx, SLICES, STACKS);
     glGenBuffers(2, bufs);
     glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
     glBufferData(GL_ARRAY_BUFFER, sizeof(verts), verts, GL_STATIC_DRAW);

@@ -11,7 +11,7 @@
 use super::client::{read_vec, write_all};
 use super::families::c_fns;
 use super::types::*;
-use super::with_ctx;
+use super::{with_ctx, with_ctx_keep};
 use crate::context::uniforms::UniformShape;
 
 /// A uniform's 32-bit word from a value of a glUniform call.
@@ -32,9 +32,12 @@ impl Word for GLint {
     }
 }
 
-/// The scalar forms: one element of the given words.
+/// The scalar forms: one element of the given words. Like every glUniform, it leaves a
+/// draw's batch drawing on the pool (`with_ctx_keep`): a batch holds its own copy of the
+/// uniform values (`ShaderRef::uniforms`), and a vertex shader has run before its draw
+/// returned.
 fn scalars(location: GLint, shape: UniformShape, words: &[u32]) {
-    with_ctx(|c| {
+    with_ctx_keep(|c| {
         c.set_uniform(location, 1, shape, &|n| {
             words[..n.min(words.len())].to_vec()
         })
@@ -46,7 +49,7 @@ fn scalars(location: GLint, shape: UniformShape, words: &[u32]) {
 /// # Safety
 /// `value` null or readable for `count` elements of the shape.
 unsafe fn vectors<T: Word>(location: GLint, count: GLsizei, shape: UniformShape, value: *const T) {
-    with_ctx(|c| {
+    with_ctx_keep(|c| {
         c.set_uniform(location, count, shape, &|n| {
             // SAFETY: `n` never exceeds `count` elements, the values the caller promises.
             unsafe { read_vec(value, n) }
