@@ -159,7 +159,8 @@ fn chunks_left_drawing_on_the_pool_are_settled_by_every_next_call() {
         glEnd();
         assert_eq!(take_error(), GL_INVALID_OPERATION);
         glFinish();
-        assert_eq!(detached(), if threads { 2 } else { 0 });
+        // The two chunks, and the rest, which glGetError drew and left on the pool.
+        assert_eq!(detached(), if threads { 3 } else { 0 });
         assert!(
             c.read() == reference,
             "a call inside the batch: image differs"
@@ -291,8 +292,9 @@ fn textured_strips_left_on_the_pool_give_the_images_of_settled_draws() {
 
 /// Display-list draws (compiled vertex nodes, MuJoCo's kind) stay on the pool across the
 /// state calls between them that keep it there (glMaterial, glEnable/glDisable, blending
-/// and masks, glBindTexture and glActiveTexture, glLight, matrices, glCallList itself and
-/// a list's own recorded binding), while the calls that change a texture image
+/// and masks, glBindTexture and glActiveTexture, glLight, matrices, glGetError and
+/// glIsEnabled, glCallList itself and a list's own recorded binding), while the calls
+/// that change a texture image
 /// (glTexSubImage2D, glDeleteTextures, glTexImage2D) wait for them. The image is the one
 /// of the same draws each followed by glFinish, and the draws did take each other over.
 #[test]
@@ -381,6 +383,9 @@ fn list_draws_across_state_calls_give_the_images_of_settled_draws() {
                 glTranslatef(0.02 * round as f32, -0.9 + 0.19 * row as f32, 0.0);
                 glRotatef(10.0 * k, 0.0, 1.0, 0.0);
                 glCallList(base + (row % 3 == 2) as u32);
+                // Queries of errors and enables keep the draw on the pool too.
+                assert_eq!(glGetError(), GL_NO_ERROR);
+                assert_eq!(glIsEnabled(GL_LIGHTING), GL_TRUE as u8);
                 glPopMatrix();
                 if finish_each {
                     glFinish();

@@ -15,7 +15,9 @@ use crate::context::Context;
 #[no_mangle]
 pub extern "C" fn glGetError() -> GLenum {
     // Between glBegin and glEnd it returns 0 and records GL_INVALID_OPERATION, as Mesa.
-    with_ctx(|c| Ok(c.take_error().map_or(GL_NO_ERROR, GlError::to_gl)))
+    // A draw left on the pool stays there: every error is recorded before its call
+    // returns (PyOpenGL checks glGetError after every call it makes).
+    super::with_ctx_keep(|c| Ok(c.take_error().map_or(GL_NO_ERROR, GlError::to_gl)))
 }
 
 /// glEnable.
@@ -33,7 +35,8 @@ pub extern "C" fn glDisable(cap: GLenum) {
 /// glIsEnabled (also answers the client array states).
 #[no_mangle]
 pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
-    with_ctx(|c| Ok(c.is_enabled(cap)? as GLboolean))
+    // State alone: a draw left on the pool stays there.
+    super::with_ctx_keep(|c| Ok(c.is_enabled(cap)? as GLboolean))
 }
 
 /// Stores `value` (or raises its error when the command runs) in the state `field`
