@@ -653,11 +653,12 @@ fn array_draws_left_on_the_pool_give_the_images_of_settled_draws() {
     check_left_on_pool("array draws", draw, 50, 24);
 }
 
-/// Draws with a GLSL program stay on the pool across glUniform calls: the batch holds its
-/// own copy of the uniform values, and the vertex shader ran before the draw returned. A
-/// uniform changed right after a draw changes only the draws after it; the image is the
-/// one of the same draws each followed by glFinish, and the draws did take each other
-/// over.
+/// Draws with GLSL programs stay on the pool across glUniform and glUseProgram calls: the
+/// batch holds its own copy of the uniform values, and the vertex shader ran before the
+/// draw returned. A uniform changed right after a draw changes only the draws after it,
+/// and a program deleted while current and freed by the glUseProgram that leaves it
+/// (right after a draw of it) draws as if nothing was on the pool. The image is the one
+/// of the same draws each followed by glFinish, and the draws did take each other over.
 #[test]
 fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
     use softgl::ffi::shaders::*;
@@ -668,8 +669,10 @@ fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
           gl_FrontColor = vec4(gl_Vertex.x * 0.5 + 0.5, 0.3, place.z, 1.0);\n\
           gl_Position = gl_ModelViewProjectionMatrix * v;\n\
         }\n";
-    const FS: &str = "uniform vec4 tint;\n\
-        void main() { gl_FragColor = gl_Color * tint; }\n";
+    const FS: [&str; 2] = [
+        "uniform vec4 tint;\nvoid main() { gl_FragColor = gl_Color * tint; }\n",
+        "uniform vec4 tint;\nvoid main() { gl_FragColor = gl_Color.bgra + tint * 0.25; }\n",
+    ];
     let shader = |kind: u32, src: &str| {
         let s = glCreateShader(kind);
         let c = std::ffi::CString::new(src).unwrap();
@@ -684,25 +687,31 @@ fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
         let c = Ctx::new(w, h);
         glClearColor(0.1, 0.1, 0.1, 1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        let p = glCreateProgram();
-        glAttachShader(p, shader(0x8B31, VS));
-        glAttachShader(p, shader(0x8B30, FS));
-        glLinkProgram(p);
-        glUseProgram(p);
-        let (place, tint) = {
+        let progs = FS.map(|fs| {
+            let p = glCreateProgram();
+            glAttachShader(p, shader(0x8B31, VS));
+            glAttachShader(p, shader(0x8B30, fs));
+            glLinkProgram(p);
             let (a, b) = (c"place", c"tint");
             // SAFETY: NUL-terminated names.
-            unsafe {
+            let locs = unsafe {
                 (
                     glGetUniformLocation(p, a.as_ptr()),
                     glGetUniformLocation(p, b.as_ptr()),
                 )
-            }
-        };
-        assert!(place >= 0 && tint >= 0);
+            };
+            assert!(locs.0 >= 0 && locs.1 >= 0);
+            (p, locs)
+        });
         glEnable(GL_DEPTH_TEST);
         for k in 0..36 {
             let (col, row) = ((k % 6) as f32, (k / 6) as f32);
+            // Both programs in turn, the second until draw 20: deleted while current
+            // after draw 19, it still draws draw 20, and the glUseProgram of draw 21
+            // frees it while draw 20 may still be on the pool.
+            let second = (k % 2 == 1 && k < 20) || k == 20;
+            let (p, (place, tint)) = progs[usize::from(second)];
+            glUseProgram(p);
             glUniform4f(place, -0.8 + 0.3 * col, -0.8 + 0.3 * row, 0.1 * row, 0.25);
             glUniform4f(tint, 1.0, 0.5 + 0.08 * col, 0.9 - 0.1 * row, 1.0);
             glBegin(GL_TRIANGLE_STRIP);
@@ -715,8 +724,11 @@ fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
             if finish_each {
                 glFinish();
             }
-            // Right after the draw: the next uniforms, then others that no draw uses.
+            // Right after the draw: a uniform no later draw of this program keeps.
             glUniform4f(tint, 0.0, 0.0, 0.0, 0.0);
+            if k == 19 {
+                glDeleteProgram(progs[1].0);
+            }
         }
         glFinish();
         assert_eq!(take_error(), GL_NO_ERROR);
@@ -724,6 +736,7 @@ fn program_draws_across_uniform_calls_give_the_images_of_settled_draws() {
         assert_eq!(s.program_draws_refused, 0);
         (c.read(), s.draws_detached, s.draws_adopted)
     };
-    // Each draw but the first takes the one before it over (35 of 36).
-    check_left_on_pool("program draws", draw, 30, 35);
+    // Each draw but the first, the one after glDeleteProgram and the one whose
+    // glUseProgram frees the deleted program takes the one before it over (33 of 36).
+    check_left_on_pool("program draws", draw, 30, 33);
 }

@@ -343,6 +343,8 @@ impl Context {
         if old != program {
             if let Ok(p) = self.shaders.table.program(old) {
                 if p.delete_pending {
+                    // A draw left on the pool may still run the old program's shaders.
+                    self.settle_draws();
                     self.shaders.table.free_program(old);
                 }
             }

@@ -224,7 +224,7 @@ c_fns! {
     unsafe fn glGetAttachedShaders(program: GLuint, max_count: GLsizei, count: *mut GLsizei, shaders: *mut GLuint) => attached(program, max_count, count, shaders);
     safe fn glLinkProgram(program: GLuint) => with_ctx(|c| c.link_program(program));
     safe fn glValidateProgram(program: GLuint) => with_ctx(|c| c.validate_program(program));
-    safe fn glUseProgram(program: GLuint) => with_ctx(|c| c.use_program(program));
+    safe fn glUseProgram(program: GLuint) => super::with_ctx_keep(|c| c.use_program(program));
     unsafe fn glGetShaderiv(shader: GLuint, pname: GLenum, params: *mut GLint) => object_iv(shader, pname, params, false);
     unsafe fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => object_iv(program, pname, params, true);
     unsafe fn glGetShaderInfoLog(shader: GLuint, buf_size: GLsizei, length: *mut GLsizei, info_log: *mut GLchar) => object_text(shader, buf_size, length, info_log, ObjectText::ShaderLog);
