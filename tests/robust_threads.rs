@@ -383,9 +383,13 @@ fn list_draws_across_state_calls_give_the_images_of_settled_draws() {
                 glTranslatef(0.02 * round as f32, -0.9 + 0.19 * row as f32, 0.0);
                 glRotatef(10.0 * k, 0.0, 1.0, 0.0);
                 glCallList(base + (row % 3 == 2) as u32);
-                // Queries of errors and enables keep the draw on the pool too.
+                // Queries of errors, enables and matrices keep the draw on the pool too.
                 assert_eq!(glGetError(), GL_NO_ERROR);
                 assert_eq!(glIsEnabled(GL_LIGHTING), GL_TRUE as u8);
+                let mut mv = [0f32; 16];
+                // SAFETY: room for 16 floats.
+                unsafe { softgl::ffi::query::glGetFloatv(GL_MODELVIEW_MATRIX, mv.as_mut_ptr()) };
+                assert_eq!(mv[15], 1.0);
                 glPopMatrix();
                 if finish_each {
                     glFinish();
@@ -489,6 +493,17 @@ fn multisample_draws_left_on_the_pool_give_the_images_of_settled_draws() {
                 if finish_each {
                     glFinish();
                 }
+                if row % 6 == 5 {
+                    // Read from the object's working copy, which the batch holds: these
+                    // wait for it.
+                    let (mut red, mut depth) = (0, 0);
+                    // SAFETY: one integer each.
+                    unsafe {
+                        glGetIntegerv(GL_RED_BITS, &mut red);
+                        glGetIntegerv(GL_DEPTH_BITS, &mut depth);
+                    }
+                    assert_eq!((red, depth), (8, 24));
+                }
             }
         }
         // Resolved into the window, then read.
@@ -501,8 +516,9 @@ fn multisample_draws_left_on_the_pool_give_the_images_of_settled_draws() {
         let s = softgl::ffi::current_stats().unwrap();
         (c.read(), s.draws_detached, s.draws_adopted)
     };
-    // Each strip but a round's first takes over the one before it (33 of 36).
-    check_left_on_pool("multisample draws", draw, 50, 33);
+    // Each strip but a round's first and those after the bits queries takes over the one
+    // before it (27 of 36).
+    check_left_on_pool("multisample draws", draw, 50, 27);
 }
 
 /// Runs `draw` with glFinish after every draw (`true`) and without, and checks that both

@@ -204,6 +204,22 @@ fn pixel_store_get(c: &Context, pname: u32) -> Option<Value> {
     })
 }
 
+/// Whether `pname`'s value is read from the draw framebuffer's working copy (an object's
+/// buffer bits, the clear colour's clamp, the stencil values' range), which a draw left
+/// on the pool holds: glGet waits for that draw first for these, and only these.
+pub fn reads_framebuffer(c: &Context, pname: u32) -> bool {
+    matches!(
+        pname,
+        GL_RED_BITS
+            | GL_GREEN_BITS
+            | GL_BLUE_BITS
+            | GL_ALPHA_BITS
+            | GL_DEPTH_BITS
+            | GL_STENCIL_BITS
+            | GL_COLOR_CLEAR_VALUE
+    ) || stencil_get(c, pname, 0).is_some()
+}
+
 /// The value of `pname`, or GL_INVALID_ENUM.
 pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     let st = &c.state;

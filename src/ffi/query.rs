@@ -15,7 +15,12 @@ use libc::c_void;
 /// # Safety
 /// `out` must be null or writable for the value's components.
 unsafe fn get_into<T: Copy>(pname: GLenum, out: *mut T, conv: impl Fn(&Value) -> Vec<T>) {
-    with_ctx(|c| {
+    // A draw left on the pool stays there unless the value is read from the framebuffer
+    // it holds (programs query matrices and the viewport between draws).
+    super::with_ctx_keep(|c| {
+        if crate::context::get::reads_framebuffer(c, pname) {
+            c.settle_draws();
+        }
         let v = conv(&get(c, pname)?);
         // SAFETY: the program promises room for the value's components, as GL requires.
         unsafe { write_all(out, &v, |x| x) };
