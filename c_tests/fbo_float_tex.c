@@ -258,6 +258,7 @@ int main(int argc, char **argv)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (i = 0; i < NF; i++)
         run(out, &formats[i], hdr_fb, hdr_dst, i);
+    glFinish(); /* the window's pixels reach `buf` at glFinish (OSMesa copies them) */
     sgl_image(out, "window", W, H, 4, "RGBA", W * 4, 1, buf);
     sgl_text(out, "final", "err=0x%x\n", glGetError());
     sgl_close(out);

@@ -103,7 +103,10 @@ int main(int argc, char **argv)
     glDrawPixels(6, 5, GL_RGBA, GL_UNSIGNED_BYTE, small);
     glColor3f(0.0f, 1.0f, 1.0f);
     glRasterPos2i(50, 2);
+    /* one byte per row: the default alignment of 4 would read 29 bytes of `bits` */
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glRasterPos2i(40, 30);
     glCopyPixels(3, 30, 6, 5, GL_COLOR);
     glLoadIdentity();
@@ -113,7 +116,10 @@ int main(int argc, char **argv)
     sgl_data(out, "rb_depth_float", sizeof dz, dz);
     glReadPixels(0, 0, FW, FH, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, du);
     sgl_data(out, "rb_depth_uint", sizeof du, du);
+    /* FW bytes a row: the default pack alignment of 4 would pad rows past `st` */
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, FW, FH, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
     sgl_data(out, "rb_stencil", sizeof st, st);
 
     /* 2. render to a 2D texture, then mipmaps */
