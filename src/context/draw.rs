@@ -182,9 +182,10 @@ fn draw_pass<S: VertexSource + ?Sized>(
     ms: Option<crate::fragment::MsPass>,
 ) -> bool {
     // Nothing may touch the framebuffer, nor start a rasterizer, while a draw is on the
-    // pool: a draw that may leave its own last batch there (single-sampled, no bitmaps
-    // pending) takes the previous one back in its rasterizer, after setting up its
-    // triangles; any other draw settles it first.
+    // pool: a draw that may leave its own last batch there (no bitmaps pending, not in
+    // feedback; a multisample one only in one pass, its planes held with plane 0) takes
+    // the previous one back in its rasterizer, after setting up its triangles; any other
+    // draw settles it first.
     let detach =
         detach && ctx.bitmap_cache.pending.is_none() && ctx.feedback.mode == RenderMode::Render;
     let mut adopt = if detach {

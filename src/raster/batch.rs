@@ -12,14 +12,15 @@
 //! the other, so each pixel sees the same fragments in the same order as single-threaded
 //! rendering: the images are byte-identical with threads on and off. The last batch of a
 //! draw is drawn before the draw returns, on the calling thread alone when it is little
-//! work; only a glBegin/glEnd draw (a chunk of a long batch, or a batch drawn by glEnd of
-//! a strip or by the next glBegin, or a display list's vertex node) returns while the pool
-//! draws its last batch ([`Rasterizer::flush_detached`]), holding the framebuffer, with a
-//! copy of the unit plans. The next such draw sets up its triangles meanwhile and then
-//! takes the batch back ([`Rasterizer::adopt`]); any other GL call but the per-vertex ones
-//! and the state calls that touch no image (`ffi::with_ctx_list_keep`: matrices, enables,
-//! materials, blending, texture bindings, glCallList …) settles it first, drawing its
-//! remaining bands too. A draw whose batch is too small for the pool
+//! work; a draw of triangles (a glBegin/glEnd batch or a chunk of a long one, a display
+//! list's vertex node, glDrawArrays/glDrawElements; multisampled in one pass too) returns
+//! while the pool draws its last batch ([`Rasterizer::flush_detached`]), holding the
+//! framebuffer, with a copy of the unit plans. The next such draw sets up its triangles
+//! meanwhile and then takes the batch back ([`Rasterizer::adopt`]); any other GL call but
+//! the per-vertex ones and the calls that touch no image (`ffi::with_ctx_list_keep` and
+//! `ffi::with_ctx_keep`: matrices, enables, materials, blending, bindings, array
+//! pointers, glUniform, glCallList, glGetError, most glGet …) settles it first, drawing
+//! its remaining bands too. A draw whose batch is too small for the pool
 //! leaves it unlaunched instead, and the next draw's triangles join it ([`segs`]: one
 //! batch, several draws' plans). So a program's many small strips become batches over
 //! many bands that keep both threads drawing, as llvmpipe's binning of a whole scene
