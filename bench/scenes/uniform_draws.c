@@ -16,11 +16,8 @@
 #include "bench.h"
 #include "programs.h"
 #include "shapes.h"
+#include "sphere_buffers.h"
 
-#define SLICES 24
-#define STACKS 16
-#define NVERT ((SLICES + 1) * (STACKS + 1))
-#define NIDX (SLICES * STACKS * 6)
 #define NOBJ 200
 
 static const char *VS =
@@ -49,20 +46,9 @@ static GLint loc_place, loc_color;
 
 static void scene_setup(int w, int h)
 {
-    static GLfloat verts[NVERT * 6];
-    static GLushort idx[NIDX];
-    GLuint bufs[2], prog;
+    GLuint prog;
     BENCH_UNUSED(w, h);
-    shape_sphere_arrays(verts, 6, idx, SLICES, STACKS);
-    glGenBuffers(2, bufs);
-    glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
-    glBufferData(GL_ARRAY_BUFFER, sizeof(verts), verts, GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bufs[1]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof(idx), idx, GL_STATIC_DRAW);
-    glVertexPointer(3, GL_FLOAT, 24, (const GLvoid *)0);
-    glNormalPointer(GL_FLOAT, 24, (const GLvoid *)12);
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_NORMAL_ARRAY);
+    sphere_buffers(6);
     prog = program_use(VS, FS);
     loc_place = glGetUniformLocation(prog, "place");
     loc_color = glGetUniformLocation(prog, "color");
@@ -88,6 +74,6 @@ static void scene_frame(int w, int h)
                     -0.3f * (float)(i % 3), 0.16f + 0.02f * (float)(i % 4));
         glUniform4f(loc_color, 0.3f + 0.03f * (float)col, 0.85f - 0.06f * (float)row,
                     0.4f + 0.04f * (float)((i * 7) % 11), 1.0f);
-        glDrawElements(GL_TRIANGLES, NIDX, GL_UNSIGNED_SHORT, (const GLvoid *)0);
+        glDrawElements(GL_TRIANGLES, SPHERE_NIDX, GL_UNSIGNED_SHORT, (const GLvoid *)0);
     }
 }

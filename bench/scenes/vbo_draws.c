@@ -15,14 +15,11 @@
 #include <math.h>
 #include "bench.h"
 #include "shapes.h"
+#include "sphere_buffers.h"
 
-#define SLICES 24
-#define STACKS 16
-#define NVERT ((SLICES + 1) * (STACKS + 1))
-#define NIDX (SLICES * STACKS * 6)
 #define NOBJ 160
 
-static GLuint bufs[2], tex[2];
+static GLuint tex[2];
 
 static void make_texture(GLuint name, int seed)
 {
@@ -45,24 +42,11 @@ static void make_texture(GLuint name, int seed)
 
 static void scene_setup(int w, int h)
 {
-    static GLfloat verts[NVERT * 8];
-    static GLushort idx[NIDX];
     static const GLfloat pos0[4] = {0.4f, 0.7f, 1.0f, 0.0f}, pos1[4] = {-0.8f, -0.2f, 0.6f, 0.0f};
     static const GLfloat col1[4] = {0.4f, 0.35f, 0.5f, 1.0f};
     static const GLfloat spec[4] = {0.6f, 0.6f, 0.6f, 1.0f};
     BENCH_UNUSED(w, h);
-    shape_sphere_arrays(verts, 8, idx, SLICES, STACKS);
-    glGenBuffers(2, bufs);
-    glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
-    glBufferData(GL_ARRAY_BUFFER, sizeof(verts), verts, GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bufs[1]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof(idx), idx, GL_STATIC_DRAW);
-    glVertexPointer(3, GL_FLOAT, 32, (const GLvoid *)0);
-    glNormalPointer(GL_FLOAT, 32, (const GLvoid *)12);
-    glTexCoordPointer(2, GL_FLOAT, 32, (const GLvoid *)24);
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_NORMAL_ARRAY);
-    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    sphere_buffers(8);
     glGenTextures(2, tex);
     make_texture(tex[0], 0);
     make_texture(tex[1], 1);
@@ -108,7 +92,7 @@ static void scene_frame(int w, int h)
         glTranslatef(-2.7f + 0.36f * (float)col, -1.6f + 0.36f * (float)row, -4.0f - 0.15f * (float)(i % 5));
         glRotatef(17.0f * (float)i, 0.3f, 1.0f, 0.2f);
         glScalef(0.2f, 0.2f, 0.2f);
-        glDrawElements(GL_TRIANGLES, NIDX, GL_UNSIGNED_SHORT, (const GLvoid *)0);
+        glDrawElements(GL_TRIANGLES, SPHERE_NIDX, GL_UNSIGNED_SHORT, (const GLvoid *)0);
         glPopMatrix();
     }
 }
