@@ -192,6 +192,10 @@ pub struct Tuning {
     /// engine (`crate::engine::draw`) when the draw's state lowers: `0` none, `1` all,
     /// `2` where it is faster. Default [`ENGINE`].
     pub engine: Engine,
+    /// `SOFTGL_ALPHA_EARLY`: whether the general textured walk runs an alpha test that
+    /// reads no texel before sampling (`fragment::simd_gen::alpha_early`), while it kills
+    /// enough fragments. Default on; exactly `0` turns it off.
+    pub alpha_early: bool,
     /// `SOFTGL_STATS`: whether a context prints its work counters when it is destroyed
     /// (the first one also prints [`Tuning::report`]). Default off; any value but `0`
     /// turns it on.
@@ -253,6 +257,7 @@ impl Tuning {
                 Some(2) => Engine::Auto,
                 _ => ENGINE,
             },
+            alpha_early: not_zero("SOFTGL_ALPHA_EARLY"),
             stats: get("SOFTGL_STATS").is_some_and(|v| v != "0"),
         }
     }
@@ -283,6 +288,7 @@ impl Tuning {
             setup8,
             tex_path,
             engine,
+            alpha_early,
             stats,
         } = self;
         let given = |v: &Option<String>| {
@@ -312,6 +318,7 @@ impl Tuning {
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
             ("SOFTGL_ENGINE", (*engine as u8).to_string()),
+            ("SOFTGL_ALPHA_EARLY", on(alpha_early)),
             ("SOFTGL_STATS", on(stats)),
         ]
     }

@@ -1444,6 +1444,18 @@ fn run_program(name: &str, source: &Path) {
     }
 }
 
+/// The work counters of a run with `SOFTGL_STATS=1`, as `name value` pairs from the
+/// report on its stderr.
+fn stats_counters(stderr: &[u8]) -> Vec<(String, u64)> {
+    String::from_utf8_lossy(stderr)
+        .lines()
+        .filter_map(|l| {
+            let (k, v) = l.trim().trim_end_matches(',').split_once(": ")?;
+            Some((k.to_owned(), v.parse().ok()?))
+        })
+        .collect()
+}
+
 /// The geometry split (a GL_TRIANGLES draw of small triangles set up on two threads in
 /// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) keeps the images and the
 /// `SOFTGL_STATS` counters of single-threaded rendering without it: the same bytes and the
@@ -1460,16 +1472,7 @@ fn run_program(name: &str, source: &Path) {
 fn split_geometry_keeps_images_and_counters() {
     let out_dir = target_dir().join("ctests").join("out");
     fs::create_dir_all(&out_dir).expect("mkdir");
-    // The counters of a run, as `name value` pairs from the report on stderr.
-    let counters = |stderr: &[u8]| -> Vec<(String, u64)> {
-        String::from_utf8_lossy(stderr)
-            .lines()
-            .filter_map(|l| {
-                let (k, v) = l.trim().trim_end_matches(',').split_once(": ")?;
-                Some((k.to_owned(), v.parse().ok()?))
-            })
-            .collect()
-    };
+    let counters = stats_counters;
     for (name, splits_512) in [("small_tris_200k", true), ("immediate_100k", false)] {
         let src = root().join("bench/scenes").join(format!("{name}.c"));
         let bin = build(&format!("bench_{name}"), &src, Side::Softgl)

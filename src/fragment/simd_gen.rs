@@ -61,6 +61,8 @@ pub struct GenPlan {
     crossbar: usize,
     /// The colour mask as a byte mask of a packed RGBA8 pixel.
     mask: i32,
+    /// [`alpha_early`]: the alpha test runs in [`test_row`], before sampling.
+    alpha_early: bool,
 }
 
 impl GenPlan {
@@ -81,8 +83,78 @@ impl GenPlan {
                 0
             },
             mask: mask as i32,
+            alpha_early: alpha_early(plan, units) && alpha_history::worth_it(),
         }
     }
+
+    /// Records, for a triangle drawn with this plan, that `failed` of its `fragments`
+    /// failed the alpha test (the counters' growth while it was drawn), when its alpha
+    /// test could run early ([`alpha_early`]).
+    #[inline(always)]
+    pub fn learn_alpha(plan: &FragPlan, units: &[UnitPlan<'_>], fragments: u64, failed: u64) {
+        if alpha_early(plan, units) {
+            alpha_history::record(fragments, failed);
+        }
+    }
+}
+
+/// How often the alpha tests that could run early killed fragments lately, on this
+/// thread: running the test first costs the alpha's computation a second time (about
+/// 15% of a frame of wide lines whose alpha test passes everything, sweep state 141), and
+/// saves sampling and shading the fragments it kills (half the frame of state 68). The
+/// test runs first while at least one fragment in eight failed it in the recent past.
+/// Which path a triangle takes changes no byte and no count, so this history (per thread,
+/// in whatever order the threads draw) is free to differ between runs.
+mod alpha_history {
+    use std::cell::Cell;
+
+    thread_local! {
+        /// (fragments, of which failed) recently, halved past [`WINDOW`].
+        static SEEN: Cell<(u64, u64)> = const { Cell::new((0, 0)) };
+    }
+
+    /// Fragments below which the history is too short to say no.
+    const WARM_UP: u64 = 512;
+    /// The history's length: both counts halve when the fragments pass it.
+    const WINDOW: u64 = 1 << 16;
+
+    /// Whether the test should run first.
+    #[inline(always)]
+    pub(super) fn worth_it() -> bool {
+        let (seen, failed) = SEEN.with(Cell::get);
+        seen < WARM_UP || failed * 8 >= seen
+    }
+
+    /// Adds a triangle's fragments and failures.
+    #[inline(always)]
+    pub(super) fn record(fragments: u64, failed: u64) {
+        SEEN.with(|c| {
+            let (mut seen, mut f) = c.get();
+            seen += fragments;
+            f += failed;
+            if seen > WINDOW {
+                seen /= 2;
+                f /= 2;
+            }
+            c.set((seen, f));
+        });
+    }
+}
+
+/// Whether a draw's alpha test can run before its units are sampled: it has one, and no
+/// unit's alpha reads a texel ([`crate::texture::env::Combine::alpha_reads_texels`]:
+/// an RGB, luminance or RGB5 texture under REPLACE, MODULATE, ADD or DECAL, a GL_COMBINE
+/// alpha of the primary colour and constants …), so that the alpha a fragment will have
+/// is known from its colour planes alone. The colour sum and fog change RGB only. Then
+/// [`test_row`] computes the colours with no texels, runs the alpha test and the stencil
+/// and depth tests, and only the lanes that pass are sampled and shaded, as llvmpipe's
+/// compiled shader skips the sampling of quads its alpha test killed (sweep state 68,
+/// flat-shaded fans whose alpha test fails everywhere: `docs/performance.md`, stop 69).
+#[inline(always)]
+pub fn alpha_early(plan: &FragPlan, units: &[UnitPlan<'_>]) -> bool {
+    plan.alpha.is_some()
+        && !units.iter().any(|u| u.env.alpha_reads_texels())
+        && crate::tuning::tuning().alpha_early
 }
 
 /// Lanes `0..8` as f32.
@@ -280,6 +352,49 @@ pub(crate) unsafe fn colors8<const FMA: bool, const FLAT: bool, const PERSP: boo
     }
 }
 
+/// The alpha byte [`colors8`] gives the row's lanes, in bits 24–31 as in its packed
+/// colours, for units whose alpha reads no texel ([`alpha_early`]): the primary colour's
+/// alpha through each unit's environment, with no texels and no RGB (which no alpha
+/// reads), then saturated and made a byte as `colors8` makes it. The colour sum and fog
+/// leave alpha alone.
+///
+/// # Safety
+/// AVX2 context (FMA when `FMA`); [`alpha_early`] holds for the units.
+#[inline(always)]
+unsafe fn alpha8<const FMA: bool, const FLAT: bool, const PERSP: bool>(
+    t: &SetupTriangle,
+    g: &GenPlan,
+    units: &[UnitPlan<'_>],
+    fx: F32x8,
+    fy: F32x8,
+    oow: F32x8,
+) -> I32x8 {
+    // SAFETY: the caller's AVX2 (+FMA) context.
+    unsafe {
+        let zero = F32x8::zero();
+        let a = if FLAT {
+            F32x8::splat(t.flat[3])
+        } else {
+            vary8::<FMA, PERSP>(t, 3, fx, fy, oow)
+        };
+        let frag = [zero, zero, zero, a];
+        let table = [[zero; 4]; MAX_TEXTURE_UNITS];
+        let mut prev = frag;
+        for u in units {
+            prev = u.env.apply8(&Inputs8 {
+                frag,
+                tex: [zero; 4],
+                prev,
+                textures: &table[..g.crossbar],
+            });
+        }
+        sat(prev[3])
+            .mul(F32x8::splat(255.0))
+            .to_i32()
+            .shl_var(I32x8::splat(24))
+    }
+}
+
 /// Shades the `live` lanes of the 8 pixels from `x` in row `py` whose units were sampled
 /// into `tex` (see the module comment); `oow` is the row's `1 / w` (1.0 without `PERSP`).
 ///
@@ -345,29 +460,32 @@ unsafe fn test_and_write<const FMA: bool, const DEPTH: bool>(
     }
 }
 
-/// Whether [`test_row`] may run a row's stencil and depth tests before its colours: no
-/// alpha test (the only per-fragment kill of fixed function; nothing after the tests
-/// reads their outcome but the colour write), and a test that can fail. Then sampling and
+/// Whether [`test_row`] may run a row's tests before its colours: no alpha test (the only
+/// per-fragment kill of fixed function; nothing after the tests reads their outcome but
+/// the colour write) and a stencil or depth test, which can fail; or an alpha test that
+/// reads no texel ([`alpha_early`]), which [`test_row`] then runs first. Sampling and
 /// shading only the lanes that pass leaves the same bytes and counts, as llvmpipe's
 /// early depth test does.
 #[inline(always)]
 pub fn early_tests(plan: &FragPlan, g: &GenPlan, depth: bool) -> bool {
-    plan.alpha.is_none() && (depth || g.stencil.is_some())
+    g.alpha_early || (plan.alpha.is_none() && (depth || g.stencil.is_some()))
 }
 
 /// The first half of [`shade_row`] for a plan where [`early_tests`] holds: counts the
-/// `live` fragments of the 8 pixels from `x` in row `py`, runs the stencil and depth
-/// tests with their updates, and returns the lanes that pass; [`shade_tested_row`]
-/// then shades and stores those.
+/// `live` fragments of the 8 pixels from `x` in row `py`, runs the alpha test (of the
+/// colours computed without texels, [`alpha_early`]), then the stencil and depth tests
+/// with their updates, and returns the lanes that pass; [`shade_tested_row`] then
+/// shades and stores those.
 ///
 /// # Safety
 /// As [`shade_row`].
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub unsafe fn test_row<const FMA: bool, const DEPTH: bool>(
+pub unsafe fn test_row<const FMA: bool, const DEPTH: bool, const FLAT: bool, const PERSP: bool>(
     t: &SetupTriangle,
     plan: &FragPlan,
     g: &GenPlan,
+    units: &[UnitPlan<'_>],
     fb: &mut Target<'_>,
     py: usize,
     x: usize,
@@ -377,8 +495,19 @@ pub unsafe fn test_row<const FMA: bool, const DEPTH: bool>(
     let n = LANES.min(fb.width - x);
     // SAFETY: forwarded from the caller; the tests touch live lanes only, inside the row.
     unsafe {
-        let live_v = row_mask(live, stats);
+        let mut live_v = row_mask(live, stats);
         let (fx, fy) = row_xy(x, py);
+        if g.alpha_early {
+            // `1 / w` as `coords_and_sample` computes it for the shading that follows
+            let one = F32x8::splat(1.0);
+            let oow = if PERSP {
+                one.div(super::simd_tex::eval8::<FMA>(&t.w, fx, fy))
+            } else {
+                one
+            };
+            let a = alpha8::<FMA, FLAT, PERSP>(t, g, units, fx, fy, oow);
+            live_v = alpha_test8(plan, a, live_v, stats);
+        }
         let idx = (py - fb.y0) * fb.width + x;
         let (st, dp) = (&mut *fb.stencil, &mut *fb.depth);
         stencil_depth8::<FMA, DEPTH>(

@@ -333,6 +333,7 @@ pub(super) unsafe fn chunks_general<
     use crate::simd::I32x8;
     let g = GenPlan::new(plan, t, units);
     let early = early_tests(plan, &g, DEPTH);
+    let (fragments, failed) = (stats.fragments, stats.alpha_failed);
     // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
     for mut c in chunks {
@@ -352,8 +353,11 @@ pub(super) unsafe fn chunks_general<
                 }
                 let (py, x) = ((c.qy + r as i64) as usize, c.x as usize);
                 // SAFETY: forwarded from the caller; the live lanes lie inside row `py`.
-                pass[r] =
-                    unsafe { test_row::<FMA, DEPTH>(t, plan, &g, fb, py, x, &c.live[r], stats) };
+                pass[r] = unsafe {
+                    test_row::<FMA, DEPTH, FLAT, PERSP>(
+                        t, plan, &g, units, fb, py, x, &c.live[r], stats,
+                    )
+                };
                 let bits = pass[r].movemask();
                 c.live[r] = LIVE_MASKS[bits as usize & 0xFF];
                 any |= bits != 0;
@@ -389,14 +393,21 @@ pub(super) unsafe fn chunks_general<
             }
         }
     }
+    GenPlan::learn_alpha(
+        plan,
+        units,
+        stats.fragments - fragments,
+        stats.alpha_failed - failed,
+    );
 }
 
 /// Whether [`rows_engine`] shades the triangle of box `b` drawn with `plan` and `units`,
 /// by `SOFTGL_ENGINE` ([`crate::tuning::Engine`]). Where it is [`Engine::Auto`] (the
 /// default), the engine takes the triangles on which it was measured faster than the
 /// hand-written 8-lane walk (`docs/performance.md`, stop 63: `multitex_combine` 49 → 40 ms
-/// on one thread): the walk would not test depth or stencil first (it samples only the
-/// lanes that pass those tests, the engine every live lane), its combiners are ones the
+/// on one thread): the walk would not test depth or stencil, or an alpha test that reads
+/// no texel, first (it samples only the lanes that pass those tests, the engine every
+/// live lane), its combiners are ones the
 /// walk interprets per row (two or more units, or one beyond a plain product), and the
 /// box is large enough to fill the executor's batches ([`crate::tuning::ENGINE_MIN_BOX`]).
 ///
@@ -408,7 +419,8 @@ fn engine_takes(plan: &FragPlan, units: &[UnitPlan<'_>], b: [i64; 4]) -> bool {
         Engine::Off => false,
         Engine::On => true,
         Engine::Auto => {
-            let early = plan.alpha.is_none() && (plan.depth.is_some() || plan.stencil.is_some());
+            let early = crate::fragment::simd_gen::alpha_early(plan, units)
+                || plan.alpha.is_none() && (plan.depth.is_some() || plan.stencil.is_some());
             let interpreted = units.len() >= 2 || units.iter().any(|u| u.env.simple.is_none());
             let area = (b[2] - b[0] + 1).saturating_mul(b[3] - b[1] + 1);
             !early && interpreted && area >= ENGINE_MIN_BOX

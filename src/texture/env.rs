@@ -216,6 +216,20 @@ impl Simple {
 pub const NO_SLOT: u8 = u8::MAX;
 
 impl Combine {
+    /// Whether the alpha this combiner computes can read a texel: an alpha argument of
+    /// GL_TEXTURE or GL_TEXTUREn or, for DOT3_RGBA (whose alpha is the RGB dot product),
+    /// such an RGB argument. Every other alpha reads only the alpha channels of its own
+    /// arguments (`eval::apply_general`, `apply_simple`). Where no unit's does, a draw's
+    /// alpha test can run before its units are sampled (`fragment::simd_gen::alpha_early`).
+    pub fn alpha_reads_texels(&self) -> bool {
+        let tex = |a: &Arg| matches!(a.0, Source::Texture | Source::TextureN(_));
+        if self.mode_rgb == CombineFn::Dot3Rgba {
+            self.args_rgb[..2].iter().any(tex)
+        } else {
+            self.args_a[..self.mode_a.num_args()].iter().any(tex)
+        }
+    }
+
     /// Mesa's `args_match` and equal functions: RGB and alpha are one vec4 combine.
     fn compute_one_vec4(&self) -> bool {
         self.mode_rgb == self.mode_a

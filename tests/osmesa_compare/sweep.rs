@@ -10,8 +10,16 @@
 
 use super::{
     build, compare_images, ensure_reference, parse_output, reference_caps, reference_output_with,
-    root, run_env_args, target_dir, write_diff_png, Block, Side,
+    root, run_env_args, stats_counters, target_dir, write_diff_png, Block, ImageBlock, Side,
 };
+
+/// The image a sweep scene's output `bytes` of `state` holds.
+fn image_of(state: usize, bytes: &[u8]) -> ImageBlock {
+    match parse_output(bytes).map(|b| b.into_iter().next()) {
+        Ok(Some(Block::Image(i))) => i,
+        other => panic!("state {state}: no image in the output: {other:?}"),
+    }
+}
 use std::fmt::Write as _;
 
 /// The sweep's seed (`SWEEP_SEED`) and how many states (`SWEEP_STATE` 0..STATES) run.
@@ -84,10 +92,7 @@ fn sweep_subset_matches_llvmpipe() {
                 "state {state}: SOFTGL_THREADS=1 differs from default"
             );
         }
-        let image = |bytes: &[u8]| match parse_output(bytes).map(|b| b.into_iter().next()) {
-            Ok(Some(Block::Image(i))) => i,
-            other => panic!("state {state}: no image in the output: {other:?}"),
-        };
+        let image = |bytes: &[u8]| image_of(state, bytes);
         let (a, b) = (image(&ours), image(&theirs));
         let s = compare_images(&a, &b);
         let pinned = reference_caps(&name).is_some_and(|c| c == "sse4.1");
@@ -142,4 +147,97 @@ fn sweep_subset_matches_llvmpipe() {
         );
         assert!(!class.cause.is_empty());
     }
+}
+
+/// Sweep states whose alpha test reads no texel (an RGB or RGB5 texture under ADD, BLEND
+/// or DECAL, a GL_COMBINE alpha of the primary colour and constants), which the general
+/// textured walk runs before sampling (`fragment::simd_gen::alpha_early`), and which kill
+/// from a third to nearly all of their fragments: 53 (GL_LINE_LOOP), 68 (flat fans, 97%
+/// killed), 83 (with stencil and a non-writing depth test), 111 and 176.
+const ALPHA_EARLY_STATES: [usize; 5] = [53, 68, 83, 111, 176];
+
+/// The alpha test run before sampling draws llvmpipe's bytes, and the same bytes and work
+/// counters (fragments, alpha, depth and stencil failures, reads and writes) as the test
+/// run after shading (`SOFTGL_ALPHA_EARLY=0`), on one thread and on the default threads.
+#[test]
+fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
+    ensure_reference();
+    let src = root().join("bench/scenes/sweep.c");
+    let ref_bin = build("sweep", &src, Side::Osmesa).unwrap_or_else(|e| panic!("{e}"));
+    let our_bin = build("sweep", &src, Side::Softgl).unwrap_or_else(|e| panic!("{e}"));
+    let out_dir = target_dir().join("ctests").join("out");
+    std::fs::create_dir_all(&out_dir).expect("mkdir");
+    let get = |c: &[(String, u64)], k: &str| c.iter().find(|(n, _)| n == k).map(|(_, v)| *v);
+    let args = [SIZE, SIZE, "0"];
+    let mut problems = String::new();
+    for state in ALPHA_EARLY_STATES {
+        let state_s = state.to_string();
+        let env = [("SWEEP_SEED", SEED), ("SWEEP_STATE", state_s.as_str())];
+        let name = format!("sweep-{SEED}-{state}-{SIZE}-alpha");
+        let theirs = reference_output_with(&name, &ref_bin, &env, &args)
+            .unwrap_or_else(|e| panic!("state {state}: {e}"));
+        let run = |early: &str, threads: &str| {
+            let out = out_dir.join(format!("{name}-early{early}-t{threads}.out"));
+            let _ = std::fs::remove_file(&out);
+            let st = std::process::Command::new(&our_bin)
+                .env_remove("LD_LIBRARY_PATH")
+                .envs(env)
+                .env("SOFTGL_ALPHA_EARLY", early)
+                .env("SOFTGL_THREADS", threads)
+                .env("SOFTGL_STATS", "1")
+                .arg(&out)
+                .args(args)
+                .output()
+                .expect("run the sweep scene");
+            assert!(st.status.success(), "state {state}: {st:?}");
+            let c = stats_counters(&st.stderr);
+            assert!(c.len() >= 15, "state {state}: no counters in {st:?}");
+            (std::fs::read(&out).expect("output file"), c)
+        };
+        let (late, late_c) = run("0", "1");
+        let fragments = get(&late_c, "fragments").unwrap_or(0);
+        let failed = get(&late_c, "alpha_failed").unwrap_or(0);
+        // the states are what their comment says: the alpha test kills a real share
+        if failed * 4 < fragments || fragments < 10_000 {
+            let _ = writeln!(
+                problems,
+                "state {state}: {failed} of {fragments} fragments failed the alpha test"
+            );
+        }
+        for threads in ["1", "2"] {
+            let (early, early_c) = run("1", threads);
+            if early != late {
+                let _ = writeln!(problems, "state {state}, {threads} threads: bytes differ");
+            }
+            // the draws left on the pool depend on the threads, not on the alpha test
+            let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
+                c.iter()
+                    .filter(|(k, _)| !matches!(k.as_str(), "draws_detached" | "draws_adopted"))
+                    .cloned()
+                    .collect()
+            };
+            if strip(&early_c) != strip(&late_c) {
+                let _ = writeln!(
+                    problems,
+                    "state {state}, {threads} threads: counters differ:\n{early_c:?}\n{late_c:?}"
+                );
+            }
+        }
+        let image = |bytes: &[u8]| image_of(state, bytes);
+        let s = compare_images(&image(&late), &image(&theirs));
+        println!(
+            "alpha-early sweep state {state}: {failed} of {fragments} fragments failed; \
+             {:.3}% identical to llvmpipe",
+            s.percent_identical()
+        );
+        if s.off != 0 {
+            let _ = writeln!(
+                problems,
+                "state {state}: {:.3}% identical to llvmpipe, max diff {}",
+                s.percent_identical(),
+                s.max_diff
+            );
+        }
+    }
+    assert!(problems.is_empty(), "alpha-early states:\n{problems}");
 }

@@ -239,3 +239,83 @@ fn interpolate_one_minus_arg2_folds() {
     // 1 − (1 − x) is x itself
     assert_eq!(c[0], 0.9f32 * (1.0 - 0.3) + 0.2 * 0.3);
 }
+
+/// Which derived combiners' alpha can read a texel: none of a texture without alpha
+/// under the legacy modes, MODULATE and BLEND of an RGBA texture, a GL_COMBINE alpha
+/// argument of GL_TEXTURE or GL_TEXTUREn, and DOT3_RGBA through its RGB arguments (its
+/// alpha is the dot product) whatever its alpha arguments say.
+#[test]
+fn alpha_reads_texels_follows_the_alpha_arguments() {
+    let legacy = |mode, base| {
+        let env = TexEnv {
+            mode,
+            ..TexEnv::default()
+        };
+        Combine::derive(&env, base).alpha_reads_texels()
+    };
+    for mode in [
+        EnvMode::Replace,
+        EnvMode::Modulate,
+        EnvMode::Decal,
+        EnvMode::Blend,
+        EnvMode::Add,
+    ] {
+        assert!(!legacy(mode, B::Rgb), "{mode:?} on RGB");
+        assert!(!legacy(mode, B::Luminance), "{mode:?} on LUMINANCE");
+        // DECAL keeps the fragment's alpha on every format
+        assert_eq!(
+            legacy(mode, B::Rgba),
+            mode != EnvMode::Decal,
+            "{mode:?} on RGBA"
+        );
+    }
+    let combine = |rgb, a, src_rgb: [Source; 3], src_a: [Source; 3]| {
+        let env = TexEnv {
+            mode: EnvMode::Combine,
+            combine_rgb: rgb,
+            combine_alpha: a,
+            source_rgb: src_rgb,
+            source_alpha: src_a,
+            ..TexEnv::default()
+        };
+        Combine::derive(&env, B::Rgba).alpha_reads_texels()
+    };
+    use Source::*;
+    let (c, p, t) = (Constant, PrimaryColor, Texture);
+    assert!(!combine(
+        CombineFn::Modulate,
+        CombineFn::Add,
+        [t, t, t],
+        [p, c, t]
+    ));
+    assert!(combine(
+        CombineFn::Modulate,
+        CombineFn::Interpolate,
+        [p; 3],
+        [p, c, t]
+    ));
+    assert!(combine(
+        CombineFn::Replace,
+        CombineFn::Replace,
+        [p; 3],
+        [TextureN(1), p, p]
+    ));
+    assert!(combine(
+        CombineFn::Dot3Rgba,
+        CombineFn::Replace,
+        [p, t, p],
+        [p; 3]
+    ));
+    assert!(!combine(
+        CombineFn::Dot3Rgba,
+        CombineFn::Replace,
+        [p, c, t],
+        [t; 3]
+    ));
+    assert!(!combine(
+        CombineFn::Dot3Rgb,
+        CombineFn::Add,
+        [t; 3],
+        [c, p, t]
+    ));
+}
