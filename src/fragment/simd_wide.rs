@@ -176,22 +176,7 @@ unsafe fn store_aos(p: *mut i32, pass: I32x8, v: Vec4, full: bool) {
     // SAFETY: the caller's AVX2 context; masked stores write the lanes of `pass` only,
     // plain ones the 8 pixels the caller vouches for.
     unsafe {
-        // r g r g of pixels (0, 1 | 4, 5) and (2, 3 | 6, 7), b a likewise.
-        let t0 = v[0].unpack_lo(v[1]);
-        let t1 = v[0].unpack_hi(v[1]);
-        let t2 = v[2].unpack_lo(v[3]);
-        let t3 = v[2].unpack_hi(v[3]);
-        // One pixel per 128-bit half: (0 | 4), (1 | 5), (2 | 6), (3 | 7).
-        let u0 = t0.shuffle::<0x44>(t2);
-        let u1 = t0.shuffle::<0xEE>(t2);
-        let u2 = t1.shuffle::<0x44>(t3);
-        let u3 = t1.shuffle::<0xEE>(t3);
-        let q = [
-            u0.perm128::<0x20>(u1),
-            u2.perm128::<0x20>(u3),
-            u0.perm128::<0x31>(u1),
-            u2.perm128::<0x31>(u3),
-        ];
+        let q = crate::simd::pack::pixels_of(v);
         for (j, r) in q.iter().enumerate() {
             let at = p.wrapping_add(8 * j);
             if full {

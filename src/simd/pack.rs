@@ -117,9 +117,73 @@ unsafe fn channels_into_avx2(src: &[[f32; 4]; 8], dst: &mut [[u32; 8]], at: usiz
     }
 }
 
+/// 8 pixels' 4 channel registers (`v[channel]`, lane = pixel) made pixel-major: two
+/// pixels' RGBA per register, pixels (0, 1), (2, 3), (4, 5), (6, 7), so that the four
+/// stored in turn are `[[f32; 4]; 8]`. `vunpcklps`/`vunpckhps` interleave the channel
+/// pairs, `vshufps` gathers each pixel, `vperm2f128` pairs the halves (moves only: every
+/// bit is kept). The inverse of [`channels_into`]'s transposition.
+///
+/// # Safety
+/// AVX2 context (the caller is compiled with AVX2).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub unsafe fn pixels_of(v: [super::F32x8; 4]) -> [super::F32x8; 4] {
+    // (the lane methods are safe: an `F32x8` proves AVX2)
+    {
+        // r g r g of pixels (0, 1 | 4, 5) and (2, 3 | 6, 7), b a likewise.
+        let t0 = v[0].unpack_lo(v[1]);
+        let t1 = v[0].unpack_hi(v[1]);
+        let t2 = v[2].unpack_lo(v[3]);
+        let t3 = v[2].unpack_hi(v[3]);
+        // One pixel per 128-bit half: (0 | 4), (1 | 5), (2 | 6), (3 | 7).
+        let u0 = t0.shuffle::<0x44>(t2);
+        let u1 = t0.shuffle::<0xEE>(t2);
+        let u2 = t1.shuffle::<0x44>(t3);
+        let u3 = t1.shuffle::<0xEE>(t3);
+        [
+            u0.perm128::<0x20>(u1),
+            u2.perm128::<0x20>(u3),
+            u0.perm128::<0x31>(u1),
+            u2.perm128::<0x31>(u3),
+        ]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`pixels_of`] stores each lane's channels as that pixel's RGBA, bit for bit.
+    #[test]
+    fn pixels_of_is_the_transposition() {
+        if !crate::simd::cpu::isa().avx2() {
+            return;
+        }
+        #[target_feature(enable = "avx2")]
+        unsafe fn run(ch: &[[f32; 8]; 4]) -> [[f32; 4]; 8] {
+            let mut out = [[0f32; 4]; 8];
+            // SAFETY: AVX2 (this function's feature); 8-lane loads of 8 f32 and four
+            // 8-lane stores into the 32 f32 of `out`.
+            unsafe {
+                let v = ch.map(|c| super::super::F32x8::load(c.as_ptr()));
+                let p = out.as_mut_ptr() as *mut f32;
+                for (j, r) in pixels_of(v).iter().enumerate() {
+                    r.store(p.add(8 * j));
+                }
+            }
+            out
+        }
+        let ch: [[f32; 8]; 4] = std::array::from_fn(|c| {
+            std::array::from_fn(|i| f32::from_bits(0x3f00_0000 + (c * 8 + i) as u32))
+        });
+        // SAFETY: AVX2 was detected above.
+        let out = unsafe { run(&ch) };
+        for (i, px) in out.iter().enumerate() {
+            for c in 0..4 {
+                assert_eq!(px[c].to_bits(), ch[c][i].to_bits(), "pixel {i} channel {c}");
+            }
+        }
+    }
 
     #[test]
     fn every_variant_packs_as_the_scalar_loop() {

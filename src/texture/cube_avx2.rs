@@ -130,15 +130,7 @@ impl<'a> Cube8<'a> {
                 } else {
                     a
                 };
-                let c = [
-                    c[0].to_array(),
-                    c[1].to_array(),
-                    c[2].to_array(),
-                    c[3].to_array(),
-                ];
-                for (i, o) in out[row].iter_mut().enumerate() {
-                    *o = [c[0][i], c[1][i], c[2][i], c[3][i]];
-                }
+                super::soa_avx2::store_pixels(c, out[row]);
             }
             redo(qlive, bad)
         }

@@ -149,10 +149,16 @@ impl<'a> Soa8<'a> {
             // lanes that blend two levels
             let two = kb.cmpgt(I32x8::splat(-1));
             let one_level = two.movemask() == 0;
-            for row in 0..2 {
+            for (row, out) in out.into_iter().enumerate() {
                 // the other lanes' coordinates made 0, so that every tap is in range
                 let ok = [abs(v[row][0]).cmp_lt(bound), abs(v[row][1]).cmp_lt(bound)];
                 let (sr, tr) = (v[row][0].and(ok[0]), v[row][1].and(ok[1]));
+                if nkeys == 1 && one_level {
+                    // every live quad's one level (the common case): the pass as it is
+                    let (filter, level) = keys[0];
+                    store_pixels(self.pass(filter, p.image(level), sr, tr), out);
+                    continue;
+                }
                 let mut a = [F32x8::zero(); 4];
                 let mut b = a;
                 for (i, &(filter, level)) in keys[..nkeys].iter().enumerate() {
@@ -176,15 +182,7 @@ impl<'a> Soa8<'a> {
                         a[3].blendv(self.lerp(frac, a[3], b[3]), two),
                     ]
                 };
-                let c = [
-                    c[0].to_array(),
-                    c[1].to_array(),
-                    c[2].to_array(),
-                    c[3].to_array(),
-                ];
-                for (i, o) in out[row].iter_mut().enumerate() {
-                    *o = [c[0][i], c[1][i], c[2][i], c[3][i]];
-                }
+                store_pixels(c, out);
             }
             redo
         }
@@ -258,6 +256,21 @@ impl<'a> Soa8<'a> {
     #[inline(always)]
     fn lerp(&self, w: F32x8, a: F32x8, b: F32x8) -> F32x8 {
         lerp(self.p.fma, w, a, b)
+    }
+}
+
+/// The channel registers `c` stored as the 8 pixels' RGBA (`simd::pack::pixels_of`).
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+pub(super) unsafe fn store_pixels(c: [F32x8; 4], out: &mut [[f32; 4]; 8]) {
+    // SAFETY: forwarded from the caller; `out` is 32 contiguous f32, four 8-lane stores.
+    unsafe {
+        let p = out.as_mut_ptr() as *mut f32;
+        for (j, r) in crate::simd::pack::pixels_of(c).iter().enumerate() {
+            r.store(p.add(8 * j));
+        }
     }
 }
 
