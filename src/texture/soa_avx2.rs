@@ -80,7 +80,8 @@ impl<'a> Soa8<'a> {
     /// Samples both rows of a chunk at `s`, `t` into `out`, except the quads it returns
     /// (bit `j`: lanes `2j`, `2j + 1` of both rows), which have a live pixel and a
     /// coordinate it does not follow, for the caller to sample with the scalar code.
-    /// Lanes of quads without a live pixel may receive any value.
+    /// Lanes of quads without a live pixel, and of a row without one, may receive any
+    /// value.
     ///
     /// # Safety
     /// The CPU has AVX2, and FMA when the unit's lerps fuse.
@@ -150,6 +151,10 @@ impl<'a> Soa8<'a> {
             let two = kb.cmpgt(I32x8::splat(-1));
             let one_level = two.movemask() == 0;
             for (row, out) in out.into_iter().enumerate() {
+                // a row without a live pixel (a line's or a triangle's edge) is not read
+                if !live[row].iter().any(|&l| l) {
+                    continue;
+                }
                 // the other lanes' coordinates made 0, so that every tap is in range
                 let ok = [abs(v[row][0]).cmp_lt(bound), abs(v[row][1]).cmp_lt(bound)];
                 let (sr, tr) = (v[row][0].and(ok[0]), v[row][1].and(ok[1]));
