@@ -146,8 +146,8 @@ mod alpha_history {
 /// an RGB, luminance or RGB5 texture under REPLACE, MODULATE, ADD or DECAL, a GL_COMBINE
 /// alpha of the primary colour and constants …), so that the alpha a fragment will have
 /// is known from its colour planes alone. The colour sum and fog change RGB only. Then
-/// [`test_row`] computes the colours with no texels, runs the alpha test and the stencil
-/// and depth tests, and only the lanes that pass are sampled and shaded, as llvmpipe's
+/// [`test_row`] computes that alpha ([`alpha8`]), runs the alpha test and the stencil and
+/// depth tests, and only the lanes that pass are sampled and shaded, as llvmpipe's
 /// compiled shader skips the sampling of quads its alpha test killed (sweep state 68,
 /// flat-shaded fans whose alpha test fails everywhere: `docs/performance.md`, stop 69).
 #[inline(always)]
