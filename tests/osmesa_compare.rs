@@ -735,7 +735,13 @@ fn build(name: &str, source: &Path, side: Side) -> Result<PathBuf, String> {
         }
     }
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_owned());
-    let tmp = out_dir.join(format!("{name}.tmp{}", std::process::id()));
+    // Unique per call, not only per process: two tests of this binary may build the same
+    // scene at once (the sweep's subset and its alpha-early states), and a shared
+    // temporary made one rename fail. Each renames its own file into place (atomic; a
+    // binary already running keeps its inode).
+    static BUILDS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let seq = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let tmp = out_dir.join(format!("{name}.tmp{}.{seq}", std::process::id()));
     let mut cmd = Command::new(&cc);
     cmd.current_dir(root()).arg("-O1").arg("-Wall");
     match side {
