@@ -252,7 +252,10 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             };
             let mut state = streamer.state(n);
             let section = geom_section();
-            let ntris = n / 3;
+            let ntris = match mode {
+                Primitive::Quads => n / 4 * 2,
+                _ => n / 3,
+            };
             if mode == Primitive::Triangles
                 && section > 0
                 && ntris >= 2 * section
@@ -287,6 +290,8 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 } else {
                     streamer.run(probe, ntris - probe, &mut state, &mut rast, stats);
                 }
+            } else if let Some(unit) = offload_unit(mode).filter(|_| rast.may_offload(ntris)) {
+                streamer.stream_offloaded(unit, n, &mut state, &mut rast, stats);
             } else {
                 streamer.stream(streamer.mode, 0, n, &mut state, &mut rast, stats);
             }
@@ -460,6 +465,10 @@ struct StreamState {
     tri: SetupTriangle,
     /// Triangles waiting to be set up eight at a time, when the draw allows it.
     queue: Option<Box<SetupQueue>>,
+    /// Where an indexed draw streamed in pieces ([`Streamer::stream_offloaded`]) goes on
+    /// transforming runs of vertices: the end of the last piece's runs (`None`: each
+    /// call starts from vertex 0).
+    resume: Option<usize>,
 }
 
 /// The streamed triangles of a draw: each vertex fetched and transformed when first
@@ -486,6 +495,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
                 .pipe
                 .queue_ok()
                 .then(|| SetupQueue::new(self.pipe.nvary)),
+            resume: None,
         })
     }
 
@@ -510,6 +520,52 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         );
     }
 
+    /// Streams the `n` vertex references of a draw of independent primitives of
+    /// `unit` = (vertices, triangles) each, [`OFFLOAD_STEP`] primitives at a time, until
+    /// the pool is free to set up the second half of the rest while this thread sets up
+    /// the first ([`Rasterizer::offload`]).
+    fn stream_offloaded(
+        &self,
+        unit: (usize, usize),
+        n: usize,
+        state: &mut StreamState,
+        rast: &mut Rasterizer<'_, '_>,
+        stats: &mut Stats,
+    ) {
+        let (verts, tris) = unit;
+        let prims = n / verts;
+        let mut pos = 0;
+        state.resume = Some(0);
+        while pos < prims {
+            let left = prims - pos;
+            if rast.can_offload(left * tris, stats) {
+                let mid = pos + left / 2;
+                let mode = self.mode;
+                rast.offload(
+                    stats,
+                    |binner, s| {
+                        let mut st = self.state(n);
+                        let (a, b) = (mid * verts, prims * verts);
+                        self.stream(mode, a, b - a, &mut st, binner, s);
+                    },
+                    |rast, stats, second| {
+                        let (a, b) = if second {
+                            (mid * verts, prims * verts)
+                        } else {
+                            (pos * verts, mid * verts)
+                        };
+                        self.stream(mode, a, b - a, state, rast, stats);
+                    },
+                );
+                break;
+            }
+            let step = OFFLOAD_STEP.min(left);
+            self.stream(self.mode, pos * verts, step * verts, state, rast, stats);
+            pos += step;
+        }
+        state.resume = None;
+    }
+
     /// Streams vertices `first..first + n` as `mode`.
     fn stream<K: TriangleSink>(
         &self,
@@ -525,6 +581,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
             slot,
             tri,
             queue,
+            resume,
         } = state;
         let ix = |k: usize| self.indices.map_or(k, |ix| ix[k] as usize);
         let (verts, stage) = (self.verts, self.stage);
@@ -543,7 +600,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         let block = stage.block_ok();
         let indexed = self.indices.is_some();
         let (mut filled, end) = if indexed {
-            (0, verts.count())
+            (resume.unwrap_or(0), verts.count())
         } else {
             (first, first + n)
         };
@@ -582,10 +639,27 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         if let Some(q) = queue.as_deref_mut() {
             self.pipe.flush(q, tri, sink, stats);
         }
+        if let Some(r) = resume.as_mut() {
+            *r = filled;
+        }
         stats.vertices += cache.transformed;
         cache.transformed = 0;
     }
 }
+
+/// The vertices and triangles of one primitive of a draw whose halves share no
+/// primitive, so that a pool thread may set one up (the offload, `raster::batch::side`):
+/// GL_TRIANGLES and GL_QUADS. `None` for the other modes.
+fn offload_unit(mode: Primitive) -> Option<(usize, usize)> {
+    match mode {
+        Primitive::Triangles => Some((3, 1)),
+        Primitive::Quads => Some((4, 2)),
+        _ => None,
+    }
+}
+
+/// Primitives a draw that may offload sets up between two looks at the pool.
+const OFFLOAD_STEP: usize = 64;
 
 /// Vertices a streamed draw transforms in one run ([`Streamer::stream`]).
 const BLOCK: usize = 32;

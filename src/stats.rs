@@ -93,6 +93,9 @@ counters! {
         /// Draws that took over the batch the draw before them left on the pool (see
         /// `Rasterizer::adopt`) instead of waiting for it.
         draws_adopted: draw,
+        /// Draws whose second half a pool thread set up while the draw's thread set up
+        /// the first (see `raster::batch::side`).
+        draws_offloaded: draw,
     }
 }
 

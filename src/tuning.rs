@@ -42,6 +42,8 @@ pub const POOL_YIELD_US: u64 = 100;
 pub const GEOM_SECTION: usize = 4096;
 /// [`Tuning::split_probe`]'s default: triangles.
 pub const SPLIT_PROBE: usize = 1024;
+/// [`Tuning::offload`]'s default: triangles (measured in docs/performance.md, stop 70).
+pub const OFFLOAD: usize = 256;
 /// [`Tuning::ms_prefetch`]'s default: the rows below ([`MsPrefetch::Below`]).
 pub const MS_PREFETCH: MsPrefetch = MsPrefetch::Below;
 /// [`Tuning::engine`]'s default: the engine shades the general textured walk's triangles
@@ -182,6 +184,10 @@ pub struct Tuning {
     /// first, to measure their boxes (used at most a section, at least 1). Default
     /// [`SPLIT_PROBE`] (1024) triangles.
     pub split_probe: usize,
+    /// `SOFTGL_OFFLOAD`: the fewest triangles of a streamed GL_TRIANGLES or GL_QUADS draw
+    /// whose second half an idle pool thread sets up while the draw's thread sets up the
+    /// first (`raster::batch::side`); 0 turns the offload off. Default [`OFFLOAD`].
+    pub offload: usize,
     /// `SOFTGL_SETUP8`: whether the colour-only triangles of a streamed draw are set up
     /// eight at a time in AVX2 lanes. Default on; exactly `0` turns it off.
     pub setup8: bool,
@@ -245,6 +251,7 @@ impl Tuning {
             },
             geom_section: size("SOFTGL_GEOM_SECTION").map_or(GEOM_SECTION, |v| v.min(1 << 20)),
             split_probe: size("SOFTGL_SPLIT_PROBE").unwrap_or(SPLIT_PROBE),
+            offload: size("SOFTGL_OFFLOAD").unwrap_or(OFFLOAD),
             setup8: not_zero("SOFTGL_SETUP8"),
             tex_path: match text("SOFTGL_TEX_PATH").as_deref() {
                 Some("general") => TexPath::General,
@@ -285,6 +292,7 @@ impl Tuning {
             ms_prefetch,
             geom_section,
             split_probe,
+            offload,
             setup8,
             tex_path,
             engine,
@@ -315,6 +323,7 @@ impl Tuning {
             ("SOFTGL_MS_PREFETCH", (*ms_prefetch as u8).to_string()),
             ("SOFTGL_GEOM_SECTION", geom_section.to_string()),
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
+            ("SOFTGL_OFFLOAD", offload.to_string()),
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
             ("SOFTGL_ENGINE", (*engine as u8).to_string()),
@@ -434,6 +443,7 @@ mod tests {
         );
         assert_eq!(t.pool_yield.as_micros(), 100);
         assert_eq!((t.geom_section, t.split_probe), (4096, 1024));
+        assert_eq!(t.offload, 256);
         assert!(t.pool_help && t.pair && t.pool_start && t.narrow && t.setup8);
         assert_eq!(t.tex_path, TexPath::Fast);
         assert!(!t.stats);

@@ -1463,7 +1463,9 @@ fn stats_counters(stderr: &[u8]) -> Vec<(String, u64)> {
 }
 
 /// The geometry split (a GL_TRIANGLES draw of small triangles set up on two threads in
-/// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) keeps the images and the
+/// sections of `SOFTGL_GEOM_SECTION`, see `raster::batch::split`) and the offload (half of
+/// the rest of a draw set up by an idle pool thread, `SOFTGL_OFFLOAD`, see
+/// `raster::batch::side`; `draws_offloaded` counts them) keep the images and the
 /// `SOFTGL_STATS` counters of single-threaded rendering without it: the same bytes and the
 /// same counts except `vertices` (each thread has its own post-transform cache, so vertices
 /// of sections set up on different threads are transformed twice), `tris_paired`,
@@ -1484,13 +1486,16 @@ fn split_geometry_keeps_images_and_counters() {
         let bin = build(&format!("bench_{name}"), &src, Side::Softgl)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         for (w, h) in [(512, 512), (333, 277)] {
-            let run = |threads: &str, section: &str| {
-                let out = out_dir.join(format!("split_{name}-{w}x{h}-t{threads}-s{section}.out"));
+            let run = |threads: &str, section: &str, offload: &str| {
+                let out = out_dir.join(format!(
+                    "split_{name}-{w}x{h}-t{threads}-s{section}-o{offload}.out"
+                ));
                 let _ = fs::remove_file(&out);
                 let st = Command::new(&bin)
                     .env_remove("LD_LIBRARY_PATH")
                     .env("SOFTGL_THREADS", threads)
                     .env("SOFTGL_GEOM_SECTION", section)
+                    .env("SOFTGL_OFFLOAD", offload)
                     .env("SOFTGL_STATS", "1")
                     .arg(&out)
                     .args([w, h, 1].map(|v: u32| v.to_string()))
@@ -1501,20 +1506,45 @@ fn split_geometry_keeps_images_and_counters() {
                 assert!(c.len() >= 15, "{name}: no counters in {st:?}");
                 (fs::read(&out).expect("output file"), c)
             };
-            let (image, base) = run("1", "0");
+            let (image, base) = run("1", "0", "0");
             let get = |c: &[(String, u64)], k: &str| {
                 c.iter().find(|(n, _)| n == k).map(|(_, v)| *v).expect(k)
             };
             assert!(get(&base, "triangles") > 60_000, "{name}: {base:?}");
-            for section in ["0", "1000", "777", "30000"] {
+            let runs = ["0", "1000", "777", "30000"]
+                .iter()
+                .flat_map(|s| [(*s, "0"), (*s, "256")])
+                .chain([("0", "1")]);
+            for (section, offload) in runs {
                 for threads in ["1", "2"] {
-                    let (img, c) = run(threads, section);
-                    let what = format!("{name} {w}x{h} threads {threads} section {section}");
+                    // Whether the pool thread takes a half depends on its timing: the
+                    // run that must show an offload is tried up to five times.
+                    let tries = if (threads, offload) == ("2", "1") {
+                        5
+                    } else {
+                        1
+                    };
+                    let mut result = run(threads, section, offload);
+                    for _ in 1..tries {
+                        if !result.1.contains(&("draws_offloaded".into(), 0)) {
+                            break;
+                        }
+                        assert!(result.0 == image, "{name}: an image differs");
+                        result = run(threads, section, offload);
+                    }
+                    let (img, c) = result;
+                    let what = format!(
+                        "{name} {w}x{h} threads {threads} section {section} offload {offload}"
+                    );
                     assert!(img == image, "{what}: the image differs");
                     let same = |k: &str| {
                         !matches!(
                             k,
-                            "vertices" | "tris_paired" | "draws_detached" | "draws_adopted"
+                            "vertices"
+                                | "tris_paired"
+                                | "draws_detached"
+                                | "draws_adopted"
+                                | "draws_offloaded"
                         )
                     };
                     let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
@@ -1530,9 +1560,21 @@ fn split_geometry_keeps_images_and_counters() {
                         // split may have nothing left to leave.
                         assert!(detached > 0, "{what}: no batch left drawing on the pool");
                     }
+                    let offloaded = get(&c, "draws_offloaded");
+                    if threads == "1" || offload == "0" {
+                        assert_eq!(offloaded, 0, "{what}: draws_offloaded");
+                    } else if offload == "1" {
+                        // Every draw of a triangle or more may hand half of the rest to
+                        // the pool whenever the pool thread polls for work.
+                        assert!(offloaded > 0, "{what}: nothing offloaded");
+                    }
                     let (v, v0) = (get(&c, "vertices"), get(&base, "vertices"));
-                    if threads == "1" || section == "0" {
+                    if threads == "1" || (section == "0" && offload == "0") {
                         assert_eq!(v, v0, "{what}: vertices");
+                    } else if section == "0" {
+                        // The offloaded halves of an indexed draw transform the vertices
+                        // they share twice; immediate_100k's are not indexed.
+                        assert!(splits_512 || v == v0, "{what}: vertices");
                     } else if splits_512 {
                         assert!(v > v0, "{what}: not split ({v} vertices, {v0} without)");
                     } else if w == 512 {

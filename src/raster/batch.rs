@@ -24,7 +24,9 @@
 //! leaves it unlaunched instead, and the next draw's triangles join it ([`segs`]: one
 //! batch, several draws' plans). So a program's many small strips become batches over
 //! many bands that keep both threads drawing, as llvmpipe's binning of a whole scene
-//! does. The batches live in a per-thread
+//! does. A draw of independent triangles that finds the pool with nothing to draw hands
+//! the set-up of half of its rest to the pool thread ([`side`]), whose triangles then
+//! join the batch after the draw's own. The batches live in a per-thread
 //! pool, so drawing allocates little once they have grown (a band list per batch).
 //! Waking a sleeping pool thread costs a good part of a millisecond here, so a pool task
 //! polls for the next batch for a while after drawing one and the draw's thread polls
@@ -33,6 +35,7 @@
 mod job;
 mod pairing;
 mod segs;
+mod side;
 mod split;
 use job::{Job, Padded, SideFn, Task};
 use pairing::Pairing;
@@ -288,6 +291,8 @@ pub struct Rasterizer<'a, 'f> {
     ring: Vec<Batch>,
     /// The sum of the pixel boxes (inside the region) of the triangles rasterized so far.
     box_sum: i64,
+    /// Batches handed to the pool so far ([`Rasterizer::launch`]).
+    launches: u64,
 }
 
 /// Where the draw's set-up triangles go: the [`Rasterizer`] itself, or a [`Binner`] that
@@ -356,6 +361,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             pairing: Pairing::default(),
             ring: pool.ring,
             box_sum: 0,
+            launches: 0,
         }
     }
 
@@ -484,6 +490,13 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             self.region,
             self.tune.band_rows,
         );
+        self.after_bin(stats);
+    }
+
+    /// Draws the batch (no threads) or hands it to the pool once it is full, after a
+    /// triangle was binned.
+    #[inline]
+    fn after_bin(&mut self, stats: &mut Stats) {
         if !self.threads {
             if self.batch.heads.len() >= self.tune.max_batch || self.batch.work >= MAX_WORK_LOCAL {
                 self.flush(stats);
@@ -633,6 +646,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         fn sendable<T: Send>() {}
         shareable::<UnitPlan<'static>>();
         sendable::<Framebuffer>();
+        self.launches += 1;
         let spare = self.spare.take().unwrap_or_default();
         let batch = std::mem::replace(&mut self.batch, spare);
         let own = (

@@ -209,10 +209,21 @@ fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
             if early != late {
                 let _ = writeln!(problems, "state {state}, {threads} threads: bytes differ");
             }
-            // the draws left on the pool depend on the threads, not on the alpha test
+            // the draws left on the pool and the offloaded halves (whose shared vertices
+            // are transformed twice, whose rectangles may be cut) depend on the threads,
+            // not on the alpha test
             let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
                 c.iter()
-                    .filter(|(k, _)| !matches!(k.as_str(), "draws_detached" | "draws_adopted"))
+                    .filter(|(k, _)| {
+                        !matches!(
+                            k.as_str(),
+                            "draws_detached"
+                                | "draws_adopted"
+                                | "draws_offloaded"
+                                | "vertices"
+                                | "tris_paired"
+                        )
+                    })
                     .cloned()
                     .collect()
             };

@@ -89,6 +89,25 @@ impl Job {
         rayon::spawn(move || job.run(work, helpers, stay));
     }
 
+    /// Hands `work` to the pool task that polls for its next one, if a task polls now and
+    /// nothing is handed over; else returns it. Never starts a pool thread: that takes a
+    /// good part of a millisecond, more than a draw's side task saves.
+    pub(super) fn try_post(&self, work: Task) -> Result<(), Task> {
+        if self.busy.load(Ordering::Acquire) {
+            return Err(work);
+        }
+        let mut slot = self.slot.lock().unwrap_or_else(|e| e.into_inner());
+        if slot.busy || !slot.waiting {
+            return Err(work);
+        }
+        slot.busy = true;
+        self.busy.store(true, Ordering::Release);
+        slot.waiting = false;
+        slot.next = Some(work);
+        self.posted.store(true, Ordering::Release);
+        Ok(())
+    }
+
     /// A pool task: draws `work` on `helpers` threads, reports it done, then keeps polling
     /// for the next batch of this draw thread for `stay` before it returns the pool thread.
     /// Waking a sleeping pool thread takes a good part of a millisecond on this kind of

@@ -100,8 +100,33 @@ impl TriangleSink for Binner {
 }
 
 impl Binner {
+    /// A binner that fills `batch` (cleared, with a bin per band of `band_rows` rows)
+    /// with triangles of `region` carrying `nvary` varyings, pairing halves of rectangles
+    /// when `pair`.
+    pub(super) fn new(
+        batch: Batch,
+        region: [i64; 4],
+        nvary: usize,
+        band_rows: usize,
+        pair: bool,
+    ) -> Self {
+        Binner {
+            batch,
+            pairing: Pairing::default(),
+            region,
+            nvary,
+            band_rows,
+            pair,
+        }
+    }
+
+    /// The filled batch.
+    pub(super) fn into_batch(self) -> Batch {
+        self.batch
+    }
+
     /// Bins the triangle still held back for pairing, at the end of a section.
-    fn finish(&mut self, stats: &mut Stats) {
+    pub(super) fn finish(&mut self, stats: &mut Stats) {
         let (region, nvary, rows) = (self.region, self.nvary, self.band_rows);
         let batch = &mut self.batch;
         self.pairing.release(region, stats, |t, a, _| {
@@ -336,14 +361,7 @@ impl Rasterizer<'_, '_> {
                 batch.reserve(section_len, nvary, self.plan.flat);
                 Slot {
                     ready: Padded(AtomicUsize::new(0)),
-                    binner: UnsafeCell::new(Binner {
-                        batch,
-                        pairing: Pairing::default(),
-                        region,
-                        nvary,
-                        band_rows: rows,
-                        pair,
-                    }),
+                    binner: UnsafeCell::new(Binner::new(batch, region, nvary, rows, pair)),
                 }
             })
             .collect();

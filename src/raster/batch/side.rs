@@ -1,0 +1,171 @@
+//! The offload: a draw of independent triangles hands the set-up of its second half to an
+//! idle pool thread.
+//!
+//! Many programs draw scenes of a few hundred to a few thousand triangles per draw: MuJoCo
+//! replays a display list of GL_QUADS per body, six times a frame (reflection, scene, and
+//! per light a shadow-map pass and a lit pass). Setting such a draw up (vertex stage, clip
+//! test, triangle setup) costs more than rasterizing it, above all in the depth-only
+//! shadow passes, so with the ordinary pipeline the pool thread polls for work while the
+//! draw's thread sets up. The geometry split ([`super::split`]) shares the set-up of draws
+//! of more than 8192 triangles, but it draws every pending batch first and its own before
+//! it returns, which costs more than it saves on a draw of a few hundred.
+//!
+//! Here a streamed draw of at least `SOFTGL_OFFLOAD` triangles (GL_TRIANGLES or GL_QUADS:
+//! the halves share no primitive), started while nothing is in flight and a pool task
+//! polls for its next task ([`super::job::Job::try_post`]), posts the set-up of its second
+//! half to that task, which bins it into a batch of its own ([`Binner`]). Meanwhile the
+//! draw's thread sets up the first half into its rasterizer as usual. Then it appends the
+//! second half's triangles after its own ([`Rasterizer::append`]), so the rasterizer sees
+//! every triangle in primitive order and the images are those of one thread. If the pool
+//! task has not begun the half by then, the draw's thread sets it up itself, straight
+//! into its rasterizer with its own cache, as if nothing had been offloaded. Until the
+//! pool is free, a draw sets up `render::OFFLOAD_STEP` (64) primitives at a time and
+//! looks again, so a draw that starts while the pool draws the batch of the draw before
+//! offloads half of what is left once that batch is drawn.
+//!
+//! The counters are those of one thread except `vertices` (a vertex of both halves is
+//! transformed on both threads), `tris_paired` (the halves of a rectangle cut between
+//! the two halves are drawn as two triangles) and `draws_offloaded`, which counts the
+//! halves a pool thread set up.
+
+use super::job::{SideFn, Task};
+use super::split::Binner;
+use super::{Batch, Head, Rasterizer};
+use crate::stats::Stats;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
+
+/// Waits for the job when dropped during a panic: the side task borrows the stack.
+struct WaitOnUnwind<'j>(&'j super::Job);
+
+impl Drop for WaitOnUnwind<'_> {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            self.0.wait_done(crate::tuning::tuning().pool_spin);
+        }
+    }
+}
+
+impl Rasterizer<'_, '_> {
+    /// Whether a draw of `tris` triangles may offload part of its set-up at all: threads
+    /// are on and it has at least `SOFTGL_OFFLOAD` triangles.
+    pub fn may_offload(&self, tris: usize) -> bool {
+        let min = self.tune.offload;
+        min > 0 && tris >= min && self.threads
+    }
+
+    /// Whether a draw of `tris` triangles may offload its second half now: threads are
+    /// on, it has at least `SOFTGL_OFFLOAD` triangles and the pool has nothing to draw (a
+    /// batch the draw before left in flight and the pool has drawn is taken back).
+    pub fn can_offload(&mut self, tris: usize, stats: &mut Stats) -> bool {
+        if !self.may_offload(tris) || self.job.busy.load(Ordering::Acquire) {
+            return false;
+        }
+        // A batch left in flight by the draw before and drawn by now is taken back.
+        self.wait(stats);
+        true
+    }
+
+    /// Runs `main(self, stats, false)` (the first half's set-up into this rasterizer) on
+    /// this thread while a polling pool task runs `side` (the second half's set-up into a
+    /// batch of its own), then appends the second half after the first. When no pool
+    /// task polls, or it has not begun by the time the first half is set up, this thread
+    /// sets the second half up itself, into this rasterizer: `main(self, stats, true)`.
+    pub fn offload<G, M>(&mut self, stats: &mut Stats, side: G, mut main: M)
+    where
+        G: Fn(&mut Binner, &mut Stats) + Sync,
+        M: FnMut(&mut Self, &mut Stats, bool),
+    {
+        let mut batch = self.ring.pop().unwrap_or_default();
+        batch.clear();
+        batch.bins.resize_with(self.batch.bins.len(), Vec::new);
+        batch.reserve(0, self.nvary, self.plan.flat);
+        let binner = Binner::new(
+            batch,
+            self.region,
+            self.nvary,
+            self.tune.band_rows,
+            self.tune.pair,
+        );
+        let cell = Mutex::new((binner, Stats::default()));
+        let claimed = AtomicBool::new(false);
+        let on_pool = || {
+            if claimed.swap(true, Ordering::AcqRel) {
+                return;
+            }
+            let mut g = cell.lock().unwrap_or_else(|e| e.into_inner());
+            let (b, s) = &mut *g;
+            side(b, s);
+            b.finish(s);
+            s.draws_offloaded += 1;
+        };
+        let job = std::sync::Arc::clone(&self.job);
+        let f: &(dyn Fn() + Sync) = &on_pool;
+        // SAFETY: only the lifetime is erased. Once posted, the closure is called by the
+        // pool task before its job reports done, and this function returns (or unwinds,
+        // `WaitOnUnwind`) only after the job is done: either the set-up here handed a
+        // batch to the job, which waits for the side task to be done first
+        // (`Job::hand_over`), or `wait_done` below waits for it.
+        let f: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(f) };
+        let posted = job.try_post(Task::Side(SideFn(f))).is_ok();
+        let launches = self.launches;
+        let mine = {
+            let _unwind = WaitOnUnwind(&job);
+            main(self, stats, false);
+            let mine = !claimed.swap(true, Ordering::AcqRel);
+            if mine {
+                main(self, stats, true);
+            }
+            if posted && self.launches == launches {
+                // The pool task is done with the closure (and with the half it claimed).
+                job.wait_done(self.tune.pool_spin);
+            }
+            mine
+        };
+        let (binner, s) = cell.into_inner().unwrap_or_else(|e| e.into_inner());
+        let batch = binner.into_batch();
+        if !mine {
+            stats.add(&s);
+            self.append(&batch, stats);
+        }
+        self.ring.push(batch);
+    }
+
+    /// Appends the triangles of `b` (binned for this rasterizer's region, bands and
+    /// varyings) after those set up so far, handing full batches to the pool as
+    /// [`Rasterizer::triangle`] does.
+    fn append(&mut self, b: &Batch, stats: &mut Stats) {
+        // The half of a rectangle held back goes first: primitive order.
+        self.release(stats);
+        let (nvary, nflat, rows) = (self.nvary, b.nflat, self.tune.band_rows);
+        for (i, h) in b.heads.iter().enumerate() {
+            if self.batch.heads.is_empty() {
+                self.batch
+                    .reserve(self.tune.max_batch, self.nvary, self.plan.flat);
+            }
+            let planes = &b.planes[i * nvary..(i + 1) * nvary];
+            let flats = &b.flats[i * nflat..(i + 1) * nflat];
+            let area = self.batch.push_head(h, planes, flats, rows);
+            self.box_sum += area;
+            self.after_bin(stats);
+        }
+    }
+}
+
+impl Batch {
+    /// Appends a head binned elsewhere for the same region and bands, with its varyings
+    /// and flat values, and bins it into `rows`-row bands; returns its box's pixels.
+    fn push_head(&mut self, h: &Head, planes: &[super::Plane], flats: &[f32], rows: usize) -> i64 {
+        let [x0, y0, x1, y1] = h.bbox;
+        let area = i64::from(x1 - x0 + 1) * i64::from(y1 - y0 + 1);
+        let idx = self.heads.len() as u32;
+        self.heads.push(*h);
+        self.planes.extend_from_slice(planes);
+        self.flats.extend_from_slice(flats);
+        for bin in &mut self.bins[y0 as usize / rows..=y1 as usize / rows] {
+            bin.push(idx);
+        }
+        self.work += area;
+        area
+    }
+}
