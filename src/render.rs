@@ -16,7 +16,7 @@ use crate::framebuffer::Framebuffer;
 use crate::geometry::assemble::{self, DrawPath};
 use crate::geometry::clip::{clip_triangle, UserPlanes};
 use crate::geometry::feedback::PrimSink;
-use crate::geometry::reject::Rejection;
+use crate::geometry::reject::{independent, Rejection, CHUNK};
 use crate::geometry::setup::{CullMode, SetupResult, SetupTriangle, SetupVariant};
 use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
@@ -290,8 +290,8 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 } else {
                     streamer.run(probe, ntris - probe, &mut state, &mut rast, stats);
                 }
-            } else if let Some(unit) = offload_unit(mode).filter(|_| rast.may_offload(ntris)) {
-                streamer.stream_offloaded(unit, n, &mut state, &mut rast, stats);
+            } else if let Some(unit) = independent(mode) {
+                streamer.stream_chunks(unit, n, &mut state, &mut rast, stats);
             } else {
                 streamer.stream(streamer.mode, 0, n, &mut state, &mut rast, stats);
             }
@@ -465,7 +465,7 @@ struct StreamState {
     tri: SetupTriangle,
     /// Triangles waiting to be set up eight at a time, when the draw allows it.
     queue: Option<Box<SetupQueue>>,
-    /// Where an indexed draw streamed in pieces ([`Streamer::stream_offloaded`]) goes on
+    /// Where an indexed draw streamed in pieces ([`Streamer::stream_chunks`]) goes on
     /// transforming runs of vertices: the end of the last piece's runs (`None`: each
     /// call starts from vertex 0).
     resume: Option<usize>,
@@ -521,10 +521,10 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
     }
 
     /// Streams the `n` vertex references of a draw of independent primitives of
-    /// `unit` = (vertices, triangles) each, [`OFFLOAD_STEP`] primitives at a time, until
-    /// the pool is free to set up the second half of the rest while this thread sets up
-    /// the first ([`Rasterizer::offload`]).
-    fn stream_offloaded(
+    /// `unit` = (vertices, triangles) each ([`independent`]), a [`CHUNK`] of primitives
+    /// at a time, until the pool is free to set up the second half of the rest while
+    /// this thread sets up the first ([`Rasterizer::offload`]).
+    fn stream_chunks(
         &self,
         unit: (usize, usize),
         n: usize,
@@ -532,38 +532,64 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         rast: &mut Rasterizer<'_, '_>,
         stats: &mut Stats,
     ) {
-        let (verts, tris) = unit;
-        let prims = n / verts;
+        let prims = n / unit.0;
         let mut pos = 0;
         state.resume = Some(0);
         while pos < prims {
             let left = prims - pos;
-            if rast.can_offload(left * tris, stats) {
+            if rast.can_offload(left * unit.1, stats) {
                 let mid = pos + left / 2;
-                let mode = self.mode;
                 rast.offload(
                     stats,
                     |binner, s| {
                         let mut st = self.state(n);
-                        let (a, b) = (mid * verts, prims * verts);
-                        self.stream(mode, a, b - a, &mut st, binner, s);
+                        st.resume = Some(0);
+                        self.stream_range(unit, mid, prims, &mut st, binner, s);
                     },
                     |rast, stats, second| {
-                        let (a, b) = if second {
-                            (mid * verts, prims * verts)
-                        } else {
-                            (pos * verts, mid * verts)
-                        };
-                        self.stream(mode, a, b - a, state, rast, stats);
+                        let (a, b) = if second { (mid, prims) } else { (pos, mid) };
+                        self.stream_range(unit, a, b, state, rast, stats);
                     },
                 );
                 break;
             }
-            let step = OFFLOAD_STEP.min(left);
-            self.stream(self.mode, pos * verts, step * verts, state, rast, stats);
+            let step = CHUNK.min(left);
+            self.stream_range(unit, pos, pos + step, state, rast, stats);
             pos += step;
         }
         state.resume = None;
+    }
+
+    /// Streams primitives `p0..p1` of a draw of independent primitives of `unit` =
+    /// (vertices, triangles) each, counting the triangles of chunks the rejection found
+    /// outside one clip plane ([`Rejection::dead`]) without assembling them.
+    fn stream_range<K: TriangleSink>(
+        &self,
+        unit: (usize, usize),
+        p0: usize,
+        p1: usize,
+        state: &mut StreamState,
+        sink: &mut K,
+        stats: &mut Stats,
+    ) {
+        let (verts, tris) = unit;
+        let mut p = p0;
+        while p < p1 {
+            // The run of chunks from `p` that are all dead or all alive.
+            let dead = self.reject.dead(p / CHUNK);
+            let mut q = ((p / CHUNK + 1) * CHUNK).min(p1);
+            while q < p1 && self.reject.dead(q / CHUNK) == dead {
+                q = (q + CHUNK).min(p1);
+            }
+            if dead {
+                let t = ((q - p) * tris) as u64;
+                stats.triangles += t;
+                stats.tris_clip_rejected += t;
+            } else {
+                self.stream(self.mode, p * verts, (q - p) * verts, state, sink, stats);
+            }
+            p = q;
+        }
     }
 
     /// Streams vertices `first..first + n` as `mode`.
@@ -646,20 +672,6 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         cache.transformed = 0;
     }
 }
-
-/// The vertices and triangles of one primitive of a draw whose halves share no
-/// primitive, so that a pool thread may set one up (the offload, `raster::batch::side`):
-/// GL_TRIANGLES and GL_QUADS. `None` for the other modes.
-fn offload_unit(mode: Primitive) -> Option<(usize, usize)> {
-    match mode {
-        Primitive::Triangles => Some((3, 1)),
-        Primitive::Quads => Some((4, 2)),
-        _ => None,
-    }
-}
-
-/// Primitives a draw that may offload sets up between two looks at the pool.
-const OFFLOAD_STEP: usize = 64;
 
 /// Vertices a streamed draw transforms in one run ([`Streamer::stream`]).
 const BLOCK: usize = 32;

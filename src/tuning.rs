@@ -188,6 +188,11 @@ pub struct Tuning {
     /// whose second half an idle pool thread sets up while the draw's thread sets up the
     /// first (`raster::batch::side`); 0 turns the offload off. Default [`OFFLOAD`].
     pub offload: usize,
+    /// `SOFTGL_OFFLOAD_WAIT`: whether an offloading draw always hands its half to a pool
+    /// thread (starting one when none polls) and waits for it, rather than setting the
+    /// half up itself when the pool thread has not begun it: the pool's path on any
+    /// machine and load, for tests. Default off; any value but `0` turns it on.
+    pub offload_wait: bool,
     /// `SOFTGL_SETUP8`: whether the colour-only triangles of a streamed draw are set up
     /// eight at a time in AVX2 lanes. Default on; exactly `0` turns it off.
     pub setup8: bool,
@@ -252,6 +257,7 @@ impl Tuning {
             geom_section: size("SOFTGL_GEOM_SECTION").map_or(GEOM_SECTION, |v| v.min(1 << 20)),
             split_probe: size("SOFTGL_SPLIT_PROBE").unwrap_or(SPLIT_PROBE),
             offload: size("SOFTGL_OFFLOAD").unwrap_or(OFFLOAD),
+            offload_wait: get("SOFTGL_OFFLOAD_WAIT").is_some_and(|v| v != "0"),
             setup8: not_zero("SOFTGL_SETUP8"),
             tex_path: match text("SOFTGL_TEX_PATH").as_deref() {
                 Some("general") => TexPath::General,
@@ -293,6 +299,7 @@ impl Tuning {
             geom_section,
             split_probe,
             offload,
+            offload_wait,
             setup8,
             tex_path,
             engine,
@@ -324,6 +331,7 @@ impl Tuning {
             ("SOFTGL_GEOM_SECTION", geom_section.to_string()),
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
             ("SOFTGL_OFFLOAD", offload.to_string()),
+            ("SOFTGL_OFFLOAD_WAIT", on(offload_wait)),
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
             ("SOFTGL_ENGINE", (*engine as u8).to_string()),
@@ -443,7 +451,7 @@ mod tests {
         );
         assert_eq!(t.pool_yield.as_micros(), 100);
         assert_eq!((t.geom_section, t.split_probe), (4096, 1024));
-        assert_eq!(t.offload, 256);
+        assert_eq!((t.offload, t.offload_wait), (256, false));
         assert!(t.pool_help && t.pair && t.pool_start && t.narrow && t.setup8);
         assert_eq!(t.tex_path, TexPath::Fast);
         assert!(!t.stats);

@@ -17,9 +17,10 @@
 //! draw's thread sets up the first half into its rasterizer as usual. Then it appends the
 //! second half's triangles after its own ([`Rasterizer::append`]), so the rasterizer sees
 //! every triangle in primitive order and the images are those of one thread. If the pool
-//! task has not begun the half by then, the draw's thread sets it up itself, straight
+//! task has not begun the half by then, the draw's thread sets it up itself (unless
+//! `SOFTGL_OFFLOAD_WAIT`, for tests, has it start a pool task and wait), straight
 //! into its rasterizer with its own cache, as if nothing had been offloaded. Until the
-//! pool is free, a draw sets up `render::OFFLOAD_STEP` (64) primitives at a time and
+//! pool is free, a draw sets up `geometry::reject::CHUNK` (64) primitives at a time and
 //! looks again, so a draw that starts while the pool draws the batch of the draw before
 //! offloads half of what is left once that batch is drawn.
 //!
@@ -107,12 +108,19 @@ impl Rasterizer<'_, '_> {
         // batch to the job, which waits for the side task to be done first
         // (`Job::hand_over`), or `wait_done` below waits for it.
         let f: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(f) };
-        let posted = job.try_post(Task::Side(SideFn(f))).is_ok();
+        let task = Task::Side(SideFn(f));
+        let wait = self.tune.offload_wait;
+        let posted = if wait {
+            job.hand_over(task, 1, self.tune.pool_stay);
+            true
+        } else {
+            job.try_post(task).is_ok()
+        };
         let launches = self.launches;
         let mine = {
             let _unwind = WaitOnUnwind(&job);
             main(self, stats, false);
-            let mine = !claimed.swap(true, Ordering::AcqRel);
+            let mine = !wait && !claimed.swap(true, Ordering::AcqRel);
             if mine {
                 main(self, stats, true);
             }
@@ -149,6 +157,36 @@ impl Rasterizer<'_, '_> {
             self.box_sum += area;
             self.after_bin(stats);
         }
+    }
+}
+
+/// Runs `f(0)` on this thread and `f(1)` on the draw pool's thread when its task polls
+/// for work (else here too, after `f(0)`), and returns when both are done: a copy too
+/// large for one thread that waits for nothing else (a depth texture's write-back,
+/// `context::fbo_image`). Without threads, or on a pool thread, both run here.
+pub fn fork2(f: impl Fn(usize) + Sync) {
+    if crate::cpu::threads() < 2 || rayon::current_thread_index().is_some() {
+        f(0);
+        f(1);
+        return;
+    }
+    let job = super::POOL.with(|p| std::sync::Arc::clone(&p.borrow().job));
+    let claimed = AtomicBool::new(false);
+    let second = || {
+        if !claimed.swap(true, Ordering::AcqRel) {
+            f(1);
+        }
+    };
+    let g: &(dyn Fn() + Sync) = &second;
+    // SAFETY: only the lifetime is erased; the job is waited for (also when `f(0)`
+    // panics, `WaitOnUnwind`) before `second` goes out of scope.
+    let g: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(g) };
+    let posted = job.try_post(Task::Side(SideFn(g))).is_ok();
+    let _unwind = WaitOnUnwind(&job);
+    f(0);
+    second();
+    if posted {
+        job.wait_done(crate::tuning::tuning().pool_spin);
     }
 }
 
