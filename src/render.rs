@@ -249,8 +249,24 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 mode,
                 path,
                 reject: &reject,
+                n_cache: n,
             };
-            let mut state = streamer.state(n);
+            // A draw of independent primitives whose vertex references run in order reads
+            // each vertex once, in runs: a small cache holds them (clearing one sized for
+            // the draw cost more than the runs' work on MuJoCo's replays of a few hundred
+            // quads).
+            let sequential = independent(mode).is_some()
+                && indices.is_none_or(|ix| ix.iter().enumerate().all(|(k, &i)| i as usize == k));
+            let n_cache = if sequential {
+                SEQUENTIAL_CACHE.min(n)
+            } else {
+                n
+            };
+            let streamer = Streamer {
+                n_cache,
+                ..streamer
+            };
+            let mut state = streamer.state();
             let section = geom_section();
             let ntris = match mode {
                 Primitive::Quads => n / 4 * 2,
@@ -284,7 +300,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                         rest.div_ceil(section),
                         section,
                         stats,
-                        || streamer.state(n),
+                        || streamer.state(),
                         geom,
                     );
                 } else {
@@ -345,7 +361,8 @@ impl TriPipe<'_> {
             .shaded(v, self.nvary, self.cull, self.back, self.flat, tri);
         if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
             // a float depth buffer scales the units per triangle (`FLOAT_BITS` as bits)
-            crate::raster::prims::apply_setup_offset(v, factor, units, tri);
+            let win = [v[0].win, v[1].win, v[2].win];
+            crate::raster::prims::apply_setup_offset(win, factor, units, tri);
         }
         Self::emit(r, tri, sink, stats);
     }
@@ -363,13 +380,13 @@ impl TriPipe<'_> {
     }
 
     /// Whether this draw's triangles can be set up eight at a time ([`SetupQueue`]): on
-    /// the AVX2 setup, without two-sided colours or llvmpipe's polygon offset (both look
-    /// at a triangle's vertices after setup), and `SOFTGL_SETUP8=0` turns it off for A/B.
+    /// the AVX2 setup, without two-sided colours (which look at a triangle's vertices
+    /// after setup; llvmpipe's polygon offset reads only their window positions, which
+    /// the queue keeps), and `SOFTGL_SETUP8=0` turns it off for A/B.
     fn queue_ok(&self) -> bool {
         crate::tuning::tuning().setup8
             && self.setup.is_avx2()
             && self.back.is_none()
-            && self.lp_offset.is_none()
             && self.nvary <= QUEUE_VARY
     }
 
@@ -385,7 +402,10 @@ impl TriPipe<'_> {
         // SAFETY: a draw has a queue only when its setup is the AVX2 copy
         // (`Self::queue_ok`), which `SetupVariant::detect` picks only on AVX2 CPUs.
         unsafe {
-            queue.flush(self.cull, self.flat, tri, |r, t| {
+            queue.flush(self.cull, self.flat, tri, |r, t, win| {
+                if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
+                    crate::raster::prims::apply_setup_offset(win, factor, units, t);
+                }
                 Self::emit(r, t, sink, stats)
             })
         };
@@ -482,13 +502,15 @@ struct Streamer<'a, S: ?Sized> {
     path: DrawPath,
     /// The triangles dropped before their vertices run through the stage.
     reject: &'a Rejection,
+    /// The vertex references a thread's post-transform cache is sized for.
+    n_cache: usize,
 }
 
 impl<S: VertexSource + ?Sized> Streamer<'_, S> {
-    /// A new cache, slot and set-up triangle for a draw of `n` vertex references.
-    fn state(&self, n: usize) -> Box<StreamState> {
+    /// A new cache, slot and set-up triangle for the draw.
+    fn state(&self) -> Box<StreamState> {
         Box::new(StreamState {
-            cache: VertexCache::for_draw(n),
+            cache: VertexCache::for_draw(self.n_cache),
             slot: self.verts.new_slot(),
             tri: SetupTriangle::default(),
             queue: self
@@ -542,7 +564,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
                 rast.offload(
                     stats,
                     |binner, s| {
-                        let mut st = self.state(n);
+                        let mut st = self.state();
                         st.resume = Some(0);
                         self.stream_range(unit, mid, prims, &mut st, binner, s);
                     },
@@ -672,6 +694,11 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         cache.transformed = 0;
     }
 }
+
+/// Entries of the post-transform cache of a draw of independent primitives whose
+/// vertex references run in order: two runs of [`BLOCK`] vertices, so that a triangle
+/// across two runs still finds the first one's vertices.
+const SEQUENTIAL_CACHE: usize = 2 * BLOCK;
 
 /// Vertices a streamed draw transforms in one run ([`Streamer::stream`]).
 const BLOCK: usize = 32;

@@ -114,7 +114,8 @@ impl SetupQueue {
     }
 
     /// Sets up the queued triangles in queue order and empties the queue: `out(result,
-    /// fill)` for each, `fill` holding the set-up triangle when the result is
+    /// fill, win)` for each (`win` its vertices' window positions, in queue order), `fill`
+    /// holding the set-up triangle when the result is
     /// [`SetupResult::Draw`] (exactly what [`setup_triangle_shaded`] would have made of
     /// it with `cull` and `flat`, and no two-sided colours). `fill` is written as
     /// `setup_triangle_shaded` writes it.
@@ -127,7 +128,7 @@ impl SetupQueue {
         cull: CullMode,
         flat: bool,
         fill: &mut SetupTriangle,
-        mut out: impl FnMut(SetupResult, &SetupTriangle),
+        mut out: impl FnMut(SetupResult, &mut SetupTriangle, [[f32; 4]; 3]),
     ) {
         if self.n == 0 {
             return;
@@ -190,7 +191,8 @@ impl SetupQueue {
                     setup_triangle_shaded([&v[0], &v[1], &v[2]], nvary, cull, None, flat, fill)
                 }
             };
-            out(r, fill);
+            let win = std::array::from_fn(|k| std::array::from_fn(|c| self.win[k][c][l]));
+            out(r, fill, win);
         }
         self.n = 0;
     }
@@ -496,12 +498,15 @@ mod tests {
             let mut fill = SetupTriangle::default();
             // SAFETY: the CPU has AVX2 (checked above).
             unsafe {
-                q.flush(cull, flat, &mut fill, |r, t| {
-                    got.push((r, bits(t, nvary, flat)))
+                q.flush(cull, flat, &mut fill, |r, t, win| {
+                    let win = win.map(|p| p.map(f32::to_bits));
+                    got.push((r, bits(t, nvary, flat), win))
                 })
             };
             assert_eq!(got.len(), LANES);
-            for (t, (r, b)) in tris.iter().zip(&got) {
+            for (t, (r, b, win)) in tris.iter().zip(&got) {
+                // Each triangle's window positions come back with it, in queue order.
+                assert_eq!(*win, t.map(|v| v.win.map(f32::to_bits)));
                 let mut want = SetupTriangle::default();
                 let rw = setup_triangle_shaded(
                     [&t[0], &t[1], &t[2]],

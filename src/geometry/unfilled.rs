@@ -111,9 +111,10 @@ pub fn draw_offset(v: [&ClipVertex; 3], det: f32, factor: f32, units: f32) -> f3
 }
 
 /// llvmpipe's own polygon offset for filled triangles (`lp_do_offset_tri`), computed on
-/// the set-up (possibly reordered) vertices; added to every fragment's z.
-pub fn setup_offset(v: [&ClipVertex; 3], factor: f32, units: f32) -> f32 {
-    let (p0, p1, p2) = (v[0].win, v[1].win, v[2].win);
+/// the window positions of the set-up (possibly reordered) vertices; added to every
+/// fragment's z.
+pub fn setup_offset(win: [[f32; 4]; 3], factor: f32, units: f32) -> f32 {
+    let [p0, p1, p2] = win;
     let (dx01, dy01, dz01) = (p0[0] - p1[0], p0[1] - p1[1], p0[2] - p1[2]);
     let (dx20, dy20, dz20) = (p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]);
     let ooa = 1.0f32 / (dx01 * dy20 - dy01 * dx20);

@@ -79,15 +79,15 @@ pub fn draw_point(
 /// `units` are scaled already, except for a float depth buffer (`float`), whose units
 /// llvmpipe scales per triangle by the exponent of its largest |z| ([`float_units`]).
 pub fn apply_setup_offset(
-    v: [&ClipVertex; 3],
+    v: [[f32; 4]; 3],
     factor: f32,
     (units, float): (f32, bool),
     t: &mut SetupTriangle,
 ) {
     use crate::geometry::setup::snap;
-    let (x0, y0) = (snap(v[0].win[0]), snap(v[0].win[1]));
-    let (x1, y1) = (snap(v[1].win[0]), snap(v[1].win[1]));
-    let (x2, y2) = (snap(v[2].win[0]), snap(v[2].win[1]));
+    let (x0, y0) = (snap(v[0][0]), snap(v[0][1]));
+    let (x1, y1) = (snap(v[1][0]), snap(v[1][1]));
+    let (x2, y2) = (snap(v[2][0]), snap(v[2][1]));
     let area = (x0 - x1) * (y2 - y0) - (x2 - x0) * (y0 - y1);
     let order = if area > 0 {
         [v[0], v[1], v[2]]
@@ -95,7 +95,7 @@ pub fn apply_setup_offset(
         [v[1], v[0], v[2]]
     };
     let units = if float {
-        float_units(units, [v[0].win[2], v[1].win[2], v[2].win[2]])
+        float_units(units, [v[0][2], v[1][2], v[2][2]])
     } else {
         units
     };
