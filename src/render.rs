@@ -241,6 +241,12 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
             let block = stage.block_ok();
             let reject = Rejection::new(masks, mode, n, path, plan.flat, ix, block);
+            // A draw of independent primitives whose vertex references run in order reads
+            // each vertex once, in runs: a small cache holds them (clearing one sized for
+            // the draw cost more than the runs' work on MuJoCo's replays of a few hundred
+            // quads).
+            let sequential = independent(mode).is_some()
+                && indices.is_none_or(|ix| ix.iter().enumerate().all(|(k, &i)| i as usize == k));
             let streamer = Streamer {
                 verts,
                 indices,
@@ -249,22 +255,11 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 mode,
                 path,
                 reject: &reject,
-                n_cache: n,
-            };
-            // A draw of independent primitives whose vertex references run in order reads
-            // each vertex once, in runs: a small cache holds them (clearing one sized for
-            // the draw cost more than the runs' work on MuJoCo's replays of a few hundred
-            // quads).
-            let sequential = independent(mode).is_some()
-                && indices.is_none_or(|ix| ix.iter().enumerate().all(|(k, &i)| i as usize == k));
-            let n_cache = if sequential {
-                SEQUENTIAL_CACHE.min(n)
-            } else {
-                n
-            };
-            let streamer = Streamer {
-                n_cache,
-                ..streamer
+                n_cache: if sequential {
+                    SEQUENTIAL_CACHE.min(n)
+                } else {
+                    n
+                },
             };
             let mut state = streamer.state();
             let section = geom_section();

@@ -47,6 +47,24 @@ impl Drop for WaitOnUnwind<'_> {
     }
 }
 
+/// Posts `f` as a side task to `job`'s pool task: to one that polls for work, or, with
+/// `start`, to a new one when none polls. Returns whether it was posted.
+///
+/// # Safety
+/// When it was posted, `f` must stay alive until `job` reports the task done
+/// ([`super::Job::wait_done`], or a later `Job::hand_over`, which waits for it first).
+unsafe fn post_side(job: &std::sync::Arc<super::Job>, f: &(dyn Fn() + Sync), start: bool) -> bool {
+    // SAFETY: only the lifetime is erased; the caller keeps `f` alive as said above.
+    let f: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(f) };
+    let task = Task::Side(SideFn(f));
+    if start {
+        job.hand_over(task, 1, crate::tuning::tuning().pool_stay);
+        true
+    } else {
+        job.try_post(task).is_ok()
+    }
+}
+
 impl Rasterizer<'_, '_> {
     /// Whether a draw of `tris` triangles may offload part of its set-up at all: threads
     /// are on and it has at least `SOFTGL_OFFLOAD` triangles.
@@ -101,21 +119,11 @@ impl Rasterizer<'_, '_> {
             s.draws_offloaded += 1;
         };
         let job = std::sync::Arc::clone(&self.job);
-        let f: &(dyn Fn() + Sync) = &on_pool;
-        // SAFETY: only the lifetime is erased. Once posted, the closure is called by the
-        // pool task before its job reports done, and this function returns (or unwinds,
-        // `WaitOnUnwind`) only after the job is done: either the set-up here handed a
-        // batch to the job, which waits for the side task to be done first
-        // (`Job::hand_over`), or `wait_done` below waits for it.
-        let f: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(f) };
-        let task = Task::Side(SideFn(f));
         let wait = self.tune.offload_wait;
-        let posted = if wait {
-            job.hand_over(task, 1, self.tune.pool_stay);
-            true
-        } else {
-            job.try_post(task).is_ok()
-        };
+        // SAFETY: this function returns (or unwinds, `WaitOnUnwind`) only after the job
+        // is done: either the set-up here handed a batch to the job, which waits for the
+        // side task to be done first (`Job::hand_over`), or `wait_done` below waits.
+        let posted = unsafe { post_side(&job, &on_pool, wait) };
         let launches = self.launches;
         let mine = {
             let _unwind = WaitOnUnwind(&job);
@@ -177,11 +185,9 @@ pub fn fork2(f: impl Fn(usize) + Sync) {
             f(1);
         }
     };
-    let g: &(dyn Fn() + Sync) = &second;
-    // SAFETY: only the lifetime is erased; the job is waited for (also when `f(0)`
-    // panics, `WaitOnUnwind`) before `second` goes out of scope.
-    let g: *const (dyn Fn() + Sync + 'static) = unsafe { std::mem::transmute(g) };
-    let posted = job.try_post(Task::Side(SideFn(g))).is_ok();
+    // SAFETY: the job is waited for (also when `f(0)` panics, `WaitOnUnwind`) before
+    // `second` goes out of scope.
+    let posted = unsafe { post_side(&job, &second, false) };
     let _unwind = WaitOnUnwind(&job);
     f(0);
     second();
