@@ -207,6 +207,10 @@ pub struct Tuning {
     /// reads no texel before sampling (`fragment::simd_gen::alpha_early`), while it kills
     /// enough fragments. Default on; exactly `0` turns it off.
     pub alpha_early: bool,
+    /// `SOFTGL_DEPTH_FIRST`: whether the general textured walk tests depth, read-only,
+    /// before sampling when an alpha test that reads texels comes first
+    /// (`fragment::simd_gen::depth_first`). Default on; exactly `0` turns it off.
+    pub depth_first: bool,
     /// `SOFTGL_STATS`: whether a context prints its work counters when it is destroyed
     /// (the first one also prints [`Tuning::report`]). Default off; any value but `0`
     /// turns it on.
@@ -271,6 +275,7 @@ impl Tuning {
                 _ => ENGINE,
             },
             alpha_early: not_zero("SOFTGL_ALPHA_EARLY"),
+            depth_first: not_zero("SOFTGL_DEPTH_FIRST"),
             stats: get("SOFTGL_STATS").is_some_and(|v| v != "0"),
         }
     }
@@ -304,6 +309,7 @@ impl Tuning {
             tex_path,
             engine,
             alpha_early,
+            depth_first,
             stats,
         } = self;
         let given = |v: &Option<String>| {
@@ -336,6 +342,7 @@ impl Tuning {
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),
             ("SOFTGL_ENGINE", (*engine as u8).to_string()),
             ("SOFTGL_ALPHA_EARLY", on(alpha_early)),
+            ("SOFTGL_DEPTH_FIRST", on(depth_first)),
             ("SOFTGL_STATS", on(stats)),
         ]
     }

@@ -106,16 +106,46 @@ pub(super) unsafe fn depth_test8<const FMA: bool>(
     fy: F32x8,
     live: I32x8,
 ) -> I32x8 {
-    // SAFETY: forwarded from the caller; the masked load and store touch live lanes only.
+    // SAFETY: forwarded from the caller; the masked store touches passing lanes only.
     unsafe {
-        let q = depth_q::<FMA>(t, d.format, fx, fy);
-        let dptr = depth.as_mut_ptr().add(idx) as *mut i32;
-        let old = I32x8::maskload(dptr as *const i32, live);
-        let pass = live.and(depth_pass_in(d.func, d.format, q, old));
+        let (pass, q) = depth_probe8::<FMA>(t, d, depth, idx, fx, fy, live);
         if d.write {
+            let dptr = depth.as_mut_ptr().add(idx) as *mut i32;
             store_masked(dptr, depth.len().saturating_sub(idx), pass, q);
         }
         pass
+    }
+}
+
+/// [`depth_test8`] without the store (also for a test run again after it,
+/// [`super::simd_gen::depth_pretest`]): the `live` lanes of the 8 at `idx` whose Z passes
+/// against the stored values, and the Z of all 8. When all 8 values lie inside `depth`
+/// they are read with one plain load (the masked load costs more, and the dead lanes are
+/// masked after).
+///
+/// # Safety
+/// AVX2 (+FMA when `FMA`) context; the live lanes lie inside `depth`.
+#[inline(always)]
+pub(super) unsafe fn depth_probe8<const FMA: bool>(
+    t: &SetupTriangle,
+    d: &DepthPlan,
+    depth: &[u32],
+    idx: usize,
+    fx: F32x8,
+    fy: F32x8,
+    live: I32x8,
+) -> (I32x8, I32x8) {
+    // SAFETY: forwarded from the caller; the plain load reads 8 values inside `depth`,
+    // the masked one live lanes only.
+    unsafe {
+        let q = depth_q::<FMA>(t, d.format, fx, fy);
+        let dptr = depth.as_ptr().add(idx) as *const i32;
+        let old = if depth.len().saturating_sub(idx) >= super::span::LANES {
+            I32x8::load(dptr)
+        } else {
+            I32x8::maskload(dptr, live)
+        };
+        (live.and(depth_pass_in(d.func, d.format, q, old)), q)
     }
 }
 

@@ -157,6 +157,62 @@ pub fn alpha_early(plan: &FragPlan, units: &[UnitPlan<'_>]) -> bool {
         && crate::tuning::tuning().alpha_early
 }
 
+/// Whether the general textured walk tests depth before sampling ([`depth_pretest`]): the
+/// draw has an alpha test that reads texels (so not [`alpha_early`]), a depth test that
+/// can fail and no stencil test (whose depth-fail update must wait for the alpha test).
+/// This is llvmpipe's early depth test with a late depth write, which it chooses when a
+/// shader can kill fragments and the stencil buffer is not written: the fragments that
+/// fail depth are never sampled (sweep state 23, whose every fragment fails a read-only
+/// LEQUAL after an alpha test of a blended texel). The bytes are those of the test in GL
+/// order, since a fragment killed by either test leaves nothing; of the counters, a
+/// fragment that would fail both counts as `depth_failed` rather than `alpha_failed`.
+#[inline(always)]
+pub fn depth_first(plan: &FragPlan, units: &[UnitPlan<'_>], depth: bool) -> bool {
+    depth
+        && plan.alpha.is_some()
+        && plan.stencil.is_none()
+        && plan
+            .depth
+            .is_some_and(|d| d.func != crate::pipe::CompareFunc::Always)
+        && units.iter().any(|u| u.env.alpha_reads_texels())
+        && crate::tuning::tuning().depth_first
+}
+
+/// The read-only depth test of [`depth_first`] on the `live` lanes of the 8 pixels from
+/// `x` in row `py`: returns the lanes that pass as bits (bit i: lane i), and counts the
+/// lanes that fail as fragments that read depth and failed it. The lanes that pass are
+/// counted, tested again and written by [`shade_row`].
+///
+/// # Safety
+/// As [`shade_row`]; the plan has a depth test.
+#[inline(always)]
+pub unsafe fn depth_pretest<const FMA: bool>(
+    t: &SetupTriangle,
+    plan: &FragPlan,
+    fb: &mut Target<'_>,
+    py: usize,
+    x: usize,
+    live: &[bool; LANES],
+    stats: &mut Stats,
+) -> u32 {
+    let bits = live_bits(live);
+    let d = plan.depth.expect("depth_first implies a depth plan");
+    // SAFETY: forwarded from the caller; the probe reads inside the depth rows and
+    // stores nothing.
+    let pass = unsafe {
+        let (fx, fy) = row_xy(x, py);
+        let idx = (py - fb.y0) * fb.width + x;
+        super::simd::depth_probe8::<FMA>(t, &d, fb.depth, idx, fx, fy, mask_of(bits))
+            .0
+            .movemask()
+    };
+    let failed = u64::from((bits & !pass).count_ones());
+    stats.fragments += failed;
+    stats.depth_reads += failed;
+    stats.depth_failed += failed;
+    pass & bits
+}
+
 /// Lanes `0..8` as f32.
 ///
 /// # Safety
@@ -613,16 +669,23 @@ pub unsafe fn shade_ready_row<const FMA: bool, const DEPTH: bool>(
     }
 }
 
+/// The `live` lanes as bits (bit i: lane i).
+#[inline(always)]
+fn live_bits(live: &[bool; LANES]) -> u32 {
+    let mut bits = 0u32;
+    for (i, &l) in live.iter().enumerate() {
+        bits |= u32::from(l) << i;
+    }
+    bits
+}
+
 /// The `live` lanes as a mask, counted as fragments.
 ///
 /// # Safety
 /// AVX2 context.
 #[inline(always)]
 unsafe fn row_mask(live: &[bool; LANES], stats: &mut Stats) -> I32x8 {
-    let mut bits = 0u32;
-    for (i, &l) in live.iter().enumerate() {
-        bits |= u32::from(l) << i;
-    }
+    let bits = live_bits(live);
     stats.fragments += u64::from(bits.count_ones());
     // SAFETY: the caller's AVX2 context.
     unsafe { mask_of(bits) }

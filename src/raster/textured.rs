@@ -327,12 +327,15 @@ pub(super) unsafe fn chunks_general<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    use crate::fragment::simd_gen::{early_tests, shade_row, shade_tested_row, test_row, GenPlan};
+    use crate::fragment::simd_gen::{
+        depth_first, depth_pretest, early_tests, shade_row, shade_tested_row, test_row, GenPlan,
+    };
     use crate::fragment::span::TexLanes;
     use crate::pipe::MAX_TEXTURE_UNITS;
     use crate::simd::I32x8;
     let g = GenPlan::new(plan, t, units);
     let early = early_tests(plan, &g, DEPTH);
+    let pretest = !early && depth_first(plan, units, DEPTH);
     let (fragments, failed) = (stats.fragments, stats.alpha_failed);
     // As in `rows_textured`: reused across chunks, lanes not live keep stale values.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
@@ -378,6 +381,23 @@ pub(super) unsafe fn chunks_general<
             }
             continue;
         }
+        if pretest {
+            // Depth first, read-only: the lanes that fail it are not sampled.
+            let mut any = false;
+            for r in 0..2 {
+                if !c.live[r].iter().any(|&l| l) {
+                    continue;
+                }
+                let (py, x) = ((c.qy + r as i64) as usize, c.x as usize);
+                // SAFETY: forwarded from the caller; the live lanes lie inside row `py`.
+                let bits = unsafe { depth_pretest::<FMA>(t, plan, fb, py, x, &c.live[r], stats) };
+                c.live[r] = LIVE_MASKS[bits as usize & 0xFF];
+                any |= bits != 0;
+            }
+            if !any {
+                continue;
+            }
+        }
         // SAFETY: forwarded from the caller.
         let oow = unsafe { coords_and_sample::<M, FMA, PERSP, STR>(t, units, &c, &mut texels) };
         for (r, (tex, live)) in texels.iter().zip(&c.live).enumerate() {
@@ -405,9 +425,10 @@ pub(super) unsafe fn chunks_general<
 /// by `SOFTGL_ENGINE` ([`crate::tuning::Engine`]). Where it is [`Engine::Auto`] (the
 /// default), the engine takes the triangles on which it was measured faster than the
 /// hand-written 8-lane walk (`docs/performance.md`, stop 63: `multitex_combine` 49 → 40 ms
-/// on one thread): the walk would not test depth or stencil, or an alpha test that reads
-/// no texel, first (it samples only the lanes that pass those tests, the engine every
-/// live lane), its combiners are ones the
+/// on one thread): the walk would not test depth or stencil, an alpha test that reads
+/// no texel, or depth before an alpha test that reads texels
+/// ([`crate::fragment::simd_gen::depth_first`]), first (it samples only the lanes that
+/// pass those tests, the engine every live lane), its combiners are ones the
 /// walk interprets per row (two or more units, or one beyond a plain product), and the
 /// box is large enough to fill the executor's batches ([`crate::tuning::ENGINE_MIN_BOX`]).
 ///
@@ -420,6 +441,7 @@ fn engine_takes(plan: &FragPlan, units: &[UnitPlan<'_>], b: [i64; 4]) -> bool {
         Engine::On => true,
         Engine::Auto => {
             let early = crate::fragment::simd_gen::alpha_early(plan, units)
+                || crate::fragment::simd_gen::depth_first(plan, units, plan.depth.is_some())
                 || plan.alpha.is_none() && (plan.depth.is_some() || plan.stencil.is_some());
             let interpreted = units.len() >= 2 || units.iter().any(|u| u.env.simple.is_none());
             let area = (b[2] - b[0] + 1).saturating_mul(b[3] - b[1] + 1);

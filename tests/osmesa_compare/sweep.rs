@@ -156,33 +156,57 @@ fn sweep_subset_matches_llvmpipe() {
 /// killed), 83 (with stencil and a non-writing depth test), 111 and 176.
 const ALPHA_EARLY_STATES: [usize; 5] = [53, 68, 83, 111, 176];
 
-/// The alpha test run before sampling draws llvmpipe's bytes, and the same bytes and work
-/// counters (fragments, alpha, depth and stencil failures, reads and writes) as the test
-/// run after shading (`SOFTGL_ALPHA_EARLY=0`), on one thread and on the default threads.
-#[test]
-fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
+/// Sweep states with an alpha test that reads texels, a depth test and no stencil test,
+/// whose depth test the general textured walk runs first, read-only
+/// (`fragment::simd_gen::depth_first`), and in which fragments fail both tests (at
+/// 128², in GL order / depth first): 23 (a non-writing LEQUAL; 61,238 / 61,247 of 61,247
+/// fail depth), 44 (flat quads; 29,683 / 35,678), 79 (a strip; 7,742 / 24,582) and 80 (a
+/// line strip; 26 / 11,589).
+const DEPTH_FIRST_STATES: [usize; 4] = [23, 44, 79, 80];
+
+/// What [`knob_states`] asks of the counters of a state run with its knob off (`late`) and
+/// on (`early`): `None` when they agree, else what is wrong.
+type CounterCheck = fn(&[(String, u64)], &[(String, u64)]) -> Option<String>;
+
+/// The counter named `k` of `c` (0 when missing).
+fn counter(c: &[(String, u64)], k: &str) -> u64 {
+    c.iter().find(|(n, _)| n == k).map_or(0, |(_, v)| *v)
+}
+
+/// Runs each sweep `state` with the knob `knob` off and on, on one thread and on the
+/// default threads: every run draws the bytes of the knob-off run on one thread, which
+/// are llvmpipe's; `setup` checks that the knob-off run is what the states' list says
+/// (`None` when it is), and `agree` the counters with the knob on against those with it
+/// off (the draws left on the pool and the offloaded halves, whose shared vertices are
+/// transformed twice and whose rectangles may be cut, depend on the threads only, so
+/// those counters are left out).
+fn knob_states(
+    knob: &str,
+    states: &[usize],
+    setup: fn(&[(String, u64)]) -> Option<String>,
+    agree: CounterCheck,
+) {
     ensure_reference();
     let src = root().join("bench/scenes/sweep.c");
     let ref_bin = build("sweep", &src, Side::Osmesa).unwrap_or_else(|e| panic!("{e}"));
     let our_bin = build("sweep", &src, Side::Softgl).unwrap_or_else(|e| panic!("{e}"));
     let out_dir = target_dir().join("ctests").join("out");
     std::fs::create_dir_all(&out_dir).expect("mkdir");
-    let get = |c: &[(String, u64)], k: &str| c.iter().find(|(n, _)| n == k).map(|(_, v)| *v);
     let args = [SIZE, SIZE, "0"];
     let mut problems = String::new();
-    for state in ALPHA_EARLY_STATES {
+    for &state in states {
         let state_s = state.to_string();
         let env = [("SWEEP_SEED", SEED), ("SWEEP_STATE", state_s.as_str())];
-        let name = format!("sweep-{SEED}-{state}-{SIZE}-alpha");
+        let name = format!("sweep-{SEED}-{state}-{SIZE}-{knob}");
         let theirs = reference_output_with(&name, &ref_bin, &env, &args)
             .unwrap_or_else(|e| panic!("state {state}: {e}"));
-        let run = |early: &str, threads: &str| {
-            let out = out_dir.join(format!("{name}-early{early}-t{threads}.out"));
+        let run = |on: &str, threads: &str| {
+            let out = out_dir.join(format!("{name}-{on}-t{threads}.out"));
             let _ = std::fs::remove_file(&out);
             let st = std::process::Command::new(&our_bin)
                 .env_remove("LD_LIBRARY_PATH")
                 .envs(env)
-                .env("SOFTGL_ALPHA_EARLY", early)
+                .env(knob, on)
                 .env("SOFTGL_THREADS", threads)
                 .env("SOFTGL_STATS", "1")
                 .arg(&out)
@@ -195,50 +219,40 @@ fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
             (std::fs::read(&out).expect("output file"), c)
         };
         let (late, late_c) = run("0", "1");
-        let fragments = get(&late_c, "fragments").unwrap_or(0);
-        let failed = get(&late_c, "alpha_failed").unwrap_or(0);
-        // the states are what their comment says: the alpha test kills a real share
-        if failed * 4 < fragments || fragments < 10_000 {
-            let _ = writeln!(
-                problems,
-                "state {state}: {failed} of {fragments} fragments failed the alpha test"
-            );
+        if let Some(p) = setup(&late_c) {
+            let _ = writeln!(problems, "state {state}: {p}");
         }
+        let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
+            c.iter()
+                .filter(|(k, _)| {
+                    !matches!(
+                        k.as_str(),
+                        "draws_detached"
+                            | "draws_adopted"
+                            | "draws_offloaded"
+                            | "vertices"
+                            | "tris_paired"
+                    )
+                })
+                .cloned()
+                .collect()
+        };
         for threads in ["1", "2"] {
             let (early, early_c) = run("1", threads);
             if early != late {
                 let _ = writeln!(problems, "state {state}, {threads} threads: bytes differ");
             }
-            // the draws left on the pool and the offloaded halves (whose shared vertices
-            // are transformed twice, whose rectangles may be cut) depend on the threads,
-            // not on the alpha test
-            let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
-                c.iter()
-                    .filter(|(k, _)| {
-                        !matches!(
-                            k.as_str(),
-                            "draws_detached"
-                                | "draws_adopted"
-                                | "draws_offloaded"
-                                | "vertices"
-                                | "tris_paired"
-                        )
-                    })
-                    .cloned()
-                    .collect()
-            };
-            if strip(&early_c) != strip(&late_c) {
-                let _ = writeln!(
-                    problems,
-                    "state {state}, {threads} threads: counters differ:\n{early_c:?}\n{late_c:?}"
-                );
+            if let Some(p) = agree(&strip(&late_c), &strip(&early_c)) {
+                let _ = writeln!(problems, "state {state}, {threads} threads: {p}");
             }
         }
-        let image = |bytes: &[u8]| image_of(state, bytes);
-        let s = compare_images(&image(&late), &image(&theirs));
+        let s = compare_images(&image_of(state, &late), &image_of(state, &theirs));
         println!(
-            "alpha-early sweep state {state}: {failed} of {fragments} fragments failed; \
+            "{knob} sweep state {state}: {} fragments, {} failed alpha, {} failed depth; \
              {:.3}% identical to llvmpipe",
+            counter(&late_c, "fragments"),
+            counter(&late_c, "alpha_failed"),
+            counter(&late_c, "depth_failed"),
             s.percent_identical()
         );
         if s.off != 0 {
@@ -250,5 +264,59 @@ fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
             );
         }
     }
-    assert!(problems.is_empty(), "alpha-early states:\n{problems}");
+    assert!(problems.is_empty(), "{knob} states:\n{problems}");
+}
+
+/// The alpha test run before sampling draws llvmpipe's bytes, and the same bytes and work
+/// counters (fragments, alpha, depth and stencil failures, reads and writes) as the test
+/// run after shading (`SOFTGL_ALPHA_EARLY=0`), on one thread and on the default threads.
+#[test]
+fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
+    knob_states(
+        "SOFTGL_ALPHA_EARLY",
+        &ALPHA_EARLY_STATES,
+        |c| {
+            // the states are what their comment says: the alpha test kills a real share
+            let (fragments, failed) = (counter(c, "fragments"), counter(c, "alpha_failed"));
+            (failed * 4 < fragments || fragments < 10_000)
+                .then(|| format!("{failed} of {fragments} fragments failed the alpha test"))
+        },
+        |late, early| (late != early).then(|| format!("counters differ:\n{early:?}\n{late:?}")),
+    );
+}
+
+/// The depth test run first, read-only, draws llvmpipe's bytes and the bytes of the tests
+/// in GL order (`SOFTGL_DEPTH_FIRST=0`), on one thread and on the default threads. Of the
+/// counters, only the fragments that fail both tests move, from `alpha_failed` to
+/// `depth_failed` (and so read depth): their sum is the same, and, at the AVX2 levels,
+/// more of them fail depth, which shows the depth test ran first.
+#[test]
+fn depth_first_states_match_llvmpipe_and_the_tests_in_order() {
+    knob_states(
+        "SOFTGL_DEPTH_FIRST",
+        &DEPTH_FIRST_STATES,
+        |c| {
+            // the states are what their comment says: both tests fail fragments
+            let f = counter(c, "fragments");
+            let (a, d) = (counter(c, "alpha_failed"), counter(c, "depth_failed"));
+            (f < 5_000 || d == 0 || a == 0)
+                .then(|| format!("{f} fragments, {a} failed alpha and {d} depth in GL order"))
+        },
+        |late, early| {
+            let moved =
+                counter(early, "depth_failed").saturating_sub(counter(late, "depth_failed"));
+            let same_except =
+                |k: &str| !matches!(k, "alpha_failed" | "depth_failed" | "depth_reads");
+            let rest = |c: &[(String, u64)]| -> Vec<(String, u64)> {
+                c.iter().filter(|(k, _)| same_except(k)).cloned().collect()
+            };
+            // Only the 8-lane walk tests depth first; below AVX2 nothing moves.
+            let avx2 = softgl::cpu::isa().avx2();
+            let ok = rest(late) == rest(early)
+                && (moved > 0) == avx2
+                && counter(late, "alpha_failed") == counter(early, "alpha_failed") + moved
+                && counter(early, "depth_reads") == counter(late, "depth_reads") + moved;
+            (!ok).then(|| format!("counters:\n{early:?}\n{late:?}"))
+        },
+    );
 }
