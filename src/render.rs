@@ -771,7 +771,8 @@ fn any_vertex_outside<S: VertexSource + ?Sized>(
 }
 
 /// Runs the vertex stage over `verts`, lighting each with its own material when
-/// glMaterial was called between glBegin and glEnd.
+/// glMaterial was called between glBegin and glEnd, else in blocks of eight where the
+/// stage allows ([`VertexStage::block_ok`]).
 fn run_vertices<S: VertexSource + ?Sized>(
     stage: &mut VertexStage,
     verts: &S,
@@ -792,6 +793,15 @@ fn run_vertices<S: VertexSource + ?Sized>(
                     stage.run(&verts.vertex(i))
                 })
                 .collect()
+        }
+        _ if stage.block_ok() => {
+            // Eight vertices at a time, as the streamed triangles run them: lit lines
+            // spent a quarter of their frame lighting one vertex at a time (sweep state
+            // 178, a line loop with three lights).
+            let mut slot = verts.new_slot();
+            let mut out = vec![ClipVertex::default(); n];
+            stage.run_block(verts, 0, &mut slot, &mut out);
+            out
         }
         _ => {
             let mut slot = verts.new_slot();

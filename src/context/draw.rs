@@ -203,6 +203,10 @@ fn draw_pass<S: VertexSource + ?Sized>(
     drawn
 }
 
+/// The size of a draw's transformed vertices from which [`draw_pass_with`] checks that
+/// they could be held at once (1 GiB: about 5.6 million vertices).
+const OOM_PROBE_BYTES: usize = 1 << 30;
+
 /// [`draw_pass`] once the previous draw's batch is settled or in `adopt` (taken by the
 /// draw's rasterizer, or left for the caller to settle when nothing is drawn).
 fn draw_pass_with<S: VertexSource + ?Sized>(
@@ -223,9 +227,12 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
     // A draw whose vertices could not all be held at once is refused with
     // GL_OUT_OF_MEMORY (as when every vertex was fetched before drawing) rather than
     // streamed for minutes: the probe reserves address space and touches none of it.
-    if Vec::<ClipVertex>::new()
-        .try_reserve_exact(prims.verts.count())
-        .is_err()
+    // Below [`OOM_PROBE_BYTES`] the reservation cannot fail short of a broken allocator,
+    // and is not made: it cost a malloc and free per draw, and an mmap and munmap from
+    // 128 KiB (530 vertices) up.
+    let count = prims.verts.count();
+    if count.saturating_mul(std::mem::size_of::<ClipVertex>()) >= OOM_PROBE_BYTES
+        && Vec::<ClipVertex>::new().try_reserve_exact(count).is_err()
     {
         ctx.record_error(crate::gl::error::GlError::OutOfMemory);
         return true;
