@@ -27,6 +27,7 @@ use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::raster::Draw;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
+use std::cell::Cell;
 
 /// What every stage of one draw does, derived from the state once (by `plan/`).
 pub struct DrawPlan<'a> {
@@ -77,7 +78,7 @@ pub struct DrawPlan<'a> {
 /// the batch is settled.
 #[allow(clippy::too_many_arguments)]
 pub unsafe fn run<S: VertexSource + ?Sized>(
-    plan: DrawPlan<'_>,
+    plan: &mut DrawPlan<'_>,
     mode: Primitive,
     verts: &S,
     indices: Option<&[u32]>,
@@ -88,8 +89,10 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     detach: bool,
     adopt: Option<Adopted>,
 ) -> Option<InFlight> {
+    // Borrowed, not moved: the plan is kilobytes (the vertex stage 2.5 KB), and moving
+    // it in and apart was a memcpy per draw.
     let DrawPlan {
-        mut stage,
+        stage,
         frag: plan,
         tex: tex_plans,
         viewport,
@@ -104,6 +107,18 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         feedback: _,
         vertex,
     } = plan;
+    let (plan, tex_plans, vertex) = (&*plan, &tex_plans[..], &*vertex);
+    let lines = &*lines;
+    let (viewport, cull, poly, lp_offset, size, depth_bits, raster, prims) = (
+        *viewport,
+        *cull,
+        *poly,
+        *lp_offset,
+        *size,
+        *depth_bits,
+        *raster,
+        *prims,
+    );
     if plan.shader.is_some() {
         // A fragment shader runs on filled triangles only (see `shader::draw`); other
         // primitives, the polygon pipeline, flat shading and multisampling draw nothing.
@@ -141,7 +156,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     let cv = match &vertex {
         _ if streamed => Vec::new(),
         Some(vs) => vs.run(verts),
-        None => run_vertices(&mut stage, verts, materials),
+        None => run_vertices(stage, verts, materials),
     };
     stats.vertices += cv.len() as u64;
     // A streamed draw's clip masks, from a pass over the positions alone.
@@ -156,7 +171,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             Primitive::QuadStrip => true,
             _ => false,
         };
-        split_varies && any_vertex_outside(&stage, verts, indices, &masks)
+        split_varies && any_vertex_outside(stage, verts, indices, &masks)
     } else {
         match indices {
             Some(ix) => ix.iter().any(|&i| cv[i as usize].mask != 0),
@@ -179,7 +194,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     let nvary = stage.nvary();
     let back = stage.two_side().then(|| stage.back_offset());
     // SAFETY: `rast` is a local dropped at the end of this function, never leaked.
-    let mut rast = unsafe { Rasterizer::new(fb, &plan, &tex_plans, region, nvary) };
+    let mut rast = unsafe { Rasterizer::new(fb, plan, tex_plans, region, nvary) };
     if let Some(a) = adopt {
         rast.adopt(a, stats);
     }
@@ -200,7 +215,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         Primitive::Points => {
             let per_vertex = stage.point_atten.is_some();
             let mut target = rast.target(stats).target();
-            let d = &mut Draw::new(region, &plan, &tex_plans, &mut target, stats);
+            let d = &mut Draw::new(region, plan, tex_plans, &mut target, stats);
             for k in 0..n {
                 let v = at(k);
                 if v.mask == 0 {
@@ -212,7 +227,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
             let mut stipple = lines.stipple;
             let mut target = rast.target(stats).target();
-            let d = &mut Draw::new(region, &plan, &tex_plans, &mut target, stats);
+            let d = &mut Draw::new(region, plan, tex_plans, &mut target, stats);
             assemble::lines(mode, n, |a, b, reset| {
                 if reset {
                     if let Some(s) = stipple.as_mut() {
@@ -224,7 +239,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         }
         _ if poly => {
             let pp = PolyPipeline {
-                lines,
+                lines: *lines,
                 point_size: stage.point_atten.is_none().then_some(size),
                 raster,
                 enables: prims,
@@ -235,7 +250,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 region,
             };
             let edge = |k: usize| verts.edge_flag(indices.map_or(k, |ix| ix[k] as usize));
-            pp.draw(mode, n, at, edge, nvary, &plan, &mut rast, stats);
+            pp.draw(mode, n, at, edge, nvary, plan, &mut rast, stats);
         }
         _ if streamed => {
             let ix = |k: usize| indices.map_or(k, |ix| ix[k] as usize);
@@ -250,7 +265,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             let streamer = Streamer {
                 verts,
                 indices,
-                stage: &stage,
+                stage,
                 pipe,
                 mode,
                 path,
@@ -306,6 +321,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
             } else {
                 streamer.stream(streamer.mode, 0, n, &mut state, &mut rast, stats);
             }
+            Streamer::<S>::recycle(state);
         }
         _ => {
             let mut tri = SetupTriangle::default();
@@ -322,7 +338,6 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         None
     };
     drop(rast);
-    drop(tex_plans);
     kept
 }
 
@@ -486,6 +501,14 @@ struct StreamState {
     resume: Option<usize>,
 }
 
+thread_local! {
+    /// The stream state of the last streamed draw on this thread, kept for the next
+    /// ([`Streamer::state`]): a new one cost an aligned allocation (glibc's `memalign`,
+    /// with the heap consolidation it set off) per draw, about 8% of a frame of 400
+    /// small polygons (sweep state 181).
+    static SPARE_STATE: Cell<Option<Box<StreamState>>> = const { Cell::new(None) };
+}
+
 /// The streamed triangles of a draw: each vertex fetched and transformed when first
 /// assembled (through the post-transform cache), then clipped and set up ([`TriPipe`]).
 struct Streamer<'a, S: ?Sized> {
@@ -502,18 +525,38 @@ struct Streamer<'a, S: ?Sized> {
 }
 
 impl<S: VertexSource + ?Sized> Streamer<'_, S> {
-    /// A new cache, slot and set-up triangle for the draw.
+    /// A new cache, slot and set-up triangle for the draw: the ones the last draw on this
+    /// thread gave back ([`Self::recycle`]), emptied, when there are any.
     fn state(&self) -> Box<StreamState> {
+        let nvary = self.pipe.nvary;
+        let queue_ok = self.pipe.queue_ok();
+        if let Some(mut st) = SPARE_STATE.with(Cell::take) {
+            st.cache.reset(self.n_cache);
+            st.slot = self.verts.new_slot();
+            st.tri = SetupTriangle::default();
+            st.queue = match (queue_ok, st.queue.take()) {
+                (true, Some(mut q)) => {
+                    q.reset(nvary);
+                    Some(q)
+                }
+                (true, None) => Some(SetupQueue::new(nvary)),
+                (false, _) => None,
+            };
+            st.resume = None;
+            return st;
+        }
         Box::new(StreamState {
             cache: VertexCache::for_draw(self.n_cache),
             slot: self.verts.new_slot(),
             tri: SetupTriangle::default(),
-            queue: self
-                .pipe
-                .queue_ok()
-                .then(|| SetupQueue::new(self.pipe.nvary)),
+            queue: queue_ok.then(|| SetupQueue::new(nvary)),
             resume: None,
         })
+    }
+
+    /// Keeps a finished draw's state for the next draw on this thread ([`Self::state`]).
+    fn recycle(st: Box<StreamState>) {
+        SPARE_STATE.with(|c| c.set(Some(st)));
     }
 
     /// Streams `count` independent triangles from triangle `first` of a GL_TRIANGLES draw

@@ -329,7 +329,7 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
         ctx.fbo.ms_held = true;
     }
     let kept = run(
-        plan,
+        &mut plan,
         prims,
         fb,
         region,
@@ -351,7 +351,7 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
 /// [`crate::render::run`], for a draw that settled the previous one first or hands it
 /// over (`adopt`).
 fn run<S: VertexSource + ?Sized>(
-    plan: DrawPlan<'_>,
+    plan: &mut DrawPlan<'_>,
     prims: Prims<'_, S>,
     fb: &mut crate::framebuffer::Framebuffer,
     region: [i64; 4],

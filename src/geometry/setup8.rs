@@ -76,8 +76,19 @@ struct Lanes {
 impl SetupQueue {
     /// An empty queue for a draw with `nvary` varyings (at most [`QUEUE_VARY`]).
     pub fn new(nvary: usize) -> Box<Self> {
+        Box::new(Self::empty(nvary))
+    }
+
+    /// Empties the queue, as [`Self::new`] makes it, for another draw with `nvary`
+    /// varyings.
+    pub fn reset(&mut self, nvary: usize) {
+        *self = Self::empty(nvary);
+    }
+
+    /// The empty queue of [`Self::new`].
+    fn empty(nvary: usize) -> Self {
         assert!(nvary <= QUEUE_VARY);
-        Box::new(SetupQueue {
+        SetupQueue {
             n: 0,
             nvary,
             ncopy: nvary.max(4),
@@ -93,7 +104,7 @@ impl SetupQueue {
                 persp: [false; LANES],
                 vary: [[[0.0; LANES]; 3]; QUEUE_VARY],
             },
-        })
+        }
     }
 
     /// Queues triangle `v` (v[2] the provoking vertex); returns whether the queue is full

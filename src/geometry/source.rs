@@ -218,6 +218,22 @@ impl VertexCache {
         }
     }
 
+    /// Empties the cache, as [`Self::for_draw`] makes it, for another draw of `n` vertex
+    /// references, keeping its memory when it is large enough. The entries are cleared
+    /// too: the next draw's vertex stage may write fewer fields.
+    pub fn reset(&mut self, n: usize) {
+        let size = n.clamp(4, CACHE_SIZE).next_power_of_two();
+        if self.slots.len() < size {
+            *self = Self::for_draw(n);
+            return;
+        }
+        self.mask = size - 1;
+        self.tags[..size].fill(usize::MAX);
+        self.slots[..size].fill(ClipVertex::default());
+        self.spill = [ClipVertex::default(); 3];
+        self.transformed = 0;
+    }
+
     /// Transforms vertices `start..end` into their entries ahead of the triangles that
     /// read them: `run(i, out)` fills the entries of vertices `i..i + out.len()` (a run of
     /// consecutive entries; the range is split where the entries wrap). An entry it
