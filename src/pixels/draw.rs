@@ -149,11 +149,7 @@ pub fn run(t: Target<'_>, q: &Quad, src: Source<'_>) {
         });
         return;
     }
-    let mut frags = Fragments {
-        plan: t.plan,
-        target: fb.target(),
-        stats: t.stats,
-    };
+    let mut frags = Fragments::new(t.plan, fb.target(), t.stats);
     let narrow = frags.target.wide.is_none();
     match src {
         // The unorm8 conversion of each texel's colour, once per texel, not per pixel.

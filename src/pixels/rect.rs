@@ -304,9 +304,24 @@ pub struct Fragments<'a, 'b> {
     pub target: Target<'b>,
     /// Work counters.
     pub stats: &'a mut Stats,
+    /// The 8-lane shader's per-triangle plan for the last face it drew
+    /// ([`Self::ready_avx2fma`]): made once, not for every chunk of 8 pixels, where it
+    /// was 7% of a frame of pixel rectangles (`pushattrib_pixels`).
+    #[cfg(target_arch = "x86_64")]
+    gen: Option<(bool, crate::fragment::simd_gen::GenPlan)>,
 }
 
-impl Fragments<'_, '_> {
+impl<'a, 'b> Fragments<'a, 'b> {
+    /// The fragment stage of `plan` into `target`, counted in `stats`.
+    pub fn new(plan: &'a FragPlan, target: Target<'b>, stats: &'a mut Stats) -> Self {
+        Fragments {
+            plan,
+            target,
+            stats,
+            #[cfg(target_arch = "x86_64")]
+            gen: None,
+        }
+    }
     /// The fragments of up to [`LANES`] consecutive pixels of row `py` from `x` on, each
     /// with the shader colour `color(lane)` or none (`None`: no fragment); their depth is
     /// the triangle's z plane. As [`Self::put`] for each one in turn: the pixels differ, so
@@ -446,8 +461,15 @@ impl Fragments<'_, '_> {
         cf: &[[f32; LANES]; 4],
     ) {
         use crate::fragment::simd_gen::{shade_ready_row, GenPlan};
+        let g = match self.gen {
+            Some((front, g)) if front == t.front => g,
+            _ => {
+                let g = GenPlan::new(self.plan, t, &[]);
+                self.gen = Some((t.front, g));
+                g
+            }
+        };
         let (p, fb, st) = (self.plan, &mut self.target, &mut *self.stats);
-        let g = GenPlan::new(p, t, &[]);
         // SAFETY: forwarded from the caller; the chunk's live lanes lie inside row `py`.
         unsafe {
             if p.depth.is_some() {

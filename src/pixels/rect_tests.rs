@@ -187,11 +187,7 @@ fn ready_rows_match_per_lane_byte_for_byte() {
             }
             let mut stats = Stats::default();
             {
-                let mut f = Fragments {
-                    plan: &plan,
-                    target: fb.target(),
-                    stats: &mut stats,
-                };
+                let mut f = Fragments::new(&plan, fb.target(), &mut stats);
                 rasterize(&q, &d, |tri, py, x, texels| {
                     for (k, chunk) in texels.chunks(LANES).enumerate() {
                         let mut c = [[0u8; LANES]; 4];
