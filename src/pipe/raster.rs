@@ -134,6 +134,15 @@ impl PolygonStipple {
         let row = self.0[(y & 31) as usize];
         row & (0x8000_0000u32 >> (x & 31)) != 0
     }
+
+    /// [`Self::passes`] for the 8 pixels `x..x + 8` of row `y`, as bits (bit i: pixel
+    /// `x + i`): the pattern's row reversed (its most significant bit is column 0) and
+    /// rotated to `x`.
+    #[inline]
+    pub fn passes8(&self, x: i64, y: i64) -> u32 {
+        let row = self.0[(y & 31) as usize].reverse_bits();
+        row.rotate_right((x & 31) as u32) & 0xFF
+    }
 }
 
 /// All of this module's state, as `Context::raster`.
@@ -147,4 +156,33 @@ pub struct RasterState {
     pub polygon: PolygonState,
     /// Polygon stipple pattern.
     pub stipple: PolygonStipple,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::PolygonStipple;
+
+    /// [`PolygonStipple::passes8`] gives [`PolygonStipple::passes`] for each of its
+    /// pixels, at every alignment and across the pattern's wrap, negative x included.
+    #[test]
+    fn passes8_matches_passes() {
+        let mut seed = 0x9E37_79B9u32;
+        let mut p = PolygonStipple([0; 32]);
+        for row in p.0.iter_mut() {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            *row = seed;
+        }
+        for y in -3..40 {
+            for x in -40..80 {
+                let bits = p.passes8(x, y);
+                for i in 0..8 {
+                    assert_eq!(
+                        bits >> i & 1 == 1,
+                        p.passes(x + i, y),
+                        "x {x} y {y} lane {i}"
+                    );
+                }
+            }
+        }
+    }
 }

@@ -15,7 +15,7 @@
 // Lane loops index several arrays in step.
 #![allow(clippy::needless_range_loop)]
 
-use super::textured::Chunk;
+use super::textured::{Chunk, LIVE_MASKS};
 use super::variants::{with_flags, Walks};
 use super::Draw;
 use crate::cpu::Isa;
@@ -32,10 +32,11 @@ use crate::texture::UnitPlan;
 pub trait Cover {
     /// The covered pixels of row `py` (y-down) as an inclusive range, or `None`.
     fn span(&self, py: i64) -> Option<(i64, i64)>;
-    /// Whether covered pixel (`x`, `py`) survives a per-pixel mask (polygon stipple).
+    /// Which of the covered pixels `x..x + 8` of row `py` survive a per-pixel mask
+    /// (polygon stipple), as bits (bit i: pixel `x + i`).
     #[inline(always)]
-    fn keep(&self, _x: i64, _py: i64) -> bool {
-        true
+    fn keep8(&self, _x: i64, _py: i64) -> u32 {
+        0xFF
     }
 }
 
@@ -85,13 +86,13 @@ impl Cover for StippleCover<'_> {
     }
 
     #[inline(always)]
-    fn keep(&self, x: i64, py: i64) -> bool {
+    fn keep8(&self, x: i64, py: i64) -> u32 {
         let gl_y = if self.y_flip {
             self.height - 1 - py
         } else {
             py
         };
-        self.stipple.passes(x, gl_y)
+        self.stipple.passes8(x, gl_y)
     }
 }
 
@@ -183,16 +184,19 @@ impl<C: Cover> Iterator for CoverChunks<'_, C> {
             }
             let (x, qy) = (self.x, self.qy);
             self.x += LANES as i64;
-            let mut live = [[false; LANES]; 2];
+            // Each row's lanes as bits: the span's, then the per-pixel mask's.
+            let mut bits = [0u32; 2];
             for (r, span) in self.spans.iter().enumerate() {
                 if let Some((a, z)) = *span {
-                    for i in 0..LANES {
-                        let px = x + i as i64;
-                        live[r][i] = px >= a && px <= z && self.cover.keep(px, qy + r as i64);
+                    let (lo, hi) = ((a - x).clamp(0, 8), (z - x + 1).clamp(0, 8));
+                    if lo < hi {
+                        let m = (0xFFu32 >> (8 - (hi - lo))) << lo;
+                        bits[r] = m & self.cover.keep8(x, qy + r as i64);
                     }
                 }
             }
-            if live.iter().flatten().any(|&l| l) {
+            if bits != [0, 0] {
+                let live = bits.map(|b| LIVE_MASKS[b as usize]);
                 return Some(Chunk {
                     qy,
                     x,

@@ -34,7 +34,7 @@ pub(super) fn fast_env(plan: &FragPlan, units: &[UnitPlan<'_>]) -> Option<FastEn
 }
 
 /// The live lanes of each 8-bit mask (lane i live when bit i is set).
-const LIVE_MASKS: [[bool; LANES]; 256] = {
+pub(super) const LIVE_MASKS: [[bool; LANES]; 256] = {
     let mut t = [[false; LANES]; 256];
     let mut m = 0;
     while m < 256 {
