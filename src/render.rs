@@ -22,9 +22,9 @@ use crate::geometry::setup8::{SetupQueue, QUEUE_VARY};
 use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{ClipMask, ClipVertex, Viewport};
 use crate::pipe::{Material, Primitive, RasterState};
+use crate::raster::banded::draw_banded;
 use crate::raster::batch::{geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink};
 use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
-use crate::raster::Draw;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 use std::cell::Cell;
@@ -214,27 +214,41 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     match mode {
         Primitive::Points => {
             let per_vertex = stage.point_atten.is_some();
-            let mut target = rast.target(stats).target();
-            let d = &mut Draw::new(region, plan, tex_plans, &mut target, stats);
-            for k in 0..n {
-                let v = at(k);
-                if v.mask == 0 {
-                    let size = if per_vertex { v.psize } else { size };
-                    draw_point(v, size, prims.point_smooth, lines.top_left, nvary, d);
-                }
-            }
-        }
-        Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
-            let mut stipple = lines.stipple;
-            let mut target = rast.target(stats).target();
-            let d = &mut Draw::new(region, plan, tex_plans, &mut target, stats);
-            assemble::lines(mode, n, |a, b, reset| {
-                if reset {
-                    if let Some(s) = stipple.as_mut() {
-                        s.counter = 0.0;
+            let size_of = |v: &ClipVertex| if per_vertex { v.psize } else { size };
+            let work = || {
+                (0..n)
+                    .map(&at)
+                    .filter(|v| v.mask == 0)
+                    .map(|v| f64::from(size_of(v).max(1.0)).powi(2))
+                    .sum()
+            };
+            let fb = rast.target(stats);
+            draw_banded(fb, region, plan, tex_plans, stats, work, |d| {
+                for k in 0..n {
+                    let v = at(k);
+                    if v.mask == 0 {
+                        draw_point(v, size_of(v), prims.point_smooth, lines.top_left, nvary, d);
                     }
                 }
-                lines.draw(at(a), at(b), &viewport, stipple.as_mut(), d);
+            });
+        }
+        Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => {
+            let work = || {
+                let mut w = 0.0;
+                assemble::lines(mode, n, |a, b, _| w += line_work(at(a), at(b)));
+                w * f64::from(lines.width.max(1.0))
+            };
+            let fb = rast.target(stats);
+            draw_banded(fb, region, plan, tex_plans, stats, work, |d| {
+                let mut stipple = lines.stipple;
+                assemble::lines(mode, n, |a, b, reset| {
+                    if reset {
+                        if let Some(s) = stipple.as_mut() {
+                            s.counter = 0.0;
+                        }
+                    }
+                    lines.draw(at(a), at(b), &viewport, stipple.as_mut(), d);
+                });
             });
         }
         _ if poly => {
@@ -811,6 +825,16 @@ fn any_vertex_outside<S: VertexSource + ?Sized>(
         }),
         None => masks.iter().any(|&m| m != 0),
     }
+}
+
+/// A line segment's pixels along its major axis, for [`draw_banded`]'s estimate: from
+/// the window positions of two vertices inside the clip volume, else a fixed 64.
+fn line_work(p: &ClipVertex, q: &ClipVertex) -> f64 {
+    if p.mask != 0 || q.mask != 0 {
+        return 64.0;
+    }
+    let (dx, dy) = (p.win[0] - q.win[0], p.win[1] - q.win[1]);
+    f64::from(dx.abs().max(dy.abs())).min(1e6) + 1.0
 }
 
 /// Runs the vertex stage over `verts`, lighting each with its own material when

@@ -96,6 +96,9 @@ counters! {
         /// Draws whose second half a pool thread set up while the draw's thread set up
         /// the first (see `raster::batch::side`).
         draws_offloaded: draw,
+        /// Draws of lines or points drawn by two threads, each into its own band of rows
+        /// (see `raster::banded`).
+        draws_banded: draw,
     }
 }
 

@@ -42,6 +42,10 @@ pub const POOL_YIELD_US: u64 = 100;
 pub const GEOM_SECTION: usize = 4096;
 /// [`Tuning::split_probe`]'s default: triangles.
 pub const SPLIT_PROBE: usize = 1024;
+/// [`Tuning::prim_bands`]'s default: estimated fragments (measured in
+/// docs/performance.md, stop 71).
+pub const PRIM_BANDS: usize = 8192;
+
 /// [`Tuning::offload`]'s default: triangles (measured in docs/performance.md, stop 70).
 pub const OFFLOAD: usize = 256;
 /// [`Tuning::ms_prefetch`]'s default: the rows below ([`MsPrefetch::Below`]).
@@ -188,6 +192,10 @@ pub struct Tuning {
     /// whose second half an idle pool thread sets up while the draw's thread sets up the
     /// first (`raster::batch::side`); 0 turns the offload off. Default [`OFFLOAD`].
     pub offload: usize,
+    /// `SOFTGL_PRIM_BANDS`: the estimated fragments from which a draw of lines or points
+    /// is drawn on two bands of rows by two threads (`raster::banded`); 0 turns it off.
+    /// Default [`PRIM_BANDS`].
+    pub prim_bands: usize,
     /// `SOFTGL_OFFLOAD_WAIT`: whether an offloading draw always hands its half to a pool
     /// thread (starting one when none polls) and waits for it, rather than setting the
     /// half up itself when the pool thread has not begun it: the pool's path on any
@@ -261,6 +269,7 @@ impl Tuning {
             geom_section: size("SOFTGL_GEOM_SECTION").map_or(GEOM_SECTION, |v| v.min(1 << 20)),
             split_probe: size("SOFTGL_SPLIT_PROBE").unwrap_or(SPLIT_PROBE),
             offload: size("SOFTGL_OFFLOAD").unwrap_or(OFFLOAD),
+            prim_bands: size("SOFTGL_PRIM_BANDS").unwrap_or(PRIM_BANDS),
             offload_wait: get("SOFTGL_OFFLOAD_WAIT").is_some_and(|v| v != "0"),
             setup8: not_zero("SOFTGL_SETUP8"),
             tex_path: match text("SOFTGL_TEX_PATH").as_deref() {
@@ -304,6 +313,7 @@ impl Tuning {
             geom_section,
             split_probe,
             offload,
+            prim_bands,
             offload_wait,
             setup8,
             tex_path,
@@ -337,6 +347,7 @@ impl Tuning {
             ("SOFTGL_GEOM_SECTION", geom_section.to_string()),
             ("SOFTGL_SPLIT_PROBE", split_probe.to_string()),
             ("SOFTGL_OFFLOAD", offload.to_string()),
+            ("SOFTGL_PRIM_BANDS", prim_bands.to_string()),
             ("SOFTGL_OFFLOAD_WAIT", on(offload_wait)),
             ("SOFTGL_SETUP8", on(setup8)),
             ("SOFTGL_TEX_PATH", tex_path.name().to_string()),

@@ -1538,6 +1538,7 @@ fn split_geometry_keeps_images_and_counters() {
                                 | "draws_detached"
                                 | "draws_adopted"
                                 | "draws_offloaded"
+                                | "draws_banded"
                         )
                     };
                     let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {

@@ -179,7 +179,7 @@ fn store_depth_par(fb: &Framebuffer, px: &mut [[u8; 4]], iw: usize) {
     let mid = h / 2;
     let (low, high) = px.split_at_mut((mid * iw).min(px.len()));
     let halves = [std::sync::Mutex::new(low), std::sync::Mutex::new(high)];
-    crate::raster::batch::fork2(|k| {
+    crate::raster::batch::fork2(false, |k| {
         let mut dst = halves[k].lock().unwrap_or_else(|e| e.into_inner());
         let (rows, first) = if k == 0 { (0..mid, 0) } else { (mid..h, mid) };
         for y in rows {

@@ -6,7 +6,8 @@
 //! textured walks sample a unit a row at a time where an 8-wide sampler covers it,
 //! `sample8`).
 //! Also here: batching triangles over bands of rows on the thread pool ([`batch`]), lines
-//! and points ([`lines`], [`prims`]; untextured ones shaded row by row, [`prim_spans`]),
+//! and points ([`lines`], [`prims`]; untextured ones shaded row by row, [`prim_spans`];
+//! large draws of them on two bands of rows at once, [`banded`]),
 //! antialiased ones ([`smooth`]), textured lines, points and stippled polygons
 //! ([`prim_tex`]) and polygon stipple ([`stipple`]).
 
@@ -22,6 +23,7 @@ use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
 
+pub mod banded;
 pub mod batch;
 pub mod lines;
 pub mod ms_prims;

@@ -164,9 +164,30 @@ const ALPHA_EARLY_STATES: [usize; 5] = [53, 68, 83, 111, 176];
 /// line strip; 26 / 11,589).
 const DEPTH_FIRST_STATES: [usize; 4] = [23, 44, 79, 80];
 
-/// What [`knob_states`] asks of the counters of a state run with its knob off (`late`) and
-/// on (`early`): `None` when they agree, else what is wrong.
-type CounterCheck = fn(&[(String, u64)], &[(String, u64)]) -> Option<String>;
+/// What [`knob_states`] asks of the counters of a state run with its knob off on one
+/// thread (`late`) and on with `threads` threads (`early`): `None` when they agree, else
+/// what is wrong.
+type CounterCheck = fn(&str, &[(String, u64)], &[(String, u64)]) -> Option<String>;
+
+/// The counters that do not depend on the threads: without the draws left on the pool,
+/// the offloaded halves (whose shared vertices are transformed twice, whose rectangles may
+/// be cut) and the draws of lines and points split into bands.
+fn thread_free(c: &[(String, u64)]) -> Vec<(String, u64)> {
+    c.iter()
+        .filter(|(k, _)| {
+            !matches!(
+                k.as_str(),
+                "draws_detached"
+                    | "draws_adopted"
+                    | "draws_offloaded"
+                    | "draws_banded"
+                    | "vertices"
+                    | "tris_paired"
+            )
+        })
+        .cloned()
+        .collect()
+}
 
 /// The counter named `k` of `c` (0 when missing).
 fn counter(c: &[(String, u64)], k: &str) -> u64 {
@@ -177,9 +198,7 @@ fn counter(c: &[(String, u64)], k: &str) -> u64 {
 /// default threads: every run draws the bytes of the knob-off run on one thread, which
 /// are llvmpipe's; `setup` checks that the knob-off run is what the states' list says
 /// (`None` when it is), and `agree` the counters with the knob on against those with it
-/// off (the draws left on the pool and the offloaded halves, whose shared vertices are
-/// transformed twice and whose rectangles may be cut, depend on the threads only, so
-/// those counters are left out).
+/// off.
 fn knob_states(
     knob: &str,
     states: &[usize],
@@ -222,27 +241,12 @@ fn knob_states(
         if let Some(p) = setup(&late_c) {
             let _ = writeln!(problems, "state {state}: {p}");
         }
-        let strip = |c: &[(String, u64)]| -> Vec<(String, u64)> {
-            c.iter()
-                .filter(|(k, _)| {
-                    !matches!(
-                        k.as_str(),
-                        "draws_detached"
-                            | "draws_adopted"
-                            | "draws_offloaded"
-                            | "vertices"
-                            | "tris_paired"
-                    )
-                })
-                .cloned()
-                .collect()
-        };
         for threads in ["1", "2"] {
             let (early, early_c) = run("1", threads);
             if early != late {
                 let _ = writeln!(problems, "state {state}, {threads} threads: bytes differ");
             }
-            if let Some(p) = agree(&strip(&late_c), &strip(&early_c)) {
+            if let Some(p) = agree(threads, &late_c, &early_c) {
                 let _ = writeln!(problems, "state {state}, {threads} threads: {p}");
             }
         }
@@ -281,7 +285,10 @@ fn early_alpha_test_states_match_llvmpipe_and_the_late_test() {
             (failed * 4 < fragments || fragments < 10_000)
                 .then(|| format!("{failed} of {fragments} fragments failed the alpha test"))
         },
-        |late, early| (late != early).then(|| format!("counters differ:\n{early:?}\n{late:?}")),
+        |_, late, early| {
+            (thread_free(late) != thread_free(early))
+                .then(|| format!("counters differ:\n{early:?}\n{late:?}"))
+        },
     );
 }
 
@@ -302,7 +309,8 @@ fn depth_first_states_match_llvmpipe_and_the_tests_in_order() {
             (f < 5_000 || d == 0 || a == 0)
                 .then(|| format!("{f} fragments, {a} failed alpha and {d} depth in GL order"))
         },
-        |late, early| {
+        |_, late, early| {
+            let (late, early) = (&thread_free(late)[..], &thread_free(early)[..]);
             let moved =
                 counter(early, "depth_failed").saturating_sub(counter(late, "depth_failed"));
             let same_except =
@@ -317,6 +325,39 @@ fn depth_first_states_match_llvmpipe_and_the_tests_in_order() {
                 && counter(late, "alpha_failed") == counter(early, "alpha_failed") + moved
                 && counter(early, "depth_reads") == counter(late, "depth_reads") + moved;
             (!ok).then(|| format!("counters:\n{early:?}\n{late:?}"))
+        },
+    );
+}
+
+/// Sweep states of textured GL_LINES (19, stippled, fogged, two units; 96, stippled and
+/// two pixels wide; 135, lit; 170, blended inside a scissor box) and GL_POINTS (137),
+/// which `SOFTGL_PRIM_BANDS=1`
+/// draws on two bands of rows by two threads (`raster::banded`).
+const PRIM_BANDS_STATES: [usize; 5] = [19, 96, 135, 137, 170];
+
+/// Lines and points drawn into two bands by two threads (`SOFTGL_PRIM_BANDS=1`) draw
+/// llvmpipe's bytes and the same bytes and counters as one band; on two threads every
+/// draw of the state is split (`draws_banded`), on one none is.
+#[test]
+fn banded_prim_states_match_llvmpipe_and_one_band() {
+    knob_states(
+        "SOFTGL_PRIM_BANDS",
+        &PRIM_BANDS_STATES,
+        |c| {
+            let f = counter(c, "fragments");
+            (f < 1_500).then(|| format!("{f} fragments"))
+        },
+        |threads, late, early| {
+            let banded = counter(early, "draws_banded");
+            let want = if threads == "1" {
+                0
+            } else {
+                counter(early, "draws")
+            };
+            let ok = thread_free(late) == thread_free(early) && banded == want;
+            (!ok).then(|| {
+                format!("draws_banded {banded}, want {want}; counters:\n{early:?}\n{late:?}")
+            })
         },
     );
 }

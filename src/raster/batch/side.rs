@@ -169,10 +169,13 @@ impl Rasterizer<'_, '_> {
 }
 
 /// Runs `f(0)` on this thread and `f(1)` on the draw pool's thread when its task polls
-/// for work (else here too, after `f(0)`), and returns when both are done: a copy too
-/// large for one thread that waits for nothing else (a depth texture's write-back,
-/// `context::fbo_image`). Without threads, or on a pool thread, both run here.
-pub fn fork2(f: impl Fn(usize) + Sync) {
+/// for work, or with `start` on a pool task started for it (else here too, after
+/// `f(0)`; also when the pool thread has not begun it by then), and returns when both are
+/// done: work too large for one thread that waits for nothing else (a depth texture's
+/// write-back, `context::fbo_image`; a large draw of lines or points, `raster::banded`,
+/// which starts the task: nothing else keeps the pool polling then). Without threads, or
+/// on a pool thread, both run here.
+pub fn fork2(start: bool, f: impl Fn(usize) + Sync) {
     if crate::cpu::threads() < 2 || rayon::current_thread_index().is_some() {
         f(0);
         f(1);
@@ -187,7 +190,7 @@ pub fn fork2(f: impl Fn(usize) + Sync) {
     };
     // SAFETY: the job is waited for (also when `f(0)` panics, `WaitOnUnwind`) before
     // `second` goes out of scope.
-    let posted = unsafe { post_side(&job, &second, false) };
+    let posted = unsafe { post_side(&job, &second, start) };
     let _unwind = WaitOnUnwind(&job);
     f(0);
     second();
