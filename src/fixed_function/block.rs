@@ -241,42 +241,64 @@ impl VertexStage {
     /// positions alone: the masks [`VertexStage::run_into`] gives them.
     pub fn clip_masks<S: VertexSource + ?Sized>(&self, verts: &S, out: &mut Vec<ClipMask>) {
         out.clear();
-        let n = verts.count();
-        out.reserve(n);
+        out.resize(verts.count(), 0);
+        self.clip_masks_into(verts, 0, out);
+    }
+
+    /// The clip masks of vertices `first..first + out.len()` of `verts` into `out`
+    /// ([`VertexStage::clip_masks`] of a part of a draw).
+    pub fn clip_masks_into<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        out: &mut [ClipMask],
+    ) {
         #[cfg(target_arch = "x86_64")]
         if crate::cpu::isa().avx2() {
             // SAFETY: the level says the CPU has AVX2.
-            return unsafe { self.clip_masks_avx2(verts, out) };
+            return unsafe { self.clip_masks_avx2(verts, first, out) };
         }
         let mask = |p: [f32; 4]| self.clip_position(p).1;
         match verts.float_positions() {
-            Some(fp) if fp.count() == n => out.extend((0..n).map(|i| mask(fp.get(i)))),
-            _ => out.extend((0..n).map(|i| mask(verts.position(i)))),
+            Some(fp) if fp.count() == verts.count() => {
+                for (i, m) in out.iter_mut().enumerate() {
+                    *m = mask(fp.get(first + i));
+                }
+            }
+            _ => {
+                for (i, m) in out.iter_mut().enumerate() {
+                    *m = mask(verts.position(first + i));
+                }
+            }
         }
     }
 
-    /// [`VertexStage::clip_masks`] compiled for AVX2.
+    /// [`VertexStage::clip_masks_into`] compiled for AVX2.
     ///
     /// # Safety
     /// The CPU has AVX2.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn clip_masks_avx2<S: VertexSource + ?Sized>(&self, verts: &S, out: &mut Vec<ClipMask>) {
+    unsafe fn clip_masks_avx2<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        out: &mut [ClipMask],
+    ) {
         // Loops, not closures: a closure is compiled without this function's target
         // features.
         // SAFETY: (whole body) AVX2, the caller's promise.
         unsafe {
             let k = self.consts();
-            let n = verts.count();
             match verts.float_positions() {
-                Some(fp) if fp.count() == n => {
-                    for i in 0..n {
-                        out.push(self.clip_x86(&k, &fp.get(i)).1);
+                Some(fp) if fp.count() == verts.count() => {
+                    for (i, m) in out.iter_mut().enumerate() {
+                        *m = self.clip_x86(&k, &fp.get(first + i)).1;
                     }
                 }
                 _ => {
-                    for i in 0..n {
-                        out.push(self.clip_x86(&k, &verts.position(i)).1);
+                    for (i, m) in out.iter_mut().enumerate() {
+                        *m = self.clip_x86(&k, &verts.position(first + i)).1;
                     }
                 }
             }

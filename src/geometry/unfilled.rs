@@ -113,6 +113,7 @@ pub fn draw_offset(v: [&ClipVertex; 3], det: f32, factor: f32, units: f32) -> f3
 /// llvmpipe's own polygon offset for filled triangles (`lp_do_offset_tri`), computed on
 /// the window positions of the set-up (possibly reordered) vertices; added to every
 /// fragment's z.
+#[inline]
 pub fn setup_offset(win: [[f32; 4]; 3], factor: f32, units: f32) -> f32 {
     let [p0, p1, p2] = win;
     let (dx01, dy01, dz01) = (p0[0] - p1[0], p0[1] - p1[1], p0[2] - p1[2]);
@@ -134,6 +135,7 @@ pub fn setup_offset(win: [[f32; 4]; 3], factor: f32, units: f32) -> f32 {
 /// The offset units for a float depth buffer (the draw module's and llvmpipe's
 /// `floating_point_depth` case): `units · 2^(e − 23)` with `e` the exponent of the largest
 /// |z| of the triangle, taken on the float's bits (0 when `e < 23`).
+#[inline]
 pub fn float_units(units: f32, z: [f32; 3]) -> f32 {
     let m = z[0].abs().max(z[1].abs()).max(z[2].abs());
     let e = (m.to_bits() & (0xff << 23)) as i32 - (23 << 23);

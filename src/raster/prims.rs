@@ -78,6 +78,11 @@ pub fn draw_point(
 ///
 /// `units` are scaled already, except for a float depth buffer (`float`), whose units
 /// llvmpipe scales per triangle by the exponent of its largest |z| ([`float_units`]).
+///
+/// Inlined so that `v` stays in registers: the setup queue gathers it lane by lane with
+/// 4-byte stores, and an out-of-line call read it back with 8-byte loads that could not
+/// be forwarded from those stores.
+#[inline(always)]
 pub fn apply_setup_offset(
     v: [[f32; 4]; 3],
     factor: f32,
