@@ -23,7 +23,9 @@ use crate::geometry::source::{VertexCache, VertexSlot, VertexSource};
 use crate::geometry::{ClipMask, ClipVertex, Viewport};
 use crate::pipe::{Material, Primitive, RasterState};
 use crate::raster::banded::draw_banded;
-use crate::raster::batch::{geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink};
+use crate::raster::batch::{
+    fork2, geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink,
+};
 use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
@@ -162,7 +164,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     // A streamed draw's clip masks, from a pass over the positions alone.
     let mut masks = Vec::new();
     let any_outside = if streamed {
-        stage.clip_masks(verts, &mut masks);
+        clip_masks_par(stage, verts, &mut masks);
         // Only the split of quads and quad strips depends on whether any vertex is
         // outside (llvmpipe-rules §5; indexed or flat quads split one way on both paths):
         // the masks decide it before anything is assembled.
@@ -353,6 +355,33 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     };
     drop(rast);
     kept
+}
+
+/// Vertices from which a draw's clip masks are computed on two threads when the pool has
+/// a task polling for work ([`fork2`]): MuJoCo's floor grid of 160,000 vertices took
+/// 0.37 ms a pass for its masks on one thread, and its draws keep the pool idle.
+const PAR_MASKS: usize = 16 * 1024;
+
+/// [`VertexStage::clip_masks`], the two halves on two threads for a large draw.
+fn clip_masks_par<S: VertexSource + ?Sized>(
+    stage: &VertexStage,
+    verts: &S,
+    out: &mut Vec<crate::geometry::ClipMask>,
+) {
+    let n = verts.count();
+    if n < PAR_MASKS {
+        stage.clip_masks(verts, out);
+        return;
+    }
+    out.clear();
+    out.resize(n, 0);
+    let mid = n / 2;
+    let (a, b) = out.split_at_mut(mid);
+    let halves = [std::sync::Mutex::new(a), std::sync::Mutex::new(b)];
+    fork2(false, |k| {
+        let mut h = halves[k].lock().unwrap_or_else(|e| e.into_inner());
+        stage.clip_masks_into(verts, k * mid, &mut h);
+    });
 }
 
 /// The per-triangle stages after the vertex stage: clipping, setup, llvmpipe's polygon
@@ -597,7 +626,8 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
     /// Streams the `n` vertex references of a draw of independent primitives of
     /// `unit` = (vertices, triangles) each ([`independent`]), a [`CHUNK`] of primitives
     /// at a time, until the pool is free to set up the second half of the rest while
-    /// this thread sets up the first ([`Rasterizer::offload`]).
+    /// this thread sets up the first ([`Rasterizer::offload`]): halves of the chunks that
+    /// are not rejected whole ([`Rejection::live_middle`]).
     fn stream_chunks(
         &self,
         unit: (usize, usize),
@@ -612,7 +642,7 @@ impl<S: VertexSource + ?Sized> Streamer<'_, S> {
         while pos < prims {
             let left = prims - pos;
             if rast.can_offload(left * unit.1, stats) {
-                let mid = pos + left / 2;
+                let mid = self.reject.live_middle(pos, prims);
                 rast.offload(
                     stats,
                     |binner, s| {

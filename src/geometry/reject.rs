@@ -129,6 +129,32 @@ impl Rejection {
         self.dead.get(c).copied().unwrap_or(false)
     }
 
+    /// The primitive that halves the chunks of primitives `p0..p1` that are not dead
+    /// ([`Self::dead`]), at a chunk boundary (`p0 + (p1 - p0) / 2` when none is dead):
+    /// where a draw split over two threads cuts, so that each sets up half of what is
+    /// drawn. MuJoCo's floor grid, seen from the camera, is drawn by the chunks of its
+    /// first half alone.
+    pub fn live_middle(&self, p0: usize, p1: usize) -> usize {
+        let even = p0 + (p1 - p0) / 2;
+        if self.dead.is_empty() || p1 <= p0 {
+            return even;
+        }
+        let alive = |c: usize| !self.dead(c);
+        let (c0, c1) = (p0 / CHUNK, p1.div_ceil(CHUNK));
+        let total = (c0..c1).filter(|&c| alive(c)).count();
+        if total < 2 {
+            return even;
+        }
+        let mut seen = 0;
+        for c in c0..c1 {
+            seen += usize::from(alive(c));
+            if seen * 2 >= total {
+                return ((c + 1) * CHUNK).clamp(p0, p1);
+            }
+        }
+        even
+    }
+
     /// Whether the triangle of source vertices `k` is outside one clip plane.
     #[inline(always)]
     pub fn rejects(&self, k: [usize; 3]) -> bool {
@@ -252,5 +278,31 @@ mod tests {
         assert!(!first_dead(10, Primitive::Triangles));
         assert!(first_dead(12, Primitive::Triangles));
         assert!(!first_dead(12, Primitive::TriangleStrip));
+    }
+
+    #[test]
+    fn a_split_halves_the_chunks_that_are_not_dead() {
+        // 8 chunks of triangles; chunks 0, 1, 2, 3 and 6 outside x = w, 4, 5 and 7 inside.
+        let n = 8 * CHUNK * 3;
+        let masks: Vec<u16> = (0..n)
+            .map(|v| u16::from(!matches!(v / (CHUNK * 3), 4 | 5 | 7)))
+            .collect();
+        let r = Rejection::new(
+            masks,
+            Primitive::Triangles,
+            n,
+            DrawPath::Clip,
+            false,
+            |k| k,
+            false,
+        );
+        assert!(r.dead(0) && r.dead(3) && !r.dead(4) && r.dead(6) && !r.dead(7));
+        // Alive 4, 5, 7: the cut follows chunk 5 (two of three before it).
+        assert_eq!(r.live_middle(0, 8 * CHUNK), 6 * CHUNK);
+        // From chunk 5 on (alive 5 and 7): after chunk 5.
+        assert_eq!(r.live_middle(5 * CHUNK, 8 * CHUNK), 6 * CHUNK);
+        // One chunk alive, or nothing rejected: the middle primitive.
+        assert_eq!(r.live_middle(6 * CHUNK, 8 * CHUNK), 7 * CHUNK);
+        assert_eq!(Rejection::default().live_middle(10, 31), 20);
     }
 }
