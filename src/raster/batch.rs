@@ -294,6 +294,10 @@ pub struct Rasterizer<'a, 'f> {
     box_sum: i64,
     /// Batches handed to the pool so far ([`Rasterizer::launch`]).
     launches: u64,
+    /// While a pool thread sets up the second half of an offloaded draw
+    /// ([`Rasterizer::offload`]): full batches are not handed over (the hand-over would
+    /// wait for that half) but keep filling.
+    hold: bool,
 }
 
 /// Where the draw's set-up triangles go: the [`Rasterizer`] itself, or a [`Binner`] that
@@ -363,6 +367,7 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             ring: pool.ring,
             box_sum: 0,
             launches: 0,
+            hold: false,
         }
     }
 
@@ -502,6 +507,9 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             if self.batch.heads.len() >= self.tune.max_batch || self.batch.work >= MAX_WORK_LOCAL {
                 self.flush(stats);
             }
+            return;
+        }
+        if self.hold {
             return;
         }
         let joined = !self.batch.segs.is_empty() && self.batch.work >= self.tune.detach_work;

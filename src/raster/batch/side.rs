@@ -14,7 +14,9 @@
 //! the halves share no primitive), started while nothing is in flight and a pool task
 //! polls for its next task ([`super::job::Job::try_post`]), posts the set-up of its second
 //! half to that task, which bins it into a batch of its own ([`Binner`]). Meanwhile the
-//! draw's thread sets up the first half into its rasterizer as usual. Then it appends the
+//! draw's thread sets up the first half into its rasterizer, keeping its full batches
+//! (`Rasterizer::hold`): handing one to the pool would wait for the pool's half, and
+//! MuJoCo's lit floor spent an eighth of its draw that way. Then it appends the
 //! second half's triangles after its own ([`Rasterizer::append`]), so the rasterizer sees
 //! every triangle in primitive order and the images are those of one thread. If the pool
 //! task has not begun the half by then, the draw's thread sets it up itself (unless
@@ -127,7 +129,11 @@ impl Rasterizer<'_, '_> {
         let launches = self.launches;
         let mine = {
             let _unwind = WaitOnUnwind(&job);
+            // Handing a full batch to the pool would wait for the half it sets up: this
+            // thread keeps setting up its own half meanwhile (the batch grows).
+            self.hold = posted;
             main(self, stats, false);
+            self.hold = false;
             let mine = !wait && !claimed.swap(true, Ordering::AcqRel);
             if mine {
                 main(self, stats, true);
