@@ -24,7 +24,7 @@ use crate::geometry::{ClipMask, ClipVertex, Viewport};
 use crate::pipe::{Material, Primitive, RasterState};
 use crate::raster::banded::draw_banded;
 use crate::raster::batch::{
-    fork2, geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink,
+    fork2_split, geom_section, Adopted, Binner, InFlight, Rasterizer, TriangleSink,
 };
 use crate::raster::prims::{draw_point, LinePlan, PolyPipeline, PrimEnables};
 use crate::stats::Stats;
@@ -358,7 +358,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
 }
 
 /// Vertices from which a draw's clip masks are computed on two threads when the pool has
-/// a task polling for work ([`fork2`]): MuJoCo's floor grid of 160,000 vertices took
+/// a task polling for work ([`fork2_split`]): MuJoCo's floor grid of 160,000 vertices took
 /// 0.37 ms a pass for its masks on one thread, and its draws keep the pool idle.
 const PAR_MASKS: usize = 16 * 1024;
 
@@ -366,7 +366,7 @@ const PAR_MASKS: usize = 16 * 1024;
 fn clip_masks_par<S: VertexSource + ?Sized>(
     stage: &VertexStage,
     verts: &S,
-    out: &mut Vec<crate::geometry::ClipMask>,
+    out: &mut Vec<ClipMask>,
 ) {
     let n = verts.count();
     if n < PAR_MASKS {
@@ -376,11 +376,8 @@ fn clip_masks_par<S: VertexSource + ?Sized>(
     out.clear();
     out.resize(n, 0);
     let mid = n / 2;
-    let (a, b) = out.split_at_mut(mid);
-    let halves = [std::sync::Mutex::new(a), std::sync::Mutex::new(b)];
-    fork2(false, |k| {
-        let mut h = halves[k].lock().unwrap_or_else(|e| e.into_inner());
-        stage.clip_masks_into(verts, k * mid, &mut h);
+    fork2_split(out, mid, |k, part| {
+        stage.clip_masks_into(verts, k * mid, part)
     });
 }
 

@@ -173,14 +173,11 @@ const PAR_STORE: usize = 1 << 20;
 
 /// [`store`] of the working copy's depth into depth texels `px` (`iw` per row, covering
 /// the working copy): the bottom half of the rows on this thread, the top half on the
-/// draw pool's ([`crate::raster::batch::fork2`]).
+/// draw pool's ([`crate::raster::batch::fork2_split`]).
 fn store_depth_par(fb: &Framebuffer, px: &mut [[u8; 4]], iw: usize) {
     let (w, h) = (fb.width, fb.height);
     let mid = h / 2;
-    let (low, high) = px.split_at_mut((mid * iw).min(px.len()));
-    let halves = [std::sync::Mutex::new(low), std::sync::Mutex::new(high)];
-    crate::raster::batch::fork2(false, |k| {
-        let mut dst = halves[k].lock().unwrap_or_else(|e| e.into_inner());
+    crate::raster::batch::fork2_split(px, mid * iw, |k, dst| {
         let (rows, first) = if k == 0 { (0..mid, 0) } else { (mid..h, mid) };
         for y in rows {
             let src = &fb.depth[fb.row(y) * w..][..w];

@@ -41,7 +41,7 @@ use job::{Job, Padded, SideFn, Task};
 use pairing::Pairing;
 use segs::{DrawRec, Own, Seg, Start};
 
-pub use side::fork2;
+pub use side::{fork2, fork2_split};
 pub use split::{geom_section, Binner};
 
 use super::{raster_triangle, Draw};

@@ -205,6 +205,18 @@ pub fn fork2(start: bool, f: impl Fn(usize) + Sync) {
     }
 }
 
+/// [`fork2`] (not starting a pool task) over the two parts of `data` split at `at`:
+/// `f(0, &mut data[..at])` and `f(1, &mut data[at..])`, one of them on the pool's thread
+/// when its task polls for work.
+pub fn fork2_split<T: Send>(data: &mut [T], at: usize, f: impl Fn(usize, &mut [T]) + Sync) {
+    let (a, b) = data.split_at_mut(at.min(data.len()));
+    let parts = [Mutex::new(a), Mutex::new(b)];
+    fork2(false, |k| {
+        let mut part = parts[k].lock().unwrap_or_else(|e| e.into_inner());
+        f(k, &mut part);
+    });
+}
+
 impl Batch {
     /// Appends a head binned elsewhere for the same region and bands, with its varyings
     /// and flat values, and bins it into `rows`-row bands; returns its box's pixels.
