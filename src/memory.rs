@@ -181,6 +181,21 @@ impl<T: Plain> HugeBuf<T> {
     pub fn is_mapped(&self) -> bool {
         matches!(self.0, Inner::Mapped { .. })
     }
+
+    /// The same memory as values of another plain type of the same size (a depth texture's
+    /// texels, u32 depths in little-endian bytes, lent to a working copy's depth buffer),
+    /// without a copy; `Err(self)` for a heap buffer that holds values (its allocation's
+    /// alignment is `T`'s, and a vector of `U` would free it with `U`'s).
+    pub fn cast<U: Plain>(self) -> Result<HugeBuf<U>, Self> {
+        if std::mem::size_of::<U>() != std::mem::size_of::<T>() {
+            return Err(self);
+        }
+        match self.0 {
+            Inner::Mapped { map, len } => Ok(HugeBuf(Inner::Mapped { map, len })),
+            Inner::Heap(v) if v.is_empty() => Ok(HugeBuf::empty()),
+            inner => Err(HugeBuf(inner)),
+        }
+    }
 }
 
 impl<T: Plain> Deref for HugeBuf<T> {
@@ -218,6 +233,25 @@ impl<T: Plain> Clone for HugeBuf<T> {
         let mut b = HugeBuf::filled(self.len(), T::ZERO);
         b.copy_from_slice(self);
         b
+    }
+}
+
+impl<T: Plain> From<Vec<T>> for HugeBuf<T> {
+    /// The vector's values, left on the heap where they are.
+    fn from(v: Vec<T>) -> Self {
+        HugeBuf(Inner::Heap(v))
+    }
+}
+
+impl<T: Plain> FromIterator<T> for HugeBuf<T> {
+    fn from_iter<I: IntoIterator<Item = T>>(it: I) -> Self {
+        HugeBuf(Inner::Heap(it.into_iter().collect()))
+    }
+}
+
+impl<T: Plain> PartialEq for HugeBuf<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self[..] == other[..]
     }
 }
 
@@ -260,5 +294,30 @@ mod tests {
             assert_eq!(b.as_ptr() as usize % HUGE, 0);
             assert!(!HugeBuf::filled(1 << 16, 0u32).is_mapped());
         }
+    }
+
+    #[test]
+    fn a_mapped_buffer_casts_without_a_copy_and_a_heap_one_does_not() {
+        let mut b = HugeBuf::filled(1 << 20, [0u8; 4]);
+        b[5] = 0x1234_5678u32.to_le_bytes();
+        if b.is_mapped() {
+            let at = b.as_ptr() as usize;
+            let d = b.cast::<u32>().expect("a mapping casts");
+            assert_eq!(
+                (d.as_ptr() as usize, d.len(), d[5], d[4]),
+                (at, 1 << 20, 0x1234_5678, 0)
+            );
+            let back = d.cast::<[u8; 4]>().expect("and back");
+            assert_eq!(back[5], 0x1234_5678u32.to_le_bytes());
+        }
+        let heap: HugeBuf<[u8; 4]> = vec![[1, 2, 3, 4]; 3].into();
+        let heap = heap
+            .cast::<u32>()
+            .expect_err("a heap vector keeps its type");
+        assert_eq!(heap[..], [[1, 2, 3, 4]; 3]);
+        assert!(HugeBuf::<[u8; 4]>::empty()
+            .cast::<u32>()
+            .is_ok_and(|e| e.is_empty()));
+        assert!(HugeBuf::filled(4, 0u32).cast::<u8>().is_err());
     }
 }

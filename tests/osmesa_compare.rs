@@ -386,6 +386,7 @@ const SCENES: &[&str] = &[
     "wide_pixels",
     "msaa_lines_points",
     "fbo_lend",
+    "fbo_lend_depth",
     "tex_respecify_inflight",
 ];
 
@@ -556,6 +557,7 @@ scene_tests!(
     wide_pixels,
     msaa_lines_points,
     fbo_lend,
+    fbo_lend_depth,
     tex_respecify_inflight,
 );
 

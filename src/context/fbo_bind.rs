@@ -240,7 +240,8 @@ impl Context {
         let mut loans = Vec::new();
         if lend {
             for (k, (a, stencil)) in parts.roles_indexed() {
-                if let Some(l) = super::fbo_lend::lend(&mut self.fbo, fb, a, plane, stencil) {
+                let (fbo, textures) = (&mut self.fbo, &mut self.textures);
+                if let Some(l) = super::fbo_lend::lend(fbo, textures, fb, a, plane, stencil) {
                     loans.push(l);
                     lent[k] = true;
                 }
@@ -374,15 +375,19 @@ impl Context {
     }
 
     /// Called before texture `texture`'s images change: when it is attached to the object
-    /// bound for drawing,
-    /// writes the working copy back now, and marks it to be assembled anew when the GL
-    /// call ends ([`Context::fbo_refresh`]), so that the change is seen either way.
+    /// bound for drawing, writes the working copy back now, takes back its images the
+    /// working copy holds on loan, and marks it to be assembled anew when the GL call ends
+    /// ([`Context::fbo_refresh`]), so that the change is seen either way.
     pub fn fbo_touch(&mut self, texture: u32) {
-        if self.draws_into(texture) && !self.fbo.stale {
+        if !self.draws_into(texture) {
+            return;
+        }
+        if !self.fbo.stale {
             self.fbo_sync();
             self.fbo.stale_seen = self.held_versions();
             self.fbo.stale = true;
         }
+        self.unlend_texture(texture);
     }
 
     /// Whether texture `texture` is attached to the object bound for drawing.
@@ -396,10 +401,12 @@ impl Context {
     }
 
     /// Called before texture `texture`'s images are read directly (glGetTexImage): when
-    /// it is attached to the object bound for drawing, writes the drawing into it.
+    /// it is attached to the object bound for drawing, writes the drawing into it (and
+    /// takes back the images lent to the working copy).
     pub fn fbo_sync_texture(&mut self, texture: u32) {
         if self.draws_into(texture) {
             self.fbo_sync();
+            self.unlend_texture(texture);
         }
     }
 

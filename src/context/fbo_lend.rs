@@ -1,5 +1,5 @@
-//! Renderbuffer storage lent to the working copy of the bound draw object, so that
-//! binding and unbinding an object copies none of it.
+//! Renderbuffer storage and depth texture images lent to the working copy of the bound
+//! draw object, so that binding, unbinding and drawing copy none of it.
 //!
 //! A renderbuffer keeps one colour, depth or stencil buffer per sample plane, in the
 //! working copy's own type and row order (GL's rows, `width` per row). When the working
@@ -12,13 +12,25 @@
 //! framebuffer binding, which take a copy back first ([`Context::unlend_for`]). A loan is
 //! returned only to the storage it came from (`Renderbuffer::storage_id`): a
 //! renderbuffer given new storage or deleted meanwhile keeps its new state, and the lent
-//! buffer is dropped with the working copy. Texture images are never lent: they can be
-//! sampled while attached.
+//! buffer is dropped with the working copy.
+//!
+//! A depth texture image is lent the same way when it is a whole level of the working
+//! copy's size on huge pages (its texels are the depths as little-endian u32, the working
+//! copy's values, so [`HugeBuf::cast`] moves them without a copy): a shadow map is then
+//! drawn in place, where each pass used to write its whole map back (16 MB for MuJoCo's
+//! 2048² maps, 64 MB for 4096², 14% of the showcase scene's samples). A level is moved to
+//! huge pages the first time it is lent. While lent the level's texels are empty: the
+//! texture is incomplete to sampling (a feedback loop, whose result GL leaves undefined),
+//! the fbo_image copies skip it, and every command that reads or changes the texture
+//! directly takes the image back first ([`Context::unlend_texture`], called by
+//! `fbo_touch` and `fbo_sync_texture`). It goes back only to a level that is still empty
+//! and of its size.
 
-use super::fbo::{Attachment, FboState, RbFormat};
+use super::fbo::{Attachment, FboState, RbFormat, TexImage};
 use super::Context;
 use crate::framebuffer::{ColorFormat, Framebuffer};
 use crate::memory::{HugeBuf, Plain};
+use crate::texture::{BaseFormat, TextureState};
 
 /// Which buffer of a renderbuffer's sample plane a loan moved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,13 +43,32 @@ pub enum Part {
     Stencil,
 }
 
-/// A renderbuffer buffer held by the working copy of the bound draw object.
+/// Where a lent buffer came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Owner {
+    /// A renderbuffer: its name and the storage the buffer belongs to
+    /// (`Renderbuffer::storage_id`).
+    Renderbuffer(u32, u64),
+    /// A depth texture image.
+    Texture(TexImage),
+}
+
+impl Owner {
+    /// The attachment that names the owner.
+    fn attachment(self) -> Attachment {
+        match self {
+            Owner::Renderbuffer(name, _) => Attachment::Renderbuffer(name),
+            Owner::Texture(t) => Attachment::Texture(t),
+        }
+    }
+}
+
+/// A renderbuffer buffer or depth texture image held by the working copy of the bound
+/// draw object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Loan {
-    /// The renderbuffer's name.
-    pub rb: u32,
-    /// The storage it came from (`Renderbuffer::storage_id`).
-    pub storage_id: u64,
+    /// Where it came from.
+    pub owner: Owner,
     /// The sample plane (0 for a single-sample renderbuffer), which is also the working
     /// copy's plane that holds it.
     pub plane: usize,
@@ -54,17 +85,59 @@ fn take_into<T: Plain>(from: &mut HugeBuf<T>, to: &mut HugeBuf<T>, n: usize) -> 
     true
 }
 
+/// Lends the depth buffer of working copy `fb` the texels of depth texture image `t` when
+/// they are one whole level of its size (moving them onto huge pages the first time);
+/// the loan made.
+fn lend_texture(textures: &mut TextureState, fb: &mut Framebuffer, t: TexImage) -> Option<Loan> {
+    let img = t.find_mut(textures)?;
+    let n = fb.width * fb.height;
+    let whole = t.layer == 0 && img.texels.len() == n && n > 0;
+    if !whole || img.base != BaseFormat::Depth || img.floats.is_some() {
+        return None;
+    }
+    if (img.width, img.height) != (fb.width, fb.height) {
+        return None;
+    }
+    if !img.texels.is_mapped() {
+        let mut m = HugeBuf::filled(n, [0u8; 4]);
+        if !m.is_mapped() {
+            return None;
+        }
+        m.copy_from_slice(&img.texels);
+        img.texels = m;
+    }
+    let texels = std::mem::replace(&mut img.texels, HugeBuf::empty());
+    match texels.cast::<u32>() {
+        Ok(d) => fb.depth = d,
+        Err(t) => {
+            img.texels = t;
+            return None;
+        }
+    }
+    Some(Loan {
+        owner: Owner::Texture(t),
+        plane: 0,
+        part: Part::Depth,
+    })
+}
+
 /// Lends working copy `fb` (sample plane `plane`) the buffer of renderbuffer image `a` in
-/// its role (`stencil`: the stencil attachment) when the layouts agree; the loan made.
+/// its role (`stencil`: the stencil attachment), or the texels of depth texture image `a`,
+/// when the layouts agree; the loan made.
 pub(super) fn lend(
     fbo: &mut FboState,
+    textures: &mut TextureState,
     fb: &mut Framebuffer,
     a: Attachment,
     plane: usize,
     stencil: bool,
 ) -> Option<Loan> {
-    let Attachment::Renderbuffer(name) = a else {
-        return None;
+    let name = match a {
+        Attachment::Renderbuffer(name) => name,
+        Attachment::Texture(t) if !stencil && plane == 0 => {
+            return lend_texture(textures, fb, t);
+        }
+        _ => return None,
     };
     let rb = fbo.renderbuffers.get_mut(&name)?.as_mut()?;
     if (rb.width, rb.height) != (fb.width, fb.height) {
@@ -87,8 +160,7 @@ pub(super) fn lend(
         _ => return None,
     };
     Some(Loan {
-        rb: name,
-        storage_id: rb.storage_id,
+        owner: Owner::Renderbuffer(name, rb.storage_id),
         plane: p,
         part,
     })
@@ -106,11 +178,49 @@ fn give_back<T: Plain>(from: &mut HugeBuf<T>, to: Option<&mut HugeBuf<T>>, keep:
     }
 }
 
+/// Moves lent depth texels back from `from` into texture image `t` when its level is
+/// still empty and of their size (`keep`: leaves a copy in `from`).
+fn give_back_texture(
+    textures: &mut TextureState,
+    from: &mut HugeBuf<u32>,
+    t: TexImage,
+    keep: bool,
+) {
+    let Some(img) = t.find_mut(textures) else {
+        return;
+    };
+    let n = from.len();
+    if !img.texels.is_empty() || n == 0 || img.width * img.height != n {
+        return;
+    }
+    let d = if keep {
+        from.clone()
+    } else {
+        std::mem::replace(from, HugeBuf::empty())
+    };
+    // A clone of a large buffer is mapped too, so the cast holds; a heap one would be
+    // copied value by value.
+    img.texels = d
+        .cast::<[u8; 4]>()
+        .unwrap_or_else(|d| d.iter().map(|v| v.to_le_bytes()).collect());
+}
+
 /// Ends loan `l` of working copy `fb`: the buffer goes back to its renderbuffer in
-/// `rbs` (a copy of it with `keep`) when that still has the storage it came from.
-fn give_back_loan(rbs: &mut Renderbuffers, fb: &mut Framebuffer, l: Loan, keep: bool) {
-    let rb = rbs.get_mut(&l.rb).and_then(|r| r.as_mut());
-    let Some(rb) = rb.filter(|rb| rb.storage_id == l.storage_id) else {
+/// `rbs` (a copy of it with `keep`) when that still has the storage it came from, or to
+/// its texture image in `textures`.
+fn give_back_loan(
+    rbs: &mut Renderbuffers,
+    textures: &mut TextureState,
+    fb: &mut Framebuffer,
+    l: Loan,
+    keep: bool,
+) {
+    let (name, storage_id) = match l.owner {
+        Owner::Renderbuffer(name, id) => (name, id),
+        Owner::Texture(t) => return give_back_texture(textures, &mut fb.depth, t, keep),
+    };
+    let rb = rbs.get_mut(&name).and_then(|r| r.as_mut());
+    let Some(rb) = rb.filter(|rb| rb.storage_id == storage_id) else {
         return;
     };
     match l.part {
@@ -150,7 +260,7 @@ impl Context {
                 k => self.fbo.ms_planes.get_mut(k - 1),
             };
             if let Some(fb) = fb {
-                give_back_loan(&mut self.fbo.renderbuffers, fb, l, keep);
+                give_back_loan(&mut self.fbo.renderbuffers, &mut self.textures, fb, l, keep);
             }
         }
     }
@@ -162,9 +272,20 @@ impl Context {
         self.end_loans(loans, false);
     }
 
-    /// Before object `name` is read through another binding: the renderbuffers it shares
-    /// with the draw object's working copy get their lent buffers back as copies (the
-    /// working copy keeps drawing into its own).
+    /// Before texture `texture` is read or changed directly: its images lent to the
+    /// working copy go back to it as copies (the working copy keeps drawing into its own,
+    /// which `write_back` then copies as it does an image that was never lent).
+    pub(super) fn unlend_texture(&mut self, texture: u32) {
+        let (give, keep): (Vec<Loan>, Vec<Loan>) = std::mem::take(&mut self.fbo.loans)
+            .into_iter()
+            .partition(|l| matches!(l.owner, Owner::Texture(t) if t.name == texture));
+        self.fbo.loans = keep;
+        self.end_loans(give, true);
+    }
+
+    /// Before object `name` is read through another binding: the renderbuffers and
+    /// texture images it shares with the draw object's working copy get their lent
+    /// buffers back as copies (the working copy keeps drawing into its own).
     pub(super) fn unlend_for(&mut self, name: u32) {
         let Some(f) = self.fbo.object(name) else {
             return;
@@ -177,7 +298,7 @@ impl Context {
             .collect();
         let (give, keep): (Vec<Loan>, Vec<Loan>) = std::mem::take(&mut self.fbo.loans)
             .into_iter()
-            .partition(|l| attached.contains(&Attachment::Renderbuffer(l.rb)));
+            .partition(|l| attached.contains(&l.owner.attachment()));
         self.fbo.loans = keep;
         self.end_loans(give, true);
     }
@@ -212,7 +333,13 @@ impl Context {
         let mut planes = planes;
         for l in loans {
             if let Some(fb) = planes.get_mut(l.plane) {
-                give_back_loan(&mut self.fbo.renderbuffers, fb, l, false);
+                give_back_loan(
+                    &mut self.fbo.renderbuffers,
+                    &mut self.textures,
+                    fb,
+                    l,
+                    false,
+                );
             }
         }
         Some(r)

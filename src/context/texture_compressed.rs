@@ -192,7 +192,7 @@ impl Context {
         };
         if proxy {
             self.tex_object_mut(t, true).face_levels_mut(face)[level] =
-                dims_ok.then(|| header(Vec::new(), None));
+                dims_ok.then(|| header(Vec::new().into(), None));
             return Ok(());
         }
         if !dims_ok {
@@ -202,7 +202,7 @@ impl Context {
         let texels = compressed::decode(&info, w, h, &blocks);
         let obj = self.tex_object_mut(t, false);
         obj.stencil.remove(&(face, level));
-        obj.face_levels_mut(face)[level] = Some(header(texels, Some(blocks)));
+        obj.face_levels_mut(face)[level] = Some(header(texels.into(), Some(blocks)));
         maybe_generate(obj, level);
         Ok(())
     }

@@ -203,7 +203,7 @@ pub(crate) fn new_level(
         internal_format: internal,
         base,
         storage,
-        texels,
+        texels: texels.into(),
         blocks: None,
         floats: None,
     }

@@ -50,7 +50,7 @@ pub fn complete_range(obj: &TextureObject) -> Option<(usize, usize)> {
         for l in base..=last {
             let img = levels.get(l)?.as_ref()?;
             let size = (b.width >> (l - base)).max(1);
-            if img.width != size || img.height != size || img.base != b.base {
+            if img.width != size || img.height != size || img.base != b.base || !img.has_texels(1) {
                 return None;
             }
         }

@@ -127,8 +127,8 @@ mod tests {
         );
         assert_eq!(l1.texels, want1.texels);
         assert_eq!(
-            levels[2].as_ref().unwrap().texels,
-            vec![[112, 95, 136, 133]]
+            levels[2].as_ref().unwrap().texels[..],
+            [[112, 95, 136, 133]]
         );
     }
 
@@ -143,12 +143,12 @@ mod tests {
         let mut levels = vec![Some(lv(5, 3, &l0)), None, None];
         generate(&mut levels, 0, 1000);
         assert_eq!(
-            levels[1].as_ref().unwrap().texels,
-            vec![[128, 101, 173, 61], [94, 102, 212, 209]]
+            levels[1].as_ref().unwrap().texels[..],
+            [[128, 101, 173, 61], [94, 102, 212, 209]]
         );
         assert_eq!(
-            levels[2].as_ref().unwrap().texels,
-            vec![[111, 102, 193, 135]]
+            levels[2].as_ref().unwrap().texels[..],
+            [[111, 102, 193, 135]]
         );
     }
 }

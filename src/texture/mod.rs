@@ -290,8 +290,9 @@ pub struct Level {
     pub base: BaseFormat,
     /// The storage format (reported component sizes, upload precision).
     pub storage: Storage,
-    /// `width * height` texels.
-    pub texels: Vec<[u8; 4]>,
+    /// `width * height` texels (on huge pages when large: a depth image can then be lent
+    /// to a framebuffer object's working copy, see `context::fbo_lend`).
+    pub texels: crate::memory::HugeBuf<[u8; 4]>,
     /// The blocks of a compressed image as the program gave them (see [`compressed`]);
     /// `None` for every other image.
     pub blocks: Option<Vec<u8>>,
@@ -311,10 +312,18 @@ impl Level {
             internal_format: src.internal_format,
             base: src.base,
             storage: src.storage,
-            texels,
+            texels: texels.into(),
             blocks: None,
             floats: None,
         }
+    }
+
+    /// Whether the level holds all its texels for `depth` slices: not while a framebuffer
+    /// object's working copy holds them on loan (see `context::fbo_lend`), when the
+    /// texture is incomplete.
+    #[inline]
+    pub fn has_texels(&self, depth: usize) -> bool {
+        self.texels.len() >= self.width * self.height * depth
     }
 
     /// The texel at (x, y), which must be in range.
@@ -525,7 +534,7 @@ impl TextureObject {
         let base = p.base_level as usize;
         let b = self.level(base)?;
         let d = depth(base);
-        if b.width == 0 || b.height == 0 || d == 0 {
+        if b.width == 0 || b.height == 0 || d == 0 || !b.has_texels(d) {
             return None;
         }
         let log2 = usize::BITS - 1 - b.width.max(b.height).max(d).leading_zeros();
@@ -542,6 +551,7 @@ impl TextureObject {
                 || img.height != (b.height >> k).max(1)
                 || depth(l) != (d >> k).max(1)
                 || img.base != b.base
+                || !img.has_texels(depth(l))
             {
                 return None;
             }

@@ -11,7 +11,7 @@ pub(crate) fn rgba_level(w: usize, h: usize, texels: Vec<[u8; 4]>) -> Level {
         internal_format: 0x1908,
         base: BaseFormat::Rgba,
         storage: Storage::of_base(BaseFormat::Rgba),
-        texels,
+        texels: texels.into(),
         blocks: None,
         floats: None,
     }

@@ -124,7 +124,7 @@ fn pack_round_trip() {
         internal_format: GL_RGBA,
         base: BaseFormat::Rgba,
         storage: crate::texture::Storage::of_base(BaseFormat::Rgba),
-        texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]],
+        texels: vec![[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]].into(),
         blocks: None,
         floats: None,
     };
@@ -133,12 +133,12 @@ fn pack_round_trip() {
     pack_into(&ps, &cf, &img, &mut out);
     assert_eq!(&out[..4], &[3, 2, 1, 4]);
     let back = unpack_base(&ps, &cf, BaseFormat::Rgba, (3, 1), &out);
-    assert_eq!(back, img.texels);
+    assert_eq!(back, img.texels[..]);
     let f = ClientFormat::new(GL_RGBA, GL_FLOAT).unwrap();
     let mut outf = vec![0f32; 12];
     pack_into(&ps, &f, &img, &mut outf);
     let back = unpack_base(&ps, &f, BaseFormat::Rgba, (3, 1), &outf);
-    assert_eq!(back, img.texels);
+    assert_eq!(back, img.texels[..]);
 }
 
 /// (internal format, client format, client type) and the component sizes Mesa 22.3 stores;
