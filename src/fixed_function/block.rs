@@ -11,6 +11,7 @@ use super::fog::vertex_fog_coord;
 use super::lighting::eye_position;
 use super::texgen::generate;
 use super::transform::VertexStage;
+use crate::geometry::boxes::{ClipPlanes, PositionBoxes, BOX_VERTS};
 use crate::geometry::source::{VertexSlot, VertexSource};
 use crate::geometry::{user_clip_mask, ClipMask, ClipVertex, VARY_FOG, VARY_SPEC, VARY_TEX};
 
@@ -248,6 +249,53 @@ impl VertexStage {
     /// The clip masks of vertices `first..first + out.len()` of `verts` into `out`
     /// ([`VertexStage::clip_masks`] of a part of a draw).
     pub fn clip_masks_into<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        out: &mut [ClipMask],
+    ) {
+        match verts.position_boxes() {
+            // User planes are not boxed: their vertices are transformed one by one.
+            Some(pb) if self.ucp_enabled == 0 => self.clip_masks_boxed(verts, first, out, pb),
+            _ => self.clip_masks_exact(verts, first, out),
+        }
+    }
+
+    /// [`VertexStage::clip_masks_into`] through the source's boxes: each run of positions
+    /// whose box lies outside some frustum plane gets those planes' bits (a subset of each
+    /// of its vertices' own masks, see [`crate::geometry::boxes`]), and the other runs
+    /// their exact masks.
+    fn clip_masks_boxed<S: VertexSource + ?Sized>(
+        &self,
+        verts: &S,
+        first: usize,
+        out: &mut [ClipMask],
+        pb: PositionBoxes<'_>,
+    ) {
+        let planes = ClipPlanes::new(&self.mvp.0, self.viewport.halfz);
+        let n = out.len();
+        let mut i = 0;
+        while i < n {
+            let at = pb.first + first + i;
+            let k = at / BOX_VERTS;
+            let end = (i + (k + 1) * BOX_VERTS - at).min(n);
+            let bits = pb
+                .boxes
+                .get(k)
+                .copied()
+                .flatten()
+                .map_or(0, |b| planes.outside(&b));
+            if bits != 0 {
+                out[i..end].fill(bits);
+            } else {
+                self.clip_masks_exact(verts, first + i, &mut out[i..end]);
+            }
+            i = end;
+        }
+    }
+
+    /// [`VertexStage::clip_masks_into`] one position at a time.
+    fn clip_masks_exact<S: VertexSource + ?Sized>(
         &self,
         verts: &S,
         first: usize,

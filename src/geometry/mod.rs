@@ -3,12 +3,14 @@
 //! clipping ([`clip`]), the draw module's cull, offset and unfilled stages ([`unfilled`]),
 //! triangle setup ([`setup`], eight at a time in [`setup8`]), the primitive stages of
 //! feedback and selection ([`feedback`]), and trivial rejection from positions alone,
-//! before the rest of the vertex stage ([`reject`]).
+//! before the rest of the vertex stage ([`reject`]), whole runs of a display list's
+//! positions at a time where their boxes allow ([`boxes`]).
 //!
 //! Vertices travel as [`ClipVertex`]: clip-space position, window position (x, y in
 //! y-down raster space, z, 1/w) and up to [`MAX_VARY`] floats of varyings (colour first).
 
 pub mod assemble;
+pub mod boxes;
 pub mod clip;
 pub mod feedback;
 pub mod fetch;

@@ -61,6 +61,11 @@ pub trait VertexSource: Sync {
     fn float_positions(&self) -> Option<FloatPositions<'_>> {
         None
     }
+    /// Boxes around runs of the positions ([`super::boxes`]), when the source keeps them
+    /// (a compiled display list's).
+    fn position_boxes(&self) -> Option<super::boxes::PositionBoxes<'_>> {
+        None
+    }
 }
 
 impl VertexSource for [VertexIn] {

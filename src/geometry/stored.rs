@@ -4,6 +4,7 @@
 //! attributes the node does not set taken from one base vertex (the current values when
 //! the node is replayed).
 
+use super::boxes::{boxes_of, PosBox, PositionBoxes};
 use super::fetch::VertexIn;
 use super::source::{VertexSlot, VertexSource};
 use crate::pipe::{CurrentAttribs, MAX_TEXTURE_UNITS};
@@ -39,6 +40,8 @@ pub struct StoredVerts {
     edge: Vec<bool>,
     /// Each stored unit and its coordinates.
     tex: Vec<(usize, Vec<[f32; 4]>)>,
+    /// The boxes of the positions' runs ([`boxes_of`]), made by [`Self::finish`].
+    boxes: Vec<Option<PosBox>>,
 }
 
 impl StoredVerts {
@@ -79,12 +82,14 @@ impl StoredVerts {
             normal: Vec::new(),
             fog: Vec::new(),
             edge: Vec::new(),
+            boxes: Vec::new(),
         }
     }
 
     /// Keeps each attribute whose vertices all have the same value (bit for bit) once
-    /// instead of per vertex; call when every vertex is pushed.
+    /// instead of per vertex, and boxes the positions; call when every vertex is pushed.
     pub fn finish(&mut self) {
+        self.boxes = boxes_of(&self.pos);
         fn same<T: Copy, B: PartialEq>(v: &[T], bits: impl Fn(T) -> B) -> bool {
             v.first()
                 .is_some_and(|&a| v.iter().all(|&b| bits(b) == bits(a)))
@@ -145,6 +150,8 @@ impl StoredVerts {
 
     /// Appends `v`'s position and stored attributes.
     pub fn push(&mut self, v: &VertexIn) {
+        // Boxes cover the positions `finish` saw.
+        self.boxes.clear();
         self.pos.push(v.pos);
         let s = self.set;
         if s & COLOR != 0 {
@@ -169,6 +176,7 @@ impl StoredVerts {
 
     /// Keeps the first `n` vertices.
     pub fn truncate(&mut self, n: usize) {
+        self.boxes.clear();
         self.pos.truncate(n);
         self.color.truncate(n);
         self.secondary.truncate(n);
@@ -304,6 +312,18 @@ impl VertexSource for StoredSource<'_> {
     #[inline]
     fn position(&self, i: usize) -> [f32; 4] {
         self.verts.pos[self.start + i]
+    }
+
+    fn position_boxes(&self) -> Option<PositionBoxes<'_>> {
+        // Boxes made before the last push (none are: `finish` comes after) would not
+        // cover the positions.
+        let b = &self.verts.boxes;
+        (b.len() == self.verts.pos.len().div_ceil(super::boxes::BOX_VERTS)).then_some(
+            PositionBoxes {
+                first: self.start,
+                boxes: b,
+            },
+        )
     }
 
     #[inline]
