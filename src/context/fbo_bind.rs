@@ -11,8 +11,9 @@
 //! - Renderbuffer buffers laid out as the working copy's (RGBA8 and RGBA sRGB colour,
 //!   every depth and stencil format, of the working copy's size) are lent to it, every
 //!   sample plane of a multisample one too: moved in on assembly and back when the object
-//!   is parked, never copied ([`super::fbo_lend`]).
-//! - The other images (texture images, RGB, legacy and wide colour) are copied in
+//!   is parked, never copied ([`super::fbo_lend`]). So is a depth texture level of the
+//!   working copy's size (a shadow map), while the texture is not sampled.
+//! - The other images (colour texture images, RGB, legacy and wide colour) are copied in
 //!   ([`super::fbo_image::load`]) and written back ([`super::fbo_image::store`]): only the
 //!   region the working copy covers, and only when something was drawn.
 //! - An object's working copy, with its sample planes, is kept between binds

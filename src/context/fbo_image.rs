@@ -2,9 +2,10 @@
 //! copies between them and the working copy ([`load`] on assembly, [`store`] on writing
 //! back); see [`super::fbo_bind`].
 //!
-//! A renderbuffer buffer that is lent to the working copy (`super::fbo_lend`) is empty
-//! in the renderbuffer meanwhile: the copies skip every image part shorter than the rows
-//! they would touch, so a lent or missing buffer is never read or written.
+//! A renderbuffer buffer or depth texture level that is lent to the working copy
+//! (`super::fbo_lend`) is empty in its owner meanwhile: the copies skip every image part
+//! shorter than the rows they would touch, so a lent or missing buffer is never read or
+//! written.
 
 use super::fbo::{Attachment, FboState, RbFormat};
 use crate::framebuffer::{ColorFormat, Framebuffer, WideKind};
@@ -166,9 +167,10 @@ pub(super) fn load(fb: &mut Framebuffer, img: ImageMut<'_>, iw: usize, stencil: 
     }
 }
 
-/// Pixels from which a depth texture's write-back is shared by the thread pool: MuJoCo
-/// writes its two 2048² shadow maps back once a frame each, 16 MB apiece, on a thread
-/// that otherwise waits for nothing else (2.3% of its frame's samples on one thread).
+/// Pixels from which a depth texture's write-back is shared by the thread pool. A whole
+/// depth level of the working copy's size is lent instead (`super::fbo_lend`: MuJoCo's
+/// shadow maps); this is for the others, such as a map larger than the object's other
+/// attachments, which 16 MB of write-back would keep on one thread.
 const PAR_STORE: usize = 1 << 20;
 
 /// [`store`] of the working copy's depth into depth texels `px` (`iw` per row, covering
