@@ -219,11 +219,21 @@ unsafe impl Send for Work {}
 impl Work {
     /// Draws unclaimed bands until none is left, then adds their counters to the work's.
     fn help(&self) {
+        self.help_while(|| true);
+    }
+
+    /// Draws unclaimed bands, one at a time while `more()` holds, until none is left; adds
+    /// their counters to the work's. Returns whether unclaimed bands are left.
+    fn help_while(&self, more: impl Fn() -> bool) -> bool {
         let units = &self.units[..];
         let mut s = Stats::default();
-        loop {
+        let mut left = true;
+        while more() {
             let b = self.next.fetch_add(1, Ordering::Relaxed);
-            let Some(cell) = self.bands.get(b) else { break };
+            let Some(cell) = self.bands.get(b) else {
+                left = false;
+                break;
+            };
             // SAFETY: band `b` was claimed by this call alone (see `Work`'s `Sync`).
             let band = unsafe { &mut *cell.0.get() };
             let bin = &self.batch.bins[b];
@@ -246,6 +256,7 @@ impl Work {
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .add_pixels(&s);
+        left && self.next.load(Ordering::Relaxed) < self.bands.len()
     }
 }
 
@@ -651,6 +662,29 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
     /// draws bands on all the pool's threads but one (the cores are shared with this
     /// thread); when this thread has to wait for the batch it draws bands too.
     fn launch(&mut self) {
+        let work = self.take_work();
+        post_work(&self.job, &work);
+        self.inflight = Some(work);
+    }
+
+    /// The current batch as a [`Work`] in flight: this thread draws its bands while the
+    /// pool's task is busy (setting up an offloaded half, [`side`]), and hands the rest
+    /// to the pool as soon as the task is done. Returns whether it handed any over (then
+    /// the task was done first); `wait` takes the work back either way.
+    fn draw_while_busy(&mut self) -> bool {
+        let work = self.take_work();
+        let job = &self.job;
+        let left = work.help_while(|| job.busy.load(Ordering::Acquire));
+        if left {
+            post_work(job, &work);
+        }
+        self.inflight = Some(work);
+        left
+    }
+
+    /// The current batch as a [`Work`] over the framebuffer's bands (the spare batch
+    /// becomes the current one).
+    fn take_work(&mut self) -> Arc<Work> {
         fn shareable<T: Sync>() {}
         fn sendable<T: Send>() {}
         shareable::<UnitPlan<'static>>();
@@ -666,19 +700,26 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
         );
         // SAFETY: this rasterizer keeps `self.fb` borrowed and does not touch it until
         // `wait` has taken the work back from the job.
-        let work = unsafe { hand_over(&self.job, batch, self.fb, own) };
-        self.inflight = Some(work);
+        unsafe { make_work(batch, self.fb, own) }
     }
 }
 
-/// Hands `batch` to `job` as a [`Work`] over `fb`'s bands, whose own triangles are drawn
-/// with `own` (plan, units, region, varyings), and returns it.
+/// Hands `work` to `job`, drawn by all the pool's threads but one when this thread
+/// helps ([`Tuning::pool_help`](crate::tuning::Tuning)).
+fn post_work(job: &Arc<Job>, work: &Arc<Work>) {
+    let tune = crate::tuning::tuning();
+    let threads = crate::cpu::threads();
+    let helpers = if tune.pool_help { threads - 1 } else { threads }.max(1);
+    job.hand_over(Task::Bands(Arc::clone(work)), helpers, tune.pool_stay);
+}
+
+/// `batch` as a [`Work`] over `fb`'s bands, whose own triangles are drawn with `own`
+/// (plan, units, region, varyings).
 ///
 /// # Safety
-/// `fb` must not be touched (nor dropped) until the job has finished the work (`finish`
-/// or `Rasterizer::wait` takes it back): the bands reach it through raw pointers.
-unsafe fn hand_over(
-    job: &Arc<Job>,
+/// `fb` must not be touched (nor dropped) until the work is drawn and taken back
+/// (`finish` or `Rasterizer::wait`): the bands reach it through raw pointers.
+unsafe fn make_work(
     batch: Batch,
     fb: &mut Framebuffer,
     own: (FragPlan, Vec<UnitPlan<'static>>, [i64; 4], usize),
@@ -701,9 +742,6 @@ unsafe fn hand_over(
         nvary,
         stats: Mutex::new(Stats::default()),
     });
-    let threads = crate::cpu::threads();
-    let helpers = if tune.pool_help { threads - 1 } else { threads }.max(1);
-    job.hand_over(Task::Bands(Arc::clone(&work)), helpers, tune.pool_stay);
     work
 }
 
@@ -856,7 +894,8 @@ fn draw_pending(
         // Every triangle is in a segment with its own draw's plan: the batch's own draw
         // has none (its plan and units are never used).
         // SAFETY: `fb` stays borrowed here until `finish` has waited for the job.
-        let work = unsafe { hand_over(job, b, fb, (plan, Vec::new(), region, nvary)) };
+        let work = unsafe { make_work(b, fb, (plan, Vec::new(), region, nvary)) };
+        post_work(job, &work);
         finish(Some(work), job, spin, stats);
         return;
     }

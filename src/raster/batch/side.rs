@@ -16,7 +16,12 @@
 //! half to that task, which bins it into a batch of its own ([`Binner`]). Meanwhile the
 //! draw's thread sets up the first half into its rasterizer, keeping its full batches
 //! (`Rasterizer::hold`): handing one to the pool would wait for the pool's half, and
-//! MuJoCo's lit floor spent an eighth of its draw that way. Then it appends the
+//! MuJoCo's lit floor spent an eighth of its draw that way. If the pool is still setting
+//! up when the draw's thread is done with its half, the draw's thread draws its batch's
+//! bands meanwhile (they come first in primitive order) and hands the bands left to the
+//! pool once the pool's half is done (`Rasterizer::draw_while_busy`); it idled through
+//! an eighth of each lit floor draw waiting there (humanoid s0, 7 alternating runs:
+//! 37.01 → 35.02 ms). Then it appends the
 //! second half's triangles after its own ([`Rasterizer::append`]), so the rasterizer sees
 //! every triangle in primitive order and the images are those of one thread. If the pool
 //! task has not begun the half by then, the draw's thread sets it up itself (unless
@@ -137,6 +142,15 @@ impl Rasterizer<'_, '_> {
             let mine = !wait && !claimed.swap(true, Ordering::AcqRel);
             if mine {
                 main(self, stats, true);
+            }
+            if posted && !mine && self.tune.pool_help && !self.batch.heads.is_empty() {
+                // The pool thread is still setting up its half: draw the bands of this
+                // half's batch meanwhile (they come first in primitive order), handing
+                // the rest to the pool once it is done (which waits for the side task).
+                if !self.draw_while_busy() {
+                    // Every band is drawn and the pool still sets up: wait for it.
+                    job.wait_done(self.tune.pool_spin);
+                }
             }
             if posted && self.launches == launches {
                 // The pool task is done with the closure (and with the half it claimed).
