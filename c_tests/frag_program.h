@@ -81,6 +81,61 @@ static inline int frag_end(FILE *out, const char *name, unsigned char *buf, OSMe
     return 0;
 }
 
+/* Sets sampler uniform `name` of `p` to unit `u` (and leaves `p` current). */
+static inline void frag_set_unit(GLuint p, const char *name, int u)
+{
+    glUseProgram(p);
+    glUniform1i(glGetUniformLocation(p, name), u);
+}
+
+/* An RGBA image of w x h with a seeded pattern (checks and noise). */
+static inline void frag_pattern(unsigned char *img, int w, int h, int salt)
+{
+    int x, y;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            unsigned char *p = img + 4 * (y * w + x);
+            int check = ((x / 4) ^ (y / 4) ^ salt) & 1;
+            p[0] = (unsigned char)(check ? 230 : 40 + 3 * x);
+            p[1] = (unsigned char)((x * 255) / (w > 1 ? w - 1 : 1));
+            p[2] = (unsigned char)((y * 255) / (h > 1 ? h - 1 : 1));
+            p[3] = (unsigned char)(128 + (int)(sgl_randf() * 127.0f));
+        }
+}
+
+/* Binds `tex` as a 16x16 LINEAR cube map of frag_pattern faces (salted by
+ * face; `img` holds at least 16x16 RGBA). */
+static inline void frag_cube_texture(GLuint tex, unsigned char *img)
+{
+    int face;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    for (face = 0; face < 6; face++) {
+        frag_pattern(img, 16, 16, face);
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, 16, 16, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, img);
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+/* Binds `tex` as a 32x32 LINEAR DEPTH_COMPONENT24 2D texture (a saddle of
+ * depths around 0.5) compared with GL_LEQUAL. */
+static inline void frag_depth_texture(GLuint tex)
+{
+    static float depth[32 * 32];
+    int x, y;
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (y = 0; y < 32; y++)
+        for (x = 0; x < 32; x++)
+            depth[y * 32 + x] = 0.5f + 0.4f * (float)((x - 16) * (y - 12)) / 256.0f;
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 32, 32, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                 depth);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
 /* A triangle with per-vertex colours and texture coordinates (sets 0 and 1). */
 static inline void frag_tri(const float v[3][3], const float c[3][4], const float t[3][4])
 {

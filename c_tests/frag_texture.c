@@ -92,28 +92,6 @@ static const char *FS_UV =
     "  gl_FragColor = texture2D(a, uv) * 0.5 + textureCube(c, dir) * 0.5;\n"
     "}\n";
 
-/* Sets sampler uniform `name` of `p` to unit `u`. */
-static void set_unit(GLuint p, const char *name, int u)
-{
-    glUseProgram(p);
-    glUniform1i(glGetUniformLocation(p, name), u);
-}
-
-/* An RGBA image of w x h with a seeded pattern (checks and noise). */
-static void pattern(unsigned char *img, int w, int h, int salt)
-{
-    int x, y;
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++) {
-            unsigned char *p = img + 4 * (y * w + x);
-            int check = ((x / 4) ^ (y / 4) ^ salt) & 1;
-            p[0] = (unsigned char)(check ? 230 : 40 + 3 * x);
-            p[1] = (unsigned char)((x * 255) / (w > 1 ? w - 1 : 1));
-            p[2] = (unsigned char)((y * 255) / (h > 1 ? h - 1 : 1));
-            p[3] = (unsigned char)(128 + (int)(sgl_randf() * 127.0f));
-        }
-}
-
 /* A perspective quad over the view with texture coordinates (s, t) in
  * [0,1]^2, r rising from 0.2 to 0.8 across it (the shadow reference), q 1. */
 static void quad(void)
@@ -137,17 +115,16 @@ int main(int argc, char **argv)
     unsigned char *buf;
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char img[64 * 64 * 4], vol[8 * 8 * 8 * 4];
-    static float depth[32 * 32];
     GLuint tex[6];
     GLuint two, proj, cube3d, shadow, branch, p130, uvp;
-    int level, size, face, i, x, y;
+    int level, size, i;
 
     glGenTextures(6, tex);
     /* unit 0: mipmapped 2D, trilinear, REPEAT */
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, tex[0]);
     for (level = 0, size = 64; size >= 1; level++, size /= 2) {
-        pattern(img, size, size, level);
+        frag_pattern(img, size, size, level);
         glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -155,38 +132,22 @@ int main(int argc, char **argv)
     /* unit 1: 2D RGB, NEAREST, CLAMP_TO_EDGE; also a 1D texture */
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, tex[1]);
-    pattern(img, 16, 16, 1);
+    frag_pattern(img, 16, 16, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_1D, tex[5]);
-    pattern(img, 32, 1, 0);
+    frag_pattern(img, 32, 1, 0);
     glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     /* unit 2: cube map, LINEAR */
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, tex[2]);
-    for (face = 0; face < 6; face++) {
-        pattern(img, 16, 16, face);
-        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, 16, 16, 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, img);
-    }
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    frag_cube_texture(tex[2], img);
     /* unit 3: depth texture with compare mode */
     glActiveTexture(GL_TEXTURE3);
-    glBindTexture(GL_TEXTURE_2D, tex[3]);
-    for (y = 0; y < 32; y++)
-        for (x = 0; x < 32; x++)
-            depth[y * 32 + x] = 0.5f + 0.4f * (float)((x - 16) * (y - 12)) / 256.0f;
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 32, 32, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                 depth);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    frag_depth_texture(tex[3]);
     /* unit 4: 3D, LINEAR, REPEAT */
     glActiveTexture(GL_TEXTURE4);
     glBindTexture(GL_TEXTURE_3D, tex[4]);
@@ -199,26 +160,26 @@ int main(int argc, char **argv)
     glActiveTexture(GL_TEXTURE0);
 
     two = frag_program(FS_TWO);
-    set_unit(two, "a", 0);
-    set_unit(two, "b", 1);
+    frag_set_unit(two, "a", 0);
+    frag_set_unit(two, "b", 1);
     proj = frag_program(FS_PROJ);
-    set_unit(proj, "a", 0);
-    set_unit(proj, "b", 1);
+    frag_set_unit(proj, "a", 0);
+    frag_set_unit(proj, "b", 1);
     cube3d = frag_program(FS_CUBE3D);
-    set_unit(cube3d, "c", 2);
-    set_unit(cube3d, "v", 4);
-    set_unit(cube3d, "o", 1);
+    frag_set_unit(cube3d, "c", 2);
+    frag_set_unit(cube3d, "v", 4);
+    frag_set_unit(cube3d, "o", 1);
     shadow = frag_program(FS_SHADOW);
-    set_unit(shadow, "d", 3);
+    frag_set_unit(shadow, "d", 3);
     branch = frag_program(FS_BRANCH);
-    set_unit(branch, "a", 0);
-    set_unit(branch, "e", 5);
+    frag_set_unit(branch, "a", 0);
+    frag_set_unit(branch, "e", 5);
     p130 = frag_program(FS_130);
-    set_unit(p130, "a", 0);
-    set_unit(p130, "d", 3);
+    frag_set_unit(p130, "a", 0);
+    frag_set_unit(p130, "d", 3);
     uvp = vert_program(VS_UV, FS_UV, NULL);
-    set_unit(uvp, "a", 0);
-    set_unit(uvp, "c", 2);
+    frag_set_unit(uvp, "a", 0);
+    frag_set_unit(uvp, "c", 2);
 
     glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -241,8 +202,8 @@ int main(int argc, char **argv)
     glUseProgram(uvp);
     vert_random_tris(10);
     /* the samplers swapped between draws */
-    set_unit(two, "a", 1);
-    set_unit(two, "b", 0);
+    frag_set_unit(two, "a", 1);
+    frag_set_unit(two, "b", 0);
     frag_random_tris(6);
     glUseProgram(0);
     frag_random_tris(6);

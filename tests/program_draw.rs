@@ -157,12 +157,11 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
-    // A texture lookup at coordinates computed in the shader does not lower: nothing
-    // drawn, counted.
+    // A texture lookup with a bias does not lower yet: nothing drawn, counted.
     let pt = program(
         None,
         "uniform sampler2D t;
-         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy * 2.0); }",
+         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy * 2.0, 0.5); }",
     );
     glUseProgram(pt);
     glRectf(-1.0, -1.0, 1.0, 1.0);
@@ -170,11 +169,13 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s4.program_draws_refused - s3.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
-    // At a varying it draws; unit 0 has no texture, so the lookup gives (0, 0, 0, 1).
+    // At a varying, or at computed coordinates, it draws; unit 0 has no texture, so the
+    // lookups give (0, 0, 0, 1).
     let pu = program(
         None,
         "uniform sampler2D t;
-         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy) + vec4(0.0, 1.0, 0.0, 0.0); }",
+         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy) * 0.5
+             + texture2D(t, gl_TexCoord[0].yx * 2.0) * 0.5 + vec4(0.0, 1.0, 0.0, 0.0); }",
     );
     glUseProgram(pu);
     glRectf(-1.0, -1.0, 1.0, 1.0);

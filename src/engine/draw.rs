@@ -13,7 +13,7 @@
 //! does; [`Walk::end`] runs the last batch.
 
 use super::cache;
-use super::exec::{ChunkIn, Io, Program, Scratch, MAX_BATCH};
+use super::exec::{ChunkIn, Io, Program, Scratch, TexSampler, MAX_BATCH};
 use super::ff::FfState;
 use super::lower::planes_into;
 use crate::fragment::span::{TexLanes, LANES};
@@ -189,6 +189,20 @@ fn target_ok(fb: &Target<'_>) -> bool {
         )
 }
 
+/// The live bits of 8 lanes (bit i: lane i).
+#[inline]
+fn bits_of(live: &[bool; LANES]) -> u8 {
+    live.iter()
+        .enumerate()
+        .fold(0u8, |b, (i, &on)| b | u8::from(on) << i)
+}
+
+/// The index in the buffers of pixel `x` of row `py`.
+#[inline]
+fn idx_of(fb: &Target<'_>, py: usize, x: usize) -> usize {
+    (py - fb.y0) * fb.width + x
+}
+
 impl Walk {
     /// The walk of a triangle drawn with `plan` and `units` into `fb` (`persp`: the
     /// varyings take the perspective divide), when the state lowers (the caller checks
@@ -264,8 +278,20 @@ impl Walk {
     /// draws one triangle ([`Walk::end`] after its rows).
     #[inline]
     pub fn begin(&mut self, t: &SetupTriangle, fb: &mut Target<'_>, stats: &mut Stats) {
+        self.begin_with(t, fb, stats, None)
+    }
+
+    /// [`Walk::begin`] for a program that samples with `tex` ([`Walk::pair`]).
+    #[inline]
+    pub fn begin_with(
+        &mut self,
+        t: &SetupTriangle,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+        tex: Option<&dyn TexSampler>,
+    ) {
         if self.st.sets == MAX_BATCH {
-            self.flush(fb, stats);
+            self.flush(fb, stats, tex);
             self.st.sets = 0;
         }
         let st = &mut *self.st;
@@ -304,28 +330,35 @@ impl Walk {
         tex: &TexLanes,
         stats: &mut Stats,
     ) {
-        let mut bits = 0u8;
-        for (i, &l) in live.iter().enumerate() {
-            bits |= u8::from(l) << i;
-        }
+        let bits = bits_of(live);
         if bits == 0 {
             return;
         }
-        let idx = (py - fb.y0) * fb.width + x;
+        let idx = idx_of(fb, py, x);
         if self.st.tracking && self.st.claim(idx, bits) {
-            self.flush(fb, stats);
+            self.flush(fb, stats, None);
         }
         stats.fragments += u64::from(bits.count_ones());
+        self.push(idx, x, py, bits, LANES.min(fb.width - x), tex);
+        if self.st.len == MAX_BATCH {
+            self.flush(fb, stats, None);
+        }
+    }
+
+    /// Appends the chunk of 8 pixels from `x` in row `py` (at `idx` in the buffers) with
+    /// `live` lanes, `inside` of them inside the row, and the units' texels `tex`.
+    #[inline]
+    fn push(&mut self, idx: usize, x: usize, py: usize, live: u8, inside: usize, tex: &TexLanes) {
         let st = &mut *self.st;
         let k = st.len;
         st.chunks[k] = ChunkIn {
             idx,
             fx: x as f32,
             fy: py as f32,
-            live: bits,
+            live,
             planes: ((st.sets - 1) * self.set) as u32,
         };
-        st.ns[k] = LANES.min(fb.width - x) as u8;
+        st.ns[k] = inside as u8;
         for (u, lanes) in tex.iter().enumerate().take(self.units) {
             // Stream 4u + ch of chunk k.
             crate::simd::pack::channels_into(
@@ -336,16 +369,65 @@ impl Walk {
             );
         }
         st.len += 1;
-        if st.len == MAX_BATCH {
-            self.flush(fb, stats);
+    }
+
+    /// Whether the walk's program reads 2x2 quads ([`Program::quads`]): its rows come
+    /// by [`Walk::pair`], not [`Walk::row`].
+    #[inline]
+    pub fn quads(&self) -> bool {
+        self.prog.quads()
+    }
+
+    /// Adds the rows `qy` (even) and `qy + 1` of the 8 pixels from `x` (even) of the
+    /// current triangle, with their `live` lanes and the units' texels `tex`, as one
+    /// pair of chunks (both, when one has no live lane, so that the program sees whole
+    /// quads); the program's own lookups sample with `sampler`. Runs the batch first
+    /// when a pending row of an earlier triangle shares a pixel, and after when full.
+    #[allow(clippy::too_many_arguments)]
+    pub fn pair(
+        &mut self,
+        fb: &mut Target<'_>,
+        qy: usize,
+        x: usize,
+        live: &[[bool; LANES]; 2],
+        tex: &[TexLanes; 2],
+        stats: &mut Stats,
+        sampler: Option<&dyn TexSampler>,
+    ) {
+        let bits = live.map(|l| bits_of(&l));
+        if bits == [0, 0] {
+            return;
+        }
+        // A row without live lanes (it may lie below the buffer) addresses its
+        // partner's pixels; no kernel touches them.
+        let live_row = usize::from(bits[0] == 0);
+        let idx = (qy + live_row - fb.y0) * fb.width + x;
+        if self.st.tracking
+            && (0..2).any(|r| bits[r] != 0 && self.st.claim(idx_of(fb, qy + r, x), bits[r]))
+        {
+            self.flush(fb, stats, sampler);
+        }
+        if self.st.len + 2 > MAX_BATCH {
+            self.flush(fb, stats, sampler);
+        }
+        for (r, &b) in bits.iter().enumerate() {
+            stats.fragments += u64::from(b.count_ones());
+            let (at, inside) = match b {
+                0 => (idx, 0),
+                _ => (idx_of(fb, qy + r, x), LANES.min(fb.width - x)),
+            };
+            self.push(at, x, qy + r, b, inside, &tex[r]);
+        }
+        if self.st.len == MAX_BATCH {
+            self.flush(fb, stats, sampler);
         }
     }
 
     /// Runs the gathered rows and counts their work; the current triangle's planes
     /// become the batch's first set.
-    fn flush(&mut self, fb: &mut Target<'_>, stats: &mut Stats) {
+    fn flush(&mut self, fb: &mut Target<'_>, stats: &mut Stats, tex: Option<&dyn TexSampler>) {
         if self.st.len != 0 {
-            self.run(fb, stats);
+            self.run(fb, stats, tex);
         }
         let st = &mut *self.st;
         st.clear_cover();
@@ -360,7 +442,7 @@ impl Walk {
     }
 
     /// Runs the gathered rows (at least one) and counts their work.
-    fn run(&mut self, fb: &mut Target<'_>, stats: &mut Stats) {
+    fn run(&mut self, fb: &mut Target<'_>, stats: &mut Stats, tex: Option<&dyn TexSampler>) {
         let st = &mut *self.st;
         let n = st.len;
         let mut inputs: [&[[u32; 8]]; STREAMS] = [&[]; STREAMS];
@@ -374,6 +456,7 @@ impl Walk {
             depth: &mut *fb.depth,
             uniforms: &st.uniforms,
             live_out: &mut st.live_out[..n],
+            sampler: tex,
         };
         let c = self.prog.run(&mut st.scratch, &mut io, &st.chunks[..n], n);
         stats.alpha_failed += c.killed;
@@ -395,8 +478,19 @@ impl Walk {
 
     /// Runs the last rows and gives the buffers back to the thread.
     #[inline]
-    pub fn end(mut self, fb: &mut Target<'_>, stats: &mut Stats) {
-        self.flush(fb, stats);
+    pub fn end(self, fb: &mut Target<'_>, stats: &mut Stats) {
+        self.end_with(fb, stats, None)
+    }
+
+    /// [`Walk::end`] for a program that samples with `tex` ([`Walk::pair`]).
+    #[inline]
+    pub fn end_with(
+        mut self,
+        fb: &mut Target<'_>,
+        stats: &mut Stats,
+        tex: Option<&dyn TexSampler>,
+    ) {
+        self.flush(fb, stats, tex);
         self.st.sets = 0;
         STATE.with(|s| s.set(Some(self.st)));
     }

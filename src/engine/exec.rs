@@ -54,6 +54,28 @@ pub struct ChunkIn {
     pub planes: u32,
 }
 
+/// A chunk pair's coordinates for [`TexSampler::sample`]: row 0 is the pair's first
+/// chunk (the 2x2 quads' top row: the lower buffer row), row 1 the second.
+pub struct QuadCoords {
+    /// s per row and lane.
+    pub s: [[f32; 8]; 2],
+    /// t per row and lane.
+    pub t: [[f32; 8]; 2],
+    /// r (or a shadow lookup's reference) per row and lane.
+    pub r: [[f32; 8]; 2],
+    /// The lanes covered (a quad without one need not be sampled).
+    pub live: [[bool; 8]; 2],
+}
+
+/// Samples the texture lookups a program computes the coordinates of ([`Op::Sample`]),
+/// a chunk pair (two rows of 2x2 quads) at a time.
+pub trait TexSampler {
+    /// Samples lookup `lookup` at `c` into `out[row][lane]` (RGBA), for every quad that
+    /// holds a live pixel (the others' texels may be left as they were); a lookup
+    /// without a complete texture gives (0, 0, 0, 1).
+    fn sample(&self, lookup: usize, c: &QuadCoords, out: &mut [[[f32; 4]; 8]; 2]);
+}
+
 /// What a run reads and writes besides its chunks.
 pub struct Io<'a> {
     /// The planes [`Op::Interp`] evaluates, `[a0, dadx, dady]`: plane `p` of a chunk is
@@ -70,6 +92,9 @@ pub struct Io<'a> {
     /// Receives each chunk's live lanes after the program (bit i = lane i), when it is
     /// at least as long as the chunks (left alone when empty).
     pub live_out: &'a mut [u8],
+    /// Samples [`Op::Sample`]'s lookups (a program with one and no sampler gets
+    /// (0, 0, 0, 1)).
+    pub sampler: Option<&'a dyn TexSampler>,
 }
 
 /// What a run counted: the lanes [`Op::Kill`] cleared, and the depth test's reads and
@@ -115,7 +140,16 @@ pub struct Ctx<'a> {
     /// program has none.
     pub(super) outs: *mut [u32; 8],
     pub(super) outs_per: usize,
+    /// The run's sampler for [`Op::Sample`].
+    pub(super) sampler: Option<&'a dyn TexSampler>,
+    /// The texels [`Op::Sample`] writes and [`Op::Texel`] reads: stream n of batch chunk
+    /// k at `n · MAX_BATCH + k` ([`TEXEL_STREAMS`] streams), null when the program
+    /// samples nothing.
+    pub(super) texels: *mut [u32; 8],
 }
+
+/// The streams of [`Ctx::texels`]: four channels per lookup.
+pub const TEXEL_STREAMS: usize = 4 * crate::pipe::MAX_TEXTURE_UNITS;
 
 impl Ctx<'_> {
     /// Slot `slot` of chunk `k` of the batch.
@@ -162,6 +196,10 @@ pub struct Program {
     outputs: usize,
     /// The program reads pixel positions or the colour buffer.
     pixels: bool,
+    /// The program reads across the chunks of a pair ([`Program::quads`]).
+    quads: bool,
+    /// The program samples ([`Op::Sample`]).
+    samples: bool,
 }
 
 /// Whether code for `want` may run where [`crate::cpu::isa`] reports `have`.
@@ -177,8 +215,8 @@ pub fn compile(ir: &Ir) -> Program {
 /// Compiles `ir` for level `isa`.
 ///
 /// # Panics
-/// When `isa` is not allowed on this CPU ([`isa_allowed`]), or the program needs more
-/// than `u16::MAX` slots.
+/// When `isa` is not allowed on this CPU ([`isa_allowed`]), the program needs more
+/// than `u16::MAX` slots, or samples a lookup beyond [`TEXEL_STREAMS`]` / 4`.
 pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
     assert!(isa_allowed(isa, crate::cpu::isa()), "{isa:?} on this CPU");
     let t = kernels::table(isa);
@@ -208,6 +246,8 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         depth: false,
         outputs: 0,
         pixels: false,
+        quads: false,
+        samples: false,
     };
     for (i, op) in ir.ops.iter().enumerate() {
         if !live[i] {
@@ -344,6 +384,25 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                 p.outputs = p.outputs.max(n as usize + 1);
                 (t.output, n as u32)
             }
+            Op::Ddx(_) => {
+                p.quads = true;
+                (t.ddx, 0)
+            }
+            Op::Ddy(_) => {
+                p.quads = true;
+                (t.ddy, 0)
+            }
+            Op::Sample { lookup, .. } => {
+                assert!(usize::from(lookup) < TEXEL_STREAMS / 4, "lookup {lookup}");
+                p.quads = true;
+                p.samples = true;
+                (t.sample, u32::from(lookup))
+            }
+            Op::Texel(n) => {
+                assert!(usize::from(n) < TEXEL_STREAMS, "texel stream {n}");
+                p.samples = true;
+                (t.texel, u32::from(n))
+            }
         };
         if hoist {
             p.prologue.push(Step { k, d, a, imm });
@@ -401,6 +460,10 @@ fn hoistable(op: &Op) -> bool {
             | Op::Blend(..)
             | Op::StoreColor(_)
             | Op::Output(..)
+            | Op::Ddx(_)
+            | Op::Ddy(_)
+            | Op::Sample { .. }
+            | Op::Texel(_)
     )
 }
 
@@ -421,6 +484,8 @@ fn is_over(b: &Blend8) -> bool {
 #[derive(Default)]
 pub struct Scratch {
     regs: Vec<[u32; 8]>,
+    /// [`Ctx::texels`], allocated by the first program that samples.
+    texels: Vec<[u32; 8]>,
 }
 
 impl Program {
@@ -449,6 +514,14 @@ impl Program {
         self.slots
     }
 
+    /// Whether the program reads across the two chunks of a pair (derivatives, texture
+    /// lookups at computed coordinates): its chunks must come in pairs, the rows `y` and
+    /// `y + 1` of the same pixels with `y` even (2x2 quads), at even indices of the run,
+    /// and it must run in batches of an even size.
+    pub fn quads(&self) -> bool {
+        self.quads
+    }
+
     /// Runs the program over `chunks`, `batch` chunks (at most [`MAX_BATCH`]) per kernel
     /// call.
     ///
@@ -463,7 +536,11 @@ impl Program {
         chunks: &[ChunkIn],
         batch: usize,
     ) -> Counts {
-        let stride = batch.clamp(1, MAX_BATCH);
+        let stride = match self.quads {
+            // Pairs stay in one batch.
+            true => batch.clamp(2, MAX_BATCH) & !1,
+            false => batch.clamp(1, MAX_BATCH),
+        };
         assert!(
             self.outputs == 0,
             "a program with outputs runs by run_streams"
@@ -488,6 +565,9 @@ impl Program {
         if scratch.regs.len() < need {
             scratch.regs.resize(need, [0; 8]);
         }
+        if self.samples && scratch.texels.is_empty() {
+            scratch.texels = vec![[0; 8]; TEXEL_STREAMS * MAX_BATCH];
+        }
         let mut ctx = Ctx {
             regs: scratch.regs.as_mut_ptr(),
             stride,
@@ -506,6 +586,11 @@ impl Program {
             depth_len: io.depth.len(),
             outs: std::ptr::null_mut(),
             outs_per: 0,
+            sampler: io.sampler,
+            texels: match self.samples {
+                true => scratch.texels.as_mut_ptr(),
+                false => std::ptr::null_mut(),
+            },
         };
         // SAFETY: the steps' slots are below `self.slots` (compile) and the register file
         // holds `slots * stride` values; the chunks' live lanes lie in the buffers
@@ -559,7 +644,7 @@ impl Program {
         outputs: &mut [[u32; 8]],
         chunks: usize,
     ) {
-        assert!(self.planes == 0 && !self.depth && !self.pixels);
+        assert!(self.planes == 0 && !self.depth && !self.pixels && !self.quads && !self.samples);
         assert!(inputs.len() >= self.inputs && inputs.iter().all(|s| s.len() >= chunks));
         assert!(uniforms.len() >= self.uniforms);
         assert!(outputs.len() >= chunks * self.outputs);
@@ -594,6 +679,8 @@ impl Program {
             depth_len: 0,
             outs: outputs.as_mut_ptr(),
             outs_per: self.outputs,
+            sampler: None,
+            texels: std::ptr::null_mut(),
         };
         // SAFETY: as in `run`; the outputs hold `chunks · self.outputs` values (checked)
         // and a step's output index is below `self.outputs` (compile); no step reads a

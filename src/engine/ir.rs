@@ -211,6 +211,28 @@ pub enum Op {
     /// Writes a value's lanes to output `n` of the chunk (a vertex shader's results,
     /// [`super::exec::Program::run_streams`]).
     Output(u16, Val),
+    /// gallivm's `lp_build_ddx`: in each 2x2 quad, the right pixel's value minus the
+    /// left one's, in both pixels of its row. A program with a derivative runs over
+    /// chunk pairs ([`super::exec::Program::quads`]).
+    Ddx(Val),
+    /// gallivm's `lp_build_ddy`: in each 2x2 quad, the bottom pixel's value (the next
+    /// row of the buffer) minus the top one's, in both pixels of its column.
+    Ddy(Val),
+    /// Samples texture lookup `lookup` at the coordinates `s`, `t`, `r` of every lane
+    /// (the run's [`super::exec::TexSampler`], per 2x2 quad, its level of detail from
+    /// the quad's coordinates); [`Op::Texel`] reads the result.
+    Sample {
+        /// The lookup's index (its texel is streams `4 · lookup ..` of [`Op::Texel`]).
+        lookup: u8,
+        /// The first coordinate.
+        s: Val,
+        /// The second (0 where the target has none).
+        t: Val,
+        /// The third, or a shadow lookup's reference (0 where there is none).
+        r: Val,
+    },
+    /// Channel `n % 4` of the texel that the last [`Op::Sample`] of lookup `n / 4` gave.
+    Texel(u16),
 }
 
 impl Op {
@@ -223,8 +245,11 @@ impl Op {
             | Op::Interp(_)
             | Op::Input(_)
             | Op::InputF(_)
+            | Op::Texel(_)
             | Op::Uniform(_) => vec![],
             Op::LoadColor => vec![],
+            Op::Ddx(a) | Op::Ddy(a) => vec![a],
+            Op::Sample { s, t, r, .. } => vec![s, t, r],
             Op::Add(a, b)
             | Op::Sub(a, b)
             | Op::Mul(a, b)
@@ -325,6 +350,17 @@ impl Builder {
         Ok(Some(match *op {
             Op::Const(ty, _) => ty,
             Op::FragX | Op::FragY | Op::Interp(_) | Op::InputF(_) | Op::Uniform(_) => F32,
+            Op::Texel(_) => F32,
+            Op::Ddx(a) | Op::Ddy(a) => {
+                want(a, F32, "f32 operand")?;
+                F32
+            }
+            Op::Sample { s, t, r, .. } => {
+                for v in [s, t, r] {
+                    want(v, F32, "f32 coordinate")?;
+                }
+                return Ok(None);
+            }
             Op::Input(_) | Op::LoadColor => I32,
             Op::Add(a, b)
             | Op::Sub(a, b)

@@ -542,6 +542,89 @@ mod body {
         });
     }
 
+    /// `lp_build_ddx`: per 2x2 quad and row, right minus left (lanes 2j, 2j + 1).
+    #[inline(always)]
+    pub(in super::super) unsafe fn ddx<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, {
+            let a = *c.reg(s.a[0], k);
+            let mut d = [0u32; 8];
+            for j in 0..4 {
+                let x = f32::from_bits(a[2 * j + 1]) - f32::from_bits(a[2 * j]);
+                d[2 * j] = x.to_bits();
+                d[2 * j + 1] = x.to_bits();
+            }
+            *c.reg(s.d, k) = d
+        });
+    }
+
+    /// `lp_build_ddy`: per 2x2 quad and column, the pair's second chunk (the bottom
+    /// row) minus its first (a chunk without its pair gives its own difference, 0).
+    #[inline(always)]
+    pub(in super::super) unsafe fn ddy<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        // SAFETY: the slots lie in the register file, chunks below `c.n` (compile, run).
+        unsafe {
+            let mut k = 0;
+            while k < c.n {
+                let j = (k + 1).min(c.n - 1);
+                let (top, bottom) = (*c.reg(s.a[0], k), *c.reg(s.a[0], j));
+                let d: [u32; 8] = std::array::from_fn(|i| {
+                    (f32::from_bits(bottom[i]) - f32::from_bits(top[i])).to_bits()
+                });
+                *c.reg(s.d, k) = d;
+                *c.reg(s.d, j) = d;
+                k += 2;
+            }
+        }
+    }
+
+    /// Samples lookup `imm` at the coordinates in `a[0..3]`, a chunk pair at a time,
+    /// into the run's texels (`Ctx::texels`).
+    #[inline(always)]
+    pub(in super::super) unsafe fn sample<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        use super::super::exec::{QuadCoords, MAX_BATCH};
+        let lookup = s.imm as usize;
+        let f = |v: [u32; 8]| v.map(f32::from_bits);
+        let lanes = |bits: u8| std::array::from_fn(|i| bits >> i & 1 != 0);
+        // SAFETY: the slots lie in the register file and chunks below `c.n` (compile,
+        // run); the texels hold `TEXEL_STREAMS` streams of `MAX_BATCH` chunks (run) and
+        // the lookup's streams are below it (compile).
+        unsafe {
+            let mut k = 0;
+            while k < c.n {
+                let j = (k + 1).min(c.n - 1);
+                let rows = |slot: u16| [f(*c.reg(slot, k)), f(*c.reg(slot, j))];
+                let live1 = if j == k { 0 } else { c.chunk(j).live };
+                let q = QuadCoords {
+                    s: rows(s.a[0]),
+                    t: rows(s.a[1]),
+                    r: rows(s.a[2]),
+                    live: [lanes(c.chunk(k).live), lanes(live1)],
+                };
+                let mut out = [[[0.0, 0.0, 0.0, 1.0]; 8]; 2];
+                if let Some(sm) = c.sampler {
+                    sm.sample(lookup, &q, &mut out);
+                }
+                let pair = [(0, k), (1, j)];
+                for (row, chunk) in pair.into_iter().take(1 + usize::from(j > k)) {
+                    let texels = &out[row];
+                    let mut at = 4 * lookup * MAX_BATCH + chunk;
+                    for ch in 0..4 {
+                        *c.texels.add(at) = texels.map(|t| t[ch].to_bits());
+                        at += MAX_BATCH;
+                    }
+                }
+                k += 2;
+            }
+        }
+    }
+
+    /// Texel stream `imm` (`Ctx::texels`).
+    #[inline(always)]
+    pub(in super::super) unsafe fn texel<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let at = s.imm as usize * super::super::exec::MAX_BATCH;
+        each!(c, k, { *c.reg(s.d, k) = *c.texels.add(at + k) });
+    }
+
     /// Writes the value to output `imm` of each chunk (`Program::run_streams` sized the
     /// outputs: `outs_per` values per chunk, `imm` below it).
     #[inline(always)]
@@ -560,7 +643,7 @@ macro_rules! kernel_list {
         $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
             max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
             depth, load_color, blend, store_color, unary, pow, ibin, xor, scmp, itof, ftoi,
-            from_bits, output);
+            from_bits, output, ddx, ddy, sample, texel);
     };
 }
 

@@ -264,6 +264,7 @@ pub(super) fn run_prepared(
         depth: &mut fb.depth,
         uniforms: &[],
         live_out: &mut [],
+        sampler: None,
     };
     prog.run(scratch, &mut io, &p.chunks, batch);
 }
@@ -421,6 +422,7 @@ pub(super) fn eval_f32(
         depth: &mut [],
         uniforms: &[],
         live_out: &mut [],
+        sampler: None,
     };
     prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
     let lanes = color.map(u32::from_le_bytes);

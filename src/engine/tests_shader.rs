@@ -160,6 +160,7 @@ fn uniform_arithmetic_is_hoisted() {
             depth: &mut [],
             uniforms: &[0.7],
             live_out: &mut [],
+            sampler: None,
         };
         prog.run(&mut Scratch::default(), &mut io, &chunks, 2);
         for (i, c) in color.iter().enumerate() {
@@ -205,6 +206,7 @@ fn dead_values_are_dropped_and_constants_shared() {
             depth: &mut [],
             uniforms: &[],
             live_out: &mut [],
+            sampler: None,
         };
         let chunk = ChunkIn {
             idx: 0,
@@ -217,6 +219,143 @@ fn dead_values_are_dropped_and_constants_shared() {
         for (i, c) in color.iter().enumerate() {
             let want = (3.0 + i as f32) * (1.0f32 / 2.0) + 1.0;
             assert_eq!(u32::from_le_bytes(*c), want.to_bits(), "{isa:?} lane {i}");
+        }
+    }
+}
+
+/// Runs `f`'s value (bits stored as the colour) over `pairs` chunk pairs of 8 lanes (rows
+/// `2p` and `2p + 1` from x = 8p) in batches of `batch`, with `sampler`; returns each
+/// chunk's lanes.
+fn run_pairs(
+    isa: crate::cpu::Isa,
+    pairs: usize,
+    batch: usize,
+    live: &dyn Fn(usize) -> u8,
+    sampler: Option<&dyn super::exec::TexSampler>,
+    f: impl Fn(&mut Builder, [super::ir::Val; 3]) -> super::ir::Val,
+) -> Vec<[u32; 8]> {
+    let mut b = Builder::new();
+    let v = [0u16, 1, 2].map(|n| b.push(Op::Interp(n)));
+    let r = f(&mut b, v);
+    let r = b.push(Op::Bits(r));
+    b.push(Op::StoreColor(r));
+    let prog = compile_for(&b.finish().expect("typed"), isa);
+    assert!(prog.quads());
+    // v0 = -3y, v1 = 0.25x, v2 = y
+    let planes = [[0.0, 0.0, -3.0], [0.0, 0.25, 0.0], [0.0, 0.0, 1.0]];
+    let chunks: Vec<ChunkIn> = (0..2 * pairs)
+        .map(|k| ChunkIn {
+            idx: 8 * k,
+            fx: (8 * (k / 2)) as f32,
+            fy: k as f32,
+            live: live(k),
+            planes: 0,
+        })
+        .collect();
+    let mut color = vec![[0u8; 4]; 16 * pairs];
+    let mut io = Io {
+        planes: &planes,
+        inputs: &[],
+        color: &mut color,
+        depth: &mut [],
+        uniforms: &[],
+        live_out: &mut [],
+        sampler,
+    };
+    prog.run(&mut Scratch::default(), &mut io, &chunks, batch);
+    color
+        .chunks(8)
+        .map(|c| std::array::from_fn(|i| u32::from_le_bytes(c[i])))
+        .collect()
+}
+
+#[test]
+fn derivatives_are_quad_differences() {
+    // value(x, y) = (x - 3y)·(0.25x + y) + x·y: non-linear, exact.
+    let value = |x: f32, y: f32| (x - 3.0 * y) * (0.25 * x + y) + x * y;
+    let f = |b: &mut Builder, v: [super::ir::Val; 3]| {
+        let x = b.push(Op::FragX);
+        let p = b.add(x, v[0]);
+        let q = b.add(v[1], v[2]);
+        let m = b.mul(p, q);
+        let xy = b.mul(x, v[2]);
+        b.add(m, xy)
+    };
+    for isa in levels() {
+        for batch in [2, 3, 8] {
+            let dx = run_pairs(isa, 3, batch, &|_| 0xFF, None, |b, v| {
+                let w = f(b, v);
+                b.push(Op::Ddx(w))
+            });
+            let dy = run_pairs(isa, 3, batch, &|k| [0xFF, 0][k % 2], None, |b, v| {
+                let w = f(b, v);
+                b.push(Op::Ddy(w))
+            });
+            for k in 0..6 {
+                let (x0, y) = ((8 * (k / 2)) as f32, k as f32);
+                for i in 0..8 {
+                    let x = x0 + i as f32;
+                    let l = x0 + (i & !1) as f32;
+                    let want = value(l + 1.0, y) - value(l, y);
+                    assert_eq!(dx[k][i], want.to_bits(), "{isa:?} ddx chunk {k} lane {i}");
+                    if k % 2 == 0 {
+                        // The second row is not live: the pair's first chunk only.
+                        let want = value(x, y + 1.0) - value(x, y);
+                        assert_eq!(dy[k][i], want.to_bits(), "{isa:?} ddy chunk {k} lane {i}");
+                    } else {
+                        assert_eq!(dy[k][i], 0, "a chunk without live lanes is not written");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A sampler that returns its coordinates and whether the lane is live, and counts its
+/// calls.
+struct Echo(std::cell::Cell<usize>);
+
+impl super::exec::TexSampler for Echo {
+    fn sample(&self, lookup: usize, c: &super::exec::QuadCoords, out: &mut [[[f32; 4]; 8]; 2]) {
+        self.0.set(self.0.get() + 1);
+        for (r, row) in out.iter_mut().enumerate() {
+            for (i, o) in row.iter_mut().enumerate() {
+                let live = if c.live[r][i] { 1.0 } else { 0.0 };
+                *o = [c.s[r][i], c.t[r][i], c.r[r][i] + lookup as f32, live];
+            }
+        }
+    }
+}
+
+#[test]
+fn sample_hands_pairs_to_the_sampler_and_texel_reads_its_result() {
+    for isa in levels() {
+        for ch in 0..4u16 {
+            let echo = Echo(std::cell::Cell::new(0));
+            let live = |k: usize| [0b1010_1111, 0b0000_0110][k % 2];
+            let got = run_pairs(isa, 2, 4, &live, Some(&echo), |b, v| {
+                let s = b.push(Op::Mul(v[0], v[0]));
+                b.push(Op::Sample {
+                    lookup: 2,
+                    s,
+                    t: v[1],
+                    r: v[2],
+                });
+                b.push(Op::Texel(4 * 2 + ch))
+            });
+            assert_eq!(echo.0.get(), 2, "one call per pair");
+            for (k, lanes) in got.iter().enumerate() {
+                let y = k as f32;
+                for (i, &bits) in lanes.iter().enumerate() {
+                    if live(k) >> i & 1 == 0 {
+                        continue;
+                    }
+                    let x = (8 * (k / 2) + i) as f32;
+                    let v0 = -3.0 * y;
+                    let want = [v0 * v0, 0.25 * x, y + 2.0, 1.0][usize::from(ch)];
+                    assert_eq!(f32::from_bits(bits), want, "{isa:?} chunk {k} lane {i}");
+                }
+            }
         }
     }
 }

@@ -68,7 +68,7 @@ pub struct Draw<'d, 'f> {
 impl Drop for Draw<'_, '_> {
     fn drop(&mut self) {
         if let Some(p) = self.shaded.take() {
-            p.end(self.fb, self.stats);
+            p.end(self.units, self.fb, self.stats);
         }
     }
 }

@@ -18,6 +18,7 @@
 use super::textured;
 use super::Draw;
 use crate::engine::draw::Walk;
+use crate::engine::exec::{QuadCoords, TexSampler};
 use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
 use crate::framebuffer::Target;
 use crate::geometry::setup::SetupTriangle;
@@ -25,6 +26,7 @@ use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::shader::draw::{FragShader, ShaderRef, ShaderTexture};
 use crate::stats::Stats;
 use crate::texture::UnitPlan;
+use std::cell::RefCell;
 use std::sync::Arc;
 
 /// No texels: a shader's walk has no units.
@@ -40,13 +42,90 @@ pub(super) struct Pending {
     shader: Option<Arc<FragShader>>,
     /// A chunk's sampled texels per row (lanes that are not live hold any value).
     texels: Box<[TexLanes; 2]>,
+    /// Each lookup's index in the draw's units ([`ShaderRef::tex_units`]).
+    slots: [u8; MAX_TEXTURE_UNITS],
+    /// The texels of the program's own lookups ([`Computed`]).
+    quad_texels: RefCell<Box<[TexLanes; 2]>>,
 }
 
 impl Pending {
-    /// Runs the walk's last rows.
-    pub(super) fn end(self, fb: &mut Target<'_>, stats: &mut Stats) {
-        self.walk.end(fb, stats);
+    /// Runs the walk's last rows (the program's own lookups sample `units`).
+    pub(super) fn end(self, units: &[UnitPlan<'_>], fb: &mut Target<'_>, stats: &mut Stats) {
+        let lookups = self.shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
+        let tex = Computed {
+            lookups,
+            slots: &self.slots,
+            units,
+            buf: &self.quad_texels,
+        };
+        self.walk.end_with(fb, stats, Some(&tex));
     }
+}
+
+/// The sampler of a program's lookups at computed coordinates ([`ShaderTexture::computed`]):
+/// the draw's units with the same samplers and level-of-detail rules as the lookups
+/// sampled before the program runs.
+struct Computed<'a, 'u> {
+    lookups: &'a [ShaderTexture],
+    slots: &'a [u8; MAX_TEXTURE_UNITS],
+    units: &'a [UnitPlan<'u>],
+    /// Where the samplers write (lookup k's texels at index k).
+    buf: &'a RefCell<Box<[TexLanes; 2]>>,
+}
+
+impl TexSampler for Computed<'_, '_> {
+    fn sample(&self, lookup: usize, c: &QuadCoords, out: &mut [[[f32; 4]; 8]; 2]) {
+        let unit = self
+            .slots
+            .get(lookup)
+            .map_or(usize::MAX, |&u| usize::from(u));
+        let (Some(u), Some(_)) = (self.units.get(unit), self.lookups.get(lookup)) else {
+            *out = [[[0.0, 0.0, 0.0, 1.0]; 8]; 2];
+            return;
+        };
+        let mut buf = self.buf.borrow_mut();
+        sample_at(u, lookup, c, &mut buf);
+        for (o, row) in out.iter_mut().zip(buf.iter()) {
+            *o = row[lookup];
+        }
+    }
+}
+
+/// [`super::sample_unit`] of unit `u` for lookup `k` at `c`, fused where the level
+/// fuses (compiled with its features, as [`sample_fused`]).
+fn sample_at(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, texels: &mut [TexLanes; 2]) {
+    #[inline(always)]
+    fn go<M: Madd>(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, texels: &mut [TexLanes; 2]) {
+        let rr = if u.needs_r() { Some(&c.r) } else { None };
+        super::sample_unit::<M>(u, k, &c.s, &c.t, rr, &c.live, texels);
+    }
+    if !crate::cpu::isa().fused() {
+        return go::<Unfused>(u, k, c, texels);
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        /// # Safety
+        /// The CPU has AVX2 and FMA.
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn avx2(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, t: &mut [TexLanes; 2]) {
+            go::<Fused>(u, k, c, t)
+        }
+        /// # Safety
+        /// The CPU has FMA.
+        #[target_feature(enable = "fma")]
+        unsafe fn fma(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, t: &mut [TexLanes; 2]) {
+            go::<Fused>(u, k, c, t)
+        }
+        if crate::cpu::isa().avx2() {
+            // SAFETY: the AVX2 level has AVX2 and FMA (`cpu::isa`).
+            unsafe { avx2(u, k, c, texels) }
+        } else {
+            // SAFETY: the level fuses, so the CPU has FMA (`cpu::isa`).
+            unsafe { fma(u, k, c, texels) }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    go::<Fused>(u, k, c, texels)
 }
 
 /// Draws `t` in box `b` (cut to the region) with shader `sh`: its rows join the draw's
@@ -60,7 +139,7 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
     let reuse = matches!(&d.shaded, Some(p) if sh.facing.is_none() || p.front == t.front);
     if !reuse {
         if let Some(p) = d.shaded.take() {
-            p.end(fb, stats);
+            p.end(units, fb, stats);
         }
         let Some(walk) = crate::shader::draw::walk(sh, plan, fb, t.front) else {
             stats.program_tris_refused += 1;
@@ -82,6 +161,8 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
             front: t.front,
             shader,
             texels: Box::new([NO_TEXELS; 2]),
+            slots: sh.tex_units,
+            quad_texels: RefCell::new(Box::new([NO_TEXELS; 2])),
         });
     }
     let Some(p) = d.shaded.as_mut() else {
@@ -89,8 +170,15 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
     };
     let (w, texels) = (&mut p.walk, &mut *p.texels);
     let lookups = p.shader.as_ref().map_or(&[][..], |s| &s.textures[..]);
+    let tex = Computed {
+        lookups,
+        slots: &p.slots,
+        units,
+        buf: &p.quad_texels,
+    };
     let fused = crate::cpu::isa().fused();
-    w.begin(t, fb, stats);
+    let quads = w.quads();
+    w.begin_with(t, fb, stats, Some(&tex));
     for c in textured::Chunks::new(t, b) {
         if !lookups.is_empty() {
             let io = Lookups {
@@ -105,6 +193,11 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
             } else {
                 sample::<Unfused>(&io, texels);
             }
+        }
+        if quads {
+            let (qy, x) = (c.qy as usize, c.x as usize);
+            w.pair(fb, qy, x, &c.live, texels, stats, Some(&tex));
+            continue;
         }
         for (r, live) in c.live.iter().enumerate() {
             let py = (c.qy + r as i64) as usize;
@@ -168,6 +261,9 @@ unsafe fn sample_avx2(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
             oow[r] = one.div(eval8::<true>(&t.w, fx, fy[r]));
         }
         for (k, lk) in io.lookups.iter().enumerate() {
+            if lk.computed {
+                continue;
+            }
             let Some(u) = io.units.get(usize::from(io.slots[k])) else {
                 for row in texels.iter_mut() {
                     row[k] = [[0.0, 0.0, 0.0, 1.0]; LANES];
@@ -219,6 +315,9 @@ fn sample<M: Madd>(io: &Lookups<'_, '_>, texels: &mut [TexLanes; 2]) {
         }
     }
     for (k, lk) in io.lookups.iter().enumerate() {
+        if lk.computed {
+            continue;
+        }
         let Some(u) = io.units.get(usize::from(io.slots[k])) else {
             for row in texels.iter_mut() {
                 row[k] = [[0.0, 0.0, 0.0, 1.0]; LANES];

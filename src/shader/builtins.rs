@@ -171,6 +171,18 @@ impl Lower<'_> {
         self.op(Op::Select(nz, s, zero))
     }
 
+    /// `dFdy(x)` in GL's window coordinates: Mesa's `nir_lower_wpos_ytransform` makes
+    /// `fddy(x)` `fddy(x · flip)`, and llvmpipe's `fddy` is the next buffer row's value
+    /// minus this row's ([`Op::Ddy`]); where rows are stored top-down, `flip` is −1 (a
+    /// sign flip, exact).
+    fn ddy(&mut self, x: Val) -> Val {
+        let x = match self.opts.flip_height {
+            Some(_) => self.op(Op::Un(Un::Neg, x)),
+            None => x,
+        };
+        self.op(Op::Ddy(x))
+    }
+
     /// `1 / sqrt(x)` (`lp_build_rsqrt`).
     fn rsq(&mut self, x: Val) -> Val {
         let one = self.f32(1.0);
@@ -362,6 +374,15 @@ pub(super) fn call(
                 })
                 .collect()
         }
+        "dFdx" | "dFdy" | "fwidth" if l.vertex => return no("derivatives in a vertex shader"),
+        "dFdx" => each(l, &mut |l, [a, ..]| l.op(Op::Ddx(a))),
+        "dFdy" => each(l, &mut |l, [a, ..]| l.ddy(a)),
+        "fwidth" => each(l, &mut |l, [a, ..]| {
+            let x = l.op(Op::Ddx(a));
+            let y = l.ddy(a);
+            let (x, y) = (l.op(Op::Un(Un::Abs, x)), l.op(Op::Un(Un::Abs, y)));
+            l.op(Op::Add(x, y))
+        }),
         "ftransform" => l.ftransform()?,
         _ => return no(format!("the built-in function {name}")),
     })

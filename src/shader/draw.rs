@@ -59,6 +59,9 @@ pub struct ShaderTexture {
     pub coords: [Option<(u16, bool)>; 4],
     /// s, t and r are multiplied by `1 / q`.
     pub proj: bool,
+    /// The program computes the coordinates and samples them itself (through the walk's
+    /// [`crate::engine::exec::TexSampler`]); `coords` is empty.
+    pub computed: bool,
 }
 
 impl std::fmt::Debug for FragShader {
@@ -146,6 +149,7 @@ impl FragShader {
                 target: t.target,
                 coords,
                 proj: t.proj,
+                computed: t.computed,
             });
         }
         let fs = Arc::new(FragShader {

@@ -169,7 +169,7 @@ pub struct Lower<'p> {
     pub(super) unmasked: bool,
     /// The last mask computed and what it was computed from.
     pub(super) exec_memo: Option<([Option<Val>; 4], Option<Val>)>,
-    opts: Options,
+    pub(super) opts: Options,
     front_facing: bool,
     /// A vertex shader: inputs are attribute streams ([`Op::InputF`]).
     pub(super) vertex: bool,

@@ -10,10 +10,19 @@
 //! texel as four f32 input streams (lookup `k`: streams `4k..4k + 4`). The sampler
 //! uniform's value picks the unit at each draw; its type picks the unit's target.
 //!
-//! Not lowered (the shader is refused): coordinates computed in the shader (their
-//! derivatives would come from the program's values), explicit bias or LOD, offsets,
-//! gradients, `texelFetch`, `textureSize`, rectangle, array, buffer, multisample,
-//! integer and cube-shadow samplers, sampler arrays, and lookups in vertex shaders.
+//! A lookup whose coordinates the shader computes (any other value, constants included)
+//! is sampled by the program itself: [`Op::Sample`] hands the computed values of a chunk
+//! pair (two rows of 2x2 quads) to the walk's sampler, which samples them with the same
+//! samplers and level-of-detail rules (the quad's differences of the values as
+//! computed, which is what llvmpipe's sampler derives them from), and [`Op::Texel`]
+//! reads the texel. A projected one multiplies s, t and r by `1 / q` first, as the
+//! rasterizer does for varyings (NIR's `lower_txp`). Each such lookup is one of the
+//! [`crate::pipe::MAX_TEXTURE_UNITS`] lookups a shader may make (a loop of nine lookups
+//! is refused).
+//!
+//! Not lowered (the shader is refused): explicit bias or LOD, offsets, gradients,
+//! `texelFetch`, `textureSize`, rectangle, array, buffer, multisample, integer and
+//! cube-shadow samplers, sampler arrays, and lookups in vertex shaders.
 
 use super::lower::{no, Lower, R};
 use crate::engine::ir::{Op, Val};
@@ -33,6 +42,9 @@ pub struct TexUse {
     pub coords: [Option<(u16, bool)>; 4],
     /// s, t and r are multiplied by `1 / q`.
     pub proj: bool,
+    /// The coordinates are computed in the shader: the program samples them itself
+    /// ([`Op::Sample`]) and `coords` is empty.
+    pub computed: bool,
 }
 
 impl Lower<'_> {
@@ -81,22 +93,27 @@ impl Lower<'_> {
             proj.then(|| n - 1),
         ];
         let mut coords = [None; 4];
+        let mut computed = false;
         for (slot, k) in coords.iter_mut().zip(pick) {
             if let Some(k) = k {
                 let Some(v) = c.get(k) else {
                     return no("a texture coordinate of the wrong size");
                 };
-                let Some(&plane) = self.plane_vals.get(v) else {
-                    return no("texture coordinates computed in the shader");
-                };
-                *slot = Some(plane);
+                match self.plane_vals.get(v) {
+                    Some(&plane) => *slot = Some(plane),
+                    None => computed = true,
+                }
             }
+        }
+        if computed {
+            return self.sample_computed(sampler, target, &c, pick, ret);
         }
         let lookup = TexUse {
             sampler,
             target,
             coords,
             proj,
+            computed: false,
         };
         let k = match self.textures.iter().position(|t| *t == lookup) {
             Some(k) => k,
@@ -108,14 +125,61 @@ impl Lower<'_> {
                 self.textures.len() - 1
             }
         };
-        let texel: Vec<Val> = (0..4)
-            .map(|ch| self.op(Op::InputF((4 * k + ch) as u16)))
-            .collect();
-        Ok(if ret.components() == 1 {
-            vec![texel[0]]
-        } else {
-            texel
-        })
+        Ok(self.texel(ret, |ch| Op::InputF((4 * k + ch) as u16)))
+    }
+
+    /// The texel a lookup returns as `ret`: channel `ch` read by `read(ch)` (one channel
+    /// for a float result).
+    fn texel(&mut self, ret: &Type, read: impl Fn(usize) -> Op) -> Vec<Val> {
+        let n = if ret.components() == 1 { 1 } else { 4 };
+        (0..n).map(|ch| self.op(read(ch))).collect()
+    }
+
+    /// A lookup whose coordinates `c` (components `pick`: s, t, r, q) the shader
+    /// computes: a lookup of its own, sampled by the program ([`Op::Sample`]) at the
+    /// values as computed, projected as the rasterizer projects varyings (each of s, t, r
+    /// times `1 / q`, NIR's `lower_txp`), absent ones 0.
+    fn sample_computed(
+        &mut self,
+        sampler: String,
+        target: Target,
+        c: &[Val],
+        pick: [Option<usize>; 4],
+        ret: &Type,
+    ) -> R<Vec<Val>> {
+        if self.textures.len() == crate::pipe::MAX_TEXTURE_UNITS {
+            return no("more texture lookups than texture units");
+        }
+        let zero = self.f32(0.0);
+        let mut co = [zero; 3];
+        for (d, k) in co.iter_mut().zip(pick) {
+            if let Some(k) = k {
+                *d = c[k];
+            }
+        }
+        if let Some(q) = pick[3] {
+            let one = self.f32(1.0);
+            let rq = self.op(Op::Div(one, c[q]));
+            for d in &mut co {
+                *d = self.op(Op::Mul(*d, rq));
+            }
+        }
+        let k = self.textures.len();
+        self.textures.push(TexUse {
+            sampler,
+            target,
+            coords: [None; 4],
+            proj: pick[3].is_some(),
+            computed: true,
+        });
+        let [s, t, r] = co;
+        self.op(Op::Sample {
+            lookup: k as u8,
+            s,
+            t,
+            r,
+        });
+        Ok(self.texel(ret, |ch| Op::Texel((4 * k + ch) as u16)))
     }
 }
 
@@ -153,6 +217,7 @@ mod tests {
                 target: Target::Tex2D,
                 coords: [at(t1), at(t1 + 1), None, at(t1 + 3)],
                 proj: true,
+                computed: false,
             }
         );
         assert_eq!(l.textures[1].target, Target::Cube);
@@ -191,12 +256,55 @@ mod tests {
     }
 
     #[test]
-    fn computed_coordinates_bias_and_vertex_lookups_are_refused() {
+    fn computed_coordinates_are_sampled_by_the_program() {
+        let p = check(
+            "uniform sampler2D a; uniform sampler2DShadow d;
+             void main() {
+               gl_FragColor = texture2D(a, gl_TexCoord[0].st * 2.0) + texture2D(a, vec2(0.5))
+                 + texture2DProj(a, vec3(gl_TexCoord[0].st, gl_TexCoord[0].q + 1.0))
+                 + shadow2D(d, vec3(gl_TexCoord[0].s, 0.5, gl_TexCoord[0].t))
+                 + texture2D(a, gl_TexCoord[0].st);
+             }",
+        );
+        let l = lower_fragment(&p).unwrap();
+        assert_eq!(l.textures.len(), 5);
+        let computed: Vec<bool> = l.textures.iter().map(|t| t.computed).collect();
+        assert_eq!(computed, [true, true, true, true, false]);
+        assert!(l.textures[..4].iter().all(|t| t.coords == [None; 4]));
+        assert!(l.textures[2].proj && !l.textures[0].proj);
+        // One Sample per computed lookup, in order, and each lookup's four texel streams.
+        let samples: Vec<u8> =
+            l.ir.ops
+                .iter()
+                .filter_map(|op| match op {
+                    Op::Sample { lookup, .. } => Some(*lookup),
+                    _ => None,
+                })
+                .collect();
+        assert_eq!(samples, [0, 1, 2, 3]);
+        let texels =
+            l.ir.ops
+                .iter()
+                .filter(|op| matches!(op, Op::Texel(_)))
+                .count();
+        assert_eq!(texels, 16);
+        // The varyings' `1 / w` and the projected lookup's `1 / q`, once each.
+        let divs =
+            l.ir.ops
+                .iter()
+                .filter(|op| matches!(op, Op::Div(..)))
+                .count();
+        assert_eq!(divs, 2);
+    }
+
+    #[test]
+    fn bias_sampler_arrays_and_vertex_lookups_are_refused() {
         for src in [
-            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, gl_TexCoord[0].st * 2.0); }",
             "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, gl_TexCoord[0].st, 1.0); }",
-            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, vec2(0.5)); }",
             "uniform sampler2D a[2]; void main() { gl_FragColor = texture2D(a[1], gl_TexCoord[0].st); }",
+            "uniform sampler2D a; void main() { vec4 c = vec4(0.0);
+               for (int i = 0; i < 9; i++) c += texture2D(a, vec2(float(i) * 0.1));
+               gl_FragColor = c; }",
         ] {
             assert!(lower_fragment(&check(src)).is_err(), "{src}");
         }

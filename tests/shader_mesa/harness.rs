@@ -195,6 +195,7 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
             depth: &mut [],
             uniforms: &uniforms,
             live_out: &mut [],
+            sampler: None,
         };
         prog.run(&mut scratch, &mut io, &chunks, 32);
         for (i, px) in color.iter().enumerate() {
