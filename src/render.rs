@@ -122,13 +122,15 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         *prims,
     );
     if plan.shader.is_some() {
-        // A fragment shader runs on filled triangles only (see `shader::draw`); other
-        // primitives, the polygon pipeline, flat shading and multisampling draw nothing.
-        let tris = !matches!(
-            mode,
-            Primitive::Points | Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip
-        );
-        if !tris || poly || plan.flat || plan.ms.is_some() {
+        // A fragment shader runs on filled triangles, lines and points (see
+        // `shader::draw`); the polygon pipeline, smooth lines and points, flat shading
+        // and multisampling draw nothing.
+        let smooth = match mode {
+            Primitive::Points => prims.point_smooth,
+            Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
+            _ => false,
+        };
+        if smooth || poly || plan.flat || plan.ms.is_some() {
             stats.program_draws_refused += 1;
             if let Some(a) = adopt {
                 a.settle(stats, Some(&mut *fb));

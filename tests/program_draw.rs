@@ -123,14 +123,29 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
         "the glUniform between the draws"
     );
 
-    // Lines and points with a program: nothing drawn, counted.
+    // A line with the program draws with it; a smooth one (GL_LINE_SMOOTH) does not:
+    // nothing drawn, counted.
     c.clear();
     glBegin(GL_LINES);
     glVertex2f(-1.0, 0.01);
     glVertex2f(1.0, 0.01);
     glEnd();
+    let s1b = stats();
+    assert_eq!(s1b.program_draws - s1.program_draws, 1);
+    assert_eq!(s1b.program_draws_refused, s1.program_draws_refused);
+    assert!(
+        (0..W).all(|x| c.pixel(x, 8) == [0, 255, 0, 255]),
+        "the line in the uniform's colour"
+    );
+    c.clear();
+    glEnable(0x0B20);
+    glBegin(GL_LINES);
+    glVertex2f(-1.0, 0.01);
+    glVertex2f(1.0, 0.01);
+    glEnd();
+    glDisable(0x0B20);
     let s2 = stats();
-    assert_eq!(s2.program_draws_refused - s1.program_draws_refused, 1);
+    assert_eq!(s2.program_draws_refused - s1b.program_draws_refused, 1);
     assert!(
         (0..W).all(|x| c.pixel(x, 8) == [0; 4]),
         "a refused line draws nothing"

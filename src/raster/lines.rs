@@ -302,6 +302,12 @@ pub fn raster_line(
             plane(v1.vary[i], v2.vary[i])
         };
     }
+    let plan = d.plan;
+    if let Some(sh) = &plan.shader {
+        t.front = true;
+        super::shaded::covered(&t, b, &super::prim_tex::EdgeCover(&edges), sh, d);
+        return;
+    }
     if !d.units.is_empty() {
         super::prim_tex::shade_covered(&t, b, &super::prim_tex::EdgeCover(&edges), d);
         return;
@@ -347,7 +353,13 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
     if b[0] > b[2] || b[1] > b[3] {
         return;
     }
-    let t = point_planes(v, nvary);
+    let mut t = point_planes(v, nvary);
+    let plan = d.plan;
+    if let Some(sh) = &plan.shader {
+        t.front = true;
+        super::shaded::covered(&t, b, &super::prim_tex::BoxCover, sh, d);
+        return;
+    }
     if !d.units.is_empty() {
         super::prim_tex::shade_covered(&t, b, &super::prim_tex::BoxCover, d);
         return;

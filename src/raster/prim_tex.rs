@@ -138,7 +138,7 @@ fn row<C: Cover>(cover: &C, b: [i64; 4], py: i64) -> Option<(i64, i64)> {
 /// The 8-pixel chunks of 2x2 quads of the pairs of rows that `cover` covers in `b`, as
 /// [`super::textured::Chunks`] walks a triangle's (a chunk is visited when a lane of
 /// either row survives [`Cover::keep`]).
-struct CoverChunks<'c, C> {
+pub(super) struct CoverChunks<'c, C> {
     cover: &'c C,
     b: [i64; 4],
     qy: i64,
@@ -150,7 +150,7 @@ struct CoverChunks<'c, C> {
 impl<'c, C: Cover> CoverChunks<'c, C> {
     /// The chunks of `cover` in `b`.
     #[inline(always)]
-    fn new(cover: &'c C, b: [i64; 4]) -> Self {
+    pub(super) fn new(cover: &'c C, b: [i64; 4]) -> Self {
         CoverChunks {
             cover,
             b,

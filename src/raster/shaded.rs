@@ -1,6 +1,7 @@
-//! Triangles of a draw with a fragment shader ([`crate::shader::draw`]): the chunk rows
-//! of the textured walk ([`textured::Chunks`], pairs of rows in 8-pixel chunks) through
-//! the shader's compiled variant. A triangle whose plan or target the engine does not
+//! Triangles, lines and points of a draw with a fragment shader
+//! ([`crate::shader::draw`]): the chunk rows of the textured walk ([`textured::Chunks`],
+//! pairs of rows in 8-pixel chunks; for lines and points the chunks of their coverage,
+//! [`CoverChunks`], on the planes of `lines.rs`) through the shader's compiled variant. A triangle whose plan or target the engine does not
 //! draw (stencil, logic op, wide or sRGB buffers …) is not drawn and is counted in
 //! `program_tris_refused`: drawing it without its shader would be wrong.
 //!
@@ -15,6 +16,7 @@
 //! shader reads `gl_FrontFacing` and the facing changes), so that the engine runs the rows
 //! of several small triangles in one batch; the draw runs the last rows when it ends.
 
+use super::prim_tex::{Cover, CoverChunks};
 use super::textured;
 use super::Draw;
 use crate::engine::draw::Walk;
@@ -135,6 +137,33 @@ fn sample_at(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, texels: &mut [TexLanes;
 #[cold]
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
+    walk(t, textured::Chunks::new(t, b), sh, d)
+}
+
+/// Draws the pixels of `cover` in box `b` (cut to the region) with the planes of `t` (a
+/// line's or a point's, [`super::lines`]) and shader `sh`, as [`triangle`] draws a
+/// triangle's: lines and points face front (`gl_FrontFacing`).
+#[cold]
+#[inline(never)]
+pub(super) fn covered<C: Cover>(
+    t: &SetupTriangle,
+    b: [i64; 4],
+    cover: &C,
+    sh: &ShaderRef,
+    d: &mut Draw<'_, '_>,
+) {
+    debug_assert!(t.front, "lines and points face front");
+    walk(t, CoverChunks::new(cover, b), sh, d)
+}
+
+/// The chunks of `t` through the draw's pending shader walk ([`triangle`]).
+#[inline(always)]
+fn walk(
+    t: &SetupTriangle,
+    chunks: impl Iterator<Item = textured::Chunk>,
+    sh: &ShaderRef,
+    d: &mut Draw<'_, '_>,
+) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
     let reuse = matches!(&d.shaded, Some(p) if sh.facing.is_none() || p.front == t.front);
     if !reuse {
@@ -179,7 +208,7 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
     let fused = crate::cpu::isa().fused();
     let quads = w.quads();
     w.begin_with(t, fb, stats, Some(&tex));
-    for c in textured::Chunks::new(t, b) {
+    for c in chunks {
         if !lookups.is_empty() {
             let io = Lookups {
                 t,
