@@ -106,7 +106,7 @@ int main(int argc, char **argv)
     unsigned char *buf;
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char img[64 * 64 * 4], rb[FW * FH * 4];
-    GLuint tex[4], fbo, color, zb, progs[6];
+    GLuint tex[4], progs[6];
     int level, size;
 
     glGenTextures(4, tex);
@@ -147,17 +147,7 @@ int main(int argc, char **argv)
     frag_output(out, "window", buf);
 
     /* the same into a framebuffer object, whose rows are not flipped */
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &color);
-    glGenRenderbuffers(1, &zb);
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, FW, FH);
-    glBindRenderbuffer(GL_RENDERBUFFER, zb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, FW, FH);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, zb);
-    SGL_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    frag_fbo(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
     draw_all(progs, 6);
     glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rb);
     sgl_image(out, "fbo", FW, FH, 4, "RGBA", FW * 4, 1, rb);

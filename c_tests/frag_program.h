@@ -136,6 +136,25 @@ static inline void frag_depth_texture(GLuint tex)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
+/* Binds a new complete FW x FH framebuffer object: an RGBA8 colour
+ * renderbuffer and a `depth_format` one at `attachment` (the scene fails when
+ * it is incomplete). Needs GL_GLEXT_PROTOTYPES. */
+static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
+{
+    GLuint fbo, rb[2];
+    glGenFramebuffers(1, &fbo);
+    glGenRenderbuffers(2, rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, FW, FH);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, depth_format, FW, FH);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb[1]);
+    SGL_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    return fbo;
+}
+
 /* A triangle with per-vertex colours and texture coordinates (sets 0 and 1). */
 static inline void frag_tri(const float v[3][3], const float c[3][4], const float t[3][4])
 {

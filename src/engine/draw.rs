@@ -172,6 +172,8 @@ pub struct Walk {
     count_samples: bool,
     /// The uniforms are the walk's own (else the triangle's flat varyings).
     own_uniforms: bool,
+    /// The walk's triangles face front (the stencil face).
+    front: bool,
 }
 
 /// Which triangles the engine shades (`SOFTGL_ENGINE`).
@@ -240,21 +242,27 @@ impl Walk {
             writes: plan.color_mask != [false; 4],
             count_samples: plan.count_samples,
             own_uniforms: false,
+            front: true,
         })
     }
 
-    /// The walk of a triangle drawn with the compiled program `prog` into `fb` under
-    /// `plan`, whose uniform `k` is the bits `uniforms[k]` and which reads the texels of
-    /// `units` lookups ([`Walk::row`]); `None` when the target or the plan is not one the
-    /// engine draws.
+    /// The walk of triangles facing `front` drawn with the compiled program `prog` into
+    /// `fb` under `plan` (its stencil test too), whose uniform `k` is the bits
+    /// `uniforms[k]` and which reads the texels of `units` lookups ([`Walk::row`]);
+    /// `None` when the target or the plan is not one the engine draws.
     pub fn with_program(
         prog: Rc<Program>,
         plan: &FragPlan,
         uniforms: &[u32; MAX_UNIFORMS],
         units: usize,
         fb: &Target<'_>,
+        front: bool,
     ) -> Option<Walk> {
-        if !target_ok(fb) || !super::ff::covers(plan) || units > MAX_TEXTURE_UNITS {
+        let unstenciled = FragPlan {
+            stencil: None,
+            ..*plan
+        };
+        if !target_ok(fb) || !super::ff::covers(&unstenciled) || units > MAX_TEXTURE_UNITS {
             return None;
         }
         let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);
@@ -270,6 +278,7 @@ impl Walk {
             writes: plan.color_mask != [false; 4],
             count_samples: plan.count_samples,
             own_uniforms: true,
+            front,
         })
     }
 
@@ -454,6 +463,8 @@ impl Walk {
             inputs: &inputs[..4 * self.units],
             color: &mut *fb.color,
             depth: &mut *fb.depth,
+            stencil: &mut *fb.stencil,
+            front: self.front,
             uniforms: &st.uniforms,
             live_out: &mut st.live_out[..n],
             sampler: tex,
@@ -462,6 +473,8 @@ impl Walk {
         stats.alpha_failed += c.killed;
         stats.depth_reads += c.depth_reads;
         stats.depth_failed += c.depth_failed;
+        stats.stencil_reads += c.stencil_reads;
+        stats.stencil_failed += c.stencil_failed;
         for (&out, &w) in st.live_out[..n].iter().zip(&st.ns[..n]) {
             let passed = u64::from(out.count_ones());
             if self.count_samples {

@@ -87,6 +87,10 @@ pub struct Io<'a> {
     pub color: &'a mut [[u8; 4]],
     /// The depth buffer (may be empty when the program has no depth test).
     pub depth: &'a mut [u32],
+    /// The stencil buffer (may be empty when the program has no stencil test).
+    pub stencil: &'a mut [u8],
+    /// The run's triangles face front (the stencil face [`Op::StencilDepth`] uses).
+    pub front: bool,
     /// The uniforms [`Op::Uniform`] reads (per-triangle values such as flat colours).
     pub uniforms: &'a [f32],
     /// Receives each chunk's live lanes after the program (bit i = lane i), when it is
@@ -107,6 +111,10 @@ pub struct Counts {
     pub depth_reads: u64,
     /// Of those, the lanes that failed it.
     pub depth_failed: u64,
+    /// Live lanes that reached the stencil test ([`Op::StencilDepth`]).
+    pub stencil_reads: u64,
+    /// Of those, the lanes that failed it.
+    pub stencil_failed: u64,
 }
 
 /// The state a kernel sees: the register file, the batch, and the run's buffers.
@@ -136,6 +144,12 @@ pub struct Ctx<'a> {
     /// The depth buffer and its length.
     pub(super) depth: *mut u32,
     pub(super) depth_len: usize,
+    /// The stencil buffer (a live lane lies inside it: `Program::run` checks).
+    pub(super) stencil: *mut u8,
+    /// The program's stencil plans ([`Op::StencilDepth`]).
+    pub(super) stencils: &'a [crate::fragment::StencilPlan],
+    /// The run's face.
+    pub(super) front: bool,
     /// The outputs [`Op::Output`] writes (`outs_per` values per chunk), null when the
     /// program has none.
     pub(super) outs: *mut [u32; 8],
@@ -189,6 +203,7 @@ pub struct Program {
     slots: usize,
     blends: Vec<Blend8>,
     fogs: Vec<FogPlan>,
+    stencils: Vec<crate::fragment::StencilPlan>,
     planes: usize,
     inputs: usize,
     uniforms: usize,
@@ -200,6 +215,8 @@ pub struct Program {
     quads: bool,
     /// The program samples ([`Op::Sample`]).
     samples: bool,
+    /// The program tests stencil ([`Op::StencilDepth`]).
+    stencil: bool,
 }
 
 /// Whether code for `want` may run where [`crate::cpu::isa`] reports `have`.
@@ -240,6 +257,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         slots: 0,
         blends: Vec::new(),
         fogs: Vec::new(),
+        stencils: Vec::new(),
         planes: 0,
         inputs: 0,
         uniforms: 0,
@@ -248,6 +266,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         pixels: false,
         quads: false,
         samples: false,
+        stencil: false,
     };
     for (i, op) in ir.ops.iter().enumerate() {
         if !live[i] {
@@ -367,6 +386,17 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                 p.depth = true;
                 (t.depth, func_code(func) | (write as u32) << 8)
             }
+            Op::StencilDepth { stencil, depth, .. } => {
+                p.depth |= depth.is_some();
+                p.stencil = true;
+                p.stencils.push(stencil);
+                let (func, write) = depth.unwrap_or((crate::pipe::CompareFunc::Always, false));
+                let imm = (p.stencils.len() - 1) as u32
+                    | func_code(func) << 16
+                    | u32::from(write) << 20
+                    | u32::from(depth.is_some()) << 21;
+                (t.stencil_depth, imm)
+            }
             Op::LoadColor => {
                 p.pixels = true;
                 (t.load_color, 0)
@@ -427,7 +457,11 @@ fn live_ops(ir: &Ir) -> Vec<bool> {
         let effect = ir.types[i].is_none()
             || matches!(
                 op,
-                Op::Kill(_) | Op::DepthTest { .. } | Op::StoreColor(_) | Op::Output(..)
+                Op::Kill(_)
+                    | Op::DepthTest { .. }
+                    | Op::StencilDepth { .. }
+                    | Op::StoreColor(_)
+                    | Op::Output(..)
             );
         if effect || live[i] {
             live[i] = true;
@@ -456,6 +490,7 @@ fn hoistable(op: &Op) -> bool {
             | Op::InputF(_)
             | Op::Kill(_)
             | Op::DepthTest { .. }
+            | Op::StencilDepth { .. }
             | Op::LoadColor
             | Op::Blend(..)
             | Op::StoreColor(_)
@@ -561,6 +596,11 @@ impl Program {
         if self.depth {
             assert!(chunks.iter().all(|c| c.live == 0 || !io.depth.is_empty()));
         }
+        if self.stencil {
+            assert!(chunks.iter().all(|c| {
+                c.live == 0 || c.idx + (8 - c.live.leading_zeros() as usize) <= io.stencil.len()
+            }));
+        }
         let need = self.slots * stride;
         if scratch.regs.len() < need {
             scratch.regs.resize(need, [0; 8]);
@@ -584,6 +624,9 @@ impl Program {
             color_len: io.color.len(),
             depth: io.depth.as_mut_ptr(),
             depth_len: io.depth.len(),
+            stencil: io.stencil.as_mut_ptr(),
+            stencils: &self.stencils,
+            front: io.front,
             outs: std::ptr::null_mut(),
             outs_per: 0,
             sampler: io.sampler,
@@ -645,6 +688,7 @@ impl Program {
         chunks: usize,
     ) {
         assert!(self.planes == 0 && !self.depth && !self.pixels && !self.quads && !self.samples);
+        assert!(!self.stencil);
         assert!(inputs.len() >= self.inputs && inputs.iter().all(|s| s.len() >= chunks));
         assert!(uniforms.len() >= self.uniforms);
         assert!(outputs.len() >= chunks * self.outputs);
@@ -677,6 +721,9 @@ impl Program {
             color_len: 0,
             depth: std::ptr::null_mut(),
             depth_len: 0,
+            stencil: std::ptr::null_mut(),
+            stencils: &[],
+            front: true,
             outs: outputs.as_mut_ptr(),
             outs_per: self.outputs,
             sampler: None,

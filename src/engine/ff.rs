@@ -402,33 +402,47 @@ pub fn lower(s: &FfState) -> Option<Ir> {
     l.b.finish().ok()
 }
 
+/// The depth plane at the pixel clamped to [0, 1] and quantised as `format` stores it
+/// (`fragment::span::quantize_depth`), `None` for a format the engine does not draw.
+fn quantised_depth(b: &mut Builder, format: DepthFormat) -> Option<Val> {
+    let z = b.push(Op::Interp(PLANE_Z));
+    let z = b.push(Op::Sat(z));
+    Some(match format {
+        DepthFormat::Z24 => {
+            let scale = b.f32(16_777_215.0);
+            let z = b.mul(z, scale);
+            b.push(Op::CvtRne(z))
+        }
+        DepthFormat::Z32F => b.push(Op::Bits(z)),
+        DepthFormat::Z16 => {
+            // f32(f32(z · 65535/65536) + 128) keeps the rounded value in the low bits.
+            let (k, h) = (b.f32(65535.0 / 65536.0), b.f32(128.0));
+            let v = b.mul(z, k);
+            let v = b.add(v, h);
+            let v = b.push(Op::Bits(v));
+            let m = b.i32(0xFFFF);
+            b.push(Op::And(v, m))
+        }
+        _ => return None,
+    })
+}
+
 /// The per-fragment operations after the colour, in the order of [`lower`]: the unorm8
-/// pack of `color`, the alpha test, the depth test (plane [`PLANE_Z`]), blending, the
-/// colour mask and the store. `None` when the depth format is not lowered.
+/// pack of `color`, the alpha test, the stencil and depth tests (plane [`PLANE_Z`];
+/// [`Op::StencilDepth`] when the plan tests stencil), blending, the colour mask and the
+/// store. `None` when the depth format is not lowered.
 pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
     let px = b.push(Op::PackUnorm8(color));
     alpha_test(b, p, px);
-    if let Some(d) = p.depth {
-        let z = b.push(Op::Interp(PLANE_Z));
-        let z = b.push(Op::Sat(z));
-        let q = match d.format {
-            DepthFormat::Z24 => {
-                let scale = b.f32(16_777_215.0);
-                let z = b.mul(z, scale);
-                b.push(Op::CvtRne(z))
-            }
-            DepthFormat::Z32F => b.push(Op::Bits(z)),
-            DepthFormat::Z16 => {
-                // f32(f32(z · 65535/65536) + 128) keeps the rounded value in the low bits.
-                let (k, h) = (b.f32(65535.0 / 65536.0), b.f32(128.0));
-                let v = b.mul(z, k);
-                let v = b.add(v, h);
-                let v = b.push(Op::Bits(v));
-                let m = b.i32(0xFFFF);
-                b.push(Op::And(v, m))
-            }
-            _ => return None,
+    if let Some(stencil) = p.stencil {
+        let depth = p.depth.map(|d| (d.func, d.write));
+        let z = match p.depth {
+            Some(d) => quantised_depth(b, d.format)?,
+            None => b.i32(0),
         };
+        b.push(Op::StencilDepth { stencil, depth, z });
+    } else if let Some(d) = p.depth {
+        let q = quantised_depth(b, d.format)?;
         b.push(Op::DepthTest {
             func: d.func,
             write: d.write,

@@ -23,6 +23,7 @@
 //!   [`Op::Blend`] (8-bit fixed point, docs/llvmpipe-rules.md) and [`Op::StoreColor`].
 
 use crate::fixed_function::fog::FogPlan;
+use crate::fragment::StencilPlan;
 use crate::pipe::{BlendState, CompareFunc};
 
 /// The type of a value's lanes.
@@ -202,6 +203,19 @@ pub enum Op {
         /// The quantised depth.
         z: Val,
     },
+    /// The stencil test of the triangle's face ([`StencilPlan`], the face chosen per run)
+    /// and, for the lanes that pass it, the depth test of `z` (when `depth`: the compare
+    /// function and glDepthMask); clears the lanes that fail either and updates the
+    /// stencil buffer with the face's fail, zfail or zpass operation, as
+    /// `fragment::span::stencil_depth` does.
+    StencilDepth {
+        /// Both faces' stencil state.
+        stencil: StencilPlan,
+        /// The depth test's function and write mask, if depth is tested.
+        depth: Option<(CompareFunc, bool)>,
+        /// The quantised depth (any i32 value without a depth test).
+        z: Val,
+    },
     /// The colour buffer's packed RGBA8 values at the live lanes.
     LoadColor,
     /// 8-bit blending of a packed source with a packed destination.
@@ -277,6 +291,7 @@ impl Op {
             | Op::Byte(a, _)
             | Op::UnpackUnorm8(a, _) => vec![a],
             Op::Kill(a) | Op::StoreColor(a) | Op::DepthTest { z: a, .. } => vec![a],
+            Op::StencilDepth { z, .. } => vec![z],
             Op::Output(_, a) => vec![a],
             Op::PackUnorm8(v) => v.to_vec(),
         }
@@ -453,7 +468,7 @@ impl Builder {
                 want(m, Mask, "mask operand")?;
                 return Ok(None);
             }
-            Op::DepthTest { z, .. } => {
+            Op::DepthTest { z, .. } | Op::StencilDepth { z, .. } => {
                 want(z, I32, "quantised depth")?;
                 return Ok(None);
             }

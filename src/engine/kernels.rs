@@ -505,6 +505,58 @@ mod body {
         });
     }
 
+    /// The stencil test with plan `imm & 0xFFFF` (the run's face) and the depth test
+    /// (bits 16–19: function code, bit 20: write, bit 21: depth tested) lane by lane, as
+    /// `fragment::span::stencil_depth`.
+    #[inline(always)]
+    pub(in super::super) unsafe fn stencil_depth<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let plan = c.stencils[(s.imm & 0xFFFF) as usize];
+        let sp = if c.front { plan.front } else { plan.back };
+        let func = super::super::exec::func_of(s.imm >> 16 & 0xF);
+        let (write, depth) = (s.imm & 1 << 20 != 0, s.imm & 1 << 21 != 0);
+        // SAFETY: a live lane lies inside the stencil buffer, and inside the depth buffer
+        // when depth is tested (`Program::run` checks both); slots as in every kernel.
+        unsafe {
+            for k in 0..c.n {
+                let mut live = *c.reg(0, k);
+                if live == [0; 8] {
+                    continue;
+                }
+                let idx = c.chunk(k).idx;
+                let q = *c.reg(s.a[0], k);
+                for (i, l) in live.iter_mut().enumerate() {
+                    if *l == 0 {
+                        continue;
+                    }
+                    c.counts.stencil_reads += 1;
+                    let st = c.stencil.add(idx + i);
+                    if !sp.test(*st) {
+                        *st = sp.update(sp.fail, *st);
+                        *l = 0;
+                        c.counts.stencil_failed += 1;
+                        continue;
+                    }
+                    if depth {
+                        c.counts.depth_reads += 1;
+                        let d = c.depth.add(idx + i);
+                        if func.test(q[i], *d) {
+                            if write {
+                                *d = q[i];
+                            }
+                        } else {
+                            *st = sp.update(sp.zfail, *st);
+                            *l = 0;
+                            c.counts.depth_failed += 1;
+                            continue;
+                        }
+                    }
+                    *st = sp.update(sp.zpass, *st);
+                }
+                *c.reg(0, k) = live;
+            }
+        }
+    }
+
     /// The colour buffer at the live lanes.
     #[inline(always)]
     pub(in super::super) unsafe fn load_color<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
@@ -643,7 +695,7 @@ macro_rules! kernel_list {
         $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
             max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
             depth, load_color, blend, store_color, unary, pow, ibin, xor, scmp, itof, ftoi,
-            from_bits, output, ddx, ddy, sample, texel);
+            from_bits, output, ddx, ddy, sample, texel, stencil_depth);
     };
 }
 

@@ -265,6 +265,8 @@ pub(super) fn run_prepared(
         uniforms: &[],
         live_out: &mut [],
         sampler: None,
+        stencil: &mut [],
+        front: true,
     };
     prog.run(scratch, &mut io, &p.chunks, batch);
 }
@@ -423,6 +425,8 @@ pub(super) fn eval_f32(
         uniforms: &[],
         live_out: &mut [],
         sampler: None,
+        stencil: &mut [],
+        front: true,
     };
     prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
     let lanes = color.map(u32::from_le_bytes);

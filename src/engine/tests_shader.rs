@@ -161,6 +161,8 @@ fn uniform_arithmetic_is_hoisted() {
             uniforms: &[0.7],
             live_out: &mut [],
             sampler: None,
+            stencil: &mut [],
+            front: true,
         };
         prog.run(&mut Scratch::default(), &mut io, &chunks, 2);
         for (i, c) in color.iter().enumerate() {
@@ -207,6 +209,8 @@ fn dead_values_are_dropped_and_constants_shared() {
             uniforms: &[],
             live_out: &mut [],
             sampler: None,
+            stencil: &mut [],
+            front: true,
         };
         let chunk = ChunkIn {
             idx: 0,
@@ -261,6 +265,8 @@ fn run_pairs(
         uniforms: &[],
         live_out: &mut [],
         sampler,
+        stencil: &mut [],
+        front: true,
     };
     prog.run(&mut Scratch::default(), &mut io, &chunks, batch);
     color

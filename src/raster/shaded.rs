@@ -165,7 +165,9 @@ fn walk(
     d: &mut Draw<'_, '_>,
 ) {
     let (plan, units, fb, stats) = (d.plan, d.units, &mut *d.fb, &mut *d.stats);
-    let reuse = matches!(&d.shaded, Some(p) if sh.facing.is_none() || p.front == t.front);
+    // A walk runs one face's uniforms (`gl_FrontFacing`) and stencil state.
+    let per_face = sh.facing.is_some() || plan.stencil.is_some_and(|s| s.front != s.back);
+    let reuse = matches!(&d.shaded, Some(p) if !per_face || p.front == t.front);
     if !reuse {
         if let Some(p) = d.shaded.take() {
             p.end(units, fb, stats);

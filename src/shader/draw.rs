@@ -258,7 +258,7 @@ pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>, front: bool) -> Op
     if let Some(k) = sh.facing {
         uniforms[usize::from(k)] = u32::from(front);
     }
-    Walk::with_program(prog, plan, &uniforms, usize::from(sh.ntex), fb)
+    Walk::with_program(prog, plan, &uniforms, usize::from(sh.ntex), fb, front)
 }
 
 /// The registered shader of a draw's [`ShaderRef`] (for its texture lookups), if it

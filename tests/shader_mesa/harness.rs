@@ -196,6 +196,8 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
             uniforms: &uniforms,
             live_out: &mut [],
             sampler: None,
+            stencil: &mut [],
+            front: true,
         };
         prog.run(&mut scratch, &mut io, &chunks, 32);
         for (i, px) in color.iter().enumerate() {
