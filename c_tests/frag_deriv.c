@@ -107,17 +107,10 @@ int main(int argc, char **argv)
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char img[64 * 64 * 4], rb[FW * FH * 4];
     GLuint tex[4], progs[6];
-    int level, size;
 
     glGenTextures(4, tex);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, tex[0]);
-    for (level = 0, size = 64; size >= 1; level++, size /= 2) {
-        frag_pattern(img, size, size, level);
-        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    }
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    frag_mipmapped_texture(tex[0], img);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, tex[1]);
     frag_pattern(img, 16, 16, 1);

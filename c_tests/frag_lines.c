@@ -102,16 +102,9 @@ int main(int argc, char **argv)
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char img[64 * 64 * 4];
     GLuint tex, color, texp, deriv, wave;
-    int level, size;
 
     glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    for (level = 0, size = 64; size >= 1; level++, size /= 2) {
-        frag_pattern(img, size, size, level);
-        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    }
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    frag_mipmapped_texture(tex, img);
 
     color = frag_program(FS_COLOR);
     texp = frag_program(FS_TEX);

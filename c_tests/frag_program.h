@@ -103,6 +103,20 @@ static inline void frag_pattern(unsigned char *img, int w, int h, int salt)
         }
 }
 
+/* Binds `tex` as a 64x64 2D texture of frag_pattern levels (salted by level)
+ * down to 1x1, LINEAR_MIPMAP_LINEAR; `img` holds at least 64x64 RGBA. */
+static inline void frag_mipmapped_texture(GLuint tex, unsigned char *img)
+{
+    int level, size;
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (level = 0, size = 64; size >= 1; level++, size /= 2) {
+        frag_pattern(img, size, size, level);
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
 /* Binds `tex` as a 16x16 LINEAR cube map of frag_pattern faces (salted by
  * face; `img` holds at least 16x16 RGBA). */
 static inline void frag_cube_texture(GLuint tex, unsigned char *img)

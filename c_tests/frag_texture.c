@@ -117,18 +117,12 @@ int main(int argc, char **argv)
     static unsigned char img[64 * 64 * 4], vol[8 * 8 * 8 * 4];
     GLuint tex[6];
     GLuint two, proj, cube3d, shadow, branch, p130, uvp;
-    int level, size, i;
+    int i;
 
     glGenTextures(6, tex);
     /* unit 0: mipmapped 2D, trilinear, REPEAT */
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, tex[0]);
-    for (level = 0, size = 64; size >= 1; level++, size /= 2) {
-        frag_pattern(img, size, size, level);
-        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    }
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    frag_mipmapped_texture(tex[0], img);
     /* unit 1: 2D RGB, NEAREST, CLAMP_TO_EDGE; also a 1D texture */
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, tex[1]);

@@ -122,15 +122,16 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         *prims,
     );
     if plan.shader.is_some() {
-        // A fragment shader runs on filled triangles, lines and points (see
-        // `shader::draw`); the polygon pipeline, smooth lines and points, flat shading
-        // and multisampling draw nothing.
+        // A fragment shader runs on triangles, lines and points (see `shader::draw`),
+        // also through the polygon pipeline (unfilled modes, offsets); stippled polygons,
+        // smooth lines and points, flat shading and multisampling draw nothing.
         let smooth = match mode {
             Primitive::Points => prims.point_smooth,
             Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
+            _ if poly => prims.polygon_stipple || prims.line_smooth || prims.point_smooth,
             _ => false,
         };
-        if smooth || poly || plan.flat || plan.ms.is_some() {
+        if smooth || plan.flat || plan.ms.is_some() {
             stats.program_draws_refused += 1;
             if let Some(a) = adopt {
                 a.settle(stats, Some(&mut *fb));

@@ -304,7 +304,7 @@ pub fn raster_line(
     }
     let plan = d.plan;
     if let Some(sh) = &plan.shader {
-        t.front = true;
+        t.front = d.prim_front;
         super::shaded::covered(&t, b, &super::prim_tex::EdgeCover(&edges), sh, d);
         return;
     }
@@ -356,7 +356,7 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
     let mut t = point_planes(v, nvary);
     let plan = d.plan;
     if let Some(sh) = &plan.shader {
-        t.front = true;
+        t.front = d.prim_front;
         super::shaded::covered(&t, b, &super::prim_tex::BoxCover, sh, d);
         return;
     }

@@ -63,6 +63,10 @@ pub struct Draw<'d, 'f> {
     /// A shader draw's walk with rows not yet run ([`shaded`]); run when the draw's
     /// references end.
     shaded: Option<shaded::Pending>,
+    /// The facing a shader sees on the lines and points drawn (`gl_FrontFacing`): true,
+    /// except for the edges and vertices of an unfilled back-facing polygon (Mesa's
+    /// unfilled stage passes the polygon's facing on).
+    pub prim_front: bool,
 }
 
 impl Drop for Draw<'_, '_> {
@@ -90,6 +94,7 @@ impl<'d, 'f> Draw<'d, 'f> {
             fb,
             stats,
             shaded: None,
+            prim_front: true,
         }
     }
 

@@ -340,6 +340,7 @@ impl PolyPipeline<'_> {
         let units = rast.units();
         let mut target = rast.target(stats).target();
         let d = &mut Draw::new(self.region, plan, units, &mut target, stats);
+        d.prim_front = front;
         match mode {
             FillMode::Fill => stippled_triangle(tri, &self.raster.stipple, d),
             FillMode::Line => {

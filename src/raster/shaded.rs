@@ -142,7 +142,7 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
 
 /// Draws the pixels of `cover` in box `b` (cut to the region) with the planes of `t` (a
 /// line's or a point's, [`super::lines`]) and shader `sh`, as [`triangle`] draws a
-/// triangle's: lines and points face front (`gl_FrontFacing`).
+/// triangle's (`t.front`: [`Draw::prim_front`]).
 #[cold]
 #[inline(never)]
 pub(super) fn covered<C: Cover>(
@@ -152,7 +152,6 @@ pub(super) fn covered<C: Cover>(
     sh: &ShaderRef,
     d: &mut Draw<'_, '_>,
 ) {
-    debug_assert!(t.front, "lines and points face front");
     walk(t, CoverChunks::new(cover, b), sh, d)
 }
 

@@ -25,8 +25,8 @@
 //! stages each replace their fixed-function counterpart; a missing stage stays fixed
 //! function.
 //!
-//! Fragment shaders colour filled triangles, lines and points (not smooth ones, not the
-//! polygon modes) on the engine (8 lanes; 2x2 quads for derivatives and lookups at
+//! Fragment shaders colour triangles, lines and points (also those of unfilled
+//! polygons; not smooth lines and points, not stippled polygons) on the engine (8 lanes; 2x2 quads for derivatives and lookups at
 //! computed coordinates), followed by the
 //! fixed per-fragment operations (alpha test, depth test, blending, colour mask). The
 //! inputs: `gl_Color` (the vertex stage's colour, clamped), `gl_TexCoord[0..8]` (each
@@ -36,7 +36,7 @@
 //! coordinates among a vertex's varyings), `gl_FragCoord` (window position, `y` flipped
 //! for top-down rows, `z` the depth plane, `w` the interpolated `1/w`), all
 //! perspective-correct; `gl_FrontFacing` (the triangle's facing as culling and two-sided
-//! lighting see it, a word the walk sets per triangle; true for lines and points); uniforms from the program's storage at each draw, passed as run
+//! lighting see it, a word the walk sets per triangle; true for lines and points, except the edges and vertices of an unfilled back face); uniforms from the program's storage at each draw, passed as run
 //! inputs (a glUniform between draws takes effect; the variant cache is keyed by the
 //! shader, the plan and the row flip, never by uniform values).
 //!
