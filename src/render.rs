@@ -124,14 +124,14 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     if plan.shader.is_some() {
         // A fragment shader runs on triangles, lines and points (see `shader::draw`),
         // also through the polygon pipeline (unfilled modes, offsets); stippled polygons,
-        // smooth lines and points, flat shading and multisampling draw nothing.
+        // smooth lines and points and multisampling draw nothing.
         let smooth = match mode {
             Primitive::Points => prims.point_smooth,
             Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
             _ if poly => prims.polygon_stipple || prims.line_smooth || prims.point_smooth,
             _ => false,
         };
-        if smooth || plan.flat || plan.ms.is_some() {
+        if smooth || plan.ms.is_some() {
             stats.program_draws_refused += 1;
             if let Some(a) = adopt {
                 a.settle(stats, Some(&mut *fb));

@@ -180,8 +180,25 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     );
     glUseProgram(pt);
     glRectf(-1.0, -1.0, 1.0, 1.0);
+    let s3b = stats();
+    assert_eq!(s3b.program_draws_refused - s3.program_draws_refused, 1);
+    assert_eq!(c.pixel(8, 8), [0; 4]);
+
+    // Nor does a `flat` input (which vertex llvmpipe takes it from is not reproduced).
+    let pf = program(
+        Some(
+            "#version 130
+             flat out vec4 f;
+             void main() { gl_Position = gl_Vertex; f = gl_Color; }",
+        ),
+        "#version 130
+         flat in vec4 f;
+         void main() { gl_FragColor = f; }",
+    );
+    glUseProgram(pf);
+    glRectf(-1.0, -1.0, 1.0, 1.0);
     let s4 = stats();
-    assert_eq!(s4.program_draws_refused - s3.program_draws_refused, 1);
+    assert_eq!(s4.program_draws_refused - s3b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
     // At a varying, or at computed coordinates, it draws; unit 0 has no texture, so the

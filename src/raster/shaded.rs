@@ -22,8 +22,10 @@ use super::Draw;
 use crate::engine::draw::Walk;
 use crate::engine::exec::{QuadCoords, TexSampler};
 use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
+use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
-use crate::geometry::setup::SetupTriangle;
+use crate::geometry::setup::{Plane, SetupTriangle};
+use crate::geometry::VARY_SPEC;
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::shader::draw::{FragShader, ShaderRef, ShaderTexture};
 use crate::stats::Stats;
@@ -137,7 +139,34 @@ fn sample_at(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, texels: &mut [TexLanes;
 #[cold]
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
-    walk(t, textured::Chunks::new(t, b), sh, d)
+    match flat_planes(t, d.plan) {
+        Some(f) => walk(&f, textured::Chunks::new(t, b), sh, d),
+        None => walk(t, textured::Chunks::new(t, b), sh, d),
+    }
+}
+
+/// Under glShadeModel(GL_FLAT), `t` with the planes of the primary and secondary
+/// colours made constant at the provoking vertex's values (llvmpipe flat-shades the
+/// colour semantics; the program reads them without the perspective divide,
+/// `shader::lower::Options::flat_colors`), else `None`.
+fn flat_planes(t: &SetupTriangle, plan: &FragPlan) -> Option<SetupTriangle> {
+    if !plan.flat {
+        return None;
+    }
+    let mut mask: u64 = 0xF | 0xF << VARY_SPEC;
+    let mut f = t.clone();
+    while mask != 0 {
+        let v = mask.trailing_zeros() as usize;
+        mask &= mask - 1;
+        if let (Some(p), Some(&a0)) = (f.vary.get_mut(v), t.flat.get(v)) {
+            *p = Plane {
+                a0,
+                dadx: 0.0,
+                dady: 0.0,
+            };
+        }
+    }
+    Some(f)
 }
 
 /// Draws the pixels of `cover` in box `b` (cut to the region) with the planes of `t` (a
@@ -152,7 +181,10 @@ pub(super) fn covered<C: Cover>(
     sh: &ShaderRef,
     d: &mut Draw<'_, '_>,
 ) {
-    walk(t, CoverChunks::new(cover, b), sh, d)
+    match flat_planes(t, d.plan) {
+        Some(f) => walk(&f, CoverChunks::new(cover, b), sh, d),
+        None => walk(t, CoverChunks::new(cover, b), sh, d),
+    }
 }
 
 /// The chunks of `t` through the draw's pending shader walk ([`triangle`]).

@@ -104,6 +104,12 @@ impl FragShader {
                 n => return Err(format!("input {n} is not fed by the fixed-function stage")),
             };
             vary.extend((0..s.count).map(|k| (base + k as usize) as u16));
+            if s.linear {
+                // Which vertex llvmpipe takes a `flat` input from (and how the clipper
+                // carries it) is not yet known to match: refused rather than drawn
+                // wrong; `noperspective` needs screen-linear planes.
+                return Err(format!("flat or noperspective input {}", s.name));
+            }
         }
         if vary.iter().any(|&v| v as usize >= MAX_VARY) {
             return Err("too many varyings".into());
@@ -191,7 +197,16 @@ impl FragShader {
     fn variant(&self, flip: Option<u32>, plan: &FragPlan) -> Option<Ir> {
         let opts = Options {
             flip_height: flip.map(|h| h as f32),
+            flat_colors: plan.flat,
         };
+        // A lookup sampled before the program runs divides its coordinates by w: not
+        // one at a flat colour.
+        let colors =
+            |v: u16| usize::from(v) < 4 || (VARY_SPEC..VARY_SPEC + 4).contains(&usize::from(v));
+        let mut coords = self.textures.iter().flat_map(|t| t.coords.iter().flatten());
+        if plan.flat && coords.any(|&(v, _)| colors(v)) {
+            return None;
+        }
         let l = lower_fragment_with(&self.hir, opts).ok()?;
         let mut ir = l.ir;
         for op in &mut ir.ops {

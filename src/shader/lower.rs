@@ -77,6 +77,10 @@ pub struct Options {
     /// `height − (row + 0.5)` (exact in f32), as Mesa's window-position transform gives
     /// it; `None`: `row + 0.5`.
     pub flip_height: Option<f32>,
+    /// glShadeModel(GL_FLAT): `gl_Color` and `gl_SecondaryColor` are the provoking
+    /// vertex's values, read from constant planes without the perspective divide (as
+    /// `flat` varyings are).
+    pub flat_colors: bool,
 }
 
 /// The uniform slot name of `gl_FrontFacing` (not a uniform of the program: the draw
@@ -443,7 +447,8 @@ impl Lower<'_> {
         let linear = matches!(
             var.interp,
             Some(softgl_glsl::ast::Interp::Flat | softgl_glsl::ast::Interp::Noperspective)
-        );
+        ) || (self.opts.flat_colors
+            && matches!(var.name.as_str(), "gl_Color" | "gl_SecondaryColor"));
         let first = FIRST_VARYING_PLANE + self.varyings.iter().map(|s| s.count).sum::<u16>();
         self.varyings.push(Slot {
             name: var.name.clone(),
