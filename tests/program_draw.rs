@@ -1,9 +1,10 @@
-//! Draws with a current program (issue 43): a fragment shader colours filled triangles
-//! through the engine, a vertex shader replaces the vertex stage; what the engine does
-//! not run (a vertex shader under user clip planes, texture sampling, lines and points
-//! with a fragment shader, generic attributes set between glBegin and glEnd) draws
-//! nothing and is counted in `program_draws_refused`, and fixed function comes back with
-//! glUseProgram(0).
+//! Draws with a current program (issue 43): a fragment shader colours triangles, lines
+//! and points through the engine, a vertex shader replaces the vertex stage; what the
+//! engine does not run (a vertex shader under user clip planes, texture lookups with a
+//! bias, `flat` inputs, smooth lines, generic attributes set between glBegin and glEnd)
+//! draws nothing and is counted in `program_draws_refused`, and fixed function comes
+//! back with glUseProgram(0). Hostile coordinates (infinite, NaN, huge) reach the
+//! samplers and derivatives without harm.
 
 use softgl::ffi::enums::*;
 use softgl::ffi::immediate::*;
@@ -340,4 +341,85 @@ fn front_facing_follows_the_winding() {
     assert_eq!(after.program_draws_refused, before.program_draws_refused);
     assert_eq!(c.pixel(2, 2), [255, 0, 0, 255]);
     assert_eq!(c.pixel(13, 13), [0, 255, 0, 255]);
+}
+
+#[test]
+fn hostile_coordinates_and_derivatives_draw_without_harm() {
+    use softgl::ffi::textures::*;
+    let c = Ctx::new();
+    c.clear();
+    // A mipmapped 4x4 texture on unit 0, and a cube map with one texel per face.
+    let mut tex = [0u32; 2];
+    // SAFETY: room for two names.
+    unsafe { glGenTextures(2, tex.as_mut_ptr()) };
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    let texels = [200u8; 4 * 4 * 4];
+    for (level, size) in [(0, 4), (1, 2), (2, 1)] {
+        // SAFETY: `texels` holds a 4x4 RGBA image, larger than every level.
+        unsafe {
+            glTexImage2D(
+                GL_TEXTURE_2D,
+                level,
+                GL_RGBA as i32,
+                size,
+                size,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                texels.as_ptr().cast(),
+            )
+        };
+    }
+    glTexParameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    let before = stats();
+    // Infinite, NaN, huge and tiny coordinates and their derivatives, projected by 0.
+    for fs in [
+        "uniform sampler2D t; void main() {
+           vec2 p = gl_TexCoord[0].st / 0.0;
+           gl_FragColor = texture2D(t, p) + vec4(dFdx(p.x), dFdy(p.y), fwidth(p.x), 0.0);
+         }",
+        "uniform sampler2D t; void main() {
+           vec2 p = vec2(1e38) * gl_FragCoord.xy;
+           gl_FragColor = texture2D(t, p) + texture2DProj(t, vec3(p, 0.0))
+             + texture2D(t, vec2(sqrt(-gl_FragCoord.x)));
+         }",
+        "uniform sampler2D t; void main() {
+           float n = 0.0 / 0.0;
+           gl_FragColor = texture2D(t, vec2(n, 1e-45 * gl_FragCoord.x))
+             + vec4(dFdx(n), dFdy(1.0 / (gl_FragCoord.x - 8.5)), 0.0, 1.0);
+         }",
+    ] {
+        let p = program(None, fs);
+        glUseProgram(p);
+        // SAFETY: a NUL-terminated name.
+        let k = unsafe { glGetUniformLocation(p, c"t".as_ptr()) };
+        glUniform1i(k, 0);
+        glBegin(GL_TRIANGLES);
+        glTexCoord2f(f32::INFINITY, 0.5);
+        glVertex2f(-1.0, -1.0);
+        glTexCoord2f(f32::NAN, -1e30);
+        glVertex2f(1.0, -1.0);
+        glTexCoord2f(0.0, 1e-30);
+        glVertex2f(0.0, 1.0);
+        glEnd();
+        glBegin(GL_LINES);
+        glVertex2f(-1.0, 0.0);
+        glVertex2f(1.0, 0.5);
+        glEnd();
+    }
+    glUseProgram(0);
+    let after = stats();
+    assert_eq!(
+        after.program_draws - before.program_draws,
+        6,
+        "every draw ran"
+    );
+    assert_eq!(after.program_draws_refused, before.program_draws_refused);
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    // Something was written (the texture's 200s or the derivatives' values).
+    assert!((0..W).any(|x| c.pixel(x, 4) != [0; 4]));
 }
