@@ -423,3 +423,29 @@ fn hostile_coordinates_and_derivatives_draw_without_harm() {
     // Something was written (the texture's 200s or the derivatives' values).
     assert!((0..W).any(|x| c.pixel(x, 4) != [0; 4]));
 }
+
+#[test]
+fn frag_data_0_is_the_colour_and_later_elements_are_refused() {
+    let c = Ctx::new();
+    c.clear();
+    let p0 = program(
+        None,
+        "void main() { gl_FragData[0] = vec4(0.0, 1.0, 0.0, 1.0); }",
+    );
+    glUseProgram(p0);
+    let s0 = stats();
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    assert_eq!(stats().program_draws - s0.program_draws, 1);
+    assert_eq!(c.pixel(8, 8), [0, 255, 0, 255]);
+    c.clear();
+    let p1 = program(
+        None,
+        "void main() { gl_FragData[0] = vec4(1.0); gl_FragData[1] = vec4(0.5); }",
+    );
+    glUseProgram(p1);
+    let s1 = stats();
+    glRectf(-1.0, -1.0, 1.0, 1.0);
+    assert_eq!(stats().program_draws_refused - s1.program_draws_refused, 1);
+    assert_eq!(c.pixel(8, 8), [0; 4]);
+    glUseProgram(0);
+}

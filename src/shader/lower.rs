@@ -203,9 +203,22 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
                 || (v.storage == Storage::Out && v.ty == Type::Vector(Scalar::Float, 4))
         })
         .filter(|i| l.env.contains_key(i));
-    let color = match out {
-        Some(i) => l.env[&i].clone(),
-        None => vec![l.f32(0.0); 4],
+    // gl_FragData[0] is draw buffer 0's colour; a write to a later element (another
+    // draw buffer) is not run yet.
+    let data = p
+        .vars
+        .iter()
+        .position(|v| v.name == "gl_FragData")
+        .and_then(|i| l.env.get(&i).cloned());
+    if let Some(d) = &data {
+        if d.iter().skip(4).any(|&v| l.cval(v) != Some(0)) {
+            return no("gl_FragData beyond element 0");
+        }
+    }
+    let color = match (out, data) {
+        (Some(i), _) => l.env[&i].clone(),
+        (None, Some(d)) if d.len() >= 4 => d[..4].to_vec(),
+        _ => vec![l.f32(0.0); 4],
     };
     let ir =
         l.b.finish()
