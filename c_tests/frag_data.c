@@ -39,15 +39,7 @@ static const char *FS_COLOR =
 /* Every program over seeded random triangles. */
 static void draw_all(const GLuint *progs, int n)
 {
-    int i;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    for (i = 0; i < n; i++) {
-        glUseProgram(progs[i]);
-        frag_random_tris(6);
-    }
+    frag_each_program(progs, n, 6);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(progs[1]);

@@ -86,16 +86,7 @@ static const char *FS_130 =
  * test. */
 static void draw_all(const GLuint *progs, int n)
 {
-    int i;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    for (i = 0; i < n; i++) {
-        glUseProgram(progs[i]);
-        frag_random_tris(6);
-    }
+    frag_each_program(progs, n, 6);
     glUseProgram(0);
     frag_random_tris(3);
 }

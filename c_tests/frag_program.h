@@ -169,6 +169,26 @@ static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
     return fbo;
 }
 
+/* n seeded random triangles in [-1.2,1.2]^2 x [-1,1] (defined below). */
+static inline void frag_random_tris(int n);
+
+/* Clears colour and depth, sets frag_perspective() and the depth test
+ * (GL_LESS), and draws `tris` seeded random triangles with each of the `n`
+ * programs in turn (the last stays current). */
+static inline void frag_each_program(const GLuint *progs, int n, int tris)
+{
+    int i;
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    frag_perspective();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    for (i = 0; i < n; i++) {
+        glUseProgram(progs[i]);
+        frag_random_tris(tris);
+    }
+}
+
 /* A triangle with per-vertex colours and texture coordinates (sets 0 and 1). */
 static inline void frag_tri(const float v[3][3], const float c[3][4], const float t[3][4])
 {
