@@ -258,11 +258,7 @@ impl Walk {
         fb: &Target<'_>,
         front: bool,
     ) -> Option<Walk> {
-        let unstenciled = FragPlan {
-            stencil: None,
-            ..*plan
-        };
-        if !target_ok(fb) || !super::ff::covers(&unstenciled) || units > MAX_TEXTURE_UNITS {
+        if !target_ok(fb) || !super::ff::covers_tail(plan) || units > MAX_TEXTURE_UNITS {
             return None;
         }
         let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);

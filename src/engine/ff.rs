@@ -40,11 +40,17 @@ pub struct FfState {
     pub persp: bool,
 }
 
-/// Whether the lowering covers `plan` (stencil, logic ops, smoothing, multisampling, sRGB
-/// and Z32 unorm depth stay on the hand-written paths).
+/// Whether the lowering of a fixed-function state covers `plan` ([`covers_tail`]; the
+/// stencil test, which [`tail`] lowers for shader draws, stays on the hand-written paths
+/// here, so that their routing is unchanged).
 pub fn covers(plan: &FragPlan) -> bool {
-    plan.stencil.is_none()
-        && plan.logic.is_none()
+    plan.stencil.is_none() && covers_tail(plan)
+}
+
+/// Whether [`tail`] lowers `plan`'s per-fragment operations (logic ops, smoothing,
+/// multisampling, sRGB and Z32 unorm depth do not).
+pub fn covers_tail(plan: &FragPlan) -> bool {
+    plan.logic.is_none()
         && plan.smooth.is_none()
         && plan.ms.is_none()
         && !plan.srgb

@@ -1,20 +1,25 @@
 //! Triangles, lines and points of a draw with a fragment shader
 //! ([`crate::shader::draw`]): the chunk rows of the textured walk ([`textured::Chunks`],
 //! pairs of rows in 8-pixel chunks; for lines and points the chunks of their coverage,
-//! [`CoverChunks`], on the planes of `lines.rs`) through the shader's compiled variant. A triangle whose plan or target the engine does not
-//! draw (stencil, logic op, wide or sRGB buffers …) is not drawn and is counted in
-//! `program_tris_refused`: drawing it without its shader would be wrong.
+//! [`CoverChunks`], on the planes of `lines.rs`) through the shader's compiled variant.
+//! A primitive whose plan or target the engine does not draw (logic op, wide or sRGB
+//! buffers …) is not drawn and is counted in `program_tris_refused`: drawing it without
+//! its shader would be wrong. Under GL_FLAT the colours' planes are made constant at the
+//! provoking vertex's values ([`flat_planes`]).
 //!
-//! The shader's texture lookups ([`crate::shader::draw::ShaderTexture`]) are sampled
-//! here, a chunk's 2x2 quads at a time, before the program runs: each coordinate is its
-//! varying's plane at the pixel times the pixel's `1 / w` (the value the program reads:
-//! the plane evaluated as llvmpipe's interpolator does, `1 / w_plane` divided once), then
-//! times `1 / q` for a projective lookup, and the draw's units sample them with the
-//! fixed-function units' samplers and level-of-detail rules (the quad's derivatives).
+//! The shader's texture lookups at varyings ([`crate::shader::draw::ShaderTexture`]) are
+//! sampled here, a chunk's 2x2 quads at a time, before the program runs: each coordinate
+//! is its varying's plane at the pixel times the pixel's `1 / w` (the value the program
+//! reads: the plane evaluated as llvmpipe's interpolator does, `1 / w_plane` divided
+//! once), then times `1 / q` for a projective lookup, and the draw's units sample them
+//! with the fixed-function units' samplers and level-of-detail rules (the quad's
+//! derivatives). Lookups at coordinates the program computes are sampled by the program
+//! itself through [`Computed`], a chunk pair at a time, with the same samplers.
 //!
-//! Consecutive triangles of one [`Draw`] share one walk ([`Pending`]; a new one where the
-//! shader reads `gl_FrontFacing` and the facing changes), so that the engine runs the rows
-//! of several small triangles in one batch; the draw runs the last rows when it ends.
+//! Consecutive primitives of one [`Draw`] share one walk ([`Pending`]; a new one where
+//! the shader reads `gl_FrontFacing`, or the two faces' stencil states differ, and the
+//! facing changes), so that the engine runs the rows of several small triangles in one
+//! batch; the draw runs the last rows when it ends.
 
 use super::prim_tex::{Cover, CoverChunks};
 use super::textured;
