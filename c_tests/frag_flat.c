@@ -4,8 +4,10 @@
  * program whose vertex shader writes gl_FrontColor and a user varying, on
  * triangles (clipped at the near plane too), quads, lines and points, mixed
  * with smooth and fixed-function draws. Drawn in perspective with the depth
- * test. (`flat` inputs of GLSL 1.30 are refused, not drawn: not yet
- * reproduced.) */
+ * test; and a #version 130 program whose vertex shader writes `flat out`
+ * values (a colour and a float) beside smooth ones, under both shade models,
+ * on triangles clipped at the near plane (the clipper carries the provoking
+ * vertex's flat values), quads, lines and points. */
 #define GL_GLEXT_PROTOTYPES
 #define FW 116
 #define FH 97
@@ -33,6 +35,28 @@ static const char *FS_FLAT =
     "in vec2 uv;\n"
     "void main() {\n"
     "  gl_FragColor = gl_Color * 0.8 + vec4(fract(uv * 3.0), 1.0, 1.0) * 0.2;\n"
+    "}\n";
+
+static const char *VS_FLAT_OUT =
+    "#version 130\n"
+    "flat out vec4 fc;\n"
+    "flat out float fk;\n"
+    "out vec2 uv;\n"
+    "void main() {\n"
+    "  gl_Position = ftransform();\n"
+    "  fc = gl_Color;\n"
+    "  fk = gl_Vertex.x * 0.5 + 0.5;\n"
+    "  uv = gl_MultiTexCoord0.st;\n"
+    "  gl_FrontColor = gl_Color.bgra;\n"
+    "}\n";
+
+static const char *FS_FLAT_OUT =
+    "#version 130\n"
+    "flat in vec4 fc;\n"
+    "flat in float fk;\n"
+    "in vec2 uv;\n"
+    "void main() {\n"
+    "  gl_FragColor = fc * 0.6 + gl_Color * 0.2 + vec4(fk, fract(uv * 3.0), 1.0) * 0.2;\n"
     "}\n";
 
 /* Lines and points with seeded random colours. */
@@ -77,10 +101,11 @@ int main(int argc, char **argv)
     FILE *out = sgl_open(argc, argv);
     unsigned char *buf;
     OSMesaContext ctx = frag_context(&buf);
-    GLuint color, flat;
+    GLuint color, flat, flat_out;
 
     color = frag_program(FS_COLOR);
     flat = vert_program(VS_FLAT, FS_FLAT, NULL);
+    flat_out = vert_program(VS_FLAT_OUT, FS_FLAT_OUT, NULL);
     glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     frag_perspective();
@@ -104,6 +129,18 @@ int main(int argc, char **argv)
     glShadeModel(GL_FLAT);
     glUseProgram(0);
     frag_random_tris(3);
+    frag_output(out, "vertex_program", buf);
+
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glShadeModel(GL_SMOOTH);
+    glUseProgram(flat_out);
+    frag_random_tris(8);
+    quads(3);
+    lines_points();
+    glShadeModel(GL_FLAT);
+    frag_random_tris(6);
+    glUseProgram(0);
+    glShadeModel(GL_SMOOTH);
     sgl_text(out, "error", "0x%x", glGetError());
-    return frag_end(out, "vertex_program", buf, ctx);
+    return frag_end(out, "flat_out", buf, ctx);
 }

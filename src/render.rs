@@ -212,6 +212,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         cull,
         back,
         flat: plan.flat,
+        flat_vary: crate::raster::prims::flat_varyings(plan),
         lp_offset,
         ucp: &stage.ucp,
         viewport: &viewport,
@@ -392,7 +393,11 @@ struct TriPipe<'a> {
     nvary: usize,
     cull: CullMode,
     back: Option<usize>,
+    /// GL_FLAT (the decomposition of quads and polygons).
     flat: bool,
+    /// The varyings taken from the provoking vertex (`raster::prims::flat_varyings`):
+    /// setup keeps their values and the clipper copies them.
+    flat_vary: u64,
     /// llvmpipe's own polygon offset: factor and scaled units.
     lp_offset: Option<(f32, (f32, bool))>,
     ucp: &'a UserPlanes,
@@ -409,9 +414,14 @@ impl TriPipe<'_> {
         sink: &mut K,
         stats: &mut Stats,
     ) {
-        let r = self
-            .setup
-            .shaded(v, self.nvary, self.cull, self.back, self.flat, tri);
+        let r = self.setup.shaded(
+            v,
+            self.nvary,
+            self.cull,
+            self.back,
+            self.flat_vary != 0,
+            tri,
+        );
         if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
             // a float depth buffer scales the units per triangle (`FLOAT_BITS` as bits)
             let win = [v[0].win, v[1].win, v[2].win];
@@ -455,7 +465,7 @@ impl TriPipe<'_> {
         // SAFETY: a draw has a queue only when its setup is the AVX2 copy
         // (`Self::queue_ok`), which `SetupVariant::detect` picks only on AVX2 CPUs.
         unsafe {
-            queue.flush(self.cull, self.flat, tri, |r, t, win| {
+            queue.flush(self.cull, self.flat_vary != 0, tri, |r, t, win| {
                 if let (SetupResult::Draw, Some((factor, units))) = (r, self.lp_offset) {
                     crate::raster::prims::apply_setup_offset(win, factor, units, t);
                 }
@@ -518,7 +528,7 @@ impl TriPipe<'_> {
             self.ucp,
             self.viewport,
             self.nvary,
-            self.flat,
+            self.flat_vary,
             self.back,
             |p, q, r| self.one([p, q, r], tri, sink, stats),
         );

@@ -1,7 +1,7 @@
 //! Draws with a current program (issue 43): a fragment shader colours triangles, lines
 //! and points through the engine, a vertex shader replaces the vertex stage; what the
 //! engine does not run (a vertex shader under user clip planes, texture lookups with a
-//! bias, `flat` inputs, smooth lines, generic attributes set between glBegin and glEnd)
+//! bias, `noperspective` inputs, smooth lines, generic attributes set between glBegin and glEnd)
 //! draws nothing and is counted in `program_draws_refused`, and fixed function comes
 //! back with glUseProgram(0). Hostile coordinates (infinite, NaN, huge) reach the
 //! samplers and derivatives without harm.
@@ -185,15 +185,15 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s3b.program_draws_refused - s3.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
-    // Nor does a `flat` input (which vertex llvmpipe takes it from is not reproduced).
+    // Nor does a `noperspective` input (it would need screen-linear planes).
     let pf = program(
         Some(
             "#version 130
-             flat out vec4 f;
+             noperspective out vec4 f;
              void main() { gl_Position = gl_Vertex; f = gl_Color; }",
         ),
         "#version 130
-         flat in vec4 f;
+         noperspective in vec4 f;
          void main() { gl_FragColor = f; }",
     );
     glUseProgram(pf);

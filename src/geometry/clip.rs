@@ -69,21 +69,35 @@ fn interp(t: f32, out: &ClipVertex, inn: &ClipVertex, vp: &Viewport, nvary: usiz
     d
 }
 
-/// Copies the flat-shaded attributes, the colours (primary and secondary, and the back
-/// colours at `back` with two-sided lighting), from `src` to `dst`, as the clipper's
-/// `copy_flat` does: the fog coordinate and texture coordinates stay interpolated.
-fn copy_flat(dst: &mut ClipVertex, src: &ClipVertex, back: Option<usize>) {
-    dst.vary[..8].copy_from_slice(&src.vary[..8]);
-    if let Some(o) = back {
-        dst.vary[o..o + 8].copy_from_slice(&src.vary[o..o + 8]);
+/// The varyings GL_FLAT makes constant: the primary and secondary colours (bits 0–7 of
+/// a clipper's `flat` mask).
+pub const FLAT_COLORS: u64 = 0xFF;
+
+/// Copies the constant-interpolated varyings `flat` (bit v: varying v; the colours
+/// under GL_FLAT, a shader's `flat` inputs), and with two-sided lighting the back
+/// colours at `back` of the copied colours, from `src` to `dst`, as the clipper's
+/// `copy_flat` does: the other varyings stay interpolated.
+fn copy_flat(dst: &mut ClipVertex, src: &ClipVertex, flat: u64, back: Option<usize>) {
+    let mut m = flat;
+    while m != 0 {
+        let v = m.trailing_zeros() as usize;
+        m &= m - 1;
+        if let (Some(d), Some(&s)) = (dst.vary.get_mut(v), src.vary.get(v)) {
+            *d = s;
+        }
+        if let Some(o) = back.filter(|_| v < 8) {
+            if let (Some(d), Some(&s)) = (dst.vary.get_mut(o + v), src.vary.get(o + v)) {
+                *d = s;
+            }
+        }
     }
 }
 
 /// Clips triangle `v` (whose vertices' masks OR to `mask`, and AND to zero) and calls `emit`
 /// for each resulting triangle, ordered `(P[i-1], P[i], P[0])` so that P[0], which carries
-/// the provoking vertex's flat attributes, comes last. `flat` copies `v[2]`'s colours
-/// (with the back colours at `back`) into P[0] when it is a new vertex. Returns the number
-/// of triangles emitted.
+/// the provoking vertex's flat attributes, comes last. `flat` ([`copy_flat`]'s mask)
+/// copies `v[2]`'s constant varyings (with the back colours at `back`) into P[0] when it
+/// is a new vertex. Returns the number of triangles emitted.
 #[allow(clippy::too_many_arguments)]
 pub fn clip_triangle(
     v: [&ClipVertex; 3],
@@ -91,7 +105,7 @@ pub fn clip_triangle(
     ucp: &UserPlanes,
     vp: &Viewport,
     nvary: usize,
-    flat: bool,
+    flat: u64,
     back: Option<usize>,
     mut emit: impl FnMut(&ClipVertex, &ClipVertex, &ClipVertex),
 ) -> usize {
@@ -113,7 +127,7 @@ pub fn clip_triangle_edges(
     ucp: &UserPlanes,
     vp: &Viewport,
     nvary: usize,
-    flat: bool,
+    flat: u64,
     back: Option<usize>,
     mut emit: impl FnMut(&ClipVertex, &ClipVertex, &ClipVertex, u8),
 ) -> usize {
@@ -202,8 +216,8 @@ pub fn clip_triangle_edges(
     if n < 3 {
         return 0;
     }
-    if flat && in_o[0] != 2 {
-        copy_flat(&mut inl[0], v[2], back);
+    if flat != 0 && in_o[0] != 2 {
+        copy_flat(&mut inl[0], v[2], flat, back);
     }
     for i in 2..n {
         // (P[i-1], P[i], P[0]): bit 0 is P[i-1]→P[i], bit 1 P[i]→P[0], bit 2 P[0]→P[i-1].
@@ -224,7 +238,8 @@ pub fn clip_triangle_edges(
 
 /// Clips segment `v0`–`v1` against the planes in `mask` (Mesa's `do_clip_line`: the
 /// largest entry parameter from each end). Returns the clipped endpoints, or `None` when
-/// nothing is left. `flat` copies the provoking vertex `v1`'s varyings to a new `v0`.
+/// nothing is left. `flat` ([`copy_flat`]'s mask) copies the provoking vertex `v1`'s
+/// constant varyings to a new endpoint.
 pub fn clip_line(
     v0: &ClipVertex,
     v1: &ClipVertex,
@@ -232,7 +247,7 @@ pub fn clip_line(
     ucp: &UserPlanes,
     vp: &Viewport,
     nvary: usize,
-    flat: bool,
+    flat: u64,
 ) -> Option<(ClipVertex, ClipVertex)> {
     let (mut t0, mut t1) = (0.0f32, 0.0f32);
     let mut planes = mask;
@@ -259,14 +274,14 @@ pub fn clip_line(
     let mut b = *v1;
     if v0.mask != 0 {
         a = interp(t0, v0, v1, vp, nvary);
-        if flat {
-            copy_flat(&mut a, v1, None);
+        if flat != 0 {
+            copy_flat(&mut a, v1, flat, None);
         }
     }
     if v1.mask != 0 {
         b = interp(t1, v1, v0, vp, nvary);
-        if flat {
-            copy_flat(&mut b, v1, None);
+        if flat != 0 {
+            copy_flat(&mut b, v1, flat, None);
         }
     }
     Some((a, b))
@@ -301,7 +316,7 @@ mod tests {
             &[[0.0; 4]; 8],
             &vp,
             0,
-            false,
+            0,
             None,
             |a, b, c| tris.push([a.clip, b.clip, c.clip]),
         );
@@ -328,7 +343,7 @@ mod tests {
                 &[[0.0; 4]; 8],
                 &vp,
                 0,
-                false,
+                0,
                 None,
                 |_, _, _| {}
             ),

@@ -51,6 +51,16 @@ pub struct PrimStages<'a> {
 }
 
 impl PrimStages<'_> {
+    /// The varyings the clipper copies from the provoking vertex (the colours under
+    /// GL_FLAT).
+    fn flat_mask(&self) -> u64 {
+        if self.flat {
+            super::clip::FLAT_COLORS
+        } else {
+            0
+        }
+    }
+
     /// Runs `n` vertices of `mode` (the k-th is `at(k)`, its edge flag `edge_flag(k)`)
     /// through the stages into `sink`.
     pub fn run<'v>(
@@ -90,7 +100,7 @@ impl PrimStages<'_> {
                         ucp,
                         vp,
                         nvary,
-                        self.flat,
+                        self.flat_mask(),
                         self.back,
                         |p, q, r, e| self.triangle([p, q, r], e, std::mem::take(&mut first), sink),
                     );
@@ -109,7 +119,15 @@ impl PrimStages<'_> {
         if or == 0 {
             return sink.line(a, b);
         }
-        let clipped = clip_line(a, b, or, self.ucp, &self.viewport, self.nvary, self.flat);
+        let clipped = clip_line(
+            a,
+            b,
+            or,
+            self.ucp,
+            &self.viewport,
+            self.nvary,
+            self.flat_mask(),
+        );
         if let Some((p, q)) = clipped {
             sink.line(&p, &q);
         }

@@ -289,7 +289,7 @@ fn quad_spans_clipped(
             tri_spans(vs, region, &mut tri, &mut f);
             continue;
         }
-        clip_triangle(vs, or, &ucp, vp, VARY_TEX + 2, false, None, |p, q, r| {
+        clip_triangle(vs, or, &ucp, vp, VARY_TEX + 2, 0, None, |p, q, r| {
             tri_spans([p, q, r], region, &mut tri, &mut f)
         });
     }

@@ -418,7 +418,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             self.inflight = a.work.take();
             // A pending batch goes on filling with this draw's triangles ([`segs`]).
             let fresh = a.pending.take().map(|mut p| {
-                p.nflat = if self.plan.flat { self.nvary } else { 0 };
+                p.nflat = if super::prims::flat_varyings(self.plan) != 0 {
+                    self.nvary
+                } else {
+                    0
+                };
                 std::mem::replace(&mut self.batch, p)
             });
             if self.inflight.is_some() {
@@ -496,8 +500,11 @@ impl<'a, 'f> Rasterizer<'a, 'f> {
             return;
         }
         if self.batch.heads.is_empty() {
-            self.batch
-                .reserve(self.tune.max_batch, self.nvary, self.plan.flat);
+            self.batch.reserve(
+                self.tune.max_batch,
+                self.nvary,
+                crate::raster::prims::flat_varyings(self.plan) != 0,
+            );
         }
         split::bin(
             &mut self.batch,

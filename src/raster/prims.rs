@@ -17,6 +17,19 @@ use crate::pipe::{FillMode, RasterState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::stats::Stats;
 use crate::texture::shadow::FLOAT_BITS;
 
+/// The varyings whose value is the provoking vertex's in a draw under `plan` (bit v:
+/// varying v): the colours under GL_FLAT (llvmpipe flat-shades the colour semantics) and
+/// a fragment shader's `flat` inputs. Setup keeps these values, the clipper copies them
+/// (Mesa's `copy_flat`), and a shader walk reads them from constant planes.
+pub fn flat_varyings(plan: &FragPlan) -> u64 {
+    let colors = if plan.flat {
+        crate::geometry::clip::FLAT_COLORS
+    } else {
+        0
+    };
+    colors | plan.shader.as_ref().map_or(0, |s| s.flat)
+}
+
 /// The point size llvmpipe rasterizes without attenuation: glPointSize clamped to
 /// GL_POINT_SIZE_MIN/MAX by the state tracker, then capped at llvmpipe's maximum.
 pub fn point_size(r: &RasterState) -> f32 {
@@ -163,7 +176,7 @@ impl LinePlan {
                 &self.ucp,
                 viewport,
                 self.nvary,
-                d.plan.flat,
+                flat_varyings(d.plan),
             ) {
                 Some(pq) => pq,
                 None => return,
@@ -415,7 +428,7 @@ impl PolyPipeline<'_> {
                     &self.lines.ucp,
                     &self.viewport,
                     nvary,
-                    plan.flat,
+                    flat_varyings(plan),
                     self.back,
                     |p, q, r, e| out.push(([*p, *q, *r], e)),
                 );

@@ -30,7 +30,6 @@ use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
 use crate::geometry::setup::{Plane, SetupTriangle};
-use crate::geometry::VARY_SPEC;
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::shader::draw::{FragShader, ShaderRef, ShaderTexture};
 use crate::stats::Stats;
@@ -150,15 +149,15 @@ pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut D
     }
 }
 
-/// Under glShadeModel(GL_FLAT), `t` with the planes of the primary and secondary
-/// colours made constant at the provoking vertex's values (llvmpipe flat-shades the
-/// colour semantics; the program reads them without the perspective divide,
-/// `shader::lower::Options::flat_colors`), else `None`.
+/// `t` with the planes of the varyings taken from the provoking vertex
+/// ([`super::prims::flat_varyings`]: the colours under GL_FLAT, the shader's `flat`
+/// inputs) made constant at its values (the program reads them without the perspective
+/// divide, `shader::lower::Options::flat_colors`), or `None` when there are none.
 fn flat_planes(t: &SetupTriangle, plan: &FragPlan) -> Option<SetupTriangle> {
-    if !plan.flat {
+    let mut mask = super::prims::flat_varyings(plan);
+    if mask == 0 {
         return None;
     }
-    let mut mask: u64 = 0xF | 0xF << VARY_SPEC;
     let mut f = t.clone();
     while mask != 0 {
         let v = mask.trailing_zeros() as usize;

@@ -45,6 +45,8 @@ pub struct FragShader {
     pub textures: Vec<ShaderTexture>,
     /// The uniform word of `gl_FrontFacing`, when the shader reads it.
     facing: Option<u16>,
+    /// The triangle varyings the shader reads `flat` (bit v: varying v).
+    flat: u64,
 }
 
 /// A texture lookup of a [`FragShader`] in the triangle's terms.
@@ -89,6 +91,7 @@ impl FragShader {
             .map_or(0, |s| s.count as usize / 4);
         let mut vary = Vec::new();
         let mut user = Vec::new();
+        let mut flat = 0u64;
         let mut next = VARY_TEX + 4 * tex_coords;
         for s in &l.varyings {
             let base = match s.name.as_str() {
@@ -105,10 +108,20 @@ impl FragShader {
             };
             vary.extend((0..s.count).map(|k| (base + k as usize) as u16));
             if s.linear {
-                // Which vertex llvmpipe takes a `flat` input from (and how the clipper
-                // carries it) is not yet known to match: refused rather than drawn
-                // wrong; `noperspective` needs screen-linear planes.
-                return Err(format!("flat or noperspective input {}", s.name));
+                // `flat` inputs are the provoking vertex's values (constant planes,
+                // `raster::prims::flat_varyings`); `noperspective` would need
+                // screen-linear planes.
+                let interp = hir
+                    .vars
+                    .iter()
+                    .find(|v| v.name == s.name)
+                    .and_then(|v| v.interp);
+                if interp != Some(softgl_glsl::ast::Interp::Flat) {
+                    return Err(format!("noperspective input {}", s.name));
+                }
+                for k in 0..usize::from(s.count) {
+                    flat |= 1u64.checked_shl((base + k) as u32).unwrap_or(0);
+                }
             }
         }
         if vary.iter().any(|&v| v as usize >= MAX_VARY) {
@@ -168,6 +181,7 @@ impl FragShader {
             user,
             textures,
             facing,
+            flat,
         });
         let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
         let map = r.get_or_insert_with(HashMap::new);
@@ -190,6 +204,7 @@ impl FragShader {
             tex_units: [NO_UNIT; MAX_TEXTURE_UNITS],
             ntex: self.textures.len() as u8,
             facing: self.facing,
+            flat: self.flat,
         }
     }
 
@@ -245,6 +260,8 @@ pub struct ShaderRef {
     pub ntex: u8,
     /// The uniform word of `gl_FrontFacing`, set per triangle.
     pub facing: Option<u16>,
+    /// The triangle varyings the shader reads `flat` (bit v: varying v).
+    pub flat: u64,
 }
 
 /// [`ShaderRef::tex_units`] of a lookup whose texture is incomplete.

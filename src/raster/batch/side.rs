@@ -105,7 +105,11 @@ impl Rasterizer<'_, '_> {
         let mut batch = self.ring.pop().unwrap_or_default();
         batch.clear();
         batch.bins.resize_with(self.batch.bins.len(), Vec::new);
-        batch.reserve(0, self.nvary, self.plan.flat);
+        batch.reserve(
+            0,
+            self.nvary,
+            crate::raster::prims::flat_varyings(self.plan) != 0,
+        );
         let binner = Binner::new(
             batch,
             self.region,
@@ -178,8 +182,11 @@ impl Rasterizer<'_, '_> {
         self.release(stats);
         let (nvary, nflat, rows) = (self.nvary, b.nflat, self.tune.band_rows);
         if self.batch.heads.is_empty() {
-            self.batch
-                .reserve(self.tune.max_batch, self.nvary, self.plan.flat);
+            self.batch.reserve(
+                self.tune.max_batch,
+                self.nvary,
+                crate::raster::prims::flat_varyings(self.plan) != 0,
+            );
         }
         for (i, h) in b.heads.iter().enumerate() {
             let planes = &b.planes[i * nvary..(i + 1) * nvary];

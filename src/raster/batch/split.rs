@@ -358,7 +358,11 @@ impl Rasterizer<'_, '_> {
             .map(|mut batch| {
                 batch.clear();
                 batch.bins.resize_with(nb, Vec::new);
-                batch.reserve(section_len, nvary, self.plan.flat);
+                batch.reserve(
+                    section_len,
+                    nvary,
+                    crate::raster::prims::flat_varyings(self.plan) != 0,
+                );
                 Slot {
                     ready: Padded(AtomicUsize::new(0)),
                     binner: UnsafeCell::new(Binner::new(batch, region, nvary, rows, pair)),
