@@ -4,8 +4,9 @@
 //! [`CoverChunks`], on the planes of `lines.rs`) through the shader's compiled variant.
 //! A primitive whose plan or target the engine does not draw (logic op, wide or sRGB
 //! buffers …) is not drawn and is counted in `program_tris_refused`: drawing it without
-//! its shader would be wrong. Under GL_FLAT the colours' planes are made constant at the
-//! provoking vertex's values ([`flat_planes`]).
+//! its shader would be wrong. The planes of the varyings taken from the provoking vertex
+//! (the colours under GL_FLAT, the shader's `flat` inputs) are made constant at its
+//! values ([`flat_planes`]).
 //!
 //! The shader's texture lookups at varyings ([`crate::shader::draw::ShaderTexture`]) are
 //! sampled here, a chunk's 2x2 quads at a time, before the program runs: each coordinate
