@@ -63,6 +63,8 @@ pub struct QuadCoords {
     pub t: [[f32; 8]; 2],
     /// r (or a shadow lookup's reference) per row and lane.
     pub r: [[f32; 8]; 2],
+    /// The lookup's level-of-detail argument per row and lane (0 without one).
+    pub l: [[f32; 8]; 2],
     /// The lanes covered (a quad without one need not be sampled).
     pub live: [[bool; 8]; 2],
 }

@@ -233,8 +233,9 @@ pub enum Op {
     /// row of the buffer) minus the top one's, in both pixels of its column.
     Ddy(Val),
     /// Samples texture lookup `lookup` at the coordinates `s`, `t`, `r` of every lane
-    /// (the run's [`super::exec::TexSampler`], per 2x2 quad, its level of detail from
-    /// the quad's coordinates); [`Op::Texel`] reads the result.
+    /// with the lookup's level-of-detail argument `l` (the run's
+    /// [`super::exec::TexSampler`], a chunk pair at a time: what `l` is, a bias, a level
+    /// of detail or none, is the lookup's own); [`Op::Texel`] reads the result.
     Sample {
         /// The lookup's index (its texel is streams `4 · lookup ..` of [`Op::Texel`]).
         lookup: u8,
@@ -244,6 +245,8 @@ pub enum Op {
         t: Val,
         /// The third, or a shadow lookup's reference (0 where there is none).
         r: Val,
+        /// The level-of-detail argument (0 where the lookup has none).
+        l: Val,
     },
     /// Channel `n % 4` of the texel that the last [`Op::Sample`] of lookup `n / 4` gave.
     Texel(u16),
@@ -263,7 +266,7 @@ impl Op {
             | Op::Uniform(_) => vec![],
             Op::LoadColor => vec![],
             Op::Ddx(a) | Op::Ddy(a) => vec![a],
-            Op::Sample { s, t, r, .. } => vec![s, t, r],
+            Op::Sample { s, t, r, l, .. } => vec![s, t, r, l],
             Op::Add(a, b)
             | Op::Sub(a, b)
             | Op::Mul(a, b)
@@ -335,6 +338,11 @@ impl Builder {
         self.ir.types.get(v.0 as usize).copied().flatten()
     }
 
+    /// The operation that defines `v`.
+    pub fn op_of(&self, v: Val) -> Option<&Op> {
+        self.ir.ops.get(v.0 as usize)
+    }
+
     /// Appends `op` after checking its operand types; returns its value.
     pub fn push(&mut self, op: Op) -> Val {
         let at = self.ir.ops.len();
@@ -370,8 +378,8 @@ impl Builder {
                 want(a, F32, "f32 operand")?;
                 F32
             }
-            Op::Sample { s, t, r, .. } => {
-                for v in [s, t, r] {
+            Op::Sample { s, t, r, l, .. } => {
+                for v in [s, t, r, l] {
                     want(v, F32, "f32 coordinate")?;
                 }
                 return Ok(None);

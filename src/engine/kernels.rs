@@ -629,7 +629,8 @@ mod body {
         }
     }
 
-    /// Samples lookup `imm` at the coordinates in `a[0..3]`, a chunk pair at a time,
+    /// Samples lookup `imm` at the coordinates in `a[0..3]` with the level-of-detail
+    /// argument in `a[3]`, a chunk pair at a time,
     /// into the run's texels (`Ctx::texels`).
     #[inline(always)]
     pub(in super::super) unsafe fn sample<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
@@ -650,6 +651,7 @@ mod body {
                     s: rows(s.a[0]),
                     t: rows(s.a[1]),
                     r: rows(s.a[2]),
+                    l: rows(s.a[3]),
                     live: [lanes(c.chunk(k).live), lanes(live1)],
                 };
                 let mut out = [[[0.0, 0.0, 0.0, 1.0]; 8]; 2];

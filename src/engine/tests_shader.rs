@@ -317,8 +317,8 @@ fn derivatives_are_quad_differences() {
     }
 }
 
-/// A sampler that returns its coordinates and whether the lane is live, and counts its
-/// calls.
+/// A sampler that returns its coordinates and whether the lane is live plus the
+/// level-of-detail argument, and counts its calls.
 struct Echo(std::cell::Cell<usize>);
 
 impl super::exec::TexSampler for Echo {
@@ -327,7 +327,12 @@ impl super::exec::TexSampler for Echo {
         for (r, row) in out.iter_mut().enumerate() {
             for (i, o) in row.iter_mut().enumerate() {
                 let live = if c.live[r][i] { 1.0 } else { 0.0 };
-                *o = [c.s[r][i], c.t[r][i], c.r[r][i] + lookup as f32, live];
+                *o = [
+                    c.s[r][i],
+                    c.t[r][i],
+                    c.r[r][i] + lookup as f32,
+                    live + c.l[r][i],
+                ];
             }
         }
     }
@@ -346,6 +351,7 @@ fn sample_hands_pairs_to_the_sampler_and_texel_reads_its_result() {
                     s,
                     t: v[1],
                     r: v[2],
+                    l: v[1],
                 });
                 b.push(Op::Texel(4 * 2 + ch))
             });
@@ -358,7 +364,7 @@ fn sample_hands_pairs_to_the_sampler_and_texel_reads_its_result() {
                     }
                     let x = (8 * (k / 2) + i) as f32;
                     let v0 = -3.0 * y;
-                    let want = [v0 * v0, 0.25 * x, y + 2.0, 1.0][usize::from(ch)];
+                    let want = [v0 * v0, 0.25 * x, y + 2.0, 1.0 + 0.25 * x][usize::from(ch)];
                     assert_eq!(f32::from_bits(bits), want, "{isa:?} chunk {k} lane {i}");
                 }
             }

@@ -34,6 +34,7 @@ use crate::geometry::setup::{Plane, SetupTriangle};
 use crate::pipe::MAX_TEXTURE_UNITS;
 use crate::shader::draw::{FragShader, ShaderRef, ShaderTexture};
 use crate::stats::Stats;
+use crate::texture::lookup::{self, LookupKind};
 use crate::texture::UnitPlan;
 use std::cell::RefCell;
 use std::sync::Arc;
@@ -88,15 +89,44 @@ impl TexSampler for Computed<'_, '_> {
             .slots
             .get(lookup)
             .map_or(usize::MAX, |&u| usize::from(u));
-        let (Some(u), Some(_)) = (self.units.get(unit), self.lookups.get(lookup)) else {
+        let (Some(u), Some(lk)) = (self.units.get(unit), self.lookups.get(lookup)) else {
             *out = [[[0.0, 0.0, 0.0, 1.0]; 8]; 2];
             return;
         };
+        if lk.kind != LookupKind::Implicit {
+            return by_quad(u, lk.kind, c, out);
+        }
         let mut buf = self.buf.borrow_mut();
         sample_at(u, lookup, c, &mut buf);
         for (o, row) in out.iter_mut().zip(buf.iter()) {
             *o = row[lookup];
         }
+    }
+}
+
+/// A lookup of `kind` other than [`LookupKind::Implicit`] ([`crate::texture::lookup`])
+/// of unit `u` at `c`, quad by quad (those with a live pixel).
+fn by_quad(u: &UnitPlan<'_>, kind: LookupKind, c: &QuadCoords, out: &mut [[[f32; 4]; 8]; 2]) {
+    for j in 0..LANES / 2 {
+        let (a, b) = (2 * j, 2 * j + 1);
+        let quad = |v: &[[f32; 8]; 2]| [v[0][a], v[0][b], v[1][a], v[1][b]];
+        let live = [c.live[0][a], c.live[0][b], c.live[1][a], c.live[1][b]];
+        if !live.iter().any(|&l| l) {
+            continue;
+        }
+        let (s, t, r, l) = (quad(&c.s), quad(&c.t), quad(&c.r), quad(&c.l));
+        let v = match kind {
+            LookupKind::Fetch => std::array::from_fn(|i| lookup::fetch(u, s[i], t[i], l[i])),
+            LookupKind::Size => [lookup::size(u, l[0]); 4],
+            _ => {
+                let r = u.needs_r().then_some(r);
+                lookup::sample_quad_lods(u, kind, (s, t, r), l, live)
+            }
+        };
+        out[0][a] = v[0];
+        out[0][b] = v[1];
+        out[1][a] = v[2];
+        out[1][b] = v[3];
     }
 }
 
@@ -192,6 +222,20 @@ pub(super) fn covered<C: Cover>(
     }
 }
 
+/// Whether every lookup of a shader can read the unit it is bound to (`texelFetch` of a
+/// depth texture and the like are refused: [`lookup::reads`]).
+fn readable(
+    lookups: &[ShaderTexture],
+    slots: &[u8; MAX_TEXTURE_UNITS],
+    units: &[UnitPlan<'_>],
+) -> bool {
+    lookups.iter().zip(slots).all(|(lk, &u)| {
+        units
+            .get(usize::from(u))
+            .is_none_or(|u| lookup::reads(u, lk.kind))
+    })
+}
+
 /// The chunks of `t` through the draw's pending shader walk ([`triangle`]).
 #[inline(always)]
 fn walk(
@@ -215,8 +259,8 @@ fn walk(
         let shader = match sh.ntex {
             0 => None,
             _ => match crate::shader::draw::shader_of(sh) {
-                Some(s) => Some(s),
-                None => {
+                Some(s) if readable(&s.textures, &sh.tex_units, units) => Some(s),
+                _ => {
                     walk.end(fb, stats);
                     stats.program_tris_refused += 1;
                     return;

@@ -64,6 +64,9 @@ pub struct ShaderTexture {
     /// The program computes the coordinates and samples them itself (through the walk's
     /// [`crate::engine::exec::TexSampler`]); `coords` is empty.
     pub computed: bool,
+    /// The lookup's level-of-detail argument, or the non-sampling lookup it is (only
+    /// computed lookups have one).
+    pub kind: crate::texture::lookup::LookupKind,
 }
 
 impl std::fmt::Debug for FragShader {
@@ -169,6 +172,7 @@ impl FragShader {
                 coords,
                 proj: t.proj,
                 computed: t.computed,
+                kind: t.kind,
             });
         }
         let fs = Arc::new(FragShader {

@@ -276,8 +276,14 @@ impl<'p> Lower<'p> {
 }
 
 impl Lower<'_> {
-    /// Appends `op`, folding it when its operands are constants.
+    /// Appends `op`, folding it when its operands are constants, and factoring a sum of
+    /// two products with a common factor ([`Lower::factor`]).
     pub(super) fn op(&mut self, op: Op) -> Val {
+        if let Op::Add(p, q) = op {
+            if let Some(v) = self.factor(p, q) {
+                return v;
+            }
+        }
         let folded = self.fold(&op);
         if let (Some(bits), Some(ty)) = (folded, self.result_ty(&op)) {
             return self.konst(ty, bits);
@@ -285,6 +291,37 @@ impl Lower<'_> {
         let v = self.b.push(op);
         self.consts.resize(v.0 as usize + 1, None);
         v
+    }
+
+    /// `a·b + a·c` as `a·(b + c)`, as NIR's algebraic pass rewrites every inexact sum of
+    /// two products that share a factor (`nir_opt_algebraic.py`:
+    /// `('~fadd', ('fmul', a, b), ('fmul', a, c))`; products and sums commute, and equal
+    /// constants are one value after `nir_opt_cse`). `None` when `p + q` is not such a
+    /// sum. A varying as read (its plane times `1 / w`) is no product to NIR: llvmpipe
+    /// interpolates it outside the shader.
+    fn factor(&mut self, p: Val, q: Val) -> Option<Val> {
+        if self.plane_vals.contains_key(&p) || self.plane_vals.contains_key(&q) {
+            return None;
+        }
+        let (&Op::Mul(a, b), &Op::Mul(c, d)) = (self.b.op_of(p)?, self.b.op_of(q)?) else {
+            return None;
+        };
+        let same = |x: Val, y: Val| {
+            x == y || matches!((self.cval(x), self.cval(y)), (Some(i), Some(j)) if i == j)
+        };
+        let (k, x, y) = if same(a, c) {
+            (a, b, d)
+        } else if same(a, d) {
+            (a, b, c)
+        } else if same(b, c) {
+            (b, a, d)
+        } else if same(b, d) {
+            (b, a, c)
+        } else {
+            return None;
+        };
+        let sum = self.op(Op::Add(x, y));
+        Some(self.op(Op::Mul(k, sum)))
     }
 
     /// A constant of type `ty` (one op per use; the executor fills it once per run).
@@ -539,5 +576,45 @@ pub(super) fn cmp<T: PartialOrd>(op: FCmp, a: T, b: T) -> bool {
         FCmp::Ge => a >= b,
         FCmp::Eq => a == b,
         FCmp::Ne => a != b,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sums_of_products_with_a_common_factor_are_factored_as_nir_does() {
+        let p = softgl_glsl::compile(
+            &["uniform float u; varying float a; varying float b;
+               void main() { gl_FragColor = vec4(a * u + b * u, u * a + 0.5 * u, a * 0.3 + b * 0.3, a * u + b * 0.3); }"],
+            softgl_glsl::Stage::Fragment,
+        )
+        .expect("compiles");
+        let l = lower_fragment(&p).unwrap();
+        let op = |v: Val| l.ir.ops[v.0 as usize];
+        let konst = |v: Val| match op(v) {
+            Op::Const(_, bits) => Some(f32::from_bits(bits)),
+            _ => None,
+        };
+        for ch in 0..3 {
+            let Op::Mul(k, s) = op(l.color[ch]) else {
+                panic!("channel {ch}: {:?}", op(l.color[ch]));
+            };
+            assert!(matches!(op(s), Op::Add(..)), "channel {ch}: {:?}", op(s));
+            if ch == 2 {
+                assert_eq!(konst(k), Some(0.3), "equal constants are one factor");
+            }
+        }
+        // Nothing in common: the sum stays.
+        assert!(matches!(op(l.color[3]), Op::Add(..)));
+        // Two varyings share `1 / w` as read, but NIR never sees that product.
+        let p = softgl_glsl::compile(
+            &["varying float a; varying float b; void main() { gl_FragColor = vec4(a + b); }"],
+            softgl_glsl::Stage::Fragment,
+        )
+        .expect("compiles");
+        let l = lower_fragment(&p).unwrap();
+        assert!(matches!(l.ir.ops[l.color[0].0 as usize], Op::Add(..)));
     }
 }

@@ -20,12 +20,21 @@
 //! [`crate::pipe::MAX_TEXTURE_UNITS`] lookups a shader may make (a loop of nine lookups
 //! is refused).
 //!
-//! Not lowered (the shader is refused): explicit bias or LOD, offsets, gradients,
-//! `texelFetch`, `textureSize`, rectangle, array, buffer, multisample, integer and
-//! cube-shadow samplers, sampler arrays, and lookups in vertex shaders.
+//! A lookup with a bias or a level of detail (`texture2D(s, c, bias)`, the `*Lod` and
+//! `textureLod` forms), `texelFetch` and `textureSize` are sampled by the program too,
+//! whatever their coordinates: the argument (an integer one as f32, and `texelFetch`'s
+//! coordinates likewise) is [`Op::Sample`]'s `l`, and the lookup's
+//! [`LookupKind`] says what the sampler does with it ([`crate::texture::lookup`]).
+//! `textureSize` reads its result back as integers.
+//!
+//! Not lowered (the shader is refused): a bias with a 3D or cube-map sampler,
+//! `texelFetch` and `textureSize` other than on 1D and 2D samplers, offsets, gradients,
+//! rectangle, array, buffer, multisample, integer and cube-shadow samplers, sampler
+//! arrays, and lookups in vertex shaders.
 
 use super::lower::{no, Lower, R};
 use crate::engine::ir::{Op, Val};
+use crate::texture::lookup::LookupKind;
 use crate::texture::Target;
 use softgl_glsl::hir::{Expr, ExprKind, Storage};
 use softgl_glsl::types::{Dim, Scalar, Type};
@@ -42,9 +51,12 @@ pub struct TexUse {
     pub coords: [Option<(u16, bool)>; 4],
     /// s, t and r are multiplied by `1 / q`.
     pub proj: bool,
-    /// The coordinates are computed in the shader: the program samples them itself
-    /// ([`Op::Sample`]) and `coords` is empty.
+    /// The coordinates are computed in the shader (or the lookup has a level-of-detail
+    /// argument): the program samples them itself ([`Op::Sample`]) and `coords` is
+    /// empty.
     pub computed: bool,
+    /// The level-of-detail argument, or the non-sampling lookup it is.
+    pub kind: LookupKind,
 }
 
 impl Lower<'_> {
@@ -53,16 +65,38 @@ impl Lower<'_> {
         if self.vertex {
             return no("texture lookups in vertex shaders");
         }
-        let proj = match name {
-            "texture1D" | "texture2D" | "texture3D" | "textureCube" | "shadow1D" | "shadow2D"
-            | "texture" => false,
-            "texture1DProj" | "texture2DProj" | "texture3DProj" | "shadow1DProj"
-            | "shadow2DProj" | "textureProj" => true,
-            n => return no(format!("the texture function {n}")),
+        let (proj, kind) = match name {
+            "texelFetch" => (false, LookupKind::Fetch),
+            "textureSize" => (false, LookupKind::Size),
+            _ => {
+                let (stem, lod) = match name.strip_suffix("Lod") {
+                    Some(stem) => (stem, true),
+                    None => (name, false),
+                };
+                let (stem, proj) = match stem.strip_suffix("Proj") {
+                    Some(stem) => (stem, true),
+                    None => (stem, false),
+                };
+                let family = [
+                    "texture1D",
+                    "texture2D",
+                    "texture3D",
+                    "textureCube",
+                    "shadow1D",
+                    "shadow2D",
+                    "texture",
+                ];
+                if !family.contains(&stem) || (proj && stem == "textureCube") {
+                    return no(format!("the texture function {name}"));
+                }
+                let kind = match (lod, args.len()) {
+                    (true, _) => LookupKind::Lod,
+                    (false, 3) => LookupKind::Bias,
+                    _ => LookupKind::Implicit,
+                };
+                (proj, kind)
+            }
         };
-        if args.len() != 2 {
-            return no(format!("{name} with a bias"));
-        }
         let (Type::Sampler(s), ExprKind::Var(id)) = (&args[0].ty, &args[0].kind) else {
             return no("a sampler that is not a uniform variable");
         };
@@ -79,10 +113,52 @@ impl Lower<'_> {
             Dim::Cube if !s.shadow => Target::Cube,
             _ => return no(format!("{}", args[0].ty)),
         };
+        let flat = matches!(target, Target::Tex1D | Target::Tex2D);
+        match kind {
+            LookupKind::Bias if !flat => return no(format!("a bias with {}", args[0].ty)),
+            LookupKind::Fetch | LookupKind::Size
+                if !flat || s.shadow && kind == LookupKind::Fetch =>
+            {
+                return no(format!("{name} with {}", args[0].ty))
+            }
+            _ => {}
+        }
         let sampler = var.name.clone();
         // The sampler's unit is a uniform word of the draw.
         self.uniform_slot(&sampler, &[Scalar::Int]);
-        let c = self.expr(&args[1])?;
+        if kind == LookupKind::Size {
+            let l = self.expr(&args[1])?;
+            let l = self.op(Op::ItoF(l[0]));
+            let zero = self.f32(0.0);
+            let k = self.own_lookup(sampler, target, false, kind)?;
+            self.op(Op::Sample {
+                lookup: k as u8,
+                s: zero,
+                t: zero,
+                r: zero,
+                l,
+            });
+            let n = ret.components() as usize;
+            return Ok((0..n)
+                .map(|ch| {
+                    let v = self.op(Op::Texel((4 * k + ch) as u16));
+                    self.op(Op::FtoI(v))
+                })
+                .collect());
+        }
+        let mut c = self.expr(&args[1])?;
+        let l = match kind {
+            LookupKind::Implicit => None,
+            _ => Some(self.expr(&args[2])?[0]),
+        };
+        if kind == LookupKind::Fetch {
+            // Integer coordinates and level, exact as f32 inside any texture.
+            c = c.into_iter().map(|v| self.op(Op::ItoF(v))).collect();
+        }
+        let l = match (kind, l) {
+            (LookupKind::Fetch, Some(l)) => Some(self.op(Op::ItoF(l))),
+            (_, l) => l,
+        };
         let n = c.len();
         let two = !matches!(target, Target::Tex1D);
         let three = matches!(target, Target::Tex3D | Target::Cube) || s.shadow;
@@ -105,8 +181,8 @@ impl Lower<'_> {
                 }
             }
         }
-        if computed {
-            return self.sample_computed(sampler, target, &c, pick, ret);
+        if computed || l.is_some() {
+            return self.sample_computed(sampler, target, &c, pick, (kind, l), ret);
         }
         let lookup = TexUse {
             sampler,
@@ -114,6 +190,7 @@ impl Lower<'_> {
             coords,
             proj,
             computed: false,
+            kind,
         };
         let k = match self.textures.iter().position(|t| *t == lookup) {
             Some(k) => k,
@@ -135,21 +212,42 @@ impl Lower<'_> {
         (0..n).map(|ch| self.op(read(ch))).collect()
     }
 
+    /// A lookup of its own (the program samples it, [`Op::Sample`]): its index.
+    fn own_lookup(
+        &mut self,
+        sampler: String,
+        target: Target,
+        proj: bool,
+        kind: LookupKind,
+    ) -> R<usize> {
+        if self.textures.len() == crate::pipe::MAX_TEXTURE_UNITS {
+            return no("more texture lookups than texture units");
+        }
+        self.textures.push(TexUse {
+            sampler,
+            target,
+            coords: [None; 4],
+            proj,
+            computed: true,
+            kind,
+        });
+        Ok(self.textures.len() - 1)
+    }
+
     /// A lookup whose coordinates `c` (components `pick`: s, t, r, q) the shader
-    /// computes: a lookup of its own, sampled by the program ([`Op::Sample`]) at the
-    /// values as computed, projected as the rasterizer projects varyings (each of s, t, r
-    /// times `1 / q`, NIR's `lower_txp`), absent ones 0.
+    /// computes, or which has a level-of-detail argument (`lod`: its kind and value): a
+    /// lookup of its own, sampled by the program ([`Op::Sample`]) at the values as
+    /// computed, projected as the rasterizer projects varyings (each of s, t, r times
+    /// `1 / q`, NIR's `lower_txp`), absent ones 0.
     fn sample_computed(
         &mut self,
         sampler: String,
         target: Target,
         c: &[Val],
         pick: [Option<usize>; 4],
+        (kind, lod): (LookupKind, Option<Val>),
         ret: &Type,
     ) -> R<Vec<Val>> {
-        if self.textures.len() == crate::pipe::MAX_TEXTURE_UNITS {
-            return no("more texture lookups than texture units");
-        }
         let zero = self.f32(0.0);
         let mut co = [zero; 3];
         for (d, k) in co.iter_mut().zip(pick) {
@@ -164,20 +262,14 @@ impl Lower<'_> {
                 *d = self.op(Op::Mul(*d, rq));
             }
         }
-        let k = self.textures.len();
-        self.textures.push(TexUse {
-            sampler,
-            target,
-            coords: [None; 4],
-            proj: pick[3].is_some(),
-            computed: true,
-        });
+        let k = self.own_lookup(sampler, target, pick[3].is_some(), kind)?;
         let [s, t, r] = co;
         self.op(Op::Sample {
             lookup: k as u8,
             s,
             t,
             r,
+            l: lod.unwrap_or(zero),
         });
         Ok(self.texel(ret, |ch| Op::Texel((4 * k + ch) as u16)))
     }
@@ -218,6 +310,7 @@ mod tests {
                 coords: [at(t1), at(t1 + 1), None, at(t1 + 3)],
                 proj: true,
                 computed: false,
+                kind: LookupKind::Implicit,
             }
         );
         assert_eq!(l.textures[1].target, Target::Cube);
@@ -298,9 +391,51 @@ mod tests {
     }
 
     #[test]
+    fn lod_arguments_fetches_and_sizes_are_the_programs_own_lookups() {
+        let p = check(
+            "#version 130
+             uniform sampler2D a; uniform sampler1D b; out vec4 o;
+             void main() {
+               vec4 x = texture(a, gl_TexCoord[0].st, gl_Color.r);
+               vec4 y = textureLod(a, gl_TexCoord[0].st, 2.0);
+               vec4 z = texture1DProjLod(b, gl_TexCoord[0].sq, 1.0);
+               vec4 w = texelFetch(a, ivec2(3, 4), 1);
+               ivec2 s = textureSize(a, 0);
+               o = x + y + z + w + vec4(s, textureSize(b, 1), 0);
+             }",
+        );
+        let l = lower_fragment(&p).unwrap();
+        let kinds: Vec<LookupKind> = l.textures.iter().map(|t| t.kind).collect();
+        use LookupKind::*;
+        assert_eq!(kinds, [Bias, Lod, Lod, Fetch, Size, Size]);
+        assert!(l.textures.iter().all(|t| t.computed));
+        assert!(l.textures[2].proj && l.textures[2].target == Target::Tex1D);
+        // Each Sample carries its argument: the level 2.0, the fetch's level 1 as f32.
+        let ls: Vec<Option<u32>> =
+            l.ir.ops
+                .iter()
+                .filter_map(|op| match op {
+                    Op::Sample { l: v, .. } => Some(match l.ir.ops[v.0 as usize] {
+                        Op::Const(_, bits) => Some(bits),
+                        _ => None,
+                    }),
+                    _ => None,
+                })
+                .collect();
+        assert_eq!(ls[1], Some(2.0f32.to_bits()));
+        assert_eq!(ls[2], Some(1.0f32.to_bits()));
+        assert_eq!(ls[3], Some(1.0f32.to_bits()));
+        assert_eq!(ls[0], None, "the bias is the varying");
+    }
+
+    #[test]
     fn bias_sampler_arrays_and_vertex_lookups_are_refused() {
         for src in [
-            "uniform sampler2D a; void main() { gl_FragColor = texture2D(a, gl_TexCoord[0].st, 1.0); }",
+            "uniform samplerCube a; void main() { gl_FragColor = textureCube(a, gl_TexCoord[0].stp, 1.0); }",
+            "#version 130
+             uniform sampler3D a; out vec4 o; void main() { o = texelFetch(a, ivec3(1), 0); }",
+            "#version 130
+             uniform sampler2DShadow a; out vec4 o; void main() { o = vec4(textureSize(a, 0), 0, 0) + vec4(textureGrad(a, vec3(0.5), vec2(0.1), vec2(0.1))); }",
             "uniform sampler2D a[2]; void main() { gl_FragColor = texture2D(a[1], gl_TexCoord[0].st); }",
             "uniform sampler2D a; void main() { vec4 c = vec4(0.0);
                for (int i = 0; i < 9; i++) c += texture2D(a, vec2(float(i) * 0.1));

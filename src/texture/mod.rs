@@ -66,6 +66,7 @@ pub mod fast;
 pub mod fast_avx2;
 pub mod float;
 pub mod lod;
+pub mod lookup;
 pub mod mipmap;
 pub mod sample;
 pub mod shadow;
