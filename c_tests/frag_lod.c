@@ -3,8 +3,8 @@
  * uniform one), textureLod, texture2DLod, textureProjLod, shadow2DLod and
  * textureCube/textureLod on a cube map without mipmaps (whose LOD argument
  * is ignored), on mipmapped textures whose minification and magnification
- * filters differ (llvmpipe's float path) or match (its 8-bit path), and one
- * with a texture LOD bias and MIN/MAX_LOD clamps. texelFetch at texels and
+ * image filters match (llvmpipe's 8-bit path) or differ (its float path,
+ * with a texture LOD bias and MIN/MAX_LOD clamps). texelFetch at texels and
  * levels inside and outside the texture (RGBA and LUMINANCE, whose missing
  * alpha reads 1), and textureSize of levels inside and beyond the mipmap
  * chain. Drawn into the window and into a framebuffer object. */
@@ -93,7 +93,7 @@ int main(int argc, char **argv)
     GLuint tex[6], progs[NPROG];
 
     glGenTextures(6, tex);
-    /* a: trilinear, LINEAR magnification (minification differs) */
+    /* a: trilinear (the same image filter both ways: the 8-bit path) */
     glActiveTexture(GL_TEXTURE0);
     frag_mipmapped_texture(tex[0], img);
     /* b: NEAREST_MIPMAP_NEAREST and NEAREST (the filters match) */
@@ -101,10 +101,12 @@ int main(int argc, char **argv)
     frag_mipmapped_texture(tex[1], img);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    /* c: LINEAR_MIPMAP_NEAREST with a LOD bias and MIN/MAX_LOD */
+    /* c: LINEAR_MIPMAP_NEAREST and NEAREST (the filters differ: llvmpipe's
+     * float path) with a LOD bias and MIN/MAX_LOD */
     glActiveTexture(GL_TEXTURE2);
     frag_mipmapped_texture(tex[2], img);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, 0.75f);
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 0.5f);
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 3.5f);
