@@ -110,10 +110,57 @@ pub enum IOp {
     Min,
     /// The larger (signed).
     Max,
+    /// The signed quotient, truncated (gallivm's `idiv`: 0 where `b` is 0, `a` for
+    /// `i32::MIN / -1`).
+    Div,
+    /// The unsigned quotient (gallivm's `udiv`: all ones where `b` is 0).
+    UDiv,
+    /// The unsigned remainder (gallivm's `umod`, which GLSL's `%` is for every integer
+    /// type in Mesa: all ones where `b` is 0).
+    URem,
+    /// `a << (b & 31)`.
+    Shl,
+    /// `a >> (b & 31)`, arithmetic.
+    Shr,
+    /// `a >> (b & 31)`, logical.
+    UShr,
+}
+
+impl IOp {
+    /// The operation on one lane, as llvmpipe computes it at run time.
+    pub fn apply(self, a: i32, b: i32) -> i32 {
+        let (ua, ub) = (a as u32, b as u32);
+        match self {
+            IOp::Add => a.wrapping_add(b),
+            IOp::Sub => a.wrapping_sub(b),
+            IOp::Mul => a.wrapping_mul(b),
+            IOp::Min => a.min(b),
+            IOp::Max => a.max(b),
+            IOp::Div if b == 0 => 0,
+            IOp::Div => a.wrapping_div(b),
+            IOp::UDiv => ua.checked_div(ub).unwrap_or(u32::MAX) as i32,
+            IOp::URem => ua.checked_rem(ub).unwrap_or(u32::MAX) as i32,
+            IOp::Shl => a.wrapping_shl(ub & 31),
+            IOp::Shr => a.wrapping_shr(ub & 31),
+            IOp::UShr => ua.wrapping_shr(ub & 31) as i32,
+        }
+    }
 }
 
 /// The integer operations in the order of their codes in a step's immediate.
-pub const IOPS: [IOp; 5] = [IOp::Add, IOp::Sub, IOp::Mul, IOp::Min, IOp::Max];
+pub const IOPS: [IOp; 11] = [
+    IOp::Add,
+    IOp::Sub,
+    IOp::Mul,
+    IOp::Min,
+    IOp::Max,
+    IOp::Div,
+    IOp::UDiv,
+    IOp::URem,
+    IOp::Shl,
+    IOp::Shr,
+    IOp::UShr,
+];
 
 /// The blend state of an [`Op::Blend`] in 8-bit terms (factors, equations, constant).
 pub type Blend8 = BlendState<[u8; 4]>;

@@ -72,6 +72,33 @@ fn shader_ops_follow_the_scalar_rules() {
                 (IOp::Mul, i.wrapping_mul(j)),
                 (IOp::Min, i.min(j)),
                 (IOp::Max, i.max(j)),
+                (
+                    IOp::Div,
+                    if j == 0 {
+                        0
+                    } else {
+                        (i as i64 / j as i64) as i32
+                    },
+                ),
+                (
+                    IOp::UDiv,
+                    if j == 0 {
+                        -1
+                    } else {
+                        (i as u32 / j as u32) as i32
+                    },
+                ),
+                (
+                    IOp::URem,
+                    if j == 0 {
+                        -1
+                    } else {
+                        (i as u32 % j as u32) as i32
+                    },
+                ),
+                (IOp::Shl, ((i as i64) << (j & 31)) as i32),
+                (IOp::Shr, ((i as i64) >> (j & 31)) as i32),
+                (IOp::UShr, ((i as u32 as u64) >> (j & 31)) as i32),
             ] {
                 let got = eval_f32(isa, [x, y, 0.0], |b, v| {
                     let (a, c) = ints(b, v);

@@ -92,6 +92,14 @@ impl Lower<'_> {
                 BinOp::Add => self.op(Op::IBin(IOp::Add, a, b)),
                 BinOp::Sub => self.op(Op::IBin(IOp::Sub, a, b)),
                 BinOp::Mul => self.op(Op::IBin(IOp::Mul, a, b)),
+                // glsl_to_nir: `/` is idiv or udiv, `%` umod for both signednesses,
+                // `>>` ishr or ushr after the left operand's type.
+                BinOp::Div if s == Scalar::Uint => self.op(Op::IBin(IOp::UDiv, a, b)),
+                BinOp::Div => self.op(Op::IBin(IOp::Div, a, b)),
+                BinOp::Mod => self.op(Op::IBin(IOp::URem, a, b)),
+                BinOp::Shl => self.op(Op::IBin(IOp::Shl, a, b)),
+                BinOp::Shr if s == Scalar::Uint => self.op(Op::IBin(IOp::UShr, a, b)),
+                BinOp::Shr => self.op(Op::IBin(IOp::Shr, a, b)),
                 BinOp::And | BinOp::BitAnd => self.op(Op::And(a, b)),
                 BinOp::Or | BinOp::BitOr => self.op(Op::Or(a, b)),
                 BinOp::Xor | BinOp::BitXor => self.op(Op::Xor(a, b)),
@@ -114,6 +122,12 @@ impl Lower<'_> {
                     let ones = self.mask(true);
                     self.op(Op::Xor(d, ones))
                 }
+            }
+            Scalar::Uint => {
+                // Unsigned order is the signed order with the sign bits flipped.
+                let flip = self.i32(i32::MIN);
+                let (a, b) = (self.op(Op::Xor(a, flip)), self.op(Op::Xor(b, flip)));
+                self.op(Op::SCmp(c, a, b))
             }
             _ => self.op(Op::SCmp(c, a, b)),
         }

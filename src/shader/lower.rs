@@ -384,13 +384,9 @@ impl Lower<'_> {
             Op::Un(Un::Floor, a) => fb(f(a)?.floor()),
             Op::IBin(o, a, b) => {
                 let (x, y) = (i(a)?, i(b)?);
-                Some(match o {
-                    IOp::Add => x.wrapping_add(y),
-                    IOp::Sub => x.wrapping_sub(y),
-                    IOp::Mul => x.wrapping_mul(y),
-                    IOp::Min => x.min(y),
-                    IOp::Max => x.max(y),
-                } as u32)
+                // GLSL IR folds a division or remainder by zero to 0.
+                let by_zero = matches!(o, IOp::Div | IOp::UDiv | IOp::URem) && y == 0;
+                Some(if by_zero { 0 } else { o.apply(x, y) } as u32)
             }
             Op::SCmp(o, a, b) => mb(cmp(*o, i(a)?, i(b)?)),
             Op::FCmp(o, a, b) => mb(cmp(*o, f(a)?, f(b)?)),

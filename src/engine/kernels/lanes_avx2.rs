@@ -133,6 +133,12 @@ impl<const FUSED: bool> Lanes for Avx2<FUSED> {
             IOp::Mul => a.mullo(b),
             IOp::Min => a.min(b),
             IOp::Max => a.max(b),
+            // No AVX2 instruction divides; the shifts are rare.
+            _ => {
+                let (x, y) = (a.to_array(), b.to_array());
+                // SAFETY: this backend runs where the CPU has AVX2 (as `a` proves).
+                unsafe { I32x8::new(std::array::from_fn(|i| op.apply(x[i], y[i]))) }
+            }
         }
     }
     #[inline(always)]

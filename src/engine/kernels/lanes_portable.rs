@@ -166,13 +166,7 @@ impl<const FUSED: bool> Lanes for Portable<FUSED> {
     }
     #[inline(always)]
     fn ibin(op: IOp, a: I, b: I) -> I {
-        zip(a, b, |a, b| match op {
-            IOp::Add => a.wrapping_add(b),
-            IOp::Sub => a.wrapping_sub(b),
-            IOp::Mul => a.wrapping_mul(b),
-            IOp::Min => a.min(b),
-            IOp::Max => a.max(b),
-        })
+        zip(a, b, |a, b| op.apply(a, b))
     }
     #[inline(always)]
     fn xor(a: I, b: I) -> I {
