@@ -71,6 +71,8 @@ mod builtins;
 mod control;
 pub mod draw;
 mod expr;
+#[cfg(test)]
+mod fuzz;
 pub mod lower;
 mod texture;
 pub mod vertex;
