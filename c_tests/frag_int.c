@@ -3,8 +3,9 @@
  * gives 0 for int and all ones for uint), `%` (Mesa's umod for both
  * signednesses), `<<`, `>>` (arithmetic for int, logical for uint, counts
  * masked to 5 bits), `&`, `|`, `^`, `~`, unsigned comparisons across 2^31,
- * constant-folded forms beside run-time ones, and ints from texelFetch
- * coordinates. Each result is reduced to a byte of a colour channel. Drawn
+ * constant-folded forms beside run-time ones, and a hash whose uints reach
+ * 2^32 - 1 converted to and from float (some halfway between two floats).
+ * Each result is reduced to a byte of a colour channel. Drawn
  * into the window. */
 #define GL_GLEXT_PROTOTYPES
 #define FW 130
@@ -50,7 +51,19 @@ static const char *FS_BITS =
     "           float(u & 255u), float((m + f) & 255) / 2.0 + (c2 ? 127.0 : 0.0)) / 255.0;\n"
     "}\n";
 
-#define NPROG 2
+static const char *FS_HASH =
+    "#version 130\n"
+    "out vec4 o;\n"
+    "void main() {\n"
+    "  uint h = uint(gl_FragCoord.x) * 747796405u + uint(gl_FragCoord.y) * 2891336453u;\n"
+    "  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;\n"
+    "  uint g = uint(gl_FragCoord.x * 3.0e7 + gl_FragCoord.y);\n"
+    "  float t = float(uint(gl_FragCoord.x) * 256u + 2147483777u) - 2147483648.0;\n"
+    "  o = vec4(float(h) / 4294967295.0, fract(float(h) * 1.0e-7), float(g & 1023u) / 1023.0,\n"
+    "           float(g) / 4.0e9 + t / 40000.0);\n"
+    "}\n";
+
+#define NPROG 3
 
 int main(int argc, char **argv)
 {
@@ -63,6 +76,7 @@ int main(int argc, char **argv)
     glUniform1i(glGetUniformLocation(progs[0], "k"), 1);
     progs[1] = frag_program(FS_BITS);
     glUniform1i(glGetUniformLocation(progs[1], "k"), 3);
+    progs[2] = frag_program(FS_HASH);
 
     frag_each_program(progs, NPROG, 6);
     frag_output(out, "window", buf);

@@ -216,13 +216,43 @@ impl Lower<'_> {
         }
     }
 
+    /// `float(u)` of a uint, rounded once as LLVM's `uitofp` is: values from 2^31 up
+    /// are halved with their lowest bit kept as a sticky bit, converted and doubled.
+    fn u2f(&mut self, x: Val) -> Val {
+        let (one, zero) = (self.i32(1), self.i32(0));
+        let half = self.op(Op::IBin(IOp::UShr, x, one));
+        let low = self.op(Op::And(x, one));
+        let sticky = self.op(Op::Or(half, low));
+        let f = self.op(Op::ItoF(sticky));
+        let two = self.f32(2.0);
+        let big = self.op(Op::Mul(f, two));
+        let small = self.op(Op::ItoF(x));
+        let high = self.op(Op::SCmp(FCmp::Lt, x, zero));
+        self.op(Op::Select(high, big, small))
+    }
+
+    /// `uint(f)`, as LLVM lowers `fptoui` without AVX-512: from 2^31 up, the truncation
+    /// of `f − 2^31` with the top bit set; below, the signed truncation.
+    fn f2u(&mut self, x: Val) -> Val {
+        let limit = self.f32(2_147_483_648.0);
+        let shifted = self.op(Op::Sub(x, limit));
+        let t = self.op(Op::FtoI(shifted));
+        let top = self.i32(i32::MIN);
+        let big = self.op(Op::Xor(t, top));
+        let small = self.op(Op::FtoI(x));
+        let high = self.op(Op::FCmp(FCmp::Ge, x, limit));
+        self.op(Op::Select(high, big, small))
+    }
+
     /// Converts one component between scalar types.
     pub(super) fn convert(&mut self, x: Val, from: Scalar, to: Scalar) -> Val {
         use Scalar::*;
         match (from, to) {
             (Float, Float) | (Bool, Bool) | (Int | Uint, Int | Uint) => x,
-            (Int | Uint, Float) => self.op(Op::ItoF(x)),
-            (Float, Int | Uint) => self.op(Op::FtoI(x)),
+            (Int, Float) => self.op(Op::ItoF(x)),
+            (Uint, Float) => self.u2f(x),
+            (Float, Int) => self.op(Op::FtoI(x)),
+            (Float, Uint) => self.f2u(x),
             (Bool, Float) => {
                 let (one, zero) = (self.f32(1.0), self.f32(0.0));
                 self.op(Op::Select(x, one, zero))
