@@ -52,7 +52,8 @@
 //! Honest refusals: a draw that cannot run its program draws **nothing** and counts it
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
-//! not lower (texture lookups at computed coordinates, derivatives …); a fragment shader that reads
+//! not lower (a loop whose trip count is not constant, `textureGrad`, texel offsets,
+//! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
 //! a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
 //! shader that reads a built-in uniform other than the modelview, projection,
@@ -60,10 +61,9 @@
 //! modelview's inverse), a non-float or matrix attribute, draws while user clip
 //! planes are enabled (`gl_ClipVertex` is not applied), or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd (not recorded per vertex); with a
-//! fragment shader, points,
-//! lines, polygons taking the polygon pipeline (unfilled, stippled, offset, two-sided
-//! lighting), flat shading and multisampling; triangles whose fragment state the engine
-//! does not draw (stencil, logic ops, wide, sRGB or non-RGBA8 targets, Z32 unorm depth).
+//! fragment shader, smooth lines and points, stippled polygons and multisampling;
+//! primitives whose fragment state the engine does not draw (logic ops, wide, sRGB or
+//! non-RGBA8 targets, Z32 unorm depth), and `texelFetch` of a depth texture.
 //! Not applied: `gl_BackColor` (GL_VERTEX_PROGRAM_TWO_SIDE), `gl_PointSize`
 //! (GL_VERTEX_PROGRAM_POINT_SIZE; points take the fixed size). `GL_VERSION` stays 1.5.
 
