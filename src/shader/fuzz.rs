@@ -4,7 +4,8 @@
 //! (lookups with LOD arguments, `texelFetch`, integer division and shifts, derivatives,
 //! loops), is compiled; every program the front end accepts is lowered for its stage
 //! and, when lowered, compiled for the executor. None may panic, and each must finish
-//! within a time bound. `SOFTGL_SHADER_FUZZ_CASES` runs more cases than the default.
+//! within a time bound. proptest's `PROPTEST_CASES` runs more cases than its default 256
+//! per property (the library reads no environment outside `tuning`).
 
 use proptest::prelude::*;
 use std::path::PathBuf;
@@ -91,13 +92,6 @@ fn lower_any(src: &str, vertex: bool) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: std::env::var("SOFTGL_SHADER_FUZZ_CASES")
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(1000),
-        ..ProptestConfig::default()
-    })]
 
     #[test]
     fn mutated_shaders_lower_without_panics(
