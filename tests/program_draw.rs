@@ -173,11 +173,12 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
     assert_eq!(c.pixel(8, 8), [0; 4]);
 
-    // A texture lookup with a bias does not lower yet: nothing drawn, counted.
+    // A lookup with explicit gradients does not lower yet: nothing drawn, counted.
     let pt = program(
         None,
-        "uniform sampler2D t;
-         void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy * 2.0, 0.5); }",
+        "#version 130
+         uniform sampler2D t; out vec4 o;
+         void main() { o = textureGrad(t, gl_TexCoord[0].xy * 2.0, vec2(0.1), vec2(0.0)); }",
     );
     glUseProgram(pt);
     glRectf(-1.0, -1.0, 1.0, 1.0);
