@@ -2,7 +2,8 @@
  * textureSize. texture2D and texture2DProj with a bias (a varying one and a
  * uniform one), textureLod, texture2DLod, textureProjLod, shadow2DLod and
  * textureCube/textureLod on a cube map without mipmaps (whose LOD argument
- * is ignored), on mipmapped textures whose minification and magnification
+ * is ignored), a bias and a LOD on a mipmapped cube map (each pixel's rho
+ * from its own direction) and a mipmapped 3D texture, on mipmapped textures whose minification and magnification
  * image filters match (llvmpipe's 8-bit path) or differ (its float path,
  * with a texture LOD bias and MIN/MAX_LOD clamps). texelFetch at texels and
  * levels inside and outside the texture (RGBA and LUMINANCE, whose missing
@@ -75,7 +76,28 @@ static const char *FS_FETCH =
     "  o = x * 0.4 + y * 0.3 + z * 0.3;\n"
     "}\n";
 
-#define NPROG 4
+static const char *FS_BIAS3 =
+    "uniform samplerCube m;\n"
+    "uniform sampler3D v;\n"
+    "void main() {\n"
+    "  vec3 n = gl_TexCoord[0].xyz * 2.0 - 1.0;\n"
+    "  vec4 x = textureCube(m, n, gl_Color.r * 5.0 - 1.0);\n"
+    "  vec4 y = texture3D(v, gl_TexCoord[0].xyz * 3.0, gl_Color.g * 4.0 - 1.5);\n"
+    "  gl_FragColor = x * 0.5 + y * 0.5;\n"
+    "}\n";
+
+static const char *FS_LOD3 =
+    "#version 130\n"
+    "uniform samplerCube m;\n"
+    "uniform sampler3D v;\n"
+    "out vec4 o;\n"
+    "void main() {\n"
+    "  vec4 x = textureLod(m, gl_TexCoord[0].zyx - 0.5, gl_Color.b * 5.0);\n"
+    "  vec4 y = textureLod(v, gl_TexCoord[0].yxz * 2.0, gl_Color.r * 4.0 - 0.5);\n"
+    "  o = x * 0.5 + y * 0.5;\n"
+    "}\n";
+
+#define NPROG 6
 
 static void draw_all(const GLuint *progs)
 {
@@ -90,9 +112,11 @@ int main(int argc, char **argv)
     unsigned char *buf;
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char img[64 * 64 * 4], rb[FW * FH * 4];
-    GLuint tex[6], progs[NPROG];
+    static unsigned char vol[8 * 8 * 8 * 4];
+    GLuint tex[8], progs[NPROG];
+    int face;
 
-    glGenTextures(6, tex);
+    glGenTextures(8, tex);
     /* a: trilinear (the same image filter both ways: the 8-bit path) */
     glActiveTexture(GL_TEXTURE0);
     frag_mipmapped_texture(tex[0], img);
@@ -123,6 +147,23 @@ int main(int argc, char **argv)
     glTexImage2D(GL_TEXTURE_2D, 1, GL_LUMINANCE, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    /* m: a mipmapped 16x16 cube map, trilinear */
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex[6]);
+    for (face = 0; face < 6; face++) {
+        frag_pattern(img, 16, 16, face + 2);
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, 16, 16, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, img);
+    }
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    /* v: a mipmapped 8x8x8 3D texture, NEAREST_MIPMAP_LINEAR and LINEAR */
+    glActiveTexture(GL_TEXTURE7);
+    glBindTexture(GL_TEXTURE_3D, tex[7]);
+    frag_pattern(vol, 8, 64, 5);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, vol);
+    glGenerateMipmap(GL_TEXTURE_3D);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
     glActiveTexture(GL_TEXTURE0);
 
     progs[0] = frag_program(FS_BIAS);
@@ -141,6 +182,12 @@ int main(int argc, char **argv)
     frag_set_unit(progs[3], "a", 0);
     frag_set_unit(progs[3], "l", 5);
     glUniform1i(glGetUniformLocation(progs[3], "ul"), 3);
+    progs[4] = frag_program(FS_BIAS3);
+    frag_set_unit(progs[4], "m", 6);
+    frag_set_unit(progs[4], "v", 7);
+    progs[5] = frag_program(FS_LOD3);
+    frag_set_unit(progs[5], "m", 6);
+    frag_set_unit(progs[5], "v", 7);
 
     draw_all(progs);
     frag_output(out, "window", buf);

@@ -27,8 +27,8 @@
 //! [`LookupKind`] says what the sampler does with it ([`crate::texture::lookup`]).
 //! `textureSize` reads its result back as integers.
 //!
-//! Not lowered (the shader is refused): a bias with a 3D or cube-map sampler,
-//! `texelFetch` and `textureSize` other than on 1D and 2D samplers, offsets, gradients,
+//! Not lowered (the shader is refused): `texelFetch` and `textureSize` other than on 1D
+//! and 2D samplers, offsets, gradients,
 //! rectangle, array, buffer, multisample, integer and cube-shadow samplers, sampler
 //! arrays, and lookups in vertex shaders.
 
@@ -115,7 +115,6 @@ impl Lower<'_> {
         };
         let flat = matches!(target, Target::Tex1D | Target::Tex2D);
         match kind {
-            LookupKind::Bias if !flat => return no(format!("a bias with {}", args[0].ty)),
             LookupKind::Fetch | LookupKind::Size
                 if !flat || s.shadow && kind == LookupKind::Fetch =>
             {
@@ -431,7 +430,6 @@ mod tests {
     #[test]
     fn bias_sampler_arrays_and_vertex_lookups_are_refused() {
         for src in [
-            "uniform samplerCube a; void main() { gl_FragColor = textureCube(a, gl_TexCoord[0].stp, 1.0); }",
             "#version 130
              uniform sampler3D a; out vec4 o; void main() { o = texelFetch(a, ivec3(1), 0); }",
             "#version 130

@@ -121,6 +121,12 @@ pub(super) fn project(s: f32, t: f32, r: f32, lod: bool) -> (usize, f32, f32) {
 /// pixel's own direction and its quad's row (x) and column (y) differences.
 #[inline(always)]
 fn pixel_lod(p: &UnitPlan<'_>, size: f32, i: usize, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> Lod {
+    lod::from_rho(&p.lod, p.mip_filter, true, pixel_rho(size, i, s, t, r))
+}
+
+/// [`pixel_lod`]'s rho² (texels squared) for a base level of `size` texels.
+#[inline(always)]
+pub(super) fn pixel_rho(size: f32, i: usize, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> f32 {
     let v = [s[i], t[i], r[i]];
     // ddx: right minus left of the pixel's row; ddy: bottom minus top of its column
     let (xl, xr) = if i < 2 { (0, 1) } else { (2, 3) };
@@ -142,8 +148,7 @@ fn pixel_lod(p: &UnitPlan<'_>, size: f32, i: usize, s: [f32; 4], t: [f32; 4], r:
         tc,
         size,
     };
-    let rho = deriv.sq(ddx).max(deriv.sq(ddy));
-    lod::from_rho(&p.lod, p.mip_filter, true, rho)
+    deriv.sq(ddx).max(deriv.sq(ddy))
 }
 
 /// What [`pixel_lod`] needs to turn a direction difference into face derivatives (a

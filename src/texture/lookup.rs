@@ -8,7 +8,7 @@
 //! quad:
 //! - a bias is added to the quad's LOD as the general path computes it
 //!   (`0.5 · fast_log2(rho²)` from the quad's differences, never the exponent-only fast
-//!   path), pixel by pixel;
+//!   path; a cube map's rho is each pixel's own), pixel by pixel;
 //! - a level of detail replaces it (no log2 at all);
 //! - then, as for every lookup, the sampler's quantised bias, `max_lod` and `min_lod`
 //!   apply where llvmpipe applies them ([`LodParams`]); GL_TEXTURE_MIN_LOD equal to
@@ -80,19 +80,30 @@ fn as_forced(v: f32) -> f32 {
     }
 }
 
-/// The quad's LOD before any bias, as the general path computes it: `0.5 ·
-/// fast_log2(rho²)` from the quad's differences at the base level (1D and 2D targets).
-fn quad_log2(u: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4]) -> f32 {
+/// Each pixel's LOD before any bias, as the general path computes it: `0.5 ·
+/// fast_log2(rho²)`, rho from the quad's differences at the base level (a cube map's
+/// per pixel, from its own direction: `lp_build_cube_lookup`).
+fn base_log2(u: &UnitPlan<'_>, s: [f32; 4], t: [f32; 4], r: [f32; 4]) -> [f32; 4] {
     let b = u.image(u.first);
-    let r = lod::rho(u.dims, b.width as f32, b.height as f32, s, t);
-    let r2 = if u.dims > 1 { r } else { r * r };
-    lod::fast_log2(r2) * 0.5
+    let log2 = |r2: f32| {
+        let r2 = if r2.is_finite() { r2 } else { 0.0 };
+        lod::fast_log2(r2) * 0.5
+    };
+    match &u.ext.kind {
+        ExtKind::Cube(_) | ExtKind::CubeSeamless(_) => {
+            std::array::from_fn(|i| log2(super::cube::pixel_rho(b.width as f32, i, s, t, r)))
+        }
+        ExtKind::Volume(v) => [log2(super::volume::quad_rho(u, v, s, t, r)); 4],
+        ExtKind::Flat => {
+            let q = lod::rho(u.dims, b.width as f32, b.height as f32, s, t);
+            [log2(if u.dims > 1 { q } else { q * q }); 4]
+        }
+    }
 }
 
 /// Samples a quad (TL, TR, BL, BR) of a lookup with a per-pixel LOD argument `l`
-/// (`kind`: [`LookupKind::Bias`] or [`LookupKind::Lod`]; a bias needs a 1D or 2D
-/// target), with `r` for 3D, cube-map and depth targets; pixels that are not `live` may
-/// receive any value.
+/// (`kind`: [`LookupKind::Bias`] or [`LookupKind::Lod`]), with `r` for 3D, cube-map and
+/// depth targets; pixels that are not `live` may receive any value.
 pub fn sample_quad_lods(
     u: &UnitPlan<'_>,
     kind: LookupKind,
@@ -112,8 +123,8 @@ pub fn sample_quad_lods(
     }
     let base = match kind {
         LookupKind::Bias => {
-            let q = quad_log2(u, s, t);
-            l.map(|b| q + b)
+            let q = base_log2(u, s, t, r.unwrap_or([0.0; 4]));
+            std::array::from_fn(|i| q[i] + l[i])
         }
         _ => l,
     };

@@ -98,6 +98,18 @@ fn quad_lod(p: &UnitPlan<'_>, v: &VolumePlan<'_>, s: [f32; 4], t: [f32; 4], r: [
     if !p.needs_lod {
         return Lod::MAG;
     }
+    lod::from_rho(&p.lod, p.mip_filter, true, quad_rho(p, v, s, t, r))
+}
+
+/// [`quad_lod`]'s rho² (texels squared): the larger of the quad's x and y differences.
+#[inline(always)]
+pub(super) fn quad_rho(
+    p: &UnitPlan<'_>,
+    v: &VolumePlan<'_>,
+    s: [f32; 4],
+    t: [f32; 4],
+    r: [f32; 4],
+) -> f32 {
     let b = p.image(p.first);
     let (w, h, d) = (b.width as f32, b.height as f32, v.depths[p.first] as f32);
     let sq = |ds: f32, dt: f32, dr: f32| {
@@ -106,7 +118,7 @@ fn quad_lod(p: &UnitPlan<'_>, v: &VolumePlan<'_>, s: [f32; 4], t: [f32; 4], r: [
     };
     let rx = sq(s[1] - s[0], t[1] - t[0], r[1] - r[0]);
     let ry = sq(s[2] - s[0], t[2] - t[0], r[2] - r[0]);
-    lod::from_rho(&p.lod, p.mip_filter, true, rx.max(ry))
+    rx.max(ry)
 }
 
 /// Samples a 2x2 quad of a 3D texture with one LOD.
