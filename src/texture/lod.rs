@@ -113,6 +113,26 @@ impl LodParams {
     }
 }
 
+impl LodParams {
+    /// The general path's LOD `v` after the sampler's adjustments, in
+    /// `lp_build_lod_selector`'s order: the bias, then `max_lod`, then `min_lod` (a NaN
+    /// gives way to each clamp, as `minps(lod, max)` and `maxps(lod, min)` do).
+    #[inline(always)]
+    pub fn adjust(&self, v: f32) -> f32 {
+        let mut v = v;
+        if self.bias != 0.0 {
+            v += self.bias;
+        }
+        if self.apply_max {
+            v = v.min(self.max_lod);
+        }
+        if self.apply_min {
+            v = v.max(self.min_lod);
+        }
+        v
+    }
+}
+
 /// `lp_build_fast_log2`: exponent plus the linear mantissa fraction.
 #[inline(always)]
 pub fn fast_log2(x: f32) -> f32 {
@@ -190,17 +210,7 @@ pub fn from_rho(p: &LodParams, mip: MipFilter, squared: bool, r: f32) -> Lod {
         };
     }
     let r2 = if squared { r } else { r * r };
-    let mut lod = fast_log2(r2) * 0.5;
-    if p.bias != 0.0 {
-        lod += p.bias;
-    }
-    if p.apply_max {
-        lod = lod.min(p.max_lod);
-    }
-    if p.apply_min {
-        lod = lod.max(p.min_lod);
-    }
-    Lod::from_value(lod, mip)
+    Lod::from_value(p.adjust(fast_log2(r2) * 0.5), mip)
 }
 
 #[cfg(test)]

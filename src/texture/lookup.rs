@@ -11,7 +11,7 @@
 //!   path; a cube map's rho is each pixel's own), pixel by pixel;
 //! - a level of detail replaces it (no log2 at all);
 //! - then, as for every lookup, the sampler's quantised bias, `max_lod` and `min_lod`
-//!   apply where llvmpipe applies them ([`LodParams`]); GL_TEXTURE_MIN_LOD equal to
+//!   apply where llvmpipe applies them ([`lod::LodParams`]); GL_TEXTURE_MIN_LOD equal to
 //!   MAX_LOD still forces `min_lod` and ignores the argument, and a texture that needs no
 //!   LOD (one filter, no mipmaps) ignores it too;
 //! - the LOD's integer part is x86's conversion (`cvtps2dq`): NaN and values of
@@ -19,7 +19,7 @@
 //!
 //! Per-pixel LODs take llvmpipe's 8-bit path only where the minification and
 //! magnification filters are the same; elsewhere the float path. Each pixel is sampled
-//! with its own LOD forced into a copy of the plan ([`LodParams::min_max_equal`]), one
+//! with its own LOD forced into a copy of the plan ([`lod::LodParams::min_max_equal`]), one
 //! quad sampling per distinct LOD of the quad.
 //!
 //! # texelFetch and textureSize
@@ -30,7 +30,7 @@
 //! `first + l` is not one of the texture's levels; llvmpipe takes `l` from the first
 //! lane of its vector, softgl from each quad's first pixel.
 
-use super::lod::{self, LodParams};
+use super::lod;
 use super::{sample, BaseFormat, ExtKind, UnitPlan};
 
 /// What a shader lookup's level-of-detail argument is (its `l` operand), or which of the
@@ -49,23 +49,6 @@ pub enum LookupKind {
     Fetch,
     /// `textureSize`: the size of level `l` in R, G (and B).
     Size,
-}
-
-/// The final LOD value of one pixel whose base LOD is `v` (the argument, or the quad's
-/// LOD plus the bias): the sampler's bias, then `max_lod`, then `min_lod`, as
-/// `lp_build_lod_selector` adds and clamps after the shader's argument.
-fn finish(p: &LodParams, v: f32) -> f32 {
-    let mut v = v;
-    if p.bias != 0.0 {
-        v += p.bias;
-    }
-    if p.apply_max {
-        v = v.min(p.max_lod);
-    }
-    if p.apply_min {
-        v = v.max(p.min_lod);
-    }
-    v
 }
 
 /// The value which [`Lod::from_value`] turns into the levels llvmpipe takes for `v`:
@@ -128,7 +111,7 @@ pub fn sample_quad_lods(
         }
         _ => l,
     };
-    let lods = base.map(|v| as_forced(finish(&u.lod, v)));
+    let lods = base.map(|v| as_forced(u.lod.adjust(v)));
     p.lod.min_max_equal = true;
     let mut out = [[0.0; 4]; 4];
     let mut done = [false; 4];
@@ -224,10 +207,11 @@ pub fn size(u: &UnitPlan<'_>, l: f32) -> [f32; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::texture::lod::LodParams;
     use crate::texture::Lod;
 
     #[test]
-    fn finish_adds_the_sampler_bias_then_clamps_max_then_min() {
+    fn adjust_adds_the_sampler_bias_then_clamps_max_then_min() {
         let p = LodParams {
             bias: 0.5,
             min_lod: 1.0,
@@ -236,16 +220,16 @@ mod tests {
             apply_max: true,
             min_max_equal: false,
         };
-        assert_eq!(finish(&p, 0.25), 1.0);
-        assert_eq!(finish(&p, 2.0), 2.5);
-        assert_eq!(finish(&p, 9.0), 3.0);
+        assert_eq!(p.adjust(0.25), 1.0);
+        assert_eq!(p.adjust(2.0), 2.5);
+        assert_eq!(p.adjust(9.0), 3.0);
         // NaN gives way to each clamp, as `minps(lod, max)` and `maxps(lod, min)` do
-        assert_eq!(finish(&p, f32::NAN), 3.0);
+        assert_eq!(p.adjust(f32::NAN), 3.0);
         let q = LodParams {
             apply_max: false,
             ..p
         };
-        assert_eq!(finish(&q, f32::NAN), 1.0);
+        assert_eq!(q.adjust(f32::NAN), 1.0);
     }
 
     #[test]
