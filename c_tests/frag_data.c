@@ -60,14 +60,6 @@ int main(int argc, char **argv)
     progs[1] = frag_program(FS_PARTS);
     progs[2] = frag_program(FS_DISCARD);
     progs[3] = frag_program(FS_COLOR);
-    draw_all(progs, 4);
-    frag_output(out, "window", buf);
-
-    frag_fbo(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
-    draw_all(progs, 4);
-    glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rb);
-    sgl_image(out, "fbo", FW, FH, 4, "RGBA", FW * 4, 1, rb);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    sgl_text(out, "error", "0x%x", glGetError());
+    frag_window_and_fbo(out, buf, rb, draw_all, progs, 4);
     return frag_end(out, "end", buf, ctx);
 }

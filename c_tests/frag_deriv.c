@@ -127,15 +127,6 @@ int main(int argc, char **argv)
     progs[5] = frag_program(FS_130);
     frag_set_unit(progs[5], "a", 0);
 
-    draw_all(progs, 6);
-    frag_output(out, "window", buf);
-
-    /* the same into a framebuffer object, whose rows are not flipped */
-    frag_fbo(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
-    draw_all(progs, 6);
-    glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rb);
-    sgl_image(out, "fbo", FW, FH, 4, "RGBA", FW * 4, 1, rb);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    sgl_text(out, "error", "0x%x", glGetError());
+    frag_window_and_fbo(out, buf, rb, draw_all, progs, 6);
     return frag_end(out, "end", buf, ctx);
 }

@@ -99,9 +99,9 @@ static const char *FS_LOD3 =
 
 #define NPROG 6
 
-static void draw_all(const GLuint *progs)
+static void draw_all(const GLuint *progs, int n)
 {
-    frag_each_program(progs, NPROG, 6);
+    frag_each_program(progs, n, 6);
     glUseProgram(0);
     frag_random_tris(3);
 }
@@ -189,14 +189,6 @@ int main(int argc, char **argv)
     frag_set_unit(progs[5], "m", 6);
     frag_set_unit(progs[5], "v", 7);
 
-    draw_all(progs);
-    frag_output(out, "window", buf);
-
-    frag_fbo(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
-    draw_all(progs);
-    glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rb);
-    sgl_image(out, "fbo", FW, FH, 4, "RGBA", FW * 4, 1, rb);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    sgl_text(out, "error", "0x%x", glGetError());
+    frag_window_and_fbo(out, buf, rb, draw_all, progs, NPROG);
     return frag_end(out, "end", buf, ctx);
 }

@@ -172,6 +172,24 @@ static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
 /* n seeded random triangles in [-1.2,1.2]^2 x [-1,1] (defined below). */
 static inline void frag_random_tris(int n);
 
+/* Draws with `draw(progs, n)` into the window and outputs it as "window",
+ * then into a new frag_fbo with 24-bit depth (rows not flipped), read back as
+ * "fbo"; rebinds the window and outputs the GL error as "error". `rb` holds
+ * FW x FH RGBA. */
+static inline void frag_window_and_fbo(FILE *out, const unsigned char *buf, unsigned char *rb,
+                                       void (*draw)(const GLuint *, int), const GLuint *progs,
+                                       int n)
+{
+    draw(progs, n);
+    frag_output(out, "window", buf);
+    frag_fbo(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
+    draw(progs, n);
+    glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rb);
+    sgl_image(out, "fbo", FW, FH, 4, "RGBA", FW * 4, 1, rb);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    sgl_text(out, "error", "0x%x", glGetError());
+}
+
 /* Clears colour and depth, sets frag_perspective() and the depth test
  * (GL_LESS), and draws `tris` seeded random triangles with each of the `n`
  * programs in turn (the last stays current). */
