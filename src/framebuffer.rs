@@ -11,6 +11,7 @@
 
 use crate::memory::HugeBuf;
 
+pub mod draw_buffers;
 pub mod samples;
 pub mod srgb;
 mod user;
@@ -225,6 +226,9 @@ pub struct Framebuffer {
     /// A multisample object's planes 1..4 while a one-pass multisample draw runs (empty
     /// otherwise): [`samples`].
     pub samples: Vec<Framebuffer>,
+    /// The colour of draw buffers 1.. while an object with several is bound (empty
+    /// otherwise): [`draw_buffers`].
+    pub more_colors: Vec<HugeBuf<[u8; 4]>>,
 }
 
 impl Framebuffer {
@@ -273,6 +277,7 @@ impl Framebuffer {
             wide_single: false,
             srgb: false,
             samples: Vec::new(),
+            more_colors: Vec::new(),
         }
     }
 
@@ -569,6 +574,8 @@ pub struct Target<'a> {
     /// The same rows of a multisample object's planes 1..4 during a one-pass multisample
     /// draw (empty otherwise; [`samples`]).
     pub samples: [samples::PlaneRows<'a>; samples::MORE_SAMPLES],
+    /// The same rows of draw buffers 1.. ([`draw_buffers`]; empty without them).
+    pub more_colors: draw_buffers::MoreRows<'a>,
 }
 
 impl Framebuffer {
@@ -612,6 +619,7 @@ impl Framebuffer {
             wide_color: &mut self.wide_color,
             wide_single: self.wide_single,
             samples: samples::whole(&mut self.samples),
+            more_colors: draw_buffers::whole(&mut self.more_colors),
         }
     }
 
@@ -652,6 +660,7 @@ impl Framebuffer {
         let wide = self.wide;
         let mut wide_color = (wide.is_some()).then(|| self.wide_color.chunks_mut(n));
         let mut more = samples::Bands::new(&mut self.samples, n);
+        let mut more_colors = draw_buffers::Bands::new(&mut self.more_colors, n);
         let mut out = Vec::new();
         let mut y0 = 0;
         while y0 < h {
@@ -676,6 +685,7 @@ impl Framebuffer {
                     .unwrap_or_default(),
                 wide_single: self.wide_single,
                 samples: more.next_band(),
+                more_colors: more_colors.next_band(),
             });
             y0 += rows;
         }

@@ -48,6 +48,10 @@ counters! {
         /// Triangles of a program draw not drawn: the fragment state or the target is not
         /// one the engine draws (stencil, logic op, wide or sRGB buffers …).
         program_tris_refused: pixel,
+        /// Draws without a fragment shader into an object with several draw buffers:
+        /// only draw buffer 0 is written where fixed function is not lowered into the
+        /// engine (Mesa writes the colour to each; `context::fbo_draw_buffers`).
+        ff_draws_one_buffer: draw,
         /// Vertices through the vertex stage.
         vertices: draw,
         /// Triangles assembled.

@@ -122,6 +122,7 @@ fn plan(next: &mut impl FnMut() -> u32, fma: bool) -> FragPlan {
         blend_color,
         srgb: false,
         shader: None,
+        more_buffers: 0,
     }
 }
 

@@ -183,6 +183,7 @@ const GROUPS: &[(u32, Restore)] = &[
         c.state.color_mask = s.state.color_mask;
         c.state.clear_color = s.state.clear_color;
         c.state.legacy.draw_buffer = s.state.legacy.draw_buffer;
+        c.state.legacy.more_draw = s.state.legacy.more_draw;
         c.state.legacy.index_mask = s.state.legacy.index_mask;
         c.state.legacy.clear_index = s.state.legacy.clear_index;
     }),

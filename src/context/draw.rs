@@ -243,6 +243,7 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
         depth_format: fb.depth_format,
         has_stencil: !fb.stencil.is_empty(),
         srgb: fb.srgb,
+        more_buffers: fb.more_color_mask(),
     };
     let region = ctx.draw_region();
     let program = ctx.program_draw();
@@ -294,6 +295,9 @@ fn draw_pass_with<S: VertexSource + ?Sized>(
         return false;
     }
     ctx.stats.draws += 1;
+    if target.more_buffers != 0 && plan.frag.shader.is_none() {
+        ctx.stats.ff_draws_one_buffer += 1;
+    }
     ctx.dirty = true;
     ctx.fbo.drawn = true;
     if plan.feedback {

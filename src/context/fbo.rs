@@ -348,8 +348,11 @@ pub struct FramebufferObject {
     pub depth: Attachment,
     /// GL_STENCIL_ATTACHMENT.
     pub stencil: Attachment,
-    /// The colour attachment glDrawBuffer selected (`None`: GL_NONE).
+    /// The colour attachment glDrawBuffer selected (`None`: GL_NONE): draw buffer 0.
     pub draw_buffer: Option<usize>,
+    /// The colour attachments of draw buffers 1.. (glDrawBuffers; `None` after
+    /// glDrawBuffer).
+    pub more_draw: [Option<usize>; super::legacy_state::MORE_DRAW_BUFFERS],
     /// The colour attachment glReadBuffer selected (`None`: GL_NONE).
     pub read_buffer: Option<usize>,
     /// The working copy while the object is not bound for drawing.
@@ -363,6 +366,7 @@ impl Default for FramebufferObject {
             depth: Attachment::None,
             stencil: Attachment::None,
             draw_buffer: Some(0),
+            more_draw: [None; super::legacy_state::MORE_DRAW_BUFFERS],
             read_buffer: Some(0),
             cache: None,
         }

@@ -192,9 +192,15 @@ impl Context {
             let loans = self.fill(fb, parts, &layout, plane, current, true);
             self.fbo.loans.extend(loans);
         }
-        let first = fbs.remove(0);
+        let mut first = fbs.remove(0);
         self.fbo.ms_planes = fbs;
+        self.load_more_colors(name, &mut first, planes > 1);
         Some(first)
+    }
+
+    /// [`Self::assemble`] for the other modules of the context.
+    pub(super) fn assemble_copy(&mut self, name: u32) -> Option<Framebuffer> {
+        self.assemble(name)
     }
 
     /// Assembles sample plane `plane` of object `name` (0 for single-sample images) into
@@ -320,6 +326,10 @@ impl Context {
                 self.fbo.ms_planes = planes;
                 // A depth-stencil image is one image in both roles: one new version.
                 let mut done: Vec<Attachment> = Vec::new();
+                for a in self.store_more_colors() {
+                    self.fbo.bump(a);
+                    done.push(a);
+                }
                 for (a, _) in parts.roles() {
                     if !done.contains(&a) {
                         self.fbo.bump(a);
@@ -346,6 +356,8 @@ impl Context {
         let planes = std::mem::take(&mut self.fbo.ms_planes);
         if let (Some(mut fb), Some(layout)) = (self.fb.take(), layout) {
             fb.resolve();
+            // draw buffers 1.. are copies, loaded anew by the next assembly
+            fb.more_colors = Vec::new();
             if let Some(f) = self.fbo.object_mut(name) {
                 f.cache = Some(Box::new(Cached {
                     fb,
@@ -546,6 +558,9 @@ impl Context {
     /// blit; `None` when there is nothing to read.
     pub fn read_planes(&mut self) -> Option<Vec<Framebuffer>> {
         let samples = self.read_samples();
+        if self.reads_other_buffer() && samples == 0 {
+            return Some(vec![self.read_other_buffer()?]);
+        }
         if self.fbo.read == self.fbo.draw {
             self.fbo_sync();
             let mut v = vec![self.fb.clone()?];
@@ -661,7 +676,7 @@ impl Context {
     /// The framebuffer reads come from: the draw framebuffer itself, or the copy
     /// [`Context::prepare_read`] made of another one.
     pub fn read_fb(&self) -> Option<&Framebuffer> {
-        if self.fbo.read == self.fbo.draw {
+        if self.fbo.read == self.fbo.draw && !self.reads_other_buffer() {
             self.fb.as_ref()
         } else {
             self.fbo.read_copy.as_ref()
@@ -697,6 +712,9 @@ impl Context {
     /// A copy of the read framebuffer, with its colour taken from the read buffer, when it
     /// is not the draw framebuffer (then the caller reads `fb` itself: `None`).
     pub fn read_framebuffer_copy(&mut self) -> Option<Framebuffer> {
+        if self.reads_other_buffer() {
+            return self.read_other_buffer();
+        }
         if self.fbo.read == self.fbo.draw {
             return None;
         }

@@ -311,6 +311,9 @@ impl Context {
     /// for the while (a resolving blit then copies nothing to read its source).
     pub fn with_read_planes<R>(&mut self, f: impl FnOnce(&[Framebuffer]) -> R) -> Option<R> {
         self.fbo_sync();
+        if self.reads_other_buffer() && self.read_samples() == 0 {
+            return Some(f(&[self.read_other_buffer()?]));
+        }
         if self.fbo.read == self.fbo.draw {
             let mut planes = vec![self.fb.take()?];
             planes.append(&mut self.fbo.ms_planes);

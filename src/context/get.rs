@@ -3,6 +3,9 @@
 //! [-1,1] onto the integer range, as Mesa does).
 
 use super::error::{GlError, GlResult};
+use super::legacy_state::{
+    GL_DRAW_BUFFER0, GL_DRAW_BUFFER7, GL_MAX_DRAW_BUFFERS, MAX_DRAW_BUFFERS,
+};
 use super::state::{Cap, MatrixMode, ShadeModel};
 use super::{Context, MAX_VIEWPORT};
 use crate::context::pack::tex_format::LISTED;
@@ -119,6 +122,10 @@ fn framebuffer_get(c: &Context, pname: u32) -> Option<Value> {
         GL_MAX_COLOR_ATTACHMENTS => i(&[MAX_COLOR_ATTACHMENTS as i64]),
         GL_MAX_SAMPLES => i(&[MAX_SAMPLES as i64]),
         GL_FRAMEBUFFER_SRGB_CAPABLE_EXT => i(&[c.fbo.srgb_capable(c.fbo.draw, &c.textures) as i64]),
+        GL_MAX_DRAW_BUFFERS => i(&[MAX_DRAW_BUFFERS as i64]),
+        GL_DRAW_BUFFER0..=GL_DRAW_BUFFER7 => {
+            e(c.draw_buffer_query((pname - GL_DRAW_BUFFER0) as usize)?)
+        }
         GL_DRAW_BUFFER => attachment(c.fbo.object(c.fbo.draw)?.draw_buffer),
         GL_READ_BUFFER => attachment(c.fbo.object(c.fbo.read)?.read_buffer),
         _ => return None,

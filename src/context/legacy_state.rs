@@ -8,6 +8,17 @@
 use super::error::{GlError, GlResult};
 use crate::gl::enums::*;
 
+/// GL_MAX_DRAW_BUFFERS (llvmpipe's `PIPE_MAX_COLOR_BUFS`).
+pub const MAX_DRAW_BUFFERS: usize = 8;
+/// GL_MAX_DRAW_BUFFERS (GL 2.0; not in the generated enums).
+pub const GL_MAX_DRAW_BUFFERS: u32 = 0x8824;
+/// GL_DRAW_BUFFER0: GL_DRAW_BUFFERi is `GL_DRAW_BUFFER0 + i`.
+pub const GL_DRAW_BUFFER0: u32 = 0x8825;
+/// GL_DRAW_BUFFER7, the last of the eight.
+pub const GL_DRAW_BUFFER7: u32 = 0x882C;
+/// The draw buffers after draw buffer 0.
+pub const MORE_DRAW_BUFFERS: usize = MAX_DRAW_BUFFERS - 1;
+
 /// A colour buffer named by glDrawBuffer / glReadBuffer, among those an OSMesa
 /// framebuffer accepts (it has one, front-left, colour buffer; Mesa also accepts the
 /// names that include it through "back", and draws into the single buffer).
@@ -73,8 +84,11 @@ pub struct LegacyState {
     pub sample_coverage_value: f32,
     /// glSampleCoverage invert flag.
     pub sample_coverage_invert: bool,
-    /// glDrawBuffer.
+    /// glDrawBuffer (draw buffer 0 of glDrawBuffers).
     pub draw_buffer: ColorBuffer,
+    /// Draw buffers 1.. of glDrawBuffers (GL_NONE after glDrawBuffer). The window has one
+    /// colour buffer: these only answer GL_DRAW_BUFFERi.
+    pub more_draw: [ColorBuffer; MORE_DRAW_BUFFERS],
     /// glReadBuffer.
     pub read_buffer: ColorBuffer,
 }
@@ -87,6 +101,7 @@ impl Default for LegacyState {
             sample_coverage_value: 1.0,
             sample_coverage_invert: false,
             draw_buffer: ColorBuffer::Front,
+            more_draw: [ColorBuffer::None; MORE_DRAW_BUFFERS],
             read_buffer: ColorBuffer::Front,
         }
     }

@@ -26,6 +26,7 @@ pub mod eval;
 pub mod fbo;
 pub mod fbo_api;
 pub mod fbo_bind;
+pub mod fbo_draw_buffers;
 pub mod fbo_image;
 pub mod fbo_lend;
 pub mod fbo_query;
@@ -735,6 +736,15 @@ impl Context {
                     }
                 }
             }
+        }
+        if mask & GL_COLOR_BUFFER_BIT != 0 && !fb.more_colors.is_empty() {
+            // Mesa clears every draw buffer with the same value (its clear quad's shader
+            // writes all colour buffers).
+            let v = match quad_path {
+                true => fb.store_rgba8(st.clear_color.map(crate::framebuffer::float_to_ubyte)),
+                false => fb.clear_value(st.clear_color),
+            };
+            fb.clear_more_colors([x0, y0, x1, y1], color_mask, v);
         }
         if let (Some(k), true) = (fb.wide, mask & GL_COLOR_BUFFER_BIT != 0) {
             // A wide buffer gets the clear colour at its own precision: packed as the fast

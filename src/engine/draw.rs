@@ -458,6 +458,7 @@ impl Walk {
             planes: &st.planes,
             inputs: &inputs[..4 * self.units],
             color: &mut *fb.color,
+            more_colors: fb.more_colors.each_mut().map(|c| &mut **c),
             depth: &mut *fb.depth,
             stencil: &mut *fb.stencil,
             front: self.front,

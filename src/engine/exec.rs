@@ -18,6 +18,7 @@ use super::ir::{Blend8, Ir, Op, FCMPS, IOPS, UNS};
 use super::kernels::{self, Kernel};
 use crate::cpu::Isa;
 use crate::fixed_function::fog::FogPlan;
+use crate::framebuffer::draw_buffers::MORE_COLORS;
 use crate::pipe::CompareFunc;
 
 /// The most chunks one batch runs (a register slot holds one 8-lane value per chunk).
@@ -85,8 +86,10 @@ pub struct Io<'a> {
     pub planes: &'a [[f32; 3]],
     /// The input streams [`Op::Input`] reads: one 8-lane value per chunk of the run.
     pub inputs: &'a [&'a [[u32; 8]]],
-    /// The packed RGBA8 colour buffer.
+    /// The packed RGBA8 colour buffer (draw buffer 0).
     pub color: &'a mut [[u8; 4]],
+    /// Draw buffers 1.., laid out as `color` (empty where the program writes none).
+    pub more_colors: crate::framebuffer::draw_buffers::MoreRows<'a>,
     /// The depth buffer (may be empty when the program has no depth test).
     pub depth: &'a mut [u32],
     /// The stencil buffer (may be empty when the program has no stencil test).
@@ -101,6 +104,16 @@ pub struct Io<'a> {
     /// Samples [`Op::Sample`]'s lookups (a program with one and no sampler gets
     /// (0, 0, 0, 1)).
     pub sampler: Option<&'a dyn TexSampler>,
+}
+
+/// The draw buffers of `io` as [`Ctx::colors`] holds them.
+fn colors_of(io: &mut Io<'_>) -> [(*mut u32, usize); 1 + MORE_COLORS] {
+    let mut out = [(std::ptr::null_mut(), 0); 1 + MORE_COLORS];
+    out[0] = (io.color.as_mut_ptr() as *mut u32, io.color.len());
+    for (o, m) in out[1..].iter_mut().zip(io.more_colors.iter_mut()) {
+        *o = (m.as_mut_ptr() as *mut u32, m.len());
+    }
+    out
 }
 
 /// What a run counted: the lanes [`Op::Kill`] cleared, and the depth test's reads and
@@ -140,9 +153,8 @@ pub struct Ctx<'a> {
     pub(super) uniforms: &'a [f32],
     /// The run's counts so far.
     pub(super) counts: Counts,
-    /// The colour buffer and its length.
-    pub(super) color: *mut u32,
-    pub(super) color_len: usize,
+    /// Each draw buffer and its length ([`Op::LoadColor`]'s index).
+    pub(super) colors: [(*mut u32, usize); 1 + MORE_COLORS],
     /// The depth buffer and its length.
     pub(super) depth: *mut u32,
     pub(super) depth_len: usize,
@@ -213,6 +225,8 @@ pub struct Program {
     outputs: usize,
     /// The program reads pixel positions or the colour buffer.
     pixels: bool,
+    /// Bit n: the program reads or writes draw buffer n.
+    buffers: u8,
     /// The program reads across the chunks of a pair ([`Program::quads`]).
     quads: bool,
     /// The program samples ([`Op::Sample`]).
@@ -266,6 +280,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         depth: false,
         outputs: 0,
         pixels: false,
+        buffers: 0,
         quads: false,
         samples: false,
         stencil: false,
@@ -399,18 +414,20 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                     | u32::from(depth.is_some()) << 21;
                 (t.stencil_depth, imm)
             }
-            Op::LoadColor => {
+            Op::LoadColor(n) => {
                 p.pixels = true;
-                (t.load_color, 0)
+                p.buffers |= 1 << n;
+                (t.load_color, u32::from(n))
             }
             Op::Blend(b, ..) => {
                 let over = cfg!(target_arch = "x86_64") && is_over(&b);
                 p.blends.push(b);
                 (t.blend, (p.blends.len() - 1) as u32 | (over as u32) << 16)
             }
-            Op::StoreColor(_) => {
+            Op::StoreColor(n, _) => {
                 p.pixels = true;
-                (t.store_color, 0)
+                p.buffers |= 1 << n;
+                (t.store_color, u32::from(n))
             }
             Op::Output(n, _) => {
                 p.outputs = p.outputs.max(n as usize + 1);
@@ -462,7 +479,7 @@ fn live_ops(ir: &Ir) -> Vec<bool> {
                 Op::Kill(_)
                     | Op::DepthTest { .. }
                     | Op::StencilDepth { .. }
-                    | Op::StoreColor(_)
+                    | Op::StoreColor(..)
                     | Op::Output(..)
             );
         if effect || live[i] {
@@ -493,9 +510,9 @@ fn hoistable(op: &Op) -> bool {
             | Op::Kill(_)
             | Op::DepthTest { .. }
             | Op::StencilDepth { .. }
-            | Op::LoadColor
+            | Op::LoadColor(_)
             | Op::Blend(..)
-            | Op::StoreColor(_)
+            | Op::StoreColor(..)
             | Op::Output(..)
             | Op::Ddx(_)
             | Op::Ddy(_)
@@ -592,6 +609,13 @@ impl Program {
                 c.live == 0 || end <= io.color.len(),
                 "chunk outside the colour buffer"
             );
+            for (k, m) in io.more_colors.iter().enumerate() {
+                assert!(
+                    c.live == 0 || self.buffers & 2 << k == 0 || end <= m.len(),
+                    "chunk outside draw buffer {}",
+                    k + 1
+                );
+            }
             assert!(c.live == 0 || io.depth.is_empty() || end <= io.depth.len());
             assert!(c.planes as usize + self.planes <= io.planes.len());
         }
@@ -622,8 +646,7 @@ impl Program {
             fogs: &self.fogs,
             uniforms: io.uniforms,
             counts: Counts::default(),
-            color: io.color.as_mut_ptr() as *mut u32,
-            color_len: io.color.len(),
+            colors: colors_of(io),
             depth: io.depth.as_mut_ptr(),
             depth_len: io.depth.len(),
             stencil: io.stencil.as_mut_ptr(),
@@ -719,8 +742,7 @@ impl Program {
             fogs: &self.fogs,
             uniforms,
             counts: Counts::default(),
-            color: std::ptr::null_mut(),
-            color_len: 0,
+            colors: [(std::ptr::null_mut(), 0); 1 + MORE_COLORS],
             depth: std::ptr::null_mut(),
             depth_len: 0,
             stencil: std::ptr::null_mut(),

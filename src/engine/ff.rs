@@ -19,6 +19,7 @@
 use super::ir::{Builder, Ir, Op, Ty, Val};
 use super::lower::{PLANE_VARY, PLANE_W, PLANE_Z};
 use crate::fragment::FragPlan;
+use crate::framebuffer::draw_buffers::MORE_COLORS;
 use crate::framebuffer::DepthFormat;
 use crate::geometry::{VARY_FOG, VARY_SPEC};
 use crate::pipe::FogMode;
@@ -436,9 +437,21 @@ fn quantised_depth(b: &mut Builder, format: DepthFormat) -> Option<Val> {
 /// The per-fragment operations after the colour, in the order of [`lower`]: the unorm8
 /// pack of `color`, the alpha test, the stencil and depth tests (plane [`PLANE_Z`];
 /// [`Op::StencilDepth`] when the plan tests stencil), blending, the colour mask and the
-/// store. `None` when the depth format is not lowered.
+/// store, into every draw buffer the plan has (fixed function writes its colour to
+/// each). `None` when the depth format is not lowered.
 pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
-    let px = b.push(Op::PackUnorm8(color));
+    tail_buffers(b, p, &[color; 1 + MORE_COLORS])
+}
+
+/// [`tail`] with draw buffer k's colour `colors[k]` (a fragment shader's
+/// `gl_FragData[k]`); the alpha test reads draw buffer 0's. Each draw buffer is blended
+/// and masked alike (GL 2.0 has one blend state and one colour mask).
+pub fn tail_buffers(
+    b: &mut Builder,
+    p: &FragPlan,
+    colors: &[[Val; 4]; 1 + MORE_COLORS],
+) -> Option<()> {
+    let px = b.push(Op::PackUnorm8(colors[0]));
     alpha_test(b, p, px);
     if let Some(stencil) = p.stencil {
         let depth = p.depth.map(|d| (d.func, d.write));
@@ -461,22 +474,38 @@ pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
             mask |= 0xFF << (8 * ch);
         }
     }
-    if mask != 0 {
-        let full = mask == u32::MAX;
-        let mut out = px;
-        if p.blend.is_some() || !full {
-            let dst = b.push(Op::LoadColor);
-            if let Some(bl) = p.blend {
-                out = b.push(Op::Blend(bl, px, dst));
-            }
-            if !full {
-                let (m, keep) = (b.i32(mask as i32), b.i32(!mask as i32));
-                let o = b.push(Op::And(out, m));
-                let d = b.push(Op::And(dst, keep));
-                out = b.push(Op::Or(o, d));
-            }
+    if mask == 0 {
+        return Some(());
+    }
+    for (n, c) in colors.iter().enumerate() {
+        if n > 0 && p.more_buffers & 1 << (n - 1) == 0 {
+            continue;
         }
-        b.push(Op::StoreColor(out));
+        let px = match n > 0 && *c != colors[0] {
+            true => b.push(Op::PackUnorm8(*c)),
+            false => px,
+        };
+        store(b, p, mask, n as u8, px);
     }
     Some(())
+}
+
+/// Blends packed colour `px` into draw buffer `n`, keeps the channels `mask` leaves out,
+/// and stores it.
+fn store(b: &mut Builder, p: &FragPlan, mask: u32, n: u8, px: Val) {
+    let full = mask == u32::MAX;
+    let mut out = px;
+    if p.blend.is_some() || !full {
+        let dst = b.push(Op::LoadColor(n));
+        if let Some(bl) = p.blend {
+            out = b.push(Op::Blend(bl, px, dst));
+        }
+        if !full {
+            let (m, keep) = (b.i32(mask as i32), b.i32(!mask as i32));
+            let o = b.push(Op::And(out, m));
+            let d = b.push(Op::And(dst, keep));
+            out = b.push(Op::Or(o, d));
+        }
+    }
+    b.push(Op::StoreColor(n, out));
 }

@@ -263,12 +263,13 @@ pub enum Op {
         /// The quantised depth (any i32 value without a depth test).
         z: Val,
     },
-    /// The colour buffer's packed RGBA8 values at the live lanes.
-    LoadColor,
+    /// Draw buffer `n`'s packed RGBA8 values at the live lanes (0: the target's colour,
+    /// k ≥ 1: its `more_colors[k - 1]`).
+    LoadColor(u8),
     /// 8-bit blending of a packed source with a packed destination.
     Blend(Blend8, Val, Val),
-    /// Writes a packed colour to the live lanes.
-    StoreColor(Val),
+    /// Writes a packed colour to draw buffer `n` (as [`Op::LoadColor`]) at the live lanes.
+    StoreColor(u8, Val),
     /// Writes a value's lanes to output `n` of the chunk (a vertex shader's results,
     /// [`super::exec::Program::run_streams`]).
     Output(u16, Val),
@@ -311,7 +312,7 @@ impl Op {
             | Op::InputF(_)
             | Op::Texel(_)
             | Op::Uniform(_) => vec![],
-            Op::LoadColor => vec![],
+            Op::LoadColor(_) => vec![],
             Op::Ddx(a) | Op::Ddy(a) => vec![a],
             Op::Sample { s, t, r, l, .. } => vec![s, t, r, l],
             Op::Add(a, b)
@@ -340,7 +341,7 @@ impl Op {
             | Op::Fog(a, _)
             | Op::Byte(a, _)
             | Op::UnpackUnorm8(a, _) => vec![a],
-            Op::Kill(a) | Op::StoreColor(a) | Op::DepthTest { z: a, .. } => vec![a],
+            Op::Kill(a) | Op::StoreColor(_, a) | Op::DepthTest { z: a, .. } => vec![a],
             Op::StencilDepth { z, .. } => vec![z],
             Op::Output(_, a) => vec![a],
             Op::PackUnorm8(v) => v.to_vec(),
@@ -431,7 +432,7 @@ impl Builder {
                 }
                 return Ok(None);
             }
-            Op::Input(_) | Op::LoadColor => I32,
+            Op::Input(_) | Op::LoadColor(_) => I32,
             Op::Add(a, b)
             | Op::Sub(a, b)
             | Op::Mul(a, b)
@@ -532,7 +533,7 @@ impl Builder {
                 want(d, I32, "packed destination")?;
                 I32
             }
-            Op::StoreColor(c) => {
+            Op::StoreColor(_, c) => {
                 want(c, I32, "packed colour")?;
                 return Ok(None);
             }

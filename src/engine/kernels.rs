@@ -563,7 +563,7 @@ mod body {
         each!(c, k, {
             let live = V::ld_i(c.reg(0, k));
             // A chunk without live lanes may lie past the buffer: no access is made.
-            let p = c.color.wrapping_add(c.chunk(k).idx);
+            let p = c.colors[s.imm as usize].0.wrapping_add(c.chunk(k).idx);
             V::st_i(c.reg(s.d, k), V::load_color(p, live))
         });
     }
@@ -590,7 +590,8 @@ mod body {
             }
             let idx = c.chunk(k).idx;
             let v = V::ld_i(c.reg(s.a[0], k));
-            V::store_color(c.color.add(idx), c.color_len - idx, live, v)
+            let (p, len) = c.colors[s.imm as usize];
+            V::store_color(p.add(idx), len - idx, live, v)
         });
     }
 

@@ -124,10 +124,10 @@ pub fn lower_textured(s: &TexturedState) -> Option<Ir> {
         });
     }
     if let Some(bl) = p.blend {
-        let dst = b.push(Op::LoadColor);
+        let dst = b.push(Op::LoadColor(0));
         px = b.push(Op::Blend(bl, px, dst));
     }
-    b.push(Op::StoreColor(px));
+    b.push(Op::StoreColor(0, px));
     let ir = b.finish().ok()?;
     debug_assert!(ir.types[tex.0 as usize] == Some(Ty::I32));
     Some(ir)

@@ -195,6 +195,7 @@ pub(super) fn state(full: bool, fma: bool, over: bool) -> FragPlan {
         blend_color: [0.0; 4],
         srgb: false,
         shader: None,
+        more_buffers: 0,
     }
 }
 
@@ -261,6 +262,7 @@ pub(super) fn run_prepared(
         planes: &p.planes,
         inputs: &inputs,
         color: &mut fb.color,
+        more_colors: Default::default(),
         depth: &mut fb.depth,
         uniforms: &[],
         live_out: &mut [],
@@ -406,7 +408,7 @@ pub(super) fn eval_f32(
     } else {
         r
     };
-    b.push(Op::StoreColor(r));
+    b.push(Op::StoreColor(0, r));
     let prog = compile_for(&b.finish().expect("typed"), isa);
     let planes = a0.map(|a| [a, 0.0, 0.0]);
     let mut color = [[0u8; 4]; 8];
@@ -421,6 +423,7 @@ pub(super) fn eval_f32(
         planes: &planes,
         inputs: &[],
         color: &mut color,
+        more_colors: Default::default(),
         depth: &mut [],
         uniforms: &[],
         live_out: &mut [],

@@ -80,6 +80,7 @@ fn random_state(pick: &mut dyn FnMut(u32) -> usize) -> (FragPlan, Vec<UnitPlan<'
         blend_color: [0.0; 4],
         srgb: false,
         shader: None,
+        more_buffers: 0,
     };
     (plan, units)
 }

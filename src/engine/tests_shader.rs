@@ -167,7 +167,7 @@ fn uniform_arithmetic_is_hoisted() {
         let x = b.push(Op::FragX);
         let r = b.push(Op::Add(m, x));
         let bits = b.push(Op::Bits(r));
-        b.push(Op::StoreColor(bits));
+        b.push(Op::StoreColor(0, bits));
         let prog = compile_for(&b.finish().unwrap(), isa);
         assert_eq!(prog.prologue_len(), 4, "uniform, exp2, constant, multiply");
         let mut color = vec![[0u8; 4]; 24];
@@ -184,6 +184,7 @@ fn uniform_arithmetic_is_hoisted() {
             planes: &[],
             inputs: &[],
             color: &mut color,
+            more_colors: Default::default(),
             depth: &mut [],
             uniforms: &[0.7],
             live_out: &mut [],
@@ -218,7 +219,7 @@ fn dead_values_are_dropped_and_constants_shared() {
         let s = b.push(Op::Add(planes[0], one_again));
         let _dead = b.push(Op::Un(Un::Sqrt, planes[5]));
         let bits = b.push(Op::Bits(s));
-        b.push(Op::StoreColor(bits));
+        b.push(Op::StoreColor(0, bits));
         let prog = compile_for(&b.finish().unwrap(), isa);
         // prologue: the constant 1.0 once; body: w, 1/w, plane 2, the divide, the add,
         // the bits and the store
@@ -232,6 +233,7 @@ fn dead_values_are_dropped_and_constants_shared() {
             planes: &planes_in,
             inputs: &[],
             color: &mut color,
+            more_colors: Default::default(),
             depth: &mut [],
             uniforms: &[],
             live_out: &mut [],
@@ -269,7 +271,7 @@ fn run_pairs(
     let v = [0u16, 1, 2].map(|n| b.push(Op::Interp(n)));
     let r = f(&mut b, v);
     let r = b.push(Op::Bits(r));
-    b.push(Op::StoreColor(r));
+    b.push(Op::StoreColor(0, r));
     let prog = compile_for(&b.finish().expect("typed"), isa);
     assert!(prog.quads());
     // v0 = -3y, v1 = 0.25x, v2 = y
@@ -288,6 +290,7 @@ fn run_pairs(
         planes: &planes,
         inputs: &[],
         color: &mut color,
+        more_colors: Default::default(),
         depth: &mut [],
         uniforms: &[],
         live_out: &mut [],

@@ -61,6 +61,9 @@ pub struct FragPlan {
     /// A fragment shader replaces the colour stages (texturing, colour sum, fog): the
     /// triangles are drawn through the engine by [`crate::shader::draw`].
     pub shader: Option<crate::shader::draw::ShaderRef>,
+    /// Bit k − 1: draw buffer k ≥ 1 has a colour buffer
+    /// ([`crate::framebuffer::Framebuffer::more_colors`]); drawn by the engine only.
+    pub more_buffers: u8,
 }
 
 /// A 4x multisample triangle draw, rasterised once for the four samples

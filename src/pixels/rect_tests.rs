@@ -134,6 +134,7 @@ fn ready_plan(round: usize) -> FragPlan {
         blend_color: [0.0; 4],
         srgb: false,
         shader: None,
+        more_buffers: 0,
     }
 }
 

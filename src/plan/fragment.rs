@@ -95,6 +95,7 @@ pub fn fragment(
         // set by the draw, which knows the colour buffer (`srgb_store`)
         srgb: false,
         shader: None,
+        more_buffers: 0,
     }
 }
 

@@ -42,6 +42,9 @@ pub struct Target {
     pub has_stencil: bool,
     /// Whether the colour buffer is sRGB-encoded ([`crate::framebuffer::Framebuffer::srgb`]).
     pub srgb: bool,
+    /// The draw buffers after the first that have a colour buffer
+    /// ([`crate::framebuffer::Framebuffer::more_color_mask`]).
+    pub more_buffers: u8,
 }
 
 /// What a draw is planned from: the state's parameter blocks, borrowed for the draw.
@@ -202,6 +205,7 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
     let mut frag = fragment(&s.frag, t.depth_format, t.has_stencil, fma);
     frag.ms = s.ms;
     frag.srgb = fragment::srgb_store(caps, t.srgb);
+    frag.more_buffers = t.more_buffers;
     stage.color_sum = (stage.light.is_none() && caps.get(Cap::ColorSum)) || vs_sum == Some(true);
     frag.separate_specular =
         stage.color_sum || stage.light.as_ref().is_some_and(|l| l.separate_specular());

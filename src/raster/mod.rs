@@ -584,6 +584,7 @@ mod tests {
             blend_color: [0.0; 4],
             srgb: false,
             shader: None,
+            more_buffers: 0,
         }
     }
 

@@ -241,7 +241,7 @@ impl FragShader {
             }
         }
         let mut b = Builder::from_ir(ir);
-        crate::engine::ff::tail(&mut b, plan, l.color)?;
+        crate::engine::ff::tail_buffers(&mut b, plan, &l.colors)?;
         b.finish().ok()
     }
 }

@@ -50,14 +50,20 @@ pub struct Slot {
     pub linear: bool,
 }
 
+/// The draw buffers a fragment shader may write (`gl_MaxDrawBuffers`).
+pub const MAX_DRAW_BUFFERS: usize = 8;
+
 /// A lowered fragment shader: the program (without an output stage), the colour it
-/// leaves in `gl_FragColor` (or the first user output), and where its inputs go.
+/// leaves in each draw buffer (`gl_FragColor`, the first user output, or
+/// `gl_FragData[k]`), and where its inputs go.
 #[derive(Clone, Debug)]
 pub struct Lowered {
     /// The program.
     pub ir: Ir,
-    /// The output colour's four channels.
+    /// Draw buffer 0's colour, four channels (`colors[0]`).
     pub color: [Val; 4],
+    /// Each draw buffer's colour ([`MAX_DRAW_BUFFERS`]: glDrawBuffers' limit).
+    pub colors: [[Val; 4]; MAX_DRAW_BUFFERS],
     /// The uniforms read, in the order of their slots.
     pub uniforms: Vec<Slot>,
     /// The varyings read, in the order of their planes.
@@ -203,29 +209,35 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
                 || (v.storage == Storage::Out && v.ty == Type::Vector(Scalar::Float, 4))
         })
         .filter(|i| l.env.contains_key(i));
-    // gl_FragData[0] is draw buffer 0's colour; a write to a later element (another
-    // draw buffer) is not run yet.
     let data = p
         .vars
         .iter()
         .position(|v| v.name == "gl_FragData")
         .and_then(|i| l.env.get(&i).cloned());
-    if let Some(d) = &data {
-        if d.iter().skip(4).any(|&v| l.cval(v) != Some(0)) {
-            return no("gl_FragData beyond element 0");
+    // gl_FragColor (or the one `out` vec4) goes to every draw buffer, as Mesa's
+    // `write_all_cbufs`; gl_FragData[k] to draw buffer k. A draw buffer the shader writes
+    // nothing to gets zeros (llvmpipe's colour outputs start as zeroed allocas).
+    let zero = l.f32(0.0);
+    let mut colors = [[zero; 4]; MAX_DRAW_BUFFERS];
+    match (out, data) {
+        (Some(i), _) => {
+            let c = &l.env[&i];
+            colors = [[c[0], c[1], c[2], c[3]]; MAX_DRAW_BUFFERS];
         }
+        (None, Some(d)) => {
+            for (k, c) in d.chunks_exact(4).take(MAX_DRAW_BUFFERS).enumerate() {
+                colors[k] = [c[0], c[1], c[2], c[3]];
+            }
+        }
+        _ => {}
     }
-    let color = match (out, data) {
-        (Some(i), _) => l.env[&i].clone(),
-        (None, Some(d)) if d.len() >= 4 => d[..4].to_vec(),
-        _ => vec![l.f32(0.0); 4],
-    };
     let ir =
         l.b.finish()
             .map_err(|e| Unsupported(format!("IR type error {e:?}")))?;
     Ok(Lowered {
         ir,
-        color: [color[0], color[1], color[2], color[3]],
+        color: colors[0],
+        colors,
         uniforms: l.uniforms,
         varyings: l.varyings,
         front_facing: l.front_facing,

@@ -184,7 +184,7 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
     for ch in 0..4 {
         let mut b = Builder::from_ir(lowered.ir.clone());
         let bits = b.push(Op::Bits(lowered.color[ch]));
-        b.push(Op::StoreColor(bits));
+        b.push(Op::StoreColor(0, bits));
         let ir = b.finish().map_err(|e| format!("{e:?}"))?;
         let prog = exec::compile_for(&ir, isa);
         let mut color = vec![SENTINEL[ch].to_bits().to_le_bytes(); W * H];
@@ -192,6 +192,7 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
             planes: &planes,
             inputs: &[],
             color: &mut color,
+            more_colors: Default::default(),
             depth: &mut [],
             uniforms: &uniforms,
             live_out: &mut [],

@@ -169,6 +169,7 @@ fn colors8_chunks_match_the_lane_path() {
             blend_color: [0.0; 4],
             srgb: false,
             shader: None,
+            more_buffers: 0,
         };
         let (py, x) = (round % H, [0, 4, 8, 13][round % 4]);
         let cov: [u8; SAMPLES] = std::array::from_fn(|_| (unit() * 256.0) as u8);
