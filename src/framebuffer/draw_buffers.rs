@@ -2,15 +2,15 @@
 //! buffers (glDrawBuffers) is bound: the context keeps them in the working copy's
 //! [`Framebuffer::more_colors`] (draw buffer k at index k − 1, an empty buffer where
 //! draw buffer k is GL_NONE or names no image), laid out as the working copy's own
-//! colour (same size, same rows), and every [`Target`] made from it (one band, or the
-//! bands of a threaded draw) carries the same rows of each ([`Target::more_colors`]), so
+//! colour (same size, same rows), and every [`super::Target`] made from it (one band, or the
+//! bands of a threaded draw) carries the same rows of each ([`super::Target::more_colors`]), so
 //! that the thread that owns a band of draw buffer 0 owns that band of every draw buffer
 //! and one rasterization writes them all.
 //!
 //! Only 8-bit RGBA/RGB images are drawn this way (the context assembles no other kind:
 //! `crate::context::fbo_bind`).
 
-use super::{Framebuffer, Target};
+use super::Framebuffer;
 use crate::memory::HugeBuf;
 use std::slice::ChunksMut;
 
