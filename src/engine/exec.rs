@@ -24,6 +24,11 @@ use crate::pipe::CompareFunc;
 /// The most chunks one batch runs (a register slot holds one 8-lane value per chunk).
 pub const MAX_BATCH: usize = 32;
 
+/// The back-jumps of [`Op::LoopEnd`] a batch may take, over all of its loops: llvmpipe's
+/// `LP_MAX_TGSI_LOOP_ITERATIONS`, the loop limiter it shares between every loop of a
+/// shader (so a loop that never ends for some lane ends, as there).
+pub const LOOP_LIMIT: u32 = 65535;
+
 /// One compiled operation: its kernel, destination slot, operand slots and immediate.
 #[derive(Clone, Copy)]
 pub struct Step {
@@ -174,6 +179,10 @@ pub struct Ctx<'a> {
     /// k at `n · MAX_BATCH + k` ([`TEXEL_STREAMS`] streams), null when the program
     /// samples nothing.
     pub(super) texels: *mut [u32; 8],
+    /// The body step to go on at, set by [`Op::LoopEnd`]'s kernel.
+    pub(super) jump: Option<usize>,
+    /// The back-jumps the batch may still take ([`LOOP_LIMIT`]).
+    pub(super) limiter: u32,
 }
 
 /// The streams of [`Ctx::texels`]: four channels per lookup.
@@ -233,6 +242,8 @@ pub struct Program {
     samples: bool,
     /// The program tests stencil ([`Op::StencilDepth`]).
     stencil: bool,
+    /// The program has loops ([`Op::LoopEnd`]): its body runs with jumps.
+    loops: bool,
 }
 
 /// Whether code for `want` may run where [`crate::cpu::isa`] reports `have`.
@@ -266,7 +277,19 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
     let mut slot = vec![0u16; n];
     let mut hoisted = vec![false; n];
     let mut free: Vec<u16> = Vec::new();
-    let mut next = 1u16; // slot 0 is the live mask
+    // Slot 0 is the live mask, slots 1..=vars the mutable variables.
+    let vars = ir
+        .ops
+        .iter()
+        .filter_map(|op| match *op {
+            Op::VarLoad(n, _) | Op::VarStore(n, _) => Some(n + 1),
+            _ => None,
+        })
+        .max()
+        .unwrap_or(0);
+    let mut next = 1 + vars;
+    extend_over_loops(ir, &live, &mut last);
+    let mut loop_starts: std::collections::HashMap<u16, usize> = Default::default();
     let mut p = Program {
         prologue: Vec::new(),
         body: Vec::new(),
@@ -284,6 +307,7 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
         quads: false,
         samples: false,
         stencil: false,
+        loops: false,
     };
     for (i, op) in ir.ops.iter().enumerate() {
         if !live[i] {
@@ -452,6 +476,25 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
                 p.samples = true;
                 (t.texel, u32::from(n))
             }
+            Op::VarLoad(..) | Op::VarStore(..) => (t.copy, 0),
+            Op::LoopBegin(n) => {
+                loop_starts.insert(n, p.body.len());
+                continue;
+            }
+            Op::LoopEnd(n, _) => {
+                p.loops = true;
+                let start = loop_starts.get(&n).copied();
+                (
+                    t.loop_end,
+                    start.expect("LoopEnd after its LoopBegin") as u32,
+                )
+            }
+        };
+        // A variable's slot is the source of a load and the destination of a store.
+        let (d, a) = match *op {
+            Op::VarLoad(n, _) => (d, [1 + n, 0, 0, 0]),
+            Op::VarStore(n, _) => (1 + n, a),
+            _ => (d, a),
         };
         if hoist {
             p.prologue.push(Step { k, d, a, imm });
@@ -464,6 +507,34 @@ pub fn compile_for(ir: &Ir, isa: Isa) -> Program {
     }
     p.slots = next as usize;
     p
+}
+
+/// Keeps the values a loop's body uses but does not define alive to the loop's end: the
+/// body runs again from its start, and reads them again.
+fn extend_over_loops(ir: &Ir, live: &[bool], last: &mut [usize]) {
+    let mut begins: std::collections::HashMap<u16, usize> = Default::default();
+    for (j, op) in ir.ops.iter().enumerate() {
+        match *op {
+            Op::LoopBegin(n) => {
+                begins.insert(n, j);
+            }
+            Op::LoopEnd(n, _) => {
+                let Some(&b) = begins.get(&n) else { continue };
+                for (i, o) in ir.ops.iter().enumerate().take(j + 1).skip(b) {
+                    if !live[i] {
+                        continue;
+                    }
+                    for v in o.operands() {
+                        let vi = v.0 as usize;
+                        if vi < b && last[vi] != usize::MAX {
+                            last[vi] = last[vi].max(j);
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
 }
 
 /// Which operations a program needs: those with an effect (they define no value, or
@@ -518,6 +589,7 @@ fn hoistable(op: &Op) -> bool {
             | Op::Ddy(_)
             | Op::Sample { .. }
             | Op::Texel(_)
+            | Op::VarLoad(..)
     )
 }
 
@@ -659,6 +731,8 @@ impl Program {
                 true => scratch.texels.as_mut_ptr(),
                 false => std::ptr::null_mut(),
             },
+            jump: None,
+            limiter: LOOP_LIMIT,
         };
         // SAFETY: the steps' slots are below `self.slots` (compile) and the register file
         // holds `slots * stride` values; the chunks' live lanes lie in the buffers
@@ -675,9 +749,7 @@ impl Program {
                 for k in 0..n {
                     *ctx.reg(0, k) = live_lanes(chunks[base + k].live);
                 }
-                for s in &self.body {
-                    (s.k)(&mut ctx, s);
-                }
+                self.run_body(&mut ctx);
                 if live_out {
                     for k in 0..n {
                         io.live_out[base + k] = live_bits(&*ctx.reg(0, k));
@@ -691,6 +763,32 @@ impl Program {
 }
 
 impl Program {
+    /// Runs the body's steps over the batch in `ctx`: in order, or, for a program with
+    /// loops, from the step each [`Op::LoopEnd`] jumps back to, with the batch's loop
+    /// limiter full.
+    ///
+    /// # Safety
+    /// As a kernel's: the steps' slots lie in `ctx`'s register file and its chunks' live
+    /// lanes in its buffers ([`Program::run`], [`Program::run_streams`]).
+    #[inline(always)]
+    unsafe fn run_body(&self, ctx: &mut Ctx<'_>) {
+        // SAFETY: the caller's promise, for every step.
+        unsafe {
+            if !self.loops {
+                for s in &self.body {
+                    (s.k)(ctx, s);
+                }
+                return;
+            }
+            ctx.limiter = LOOP_LIMIT;
+            let mut i = 0;
+            while let Some(s) = self.body.get(i) {
+                (s.k)(ctx, s);
+                i = ctx.jump.take().unwrap_or(i + 1);
+            }
+        }
+    }
+
     /// The outputs per chunk the program writes ([`Op::Output`]).
     pub fn outputs(&self) -> usize {
         self.outputs
@@ -752,6 +850,8 @@ impl Program {
             outs_per: self.outputs,
             sampler: None,
             texels: std::ptr::null_mut(),
+            jump: None,
+            limiter: LOOP_LIMIT,
         };
         // SAFETY: as in `run`; the outputs hold `chunks · self.outputs` values (checked)
         // and a step's output index is below `self.outputs` (compile); no step reads a
@@ -768,9 +868,7 @@ impl Program {
                 for k in 0..n {
                     *ctx.reg(0, k) = [u32::MAX; 8];
                 }
-                for s in &self.body {
-                    (s.k)(&mut ctx, s);
-                }
+                self.run_body(&mut ctx);
                 base += n;
             }
         }

@@ -273,6 +273,19 @@ pub enum Op {
     /// Writes a value's lanes to output `n` of the chunk (a vertex shader's results,
     /// [`super::exec::Program::run_streams`]).
     Output(u16, Val),
+    /// Mutable variable `n`'s value, of type `ty`: what the last [`Op::VarStore`] to it
+    /// wrote (the values a loop carries from one iteration to the next).
+    VarLoad(u16, Ty),
+    /// Writes a value to mutable variable `n` in every lane (the lowering selects under
+    /// its masks first).
+    VarStore(u16, Val),
+    /// The start of loop `n`'s body: where its [`Op::LoopEnd`] jumps back to.
+    LoopBegin(u16),
+    /// The end of loop `n`'s body: the body runs again while any lane of the mask is
+    /// set in any chunk of the batch, at most [`super::exec::LOOP_LIMIT`] back-jumps per
+    /// batch over all loops (llvmpipe's `LP_MAX_TGSI_LOOP_ITERATIONS`, shared by every
+    /// loop of a shader).
+    LoopEnd(u16, Val),
     /// gallivm's `lp_build_ddx`: in each 2x2 quad, the right pixel's value minus the
     /// left one's, in both pixels of its row. A program with a derivative runs over
     /// chunk pairs ([`super::exec::Program::quads`]).
@@ -312,7 +325,8 @@ impl Op {
             | Op::InputF(_)
             | Op::Texel(_)
             | Op::Uniform(_) => vec![],
-            Op::LoadColor(_) => vec![],
+            Op::LoadColor(_) | Op::VarLoad(..) | Op::LoopBegin(_) => vec![],
+            Op::VarStore(_, a) | Op::LoopEnd(_, a) => vec![a],
             Op::Ddx(a) | Op::Ddy(a) => vec![a],
             Op::Sample { s, t, r, l, .. } => vec![s, t, r, l],
             Op::Add(a, b)
@@ -369,7 +383,7 @@ pub struct Ir {
 
 /// Builds an [`Ir`], checking types as it goes (the first error is kept and returned by
 /// [`Builder::finish`]).
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct Builder {
     ir: Ir,
     error: Option<TypeError>,
@@ -433,6 +447,18 @@ impl Builder {
                 return Ok(None);
             }
             Op::Input(_) | Op::LoadColor(_) => I32,
+            Op::VarLoad(_, ty) => ty,
+            Op::VarStore(_, v) => {
+                if t(v).is_none() {
+                    return Err("a value to store");
+                }
+                return Ok(None);
+            }
+            Op::LoopBegin(_) => return Ok(None),
+            Op::LoopEnd(_, m) => {
+                want(m, Mask, "loop mask")?;
+                return Ok(None);
+            }
             Op::Add(a, b)
             | Op::Sub(a, b)
             | Op::Mul(a, b)

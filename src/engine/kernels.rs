@@ -680,6 +680,26 @@ mod body {
         each!(c, k, { *c.reg(s.d, k) = *c.texels.add(at + k) });
     }
 
+    /// Copies slot `a[0]` to slot `d` (a mutable variable's load or store).
+    #[inline(always)]
+    pub(in super::super) unsafe fn copy<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        each!(c, k, { *c.reg(s.d, k) = *c.reg(s.a[0], k) });
+    }
+
+    /// The end of a loop's body: jumps back to body step `imm` while any lane of mask
+    /// `a[0]` is set in a chunk of the batch and the limiter allows
+    /// ([`super::super::exec::LOOP_LIMIT`]; llvmpipe decrements first and goes on while
+    /// it stays above zero).
+    #[inline(always)]
+    pub(in super::super) unsafe fn loop_end<V: Lanes>(c: &mut Ctx<'_>, s: &Step) {
+        let mut any = false;
+        each!(c, k, { any |= V::any(V::ld_i(c.reg(s.a[0], k))) });
+        c.limiter = c.limiter.saturating_sub(1);
+        if any && c.limiter > 0 {
+            c.jump = Some(s.imm as usize);
+        }
+    }
+
     /// Writes the value to output `imm` of each chunk (`Program::run_streams` sized the
     /// outputs: `outs_per` values per chunk, `imm` below it).
     #[inline(always)]
@@ -698,7 +718,7 @@ macro_rules! kernel_list {
         $cb!($($pre)* constant, frag_x, frag_y, interp, input, uniform, add, sub, mul, div, min,
             max, mad, sat, cvt, bits, fcmp, icmp, and, or, fog, byte, unpack, pack, select, kill,
             depth, load_color, blend, store_color, unary, pow, ibin, xor, scmp, itof, ftoi,
-            from_bits, output, ddx, ddy, sample, texel, stencil_depth);
+            from_bits, output, ddx, ddy, sample, texel, stencil_depth, copy, loop_end);
     };
 }
 

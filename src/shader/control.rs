@@ -3,15 +3,22 @@
 //! [`super::lower`]'s module doc for the scheme).
 
 use super::lower::{no, Lower, Unsupported, R};
-use crate::engine::ir::{Op, Val};
+use crate::engine::ir::{Op, Ty, Val};
 use softgl_glsl::hir::{self, Expr, Stmt, Storage, VarId};
 use softgl_glsl::types::Type;
 
 /// The most iterations an unrolled loop may take.
 const MAX_UNROLL: usize = 1024;
 
+/// Why a loop is not unrolled: its condition does not fold to a constant.
+const NOT_CONSTANT: &str = "a loop whose trip count is not constant";
+/// Why a loop is not unrolled: it runs more than [`MAX_UNROLL`] times.
+const TOO_LONG: &str = "a loop of more than 1024 iterations";
+/// The most mutable variables a shader's loops may carry (each takes a register slot).
+const MAX_VARS: u16 = 4096;
+
 /// A loop being unrolled: the lanes that left it or skip the rest of this iteration.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(super) struct LoopFrame {
     /// The lanes that left the loop.
     pub(super) broken: Option<Val>,
@@ -24,7 +31,7 @@ pub(super) struct LoopFrame {
 }
 
 /// A function being inlined: its return value and the lanes that returned.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(super) struct FnFrame {
     /// The value returned so far (per lane).
     pub(super) ret: Option<Vec<Val>>,
@@ -225,7 +232,9 @@ impl Lower<'_> {
     /// Unrolls a loop while its condition folds to a constant. The variables the step
     /// writes (the counters) are read inside the loop as the step computes them for every
     /// lane, so that a `break` in some lanes leaves the condition constant; their values
-    /// after the loop are kept per lane, as of each lane's last step.
+    /// after the loop are kept per lane, as of each lane's last step. A loop whose
+    /// condition does not fold, or that runs more than [`MAX_UNROLL`] times, is lowered
+    /// again from the same point as a loop ([`Lower::dynamic_loop`]).
     fn loop_(
         &mut self,
         init: Option<&Stmt>,
@@ -245,11 +254,154 @@ impl Lower<'_> {
         // become its condition.
         let saved_cond = self.cond;
         self.cond = self.exec();
+        let before = self.clone();
         self.loops.push(LoopFrame::default());
         let r = self.unroll(cond, step, body, test_last, &counters);
         self.loops.pop();
+        let r = match r {
+            Err(Unsupported(why)) if why == NOT_CONSTANT || why == TOO_LONG => {
+                *self = before;
+                self.dynamic_loop(cond, step, body, test_last)
+            }
+            r => r,
+        };
         self.cond = saved_cond;
         r
+    }
+
+    /// Lowers a loop as a loop ([`Op::LoopBegin`] … [`Op::LoopEnd`]): the variables the
+    /// loop may write ([`writes_stmt`]) live in mutable variables across iterations
+    /// (stored on entry and at the end of each iteration, loaded at the start of each
+    /// and after the loop), and so does the mask of the lanes that left it; the body
+    /// runs again while a lane that reached the loop has not left it. Every write is
+    /// selected under the lane mask as in straight code, so the lanes that left keep
+    /// their values. `return` inside such a loop is not lowered.
+    fn dynamic_loop(
+        &mut self,
+        cond: Option<&Expr>,
+        step: Option<&Expr>,
+        body: &Stmt,
+        test_last: bool,
+    ) -> R<()> {
+        let (mut vars, mut seen) = (Vec::new(), Vec::new());
+        writes_stmt(self.p, body, &mut vars, &mut seen);
+        for e in cond.iter().chain(step.iter()) {
+            writes_expr(self.p, e, &mut vars, &mut seen);
+        }
+        vars.sort_unstable();
+        vars.dedup();
+        let mut carried = Vec::new();
+        // What cannot be written (uniforms, inputs, constants, samplers) is not carried.
+        vars.retain(|&v| {
+            let var = &self.p.vars[v];
+            !matches!(var.storage, Storage::Uniform | Storage::In | Storage::Const)
+                && !matches!(var.ty, Type::Sampler(_))
+        });
+        for v in vars {
+            let vals = self.read_var(v)?;
+            let mut slots = Vec::new();
+            for x in vals {
+                let Some(ty) = self.b.ty(x) else {
+                    return no("a loop variable without a type");
+                };
+                let id = self.new_var()?;
+                self.op(Op::VarStore(id, x));
+                slots.push((id, ty));
+            }
+            carried.push((v, slots));
+        }
+        let broken_var = self.new_var()?;
+        let none = self.mask(false);
+        self.op(Op::VarStore(broken_var, none));
+        let id = self.loop_count;
+        self.loop_count = id
+            .checked_add(1)
+            .ok_or_else(|| Unsupported("too many loops".into()))?;
+        self.op(Op::LoopBegin(id));
+        self.exec_memo = None;
+        self.load_carried(&carried);
+        let broken = self.op(Op::VarLoad(broken_var, Ty::Mask));
+        let returns = self.fns.last().map(|f| (f.returned, f.done));
+        self.loops.push(LoopFrame {
+            broken: Some(broken),
+            ..LoopFrame::default()
+        });
+        if let (false, Some(c)) = (test_last, cond) {
+            self.leave_unless(c)?;
+        }
+        self.stmt(body)?;
+        if let Some(lf) = self.loops.last_mut() {
+            lf.continued = None;
+            lf.skip = false;
+        }
+        if let Some(s) = step {
+            self.expr(s)?;
+        }
+        if let (true, Some(c)) = (test_last, cond) {
+            self.leave_unless(c)?;
+        }
+        if self.fns.last().map(|f| (f.returned, f.done)) != returns {
+            return no("return inside a loop whose trip count is not constant");
+        }
+        for (v, slots) in &carried {
+            let vals = self.read_var(*v)?;
+            for (&(id, _), &x) in slots.iter().zip(&vals) {
+                self.op(Op::VarStore(id, x));
+            }
+        }
+        let left = self.loops.last().and_then(|l| l.broken).unwrap_or(none);
+        self.op(Op::VarStore(broken_var, left));
+        let running = match self.exec() {
+            Some(m) => m,
+            None => self.mask(true),
+        };
+        self.op(Op::LoopEnd(id, running));
+        self.loops.pop();
+        self.exec_memo = None;
+        self.load_carried(&carried);
+        Ok(())
+    }
+
+    /// The lanes running where condition `c` is false leave the loop being lowered.
+    fn leave_unless(&mut self, c: &Expr) -> R<()> {
+        let cv = self.expr(c)?[0];
+        let m = self.exec();
+        let ones = self.mask(true);
+        let not = self.op(Op::Xor(cv, ones));
+        let leave = match m {
+            Some(m) => self.op(Op::And(m, not)),
+            None => not,
+        };
+        let prev = self.loops.last().and_then(|l| l.broken);
+        let broken = match prev {
+            Some(b) => self.op(Op::Or(b, leave)),
+            None => leave,
+        };
+        if let Some(lf) = self.loops.last_mut() {
+            lf.broken = Some(broken);
+        }
+        Ok(())
+    }
+
+    /// Binds each variable of `carried` to loads of its mutable variables.
+    fn load_carried(&mut self, carried: &[(VarId, Vec<(u16, Ty)>)]) {
+        for (v, slots) in carried {
+            let vals = slots
+                .iter()
+                .map(|&(id, ty)| self.op(Op::VarLoad(id, ty)))
+                .collect();
+            self.env.insert(*v, vals);
+        }
+    }
+
+    /// A new mutable variable.
+    fn new_var(&mut self) -> R<u16> {
+        let id = self.var_count;
+        if id >= MAX_VARS {
+            return no("too many loop variables");
+        }
+        self.var_count += 1;
+        Ok(id)
     }
 
     fn unroll(
@@ -269,13 +421,13 @@ impl Lower<'_> {
                     match self.cval(cv) {
                         Some(0) => break,
                         Some(_) => {}
-                        None => return no("a loop whose trip count is not constant"),
+                        None => return no(NOT_CONSTANT),
                     }
                 }
             }
             n += 1;
             if n > MAX_UNROLL {
-                return no("a loop of more than 1024 iterations");
+                return no(TOO_LONG);
             }
             self.stmt(body)?;
             let returned = self.fns.last().is_some_and(|f| f.done);
@@ -381,16 +533,21 @@ impl Lower<'_> {
     }
 }
 
-/// The variables an expression assigns to (increments included), by their root.
-fn written(e: &Expr, out: &mut Vec<VarId>) {
+/// The variable an lvalue names (the array, struct or vector it is part of).
+fn root(mut e: &Expr) -> Option<VarId> {
     use softgl_glsl::hir::ExprKind as K;
-    let root = |mut e: &Expr| loop {
+    loop {
         match &e.kind {
             K::Var(v) => return Some(*v),
             K::Swizzle(b, _) | K::Index(b, _) | K::Field(b, _) => e = b,
             _ => return None,
         }
-    };
+    }
+}
+
+/// The variables an expression assigns to (increments included), by their root.
+fn written(e: &Expr, out: &mut Vec<VarId>) {
+    use softgl_glsl::hir::ExprKind as K;
     match &e.kind {
         K::Assign(_, l, r) => {
             out.extend(root(l));
@@ -411,4 +568,103 @@ fn written(e: &Expr, out: &mut Vec<VarId>) {
     }
     out.sort_unstable();
     out.dedup();
+}
+
+/// The variables statement `s` may write (assignments, increments, arguments of user
+/// calls, and what the called functions write), added to `out`: the values a loop
+/// carries from one iteration to the next. `seen` keeps each called function to one
+/// visit.
+fn writes_stmt(p: &hir::Program, s: &Stmt, out: &mut Vec<VarId>, seen: &mut Vec<usize>) {
+    match s {
+        Stmt::Decl(_, Some(e)) | Stmt::Expr(e) | Stmt::Return(Some(e)) => {
+            writes_expr(p, e, out, seen)
+        }
+        Stmt::Block(b) | Stmt::Switch(_, b) => {
+            if let Stmt::Switch(e, _) = s {
+                writes_expr(p, e, out, seen);
+            }
+            for t in b {
+                writes_stmt(p, t, out, seen);
+            }
+        }
+        Stmt::If(c, t, e) => {
+            writes_expr(p, c, out, seen);
+            writes_stmt(p, t, out, seen);
+            if let Some(e) = e {
+                writes_stmt(p, e, out, seen);
+            }
+        }
+        Stmt::Loop {
+            init,
+            cond,
+            step,
+            body,
+            ..
+        } => {
+            if let Some(i) = init {
+                writes_stmt(p, i, out, seen);
+            }
+            for e in cond.iter().chain(step) {
+                writes_expr(p, e, out, seen);
+            }
+            writes_stmt(p, body, out, seen);
+        }
+        _ => {}
+    }
+}
+
+/// [`writes_stmt`] for an expression.
+fn writes_expr(p: &hir::Program, e: &Expr, out: &mut Vec<VarId>, seen: &mut Vec<usize>) {
+    use softgl_glsl::hir::ExprKind as K;
+    match &e.kind {
+        K::Assign(_, l, r) => {
+            out.extend(root(l));
+            writes_expr(p, l, out, seen);
+            writes_expr(p, r, out, seen);
+        }
+        K::Unary(op, a) => {
+            use softgl_glsl::ast::UnOp::*;
+            if matches!(op, PreInc | PreDec | PostInc | PostDec) {
+                out.extend(root(a));
+            }
+            writes_expr(p, a, out, seen);
+        }
+        K::Binary(_, a, b) | K::Comma(a, b) | K::Index(a, b) => {
+            writes_expr(p, a, out, seen);
+            writes_expr(p, b, out, seen);
+        }
+        K::Ternary(a, b, c) => {
+            for x in [a, b, c] {
+                writes_expr(p, x, out, seen);
+            }
+        }
+        K::Field(a, _) | K::Swizzle(a, _) | K::Convert(a) | K::Length(a) => {
+            writes_expr(p, a, out, seen)
+        }
+        K::Construct(args) => {
+            for a in args {
+                writes_expr(p, a, out, seen);
+            }
+        }
+        K::Builtin(_, args) => {
+            // `out` parameters of built-ins (modf, frexp …)
+            for a in args {
+                out.extend(root(a));
+                writes_expr(p, a, out, seen);
+            }
+        }
+        K::Call(f, args) => {
+            for a in args {
+                out.extend(root(a));
+                writes_expr(p, a, out, seen);
+            }
+            if !seen.contains(f) {
+                seen.push(*f);
+                for s in p.functions[*f].body.iter().flatten() {
+                    writes_stmt(p, s, out, seen);
+                }
+            }
+        }
+        K::Var(_) | K::Literal => {}
+    }
 }

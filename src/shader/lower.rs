@@ -156,6 +156,7 @@ pub(super) fn slot_of(slots: &mut Vec<Slot>, name: &str, sc: &[Scalar]) -> u16 {
 }
 
 /// The lowering of one shader.
+#[derive(Clone)]
 pub struct Lower<'p> {
     pub(super) p: &'p hir::Program,
     pub(super) b: Builder,
@@ -190,6 +191,9 @@ pub struct Lower<'p> {
     pub(super) textures: Vec<TexUse>,
     /// Each inlined function's sampler parameters: the sampler variable passed.
     pub(super) sampler_alias: HashMap<VarId, VarId>,
+    /// The mutable variables ([`Op::VarLoad`]) and loops ([`Op::LoopBegin`]) made so far.
+    pub(super) var_count: u16,
+    pub(super) loop_count: u16,
 }
 
 /// Lowers a fragment shader.
@@ -269,6 +273,8 @@ impl<'p> Lower<'p> {
             plane_vals: HashMap::new(),
             textures: Vec::new(),
             sampler_alias: HashMap::new(),
+            var_count: 0,
+            loop_count: 0,
         }
     }
 
