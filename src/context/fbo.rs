@@ -12,8 +12,8 @@
 //! it while it is bound ([`super::fbo_lend`]): then the working copy holds the truth. The
 //! window's own framebuffer is parked in [`FboState::window`] meanwhile.
 //!
-//! One colour attachment is drawn at a time (the one glDrawBuffer selects); glDrawBuffers
-//! with several is GL 2.0 and not offered.
+//! glDrawBuffer selects the colour attachment the working copy draws into; glDrawBuffers
+//! adds attachments for draw buffers 1.. ([`super::fbo_draw_buffers`]).
 //!
 //! # Multisample renderbuffers (docs/fbo-rules.md §3)
 //! llvmpipe has one multisample mode, 4x: GL_MAX_SAMPLES is 4, a request of 1 to 4

@@ -21,6 +21,10 @@
 //! - The fragment interface: [`Op::Kill`] clears lanes, [`Op::DepthTest`] compares a
 //!   quantised depth with the buffer's (and writes it where it passes), [`Op::LoadColor`],
 //!   [`Op::Blend`] (8-bit fixed point, docs/llvmpipe-rules.md) and [`Op::StoreColor`].
+//! - Loops: the only operations not in SSA form. [`Op::VarStore`]/[`Op::VarLoad`] move a
+//!   value through a numbered variable slot; [`Op::LoopEnd`] jumps back to its
+//!   [`Op::LoopBegin`] while any lane of its mask is set and llvmpipe's iteration
+//!   limiter (65535 per batch) allows.
 
 use crate::fixed_function::fog::FogPlan;
 use crate::fragment::StencilPlan;

@@ -70,4 +70,6 @@ mod tests;
 #[cfg(test)]
 mod tests_ff;
 #[cfg(test)]
+mod tests_loop;
+#[cfg(test)]
 mod tests_shader;

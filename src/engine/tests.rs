@@ -419,18 +419,7 @@ pub(super) fn eval_f32(
         live: 0xFF,
         planes: 0,
     };
-    let mut io = Io {
-        planes: &planes,
-        inputs: &[],
-        color: &mut color,
-        more_colors: Default::default(),
-        depth: &mut [],
-        uniforms: &[],
-        live_out: &mut [],
-        sampler: None,
-        stencil: &mut [],
-        front: true,
-    };
+    let mut io = colour_io(&planes, &mut color, &[]);
     prog.run(&mut Scratch::default(), &mut io, &[chunk], 1);
     let lanes = color.map(u32::from_le_bytes);
     assert!(lanes.iter().all(|&l| l == lanes[0]), "{lanes:x?}");
@@ -509,4 +498,37 @@ fn builder_checks_types() {
     b.add(f, i);
     let e = b.finish().unwrap_err();
     assert_eq!(e.at, 3);
+}
+
+/// An [`Io`] for programs that only read planes and uniforms and write draw buffer 0.
+pub(super) fn colour_io<'a>(
+    planes: &'a [[f32; 3]],
+    color: &'a mut [[u8; 4]],
+    uniforms: &'a [f32],
+) -> Io<'a> {
+    Io {
+        planes,
+        inputs: &[],
+        color,
+        more_colors: Default::default(),
+        depth: &mut [],
+        uniforms,
+        live_out: &mut [],
+        sampler: None,
+        stencil: &mut [],
+        front: true,
+    }
+}
+
+/// `n` chunks of 8 live pixels in a row: chunk `k` covers x = 8k..8k+8 at y = 0.
+pub(super) fn row_chunks(n: usize) -> Vec<ChunkIn> {
+    (0..n)
+        .map(|k| ChunkIn {
+            idx: 8 * k,
+            fx: 8.0 * k as f32,
+            fy: 0.0,
+            live: 0xFF,
+            planes: 0,
+        })
+        .collect()
 }

@@ -4,7 +4,7 @@
 
 use super::exec::{compile_for, ChunkIn, Io, Scratch};
 use super::ir::{Builder, FCmp, IOp, Op, Un, UNS};
-use super::tests::{eval_f32, levels};
+use super::tests::{colour_io, eval_f32, levels, row_chunks};
 use crate::fixed_function::gallivm_math as gm;
 
 /// Specials and random values of several magnitudes.
@@ -171,27 +171,8 @@ fn uniform_arithmetic_is_hoisted() {
         let prog = compile_for(&b.finish().unwrap(), isa);
         assert_eq!(prog.prologue_len(), 4, "uniform, exp2, constant, multiply");
         let mut color = vec![[0u8; 4]; 24];
-        let chunks: Vec<ChunkIn> = (0..3)
-            .map(|k| ChunkIn {
-                idx: 8 * k,
-                fx: 8.0 * k as f32,
-                fy: 0.0,
-                live: 0xFF,
-                planes: 0,
-            })
-            .collect();
-        let mut io = Io {
-            planes: &[],
-            inputs: &[],
-            color: &mut color,
-            more_colors: Default::default(),
-            depth: &mut [],
-            uniforms: &[0.7],
-            live_out: &mut [],
-            sampler: None,
-            stencil: &mut [],
-            front: true,
-        };
+        let chunks = row_chunks(3);
+        let mut io = colour_io(&[], &mut color, &[0.7]);
         prog.run(&mut Scratch::default(), &mut io, &chunks, 2);
         for (i, c) in color.iter().enumerate() {
             let want = gm::exp2(0.7, isa.fused()) * 3.0 + i as f32;
@@ -229,18 +210,7 @@ fn dead_values_are_dropped_and_constants_shared() {
         let mut planes_in = vec![[0.0f32; 3]; 34];
         planes_in[0] = [2.0, 0.0, 0.0];
         planes_in[2] = [3.0, 1.0, 0.0];
-        let mut io = Io {
-            planes: &planes_in,
-            inputs: &[],
-            color: &mut color,
-            more_colors: Default::default(),
-            depth: &mut [],
-            uniforms: &[],
-            live_out: &mut [],
-            sampler: None,
-            stencil: &mut [],
-            front: true,
-        };
+        let mut io = colour_io(&planes_in, &mut color, &[]);
         let chunk = ChunkIn {
             idx: 0,
             fx: 0.0,

@@ -29,8 +29,8 @@ c_fns! {
     unsafe fn glDeleteRenderbuffersEXT(n: GLsizei, renderbuffers: *const GLuint) = framebuffers::glDeleteRenderbuffers;
     safe fn glDisableVertexAttribArrayARB(index: GLuint) = vertex_attrib::glDisableVertexAttribArray;
     safe fn glDrawArraysEXT(mode: GLenum, first: GLint, count: GLsizei) = draw::glDrawArrays;
-    unsafe fn glDrawBuffersARB(n: GLsizei, bufs: *const GLenum) = legacy::glDrawBuffers;
-    unsafe fn glDrawBuffersATI(n: GLsizei, bufs: *const GLenum) = legacy::glDrawBuffers;
+    unsafe fn glDrawBuffersARB(n: GLsizei, bufs: *const GLenum) = fragment_ext::glDrawBuffers;
+    unsafe fn glDrawBuffersATI(n: GLsizei, bufs: *const GLenum) = fragment_ext::glDrawBuffers;
     safe fn glDrawRangeElementsEXT(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const GLvoid) = draw::glDrawRangeElements;
     safe fn glEnableVertexAttribArrayARB(index: GLuint) = vertex_attrib::glEnableVertexAttribArray;
     safe fn glFogCoordPointerEXT(type_: GLenum, stride: GLsizei, pointer: *const GLvoid) = arrays_gl14::glFogCoordPointer;

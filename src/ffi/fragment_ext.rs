@@ -1,11 +1,13 @@
 //! Per-fragment calls of GL 1.4 and 2.0 (`GL/glext.h`): separate blend functions and
-//! equations, and separate front/back stencil state.
+//! equations, separate front/back stencil state, and glDrawBuffers.
 #![allow(non_snake_case)]
 
 use super::families::c_fns;
 use super::fragment::{blend_equation, blend_func, stencil_func, stencil_mask, stencil_op, Faces};
 use super::types::*;
 use super::with_ctx_list;
+use crate::context::error::GlError;
+use crate::context::legacy_state::MAX_DRAW_BUFFERS;
 
 /// glBlendFuncSeparate (GL 1.4).
 #[no_mangle]
@@ -65,4 +67,23 @@ c_fns! {
     safe fn glBlendEquationSeparateEXT(modeRGB: GLenum, modeAlpha: GLenum) = fragment_ext::glBlendEquationSeparate;
     safe fn glBlendEquationEXT(mode: GLenum) = fragment::glBlendEquation;
     safe fn glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) = fragment::glBlendColor;
+}
+
+/// glDrawBuffers: the draw buffers of the draw framebuffer (compiled into a display list
+/// with its first eight names, as Mesa's `save_DrawBuffersARB` keeps them).
+///
+/// # Safety
+/// `bufs` must be readable for `n` names (or null).
+#[no_mangle]
+pub unsafe extern "C" fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) {
+    let list = match usize::try_from(n) {
+        // SAFETY: the caller promises `n` readable names; more than the maximum is an
+        // error, so at most one past it is read.
+        Ok(k) => Some(unsafe { super::client::read_vec(bufs, k.min(MAX_DRAW_BUFFERS + 1)) }),
+        Err(_) => None,
+    };
+    with_ctx_list(move |c| match &list {
+        Some(l) if (n as usize) <= MAX_DRAW_BUFFERS && l.len() == n as usize => c.draw_buffers(l),
+        _ => Err(GlError::InvalidValue),
+    })
 }

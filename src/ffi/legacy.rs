@@ -10,7 +10,6 @@ use super::types::*;
 use super::{with_ctx, with_ctx_list, with_ctx_vertex};
 use crate::context::dlist::VertexOp;
 use crate::context::error::GlError;
-use crate::context::legacy_state::MAX_DRAW_BUFFERS;
 
 /// Sets the current colour index (allowed between glBegin and glEnd).
 fn index(i: f32) {
@@ -71,25 +70,6 @@ pub extern "C" fn glSampleCoverage(value: GLfloat, invert: GLboolean) {
 #[no_mangle]
 pub extern "C" fn glDrawBuffer(mode: GLenum) {
     with_ctx_list(move |c| c.draw_buffer(mode))
-}
-
-/// glDrawBuffers: the draw buffers of the draw framebuffer (compiled into a display list
-/// with its first eight names, as Mesa's `save_DrawBuffersARB` keeps them).
-///
-/// # Safety
-/// `bufs` must be readable for `n` names (or null).
-#[no_mangle]
-pub unsafe extern "C" fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) {
-    let list = match usize::try_from(n) {
-        // SAFETY: the caller promises `n` readable names; more than the maximum is an
-        // error, so at most one past it is read.
-        Ok(k) => Some(unsafe { super::client::read_vec(bufs, k.min(MAX_DRAW_BUFFERS + 1)) }),
-        Err(_) => None,
-    };
-    with_ctx_list(move |c| match &list {
-        Some(l) if (n as usize) <= MAX_DRAW_BUFFERS && l.len() == n as usize => c.draw_buffers(l),
-        _ => Err(GlError::InvalidValue),
-    })
 }
 
 /// glReadBuffer: GL_NONE makes colour reads GL_INVALID_OPERATION.

@@ -183,7 +183,8 @@ fn generated(picks: &[usize]) -> String {
 #[test]
 fn generated_statements_compile_and_lower() {
     // Every statement alone is valid GLSL 1.30 (an invalid one would only exercise the
-    // front end), and all but the loop whose trip count is not constant lower.
+    // front end), and every one lowers (a loop whose trip count is not constant runs as
+    // an engine loop).
     let mut refused = Vec::new();
     for (k, statement) in STATEMENTS.iter().enumerate() {
         let src = generated(&[k]);
@@ -193,7 +194,7 @@ fn generated_statements_compile_and_lower() {
             refused.push(*statement);
         }
     }
-    assert_eq!(refused, ["while (i > 100) { i -= 7; }"]);
+    assert!(refused.is_empty(), "refused: {refused:?}");
 }
 
 #[test]

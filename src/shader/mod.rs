@@ -8,14 +8,15 @@
 //! float, int and bool scalars, vectors and matrices (one SSA value per component),
 //! arithmetic, comparisons, swizzles, constructors, locals, uniforms (hoisted into the
 //! program's prologue), `gl_FragCoord`, varyings (perspective-correct planes), `if`/`else`
-//! and loops with a constant trip count under lane masks (`break`, `continue`, `return`),
+//! loops under lane masks (`break`, `continue`, `return`; a constant trip count unrolls,
+//! any other runs as an engine loop, [`control`]),
 //! `discard`, inlined user functions, and the built-in functions of [`builtins`] with
 //! llvmpipe's arithmetic. `tests/shader_mesa.rs` draws shaders through Mesa and compares.
 //!
 //! Texture lookups lower when their coordinates are varyings as read ([`texture`]): the
 //! rasterizer samples them with the fixed-function units' samplers before the program
 //! runs. Not yet: lookups at coordinates computed in the shader, with bias or LOD,
-//! derivatives, loops whose trip count is not a constant,
+//! derivatives,
 //! `switch`, integer division and shifts, dynamic indexing on the left of `=`, the
 //! inverse trigonometric functions.
 //!
@@ -52,7 +53,7 @@
 //! Honest refusals: a draw that cannot run its program draws **nothing** and counts it
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
-//! not lower (a loop whose trip count is not constant, `textureGrad`, texel offsets,
+//! not lower (`return` inside a loop that does not unroll, `textureGrad`, texel offsets,
 //! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
 //! a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
@@ -74,6 +75,8 @@ mod expr;
 #[cfg(test)]
 mod fuzz;
 pub mod lower;
+#[cfg(test)]
+mod tests_loop;
 mod texture;
 pub mod vertex;
 pub mod vertex_draw;
