@@ -53,8 +53,12 @@ pub struct DrawPlan<'a> {
     pub lp_offset: Option<(f32, (f32, bool))>,
     /// How lines are drawn.
     pub lines: LinePlan,
-    /// The point size (when points are not attenuated).
-    pub point_size: f32,
+    /// The point size, or `None` when each vertex carries its own
+    /// ([`ClipVertex::psize`]: attenuated, or a vertex shader's `gl_PointSize`).
+    pub point_size: Option<f32>,
+    /// The program's varyings leave no room for its back colours or clip vertex
+    /// (`geometry::MAX_VARY`): the draw is refused.
+    pub unfit: bool,
     /// Depth buffer bits (the polygon pipeline's offset units scale with them).
     pub depth_bits: u32,
     /// Polygon modes, offsets and stipple.
@@ -103,6 +107,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         lp_offset,
         lines,
         point_size: size,
+        unfit,
         depth_bits,
         raster,
         prims,
@@ -121,17 +126,18 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         *raster,
         *prims,
     );
-    if plan.shader.is_some() {
+    if *unfit || plan.shader.is_some() {
         // A fragment shader runs on triangles, lines and points (see `shader::draw`),
         // also through the polygon pipeline (unfilled modes, offsets); stippled polygons,
         // smooth lines and points and multisampling draw nothing.
-        let smooth = match mode {
-            Primitive::Points => prims.point_smooth,
-            Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
-            _ if poly => prims.polygon_stipple || prims.line_smooth || prims.point_smooth,
-            _ => false,
-        };
-        if smooth || plan.ms.is_some() {
+        let smooth = plan.shader.is_some()
+            && match mode {
+                Primitive::Points => prims.point_smooth,
+                Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
+                _ if poly => prims.polygon_stipple || prims.line_smooth || prims.point_smooth,
+                _ => false,
+            };
+        if *unfit || smooth || (plan.shader.is_some() && plan.ms.is_some()) {
             stats.program_draws_refused += 1;
             if let Some(a) = adopt {
                 a.settle(stats, Some(&mut *fb));
@@ -219,8 +225,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
     };
     match mode {
         Primitive::Points => {
-            let per_vertex = stage.point_atten.is_some();
-            let size_of = |v: &ClipVertex| if per_vertex { v.psize } else { size };
+            let size_of = |v: &ClipVertex| size.unwrap_or(v.psize);
             let work = || {
                 (0..n)
                     .map(&at)
@@ -233,7 +238,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
                 for k in 0..n {
                     let v = at(k);
                     if v.mask == 0 {
-                        draw_point(v, size_of(v), prims.point_smooth, lines.top_left, nvary, d);
+                        draw_point(v, size_of(v), &prims, lines.top_left, nvary, d);
                     }
                 }
             });
@@ -260,7 +265,7 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         _ if poly => {
             let pp = PolyPipeline {
                 lines: *lines,
-                point_size: stage.point_atten.is_none().then_some(size),
+                point_size: size,
                 raster,
                 enables: prims,
                 cull,
@@ -961,7 +966,8 @@ mod tests {
                 let mut stage = VertexStage::new(m, m, viewport, fma);
                 if case % 3 == 0 {
                     stage.ucp_enabled = (next() & 0xff) as u8;
-                    stage.ucp = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut next)));
+                    stage.ucp.planes =
+                        std::array::from_fn(|_| std::array::from_fn(|_| val(&mut next)));
                 }
                 // Small draws, so that some are entirely inside.
                 let n = 1 + next() as usize % 6;

@@ -1,8 +1,7 @@
 //! Draws with a current program (issue 43): a fragment shader colours triangles, lines
 //! and points through the engine, a vertex shader replaces the vertex stage; what the
-//! engine does not run (a vertex shader under user clip planes, texture lookups with a
-//! bias, `noperspective` inputs, smooth lines, generic attributes set between glBegin and glEnd)
-//! draws nothing and is counted in `program_draws_refused`, and fixed function comes
+//! engine does not run (`noperspective` inputs, smooth lines, varyings that leave no
+//! room for back colours or a clip vertex) draws nothing and is counted in `program_draws_refused`, and fixed function comes
 //! back with glUseProgram(0). Hostile coordinates (infinite, NaN, huge) reach the
 //! samplers and derivatives without harm.
 
@@ -19,6 +18,7 @@ const W: usize = 16;
 const GL_FRAGMENT_SHADER: u32 = 0x8B30;
 const GL_VERTEX_SHADER: u32 = 0x8B31;
 const GL_LINK_STATUS: u32 = 0x8B82;
+const GL_VERTEX_PROGRAM_TWO_SIDE: u32 = 0x8643;
 
 /// A current 16x16 RGBA context cleared to black.
 struct Ctx {
@@ -164,16 +164,24 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     assert_eq!(s2b.program_draws - s2.program_draws, 1);
     assert_eq!(c.pixel(8, 8), [0, 0, 255, 255]);
 
-    // With a user clip plane (gl_ClipVertex is not applied): nothing drawn, counted.
+    // With a user clip plane x >= 0: a shader that does not write gl_ClipVertex is
+    // measured at gl_Position with the eye-space plane (as Mesa does), so the right half
+    // is drawn.
     c.clear();
+    let plane = [1.0f64, 0.0, 0.0, 0.0];
+    // SAFETY: four doubles.
+    unsafe { softgl::ffi::texgen::glClipPlane(0x3000, plane.as_ptr()) };
     glEnable(0x3000);
     glRectf(-1.0, -1.0, 1.0, 1.0);
     glDisable(0x3000);
     let s3 = stats();
-    assert_eq!(s3.program_draws_refused - s2b.program_draws_refused, 1);
-    assert_eq!(c.pixel(8, 8), [0; 4]);
+    assert_eq!(s3.program_draws - s2b.program_draws, 1);
+    assert_eq!(s3.program_draws_refused, s2b.program_draws_refused);
+    assert_eq!(c.pixel(12, 8), [0, 0, 255, 255]);
+    assert_eq!(c.pixel(3, 8), [0; 4]);
 
     // A lookup with explicit gradients does not lower yet: nothing drawn, counted.
+    c.clear();
     let pt = program(
         None,
         "#version 130
@@ -251,7 +259,7 @@ fn discard_kills_and_frag_coord_is_the_window_position() {
 /// deferred glBegin/glEnd batch first (it was given with the old value); a value set
 /// between glBegin and glEnd is not recorded per vertex, so that batch is refused.
 #[test]
-fn generic_attributes_are_current_values_and_inside_begin_end_refuse() {
+fn generic_attributes_are_current_values_and_inside_begin_end_per_vertex() {
     let c = Ctx::new();
     c.clear();
     let p = glCreateProgram();
@@ -298,7 +306,9 @@ fn generic_attributes_are_current_values_and_inside_begin_end_refuse() {
     assert_eq!(s1.program_draws - s0.program_draws, 2);
     assert_eq!(s1.program_draws_refused, s0.program_draws_refused);
 
-    // A value given between two vertices: refused, counted, nothing drawn.
+    // Values given between vertices belong to each vertex: blue at (-1, -1), yellow at
+    // the other two. Pixel (0, 0)'s centre weighs the first vertex 15/16 and the others
+    // 1/16 together; pixel (14, 0)'s weighs it 1/16.
     c.clear();
     glBegin(GL_TRIANGLES);
     glVertexAttrib4f(1, 0.0, 0.0, 1.0, 1.0);
@@ -307,9 +317,21 @@ fn generic_attributes_are_current_values_and_inside_begin_end_refuse() {
     glVertex2f(1.0, -1.0);
     glVertex2f(-1.0, 1.0);
     glEnd();
-    assert_eq!(c.pixel(2, 2), [0; 4], "refused");
+    let near = |p: [u8; 4], want: [f32; 3]| {
+        (0..3).all(|k| (f32::from(p[k]) - want[k] * 255.0).abs() <= 2.0) && p[3] == 255
+    };
+    let (first, second) = (c.pixel(0, 0), c.pixel(14, 0));
+    assert!(
+        near(first, [1.0 / 16.0, 1.0 / 16.0, 15.0 / 16.0]),
+        "{first:?}"
+    );
+    assert!(
+        near(second, [15.0 / 16.0, 15.0 / 16.0, 1.0 / 16.0]),
+        "{second:?}"
+    );
     let s2 = stats();
-    assert_eq!(s2.program_draws_refused - s1.program_draws_refused, 1);
+    assert_eq!(s2.program_draws_refused, s1.program_draws_refused);
+    assert_eq!(s2.program_draws - s1.program_draws, 1);
 
     // The next batch, with the value set outside glBegin/glEnd, draws again.
     tri(-1.0, 1.0);
@@ -452,4 +474,47 @@ fn frag_data_0_is_the_colour_and_later_elements_go_to_unbound_buffers() {
     assert_eq!(stats().program_draws_refused - s1.program_draws_refused, 0);
     assert_eq!(c.pixel(8, 8), [255; 4]);
     glUseProgram(0);
+}
+
+#[test]
+fn back_colours_and_clip_vertex_that_do_not_fit_refuse_the_draw() {
+    let c = Ctx::new();
+    c.clear();
+    // Ten vec4 varyings after the colours: the fragment shader's varyings reach
+    // `MAX_VARY` (52 floats), leaving no room for the back colours or the clip vertex.
+    let decl = "varying vec4 v[10];";
+    let vs = format!(
+        "{decl} void main() {{ gl_Position = gl_Vertex; gl_FrontColor = vec4(1.0); \
+         gl_BackColor = vec4(0.0, 1.0, 0.0, 1.0); gl_ClipVertex = gl_Vertex; \
+         for (int i = 0; i < 10; i++) v[i] = vec4(0.1 * float(i)); }}"
+    );
+    let fs = format!(
+        "{decl} void main() {{ vec4 s = vec4(0.0); \
+         for (int i = 0; i < 10; i++) s += v[i]; gl_FragColor = gl_Color + s * 0.0; }}"
+    );
+    let p = program(Some(&vs), &fs);
+    glUseProgram(p);
+    let tri = || {
+        glBegin(GL_TRIANGLES);
+        glVertex2f(-1.0, -1.0);
+        glVertex2f(1.0, -1.0);
+        glVertex2f(-1.0, 1.0);
+        glEnd();
+    };
+    let s0 = stats();
+    tri();
+    assert_eq!(c.pixel(2, 2), [255; 4], "fits without the enables");
+    let s1 = stats();
+    assert_eq!(s1.program_draws - s0.program_draws, 1);
+    assert_eq!(s1.program_draws_refused, s0.program_draws_refused);
+    for cap in [GL_VERTEX_PROGRAM_TWO_SIDE, 0x3000] {
+        c.clear();
+        glEnable(cap);
+        tri();
+        glDisable(cap);
+        assert_eq!(c.pixel(2, 2), [0; 4], "{cap:#x}: refused");
+    }
+    let s2 = stats();
+    assert_eq!(s2.program_draws_refused - s1.program_draws_refused, 2);
+    assert_eq!(s2.program_draws, s1.program_draws);
 }

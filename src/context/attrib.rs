@@ -104,7 +104,8 @@ fn cap_group(cap: Cap) -> u32 {
         Multisample | SampleAlphaToCoverage | SampleAlphaToOne | SampleCoverage => MULTISAMPLE_BIT,
         Texture3D | TextureCubeMap | TexGenS | TexGenT | TexGenR | TexGenQ => GL_TEXTURE_BIT,
         LineSmooth | LineStipple => GL_LINE_BIT,
-        PointSmooth => GL_POINT_BIT,
+        // Mesa keeps GL_POINT_SPRITE in its point group (`ctx->Point.PointSprite`).
+        PointSmooth | PointSprite => GL_POINT_BIT,
         DepthTest => GL_DEPTH_BUFFER_BIT,
         StencilTest => GL_STENCIL_BUFFER_BIT,
         ScissorTest => GL_SCISSOR_BIT,

@@ -7,7 +7,10 @@
 //! emits a vertex, as glVertex does); outside it sets attribute 0's current value, which
 //! glGetVertexAttrib cannot read (GL_INVALID_OPERATION). An enabled attribute-0 array is
 //! the vertex array, and wins over GL_VERTEX_ARRAY ([`super::arrays::ArrayState::position`]).
-//! Attributes 1–15 are stored and queried; fixed function reads none of them.
+//! Attributes 1–15 are stored and queried; fixed function reads none of them. Set between
+//! glBegin and glEnd they are recorded per vertex from that call on (the vertices before
+//! it keep the value they were given with), as Mesa's vbo module records them, and a
+//! vertex shader reads each vertex's own.
 
 use super::arrays::{DataType, MAX_VERTEX_ATTRIBS};
 use super::dlist::VertexOp;
@@ -59,9 +62,8 @@ impl Context {
     /// attribute's current value (recorded as a state command in a display list).
     ///
     /// A deferred glBegin/glEnd batch is drawn first (its vertex shader reads the value
-    /// at draw time). Inside glBegin/glEnd the value is not recorded per vertex: the
-    /// batch is marked ([`super::immediate::Immediate::generic_inside`]) and a vertex
-    /// shader reading generic attributes refuses it.
+    /// at draw time). Inside glBegin/glEnd the batch starts recording each vertex's
+    /// generic attributes ([`super::immediate::Immediate::generic_inside`]).
     pub(crate) fn vertex_attrib(&mut self, index: u32, v: [f32; 4]) -> GlResult<()> {
         let i = slot(index)?;
         let inside = match self.lists.compile_mode() {
@@ -91,6 +93,9 @@ impl Context {
     fn set_generic(&mut self, i: usize, v: [f32; 4]) {
         if self.immediate.active.is_some() {
             self.immediate.generic_inside = true;
+            // Out of memory leaves the record short: the batch is refused by a vertex
+            // shader that reads it.
+            let _ = self.immediate.verts.track_generic(&self.generic_current);
         } else {
             self.flush_pending();
         }

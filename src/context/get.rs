@@ -485,6 +485,11 @@ fn raster_get(c: &Context, pname: u32) -> Option<Value> {
         GL_POINT_SIZE_MAX => f(&[r.point.max_size]),
         GL_POINT_FADE_THRESHOLD_SIZE => f(&[r.point.fade_threshold]),
         GL_POINT_DISTANCE_ATTENUATION => f(&r.point.attenuation),
+        super::point_sprite::GL_POINT_SPRITE_COORD_ORIGIN => e(if r.point.sprite_upper_left {
+            crate::gl::glext_enums::GL_UPPER_LEFT
+        } else {
+            crate::gl::glext_enums::GL_LOWER_LEFT
+        }),
         GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => f(&[1.0, MAX_POINT_SIZE]),
         GL_POINT_SIZE_GRANULARITY => f(&[SIZE_GRANULARITY]),
         GL_LINE_STIPPLE_PATTERN => i(&[r.line.stipple_pattern as i64]),

@@ -12,7 +12,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_texture_cube_map GL_ARB_framebuffer_object GL_EXT_framebuffer_object ",
     "GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil ",
     "GL_ARB_seamless_cube_map ",
-    "GL_ARB_texture_env_add GL_ARB_window_pos GL_ARB_point_parameters ",
+    "GL_ARB_texture_env_add GL_ARB_window_pos GL_ARB_point_parameters GL_ARB_point_sprite ",
     "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 ",
     "GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object ",
     "GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate ",

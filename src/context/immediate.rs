@@ -3,6 +3,7 @@
 //! can extend it (as Mesa's vbo module merges draws), and a long GL_TRIANGLES batch drawn
 //! in chunks while it is specified ([`Context::stream_immediate`]).
 
+use super::arrays::MAX_VERTEX_ATTRIBS;
 use super::error::{GlError, GlResult};
 use super::state::{CurrentAttribs, Primitive, MAX_TEXTURE_UNITS};
 use super::Context;
@@ -38,9 +39,11 @@ pub struct Immediate {
     pub per_vertex_material: bool,
     /// With `per_vertex_material`, both faces' materials of each vertex in `verts`.
     pub materials: Vec<[super::lighting_state::Material; 2]>,
-    /// Whether glVertexAttrib set a generic attribute (index 1 and up) inside this batch.
-    /// Vertices do not record generic attributes, so a vertex shader that reads one
-    /// refuses such a batch rather than give every vertex the last value.
+    /// Whether glVertexAttrib set a generic attribute (index 1 and up) inside this batch:
+    /// from then on `verts` records each vertex's generic attributes (as Mesa's vbo
+    /// module keeps them per vertex). A batch drawn without the record (a compiled
+    /// display-list node, or memory ran out) is refused by a vertex shader that reads one
+    /// rather than give every vertex the last value.
     pub generic_inside: bool,
 }
 
@@ -148,7 +151,13 @@ struct Vert {
 pub struct ImmVerts {
     verts: Vec<Vert>,
     rest: Vec<Rest>,
+    /// Each vertex's generic attributes, once the batch sets one between glBegin and
+    /// glEnd ([`ImmVerts::track_generic`]); empty otherwise.
+    generic: Vec<Generic>,
 }
+
+/// The generic attributes' values a vertex is given with.
+type Generic = [[f32; 4]; MAX_VERTEX_ATTRIBS];
 
 impl ImmVerts {
     /// The number of vertices.
@@ -182,9 +191,42 @@ impl ImmVerts {
         Ok(())
     }
 
+    /// Starts recording each vertex's generic attributes (a glVertexAttrib between
+    /// glBegin and glEnd): the vertices so far were given with `before`. Does nothing
+    /// when recording already. GL_OUT_OF_MEMORY when memory runs out.
+    pub fn track_generic(&mut self, before: &Generic) -> GlResult<()> {
+        if self.generic.len() != self.verts.len() {
+            self.generic.clear();
+            let n = self.verts.len();
+            self.generic
+                .try_reserve(n)
+                .map_err(|_| GlError::OutOfMemory)?;
+            self.generic.resize(n, *before);
+        }
+        Ok(())
+    }
+
+    /// Records the generic attributes `g` of the vertex just appended, when recording.
+    #[inline]
+    pub fn push_generic(&mut self, g: &Generic) -> GlResult<()> {
+        if self.generic.len() + 1 == self.verts.len() {
+            self.generic
+                .try_reserve(1)
+                .map_err(|_| GlError::OutOfMemory)?;
+            self.generic.push(*g);
+        }
+        Ok(())
+    }
+
+    /// Whether every vertex carries its generic attributes.
+    pub fn has_generic(&self) -> bool {
+        !self.verts.is_empty() && self.generic.len() == self.verts.len()
+    }
+
     /// Keeps the first `n` vertices.
     pub fn truncate(&mut self, n: usize) {
         self.verts.truncate(n);
+        self.generic.truncate(n);
         let rest = self.verts.last().map_or(0, |v| v.rest as usize + 1);
         self.rest.truncate(rest);
     }
@@ -192,6 +234,7 @@ impl ImmVerts {
     /// Removes every vertex (keeping the memory for the next batch).
     pub fn clear(&mut self) {
         self.verts.clear();
+        self.generic.clear();
         self.rest.clear();
     }
 
@@ -260,6 +303,14 @@ impl VertexSource for ImmVerts {
     fn edge_flag(&self, i: usize) -> bool {
         self.rest[self.verts[i].rest as usize].edge_flag
     }
+
+    /// The recorded value (attribute 0 is the position, never recorded).
+    fn generic(&self, i: usize, loc: usize) -> Option<[f32; 4]> {
+        if loc == 0 || !self.has_generic() {
+            return None;
+        }
+        self.generic.get(i).map(|g| g[loc])
+    }
 }
 
 #[cfg(test)]
@@ -315,5 +366,33 @@ mod tests {
             let (a, b) = (slot.v, iv.vertex(i));
             assert_eq!(format!("{a:?}"), format!("{b:?}"), "vertex {i}");
         }
+    }
+
+    #[test]
+    fn generic_attributes_are_recorded_from_the_first_call_inside() {
+        let cur = CurrentAttribs::default();
+        let p = [0.0, 0.0, 0.0, 1.0];
+        let mut iv = ImmVerts::default();
+        let before = [[0.5; 4]; MAX_VERTEX_ATTRIBS];
+        iv.push_current(p, &cur).unwrap();
+        iv.push_generic(&before).unwrap();
+        iv.push_current(p, &cur).unwrap();
+        // Not recording yet: no vertex has its own values.
+        assert!(!iv.has_generic());
+        assert_eq!(iv.generic(1, 3), None);
+        iv.track_generic(&before).unwrap();
+        let mut g = before;
+        g[3] = [1.0, 2.0, 3.0, 4.0];
+        iv.push_current(p, &cur).unwrap();
+        iv.push_generic(&g).unwrap();
+        assert!(iv.has_generic());
+        assert_eq!(iv.generic(0, 3), Some([0.5; 4]));
+        assert_eq!(iv.generic(2, 3), Some([1.0, 2.0, 3.0, 4.0]));
+        // Attribute 0 is the position, never a recorded value.
+        assert_eq!(iv.generic(2, 0), None);
+        iv.truncate(2);
+        assert!(iv.has_generic());
+        iv.clear();
+        assert!(!iv.has_generic());
     }
 }

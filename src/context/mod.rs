@@ -47,6 +47,7 @@ pub mod pixel_buffer;
 pub mod pixel_ops;
 pub mod pixel_state;
 pub mod pixel_transfer;
+pub mod point_sprite;
 pub mod polygon_cmds;
 pub mod program_draw;
 pub mod program_link;
@@ -345,6 +346,10 @@ impl Context {
             }
             let mats = self.take_vertex_materials();
             let verts = std::mem::take(&mut self.immediate.verts);
+            if verts.has_generic() {
+                // Each vertex carries its generic attributes: a vertex shader reads them.
+                self.immediate.generic_inside = false;
+            }
             // A batch from a display list is drawn indexed, as Mesa draws vertex nodes.
             let idx: Option<Vec<u32>> = self
                 .immediate

@@ -2,8 +2,7 @@
 //! is none (or it has no shaders); the program's shaders on the engine when every stage
 //! it has is one the engine runs (a missing stage is fixed function); and nothing
 //! (counted in `program_draws_refused`) otherwise: a draw that ignored the program would
-//! draw something wrong without telling. A vertex shader is refused while user clip
-//! planes are enabled (`gl_ClipVertex` is not applied).
+//! draw something wrong without telling.
 
 use std::sync::Arc;
 
@@ -66,7 +65,6 @@ impl Context {
         };
         let vert = match &linked.vert {
             None => None,
-            Some(Ok(_)) if self.clip_planes.enabled != 0 => return ProgramDraw::Refused,
             Some(Ok(vs)) if self.immediate.generic_inside && vs.reads_generic() => {
                 return ProgramDraw::Refused
             }

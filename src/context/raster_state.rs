@@ -23,6 +23,8 @@ pub enum PointParam {
     FadeThreshold,
     /// GL_POINT_DISTANCE_ATTENUATION (three values).
     DistanceAttenuation,
+    /// GL_POINT_SPRITE_COORD_ORIGIN (GL 2.0): GL_LOWER_LEFT or GL_UPPER_LEFT.
+    SpriteCoordOrigin,
 }
 
 impl PointParam {
@@ -34,6 +36,7 @@ impl PointParam {
             GL_POINT_SIZE_MAX => Self::SizeMax,
             GL_POINT_FADE_THRESHOLD_SIZE => Self::FadeThreshold,
             GL_POINT_DISTANCE_ATTENUATION => Self::DistanceAttenuation,
+            super::point_sprite::GL_POINT_SPRITE_COORD_ORIGIN => Self::SpriteCoordOrigin,
             _ => return Err(GlError::InvalidEnum),
         })
     }
@@ -50,8 +53,19 @@ impl PointParam {
 
 impl PointState {
     /// glPointParameterfv: negative sizes and thresholds are GL_INVALID_VALUE (NaN passes,
-    /// as Mesa's `< 0` test lets it); the attenuation coefficients are not checked.
+    /// as Mesa's `< 0` test lets it); the attenuation coefficients are not checked; an
+    /// origin other than GL_LOWER_LEFT and GL_UPPER_LEFT is GL_INVALID_VALUE (Mesa's
+    /// `points.c` converts the float to GLenum).
     pub fn set(&mut self, p: PointParam, v: [f32; 3]) -> GlResult<()> {
+        if p == PointParam::SpriteCoordOrigin {
+            use crate::gl::glext_enums::{GL_LOWER_LEFT, GL_UPPER_LEFT};
+            self.sprite_upper_left = match v[0] as i64 as GLenum {
+                GL_UPPER_LEFT => true,
+                GL_LOWER_LEFT => false,
+                _ => return Err(GlError::InvalidValue),
+            };
+            return Ok(());
+        }
         if p != PointParam::DistanceAttenuation && v[0] < 0.0 {
             return Err(GlError::InvalidValue);
         }
@@ -60,6 +74,7 @@ impl PointState {
             PointParam::SizeMax => self.max_size = v[0],
             PointParam::FadeThreshold => self.fade_threshold = v[0],
             PointParam::DistanceAttenuation => self.attenuation = v,
+            PointParam::SpriteCoordOrigin => {}
         }
         Ok(())
     }

@@ -113,6 +113,15 @@ pub const CAPS: &[(Cap, GLenum)] = &[
     (Cap::Multisample, GL_MULTISAMPLE),
     (Cap::Normalize, GL_NORMALIZE),
     (Cap::PointSmooth, GL_POINT_SMOOTH),
+    (Cap::PointSprite, super::point_sprite::GL_POINT_SPRITE),
+    (
+        Cap::VertexProgramPointSize,
+        super::point_sprite::GL_VERTEX_PROGRAM_POINT_SIZE,
+    ),
+    (
+        Cap::VertexProgramTwoSide,
+        super::point_sprite::GL_VERTEX_PROGRAM_TWO_SIDE,
+    ),
     (Cap::PolygonOffsetFill, GL_POLYGON_OFFSET_FILL),
     (Cap::PolygonOffsetLine, GL_POLYGON_OFFSET_LINE),
     (Cap::PolygonOffsetPoint, GL_POLYGON_OFFSET_POINT),

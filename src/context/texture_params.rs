@@ -313,6 +313,7 @@ impl Context {
                 self.textures.units[unit].lod_bias = v[0] as f32;
                 return Ok(());
             }
+            super::point_sprite::GL_POINT_SPRITE => return self.tex_env_point_sprite(pname, v[0]),
             GL_TEXTURE_ENV => {}
             _ => return Err(GlError::InvalidEnum),
         }
@@ -353,6 +354,9 @@ impl Context {
         match target {
             GL_TEXTURE_FILTER_CONTROL if pname == GL_TEXTURE_LOD_BIAS => {
                 return Ok((vec![u.lod_bias as f64], false))
+            }
+            super::point_sprite::GL_POINT_SPRITE => {
+                return Ok((vec![self.get_tex_env_point_sprite(pname)?], false))
             }
             GL_TEXTURE_ENV => {}
             _ => return Err(GlError::InvalidEnum),

@@ -10,11 +10,14 @@ use super::Context;
 
 impl Context {
     /// Appends an immediate-mode vertex (inside glBegin/glEnd) and, when the batch has
-    /// per-vertex materials, the material it is given with.
+    /// per-vertex materials or generic attributes, those it is given with.
     #[inline]
     pub fn push_immediate_vertex(&mut self, pos: [f32; 4]) -> GlResult<()> {
         let im = &mut self.immediate;
         im.verts.push_current(pos, &self.state.current)?;
+        if im.generic_inside {
+            im.verts.push_generic(&self.generic_current)?;
+        }
         if im.per_vertex_material {
             im.materials.push(self.light.material);
         }

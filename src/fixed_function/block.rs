@@ -232,7 +232,7 @@ impl VertexStage {
                 // The user planes as `clip_position` tests them, on the same position.
                 let mut c = [0f32; 4];
                 clip.store(c.as_mut_ptr());
-                mask |= user_clip_mask(c, &self.ucp, self.ucp_enabled, self.fma);
+                mask |= user_clip_mask(c, &self.ucp.planes, self.ucp_enabled, self.fma);
             }
             (clip, mask)
         }
@@ -592,7 +592,7 @@ mod tests {
             if case & 16 == 16 {
                 // Three user clip planes (of eight), in clip space.
                 stage.ucp_enabled = 0b1010_0100;
-                for p in stage.ucp.iter_mut() {
+                for p in stage.ucp.planes.iter_mut() {
                     *p = std::array::from_fn(|i| mat().0[i] * 2.0);
                 }
             }

@@ -54,6 +54,9 @@ pub struct VertexStage {
     pub texgen_eye: bool,
     /// The least varying count [`Self::nvary`] gives (a fragment shader's varyings).
     pub min_vary: usize,
+    /// With a vertex shader under GL_VERTEX_PROGRAM_TWO_SIDE, where its back colours
+    /// start (after every other varying); the lighting's back colours otherwise.
+    pub vs_back: Option<usize>,
 }
 
 /// llvmpipe's vertex colour clamp: `max(min(x, 1), 0)`, so NaN becomes 1, written as the
@@ -85,12 +88,13 @@ impl VertexStage {
             normal_xform: None,
             light: None,
             fog: None,
-            ucp: [[0.0; 4]; 8],
+            ucp: UserPlanes::default(),
             ucp_enabled: 0,
             color_sum: false,
             point_atten: None,
             texgen_eye: false,
             min_vary: 0,
+            vs_back: None,
         }
     }
 
@@ -132,26 +136,27 @@ impl VertexStage {
     /// clip space with the inverse projection as Mesa's `_mesa_update_clip_plane` does.
     pub fn set_user_planes(
         &mut self,
-        eye_planes: &UserPlanes,
+        eye_planes: &[[f32; 4]; 8],
         enabled: u8,
         projection: &crate::fixed_function::matrix::MatrixStack,
     ) {
         self.ucp_enabled = enabled;
-        for (i, (dst, p)) in self.ucp.iter_mut().zip(eye_planes).enumerate() {
+        for (i, (dst, p)) in self.ucp.planes.iter_mut().zip(eye_planes).enumerate() {
             if enabled & (1 << i) != 0 {
                 *dst = crate::fixed_function::matrix::plane_times_inverse(projection, *p);
             }
         }
     }
 
-    /// Whether back-face colours are computed (two-sided lighting).
+    /// Whether back-face colours are computed (two-sided lighting, or a vertex shader's
+    /// back colours).
     pub fn two_side(&self) -> bool {
-        self.light.as_ref().is_some_and(|l| l.two_side())
+        self.vs_back.is_some() || self.light.as_ref().is_some_and(|l| l.two_side())
     }
 
-    /// Where the back colours start among the varyings (with two-sided lighting).
+    /// Where the back colours start among the varyings (with [`Self::two_side`]).
     pub fn back_offset(&self) -> usize {
-        VARY_TEX + 4 * self.n_tex
+        self.vs_back.unwrap_or(VARY_TEX + 4 * self.n_tex)
     }
 
     /// The number of varying floats this stage writes.
@@ -182,7 +187,7 @@ impl VertexStage {
         let clip = self.mvp.transform(pos);
         let mut mask = clip_mask(clip, self.viewport.halfz);
         if self.ucp_enabled != 0 {
-            mask |= user_clip_mask(clip, &self.ucp, self.ucp_enabled, self.fma);
+            mask |= user_clip_mask(clip, &self.ucp.planes, self.ucp_enabled, self.fma);
         }
         (clip, mask)
     }

@@ -27,8 +27,19 @@ const PLANES: [[f32; 4]; 6] = [
 /// room for scratch (Mesa's `MAX_CLIPPED_VERTICES` is 29).
 const MAX_POLY: usize = 20;
 
-/// User clip planes in clip space, indexed by plane (bit `6 + i` of a clip mask).
-pub type UserPlanes = [[f32; 4]; 8];
+/// The user clip planes of a draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct UserPlanes {
+    /// The planes, indexed by plane (bit `6 + i` of a clip mask): in clip space, measured
+    /// against the clip position; or, with `clip_vertex`, in eye space.
+    pub planes: [[f32; 4]; 8],
+    /// With a vertex shader: the first of the four varyings holding each vertex's clip
+    /// vertex (`gl_ClipVertex`, or the clip position when the shader does not write it),
+    /// which the user planes measure, as the draw module's `getclipdist` does with
+    /// Mesa's eye-space planes. It is interpolated with the other varyings, so a vertex
+    /// the clipper makes has it too.
+    pub clip_vertex: Option<usize>,
+}
 
 /// The near plane under GL_ZERO_TO_ONE (the draw module's `clip_halfz` plane 4).
 const NEAR_HALFZ: [f32; 4] = [0.0, 0.0, 1.0, 0.0];
@@ -42,7 +53,20 @@ fn plane(p: usize, ucp: &UserPlanes, halfz: bool) -> [f32; 4] {
     } else if p < 6 {
         PLANES[p]
     } else {
-        ucp[p - 6]
+        ucp.planes[p - 6]
+    }
+}
+
+/// Vertex `v`'s distance to plane `p` (`plane`, from [`plane`]): the clip position's, or
+/// for a user plane the clip vertex's when there is one.
+#[inline]
+fn dist(v: &ClipVertex, p: usize, plane: [f32; 4], ucp: &UserPlanes) -> f32 {
+    match ucp.clip_vertex {
+        Some(b) if p >= 6 => dot4(
+            [v.vary[b], v.vary[b + 1], v.vary[b + 2], v.vary[b + 3]],
+            plane,
+        ),
+        _ => dot4(v.clip, plane),
     }
 }
 
@@ -155,7 +179,7 @@ pub fn clip_triangle_edges(
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
         let plane = plane(p, ucp, vp.halfz);
-        let mut dp_prev = dot4(inl[0].clip, plane);
+        let mut dp_prev = dist(&inl[0], p, plane, ucp);
         if !dp_prev.is_finite() {
             return 0;
         }
@@ -167,7 +191,7 @@ pub fn clip_triangle_edges(
         in_e[n] = in_e[0];
         let mut cnt = 0usize;
         for i in 1..=n {
-            let dp = dot4(inl[i].clip, plane);
+            let dp = dist(&inl[i], p, plane, ucp);
             if !dp.is_finite() {
                 return 0;
             }
@@ -255,8 +279,8 @@ pub fn clip_line(
         let p = planes.trailing_zeros() as usize;
         planes &= planes - 1;
         let pl = plane(p, ucp, vp.halfz);
-        let dp0 = dot4(v0.clip, pl);
-        let dp1 = dot4(v1.clip, pl);
+        let dp0 = dist(v0, p, pl, ucp);
+        let dp1 = dist(v1, p, pl, ucp);
         if !dp0.is_finite() || !dp1.is_finite() {
             return None;
         }
@@ -313,7 +337,7 @@ mod tests {
         let n = clip_triangle(
             [&v[0], &v[1], &v[2]],
             mask,
-            &[[0.0; 4]; 8],
+            &UserPlanes::default(),
             &vp,
             0,
             0,
@@ -340,7 +364,7 @@ mod tests {
             clip_triangle(
                 [&v[0], &v[1], &v[2]],
                 1,
-                &[[0.0; 4]; 8],
+                &UserPlanes::default(),
                 &vp,
                 0,
                 0,

@@ -1,7 +1,8 @@
 //! The enable bits of glEnable/glDisable as plain data: which capability, and the set.
 //! Their GL tokens (`CAPS`, `Cap::from_gl`) stay with the state.
 
-/// The capabilities of glEnable/glDisable/glIsEnabled that GL 1.5 defines.
+/// The capabilities of glEnable/glDisable/glIsEnabled that GL 1.5 defines, and GL 2.0's
+/// point sprite and vertex program enables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 #[allow(missing_docs)]
@@ -25,6 +26,14 @@ pub enum Cap {
     Multisample,
     Normalize,
     PointSmooth,
+    /// GL_POINT_SPRITE (GL 2.0, ARB_point_sprite): points are squares with the
+    /// fill rule, and units with GL_COORD_REPLACE get coordinates across them.
+    PointSprite,
+    /// GL_VERTEX_PROGRAM_POINT_SIZE (GL 2.0): a vertex shader's `gl_PointSize` sizes points.
+    VertexProgramPointSize,
+    /// GL_VERTEX_PROGRAM_TWO_SIDE (GL 2.0): back-facing triangles take a vertex shader's
+    /// `gl_BackColor` and `gl_BackSecondaryColor`.
+    VertexProgramTwoSide,
     PolygonOffsetFill,
     PolygonOffsetLine,
     PolygonOffsetPoint,

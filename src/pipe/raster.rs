@@ -47,6 +47,12 @@ pub struct PointState {
     pub fade_threshold: f32,
     /// GL_POINT_DISTANCE_ATTENUATION: constant, linear and quadratic coefficients.
     pub attenuation: [f32; 3],
+    /// GL_POINT_SPRITE_COORD_ORIGIN is GL_UPPER_LEFT (the default): a sprite's `t` is 0
+    /// at its top.
+    pub sprite_upper_left: bool,
+    /// GL_COORD_REPLACE of each texture unit (bit `u` for unit `u`), set with
+    /// glTexEnv(GL_POINT_SPRITE, …) and kept with the point state, as Mesa does.
+    pub coord_replace: u8,
 }
 
 impl Default for PointState {
@@ -57,6 +63,8 @@ impl Default for PointState {
             max_size: MAX_POINT_SIZE,
             fade_threshold: 1.0,
             attenuation: [1.0, 0.0, 0.0],
+            sprite_upper_left: true,
+            coord_replace: 0,
         }
     }
 }

@@ -276,7 +276,7 @@ fn quad_spans_clipped(
         mask: clip_mask(v[i].clip, false),
         ..v[i]
     });
-    let ucp = [[0.0; 4]; 8];
+    let ucp = crate::geometry::clip::UserPlanes::default();
     let mut tri = SetupTriangle::default();
     for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
         let (ma, mb, mc) = (v[a].mask, v[b].mask, v[c].mask);

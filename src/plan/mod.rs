@@ -20,13 +20,14 @@ use crate::fixed_function::transform::VertexStage;
 use crate::fragment::MsPass;
 use crate::framebuffer::DepthFormat;
 use crate::geometry::setup::CullMode;
-use crate::geometry::{cpu_has_fma, ClipConvention, Viewport};
+use crate::geometry::{cpu_has_fma, ClipConvention, Viewport, MAX_VARY};
 use crate::pipe::{Cap, Caps, ClipPlanes, Face, FillMode, LightingState, RasterState, TexGenState};
 use crate::pipe::{MAX_LIGHTS, MAX_TEXTURE_UNITS};
 use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
+use crate::raster::sprite::Sprite;
 use crate::render::DrawPlan;
 use crate::shader::draw::FragShader;
-use crate::shader::vertex_draw::{tex_vary, Matrices, VertShader, VertexRun};
+use crate::shader::vertex_draw::{tex_vary, Matrices, OutputUse, VertShader, VertexRun};
 use crate::texture::{TextureState, UnitPlan};
 
 /// The buffers a draw goes into, as far as the plan depends on them.
@@ -219,10 +220,41 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         r.tex_units = tex_units;
         frag.shader = Some(r);
     }
+    // GL_VERTEX_PROGRAM_TWO_SIDE: back faces take the colours the shader writes for
+    // them (Mesa's `_TwoSideEnabled` with a vertex program), after every other varying.
+    let back = |v: &VertInput<'_>| {
+        v.shader.writes("gl_BackColor") || v.shader.writes("gl_BackSecondaryColor")
+    };
+    // Varyings that do not fit leave the draw unfit: nothing is drawn.
+    let mut unfit = false;
+    if caps.get(Cap::VertexProgramTwoSide) && vert.as_ref().is_some_and(back) {
+        let b = stage.nvary();
+        unfit |= b + 8 > MAX_VARY;
+        stage.vs_back = (b + 8 <= MAX_VARY).then_some(b);
+    }
+    // A vertex shader's user clip planes: Mesa passes the eye-space planes
+    // (`st_update_clip`), and the draw module measures each vertex's clip vertex with
+    // them (`getclipdist`), kept in four varyings after the others.
+    if vert.is_some() && ucp.enabled != 0 {
+        let b = stage.nvary();
+        unfit |= b + 4 > MAX_VARY;
+        if b + 4 <= MAX_VARY {
+            stage.ucp.planes = ucp.eye;
+            stage.ucp.clip_vertex = Some(b);
+            stage.min_vary = b + 4;
+        }
+    }
     let vertex = vert.map(|v| vertex_run(v, s, &stage, shader.map(|(f, _)| f)));
     // Filled triangles that take the polygon pipeline (stippled, offset with two-sided
     // lighting …) are drawn with the single-sample rules in every plane.
     let mut prims = prim_enables(caps);
+    prims.coords = point_coords(
+        &s.raster.point,
+        prims.sprite,
+        &stage,
+        shader.and_then(|(f, _)| f.point_coord),
+        t.y_flip,
+    );
     if frag.ms.is_some() {
         // Multisampling turns point and line smoothing off (st_atom_rasterizer.c).
         prims.point_smooth = false;
@@ -255,6 +287,10 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
             let float = depth_bits == crate::texture::shadow::FLOAT_BITS as i32;
             (polygon.offset_factor, (units, float))
         });
+    // llvmpipe takes a vertex's size unclamped (`point_size_per_vertex`).
+    let per_vertex =
+        stage.point_atten.is_some() || vertex.as_ref().is_some_and(|v| v.sizes_points());
+    let point_size = (!per_vertex).then(|| point_size(s.raster));
     let nvary = stage.nvary();
     let mut lines = LinePlan {
         ucp: stage.ucp,
@@ -278,7 +314,8 @@ pub fn build<'a>(s: &DrawState<'a>) -> DrawPlan<'a> {
         poly,
         lp_offset,
         lines,
-        point_size: point_size(s.raster),
+        point_size,
+        unfit,
         depth_bits: depth_bits.max(0) as u32,
         raster: s.raster,
         prims,
@@ -318,8 +355,15 @@ fn vertex_run<'a>(
         &m,
         v.generic,
         vary_of,
-        stage.viewport,
-        stage.fma,
+        OutputUse {
+            point_size: s.caps.get(Cap::VertexProgramPointSize),
+            back: stage.vs_back,
+            clip: stage
+                .ucp
+                .clip_vertex
+                .map(|b| (b, stage.ucp.planes, stage.ucp_enabled)),
+        },
+        (stage.viewport, stage.fma),
     )
 }
 
@@ -347,7 +391,8 @@ pub fn light_enables(caps: &Caps) -> LightEnables {
 /// The enables the primitive stages read.
 fn prim_enables(caps: &Caps) -> PrimEnables {
     PrimEnables {
-        point_smooth: caps.get(Cap::PointSmooth),
+        // Sprites are never smoothed (st_atom_rasterizer.c).
+        point_smooth: caps.get(Cap::PointSmooth) && !caps.get(Cap::PointSprite),
         line_smooth: caps.get(Cap::LineSmooth),
         line_stipple: caps.get(Cap::LineStipple),
         polygon_stipple: caps.get(Cap::PolygonStipple),
@@ -356,5 +401,38 @@ fn prim_enables(caps: &Caps) -> PrimEnables {
             caps.get(Cap::PolygonOffsetLine),
             caps.get(Cap::PolygonOffsetPoint),
         ],
+        sprite: caps.get(Cap::PointSprite),
+        coords: Sprite::default(),
+    }
+}
+
+/// The coordinates points replace (st_atom_rasterizer.c and llvmpipe's point setup).
+/// Under GL_POINT_SPRITE, Mesa's `sprite_coord_mode` is upper-left when the origin is
+/// GL_UPPER_LEFT on flipped (window) rows or GL_LOWER_LEFT on unflipped (object) rows,
+/// and each unit with GL_COORD_REPLACE replaces the varyings its coordinates occupy
+/// (fixed-function units compacted in the stage's order). Without sprites the mode stays
+/// zero (upper-left). A shader's `gl_PointCoord` (varying `point_coord`) is replaced on
+/// every point, sprite or not.
+fn point_coords(
+    point: &crate::pipe::PointState,
+    sprite: bool,
+    stage: &VertexStage,
+    point_coord: Option<usize>,
+    y_flip: bool,
+) -> Sprite {
+    let mut replace = 0u64;
+    if sprite {
+        for (k, &(unit, _)) in stage.tex_units[..stage.n_tex].iter().enumerate() {
+            if point.coord_replace >> unit & 1 == 1 {
+                replace |= 1 << (crate::geometry::VARY_TEX + 4 * k);
+            }
+        }
+    }
+    if let Some(v) = point_coord {
+        replace |= 1u64.checked_shl(v as u32).unwrap_or(0);
+    }
+    Sprite {
+        lower_left: sprite && point.sprite_upper_left != y_flip,
+        replace,
     }
 }

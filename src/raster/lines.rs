@@ -329,8 +329,16 @@ pub fn raster_line(
 }
 
 /// Draws a point of `size` (glPointSize, already clamped) at `v`; `top_left` as
-/// [`raster_line`]'s (`y0 = snap(y) − adj`, adj = `bottom_edge_rule`).
-pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: &mut Draw<'_, '_>) {
+/// [`raster_line`]'s (`y0 = snap(y) − adj`, adj = `bottom_edge_rule`); `coords` are
+/// replaced across the square as a sprite's (a shader's `gl_PointCoord`).
+pub fn raster_point(
+    v: &ClipVertex,
+    size: f32,
+    coords: &super::sprite::Sprite,
+    top_left: bool,
+    nvary: usize,
+    d: &mut Draw<'_, '_>,
+) {
     let (x, y) = (v.win[0], v.win[1]);
     if !(x.is_finite() && y.is_finite() && x.abs() < MAX_COORD && y.abs() < MAX_COORD) {
         return;
@@ -354,6 +362,7 @@ pub fn raster_point(v: &ClipVertex, size: f32, top_left: bool, nvary: usize, d: 
         return;
     }
     let mut t = point_planes(v, nvary);
+    super::sprite::replace_coords(&mut t, v, width << 8, coords);
     let plan = d.plan;
     if let Some(sh) = &plan.shader {
         t.front = d.prim_front;

@@ -35,6 +35,7 @@ mod row_pairs;
 mod sample8;
 mod shaded;
 pub mod smooth;
+pub mod sprite;
 pub mod stipple;
 mod textured;
 mod untextured;

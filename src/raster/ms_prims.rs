@@ -141,7 +141,13 @@ fn line_tiles(xs: &[i64; 4], ys: &[i64; 4], region: [i64; 4]) -> Option<[i64; 4]
 }
 
 /// Draws point `v` of `size` (clamped, or the vertex's own under attenuation).
-pub fn point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
+pub fn point(
+    v: &ClipVertex,
+    size: f32,
+    coords: &super::sprite::Sprite,
+    nvary: usize,
+    d: &mut Draw<'_, '_>,
+) {
     let (x, y) = (v.win[0], v.win[1]);
     if !(x.abs() < MAX_COORD && y.abs() < MAX_COORD) {
         return;
@@ -170,6 +176,7 @@ pub fn point(v: &ClipVertex, size: f32, nvary: usize, d: &mut Draw<'_, '_>) {
     let (l, rt) = (x0.max(b[0] << 8), x1.min((b[2] + 1) << 8));
     let (bt, tp) = (y0.max(b[1] << 8), y1.min((b[3] + 1) << 8));
     let mut t = super::lines::point_planes(v, nvary);
+    super::sprite::replace_coords(&mut t, v, fw, coords);
     // Clockwise in y-up terms, as a line's rectangle: left and bottom edges inclusive.
     quad(&mut t, [l, rt, rt, l], [tp, tp, bt, bt], b, d);
 }

@@ -304,7 +304,8 @@ mod tests {
                 super::super::lines::raster_line(a, b, &b.vary, (*width, false), 4, &mut d);
             }
             for (size, v) in points {
-                super::super::lines::raster_point(v, *size, false, 4, &mut d);
+                let coords = Default::default();
+                super::super::lines::raster_point(v, *size, &coords, false, 4, &mut d);
             }
         }
         GENERAL_ONLY.with(|g| g.set(false));

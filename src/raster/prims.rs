@@ -49,6 +49,12 @@ pub struct PrimEnables {
     pub polygon_stipple: bool,
     /// GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE and GL_POLYGON_OFFSET_POINT.
     pub offset: [bool; 3],
+    /// GL_POINT_SPRITE: points are squares with llvmpipe's fill rule
+    /// ([`super::sprite`]).
+    pub sprite: bool,
+    /// The varyings every kind of point replaces with coordinates across its square
+    /// (GL_COORD_REPLACE units under GL_POINT_SPRITE, a shader's `gl_PointCoord`).
+    pub coords: super::sprite::Sprite,
 }
 
 impl PrimEnables {
@@ -63,25 +69,31 @@ impl PrimEnables {
 }
 
 /// Draws point `v` (inside the clip volume) of `size`: into a multisample object as the
-/// square sampled at the sample points ([`super::ms_prims`]), else through the aapoint
-/// stage when `smooth` (GL_POINT_SMOOTH), else as llvmpipe's legacy square.
+/// square sampled at the sample points ([`super::ms_prims`]), else as a sprite
+/// ([`super::sprite`]) under GL_POINT_SPRITE, else through the aapoint stage when
+/// GL_POINT_SMOOTH is on, else as llvmpipe's legacy square.
 /// `top_left` is llvmpipe's `bottom_edge_rule = 0` (objects; GL_UPPER_LEFT toggles it),
 /// which moves legacy points lying exactly on a pixel row.
 pub fn draw_point(
     v: &ClipVertex,
     size: f32,
-    smooth: bool,
+    enables: &PrimEnables,
     top_left: bool,
     nvary: usize,
     d: &mut Draw<'_, '_>,
 ) {
+    // A NaN size (a vertex shader's or an attenuated one) draws the smallest point:
+    // llvmpipe converts it to INT_MIN, then takes its one-pixel minimum.
+    let size = if size.is_nan() { 0.0 } else { size };
     if d.plan.ms.is_some() {
         // Multisampling ignores GL_POINT_SMOOTH.
-        super::ms_prims::point(v, size, nvary, d);
-    } else if smooth {
+        super::ms_prims::point(v, size, &enables.coords, nvary, d);
+    } else if enables.sprite {
+        super::sprite::point(v, size, &enables.coords, top_left, nvary, d);
+    } else if enables.point_smooth {
         super::smooth::point(v, size, nvary, d);
     } else {
-        raster_point(v, size, top_left, nvary, d);
+        raster_point(v, size, &enables.coords, top_left, nvary, d);
     }
 }
 
@@ -150,7 +162,7 @@ impl LinePlan {
                 rectangular: e.line_smooth,
             }),
             nvary,
-            ucp: [[0.0; 4]; 8],
+            ucp: UserPlanes::default(),
             smooth: e.line_smooth,
             top_left: false,
         }
@@ -365,11 +377,11 @@ impl PolyPipeline<'_> {
                 }
             }
             FillMode::Point => {
-                let smooth = self.enables.point_smooth;
+                let enables = self.enables;
                 for (bit, k) in [(EDGE_0, 0), (EDGE_1, 1), (EDGE_2, 2)] {
                     if edges & bit != 0 {
                         let size = self.point_size.unwrap_or(p[k].psize);
-                        draw_point(&p[k], size, smooth, self.lines.top_left, nvary, d);
+                        draw_point(&p[k], size, &enables, self.lines.top_left, nvary, d);
                     }
                 }
             }

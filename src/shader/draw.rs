@@ -47,6 +47,10 @@ pub struct FragShader {
     facing: Option<u16>,
     /// The triangle varyings the shader reads `flat` (bit v: varying v).
     flat: u64,
+    /// The first of the four varyings `gl_PointCoord` occupies (s, t, then the 0 and 1
+    /// the point setup writes), when the shader reads it: points replace them
+    /// ([`crate::raster::sprite`]), other primitives leave them zero.
+    pub point_coord: Option<usize>,
 }
 
 /// A texture lookup of a [`FragShader`] in the triangle's terms.
@@ -95,6 +99,7 @@ impl FragShader {
         let mut vary = Vec::new();
         let mut user = Vec::new();
         let mut flat = 0u64;
+        let mut point_coord = None;
         let mut next = VARY_TEX + 4 * tex_coords;
         for s in &l.varyings {
             let base = match s.name.as_str() {
@@ -102,6 +107,11 @@ impl FragShader {
                 "gl_TexCoord" => VARY_TEX,
                 "gl_SecondaryColor" if vertex => VARY_SPEC,
                 "gl_FogFragCoord" if vertex => VARY_FOG,
+                "gl_PointCoord" => {
+                    point_coord = Some(next);
+                    next += 4;
+                    next - 4
+                }
                 n if vertex && !n.starts_with("gl_") => {
                     user.push((n.to_string(), next));
                     next += s.count as usize;
@@ -186,6 +196,7 @@ impl FragShader {
             textures,
             facing,
             flat,
+            point_coord,
         });
         let mut r = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
         let map = r.get_or_insert_with(HashMap::new);

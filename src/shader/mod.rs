@@ -59,14 +59,17 @@
 //! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
 //! shader that reads a built-in uniform other than the modelview, projection,
 //! modelview-projection, texture and normal matrices (and their transposes, the
-//! modelview's inverse), a non-float or matrix attribute, draws while user clip
-//! planes are enabled (`gl_ClipVertex` is not applied), or reads a generic attribute
-//! that glVertexAttrib set between glBegin and glEnd (not recorded per vertex); with a
+//! modelview's inverse), a non-float or matrix attribute, or reads a generic attribute
+//! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
+//! per vertex (memory ran out); with a
 //! fragment shader, smooth lines and points, stippled polygons and multisampling;
 //! primitives whose fragment state the engine does not draw (logic ops, wide, sRGB or
 //! non-RGBA8 targets, Z32 unorm depth), and `texelFetch` of a depth texture.
-//! Not applied: `gl_BackColor` (GL_VERTEX_PROGRAM_TWO_SIDE), `gl_PointSize`
-//! (GL_VERTEX_PROGRAM_POINT_SIZE; points take the fixed size). `GL_VERSION` stays 1.5.
+//! Under GL_VERTEX_PROGRAM_TWO_SIDE back faces take `gl_BackColor` and
+//! `gl_BackSecondaryColor` (each only when the shader writes it). `gl_PointSize` sizes points
+//! under GL_VERTEX_PROGRAM_POINT_SIZE (unclamped, as llvmpipe takes a vertex's size), and
+//! `gl_PointCoord` is replaced across every point, sprite or not (`raster::sprite`).
+//! `GL_VERSION` stays 1.5.
 
 mod builtins;
 mod control;

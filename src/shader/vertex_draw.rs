@@ -15,10 +15,15 @@
 //! `gl_FogFragCoord` the fog coordinate; `gl_TexCoord[u]` unit `u`'s coordinates (the
 //! fragment shader's `gl_TexCoord[u]`, or under fixed-function fragments the slot of
 //! the enabled unit `u`); a user varying the slot its fragment shader reads it from
-//! ([`super::draw::FragShader`]'s layout). `gl_BackColor`, `gl_BackSecondaryColor`,
-//! `gl_ClipVertex` and `gl_PointSize` are computed and dropped (two-sided vertex
-//! programs, user clip planes and program point sizes are refused or not applied, see
-//! [`super`]'s doc).
+//! ([`super::draw::FragShader`]'s layout); `gl_PointSize` the vertex's point size when
+//! GL_VERTEX_PROGRAM_POINT_SIZE is on (dropped when it is off: points take
+//! glPointSize); `gl_BackColor` and `gl_BackSecondaryColor` the back colours after every
+//! other varying when GL_VERTEX_PROGRAM_TWO_SIDE is on (setup swaps them in on back
+//! faces, as for two-sided lighting; one the shader does not write copies the front
+//! one). With user clip planes enabled, `gl_ClipVertex` (or, when the shader does not
+//! write it, the clip position) goes to four varyings after the others, which the
+//! clipper measures with the eye-space planes, as Mesa's draw module does
+//! ([`crate::geometry::clip::UserPlanes`]).
 
 use super::lower::Slot;
 use super::vertex::lower_vertex;
@@ -26,7 +31,8 @@ use crate::engine::exec::{compile, Program, Scratch, MAX_BATCH};
 use crate::fixed_function::matrix::Mat4;
 use crate::fixed_function::transform::clamp_color;
 use crate::geometry::source::VertexSource;
-use crate::geometry::{clip_mask, ClipVertex, Viewport, VARY_FOG, VARY_SPEC, VARY_TEX};
+use crate::geometry::{clip_mask, user_clip_mask, ClipVertex, Viewport};
+use crate::geometry::{VARY_FOG, VARY_SPEC, VARY_TEX};
 use crate::pipe::MAX_TEXTURE_UNITS;
 use softgl_glsl::hir;
 use std::sync::Arc;
@@ -174,6 +180,8 @@ enum Dest {
     Vary(usize),
     /// A colour varying, clamped to [0, 1].
     Color(usize),
+    /// The point size (`gl_PointSize` under GL_VERTEX_PROGRAM_POINT_SIZE).
+    PointSize,
 }
 
 /// A draw's run of a vertex shader.
@@ -186,7 +194,32 @@ pub struct VertexRun<'a> {
     generic: [[f32; 4]; 16],
     viewport: Viewport,
     fma: bool,
+    /// Where the back colours go, and whether the shader writes the back primary and
+    /// the back secondary colour (one it does not write is a copy of the front one, so
+    /// that a back face keeps it, as the draw module's two-sided stage copies only the
+    /// colours the shader writes).
+    back: Option<(usize, bool, bool)>,
+    /// [`OutputUse::clip`], and whether the shader writes `gl_ClipVertex` (else the clip
+    /// vertex is the clip position).
+    clip: Option<(ClipUse, bool)>,
 }
+
+/// What a draw does with a vertex shader's outputs beyond the position and varyings.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct OutputUse {
+    /// GL_VERTEX_PROGRAM_POINT_SIZE: vertices carry `gl_PointSize`.
+    pub point_size: bool,
+    /// GL_VERTEX_PROGRAM_TWO_SIDE with a shader that writes a back colour: the varying
+    /// where the back colours start (the primary, then the secondary at +4).
+    pub back: Option<usize>,
+    /// Enabled user clip planes: the varying where the clip vertex goes, the eye-space
+    /// planes and their enable bits (the vertex's clip mask gets their bits).
+    pub clip: Option<ClipUse>,
+}
+
+/// [`OutputUse::clip`]: the first of the clip vertex's four varyings, the eye-space
+/// planes and their enable bits.
+pub type ClipUse = (usize, [[f32; 4]; 8], u8);
 
 /// The words of `m` transposed (`t`) or not.
 fn words(m: &[f32; 16], t: bool) -> Vec<f32> {
@@ -199,15 +232,17 @@ impl<'a> VertexRun<'a> {
     /// The run of `shader` with user uniform words `user` (in its slot order, built-ins
     /// skipped), the matrices `m`, the generic attributes' current values, and the
     /// varying layout: `vary_of(name, component)` is the varying a user or texture
-    /// output component feeds (`None`: nothing reads it).
+    /// output component feeds (`None`: nothing reads it); what else the draw takes
+    /// (`uses`: the point size, the back colours); the viewport, and whether it
+    /// transforms with fused multiply-adds.
     pub fn new(
         shader: &'a VertShader,
         user: &[u32],
         m: &Matrices<'_>,
         generic: [[f32; 4]; 16],
         vary_of: impl Fn(&str, usize) -> Option<usize>,
-        viewport: Viewport,
-        fma: bool,
+        uses: OutputUse,
+        (viewport, fma): (Viewport, bool),
     ) -> Self {
         let mut uniforms = Vec::new();
         let mut user = user.iter();
@@ -247,6 +282,10 @@ impl<'a> VertexRun<'a> {
                     "gl_FrontColor" => Some(Dest::Color(c)),
                     "gl_FrontSecondaryColor" => Some(Dest::Color(VARY_SPEC + c)),
                     "gl_FogFragCoord" => Some(Dest::Vary(VARY_FOG)),
+                    "gl_PointSize" if uses.point_size => Some(Dest::PointSize),
+                    "gl_BackColor" => uses.back.map(|b| Dest::Color(b + c)),
+                    "gl_BackSecondaryColor" => uses.back.map(|b| Dest::Color(b + 4 + c)),
+                    "gl_ClipVertex" => uses.clip.map(|(b, ..)| Dest::Vary(b + c)),
                     n if n.starts_with("gl_") && n != "gl_TexCoord" => None,
                     n => vary_of(n, c).map(Dest::Vary),
                 };
@@ -255,6 +294,13 @@ impl<'a> VertexRun<'a> {
                 }
             }
         }
+        let back = uses.back.map(|b| {
+            let (front, spec) = (
+                shader.writes("gl_BackColor"),
+                shader.writes("gl_BackSecondaryColor"),
+            );
+            (b, front, spec)
+        });
         VertexRun {
             shader,
             uniforms,
@@ -262,7 +308,15 @@ impl<'a> VertexRun<'a> {
             generic,
             viewport,
             fma,
+            back,
+            clip: uses.clip.map(|c| (c, shader.writes("gl_ClipVertex"))),
         }
+    }
+
+    /// Whether the vertices carry their point size (the shader writes `gl_PointSize`
+    /// and GL_VERTEX_PROGRAM_POINT_SIZE is on).
+    pub fn sizes_points(&self) -> bool {
+        self.dest.iter().any(|(_, d)| matches!(d, Dest::PointSize))
     }
 
     /// Runs the shader over every vertex of `verts`.
@@ -310,10 +364,27 @@ impl<'a> VertexRun<'a> {
                         Dest::Clip(c) => cv.clip[c] = x,
                         Dest::Vary(i) => cv.vary[i] = x,
                         Dest::Color(i) => cv.vary[i] = clamp_color(x),
+                        Dest::PointSize => cv.psize = x,
+                    }
+                }
+                if let Some((b, primary, secondary)) = self.back {
+                    if !primary {
+                        cv.vary.copy_within(0..4, b);
+                    }
+                    if !secondary {
+                        cv.vary.copy_within(VARY_SPEC..VARY_SPEC + 4, b + 4);
                     }
                 }
                 cv.win = self.viewport.apply_shader(cv.clip, self.fma);
                 cv.mask = clip_mask(cv.clip, self.viewport.halfz);
+                if let Some(((b, planes, enabled), written)) = &self.clip {
+                    if !written {
+                        cv.vary[*b..*b + 4].copy_from_slice(&cv.clip);
+                    }
+                    let mut c = [0.0; 4];
+                    c.copy_from_slice(&cv.vary[*b..*b + 4]);
+                    cv.mask |= user_clip_mask(c, planes, *enabled, self.fma);
+                }
             }
         }
         out
