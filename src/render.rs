@@ -126,24 +126,15 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         *raster,
         *prims,
     );
-    if *unfit || plan.shader.is_some() {
-        // A fragment shader runs on triangles, lines and points (see `shader::draw`),
-        // also through the polygon pipeline (unfilled modes, offsets); stippled polygons,
-        // smooth lines and points and multisampling draw nothing.
-        let smooth = plan.shader.is_some()
-            && match mode {
-                Primitive::Points => prims.point_smooth,
-                Primitive::Lines | Primitive::LineLoop | Primitive::LineStrip => prims.line_smooth,
-                _ if poly => prims.polygon_stipple || prims.line_smooth || prims.point_smooth,
-                _ => false,
-            };
-        if *unfit || smooth || (plan.shader.is_some() && plan.ms.is_some()) {
-            stats.program_draws_refused += 1;
-            if let Some(a) = adopt {
-                a.settle(stats, Some(&mut *fb));
-            }
-            return None;
+    // A fragment shader runs on triangles, lines and points (see `shader::draw`), also
+    // through the polygon pipeline (unfilled modes, offsets, stipple) and smoothed;
+    // multisampling draws nothing.
+    if *unfit || (plan.shader.is_some() && plan.ms.is_some()) {
+        stats.program_draws_refused += 1;
+        if let Some(a) = adopt {
+            a.settle(stats, Some(&mut *fb));
         }
+        return None;
     }
     if plan.shader.is_some() || vertex.is_some() {
         stats.program_draws += 1;

@@ -124,8 +124,8 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
         "the glUniform between the draws"
     );
 
-    // A line with the program draws with it; a smooth one (GL_LINE_SMOOTH) does not:
-    // nothing drawn, counted.
+    // A line with the program draws with it, and a smooth one (GL_LINE_SMOOTH) too, its
+    // alpha times the coverage.
     c.clear();
     glBegin(GL_LINES);
     glVertex2f(-1.0, 0.01);
@@ -146,11 +146,19 @@ fn fragment_programs_draw_and_refusals_draw_nothing() {
     glEnd();
     glDisable(0x0B20);
     let s2 = stats();
-    assert_eq!(s2.program_draws_refused - s1b.program_draws_refused, 1);
-    assert!(
-        (0..W).all(|x| c.pixel(x, 8) == [0; 4]),
-        "a refused line draws nothing"
-    );
+    assert_eq!(s2.program_draws - s1b.program_draws, 1);
+    assert_eq!(s2.program_draws_refused, s1b.program_draws_refused);
+    // The line runs at window y = 8.08: row 8's centre is 0.42 pixel away, so a
+    // one-pixel smooth line covers 1 - 0.42 of it there (alpha 148 of 255).
+    for x in 4..12 {
+        let p = c.pixel(x, 8);
+        assert_eq!(p[..3], [0, 255, 0], "x {x}: the uniform's colour");
+        assert!(
+            (144..=152).contains(&p[3]),
+            "x {x}: alpha {} is the coverage",
+            p[3]
+        );
+    }
 
     // A vertex shader draws: its position, its colour.
     let pv = program(

@@ -258,7 +258,13 @@ impl Walk {
         fb: &Target<'_>,
         front: bool,
     ) -> Option<Walk> {
-        if !target_ok(fb) || !super::ff::covers_tail(plan) || units > MAX_TEXTURE_UNITS {
+        // A program's variant multiplies the smooth coverage in itself
+        // (`ff::smooth_colors`).
+        let tail = FragPlan {
+            smooth: None,
+            ..*plan
+        };
+        if !target_ok(fb) || !super::ff::covers_tail(&tail) || units > MAX_TEXTURE_UNITS {
             return None;
         }
         let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);

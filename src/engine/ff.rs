@@ -16,7 +16,7 @@
 //! varyings ([`crate::geometry::setup::SetupTriangle::flat`]) as uniforms. The sampled
 //! values come from today's samplers; the per-fragment work after them is the program.
 
-use super::ir::{Builder, Ir, Op, Ty, Val};
+use super::ir::{Builder, FCmp, Ir, Op, Ty, Un, Val};
 use super::lower::{PLANE_VARY, PLANE_W, PLANE_Z};
 use crate::fragment::FragPlan;
 use crate::framebuffer::draw_buffers::MORE_COLORS;
@@ -488,6 +488,66 @@ pub fn tail_buffers(
         store(b, p, mask, n as u8, px);
     }
     Some(())
+}
+
+/// A program's colours with a smooth line's or point's coverage (the draw module's aaline
+/// and aapoint stages, which rewrite the fragment shader): every colour's alpha times the
+/// coverage computed from the stage's four varyings at [`PLANE_VARY`]` + k` (read as a
+/// program reads a varying: the plane times `1 / w_plane`), and a point's lanes outside
+/// the unit disc killed. The arithmetic is [`crate::raster::smooth::coverage`]'s.
+pub fn smooth_colors(
+    b: &mut Builder,
+    s: crate::raster::smooth::Smooth,
+    colors: &[[Val; 4]; 1 + MORE_COLORS],
+) -> [[Val; 4]; 1 + MORE_COLORS] {
+    use crate::raster::smooth::Smooth;
+    let k = match s {
+        Smooth::Line(k) | Smooth::Point(k) => k as u16,
+    };
+    let one = b.f32(1.0);
+    let w_plane = b.push(Op::Interp(PLANE_W));
+    let oow = b.push(Op::Div(one, w_plane));
+    let [x, y, z, w] = [0, 1, 2, 3].map(|c| {
+        let a = b.push(Op::Interp(PLANE_VARY + k + c));
+        b.push(Op::Mul(a, oow))
+    });
+    let cov = match s {
+        Smooth::Line(_) => {
+            let ax = b.push(Op::Un(Un::Abs, x));
+            let az = b.push(Op::Un(Un::Abs, z));
+            let (dy, dw) = (b.push(Op::Sub(y, ax)), b.push(Op::Sub(w, az)));
+            let (sy, sw) = (b.push(Op::Sat(dy)), b.push(Op::Sat(dw)));
+            b.push(Op::Mul(sy, sw))
+        }
+        Smooth::Point(_) => {
+            let (xx, yy) = (b.push(Op::Mul(x, x)), b.push(Op::Mul(y, y)));
+            let d = b.push(Op::Add(xx, yy));
+            // Kill where `w < d` (a NaN keeps the lane): the complement of that mask.
+            let out = b.push(Op::FCmp(FCmp::Lt, w, d));
+            let (eq, ne) = (
+                b.push(Op::FCmp(FCmp::Eq, w, w)),
+                b.push(Op::FCmp(FCmp::Ne, w, w)),
+            );
+            let all = b.push(Op::Or(eq, ne));
+            let keep = b.push(Op::Xor(out, all));
+            b.push(Op::Kill(keep));
+            let inner = b.push(Op::FCmp(FCmp::Ge, z, d));
+            let wz = b.push(Op::Sub(w, z));
+            let r = b.push(Op::Div(one, wz));
+            let wd = b.push(Op::Sub(w, d));
+            let scaled = b.push(Op::Mul(r, wd));
+            b.push(Op::Select(inner, scaled, w))
+        }
+    };
+    let mut out = *colors;
+    let first = b.push(Op::Mul(colors[0][3], cov));
+    for (o, c) in out.iter_mut().zip(colors) {
+        o[3] = match c[3] == colors[0][3] {
+            true => first,
+            false => b.push(Op::Mul(c[3], cov)),
+        };
+    }
+    out
 }
 
 /// Blends packed colour `px` into draw buffer `n`, keeps the channels `mask` leaves out,

@@ -99,6 +99,10 @@ pub fn coverage<M: Madd, const PERSP: bool>(
 /// Sets up and fills the two triangles of quad `v` with the coverage `smooth` (the
 /// stage's replacement fragment shader), whose four varyings follow the draw's.
 fn fill(v: &[ClipVertex; 4], smooth: Smooth, d: &mut Draw<'_, '_>) {
+    // The rows a shader draw has pending go first (primitive order).
+    if let Some(p) = d.shaded.take() {
+        p.end(d.units, d.fb, d.stats);
+    }
     let plan = FragPlan {
         smooth: Some(smooth),
         ..*d.plan

@@ -252,7 +252,11 @@ impl FragShader {
             }
         }
         let mut b = Builder::from_ir(ir);
-        crate::engine::ff::tail_buffers(&mut b, plan, &l.colors)?;
+        let colors = match plan.smooth {
+            Some(s) => crate::engine::ff::smooth_colors(&mut b, s, &l.colors),
+            None => l.colors,
+        };
+        crate::engine::ff::tail_buffers(&mut b, plan, &colors)?;
         b.finish().ok()
     }
 }

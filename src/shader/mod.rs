@@ -27,8 +27,9 @@
 //! function.
 //!
 //! Fragment shaders colour triangles, lines and points (also those of unfilled
-//! polygons; not smooth lines and points, not stippled polygons) on the engine (8 lanes; 2x2 quads for derivatives and lookups at
-//! computed coordinates), followed by the
+//! polygons, stippled ones through the stipple's coverage, and smooth lines and points
+//! with their coverage in alpha, `engine::ff::smooth_colors`) on the engine (8 lanes; 2x2 quads for derivatives and lookups at computed
+//! coordinates), followed by the
 //! fixed per-fragment operations (alpha test, depth test, blending, colour mask). The
 //! inputs: `gl_Color` (the vertex stage's colour, clamped), `gl_TexCoord[0..8]` (each
 //! unit's coordinates; the fixed-function stage computes all eight sets with their
@@ -61,8 +62,8 @@
 //! modelview-projection, texture and normal matrices (and their transposes, the
 //! modelview's inverse), a non-float or matrix attribute, or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
-//! per vertex (memory ran out); with a
-//! fragment shader, smooth lines and points, stippled polygons and multisampling;
+//! per vertex (memory ran out), or whose varyings leave no room for its back colours or
+//! clip vertex; with a fragment shader, multisampling;
 //! primitives whose fragment state the engine does not draw (logic ops, wide, sRGB or
 //! non-RGBA8 targets, Z32 unorm depth), and `texelFetch` of a depth texture.
 //! Under GL_VERTEX_PROGRAM_TWO_SIDE back faces take `gl_BackColor` and
