@@ -9,7 +9,7 @@ use std::sync::Arc;
 use super::program_link::Linked;
 use super::Context;
 use crate::shader::draw::FragShader;
-use crate::shader::vertex_draw::VertShader;
+use crate::shader::vertex_draw::{VertShader, BUILTIN_UNIFORMS, STATE_UNIFORMS};
 use crate::shader::Slot;
 
 /// How a draw treats the current program.
@@ -57,7 +57,7 @@ impl Context {
         }
         let frag = match &linked.draw {
             None => None,
-            Some(Ok(fs)) => match uniform_words(linked, &fs.uniforms) {
+            Some(Ok(fs)) => match self.program_words(linked, &fs.uniforms) {
                 Some(u) => Some((Arc::clone(fs), u)),
                 None => return ProgramDraw::Refused,
             },
@@ -69,13 +69,15 @@ impl Context {
                 return ProgramDraw::Refused
             }
             Some(Ok(vs)) => {
+                // The matrices come from the draw's plan; the rest, state uniforms
+                // included, from here in slot order.
                 let user: Vec<Slot> = vs
                     .uniforms
                     .iter()
-                    .filter(|s| !s.name.starts_with("gl_"))
+                    .filter(|s| !BUILTIN_UNIFORMS.contains(&s.name.as_str()))
                     .cloned()
                     .collect();
-                let Some(uniforms) = uniform_words(linked, &user) else {
+                let Some(uniforms) = self.program_words(linked, &user) else {
                     return ProgramDraw::Refused;
                 };
                 let mut generic = [[0.0, 0.0, 0.0, 1.0]; 16];
@@ -91,6 +93,23 @@ impl Context {
             Some(Err(_)) => return ProgramDraw::Refused,
         };
         ProgramDraw::Shader(frag, vert)
+    }
+}
+
+impl Context {
+    /// The words of the uniforms `slots` names, in slot order: built-in state uniforms
+    /// from the GL state ([`Context::builtin_uniform_words`]), the rest from the
+    /// program's storage ([`uniform_words`]).
+    fn program_words(&self, linked: &Linked, slots: &[Slot]) -> Option<Vec<u32>> {
+        let mut out = Vec::new();
+        for s in slots {
+            let n = s.name.as_str();
+            match STATE_UNIFORMS.contains(&n) {
+                true => out.extend(self.builtin_uniform_words(n, usize::from(s.count))?),
+                false => out.extend(uniform_words(linked, std::slice::from_ref(s))?),
+            }
+        }
+        Some(out)
     }
 }
 

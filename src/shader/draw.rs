@@ -151,11 +151,12 @@ impl FragShader {
             .iter()
             .find(|s| s.name == FRONT_FACING)
             .map(|s| s.first);
-        if let Some(s) = l
-            .uniforms
-            .iter()
-            .find(|s| s.name.starts_with("gl_") && s.name != FRONT_FACING)
-        {
+        if let Some(s) = l.uniforms.iter().find(|s| {
+            let n = s.name.as_str();
+            n.starts_with("gl_")
+                && n != FRONT_FACING
+                && !super::vertex_draw::STATE_UNIFORMS.contains(&n)
+        }) {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }
         let mut textures = Vec::new();

@@ -56,11 +56,15 @@
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
 //! not lower (`return` inside a loop that does not unroll, `textureGrad`, texel offsets,
 //! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
-//! a built-in uniform, or (without a vertex shader) `gl_SecondaryColor`,
-//! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components; a vertex
-//! shader that reads a built-in uniform other than the modelview, projection,
-//! modelview-projection, texture and normal matrices (and their transposes, the
-//! modelview's inverse), a non-float or matrix attribute, or reads a generic attribute
+//! a built-in matrix, or (without a vertex shader) `gl_SecondaryColor`,
+//! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components (so
+//! `gl_LightSource[]`, 232 of them, only in vertex shaders); a vertex shader that reads
+//! a built-in uniform other than the modelview, projection, modelview-projection,
+//! texture and normal matrices (and their transposes, the modelview's inverse) and the
+//! state uniforms the context supplies (`vertex_draw::STATE_UNIFORMS`: lights,
+//! materials, their products, fog, depth range, clip planes; not yet `gl_Point`,
+//! `gl_TextureEnvColor`, the texgen planes, `gl_NormalScale` or the other inverses), a
+//! non-float or matrix attribute, or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
 //! per vertex (memory ran out), or whose varyings leave no room for its back colours or
 //! clip vertex; with a fragment shader, multisampling;

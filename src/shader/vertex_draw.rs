@@ -88,6 +88,22 @@ pub const BUILTIN_UNIFORMS: [&str; 11] = [
     "gl_ModelViewMatrixInverseTranspose",
 ];
 
+/// The built-in state uniforms the context supplies (`context::builtin_uniforms`), in
+/// either stage, after the user uniforms' words in slot order.
+pub const STATE_UNIFORMS: [&str; 11] = [
+    "gl_LightSource",
+    "gl_LightModel",
+    "gl_FrontMaterial",
+    "gl_BackMaterial",
+    "gl_FrontLightModelProduct",
+    "gl_BackLightModelProduct",
+    "gl_FrontLightProduct",
+    "gl_BackLightProduct",
+    "gl_Fog",
+    "gl_DepthRange",
+    "gl_ClipPlane",
+];
+
 impl VertShader {
     /// Lowers and compiles `hir`, its user attributes at the locations `location` gives
     /// (from the link); `Err` says why a draw cannot run it.
@@ -96,11 +112,10 @@ impl VertShader {
         location: impl Fn(&str) -> Option<i32>,
     ) -> Result<Arc<VertShader>, String> {
         let l = lower_vertex(hir).map_err(|e| e.0)?;
-        if let Some(s) = l
-            .uniforms
-            .iter()
-            .find(|s| s.name.starts_with("gl_") && !BUILTIN_UNIFORMS.contains(&s.name.as_str()))
-        {
+        if let Some(s) = l.uniforms.iter().find(|s| {
+            let n = s.name.as_str();
+            n.starts_with("gl_") && !BUILTIN_UNIFORMS.contains(&n) && !STATE_UNIFORMS.contains(&n)
+        }) {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }
         let mut attributes = Vec::new();
