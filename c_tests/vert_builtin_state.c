@@ -1,6 +1,7 @@
 /* vert_builtin_state: a vertex shader reading the built-in state uniforms of GLSL 1.10
  * (gl_LightSource[], gl_FrontMaterial, gl_BackMaterial, gl_LightModel, the light and
- * light-model products, gl_Fog, gl_DepthRange, gl_ClipPlane[]), and a fragment shader
+ * light-model products, gl_Fog, gl_DepthRange, gl_ClipPlane[], gl_Point,
+ * gl_TextureEnvColor[], the texgen planes), and a fragment shader
  * reading the smaller ones (material, light model, fog, depth range): classic per-vertex
  * lighting written in GLSL (a directional light with the half vector, a positional
  * spot light with attenuation), against values Mesa fetches from the GL state. Lights
@@ -53,7 +54,10 @@ static const char *VS_MISC =
     "  vec4 back = gl_BackMaterial.diffuse * gl_LightModel.ambient\n"
     "      + gl_BackLightModelProduct.sceneColor + gl_BackLightProduct[2].diffuse;\n"
     "  float k = dot(gl_ClipPlane[3], e) * 0.2 + gl_DepthRange.diff * 0.3 + gl_DepthRange.near;\n"
-    "  gl_FrontColor = mix(gl_Fog.color, gl_Color * back + vec4(fract(k)), f);\n"
+    "  vec4 t = gl_TextureEnvColor[1] * 0.3 + vec4(dot(gl_EyePlaneS[0], e),\n"
+    "      dot(gl_ObjectPlaneT[2], gl_Vertex), gl_Point.size * 0.1,\n"
+    "      gl_Point.sizeMax * 0.001 + gl_Point.distanceLinearAttenuation) * 0.2;\n"
+    "  gl_FrontColor = mix(gl_Fog.color, gl_Color * back + vec4(fract(k)) + t, f);\n"
     "  gl_Position = ftransform();\n"
     "}\n";
 
@@ -142,6 +146,23 @@ static void draw_all(const GLuint *progs, int n)
     for (v = 0; v < 2; v++) {
         lights(v);
         sphere(-0.45f + 0.9f * (float)v, 0.35f, 0.4f);
+    }
+    {
+        static const GLfloat env[4] = {0.2f, 0.9f, 0.4f, 0.6f};
+        static const GLfloat eye[4] = {0.3f, -0.5f, 0.8f, 0.2f};
+        static const GLfloat obj[4] = {-0.6f, 0.4f, 0.1f, 0.5f};
+        static const GLfloat att[3] = {1.0f, 0.25f, 0.0f};
+        glPointSize(3.5f);
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+        glActiveTexture(GL_TEXTURE1);
+        glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env);
+        glActiveTexture(GL_TEXTURE2);
+        glTexGenfv(GL_T, GL_OBJECT_PLANE, obj);
+        glActiveTexture(GL_TEXTURE0);
+        glPushMatrix();
+        glRotatef(40.0f, 1.0f, 0.0f, 0.0f);
+        glTexGenfv(GL_S, GL_EYE_PLANE, eye);
+        glPopMatrix();
     }
     glUseProgram(progs[1]);
     sphere(0.0f, -0.45f, 0.4f);

@@ -1,6 +1,7 @@
 //! The values of GLSL's built-in state uniforms (`gl_LightSource[]`, `gl_FrontMaterial`,
 //! `gl_LightModel`, the light and light-model products, `gl_Fog`, `gl_DepthRange`,
-//! `gl_ClipPlane[]`) from the GL state, as Mesa's `_mesa_fetch_state`
+//! `gl_ClipPlane[]`, `gl_Point`, `gl_TextureEnvColor[]`, the texgen planes) from the GL
+//! state, as Mesa's `_mesa_fetch_state`
 //! (`prog_statevars.c`) computes them, in f32 without fused multiply-adds:
 //!
 //! - `halfVector` is `normalize(normalize(position.xyz) + (0, 0, 1))` with `w = 1`, each
@@ -94,6 +95,21 @@ impl Context {
                 v.extend([near, far, far - near]);
             }
             "gl_ClipPlane" => v.extend(self.clip_planes.eye.iter().flatten()),
+            "gl_Point" => {
+                let p = &self.raster.point;
+                v.extend([p.size, p.min_size, p.max_size, p.fade_threshold]);
+                v.extend(p.attenuation);
+            }
+            "gl_TextureEnvColor" => v.extend(self.textures.units.iter().flat_map(|u| u.env.color)),
+            _ if name.starts_with("gl_EyePlane") || name.starts_with("gl_ObjectPlane") => {
+                let k = "STRQ".find(name.chars().last()?)?;
+                for u in &self.texgen.units {
+                    v.extend(match name.starts_with("gl_Eye") {
+                        true => u.eye_plane[k],
+                        false => u.object_plane[k],
+                    });
+                }
+            }
             _ => return None,
         }
         (v.len() == count).then(|| v.iter().map(|x| x.to_bits()).collect())

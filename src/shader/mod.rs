@@ -62,8 +62,9 @@
 //! a built-in uniform other than the modelview, projection, modelview-projection,
 //! texture and normal matrices (and their transposes, the modelview's inverse) and the
 //! state uniforms the context supplies (`vertex_draw::STATE_UNIFORMS`: lights,
-//! materials, their products, fog, depth range, clip planes; not yet `gl_Point`,
-//! `gl_TextureEnvColor`, the texgen planes, `gl_NormalScale` or the other inverses), a
+//! materials, their products, fog, depth range, clip planes, point parameters, texture
+//! environment colours, texgen planes; not yet `gl_NormalScale` or the projection,
+//! modelview-projection and texture inverses), a
 //! non-float or matrix attribute, or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
 //! per vertex (memory ran out), or whose varyings leave no room for its back colours or

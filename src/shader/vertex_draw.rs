@@ -90,7 +90,7 @@ pub const BUILTIN_UNIFORMS: [&str; 11] = [
 
 /// The built-in state uniforms the context supplies (`context::builtin_uniforms`), in
 /// either stage, after the user uniforms' words in slot order.
-pub const STATE_UNIFORMS: [&str; 11] = [
+pub const STATE_UNIFORMS: [&str; 21] = [
     "gl_LightSource",
     "gl_LightModel",
     "gl_FrontMaterial",
@@ -102,6 +102,16 @@ pub const STATE_UNIFORMS: [&str; 11] = [
     "gl_Fog",
     "gl_DepthRange",
     "gl_ClipPlane",
+    "gl_Point",
+    "gl_TextureEnvColor",
+    "gl_EyePlaneS",
+    "gl_EyePlaneT",
+    "gl_EyePlaneR",
+    "gl_EyePlaneQ",
+    "gl_ObjectPlaneS",
+    "gl_ObjectPlaneT",
+    "gl_ObjectPlaneR",
+    "gl_ObjectPlaneQ",
 ];
 
 impl VertShader {
