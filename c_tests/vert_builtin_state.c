@@ -1,8 +1,8 @@
 /* vert_builtin_state: a vertex shader reading the built-in state uniforms of GLSL 1.10
  * (gl_LightSource[], gl_FrontMaterial, gl_BackMaterial, gl_LightModel, the light and
  * light-model products, gl_Fog, gl_DepthRange, gl_ClipPlane[], gl_Point,
- * gl_TextureEnvColor[], the texgen planes), and a fragment shader
- * reading the smaller ones (material, light model, fog, depth range): classic per-vertex
+ * gl_TextureEnvColor[], the texgen planes), and fragment shaders reading them
+ * (material, light model, fog, depth range; light 0 and its products): classic per-vertex
  * lighting written in GLSL (a directional light with the half vector, a positional
  * spot light with attenuation), against values Mesa fetches from the GL state. Lights
  * and materials change between draws; the light positions are given under a rotated
@@ -68,6 +68,26 @@ static const char *FS_STATE =
     "  vec4 m = gl_FrontMaterial.diffuse * gl_Color + gl_FrontMaterial.emission\n"
     "      + gl_LightModel.ambient * gl_FrontMaterial.ambient;\n"
     "  gl_FragColor = vec4(mix(gl_Fog.color.rgb, m.rgb, f), m.a + gl_DepthRange.far * 0.1);\n"
+    "}\n";
+
+/* Per-pixel lighting: the fragment shader reads light 0 and its products. */
+static const char *VS_PIXEL =
+    "varying vec3 n;\n"
+    "void main() {\n"
+    "  n = gl_NormalMatrix * gl_Normal;\n"
+    "  gl_Position = ftransform();\n"
+    "}\n";
+
+static const char *FS_PIXEL =
+    "varying vec3 n;\n"
+    "void main() {\n"
+    "  vec3 nn = normalize(n);\n"
+    "  float d = max(dot(nn, normalize(gl_LightSource[0].position.xyz)), 0.0);\n"
+    "  float s = max(dot(nn, gl_LightSource[0].halfVector.xyz), 0.0);\n"
+    "  vec4 c = gl_FrontLightModelProduct.sceneColor + gl_FrontLightProduct[0].ambient\n"
+    "      + gl_FrontLightProduct[0].diffuse * d\n"
+    "      + gl_FrontLightProduct[0].specular * s * gl_FrontMaterial.shininess * 0.01;\n"
+    "  gl_FragColor = vec4(c.rgb, gl_FrontMaterial.diffuse.a);\n"
     "}\n";
 
 static void lights(int variant)
@@ -169,6 +189,8 @@ static void draw_all(const GLuint *progs, int n)
     frag_random_tris(3);
     glUseProgram(progs[2]);
     frag_random_tris(3);
+    glUseProgram(progs[3]);
+    sphere(0.5f, -0.5f, 0.35f);
     glDepthRange(0.0, 1.0);
     glUseProgram(0);
 }
@@ -179,11 +201,12 @@ int main(int argc, char **argv)
     unsigned char *buf;
     OSMesaContext ctx = frag_context(&buf);
     static unsigned char rb[FW * FH * 4];
-    GLuint progs[3];
+    GLuint progs[4];
 
     progs[0] = vert_program(VS_LIGHT, NULL, NULL);
     progs[1] = vert_program(VS_MISC, NULL, NULL);
     progs[2] = frag_program(FS_STATE);
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 3);
+    progs[3] = vert_program(VS_PIXEL, FS_PIXEL, NULL);
+    frag_window_and_fbo(out, buf, rb, draw_all, progs, 4);
     return frag_end(out, "end", buf, ctx);
 }

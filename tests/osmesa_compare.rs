@@ -204,6 +204,16 @@ const NON_FMA_TOLERANCES: &[(&str, Tolerance)] = &[
                      (exact against its AVX2+FMA code at the fused levels)",
         },
     ),
+    (
+        "vert_builtin_state",
+        Tolerance {
+            max_channel_diff: 1,
+            max_percent_off: 0.01,
+            reason: "not yet found: one pixel of 16384 in the object's image differs by 1 \
+                     against llvmpipe SSE4.1 at `scalar` (exact against its AVX2+FMA code \
+                     at the fused levels)",
+        },
+    ),
 ];
 
 /// Scenes whose reference runs without `GALLIUM_OVERRIDE_CPU_CAPS` at every level: their

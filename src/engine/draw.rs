@@ -29,8 +29,10 @@ use std::rc::Rc;
 /// Input streams at most: four channels per unit.
 const STREAMS: usize = 4 * MAX_TEXTURE_UNITS;
 
-/// The uniform words a program's walk passes at most ([`Walk::with_program`]).
-pub const MAX_UNIFORMS: usize = 64;
+/// The uniform words a program's walk passes at most ([`Walk::with_program`]): room for
+/// GLSL's light state in a fragment shader (`gl_LightSource[]` is 232 words, the front
+/// light products 96).
+pub const MAX_UNIFORMS: usize = 512;
 
 /// The planes of one triangle at most.
 const SET: usize = 2 + MAX_VARY;

@@ -57,8 +57,8 @@
 //! not lower (`return` inside a loop that does not unroll, `textureGrad`, texel offsets,
 //! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
 //! a built-in matrix, or (without a vertex shader) `gl_SecondaryColor`,
-//! `gl_FogFragCoord` or a user varying, or has more than 64 uniform components (so
-//! `gl_LightSource[]`, 232 of them, only in vertex shaders); a vertex shader that reads
+//! `gl_FogFragCoord` or a user varying, or has more than 512 uniform components (the
+//! light state fits: `gl_LightSource[]` is 232 of them); a vertex shader that reads
 //! a built-in uniform other than the modelview, projection, modelview-projection,
 //! texture and normal matrices (and their transposes, the modelview's inverse) and the
 //! state uniforms the context supplies (`vertex_draw::STATE_UNIFORMS`: lights,
