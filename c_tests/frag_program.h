@@ -190,6 +190,24 @@ static inline void frag_window_and_fbo(FILE *out, const unsigned char *buf, unsi
     sgl_text(out, "error", "0x%x", glGetError());
 }
 
+/* The main of a scene of `n` programs (at most 16): opens the output, makes the
+ * context, lets `make` create the programs (it may also write blocks to `out`), draws
+ * with frag_window_and_fbo and ends the scene. */
+static inline int frag_scene_main(int argc, char **argv, int n,
+                                  void (*make)(GLuint *progs, FILE *out),
+                                  void (*draw)(const GLuint *, int))
+{
+    FILE *out = sgl_open(argc, argv);
+    unsigned char *buf;
+    OSMesaContext ctx = frag_context(&buf);
+    static unsigned char rb[FW * FH * 4];
+    GLuint progs[16];
+    SGL_CHECK(n <= 16);
+    make(progs, out);
+    frag_window_and_fbo(out, buf, rb, draw, progs, n);
+    return frag_end(out, "end", buf, ctx);
+}
+
 /* Clears colour and depth, sets frag_perspective() and the depth test
  * (GL_LESS), and draws `tris` seeded random triangles with each of the `n`
  * programs in turn (the last stays current). */

@@ -104,17 +104,15 @@ static void draw_all(const GLuint *progs, int n)
     glUseProgram(0);
 }
 
-int main(int argc, char **argv)
+static void make(GLuint *progs, FILE *out)
 {
-    FILE *out = sgl_open(argc, argv);
-    unsigned char *buf;
-    OSMesaContext ctx = frag_context(&buf);
-    static unsigned char rb[FW * FH * 4];
-    GLuint progs[3];
-
     progs[0] = frag_program(FS_COLOR);
     progs[1] = frag_program(FS_BRIGHT);
     progs[2] = vert_program(VS, FS_VARYING, NULL);
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 3);
-    return frag_end(out, "end", buf, ctx);
+    (void)out;
+}
+
+int main(int argc, char **argv)
+{
+    return frag_scene_main(argc, argv, 3, make, draw_all);
 }

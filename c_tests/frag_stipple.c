@@ -85,14 +85,9 @@ static void draw_all(const GLuint *progs, int n)
     glUseProgram(0);
 }
 
-int main(int argc, char **argv)
+static void make(GLuint *progs, FILE *out)
 {
-    FILE *out = sgl_open(argc, argv);
-    unsigned char *buf;
-    OSMesaContext ctx = frag_context(&buf);
-    static unsigned char rb[FW * FH * 4];
     static unsigned char img[64 * 64 * 4];
-    GLuint progs[4];
 
     progs[0] = frag_program(FS_COLOR);
     progs[1] = frag_program(FS_DERIV);
@@ -100,6 +95,10 @@ int main(int argc, char **argv)
     progs[3] = vert_program(VS, FS_VARYING, NULL);
     glGenTextures(1, &g_tex);
     frag_mipmapped_texture(g_tex, img);
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 4);
-    return frag_end(out, "end", buf, ctx);
+    (void)out;
+}
+
+int main(int argc, char **argv)
+{
+    return frag_scene_main(argc, argv, 4, make, draw_all);
 }

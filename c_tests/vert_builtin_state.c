@@ -195,18 +195,16 @@ static void draw_all(const GLuint *progs, int n)
     glUseProgram(0);
 }
 
-int main(int argc, char **argv)
+static void make(GLuint *progs, FILE *out)
 {
-    FILE *out = sgl_open(argc, argv);
-    unsigned char *buf;
-    OSMesaContext ctx = frag_context(&buf);
-    static unsigned char rb[FW * FH * 4];
-    GLuint progs[4];
-
     progs[0] = vert_program(VS_LIGHT, NULL, NULL);
     progs[1] = vert_program(VS_MISC, NULL, NULL);
     progs[2] = frag_program(FS_STATE);
     progs[3] = vert_program(VS_PIXEL, FS_PIXEL, NULL);
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 4);
-    return frag_end(out, "end", buf, ctx);
+    (void)out;
+}
+
+int main(int argc, char **argv)
+{
+    return frag_scene_main(argc, argv, 4, make, draw_all);
 }

@@ -121,18 +121,17 @@ static void draw_all(const GLuint *progs, int n)
     glUseProgram(0);
 }
 
-int main(int argc, char **argv)
+static void make(GLuint *progs, FILE *out)
 {
     static const char *attribs[] = {"unused0", "tangent", "weight", "extra", NULL};
-    FILE *out = sgl_open(argc, argv);
-    unsigned char *buf;
-    OSMesaContext ctx = frag_context(&buf);
-    static unsigned char rb[FW * FH * 4];
-    GLuint progs[2];
 
     progs[0] = vert_program(VS, FS, attribs);
     progs[1] = vert_program(VS, NULL, attribs);
     glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 2);
-    return frag_end(out, "end", buf, ctx);
+    (void)out;
+}
+
+int main(int argc, char **argv)
+{
+    return frag_scene_main(argc, argv, 2, make, draw_all);
 }

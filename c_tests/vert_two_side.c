@@ -74,13 +74,8 @@ static void draw_all(const GLuint *progs, int n)
     glUseProgram(0);
 }
 
-int main(int argc, char **argv)
+static void make(GLuint *progs, FILE *out)
 {
-    FILE *out = sgl_open(argc, argv);
-    unsigned char *buf;
-    OSMesaContext ctx = frag_context(&buf);
-    static unsigned char rb[FW * FH * 4];
-    GLuint progs[4];
     GLboolean b[3];
     GLint on = -1;
 
@@ -96,6 +91,10 @@ int main(int argc, char **argv)
     glPopAttrib();
     b[2] = glIsEnabled(GL_VERTEX_PROGRAM_TWO_SIDE);
     sgl_text(out, "enable", "%d %d %d get %d err 0x%x\n", b[0], b[1], b[2], on, glGetError());
-    frag_window_and_fbo(out, buf, rb, draw_all, progs, 4);
-    return frag_end(out, "end", buf, ctx);
+    (void)out;
+}
+
+int main(int argc, char **argv)
+{
+    return frag_scene_main(argc, argv, 4, make, draw_all);
 }
