@@ -190,6 +190,17 @@ static inline void frag_window_and_fbo(FILE *out, const unsigned char *buf, unsi
     sgl_text(out, "error", "0x%x", glGetError());
 }
 
+/* Starts a frame: clears colour (0.1, 0.2, 0.3, 0.4) and depth, sets
+ * frag_perspective() and the depth test with `depth_func`. */
+static inline void frag_begin_frame(GLenum depth_func)
+{
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    frag_perspective();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(depth_func);
+}
+
 /* The main of a scene of `n` programs (at most 16): opens the output, makes the
  * context, lets `make` create the programs (it may also write blocks to `out`), draws
  * with frag_window_and_fbo and ends the scene. */
@@ -214,11 +225,7 @@ static inline int frag_scene_main(int argc, char **argv, int n,
 static inline void frag_each_program(const GLuint *progs, int n, int tris)
 {
     int i;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    frag_begin_frame(GL_LESS);
     for (i = 0; i < n; i++) {
         glUseProgram(progs[i]);
         frag_random_tris(tris);

@@ -149,11 +149,7 @@ static void draw_all(const GLuint *progs, int n)
     static const GLdouble plane[4] = {0.5, -1.0, 0.2, 0.1};
     int v;
     (void)n;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    frag_begin_frame(GL_LESS);
     glClipPlane(GL_CLIP_PLANE3, plane);
     glDepthRange(0.1, 0.9);
     {

@@ -66,11 +66,7 @@ static void draw_all(const GLuint *progs, int n)
     static const GLdouble p1[4] = {-0.3, 1.0, 0.1, 0.4};
     static const GLdouble p2[4] = {0.0, 0.0, -1.0, -1.9};
     int p;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    frag_begin_frame(GL_LESS);
     /* the planes are given under a rotated modelview (stored in eye space) */
     glPushMatrix();
     glRotatef(30.0f, 0.0f, 0.0f, 1.0f);

@@ -44,11 +44,7 @@ static void draw_all(const GLuint *progs, int n)
 {
     int p;
     (void)n;
-    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    frag_perspective();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    frag_begin_frame(GL_LESS);
     glEnable(GL_COLOR_SUM);
     for (p = 0; p < 4; p++) {
         glUseProgram(progs[p]);
