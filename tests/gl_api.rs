@@ -547,3 +547,52 @@ fn long_triangle_batches_stream_in_chunks_with_the_same_pixels() {
     });
     assert_eq!(quads.1, 1);
 }
+
+/// The context is GL 2.1 compatibility: GL_VERSION and GL_SHADING_LANGUAGE_VERSION say so,
+/// OSMesaCreateContextAttribs gives compatibility up to 2.1 and NULL above it or for a
+/// core profile (GL 3.x is issue 44's).
+#[test]
+fn context_is_gl21_compatibility() {
+    let attribs = |profile: i32, major: i32, minor: i32| {
+        let list = [
+            OSMESA_PROFILE,
+            profile,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            major,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            minor,
+            0,
+        ];
+        // SAFETY: a zero-terminated attribute list.
+        unsafe { OSMesaCreateContextAttribs(list.as_ptr(), std::ptr::null_mut()) }
+    };
+    for (major, minor) in [(1, 0), (1, 5), (2, 0), (2, 1)] {
+        let c = attribs(OSMESA_COMPAT_PROFILE, major, minor);
+        assert!(!c.is_null(), "compatibility {major}.{minor}");
+        OSMesaDestroyContext(c);
+    }
+    for (profile, major, minor) in [
+        (OSMESA_COMPAT_PROFILE, 2, 2),
+        (OSMESA_COMPAT_PROFILE, 3, 0),
+        (OSMESA_CORE_PROFILE, 3, 2),
+        (OSMESA_CORE_PROFILE, 2, 1),
+    ] {
+        assert!(
+            attribs(profile, major, minor).is_null(),
+            "profile {profile:#x} {major}.{minor}"
+        );
+    }
+    let _c = Ctx::new(4, 4);
+    let string = |name| {
+        let p = glGetString(name);
+        assert!(!p.is_null());
+        // SAFETY: glGetString returns a NUL-terminated static string.
+        unsafe { std::ffi::CStr::from_ptr(p.cast()) }
+            .to_str()
+            .unwrap()
+            .to_owned()
+    };
+    assert!(string(GL_VERSION).starts_with("2.1 softgl "));
+    assert_eq!(string(GL_SHADING_LANGUAGE_VERSION), "1.20");
+    assert_eq!(glGetError(), GL_NO_ERROR);
+}

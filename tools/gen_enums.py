@@ -55,10 +55,15 @@ GL_PIXEL_PACK_BUFFER_BINDING GL_PIXEL_UNPACK_BUFFER_BINDING""".split(),
 }
 
 # Single tokens from later GL versions that GL 1.5 programs use with functions Mesa exports
-# (separate blend equation and separate stencil state are GL 2.0).
+# (separate blend equation and separate stencil state are GL 2.0), and GL 2.0's shader
+# limits, hint and strings, which the GL 2.1 context answers.
 EXTRA_TOKENS = """GL_BLEND_EQUATION_RGB GL_BLEND_EQUATION_ALPHA GL_STENCIL_BACK_FUNC GL_STENCIL_BACK_FAIL
 GL_STENCIL_BACK_PASS_DEPTH_FAIL GL_STENCIL_BACK_PASS_DEPTH_PASS GL_STENCIL_BACK_REF
-GL_STENCIL_BACK_VALUE_MASK GL_STENCIL_BACK_WRITEMASK""".split()
+GL_STENCIL_BACK_VALUE_MASK GL_STENCIL_BACK_WRITEMASK GL_MAX_TEXTURE_IMAGE_UNITS
+GL_MAX_TEXTURE_COORDS GL_MAX_VARYING_FLOATS GL_MAX_VERTEX_UNIFORM_COMPONENTS
+GL_MAX_FRAGMENT_UNIFORM_COMPONENTS GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS
+GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS GL_FRAGMENT_SHADER_DERIVATIVE_HINT
+GL_SHADING_LANGUAGE_VERSION GL_SHADER_COMPILER""".split()
 
 # GL 2.1's sRGB texture formats (GL_EXT_texture_sRGB without the suffix), which programs
 # pass whether or not the extension is advertised.

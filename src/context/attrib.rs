@@ -200,7 +200,13 @@ const GROUPS: &[(u32, Restore)] = &[
     (GL_ENABLE_BIT, enable),
     (GL_EVAL_BIT, |c, s| (c.eval.grid1, c.eval.grid2) = s.grids),
     (GL_FOG_BIT, |c, s| c.light.fog = s.light.fog),
-    (GL_HINT_BIT, |c, s| c.state.hints = s.state.hints),
+    // Mesa 22.3's glPopAttrib leaves GL 2.0's derivative hint as it is (scene
+    // gl21_context); the spec's GL_HINT_BIT holds every hint.
+    (GL_HINT_BIT, |c, s| {
+        let derivative = c.state.hints.fragment_shader_derivative;
+        c.state.hints = s.state.hints;
+        c.state.hints.fragment_shader_derivative = derivative;
+    }),
     (GL_LIGHTING_BIT, |c, s| {
         c.state.shade_model = s.state.shade_model;
         c.light.lights = s.light.lights;

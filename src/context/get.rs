@@ -84,17 +84,17 @@ impl Value {
     }
 }
 
-fn b(v: bool) -> Value {
+pub(super) fn b(v: bool) -> Value {
     Value::new(Kind::Bool, &[v as u8 as f64])
 }
-fn i(v: &[i64]) -> Value {
+pub(super) fn i(v: &[i64]) -> Value {
     let f: Vec<f64> = v.iter().map(|&x| x as f64).collect();
     Value::new(Kind::Int, &f)
 }
 fn u(v: u32) -> Value {
     Value::new(Kind::UInt, &[v as f64])
 }
-fn e(v: u32) -> Value {
+pub(super) fn e(v: u32) -> Value {
     Value::new(Kind::Int, &[v as f64])
 }
 fn f(v: &[f32]) -> Value {
@@ -248,6 +248,9 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
     if let Some(v) = stencil_get(c, pname, stencil_max) {
         return Ok(v);
     }
+    if let Some(v) = super::get_shader::shader_get(c, pname) {
+        return Ok(v);
+    }
     Ok(match pname {
         GL_VIEWPORT => i(&st.viewport.map(|v| v as i64)),
         GL_SCISSOR_BOX => i(&st.scissor.map(|v| v as i64)),
@@ -281,10 +284,6 @@ pub fn get(c: &Context, pname: u32) -> GlResult<Value> {
         GL_MAX_LIGHTS => i(&[8]),
         GL_MAX_CLIP_PLANES => i(&[8]),
         GL_MAX_TEXTURE_UNITS => i(&[super::state::MAX_TEXTURE_UNITS as i64]),
-        super::generic_attrib::GL_MAX_VERTEX_ATTRIBS => {
-            i(&[super::arrays::MAX_VERTEX_ATTRIBS as i64])
-        }
-        super::shader_objects::GL_CURRENT_PROGRAM => i(&[c.shaders.current as i64]),
         GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => i(&[16]),
         GL_MAX_NAME_STACK_DEPTH => i(&[64]),
         GL_MAX_LIST_NESTING => i(&[super::dlist::MAX_LIST_NESTING as i64]),

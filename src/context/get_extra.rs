@@ -2,7 +2,9 @@
 
 use super::{Context, GlError, GlResult};
 use crate::gl::enums::*;
-use crate::gl::glext_enums::{GL_FOG_COORD_ARRAY_POINTER, GL_SECONDARY_COLOR_ARRAY_POINTER};
+use crate::gl::glext_enums::{
+    GL_FOG_COORD_ARRAY_POINTER, GL_SECONDARY_COLOR_ARRAY_POINTER, GL_SHADING_LANGUAGE_VERSION,
+};
 use crate::gl::types::*;
 
 /// The extensions that work, as GL_EXTENSIONS lists them (NUL-terminated for C).
@@ -28,16 +30,20 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_texture_compression_latc GL_EXT_texture_sRGB ",
     "GL_ARB_framebuffer_sRGB GL_EXT_framebuffer_sRGB ",
     "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg ",
-    "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object\0"
+    "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object ",
+    "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader ",
+    "GL_ARB_shading_language_100 GL_ARB_draw_buffers GL_ARB_texture_non_power_of_two\0"
 );
 
-/// glGetString: vendor, renderer, version ("1.5 …") and the extension list, each
-/// NUL-terminated.
+/// glGetString: vendor, renderer, version ("2.1 …", the compatibility profile of GL 2.1),
+/// the shading language version ("1.20", GL 2.1's; the compiler also takes the
+/// `#version 130` … `330` shaders it lowers) and the extension list, each NUL-terminated.
 pub(crate) fn gl_string(name: GLenum) -> GlResult<&'static [u8]> {
     Ok(match name {
         GL_VENDOR => b"softgl\0",
         GL_RENDERER => b"softgl software rasterizer\0",
-        GL_VERSION => concat!("1.5 softgl ", env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+        GL_VERSION => concat!("2.1 softgl ", env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+        GL_SHADING_LANGUAGE_VERSION => b"1.20\0",
         GL_EXTENSIONS => EXTENSIONS.as_bytes(),
         _ => return Err(GlError::InvalidEnum),
     })

@@ -12,7 +12,7 @@ use crate::gl::types::*;
 
 impl Context {
     /// glHint: `mode` must be GL_FASTEST, GL_NICEST or GL_DONT_CARE, `target` one of the
-    /// seven hints.
+    /// eight hints (GL 2.0's GL_FRAGMENT_SHADER_DERIVATIVE_HINT among them).
     pub(crate) fn hint(&mut self, target: GLenum, mode: GLenum) -> GlResult<()> {
         if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
             return Err(GlError::InvalidEnum);
@@ -26,6 +26,7 @@ impl Context {
             GL_FOG_HINT => &mut h.fog,
             GL_GENERATE_MIPMAP_HINT => &mut h.generate_mipmap,
             GL_TEXTURE_COMPRESSION_HINT => &mut h.texture_compression,
+            GL_FRAGMENT_SHADER_DERIVATIVE_HINT => &mut h.fragment_shader_derivative,
             _ => return Err(GlError::InvalidEnum),
         };
         *slot = mode;

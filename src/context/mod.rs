@@ -36,6 +36,7 @@ pub mod fragment_state;
 pub mod generic_attrib;
 pub mod get;
 pub mod get_extra;
+pub mod get_shader;
 pub mod hint_clip;
 pub mod immediate;
 pub mod legacy_state;

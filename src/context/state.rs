@@ -253,6 +253,7 @@ pub struct Hints {
     pub fog: GLenum,
     pub generate_mipmap: GLenum,
     pub texture_compression: GLenum,
+    pub fragment_shader_derivative: GLenum,
 }
 
 impl Default for Hints {
@@ -265,6 +266,7 @@ impl Default for Hints {
             fog: GL_DONT_CARE,
             generate_mipmap: GL_DONT_CARE,
             texture_compression: GL_DONT_CARE,
+            fragment_shader_derivative: GL_DONT_CARE,
         }
     }
 }

@@ -226,8 +226,8 @@ pub extern "C" fn OSMesaCreateContextExt(
 }
 
 /// The format, depth, stencil and accumulation bits of an OSMesaCreateContextAttribs
-/// list; `None` for an unknown key, a core profile or a version above 1.5 (softgl
-/// implements the GL 1.5 compatibility profile).
+/// list; `None` for an unknown key, a core profile or a version above 2.1 (softgl
+/// implements the GL 2.1 compatibility profile).
 ///
 /// # Safety
 /// `list` must be NULL or point to a zero-terminated list of int pairs.
@@ -258,11 +258,11 @@ unsafe fn parse_attribs(list: *const c_int) -> Option<(GLenum, c_int, c_int, c_i
         }
         i += 2;
     }
-    ((major, minor) <= (1, 5)).then_some((format, depth, stencil, accum))
+    ((major, minor) <= (2, 1)).then_some((format, depth, stencil, accum))
 }
 
 /// OSMesaCreateContextAttribs: a zero-terminated key/value list. softgl implements the GL
-/// 1.5 compatibility profile, so a core profile or a version above 1.5 gives NULL.
+/// 2.1 compatibility profile, so a core profile or a version above 2.1 gives NULL.
 ///
 /// # Safety
 /// `attribList` must be NULL or point to a zero-terminated list of int pairs.

@@ -37,7 +37,8 @@ c_fns! {
 
 pub use crate::context::get_extra::EXTENSIONS;
 
-/// glGetString: vendor, renderer, version ("1.5 …") and the extension list.
+/// glGetString: vendor, renderer, version ("2.1 …"), shading language version and the
+/// extension list.
 #[no_mangle]
 pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
     // Without a current context, and between glBegin and glEnd, GL calls return 0 (Mesa).

@@ -75,7 +75,8 @@
 //! `gl_BackSecondaryColor` (each only when the shader writes it). `gl_PointSize` sizes points
 //! under GL_VERTEX_PROGRAM_POINT_SIZE (unclamped, as llvmpipe takes a vertex's size), and
 //! `gl_PointCoord` is replaced across every point, sprite or not (`raster::sprite`).
-//! `GL_VERSION` stays 1.5.
+//! With them the context is GL 2.1: `GL_VERSION` says 2.1 and `GL_SHADING_LANGUAGE_VERSION`
+//! 1.20 (`context::get_extra`), and OSMesaCreateContextAttribs gives compatibility 2.1.
 
 mod builtins;
 mod control;
