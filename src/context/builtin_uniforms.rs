@@ -62,8 +62,11 @@ fn product(a: &[f32; 4], b: &[f32; 4]) -> [f32; 4] {
 
 impl Context {
     /// The words of built-in uniform `name` (`count` components), or `None` when the
-    /// draw does not supply it (the matrices come from the draw's plan instead).
+    /// draw does not supply it (the matrices: `builtin_matrices`).
     pub(crate) fn builtin_uniform_words(&self, name: &str, count: usize) -> Option<Vec<u32>> {
+        if let Some(m) = self.builtin_matrix_words(name) {
+            return (m.len() == count).then(|| m.iter().map(|x| x.to_bits()).collect());
+        }
         let l = &self.light;
         let face = |name: &str| usize::from(name.starts_with("gl_Back"));
         let mut v = Vec::with_capacity(count);

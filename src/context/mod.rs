@@ -14,6 +14,7 @@ pub mod attrib;
 pub mod bitmap_read;
 pub mod buffer_api;
 pub mod buffer_select;
+pub mod builtin_matrices;
 pub mod builtin_uniforms;
 pub mod client_arrays;
 pub mod client_image;

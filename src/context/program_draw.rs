@@ -9,7 +9,7 @@ use std::sync::Arc;
 use super::program_link::Linked;
 use super::Context;
 use crate::shader::draw::FragShader;
-use crate::shader::vertex_draw::{VertShader, BUILTIN_UNIFORMS, STATE_UNIFORMS};
+use crate::shader::vertex_draw::{is_state_uniform, VertShader};
 use crate::shader::Slot;
 
 /// How a draw treats the current program.
@@ -69,15 +69,9 @@ impl Context {
                 return ProgramDraw::Refused
             }
             Some(Ok(vs)) => {
-                // The matrices come from the draw's plan; the rest, state uniforms
-                // included, from here in slot order.
-                let user: Vec<Slot> = vs
-                    .uniforms
-                    .iter()
-                    .filter(|s| !BUILTIN_UNIFORMS.contains(&s.name.as_str()))
-                    .cloned()
-                    .collect();
-                let Some(uniforms) = self.program_words(linked, &user) else {
+                // Every uniform, the built-in matrices and state included, from here in
+                // slot order.
+                let Some(uniforms) = self.program_words(linked, &vs.uniforms) else {
                     return ProgramDraw::Refused;
                 };
                 let mut generic = [[0.0, 0.0, 0.0, 1.0]; 16];
@@ -104,7 +98,7 @@ impl Context {
         let mut out = Vec::new();
         for s in slots {
             let n = s.name.as_str();
-            match STATE_UNIFORMS.contains(&n) {
+            match is_state_uniform(n) {
                 true => out.extend(self.builtin_uniform_words(n, usize::from(s.count))?),
                 false => out.extend(uniform_words(linked, std::slice::from_ref(s))?),
             }

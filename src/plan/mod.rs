@@ -27,7 +27,7 @@ use crate::raster::prims::{point_size, LinePlan, PolyPipeline, PrimEnables};
 use crate::raster::sprite::Sprite;
 use crate::render::DrawPlan;
 use crate::shader::draw::FragShader;
-use crate::shader::vertex_draw::{tex_vary, Matrices, OutputUse, VertShader, VertexRun};
+use crate::shader::vertex_draw::{tex_vary, OutputUse, VertShader, VertexRun};
 use crate::texture::{TextureState, UnitPlan};
 
 /// The buffers a draw goes into, as far as the plan depends on them.
@@ -332,16 +332,6 @@ fn vertex_run<'a>(
     stage: &VertexStage,
     fs: Option<&FragShader>,
 ) -> VertexRun<'a> {
-    let modelview = s.modelview.top();
-    let inv = s.modelview.top_flags().inverse(&modelview.0);
-    let mvp = s.projection.top().mul(modelview);
-    let m = Matrices {
-        modelview,
-        modelview_inv: &inv,
-        projection: s.projection.top(),
-        mvp: &mvp,
-        texture: std::array::from_fn(|u| s.texture.get(u).map_or(&IDENTITY, |t| t.top())),
-    };
     let units: Vec<usize> = stage.tex_units[..stage.n_tex].iter().map(|t| t.0).collect();
     let vary_of = |name: &str, c: usize| match (name, fs) {
         ("gl_TexCoord", Some(f)) => (c < 4 * f.tex_coords).then_some(crate::geometry::VARY_TEX + c),
@@ -352,7 +342,6 @@ fn vertex_run<'a>(
     VertexRun::new(
         v.shader,
         v.uniforms,
-        &m,
         v.generic,
         vary_of,
         OutputUse {

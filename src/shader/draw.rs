@@ -153,9 +153,7 @@ impl FragShader {
             .map(|s| s.first);
         if let Some(s) = l.uniforms.iter().find(|s| {
             let n = s.name.as_str();
-            n.starts_with("gl_")
-                && n != FRONT_FACING
-                && !super::vertex_draw::STATE_UNIFORMS.contains(&n)
+            n.starts_with("gl_") && n != FRONT_FACING && !super::vertex_draw::is_state_uniform(n)
         }) {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }

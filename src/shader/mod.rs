@@ -56,15 +56,14 @@
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
 //! not lower (`return` inside a loop that does not unroll, `textureGrad`, texel offsets,
 //! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
-//! a built-in matrix, or (without a vertex shader) `gl_SecondaryColor`,
-//! `gl_FogFragCoord` or a user varying, or has more than 512 uniform components (the
-//! light state fits: `gl_LightSource[]` is 232 of them); a vertex shader that reads
-//! a built-in uniform other than the modelview, projection, modelview-projection,
-//! texture and normal matrices (and their transposes, the modelview's inverse) and the
-//! state uniforms the context supplies (`vertex_draw::STATE_UNIFORMS`: lights,
-//! materials, their products, fog, depth range, clip planes, point parameters, texture
-//! environment colours, texgen planes; not yet `gl_NormalScale` or the projection,
-//! modelview-projection and texture inverses), a
+//! (without a vertex shader) `gl_SecondaryColor`, `gl_FogFragCoord` or a user varying,
+//! or has more than 512 uniform components (the light state fits: `gl_LightSource[]` is
+//! 232 of them); a shader that reads a built-in uniform the context does not supply
+//! (it supplies, in either stage, every matrix with its inverse and transposes,
+//! `vertex_draw::MATRIX_UNIFORMS`, and the state uniforms, `vertex_draw::STATE_UNIFORMS`:
+//! lights, materials, their products, fog, depth range, clip planes, point parameters,
+//! texture environment colours, texgen planes; not yet `gl_NormalScale`); a vertex
+//! shader with a
 //! non-float or matrix attribute, or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
 //! per vertex (memory ran out), or whose varyings leave no room for its back colours or

@@ -28,7 +28,6 @@
 use super::lower::Slot;
 use super::vertex::lower_vertex;
 use crate::engine::exec::{compile, Program, Scratch, MAX_BATCH};
-use crate::fixed_function::matrix::Mat4;
 use crate::fixed_function::transform::clamp_color;
 use crate::geometry::source::VertexSource;
 use crate::geometry::{clip_mask, user_clip_mask, ClipVertex, Viewport};
@@ -73,8 +72,9 @@ impl std::fmt::Debug for VertShader {
     }
 }
 
-/// The built-in uniforms a draw supplies.
-pub const BUILTIN_UNIFORMS: [&str; 11] = [
+/// The built-in matrix uniforms the context supplies (`context::builtin_matrices`), in
+/// either stage.
+pub const MATRIX_UNIFORMS: [&str; 17] = [
     "gl_ModelViewMatrix",
     "gl_ProjectionMatrix",
     "gl_ModelViewProjectionMatrix",
@@ -85,11 +85,17 @@ pub const BUILTIN_UNIFORMS: [&str; 11] = [
     "gl_ModelViewProjectionMatrixTranspose",
     "gl_TextureMatrixTranspose",
     "gl_ModelViewMatrixInverse",
+    "gl_ProjectionMatrixInverse",
+    "gl_ModelViewProjectionMatrixInverse",
+    "gl_TextureMatrixInverse",
     "gl_ModelViewMatrixInverseTranspose",
+    "gl_ProjectionMatrixInverseTranspose",
+    "gl_ModelViewProjectionMatrixInverseTranspose",
+    "gl_TextureMatrixInverseTranspose",
 ];
 
 /// The built-in state uniforms the context supplies (`context::builtin_uniforms`), in
-/// either stage, after the user uniforms' words in slot order.
+/// either stage, with the user uniforms' words in slot order.
 pub const STATE_UNIFORMS: [&str; 21] = [
     "gl_LightSource",
     "gl_LightModel",
@@ -114,6 +120,12 @@ pub const STATE_UNIFORMS: [&str; 21] = [
     "gl_ObjectPlaneQ",
 ];
 
+/// Whether the context supplies built-in uniform `name` ([`MATRIX_UNIFORMS`],
+/// [`STATE_UNIFORMS`]).
+pub fn is_state_uniform(name: &str) -> bool {
+    MATRIX_UNIFORMS.contains(&name) || STATE_UNIFORMS.contains(&name)
+}
+
 impl VertShader {
     /// Lowers and compiles `hir`, its user attributes at the locations `location` gives
     /// (from the link); `Err` says why a draw cannot run it.
@@ -124,7 +136,7 @@ impl VertShader {
         let l = lower_vertex(hir).map_err(|e| e.0)?;
         if let Some(s) = l.uniforms.iter().find(|s| {
             let n = s.name.as_str();
-            n.starts_with("gl_") && !BUILTIN_UNIFORMS.contains(&n) && !STATE_UNIFORMS.contains(&n)
+            n.starts_with("gl_") && !is_state_uniform(n)
         }) {
             return Err(format!("built-in uniform {} is not supplied", s.name));
         }
@@ -182,20 +194,6 @@ impl VertShader {
     }
 }
 
-/// What a draw knows of the matrices (Mesa's state values for the built-in uniforms).
-pub struct Matrices<'a> {
-    /// The modelview matrix.
-    pub modelview: &'a Mat4,
-    /// Its inverse as Mesa computes it (`_math_matrix_analyse`).
-    pub modelview_inv: &'a [f32; 16],
-    /// The projection matrix.
-    pub projection: &'a Mat4,
-    /// Projection times modelview, as the fixed-function stage uses it.
-    pub mvp: &'a Mat4,
-    /// Each unit's texture matrix.
-    pub texture: [&'a Mat4; MAX_TEXTURE_UNITS],
-}
-
 /// Where one output component goes in a [`ClipVertex`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Dest {
@@ -246,16 +244,9 @@ pub struct OutputUse {
 /// planes and their enable bits.
 pub type ClipUse = (usize, [[f32; 4]; 8], u8);
 
-/// The words of `m` transposed (`t`) or not.
-fn words(m: &[f32; 16], t: bool) -> Vec<f32> {
-    (0..16)
-        .map(|k| if t { m[(k % 4) * 4 + k / 4] } else { m[k] })
-        .collect()
-}
-
 impl<'a> VertexRun<'a> {
-    /// The run of `shader` with user uniform words `user` (in its slot order, built-ins
-    /// skipped), the matrices `m`, the generic attributes' current values, and the
+    /// The run of `shader` with uniform words `user` (in its slot order, the built-in
+    /// matrices and state included), the generic attributes' current values, and the
     /// varying layout: `vary_of(name, component)` is the varying a user or texture
     /// output component feeds (`None`: nothing reads it); what else the draw takes
     /// (`uses`: the point size, the back colours); the viewport, and whether it
@@ -263,42 +254,12 @@ impl<'a> VertexRun<'a> {
     pub fn new(
         shader: &'a VertShader,
         user: &[u32],
-        m: &Matrices<'_>,
         generic: [[f32; 4]; 16],
         vary_of: impl Fn(&str, usize) -> Option<usize>,
         uses: OutputUse,
         (viewport, fma): (Viewport, bool),
     ) -> Self {
-        let mut uniforms = Vec::new();
-        let mut user = user.iter();
-        for s in &shader.uniforms {
-            let vals: Vec<f32> = match s.name.as_str() {
-                "gl_ModelViewMatrix" => words(&m.modelview.0, false),
-                "gl_ModelViewMatrixTranspose" => words(&m.modelview.0, true),
-                "gl_ProjectionMatrix" => words(&m.projection.0, false),
-                "gl_ProjectionMatrixTranspose" => words(&m.projection.0, true),
-                "gl_ModelViewProjectionMatrix" => words(&m.mvp.0, false),
-                "gl_ModelViewProjectionMatrixTranspose" => words(&m.mvp.0, true),
-                "gl_ModelViewMatrixInverse" => words(m.modelview_inv, false),
-                "gl_ModelViewMatrixInverseTranspose" => words(m.modelview_inv, true),
-                "gl_TextureMatrix" | "gl_TextureMatrixTranspose" => {
-                    let t = s.name.ends_with("Transpose");
-                    m.texture.iter().flat_map(|x| words(&x.0, t)).collect()
-                }
-                "gl_NormalMatrix" => {
-                    // The upper 3×3 of the inverse transpose, column by column.
-                    let inv = m.modelview_inv;
-                    (0..9).map(|k| inv[(k % 3) * 4 + k / 3]).collect()
-                }
-                _ => user
-                    .by_ref()
-                    .take(s.count as usize)
-                    .map(|&w| f32::from_bits(w))
-                    .collect(),
-            };
-            uniforms.extend(vals.iter().take(s.count as usize));
-            uniforms.resize(s.first as usize + s.count as usize, 0.0);
-        }
+        let uniforms = user.iter().map(|&w| f32::from_bits(w)).collect();
         let mut dest = Vec::new();
         for o in &shader.outputs {
             for c in 0..o.count as usize {
