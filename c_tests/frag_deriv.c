@@ -103,11 +103,7 @@ int main(int argc, char **argv)
     glActiveTexture(GL_TEXTURE0);
     frag_mipmapped_texture(tex[0], img);
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, tex[1]);
-    frag_pattern(img, 16, 16, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    frag_pattern_texture(tex[1], img, 16, 1, GL_RGB, GL_NEAREST, GL_LINEAR);
     glActiveTexture(GL_TEXTURE2);
     frag_cube_texture(tex[2], img);
     glActiveTexture(GL_TEXTURE3);

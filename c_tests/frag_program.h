@@ -132,6 +132,19 @@ static inline void frag_cube_texture(GLuint tex, unsigned char *img)
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 }
 
+/* Binds `tex` as a size x size 2D texture of frag_pattern(salt), stored as
+ * `internal`, with the given minification and magnification filters. */
+static inline void frag_pattern_texture(GLuint tex, unsigned char *img, int size, int salt,
+                                        GLenum internal, GLenum min, GLenum mag)
+{
+    glBindTexture(GL_TEXTURE_2D, tex);
+    frag_pattern(img, size, size, salt);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 img);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)mag);
+}
+
 /* Binds `tex` as a 32x32 LINEAR DEPTH_COMPONENT24 2D texture (a saddle of
  * depths around 0.5) compared with GL_LEQUAL. */
 static inline void frag_depth_texture(GLuint tex)

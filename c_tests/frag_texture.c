@@ -125,11 +125,7 @@ int main(int argc, char **argv)
     frag_mipmapped_texture(tex[0], img);
     /* unit 1: 2D RGB, NEAREST, CLAMP_TO_EDGE; also a 1D texture */
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, tex[1]);
-    frag_pattern(img, 16, 16, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    frag_pattern_texture(tex[1], img, 16, 1, GL_RGB, GL_NEAREST, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_1D, tex[5]);

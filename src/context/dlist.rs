@@ -285,6 +285,7 @@ impl Context {
         match op {
             VertexOp::Begin(m) => {
                 self.check_outside_begin()?;
+                self.check_program_samplers()?;
                 let im = &self.immediate;
                 if im.pending != Some(m) || im.indexed != im.replaying {
                     self.flush_pending_keep();

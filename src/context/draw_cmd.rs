@@ -57,6 +57,7 @@ pub(crate) fn draw_arrays(
     }
     check_unmapped(c, false)?;
     c.check_draw_framebuffer()?;
+    c.check_program_samplers()?;
     if !c.arrays.position().enabled || count == 0 {
         return Ok(());
     }
@@ -173,6 +174,7 @@ pub(crate) fn draw_elements(
     let ty = index_type(type_)?;
     check_unmapped(c, true)?;
     c.check_draw_framebuffer()?;
+    c.check_program_samplers()?;
     if !c.arrays.position().enabled || count == 0 {
         return Ok(());
     }

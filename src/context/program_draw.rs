@@ -3,14 +3,24 @@
 //! it has is one the engine runs (a missing stage is fixed function); and nothing
 //! (counted in `program_draws_refused`) otherwise: a draw that ignored the program would
 //! draw something wrong without telling.
+//!
+//! Before any of that, GL 2.0's validation (§2.15.4): a draw whose program has samplers
+//! of different types on one texture unit is GL_INVALID_OPERATION and draws nothing
+//! ([`samplers_conflict`]), as Mesa's `_mesa_sampler_uniforms_are_valid` decides it:
+//! every element of every active sampler uniform counts (an array as long as the link
+//! made it: up to its last element the shaders index, scene `frag_sampler_array`), and
+//! the type is the texture target (`sampler2D`, `sampler2DShadow` and `isampler2D` are one
+//! type; `sampler2D` and `samplerCube` two). glValidateProgram reports the same.
 
 use std::sync::Arc;
 
 use super::program_link::Linked;
 use super::Context;
+use crate::gl::error::{GlError, GlResult};
 use crate::shader::draw::FragShader;
 use crate::shader::vertex_draw::{is_state_uniform, VertShader};
 use crate::shader::Slot;
+use softgl_glsl::types::Type;
 
 /// How a draw treats the current program.
 #[derive(Debug)]
@@ -140,4 +150,41 @@ pub fn uniform_words(linked: &Linked, slots: &[Slot]) -> Option<Vec<u32>> {
         }
     }
     Some(out)
+}
+
+/// Whether `linked` has samplers of different targets on one texture unit.
+pub fn samplers_conflict(linked: &Linked) -> bool {
+    let mut units: Vec<(u32, (softgl_glsl::types::Dim, bool))> = Vec::new();
+    for u in &linked.uniforms {
+        let Type::Sampler(s) = &u.ty else { continue };
+        for &unit in &u.values {
+            let target = (s.dim, s.array);
+            match units.iter().find(|(k, _)| *k == unit) {
+                Some((_, t)) if *t != target => return true,
+                Some(_) => {}
+                None => units.push((unit, target)),
+            }
+        }
+    }
+    false
+}
+
+impl Context {
+    /// GL_INVALID_OPERATION when the current program's samplers of different types name
+    /// one texture unit (the draws' validation, module doc).
+    pub fn check_program_samplers(&self) -> GlResult<()> {
+        if self.shaders.current == 0 {
+            return Ok(());
+        }
+        let linked = self
+            .shaders
+            .table
+            .program(self.shaders.current)
+            .ok()
+            .and_then(|p| p.linked.as_ref());
+        match linked.is_some_and(samplers_conflict) {
+            true => Err(GlError::InvalidOperation),
+            false => Ok(()),
+        }
+    }
 }

@@ -408,11 +408,15 @@ impl Context {
         })
     }
 
-    /// glValidateProgram: valid when linked (softgl has no draw-time conflicts to find
-    /// yet: samplers of different types on one unit are the GL 2.0 case).
+    /// glValidateProgram: valid when linked and no two samplers of different types name
+    /// one texture unit (`program_draw::samplers_conflict`, the draws' check).
     pub fn validate_program(&mut self, program: u32) -> GlResult<()> {
         let p = self.shaders.table.program_mut(program)?;
-        p.validate_status = p.link_status;
+        let conflict = p
+            .linked
+            .as_ref()
+            .is_some_and(super::program_draw::samplers_conflict);
+        p.validate_status = p.link_status && !conflict;
         Ok(())
     }
 

@@ -163,7 +163,7 @@ impl FragShader {
                 .uniforms
                 .iter()
                 .find(|s| s.name == t.sampler)
-                .map(|s| s.first as usize)
+                .map(|s| s.first as usize + usize::from(t.element))
                 .ok_or("a sampler without its uniform")?;
             let mut coords = [None; 4];
             for (d, c) in coords.iter_mut().zip(t.coords) {

@@ -8,7 +8,9 @@
 //! `1 / q`), so the rasterizer samples it before the program runs, with the same samplers
 //! and level-of-detail rules as the fixed-function units, and the program reads the
 //! texel as four f32 input streams (lookup `k`: streams `4k..4k + 4`). The sampler
-//! uniform's value picks the unit at each draw; its type picks the unit's target.
+//! uniform's value picks the unit at each draw; its type picks the unit's target. An
+//! element of a sampler array at a constant index (GLSL 1.10's rule) is a sampler of its
+//! own: its unit is the array's word of that element.
 //!
 //! A lookup whose coordinates the shader computes (any other value, constants included)
 //! is sampled by the program itself: [`Op::Sample`] hands the computed values of a chunk
@@ -29,8 +31,10 @@
 //!
 //! Not lowered (the shader is refused): `texelFetch` and `textureSize` other than on 1D
 //! and 2D samplers, offsets, gradients,
-//! rectangle, array, buffer, multisample, integer and cube-shadow samplers, sampler
-//! arrays, and lookups in vertex shaders.
+//! rectangle, array, buffer, multisample, integer and cube-shadow samplers, a sampler
+//! array indexed by a value that is not constant (GLSL 1.30+ allows it only where it is
+//! dynamically uniform), a sampler array element passed to a function, and lookups in
+//! vertex shaders.
 
 use super::lower::{no, Lower, R};
 use crate::engine::ir::{Op, Val};
@@ -44,6 +48,9 @@ use softgl_glsl::types::{Dim, Scalar, Type};
 pub struct TexUse {
     /// The sampler uniform's name (its value, the unit, is a uniform word).
     pub sampler: String,
+    /// The element of a sampler array (a constant index; 0 for a single sampler): the
+    /// unit is the uniform's word `element`.
+    pub element: u16,
     /// The target its type samples.
     pub target: Target,
     /// The varying planes of s, t, r (the depth reference of a shadow lookup) and q,
@@ -97,14 +104,38 @@ impl Lower<'_> {
                 (proj, kind)
             }
         };
-        let (Type::Sampler(s), ExprKind::Var(id)) = (&args[0].ty, &args[0].kind) else {
+        let Type::Sampler(s) = &args[0].ty else {
             return no("a sampler that is not a uniform variable");
         };
-        let id = self.sampler_alias.get(id).copied().unwrap_or(*id);
+        // A sampler, or an element of an array of them at a constant index.
+        let (id, element) = match &args[0].kind {
+            ExprKind::Var(id) => (*id, 0),
+            ExprKind::Index(base, idx) => {
+                let ExprKind::Var(id) = &base.kind else {
+                    return no("a sampler that is not a uniform variable");
+                };
+                let iv = self.expr(idx)?[0];
+                match self.cval(iv) {
+                    Some(k) => (*id, k as i32),
+                    None => return no("a sampler array indexed by a value that is not constant"),
+                }
+            }
+            _ => return no("a sampler that is not a uniform variable"),
+        };
+        let id = self.sampler_alias.get(&id).copied().unwrap_or(id);
         let var = &self.p.vars[id];
         if var.storage != Storage::Uniform {
             return no("a sampler that is not a uniform variable");
         }
+        let len = match &var.ty {
+            Type::Array(_, Some(n)) => *n as usize,
+            Type::Array(_, None) => return no("an unsized sampler array"),
+            _ => 1,
+        };
+        let element = match usize::try_from(element) {
+            Ok(k) if k < len => k as u16,
+            _ => return no("a sampler array index out of range"),
+        };
         let target = match s.dim {
             _ if s.array || s.texel != Scalar::Float => return no(format!("{}", args[0].ty)),
             Dim::D1 => Target::Tex1D,
@@ -123,13 +154,13 @@ impl Lower<'_> {
             _ => {}
         }
         let sampler = var.name.clone();
-        // The sampler's unit is a uniform word of the draw.
-        self.uniform_slot(&sampler, &[Scalar::Int]);
+        // The sampler's unit is a uniform word of the draw (one per array element).
+        self.uniform_slot(&sampler, &vec![Scalar::Int; len]);
         if kind == LookupKind::Size {
             let l = self.expr(&args[1])?;
             let l = self.op(Op::ItoF(l[0]));
             let zero = self.f32(0.0);
-            let k = self.own_lookup(sampler, target, false, kind)?;
+            let k = self.own_lookup((sampler, element), target, false, kind)?;
             self.op(Op::Sample {
                 lookup: k as u8,
                 s: zero,
@@ -181,10 +212,11 @@ impl Lower<'_> {
             }
         }
         if computed || l.is_some() {
-            return self.sample_computed(sampler, target, &c, pick, (kind, l), ret);
+            return self.sample_computed((sampler, element), target, &c, pick, (kind, l), ret);
         }
         let lookup = TexUse {
             sampler,
+            element,
             target,
             coords,
             proj,
@@ -214,7 +246,7 @@ impl Lower<'_> {
     /// A lookup of its own (the program samples it, [`Op::Sample`]): its index.
     fn own_lookup(
         &mut self,
-        sampler: String,
+        (sampler, element): (String, u16),
         target: Target,
         proj: bool,
         kind: LookupKind,
@@ -224,6 +256,7 @@ impl Lower<'_> {
         }
         self.textures.push(TexUse {
             sampler,
+            element,
             target,
             coords: [None; 4],
             proj,
@@ -240,7 +273,7 @@ impl Lower<'_> {
     /// `1 / q`, NIR's `lower_txp`), absent ones 0.
     fn sample_computed(
         &mut self,
-        sampler: String,
+        sampler: (String, u16),
         target: Target,
         c: &[Val],
         pick: [Option<usize>; 4],
@@ -305,6 +338,7 @@ mod tests {
             l.textures[0],
             TexUse {
                 sampler: "a".into(),
+                element: 0,
                 target: Target::Tex2D,
                 coords: [at(t1), at(t1 + 1), None, at(t1 + 3)],
                 proj: true,
@@ -428,13 +462,13 @@ mod tests {
     }
 
     #[test]
-    fn bias_sampler_arrays_and_vertex_lookups_are_refused() {
+    fn bias_dynamic_sampler_indices_and_vertex_lookups_are_refused() {
         for src in [
             "#version 130
              uniform sampler3D a; out vec4 o; void main() { o = texelFetch(a, ivec3(1), 0); }",
             "#version 130
              uniform sampler2DShadow a; out vec4 o; void main() { o = vec4(textureSize(a, 0), 0, 0) + vec4(textureGrad(a, vec3(0.5), vec2(0.1), vec2(0.1))); }",
-            "uniform sampler2D a[2]; void main() { gl_FragColor = texture2D(a[1], gl_TexCoord[0].st); }",
+            "uniform sampler2D a[2]; uniform int k; void main() { gl_FragColor = texture2D(a[k], gl_TexCoord[0].st); }",
             "uniform sampler2D a; void main() { vec4 c = vec4(0.0);
                for (int i = 0; i < 9; i++) c += texture2D(a, vec2(float(i) * 0.1));
                gl_FragColor = c; }",
@@ -447,5 +481,25 @@ mod tests {
         )
         .expect("compiles");
         assert!(crate::shader::vertex::lower_vertex(&v).is_err());
+    }
+
+    #[test]
+    fn a_sampler_array_element_is_a_sampler_of_its_own() {
+        let p = check(
+            "uniform sampler2D a[3]; uniform samplerCube c;
+             void main() {
+               gl_FragColor = texture2D(a[2], gl_TexCoord[0].st) + texture2D(a[0], gl_TexCoord[0].st)
+                 + textureCube(c, gl_TexCoord[0].xyz);
+             }",
+        );
+        let l = lower_fragment(&p).unwrap();
+        let e: Vec<_> = l
+            .textures
+            .iter()
+            .map(|t| (t.sampler.as_str(), t.element))
+            .collect();
+        assert_eq!(e, [("a", 2), ("a", 0), ("c", 0)]);
+        let a = l.uniforms.iter().find(|s| s.name == "a").unwrap();
+        assert_eq!(a.count, 3, "one unit word per element");
     }
 }
