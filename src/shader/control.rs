@@ -5,7 +5,7 @@
 use super::lower::{no, Lower, Unsupported, R};
 use crate::engine::ir::{Op, Ty, Val};
 use softgl_glsl::hir::{self, Expr, Stmt, Storage, VarId};
-use softgl_glsl::types::Type;
+use softgl_glsl::types::{Scalar, Type};
 
 /// The most iterations an unrolled loop may take.
 const MAX_UNROLL: usize = 1024;
@@ -39,6 +39,17 @@ pub(super) struct FnFrame {
     pub(super) returned: Option<Val>,
     /// Every lane returned.
     pub(super) done: bool,
+    /// The scalars of the function's return value (empty for `void` and `main`): a loop
+    /// that carries [`FnFrame::ret`] across iterations before any `return` starts it at
+    /// zeros of these.
+    pub(super) ret_scalars: Vec<Scalar>,
+}
+
+/// The mutable variables a loop carries an enclosing function's returns in: the lanes
+/// that returned, and each component of the value returned with its type.
+struct RetCarry {
+    returned: u16,
+    value: Vec<(u16, Ty)>,
 }
 
 impl Lower<'_> {
@@ -275,7 +286,9 @@ impl Lower<'_> {
     /// and after the loop), and so does the mask of the lanes that left it; the body
     /// runs again while a lane that reached the loop has not left it. Every write is
     /// selected under the lane mask as in straight code, so the lanes that left keep
-    /// their values. `return` inside such a loop is not lowered.
+    /// their values. The enclosing function's returns are carried the same way
+    /// ([`RetCarry`]): a lane that returns leaves the loop, and its value is selected
+    /// into the function's as in straight code.
     fn dynamic_loop(
         &mut self,
         cond: Option<&Expr>,
@@ -299,20 +312,13 @@ impl Lower<'_> {
         });
         for v in vars {
             let vals = self.read_var(v)?;
-            let mut slots = Vec::new();
-            for x in vals {
-                let Some(ty) = self.b.ty(x) else {
-                    return no("a loop variable without a type");
-                };
-                let id = self.new_var()?;
-                self.op(Op::VarStore(id, x));
-                slots.push((id, ty));
-            }
+            let slots = self.stored(vals)?;
             carried.push((v, slots));
         }
         let broken_var = self.new_var()?;
         let none = self.mask(false);
         self.op(Op::VarStore(broken_var, none));
+        let ret = self.carry_returns()?;
         let id = self.loop_count;
         self.loop_count = id
             .checked_add(1)
@@ -320,8 +326,8 @@ impl Lower<'_> {
         self.op(Op::LoopBegin(id));
         self.exec_memo = None;
         self.load_carried(&carried);
+        self.load_returns(ret.as_ref());
         let broken = self.op(Op::VarLoad(broken_var, Ty::Mask));
-        let returns = self.fns.last().map(|f| (f.returned, f.done));
         self.loops.push(LoopFrame {
             broken: Some(broken),
             ..LoopFrame::default()
@@ -340,9 +346,7 @@ impl Lower<'_> {
         if let (true, Some(c)) = (test_last, cond) {
             self.leave_unless(c)?;
         }
-        if self.fns.last().map(|f| (f.returned, f.done)) != returns {
-            return no("return inside a loop whose trip count is not constant");
-        }
+        self.store_returns(ret.as_ref());
         for (v, slots) in &carried {
             let vals = self.read_var(*v)?;
             for (&(id, _), &x) in slots.iter().zip(&vals) {
@@ -359,7 +363,87 @@ impl Lower<'_> {
         self.loops.pop();
         self.exec_memo = None;
         self.load_carried(&carried);
+        self.load_returns(ret.as_ref());
         Ok(())
+    }
+
+    /// The mutable variables of the enclosing function's returns, set to their values
+    /// before the loop (`None` outside a function frame).
+    fn carry_returns(&mut self) -> R<Option<RetCarry>> {
+        let Some(f) = self.fns.last() else {
+            return Ok(None);
+        };
+        let (returned, value, sc) = (f.returned, f.ret.clone(), f.ret_scalars.clone());
+        let returned = match returned {
+            Some(r) => r,
+            None => self.mask(false),
+        };
+        let value = match value {
+            Some(v) => v,
+            None => sc
+                .iter()
+                .map(|s| match s {
+                    Scalar::Float => self.f32(0.0),
+                    Scalar::Int | Scalar::Uint => self.i32(0),
+                    Scalar::Bool => self.mask(false),
+                })
+                .collect(),
+        };
+        let rv = self.new_var()?;
+        self.op(Op::VarStore(rv, returned));
+        Ok(Some(RetCarry {
+            returned: rv,
+            value: self.stored(value)?,
+        }))
+    }
+
+    /// New mutable variables holding `vals`, each with its type.
+    fn stored(&mut self, vals: Vec<Val>) -> R<Vec<(u16, Ty)>> {
+        let mut slots = Vec::new();
+        for x in vals {
+            let Some(ty) = self.b.ty(x) else {
+                return no("a carried value without a type");
+            };
+            let id = self.new_var()?;
+            self.op(Op::VarStore(id, x));
+            slots.push((id, ty));
+        }
+        Ok(slots)
+    }
+
+    /// The function frame's returns read back from `ret`'s variables.
+    fn load_returns(&mut self, ret: Option<&RetCarry>) {
+        let Some(ret) = ret else { return };
+        let returned = self.op(Op::VarLoad(ret.returned, Ty::Mask));
+        let value: Vec<Val> = ret
+            .value
+            .iter()
+            .map(|&(id, ty)| self.op(Op::VarLoad(id, ty)))
+            .collect();
+        if let Some(f) = self.fns.last_mut() {
+            f.returned = Some(returned);
+            f.done = false;
+            if !value.is_empty() {
+                f.ret = Some(value);
+            }
+        }
+        self.exec_memo = None;
+    }
+
+    /// The function frame's returns stored into `ret`'s variables (every lane when the
+    /// frame says all returned).
+    fn store_returns(&mut self, ret: Option<&RetCarry>) {
+        let Some(ret) = ret else { return };
+        let Some(f) = self.fns.last() else { return };
+        let (done, returned, value) = (f.done, f.returned, f.ret.clone());
+        let returned = match (done, returned) {
+            (false, Some(r)) => r,
+            _ => self.mask(true),
+        };
+        self.op(Op::VarStore(ret.returned, returned));
+        for (&(id, _), x) in ret.value.iter().zip(value.unwrap_or_default()) {
+            self.op(Op::VarStore(id, x));
+        }
     }
 
     /// The lanes running where condition `c` is false leave the loop being lowered.
@@ -513,7 +597,14 @@ impl Lower<'_> {
         let saved_cond = self.cond;
         self.cond = self.exec();
         let saved_loops = std::mem::take(&mut self.loops);
-        self.fns.push(FnFrame::default());
+        let mut ret_scalars = Vec::new();
+        if f.ret != Type::Void {
+            super::lower::scalars(&f.ret, &mut ret_scalars)?;
+        }
+        self.fns.push(FnFrame {
+            ret_scalars,
+            ..FnFrame::default()
+        });
         let r = self.block(body);
         let frame = self.fns.pop().unwrap();
         self.loops = saved_loops;

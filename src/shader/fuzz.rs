@@ -49,6 +49,9 @@ const VOCAB: &[&str] = &[
     ".xyzw",
     "[2]",
     "#version 130\n",
+    "return;",
+    "uniform sampler2D sa[3];",
+    "texture2D(sa[2], ",
 ];
 
 /// The valid corpus: each file's text and whether it is a vertex shader.
@@ -163,6 +166,9 @@ const STATEMENTS: &[&str] = &[
     "a = clamp(a, 0.0, x);",
     "i = (i & 12) | (i ^ k) | ~i;",
     "x = uint(i) < uint(k) ? x : -x;",
+    "a += texture(t[1], a.xy) + texture2D(t[0], v.xy);",
+    "x += settle(x);",
+    "for (int j = 0; j < k; j++) { if (a.x > float(j)) { o = a; return; } a += vec4(0.1); }",
 ];
 
 /// A `#version 130` fragment shader running `picks` of [`STATEMENTS`] in order.
@@ -174,7 +180,10 @@ fn generated(picks: &[usize]) -> String {
     format!(
         "#version 130\n\
          uniform sampler2D s; uniform samplerCube c; uniform sampler2DShadow d;\n\
+         uniform sampler2D t[2];\n\
          uniform int k; uniform float f; in vec4 v; out vec4 o;\n\
+         float settle(float y) {{ for (int j = 0; j < k; j++) {{ y = y * 0.5 + 0.1;\n\
+           if (y < 0.3) return y; }} return 1.0; }}\n\
          void main() {{ vec4 a = v; int i = k; float x = f;\n{}\no = a + vec4(x) + vec4(i); }}\n",
         body.join("\n")
     )

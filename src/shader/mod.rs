@@ -54,7 +54,7 @@
 //! Honest refusals: a draw that cannot run its program draws **nothing** and counts it
 //! (`SOFTGL_STATS=1`: `program_draws_refused`, `program_tris_refused`), rather than
 //! falling back to fixed function and drawing wrong colours. Refused: a shader that does
-//! not lower (`return` inside a loop that does not unroll, `textureGrad`, texel offsets,
+//! not lower (`textureGrad`, texel offsets,
 //! `noperspective` inputs, lookups in vertex shaders …); a fragment shader that reads
 //! (without a vertex shader) `gl_SecondaryColor`, `gl_FogFragCoord` or a user varying,
 //! or has more than 512 uniform components (the light state fits: `gl_LightSource[]` is
