@@ -163,16 +163,16 @@ static inline void frag_depth_texture(GLuint tex)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
-/* Binds a new complete FW x FH framebuffer object: an RGBA8 colour
+/* Binds a new complete FW x FH framebuffer object: a `color_format` colour
  * renderbuffer and a `depth_format` one at `attachment` (the scene fails when
  * it is incomplete). Needs GL_GLEXT_PROTOTYPES. */
-static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
+static inline GLuint frag_fbo_of(GLenum color_format, GLenum depth_format, GLenum attachment)
 {
     GLuint fbo, rb[2];
     glGenFramebuffers(1, &fbo);
     glGenRenderbuffers(2, rb);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, FW, FH);
+    glRenderbufferStorage(GL_RENDERBUFFER, color_format, FW, FH);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
     glRenderbufferStorage(GL_RENDERBUFFER, depth_format, FW, FH);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -180,6 +180,12 @@ static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb[1]);
     SGL_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
     return fbo;
+}
+
+/* frag_fbo_of with an RGBA8 colour renderbuffer. */
+static inline GLuint frag_fbo(GLenum depth_format, GLenum attachment)
+{
+    return frag_fbo_of(GL_RGBA8, depth_format, attachment);
 }
 
 /* n seeded random triangles in [-1.2,1.2]^2 x [-1,1] (defined below). */

@@ -45,6 +45,8 @@ pub enum Key {
         flip: Option<u32>,
         /// The fragment plan (its own `shader` field cleared).
         plan: crate::fragment::FragPlan,
+        /// The walk stores the colours (`super::draw::host_store`).
+        host: bool,
     },
 }
 

@@ -16,7 +16,7 @@ use super::cache;
 use super::exec::{ChunkIn, Io, Program, Scratch, TexSampler, MAX_BATCH};
 use super::ff::FfState;
 use super::lower::planes_into;
-use crate::fragment::span::{TexLanes, LANES};
+use crate::fragment::span::{store_chunk, unorm8, write_colors, StoreFormat, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
 use crate::geometry::setup::SetupTriangle;
@@ -59,6 +59,8 @@ struct State {
     first: usize,
     /// The program's uniforms.
     uniforms: [f32; MAX_UNIFORMS],
+    /// The program's outputs (a store outside the program: [`host_store`]).
+    outs: Vec<[u32; 8]>,
     len: usize,
     /// The pending chunks' pixels: per 8-pixel block of the buffers (its index / 8, plus
     /// one; 0 is an empty slot) the lanes covered, by open addressing. A chunk covers at
@@ -95,6 +97,7 @@ impl State {
             sets: 0,
             first: 0,
             uniforms: [0.0; MAX_UNIFORMS],
+            outs: Vec::new(),
             len: 0,
             cover: [(0, 0); COVER],
             used: [0; 2 * MAX_BATCH],
@@ -176,6 +179,8 @@ pub struct Walk {
     own_uniforms: bool,
     /// The walk's triangles face front (the stencil face).
     front: bool,
+    /// The plan whose colour store runs after the program ([`host_store`]).
+    host: Option<Box<FragPlan>>,
 }
 
 /// Which triangles the engine shades (`SOFTGL_ENGINE`).
@@ -185,6 +190,14 @@ pub fn mode() -> crate::tuning::Engine {
 }
 
 /// Whether the engine writes `fb`: an RGBA8 layout, not a wide buffer.
+/// Whether a program's variant for `plan` drawing into `fb` leaves its colour store to
+/// the walk ([`super::ff::tail_buffers`]' `host`): wide and sRGB targets, logic ops, and
+/// the formats without a packed RGBA8 word, which the per-fragment stores of
+/// [`crate::fragment::span`] write.
+pub fn host_store(plan: &FragPlan, fb: &Target<'_>) -> bool {
+    !target_ok(fb) || plan.logic.is_some() || plan.srgb
+}
+
 fn target_ok(fb: &Target<'_>) -> bool {
     fb.wide.is_none()
         && matches!(
@@ -245,6 +258,7 @@ impl Walk {
             count_samples: plan.count_samples,
             own_uniforms: false,
             front: true,
+            host: None,
         })
     }
 
@@ -266,7 +280,12 @@ impl Walk {
             smooth: None,
             ..*plan
         };
-        if !target_ok(fb) || !super::ff::covers_tail(&tail) || units > MAX_TEXTURE_UNITS {
+        let host = host_store(plan, fb);
+        let covered = match host {
+            true => super::ff::covers_host_tail(&tail),
+            false => super::ff::covers_tail(&tail),
+        };
+        if !covered || units > MAX_TEXTURE_UNITS {
             return None;
         }
         let mut st = STATE.with(|s| s.take()).unwrap_or_else(State::new);
@@ -283,6 +302,12 @@ impl Walk {
             count_samples: plan.count_samples,
             own_uniforms: true,
             front,
+            host: host.then(|| {
+                Box::new(FragPlan {
+                    shader: None,
+                    ..*plan
+                })
+            }),
         })
     }
 
@@ -462,7 +487,12 @@ impl Walk {
         for (s, i) in inputs.iter_mut().enumerate().take(4 * self.units) {
             *i = &st.streams[s * MAX_BATCH..s * MAX_BATCH + n];
         }
+        let per = self.prog.outputs();
+        if st.outs.len() < n * per {
+            st.outs.resize(n * per, [0; 8]);
+        }
         let mut io = Io {
+            outputs: &mut st.outs[..n * per],
             planes: &st.planes,
             inputs: &inputs[..4 * self.units],
             color: &mut *fb.color,
@@ -480,6 +510,10 @@ impl Walk {
         stats.depth_failed += c.depth_failed;
         stats.stencil_reads += c.stencil_reads;
         stats.stencil_failed += c.stencil_failed;
+        if let Some(plan) = &self.host {
+            store_outputs(plan, st, n, per, fb, stats);
+            return;
+        }
         for (&out, &w) in st.live_out[..n].iter().zip(&st.ns[..n]) {
             let passed = u64::from(out.count_ones());
             if self.count_samples {
@@ -511,5 +545,57 @@ impl Walk {
         self.flush(fb, stats, tex);
         self.st.sets = 0;
         STATE.with(|s| s.set(Some(self.st)));
+    }
+}
+
+/// Stores the colours a host-store program ([`host_store`]) left in its outputs for the
+/// live lanes of the `n` chunks of `st` (`per` outputs per chunk), as the fixed-function
+/// walk stores them: draw buffer 0 through [`store_chunk`] (wide, sRGB, logic ops and
+/// every format), draw buffers 1.. through [`write_colors`]; samples passed counted.
+fn store_outputs(
+    plan: &FragPlan,
+    st: &State,
+    n: usize,
+    per: usize,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    let out = StoreFormat::of(fb);
+    for k in 0..n {
+        let bits = st.live_out[k];
+        if plan.count_samples {
+            stats.samples_passed += u64::from(bits.count_ones());
+        }
+        if bits == 0 || per == 0 {
+            continue;
+        }
+        let (idx, w) = (st.chunks[k].idx, usize::from(st.ns[k]));
+        let live: [bool; LANES] = std::array::from_fn(|i| bits >> i & 1 != 0);
+        let colors = |b: usize| -> [[f32; LANES]; 4] {
+            std::array::from_fn(|ch| st.outs[k * per + 4 * b + ch].map(f32::from_bits))
+        };
+        let bytes = |cf: &[[f32; LANES]; 4]| -> [[u8; LANES]; 4] {
+            std::array::from_fn(|ch| cf[ch].map(unorm8))
+        };
+        let cf = colors(0);
+        let mut rows = fb.plane(0);
+        store_chunk::<true, true>(
+            plan,
+            out,
+            &mut rows,
+            (idx, w),
+            &live,
+            bytes(&cf),
+            &cf,
+            stats,
+        );
+        for (b, more) in fb.more_colors.iter_mut().enumerate() {
+            if plan.more_buffers & 1 << b == 0 || 4 * (b + 2) > per {
+                continue;
+            }
+            let cf = colors(b + 1);
+            let dst = &mut more[idx..idx + w];
+            write_colors::<true>(plan, out.format, dst, bytes(&cf), &live, stats);
+        }
     }
 }

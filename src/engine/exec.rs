@@ -109,6 +109,10 @@ pub struct Io<'a> {
     /// Samples [`Op::Sample`]'s lookups (a program with one and no sampler gets
     /// (0, 0, 0, 1)).
     pub sampler: Option<&'a dyn TexSampler>,
+    /// Receives [`Op::Output`]'s values: output `n` of chunk `k` at
+    /// `k · Program::outputs() + n` (empty when the program has none; a fragment
+    /// program's colours for a store outside the program, `engine::draw`).
+    pub outputs: &'a mut [[u32; 8]],
 }
 
 /// The draw buffers of `io` as [`Ctx::colors`] holds them.
@@ -668,8 +672,8 @@ impl Program {
             false => batch.clamp(1, MAX_BATCH),
         };
         assert!(
-            self.outputs == 0,
-            "a program with outputs runs by run_streams"
+            io.outputs.len() >= chunks.len() * self.outputs,
+            "too few outputs"
         );
         assert!(io.inputs.len() >= self.inputs);
         assert!(io.uniforms.len() >= self.uniforms);
@@ -724,8 +728,8 @@ impl Program {
             stencil: io.stencil.as_mut_ptr(),
             stencils: &self.stencils,
             front: io.front,
-            outs: std::ptr::null_mut(),
-            outs_per: 0,
+            outs: io.outputs.as_mut_ptr(),
+            outs_per: self.outputs,
             sampler: io.sampler,
             texels: match self.samples {
                 true => scratch.texels.as_mut_ptr(),
@@ -736,7 +740,8 @@ impl Program {
         };
         // SAFETY: the steps' slots are below `self.slots` (compile) and the register file
         // holds `slots * stride` values; the chunks' live lanes lie in the buffers
-        // (checked above); the kernels were chosen for a level this CPU has (compile).
+        // (checked above), as do the chunks' outputs; the kernels were chosen for a level
+        // this CPU has (compile).
         unsafe {
             for s in &self.prologue {
                 (s.k)(&mut ctx, s);

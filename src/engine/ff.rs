@@ -51,10 +51,14 @@ pub fn covers(plan: &FragPlan) -> bool {
 /// Whether [`tail`] lowers `plan`'s per-fragment operations (logic ops, smoothing,
 /// multisampling, sRGB and Z32 unorm depth do not).
 pub fn covers_tail(plan: &FragPlan) -> bool {
-    plan.logic.is_none()
-        && plan.smooth.is_none()
+    plan.logic.is_none() && !plan.srgb && covers_host_tail(plan)
+}
+
+/// Whether [`tail_buffers`] lowers `plan`'s per-fragment operations when the colour
+/// store is the caller's (`host`): logic ops and sRGB writes are then the store's.
+pub fn covers_host_tail(plan: &FragPlan) -> bool {
+    plan.smooth.is_none()
         && plan.ms.is_none()
-        && !plan.srgb
         && plan.depth.is_none_or(|d| {
             matches!(
                 d.format,
@@ -440,16 +444,22 @@ fn quantised_depth(b: &mut Builder, format: DepthFormat) -> Option<Val> {
 /// store, into every draw buffer the plan has (fixed function writes its colour to
 /// each). `None` when the depth format is not lowered.
 pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
-    tail_buffers(b, p, &[color; 1 + MORE_COLORS])
+    tail_buffers(b, p, &[color; 1 + MORE_COLORS], false)
 }
 
 /// [`tail`] with draw buffer k's colour `colors[k]` (a fragment shader's
 /// `gl_FragData[k]`); the alpha test reads draw buffer 0's. Each draw buffer is blended
 /// and masked alike (GL 2.0 has one blend state and one colour mask).
+///
+/// With `host` the program stops after the tests: draw buffer k's colour channel c is
+/// its [`Op::Output`] `4k + c` (unclamped), and the caller stores the live lanes
+/// (`engine::draw`: wide, sRGB and logic-op targets and the formats without a packed
+/// RGBA8 word, through the per-fragment stores of `crate::fragment`).
 pub fn tail_buffers(
     b: &mut Builder,
     p: &FragPlan,
     colors: &[[Val; 4]; 1 + MORE_COLORS],
+    host: bool,
 ) -> Option<()> {
     let px = b.push(Op::PackUnorm8(colors[0]));
     alpha_test(b, p, px);
@@ -479,6 +489,12 @@ pub fn tail_buffers(
     }
     for (n, c) in colors.iter().enumerate() {
         if n > 0 && p.more_buffers & 1 << (n - 1) == 0 {
+            continue;
+        }
+        if host {
+            for (ch, &v) in c.iter().enumerate() {
+                b.push(Op::Output((4 * n + ch) as u16, v));
+            }
             continue;
         }
         let px = match n > 0 && *c != colors[0] {

@@ -269,6 +269,7 @@ pub(super) fn run_prepared(
         sampler: None,
         stencil: &mut [],
         front: true,
+        outputs: &mut [],
     };
     prog.run(scratch, &mut io, &p.chunks, batch);
 }
@@ -517,6 +518,7 @@ pub(super) fn colour_io<'a>(
         sampler: None,
         stencil: &mut [],
         front: true,
+        outputs: &mut [],
     }
 }
 

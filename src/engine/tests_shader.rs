@@ -267,6 +267,7 @@ fn run_pairs(
         sampler,
         stencil: &mut [],
         front: true,
+        outputs: &mut [],
     };
     prog.run(&mut Scratch::default(), &mut io, &chunks, batch);
     color

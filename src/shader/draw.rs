@@ -222,8 +222,9 @@ impl FragShader {
         }
     }
 
-    /// The variant of this shader under `plan` (see the module doc).
-    fn variant(&self, flip: Option<u32>, plan: &FragPlan) -> Option<Ir> {
+    /// The variant of this shader under `plan` (see the module doc); with `host` the walk
+    /// stores its colours ([`crate::engine::draw::host_store`]).
+    fn variant(&self, flip: Option<u32>, plan: &FragPlan, host: bool) -> Option<Ir> {
         let opts = Options {
             flip_height: flip.map(|h| h as f32),
             flat_colors: plan.flat,
@@ -255,7 +256,7 @@ impl FragShader {
             Some(s) => crate::engine::ff::smooth_colors(&mut b, s, &l.colors),
             None => l.colors,
         };
-        crate::engine::ff::tail_buffers(&mut b, plan, &colors)?;
+        crate::engine::ff::tail_buffers(&mut b, plan, &colors, host)?;
         b.finish().ok()
     }
 }
@@ -295,6 +296,7 @@ fn lookup(id: u64) -> Option<Arc<FragShader>> {
 /// `fb`, or `None` when the engine does not draw this plan or target (the caller draws
 /// nothing and counts it).
 pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>, front: bool) -> Option<Walk> {
+    let host = crate::engine::draw::host_store(plan, fb);
     let key = Key::Shader {
         id: sh.id,
         flip: sh.flip,
@@ -302,8 +304,9 @@ pub fn walk(sh: &ShaderRef, plan: &FragPlan, fb: &Target<'_>, front: bool) -> Op
             shader: None,
             ..*plan
         },
+        host,
     };
-    let prog = program_of(&key, || lookup(sh.id)?.variant(sh.flip, plan))?;
+    let prog = program_of(&key, || lookup(sh.id)?.variant(sh.flip, plan, host))?;
     let mut uniforms = sh.uniforms;
     if let Some(k) = sh.facing {
         uniforms[usize::from(k)] = u32::from(front);

@@ -199,6 +199,7 @@ pub fn ours(c: &Case, isa: Isa) -> Result<Vec<f32>, String> {
             sampler: None,
             stencil: &mut [],
             front: true,
+            outputs: &mut [],
         };
         prog.run(&mut scratch, &mut io, &chunks, 32);
         for (i, px) in color.iter().enumerate() {
