@@ -413,11 +413,23 @@ pub fn lower(s: &FfState) -> Option<Ir> {
     l.b.finish().ok()
 }
 
-/// The depth plane at the pixel clamped to [0, 1] and quantised as `format` stores it
-/// (`fragment::span::quantize_depth`), `None` for a format the engine does not draw.
-fn quantised_depth(b: &mut Builder, format: DepthFormat) -> Option<Val> {
-    let z = b.push(Op::Interp(PLANE_Z));
-    let z = b.push(Op::Sat(z));
+/// The depth plane at the pixel clamped to [0, 1] (NaN to 0), or the shader's depth
+/// `written` clamped as `lp_build_depth_clamp` does (`lp_build_clamp`: `minps` with 1,
+/// then `maxps` with 0, so NaN becomes 1, as probed against llvmpipe), quantised as
+/// `format` stores it (`fragment::span::quantize_depth`); `None` for a format the engine
+/// does not draw.
+fn quantised_depth(b: &mut Builder, format: DepthFormat, written: Option<Val>) -> Option<Val> {
+    let z = match written {
+        Some(z) => {
+            let (one, zero) = (b.f32(1.0), b.f32(0.0));
+            let z = b.push(Op::Min(z, one));
+            b.push(Op::Max(z, zero))
+        }
+        None => {
+            let z = b.push(Op::Interp(PLANE_Z));
+            b.push(Op::Sat(z))
+        }
+    };
     Some(match format {
         DepthFormat::Z24 => {
             let scale = b.f32(16_777_215.0);
@@ -444,12 +456,13 @@ fn quantised_depth(b: &mut Builder, format: DepthFormat) -> Option<Val> {
 /// store, into every draw buffer the plan has (fixed function writes its colour to
 /// each). `None` when the depth format is not lowered.
 pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
-    tail_buffers(b, p, &[color; 1 + MORE_COLORS], false)
+    tail_buffers(b, p, &[color; 1 + MORE_COLORS], None, false)
 }
 
 /// [`tail`] with draw buffer k's colour `colors[k]` (a fragment shader's
 /// `gl_FragData[k]`); the alpha test reads draw buffer 0's. Each draw buffer is blended
-/// and masked alike (GL 2.0 has one blend state and one colour mask).
+/// and masked alike (GL 2.0 has one blend state and one colour mask). A shader's
+/// `gl_FragDepth` value `written` replaces the interpolated depth in the tests.
 ///
 /// With `host` the program stops after the tests: draw buffer k's colour channel c is
 /// its [`Op::Output`] `4k + c` (unclamped), and the caller stores the live lanes
@@ -459,6 +472,7 @@ pub fn tail_buffers(
     b: &mut Builder,
     p: &FragPlan,
     colors: &[[Val; 4]; 1 + MORE_COLORS],
+    written: Option<Val>,
     host: bool,
 ) -> Option<()> {
     let px = b.push(Op::PackUnorm8(colors[0]));
@@ -466,12 +480,12 @@ pub fn tail_buffers(
     if let Some(stencil) = p.stencil {
         let depth = p.depth.map(|d| (d.func, d.write));
         let z = match p.depth {
-            Some(d) => quantised_depth(b, d.format)?,
+            Some(d) => quantised_depth(b, d.format, written)?,
             None => b.i32(0),
         };
         b.push(Op::StencilDepth { stencil, depth, z });
     } else if let Some(d) = p.depth {
-        let q = quantised_depth(b, d.format)?;
+        let q = quantised_depth(b, d.format, written)?;
         b.push(Op::DepthTest {
             func: d.func,
             write: d.write,

@@ -256,7 +256,7 @@ impl FragShader {
             Some(s) => crate::engine::ff::smooth_colors(&mut b, s, &l.colors),
             None => l.colors,
         };
-        crate::engine::ff::tail_buffers(&mut b, plan, &colors, host)?;
+        crate::engine::ff::tail_buffers(&mut b, plan, &colors, l.depth, host)?;
         b.finish().ok()
     }
 }

@@ -52,6 +52,7 @@ const VOCAB: &[&str] = &[
     "return;",
     "uniform sampler2D sa[3];",
     "texture2D(sa[2], ",
+    "gl_FragDepth = ",
 ];
 
 /// The valid corpus: each file's text and whether it is a vertex shader.
@@ -168,6 +169,7 @@ const STATEMENTS: &[&str] = &[
     "x = uint(i) < uint(k) ? x : -x;",
     "a += texture(t[1], a.xy) + texture2D(t[0], v.xy);",
     "x += settle(x);",
+    "if (x > 0.2) gl_FragDepth = x; else gl_FragDepth = a.z;",
     "for (int j = 0; j < k; j++) { if (a.x > float(j)) { o = a; return; } a += vec4(0.1); }",
 ];
 

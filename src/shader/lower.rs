@@ -19,6 +19,10 @@
 //! perspective-corrected as llvmpipe does (`a_plane · (1 / w_plane)`, plane
 //! [`PLANE_INV_W`]); `gl_FragCoord` is the pixel centre, the z plane [`PLANE_Z`] and 1/w.
 //! The arithmetic of each built-in function is llvmpipe's (see [`super::builtins`]).
+//!
+//! Outputs: the colours ([`Lowered::colors`]) and a written `gl_FragDepth`
+//! ([`Lowered::depth`]), which the draw's tail tests instead of the z plane
+//! (`crate::engine::ff::tail_buffers`).
 
 use super::control::{FnFrame, LoopFrame};
 pub use super::texture::TexUse;
@@ -74,6 +78,9 @@ pub struct Lowered {
     /// The texture lookups, in the order of their input streams (lookup `k`'s texel is
     /// streams `4k..4k + 4`, [`Op::InputF`]).
     pub textures: Vec<TexUse>,
+    /// The value written to `gl_FragDepth`, which replaces the interpolated depth in the
+    /// tests (`None` when the shader never writes it).
+    pub depth: Option<Val>,
 }
 
 /// What the lowering of a shader for a draw depends on besides the shader.
@@ -235,10 +242,17 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
         }
         _ => {}
     }
+    let depth = p
+        .vars
+        .iter()
+        .position(|v| v.name == "gl_FragDepth")
+        .and_then(|i| l.env.get(&i))
+        .map(|d| d[0]);
     let ir =
         l.b.finish()
             .map_err(|e| Unsupported(format!("IR type error {e:?}")))?;
     Ok(Lowered {
+        depth,
         ir,
         color: colors[0],
         colors,
