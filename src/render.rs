@@ -127,9 +127,9 @@ pub unsafe fn run<S: VertexSource + ?Sized>(
         *prims,
     );
     // A fragment shader runs on triangles, lines and points (see `shader::draw`), also
-    // through the polygon pipeline (unfilled modes, offsets, stipple) and smoothed;
-    // multisampling draws nothing.
-    if *unfit || (plan.shader.is_some() && plan.ms.is_some()) {
+    // through the polygon pipeline (unfilled modes, offsets, stipple), smoothed and
+    // multisampled.
+    if *unfit {
         stats.program_draws_refused += 1;
         if let Some(a) = adopt {
             a.settle(stats, Some(&mut *fb));

@@ -16,6 +16,7 @@ use super::cache;
 use super::exec::{ChunkIn, Io, Program, Scratch, TexSampler, MAX_BATCH};
 use super::ff::FfState;
 use super::lower::planes_into;
+use crate::fragment::multisample::SAMPLES;
 use crate::fragment::span::{store_chunk, unorm8, write_colors, StoreFormat, TexLanes, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::{ColorFormat, Target};
@@ -61,6 +62,8 @@ struct State {
     uniforms: [f32; MAX_UNIFORMS],
     /// The program's outputs (a store outside the program: [`host_store`]).
     outs: Vec<[u32; 8]>,
+    /// Each chunk's coverage per sample (bit i: lane i) in a multisample walk.
+    covs: [[u8; SAMPLES]; MAX_BATCH],
     len: usize,
     /// The pending chunks' pixels: per 8-pixel block of the buffers (its index / 8, plus
     /// one; 0 is an empty slot) the lanes covered, by open addressing. A chunk covers at
@@ -98,6 +101,7 @@ impl State {
             first: 0,
             uniforms: [0.0; MAX_UNIFORMS],
             outs: Vec::new(),
+            covs: [[0; SAMPLES]; MAX_BATCH],
             len: 0,
             cover: [(0, 0); COVER],
             used: [0; 2 * MAX_BATCH],
@@ -181,6 +185,11 @@ pub struct Walk {
     front: bool,
     /// The plan whose colour store runs after the program ([`host_store`]).
     host: Option<Box<FragPlan>>,
+    /// What the rows' pixel coordinates add: 0.5 in a multisample walk, whose planes are
+    /// evaluated at the pixel centres (`crate::fragment::multisample`).
+    centre: f32,
+    /// The sample coverage of the next rows ([`Walk::cover`]), per row of a pair.
+    next_cov: [[u8; SAMPLES]; 2],
 }
 
 /// Which triangles the engine shades (`SOFTGL_ENGINE`).
@@ -193,9 +202,10 @@ pub fn mode() -> crate::tuning::Engine {
 /// Whether a program's variant for `plan` drawing into `fb` leaves its colour store to
 /// the walk ([`super::ff::tail_buffers`]' `host`): wide and sRGB targets, logic ops, and
 /// the formats without a packed RGBA8 word, which the per-fragment stores of
-/// [`crate::fragment::span`] write.
+/// [`crate::fragment::span`] write; and multisampling, whose stencil and depth tests
+/// and stores run per sample ([`store_samples`]).
 pub fn host_store(plan: &FragPlan, fb: &Target<'_>) -> bool {
-    !target_ok(fb) || plan.logic.is_some() || plan.srgb
+    !target_ok(fb) || plan.logic.is_some() || plan.srgb || plan.ms.is_some()
 }
 
 fn target_ok(fb: &Target<'_>) -> bool {
@@ -259,6 +269,8 @@ impl Walk {
             own_uniforms: false,
             front: true,
             host: None,
+            centre: 0.0,
+            next_cov: [[0; SAMPLES]; 2],
         })
     }
 
@@ -308,6 +320,8 @@ impl Walk {
                     ..*plan
                 })
             }),
+            centre: if plan.ms.is_some() { 0.5 } else { 0.0 },
+            next_cov: [[0; SAMPLES]; 2],
         })
     }
 
@@ -391,12 +405,13 @@ impl Walk {
         let k = st.len;
         st.chunks[k] = ChunkIn {
             idx,
-            fx: x as f32,
-            fy: py as f32,
+            fx: x as f32 + self.centre,
+            fy: py as f32 + self.centre,
             live,
             planes: ((st.sets - 1) * self.set) as u32,
         };
         st.ns[k] = inside as u8;
+        st.covs[k] = self.next_cov[py & 1];
         for (u, lanes) in tex.iter().enumerate().take(self.units) {
             // Stream 4u + ch of chunk k.
             crate::simd::pack::channels_into(
@@ -407,6 +422,13 @@ impl Walk {
             );
         }
         st.len += 1;
+    }
+
+    /// Sets the sample coverage of the rows added next (a multisample walk): `cov[r][s]`
+    /// bit i for sample s of lane i of the pair's row r (a lone row's parity picks r).
+    #[inline]
+    pub fn cover(&mut self, cov: [[u8; SAMPLES]; 2]) {
+        self.next_cov = cov;
     }
 
     /// Whether the walk's program reads 2x2 quads ([`Program::quads`]): its rows come
@@ -511,7 +533,10 @@ impl Walk {
         stats.stencil_reads += c.stencil_reads;
         stats.stencil_failed += c.stencil_failed;
         if let Some(plan) = &self.host {
-            store_outputs(plan, st, n, per, fb, stats);
+            match plan.ms {
+                Some(_) => store_samples(plan, st, n, per, self.front, fb, stats),
+                None => store_outputs(plan, st, n, per, fb, stats),
+            }
             return;
         }
         for (&out, &w) in st.live_out[..n].iter().zip(&st.ns[..n]) {
@@ -596,6 +621,118 @@ fn store_outputs(
             let cf = colors(b + 1);
             let dst = &mut more[idx..idx + w];
             write_colors::<true>(plan, out.format, dst, bytes(&cf), &live, stats);
+        }
+    }
+}
+
+/// The per-sample half of a multisample program's chunks, as
+/// `crate::fragment::multisample` runs it for fixed function: for each sample of the
+/// plan's mask, the chunk's live lanes (after the program's discards and alpha test)
+/// that cover it and pass alpha to coverage; the stencil and depth tests at the sample
+/// point (the z plane there, or the written depth clamped as `lp_build_depth_clamp`
+/// does, [`super::ff::DEPTH_OUTPUT`]); and the store into the sample's plane.
+#[allow(clippy::too_many_arguments)]
+fn store_samples(
+    plan: &FragPlan,
+    st: &State,
+    n: usize,
+    per: usize,
+    front: bool,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    use crate::fragment::span::{eval, quantize_depth, stencil_depth_q, Fused, Unfused};
+    use crate::fragment::MsPass;
+    let Some(ms) = plan.ms else {
+        return;
+    };
+    let out = StoreFormat::of(fb);
+    let fused = crate::cpu::isa().fused();
+    let colors = per >= 4 && plan.color_mask != [false; 4];
+    let written = usize::from(super::ff::DEPTH_OUTPUT);
+    for k in 0..n {
+        let bits = st.live_out[k];
+        if bits == 0 {
+            continue;
+        }
+        let c = st.chunks[k];
+        let (idx, w) = (c.idx, usize::from(st.ns[k]));
+        // The pixel's corner: the chunk's coordinates are its centre (`Walk::centre`).
+        let (x, y) = (c.fx - 0.5, c.fy - 0.5);
+        let cf: [[f32; LANES]; 4] = std::array::from_fn(|ch| match colors {
+            true => st.outs[k * per + ch].map(f32::from_bits),
+            false => [0.0; LANES],
+        });
+        let c8: [[u8; LANES]; 4] = std::array::from_fn(|ch| cf[ch].map(unorm8));
+        // `minps` with 1 then `maxps` with 0: NaN becomes 1.
+        let shader_z = (per > written).then(|| {
+            st.outs[k * per + written].map(|b| {
+                let z = f32::from_bits(b);
+                let z = if z < 1.0 { z } else { 1.0 };
+                if z > 0.0 {
+                    z
+                } else {
+                    0.0
+                }
+            })
+        });
+        let [a0, dadx, dady] = st.planes[c.planes as usize + usize::from(super::lower::PLANE_Z)];
+        let zp = crate::geometry::setup::Plane { a0, dadx, dady };
+        for s in 0..SAMPLES {
+            if ms.mask & (1 << s) == 0 {
+                continue;
+            }
+            let cov = st.covs[k][s] & bits;
+            let mut ls: [bool; LANES] = std::array::from_fn(|i| cov >> i & 1 != 0);
+            if ms.alpha_to_coverage {
+                let threshold = MsPass::coverage_threshold(s);
+                for (l, &a) in ls.iter_mut().zip(&cf[3]) {
+                    // NaN alpha keeps no sample, as the ordered compare.
+                    *l &= a > threshold;
+                }
+            }
+            if !ls.iter().any(|&l| l) {
+                continue;
+            }
+            let mut rows = fb.plane(s);
+            match plan.depth {
+                Some(d) => {
+                    let [sx, sy] = MsPass::pos(s);
+                    let q: [u32; LANES] = std::array::from_fn(|i| {
+                        let z = match &shader_z {
+                            Some(z) => z[i],
+                            None if fused => eval::<Fused>(&zp, x + i as f32 + sx, y + sy),
+                            None => eval::<Unfused>(&zp, x + i as f32 + sx, y + sy),
+                        };
+                        quantize_depth(d.format, z)
+                    });
+                    stencil_depth_q::<true, true>(
+                        front,
+                        plan,
+                        &mut rows,
+                        (idx, w),
+                        &q,
+                        &mut ls,
+                        stats,
+                    )
+                }
+                None => {
+                    let q = [0; LANES];
+                    stencil_depth_q::<false, true>(
+                        front,
+                        plan,
+                        &mut rows,
+                        (idx, w),
+                        &q,
+                        &mut ls,
+                        stats,
+                    )
+                }
+            }
+            if !colors || !ls.iter().any(|&l| l) {
+                continue;
+            }
+            store_chunk::<true, true>(plan, out, &mut rows, (idx, w), &ls, c8, &cf, stats);
         }
     }
 }

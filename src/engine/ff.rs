@@ -26,6 +26,10 @@ use crate::pipe::FogMode;
 use crate::texture::env::{Arg, Combine, CombineFn, Operand, Source};
 use std::collections::HashMap;
 
+/// The [`Op::Output`] of a multisample variant's written `gl_FragDepth` (after the draw
+/// buffers' colours): the walk runs the stencil and depth tests of each sample itself.
+pub const DEPTH_OUTPUT: u16 = 4 * (1 + MORE_COLORS) as u16;
+
 /// What the lowering reads: the fragment plan, the units' combiners, whether varyings take
 /// the perspective divide. Per-triangle values (planes, flat colours, texels) are run
 /// inputs, so one program serves every triangle of a state.
@@ -51,14 +55,19 @@ pub fn covers(plan: &FragPlan) -> bool {
 /// Whether [`tail`] lowers `plan`'s per-fragment operations (logic ops, smoothing,
 /// multisampling, sRGB and Z32 unorm depth do not).
 pub fn covers_tail(plan: &FragPlan) -> bool {
-    plan.logic.is_none() && !plan.srgb && covers_host_tail(plan)
+    plan.logic.is_none() && !plan.srgb && plan.smooth.is_none() && covers_tests(plan)
 }
 
 /// Whether [`tail_buffers`] lowers `plan`'s per-fragment operations when the colour
-/// store is the caller's (`host`): logic ops and sRGB writes are then the store's.
+/// store is the caller's (`host`): logic ops and sRGB writes are then the store's, and
+/// under multisampling so are the stencil and depth tests (per sample).
 pub fn covers_host_tail(plan: &FragPlan) -> bool {
-    plan.smooth.is_none()
-        && plan.ms.is_none()
+    plan.smooth.is_none() && (plan.ms.is_some() || covers_tests(plan))
+}
+
+/// Whether the program lowers `plan`'s depth test (and without multisampling).
+fn covers_tests(plan: &FragPlan) -> bool {
+    plan.ms.is_none()
         && plan.depth.is_none_or(|d| {
             matches!(
                 d.format,
@@ -465,7 +474,8 @@ pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
 /// `gl_FragDepth` value `written` replaces the interpolated depth in the tests.
 ///
 /// With `host` the program stops after the tests: draw buffer k's colour channel c is
-/// its [`Op::Output`] `4k + c` (unclamped), and the caller stores the live lanes
+/// its [`Op::Output`] `4k + c` (unclamped), and the caller stores the live lanes; a
+/// multisample plan (`host` only) leaves the stencil and depth tests to the caller too
 /// (`engine::draw`: wide, sRGB and logic-op targets and the formats without a packed
 /// RGBA8 word, through the per-fragment stores of `crate::fragment`).
 pub fn tail_buffers(
@@ -477,7 +487,13 @@ pub fn tail_buffers(
 ) -> Option<()> {
     let px = b.push(Op::PackUnorm8(colors[0]));
     alpha_test(b, p, px);
-    if let Some(stencil) = p.stencil {
+    if p.ms.is_some() {
+        // The walk tests each sample ([`DEPTH_OUTPUT`]).
+        assert!(host, "a multisample variant stores in the walk");
+        if let Some(z) = written {
+            b.push(Op::Output(DEPTH_OUTPUT, z));
+        }
+    } else if let Some(stencil) = p.stencil {
         let depth = p.depth.map(|d| (d.func, d.write));
         let z = match p.depth {
             Some(d) => quantised_depth(b, d.format, written)?,

@@ -92,7 +92,7 @@ pub fn unorm8(c: f32) -> u8 {
 
 /// A clamped depth quantised as [`DepthFormat::quantize`] does, vectorisable.
 #[inline(always)]
-fn quantize_depth(format: DepthFormat, z: f32) -> u32 {
+pub(crate) fn quantize_depth(format: DepthFormat, z: f32) -> u32 {
     let z = if z > 0.0 { z } else { 0.0 };
     let z = if z < 1.0 { z } else { 1.0 };
     match format {
@@ -687,8 +687,28 @@ pub(crate) fn stencil_depth<M: Madd, const DEPTH: bool, const FULL: bool>(
     live: &mut [bool; LANES],
     stats: &mut Stats,
 ) {
-    let (row, n) = (at.row, at.n);
-    let stencil = plan.stencil.map(|s| if t.front { s.front } else { s.back });
+    let mut q = [0u32; LANES];
+    if DEPTH {
+        let d = plan.depth.expect("DEPTH implies a depth plan");
+        for i in 0..LANES {
+            q[i] = quantize_depth(d.format, eval::<M>(&t.z, at.fx[i], at.fy));
+        }
+    }
+    stencil_depth_q::<DEPTH, FULL>(t.front, plan, rows, (at.row, at.n), &q, live, stats);
+}
+
+/// [`stencil_depth`] of the face `front` with the fragments' quantised depths `q`.
+#[inline(always)]
+pub(crate) fn stencil_depth_q<const DEPTH: bool, const FULL: bool>(
+    front: bool,
+    plan: &FragPlan,
+    rows: &mut PlaneRows<'_>,
+    (row, n): (usize, usize),
+    q: &[u32; LANES],
+    live: &mut [bool; LANES],
+    stats: &mut Stats,
+) {
+    let stencil = plan.stencil.map(|s| if front { s.front } else { s.back });
     if FULL {
         if let Some(sp) = &stencil {
             for i in 0..n {
@@ -706,10 +726,6 @@ pub(crate) fn stencil_depth<M: Madd, const DEPTH: bool, const FULL: bool>(
     }
     if DEPTH {
         let d = plan.depth.expect("DEPTH implies a depth plan");
-        let mut q = [0u32; LANES];
-        for i in 0..LANES {
-            q[i] = quantize_depth(d.format, eval::<M>(&t.z, at.fx[i], at.fy));
-        }
         let dst = &mut rows.depth[row..row + n];
         for i in 0..n {
             if !live[i] {

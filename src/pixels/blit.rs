@@ -102,6 +102,22 @@ pub fn resolve_samples(
     mask: BlitMask,
     scratch: Option<Framebuffer>,
 ) -> Framebuffer {
+    let mut out = resolve_planes(planes, sides, wide, fma, mask, scratch);
+    if mask.depth {
+        super::resolve::depth_through_float(&mut out);
+    }
+    out
+}
+
+/// [`resolve_samples`] before the depth's trip through a float.
+fn resolve_planes(
+    planes: &[Framebuffer],
+    sides: SrgbSides,
+    wide: bool,
+    fma: bool,
+    mask: BlitMask,
+    scratch: Option<Framebuffer>,
+) -> Framebuffer {
     if sides != SrgbSides::default() {
         return sides.resolve(planes, fma);
     }

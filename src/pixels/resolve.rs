@@ -119,6 +119,27 @@ pub fn reuse(
     s
 }
 
+/// The depth values of a multisample resolve as llvmpipe's blitter writes them: sample
+/// 0's value read as a float (`lp_build_unsigned_norm_to_float` for at most 24 bits:
+/// `f32(v) · f32(1 / (2ⁿ − 1))`) and stored back as a shader's depth
+/// ([`crate::framebuffer::DepthFormat::quantize`]). The trip moves about 31% of Z24
+/// values by one (scene frag_msaa). Float depth comes back exact; Z32 keeps its values
+/// (its conversion was not probed).
+pub fn depth_through_float(fb: &mut Framebuffer) {
+    use crate::framebuffer::DepthFormat;
+    let format = fb.depth_format;
+    let scale = match format {
+        DepthFormat::Z24 => (1.0f64 / 16_777_215.0) as f32,
+        DepthFormat::Z16 => (1.0f64 / 65_535.0) as f32,
+        _ => return,
+    };
+    let trip = |v: u32| format.quantize(v as f32 * scale);
+    for d in fb.depth.iter_mut() {
+        *d = trip(*d);
+    }
+    fb.pending_depth = fb.pending_depth.map(trip);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -152,6 +152,11 @@ pub fn raster_triangle(t: &SetupTriangle, d: &mut Draw<'_, '_>) -> bool {
 /// must be a multisample one.
 #[inline]
 pub fn raster_samples(t: &SetupTriangle, b: [i64; 4], d: &mut Draw<'_, '_>) {
+    // Lines and points come here as quads (`ms_prims`).
+    if let Some(sh) = &d.plan.shader {
+        shaded::triangle(t, b, sh, d);
+        return;
+    }
     // Its own walk, in the CPU's level (the walks of a level fuse as llvmpipe does on
     // that CPU).
     // SAFETY: (all four) `cpu::isa` only reports features the CPU has, and each arm runs

@@ -106,7 +106,7 @@ fn rows_as<
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    let edges: [[Edge; 3]; SAMPLES] = std::array::from_fn(|s| t.edges.map(|e| e.at_sample(s)));
+    let edges = sample_edges(t);
     // Texel values of the current chunk (lanes of quads not sampled keep stale values,
     // never used), as in the textured walk.
     let mut texels: [TexLanes; 2] = [[[[0.0; 4]; LANES]; MAX_TEXTURE_UNITS]; 2];
@@ -130,28 +130,7 @@ fn rows_as<
                 MsPrefetch::Below => prefetch_planes(fb, qy + 2, x + LANES as i64 - 1, DEPTH),
                 MsPrefetch::Ahead => prefetch_planes(fb, qy, x + AHEAD + LANES as i64 - 1, DEPTH),
             }
-            // Bit i of `cov[r][s]`: sample s of pixel x + i of row r is covered.
-            let mut cov = [[0u8; SAMPLES]; 2];
-            let mut any = [0u8; 2];
-            for r in 0..2 {
-                for s in 0..SAMPLES {
-                    if let Some((a, z)) = spans[r][s] {
-                        cov[r][s] = lane_bits(a - x, z - x);
-                        any[r] |= cov[r][s];
-                    }
-                }
-            }
-            let live: [[bool; LANES]; 2] =
-                std::array::from_fn(|r| std::array::from_fn(|i| any[r] & (1 << i) != 0));
-            // Attributes (and texture coordinates) at the pixel centres.
-            let xf = x as f32;
-            let chunk = Chunk {
-                qy,
-                x,
-                fx: std::array::from_fn(|i| (xf + i as f32) + 0.5),
-                fy: [qy as f32 + 0.5, (qy + 1) as f32 + 0.5],
-                live,
-            };
+            let (chunk, cov, any) = chunk_at(&spans, qy, x);
             #[cfg(target_arch = "x86_64")]
             if fast {
                 // SAFETY: `AVX2` walks are compiled with AVX2, and with FMA exactly when
@@ -205,6 +184,88 @@ fn rows_as<
             }
             x += LANES as i64;
         }
+    }
+}
+
+/// The chunk of 8 pixels from `x` in rows `qy` and `qy + 1` whose samples' covered
+/// pixels are `spans`, its coordinates at the pixel centres (where the walk evaluates
+/// attributes and texture coordinates); with each row's coverage (bit i of `cov[r][s]`:
+/// sample s of pixel x + i of row r is covered) and its union over the samples.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn chunk_at(
+    spans: &[[Option<(i64, i64)>; SAMPLES]; 2],
+    qy: i64,
+    x: i64,
+) -> (Chunk, [[u8; SAMPLES]; 2], [u8; 2]) {
+    let mut cov = [[0u8; SAMPLES]; 2];
+    let mut any = [0u8; 2];
+    for r in 0..2 {
+        for s in 0..SAMPLES {
+            if let Some((a, z)) = spans[r][s] {
+                cov[r][s] = lane_bits(a - x, z - x);
+                any[r] |= cov[r][s];
+            }
+        }
+    }
+    let live: [[bool; LANES]; 2] =
+        std::array::from_fn(|r| std::array::from_fn(|i| any[r] & (1 << i) != 0));
+    let xf = x as f32;
+    let chunk = Chunk {
+        qy,
+        x,
+        fx: std::array::from_fn(|i| (xf + i as f32) + 0.5),
+        fy: [qy as f32 + 0.5, (qy + 1) as f32 + 0.5],
+        live,
+    };
+    (chunk, cov, any)
+}
+
+/// Each sample's edges of `t` (set up for every sample).
+#[inline(always)]
+pub(super) fn sample_edges(t: &SetupTriangle) -> [[Edge; 3]; SAMPLES] {
+    std::array::from_fn(|s| t.edges.map(|e| e.at_sample(s)))
+}
+
+/// The chunks of a triangle set up for every sample ([`sample_edges`]) in a box, as the
+/// walk of [`rows`] visits them ([`chunk_at`]: the pixel centres, and the coverage per
+/// sample), for a fragment shader's walk (`super::shaded`). An iterator rather than a
+/// closure walker, as [`super::textured::Chunks`].
+pub(super) struct MsChunks<'e> {
+    pairs: RowPairs<'e, SAMPLES>,
+    spans: [[Option<(i64, i64)>; SAMPLES]; 2],
+    qy: i64,
+    x: i64,
+    hi: i64,
+}
+
+impl<'e> MsChunks<'e> {
+    /// The chunks covered by `edges` in `b`.
+    #[inline(always)]
+    pub fn new(edges: &'e [[Edge; 3]; SAMPLES], b: [i64; 4]) -> Self {
+        MsChunks {
+            pairs: RowPairs::new(edges, b, !1),
+            spans: [[None; SAMPLES]; 2],
+            qy: 0,
+            x: 0,
+            hi: -1,
+        }
+    }
+}
+
+impl Iterator for MsChunks<'_> {
+    type Item = (Chunk, [[u8; SAMPLES]; 2]);
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.x > self.hi {
+            let p = self.pairs.next()?;
+            (self.spans, self.qy, self.x, self.hi) = (p.spans, p.qy, p.lo & !1, p.hi);
+        }
+        let x = self.x;
+        self.x += LANES as i64;
+        let (chunk, cov, _) = chunk_at(&self.spans, self.qy, x);
+        Some((chunk, cov))
     }
 }
 

@@ -2,9 +2,11 @@
 //! ([`crate::shader::draw`]): the chunk rows of the textured walk ([`textured::Chunks`],
 //! pairs of rows in 8-pixel chunks; for lines and points the chunks of their coverage,
 //! [`CoverChunks`], on the planes of `lines.rs`) through the shader's compiled variant.
-//! A primitive whose plan or target the engine does not draw (logic op, wide or sRGB
-//! buffers …) is not drawn and is counted in `program_tris_refused`: drawing it without
-//! its shader would be wrong. The planes of the varyings taken from the provoking vertex
+//! Under multisampling the chunks are those of the one-pass multisample walk
+//! ([`super::multisample::MsChunks`]: pixel centres, coverage per sample), and the walk
+//! tests and stores each sample. A primitive whose plan the engine does not draw (a
+//! lookup that cannot read its unit …) is not drawn and is counted in
+//! `program_tris_refused`: drawing it without its shader would be wrong. The planes of the varyings taken from the provoking vertex
 //! (the colours under GL_FLAT, the shader's `flat` inputs) are made constant at its
 //! values ([`flat_planes`]).
 //!
@@ -27,6 +29,7 @@ use super::textured;
 use super::Draw;
 use crate::engine::draw::Walk;
 use crate::engine::exec::{QuadCoords, TexSampler};
+use crate::fragment::multisample::SAMPLES;
 use crate::fragment::span::{eval, Fused, Madd, TexLanes, Unfused, LANES};
 use crate::fragment::FragPlan;
 use crate::framebuffer::Target;
@@ -174,11 +177,26 @@ fn sample_at(u: &UnitPlan<'_>, k: usize, c: &QuadCoords, texels: &mut [TexLanes;
 #[cold]
 #[inline(never)]
 pub(super) fn triangle(t: &SetupTriangle, b: [i64; 4], sh: &ShaderRef, d: &mut Draw<'_, '_>) {
-    match flat_planes(t, d.plan) {
-        Some(f) => walk(&f, textured::Chunks::new(t, b), sh, d),
-        None => walk(t, textured::Chunks::new(t, b), sh, d),
+    let flat = flat_planes(t, d.plan);
+    let planes = flat.as_ref().unwrap_or(t);
+    if d.plan.ms.is_some() {
+        // Set up for every sample: the chunks at the pixel centres with each sample's
+        // coverage (`crate::engine::draw::Walk::cover`).
+        let edges = super::multisample::sample_edges(t);
+        walk(planes, super::multisample::MsChunks::new(&edges, b), sh, d);
+    } else {
+        walk(planes, single(textured::Chunks::new(t, b)), sh, d);
     }
 }
+
+/// Single-sample chunks, with no sample coverage.
+#[inline(always)]
+fn single(chunks: impl Iterator<Item = textured::Chunk>) -> impl Iterator<Item = MsItem> {
+    chunks.map(|c| (c, [[0; SAMPLES]; 2]))
+}
+
+/// A chunk and its sample coverage per row (zero in a single-sample walk).
+type MsItem = (textured::Chunk, [[u8; SAMPLES]; 2]);
 
 /// `t` with the planes of the varyings taken from the provoking vertex
 /// ([`super::prims::flat_varyings`]: the colours under GL_FLAT, the shader's `flat`
@@ -217,8 +235,8 @@ pub(super) fn covered<C: Cover>(
     d: &mut Draw<'_, '_>,
 ) {
     match flat_planes(t, d.plan) {
-        Some(f) => walk(&f, CoverChunks::new(cover, b), sh, d),
-        None => walk(t, CoverChunks::new(cover, b), sh, d),
+        Some(f) => walk(&f, single(CoverChunks::new(cover, b)), sh, d),
+        None => walk(t, single(CoverChunks::new(cover, b)), sh, d),
     }
 }
 
@@ -240,7 +258,7 @@ fn readable(
 #[inline(always)]
 fn walk(
     t: &SetupTriangle,
-    chunks: impl Iterator<Item = textured::Chunk>,
+    chunks: impl Iterator<Item = MsItem>,
     sh: &ShaderRef,
     d: &mut Draw<'_, '_>,
 ) {
@@ -290,7 +308,8 @@ fn walk(
     let fused = crate::cpu::isa().fused();
     let quads = w.quads();
     w.begin_with(t, fb, stats, Some(&tex));
-    for c in chunks {
+    for (c, cov) in chunks {
+        w.cover(cov);
         if !lookups.is_empty() {
             let io = Lookups {
                 t,

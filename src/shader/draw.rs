@@ -228,6 +228,7 @@ impl FragShader {
         let opts = Options {
             flip_height: flip.map(|h| h as f32),
             flat_colors: plan.flat,
+            centred: plan.ms.is_some(),
         };
         // A lookup sampled before the program runs divides its coordinates by w: not
         // one at a flat colour.

@@ -94,6 +94,9 @@ pub struct Options {
     /// vertex's values, read from constant planes without the perspective divide (as
     /// `flat` varyings are).
     pub flat_colors: bool,
+    /// The run's pixel coordinates ([`Op::FragX`], [`Op::FragY`]) are pixel centres (a
+    /// multisample walk evaluates the planes there): `gl_FragCoord.xy` adds no 0.5.
+    pub centred: bool,
 }
 
 /// The uniform slot name of `gl_FrontFacing` (not a uniform of the program: the draw
@@ -497,10 +500,12 @@ impl Lower<'_> {
         }
         match var.name.as_str() {
             "gl_FragCoord" => {
-                let half = self.f32(0.5);
-                let (x, y) = (self.op(Op::FragX), self.op(Op::FragY));
-                let x = self.op(Op::Add(x, half));
-                let mut y = self.op(Op::Add(y, half));
+                let (mut x, mut y) = (self.op(Op::FragX), self.op(Op::FragY));
+                if !self.opts.centred {
+                    let half = self.f32(0.5);
+                    x = self.op(Op::Add(x, half));
+                    y = self.op(Op::Add(y, half));
+                }
                 if let Some(h) = self.opts.flip_height {
                     let h = self.f32(h);
                     y = self.op(Op::Sub(h, y));
