@@ -5,7 +5,7 @@
  * depth with min(z, 1) then max(z, 0), so NaN gives 1 (probed). A polygon
  * offset moves the interpolated depth only, not a written one. Drawn into the
  * window (24-bit depth) and into framebuffer objects with DEPTH_COMPONENT16,
- * 32F and DEPTH24_STENCIL8 (with a stencil pass whose zfail and zpass
+ * 32F, 32 and DEPTH24_STENCIL8 (with a stencil pass whose zfail and zpass
  * operations see the written depth); the depth buffers are read back raw. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
@@ -109,6 +109,7 @@ int main(int argc, char **argv)
     frag_output(out, "window", buf);
     fbo_pass(out, GL_DEPTH_COMPONENT16, GL_DEPTH_ATTACHMENT, "z16");
     fbo_pass(out, GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT, "z32f");
+    fbo_pass(out, GL_DEPTH_COMPONENT32, GL_DEPTH_ATTACHMENT, "z32");
     fbo_pass(out, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL_ATTACHMENT, "z24s8");
     sgl_text(out, "error", "0x%x", glGetError());
     return frag_end(out, "end", buf, ctx);

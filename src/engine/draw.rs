@@ -202,10 +202,10 @@ pub fn mode() -> crate::tuning::Engine {
 /// Whether a program's variant for `plan` drawing into `fb` leaves its colour store to
 /// the walk ([`super::ff::tail_buffers`]' `host`): wide and sRGB targets, logic ops, and
 /// the formats without a packed RGBA8 word, which the per-fragment stores of
-/// [`crate::fragment::span`] write; and multisampling, whose stencil and depth tests
-/// and stores run per sample ([`store_samples`]).
+/// [`crate::fragment::span`] write; and the plans whose stencil and depth tests the walk
+/// runs ([`test_and_store`]: multisampling, Z32 depth).
 pub fn host_store(plan: &FragPlan, fb: &Target<'_>) -> bool {
-    !target_ok(fb) || plan.logic.is_some() || plan.srgb || plan.ms.is_some()
+    !target_ok(fb) || plan.logic.is_some() || plan.srgb || super::ff::tests_in_walk(plan)
 }
 
 fn target_ok(fb: &Target<'_>) -> bool {
@@ -533,9 +533,9 @@ impl Walk {
         stats.stencil_reads += c.stencil_reads;
         stats.stencil_failed += c.stencil_failed;
         if let Some(plan) = &self.host {
-            match plan.ms {
-                Some(_) => store_samples(plan, st, n, per, self.front, fb, stats),
-                None => store_outputs(plan, st, n, per, fb, stats),
+            match super::ff::tests_in_walk(plan) {
+                true => test_and_store(plan, st, n, per, (self.front, self.centre), fb, stats),
+                false => store_outputs(plan, st, n, per, fb, stats),
             }
             return;
         }
@@ -573,10 +573,56 @@ impl Walk {
     }
 }
 
-/// Stores the colours a host-store program ([`host_store`]) left in its outputs for the
-/// live lanes of the `n` chunks of `st` (`per` outputs per chunk), as the fixed-function
-/// walk stores them: draw buffer 0 through [`store_chunk`] (wide, sRGB, logic ops and
-/// every format), draw buffers 1.. through [`write_colors`]; samples passed counted.
+/// Draw buffer `b`'s colours that a host-store program ([`host_store`]) left for chunk
+/// `k` of `st` (`per` outputs per chunk; zeros where it wrote none).
+fn colors_of(st: &State, k: usize, per: usize, b: usize) -> [[f32; LANES]; 4] {
+    std::array::from_fn(|ch| match 4 * b + ch < per {
+        true => st.outs[k * per + 4 * b + ch].map(f32::from_bits),
+        false => [0.0; LANES],
+    })
+}
+
+/// Stores chunk `k`'s colours at its `live` lanes as the fixed-function walk stores
+/// them: draw buffer 0 of sample plane `s` through [`store_chunk`] (wide, sRGB, logic
+/// ops and every format) and, single-sampled, draw buffers 1.. through
+/// [`write_colors`].
+#[allow(clippy::too_many_arguments)]
+fn store_colors(
+    plan: &FragPlan,
+    st: &State,
+    k: usize,
+    per: usize,
+    live: &[bool; LANES],
+    s: usize,
+    fb: &mut Target<'_>,
+    stats: &mut Stats,
+) {
+    if per < 4 || plan.color_mask == [false; 4] {
+        return;
+    }
+    let (idx, w) = (st.chunks[k].idx, usize::from(st.ns[k]));
+    let bytes = |cf: &[[f32; LANES]; 4]| -> [[u8; LANES]; 4] {
+        std::array::from_fn(|ch| cf[ch].map(unorm8))
+    };
+    let out = StoreFormat::of(fb);
+    let cf = colors_of(st, k, per, 0);
+    let mut rows = fb.plane(s);
+    store_chunk::<true, true>(plan, out, &mut rows, (idx, w), live, bytes(&cf), &cf, stats);
+    if plan.ms.is_some() {
+        return;
+    }
+    for (b, more) in fb.more_colors.iter_mut().enumerate() {
+        if plan.more_buffers & 1 << b == 0 || 4 * (b + 2) > per {
+            continue;
+        }
+        let cf = colors_of(st, k, per, b + 1);
+        let dst = &mut more[idx..idx + w];
+        write_colors::<true>(plan, out.format, dst, bytes(&cf), live, stats);
+    }
+}
+
+/// Stores the colours of the live lanes of the `n` chunks of `st` after a host-store
+/// program that ran the tests itself; counts the samples passed.
 fn store_outputs(
     plan: &FragPlan,
     st: &State,
@@ -585,70 +631,47 @@ fn store_outputs(
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
-    let out = StoreFormat::of(fb);
     for k in 0..n {
         let bits = st.live_out[k];
         if plan.count_samples {
             stats.samples_passed += u64::from(bits.count_ones());
         }
-        if bits == 0 || per == 0 {
-            continue;
-        }
-        let (idx, w) = (st.chunks[k].idx, usize::from(st.ns[k]));
-        let live: [bool; LANES] = std::array::from_fn(|i| bits >> i & 1 != 0);
-        let colors = |b: usize| -> [[f32; LANES]; 4] {
-            std::array::from_fn(|ch| st.outs[k * per + 4 * b + ch].map(f32::from_bits))
-        };
-        let bytes = |cf: &[[f32; LANES]; 4]| -> [[u8; LANES]; 4] {
-            std::array::from_fn(|ch| cf[ch].map(unorm8))
-        };
-        let cf = colors(0);
-        let mut rows = fb.plane(0);
-        store_chunk::<true, true>(
-            plan,
-            out,
-            &mut rows,
-            (idx, w),
-            &live,
-            bytes(&cf),
-            &cf,
-            stats,
-        );
-        for (b, more) in fb.more_colors.iter_mut().enumerate() {
-            if plan.more_buffers & 1 << b == 0 || 4 * (b + 2) > per {
-                continue;
-            }
-            let cf = colors(b + 1);
-            let dst = &mut more[idx..idx + w];
-            write_colors::<true>(plan, out.format, dst, bytes(&cf), &live, stats);
+        if bits != 0 {
+            let live: [bool; LANES] = std::array::from_fn(|i| bits >> i & 1 != 0);
+            store_colors(plan, st, k, per, &live, 0, fb, stats);
         }
     }
 }
 
-/// The per-sample half of a multisample program's chunks, as
-/// `crate::fragment::multisample` runs it for fixed function: for each sample of the
-/// plan's mask, the chunk's live lanes (after the program's discards and alpha test)
-/// that cover it and pass alpha to coverage; the stencil and depth tests at the sample
-/// point (the z plane there, or the written depth clamped as `lp_build_depth_clamp`
-/// does, [`super::ff::DEPTH_OUTPUT`]); and the store into the sample's plane.
+/// The tests and stores of a program that leaves its stencil and depth tests to the
+/// walk ([`super::ff::tests_in_walk`]), as `crate::fragment::multisample` (or, single-
+/// sampled, `crate::fragment::span`) runs them for fixed function: for each sample of
+/// the plan's mask (one without multisampling), the chunk's live lanes (after the
+/// program's discards and alpha test) that cover it and pass alpha to coverage; the
+/// stencil and depth tests at the sample point (the z plane there, evaluated as the
+/// level's fixed-function walks do, or the written depth clamped as
+/// `lp_build_depth_clamp` does, [`super::ff::DEPTH_OUTPUT`]); and the store. `centre`:
+/// what the chunks' coordinates add to the pixel's corner ([`Walk::centre`]).
 #[allow(clippy::too_many_arguments)]
-fn store_samples(
+fn test_and_store(
     plan: &FragPlan,
     st: &State,
     n: usize,
     per: usize,
-    front: bool,
+    (front, centre): (bool, f32),
     fb: &mut Target<'_>,
     stats: &mut Stats,
 ) {
     use crate::fragment::span::{eval, quantize_depth, stencil_depth_q, Fused, Unfused};
     use crate::fragment::MsPass;
-    let Some(ms) = plan.ms else {
-        return;
+    let (mask, a2c) = plan
+        .ms
+        .map_or((1, false), |m| (m.mask, m.alpha_to_coverage));
+    let tests = match plan.depth {
+        Some(_) => stencil_depth_q::<true, true>,
+        None => stencil_depth_q::<false, true>,
     };
-    let out = StoreFormat::of(fb);
     let fused = crate::cpu::isa().fused();
-    let colors = per >= 4 && plan.color_mask != [false; 4];
     let written = usize::from(super::ff::DEPTH_OUTPUT);
     for k in 0..n {
         let bits = st.live_out[k];
@@ -656,14 +679,8 @@ fn store_samples(
             continue;
         }
         let c = st.chunks[k];
-        let (idx, w) = (c.idx, usize::from(st.ns[k]));
-        // The pixel's corner: the chunk's coordinates are its centre (`Walk::centre`).
-        let (x, y) = (c.fx - 0.5, c.fy - 0.5);
-        let cf: [[f32; LANES]; 4] = std::array::from_fn(|ch| match colors {
-            true => st.outs[k * per + ch].map(f32::from_bits),
-            false => [0.0; LANES],
-        });
-        let c8: [[u8; LANES]; 4] = std::array::from_fn(|ch| cf[ch].map(unorm8));
+        let (x, y) = (c.fx - centre, c.fy - centre);
+        let alpha = colors_of(st, k, per, 0)[3];
         // `minps` with 1 then `maxps` with 0: NaN becomes 1.
         let shader_z = (per > written).then(|| {
             st.outs[k * per + written].map(|b| {
@@ -679,14 +696,17 @@ fn store_samples(
         let [a0, dadx, dady] = st.planes[c.planes as usize + usize::from(super::lower::PLANE_Z)];
         let zp = crate::geometry::setup::Plane { a0, dadx, dady };
         for s in 0..SAMPLES {
-            if ms.mask & (1 << s) == 0 {
+            if mask & (1 << s) == 0 {
                 continue;
             }
-            let cov = st.covs[k][s] & bits;
+            let (cov, [sx, sy]) = match plan.ms {
+                Some(_) => (st.covs[k][s] & bits, MsPass::pos(s)),
+                None => (bits, [0.0; 2]),
+            };
             let mut ls: [bool; LANES] = std::array::from_fn(|i| cov >> i & 1 != 0);
-            if ms.alpha_to_coverage {
+            if a2c {
                 let threshold = MsPass::coverage_threshold(s);
-                for (l, &a) in ls.iter_mut().zip(&cf[3]) {
+                for (l, &a) in ls.iter_mut().zip(&alpha) {
                     // NaN alpha keeps no sample, as the ordered compare.
                     *l &= a > threshold;
                 }
@@ -694,45 +714,22 @@ fn store_samples(
             if !ls.iter().any(|&l| l) {
                 continue;
             }
-            let mut rows = fb.plane(s);
-            match plan.depth {
-                Some(d) => {
-                    let [sx, sy] = MsPass::pos(s);
-                    let q: [u32; LANES] = std::array::from_fn(|i| {
-                        let z = match &shader_z {
-                            Some(z) => z[i],
-                            None if fused => eval::<Fused>(&zp, x + i as f32 + sx, y + sy),
-                            None => eval::<Unfused>(&zp, x + i as f32 + sx, y + sy),
-                        };
-                        quantize_depth(d.format, z)
-                    });
-                    stencil_depth_q::<true, true>(
-                        front,
-                        plan,
-                        &mut rows,
-                        (idx, w),
-                        &q,
-                        &mut ls,
-                        stats,
-                    )
-                }
-                None => {
-                    let q = [0; LANES];
-                    stencil_depth_q::<false, true>(
-                        front,
-                        plan,
-                        &mut rows,
-                        (idx, w),
-                        &q,
-                        &mut ls,
-                        stats,
-                    )
-                }
+            let q: [u32; LANES] = std::array::from_fn(|i| {
+                let Some(d) = plan.depth else {
+                    return 0;
+                };
+                let z = match &shader_z {
+                    Some(z) => z[i],
+                    None if fused => eval::<Fused>(&zp, x + i as f32 + sx, y + sy),
+                    None => eval::<Unfused>(&zp, x + i as f32 + sx, y + sy),
+                };
+                quantize_depth(d.format, z)
+            });
+            let at = (c.idx, usize::from(st.ns[k]));
+            tests(front, plan, &mut fb.plane(s), at, &q, &mut ls, stats);
+            if ls.iter().any(|&l| l) {
+                store_colors(plan, st, k, per, &ls, s, fb, stats);
             }
-            if !colors || !ls.iter().any(|&l| l) {
-                continue;
-            }
-            store_chunk::<true, true>(plan, out, &mut rows, (idx, w), &ls, c8, &cf, stats);
         }
     }
 }

@@ -26,8 +26,8 @@ use crate::pipe::FogMode;
 use crate::texture::env::{Arg, Combine, CombineFn, Operand, Source};
 use std::collections::HashMap;
 
-/// The [`Op::Output`] of a multisample variant's written `gl_FragDepth` (after the draw
-/// buffers' colours): the walk runs the stencil and depth tests of each sample itself.
+/// The [`Op::Output`] of a written `gl_FragDepth` in a variant whose walk runs the
+/// stencil and depth tests ([`tests_in_walk`]), after the draw buffers' colours.
 pub const DEPTH_OUTPUT: u16 = 4 * (1 + MORE_COLORS) as u16;
 
 /// What the lowering reads: the fragment plan, the units' combiners, whether varyings take
@@ -60,9 +60,16 @@ pub fn covers_tail(plan: &FragPlan) -> bool {
 
 /// Whether [`tail_buffers`] lowers `plan`'s per-fragment operations when the colour
 /// store is the caller's (`host`): logic ops and sRGB writes are then the store's, and
-/// under multisampling so are the stencil and depth tests (per sample).
+/// so are the stencil and depth tests the program does not run ([`tests_in_walk`]).
 pub fn covers_host_tail(plan: &FragPlan) -> bool {
-    plan.smooth.is_none() && (plan.ms.is_some() || covers_tests(plan))
+    plan.smooth.is_none()
+}
+
+/// Whether the walk runs `plan`'s stencil and depth tests after a host-store program
+/// (`super::draw`): per sample under multisampling, and for a depth format the program
+/// does not quantise (Z32 unorm, compared unsigned).
+pub fn tests_in_walk(plan: &FragPlan) -> bool {
+    plan.ms.is_some() || (plan.smooth.is_none() && !covers_tests(plan))
 }
 
 /// Whether the program lowers `plan`'s depth test (and without multisampling).
@@ -475,7 +482,8 @@ pub fn tail(b: &mut Builder, p: &FragPlan, color: [Val; 4]) -> Option<()> {
 ///
 /// With `host` the program stops after the tests: draw buffer k's colour channel c is
 /// its [`Op::Output`] `4k + c` (unclamped), and the caller stores the live lanes; a
-/// multisample plan (`host` only) leaves the stencil and depth tests to the caller too
+/// plan of [`tests_in_walk`] (`host` only) leaves the stencil and depth tests to the
+/// caller too
 /// (`engine::draw`: wide, sRGB and logic-op targets and the formats without a packed
 /// RGBA8 word, through the per-fragment stores of `crate::fragment`).
 pub fn tail_buffers(
@@ -487,9 +495,9 @@ pub fn tail_buffers(
 ) -> Option<()> {
     let px = b.push(Op::PackUnorm8(colors[0]));
     alpha_test(b, p, px);
-    if p.ms.is_some() {
+    if tests_in_walk(p) {
         // The walk tests each sample ([`DEPTH_OUTPUT`]).
-        assert!(host, "a multisample variant stores in the walk");
+        assert!(host, "a variant whose walk tests also stores there");
         if let Some(z) = written {
             b.push(Op::Output(DEPTH_OUTPUT, z));
         }
