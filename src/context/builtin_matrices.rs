@@ -1,6 +1,6 @@
 //! The values of GLSL's built-in matrix uniforms (`gl_ModelViewMatrix`,
 //! `gl_ProjectionMatrix`, `gl_ModelViewProjectionMatrix`, `gl_TextureMatrix[]`, each also
-//! `Inverse`, `Transpose` and `InverseTranspose`, and `gl_NormalMatrix`) from the matrix
+//! `Inverse`, `Transpose` and `InverseTranspose`, `gl_NormalMatrix` and `gl_NormalScale`) from the matrix
 //! stacks, as Mesa's `fetch_state` (`prog_statevars.c`) reads them, for either stage:
 //!
 //! - a matrix is the stack's top; the modelview-projection is `projection × modelview`,
@@ -11,7 +11,8 @@
 //!   singular;
 //! - `Transpose` transposes what it names (the inverse's transpose for
 //!   `InverseTranspose`); `gl_NormalMatrix` is the upper 3×3 of the modelview inverse,
-//!   transposed, column by column.
+//!   transposed, column by column; `gl_NormalScale` is Mesa's
+//!   `_ModelViewInvScaleEyespace` (1 for a length-preserving modelview).
 //!
 //! The names are `shader::vertex_draw::MATRIX_UNIFORMS`. Words are column-major, a `mat4` 16 of them, `gl_TextureMatrix*` one per texture
 //! unit.
@@ -43,6 +44,19 @@ impl Context {
     pub(crate) fn builtin_matrix_words(&self, name: &str) -> Option<Vec<f32>> {
         let mx = &self.matrices;
         let mut v = Vec::with_capacity(16);
+        if name == "gl_NormalScale" {
+            // Mesa's update_modelview_scale (`_ModelViewInvScaleEyespace`): 1 unless the
+            // modelview changes lengths, then 1 / |row 2 of its inverse| (a squared
+            // length below 1e-12 counts as 1).
+            let (mv, mut flags) = top(&mx.modelview);
+            let inv = flags.inverse(&mv.0);
+            if flags.is_length_preserving() {
+                return Some(vec![1.0]);
+            }
+            let f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+            let f = if f < 1e-12 { 1.0 } else { f };
+            return Some(vec![1.0 / f.sqrt()]);
+        }
         if name == "gl_NormalMatrix" {
             let (mv, mut flags) = top(&mx.modelview);
             let inv = flags.inverse(&mv.0);

@@ -62,14 +62,15 @@
 //! (it supplies, in either stage, every matrix with its inverse and transposes,
 //! `vertex_draw::MATRIX_UNIFORMS`, and the state uniforms, `vertex_draw::STATE_UNIFORMS`:
 //! lights, materials, their products, fog, depth range, clip planes, point parameters,
-//! texture environment colours, texgen planes; not yet `gl_NormalScale`); a vertex
+//! texture environment colours, texgen planes, `gl_NormalScale`); a vertex
 //! shader with a
 //! non-float or matrix attribute, or reads a generic attribute
 //! that glVertexAttrib set between glBegin and glEnd of a batch that could not record it
 //! per vertex (memory ran out), or whose varyings leave no room for its back colours or
-//! clip vertex; with a fragment shader, multisampling;
-//! primitives whose fragment state the engine does not draw (logic ops, wide, sRGB or
-//! non-RGBA8 targets, Z32 unorm depth), and `texelFetch` of a depth texture.
+//! clip vertex; and `texelFetch` of a depth texture. A fragment shader draws into every
+//! target and fragment state: logic ops, wide, sRGB and non-RGBA8 targets, Z32 depth
+//! and multisampling take the walk's stores and tests after the program
+//! (`crate::engine::draw::host_store`).
 //! Under GL_VERTEX_PROGRAM_TWO_SIDE back faces take `gl_BackColor` and
 //! `gl_BackSecondaryColor` (each only when the shader writes it). `gl_PointSize` sizes points
 //! under GL_VERTEX_PROGRAM_POINT_SIZE (unclamped, as llvmpipe takes a vertex's size), and

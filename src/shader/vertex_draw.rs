@@ -74,7 +74,8 @@ impl std::fmt::Debug for VertShader {
 
 /// The built-in matrix uniforms the context supplies (`context::builtin_matrices`), in
 /// either stage.
-pub const MATRIX_UNIFORMS: [&str; 17] = [
+pub const MATRIX_UNIFORMS: [&str; 18] = [
+    "gl_NormalScale",
     "gl_ModelViewMatrix",
     "gl_ProjectionMatrix",
     "gl_ModelViewProjectionMatrix",
