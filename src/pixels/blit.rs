@@ -102,60 +102,51 @@ pub fn resolve_samples(
     mask: BlitMask,
     scratch: Option<Framebuffer>,
 ) -> Framebuffer {
-    let mut out = resolve_planes(planes, sides, wide, fma, mask, scratch);
+    let mut out = 'resolve: {
+        if sides != SrgbSides::default() {
+            break 'resolve sides.resolve(planes, fma);
+        }
+        if !wide && planes[0].wide.is_none() && planes.len() == 4 {
+            let mut out = super::resolve::reuse(scratch, &planes[0], mask.depth, mask.stencil);
+            if mask.color {
+                let colors = std::array::from_fn(|k| &planes[k].color[..]);
+                super::resolve::average_rgba8(colors, &mut out.color);
+            }
+            break 'resolve out;
+        }
+        let mut out = planes[0].clone();
+        if wide || out.wide.is_some() {
+            out.set_wide(Some(crate::framebuffer::WideKind::Float32));
+            for i in 0..out.width * out.height {
+                let mut sum = [0.0f32; 4];
+                for p in planes {
+                    let c = p.float_at(i);
+                    for ch in 0..4 {
+                        sum[ch] += c[ch];
+                    }
+                }
+                let avg = sum.map(|v| v * 0.25);
+                out.wide_color[i] = avg;
+                out.color[i] = crate::framebuffer::WideKind::Float32.mirror(avg);
+            }
+            break 'resolve out;
+        }
+        let scale = 1.0f32 / 255.0;
+        for (i, px) in out.color.iter_mut().enumerate() {
+            for (ch, v) in px.iter_mut().enumerate() {
+                let mut sum = 0.0f32;
+                for p in planes {
+                    sum += p.color[i][ch] as f32 * scale;
+                }
+                let avg = sum * 0.25;
+                *v = crate::fragment::span::unorm8(avg);
+            }
+        }
+        out
+    };
+    // llvmpipe's blitter reads sample 0's depth as a float and writes it back.
     if mask.depth {
         super::resolve::depth_through_float(&mut out);
-    }
-    out
-}
-
-/// [`resolve_samples`] before the depth's trip through a float.
-fn resolve_planes(
-    planes: &[Framebuffer],
-    sides: SrgbSides,
-    wide: bool,
-    fma: bool,
-    mask: BlitMask,
-    scratch: Option<Framebuffer>,
-) -> Framebuffer {
-    if sides != SrgbSides::default() {
-        return sides.resolve(planes, fma);
-    }
-    if !wide && planes[0].wide.is_none() && planes.len() == 4 {
-        let mut out = super::resolve::reuse(scratch, &planes[0], mask.depth, mask.stencil);
-        if mask.color {
-            let colors = std::array::from_fn(|k| &planes[k].color[..]);
-            super::resolve::average_rgba8(colors, &mut out.color);
-        }
-        return out;
-    }
-    let mut out = planes[0].clone();
-    if wide || out.wide.is_some() {
-        out.set_wide(Some(crate::framebuffer::WideKind::Float32));
-        for i in 0..out.width * out.height {
-            let mut sum = [0.0f32; 4];
-            for p in planes {
-                let c = p.float_at(i);
-                for ch in 0..4 {
-                    sum[ch] += c[ch];
-                }
-            }
-            let avg = sum.map(|v| v * 0.25);
-            out.wide_color[i] = avg;
-            out.color[i] = crate::framebuffer::WideKind::Float32.mirror(avg);
-        }
-        return out;
-    }
-    let scale = 1.0f32 / 255.0;
-    for (i, px) in out.color.iter_mut().enumerate() {
-        for (ch, v) in px.iter_mut().enumerate() {
-            let mut sum = 0.0f32;
-            for p in planes {
-                sum += p.color[i][ch] as f32 * scale;
-            }
-            let avg = sum * 0.25;
-            *v = crate::fragment::span::unorm8(avg);
-        }
     }
     out
 }
