@@ -25,19 +25,27 @@ static inline void vert_attach(GLuint p, GLenum kind, const char *src)
     glAttachShader(p, s);
 }
 
-/* A program of `vs` and `fs` (NULL: fixed-function fragments); `attribs[k]`
- * bound to location k (NULL-terminated, or NULL for none). */
-static inline GLuint vert_program(const char *vs, const char *fs, const char **attribs)
+/* Starts a frame of the vertex-input scenes: clears colour (0.1, 0.2, 0.3, 0.4) and
+ * depth, projects w x h pixel units orthographically (identity modelview) and tests
+ * depth with GL_LESS. */
+static inline void vert_begin_ortho(double w, double h)
 {
-    GLuint p = glCreateProgram();
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, w, 0.0, h, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+}
+
+/* Links `p`; prints the log and exits on failure. */
+static inline void vert_link(GLuint p)
+{
     GLint ok = 0;
     char log[2048];
-    int k;
-    vert_attach(p, GL_VERTEX_SHADER, vs);
-    if (fs)
-        vert_attach(p, GL_FRAGMENT_SHADER, fs);
-    for (k = 0; attribs && attribs[k]; k++)
-        glBindAttribLocation(p, (GLuint)k, attribs[k]);
     glLinkProgram(p);
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
     if (!ok) {
@@ -45,7 +53,37 @@ static inline GLuint vert_program(const char *vs, const char *fs, const char **a
         fprintf(stderr, "link: %s\n", log);
         exit(2);
     }
+}
+
+/* A program of `vs` and `fs` (NULL: fixed-function fragments); `attribs[k]`
+ * bound to location k (NULL-terminated, or NULL for none). */
+static inline GLuint vert_program(const char *vs, const char *fs, const char **attribs)
+{
+    GLuint p = glCreateProgram();
+    int k;
+    vert_attach(p, GL_VERTEX_SHADER, vs);
+    if (fs)
+        vert_attach(p, GL_FRAGMENT_SHADER, fs);
+    for (k = 0; attribs && attribs[k]; k++)
+        glBindAttribLocation(p, (GLuint)k, attribs[k]);
+    vert_link(p);
     return p;
+}
+
+/* A new buffer object bound to GL_ARRAY_BUFFER holding `bytes` of `v`: vertices of
+ * `stride` bytes, three position floats then three colour floats, as the enabled
+ * vertex and colour arrays. */
+static inline GLuint vert_color_vbo(const void *v, GLsizeiptr bytes, GLsizei stride)
+{
+    GLuint vbo;
+    glGenBuffers(1, &vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, bytes, v, GL_STATIC_DRAW);
+    glVertexPointer(3, GL_FLOAT, stride, (void *)0);
+    glColorPointer(3, GL_FLOAT, stride, (void *)(3 * sizeof(GLfloat)));
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    return vbo;
 }
 
 /* n seeded random triangles (as frag_random_tris) that also carry normals and

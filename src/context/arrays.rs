@@ -81,9 +81,11 @@ impl BufferTarget {
     }
 }
 
-/// All vertex-array state of a context.
+/// The state a vertex array object holds (GL 3.0 §2.10, ARB_vertex_array_object): every
+/// array's pointer, format and enable, and the GL_ELEMENT_ARRAY_BUFFER binding. Object 0
+/// is the compatibility profile's default object.
 #[derive(Clone, Debug)]
-pub struct ArrayState {
+pub struct VertexArrayObject {
     /// GL_VERTEX_ARRAY.
     pub vertex: ArrayPointer,
     /// GL_COLOR_ARRAY.
@@ -103,17 +105,16 @@ pub struct ArrayState {
     /// The generic attribute arrays (glVertexAttribPointer). Fixed function reads only
     /// attribute 0, which stands for the vertex array while enabled.
     pub generic: [ArrayPointer; MAX_VERTEX_ATTRIBS],
-    /// GL_ARRAY_BUFFER binding.
-    pub array_buffer: u32,
+    /// GL_VERTEX_ATTRIB_ARRAY_DIVISOR per generic attribute (0: one element per vertex;
+    /// n: one per n instances).
+    pub divisor: [u32; MAX_VERTEX_ATTRIBS],
     /// GL_ELEMENT_ARRAY_BUFFER binding.
     pub element_buffer: u32,
-    /// Buffer objects by name; a generated but never bound name maps to `None`.
-    pub buffers: HashMap<u32, Option<BufferObject>>,
 }
 
-impl Default for ArrayState {
+impl Default for VertexArrayObject {
     fn default() -> Self {
-        ArrayState {
+        VertexArrayObject {
             vertex: ArrayPointer::new(4, DataType::Float),
             color: ArrayPointer::new(4, DataType::Float),
             normal: ArrayPointer::new(3, DataType::Float),
@@ -123,20 +124,45 @@ impl Default for ArrayState {
             secondary_color: ArrayPointer::new(3, DataType::Float),
             fog_coord: ArrayPointer::new(1, DataType::Float),
             generic: [ArrayPointer::new(4, DataType::Float); MAX_VERTEX_ATTRIBS],
-            array_buffer: 0,
+            divisor: [0; MAX_VERTEX_ATTRIBS],
             element_buffer: 0,
-            buffers: HashMap::new(),
         }
     }
 }
 
+/// All vertex-array state of a context: the bound vertex array object's state, the other
+/// objects, the GL_ARRAY_BUFFER binding (context state, not an object's) and the buffer
+/// objects.
+#[derive(Clone, Debug, Default)]
+pub struct ArrayState {
+    /// The bound vertex array object's state (the object is moved here while bound).
+    pub vao: VertexArrayObject,
+    /// GL_VERTEX_ARRAY_BINDING: the bound object's name (0: the default object).
+    pub vao_binding: u32,
+    /// The vertex array objects not bound, by name: `None` for a generated name never
+    /// bound; the default object (0) is here while another is bound.
+    pub vaos: HashMap<u32, Option<Box<VertexArrayObject>>>,
+    /// GL_ARRAY_BUFFER binding.
+    pub array_buffer: u32,
+    /// GL_PRIMITIVE_RESTART (GL 3.1): an element equal to `restart_index` ends the
+    /// primitive and starts a new one in glDrawElements and its relatives.
+    pub primitive_restart: bool,
+    /// GL_PRIMITIVE_RESTART_INDEX.
+    pub restart_index: u32,
+    /// Buffer objects by name; a generated but never bound name maps to `None`.
+    pub buffers: HashMap<u32, Option<BufferObject>>,
+}
+
 impl ArrayState {
-    /// A copy of every array pointer and buffer binding, without the buffer objects (what
+    /// A copy of every array pointer and buffer binding, with the bound vertex array
+    /// object's name, without the buffer objects and the other vertex array objects (what
     /// glPushClientAttrib saves).
     pub fn bindings(&mut self) -> ArrayState {
         let buffers = std::mem::take(&mut self.buffers);
+        let vaos = std::mem::take(&mut self.vaos);
         let copy = self.clone();
         self.buffers = buffers;
+        self.vaos = vaos;
         copy
     }
 
@@ -168,24 +194,26 @@ impl ArrayState {
     /// wins over GL_VERTEX_ARRAY), else GL_VERTEX_ARRAY. A draw without either enabled
     /// draws nothing.
     pub fn position(&self) -> &ArrayPointer {
-        if self.generic[0].enabled {
-            &self.generic[0]
+        let v = &self.vao;
+        if v.generic[0].enabled {
+            &v.generic[0]
         } else {
-            &self.vertex
+            &v.vertex
         }
     }
 
     /// Every array with its buffer object looked up: what a draw hands the vertex fetch.
     pub fn inputs(&self) -> crate::pipe::VertexArrays<'_> {
+        let v = &self.vao;
         crate::pipe::VertexArrays {
             vertex: self.input(self.position()),
-            color: self.input(&self.color),
-            normal: self.input(&self.normal),
-            texcoord: std::array::from_fn(|u| self.input(&self.texcoord[u])),
-            edge_flag: self.input(&self.edge_flag),
-            secondary_color: self.input(&self.secondary_color),
-            fog_coord: self.input(&self.fog_coord),
-            generic: Some(std::array::from_fn(|k| self.input(&self.generic[k]))),
+            color: self.input(&v.color),
+            normal: self.input(&v.normal),
+            texcoord: std::array::from_fn(|u| self.input(&v.texcoord[u])),
+            edge_flag: self.input(&v.edge_flag),
+            secondary_color: self.input(&v.secondary_color),
+            fog_coord: self.input(&v.fog_coord),
+            generic: Some(std::array::from_fn(|k| self.input(&v.generic[k]))),
         }
     }
 
@@ -211,8 +239,11 @@ impl ArrayState {
         out
     }
 
-    /// glDeleteBuffers for one name: unbinds it everywhere in this context. Arrays that
-    /// sourced it become null pointers (never a dangling offset read as an address).
+    /// glDeleteBuffers for one name: unbinds it everywhere in this context, in every
+    /// vertex array object (not only the bound one, as GL 3.0 says: an object keeps no
+    /// orphaned store, so a name made again later is never read through an old pointer).
+    /// Arrays that sourced it become null pointers (never a dangling offset read as an
+    /// address).
     pub fn delete_buffer(&mut self, name: u32) {
         if name == 0 || self.buffers.remove(&name).is_none() {
             return;
@@ -220,14 +251,9 @@ impl ArrayState {
         if self.array_buffer == name {
             self.array_buffer = 0;
         }
-        if self.element_buffer == name {
-            self.element_buffer = 0;
-        }
-        for a in self.all_arrays_mut() {
-            if a.buffer == name {
-                a.buffer = 0;
-                a.ptr = 0;
-            }
+        let stored = self.vaos.values_mut().flatten().map(|b| &mut **b);
+        for v in std::iter::once(&mut self.vao).chain(stored) {
+            v.unbind_buffer(name);
         }
     }
 
@@ -246,6 +272,77 @@ impl ArrayState {
         }
     }
 
+    /// Every client array of the bound object (for checks that look at all of them,
+    /// e.g. mapped buffers).
+    pub fn all_arrays(&self) -> impl Iterator<Item = &ArrayPointer> {
+        self.vao.all_arrays()
+    }
+
+    /// Whether `name` names a vertex array object (bound or not, generated or made).
+    pub fn vao_exists(&self, name: u32) -> bool {
+        name == 0 || name == self.vao_binding || self.vaos.contains_key(&name)
+    }
+
+    /// glGenVertexArrays: `n` unused names (reserved; the object is made by its first
+    /// bind). Names in use by this context's objects are skipped.
+    pub fn gen_vertex_arrays(&mut self, n: usize) -> Vec<u32> {
+        let mut out = Vec::with_capacity(n);
+        let mut next = 1u32;
+        while out.len() < n {
+            if next != self.vao_binding && !self.vaos.contains_key(&next) {
+                self.vaos.insert(next, None);
+                out.push(next);
+            }
+            next += 1;
+        }
+        out
+    }
+
+    /// glBindVertexArray: the bound object is stored under its name and `name`'s moved in
+    /// (made on its first bind). GL_INVALID_OPERATION for a name never generated or
+    /// deleted; nothing changes then.
+    pub fn bind_vertex_array(&mut self, name: u32) -> GlResult<()> {
+        if !self.vao_exists(name) {
+            return Err(GlError::InvalidOperation);
+        }
+        if name == self.vao_binding {
+            return Ok(());
+        }
+        let next = self.vaos.remove(&name).flatten().unwrap_or_default();
+        let old = std::mem::replace(&mut self.vao, *next);
+        self.vaos.insert(self.vao_binding, Some(Box::new(old)));
+        self.vao_binding = name;
+        Ok(())
+    }
+
+    /// glDeleteVertexArrays: each of `names` as [`Self::delete_vertex_array`].
+    pub fn delete_vertex_arrays(&mut self, names: &[u32]) {
+        for &name in names {
+            self.delete_vertex_array(name);
+        }
+    }
+
+    /// glDeleteVertexArrays for one name: a bound object is unbound first (the binding
+    /// reverts to 0); 0 and unused names are ignored.
+    pub fn delete_vertex_array(&mut self, name: u32) {
+        if name == 0 || !self.vao_exists(name) {
+            return;
+        }
+        if name == self.vao_binding {
+            // Object 0 always exists, so the bind cannot fail.
+            let _ = self.bind_vertex_array(0);
+        }
+        self.vaos.remove(&name);
+    }
+
+    /// glIsVertexArray: whether `name` is an object that has been bound (a generated name
+    /// is not one until then, as in Mesa).
+    pub fn is_vertex_array(&self, name: u32) -> bool {
+        name != 0 && (name == self.vao_binding || matches!(self.vaos.get(&name), Some(Some(_))))
+    }
+}
+
+impl VertexArrayObject {
     fn all_arrays_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
         [
             &mut self.vertex,
@@ -274,5 +371,18 @@ impl ArrayState {
         .into_iter()
         .chain(self.texcoord.iter())
         .chain(self.generic.iter())
+    }
+
+    /// Unbinds buffer `name` from the element binding and every array that sources it.
+    fn unbind_buffer(&mut self, name: u32) {
+        if self.element_buffer == name {
+            self.element_buffer = 0;
+        }
+        for a in self.all_arrays_mut() {
+            if a.buffer == name {
+                a.buffer = 0;
+                a.ptr = 0;
+            }
+        }
     }
 }

@@ -353,14 +353,20 @@ impl Context {
             // A buffer deleted since the push is not revived: the binding stays as it is.
             for (name, now) in [
                 (&mut saved.array_buffer, a.array_buffer),
-                (&mut saved.element_buffer, a.element_buffer),
+                (&mut saved.vao.element_buffer, a.vao.element_buffer),
             ] {
                 if *name != 0 && !a.buffers.contains_key(&*name) {
                     *name = now;
                 }
             }
-            saved.buffers = std::mem::take(&mut a.buffers);
-            *a = saved;
+            a.array_buffer = saved.array_buffer;
+            // The saved vertex array object is bound again with its saved state, unless it
+            // was deleted since the push (then the binding and the objects stay as they
+            // are).
+            if a.vao_exists(saved.vao_binding) {
+                a.bind_vertex_array(saved.vao_binding)?;
+                a.vao = saved.vao;
+            }
             self.state.client_active_texture = client_active_texture;
         }
         Ok(())

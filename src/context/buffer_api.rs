@@ -28,7 +28,7 @@ impl Context {
     fn buffer_binding_mut(&mut self, target: BufferTarget) -> &mut u32 {
         match target {
             BufferTarget::Array => &mut self.arrays.array_buffer,
-            BufferTarget::ElementArray => &mut self.arrays.element_buffer,
+            BufferTarget::ElementArray => &mut self.arrays.vao.element_buffer,
             BufferTarget::PixelPack => &mut self.state.pack.buffer,
             BufferTarget::PixelUnpack => &mut self.state.unpack.buffer,
         }

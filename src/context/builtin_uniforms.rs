@@ -103,6 +103,8 @@ impl Context {
                 v.extend([p.size, p.min_size, p.max_size, p.fade_threshold]);
                 v.extend(p.attenuation);
             }
+            // An int: its bits in the word.
+            crate::shader::lower::INSTANCE_ID => v.push(f32::from_bits(self.draw_instance)),
             "gl_TextureEnvColor" => v.extend(self.textures.units.iter().flat_map(|u| u.env.color)),
             _ if name.starts_with("gl_EyePlane") || name.starts_with("gl_ObjectPlane") => {
                 let k = "STRQ".find(name.chars().last()?)?;

@@ -120,14 +120,16 @@ impl Context {
     /// unit).
     fn client_array_mut(&mut self, w: ClientArray) -> &mut ArrayPointer {
         match w {
-            ClientArray::Vertex => &mut self.arrays.vertex,
-            ClientArray::Color => &mut self.arrays.color,
-            ClientArray::Normal => &mut self.arrays.normal,
-            ClientArray::TexCoord => &mut self.arrays.texcoord[self.state.client_active_texture],
-            ClientArray::EdgeFlag => &mut self.arrays.edge_flag,
-            ClientArray::Index => &mut self.arrays.index,
-            ClientArray::SecondaryColor => &mut self.arrays.secondary_color,
-            ClientArray::FogCoord => &mut self.arrays.fog_coord,
+            ClientArray::Vertex => &mut self.arrays.vao.vertex,
+            ClientArray::Color => &mut self.arrays.vao.color,
+            ClientArray::Normal => &mut self.arrays.vao.normal,
+            ClientArray::TexCoord => {
+                &mut self.arrays.vao.texcoord[self.state.client_active_texture]
+            }
+            ClientArray::EdgeFlag => &mut self.arrays.vao.edge_flag,
+            ClientArray::Index => &mut self.arrays.vao.index,
+            ClientArray::SecondaryColor => &mut self.arrays.vao.secondary_color,
+            ClientArray::FogCoord => &mut self.arrays.vao.fog_coord,
         }
     }
 
@@ -146,7 +148,8 @@ impl Context {
     }
 
     /// The checks and the store of gl*Pointer and glVertexAttribPointer: GL_INVALID_VALUE
-    /// for a negative stride, GL_INVALID_ENUM for a type not a [`DataType`] or one that
+    /// for a negative stride, GL_INVALID_OPERATION for client memory while a named vertex
+    /// array object is bound, GL_INVALID_ENUM for a type not a [`DataType`] or one that
     /// `accepts` refuses, GL_INVALID_VALUE when not `size_ok` (Mesa's order); then the
     /// size, type, stride and pointer (an offset while a buffer is bound to
     /// GL_ARRAY_BUFFER) stored into the array `pick` gives, which is returned.
@@ -159,6 +162,11 @@ impl Context {
     ) -> GlResult<&mut ArrayPointer> {
         if stride < 0 {
             return Err(GlError::InvalidValue);
+        }
+        // A named vertex array object takes no client memory (Mesa's "non-VBO array",
+        // checked in its order: after the stride, before the type).
+        if self.arrays.vao_binding != 0 && self.arrays.array_buffer == 0 && ptr != 0 {
+            return Err(GlError::InvalidOperation);
         }
         let t = DataType::from_gl(ty)?;
         if !accepts(t) {
@@ -235,6 +243,10 @@ impl Context {
             self.textures.cube_seamless = on;
             return Ok(());
         }
+        if cap == GL_PRIMITIVE_RESTART {
+            self.arrays.primitive_restart = on;
+            return Ok(());
+        }
         self.set_cap(Cap::from_gl(cap)?, on)
     }
 
@@ -243,6 +255,7 @@ impl Context {
         match self.client_array_enabled(cap) {
             Some(on) => Ok(on),
             None if cap == GL_TEXTURE_CUBE_MAP_SEAMLESS => Ok(self.textures.cube_seamless),
+            None if cap == GL_PRIMITIVE_RESTART => Ok(self.arrays.primitive_restart),
             None => Ok(self.state.caps.get(Cap::from_gl(cap)?)),
         }
     }

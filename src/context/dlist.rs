@@ -510,35 +510,35 @@ impl Context {
         // SAFETY: the program promised that enabled client arrays cover element `i`;
         // buffer-object arrays are bounds-checked.
         unsafe {
-            if a.color.enabled {
-                if let Some(v) = fetch_attr(a.input(&a.color), i, true, fill) {
+            if a.vao.color.enabled {
+                if let Some(v) = fetch_attr(a.input(&a.vao.color), i, true, fill) {
                     out.push(VertexOp::Color(v));
                 }
             }
-            if a.normal.enabled {
-                if let Some(n) = fetch_attr(a.input(&a.normal), i, true, [0.0; 4]) {
+            if a.vao.normal.enabled {
+                if let Some(n) = fetch_attr(a.input(&a.vao.normal), i, true, [0.0; 4]) {
                     out.push(VertexOp::Normal([n[0], n[1], n[2]]));
                 }
             }
-            for (u, arr) in a.texcoord.iter().enumerate() {
+            for (u, arr) in a.vao.texcoord.iter().enumerate() {
                 if arr.enabled {
                     if let Some(t) = fetch_attr(a.input(arr), i, false, fill) {
                         out.push(VertexOp::TexCoord(u as u8, t));
                     }
                 }
             }
-            if a.edge_flag.enabled {
-                if let Some(e) = fetch_attr(a.input(&a.edge_flag), i, false, fill) {
+            if a.vao.edge_flag.enabled {
+                if let Some(e) = fetch_attr(a.input(&a.vao.edge_flag), i, false, fill) {
                     out.push(VertexOp::EdgeFlag(e[0] != 0.0));
                 }
             }
-            if a.secondary_color.enabled {
-                if let Some(s) = fetch_attr(a.input(&a.secondary_color), i, true, fill) {
+            if a.vao.secondary_color.enabled {
+                if let Some(s) = fetch_attr(a.input(&a.vao.secondary_color), i, true, fill) {
                     out.push(VertexOp::SecondaryColor([s[0], s[1], s[2]]));
                 }
             }
-            if a.fog_coord.enabled {
-                if let Some(f) = fetch_attr(a.input(&a.fog_coord), i, false, fill) {
+            if a.vao.fog_coord.enabled {
+                if let Some(f) = fetch_attr(a.input(&a.vao.fog_coord), i, false, fill) {
                     out.push(VertexOp::FogCoord(f[0]));
                 }
             }

@@ -36,7 +36,7 @@ fn check_unmapped(c: &Context, indexed: bool) -> GlResult<()> {
                 .is_some_and(|b| b.mapped.is_some())
     };
     if a.all_arrays().any(|p| p.enabled && mapped(p.buffer))
-        || (indexed && mapped(a.element_buffer))
+        || (indexed && mapped(a.vao.element_buffer))
     {
         return Err(GlError::InvalidOperation);
     }
@@ -86,8 +86,11 @@ fn with_arrays<R>(c: &mut Context, f: impl FnOnce(&mut Context, &ArrayState) -> 
 /// memory; indices beyond the end of a buffer are dropped.
 fn read_indices(c: &Context, count: usize, ty: DataType, ptr: usize) -> GlResult<Vec<u32>> {
     let size = ty.size();
-    let bytes: &[u8] = if c.arrays.element_buffer != 0 {
-        let data = c.arrays.buffer_data(c.arrays.element_buffer).unwrap_or(&[]);
+    let bytes: &[u8] = if c.arrays.vao.element_buffer != 0 {
+        let data = c
+            .arrays
+            .buffer_data(c.arrays.vao.element_buffer)
+            .unwrap_or(&[]);
         let avail = data.len().saturating_sub(ptr) / size;
         let n = count.min(avail);
         // An offset at or past the end gives no indices (n == 0), not a slice panic.
@@ -149,10 +152,10 @@ fn draw_range(
 /// from its store (those past its end dropped, as [`read_indices`] drops them); `None`
 /// without a bound buffer or when the offset is not 4-byte aligned in memory.
 fn buffer_indices_u32(arrays: &ArrayState, count: usize, ptr: usize) -> Option<&[u32]> {
-    if arrays.element_buffer == 0 {
+    if arrays.vao.element_buffer == 0 {
         return None;
     }
-    let data = arrays.buffer_data(arrays.element_buffer).unwrap_or(&[]);
+    let data = arrays.buffer_data(arrays.vao.element_buffer).unwrap_or(&[]);
     let start = ptr.min(data.len());
     let n = count.min((data.len() - start) / 4);
     // SAFETY: every bit pattern is a valid u32; `align_to` reinterprets only the aligned
@@ -169,6 +172,22 @@ pub(crate) fn draw_elements(
     type_: GLenum,
     indices: *const GLvoid,
 ) -> GlResult<()> {
+    draw_elements_base(c, mode, count, type_, indices, 0)
+}
+
+/// glDrawElementsBaseVertex (ARB_draw_elements_base_vertex) on the current context:
+/// glDrawElements with `base` added to every index after it is read. Under
+/// GL_PRIMITIVE_RESTART an index equal to the restart index (compared before `base` is
+/// added, as GL 3.2 says) ends the primitive: the runs between such indices are drawn
+/// as draws of their own.
+pub(crate) fn draw_elements_base(
+    c: &mut Context,
+    mode: GLenum,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const GLvoid,
+    base: GLint,
+) -> GlResult<()> {
     let mode = Primitive::from_gl(mode)?;
     let count = non_negative(count)?;
     let ty = index_type(type_)?;
@@ -180,7 +199,8 @@ pub(crate) fn draw_elements(
     }
     // 32-bit indices in a buffer object, from 0 and compact (the usual mesh), are drawn
     // from the buffer's store without a copy.
-    if ty == DataType::UInt && c.arrays.element_buffer != 0 {
+    let restart = c.arrays.primitive_restart.then_some(c.arrays.restart_index);
+    if ty == DataType::UInt && c.arrays.vao.element_buffer != 0 && base == 0 && restart.is_none() {
         let drawn = with_arrays(c, |c, arrays| {
             let Some(idx) = buffer_indices_u32(arrays, count, indices as usize) else {
                 return false;
@@ -198,7 +218,23 @@ pub(crate) fn draw_elements(
             return Ok(());
         }
     }
-    let mut idx = read_indices(c, count, ty, indices as usize)?;
+    let idx = read_indices(c, count, ty, indices as usize)?;
+    let Some(r) = restart else {
+        return draw_list(c, mode, idx, base);
+    };
+    for run in idx.split(|&i| i == r).filter(|run| !run.is_empty()) {
+        draw_list(c, mode, run.to_vec(), base)?;
+    }
+    Ok(())
+}
+
+/// Draws the vertices `idx` names, each plus `base` (wrapping: a negative result is
+/// undefined in GL and reads nothing from a buffer).
+fn draw_list(c: &mut Context, mode: Primitive, mut idx: Vec<u32>, base: GLint) -> GlResult<()> {
+    if base != 0 {
+        idx.iter_mut()
+            .for_each(|i| *i = i.wrapping_add_signed(base));
+    }
     let Some((lo, hi)) = crate::simd::scan::min_max(&idx) else {
         return Ok(());
     };
@@ -214,7 +250,7 @@ pub(crate) fn draw_elements(
     }
     let fetch = VertexFetcher::new(&c.arrays.inputs(), &c.state.current);
     // Generic attribute arrays (a vertex shader's) are gathered with the vertices.
-    let generic = c.arrays.generic[1..].iter().any(|a| a.enabled);
+    let generic = c.arrays.vao.generic[1..].iter().any(|a| a.enabled);
     let (verts, local): (Gathered, Vec<u32>) = {
         let mut map: HashMap<u32, u32> = HashMap::new();
         let mut v = Gathered::default();
@@ -279,7 +315,7 @@ mod tests {
             ..Default::default()
         };
         a.buffers.insert(3, Some(b));
-        a.element_buffer = 3;
+        a.vao.element_buffer = 3;
         let store = a.buffer_data(3).unwrap();
         for ptr in 0..300 {
             for count in [0, 1, 5, 63, 64, 65, 1000] {

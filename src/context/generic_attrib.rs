@@ -15,7 +15,9 @@
 use super::arrays::{DataType, MAX_VERTEX_ATTRIBS};
 use super::dlist::VertexOp;
 use super::{Context, GlError, GlResult};
-use crate::gl::glext_enums::GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING;
+use crate::gl::glext_enums::{
+    GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, GL_VERTEX_ATTRIB_ARRAY_DIVISOR,
+};
 use crate::gl::types::GLenum;
 
 /// GL_VERTEX_ATTRIB_ARRAY_ENABLED.
@@ -114,21 +116,29 @@ impl Context {
         let i = slot(index)?;
         let checks = (|_: DataType| true, (1..=4).contains(&size));
         let format = (size, ty, stride);
-        let a = self.store_array_pointer(|c| &mut c.arrays.generic[i], format, ptr, checks)?;
+        let a = self.store_array_pointer(|c| &mut c.arrays.vao.generic[i], format, ptr, checks)?;
         a.normalized = normalized;
+        Ok(())
+    }
+
+    /// glVertexAttribDivisor (ARB_instanced_arrays): attribute `index` advances once per
+    /// `divisor` instances (0: once per vertex); GL_INVALID_VALUE for an index at or
+    /// past GL_MAX_VERTEX_ATTRIBS.
+    pub(crate) fn vertex_attrib_divisor(&mut self, index: u32, divisor: u32) -> GlResult<()> {
+        self.arrays.vao.divisor[slot(index)?] = divisor;
         Ok(())
     }
 
     /// glEnableVertexAttribArray / glDisableVertexAttribArray.
     pub(crate) fn set_vertex_attrib_array(&mut self, index: u32, on: bool) -> GlResult<()> {
-        self.arrays.generic[slot(index)?].enabled = on;
+        self.arrays.vao.generic[slot(index)?].enabled = on;
         Ok(())
     }
 
     /// glGetVertexAttrib{f,d,i}v: the value of `pname` for attribute `index`.
     pub(crate) fn get_vertex_attrib(&self, index: u32, pname: GLenum) -> GlResult<AttribValue> {
         let i = slot(index)?;
-        let a = &self.arrays.generic[i];
+        let a = &self.arrays.vao.generic[i];
         Ok(AttribValue::Int(match pname {
             GL_VERTEX_ATTRIB_ARRAY_ENABLED => a.enabled as i64,
             GL_VERTEX_ATTRIB_ARRAY_SIZE => a.size as i64,
@@ -136,6 +146,7 @@ impl Context {
             GL_VERTEX_ATTRIB_ARRAY_TYPE => a.ty.to_gl() as i64,
             GL_VERTEX_ATTRIB_ARRAY_NORMALIZED => a.normalized as i64,
             GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING => a.buffer as i64,
+            GL_VERTEX_ATTRIB_ARRAY_DIVISOR => self.arrays.vao.divisor[i] as i64,
             GL_CURRENT_VERTEX_ATTRIB => {
                 // Attribute 0 aliases the vertex position: it has no readable value.
                 if i == 0 {
@@ -153,6 +164,6 @@ impl Context {
         if pname != GL_VERTEX_ATTRIB_ARRAY_POINTER {
             return Err(GlError::InvalidEnum);
         }
-        Ok(self.arrays.generic[i].ptr)
+        Ok(self.arrays.vao.generic[i].ptr)
     }
 }

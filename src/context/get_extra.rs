@@ -32,7 +32,9 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_half_float_pixel GL_ARB_texture_float GL_ARB_texture_rg ",
     "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object ",
     "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader ",
-    "GL_ARB_shading_language_100 GL_ARB_draw_buffers GL_ARB_texture_non_power_of_two\0"
+    "GL_ARB_shading_language_100 GL_ARB_draw_buffers GL_ARB_texture_non_power_of_two ",
+    "GL_ARB_vertex_array_object GL_ARB_draw_elements_base_vertex ",
+    "GL_ARB_draw_instanced GL_ARB_instanced_arrays\0"
 );
 
 /// glGetString: vendor, renderer, version ("2.1 …", the compatibility profile of GL 2.1),
@@ -55,16 +57,16 @@ impl Context {
     pub(crate) fn get_pointer(&self, pname: GLenum) -> GlResult<usize> {
         let a = &self.arrays;
         Ok(match pname {
-            GL_VERTEX_ARRAY_POINTER => a.vertex.ptr,
-            GL_COLOR_ARRAY_POINTER => a.color.ptr,
-            GL_NORMAL_ARRAY_POINTER => a.normal.ptr,
-            GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[self.state.client_active_texture].ptr,
+            GL_VERTEX_ARRAY_POINTER => a.vao.vertex.ptr,
+            GL_COLOR_ARRAY_POINTER => a.vao.color.ptr,
+            GL_NORMAL_ARRAY_POINTER => a.vao.normal.ptr,
+            GL_TEXTURE_COORD_ARRAY_POINTER => a.vao.texcoord[self.state.client_active_texture].ptr,
             GL_FEEDBACK_BUFFER_POINTER => self.feedback.fb_buffer,
             GL_SELECTION_BUFFER_POINTER => self.feedback.sel_buffer,
-            GL_EDGE_FLAG_ARRAY_POINTER => a.edge_flag.ptr,
-            GL_INDEX_ARRAY_POINTER => a.index.ptr,
-            GL_SECONDARY_COLOR_ARRAY_POINTER => a.secondary_color.ptr,
-            GL_FOG_COORD_ARRAY_POINTER => a.fog_coord.ptr,
+            GL_EDGE_FLAG_ARRAY_POINTER => a.vao.edge_flag.ptr,
+            GL_INDEX_ARRAY_POINTER => a.vao.index.ptr,
+            GL_SECONDARY_COLOR_ARRAY_POINTER => a.vao.secondary_color.ptr,
+            GL_FOG_COORD_ARRAY_POINTER => a.vao.fog_coord.ptr,
             _ => return Err(GlError::InvalidEnum),
         })
     }

@@ -33,6 +33,7 @@ pub mod fbo_image;
 pub mod fbo_lend;
 pub mod fbo_query;
 pub mod feedback;
+pub mod frag_outputs;
 pub mod fragment_state;
 pub mod generic_attrib;
 pub mod get;
@@ -40,6 +41,7 @@ pub mod get_extra;
 pub mod get_shader;
 pub mod hint_clip;
 pub mod immediate;
+pub mod instanced;
 pub mod legacy_state;
 pub mod lighting_state;
 pub mod list_calls;
@@ -145,6 +147,10 @@ pub struct Context {
     pub immediate: immediate::Immediate,
     /// The generic vertex attributes' current values (glVertexAttrib*).
     pub generic_current: [[f32; 4]; arrays::MAX_VERTEX_ATTRIBS],
+    /// The instance a draw is drawing (a vertex shader's `gl_InstanceID`): 0 outside
+    /// instanced draws ([`instanced`]). Not in [`arrays::ArrayState`], which a draw moves
+    /// out of the context while it reads the arrays.
+    pub draw_instance: u32,
     /// The first error not yet read by glGetError.
     pub error: Option<GlError>,
     /// The buffers this context was created with.
@@ -248,6 +254,7 @@ impl Context {
             arrays: arrays::ArrayState::default(),
             immediate: immediate::Immediate::default(),
             generic_current: [generic_attrib::GENERIC_DEFAULT; arrays::MAX_VERTEX_ATTRIBS],
+            draw_instance: 0,
             error: None,
             visual,
             fb: None,

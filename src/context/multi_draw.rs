@@ -4,7 +4,7 @@
 //! compiles each of its draws.
 
 use super::dlist::Elements;
-use super::draw_cmd::{array_range, draw_arrays, draw_elements, element_list};
+use super::draw_cmd::{array_range, draw_arrays, draw_elements_base, element_list};
 use super::state::Primitive;
 use super::{Context, GlError, GlResult};
 use crate::gl::types::*;
@@ -56,14 +56,16 @@ impl Context {
         mode: GLenum,
         type_: GLenum,
         draws: &Draws<(GLsizei, *const GLvoid)>,
+        bases: &[GLint],
     ) -> GlResult<()> {
         let draws = draws.as_ref().map_err(|e| *e)?;
-        draw_elements(self, mode, 0, type_, std::ptr::null())?;
+        draw_elements_base(self, mode, 0, type_, std::ptr::null(), 0)?;
         if draws.iter().any(|&(k, _)| k < 0) {
             return Err(GlError::InvalidValue);
         }
-        for &(k, p) in draws {
-            draw_elements(self, mode, k, type_, p)?;
+        for (i, &(k, p)) in draws.iter().enumerate() {
+            let base = bases.get(i).copied().unwrap_or(0);
+            draw_elements_base(self, mode, k, type_, p, base)?;
         }
         Ok(())
     }
@@ -75,13 +77,15 @@ impl Context {
         mode: GLenum,
         type_: GLenum,
         draws: &Draws<(GLsizei, *const GLvoid)>,
+        bases: &[GLint],
     ) {
         let draws = match draws {
             Ok(d) => d,
             Err(e) => return self.compile_draw(Err(*e), Ok(Elements::List(Vec::new()))),
         };
-        for &(k, p) in draws {
-            let idx = element_list(self, k, type_, p);
+        for (i, &(k, p)) in draws.iter().enumerate() {
+            let base = bases.get(i).copied().unwrap_or(0);
+            let idx = element_list(self, k, type_, p).map(|e| with_base(e, base));
             self.compile_draw(Primitive::from_gl(mode), idx);
         }
     }
@@ -90,13 +94,14 @@ impl Context {
     /// `end < start` is GL_INVALID_VALUE before anything else).
     pub(crate) fn draw_range_elements(&mut self, mode: GLenum, d: &RangeDraw) -> GlResult<()> {
         check_range(d.start, d.end)?;
-        draw_elements(self, mode, d.count, d.type_, d.indices)
+        draw_elements_base(self, mode, d.count, d.type_, d.indices, d.base)
     }
 
     /// glDrawRangeElements compiled into the display list.
     pub(crate) fn compile_draw_range_elements(&mut self, mode: GLenum, d: &RangeDraw) {
         let idx = check_range(d.start, d.end)
-            .and_then(|_| element_list(self, d.count, d.type_, d.indices));
+            .and_then(|_| element_list(self, d.count, d.type_, d.indices))
+            .map(|e| with_base(e, d.base));
         self.compile_draw(Primitive::from_gl(mode), idx)
     }
 }
@@ -113,6 +118,20 @@ pub(crate) struct RangeDraw {
     pub type_: GLenum,
     /// Where they are (client memory, or an offset into the element buffer).
     pub indices: *const GLvoid,
+    /// The base vertex (glDrawRangeElementsBaseVertex; 0 for glDrawRangeElements).
+    pub base: GLint,
+}
+
+/// A compiled element list with `base` added to every index (the base-vertex draws in a
+/// display list).
+pub(crate) fn with_base(e: Elements, base: GLint) -> Elements {
+    match e {
+        Elements::List(mut v) if base != 0 => {
+            v.iter_mut().for_each(|i| *i = i.wrapping_add_signed(base));
+            Elements::List(v)
+        }
+        e => e,
+    }
 }
 
 /// GL_INVALID_VALUE when a glDrawRangeElements range ends before it starts.

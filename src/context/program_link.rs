@@ -115,6 +115,8 @@ pub struct Linked {
     pub draw: Option<Result<Arc<crate::shader::draw::FragShader>, String>>,
     /// The vertex shader as draws run it (`None` without a vertex stage).
     pub vert: Option<Result<Arc<crate::shader::vertex_draw::VertShader>, String>>,
+    /// The fragment shader's user-defined outputs and their draw buffers.
+    pub frag_outputs: Vec<super::frag_outputs::FragOutput>,
 }
 
 /// The GL type enum of a basic GLSL type (GL 2.0 table 2.9, GL 2.1's non-square matrices,
@@ -693,7 +695,9 @@ pub fn link(
                 location: -1,
             };
             if matches!(var.storage, Storage::In) {
-                if let Some(&b) = bindings.get(&var.name) {
+                // `layout(location = N)` wins over glBindAttribLocation (GL 3.3 §2.11.3).
+                let explicit = var.location.and_then(|l| u32::try_from(l).ok());
+                if let Some(b) = explicit.or_else(|| bindings.get(&var.name).copied()) {
                     a.location = b as i32;
                     for s in free.iter_mut().skip(b as usize).take(slots) {
                         *s = false;
@@ -726,16 +730,21 @@ impl Context {
     /// glLinkProgram.
     pub fn link_program(&mut self, program: u32) -> GlResult<()> {
         let p = self.shaders.table.program(program)?;
-        let result = link(&self.shaders.table, &p.shaders.clone(), &p.bindings.clone());
+        let result =
+            link(&self.shaders.table, &p.shaders.clone(), &p.bindings.clone()).and_then(|mut l| {
+                l.frag_outputs = super::frag_outputs::assign(&l.fragment, &p.frag_bindings)?;
+                Ok(l)
+            });
         let p = self.shaders.table.program_mut(program)?;
         p.validate_status = false;
         match result {
             Ok(mut l) => {
                 let vertex = !l.vertex.is_empty();
+                let outs = &l.frag_outputs;
                 l.draw = match l.fragment.as_slice() {
                     [] => None,
                     [f] => Some(crate::shader::draw::FragShader::prepare(
-                        Arc::clone(f),
+                        Arc::new(super::frag_outputs::with_locations(f, outs)),
                         vertex,
                     )),
                     _ => Some(Err("several fragment shaders".into())),

@@ -83,6 +83,8 @@ pub struct ProgramObject {
     pub shaders: Vec<u32>,
     /// glBindAttribLocation's bindings, used by the next link.
     pub bindings: HashMap<String, u32>,
+    /// glBindFragDataLocation's bindings, used by the next link.
+    pub frag_bindings: HashMap<String, u32>,
     /// GL_LINK_STATUS.
     pub link_status: bool,
     /// GL_VALIDATE_STATUS.

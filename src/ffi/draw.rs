@@ -1,13 +1,14 @@
 //! Draw calls from arrays: glDrawArrays, glDrawElements, glDrawRangeElements. Each runs,
 //! or is compiled into the display list being built, through [`listable_draw`]; the
-//! validation and the draw are [`crate::context::draw_cmd`]'s.
+//! validation and the draw are [`crate::context::draw_cmd`]'s. A draw run now is instance
+//! 0 of [`instanced`] (arrays with a divisor read their first element).
 #![allow(non_snake_case)]
 
 use super::types::*;
 use super::with_ctx_raw;
 pub(crate) use crate::context::draw_cmd::{array_range, draw_arrays, draw_elements, element_list};
 use crate::context::error::{GlError, GlResult};
-use crate::context::multi_draw::RangeDraw;
+use crate::context::instanced::instanced;
 use crate::context::state::Primitive;
 use crate::context::Context;
 
@@ -48,7 +49,7 @@ pub(crate) fn listable_draw(
 #[no_mangle]
 pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
     listable_draw(
-        |c| draw_arrays(c, mode, first, count),
+        |c| instanced(c, 1, |c| draw_arrays(c, mode, first, count)),
         |c| c.compile_draw(Primitive::from_gl(mode), array_range(first, count)),
     )
 }
@@ -62,7 +63,7 @@ pub extern "C" fn glDrawElements(
     indices: *const GLvoid,
 ) {
     listable_draw(
-        |c| draw_elements(c, mode, count, type_, indices),
+        |c| instanced(c, 1, |c| draw_elements(c, mode, count, type_, indices)),
         |c| {
             let idx = element_list(c, count, type_, indices);
             c.compile_draw(Primitive::from_gl(mode), idx)
@@ -70,7 +71,8 @@ pub extern "C" fn glDrawElements(
     )
 }
 
-/// glDrawRangeElements (the range is a hint; indices outside it are still drawn).
+/// glDrawRangeElements (the range is a hint; indices outside it are still drawn): the
+/// base-vertex call with base 0.
 #[no_mangle]
 pub extern "C" fn glDrawRangeElements(
     mode: GLenum,
@@ -80,15 +82,5 @@ pub extern "C" fn glDrawRangeElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    let d = RangeDraw {
-        start,
-        end,
-        count,
-        type_,
-        indices,
-    };
-    listable_draw(
-        |c| c.draw_range_elements(mode, &d),
-        |c| c.compile_draw_range_elements(mode, &d),
-    )
+    super::vertex_input::glDrawRangeElementsBaseVertex(mode, start, end, count, type_, indices, 0)
 }

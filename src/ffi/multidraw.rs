@@ -5,6 +5,7 @@
 use super::client::read_pairs;
 use super::draw::listable_draw;
 use super::types::*;
+use crate::context::instanced::instanced;
 
 /// glMultiDrawArrays.
 ///
@@ -20,7 +21,7 @@ pub unsafe extern "C" fn glMultiDrawArrays(
     // SAFETY: the caller promises `drawcount` entries in each array.
     let draws = unsafe { read_pairs(first, count, drawcount) };
     listable_draw(
-        |c| c.multi_draw_arrays(mode, &draws),
+        |c| instanced(c, 1, |c| c.multi_draw_arrays(mode, &draws)),
         |c| c.compile_multi_draw_arrays(mode, &draws),
     )
 }
@@ -40,7 +41,7 @@ pub unsafe extern "C" fn glMultiDrawElements(
     // SAFETY: the caller promises `drawcount` entries in each array.
     let draws = unsafe { read_pairs(count, indices, drawcount) };
     listable_draw(
-        |c| c.multi_draw_elements(mode, type_, &draws),
-        |c| c.compile_multi_draw_elements(mode, type_, &draws),
+        |c| instanced(c, 1, |c| c.multi_draw_elements(mode, type_, &draws, &[])),
+        |c| c.compile_multi_draw_elements(mode, type_, &draws, &[]),
     )
 }

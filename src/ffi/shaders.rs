@@ -210,7 +210,40 @@ unsafe fn bind_attrib(program: GLuint, index: GLuint, name: *const GLchar) {
     })
 }
 
+/// glBindFragDataLocation (a null name does nothing after the program's checks, as in
+/// Mesa).
+///
+/// # Safety
+/// `name` null or a NUL-terminated string.
+unsafe fn bind_frag_data(program: GLuint, color: GLuint, name: *const GLchar) {
+    with_ctx(|c| {
+        // SAFETY: forwarded caller contract.
+        match unsafe { c_string(name) } {
+            Some(n) => c.bind_frag_data_location(program, color, &n),
+            None => c.shaders.table.program(program).map(|_| ()),
+        }
+    })
+}
+
+/// glGetFragDataLocation: -1 for a null name (after the program's checks) or on error.
+///
+/// # Safety
+/// `name` null or a NUL-terminated string.
+unsafe fn frag_data_location(program: GLuint, name: *const GLchar) -> GLint {
+    let r = with_ctx(|c| {
+        // SAFETY: forwarded caller contract (read only with a context, as GL would).
+        let name = unsafe { c_string(name) };
+        let name = name.as_deref().unwrap_or("gl_");
+        Ok(Some(c.frag_data_location(program, name)?))
+    });
+    r.unwrap_or(-1)
+}
+
 c_fns! {
+    unsafe fn glBindFragDataLocation(program: GLuint, color: GLuint, name: *const GLchar) => bind_frag_data(program, color, name);
+    unsafe fn glGetFragDataLocation(program: GLuint, name: *const GLchar) -> GLint => frag_data_location(program, name);
+    unsafe fn glBindFragDataLocationEXT(program: GLuint, color: GLuint, name: *const GLchar) = shaders::glBindFragDataLocation;
+    unsafe fn glGetFragDataLocationEXT(program: GLuint, name: *const GLchar) -> GLint = shaders::glGetFragDataLocation;
     safe fn glCreateShader(type_: GLenum) -> GLuint => with_ctx(|c| c.create_shader(type_));
     safe fn glCreateProgram() -> GLuint => with_ctx(|c| Ok(c.create_program()));
     unsafe fn glShaderSource(shader: GLuint, count: GLsizei, string: *const *const GLchar, length: *const GLint) => shader_source(shader, count, string, length);

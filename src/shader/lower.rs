@@ -103,6 +103,11 @@ pub struct Options {
 /// sets the word per triangle).
 pub const FRONT_FACING: &str = "gl_FrontFacing";
 
+/// The uniform that carries `gl_InstanceID` (and ARB_draw_instanced's `gl_InstanceIDARB`)
+/// into a vertex shader: the draw runs once per instance and supplies it as built-in
+/// state (`context::instanced`).
+pub const INSTANCE_ID: &str = "gl_InstanceID";
+
 /// The elements of `gl_TexCoord[]` (unsized in the shader): `gl_MaxTextureCoords`.
 pub const TEX_COORDS: u32 = 8;
 
@@ -218,19 +223,18 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
     let out = p
         .vars
         .iter()
-        .position(|v| {
-            v.name == "gl_FragColor"
-                || (v.storage == Storage::Out && v.ty == Type::Vector(Scalar::Float, 4))
-        })
+        .position(|v| v.name == "gl_FragColor")
         .filter(|i| l.env.contains_key(i));
     let data = p
         .vars
         .iter()
         .position(|v| v.name == "gl_FragData")
         .and_then(|i| l.env.get(&i).cloned());
-    // gl_FragColor (or the one `out` vec4) goes to every draw buffer, as Mesa's
-    // `write_all_cbufs`; gl_FragData[k] to draw buffer k. A draw buffer the shader writes
-    // nothing to gets zeros (llvmpipe's colour outputs start as zeroed allocas).
+    // gl_FragColor goes to every draw buffer, as Mesa's `write_all_cbufs`; gl_FragData[k]
+    // to draw buffer k; a user `out` to the draw buffers from its location on (the link
+    // sets it, `context::frag_outputs`; 0 when unset), one per array element. A draw
+    // buffer or component the shader writes nothing to gets zeros (llvmpipe's colour
+    // outputs start as zeroed allocas).
     let zero = l.f32(0.0);
     let mut colors = [[zero; 4]; MAX_DRAW_BUFFERS];
     match (out, data) {
@@ -243,7 +247,7 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
                 colors[k] = [c[0], c[1], c[2], c[3]];
             }
         }
-        _ => {}
+        _ => user_outputs(p, &l.env, &mut colors)?,
     }
     let depth = p
         .vars
@@ -264,6 +268,36 @@ pub fn lower_fragment_with(p: &hir::Program, opts: Options) -> Result<Lowered, U
         front_facing: l.front_facing,
         textures: l.textures,
     })
+}
+
+/// Puts the user-defined outputs of `p` the lowering wrote (`env`) into `colors`, by
+/// location (see [`lower_fragment_with`]). Outputs that are not floats are refused.
+fn user_outputs(
+    p: &hir::Program,
+    env: &HashMap<usize, Vec<Val>>,
+    colors: &mut [[Val; 4]; MAX_DRAW_BUFFERS],
+) -> R<()> {
+    for (i, v) in p.vars.iter().enumerate() {
+        let Some(vals) = env.get(&i).filter(|_| v.storage == Storage::Out) else {
+            continue;
+        };
+        let elem = match &v.ty {
+            Type::Array(e, _) => &**e,
+            t => t,
+        };
+        let n = match elem {
+            Type::Scalar(Scalar::Float) => 1,
+            Type::Vector(Scalar::Float, n) => usize::from(*n),
+            _ => return no(format!("fragment output {} of type {elem:?}", v.name)),
+        };
+        let at = usize::try_from(v.location.unwrap_or(0)).unwrap_or(MAX_DRAW_BUFFERS);
+        for (k, c) in vals.chunks_exact(n).enumerate() {
+            if let Some(dst) = colors.get_mut(at + k) {
+                dst[..n].copy_from_slice(c);
+            }
+        }
+    }
+    Ok(())
 }
 
 impl<'p> Lower<'p> {
@@ -496,6 +530,11 @@ impl Lower<'_> {
     fn input(&mut self, id: VarId, sc: &[Scalar]) -> R<Vec<Val>> {
         let var = &self.p.vars[id];
         if self.vertex {
+            if matches!(var.name.as_str(), "gl_InstanceID" | "gl_InstanceIDARB") {
+                let first = self.uniform_slot(INSTANCE_ID, &[Scalar::Int]);
+                let u = self.op(Op::Uniform(first));
+                return Ok(vec![self.op(Op::Bits(u))]);
+            }
             return self.attribute(&var.name.clone(), sc);
         }
         match var.name.as_str() {

@@ -97,7 +97,7 @@ pub const MATRIX_UNIFORMS: [&str; 18] = [
 
 /// The built-in state uniforms the context supplies (`context::builtin_uniforms`), in
 /// either stage, with the user uniforms' words in slot order.
-pub const STATE_UNIFORMS: [&str; 21] = [
+pub const STATE_UNIFORMS: [&str; 22] = [
     "gl_LightSource",
     "gl_LightModel",
     "gl_FrontMaterial",
@@ -119,6 +119,8 @@ pub const STATE_UNIFORMS: [&str; 21] = [
     "gl_ObjectPlaneT",
     "gl_ObjectPlaneR",
     "gl_ObjectPlaneQ",
+    // `gl_InstanceID`: the instance an instanced draw is drawing (vertex stage only).
+    super::lower::INSTANCE_ID,
 ];
 
 /// Whether the context supplies built-in uniform `name` ([`MATRIX_UNIFORMS`],
