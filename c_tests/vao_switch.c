@@ -301,12 +301,6 @@ int main(int argc, char **argv)
     out = sgl_open(argc, argv);
     prog_t = vert_program(VS_T, NULL, NULL);
     prog_g = vert_program(VS_G, NULL, names);
-    setup();
-    sgl_text(out, "setup", "err 0x%04x\n", glGetError());
-    frag_window_and_fbo(out, buf, rb, draw, NULL, 0);
-    queries();
-    /* the scene again after the queries and deletions */
-    draw(NULL, 0);
-    frag_output(out, "again", buf);
+    vert_scene_body(out, buf, rb, setup, draw, queries);
     return sgl_end_scene(ctx, buf);
 }

@@ -70,6 +70,22 @@ static inline GLuint vert_program(const char *vs, const char *fs, const char **a
     return p;
 }
 
+/* The body of a vertex-input scene's main once its programs exist: runs `setup` and
+ * logs its error, draws the window and the framebuffer object with `draw`, runs
+ * `queries`, and draws the window once more (image "again", after the queries'
+ * errors). */
+static inline void vert_scene_body(FILE *out, unsigned char *buf, unsigned char *rb,
+                                   void (*setup)(void), void (*draw)(const GLuint *, int),
+                                   void (*queries)(void))
+{
+    setup();
+    sgl_text(out, "setup", "err 0x%04x\n", glGetError());
+    frag_window_and_fbo(out, buf, rb, draw, NULL, 0);
+    queries();
+    draw(NULL, 0);
+    frag_output(out, "again", buf);
+}
+
 /* A new buffer object bound to GL_ARRAY_BUFFER holding `bytes` of `v`: vertices of
  * `stride` bytes, three position floats then three colour floats, as the enabled
  * vertex and colour arrays. */

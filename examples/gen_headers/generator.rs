@@ -96,6 +96,7 @@ pub const SOURCES: &[(&str, Header)] = &[
     ("arrays_ext.rs", Header::Glext),
     ("transform_ext.rs", Header::Glext),
     ("vertex_attrib.rs", Header::Glext),
+    ("vertex_attrib_int.rs", Header::Glext),
     ("vertex_input.rs", Header::Glext),
     ("shaders.rs", Header::Glext),
     ("shaders_arb.rs", Header::Glext),

@@ -17,6 +17,7 @@ use super::dlist::VertexOp;
 use super::{Context, GlError, GlResult};
 use crate::gl::glext_enums::{
     GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, GL_VERTEX_ATTRIB_ARRAY_DIVISOR,
+    GL_VERTEX_ATTRIB_ARRAY_INTEGER,
 };
 use crate::gl::types::GLenum;
 
@@ -118,6 +119,25 @@ impl Context {
         let format = (size, ty, stride);
         let a = self.store_array_pointer(|c| &mut c.arrays.vao.generic[i], format, ptr, checks)?;
         a.normalized = normalized;
+        a.integer = false;
+        Ok(())
+    }
+
+    /// glVertexAttribIPointer (GL 3.0): as [`Context::vertex_attrib_pointer`] for an
+    /// integer array, whose type must be an integer one (GL_INVALID_ENUM otherwise).
+    pub(crate) fn vertex_attrib_ipointer(
+        &mut self,
+        index: u32,
+        (size, ty, stride): (i32, GLenum, i32),
+        ptr: usize,
+    ) -> GlResult<()> {
+        let i = slot(index)?;
+        let int = |t: DataType| !matches!(t, DataType::Float | DataType::Double);
+        let checks = (int, (1..=4).contains(&size));
+        let format = (size, ty, stride);
+        let a = self.store_array_pointer(|c| &mut c.arrays.vao.generic[i], format, ptr, checks)?;
+        a.normalized = false;
+        a.integer = true;
         Ok(())
     }
 
@@ -147,6 +167,7 @@ impl Context {
             GL_VERTEX_ATTRIB_ARRAY_NORMALIZED => a.normalized as i64,
             GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING => a.buffer as i64,
             GL_VERTEX_ATTRIB_ARRAY_DIVISOR => self.arrays.vao.divisor[i] as i64,
+            GL_VERTEX_ATTRIB_ARRAY_INTEGER => a.integer as i64,
             GL_CURRENT_VERTEX_ATTRIB => {
                 // Attribute 0 aliases the vertex position: it has no readable value.
                 if i == 0 {

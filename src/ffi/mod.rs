@@ -79,6 +79,7 @@ pub mod textures_compressed;
 pub mod textures_ext;
 pub mod transform_ext;
 pub mod vertex_attrib;
+pub mod vertex_attrib_int;
 pub mod vertex_input;
 pub use crate::gl::types;
 

@@ -141,23 +141,7 @@ unsafe fn fetch_from(
     normalized: bool,
     fill: [f32; 4],
 ) -> Option<[f32; 4]> {
-    let esize = arr.size as usize * arr.ty.size();
-    let off = (index as usize).checked_mul(arr.byte_stride())?;
-    let base: *const u8 = if let Some(data) = data {
-        let start = arr.ptr.checked_add(off)?;
-        if start.checked_add(esize)? > data.len() {
-            return None;
-        }
-        // SAFETY: start + esize <= data.len() was checked above.
-        unsafe { data.as_ptr().add(start) }
-    } else {
-        // A null pointer plus a small offset (glInterleavedArrays(fmt, 0, NULL), or a VBO
-        // offset given with no buffer bound) is never client memory: treat it as null.
-        if arr.ptr < NULL_PAGE {
-            return None;
-        }
-        arr.ptr.checked_add(off)? as *const u8
-    };
+    let base = element(data, arr, index)?;
     let n = arr.size as usize;
     // SAFETY: (all arms) buffer reads were bounds-checked; client pointers are the
     // program's promise. The common layouts are read as whole vectors: filled component
@@ -179,6 +163,54 @@ unsafe fn fetch_from(
             _ => Some(convert_other(base, arr.ty, n, normalized, fill)),
         }
     }
+}
+
+/// Where element `index` of `arr` starts: in `data` (the buffer's store) when it lies
+/// inside it, else in client memory (`None` for a null pointer plus a small offset).
+#[inline(always)]
+fn element(data: Option<&[u8]>, arr: &ArrayPointer, index: u32) -> Option<*const u8> {
+    let esize = arr.size as usize * arr.ty.size();
+    let off = (index as usize).checked_mul(arr.byte_stride())?;
+    if let Some(data) = data {
+        let start = arr.ptr.checked_add(off)?;
+        if start.checked_add(esize)? > data.len() {
+            return None;
+        }
+        // SAFETY: start + esize <= data.len() was checked above.
+        return Some(unsafe { data.as_ptr().add(start) });
+    }
+    // A null pointer plus a small offset (glInterleavedArrays(fmt, 0, NULL), or a VBO
+    // offset given with no buffer bound) is never client memory: treat it as null.
+    if arr.ptr < NULL_PAGE {
+        return None;
+    }
+    Some(arr.ptr.checked_add(off)? as *const u8)
+}
+
+/// Element `index` of integer array `arr` (glVertexAttribIPointer) as the bits of its
+/// integers, sign- or zero-extended by type, over (0, 0, 0, 1); `None` as [`fetch_from`].
+///
+/// # Safety
+/// As [`fetch_attr`].
+unsafe fn fetch_int(data: Option<&[u8]>, arr: &ArrayPointer, index: u32) -> Option<[f32; 4]> {
+    let p = element(data, arr, index)?;
+    let mut out = [0, 0, 0, 1u32];
+    for (k, o) in out.iter_mut().enumerate().take(arr.size as usize) {
+        // SAFETY: `element` checked the element against a buffer's store, or client
+        // memory is the program's promise; reads are unaligned.
+        *o = unsafe {
+            match arr.ty {
+                DataType::Byte => p.cast::<i8>().add(k).read() as i32 as u32,
+                DataType::UByte => p.add(k).read() as u32,
+                DataType::Short => p.cast::<i16>().add(k).read_unaligned() as i32 as u32,
+                DataType::UShort => p.cast::<u16>().add(k).read_unaligned() as u32,
+                DataType::Int | DataType::UInt => p.cast::<u32>().add(k).read_unaligned(),
+                // glVertexAttribIPointer takes no float type.
+                DataType::Float | DataType::Double => 0,
+            }
+        };
+    }
+    Some(out.map(f32::from_bits))
 }
 
 /// The `n` (2 to 4) floats at `p` over `fill`, read as one vector: the float layouts of
@@ -431,6 +463,13 @@ impl<'a> VertexFetcher<'a> {
     pub unsafe fn generic(&self, loc: usize, index: u32) -> Option<[f32; 4]> {
         const ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
         let s = self.generic.get(loc)?.as_ref()?;
+        if let Ok(src) = s {
+            if src.arr.integer {
+                const INT_ORIGIN: [f32; 4] = [0.0, 0.0, 0.0, f32::from_bits(1)];
+                // SAFETY: forwarded from the caller.
+                return Some(unsafe { fetch_int(src.data, src.arr, index) }.unwrap_or(INT_ORIGIN));
+            }
+        }
         let norm = matches!(s, Ok(src) if src.arr.normalized);
         // SAFETY: forwarded from the caller.
         Some(unsafe { Source::get(s, index, norm, ORIGIN) }.unwrap_or(ORIGIN))

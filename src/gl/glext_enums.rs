@@ -730,8 +730,10 @@ pub const GL_DEPTH32F_STENCIL8: GLenum = 0x8CAD;
 pub const GL_FLOAT_32_UNSIGNED_INT_24_8_REV: GLenum = 0x8DAD;
 pub const GL_TEXTURE_CUBE_MAP_SEAMLESS: GLenum = 0x884F;
 
-// GL 3.0–3.3's vertex input: ARB_vertex_array_object, ARB_instanced_arrays, primitive restart
+// GL 3.0–3.3's vertex input: ARB_vertex_array_object, ARB_instanced_arrays, integer
+// attributes, primitive restart
 pub const GL_VERTEX_ARRAY_BINDING: GLenum = 0x85B5;
 pub const GL_VERTEX_ATTRIB_ARRAY_DIVISOR: GLenum = 0x88FE;
+pub const GL_VERTEX_ATTRIB_ARRAY_INTEGER: GLenum = 0x88FD;
 pub const GL_PRIMITIVE_RESTART: GLenum = 0x8F9D;
 pub const GL_PRIMITIVE_RESTART_INDEX: GLenum = 0x8F9E;

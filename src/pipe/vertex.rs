@@ -54,6 +54,9 @@ pub struct ArrayPointer {
     /// glVertexAttribPointer's `normalized` (integer components mapped to [0, 1] or
     /// [-1, 1]); false for the fixed-function arrays, whose own rule the fetch applies.
     pub normalized: bool,
+    /// glVertexAttribIPointer's array (GL 3.0): its integers reach the shader unconverted,
+    /// as the bits of the attribute's words.
+    pub integer: bool,
 }
 
 impl ArrayPointer {
@@ -67,6 +70,7 @@ impl ArrayPointer {
             ptr: 0,
             buffer: 0,
             normalized: false,
+            integer: false,
         }
     }
     /// The effective stride in bytes.

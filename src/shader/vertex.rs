@@ -76,13 +76,21 @@ pub fn lower_vertex(p: &hir::Program) -> Result<LoweredVertex, Unsupported> {
 
 impl Lower<'_> {
     /// The components of attribute `name` (streams added on its first read).
+    /// An `int`/`uint` attribute's components are the bits of its words (integer arrays and
+    /// values, `crate::ffi::vertex_attrib_int`).
     pub(super) fn attribute(&mut self, name: &str, sc: &[Scalar]) -> R<Vec<Val>> {
-        if sc.iter().any(|s| *s != Scalar::Float) {
-            return no(format!("non-float attribute {name}"));
+        if sc.contains(&Scalar::Bool) {
+            return no(format!("boolean attribute {name}"));
         }
         let first = slot_of(&mut self.varyings, name, sc);
-        Ok((0..sc.len() as u16)
-            .map(|k| self.op(Op::InputF(first + k)))
+        Ok((0..sc.len())
+            .map(|k| {
+                let v = self.op(Op::InputF(first + k as u16));
+                match sc[k] {
+                    Scalar::Float => v,
+                    _ => self.op(Op::Bits(v)),
+                }
+            })
             .collect())
     }
 
