@@ -2,7 +2,7 @@
 //! the valid corpus of `glsl/tests/corpus/valid`, mutated by deleting, duplicating and
 //! swapping pieces and inserting tokens that reach the lowering's less common paths
 //! (lookups with LOD arguments, `texelFetch`, integer division and shifts, derivatives,
-//! loops), is compiled; every program the front end accepts is lowered for its stage
+//! loops, `gl_InstanceID`, located and integer outputs, integer attributes), is compiled; every program the front end accepts is lowered for its stage
 //! and, when lowered, compiled for the executor. None may panic, and each must finish
 //! within a time bound. proptest's `PROPTEST_CASES` runs more cases than its default 256
 //! per property (the library reads no environment outside `tuning`).
@@ -53,6 +53,15 @@ const VOCAB: &[&str] = &[
     "uniform sampler2D sa[3];",
     "texture2D(sa[2], ",
     "gl_FragDepth = ",
+    "gl_InstanceID",
+    "gl_InstanceIDARB",
+    "#version 330\n",
+    "layout(location = 1) out vec4 q;",
+    "layout(location = 7) out vec4 r[2];",
+    "out vec3 o3;",
+    "out int oi;",
+    "in ivec4 ia;",
+    "in uint ua;",
 ];
 
 /// The valid corpus: each file's text and whether it is a vertex shader.
