@@ -164,20 +164,9 @@ fn buffer_indices_u32(arrays: &ArrayState, count: usize, ptr: usize) -> Option<&
     (head.is_empty() && mid.len() == n).then_some(mid)
 }
 
-/// glDrawElements on the current context (shared by the range and multi-draw calls).
-pub(crate) fn draw_elements(
-    c: &mut Context,
-    mode: GLenum,
-    count: GLsizei,
-    type_: GLenum,
-    indices: *const GLvoid,
-) -> GlResult<()> {
-    draw_elements_base(c, mode, count, type_, indices, 0)
-}
-
-/// glDrawElementsBaseVertex (ARB_draw_elements_base_vertex) on the current context:
-/// glDrawElements with `base` added to every index after it is read. Under
-/// GL_PRIMITIVE_RESTART an index equal to the restart index (compared before `base` is
+/// glDrawElements and glDrawElementsBaseVertex (ARB_draw_elements_base_vertex) on the
+/// current context (shared by the range and multi-draw calls): `base` is added to every
+/// index after it is read. Under GL_PRIMITIVE_RESTART an index equal to the restart index (compared before `base` is
 /// added, as GL 3.2 says) ends the primitive: the runs between such indices are drawn
 /// as draws of their own.
 pub(crate) fn draw_elements_base(

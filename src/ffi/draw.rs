@@ -6,7 +6,7 @@
 
 use super::types::*;
 use super::with_ctx_raw;
-pub(crate) use crate::context::draw_cmd::{array_range, draw_arrays, draw_elements, element_list};
+pub(crate) use crate::context::draw_cmd::{array_range, draw_arrays};
 use crate::context::error::{GlError, GlResult};
 use crate::context::instanced::instanced;
 use crate::context::state::Primitive;
@@ -54,7 +54,7 @@ pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
     )
 }
 
-/// glDrawElements.
+/// glDrawElements: the base-vertex call with base 0.
 #[no_mangle]
 pub extern "C" fn glDrawElements(
     mode: GLenum,
@@ -62,13 +62,7 @@ pub extern "C" fn glDrawElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    listable_draw(
-        |c| instanced(c, 1, |c| draw_elements(c, mode, count, type_, indices)),
-        |c| {
-            let idx = element_list(c, count, type_, indices);
-            c.compile_draw(Primitive::from_gl(mode), idx)
-        },
-    )
+    super::vertex_input::glDrawElementsBaseVertex(mode, count, type_, indices, 0)
 }
 
 /// glDrawRangeElements (the range is a hint; indices outside it are still drawn): the

@@ -26,7 +26,7 @@ pub unsafe extern "C" fn glMultiDrawArrays(
     )
 }
 
-/// glMultiDrawElements.
+/// glMultiDrawElements: the base-vertex call without base vertices (all 0).
 ///
 /// # Safety
 /// `count` and `indices` must be readable for `drawcount` entries.
@@ -38,10 +38,15 @@ pub unsafe extern "C" fn glMultiDrawElements(
     indices: *const *const GLvoid,
     drawcount: GLsizei,
 ) {
-    // SAFETY: the caller promises `drawcount` entries in each array.
-    let draws = unsafe { read_pairs(count, indices, drawcount) };
-    listable_draw(
-        |c| instanced(c, 1, |c| c.multi_draw_elements(mode, type_, &draws, &[])),
-        |c| c.compile_multi_draw_elements(mode, type_, &draws, &[]),
-    )
+    // SAFETY: forwarded caller contract; a null base-vertex array reads as zeros.
+    unsafe {
+        super::vertex_input::glMultiDrawElementsBaseVertex(
+            mode,
+            count,
+            type_,
+            indices,
+            drawcount,
+            std::ptr::null(),
+        )
+    }
 }
